@@ -1,0 +1,15 @@
+"""skcable: structural cables and metallic strands on scikit-fem.
+
+Subpackages
+-----------
+cable
+    Suspended cables: closed forms (funicular polygon, parabola, catenary,
+    elastic catenary), geometric stiffness, end conditions and cables on
+    surfaces.
+"""
+
+from skcable import cable
+from skcable.errors import ConvergenceError, InputError
+
+__all__ = ["cable", "ConvergenceError", "InputError"]
+__version__ = "0.1.0"

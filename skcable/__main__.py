@@ -1,0 +1,5 @@
+import sys
+
+from skcable.cli import main
+
+sys.exit(main())

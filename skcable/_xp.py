@@ -1,0 +1,39 @@
+"""One formula, two back ends: ``math`` for scalars, NumPy for arrays.
+
+NumPy ufuncs cost 0.2–1 µs each on a scalar, ``math`` about 0.05 µs; the
+closed forms are evaluated dozens of times per call, so scalar calls use
+the functions below (same names as NumPy's) and array calls use NumPy.
+"""
+
+from __future__ import annotations
+
+import math
+from types import SimpleNamespace
+
+import numpy as np
+
+scalar_math = SimpleNamespace(
+    pi=math.pi,
+    sin=math.sin,
+    cos=math.cos,
+    sinh=math.sinh,
+    cosh=math.cosh,
+    tanh=math.tanh,
+    arcsinh=math.asinh,
+    exp=math.exp,
+    log=math.log,
+    log1p=math.log1p,
+    sqrt=math.sqrt,
+    hypot=math.hypot,
+    abs=abs,
+    minimum=min,
+    maximum=max,
+)
+
+
+def namespace(*values):
+    """``numpy`` if any of ``values`` is an ndarray, else :data:`scalar_math`."""
+    for value in values:
+        if isinstance(value, np.ndarray):
+            return np
+    return scalar_math

@@ -1,0 +1,40 @@
+"""Suspended cables: closed forms, stiffness, end conditions, surfaces.
+
+Conventions (REFERENCE.md §1): x to the right, y up, support A at (0, 0),
+support B at (span, dh); distributed loads w > 0 act downward; H > 0 is the
+horizontal tension; V_A, V_B are the upward support reactions. SI units by
+default (m, N, N/m); any consistent system works.
+"""
+
+from skcable.cable._catenary import Catenary, catenary
+from skcable.cable._elastic import ElasticCatenary, elastic_catenary
+from skcable.cable._funicular import Funicular, FunicularVertical, funicular, funicular_vertical
+from skcable.cable._parabola import Parabola, parabola
+from skcable.cable._stiffness import geometric_stiffness, geometric_stiffness_series
+from skcable.cable._supports import SlidingLoad, anchor_block_weight, ring_on_rod, sliding_load
+from skcable.cable._surfaces import capstan, membrane_tension, smooth_surface_reaction, sphere_parallel
+from skcable.cable.solution import CableSolution
+
+__all__ = [
+    "CableSolution",
+    "Catenary",
+    "ElasticCatenary",
+    "Funicular",
+    "FunicularVertical",
+    "Parabola",
+    "SlidingLoad",
+    "anchor_block_weight",
+    "capstan",
+    "catenary",
+    "elastic_catenary",
+    "funicular",
+    "funicular_vertical",
+    "geometric_stiffness",
+    "geometric_stiffness_series",
+    "membrane_tension",
+    "parabola",
+    "ring_on_rod",
+    "sliding_load",
+    "smooth_surface_reaction",
+    "sphere_parallel",
+]

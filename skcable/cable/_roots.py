@@ -1,0 +1,44 @@
+"""Bracketed, vectorised scalar root finding with loud failure.
+
+Thin wrapper of :func:`scipy.optimize.elementwise.find_root` (Chandrupatla's
+method): it checks the bracket, collects the history of the largest
+``|f|`` per iteration and raises instead of returning an unconverged root.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+from scipy.optimize import elementwise
+
+from skcable.errors import ConvergenceError
+
+
+def find_root(f, lo, hi, args=(), *, what: str = "root"):
+    """Root of the monotone ``f(x, *args)`` in ``[lo, hi]``, elementwise.
+
+    Raises
+    ------
+    ConvergenceError
+        If the bracket is invalid or the iteration stops without meeting
+        scipy's default tolerances (a few ulps on x); the message names
+        ``what`` and the error carries ``max|f|`` per iteration.
+    """
+    shape = np.broadcast_shapes(np.shape(lo), np.shape(hi), *(np.shape(a) for a in args))
+    lo = np.broadcast_to(np.asarray(lo, dtype=float), shape)
+    hi = np.broadcast_to(np.asarray(hi, dtype=float), shape)
+    history: list[float] = []
+
+    def record(res):
+        history.append(float(np.max(np.abs(res.f_x))))
+
+    res = elementwise.find_root(f, (lo, hi), args=args, callback=record)
+    if not np.all(res.success):
+        status = np.asarray(res.status)
+        bad = int(np.flatnonzero(~np.asarray(res.success).ravel())[0])
+        raise ConvergenceError(
+            f"{what}: bracketed root search failed (scipy status {int(status.ravel()[bad])} "
+            f"at element {bad})",
+            history,
+        )
+    x = np.asarray(res.x)
+    return (float(x) if x.ndim == 0 else x), history

@@ -1,0 +1,93 @@
+"""Common interface of every suspended-cable solution.
+
+Conventions (REFERENCE.md §1): x to the right, y up, support A at (0, 0),
+support B at (span, dh); distributed loads w > 0 act downward; H > 0 is the
+horizontal tension; V_A, V_B are the upward support reactions. Any
+consistent unit system works (SI by default: m, N, N/m).
+
+Every solver broadcasts over its arguments: a solution holds scalars for
+scalar input, arrays for array input, and its methods broadcast ``x``
+against that shape.
+"""
+
+from __future__ import annotations
+
+from functools import cached_property
+
+import numpy as np
+
+from skcable.cable._special import largest_abs
+from skcable.errors import ConvergenceError
+
+__all__ = ["CableSolution", "checked"]
+
+#: Largest relative residual a solver may hand back without raising.
+ACCEPT = 1e-9
+#: Which attribute of a solution each constraint keyword fixes.
+_ATTRIBUTE_OF = {"length": "length", "sag": "sag", "H": "H", "low": "y_low", "T_max": "T_max"}
+_SHOWN = ("H", "V_A", "V_B", "T_A", "T_B", "length", "sag", "x_low", "y_low")
+
+
+class CableSolution:
+    """Base of the suspended-cable solutions.
+
+    Subclasses define ``H, V_A, V_B, T_A, T_B, length, sag, x_low, y_low``
+    and the methods ``y(x)``, ``T(x)``, ``slope(x)`` and ``_residuals()``.
+    """
+
+    span: np.ndarray
+    dh: np.ndarray
+
+    def residual(self) -> float:
+        """Largest relative residual of equilibrium, closure and constraint.
+
+        Each term is evaluated from the solution's own state: closure of the
+        profile at B, vertical equilibrium of the whole cable, the direction
+        of the end tensions, and the constraint the user gave (length, sag,
+        H, lowest point or maximum tension). The largest over all terms and
+        all broadcast elements is returned.
+        """
+        values = [largest_abs(r) for r in self._residuals()]
+        return float("nan") if any(v != v for v in values) else max(values)
+
+    def _residuals(self):  # pragma: no cover - abstract
+        raise NotImplementedError
+
+    def _common_residuals(self, xp):
+        """End tensions along the tangent, and the user's constraint met."""
+        out = [(T - xp.hypot(self.H, V)) / T for T, V in ((self.T_A, self.V_A), (self.T_B, self.V_B))]
+        name, value = self.constraint
+        achieved = getattr(self, _ATTRIBUTE_OF[name])
+        scale = xp.hypot(self.span, self.dh) if name == "low" else value
+        out.append((achieved - value) / scale)
+        return out
+
+    def __repr__(self):
+        name = type(self).__name__
+        if np.ndim(self.H) != 0:
+            return f"{name}(shape={np.shape(self.H)}, constraint={self.constraint[0]!r})"
+        shown = ", ".join(f"{k}={float(getattr(self, k)):.9g}" for k in _SHOWN)
+        return f"{name}(span={self.span:g}, dh={self.dh:g}, w={self.w:g}: {shown})"
+
+    @cached_property
+    def T_max(self):
+        """Largest tension in the cable (at the higher support)."""
+        return np.maximum(self.T_A, self.T_B)
+
+    def points(self, n: int = 101) -> np.ndarray:
+        """Profile sampled at ``n`` equally spaced x: array ``(*shape, n, 2)``."""
+        x = np.multiply.outer(np.linspace(0.0, 1.0, n), self.span)  # (n, *shape)
+        xy = np.stack([x, np.broadcast_to(self.y(x), x.shape)], axis=-1)
+        return np.moveaxis(xy, 0, -2)
+
+
+def checked(solution: CableSolution, history=()) -> CableSolution:
+    """Return ``solution`` if its residual is below :data:`ACCEPT`, else raise."""
+    residual = solution.residual()
+    if not residual <= ACCEPT:
+        raise ConvergenceError(
+            f"{type(solution).__name__}: residual {residual:.3e} above {ACCEPT:.0e} "
+            "after the solver stopped",
+            history,
+        )
+    return solution
