@@ -154,10 +154,13 @@ def _z_from_length(span, dh, length):
     xp = namespace(span, dh, length)
     chord = xp.hypot(span, dh)
     require("length", length > chord, "must exceed the chord sqrt(span**2 + dh**2)", length)
-    # r - 1 with r = sqrt(S^2 - dh^2)/span, free of cancellation for taut cables
-    rho = (length - chord) * (length + chord) / (
-        span * (xp.sqrt((length - dh) * (length + dh)) + span)
-    )
+    # r - 1 with r = sqrt(S^2 - dh^2)/span, free of cancellation for taut
+    # cables: S^2 - chord^2 = (S - M)(S + M) - m^2 with M the longer leg, so
+    # that S - M is exact (Sterbenz) and level or vertical spans lose nothing
+    legs = xp.abs(dh)
+    longer, shorter = xp.maximum(span, legs), xp.minimum(span, legs)
+    excess_sq = (length - longer) * (length + longer) - shorter * shorter
+    rho = excess_sq / (span * (xp.sqrt((length - legs) * (length + legs)) + span))
     target = xp.log1p(rho)
     # g(z) = log(sinh z / z) - target is convex and increasing: whatever the
     # start, Newton's iterates lie right of the root after one step and then

@@ -46,7 +46,12 @@ def ring_on_rod(dh, w, length, mu) -> Catenary:
     sinh_b = 1.0 / mu
     cosh_b = xp.sqrt(1.0 + sinh_b * sinh_b)
     denominator = length * sinh_b - dh * cosh_b
-    require("mu", denominator > 0, "is too small: the ring slides whatever the span", mu)
+    require(
+        "mu",
+        denominator > 0,
+        "is so large that the ring holds at every span the cable can reach (no slip limit)",
+        mu,
+    )
     a = (length - dh) * (length + dh) / (2.0 * denominator)
     u_b = xp.arcsinh(sinh_b)
     span = a * (u_b - xp.arcsinh(sinh_b - length / a))

@@ -1,0 +1,61 @@
+"""Elastic catenary: limits, an independent ODE integration, stretch."""
+
+import numpy as np
+import pytest
+from scipy.integrate import solve_ivp
+
+from skcable import cable
+from skcable.errors import InputError
+
+
+def test_tends_to_inextensible_catenary():
+    ref = cable.catenary(800.0, -20.0, 20.0, length=801.409)
+    errors = []
+    for EA in (1e9, 1e11, 1e13, 1e15):
+        e = cable.elastic_catenary(800.0, -20.0, 20.0, EA, length=801.409)
+        errors.append(abs(e.H / ref.H - 1))
+        assert e.residual() < 1e-12
+    # the stretch, hence the error, falls as 1/EA
+    assert errors[-1] < 1e-5 and all(b < a / 50 for a, b in zip(errors, errors[1:], strict=False))
+
+
+def test_against_ode_integration_of_equilibrium():
+    # integrate dx/ds = H/EA + H/T, dy/ds = Tv/EA + Tv/T independently
+    e = cable.elastic_catenary(150.0, 30.0, 9.0, 2e5, length=160.0)
+
+    def rhs(s, state):
+        tv = 9.0 * s - e.V_A
+        T = np.hypot(e.H, tv)
+        return [e.H / 2e5 + e.H / T, tv / 2e5 + tv / T, T / 2e5 + 1.0]
+
+    sol = solve_ivp(rhs, (0, 160.0), [0.0, 0.0, 0.0], rtol=1e-12, atol=1e-12)
+    x_end, y_end, stretched = sol.y[:, -1]
+    assert x_end == pytest.approx(150.0, rel=1e-9)
+    assert y_end == pytest.approx(30.0, rel=1e-8)
+    assert e.stretched_length == pytest.approx(stretched + 0.0, rel=1e-9)
+    mid = solve_ivp(rhs, (0, 80.0), [0.0, 0.0, 0.0], rtol=1e-12, atol=1e-12).y[:, -1]
+    assert e.y(mid[0]) == pytest.approx(mid[1], rel=1e-8)
+
+
+def test_cable_shorter_than_chord_stretches_like_a_bar():
+    # nearly weightless: H ≈ EA (chord/L0 - 1)
+    e = cable.elastic_catenary(100.0, 0.0, 1e-6, 1e6, length=99.0)
+    assert e.H == pytest.approx(1e6 * (100.0 / 99.0 - 1), rel=1e-6)
+    assert e.stretched_length == pytest.approx(100.0, rel=1e-9)
+
+
+def test_vectorised_matches_scalar():
+    spans, dhs, L0 = np.array([800.0, 10.0, 1.0]), np.array([-20.0, 50.0, -1000.0]), np.array([801.409, 100.0, 1000.01])
+    v = cable.elastic_catenary(spans, dhs, 20.0, 1e9, length=L0)
+    for i in range(3):
+        s = cable.elastic_catenary(spans[i], dhs[i], 20.0, 1e9, length=L0[i])
+        # both closed to 1e-13·chord; H moves ~40 kN per m of closure here
+        assert v.H[i] == pytest.approx(s.H, rel=1e-10)
+        assert v.V_A[i] == pytest.approx(s.V_A, rel=1e-10, abs=1e-9)
+
+
+def test_bad_input():
+    with pytest.raises(InputError, match="EA"):
+        cable.elastic_catenary(100.0, 0.0, 1.0, 0.0, length=110.0)
+    with pytest.raises(InputError, match="length"):
+        cable.elastic_catenary(100.0, 0.0, 1.0, 1e6, length=-1.0)

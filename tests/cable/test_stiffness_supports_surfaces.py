@@ -1,0 +1,98 @@
+"""Geometric stiffness (seed 001 ex. 7), end conditions (§3.4), surfaces (§4)."""
+
+import mpmath as mp
+import numpy as np
+import pytest
+
+from skcable import cable
+from skcable.errors import InputError
+
+
+def test_seed001_ex7_catenary():
+    # H = 10 Q: sinh(x/a) = 1/20 (seed eq. 26)
+    c = cable.catenary(2.0, 0.0, 1.0, H=1 / np.arcsinh(0.05))
+    Q = c.w * c.length
+    assert round(c.a / 1.0, 8) == 20.00832744
+    k = cable.geometric_stiffness(c) * 2.0 / Q  # in units Q/L
+    assert round(k, 2) == 12021.99  # published
+    xi = mp.asinh(mp.mpf("0.05"))
+    assert k == pytest.approx(float(10 * xi / (xi - mp.tanh(xi))), rel=1e-13)  # 40 digits
+
+
+def test_seed001_ex7_parabolic_approximation():
+    # seed eq. (27): 1/20 = xi (1 + xi²/6), a/x = 1/xi
+    roots = np.roots([1 / 6, 0, 1, -1 / 20])
+    xi = roots[np.abs(roots.imag) < 1e-12].real[0]
+    assert round(1 / xi, 8) == 20.00832640
+    k = cable.geometric_stiffness_series(2.0, 10 * xi, 10.0) * 2.0 / 1.0
+    assert round(k, 2) == 12024.99
+
+
+@pytest.mark.parametrize("model", [cable.catenary, cable.parabola])
+@pytest.mark.parametrize("dh", [0.0, 35.0, -80.0])
+def test_geometric_stiffness_by_finite_differences(model, dh):
+    sol = model(200.0, dh, 1.5, sag=15.0)
+    d = 1e-4
+    plus = model(200.0 + d, dh, 1.5, length=sol.length).H
+    minus = model(200.0 - d, dh, 1.5, length=sol.length).H
+    assert cable.geometric_stiffness(sol) == pytest.approx((plus - minus) / (2 * d), rel=1e-6)
+
+
+def test_stiffness_in_series_with_elastic():
+    c = cable.catenary(200.0, 0.0, 1.0, sag=10.0)
+    kg = cable.geometric_stiffness(c)
+    k = cable.geometric_stiffness(c, EA=1e5)
+    assert 1 / k == pytest.approx(1 / kg + c.length / 1e5, rel=1e-14)
+
+
+def test_ring_on_rough_rod_is_at_the_friction_limit():
+    c = cable.ring_on_rod(5.0, 2.0, 100.0, 0.4)
+    assert c.H == pytest.approx(0.4 * c.V_B, rel=1e-12)  # H = mu·Tz (seed §3.4.3)
+    assert c.length == pytest.approx(100.0, rel=1e-12)
+    assert c.y(c.span) == pytest.approx(5.0, rel=1e-10)
+    with pytest.raises(InputError, match="mu"):
+        cable.ring_on_rod(99.0, 1.0, 100.0, 1.0)
+
+
+def test_anchor_block_weight():
+    c = cable.catenary(100.0, 0.0, 1.0, sag=10.0)
+    W = cable.anchor_block_weight(c, 0.5)
+    # at the limit, friction mu (W - V) equals H
+    assert 0.5 * (W - c.V_A) == pytest.approx(c.H, rel=1e-14)
+
+
+def test_sliding_load_two_symmetric_arcs():
+    s = cable.sliding_load(100.0, 1.0, 110.0, 20.0)
+    assert s.residual() < 1e-12
+    assert s.V_A == pytest.approx((110.0 + 20.0) / 2, rel=1e-12)
+    # seed §3.4.5: T_Az = P/2 = q a sinh(x_A/a) at the load point
+    assert -s.arc.V_B == pytest.approx(10.0, rel=1e-12)
+    # no load: a plain catenary
+    free = cable.sliding_load(100.0, 1.0, 110.0, 0.0)
+    assert free.H == pytest.approx(cable.catenary(100.0, 0.0, 1.0, length=110.0).H, rel=1e-10)
+
+
+def test_capstan_and_membrane():
+    assert cable.capstan(100.0, 0.3, np.pi) == pytest.approx(100.0 * np.exp(0.3 * np.pi))
+    # two half turns compose: T(phi1 + phi2) = T(T(phi1), phi2)
+    assert cable.capstan(cable.capstan(5.0, 0.2, 1.0), 0.2, 2.0) == pytest.approx(cable.capstan(5.0, 0.2, 3.0))
+    assert cable.membrane_tension(2e5, 1.5) == 3e5
+    with pytest.raises(InputError, match="mu"):
+        cable.capstan(1.0, -0.1, 1.0)
+
+
+def test_sphere_parallel_by_force_balance():
+    # independent: on a parallel of radius rho = R cos(alpha), the thread pulls
+    # inward T/rho; the sphere pushes along its normal: vertical Q sin = q,
+    # horizontal Q cos = T / rho
+    q, R, alpha = 3.0, 2.0, 0.6
+    T, Q = cable.sphere_parallel(q, R, alpha)
+    assert Q * np.sin(alpha) == pytest.approx(q)
+    assert Q * np.cos(alpha) == pytest.approx(T / (R * np.cos(alpha)))
+
+
+def test_smooth_surface_reaction():
+    # geodesic on a cylinder of radius 2 around its section: Q = -T/R
+    assert cable.smooth_surface_reaction(10.0, 2.0) == -5.0
+    with pytest.raises(InputError, match="R_n"):
+        cable.smooth_surface_reaction(10.0, 0.0)
