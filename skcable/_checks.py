@@ -72,7 +72,5 @@ def exactly_one(**constraints) -> tuple[str, object]:
     if len(given) != 1:
         names = ", ".join(constraints)
         got = ", ".join(k for k, _ in given) or "none"
-        raise InputError(
-            "constraint", f"give exactly one of {names} (the 'fourth equation'); got {got}"
-        )
+        raise InputError("constraint", f"give exactly one of {names} (the 'fourth equation'); got {got}")
     return given[0]

@@ -15,10 +15,16 @@ from skcable.errors import ConvergenceError, InputError
 
 #: Seed worked examples: (label, published value, function returning ours).
 _DEMO = [
-    ("000 ex.1 funicular T1 [kN]", 233.04,
-     lambda: cable.funicular((20, 2), [5, 6, 6, 5], [(5, -75), (10, -100), (5, -75)]).T[0]),
-    ("000 ex.2 H [kN]", 28.511,
-     lambda: cable.funicular_vertical(10, -1, [(1, 50), (3, 30), (7, 40)], through=(3, -5)).H),
+    (
+        "000 ex.1 funicular T1 [kN]",
+        233.04,
+        lambda: cable.funicular((20, 2), [5, 6, 6, 5], [(5, -75), (10, -100), (5, -75)]).T[0],
+    ),
+    (
+        "000 ex.2 H [kN]",
+        28.511,
+        lambda: cable.funicular_vertical(10, -1, [(1, 50), (3, 30), (7, 40)], through=(3, -5)).H,
+    ),
     ("000 ex.3 parabola H [kN]", 85743.7, lambda: cable.parabola(800, -20, 20, low=-30).H),
     ("000 ex.3 parabola S [m]", 801.408, lambda: cable.parabola(800, -20, 20, low=-30).length),
     ("000 ex.4 catenary H [kN]", 85818.7, lambda: cable.catenary(800, -20, 20, low=-30).H),

@@ -145,9 +145,7 @@ def _sag_over_a(z, m, phi):
     sm, cm = xp.sinh(m), xp.cosh(m)
     s = sm * (1.0 + phi)  # chord slope dh/span
     t = xp.arcsinh(sm * phi * (2.0 + phi) / ((1.0 + phi) * cm + xp.sqrt(1.0 + s * s)))
-    return 2.0 * cm * xp.sinh(0.5 * (z + t)) * xp.sinh(0.5 * (z - t)) + sm * t * (
-        phi - sinhc_m1(t)
-    )
+    return 2.0 * cm * xp.sinh(0.5 * (z + t)) * xp.sinh(0.5 * (z - t)) + sm * t * (phi - sinhc_m1(t))
 
 
 def _z_from_length(span, dh, length):
@@ -312,4 +310,3 @@ def catenary(span, dh, w, *, length=None, sag=None, H=None, low=None, T_max=None
         a, history = _a_from_T_max(span, dh, w, positive("T_max", value), branch)
     value = np.asarray(value, dtype=float)[()]
     return checked(Catenary(span, dh, w, a, span / (2.0 * a), (name, value)), history)
-

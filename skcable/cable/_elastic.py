@@ -140,9 +140,7 @@ class ElasticCatenary(CableSolution):
         """Material point at abscissa ``x`` in [0, span] (x(s) is increasing)."""
         x = real("x", x)
         require("x", (x >= 0) & (x <= self.span), "must lie in [0, span]", x)
-        s, _ = find_root(
-            lambda s, x, *p: self.x_of_s(s) - x, 0.0, self.length, (x, self.H), what="s_of_x"
-        )
+        s, _ = find_root(lambda s, x, *p: self.x_of_s(s) - x, 0.0, self.length, (x, self.H), what="s_of_x")
         return s
 
     def y(self, x):

@@ -63,7 +63,9 @@ class Funicular:
         imbalance = self.forces[1:] - self.forces[:-1] + self.loads
         segments = np.hypot(*np.diff(self.nodes, axis=0).T) - self.lengths
         force_scale, length_scale = self.T.max(), self.lengths.sum()
-        return float(max(np.abs(imbalance).max(initial=0.0) / force_scale, np.abs(segments).max() / length_scale))
+        return float(
+            max(np.abs(imbalance).max(initial=0.0) / force_scale, np.abs(segments).max() / length_scale)
+        )
 
 
 def funicular(B, lengths, loads, *, tol: float = 1e-13, max_iter: int = 100) -> Funicular:
@@ -105,7 +107,9 @@ def funicular(B, lengths, loads, *, tol: float = 1e-13, max_iter: int = 100) -> 
     loads = real("loads", loads)
     loads = np.asarray(loads, dtype=float).reshape(-1, 2) if np.size(loads) else np.zeros((0, 2))
     if lengths.ndim != 1 or len(lengths) != len(loads) + 1:
-        raise InputError("lengths", f"need one more segment than loads: {len(lengths)} segments, {len(loads)} loads")
+        raise InputError(
+            "lengths", f"need one more segment than loads: {len(lengths)} segments, {len(loads)} loads"
+        )
     total, reach = lengths.sum(), float(np.hypot(*B))
     require("lengths", total > reach, f"must add up to more than the distance A-B ({reach:.6g})", total)
     offsets = np.vstack([np.zeros(2), np.cumsum(loads, axis=0)])  # t_j = t_1 - offsets_j

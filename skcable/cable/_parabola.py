@@ -204,10 +204,17 @@ def parabola(span, dh, w, *, length=None, sag=None, H=None, low=None, T_max=None
         a = span**2 / (2.0 * (xp.sqrt(depth_a) + xp.sqrt(depth_b)) ** 2)
     elif name == "T_max":
         tau = positive("T_max", value) / w
-        require("T_max", tau > 0.5 * span, "must exceed w·span/2, the weight carried by one support at least", value)
+        require(
+            "T_max",
+            tau > 0.5 * span,
+            "must exceed w·span/2, the weight carried by one support at least",
+            value,
+        )
         slope = xp.abs(dh / span)
-        a = 2.0 * (tau**2 - 0.25 * span**2) / (
-            span * slope + xp.sqrt(4.0 * (1.0 + slope**2) * tau**2 - span**2)
+        a = (
+            2.0
+            * (tau**2 - 0.25 * span**2)
+            / (span * slope + xp.sqrt(4.0 * (1.0 + slope**2) * tau**2 - span**2))
         )
     elif name == "length":
         a, history = _a_from_length(span, dh, positive("length", value))
@@ -215,4 +222,3 @@ def parabola(span, dh, w, *, length=None, sag=None, H=None, low=None, T_max=None
         raise InputError("constraint", name)
     value = np.asarray(value, dtype=float)[()]
     return checked(Parabola(span, dh, w, a, (name, value)), history)
-

@@ -16,6 +16,7 @@ from functools import cached_property
 
 import numpy as np
 
+from skcable._xp import namespace
 from skcable.cable._special import largest_abs
 from skcable.errors import ConvergenceError
 
@@ -72,7 +73,7 @@ class CableSolution:
     @cached_property
     def T_max(self):
         """Largest tension in the cable (at the higher support)."""
-        return np.maximum(self.T_A, self.T_B)
+        return namespace(self.T_A, self.T_B).maximum(self.T_A, self.T_B)
 
     def points(self, n: int = 101) -> np.ndarray:
         """Profile sampled at ``n`` equally spaced x: array ``(*shape, n, 2)``."""
@@ -86,8 +87,7 @@ def checked(solution: CableSolution, history=()) -> CableSolution:
     residual = solution.residual()
     if not residual <= ACCEPT:
         raise ConvergenceError(
-            f"{type(solution).__name__}: residual {residual:.3e} above {ACCEPT:.0e} "
-            "after the solver stopped",
+            f"{type(solution).__name__}: residual {residual:.3e} above {ACCEPT:.0e} after the solver stopped",
             history,
         )
     return solution

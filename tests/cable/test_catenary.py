@@ -36,7 +36,9 @@ def test_seed000_ex4_published_values():
 def test_seed000_ex4_full_precision_against_mpmath():
     c = cable.catenary(800.0, -20.0, 20.0, low=-30.0)
     # independent: vertex depth condition 2a[asinh(sqrt(dA/2a)) + asinh(sqrt(dB/2a))] = span
-    a = mp.findroot(lambda a: 2 * a * (mp.asinh(mp.sqrt(30 / (2 * a))) + mp.asinh(mp.sqrt(10 / (2 * a)))) - 800, 4000)
+    a = mp.findroot(
+        lambda a: 2 * a * (mp.asinh(mp.sqrt(30 / (2 * a))) + mp.asinh(mp.sqrt(10 / (2 * a)))) - 800, 4000
+    )
     assert c.H == pytest.approx(float(20 * a), rel=1e-13)
     assert float(20 * a) == pytest.approx(85819.2, abs=0.05)  # REFERENCE.md's full-precision H
 
@@ -125,7 +127,10 @@ def test_given_H_different_heights_matches_seed_quadratic():
     beta = mp.cosh(mp.mpf(span) / a)
     for sign in (1, -1):
         try:
-            u = mp.findroot(lambda u: beta * u + sign * mp.sqrt(beta**2 - 1) * mp.sqrt(u**2 - 1) - u - dh / a, 1.01)
+            u = mp.findroot(
+                lambda u, sign=sign: beta * u + sign * mp.sqrt(beta**2 - 1) * mp.sqrt(u**2 - 1) - u - dh / a,
+                1.01,
+            )
         except ValueError:
             continue
         x_a = sign * float(mp.acosh(u)) * a  # abscissa of A from the vertex

@@ -45,7 +45,11 @@ def test_cable_shorter_than_chord_stretches_like_a_bar():
 
 
 def test_vectorised_matches_scalar():
-    spans, dhs, L0 = np.array([800.0, 10.0, 1.0]), np.array([-20.0, 50.0, -1000.0]), np.array([801.409, 100.0, 1000.01])
+    spans, dhs, L0 = (
+        np.array([800.0, 10.0, 1.0]),
+        np.array([-20.0, 50.0, -1000.0]),
+        np.array([801.409, 100.0, 1000.01]),
+    )
     v = cable.elastic_catenary(spans, dhs, 20.0, 1e9, length=L0)
     for i in range(3):
         s = cable.elastic_catenary(spans[i], dhs[i], 20.0, 1e9, length=L0[i])

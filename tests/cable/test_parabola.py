@@ -38,9 +38,14 @@ def test_seed000_length_formula_in_end_tensions():
     # seed 000 §2: S = L²/(16 f H) [T_A sqrt((T_A/H)²-1) + T_B sqrt(...) + H ln(...)]
     p = cable.parabola(600.0, 45.0, 7.0, H=9000.0)
     H, TA, TB, L, f = p.H, p.T_A, p.T_B, 600.0, p.sag
-    S = L**2 / (16 * f * H) * (
-        TA * np.sqrt((TA / H) ** 2 - 1) + TB * np.sqrt((TB / H) ** 2 - 1)
-        + H * np.log((TB + np.sqrt(TB**2 - H**2)) / (TA - np.sqrt(TA**2 - H**2)))
+    S = (
+        L**2
+        / (16 * f * H)
+        * (
+            TA * np.sqrt((TA / H) ** 2 - 1)
+            + TB * np.sqrt((TB / H) ** 2 - 1)
+            + H * np.log((TB + np.sqrt(TB**2 - H**2)) / (TA - np.sqrt(TA**2 - H**2)))
+        )
     )
     assert p.length == pytest.approx(S, rel=1e-12)
 
@@ -50,7 +55,9 @@ def test_length_by_40_digit_quadrature(dh, sag_ratio):
     p = cable.parabola(100.0, dh, 3.0, sag=100.0 * sag_ratio)
     mp.mp.dps = 40
     exact = mp.quad(lambda q: mp.sqrt(1 + q * q), [p.p_A, p.p_B]) * p.a
-    assert p.length - np.hypot(100.0, dh) == pytest.approx(float(exact - mp.sqrt(100**2 + mp.mpf(dh) ** 2)), rel=1e-9)
+    assert p.length - np.hypot(100.0, dh) == pytest.approx(
+        float(exact - mp.sqrt(100**2 + mp.mpf(dh) ** 2)), rel=1e-9
+    )
 
 
 @pytest.mark.parametrize("constraint", ["length", "sag", "H", "low", "T_max"])

@@ -75,7 +75,9 @@ def test_sliding_load_two_symmetric_arcs():
 def test_capstan_and_membrane():
     assert cable.capstan(100.0, 0.3, np.pi) == pytest.approx(100.0 * np.exp(0.3 * np.pi))
     # two half turns compose: T(phi1 + phi2) = T(T(phi1), phi2)
-    assert cable.capstan(cable.capstan(5.0, 0.2, 1.0), 0.2, 2.0) == pytest.approx(cable.capstan(5.0, 0.2, 3.0))
+    assert cable.capstan(cable.capstan(5.0, 0.2, 1.0), 0.2, 2.0) == pytest.approx(
+        cable.capstan(5.0, 0.2, 3.0)
+    )
     assert cable.membrane_tension(2e5, 1.5) == 3e5
     with pytest.raises(InputError, match="mu"):
         cable.capstan(1.0, -0.1, 1.0)

@@ -1,0 +1,160 @@
+"""Speed and accuracy of skcable's closed forms against the peers, one process.
+
+Case of issue #2: span 800 m, dh -20 m, w 20 kN/m, EA 1e12 kN, unstretched
+length 801.409 m. Each solver is timed over repeated calls (best of 5
+batches, per call) and its H compared with a 40-digit mpmath solution of
+Irvine's equations. Peers that are not installed are reported as such.
+
+Run:  python benchmarks/bench_closed_forms.py            (table on stdout)
+      python benchmarks/bench_closed_forms.py --csv out.csv
+Peers: pip install ".[bench]"  (OpenSeesPy also needs Debian's libblas3 liblapack3)
+"""
+
+from __future__ import annotations
+
+import argparse
+import csv
+import time
+
+import mpmath as mp
+import numpy as np
+
+from skcable import cable
+
+SPAN, DH, W, EA, L0 = 800.0, -20.0, 20.0, 1e12, 801.409
+
+
+def reference_H() -> tuple[float, float]:
+    """(H elastic, H inextensible) to 40 digits."""
+    mp.mp.dps = 40
+    span, dh, w, ea, L0 = (mp.mpf(v) for v in (SPAN, DH, W, EA, "801.409"))
+
+    def closure(H, VA):
+        tva, tvb = -VA, w * L0 - VA
+        x = H * L0 / ea + H / w * (mp.asinh(tvb / H) - mp.asinh(tva / H))
+        y = L0 * (w * L0 / 2 - VA) / ea + (mp.hypot(H, tvb) - mp.hypot(H, tva)) / w
+        return x - span, y - dh
+
+    guess = cable.elastic_catenary(SPAN, DH, W, EA, length=L0)
+    H, _ = mp.findroot(closure, (mp.mpf(guess.H), mp.mpf(guess.V_A)))
+    r = mp.sqrt(L0**2 - dh**2) / span
+    z = mp.findroot(lambda z: mp.sinh(z) / z - r, mp.mpf(0.13))
+    return float(H), float(w * span / (2 * z))
+
+
+def timed(fn, number: int) -> float:
+    fn()
+    best = float("inf")
+    for _ in range(5):
+        start = time.perf_counter()
+        for _ in range(number):
+            fn()
+        best = min(best, (time.perf_counter() - start) / number)
+    return best
+
+
+def peers():
+    """(name, callable returning H) for each installed peer."""
+    out = []
+    try:
+        from moorpy.Catenary import catenary as moorpy_catenary
+
+        # MoorPy: B above A, so mirror the span; CB < 0 means no seabed within |CB|
+        out.append(
+            ("MoorPy catenary()", lambda: moorpy_catenary(SPAN, -DH, L0, EA, W, CB=-1e6, Tol=1e-12)[0])
+        )
+    except ImportError:
+        out.append(("MoorPy catenary()", None))
+    try:
+        from pycatenary.cable import MooringLine
+
+        def pycat():
+            line = MooringLine(fairlead=[SPAN, DH], anchor=[0.0, 0.0], L=L0, w=W, EA=EA, floor=False)
+            line.compute_solution()
+            return -line.get_fairlead_force()[0]
+
+        out.append(("pycatenary MooringLine", pycat))
+    except ImportError:
+        out.append(("pycatenary MooringLine", None))
+    try:
+        import openseespy.opensees as ops
+
+        def opensees():
+            ops.wipe()
+            ops.model("basic", "-ndm", 3, "-ndf", 3)
+            ops.node(1, 0.0, 0.0, 0.0)
+            ops.node(2, SPAN, 0.0, DH)
+            ops.fix(1, 1, 1, 1)
+            ops.fix(2, 1, 1, 1)
+            ops.element("CatenaryCable", 1, 1, 2, W, EA, 1.0, L0, 0.0, 0.0, 0.0, 1e-10, 100, 0)
+            return -ops.eleResponse(1, "globalForce")[0]
+
+        out.append(("OpenSeesPy CatenaryCable (build+solve)", opensees))
+    except Exception:  # ImportError, or the shared-library load failing
+        out.append(("OpenSeesPy CatenaryCable (build+solve)", None))
+    return out
+
+
+def main(argv=None):
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--csv", help="write the table as CSV here")
+    parser.add_argument("--spans", type=int, default=1_000_000, help="size of the vectorised batch")
+    args = parser.parse_args(argv)
+
+    H_elastic, H_rigid = reference_H()
+    rows = []
+
+    def row(name, kind, fn, ref, number=2000):
+        if fn is None:
+            rows.append((name, kind, "not installed", "", ""))
+            return
+        H = float(fn())
+        t = timed(fn, number)
+        rows.append((name, kind, f"{t * 1e6:.1f}", f"{abs(H / ref - 1):.1e}", ""))
+
+    row(
+        "skcable catenary(length=)",
+        "inextensible",
+        lambda: cable.catenary(SPAN, DH, W, length=L0).H,
+        H_rigid,
+        20000,
+    )
+    row(
+        "skcable elastic_catenary",
+        "elastic",
+        lambda: cable.elastic_catenary(SPAN, DH, W, EA, length=L0).H,
+        H_elastic,
+    )
+    for name, fn in peers():
+        row(name, "elastic", fn, H_elastic, 200)
+
+    # vectorised: a batch of different spans, each checked by its residual
+    rng = np.random.default_rng(0)
+    spans = rng.uniform(100.0, 1000.0, args.spans)
+    lengths = np.hypot(spans, DH) * (1.0 + rng.uniform(1e-6, 0.5, args.spans))
+    t = timed(lambda: cable.catenary(spans, DH, W, length=lengths), 1)
+    sol = cable.catenary(spans, DH, W, length=lengths)
+    rows.append(
+        (
+            "skcable catenary, vectorised",
+            "inextensible",
+            f"{t * 1e6 / args.spans:.3f}",
+            f"residual {sol.residual():.1e}",
+            f"{args.spans / t:.3g} spans/s",
+        )
+    )
+
+    base = float(rows[0][2])
+    header = ("solver", "model", "µs per call", "rel. error in H", "note")
+    print("| " + " | ".join(header) + " | time / skcable scalar |")
+    print("|" + "---|" * (len(header) + 1))
+    for r in rows:
+        ratio = f"{float(r[2]) / base:.2f}" if r[2] not in ("not installed",) else ""
+        print("| " + " | ".join(r) + f" | {ratio} |")
+    if args.csv:
+        with open(args.csv, "w", newline="") as fh:
+            csv.writer(fh).writerows([header, *rows])
+
+
+if __name__ == "__main__":
+    main()
