@@ -8,8 +8,8 @@ cable
     surfaces.
 """
 
-from skcable import cable
+from skcable import cable, strand
 from skcable.errors import ConvergenceError, InputError
 
-__all__ = ["cable", "ConvergenceError", "InputError"]
+__all__ = ["cable", "strand", "ConvergenceError", "InputError"]
 __version__ = "0.1.0"
