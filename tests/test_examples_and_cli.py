@@ -33,3 +33,11 @@ def test_cli_bad_argument_is_one_line_exit_2():
     out = run("catenary", "--span", "800", "--w", "20", "--length", "10")
     assert out.returncode == 2
     assert out.stderr.strip().count("\n") == 0 and "length" in out.stderr and "Traceback" not in out.stderr
+
+
+def test_strand_bending_example_writes_figures_and_tables(tmp_path):
+    mod = runpy.run_path(str(ROOT / "examples" / "strand_bending_law.py"))
+    written = mod["figures"](tmp_path)
+    assert len(written) == 3 and all(p.stat().st_size > 10_000 for p in written)
+    table = mod["tables"]()
+    assert "| 0.5 | 3.98e-05 |" in table  # the thesis value is shown beside ours
