@@ -22,6 +22,7 @@ from skcable import strand  # noqa: E402
 
 TABLE_3_5 = {0.3: 2.38e-5, 0.5: 3.98e-5, 0.7: 5.58e-5}  # 1/mm
 TABLE_3_6 = {0.3: (0.299, 3888.953), 0.5: (0.431, 5035.554), 0.7: (0.516, 5782.535)}  # N, N mm
+TABLE_3_7 = {0.3: (69.50, 77.23), 0.5: (100.00, 100.00), 0.7: (119.76, 114.83)}  # % of mu = 0.5
 KAPPA_MAX = 2e-4  # 1/mm: range of the curves (the thesis's figures do not state theirs)
 
 
