@@ -6,9 +6,11 @@ horizontal tension; V_A, V_B are the upward support reactions. SI units by
 default (m, N, N/m); any consistent system works.
 """
 
+from skcable.cable._bvp import BVPSolution, graph_dH, graph_residual, graph_tangent, solve_bvp
 from skcable.cable._catenary import Catenary, catenary
 from skcable.cable._elastic import ElasticCatenary, elastic_catenary
 from skcable.cable._funicular import Funicular, FunicularVertical, funicular, funicular_vertical
+from skcable.cable._loads import DeckLoad, DistributedLoad, PointLoad, SelfWeight
 from skcable.cable._parabola import Parabola, parabola
 from skcable.cable._stiffness import geometric_stiffness, geometric_stiffness_series
 from skcable.cable._supports import SlidingLoad, anchor_block_weight, ring_on_rod, sliding_load
@@ -16,6 +18,15 @@ from skcable.cable._surfaces import capstan, membrane_tension, smooth_surface_re
 from skcable.cable.solution import CableSolution
 
 __all__ = [
+    "BVPSolution",
+    "DeckLoad",
+    "DistributedLoad",
+    "PointLoad",
+    "SelfWeight",
+    "graph_dH",
+    "graph_residual",
+    "graph_tangent",
+    "solve_bvp",
     "CableSolution",
     "Catenary",
     "ElasticCatenary",

@@ -1,0 +1,170 @@
+"""Suspended cable BVP on scikit-fem (graph form) against independent references."""
+
+import numpy as np
+import pytest
+from scipy.integrate import solve_ivp
+from scipy.optimize import brentq
+
+from skcable import cable
+from skcable.cable._bvp import _GraphProblem
+from skcable.errors import ConvergenceError, InputError
+
+SPAN, DH, W = 800.0, -20.0, 20.0
+REF = cable.catenary(SPAN, DH, W, low=-30.0)
+
+
+@pytest.mark.parametrize("constraint", ["length", "sag", "H", "low", "T_max"])
+def test_self_weight_reproduces_catenary_for_every_constraint(constraint):
+    value = {"low": REF.y_low}.get(constraint, getattr(REF, constraint, None))
+    b = cable.solve_bvp(SPAN, DH, cable.SelfWeight(W), **{constraint: value})
+    for name in ("H", "V_A", "V_B", "T_A", "T_B", "length"):
+        assert getattr(b, name) == pytest.approx(getattr(REF, name), rel=1e-8), name
+    assert b.sag == pytest.approx(REF.sag, rel=1e-8)
+    assert b.residual() < 1e-10
+    x = np.linspace(0, SPAN, 41)
+    assert np.max(np.abs(b.y(x) - REF.y(x))) < 1e-5 * abs(REF.y_low)  # P2, 64 elements
+
+
+@pytest.mark.parametrize("constraint", ["length", "sag", "H", "low", "T_max"])
+def test_deck_load_reproduces_parabola_exactly(constraint):
+    ref = cable.parabola(SPAN, DH, W, low=-30.0)
+    value = {"low": ref.y_low}.get(constraint, getattr(ref, constraint, None))
+    b = cable.solve_bvp(SPAN, DH, cable.DeckLoad(W), **{constraint: value}, n_elements=8)
+    # a quadratic is in the P2 space: exact up to round-off and the constraint's conditioning
+    assert b.H == pytest.approx(ref.H, rel=1e-10)
+    assert b.y(np.array([123.0, 456.0])) == pytest.approx(ref.y(np.array([123.0, 456.0])), rel=1e-10)
+
+
+def test_elastic_matches_irvine():
+    e = cable.elastic_catenary(SPAN, DH, W, 1e7, length=801.409)
+    b = cable.solve_bvp(SPAN, DH, cable.SelfWeight(W), EA=1e7, length=801.409)
+    assert b.H == pytest.approx(e.H, rel=1e-9)
+    assert b.stretched_length == pytest.approx(e.stretched_length, rel=1e-12)
+    assert b.length == pytest.approx(801.409, rel=1e-13)  # unstretched
+
+
+def test_point_loads_reproduce_funicular_to_round_off():
+    loads = [(1, 50), (3, 30), (7, 40)]
+    f = cable.funicular_vertical(10, -1, loads, through=(3, -5))
+    for degree in (1, 2, 3):
+        b = cable.solve_bvp(
+            10.0, -1.0, [cable.PointLoad(x, P) for x, P in loads], H=f.H, n_elements=3, degree=degree
+        )
+        assert b.V_A == pytest.approx(f.V_A, rel=1e-13)
+        assert b.V_B == pytest.approx(f.V_B, rel=1e-13)
+        assert b.y(f.nodes[:, 0]) == pytest.approx(f.nodes[:, 1], abs=1e-13)
+    # the same cable through its length, bordered Newton
+    lengths = np.hypot(*np.diff(f.nodes, axis=0).T).sum()
+    b = cable.solve_bvp(
+        10.0, -1.0, [cable.PointLoad(x, P) for x, P in loads], length=lengths, degree=1, n_elements=2
+    )
+    assert b.H == pytest.approx(f.H, rel=1e-10)  # through the length: conditioning ~ S/(S - chord)
+
+
+@pytest.mark.parametrize("degree", [1, 2, 3, 4])
+def test_convergence_rate_matches_theory(degree):
+    ref = cable.catenary(100.0, 20.0, 1.0, sag=15.0)
+    x = np.linspace(0, 100, 4001)
+    errors = []
+    meshes = {1: (4, 8, 16, 32), 2: (4, 8, 16, 32), 3: (2, 4, 8, 16), 4: (2, 4, 8)}[degree]  # above round-off
+    for n in meshes:
+        b = cable.solve_bvp(100.0, 20.0, cable.SelfWeight(1.0), H=ref.H, n_elements=n, degree=degree)
+        errors.append(np.sqrt(np.trapezoid((b.y(x) - ref.y(x)) ** 2, x) / 100))
+    rates = np.log2(np.array(errors[:-1]) / np.array(errors[1:]))
+    assert rates[-1] == pytest.approx(degree + 1, abs=0.2)  # L2 error of y: h^(p+1)
+
+
+def shooting(span, dh, q_per_x, H):
+    """Independent reference: shoot y'(0) with solve_ivp, integrating across load kinks piecewise."""
+
+    def end_height(slope0, breaks):
+        state = np.array([0.0, slope0])
+        for a, b in zip(breaks[:-1], breaks[1:], strict=False):
+            sol = solve_ivp(lambda x, s: [s[1], q_per_x(x, s[1]) / H], (a, b), state, rtol=1e-12, atol=1e-12)
+            state = sol.y[:, -1]
+        return state[0] - dh
+
+    return end_height
+
+
+def test_deck_plus_self_weight_against_shooting():
+    H = 5000.0
+    b = cable.solve_bvp(
+        300.0, 10.0, [cable.DeckLoad(8.0), cable.SelfWeight(3.0)], H=H, n_elements=64, degree=3
+    )
+    end = shooting(300.0, 10.0, lambda x, s: 8.0 + 3.0 * np.sqrt(1 + s * s), H)
+    slope0 = brentq(lambda s0: end(s0, [0.0, 300.0]), -5, 5, xtol=1e-14)
+    assert b.slope(1e-9) == pytest.approx(slope0, rel=1e-8)
+    assert b.V_A == pytest.approx(-H * slope0, rel=1e-8)
+
+
+def test_partial_span_ice_against_shooting():
+    # ice 15 N/m per cable length on x in [100, 220] m, on a 3 N/m cable
+    ice = cable.DistributedLoad(qy=lambda x: np.where((x > 100.0) & (x < 220.0), -15.0, 0.0))
+    H = 4000.0
+    mesh = np.union1d(np.linspace(0, 300, 61), [100.0, 220.0])  # nodes at the load jumps
+    b = cable.solve_bvp(300.0, 10.0, [cable.SelfWeight(3.0), ice], H=H, mesh=mesh, degree=3)
+    per_x = lambda x, s: (3.0 + (15.0 if 100 < x < 220 else 0.0)) * np.sqrt(1 + s * s)  # noqa: E731
+    end = shooting(300.0, 10.0, per_x, H)
+    slope0 = brentq(lambda s0: end(s0, [0.0, 100.0, 220.0, 300.0]), -5, 5, xtol=1e-14)
+    assert b.slope(1e-9) == pytest.approx(slope0, rel=1e-8)
+
+
+def test_tangent_agrees_with_finite_differences():
+    problem = _GraphProblem(
+        SPAN, DH, [cable.SelfWeight(W), cable.DeckLoad(5.0)], 1e7, ("length", 801.4), None, 12, 2
+    )
+    rng = np.random.default_rng(1)
+    dofs = REF.y(problem.basis.doflocs[0]) + 0.1 * rng.standard_normal(problem.basis.N)
+    H = 80000.0
+    state = problem.assemble(dofs, H)
+    direction = rng.standard_normal(problem.basis.N)
+    eps = 1e-6
+    plus, minus = problem.assemble(dofs + eps * direction, H), problem.assemble(dofs - eps * direction, H)
+    assert state.K @ direction == pytest.approx((plus.R - minus.R) / (2 * eps), rel=1e-6, abs=1e-6)
+    assert state.dg_dy @ direction == pytest.approx((plus.g - minus.g) / (2 * eps), rel=1e-6)
+    dH = 1.0
+    up, down = problem.assemble(dofs, H + dH), problem.assemble(dofs, H - dH)
+    assert state.dR_dH == pytest.approx((up.R - down.R) / (2 * dH), rel=1e-6, abs=1e-8)
+    assert state.dg_dH == pytest.approx((up.g - down.g) / (2 * dH), rel=1e-6)
+
+
+def test_newton_converges_quadratically():
+    b = cable.solve_bvp(SPAN, DH, cable.SelfWeight(W), length=REF.length, n_elements=200, degree=2)
+    h = b.history
+    assert h[-1] < 1e-10
+    # each step at least squares the error (up to a constant) until round-off
+    assert h[2] < 10 * h[1] ** 2 / h[0] or h[2] < 1e-12
+
+
+def test_failure_raises_with_history():
+    with pytest.raises(ConvergenceError) as info:
+        cable.solve_bvp(SPAN, DH, cable.SelfWeight(W), length=REF.length, rtol=1e-15, max_iter=1)
+    assert len(info.value.history) >= 1
+
+
+@pytest.mark.parametrize(
+    "kwargs, argument",
+    [
+        (dict(load=cable.SelfWeight(W), H=1e5, degree=9), "degree"),
+        (dict(load=cable.PointLoad(900.0, 1.0), H=1e5), "load"),
+        (dict(load=cable.DistributedLoad(qx=lambda x: 1.0 + 0 * x), H=1e5), "load"),
+        (dict(load=cable.SelfWeight(W), low=0.0), "low"),
+        (dict(load=cable.SelfWeight(W), H=1e5, mesh=np.linspace(0, 700, 9)), "mesh"),
+        (dict(load=cable.SelfWeight(W), length=700.0), "length"),
+        (dict(load=[], H=1e5), "load"),
+    ],
+)
+def test_bad_input_names_the_argument(kwargs, argument):
+    load = kwargs.pop("load")
+    with pytest.raises(InputError) as info:
+        cable.solve_bvp(SPAN, DH, load, **kwargs)
+    assert info.value.argument == argument
+
+
+def test_hierarchical_elements_evaluate_at_points_exactly():
+    # skfem 12's ElementLinePp caches Legendre values by point count; ours by points
+    b = cable.solve_bvp(SPAN, DH, cable.SelfWeight(W), H=REF.H, n_elements=8, degree=4)
+    xs = [110.0, 333.0, 110.0, 650.0]
+    values = [b.y(x) for x in xs]  # one point at a time
+    assert values == pytest.approx(list(REF.y(np.array(xs))), rel=1e-7)
