@@ -6,6 +6,7 @@ horizontal tension; V_A, V_B are the upward support reactions. SI units by
 default (m, N, N/m); any consistent system works.
 """
 
+from skcable.cable._arc import ArcSolution, arc_constitutive, arc_equilibrium_x, arc_equilibrium_y
 from skcable.cable._bvp import BVPSolution, graph_dH, graph_residual, graph_tangent, solve_bvp
 from skcable.cable._catenary import Catenary, catenary
 from skcable.cable._elastic import ElasticCatenary, elastic_catenary
@@ -18,6 +19,10 @@ from skcable.cable._surfaces import capstan, membrane_tension, smooth_surface_re
 from skcable.cable.solution import CableSolution
 
 __all__ = [
+    "ArcSolution",
+    "arc_constitutive",
+    "arc_equilibrium_x",
+    "arc_equilibrium_y",
     "BVPSolution",
     "DeckLoad",
     "DistributedLoad",

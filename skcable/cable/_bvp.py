@@ -24,8 +24,9 @@ bordered system
           = -\begin{bmatrix} R \\ g \end{bmatrix},
 
 with the analytic Jacobian ``K = ∫ (H u' v' + dq/dy' u' v) dx``, backtracking
-on the residual, and the parabola of the same total load as the initial
-guess. The support reactions come out of the residual at the boundary dofs
+on the residual, and the catenary of the same total load as the initial
+guess (the parabola where no catenary meets the constraint). The support
+reactions come out of the residual at the boundary dofs
 (``V_A = R_A = -H y'(0)``, ``V_B = R_B = H y'(span)``), which is exact for
 the discrete solution.
 
@@ -55,6 +56,7 @@ from skfem import (
 )
 
 from skcable._checks import exactly_one, positive, real, require
+from skcable.cable._catenary import catenary
 from skcable.cable._loads import PointLoad, unstretched_measure
 from skcable.cable._parabola import parabola
 from skcable.cable.solution import CableSolution, checked
@@ -65,8 +67,8 @@ __all__ = ["BVPSolution", "graph_dH", "graph_residual", "graph_tangent", "solve_
 
 @LinearForm
 def graph_residual(v, w):
-    """``∫ (H y' v' + q v) dx``: the weak equilibrium of the graph formulation."""
-    return w.H * w.y.grad[0] * v.grad[0] + w.q * v
+    """``∫ (H y' v' + q v) dx``, ``y' = s + u'``: the weak equilibrium of the graph form."""
+    return w.H * (w.s + w.u.grad[0]) * v.grad[0] + w.q * v
 
 
 @BilinearForm
@@ -78,7 +80,7 @@ def graph_tangent(u, v, w):
 @LinearForm
 def graph_dH(v, w):
     """``∂R/∂H``: ``∫ (y' v' + dq/dH v) dx``."""
-    return w.y.grad[0] * v.grad[0] + w.dq_dH * v
+    return (w.s + w.u.grad[0]) * v.grad[0] + w.dq_dH * v
 
 
 _ELEMENTS = {1: ElementLineP1, 2: ElementLineP2}
@@ -138,16 +140,21 @@ class _State:
     g: float
     dg_dy: np.ndarray
     dg_dH: float
-    merit: float
+    merit: float  # max-norm of the scaled residual: the convergence test
+    descent: float  # 2-norm of the scaled residual: the line-search merit
 
 
 class BVPSolution(CableSolution):
+    formulation = "graph"
+
     """Solution of :func:`solve_bvp`.
 
     Attributes are those of :class:`~skcable.cable.Catenary` (``H, V_A, V_B,
     T_A, T_B, length, sag, x_low, y_low``, methods ``y, T, slope,
     residual``) plus ``mesh``, ``basis``, ``dofs`` (the FE vector of y),
-    ``iterations``, ``history`` (merit per Newton iteration),
+    ``iterations``, ``history`` (merit per Newton iteration), ``dofs`` (the FE
+    vector of ``u = y - (dh/span) x``, the depth below the chord, so that
+    rounding scales with the sag rather than with dh),
     ``stretched_length`` and ``EA``. With ``EA``, ``length`` is the
     unstretched length, as for :func:`~skcable.cable.elastic_catenary`.
     """
@@ -211,12 +218,13 @@ class BVPSolution(CableSolution):
         """Height of the cable above A at ``x`` (m)."""
         x = np.asarray(real("x", x), dtype=float)
         out = self.basis.probes(x.reshape(1, -1)) @ self.dofs
-        return out.reshape(x.shape)[()]
+        return (self._problem.chord_slope * x + out.reshape(x.shape))[()]
 
     def slope(self, x):
         """dy/dx at ``x`` (inside an element; the one to the left at nodes)."""
         x = np.asarray(real("x", x), dtype=float)
-        return (_gradient_probes(self.basis, x.reshape(1, -1)) @ self.dofs).reshape(x.shape)[()]
+        du = (_gradient_probes(self.basis, x.reshape(1, -1)) @ self.dofs).reshape(x.shape)
+        return (self._problem.chord_slope + du)[()]
 
     def T(self, x):
         """Tension at ``x`` (N): ``H sqrt(1 + y'^2)``."""
@@ -242,6 +250,7 @@ class _GraphProblem:
 
     def __init__(self, span, dh, loads, EA, constraint, mesh, n_elements, degree):
         self.span, self.dh, self.EA, self.constraint = span, dh, EA, constraint
+        self.chord_slope = dh / span  # the unknown is u = y - chord_slope * x, zero at both supports
         self.point_loads = [ld for ld in loads if isinstance(ld, PointLoad)]
         self.distributed = [ld for ld in loads if not isinstance(ld, PointLoad)]
         for ld in self.distributed:
@@ -284,7 +293,7 @@ class _GraphProblem:
 
     def lengths(self, dofs, H):
         """(stretched, unstretched) length by the basis' quadrature."""
-        slope = self.basis.interpolate(dofs).grad[0]
+        slope = self.chord_slope + self.basis.interpolate(dofs).grad[0]
         f = unstretched_measure(slope, H, self.EA)[0]
         dx = self.basis.dx
         return float(np.sum(np.sqrt(1.0 + slope**2) * dx)), float(np.sum(f * dx))
@@ -306,8 +315,9 @@ class _GraphProblem:
         The best quadrature point or node picks the element; Brent's method
         then searches it and its two neighbours with the element's own basis.
         """
-        tilt = 0.0 if kind == "low" else self.dh / self.span  # minimise y - tilt x
-        at_quad = np.asarray(self.basis.interpolate(dofs)) - tilt * self.x_quad
+        tilt = 0.0 if kind == "low" else self.chord_slope  # minimise y - tilt x = u + (s - tilt) x
+        lean = self.chord_slope - tilt
+        at_quad = np.asarray(self.basis.interpolate(dofs)) + lean * self.x_quad
         element = int(np.unravel_index(np.argmin(at_quad), at_quad.shape)[0])
         candidates = []
         for k in range(max(element - 1, 0), min(element + 2, self.mesh.t.shape[1])):
@@ -315,7 +325,7 @@ class _GraphProblem:
             left, right = np.sort(self.mesh.p[0, self.mesh.t[:, k]])
 
             def objective(x, k=k, local=local):
-                return float(local @ self._local_values(k, x)[:, 0]) - tilt * x
+                return float(local @ self._local_values(k, x)[:, 0]) + lean * x
 
             best = minimize_scalar(
                 objective, bounds=(left, right), method="bounded", options={"xatol": 1e-13 * self.span}
@@ -325,25 +335,31 @@ class _GraphProblem:
         _, x_star, k = min(candidates)
         row = np.zeros(self.basis.N)
         row[self.basis.element_dofs[:, k]] = self._local_values(k, x_star)[:, 0]
-        y_star = float(row @ dofs)
+        y_star = self.chord_slope * x_star + float(row @ dofs)
         value = y_star if kind == "low" else tilt * x_star - y_star
         return x_star, value, row
 
     def assemble(self, dofs, H) -> _State:
-        y = self.basis.interpolate(dofs)
-        slope = y.grad[0]
+        u = self.basis.interpolate(dofs)
+        slope_u = u.grad[0]
+        slope = self.chord_slope + slope_u
         q, dq_ds, dq_dh = self.load_terms(slope, H)
-        R = asm(graph_residual, self.basis, y=y, H=H, q=q)
+        R = asm(graph_residual, self.basis, u=u, s=self.chord_slope, H=H, q=q)
         R[self.point_dofs] += self.point_values
         K = asm(graph_tangent, self.basis, H=H, dq_dslope=dq_ds)
-        dR_dH = asm(graph_dH, self.basis, y=y, dq_dH=dq_dh)
+        dR_dH = asm(graph_dH, self.basis, u=u, s=self.chord_slope, dq_dH=dq_dh)
         name, value = self.constraint
         zero = np.zeros(self.basis.N)
         if name == "H":
             g, dg_dy, dg_dH = H - value, zero, 1.0
         elif name == "length":
             f, df_ds, df_dh = unstretched_measure(slope, H, self.EA)
-            g = float(np.sum(f * self.basis.dx)) - value
+            if self.EA is None:  # excess over the chord, free of cancellation (taut cables)
+                s, du = self.chord_slope, slope_u
+                excess = du * (2.0 * s + du) / (f + np.hypot(1.0, s))
+                g = float(np.sum(excess * self.basis.dx)) - self.excess_length
+            else:
+                g = float(np.sum(f * self.basis.dx)) - value
             dg_dy = asm(LinearForm(lambda v, w: w.df_ds * v.grad[0]), self.basis, df_ds=df_ds)
             dg_dH = float(np.sum(df_dh * self.basis.dx))
         elif name in ("sag", "low"):
@@ -356,9 +372,17 @@ class _GraphProblem:
             g = T - value
             dg_dy = (v / T) * K.getrow(end).toarray()[0]
             dg_dH = (H + v * dR_dH[end]) / T
-        interior_residual = np.max(np.abs(R[self.interior]), initial=0.0) / self.load_scale
-        merit = max(interior_residual, abs(g) / self.constraint_scale)
-        return _State(R, K, dR_dH, float(g), dg_dy, float(dg_dH), merit)
+        scaled = np.concatenate([R[self.interior] / self.load_scale, [g / self.constraint_scale]])
+        return _State(
+            R,
+            K,
+            dR_dH,
+            float(g),
+            dg_dy,
+            float(dg_dH),
+            float(np.max(np.abs(scaled))),
+            float(np.linalg.norm(scaled)),
+        )
 
     @cached_property
     def load_scale(self):
@@ -367,10 +391,24 @@ class _GraphProblem:
         q, _, _ = self.load_terms(slope, 0.0)
         return float(np.sum(np.abs(q) * self.basis.dx) + np.sum(np.abs(self.point_values))) or 1.0
 
+    @cached_property
+    def excess_length(self):
+        """Given length minus chord, with the chord's rounding kept out (as in catenary())."""
+        length = self.constraint[1]
+        legs = abs(self.dh)
+        longer, shorter = max(self.span, legs), min(self.span, legs)
+        return ((length - longer) * (length + longer) - shorter * shorter) / (
+            length + np.hypot(self.span, self.dh)
+        )
+
     @property
     def constraint_scale(self):
         name, value = self.constraint
-        return float(np.hypot(self.span, self.dh)) if name == "low" else abs(float(value))
+        if name == "low":
+            return float(np.hypot(self.span, self.dh))
+        if name == "length" and self.EA is None:
+            return float(self.excess_length)
+        return abs(float(value))
 
     def newton_step(self, state, H):
         name = self.constraint[0]
@@ -390,23 +428,37 @@ class _GraphProblem:
 
 
 def _initial_guess(problem):
-    """Parabola carrying the same total vertical load, same constraint."""
-    w_equivalent = problem.load_scale / problem.span
+    """Catenary (or, where none fits the constraint, parabola) of the same total load."""
     name, value = problem.constraint
-    if name == "length" and value <= np.hypot(problem.span, problem.dh) * (1 + 1e-6):
+    chord = np.hypot(problem.span, problem.dh)
+    if name == "length" and value <= chord:
         if problem.EA is None:
             raise InputError("length", "must exceed the chord sqrt(span**2 + dh**2)")
-        value = np.hypot(problem.span, problem.dh) * (1 + 1e-3)  # a stretched cable: start slightly slack
-    guess = parabola(problem.span, problem.dh, w_equivalent, **{name: value})
+        value = chord * (1 + 1e-6)  # an elastic cable shorter than its chord: start just slack
+    length = value if name == "length" else chord
+    try:
+        guess = catenary(problem.span, problem.dh, problem.load_scale / length, **{name: value})
+    except InputError:
+        guess = parabola(problem.span, problem.dh, problem.load_scale / problem.span, **{name: value})
+    s = problem.chord_slope
     basis = problem.basis
     locations = basis.doflocs[0]
     if np.all(np.isfinite(locations)):  # Lagrange element: interpolate at the dofs
-        dofs = guess.y(locations)
+        dofs = guess.y(locations) - s * locations
     else:  # hierarchical (ElementLinePp): vertex values, modal dofs zero
         dofs = np.zeros(basis.N)
-        dofs[basis.nodal_dofs[0]] = guess.y(problem.mesh.p[0])
-    dofs[problem.end_a], dofs[problem.end_b] = 0.0, problem.dh
+        dofs[basis.nodal_dofs[0]] = guess.y(problem.mesh.p[0]) - s * problem.mesh.p[0]
+    dofs[problem.end_a], dofs[problem.end_b] = 0.0, 0.0
     return dofs, float(guess.H)
+
+
+def _choose_formulation(formulation, span, dh, loads, name, value):
+    if formulation not in ("auto", "graph", "arc"):
+        raise InputError("formulation", f"must be 'auto', 'graph' or 'arc', got {formulation!r}")
+    if formulation != "auto":
+        return formulation
+    horizontal = any(getattr(ld, "qx", None) is not None for ld in loads)
+    return "arc" if horizontal else "graph"
 
 
 def solve_bvp(
@@ -425,7 +477,8 @@ def solve_bvp(
     mesh=None,
     rtol: float = 1e-10,
     max_iter: int = 50,
-) -> BVPSolution:
+    formulation: str = "auto",
+):
     """Suspended cable under any vertical loads, solved by finite elements.
 
     Parameters
@@ -448,10 +501,20 @@ def solve_bvp(
     rtol : float
         Newton stops when the interior residual (relative to the total load)
         and the constraint residual are both below ``rtol``.
+    formulation : {"auto", "graph", "arc"}
+        ``"graph"``: y(x) with H a global unknown (any degree, point loads);
+        ``"arc"``: position and tension along the unstretched arc length
+        (:mod:`skcable.cable._arc`: any shape, horizontal loads, P2/P1).
+        ``"auto"`` takes the arc form when a load has a horizontal
+        component, the graph form otherwise: started from the catenary of
+        the same weight it converges from 1e-9 to 99 times the chord and
+        for spans down to 1e-3 of the height difference, and it is the more
+        accurate per element (docs/bvp.md maps both).
 
     Returns
     -------
-    BVPSolution
+    BVPSolution or ArcSolution
+        ``formulation`` tells which was used.
 
     Raises
     ------
@@ -470,6 +533,12 @@ def solve_bvp(
     if name == "low":
         require("low", value < min(0.0, dh), "must lie below both supports, low < min(0, dh)", value)
     positive("rtol", rtol)
+    formulation = _choose_formulation(formulation, span, dh, loads, name, value)
+    if formulation == "arc":
+        from skcable.cable._arc import solve_arc
+
+        solution = solve_arc(span, dh, loads, EA, (name, value), n_elements, degree, rtol, max_iter)
+        return checked(solution, solution.history)
     problem = _GraphProblem(span, dh, loads, EA, (name, value), mesh, n_elements, degree)
     dofs, H_k = _initial_guess(problem)
     if name == "H":
@@ -488,7 +557,7 @@ def solve_bvp(
             trial_H = H_k + step * d_H
             if trial_H > 0:
                 trial = problem.assemble(trial_dofs, trial_H)
-                if trial.merit < (1.0 - 1e-4 * step) * state.merit or trial.merit < rtol:
+                if trial.descent < (1.0 - 1e-4 * step) * state.descent or trial.merit < rtol:
                     break
             step *= 0.5
         else:

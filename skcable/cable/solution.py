@@ -56,7 +56,10 @@ class CableSolution:
 
     def _common_residuals(self, xp):
         """End tensions along the tangent, and the user's constraint met."""
-        out = [(T - xp.hypot(self.H, V)) / T for T, V in ((self.T_A, self.V_A), (self.T_B, self.V_B))]
+        H_B = getattr(self, "H_B", self.H)  # differs from H only under horizontal loads
+        out = [
+            (T - xp.hypot(H, V)) / T for T, H, V in ((self.T_A, self.H, self.V_A), (self.T_B, H_B, self.V_B))
+        ]
         name, value = self.constraint
         achieved = getattr(self, _ATTRIBUTE_OF[name])
         scale = xp.hypot(self.span, self.dh) if name == "low" else value

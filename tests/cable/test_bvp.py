@@ -40,7 +40,7 @@ def test_elastic_matches_irvine():
     b = cable.solve_bvp(SPAN, DH, cable.SelfWeight(W), EA=1e7, length=801.409)
     assert b.H == pytest.approx(e.H, rel=1e-9)
     assert b.stretched_length == pytest.approx(e.stretched_length, rel=1e-12)
-    assert b.length == pytest.approx(801.409, rel=1e-13)  # unstretched
+    assert b.length == pytest.approx(801.409, rel=1e-10)  # unstretched, to the solver tolerance rtol
 
 
 def test_point_loads_reproduce_funicular_to_round_off():
@@ -115,7 +115,8 @@ def test_tangent_agrees_with_finite_differences():
         SPAN, DH, [cable.SelfWeight(W), cable.DeckLoad(5.0)], 1e7, ("length", 801.4), None, 12, 2
     )
     rng = np.random.default_rng(1)
-    dofs = REF.y(problem.basis.doflocs[0]) + 0.1 * rng.standard_normal(problem.basis.N)
+    x = problem.basis.doflocs[0]
+    dofs = REF.y(x) - DH / SPAN * x + 0.1 * rng.standard_normal(problem.basis.N)  # u = y - s x
     H = 80000.0
     state = problem.assemble(dofs, H)
     direction = rng.standard_normal(problem.basis.N)
@@ -130,11 +131,13 @@ def test_tangent_agrees_with_finite_differences():
 
 
 def test_newton_converges_quadratically():
-    b = cable.solve_bvp(SPAN, DH, cable.SelfWeight(W), length=REF.length, n_elements=200, degree=2)
+    # deck plus self weight: the catenary start is off, Newton has work to do
+    b = cable.solve_bvp(SPAN, DH, [cable.DeckLoad(20.0), cable.SelfWeight(5.0)], length=830.0, n_elements=200)
     h = b.history
-    assert h[-1] < 1e-10
-    # each step at least squares the error (up to a constant) until round-off
-    assert h[2] < 10 * h[1] ** 2 / h[0] or h[2] < 1e-12
+    assert len(h) >= 3 and h[-1] < 1e-10
+    # from the second step on, each error is at most a constant times the square of the previous
+    ratios = [h[k + 1] / h[k] ** 2 for k in range(1, len(h) - 1)]
+    assert max(ratios) < 1e3
 
 
 def test_failure_raises_with_history():
@@ -148,7 +151,9 @@ def test_failure_raises_with_history():
     [
         (dict(load=cable.SelfWeight(W), H=1e5, degree=9), "degree"),
         (dict(load=cable.PointLoad(900.0, 1.0), H=1e5), "load"),
-        (dict(load=cable.DistributedLoad(qx=lambda x: 1.0 + 0 * x), H=1e5), "load"),
+        (dict(load=cable.DistributedLoad(qx=lambda x: 1.0 + 0 * x), H=1e5, formulation="graph"), "load"),
+        (dict(load=cable.SelfWeight(W), H=1e5, formulation="string"), "formulation"),
+        (dict(load=cable.PointLoad(100.0, 1.0), H=1e5, formulation="arc"), "load"),
         (dict(load=cable.SelfWeight(W), low=0.0), "low"),
         (dict(load=cable.SelfWeight(W), H=1e5, mesh=np.linspace(0, 700, 9)), "mesh"),
         (dict(load=cable.SelfWeight(W), length=700.0), "length"),
