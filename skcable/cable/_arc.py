@@ -308,31 +308,48 @@ class _ArcProblem:
 
 
 def _arc_guess(problem):
-    """Catenary of the same total vertical load and constraint, in arc length."""
+    """Catenary under the mean load, in the frame where that load is gravity.
+
+    A uniform load per unit length in any direction hangs the cable in a
+    catenary whose "vertical" is the load's direction; the mean load of the
+    actual loads gives that frame. For vertical loads this is the ordinary
+    catenary of the same total weight, with the same constraint.
+    """
     span, dh = problem.span, problem.dh
     name, value = problem.constraint
     chord = float(np.hypot(span, dh))
-    length_hint = max(value, chord) if name == "length" else chord
-    w_eq = problem.total_load(length_hint) / length_hint
-    if name == "length":  # an elastic cable may be shorter than its chord
-        kw = {"length": value if value > chord else chord * (1 + 1e-6)}
-    else:
-        kw = {name: value}
-    guess = catenary(span, dh, w_eq, **kw)
-    L_guess = guess.length if name != "length" else value
-    problem.length_scale = float(L_guess)
-    problem.load_scale = problem.total_load(L_guess)
+    length = (value if value > chord else chord * (1 + 1e-6)) if name == "length" else chord
+    x = np.asarray(problem.basis.global_coordinates())[0] * span
+    Q = arc_loads(problem.loads, x, np.full_like(x, span), length, span)
+    mean = np.array([np.sum(Q[0] * problem.basis.dx), np.sum(Q[1] * problem.basis.dx)]) / length
+    q = float(np.hypot(*mean))
+    up = -mean / q
+    across = np.array([up[1], -up[0]])
+    B = np.array([span, dh])
+    if B @ across < 0:  # mirror the frame so that B lies to the right
+        across = -across
+    span_r, dh_r = max(float(B @ across), 1e-9 * chord), float(B @ up)
+    if name == "length":
+        guess = catenary(span_r, dh_r, q, length=length)
+    elif name in ("H", "low", "sag", "T_max") and abs(up[0]) < 1e-12:  # vertical loads: same constraint
+        guess = catenary(span_r, dh_r, q, **{name: value})
+    else:  # the constraint refers to global axes: start from a moderately slack cable
+        guess = catenary(span_r, dh_r, q, length=1.05 * chord)
     u_a = guess.m - guess.z
 
-    def x_at(sigma):  # catenary abscissa at the arc-length fraction sigma
-        return guess.a * (np.arcsinh(sigma * guess.length / guess.a + np.sinh(u_a)) - u_a)
+    def local(sigma):  # catenary coordinates in the rotated frame at arc fraction sigma
+        xr = guess.a * (np.arcsinh(sigma * guess.length / guess.a + np.sinh(u_a)) - u_a)
+        return xr, guess.y(np.clip(xr, 0.0, span_r))
 
-    x = x_at(problem.basis.doflocs[0])
-    y = guess.y(np.clip(x, 0.0, span))
-    T = guess.T(np.clip(x_at(problem.tbasis.doflocs[0]), 0.0, span))
-    x[problem.end_a], x[problem.end_b] = 0.0, span
-    y[problem.end_a], y[problem.end_b] = 0.0, dh
-    return np.concatenate([x, y, T]), float(L_guess)
+    xr, yr = local(problem.basis.doflocs[0])
+    xs, ys = xr * across[0] + yr * up[0], xr * across[1] + yr * up[1]
+    T = guess.T(np.clip(local(problem.tbasis.doflocs[0])[0], 0.0, span_r))
+    xs[problem.end_a], xs[problem.end_b] = 0.0, span
+    ys[problem.end_a], ys[problem.end_b] = 0.0, dh
+    L_guess = value if name == "length" else guess.length
+    problem.length_scale = float(L_guess)
+    problem.load_scale = problem.total_load(L_guess)
+    return np.concatenate([xs, ys, T]), float(L_guess)
 
 
 class ArcSolution(CableSolution):
