@@ -331,6 +331,9 @@ def _arc_guess(problem):
     span_r, dh_r = max(float(B @ across), 1e-9 * chord), float(B @ up)
     if name == "length":
         guess = catenary(span_r, dh_r, q, length=length)
+        if problem.EA is not None:  # stretch the start by the mean strain it predicts
+            strain = 0.5 * (guess.T_A + guess.T_B) / problem.EA
+            guess = catenary(span_r, dh_r, q, length=max(length * (1 + strain), chord * (1 + 1e-6)))
     elif name in ("H", "low", "sag", "T_max") and abs(up[0]) < 1e-12:  # vertical loads: same constraint
         guess = catenary(span_r, dh_r, q, **{name: value})
     else:  # the constraint refers to global axes: start from a moderately slack cable
@@ -346,7 +349,9 @@ def _arc_guess(problem):
     T = guess.T(np.clip(local(problem.tbasis.doflocs[0])[0], 0.0, span_r))
     xs[problem.end_a], xs[problem.end_b] = 0.0, span
     ys[problem.end_a], ys[problem.end_b] = 0.0, dh
-    L_guess = value if name == "length" else guess.length
+    L_guess = (
+        value if name == "length" else guess.length / (1 + 0.5 * (guess.T_A + guess.T_B) * problem.compliance)
+    )
     problem.length_scale = float(L_guess)
     problem.load_scale = problem.total_load(L_guess)
     return np.concatenate([xs, ys, T]), float(L_guess)

@@ -406,9 +406,12 @@ class _GraphProblem:
         name, value = self.constraint
         if name == "low":
             return float(np.hypot(self.span, self.dh))
-        if name == "length" and self.EA is None:
-            return float(self.excess_length)
+        if name == "length":  # relative to the excess over the chord: taut cables keep their digits
+            return float(self.excess_length) if self.EA is None else self.stretched_excess
         return abs(float(value))
+
+    #: stretched length minus chord at the initial guess (set by :func:`_initial_guess`)
+    stretched_excess = 1.0
 
     def newton_step(self, state, H):
         name = self.constraint[0]
@@ -449,6 +452,8 @@ def _initial_guess(problem):
         dofs = np.zeros(basis.N)
         dofs[basis.nodal_dofs[0]] = guess.y(problem.mesh.p[0]) - s * problem.mesh.p[0]
     dofs[problem.end_a], dofs[problem.end_b] = 0.0, 0.0
+    if problem.EA is not None:
+        problem.stretched_excess = max(problem.lengths(dofs, guess.H)[0] - chord, 1e-12 * chord)
     return dofs, float(guess.H)
 
 
