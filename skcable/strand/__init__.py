@@ -4,8 +4,26 @@ annexes A and B). SI units: m, N, Pa.
 """
 
 from skcable.strand._bending import BendingLaw
+from skcable.strand._capacity import CapacityCurve, capacity_curve
 from skcable.strand._geometry import Layer, Strand, Wires, preset
 from skcable.strand._material import Material, material
+from skcable.strand._model import StepResult, StrandModel, geometric_block, material_block, section_residual
 from skcable.strand._section import Section
 
-__all__ = ["BendingLaw", "Layer", "Material", "Section", "Strand", "Wires", "material", "preset"]
+__all__ = [
+    "BendingLaw",
+    "CapacityCurve",
+    "Layer",
+    "Material",
+    "Section",
+    "StepResult",
+    "Strand",
+    "StrandModel",
+    "Wires",
+    "capacity_curve",
+    "geometric_block",
+    "material",
+    "material_block",
+    "preset",
+    "section_residual",
+]

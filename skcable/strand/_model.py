@@ -1,0 +1,450 @@
+r"""The strand beam-cable finite element on scikit-fem (seed 003 chapter 4).
+
+The strand axis is x ∈ [0, L]; the fields are the displacements of the core
+centre line: axial u (P2), transverse v, w (``ElementLineHermite``: value and
+slope per node) and twist φ (P2), on bases that share one quadrature.
+Every wire j is a fibre at its helical position
+
+.. math:: y_j = R_j \sin\psi_j(x), \quad z_j = R_j\cos\psi_j(x), \quad
+          \psi_j(x) = \psi_{j0} + d_j\,2\pi x / p_j
+
+(lay length p, lay direction d), so the eccentricity of a damaged section
+rotates with the lay exactly (REFERENCE.md §3, mechanism (a), included once).
+Its axial strain, signs as in seed 003 eq. 4.5 with y up and z out of the
+v-plane,
+
+.. math:: \varepsilon_j = \cos^2\alpha_j\left(\varepsilon_a - y_j\kappa_v - z_j\kappa_w\right)
+          + R_j\sin\alpha_j\cos\alpha_j\,d_j\,\varphi', \qquad
+          \varepsilon_a = u' + \tfrac12(v'^2 + w'^2),
+
+with (κ_v, κ_w) = (v″, w″). The lever (y_j, z_j) splits into the net
+section's centroid c(x) (axial-stiffness weighted, rotating with the lay)
+and the offset from it: the resultant of the wire forces always acts at the
+centroid (the eccentric moment N·e is statics, whatever the slip state),
+and slip saturates only the bending about the centroid. Virtual work per unit
+strand length (wire length per strand length ``1/cos α``):
+
+.. math:: \delta W = \int_0^L \Big[\sum_j \frac{A_j\sigma(\varepsilon_j)}{\cos\alpha_j}\,\delta\varepsilon_j
+          + EI_w (v''\delta v'' + w''\delta w'') + GJ_w\,\varphi'\delta\varphi'\Big]dx,
+
+``EI_w = Σ E I_w cos α`` and ``GJ_w = Σ G J_w cos α`` the wires' own bending and
+torsion (core straight). With the generalized strains g = (u′, v′, v″, w′,
+w″, φ′), ``b_j = ∂ε_j/∂g`` gives the section forces ``S = Σ s_j b_j`` and
+the consistent tangent
+
+.. math:: D = \sum_j \frac{A_j E_t(\varepsilon_j)}{\cos\alpha_j} b_j b_j^T
+          \;+\; N\,(e_{v'}e_{v'}^T + e_{w'}e_{w'}^T),
+
+the first part the material (elastic) stiffness ``K_L``, the second the
+geometric stiffness ``K_G`` with ``N = Σ s_j ∂ε_j/∂ε_a`` (seed 003 eq. 4.1).
+
+Slip (Cardou's bilinear law, :class:`~skcable.strand.BendingLaw`):
+``slip="axis"`` clamps each principal-axis component of the composite
+curvature at ±κ_m(ε_a) at every quadrature point (the rest is carried by
+the wires' own bending, so ``M = M_rf + EI_min κ`` beyond κ_m);
+``slip="element"`` is the thesis's rule: an element whose curvature exceeds
+κ_m about either principal axis anywhere loses the composite bending
+altogether (wires bend about their own axes, seed 003 eq. 4.8).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+import numpy as np
+import scipy.sparse as sp
+from skfem import Basis, BilinearForm, ElementLineHermite, ElementLineP2, LinearForm, MeshLine, asm, solve
+
+from skcable._checks import nonnegative, positive
+from skcable.errors import ConvergenceError, InputError
+
+__all__ = ["StrandModel", "StepResult", "material_block", "geometric_block", "section_residual"]
+
+FIELDS = ("u", "v", "w", "phi")
+#: generalized strains: (field, derivative order)
+STRAINS = (("u", 1), ("v", 1), ("v", 2), ("w", 1), ("w", 2), ("phi", 1))
+
+
+def _derivative(f, order):
+    return f.grad[0] if order == 1 else f.hess[0][0]
+
+
+def section_residual(name: str) -> LinearForm:
+    """``∫ Σ_a S_a d_a(δ)`` over the generalized strains of field ``name``;
+    the section forces are passed as ``S0 … S5``."""
+    entries = [(a, order) for a, (f, order) in enumerate(STRAINS) if f == name]
+
+    @LinearForm
+    def form(v, w):
+        return sum(w[f"S{a}"] * _derivative(v, order) for a, order in entries)
+
+    form.__doc__ = f"Internal virtual work of field {name!r}: section forces times its strain variations."
+    return form
+
+
+def material_block(test: str, trial: str) -> BilinearForm:
+    """``∫ Σ_ab D_ab d_b(Δ) d_a(δ)``: material (elastic) tangent block; ``D`` as ``Dab``."""
+    rows = [(a, order) for a, (f, order) in enumerate(STRAINS) if f == test]
+    cols = [(b, order) for b, (f, order) in enumerate(STRAINS) if f == trial]
+
+    @BilinearForm
+    def form(u, v, w):
+        return sum(
+            w[f"D{a}{b}"] * _derivative(u, ob) * _derivative(v, oa) for a, oa in rows for b, ob in cols
+        )
+
+    return form
+
+
+@BilinearForm
+def _geometric_form(u, v, w):
+    return w.N * u.grad[0] * v.grad[0]
+
+
+def geometric_block(test: str, trial: str) -> BilinearForm | None:
+    """``∫ N Δ' δ'`` for (v, v) and (w, w): the geometric stiffness; None elsewhere."""
+    return _geometric_form if test == trial and test in ("v", "w") else None
+
+
+_RESIDUAL = {name: section_residual(name) for name in FIELDS}
+_MATERIAL = {(a, b): material_block(a, b) for a in FIELDS for b in FIELDS}
+
+
+@dataclass
+class StepResult:
+    """State of the strand at one load step.
+
+    Attributes
+    ----------
+    strain, force : float
+        Imposed axial strain and the axial reaction at x = L (N).
+    x : ndarray (n_elements, n_quad)
+        Quadrature points (m).
+    curvature : ndarray (2, n_elements, n_quad)
+        Curvature about principal axes 1 and 2 of the local (rotating) section (1/m).
+    kappa_m : ndarray (2, n_elements, n_quad)
+        Critical curvatures there.
+    slipping : ndarray (2, n_elements, n_quad) of bool
+        Quadrature points in slip, per principal axis (``slip="axis"``), or
+        the element state broadcast (``slip="element"``).
+    wire_strain, wire_stress : ndarray (n_wires, n_elements, n_quad)
+        Broken wires carry zero.
+    iterations : int
+    history : list of float
+    """
+
+    strain: float
+    force: float
+    x: np.ndarray
+    curvature: np.ndarray
+    kappa_m: np.ndarray
+    slipping: np.ndarray
+    wire_strain: np.ndarray
+    wire_stress: np.ndarray
+    dofs: np.ndarray
+    iterations: int
+    history: list = field(default_factory=list)
+
+    @property
+    def slip_fraction(self) -> float:
+        """Fraction of the strand length in slip (about either axis)."""
+        return float(np.mean(np.any(self.slipping, axis=0)))
+
+
+class StrandModel:
+    """Finite-element model of a strand pulled along its axis.
+
+    Parameters
+    ----------
+    strand : Strand
+        Geometry, damage, material.
+    length : float
+        Specimen length (m); seed 003 does not state it: 1 m by default.
+    n_elements : int, optional
+        Number of elements; default: 16 per lay length, at least 64.
+    mesh : MeshLine or array, optional
+        Node abscissae from 0 to length (overrides ``n_elements``).
+    grading : float in [0, 1)
+        Mesh grading toward both clamps (boundary layer ~ sqrt(EI/N)):
+        ``x = L (s - g sin(2 pi s) / (2 pi))``, 0 uniform.
+    slip : {"none", "axis", "element"}
+        Stick model, Cardou's law per quadrature point and principal axis, or
+        the thesis's element rule.
+    mu : float
+        Friction coefficient of the bending law.
+
+    Attributes
+    ----------
+    external : list of (field, LinearForm, dict)
+        Terms an analyst adds: each is assembled on the field's basis (with
+        the dict as extra ``w`` fields) and subtracted from the internal
+        force, e.g. ``("v", LinearForm(lambda v, w: q * v), {})`` for a
+        transverse load per unit length.
+    """
+
+    def __init__(
+        self,
+        strand,
+        length: float = 1.0,
+        *,
+        n_elements=None,
+        mesh=None,
+        grading: float = 0.6,
+        slip: str = "none",
+        mu: float = 0.5,
+    ):
+        if slip not in ("none", "axis", "element"):
+            raise InputError("slip", f"must be 'none', 'axis' or 'element', got {slip!r}")
+        self.strand, self.length, self.slip = strand, float(positive("length", length)), slip
+        self.mu = float(nonnegative("mu", mu))
+        if not 0 <= grading < 1:
+            raise InputError("grading", f"must lie in [0, 1), got {grading!r}")
+        if slip != "none" and len(strand.layers) != 1:
+            raise InputError("slip", "slip models need a single helical layer (1x7-type strands)")
+        self.mesh = self._mesh(n_elements, mesh, grading)
+        self.ub = Basis(self.mesh, ElementLineP2(), intorder=6)
+        self.vb = self.ub.with_element(ElementLineHermite())
+        self.bases = {"u": self.ub, "v": self.vb, "w": self.vb, "phi": self.ub}
+        self.offsets = np.cumsum([0] + [self.bases[f].N for f in FIELDS])
+        self._wires()
+        self._boundary()
+        self._critical_curvature_table()
+        self.external = []
+
+    # --- set-up --------------------------------------------------------------
+    def _mesh(self, n_elements, mesh, grading):
+        if mesh is not None:
+            nodes = np.asarray(mesh.p[0] if isinstance(mesh, MeshLine) else mesh, dtype=float)
+            if not (np.isclose(nodes.min(), 0) and np.isclose(nodes.max(), self.length)):
+                raise InputError("mesh", f"must run from 0 to length = {self.length}")
+            nodes = np.sort(nodes)
+        else:
+            lay = float(np.min(self.strand.lay_lengths))
+            n = int(n_elements) if n_elements is not None else max(64, int(np.ceil(16 * self.length / lay)))
+            if n < 2:
+                raise InputError("n_elements", f"must be at least 2, got {n_elements!r}")
+            s = np.linspace(0.0, 1.0, n + 1)
+            nodes = self.length * (s - grading * np.sin(2 * np.pi * s) / (2 * np.pi))
+        L = self.length
+        return MeshLine(nodes).with_boundaries(
+            {"left": lambda x: np.isclose(x[0], 0.0), "right": lambda x: np.isclose(x[0], L)}
+        )
+
+    def _wires(self):
+        s, w = self.strand, self.strand.wires()
+        self.wire_data = w
+        alive = w.intact
+        cos, sin = np.cos(w.lay_angle), np.sin(w.lay_angle)
+        lay_length = np.zeros_like(w.radius)
+        helical = w.layer > 0
+        lay_length[helical] = s.lay_lengths[w.layer[helical] - 1]
+        self.x_quad = np.asarray(self.ub.global_coordinates())[0]  # (ne, nq)
+        rate = np.where(helical, w.direction * 2 * np.pi / np.where(helical, lay_length, 1.0), 0.0)
+        psi = w.psi[:, None, None] + rate[:, None, None] * self.x_quad[None]
+        self.wire_y = w.radius[:, None, None] * np.sin(psi)
+        self.wire_z = w.radius[:, None, None] * np.cos(psi)
+        self.rotation = (
+            rate[helical][0] * self.x_quad if helical.any() else 0 * self.x_quad
+        )  # section rotation
+        weight = np.where(alive, w.area * cos**3, 0.0)[:, None, None]  # axial stiffness / E
+        self.centroid_y = np.sum(weight * self.wire_y, axis=0) / np.sum(weight)
+        self.centroid_z = np.sum(weight * self.wire_z, axis=0) / np.sum(weight)
+        self.c2 = (cos**2)[:, None, None]
+        self.sc = (w.radius * sin * cos * w.direction)[:, None, None]
+        self.area_weight = np.where(alive, w.area / cos, 0.0)[:, None, None]  # A / cos(alpha)
+        material = s.material
+        self.EI_own = material.E_e * float(np.sum(np.where(alive, w.inertia * cos, 0.0)))
+        self.GJ_own = material.G * float(np.sum(np.where(alive, 2 * w.inertia * cos, 0.0)))
+        self.alive = alive
+
+    def _boundary(self):
+        D, self.pull = [], None
+        for name in FIELDS:
+            basis, offset = self.bases[name], self.offsets[FIELDS.index(name)]
+            left, right = basis.get_dofs("left").all(), basis.get_dofs("right").all()
+            D += [offset + left, offset + right]
+            if name == "u":
+                self.pull = offset + right[0]
+                self.anchor = offset + left[0]
+        self.fixed = np.unique(np.concatenate(D))
+        self.free = np.setdiff1d(np.arange(self.offsets[-1]), self.fixed)
+
+    def _critical_curvature_table(self):
+        """κ_m per principal axis on a strain grid (Cardou's law, this section)."""
+        from skcable.strand._bending import BendingLaw
+
+        section = self.strand.section()
+        self.section = section
+        levers = [np.array([-t[1], t[0]]) for t in section.principal_axes]  # (y, z) of each lever direction
+        self.lever_angle = np.array([np.arctan2(n[0], n[1]) for n in levers])  # from +z toward +y
+        top = self.strand.material.eps_rupture
+        self.kappa_grid = np.linspace(0.0, 0.999 * top, 201)
+        table = [
+            BendingLaw(section, mu=self.mu, axial_strain=e).kappa_m if e > 0 else np.zeros(2)
+            for e in self.kappa_grid
+        ]
+        self.kappa_table = np.array(table).T  # (2, n)
+
+    def kappa_m(self, axial_strain):
+        """Critical curvatures (2, ...) and their derivative w.r.t. the axial strain."""
+        eps = np.clip(axial_strain, 0.0, self.kappa_grid[-1])
+        values = np.array([np.interp(eps, self.kappa_grid, row) for row in self.kappa_table])
+        slopes = np.diff(self.kappa_table, axis=1) / np.diff(self.kappa_grid)
+        index = np.clip(np.searchsorted(self.kappa_grid, eps) - 1, 0, slopes.shape[1] - 1)
+        derivative = np.array([row[index] for row in slopes]) * (axial_strain > 0)
+        return values, derivative
+
+    # --- fields and section ----------------------------------------------------
+    def split(self, U):
+        return {name: U[self.offsets[i] : self.offsets[i + 1]] for i, name in enumerate(FIELDS)}
+
+    def generalized_strains(self, U):
+        parts = self.split(U)
+        fu, fv, fw, fp = (self.bases[n].interpolate(parts[n]) for n in FIELDS)
+        return np.array([fu.grad[0], fv.grad[0], fv.hess[0][0], fw.grad[0], fw.hess[0][0], fp.grad[0]])
+
+    def levers(self):
+        """Unit lever directions (y, z) of principal axes 1, 2 at the quadrature points: (2, 2, ne, nq)."""
+        angle = self.lever_angle[:, None, None] + self.rotation[None]
+        return np.array([np.sin(angle), np.cos(angle)]).transpose(1, 0, 2, 3)
+
+    def section_state(self, U, element_slip=None):
+        """Wire strains, stresses, section forces S (6, ne, nq) and tangents D_mat (6, 6, ne, nq), N."""
+        g = self.generalized_strains(U)
+        axial = g[0] + 0.5 * (g[1] ** 2 + g[3] ** 2)
+        kappa = np.array([g[2], g[4]])  # (v'', w'') components along y, z
+        levers = self.levers()  # (axis, yz, ne, nq)
+        k_principal = np.einsum("kcen,cen->ken", levers, kappa)
+        k_m, dk_m = self.kappa_m(axial)
+        if self.slip == "axis":
+            slipping = np.abs(k_principal) > k_m
+        elif self.slip == "element" and element_slip is not None:
+            slipping = np.broadcast_to(element_slip[None, :, None], k_principal.shape)
+        else:
+            slipping = np.zeros(k_principal.shape, dtype=bool)
+        if self.slip == "element":
+            clamped = np.where(slipping, 0.0, k_principal)
+            d_clamp = np.where(slipping, 0.0, 1.0)
+            d_eps = np.zeros_like(k_principal)
+        else:
+            clamped = np.where(slipping, np.sign(k_principal) * k_m, k_principal)
+            d_clamp = np.where(slipping, 0.0, 1.0)
+            d_eps = np.where(slipping, np.sign(k_principal) * dk_m, 0.0)
+        kappa_c = np.einsum("kcen,ken->cen", levers, clamped)  # bending about the centroid seen by the wires
+        # dκc/dκ (2x2) and dκc/dε_a (2)
+        P = np.einsum("kcen,ken,kden->cden", levers, d_clamp, levers)
+        q = np.einsum("kcen,ken->cen", levers, d_eps)
+        # lever = centroid offset (the eccentricity: never slips) + offset from the centroid (saturates)
+        cy, cz = self.centroid_y[None], self.centroid_z[None]
+        y, z, c2, sc = self.wire_y - cy, self.wire_z - cz, self.c2, self.sc
+        eccentric = cy * kappa[0][None] + cz * kappa[1][None]
+        strain = (
+            c2 * (axial[None] - eccentric - y * kappa_c[0][None] - z * kappa_c[1][None]) + sc * g[5][None]
+        )
+        material = self.strand.material
+        stress = np.where(self.alive[:, None, None], material.stress(strain), 0.0)
+        tangent = np.where(self.alive[:, None, None], material.tangent(strain), 0.0)
+        d_axial = c2 * (1.0 - y * q[0][None] - z * q[1][None])  # ∂ε_j/∂ε_a
+        b = np.array(
+            [
+                d_axial,
+                d_axial * g[1][None],
+                -c2 * (cy + y * P[0, 0][None] + z * P[1, 0][None]),
+                d_axial * g[3][None],
+                -c2 * (cz + y * P[0, 1][None] + z * P[1, 1][None]),
+                np.broadcast_to(sc, strain.shape),
+            ]
+        )  # (6, nw, ne, nq)
+        s = self.area_weight * stress
+        k = self.area_weight * tangent
+        S = np.einsum("jen,ajen->aen", s, b)
+        D = np.einsum("ajen,jen,bjen->aben", b, k, b)
+        S[2] += self.EI_own * g[2]
+        S[4] += self.EI_own * g[4]
+        S[5] += self.GJ_own * g[5]
+        D[2, 2] += self.EI_own
+        D[4, 4] += self.EI_own
+        D[5, 5] += self.GJ_own
+        N = np.einsum("jen,jen->en", s, d_axial)
+        return dict(
+            S=S,
+            D=D,
+            N=N,
+            strain=strain,
+            stress=stress,
+            curvature=k_principal,
+            kappa_m=k_m,
+            slipping=slipping,
+            axial=axial,
+        )
+
+    # --- assembly ----------------------------------------------------------------
+    def assemble(self, U, element_slip=None, *, parts=("material", "geometric")):
+        """Residual (internal force vector) and tangent ``K = K_L + K_G`` (or the parts asked)."""
+        state = self.section_state(U, element_slip)
+        S, D, N = state["S"], state["D"], state["N"]
+        R = np.concatenate(
+            [asm(_RESIDUAL[n], self.bases[n], **{f"S{a}": S[a] for a in range(6)}) for n in FIELDS]
+        )
+        for name, form, kwargs in self.external:  # terms an analyst adds (loads)
+            i = FIELDS.index(name)
+            R[self.offsets[i] : self.offsets[i + 1]] -= asm(form, self.bases[name], **kwargs)
+        Dkw = {f"D{a}{b}": D[a, b] for a in range(6) for b in range(6)}
+        blocks = []
+        for test in FIELDS:
+            row = []
+            for trial in FIELDS:
+                block = None
+                if "material" in parts:
+                    block = asm(_MATERIAL[(test, trial)], self.bases[trial], self.bases[test], **Dkw)
+                geometric = geometric_block(test, trial)
+                if "geometric" in parts and geometric is not None:
+                    G = asm(geometric, self.bases[trial], self.bases[test], N=N)
+                    block = G if block is None else block + G
+                row.append(
+                    block if block is not None else sp.csr_matrix((self.bases[test].N, self.bases[trial].N))
+                )
+            blocks.append(row)
+        K = sp.bmat(blocks, format="csr")
+        return R, K, state
+
+    # --- solution ----------------------------------------------------------------
+    def uniform(self, strain):
+        """Dof vector of the uniform axial strain ``u = strain·x`` (the straight start)."""
+        U = np.zeros(self.offsets[-1])
+        U[: self.ub.N] = strain * self.ub.doflocs[0]
+        return U
+
+    def solve_step(self, U, strain, element_slip=None, *, tol=1e-9, max_iter=30):
+        """Newton at imposed axial strain (u(L) = strain·L) from ``U`` (None: uniform strain).
+
+        Returns ``(U, state, history, R)``; raises ConvergenceError with the history.
+        """
+        U = self.uniform(strain) if U is None else U.copy()
+        U[self.fixed] = 0.0
+        U[self.pull] = strain * self.length
+        scale = max(self.section.EA * max(abs(strain), 1e-6), 1.0)
+        history = []
+        R, K, state = self.assemble(U, element_slip)
+        for _ in range(max_iter):
+            norm = float(np.max(np.abs(R[self.free]))) / scale
+            history.append(norm)
+            if norm < tol:
+                return U, state, history, R
+            dU = solve(K[self.free][:, self.free], -R[self.free])
+            step = 1.0
+            for _ in range(20):  # backtracking on the residual; the accepted assembly is reused
+                trial = U.copy()
+                trial[self.free] += step * dU
+                R_trial, K_trial, state_trial = self.assemble(trial, element_slip)
+                if np.max(np.abs(R_trial[self.free])) / scale < (1 - 1e-4 * step) * norm:
+                    break
+                step *= 0.5
+            U, R, K, state = trial, R_trial, K_trial, state_trial
+        raise ConvergenceError(f"StrandModel: Newton did not converge at strain {strain:.6g}", history)
+
+    def capacity_curve(self, max_strain=None, n_steps=None):
+        """Force–strain curve up to rupture (see :func:`skcable.strand.capacity_curve`)."""
+        from skcable.strand._capacity import capacity_curve
+
+        return capacity_curve(self, max_strain, n_steps)

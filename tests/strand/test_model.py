@@ -1,0 +1,160 @@
+"""Strand finite element: textbook matrices, FD tangent, closed forms, EA, convergence, capacity."""
+
+import numpy as np
+import pytest
+from skfem import LinearForm
+
+from skcable import strand
+from skcable.errors import InputError
+
+STRAIGHT = strand.Strand(3e-3, (strand.Layer(6, 3e-3, lay_angle=1e-9),), strand.material("steel"))
+
+
+def block(model, K, a, b):
+    fields = ("u", "v", "w", "phi")
+    i, j = fields.index(a), fields.index(b)
+    o = model.offsets
+    return K[o[i] : o[i + 1]][:, o[j] : o[j + 1]].toarray()
+
+
+def test_straight_section_gives_textbook_euler_bernoulli_matrices():
+    L, strain = 0.5, 0.001
+    model = strand.StrandModel(STRAIGHT, L, n_elements=2, grading=0.0)
+    U = model.uniform(strain)
+    _, K, _ = model.assemble(U)
+    sec = model.section
+    EI, N, h = sec.EI_max[0], sec.EA * strain, L / 2
+    # Hermite element: EI (bending) + N/(30 h) (geometric), dofs (v, v') per node
+    kb = (
+        EI
+        / h**3
+        * np.array(
+            [
+                [12, 6 * h, -12, 6 * h],
+                [6 * h, 4 * h * h, -6 * h, 2 * h * h],
+                [-12, -6 * h, 12, -6 * h],
+                [6 * h, 2 * h * h, -6 * h, 4 * h * h],
+            ]
+        )
+    )
+    kg = (
+        N
+        / (30 * h)
+        * np.array(
+            [
+                [36, 3 * h, -36, 3 * h],
+                [3 * h, 4 * h * h, -3 * h, -h * h],
+                [-36, -3 * h, 36, -3 * h],
+                [3 * h, -h * h, -3 * h, 4 * h * h],
+            ]
+        )
+    )
+    vb = model.vb
+    order = np.array([[vb.nodal_dofs[0, n], vb.nodal_dofs[1, n]] for n in range(3)])  # (node, [v, v'])
+    expected = np.zeros((vb.N, vb.N))
+    for e in range(2):
+        dofs = order[[e, e + 1]].ravel()
+        expected[np.ix_(dofs, dofs)] += kb + kg
+    assert block(model, K, "v", "v") == pytest.approx(expected, rel=1e-10, abs=1e-9 * EI / h**3)
+    assert block(model, K, "w", "w") == pytest.approx(expected, rel=1e-10, abs=1e-9 * EI / h**3)
+    # P2 bar for the axial field: EA/(3h) [[7, -8, 1], [-8, 16, -8], [1, -8, 7]]
+    bar = np.array([[7, -8, 1], [-8, 16, -8], [1, -8, 7]]) / (3 * h)
+    ub = model.ub
+    expected_u = np.zeros((ub.N, ub.N))
+    for e in range(2):
+        dofs = ub.element_dofs[[0, 2, 1], e]  # left, middle, right
+        expected_u[np.ix_(dofs, dofs)] += sec.EA * bar
+    assert block(model, K, "u", "u") == pytest.approx(expected_u, rel=1e-10, abs=1e-6 * sec.EA / h)
+    # bending, axial and torsion decouple for a straight, intact section
+    scale = sec.EA / h  # the largest stiffness entries
+    for a, b in (("u", "v"), ("u", "w"), ("v", "w"), ("u", "phi"), ("v", "phi")):
+        assert np.abs(block(model, K, a, b)).max() < 1e-9 * scale  # lay angle 1e-9: coupling ~ 1e-11
+
+
+def test_geometric_part_is_separate():
+    model = strand.StrandModel(STRAIGHT, 0.5, n_elements=4, grading=0.0)
+    U = model.uniform(0.002)
+    _, K, _ = model.assemble(U)
+    _, K_L, _ = model.assemble(U, parts=("material",))
+    _, K_G, _ = model.assemble(U, parts=("geometric",))
+    assert abs(K - K_L - K_G).max() == pytest.approx(0.0, abs=1e-6)
+    assert abs(K_G).max() > 0
+
+
+@pytest.mark.parametrize("slip", ["none", "axis"])
+def test_tangent_agrees_with_finite_differences(slip):
+    model = strand.StrandModel(strand.preset("steel-9.5").damaged(2), 0.4, n_elements=12, slip=slip)
+    rng = np.random.default_rng(0)
+    U = model.uniform(0.003) + 1e-5 * rng.standard_normal(model.offsets[-1])
+    R, K, _ = model.assemble(U)
+    d = rng.standard_normal(U.size) * 1e-3
+    eps = 1e-6
+    fd = (model.assemble(U + eps * d)[0] - model.assemble(U - eps * d)[0]) / (2 * eps)
+    assert K @ d == pytest.approx(fd, rel=1e-4, abs=1e-6 * np.abs(fd).max())
+
+
+def test_clamped_tensioned_beam_under_transverse_load():
+    L, q, strain = 1.0, 1.0, 0.001
+    model = strand.StrandModel(STRAIGHT, L, n_elements=64, grading=0.0)
+    model.external = [("v", LinearForm(lambda v, w: q * v), {})]
+    U, _, _, _ = model.solve_step(None, strain)
+    N, EI = model.section.EA * strain, model.section.EI_max[0]
+    k = np.sqrt(N / EI)
+    x = np.array([0.05, 0.25, 0.5])
+    A = q * L / (2 * N * k * np.sinh(k * L / 2))
+    exact = q * x * (L - x) / (2 * N) + A * (np.cosh(k * (x - L / 2)) - np.cosh(k * L / 2))
+    assert model.vb.probes(np.atleast_2d(x)) @ model.split(U)["v"] == pytest.approx(exact, rel=2e-5)
+
+
+@pytest.mark.parametrize("name", ["steel-9.5", "aluminium-14.3"])
+def test_undamaged_strand_stays_straight_with_F_equal_EA_eps(name):
+    model = strand.StrandModel(strand.preset(name), 0.6, n_elements=24)
+    U, _, _, R = model.solve_step(None, 0.002)
+    assert R[model.pull] == pytest.approx(model.section.EA * 0.002, rel=1e-12)
+    parts = model.split(U)
+    assert np.abs(parts["v"]).max() < 1e-12 and np.abs(parts["w"]).max() < 1e-12
+
+
+def test_mesh_convergence_of_force_and_peak_curvature():
+    d = strand.preset("steel-9.5").damaged(1)
+    forces, peaks = [], []
+    for n in (24, 48, 96):
+        model = strand.StrandModel(d, 0.5, n_elements=n)
+        _, state, _, R = model.solve_step(None, 0.003)
+        forces.append(R[model.pull])
+        peaks.append(np.abs(state["curvature"]).max())
+    assert abs(forces[2] / forces[1] - 1) < abs(forces[1] / forces[0] - 1) + 1e-9
+    assert abs(forces[2] / forces[1] - 1) < 1e-3
+    assert abs(peaks[2] / peaks[1] - 1) < 0.02
+
+
+def test_capacity_curve_undamaged_is_EA_then_yields_and_breaks():
+    model = strand.StrandModel(strand.preset("steel-9.5"), 0.3, n_elements=12)
+    curve = model.capacity_curve(n_steps=24)
+    assert curve.ruptured
+    assert curve.K_Leq == pytest.approx(model.section.EA, rel=1e-10)
+    # the outer wires reach eps_rupture when the strand strain is eps_rupture / cos^2(alpha)... the core first
+    assert curve.strain[-1] == pytest.approx(strand.material("steel").eps_rupture, rel=1e-6)
+    assert curve.D_r == pytest.approx(0.0, abs=1e-12)
+
+
+def test_damage_softens_and_bends():
+    d = strand.preset("steel-9.5").damaged(1)
+    stick = strand.StrandModel(d, 1.0, n_elements=32).capacity_curve(n_steps=40)
+    slip = strand.StrandModel(d, 1.0, n_elements=32, slip="element").capacity_curve(n_steps=40)
+    EA = d.section().EA
+    assert stick.K_Leq < EA  # the eccentric, rotating resultant bends the strand
+    assert slip.K_Leq < stick.K_Leq
+    assert slip.slip_fraction.max() == 1.0
+    assert 0 < stick.D_r < slip.D_r < 1
+
+
+def test_bad_input():
+    with pytest.raises(InputError, match="slip"):
+        strand.StrandModel(strand.preset("steel-9.5"), 1.0, slip="sometimes")
+    with pytest.raises(InputError, match="length"):
+        strand.StrandModel(strand.preset("steel-9.5"), -1.0)
+    with pytest.raises(InputError, match="grading"):
+        strand.StrandModel(strand.preset("steel-9.5"), 1.0, grading=1.0)
+    with pytest.raises(InputError, match="n_steps"):
+        strand.StrandModel(strand.preset("steel-9.5"), 0.3, n_elements=8).capacity_curve(n_steps=2)
