@@ -32,8 +32,8 @@ class CapacityCurve:
     ruptured : bool
         Whether the curve ended at a wire's rupture strain.
     chatter_steps : list of int
-        Steps whose element slip states did not settle (``slip="element"``):
-        the union of the states met was kept (conservative).
+        Steps whose slip state did not settle (it cycled, or the re-solve with
+        the new state failed): the previous state was kept for that step.
     """
 
     model: object
@@ -44,6 +44,7 @@ class CapacityCurve:
     ruptured: bool
     chatter_steps: list = field(default_factory=list)
     n_steps: int = 0
+    failure: str | None = None
 
     @cached_property
     def _elastic_end(self):
@@ -91,55 +92,64 @@ class CapacityCurve:
 
     @property
     def D_r(self) -> float:
-        """Damage index ``1 - U_T / U_T0`` (eq. 4.31)."""
+        """Damage index ``1 - U_T / U_T0`` (eq. 4.31); both curves must reach rupture."""
+        if not (self.ruptured and self.reference.ruptured):
+            raise ConvergenceError(f"D_r needs curves to rupture; this one stopped: {self.failure}")
         return 1.0 - self.toughness / self.reference.toughness
 
 
-def capacity_curve(model, max_strain=None, n_steps=None, *, state_passes: int = 6) -> CapacityCurve:
+def capacity_curve(
+    model, max_strain=None, n_steps=None, *, state_passes: int = 6, on_failure: str = "raise"
+) -> CapacityCurve:
     """Pull ``model`` step by step until a wire breaks (or ``max_strain``).
 
     ``n_steps`` (default 60) strain increments, half of them up to twice the
     yield strain and half from there to ``max_strain`` (default 1.5 eps_rupture;
     the curve stops at the first wire rupture). A step that fails is halved up
-    to 8 times; with ``slip="element"`` each step iterates the element states
-    to a fixed point (at most ``state_passes``).
+    to 6 times; the slip state is frozen in each Newton solve and updated
+    between solves (at most ``state_passes``). When a step still fails,
+    ``on_failure="raise"`` (default) raises ConvergenceError;
+    ``on_failure="stop"`` returns the converged part with ``failure`` set.
     """
+    if on_failure not in ("raise", "stop"):
+        raise InputError("on_failure", f"must be 'raise' or 'stop', got {on_failure!r}")
     material = model.strand.material
     n_steps = int(n_steps or 60)
     if n_steps < 4:
         raise InputError("n_steps", f"must be at least 4, got {n_steps!r}")
     top = float(max_strain) if max_strain is not None else 1.5 * material.eps_rupture
-    # half the steps up to twice the yield strain (where slip and yield shape the
-    # curve and K_Leq is measured), half from there to rupture
+    # half the steps, uniform, up to twice the yield strain (where slip and yield
+    # shape the curve and K_Leq is measured), half from there to rupture with
+    # geometrically growing increments (no jump in step size for Newton to absorb)
     knee = min(2.0 * material.eps_y, top)
     schedule = np.unique(
         np.concatenate(
             [
                 np.linspace(0.0, knee, n_steps // 2 + 1),
-                np.linspace(knee, max(top, knee), n_steps - n_steps // 2 + 1),
+                np.geomspace(knee, max(top, knee), n_steps - n_steps // 2 + 1),  # increments grow gradually
             ]
         )
     )[1:]
-    n_elements = model.mesh.t.shape[1]
-    element_slip = np.zeros(n_elements, dtype=bool) if model.slip == "element" else None
+    slip_mask = model.initial_slip_state() if model.slip != "none" else None
     strains, forces, fractions, steps, chatter = [0.0], [0.0], [0.0], [], []
     U, eps, previous = None, 0.0, None
-    ruptured = False
+    ruptured, failure = False, None
     for goal in schedule:
         while eps < goal - 1e-15:
             target = goal
-            for _ in range(9):
+            for _ in range(7):
                 try:
                     guess = None if U is None else _extrapolate(U, previous, eps, target)
-                    result = _solve_with_states(model, guess, target, element_slip, state_passes)
+                    result = _solve_with_states(model, guess, target, slip_mask, state_passes)
                     break
                 except ConvergenceError:
                     target = eps + 0.5 * (target - eps)
             else:
-                raise ConvergenceError(
-                    f"capacity_curve: no convergence beyond strain {eps:.6g} after 8 cutbacks"
-                )
-            previous, (U, step, element_slip, settled) = (U, eps), result
+                failure = f"no convergence beyond strain {eps:.6g} after 6 cutbacks"
+                if on_failure == "raise":
+                    raise ConvergenceError("capacity_curve: " + failure)
+                break
+            previous, (U, step, slip_mask, settled) = (U, eps), result
             if not settled:
                 chatter.append(len(steps))
             eps = target
@@ -155,10 +165,18 @@ def capacity_curve(model, max_strain=None, n_steps=None, *, state_passes: int = 
                 forces[-1] = forces[-2] + t * (forces[-1] - forces[-2])
                 ruptured = True
                 break
-        if ruptured:
+        if ruptured or failure:
             break
     return CapacityCurve(
-        model, np.array(strains), np.array(forces), np.array(fractions), steps, ruptured, chatter, n_steps
+        model,
+        np.array(strains),
+        np.array(forces),
+        np.array(fractions),
+        steps,
+        ruptured,
+        chatter,
+        n_steps,
+        failure,
     )
 
 
@@ -169,26 +187,35 @@ def _extrapolate(U, previous, eps, target):
     return U + (U - U_prev) * (target - eps) / (eps - eps_prev)
 
 
-def _solve_with_states(model, guess, strain, element_slip, passes):
+def _solve_with_states(model, guess, strain, slip_mask, passes):
+    """Newton with the slip state frozen, then the state updated from the converged
+    curvatures and the step re-solved, until the state settles (``passes`` at most).
+
+    A state that cycles, or whose re-solve does not converge, is left as it was:
+    the step keeps the previous (lagged) state and is reported as not settled.
+    """
     from skcable.strand._model import StepResult
 
-    seen = []
+    U, state, history, R = model.solve_step(guess, strain, slip_mask)
     settled = True
-    for _ in range(passes):
-        U, state, history, R = model.solve_step(guess, strain, element_slip)
-        if model.slip != "element":
-            break
-        exceeded = np.any(np.abs(state["curvature"]) > state["kappa_m"], axis=(0, 2))
-        new = exceeded | (element_slip & np.any(state["slipping"], axis=(0, 2)) & False)
-        if np.array_equal(new, element_slip):
-            break
-        if any(np.array_equal(new, old) for old in seen):  # chattering: keep the union, stop
-            element_slip = element_slip | new
-            U, state, history, R = model.solve_step(U, strain, element_slip)
+    if model.slip != "none":
+        seen = [slip_mask]
+        for _ in range(passes):
+            new = model.slip_state(state)
+            if np.array_equal(new, slip_mask):
+                break
+            if any(np.array_equal(new, old) for old in seen):
+                settled = False
+                break
+            try:
+                U_new, state_new, history_new, R_new = model.solve_step(U, strain, new)
+            except ConvergenceError:
+                settled = False
+                break
+            seen.append(new)
+            slip_mask, U, state, history, R = new, U_new, state_new, history_new, R_new
+        else:
             settled = False
-            break
-        seen.append(element_slip.copy())
-        element_slip, guess = new, U
     step = StepResult(
         strain=strain,
         force=float(R[model.pull]),
@@ -202,4 +229,4 @@ def _solve_with_states(model, guess, strain, element_slip, passes):
         iterations=len(history) - 1,
         history=history,
     )
-    return U, step, element_slip, settled
+    return U, step, slip_mask, settled

@@ -308,7 +308,7 @@ class StrandModel:
         angle = self.lever_angle[:, None, None] + self.rotation[None]
         return np.array([np.sin(angle), np.cos(angle)]).transpose(1, 0, 2, 3)
 
-    def section_state(self, U, element_slip=None):
+    def section_state(self, U, slip_mask=None):
         """Wire strains, stresses, section forces S (6, ne, nq) and tangents D_mat (6, 6, ne, nq), N."""
         g = self.generalized_strains(U)
         axial = g[0] + 0.5 * (g[1] ** 2 + g[3] ** 2)
@@ -316,12 +316,14 @@ class StrandModel:
         levers = self.levers()  # (axis, yz, ne, nq)
         k_principal = np.einsum("kcen,cen->ken", levers, kappa)
         k_m, dk_m = self.kappa_m(axial)
-        if self.slip == "axis":
-            slipping = np.abs(k_principal) > k_m
-        elif self.slip == "element" and element_slip is not None:
-            slipping = np.broadcast_to(element_slip[None, :, None], k_principal.shape)
-        else:
+        if self.slip == "none":
             slipping = np.zeros(k_principal.shape, dtype=bool)
+        elif slip_mask is None:  # no state given: the current curvatures decide
+            slipping = self.slip_state(dict(curvature=k_principal, kappa_m=k_m), broadcast=True)
+        elif self.slip == "element":
+            slipping = np.broadcast_to(slip_mask[None, :, None], k_principal.shape)
+        else:
+            slipping = slip_mask
         if self.slip == "element":
             clamped = np.where(slipping, 0.0, k_principal)
             d_clamp = np.where(slipping, 0.0, 1.0)
@@ -378,10 +380,25 @@ class StrandModel:
             axial=axial,
         )
 
+    def slip_state(self, state, *, broadcast=False):
+        """Slip state implied by a section state's curvatures: per element (``slip="element"``:
+        any quadrature point and either axis beyond κ_m) or per point and axis (``"axis"``)."""
+        beyond = np.abs(state["curvature"]) > state["kappa_m"]
+        if self.slip == "element":
+            per_element = np.any(beyond, axis=(0, 2))
+            return np.broadcast_to(per_element[None, :, None], beyond.shape) if broadcast else per_element
+        return beyond
+
+    def initial_slip_state(self):
+        """All stick."""
+        if self.slip == "element":
+            return np.zeros(self.mesh.t.shape[1], dtype=bool)
+        return np.zeros((2, *self.x_quad.shape), dtype=bool)
+
     # --- assembly ----------------------------------------------------------------
-    def assemble(self, U, element_slip=None, *, parts=("material", "geometric")):
+    def assemble(self, U, slip_mask=None, *, parts=("material", "geometric")):
         """Residual (internal force vector) and tangent ``K = K_L + K_G`` (or the parts asked)."""
-        state = self.section_state(U, element_slip)
+        state = self.section_state(U, slip_mask)
         S, D, N = state["S"], state["D"], state["N"]
         R = np.concatenate(
             [asm(_RESIDUAL[n], self.bases[n], **{f"S{a}": S[a] for a in range(6)}) for n in FIELDS]
@@ -415,7 +432,7 @@ class StrandModel:
         U[: self.ub.N] = strain * self.ub.doflocs[0]
         return U
 
-    def solve_step(self, U, strain, element_slip=None, *, tol=1e-9, max_iter=30):
+    def solve_step(self, U, strain, slip_mask=None, *, tol=1e-9, max_iter=25):
         """Newton at imposed axial strain (u(L) = strain·L) from ``U`` (None: uniform strain).
 
         Returns ``(U, state, history, R)``; raises ConvergenceError with the history.
@@ -425,7 +442,7 @@ class StrandModel:
         U[self.pull] = strain * self.length
         scale = max(self.section.EA * max(abs(strain), 1e-6), 1.0)
         history = []
-        R, K, state = self.assemble(U, element_slip)
+        R, K, state = self.assemble(U, slip_mask)
         for _ in range(max_iter):
             norm = float(np.max(np.abs(R[self.free]))) / scale
             history.append(norm)
@@ -433,18 +450,18 @@ class StrandModel:
                 return U, state, history, R
             dU = solve(K[self.free][:, self.free], -R[self.free])
             step = 1.0
-            for _ in range(20):  # backtracking on the residual; the accepted assembly is reused
+            for _ in range(12):  # backtracking on the residual; the accepted assembly is reused
                 trial = U.copy()
                 trial[self.free] += step * dU
-                R_trial, K_trial, state_trial = self.assemble(trial, element_slip)
+                R_trial, K_trial, state_trial = self.assemble(trial, slip_mask)
                 if np.max(np.abs(R_trial[self.free])) / scale < (1 - 1e-4 * step) * norm:
                     break
                 step *= 0.5
             U, R, K, state = trial, R_trial, K_trial, state_trial
         raise ConvergenceError(f"StrandModel: Newton did not converge at strain {strain:.6g}", history)
 
-    def capacity_curve(self, max_strain=None, n_steps=None):
+    def capacity_curve(self, max_strain=None, n_steps=None, **kwargs):
         """Force–strain curve up to rupture (see :func:`skcable.strand.capacity_curve`)."""
         from skcable.strand._capacity import capacity_curve
 
-        return capacity_curve(self, max_strain, n_steps)
+        return capacity_curve(self, max_strain, n_steps, **kwargs)
