@@ -28,6 +28,7 @@ from pathlib import Path
 import numpy as np
 
 sys.path.insert(0, str(Path(__file__).parent))
+from _peers import available, moorpy_H, opensees_catenary_cable_H, pycatenary_H  # noqa: E402
 from _reference import irvine_H  # noqa: E402
 
 from skcable import cable  # noqa: E402
@@ -121,43 +122,18 @@ def methods(L0):
                 ),
             )
         )
-    try:
-        from moorpy.Catenary import catenary as moorpy_catenary
-
-        out.append(
-            ("MoorPy catenary()", "", lambda: moorpy_catenary(SPAN, DH, L0, EA, W, CB=-1e6, Tol=1e-12)[0])
-        )
-    except ImportError:
-        pass
-    try:
-        from pycatenary.cable import MooringLine
-
-        def pycat():
-            line = MooringLine(fairlead=[SPAN, DH], anchor=[0.0, 0.0], L=L0, w=W, EA=EA, floor=False)
-            line.compute_solution()
-            return -line.get_fairlead_force()[0]
-
-        out.append(("pycatenary MooringLine", "", pycat))
-    except ImportError:
-        pass
-    try:
-        import openseespy.opensees as ops
-
-        def catenary_cable():
-            ops.wipe()
-            ops.model("basic", "-ndm", 3, "-ndf", 3)
-            ops.node(1, 0.0, 0.0, 0.0)
-            ops.node(2, SPAN, 0.0, DH)
-            ops.fix(1, 1, 1, 1)
-            ops.fix(2, 1, 1, 1)
-            ops.element("CatenaryCable", 1, 1, 2, W, EA, 1.0, L0, 0.0, 0.0, 0.0, 1e-10, 100, 0)
-            return -ops.eleResponse(1, "globalForce")[0]
-
-        out.append(("OpenSeesPy CatenaryCable", "", catenary_cable))
+    args = (SPAN, DH, W, EA, L0)
+    for name, function in (
+        ("MoorPy catenary()", moorpy_H),
+        ("pycatenary MooringLine", pycatenary_H),
+        ("OpenSeesPy CatenaryCable", opensees_catenary_cable_H),
+    ):
+        runner = available(function, *args)
+        if runner is not None:
+            out.append((name, "", runner))
+    if available(opensees_catenary_cable_H, *args) is not None:
         for n in (8, 32, 128, 512):
             out.append(("OpenSeesPy corotTruss chain", n, lambda n=n: truss_chain(n, L0)))
-    except Exception:  # ImportError or its shared libraries missing
-        pass
     return out
 
 

@@ -17,12 +17,17 @@ from __future__ import annotations
 
 import argparse
 import csv
+import sys
 import time
+from pathlib import Path
 
 import mpmath as mp
 import numpy as np
 
 from skcable import cable
+
+sys.path.insert(0, str(Path(__file__).parent))
+from _peers import available, moorpy_H, opensees_catenary_cable_H, pycatenary_H  # noqa: E402
 
 SPAN, DH, W, EA, L0 = 800.0, -20.0, 20.0, 1e12, 801.409
 
@@ -57,45 +62,13 @@ def timed(fn, number: int) -> float:
 
 
 def peers():
-    """(name, callable returning H) for each installed peer."""
-    out = []
-    try:
-        from moorpy.Catenary import catenary as moorpy_catenary
-
-        # MoorPy: B above A, so mirror the span; CB < 0 means no seabed within |CB|
-        out.append(
-            ("MoorPy catenary()", lambda: moorpy_catenary(SPAN, -DH, L0, EA, W, CB=-1e6, Tol=1e-12)[0])
-        )
-    except ImportError:
-        out.append(("MoorPy catenary()", None))
-    try:
-        from pycatenary.cable import MooringLine
-
-        def pycat():
-            line = MooringLine(fairlead=[SPAN, DH], anchor=[0.0, 0.0], L=L0, w=W, EA=EA, floor=False)
-            line.compute_solution()
-            return -line.get_fairlead_force()[0]
-
-        out.append(("pycatenary MooringLine", pycat))
-    except ImportError:
-        out.append(("pycatenary MooringLine", None))
-    try:
-        import openseespy.opensees as ops
-
-        def opensees():
-            ops.wipe()
-            ops.model("basic", "-ndm", 3, "-ndf", 3)
-            ops.node(1, 0.0, 0.0, 0.0)
-            ops.node(2, SPAN, 0.0, DH)
-            ops.fix(1, 1, 1, 1)
-            ops.fix(2, 1, 1, 1)
-            ops.element("CatenaryCable", 1, 1, 2, W, EA, 1.0, L0, 0.0, 0.0, 0.0, 1e-10, 100, 0)
-            return -ops.eleResponse(1, "globalForce")[0]
-
-        out.append(("OpenSeesPy CatenaryCable (build+solve)", opensees))
-    except Exception:  # ImportError, or the shared-library load failing
-        out.append(("OpenSeesPy CatenaryCable (build+solve)", None))
-    return out
+    """(name, callable returning H, or None when the peer is not installed)."""
+    args = (SPAN, DH, W, EA, L0)
+    return [
+        ("MoorPy catenary()", available(moorpy_H, *args)),
+        ("pycatenary MooringLine", available(pycatenary_H, *args)),
+        ("OpenSeesPy CatenaryCable (build+solve)", available(opensees_catenary_cable_H, *args)),
+    ]
 
 
 def main(argv=None):

@@ -39,9 +39,9 @@ from scipy.optimize import elementwise, minimize_scalar
 from skfem import Basis, BilinearForm, ElementLineP1DG, ElementLineP2, LinearForm, MeshLine, asm, solve
 
 from skcable._checks import real, require
+from skcable.cable._bvp import FiniteElementSolution, _gradient_probes
 from skcable.cable._catenary import catenary
 from skcable.cable._loads import DeckLoad, DistributedLoad, PointLoad, SelfWeight
-from skcable.cable.solution import CableSolution
 from skcable.errors import ConvergenceError, InputError
 
 __all__ = ["ArcSolution", "arc_constitutive", "arc_equilibrium_x", "arc_equilibrium_y", "arc_loads"]
@@ -357,7 +357,7 @@ def _arc_guess(problem):
     return np.concatenate([xs, ys, T]), float(L_guess)
 
 
-class ArcSolution(CableSolution):
+class ArcSolution(FiniteElementSolution):
     """Solution of :func:`~skcable.cable.solve_bvp` with ``formulation="arc"``.
 
     Attributes as :class:`~skcable.cable.BVPSolution`; ``H`` is the
@@ -397,25 +397,9 @@ class ArcSolution(CableSolution):
         ax, ay = self.basis.interpolate(xd).grad[0], self.basis.interpolate(yd).grad[0]
         return float(np.sum(np.sqrt(ax * ax + ay * ay) * self.basis.dx))
 
-    @cached_property
-    def _sag(self):
-        return self._problem.extremum(self.dofs, "sag")
-
-    @cached_property
-    def _low(self):
-        return self._problem.extremum(self.dofs, "low")
-
-    @property
-    def sag(self):
-        return self._sag[1]
-
     @property
     def x_low(self):
         return float(self.xy(self._low[0])[0])
-
-    @property
-    def y_low(self):
-        return self._low[1]
 
     def xy(self, sigma):
         """Position (x, y) at σ ∈ [0, 1], array ``(..., 2)``."""
@@ -449,7 +433,6 @@ class ArcSolution(CableSolution):
     def slope(self, x):
         s = np.atleast_1d(self._sigma_of_x(x))
         xd, yd, _ = self._problem.fields(self.dofs)
-        from skcable.cable._bvp import _gradient_probes
 
         G = _gradient_probes(self.basis, s.reshape(1, -1))
         return ((G @ yd) / (G @ xd)).reshape(np.shape(x))[()]

@@ -144,7 +144,28 @@ class _State:
     descent: float  # 2-norm of the scaled residual: the line-search merit
 
 
-class BVPSolution(CableSolution):
+class FiniteElementSolution(CableSolution):
+    """What the graph and arc-length solutions share: sag and lowest point by
+    a search of the discrete profile (``problem.extremum``)."""
+
+    @cached_property
+    def _sag(self):
+        return self._problem.extremum(self.dofs, "sag")
+
+    @cached_property
+    def _low(self):
+        return self._problem.extremum(self.dofs, "low")
+
+    @property
+    def sag(self):
+        return self._sag[1]
+
+    @property
+    def y_low(self):
+        return self._low[1]
+
+
+class BVPSolution(FiniteElementSolution):
     formulation = "graph"
 
     """Solution of :func:`solve_bvp`.
@@ -194,25 +215,9 @@ class BVPSolution(CableSolution):
         lengths = self._problem.lengths(self.dofs, self.H)
         return lengths[1] if self.EA is not None else lengths[0]
 
-    @cached_property
-    def _sag(self):
-        return self._problem.extremum(self.dofs, "sag")
-
-    @cached_property
-    def _low(self):
-        return self._problem.extremum(self.dofs, "low")
-
-    @property
-    def sag(self):
-        return self._sag[1]
-
     @property
     def x_low(self):
         return self._low[0]
-
-    @property
-    def y_low(self):
-        return self._low[1]
 
     def y(self, x):
         """Height of the cable above A at ``x`` (m)."""
