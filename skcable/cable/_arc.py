@@ -39,7 +39,7 @@ from scipy.optimize import elementwise, minimize_scalar
 from skfem import Basis, BilinearForm, ElementLineP1DG, ElementLineP2, LinearForm, MeshLine, asm, solve
 
 from skcable._checks import real, require
-from skcable.cable._bvp import FiniteElementSolution, _gradient_probes
+from skcable.cable._bvp import FiniteElementSolution, _gradient_probes, element_values
 from skcable.cable._catenary import catenary
 from skcable.cable._loads import DeckLoad, DistributedLoad, PointLoad, SelfWeight
 from skcable.errors import ConvergenceError, InputError
@@ -241,14 +241,6 @@ class _ArcProblem:
             dg[:N], dg[N : 2 * N] = self.dh / self.span * row, -row
         return achieved - value, dg, 0.0
 
-    def _values(self, element, sigma):
-        cells = np.array([element])
-        X = self.basis.mapping.invF(np.array([[[float(sigma)]]]), tind=cells)
-        gb = self.basis.elem.gbasis
-        return np.array(
-            [np.asarray(gb(self.basis.mapping, X, j, tind=cells)[0]) for j in range(self.basis.Nbfun)]
-        ).ravel()
-
     def extremum(self, z, kind):
         """(σ*, value, d value/d dofs of the field) for sag (max tilt·x - y) or lowest point (min y)."""
         xd, yd, _ = self.fields(z)
@@ -261,7 +253,7 @@ class _ArcProblem:
             left, right = np.sort(self.mesh.p[0, self.mesh.t[:, k]])
 
             def objective(s, k=k, dofs=dofs):
-                phi = self._values(k, s)
+                phi = element_values(self.basis, k, s)
                 return float(phi @ yd[dofs] - tilt * (phi @ xd[dofs]))
 
             found = minimize_scalar(
@@ -272,7 +264,7 @@ class _ArcProblem:
                 best = candidate if best is None or candidate < best else best
         value, s_star, k = best
         row = np.zeros(self.N)
-        row[self.basis.element_dofs[:, k]] = self._values(k, s_star)
+        row[self.basis.element_dofs[:, k]] = element_values(self.basis, k, s_star)
         return s_star, (value if kind == "low" else -value), row
 
     #: set by :func:`_arc_guess` from the initial catenary

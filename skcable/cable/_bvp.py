@@ -130,6 +130,16 @@ def _gradient_probes(basis, x):
     return sp.coo_matrix((grads.flatten(), (rows, cols)), shape=(x.shape[1], basis.N)).tocsr()
 
 
+def element_values(basis, element, x):
+    """Values at ``x`` of every basis function of ``element`` (as skfem's ``probes``,
+    through ``gbasis``, which orients hierarchical modes): array (Nbfun,)."""
+    cells = np.array([element])
+    X = basis.mapping.invF(np.array([[[float(x)]]]), tind=cells)
+    return np.array(
+        [np.asarray(basis.elem.gbasis(basis.mapping, X, j, tind=cells)[0]) for j in range(basis.Nbfun)]
+    ).ravel()
+
+
 @dataclass
 class _State:
     """Everything assembled at one iterate."""
@@ -303,17 +313,6 @@ class _GraphProblem:
         dx = self.basis.dx
         return float(np.sum(np.sqrt(1.0 + slope**2) * dx)), float(np.sum(f * dx))
 
-    def _local_values(self, element, x):
-        """Values at ``x`` of every basis function of ``element`` (as skfem's
-        ``probes``, through ``gbasis``, which orients hierarchical modes)."""
-        cells = np.array([element])
-        X = self.basis.mapping.invF(np.array([[[float(x)]]]), tind=cells)
-        gbasis = self.basis.elem.gbasis
-        values = [
-            np.asarray(gbasis(self.basis.mapping, X, j, tind=cells)[0]) for j in range(self.basis.Nbfun)
-        ]
-        return np.array(values).reshape(self.basis.Nbfun, 1)
-
     def extremum(self, dofs, kind):
         """(x*, value, d value/d dofs) of the sag (max of tilt·x - y) or the lowest point (min y).
 
@@ -330,7 +329,7 @@ class _GraphProblem:
             left, right = np.sort(self.mesh.p[0, self.mesh.t[:, k]])
 
             def objective(x, k=k, local=local):
-                return float(local @ self._local_values(k, x)[:, 0]) + lean * x
+                return float(local @ element_values(self.basis, k, x)) + lean * x
 
             best = minimize_scalar(
                 objective, bounds=(left, right), method="bounded", options={"xatol": 1e-13 * self.span}
@@ -339,7 +338,7 @@ class _GraphProblem:
                 candidates.append((objective(x), float(x), k))
         _, x_star, k = min(candidates)
         row = np.zeros(self.basis.N)
-        row[self.basis.element_dofs[:, k]] = self._local_values(k, x_star)[:, 0]
+        row[self.basis.element_dofs[:, k]] = element_values(self.basis, k, x_star)
         y_star = self.chord_slope * x_star + float(row @ dofs)
         value = y_star if kind == "low" else tilt * x_star - y_star
         return x_star, value, row

@@ -142,12 +142,13 @@ def capacity_curve(
                     guess = None if U is None else _extrapolate(U, previous, eps, target)
                     result = _solve_with_states(model, guess, target, slip_mask, state_passes)
                     break
-                except ConvergenceError:
+                except ConvergenceError as exc:
+                    last = exc
                     target = eps + 0.5 * (target - eps)
             else:
                 failure = f"no convergence beyond strain {eps:.6g} after 6 cutbacks"
                 if on_failure == "raise":
-                    raise ConvergenceError("capacity_curve: " + failure)
+                    raise ConvergenceError("capacity_curve: " + failure, last.history) from last
                 break
             previous, (U, step, slip_mask, settled) = (U, eps), result
             if not settled:
@@ -181,7 +182,8 @@ def capacity_curve(
 
 
 def _extrapolate(U, previous, eps, target):
-    U_prev, eps_prev = previous if previous[0] is not None else (None, 0.0)
+    """Linear extrapolation from the last two converged steps (scaling after the first)."""
+    U_prev, eps_prev = previous
     if U_prev is None or eps == eps_prev:
         return U * (target / eps) if eps > 0 else None
     return U + (U - U_prev) * (target - eps) / (eps - eps_prev)

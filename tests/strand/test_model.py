@@ -5,7 +5,7 @@ import pytest
 from skfem import LinearForm
 
 from skcable import strand
-from skcable.errors import InputError
+from skcable.errors import ConvergenceError, InputError
 
 STRAIGHT = strand.Strand(3e-3, (strand.Layer(6, 3e-3, lay_angle=1e-9),), strand.material("steel"))
 
@@ -158,3 +158,29 @@ def test_bad_input():
         strand.StrandModel(strand.preset("steel-9.5"), 1.0, grading=1.0)
     with pytest.raises(InputError, match="n_steps"):
         strand.StrandModel(strand.preset("steel-9.5"), 0.3, n_elements=8).capacity_curve(n_steps=2)
+
+
+class FailingBeyond(strand.StrandModel):
+    """A model whose Newton 'fails' beyond a strain: exercises the capacity curve's failure path."""
+
+    limit = 0.002
+
+    def solve_step(self, U, strain, slip_mask=None, **kw):
+        if strain > self.limit:
+            raise ConvergenceError(f"forced failure at {strain}", [1.0, 0.5, 0.4])
+        return super().solve_step(U, strain, slip_mask, **kw)
+
+
+def test_capacity_curve_failure_raises_with_history_or_stops():
+    model = FailingBeyond(strand.preset("steel-9.5").damaged(1), 0.3, n_elements=8)
+    with pytest.raises(ConvergenceError) as info:
+        model.capacity_curve(n_steps=20)
+    assert info.value.history == [1.0, 0.5, 0.4]
+    partial = model.capacity_curve(n_steps=20, on_failure="stop")
+    assert not partial.ruptured and partial.failure.startswith("no convergence beyond strain")
+    # the cutbacks close in on the limit from below
+    assert 0.99 * FailingBeyond.limit < partial.strain[-1] <= FailingBeyond.limit
+    with pytest.raises(ConvergenceError, match="rupture"):
+        _ = partial.D_r
+    with pytest.raises(InputError, match="on_failure"):
+        model.capacity_curve(n_steps=20, on_failure="ignore")
