@@ -112,3 +112,25 @@ def test_rates_positions_h3_tension_h4():
 def test_arc_rejects_what_it_cannot_do():
     with pytest.raises(InputError, match="degree"):
         cable.solve_bvp(SPAN, DH, cable.SelfWeight(W), H=1e5, formulation="arc", degree=3)
+
+
+def test_discontinuous_tension_keeps_the_tangent_well_conditioned():
+    # why P1-DG: with a continuous P1 tension, tangential modes inside the elements have
+    # no stiffness and the tangent of a curved cable is nearly singular
+    from skfem import ElementLineP1
+
+    span, dh = 100.0, 30.0
+    length = 6.0 * np.hypot(span, dh)
+    conditions = {}
+    for name in ("P1-DG", "P1"):
+        problem = _ArcProblem(span, dh, [cable.SelfWeight(1.0)], None, ("length", length), 64, 2)
+        if name == "P1":
+            problem.tbasis = problem.basis.with_element(ElementLineP1())
+            problem.M = problem.tbasis.N
+            problem.free = np.concatenate(
+                [problem.free[problem.free < 2 * problem.N], 2 * problem.N + np.arange(problem.M)]
+            )
+        z, _ = _arc_guess(problem)
+        J = problem.assemble(z, length).J[problem.free][:, problem.free].toarray()
+        conditions[name] = np.linalg.cond(J)
+    assert conditions["P1-DG"] < 1e5 < 1e8 < conditions["P1"]
