@@ -146,7 +146,7 @@ def figures(out: Path) -> list[Path]:
 
 
 def main(argv=None):
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser = argparse.ArgumentParser(description=(__doc__ or "").strip().split("\n")[0])
     parser.add_argument("--out", default="results/strand_bending", type=Path)
     args = parser.parse_args(argv)
     print(tables())

@@ -435,6 +435,22 @@ class ArcSolution(FiniteElementSolution):
         T = self._problem.fields(self.dofs)[2]
         return (self._problem.tbasis.probes(s.reshape(1, -1)) @ T).reshape(np.shape(x))[()]
 
+    def samples(self, n: int = 201) -> dict:
+        """The profile at ``n`` equally spaced σ (unstretched arc length): see
+        :meth:`CableSolution.samples`; non-graph shapes included."""
+        sigma = np.linspace(0.0, 1.0, n)
+        xd, yd, T = self._problem.fields(self.dofs)
+        G = _gradient_probes(self.basis, sigma.reshape(1, -1))
+        dx, dy = G @ xd, G @ yd
+        xy = self.xy(sigma)
+        loads = arc_loads(self._problem.loads, xy[:, 0], dx, self.L0, self.span)
+        return {
+            "xy": xy,
+            "tension": self._problem.tbasis.probes(sigma.reshape(1, -1)) @ T,
+            "angle": np.arctan2(dy, dx),
+            "load": np.column_stack([loads[0], loads[1]]) / self.L0,
+        }
+
     def _residuals(self):
         problem, state = self._problem, self._state
         yield from problem.scaled(state.R, state.g)

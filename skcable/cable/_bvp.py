@@ -245,6 +245,11 @@ class BVPSolution(FiniteElementSolution):
         """Tension at ``x`` (N): ``H sqrt(1 + y'^2)``."""
         return self.H * np.sqrt(1.0 + self.slope(x) ** 2)
 
+    def weight_per_length(self, x, slope):
+        problem = self._problem
+        q = sum(ld.graph_terms(x, slope, self.H, self.EA)[0] for ld in problem.distributed)
+        return q / unstretched_measure(slope, self.H, self.EA)[0]
+
     def _residuals(self):
         problem, state = self._problem, self._state
         scale = problem.load_scale

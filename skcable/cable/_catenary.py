@@ -125,6 +125,9 @@ class Catenary(CableSolution):
         u, xp = self._u(x)
         return self.H * xp.cosh(u)
 
+    def weight_per_length(self, x, slope):
+        return self.w + 0.0 * slope
+
     def _residuals(self):
         span, dh, a, z, m, xp = self.span, self.dh, self.a, self.z, self.m, self._xp
         chord = xp.hypot(span, dh)

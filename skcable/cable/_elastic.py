@@ -140,6 +140,7 @@ class ElasticCatenary(CableSolution):
         """Material point at abscissa ``x`` in [0, span] (x(s) is increasing)."""
         x = real("x", x)
         require("x", (x >= 0) & (x <= self.span), "must lie in [0, span]", x)
+        x = namespace(x).minimum(x, self.x_of_s(self.length))  # x(length) = span up to rounding
         s, _ = find_root(lambda s, x, *p: self.x_of_s(s) - x, 0.0, self.length, (x, self.H), what="s_of_x")
         return s
 
@@ -155,6 +156,9 @@ class ElasticCatenary(CableSolution):
         """Tension at ``x`` (N)."""
         tv = self._tv(self.s_of_x(x))
         return namespace(tv).hypot(self.H, tv)
+
+    def weight_per_length(self, x, slope):
+        return self.w + 0.0 * slope
 
     @cached_property
     def stretched_length(self):

@@ -56,6 +56,12 @@ class Funicular:
     lengths: np.ndarray
     history: list
 
+    def to_vtk(self, path):
+        """Write the polygon as VTK (see :func:`skcable.io.funicular_mesh`); returns the path."""
+        from skcable.io import funicular_mesh, write
+
+        return write(funicular_mesh(self), path)
+
     def residual(self) -> float:
         """Largest of the joint force imbalance (relative to the largest
         tension) and the segment-length / closure error (relative to the total
@@ -171,6 +177,12 @@ class FunicularVertical:
     T: np.ndarray
     nodes: np.ndarray
     loads: np.ndarray
+
+    def to_vtk(self, path):
+        """Write the polygon as VTK (see :func:`skcable.io.funicular_mesh`); returns the path."""
+        from skcable.io import funicular_mesh, write
+
+        return write(funicular_mesh(self), path)
 
     def residual(self) -> float:
         """Largest joint force imbalance relative to the largest tension."""

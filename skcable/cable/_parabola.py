@@ -134,6 +134,9 @@ class Parabola(CableSolution):
         slope = self.slope(x)
         return self.H * namespace(slope).sqrt(1.0 + slope * slope)
 
+    def weight_per_length(self, x, slope):
+        return self.w / np.sqrt(1.0 + slope * slope)  # w per horizontal metre
+
     def _residuals(self):
         xp = self._xp
         chord = xp.hypot(self.span, self.dh)

@@ -78,6 +78,33 @@ class CableSolution:
         """Largest tension in the cable (at the higher support)."""
         return namespace(self.T_A, self.T_B).maximum(self.T_A, self.T_B)
 
+    def samples(self, n: int = 201) -> dict:
+        """One scene's profile at ``n`` equally spaced x (the input to :meth:`to_vtk`).
+
+        Returns a dict: ``xy`` (n, 2) in m, ``tension`` (N), ``angle`` (rad
+        above the horizontal) and ``load`` (n, 2): the distributed load in N
+        per metre of unstretched cable, y up (concentrated loads not included).
+        """
+        x = np.linspace(0.0, float(self.span), n)
+        slope = np.asarray(self.slope(x), dtype=float)
+        weight = np.broadcast_to(self.weight_per_length(x, slope), x.shape)
+        return {
+            "xy": np.column_stack([x, self.y(x)]),
+            "tension": np.asarray(self.T(x), dtype=float),
+            "angle": np.arctan(slope),
+            "load": np.column_stack([np.zeros_like(x), -weight]),
+        }
+
+    def weight_per_length(self, x, slope):  # pragma: no cover - abstract
+        """Downward distributed load per unit unstretched cable length (N/m) at ``x``."""
+        raise NotImplementedError
+
+    def to_vtk(self, path, n: int = 201):
+        """Write the profile as a VTK polyline (see :func:`skcable.io.cable_mesh`); returns the path."""
+        from skcable.io import cable_mesh, write
+
+        return write(cable_mesh(self, n), path)
+
     def points(self, n: int = 101) -> np.ndarray:
         """Profile sampled at ``n`` equally spaced x: array ``(*shape, n, 2)``."""
         x = np.multiply.outer(np.linspace(0.0, 1.0, n), self.span)  # (n, *shape)

@@ -82,6 +82,59 @@ class CapacityCurve:
         """Area under the force–strain curve (N), up to rupture or the last step."""
         return float(np.trapezoid(self.force, self.strain))
 
+    def columns(self) -> dict:
+        """Per-step table (the origin included): strain, force (N), slip fraction, peak
+        curvature about each principal axis (1/m) and the largest wire strain."""
+        peak = np.array([[0.0, 0.0]] + [np.max(np.abs(s.curvature), axis=(1, 2)) for s in self.steps])
+        wire = np.concatenate([[0.0], [np.max(s.wire_strain) for s in self.steps]])
+        if self.ruptured:  # the last row was interpolated to the rupture strain
+            wire[-1] = self.model.strand.material.eps_rupture
+        return {
+            "strain": self.strain,
+            "force_N": self.force,
+            "slip_fraction": self.slip_fraction,
+            "peak_curvature_1_per_m": peak[:, 0],
+            "peak_curvature_2_per_m": peak[:, 1],
+            "max_wire_strain": wire,
+        }
+
+    def to_csv(self, path):
+        """Write :meth:`columns` as CSV; returns the path."""
+        from pathlib import Path
+
+        path = Path(path)
+        path.parent.mkdir(parents=True, exist_ok=True)
+        table = self.columns()
+        np.savetxt(
+            path, np.column_stack(list(table.values())), delimiter=",", header=",".join(table), comments=""
+        )
+        return path
+
+    def step_mesh(self, step: int, *, wires: bool = False, scale: float = 1.0):
+        """The strand (or, with ``wires``, its wires) at one step as a meshio mesh
+        (:func:`skcable.io.strand_mesh`, :func:`skcable.io.wire_mesh`)."""
+        from skcable.io import strand_mesh, wire_mesh
+
+        if not -len(self.steps) <= step < len(self.steps):
+            raise InputError("step", f"must index one of the {len(self.steps)} steps, got {step!r}")
+        result = self.steps[step]
+        return wire_mesh(self.model, result, scale=scale) if wires else strand_mesh(self.model, result)
+
+    def to_vtk(self, path, *, wires: bool = False, scale: float = 1.0):
+        """Write every step as a ParaView time series ``path`` (``.pvd`` + one ``.vtu`` per step,
+        time = imposed axial strain). With ``wires``, also ``<stem>_wires.pvd``. Returns the paths."""
+        from pathlib import Path
+
+        from skcable.io import write_series
+
+        path = Path(path)
+        times = [s.strain for s in self.steps]
+        out = [write_series((self.step_mesh(i) for i in range(len(self.steps))), times, path)]
+        if wires:
+            meshes = (self.step_mesh(i, wires=True, scale=scale) for i in range(len(self.steps)))
+            out.append(write_series(meshes, times, path.with_name(path.stem + "_wires.pvd")))
+        return out
+
     @cached_property
     def reference(self):
         """The undamaged strand's curve with the same settings (for D_r)."""
@@ -99,7 +152,13 @@ class CapacityCurve:
 
 
 def capacity_curve(
-    model, max_strain=None, n_steps=None, *, state_passes: int = 6, on_failure: str = "raise"
+    model,
+    max_strain=None,
+    n_steps=None,
+    *,
+    state_passes: int = 6,
+    on_failure: str = "raise",
+    callback=None,
 ) -> CapacityCurve:
     """Pull ``model`` step by step until a wire breaks (or ``max_strain``).
 
@@ -110,6 +169,9 @@ def capacity_curve(
     between solves (at most ``state_passes``). When a step still fails,
     ``on_failure="raise"`` (default) raises ConvergenceError;
     ``on_failure="stop"`` returns the converged part with ``failure`` set.
+    ``callback(step, done)``, if given, is called after every converged step
+    with its :class:`StepResult` and the fraction of the strain schedule done
+    (for progress bars).
     """
     if on_failure not in ("raise", "stop"):
         raise InputError("on_failure", f"must be 'raise' or 'stop', got {on_failure!r}")
@@ -158,6 +220,8 @@ def capacity_curve(
             strains.append(step.strain)
             forces.append(step.force)
             fractions.append(step.slip_fraction)
+            if callback is not None:
+                callback(step, eps / schedule[-1])
             if np.max(step.wire_strain) >= material.eps_rupture:
                 # end the curve where the most strained wire reaches its rupture strain
                 before = np.max(steps[-2].wire_strain) if len(steps) > 1 else 0.0

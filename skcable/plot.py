@@ -1,0 +1,149 @@
+"""Figures of results: matplotlib for curves, pyvista (off screen) for the deformed strand.
+
+Every function draws on the given ``ax`` (or a new figure) and returns the
+axes, so figures compose; :func:`render_strand` writes a PNG. SI units on
+the axes (the strain is dimensionless, forces in kN for readability).
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import numpy as np
+
+from skcable.errors import InputError
+
+__all__ = [
+    "cable_profile",
+    "capacity_curves",
+    "curvature_along",
+    "moment_curvature",
+    "render_strand",
+    "slip_fraction",
+]
+
+
+def _axes(ax):
+    if ax is not None:
+        return ax
+    import matplotlib.pyplot as plt
+
+    return plt.figure(figsize=(6.4, 4.0), layout="constrained").add_subplot()
+
+
+def _labels(items, labels):
+    if labels is None:
+        return [None] * len(items)
+    if len(labels) != len(items):
+        raise InputError("labels", f"needs one label per curve: {len(items)}, got {len(labels)}")
+    return list(labels)
+
+
+def cable_profile(solution, ax=None, *, n: int = 201, tension: bool = True):
+    """Profile y(x) of a cable solution (m) and, on a twin axis, its tension (kN)."""
+    ax = _axes(ax)
+    samples = solution.samples(n)
+    x, y = samples["xy"].T
+    ax.plot(x, y, color="C0", label="profile")
+    ax.plot([0, float(solution.span)], [0, float(solution.dh)], ":", color="0.5", label="chord")
+    ax.set(xlabel="x [m]", ylabel="y [m]")
+    if tension:
+        twin = ax.twinx()
+        twin.plot(x, samples["tension"] / 1e3, color="C3", label="tension")
+        twin.set_ylabel("tension [kN]", color="C3")
+    ax.legend(loc="lower left")
+    return ax
+
+
+def capacity_curves(curves, labels=None, ax=None):
+    """Axial force (kN) against imposed axial strain of one or more capacity curves."""
+    curves = list(curves)
+    ax = _axes(ax)
+    for curve, label in zip(curves, _labels(curves, labels), strict=True):
+        ax.plot(curve.strain, curve.force / 1e3, label=label or _describe(curve))
+        if curve.ruptured:
+            ax.plot(curve.strain[-1], curve.force[-1] / 1e3, "x", color=ax.lines[-1].get_color())
+    ax.set(xlabel="axial strain [-]", ylabel="axial force [kN]", title="capacity curve (x: rupture)")
+    ax.legend()
+    return ax
+
+
+def slip_fraction(curves, labels=None, ax=None):
+    """Fraction of the strand length in slip (%) against axial strain."""
+    curves = list(curves)
+    ax = _axes(ax)
+    for curve, label in zip(curves, _labels(curves, labels), strict=True):
+        ax.plot(curve.strain, 100 * curve.slip_fraction, label=label or _describe(curve))
+    ax.set(xlabel="axial strain [-]", ylabel="length in slip [%]", ylim=(-2, 102))
+    ax.legend()
+    return ax
+
+
+def curvature_along(curve, step: int = -1, ax=None):
+    """Principal curvatures (1/m) along the strand at one step, with ±κ_m."""
+    ax = _axes(ax)
+    result = curve.steps[step]
+    x = result.x.ravel()
+    order = np.argsort(x)
+    for axis in (0, 1):
+        line = ax.plot(x[order], result.curvature[axis].ravel()[order], label=f"κ about axis {axis + 1}")
+        ax.plot(x[order], result.kappa_m[axis].ravel()[order], "--", color=line[0].get_color(), lw=0.8)
+    ax.set(xlabel="x [m]", ylabel="curvature [1/m]", title=f"axial strain {result.strain:.4g} (dashed: κ_m)")
+    ax.legend()
+    return ax
+
+
+def moment_curvature(law, kappa=None, ax=None):
+    """Bending moment (N·m) against curvature (1/m) about both principal axes of a BendingLaw."""
+    ax = _axes(ax)
+    if kappa is None:
+        kappa = np.linspace(0.0, 4.0 * float(np.max(law.kappa_m)), 401)
+    for axis in (0, 1):
+        ax.plot(kappa, law.moment(kappa, axis), label=f"axis {axis + 1}")
+    ax.set(xlabel="curvature [1/m]", ylabel="moment [N·m]")
+    ax.legend()
+    return ax
+
+
+def _describe(curve) -> str:
+    model = curve.model
+    return {"none": "stick", "axis": "stick–slip (axis)", "element": "stick–slip (element)"}[model.slip]
+
+
+def render_strand(
+    curve, path, *, step: int = -1, scale: float = 10.0, xscale: float = 0.05, window=(1600, 600)
+) -> Path:
+    """Off-screen pyvista picture of the wires on the deformed axis, coloured by
+    wire stress, broken wires grey; returns the PNG path.
+
+    ``scale`` magnifies the displacements, ``xscale`` shortens the axis so
+    that a metre-long strand of a few millimetres fits one picture.
+    """
+    import pyvista as pv
+
+    wires = curve.step_mesh(step, wires=True, scale=scale)
+    segments = wires.cells[0].data
+    broken = wires.cell_data["broken"][0].astype(bool)
+    stress = wires.cell_data["wire_stress"][0] / 1e6
+    radius = 0.5 * float(np.min(curve.model.wire_data.diameter))
+    plotter = pv.Plotter(off_screen=True, window_size=list(window))
+    for chosen, style in (
+        (~broken, {"scalars": "wire stress [MPa]"}),
+        (broken, {"color": "grey", "opacity": 0.4}),
+    ):
+        if not np.any(chosen):
+            continue
+        lines = np.column_stack([np.full(chosen.sum(), 2), segments[chosen]]).ravel()
+        tubes = pv.PolyData(wires.points * [xscale, 1.0, 1.0], lines=lines)
+        tubes.cell_data["wire stress [MPa]"] = stress[chosen]
+        plotter.add_mesh(tubes.tube(radius=radius), **style)
+    plotter.view_xy()
+    plotter.camera.elevation = 20
+    plotter.enable_parallel_projection()
+    plotter.reset_camera(bounds=None)
+    plotter.camera.zoom(1.6)
+    path = Path(path)
+    path.parent.mkdir(parents=True, exist_ok=True)
+    plotter.screenshot(str(path))
+    plotter.close()
+    return path

@@ -1,0 +1,129 @@
+"""VTK output read back with meshio and pyvista, compared with the results and closed forms."""
+
+import meshio
+import numpy as np
+import pytest
+import pyvista as pv
+
+from skcable import cable, strand
+from skcable.errors import InputError
+from skcable.io import funicular_mesh, write, write_series
+
+
+@pytest.fixture(scope="module")
+def curves():
+    """Short, coarse curves: one damaged with slip, one intact stick."""
+    damaged = strand.StrandModel(strand.preset("steel-9.5").damaged(1), 0.3, n_elements=24, slip="axis")
+    intact = strand.StrandModel(strand.preset("steel-9.5"), 0.3, n_elements=8)
+    return damaged.capacity_curve(max_strain=0.006, n_steps=6), intact.capacity_curve(
+        max_strain=0.004, n_steps=4
+    )
+
+
+@pytest.mark.parametrize(
+    "solve",
+    [
+        lambda: cable.catenary(800, -20, 20, low=-30),
+        lambda: cable.parabola(800, -20, 20, low=-30),
+        lambda: cable.elastic_catenary(800, -20, 20, 1e8, length=810),
+        lambda: cable.solve_bvp(800, -20, [cable.SelfWeight(20)], low=-30, n_elements=32),
+        lambda: cable.solve_bvp(
+            800, -20, [cable.SelfWeight(20)], length=810, n_elements=32, formulation="arc"
+        ),
+    ],
+)
+def test_cable_profile_round_trip(tmp_path, solve):
+    sol = solve()
+    path = sol.to_vtk(tmp_path / "cable.vtu", n=51)
+    mesh, grid = meshio.read(path), pv.read(path)
+    assert mesh.points.shape == (51, 3) and np.all(mesh.points[:, 2] == 0)
+    np.testing.assert_allclose(grid.points, mesh.points)
+    x, y = mesh.points[:, 0], mesh.points[:, 1]
+    np.testing.assert_allclose([x[0], y[0], x[-1], y[-1]], [0, 0, 800, -20], atol=1e-9)
+    T, angle, load = (mesh.point_data[k] for k in ("tension", "angle", "load"))
+    np.testing.assert_allclose(grid.point_data["tension"], T)
+    # statics: the horizontal component of the tension is H everywhere (no horizontal load);
+    # the arc form's P1 tension and P2 slope meet it to the discretisation error (h^2)
+    rtol = 1e-4 if isinstance(sol, cable.ArcSolution) else 1e-6
+    np.testing.assert_allclose(T * np.cos(angle), sol.H, rtol=rtol)
+    np.testing.assert_allclose(T[[0, -1]], [sol.T_A, sol.T_B], rtol=rtol)
+    np.testing.assert_allclose(np.linalg.norm(mesh.point_data["tangent"], axis=1), 1.0)
+    # the weight per unstretched metre: w, or w dx/ds for the parabola's load per horizontal metre
+    expected = 20 * np.cos(angle) if isinstance(sol, cable.Parabola) else np.full_like(T, 20.0)
+    np.testing.assert_allclose(-load[:, 1], expected, rtol=1e-9)
+
+
+def test_funicular_round_trip(tmp_path):
+    sol = cable.funicular((20, 2), [5, 6, 6, 5], [(5, -75), (10, -100), (5, -75)])
+    mesh = meshio.read(sol.to_vtk(tmp_path / "f.vtu"))
+    np.testing.assert_allclose(mesh.points[:, :2], sol.nodes)
+    np.testing.assert_allclose(mesh.cell_data["tension"][0], sol.T)
+    np.testing.assert_allclose(mesh.cell_data["tension"][0][0], 233.04, atol=0.005)  # seed 000 ex. 1
+    vertical = cable.funicular_vertical(10, -1, [(1, 50), (3, 30), (7, 40)], through=(3, -5))
+    loads = meshio.read(write(funicular_mesh(vertical), tmp_path / "v.vtu")).point_data["load"]
+    np.testing.assert_allclose(loads[:, 1], [0, -50, -30, -40, 0])
+
+
+def test_array_solution_is_refused(tmp_path):
+    with pytest.raises(InputError, match="solution"):
+        cable.catenary([800, 900], 0, 20, sag=30).to_vtk(tmp_path / "x.vtu")
+
+
+def test_strand_series_round_trip(tmp_path, curves):
+    curve = curves[0]
+    pvd, wires = curve.to_vtk(tmp_path / "s.pvd", wires=True)
+    reader = pv.PVDReader(pvd)
+    np.testing.assert_allclose(reader.time_values, [s.strain for s in curve.steps])
+    model, step = curve.model, curve.steps[-1]
+    reader.set_active_time_point(len(curve.steps) - 1)
+    grid = reader.read()[0]
+    mesh = meshio.read(tmp_path / f"s_{len(curve.steps) - 1:04d}.vtu")
+    parts = model.split(step.dofs)
+    np.testing.assert_allclose(mesh.points[:, 0], model.mesh.p[0])
+    np.testing.assert_allclose(mesh.point_data["displacement"][:, 0], parts["u"][model.ub.nodal_dofs[0]])
+    np.testing.assert_allclose(mesh.point_data["displacement"][:, 1], parts["v"][model.vb.nodal_dofs[0]])
+    np.testing.assert_allclose(grid.point_data["displacement"], mesh.point_data["displacement"])
+    # the pulled end moves by strain * length
+    assert mesh.point_data["displacement"][np.argmax(model.mesh.p[0]), 0] == pytest.approx(step.strain * 0.3)
+    # the axial force along the strand equals the reaction (equilibrium of any cut), to the projection
+    np.testing.assert_allclose(mesh.point_data["axial_force"], step.force, rtol=2e-2)
+    np.testing.assert_allclose(mesh.cell_data["element_size"][0].sum(), 0.3)
+    np.testing.assert_allclose(grid.cell_data["slip_1"], mesh.cell_data["slip_1"][0])
+    assert np.all((mesh.cell_data["slip_1"][0] >= 0) & (mesh.cell_data["slip_1"][0] <= 1))
+    EI = mesh.cell_data["EI_in_use"][0]
+    section = model.section
+    assert np.all(EI > 0.9 * section.EI_min.min()) and np.all(EI < 1.1 * section.EI_max.max())
+    w = meshio.read(tmp_path / f"s_wires_{len(curve.steps) - 1:04d}.vtu")
+    n_nodes = model.mesh.p.shape[1]
+    assert w.points.shape == (7 * n_nodes, 3)
+    assert w.cell_data["broken"][0].sum() == n_nodes - 1  # one broken wire, every segment flagged
+    assert pv.PVDReader(wires).time_values == reader.time_values
+
+
+def test_intact_strand_fields_match_closed_form(tmp_path, curves):
+    curve = curves[1]
+    step = curve.steps[-1]
+    mesh = curve.step_mesh(-1)
+    EA = curve.model.section.EA
+    np.testing.assert_allclose(mesh.point_data["axial_force"], EA * step.strain, rtol=1e-6)
+    assert np.max(np.abs(mesh.point_data["curvature"])) < 1e-9
+    # undeformed wires (scale 0) lie on their helix: radius = core + wire radius = d for equal wires
+    wires = curve.step_mesh(0, wires=True, scale=0.0)
+    radius = np.hypot(wires.points[:, 1], wires.points[:, 2]).reshape(7, -1)
+    np.testing.assert_allclose(radius[1:], 3.1e-3, rtol=1e-12)
+    np.testing.assert_allclose(radius[0], 0.0)
+    with pytest.raises(InputError, match="step"):
+        curve.step_mesh(99)
+
+
+def test_series_needs_pvd(tmp_path):
+    with pytest.raises(InputError, match="path"):
+        write_series([], [], tmp_path / "x.vtu")
+
+
+def test_csv_matches_curve(tmp_path, curves):
+    curve = curves[0]
+    table = np.genfromtxt(curve.to_csv(tmp_path / "c.csv"), delimiter=",", names=True)
+    np.testing.assert_allclose(table["strain"], curve.strain)
+    np.testing.assert_allclose(table["force_N"], curve.force)
+    np.testing.assert_allclose(table["slip_fraction"], curve.slip_fraction)
