@@ -226,6 +226,26 @@ def _demo(args) -> int:
     return 0
 
 
+def _study(args) -> int:
+    from skcable import study
+
+    table, output = study.run_file(
+        args.path,
+        scheduler=args.scheduler,
+        executor="serial" if args.serial else "auto",
+        n_workers=args.workers,
+        progress=not args.no_progress,
+        output=args.out,
+        cache=args.cache,
+    )
+    failed = table[table.status != "ok"]
+    busy = table.time_s.sum()
+    print(f"{len(table)} cases, {len(failed)} failed, {busy:.1f} s of computing; table: {output}")
+    for _, row in failed.iterrows():
+        print(f"  failed {row.key}: {row.error}")
+    return 0
+
+
 # --- parser ---------------------------------------------------------------------
 class _Parser(argparse.ArgumentParser):
     """argparse with one-line errors (exit status 2, no usage dump)."""
@@ -263,6 +283,15 @@ def _parser() -> argparse.ArgumentParser:
     f.add_argument("--loads", type=float, nargs="+", required=True, help="Px Py per joint [N], y up")
     f.add_argument("--vtk")
     f.add_argument("--json", action="store_true")
+    study = sub.add_parser("study", help="parameter studies on Dask").add_subparsers(dest="study_command")
+    st = study.add_parser("run", help="run a study file (TOML) and write its table")
+    st.add_argument("path", help="study file, e.g. studies/seed003_tables_4_1_4_2.toml")
+    st.add_argument("--scheduler", help="address of a dask.distributed scheduler, e.g. tcp://host:8786")
+    st.add_argument("--serial", action="store_true", help="no Dask: one case after the other")
+    st.add_argument("--workers", type=int, default=2, help="processes of the local cluster")
+    st.add_argument("--out", help="table path (.csv or .parquet), overrides the file's")
+    st.add_argument("--cache", help="cache folder, overrides the file's")
+    st.add_argument("--no-progress", action="store_true")
     s = sub.add_parser("strand", help="strand sections and capacity curves").add_subparsers(
         dest="strand_command"
     )
@@ -300,6 +329,10 @@ def main(argv=None) -> int:
             if args.strand_command is None:
                 parser.error("strand: choose 'section' or 'capacity'")
             return {"section": _section, "capacity": _capacity}[args.strand_command](args)
+        if args.command == "study":
+            if args.study_command is None:
+                parser.error("study: choose 'run'")
+            return _study(args)
         if args.command is None:
             args = parser.parse_args(["demo"])
         return commands[args.command](args)
