@@ -9,6 +9,7 @@ default (m, N, N/m); any consistent system works.
 from skcable.cable._arc import ArcSolution, arc_constitutive, arc_equilibrium_x, arc_equilibrium_y
 from skcable.cable._bvp import BVPSolution, graph_dH, graph_residual, graph_tangent, solve_bvp
 from skcable.cable._catenary import Catenary, catenary
+from skcable.cable._choice import solve
 from skcable.cable._elastic import ElasticCatenary, elastic_catenary
 from skcable.cable._funicular import Funicular, FunicularVertical, funicular, funicular_vertical
 from skcable.cable._loads import DeckLoad, DistributedLoad, PointLoad, SelfWeight
@@ -51,6 +52,7 @@ __all__ = [
     "parabola",
     "ring_on_rod",
     "sliding_load",
+    "solve",
     "smooth_surface_reaction",
     "sphere_parallel",
 ]

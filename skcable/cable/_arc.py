@@ -36,11 +36,11 @@ from functools import cached_property
 
 import numpy as np
 import scipy.sparse as sp
-from scipy.optimize import elementwise, minimize_scalar
+from scipy.optimize import elementwise
 from skfem import Basis, BilinearForm, ElementLineP1DG, ElementLineP2, LinearForm, MeshLine, asm, solve
 
 from skcable._checks import real, require
-from skcable.cable._bvp import FiniteElementSolution, _gradient_probes, element_values
+from skcable.cable._bvp import FiniteElementSolution, _gradient_probes, element_minimum, element_values
 from skcable.cable._catenary import catenary
 from skcable.cable._loads import DeckLoad, DistributedLoad, PointLoad, SelfWeight
 from skcable.errors import ConvergenceError, InputError
@@ -251,18 +251,8 @@ class _ArcProblem:
         best = None
         for k in range(max(element - 1, 0), min(element + 2, self.mesh.t.shape[1])):
             dofs = self.basis.element_dofs[:, k]
-            left, right = np.sort(self.mesh.p[0, self.mesh.t[:, k]])
-
-            def objective(s, k=k, dofs=dofs):
-                phi = element_values(self.basis, k, s)
-                return float(phi @ yd[dofs] - tilt * (phi @ xd[dofs]))
-
-            found = minimize_scalar(
-                objective, bounds=(left, right), method="bounded", options={"xatol": 1e-14}
-            )
-            for s in (found.x, left, right):
-                candidate = (objective(s), float(s), k)
-                best = candidate if best is None or candidate < best else best
+            candidate = (*element_minimum(self.basis, k, yd[dofs] - tilt * xd[dofs]), k)
+            best = candidate if best is None or candidate < best else best
         value, s_star, k = best
         row = np.zeros(self.N)
         row[self.basis.element_dofs[:, k]] = element_values(self.basis, k, s_star)

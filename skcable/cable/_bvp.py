@@ -42,7 +42,7 @@ from functools import cached_property
 
 import numpy as np
 import scipy.sparse as sp
-from scipy.optimize import minimize_scalar
+from numpy.polynomial import Polynomial
 from skfem import (
     Basis,
     BilinearForm,
@@ -131,13 +131,37 @@ def _gradient_probes(basis, x):
 
 
 def element_values(basis, element, x):
-    """Values at ``x`` of every basis function of ``element`` (as skfem's ``probes``,
-    through ``gbasis``, which orients hierarchical modes): array (Nbfun,)."""
+    """Values at ``x`` (scalar or 1-D) of every basis function of ``element`` (as skfem's
+    ``probes``, through ``gbasis``, which orients hierarchical modes): (Nbfun,) or (Nbfun, n)."""
+    points = np.atleast_1d(np.asarray(x, dtype=float))
     cells = np.array([element])
-    X = basis.mapping.invF(np.array([[[float(x)]]]), tind=cells)
-    return np.array(
+    X = basis.mapping.invF(points[None, None, :], tind=cells)
+    values = np.array(
         [np.asarray(basis.elem.gbasis(basis.mapping, X, j, tind=cells)[0]) for j in range(basis.Nbfun)]
-    ).ravel()
+    ).reshape(basis.Nbfun, points.size)
+    return values[:, 0] if np.ndim(x) == 0 else values
+
+
+def element_minimum(basis, element, local, lean=0.0):
+    """Minimum over ``element`` of ``local·φ(x) + lean·x``: (value, x).
+
+    The field is a polynomial of the element's degree in x: it is sampled at
+    degree + 1 Chebyshev points, fitted exactly, and minimised over the
+    roots of its derivative and the element's ends.
+    """
+    left, right = np.sort(basis.mesh.p[0, basis.mesh.t[:, element]])
+    degree = max(int(basis.elem.maxdeg), 1)
+    theta = np.pi * (np.arange(degree + 1) + 0.5) / (degree + 1)
+    x = left + (right - left) * 0.5 * (1.0 - np.cos(theta))
+    poly = Polynomial.fit(
+        x, local @ element_values(basis, element, x) + lean * x, degree, domain=[left, right]
+    )
+    roots = poly.deriv().roots()
+    roots = roots[np.isreal(roots)].real
+    candidates = np.concatenate([[left, right], roots[(roots > left) & (roots < right)]])
+    values = poly(candidates)
+    best = int(np.argmin(values))
+    return float(values[best]), float(candidates[best])
 
 
 @dataclass
@@ -321,8 +345,8 @@ class _GraphProblem:
     def extremum(self, dofs, kind):
         """(x*, value, d value/d dofs) of the sag (max of tilt·x - y) or the lowest point (min y).
 
-        The best quadrature point or node picks the element; Brent's method
-        then searches it and its two neighbours with the element's own basis.
+        The best quadrature point picks the element; the exact minimum of the
+        element's polynomial is taken there and in its two neighbours.
         """
         tilt = 0.0 if kind == "low" else self.chord_slope  # minimise y - tilt x = u + (s - tilt) x
         lean = self.chord_slope - tilt
@@ -331,16 +355,7 @@ class _GraphProblem:
         candidates = []
         for k in range(max(element - 1, 0), min(element + 2, self.mesh.t.shape[1])):
             local = dofs[self.basis.element_dofs[:, k]]
-            left, right = np.sort(self.mesh.p[0, self.mesh.t[:, k]])
-
-            def objective(x, k=k, local=local):
-                return float(local @ element_values(self.basis, k, x)) + lean * x
-
-            best = minimize_scalar(
-                objective, bounds=(left, right), method="bounded", options={"xatol": 1e-13 * self.span}
-            )
-            for x in (best.x, left, right):
-                candidates.append((objective(x), float(x), k))
+            candidates.append((*element_minimum(self.basis, k, local, lean), k))
         _, x_star, k = min(candidates)
         row = np.zeros(self.basis.N)
         row[self.basis.element_dofs[:, k]] = element_values(self.basis, k, x_star)
