@@ -96,8 +96,11 @@ class BendingLaw:
         out = []
         for k in (0, 1):
             theta = self.theta(k)
-            terms = w.radius * self._force * cos_a * np.expm1(self.mu * theta * sin_a) * np.sin(theta)
+            with np.errstate(over="ignore"):
+                terms = w.radius * self._force * cos_a * np.expm1(self.mu * theta * sin_a) * np.sin(theta)
             out.append(np.sum(np.where(helical, terms, 0.0)))
+        if not np.all(np.isfinite(out)):
+            raise InputError("mu", f"the capstan factor exp(mu·θ·sin α) overflows for mu = {self.mu!r}")
         return np.array(out)
 
     @cached_property

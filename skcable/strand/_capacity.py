@@ -34,6 +34,9 @@ class CapacityCurve:
     chatter_steps : list of int
         Steps whose slip state did not settle (it cycled, or the re-solve with
         the new state failed): the previous state was kept for that step.
+    cutbacks : int
+        Step halvings the solver needed (a failed Newton solve retried with
+        half the strain increment).
     """
 
     model: object
@@ -45,6 +48,7 @@ class CapacityCurve:
     chatter_steps: list = field(default_factory=list)
     n_steps: int = 0
     failure: str | None = None
+    cutbacks: int = 0
 
     @cached_property
     def _elastic_end(self):
@@ -194,7 +198,7 @@ def capacity_curve(
     )[1:]
     slip_mask = model.initial_slip_state() if model.slip != "none" else None
     strains, forces, fractions, steps, chatter = [0.0], [0.0], [0.0], [], []
-    U, eps, previous = None, 0.0, None
+    U, eps, previous, cutbacks = None, 0.0, None, 0
     ruptured, failure = False, None
     for goal in schedule:
         while eps < goal - 1e-15:
@@ -207,6 +211,7 @@ def capacity_curve(
                 except ConvergenceError as exc:
                     last = exc
                     target = eps + 0.5 * (target - eps)
+                    cutbacks += 1
             else:
                 failure = f"no convergence beyond strain {eps:.6g} after 6 cutbacks"
                 if on_failure == "raise":
@@ -242,6 +247,7 @@ def capacity_curve(
         chatter,
         n_steps,
         failure,
+        cutbacks,
     )
 
 

@@ -53,6 +53,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 import scipy.sparse as sp
+from scipy.interpolate import PchipInterpolator
 from skfem import Basis, BilinearForm, ElementLineHermite, ElementLineP2, LinearForm, MeshLine, asm, solve
 
 from skcable._checks import nonnegative, positive
@@ -284,15 +285,18 @@ class StrandModel:
             for e in self.kappa_grid
         ]
         self.kappa_table = np.array(table).T  # (2, n)
+        self._kappa_spline = PchipInterpolator(self.kappa_grid, self.kappa_table, axis=1)
+        self._kappa_slope = self._kappa_spline.derivative()
 
     def kappa_m(self, axial_strain):
-        """Critical curvatures (2, ...) and their derivative w.r.t. the axial strain."""
+        """Critical curvatures (2, ...) and their derivative w.r.t. the axial strain.
+
+        A monotone C¹ interpolant (PCHIP) of the tabulated law: a piecewise-linear
+        one has a derivative that jumps at every grid point, and Newton then
+        stalls on a kink (seen at 384 elements and 160 steps).
+        """
         eps = np.clip(axial_strain, 0.0, self.kappa_grid[-1])
-        values = np.array([np.interp(eps, self.kappa_grid, row) for row in self.kappa_table])
-        slopes = np.diff(self.kappa_table, axis=1) / np.diff(self.kappa_grid)
-        index = np.clip(np.searchsorted(self.kappa_grid, eps) - 1, 0, slopes.shape[1] - 1)
-        derivative = np.array([row[index] for row in slopes]) * (axial_strain > 0)
-        return values, derivative
+        return self._kappa_spline(eps), self._kappa_slope(eps) * (axial_strain > 0)
 
     # --- fields and section ----------------------------------------------------
     def split(self, U):

@@ -184,3 +184,16 @@ def test_capacity_curve_failure_raises_with_history_or_stops():
         _ = partial.D_r
     with pytest.raises(InputError, match="on_failure"):
         model.capacity_curve(n_steps=20, on_failure="ignore")
+
+
+def test_critical_curvature_is_c1_in_the_axial_strain():
+    """kappa_m(eps) and its derivative are consistent across the table's grid points (a
+    piecewise-linear table once stalled Newton at 384 elements and 160 steps)."""
+    model = strand.StrandModel(strand.preset("steel-9.5").damaged(1), 0.3, n_elements=4, slip="axis")
+    grid = model.kappa_grid
+    points = np.concatenate([grid[5:200:17], 0.5 * (grid[5:200:17] + grid[6:201:17])])
+    h = 1e-7 * grid[-1]
+    plus, minus = model.kappa_m(points + h)[0], model.kappa_m(points - h)[0]
+    slope = model.kappa_m(points)[1]
+    np.testing.assert_allclose((plus - minus) / (2 * h), slope, rtol=1e-4, atol=1e-6 * np.max(np.abs(slope)))
+    np.testing.assert_allclose(model.kappa_m(grid[1:])[0], model.kappa_table[:, 1:], rtol=1e-12)  # the table
