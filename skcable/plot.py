@@ -120,6 +120,10 @@ def render_strand(
     that a metre-long strand of a few millimetres fits one picture.
     """
     import pyvista as pv
+    from vtkmodules.vtkCommonCore import vtkLogger
+
+    # without a display VTK tries X first and warns before falling back to off-screen
+    vtkLogger.SetStderrVerbosity(vtkLogger.VERBOSITY_ERROR)
 
     wires = curve.step_mesh(step, wires=True, scale=scale)
     segments = wires.cells[0].data
