@@ -80,6 +80,12 @@ def _to_nodes(model, values):
     return nodal.reshape(*values.shape[:-2], -1)
 
 
+def _element_mean(model, values):
+    """Mean over each element (quadrature-weighted) of values (..., ne, nq): (..., ne)."""
+    dx = model.ub.dx
+    return np.sum(values * dx, axis=-1) / np.sum(dx, axis=-1)
+
+
 def _step_state(model, step):
     mask = step.slipping[0, :, 0] if model.slip == "element" else step.slipping
     return model.section_state(step.dofs, mask if model.slip != "none" else None)
@@ -97,12 +103,9 @@ def strand_mesh(model, step) -> meshio.Mesh:
     principal axis), ``slipping`` (1 if any), ``EI_in_use`` (tangent bending
     stiffness about y and z, N·m²), ``element_size`` (m).
     """
-    parts = model.split(step.dofs)
+    at = model.nodal_values(step.dofs)
     nodes = model.mesh.p[0]
-    vertex = {"u": model.ub.nodal_dofs[0], "v": model.vb.nodal_dofs[0], "phi": model.ub.nodal_dofs[0]}
-    displacement = np.column_stack(
-        [parts["u"][vertex["u"]], parts["v"][vertex["v"]], parts["w"][vertex["v"]]]
-    )
+    displacement = np.column_stack([at["u"], at["v"], at["w"]])
     state = _step_state(model, step)
     S, D = state["S"], state["D"]
     g = model.generalized_strains(step.dofs)
@@ -113,7 +116,7 @@ def strand_mesh(model, step) -> meshio.Mesh:
     slipping = np.asarray(step.slipping, dtype=float).mean(axis=2)  # (2, ne)
     point_data = {
         "displacement": displacement,
-        "twist": parts["phi"][vertex["phi"]],
+        "twist": at["phi"],
         "axial_strain": projected[0],
         "axial_force": projected[1],
         "curvature_1": projected[2],
@@ -121,14 +124,11 @@ def strand_mesh(model, step) -> meshio.Mesh:
         "curvature": np.column_stack([np.zeros_like(nodes), projected[4], projected[5]]),
         "moment": np.column_stack([np.zeros_like(nodes), projected[6], projected[7]]),
     }
-    weights = model.ub.dx / model.ub.dx.sum(axis=1, keepdims=True)
     cell_data = {
         "slip_1": [slipping[0]],
         "slip_2": [slipping[1]],
         "slipping": [np.any(step.slipping, axis=(0, 2)).astype(np.int32)],
-        "EI_in_use": [
-            np.column_stack([np.sum(D[2, 2] * weights, axis=1), np.sum(D[4, 4] * weights, axis=1)])
-        ],
+        "EI_in_use": [np.column_stack([_element_mean(model, D[2, 2]), _element_mean(model, D[4, 4])])],
         "element_size": [np.diff(nodes[model.mesh.t], axis=0)[0]],
     }
     return meshio.Mesh(points, [("line", model.mesh.t.T)], point_data=point_data, cell_data=cell_data)
@@ -142,37 +142,26 @@ def wire_mesh(model, step, *, scale: float = 1.0) -> meshio.Mesh:
     ``layer``, ``broken`` (1 for a broken wire), ``wire_strain`` and
     ``wire_stress`` (Pa), the element means.
     """
-    parts = model.split(step.dofs)
     nodes = model.mesh.p[0]
-    u = parts["u"][model.ub.nodal_dofs[0]]
-    v = parts["v"][model.vb.nodal_dofs[0]]
-    w = parts["w"][model.vb.nodal_dofs[0]]
-    phi = parts["phi"][model.ub.nodal_dofs[0]]
+    if np.any(np.diff(nodes) <= 0):
+        raise InputError("model", "mesh nodes must be numbered along the axis for wire output")
+    at = model.nodal_values(step.dofs)
     wires = model.wire_data
-    lay = np.zeros_like(wires.radius)
-    helical = wires.layer > 0
-    lay[helical] = model.strand.lay_lengths[wires.layer[helical] - 1]
-    rate = np.where(helical, wires.direction * 2 * np.pi / np.where(helical, lay, 1.0), 0.0)
-    psi = wires.psi[:, None] + rate[:, None] * nodes[None] - phi[None]  # (n_wires, n_nodes)
+    psi = wires.psi[:, None] + model.wire_rate[:, None] * nodes[None] - at["phi"][None]  # (n_wires, n_nodes)
     n_wires, n_nodes = psi.shape
-    x = np.broadcast_to(nodes + scale * u, psi.shape)
-    y = scale * v[None] + wires.radius[:, None] * np.sin(psi)
-    z = scale * w[None] + wires.radius[:, None] * np.cos(psi)
+    x = np.broadcast_to(nodes + scale * at["u"], psi.shape)
+    y = scale * at["v"][None] + wires.radius[:, None] * np.sin(psi)
+    z = scale * at["w"][None] + wires.radius[:, None] * np.cos(psi)
     points = np.stack([x, y, z], axis=-1).reshape(-1, 3)
     start = (np.arange(n_wires)[:, None] * n_nodes + np.arange(n_nodes - 1)[None]).ravel()
-    order = np.argsort(nodes)
-    if not np.array_equal(order, np.arange(n_nodes)):
-        raise InputError("model", "mesh nodes must be numbered along the axis for wire output")
     segments = np.column_stack([start, start + 1])
-    weights = model.ub.dx / model.ub.dx.sum(axis=1, keepdims=True)
-    per_element = lambda a: np.sum(a * weights[None], axis=2).ravel()  # noqa: E731
     repeat = lambda a: np.repeat(a, n_nodes - 1)  # noqa: E731
     cell_data = {
         "wire": [repeat(np.arange(n_wires))],
         "layer": [repeat(wires.layer)],
         "broken": [repeat((~model.alive).astype(np.int32))],
-        "wire_strain": [per_element(step.wire_strain)],
-        "wire_stress": [per_element(step.wire_stress)],
+        "wire_strain": [_element_mean(model, step.wire_strain).ravel()],
+        "wire_stress": [_element_mean(model, step.wire_stress).ravel()],
     }
     return meshio.Mesh(points, [("line", segments)], cell_data=cell_data)
 

@@ -26,7 +26,7 @@ import numpy as np
 from skcable._checks import positive
 from skcable.errors import InputError
 
-__all__ = ["Analysis", "ClosedFormCurve", "analyse"]
+__all__ = ["Analysis", "ClosedFormCurve", "analyse", "axial_force"]
 
 
 @dataclass

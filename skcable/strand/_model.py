@@ -241,6 +241,7 @@ class StrandModel:
         lay_length[helical] = s.lay_lengths[w.layer[helical] - 1]
         self.x_quad = np.asarray(self.ub.global_coordinates())[0]  # (ne, nq)
         rate = np.where(helical, w.direction * 2 * np.pi / np.where(helical, lay_length, 1.0), 0.0)
+        self.wire_rate = rate  # dψ_j/dx (rad/m), 0 for the core
         psi = w.psi[:, None, None] + rate[:, None, None] * self.x_quad[None]
         self.wire_y = w.radius[:, None, None] * np.sin(psi)
         self.wire_z = w.radius[:, None, None] * np.cos(psi)
@@ -301,6 +302,11 @@ class StrandModel:
     # --- fields and section ----------------------------------------------------
     def split(self, U):
         return {name: U[self.offsets[i] : self.offsets[i + 1]] for i, name in enumerate(FIELDS)}
+
+    def nodal_values(self, U):
+        """Values of u, v, w, φ at the mesh nodes (their vertex dofs): dict of (n_nodes,) arrays."""
+        parts = self.split(U)
+        return {name: parts[name][self.bases[name].nodal_dofs[0]] for name in FIELDS}
 
     def generalized_strains(self, U):
         parts = self.split(U)
