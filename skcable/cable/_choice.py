@@ -22,9 +22,10 @@ Error estimates (relative, on H, the end tensions and the length):
   with :math:`u_A, u_B` the support values of x/a (Δ = |u_B − u_A|,
   c = |u_A + u_B|/2), the estimate is :math:`K\,\tfrac{\Delta^2}{48}(1 + c)`
   (Δ = 2t gives t²/12 when c = 0); the factor 1 + c and K = 2 (5 for the
-  ``low`` constraint, whose vertex may sit near a support) were set on
-  6,000 random scenes so that the estimate bounds the largest relative error
-  in H, the end tensions, the length and the sag. With a deck load, only the
+  ``low`` constraint, whose vertex may sit near a support) were chosen on
+  random scenes so that the estimate bounds the largest relative error in
+  H, the end tensions, the length and the sag (``tests/cable/test_choice.py``
+  checks the bound on random scenes of every constraint). With a deck load, only the
   self weight's share of the load (per horizontal metre) is misplaced: the
   estimate is multiplied by that share.
 - *Stretch*: an inextensible model of an elastic cable (``EA`` given) errs by
@@ -32,8 +33,8 @@ Error estimates (relative, on H, the end tensions and the length):
   unstretched length is the constraint, by
   :math:`\varepsilon\,S/(2(S - c))` in H (a parabola's :math:`H \propto (S-c)^{-1/2}`;
   c the chord), which grows without bound as the cable tightens; both times
-  1.5 (against Irvine's closed form on 2,000 random scenes the first-order
-  value is within 1 % of the true error).
+  1.5, a margin over the first-order value (the test checks the bound
+  against Irvine's closed form on 200 random scenes).
 - *Discretisation*: the BVP's H on n and 2n P2 elements (error
   :math:`\propto h^4`): the difference of the two bounds the error of the
   coarser one; the finer is returned.

@@ -67,6 +67,8 @@ def test_funicular_round_trip(tmp_path):
 def test_array_solution_is_refused(tmp_path):
     with pytest.raises(InputError, match="solution"):
         cable.catenary([800, 900], 0, 20, sag=30).to_vtk(tmp_path / "x.vtu")
+    with pytest.raises(InputError, match="n"):
+        cable.catenary(800, 0, 20, sag=30).to_vtk(tmp_path / "x.vtu", n=1)
 
 
 def test_strand_series_round_trip(tmp_path, curves):
