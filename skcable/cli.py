@@ -189,13 +189,20 @@ def _write_results(curves: dict, out: Path) -> list[Path]:
 def _capacity(args) -> int:
     from skcable import strand
 
-    model_kw = dict(slip=args.slip, mu=args.mu, length=args.length, n_elements=args.n_elements)
+    model_kw = dict(
+        slip=args.slip,
+        mu=args.mu,
+        length=args.length,
+        n_elements=args.n_elements,
+        damage_load=args.damage_load,
+    )
     curve = _run_curve(
         strand.StrandModel(_strand(args), **model_kw), args.slip, args.n_steps, not args.no_progress
     )
     values = _summary(curve)
     if args.out:
         name = f"{args.preset}_damage{args.damage}_{args.slip}"
+        name += "_sinusoidal" if args.damage_load == "sinusoidal" else ""
         values["written"] = [str(p) for p in _write_results({name: curve}, Path(args.out))]
     _print(values, args.json)
     return 0
@@ -305,6 +312,12 @@ def _parser() -> argparse.ArgumentParser:
     cap = s.choices["capacity"]
     cap.add_argument("--slip", default="axis", choices=("none", "axis", "element"))
     cap.add_argument("--mu", type=float, default=0.5)
+    cap.add_argument(
+        "--damage-load",
+        default="eccentricity",
+        choices=("eccentricity", "sinusoidal"),
+        help="broken wires as a helical eccentricity, or the thesis's prismatic section + sinusoidal loads",
+    )
     cap.add_argument("--length", type=float, default=1.0, help="clamp to clamp [m]")
     cap.add_argument("--n-elements", type=int)
     cap.add_argument("--n-steps", type=int)

@@ -61,6 +61,7 @@ def strand_capacity(
     length: float = 1.0,
     n_elements: int | None = None,
     n_steps: int | None = None,
+    damage_load: str = "eccentricity",
 ) -> dict:
     """Capacity curve of a preset strand: K_Leq (N), D_r, toughness (N), rupture strain and
     force (N), peak curvature (1/m), slip onset strain (first step with slip; None when
@@ -69,7 +70,7 @@ def strand_capacity(
 
     s = strand.preset(preset)
     s = s.damaged(int(damage)) if damage else s
-    model = strand.StrandModel(s, length, slip=slip, mu=mu, n_elements=n_elements)
+    model = strand.StrandModel(s, length, slip=slip, mu=mu, n_elements=n_elements, damage_load=damage_load)
     curve = model.capacity_curve(n_steps=n_steps)
     slipping = np.flatnonzero(curve.slip_fraction > 0)
     return {

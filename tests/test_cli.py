@@ -120,6 +120,19 @@ def test_strand_capacity_writes_csv_vtk_png(tmp_path):
     assert "%" in out.stderr  # the progress bar
 
 
+def test_strand_capacity_thesis_reading_equals_the_api():
+    from skcable import strand
+
+    args = ("--damage", "2", "--slip", "none", "--length", "0.3", "--n-elements", "16", "--n-steps", "8")
+    out = run("strand", "capacity", *args, "--damage-load", "sinusoidal", "--no-progress", "--json")
+    assert out.returncode == 0, out.stderr
+    model = strand.StrandModel(
+        strand.preset("steel-9.5").damaged(2), 0.3, n_elements=16, damage_load="sinusoidal"
+    )
+    curve = model.capacity_curve(n_steps=8)
+    assert json.loads(out.stdout)["K_Leq_N"] == pytest.approx(curve.K_Leq, rel=1e-12)
+
+
 def test_demo_writes_results(tmp_path):
     out = run("demo", "--no-progress", cwd=tmp_path)
     assert out.returncode == 0, out.stderr
@@ -135,6 +148,7 @@ def test_demo_writes_results(tmp_path):
         (("strand", "section", "--damage", "9"), "--damage"),
         (("strand", "section", "--preset", "copper"), "--preset"),
         (("strand", "capacity", "--slip", "sometimes"), "--slip"),
+        (("strand", "capacity", "--damage-load", "both"), "--damage-load"),
         (("funicular", "--B", "1", "0", "--lengths", "1", "1", "--loads", "1"), "loads"),
         (("elastic-catenary", "--span", "100", "--w", "1"), "--EA"),
         (("strand",), "strand"),

@@ -81,6 +81,18 @@ class CapacityCurve:
         strain, force = self._elastic_end
         return force / strain
 
+    def secant(self, strain: float) -> float:
+        """Secant stiffness ``F(ε)/ε`` (N) at a strain on the curve, linear between steps.
+
+        Eq. 4.30 over a range ``[0, ε]`` the caller chooses, e.g. one common to two models:
+        ``K_Leq`` ends where this curve's first wire leaves the linear branch, and that
+        strain moves with the model (a bent stick strand yields earlier than a slipping one).
+        """
+        if not 0 < strain <= self.strain[-1]:
+            top = self.strain[-1]
+            raise InputError("strain", f"must lie in (0, {top:.6g}] (the curve's range), got {strain!r}")
+        return float(np.interp(strain, self.strain, self.force) / strain)
+
     @property
     def toughness(self) -> float:
         """Area under the force–strain curve (N), up to rupture or the last step."""
@@ -144,7 +156,9 @@ class CapacityCurve:
         """The undamaged strand's curve with the same settings (for D_r)."""
         model = self.model
         intact = replace(model.strand, broken=frozenset())
-        twin = type(model)(intact, model.length, mesh=model.mesh, slip=model.slip, mu=model.mu)
+        twin = type(model)(
+            intact, model.length, mesh=model.mesh, slip=model.slip, mu=model.mu, damage_load=model.damage_load
+        )
         return capacity_curve(twin, n_steps=self.n_steps)
 
     @property
@@ -214,6 +228,7 @@ def capacity_curve(
                     cutbacks += 1
             else:
                 failure = f"no convergence beyond strain {eps:.6g} after 6 cutbacks"
+                failure += _softening_note(model, steps[-1] if steps else None)
                 if on_failure == "raise":
                     raise ConvergenceError("capacity_curve: " + failure, last.history) from last
                 break
@@ -248,6 +263,21 @@ def capacity_curve(
         n_steps,
         failure,
         cutbacks,
+    )
+
+
+def _softening_note(model, step) -> str:
+    """Why a curve may stop: wires inside the material law's softening range."""
+    window = model.strand.material.softening_range
+    if step is None or window is None:
+        return ""
+    lo, hi = window
+    wires = step.wire_strain[model.alive]
+    if not np.any((wires > lo) & (wires < hi)):
+        return ""
+    return (
+        f"; wires lie where the material law softens (strain {lo:.4g} to {hi:.4g}, tangent < 0),"
+        " and the strand's tangent can turn singular there (a limit point of the wire law)"
     )
 
 

@@ -129,6 +129,26 @@ class Material:
         out = np.where(elastic, self.E_e, np.where(plastic, self.E_p, (3 * a * t + 2 * b) * t + c))
         return out[()] if out.ndim == 0 else out
 
+    @property
+    def softening_range(self) -> tuple[float, float] | None:
+        """Strains ``(lo, hi)`` inside the blend where the tangent is negative, or None.
+
+        The C¹ cubic (B.1–B.4) is fixed by its end values and slopes; when the line
+        beyond ε″_y lies low enough it overshoots and the law softens before it rejoins
+        the line (aluminium of Table B.1: its printed a, b, c give dσ/dε < 0 late in the blend).
+        A softening wire law can take the strand's tangent to singular (a structural
+        limit point): capacity curves that stop there say so.
+        """
+        a, b, c, _ = self._cubic
+        roots = np.roots([3 * a, 2 * b, c])
+        roots = np.sort(roots[np.isreal(roots)].real)
+        if roots.size < 2 or roots[0] >= self.eps_y2 - self.eps_y1 or roots[1] <= 0:
+            return None
+        lo, hi = max(roots[0], 0.0), min(roots[1], self.eps_y2 - self.eps_y1)
+        if float(self.tangent(self.eps_y1 + 0.5 * (lo + hi))) >= 0:
+            return None
+        return float(self.eps_y1 + lo), float(self.eps_y1 + hi)
+
     def secant(self, strain):
         """Secant modulus σ/ε (Pa); ``E_e`` at zero strain."""
         strain = np.asarray(strain, dtype=float)

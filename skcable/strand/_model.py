@@ -10,7 +10,15 @@ Every wire j is a fibre at its helical position
 
 (lay length p, lay direction d), so the eccentricity of a damaged section
 rotates with the lay exactly (REFERENCE.md §3, mechanism (a), included once).
-Its axial strain, signs as in seed 003 eq. 4.5 with y up and z out of the
+With ``damage_load="sinusoidal"`` the fibres stay at ψ_j0 (a prismatic
+section) and the broken wires act instead through the sinusoidal biaxial
+loads of Beltrán & De Vico (mechanism (b), the thesis's reading):
+
+.. math:: q_y + i\,q_z = \sum_{b\ \mathrm{broken}} \frac{F_b\sin^2\alpha_b}{R_b\cos\alpha_b}
+          \left(\sin\psi_b(x) + i\cos\psi_b(x)\right), \qquad
+          F_b = A_b\,\sigma(\cos^2\alpha_b\,\varepsilon).
+
+A wire's axial strain, signs as in seed 003 eq. 4.5 with y up and z out of the
 v-plane,
 
 .. math:: \varepsilon_j = \cos^2\alpha_j\left(\varepsilon_a - y_j\kappa_v - z_j\kappa_w\right)
@@ -59,9 +67,20 @@ from skfem import Basis, BilinearForm, ElementLineHermite, ElementLineP2, Linear
 from skcable._checks import nonnegative, positive
 from skcable.errors import ConvergenceError, InputError
 
-__all__ = ["StrandModel", "StepResult", "material_block", "geometric_block", "section_residual"]
+__all__ = [
+    "StrandModel",
+    "StepResult",
+    "material_block",
+    "geometric_block",
+    "section_residual",
+    "distributed_load",
+]
 
 FIELDS = ("u", "v", "w", "phi")
+#: how a broken wire loads the strand: the net section's helical eccentricity
+#: (mechanism (a)) or the thesis's reading, a prismatic section under the
+#: sinusoidal biaxial loads of Beltrán & De Vico (mechanism (b))
+DAMAGE_LOADS = ("eccentricity", "sinusoidal")
 #: generalized strains: (field, derivative order)
 STRAINS = (("u", 1), ("v", 1), ("v", 2), ("w", 1), ("w", 2), ("phi", 1))
 
@@ -95,6 +114,12 @@ def material_block(test: str, trial: str) -> BilinearForm:
         )
 
     return form
+
+
+@LinearForm
+def distributed_load(v, w):
+    """``∫ q δv dx``: a load per unit length ``q`` (N/m, passed as ``q``) on a field."""
+    return w.q * v
 
 
 @BilinearForm
@@ -173,6 +198,16 @@ class StrandModel:
         the thesis's element rule.
     mu : float
         Friction coefficient of the bending law.
+    damage_load : {"eccentricity", "sinusoidal"}
+        How broken wires load the strand (REFERENCE.md §3; include the mechanism
+        once). ``"eccentricity"``: every fibre on its helix, so the net section's
+        centroid turns with the lay and the axial force acts on a helical
+        eccentricity (mechanism (a), the default). ``"sinusoidal"``: the thesis's
+        reading (seed 003 §2.4, Fig. 2.15; Beltrán & De Vico 2015): a prismatic
+        section (fibres at their positions at x = 0) under the biaxial sinusoidal
+        loads that the broken wires' missing radial pressure leaves on the core,
+        see :meth:`damage_loads` (mechanism (b)). Wire results of this reading
+        belong to the prismatic fibres; VTK output still draws them on their helices.
 
     Attributes
     ----------
@@ -193,9 +228,13 @@ class StrandModel:
         grading: float = 0.6,
         slip: str = "none",
         mu: float = 0.5,
+        damage_load: str = "eccentricity",
     ):
         if slip not in ("none", "axis", "element"):
             raise InputError("slip", f"must be 'none', 'axis' or 'element', got {slip!r}")
+        if damage_load not in DAMAGE_LOADS:
+            raise InputError("damage_load", f"must be one of {DAMAGE_LOADS}, got {damage_load!r}")
+        self.damage_load = damage_load
         self.strand, self.length, self.slip = strand, float(positive("length", length)), slip
         self.mu = float(nonnegative("mu", mu))
         if not 0 <= grading < 1:
@@ -242,11 +281,13 @@ class StrandModel:
         self.x_quad = np.asarray(self.ub.global_coordinates())[0]  # (ne, nq)
         rate = np.where(helical, w.direction * 2 * np.pi / np.where(helical, lay_length, 1.0), 0.0)
         self.wire_rate = rate  # dψ_j/dx (rad/m), 0 for the core
-        psi = w.psi[:, None, None] + rate[:, None, None] * self.x_quad[None]
+        # fibre positions: on the helix, or prismatic (the lay enters through the loads)
+        fibre_rate = rate if self.damage_load == "eccentricity" else 0.0 * rate
+        psi = w.psi[:, None, None] + fibre_rate[:, None, None] * self.x_quad[None]
         self.wire_y = w.radius[:, None, None] * np.sin(psi)
         self.wire_z = w.radius[:, None, None] * np.cos(psi)
         self.rotation = (
-            rate[helical][0] * self.x_quad if helical.any() else 0 * self.x_quad
+            fibre_rate[helical][0] * self.x_quad if helical.any() else 0 * self.x_quad
         )  # section rotation
         weight = np.where(alive, w.area * cos**3, 0.0)[:, None, None]  # axial stiffness / E
         self.centroid_y = np.sum(weight * self.wire_y, axis=0) / np.sum(weight)
@@ -258,6 +299,43 @@ class StrandModel:
         self.EI_own = material.E_e * float(np.sum(np.where(alive, w.inertia * cos, 0.0)))
         self.GJ_own = material.G * float(np.sum(np.where(alive, 2 * w.inertia * cos, 0.0)))
         self.alive = alive
+        self.broken_helical = np.flatnonzero(~alive & (w.layer > 0))
+        self._lay_load_unit = self._lay_load_per_unit_force() if self.damage_load == "sinusoidal" else None
+
+    def _lay_load_per_unit_force(self):
+        """Load vectors (n_broken, n_dofs) of the sinusoidal loads per newton of wire force.
+
+        A helical wire of tension F presses on the core with
+        ``F sin²α / (R cos α)`` per unit strand length, toward the axis; intact
+        wires balance, so a broken wire leaves a resultant on the core of that
+        magnitude pointing at it and turning with the lay (Beltrán & De Vico
+        2015; seed 003 §2.4, Fig. 2.15): ``q_y = q sin ψ_b(x)``, ``q_z = q cos ψ_b(x)``.
+        """
+        w, x, rows = self.wire_data, self.x_quad, []
+        for j in self.broken_helical:
+            psi = w.psi[j] + self.wire_rate[j] * x
+            alpha = w.lay_angle[j]
+            q = np.sin(alpha) ** 2 / (w.radius[j] * np.cos(alpha))
+            vec = np.zeros(self.offsets[-1])
+            for name, component in (("v", np.sin(psi)), ("w", np.cos(psi))):
+                i = FIELDS.index(name)
+                vec[self.offsets[i] : self.offsets[i + 1]] = asm(distributed_load, self.vb, q=q * component)
+            rows.append(vec)
+        return np.array(rows).reshape(len(self.broken_helical), self.offsets[-1])
+
+    def damage_loads(self, strain: float) -> np.ndarray:
+        """External load vector of ``damage_load="sinusoidal"`` at the strand's axial strain.
+
+        Each broken wire would carry ``F = A σ(cos²α ε)``, evaluated at the imposed
+        (mean) axial strain of the step: a dead load within each step. Zero for the
+        ``"eccentricity"`` reading, where the fibres' helical positions carry the effect.
+        """
+        if self._lay_load_unit is None:
+            return np.zeros(self.offsets[-1])
+        w, broken = self.wire_data, self.broken_helical
+        cos = np.cos(w.lay_angle[broken])
+        force = w.area[broken] * self.strand.material.stress(cos**2 * strain)
+        return force @ self._lay_load_unit
 
     def _boundary(self):
         D, self.pull = [], None
@@ -413,6 +491,8 @@ class StrandModel:
         R = np.concatenate(
             [asm(_RESIDUAL[n], self.bases[n], **{f"S{a}": S[a] for a in range(6)}) for n in FIELDS]
         )
+        if self._lay_load_unit is not None:
+            R -= self.damage_loads(U[self.pull] / self.length)
         for name, form, kwargs in self.external:  # terms an analyst adds (loads)
             i = FIELDS.index(name)
             R[self.offsets[i] : self.offsets[i + 1]] -= asm(form, self.bases[name], **kwargs)

@@ -35,6 +35,17 @@ def test_cubic_coefficients_match_closed_forms_B6_B7(name):
     assert m.b == pytest.approx((m.E_e - m.E_p) * (3 * ey - e1 - 2 * e2) / square, rel=1e-12)
 
 
+def test_softening_range_from_the_printed_coefficients():
+    """The roots of dσ/dε = 3a t² + 2b t + c with Table B.1's printed a, b, c (t = ε − ε'_y):
+    aluminium's blend softens between them; steel's tangent stays positive."""
+    a, b, c, _ = TABLE_B1["aluminium"]
+    m = strand.material("aluminium")
+    expected = np.sort(np.roots([3 * a, 2 * b, c]).real) + m.eps_y1
+    assert m.softening_range == pytest.approx(expected, rel=1e-6)
+    assert float(m.tangent(expected.mean())) < 0
+    assert strand.material("steel").softening_range is None
+
+
 def test_rupture_stress_table_3_4():
     assert strand.material("steel").stress_rupture / MPA == pytest.approx(1443.0, abs=0.05)
 

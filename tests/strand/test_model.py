@@ -81,13 +81,18 @@ def test_geometric_part_is_separate():
     assert abs(K_G).max() > 0
 
 
-@pytest.mark.parametrize("slip", ["none", "axis"])
-def test_tangent_agrees_with_finite_differences(slip):
-    model = strand.StrandModel(strand.preset("steel-9.5").damaged(2), 0.4, n_elements=12, slip=slip)
+@pytest.mark.parametrize(
+    "slip, damage_load", [("none", "eccentricity"), ("axis", "eccentricity"), ("none", "sinusoidal")]
+)
+def test_tangent_agrees_with_finite_differences(slip, damage_load):
+    model = strand.StrandModel(
+        strand.preset("steel-9.5").damaged(2), 0.4, n_elements=12, slip=slip, damage_load=damage_load
+    )
     rng = np.random.default_rng(0)
     U = model.uniform(0.003) + 1e-5 * rng.standard_normal(model.offsets[-1])
     R, K, _ = model.assemble(U)
-    d = rng.standard_normal(U.size) * 1e-3
+    d = np.zeros(U.size)  # the free dofs (the pulled end sets the sinusoidal loads' strain)
+    d[model.free] = rng.standard_normal(model.free.size) * 1e-3
     eps = 1e-6
     fd = (model.assemble(U + eps * d)[0] - model.assemble(U - eps * d)[0]) / (2 * eps)
     assert K @ d == pytest.approx(fd, rel=1e-4, abs=1e-6 * np.abs(fd).max())
@@ -106,9 +111,12 @@ def test_clamped_tensioned_beam_under_transverse_load():
     assert model.vb.probes(np.atleast_2d(x)) @ model.split(U)["v"] == pytest.approx(exact, rel=2e-5)
 
 
-@pytest.mark.parametrize("name", ["steel-9.5", "aluminium-14.3"])
-def test_undamaged_strand_stays_straight_with_F_equal_EA_eps(name):
-    model = strand.StrandModel(strand.preset(name), 0.6, n_elements=24)
+@pytest.mark.parametrize(
+    "name, damage_load",
+    [("steel-9.5", "eccentricity"), ("aluminium-14.3", "eccentricity"), ("steel-9.5", "sinusoidal")],
+)
+def test_undamaged_strand_stays_straight_with_F_equal_EA_eps(name, damage_load):
+    model = strand.StrandModel(strand.preset(name), 0.6, n_elements=24, damage_load=damage_load)
     U, _, _, R = model.solve_step(None, 0.002)
     assert R[model.pull] == pytest.approx(model.section.EA * 0.002, rel=1e-12)
     parts = model.split(U)
@@ -138,6 +146,16 @@ def test_capacity_curve_undamaged_is_EA_then_yields_and_breaks():
     assert curve.D_r == pytest.approx(0.0, abs=1e-12)
 
 
+def test_secant_of_an_undamaged_curve_is_EA_and_checks_its_range():
+    model = strand.StrandModel(strand.preset("steel-9.5"), 0.3, n_elements=8)
+    curve = model.capacity_curve(max_strain=0.004, n_steps=8)
+    assert curve.secant(0.0031) == pytest.approx(model.section.EA, rel=1e-10)
+    with pytest.raises(InputError, match="strain"):
+        curve.secant(0.0)
+    with pytest.raises(InputError, match="strain"):
+        curve.secant(0.01)
+
+
 def test_damage_softens_and_bends():
     d = strand.preset("steel-9.5").damaged(1)
     stick = strand.StrandModel(d, 1.0, n_elements=32).capacity_curve(n_steps=40)
@@ -149,7 +167,77 @@ def test_damage_softens_and_bends():
     assert 0 < stick.D_r < slip.D_r < 1
 
 
+@pytest.mark.parametrize("damage", [1, 2])
+def test_sinusoidal_damage_loads_resultant_matches_closed_form(damage):
+    """∫ q_y dx, ∫ q_z dx of the assembled loads against the integral of the Beltrán–De Vico
+    load ``F sin²α/(R cos α)·(sin ψ_b, cos ψ_b)`` over the length, ψ_b = ψ_b0 + r x."""
+    d = strand.preset("steel-9.5").damaged(damage)
+    L, strain = 0.37, 0.003
+    model = strand.StrandModel(d, L, n_elements=20, damage_load="sinusoidal")
+    loads = model.split(model.damage_loads(strain))
+    one = np.zeros(model.vb.N)
+    one[model.vb.nodal_dofs[0]] = 1.0  # v = 1: value dofs 1, slopes 0
+    wires, material = d.wires(), d.material
+    broken = np.flatnonzero(~wires.intact)
+    assert broken.size == damage
+    expected = np.zeros(2)
+    for b in broken:
+        a, R, psi0 = wires.lay_angle[b], wires.radius[b], wires.psi[b]
+        rate = model.wire_rate[b]
+        q = wires.area[b] * material.stress(np.cos(a) ** 2 * strain) * np.sin(a) ** 2 / (R * np.cos(a))
+        expected += q * np.array(
+            [(np.cos(psi0) - np.cos(psi0 + rate * L)) / rate, (np.sin(psi0 + rate * L) - np.sin(psi0)) / rate]
+        )
+    scale = np.abs(expected).max()
+    assert [loads["v"] @ one, loads["w"] @ one] == pytest.approx(expected, rel=1e-8, abs=1e-8 * scale)
+    assert np.all(loads["u"] == 0) and np.all(loads["phi"] == 0)
+    assert np.all(strand.StrandModel(d, L, n_elements=10).damage_loads(strain) == 0)
+
+
+@pytest.mark.parametrize("damage_load", ["eccentricity", "sinusoidal"])
+def test_axial_force_is_EA_times_mean_centroid_strain(damage_load):
+    """Statics in the elastic range: N is uniform, so F = EA (ε − ⟨c·κ⟩ + ½⟨v′² + w′²⟩), the
+    twist terms averaging out between the clamps; the bending offset of the centroid
+    (c·κ) softens, the membrane stretch stiffens."""
+    d = strand.preset("steel-9.5").damaged(2)
+    model = strand.StrandModel(d, 0.5, n_elements=32, damage_load=damage_load)
+    strain = 0.002
+    U, _, _, R = model.solve_step(None, strain)
+    g = model.generalized_strains(U)
+    dx = model.ub.dx
+
+    def mean(f):
+        return np.sum(f * dx) / np.sum(dx)
+
+    bending = mean(model.centroid_y * g[2] + model.centroid_z * g[4])
+    membrane = mean(0.5 * (g[1] ** 2 + g[3] ** 2))
+    # a bent strand, not a trivial check: the force is off EA·ε by more than 0.5 %
+    assert abs(R[model.pull] / (model.section.EA * strain) - 1) > 5e-3
+    assert R[model.pull] == pytest.approx(model.section.EA * (strain - bending + membrane), rel=1e-9)
+
+
+def test_two_readings_of_the_damage_bend_the_strand_alike_away_from_the_clamps():
+    """Mechanisms (a) and (b) are the same load (N e k² = F sin²α/(R cos α), REFERENCE.md
+    §3): in the middle of the specimen both deflect in phase with curvatures of one size."""
+    d = strand.preset("steel-9.5").damaged(1)
+    out = {}
+    for damage_load in ("eccentricity", "sinusoidal"):
+        model = strand.StrandModel(d, 0.5, n_elements=64, damage_load=damage_load)
+        U, state, _, _ = model.solve_step(None, 0.003)
+        nodes = model.mesh.p[0]
+        middle = (nodes > 0.15) & (nodes < 0.35)
+        values = model.nodal_values(U)
+        inside = (model.x_quad > 0.15) & (model.x_quad < 0.35)
+        curvature = np.mean(np.hypot(*state["curvature"])[inside])
+        out[damage_load] = (values["v"][middle], values["w"][middle], curvature)
+    (va, wa, ka), (vb, wb, kb) = out["eccentricity"], out["sinusoidal"]
+    assert np.corrcoef(va, vb)[0, 1] > 0.99 and np.corrcoef(wa, wb)[0, 1] > 0.99
+    assert kb == pytest.approx(ka, rel=0.15)
+
+
 def test_bad_input():
+    with pytest.raises(InputError, match="damage_load"):
+        strand.StrandModel(strand.preset("steel-9.5"), 1.0, damage_load="both")
     with pytest.raises(InputError, match="slip"):
         strand.StrandModel(strand.preset("steel-9.5"), 1.0, slip="sometimes")
     with pytest.raises(InputError, match="length"):
@@ -184,6 +272,20 @@ def test_capacity_curve_failure_raises_with_history_or_stops():
         _ = partial.D_r
     with pytest.raises(InputError, match="on_failure"):
         model.capacity_curve(n_steps=20, on_failure="ignore")
+
+
+def test_a_stop_among_softening_wires_says_so():
+    """Aluminium's blend (Table B.1) softens: a curve that stops with wires there names it;
+    steel's law never softens and its stop message stays plain."""
+    window = strand.material("aluminium").softening_range
+    model = FailingBeyond(strand.preset("aluminium-10.1"), 0.3, n_elements=8)
+    model.limit = 0.5 * sum(window)  # every wire (cos²α ε ≈ ε) inside the window
+    partial = model.capacity_curve(n_steps=20, on_failure="stop")
+    assert "material law softens" in partial.failure
+    plain = FailingBeyond(strand.preset("steel-9.5"), 0.3, n_elements=8).capacity_curve(
+        n_steps=20, on_failure="stop"
+    )
+    assert "softens" not in plain.failure
 
 
 def test_critical_curvature_is_c1_in_the_axial_strain():
