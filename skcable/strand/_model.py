@@ -317,9 +317,9 @@ class StrandModel:
             alpha = w.lay_angle[j]
             q = np.sin(alpha) ** 2 / (w.radius[j] * np.cos(alpha))
             vec = np.zeros(self.offsets[-1])
-            for name, component in (("v", np.sin(psi)), ("w", np.cos(psi))):
-                i = FIELDS.index(name)
-                vec[self.offsets[i] : self.offsets[i + 1]] = asm(distributed_load, self.vb, q=q * component)
+            parts = self.split(vec)  # views into vec
+            parts["v"][:] = asm(distributed_load, self.vb, q=q * np.sin(psi))
+            parts["w"][:] = asm(distributed_load, self.vb, q=q * np.cos(psi))
             rows.append(vec)
         return np.array(rows).reshape(len(self.broken_helical), self.offsets[-1])
 
@@ -494,8 +494,7 @@ class StrandModel:
         if self._lay_load_unit is not None:
             R -= self.damage_loads(U[self.pull] / self.length)
         for name, form, kwargs in self.external:  # terms an analyst adds (loads)
-            i = FIELDS.index(name)
-            R[self.offsets[i] : self.offsets[i + 1]] -= asm(form, self.bases[name], **kwargs)
+            self.split(R)[name][:] -= asm(form, self.bases[name], **kwargs)
         Dkw = {f"D{a}{b}": D[a, b] for a in range(6) for b in range(6)}
         blocks = []
         for test in FIELDS:
