@@ -1,0 +1,47 @@
+"""The strand model's numbers pinned from the code before the term/assembly restructuring.
+
+``benchmarks/pin_strand_numbers.py`` recorded them (the commit is in the JSON file); the model
+must reproduce every one to 1e-9 relative (the curve's forces to 1e-9 of its largest force).
+"""
+
+import json
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from skcable import strand
+
+PINNED = json.loads((Path(__file__).parent / "data" / "pinned_strand.json").read_text())
+
+
+def _id(case):
+    return f"{case['preset']}-d{case['damage']}-{case['slip']}-{case['damage_load']}"
+
+
+@pytest.mark.parametrize("case", PINNED["cases"], ids=_id)
+def test_strand_numbers_are_unchanged(case):
+    s = strand.preset(case["preset"]).damaged(case["damage"])
+    model = strand.StrandModel(
+        s,
+        1.0,
+        n_elements=PINNED["n_elements"],
+        slip=case["slip"],
+        mu=PINNED["mu"],
+        damage_load=case["damage_load"],
+    )
+    curve = model.capacity_curve(case["max_strain"], n_steps=PINNED["n_steps"])
+    assert curve.ruptured == case["ruptured"]
+    assert len(curve.force) == len(case["force"])
+    scale = max(np.abs(case["force"]))
+    np.testing.assert_allclose(curve.strain, case["strain"], rtol=1e-9, atol=0)
+    np.testing.assert_allclose(curve.force, case["force"], rtol=0, atol=1e-9 * scale)
+    np.testing.assert_allclose(curve.slip_fraction, case["slip_fraction"], rtol=0, atol=1e-12)
+    assert curve.K_Leq == pytest.approx(case["K_Leq"], rel=1e-9)
+    assert curve.strain[-1] == pytest.approx(case["rupture_strain"], rel=1e-9)
+    assert curve.force[-1] == pytest.approx(case["rupture_force"], rel=1e-9)
+    assert np.max(curve.slip_fraction) == pytest.approx(case["max_slip_fraction"], abs=1e-12)
+    peak = max(float(np.max(np.abs(st.curvature))) for st in curve.steps)
+    assert peak == pytest.approx(case["peak_curvature"], rel=1e-9)
+    if case["ruptured"]:
+        assert curve.D_r == pytest.approx(case["D_r"], rel=1e-9)
