@@ -1,0 +1,124 @@
+"""The einsum assembly against scikit-fem's forms, and the banded solve against a sparse one."""
+
+import numpy as np
+import pytest
+import scipy.sparse.linalg as spla
+from skfem import Basis, BilinearForm, ElementLineHermite, ElementLineP2, LinearForm, MeshLine, asm, bmat
+
+from skcable.errors import ConvergenceError, InputError
+from skcable.fe import StrainAssembly, newton
+
+STRAINS = (("u", 1), ("v", 0), ("v", 1), ("v", 2), ("phi", 1))
+
+
+def _d(f, order):
+    return f[0] if order == 0 else f.grad[0] if order == 1 else f.hess[0][0]
+
+
+@pytest.fixture(scope="module")
+def setup():
+    mesh = MeshLine(np.sort(np.r_[0.0, np.random.default_rng(0).uniform(0, 2, 9), 2.0]))
+    ub = Basis(mesh, ElementLineP2(), intorder=6)
+    bases = {"u": ub, "v": ub.with_element(ElementLineHermite()), "phi": ub}
+    return StrainAssembly(bases, STRAINS), bases
+
+
+def test_vector_and_matrix_equal_scikit_fem_forms(setup):
+    asmb, bases = setup
+    rng = np.random.default_rng(1)
+    ne, nq = asmb.dx.shape
+    S = rng.standard_normal((len(STRAINS), ne, nq))
+    D = rng.standard_normal((len(STRAINS), len(STRAINS), ne, nq))
+    names = list(bases)
+    vec, blocks = [], []
+    for test in names:
+        rows = [(a, o) for a, (f, o) in enumerate(STRAINS) if f == test]
+        vec.append(
+            asm(
+                LinearForm(lambda v, w, r=rows: sum(w[f"S{a}"] * _d(v, o) for a, o in r)),
+                bases[test],
+                **{f"S{a}": S[a] for a in range(len(STRAINS))},
+            )
+        )
+        row = []
+        for trial in names:
+            cols = [(b, o) for b, (f, o) in enumerate(STRAINS) if f == trial]
+
+            @BilinearForm
+            def form(u, v, w, r=rows, c=cols):
+                return sum(w[f"D{a}{b}"] * _d(u, ob) * _d(v, oa) for a, oa in r for b, ob in c)
+
+            kw = {f"D{a}{b}": D[a, b] for a in range(len(STRAINS)) for b in range(len(STRAINS))}
+            row.append(asm(form, bases[trial], bases[test], **kw))
+        blocks.append(row)
+    R = np.concatenate(vec)
+    K = bmat(blocks).toarray()
+    scale_R, scale_K = np.max(np.abs(R)), np.max(np.abs(K))
+    np.testing.assert_allclose(asmb.vector(S), R, rtol=0, atol=1e-12 * scale_R)
+    np.testing.assert_allclose(asmb.matrix(D).toarray(), K, rtol=0, atol=1e-12 * scale_K)
+    U = rng.standard_normal(asmb.N)
+    parts = np.split(U, asmb.offsets[1:-1])
+    fields = {n: bases[n].interpolate(p) for n, p in zip(names, parts, strict=True)}
+    g = np.array([_d(fields[f], o) for f, o in STRAINS])
+    np.testing.assert_allclose(asmb.interpolate(U), g, rtol=0, atol=1e-12 * np.max(np.abs(g)))
+
+
+def test_banded_solve_equals_sparse_solve(setup):
+    asmb, _ = setup
+    rng = np.random.default_rng(2)
+    ne, nq = asmb.dx.shape
+    A = rng.standard_normal((len(STRAINS), len(STRAINS), ne, nq))
+    D = np.einsum("abeq,cbeq->aceq", A, A) + 0.1 * np.eye(len(STRAINS))[:, :, None, None]
+    K = asmb.matrix(D)
+    free = np.setdiff1d(np.arange(asmb.N), [0, 3, asmb.N - 1])
+    system = asmb.banded(free)
+    ab = system.add_elements(system.band(), asmb.element_matrices(D))
+    b = rng.standard_normal(len(free))
+    x = system.solve(ab, b)
+    expected = spla.spsolve(K[free][:, free].tocsc(), b)
+    np.testing.assert_allclose(x, expected, rtol=1e-9, atol=1e-12 * np.max(np.abs(expected)))
+    assert system.kl < len(free) // 2  # ordered along the axis: a narrow band
+    ab = system.add_sparse(system.band(), K)  # the same matrix from CSR
+    np.testing.assert_allclose(
+        system.solve(ab, b), expected, rtol=1e-9, atol=1e-12 * np.max(np.abs(expected))
+    )
+
+
+def test_singular_banded_system_raises(setup):
+    asmb, _ = setup
+    free = np.arange(asmb.N)
+    system = asmb.banded(free)
+    with pytest.raises(ConvergenceError, match="singular"):
+        system.solve(system.band(), np.ones(asmb.N))
+
+
+def test_unknown_field_or_order_is_refused(setup):
+    _, bases = setup
+    with pytest.raises(InputError, match="strains"):
+        StrainAssembly(bases, [("q", 1)])
+    with pytest.raises(InputError, match="order"):
+        StrainAssembly(bases, [("u", 3)])
+
+
+def test_newton_converges_quadratically_and_stops_on_stagnation():
+    # x³ = 8: quadratic convergence to the root 2
+    result = newton(
+        lambda x: x,
+        np.array([5.0]),
+        norm=lambda x: abs(x[0] ** 3 - 8) / 8,
+        increment=lambda x: -(x**3 - 8) / (3 * x**2),
+        tol=1e-14,
+    )
+    assert result.x[0] == pytest.approx(2.0, rel=1e-14)
+    assert result.history[-1] < 1e-14 and result.iterations < 12
+    # x² + 1 = 0 has no real root: Newton wanders, the stagnation rule stops it early
+    with pytest.raises(ConvergenceError, match="stagnates|no descent") as info:
+        newton(
+            lambda x: x,
+            np.array([0.5]),
+            norm=lambda x: abs(x[0] ** 2 + 1),
+            increment=lambda x: -(x**2 + 1) / (2 * x),
+            tol=1e-12,
+            max_iter=50,
+        )
+    assert len(info.value.history) < 10
