@@ -41,7 +41,7 @@ __all__ = ["StrainAssembly", "BandedSystem"]
 def _derivative(field, order: int) -> np.ndarray:
     """Derivative of order 0, 1 or 2 of a scikit-fem DiscreteField on a line: (ne, nq)."""
     if order == 0:
-        return field[0]  # the value (``.value`` is deprecated in scikit-fem 12)
+        return np.asarray(field)  # the field itself is its value (``.value`` is deprecated)
     if order == 1:
         return field.grad[0]
     if order == 2:

@@ -12,7 +12,7 @@ STRAINS = (("u", 1), ("v", 0), ("v", 1), ("v", 2), ("phi", 1))
 
 
 def _d(f, order):
-    return f[0] if order == 0 else f.grad[0] if order == 1 else f.hess[0][0]
+    return np.asarray(f) if order == 0 else f.grad[0] if order == 1 else f.hess[0][0]
 
 
 @pytest.fixture(scope="module")
