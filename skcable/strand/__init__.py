@@ -4,14 +4,47 @@ annexes A and B). SI units: m, N, Pa.
 """
 
 from skcable.strand._bending import BendingLaw
-from skcable.strand._capacity import CapacityCurve, capacity_curve
+from skcable.strand.capacity import CapacityCurve, StepResult, StrandLayout, capacity_curve
 from skcable.strand._choice import Analysis, ClosedFormCurve, analyse, axial_force
 from skcable.strand._geometry import Layer, Strand, Wires, preset
 from skcable.strand._material import Material, material
-from skcable.strand._model import StepResult, StrandModel, geometric_block, material_block, section_residual
+from skcable.strand.fe import (
+    AxisSlip,
+    DistributedLoad,
+    ElasticFoundation,
+    ElementSlip,
+    FieldTerm,
+    HelicalWires,
+    NodalSpring,
+    SectionTerm,
+    SinusoidalDamageLoads,
+    SlipLaw,
+    Step,
+    Stick,
+    StrandModel,
+    Term,
+    WireBending,
+    default_physics,
+)
 from skcable.strand._section import Section
 
 __all__ = [
+    "AxisSlip",
+    "DistributedLoad",
+    "ElasticFoundation",
+    "ElementSlip",
+    "FieldTerm",
+    "HelicalWires",
+    "NodalSpring",
+    "SectionTerm",
+    "SinusoidalDamageLoads",
+    "SlipLaw",
+    "Step",
+    "Stick",
+    "StrandLayout",
+    "Term",
+    "WireBending",
+    "default_physics",
     "Analysis",
     "ClosedFormCurve",
     "analyse",
@@ -26,9 +59,6 @@ __all__ = [
     "StrandModel",
     "Wires",
     "capacity_curve",
-    "geometric_block",
     "material",
-    "material_block",
     "preset",
-    "section_residual",
 ]

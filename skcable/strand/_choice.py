@@ -90,7 +90,7 @@ def analyse(
     :meth:`~skcable.strand.StrandModel.capacity_curve` (``n_elements``,
     ``n_steps``...); ``n_points`` samples the closed-form curve.
     """
-    from skcable.strand._model import StrandModel
+    from skcable.strand.fe.model import StrandModel
 
     positive("length", length)
     if int(n_points) < 2:

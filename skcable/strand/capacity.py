@@ -1,4 +1,4 @@
-"""Capacity curves of a strand under imposed axial strain (seed 003 §4.3).
+"""Step results and capacity curves of a strand under imposed axial strain.
 
 ``K_Leq`` (eq. 4.30) is the step-weighted mean slope over the linear-elastic
 range, i.e. the secant ``F(ε_e)/ε_e`` at the last step whose wires all stay
@@ -10,14 +10,128 @@ model settings.
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field, replace
+from dataclasses import dataclass, field
 from functools import cached_property
 
 import numpy as np
 
 from skcable.errors import ConvergenceError, InputError
 
-__all__ = ["CapacityCurve", "capacity_curve"]
+__all__ = ["CapacityCurve", "StepResult", "StrandLayout", "capacity_curve"]
+
+
+@dataclass(frozen=True, eq=False)
+class StrandLayout:
+    """What every step of one model shares: mesh, quadrature and wire geometry (for writers).
+
+    Attributes
+    ----------
+    nodes : ndarray (n_nodes,)
+        Node abscissae (m).
+    elements : ndarray (2, n_elements)
+        Node indices of each element.
+    x, dx : ndarray (n_elements, n_quad)
+        Quadrature points (m) and weights (m).
+    wire_psi, wire_rate, wire_radius, wire_layer, wire_broken : ndarray (n_wires,)
+        Angular position at x = 0 (rad), lay rate dψ/dx (rad/m, 0 for the core),
+        helix radius (m), layer (0 core) and whether the wire is broken.
+    slip : str
+        Name of the slip law.
+    eps_rupture, eps_y1 : float
+        The wire material's rupture strain and end of its linear branch.
+    """
+
+    nodes: np.ndarray
+    elements: np.ndarray
+    x: np.ndarray
+    dx: np.ndarray
+    wire_psi: np.ndarray
+    wire_rate: np.ndarray
+    wire_radius: np.ndarray
+    wire_layer: np.ndarray
+    wire_broken: np.ndarray
+    slip: str
+    eps_rupture: float
+    eps_y1: float
+
+
+@dataclass(eq=False)
+class StepResult:
+    """State of the strand at one load step: everything writers and plots need.
+
+    Attributes
+    ----------
+    strain, force : float
+        Imposed axial strain and the axial reaction at x = L (N).
+    x : ndarray (n_elements, n_quad)
+        Quadrature points (m).
+    curvature : ndarray (2, n_elements, n_quad)
+        Curvature about principal axes 1 and 2 of the local (rotating) section (1/m).
+    kappa_m : ndarray (2, n_elements, n_quad)
+        Critical curvatures there.
+    slipping : ndarray (2, n_elements, n_quad) of bool
+        Points in slip about each principal axis.
+    wire_strain, wire_stress : ndarray (n_wires, n_elements, n_quad)
+        Broken wires carry zero; stress in Pa.
+    dofs : ndarray
+        The solution vector.
+    iterations : int
+    history : list of float
+        Newton's residual norms of the final solve.
+    axial_strain, axial_force : ndarray (n_elements, n_quad)
+        ε_a = u′ + ½(v′² + w′²) and the axial force N (N).
+    bending, moment : ndarray (2, n_elements, n_quad)
+        (v″, w″) (1/m) and their conjugate section moments (N·m).
+    EI_in_use : ndarray (2, n_elements, n_quad)
+        Tangent bending stiffness on v″ and w″ (N·m²).
+    nodal : dict of ndarray (n_nodes,)
+        u, v, w (m) and φ (rad) at the nodes.
+    layout : StrandLayout
+        Mesh, quadrature and wire geometry (shared by the steps of a model).
+    state : tuple
+        The terms' states (slip) of the solve.
+    settled : bool
+        Whether the slip state settled (False: it cycled or its re-solve failed; the
+        previous state was kept).
+    assemblies : int
+        Residual and tangent evaluations the step took.
+    """
+
+    strain: float
+    force: float
+    x: np.ndarray
+    curvature: np.ndarray
+    kappa_m: np.ndarray
+    slipping: np.ndarray
+    wire_strain: np.ndarray
+    wire_stress: np.ndarray
+    dofs: np.ndarray
+    iterations: int
+    history: list = field(default_factory=list)
+    axial_strain: np.ndarray | None = None
+    axial_force: np.ndarray | None = None
+    bending: np.ndarray | None = None
+    moment: np.ndarray | None = None
+    EI_in_use: np.ndarray | None = None
+    nodal: dict | None = None
+    layout: StrandLayout | None = None
+    state: tuple = ()
+    settled: bool = True
+    assemblies: int = 0
+
+    @property
+    def slip_fraction(self) -> float:
+        """Fraction of the strand length in slip (about either axis)."""
+        return float(np.mean(np.any(self.slipping, axis=0)))
+
+    def __repr__(self) -> str:
+        peak = float(np.max(np.abs(self.curvature))) if self.curvature.size else 0.0
+        top = float(np.max(self.wire_strain)) if self.wire_strain.size else 0.0
+        return (
+            f"StepResult(strain={self.strain:.6g}, force={self.force:.6g} N, slip_fraction="
+            f"{self.slip_fraction:.3f}, peak_curvature={peak:.4g} 1/m, max_wire_strain={top:.4g}, "
+            f"iterations={self.iterations})"
+        )
 
 
 @dataclass
@@ -134,7 +248,7 @@ class CapacityCurve:
         if not -len(self.steps) <= step < len(self.steps):
             raise InputError("step", f"must index one of the {len(self.steps)} steps, got {step!r}")
         result = self.steps[step]
-        return wire_mesh(self.model, result, scale=scale) if wires else strand_mesh(self.model, result)
+        return wire_mesh(result, scale=scale) if wires else strand_mesh(result)
 
     def to_vtk(self, path, *, wires: bool = False, scale: float = 1.0):
         """Write every step as a ParaView time series ``path`` (``.pvd`` + one ``.vtu`` per step,
@@ -154,12 +268,7 @@ class CapacityCurve:
     @cached_property
     def reference(self):
         """The undamaged strand's curve with the same settings (for D_r)."""
-        model = self.model
-        intact = replace(model.strand, broken=frozenset())
-        twin = type(model)(
-            intact, model.length, mesh=model.mesh, slip=model.slip, mu=model.mu, damage_load=model.damage_load
-        )
-        return capacity_curve(twin, n_steps=self.n_steps)
+        return capacity_curve(self.model.twin(), n_steps=self.n_steps)
 
     @property
     def D_r(self) -> float:
@@ -210,7 +319,7 @@ def capacity_curve(
             ]
         )
     )[1:]
-    slip_mask = model.initial_slip_state() if model.slip != "none" else None
+    state = model.initial_state()
     strains, forces, fractions, steps, chatter = [0.0], [0.0], [0.0], [], []
     U, eps, previous, cutbacks = None, 0.0, None, 0
     ruptured, failure = False, None
@@ -220,7 +329,7 @@ def capacity_curve(
             for _ in range(7):
                 try:
                     guess = None if U is None else _extrapolate(U, previous, eps, target)
-                    result = _solve_with_states(model, guess, target, slip_mask, state_passes)
+                    result = model.solve(target, guess, state, passes=state_passes)
                     break
                 except ConvergenceError as exc:
                     last = exc
@@ -232,8 +341,9 @@ def capacity_curve(
                 if on_failure == "raise":
                     raise ConvergenceError("capacity_curve: " + failure, last.history) from last
                 break
-            previous, (U, step, slip_mask, settled) = (U, eps), result
-            if not settled:
+            previous, step = (U, eps), result
+            U, state = step.dofs, step.state
+            if not step.settled:
                 chatter.append(len(steps))
             eps = target
             steps.append(step)
@@ -272,7 +382,7 @@ def _softening_note(model, step) -> str:
     if step is None or window is None:
         return ""
     lo, hi = window
-    wires = step.wire_strain[model.alive]
+    wires = step.wire_strain[~step.layout.wire_broken]
     if not np.any((wires > lo) & (wires < hi)):
         return ""
     return (
@@ -287,48 +397,3 @@ def _extrapolate(U, previous, eps, target):
     if U_prev is None or eps == eps_prev:
         return U * (target / eps) if eps > 0 else None
     return U + (U - U_prev) * (target - eps) / (eps - eps_prev)
-
-
-def _solve_with_states(model, guess, strain, slip_mask, passes):
-    """Newton with the slip state frozen, then the state updated from the converged
-    curvatures and the step re-solved, until the state settles (``passes`` at most).
-
-    A state that cycles, or whose re-solve does not converge, is left as it was:
-    the step keeps the previous (lagged) state and is reported as not settled.
-    """
-    from skcable.strand._model import StepResult
-
-    U, state, history, R = model.solve_step(guess, strain, slip_mask)
-    settled = True
-    if model.slip != "none":
-        seen = [slip_mask]
-        for _ in range(passes):
-            new = model.slip_state(state)
-            if np.array_equal(new, slip_mask):
-                break
-            if any(np.array_equal(new, old) for old in seen):
-                settled = False
-                break
-            try:
-                U_new, state_new, history_new, R_new = model.solve_step(U, strain, new)
-            except ConvergenceError:
-                settled = False
-                break
-            seen.append(new)
-            slip_mask, U, state, history, R = new, U_new, state_new, history_new, R_new
-        else:
-            settled = False
-    step = StepResult(
-        strain=strain,
-        force=float(R[model.pull]),
-        x=model.x_quad,
-        curvature=state["curvature"],
-        kappa_m=state["kappa_m"],
-        slipping=np.asarray(state["slipping"]),
-        wire_strain=np.where(model.alive[:, None, None], state["strain"], 0.0),
-        wire_stress=state["stress"],
-        dofs=U,
-        iterations=len(history) - 1,
-        history=history,
-    )
-    return U, step, slip_mask, settled

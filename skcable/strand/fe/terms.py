@@ -1,0 +1,562 @@
+r"""Terms: the physics of a strand model, each contributing to the residual and the tangent.
+
+A [`StrandModel`][skcable.strand.StrandModel] is a mesh, its bases and a list
+of terms. Every term follows one protocol: :meth:`Term.bind` (per-model set-up,
+done once), optional state between Newton solves, and a contribution to the
+residual ``R(U)`` and the tangent ``K = ∂R/∂U``. There are two kinds:
+
+**Section terms** (:class:`SectionTerm`) see the generalized strains at the
+quadrature points,
+
+.. math:: g = (u',\ v',\ v'',\ w',\ w'',\ \varphi'),
+
+and return section forces :math:`S_a(g, x)` (the virtual-work conjugates of
+:math:`g_a`) and their tangent :math:`D_{ab} = \partial S_a/\partial g_b`,
+6 × 6 per point. The model sums them and assembles
+:math:`\int B^T S\,dx` and :math:`\int B^T D B\,dx` once for all of them
+(:class:`skcable.fe.StrainAssembly`).
+
+**Field terms** (:class:`FieldTerm`) are scikit-fem forms on the named fields
+``u``, ``v``, ``w``, ``phi``: a ``BilinearForm`` per (test, trial) pair for the
+tangent, a ``LinearForm`` per field for an external load, and, for a
+nonlinear term, a ``LinearForm`` per field for its residual (its forms then
+see the current fields as ``w["u"]``, ``w["v"]``, ``w["w"]``, ``w["phi"]``).
+A linear term is assembled once and reused.
+
+Built-in physics: :class:`HelicalWires` (the wire fibres: material and
+geometric stiffness with a slip law), :class:`WireBending` (the wires' own
+bending and torsion) and :class:`SinusoidalDamageLoads` (the thesis's reading
+of the damage). Ready terms for analysts: :class:`ElasticFoundation`,
+:class:`DistributedLoad`, :class:`NodalSpring`. A term flagged ``damage = True``
+is left out of the intact reference twin used for the damage index D_r.
+
+Source: S. Pino Vidal, "Rigidez a flexión en cables: análisis numérico",
+Universidad de Chile, 2021, chapters 3–4 (eqs. 4.1–4.8).
+"""
+
+from __future__ import annotations
+
+import copy
+from dataclasses import dataclass
+from functools import lru_cache
+
+import numpy as np
+import scipy.sparse as sp
+from scipy.interpolate import PchipInterpolator
+from skfem import BilinearForm, LinearForm, asm
+
+from skcable._checks import nonnegative, positive, real
+from skcable.errors import InputError
+from skcable.strand.fe.slip import SlipLaw, slip_law
+
+__all__ = [
+    "Step",
+    "Term",
+    "SectionTerm",
+    "FieldTerm",
+    "HelicalWires",
+    "WireBending",
+    "SinusoidalDamageLoads",
+    "ElasticFoundation",
+    "DistributedLoad",
+    "NodalSpring",
+    "STRAINS",
+    "FIELDS",
+]
+
+FIELDS = ("u", "v", "w", "phi")
+#: generalized strains: (field, derivative order)
+STRAINS = (("u", 1), ("v", 1), ("v", 2), ("w", 1), ("w", 2), ("phi", 1))
+
+
+@dataclass
+class Step:
+    """What a term sees of the current solve.
+
+    Attributes
+    ----------
+    strain : float
+        Imposed axial strain of the step (u(L)/L).
+    x : ndarray (n_elements, n_quad)
+        Quadrature points (m).
+    state : object
+        This term's state (frozen within a Newton solve), or None.
+    """
+
+    strain: float
+    x: np.ndarray
+    state: object = None
+
+
+class Term:
+    """Base of every term. Subclasses implement :meth:`setup` (per-model data) and either
+    :meth:`SectionTerm.section` or :meth:`contribute`."""
+
+    #: dropped from the intact reference twin (D_r) when True
+    damage: bool = False
+
+    def bind(self, model) -> Term:
+        """A copy of this term set up for ``model`` (the term itself stays unbound)."""
+        bound = copy.copy(self)
+        bound.setup(model)
+        return bound
+
+    def setup(self, model) -> None:
+        """Per-model work done once: tables at the quadrature points, constant matrices."""
+
+    def initial_state(self, model):
+        """State at the start of a curve; None for a stateless term."""
+        return None
+
+    def next_state(self, output: dict, state):
+        """State implied by a converged solve (``output`` is what the term returned)."""
+        return state
+
+    def contribute(self, U: np.ndarray, step: Step):
+        """``(R, K, output)``: residual (N,) or None, tangent (N, N) sparse or None, and a dict."""
+        raise NotImplementedError
+
+    def __repr__(self) -> str:
+        return f"{type(self).__name__}()"
+
+
+class SectionTerm(Term):
+    """A term given by section forces and their 6 × 6 tangent at the quadrature points."""
+
+    def section(self, g: np.ndarray, step: Step):
+        """``(S, D, output)``: S (6, ne, nq), D (6, 6, ne, nq), and a dict of results."""
+        raise NotImplementedError
+
+    def setup(self, model) -> None:
+        self._assembly = model.assembly
+
+    def contribute(self, U, step):
+        S, D, output = self.section(self._assembly.interpolate(U), step)
+        return self._assembly.vector(S), self._assembly.matrix(D), output
+
+
+# --- built-in physics ------------------------------------------------------------------------
+
+
+@lru_cache(maxsize=32)
+def critical_curvature_table(strand, mu: float):
+    """κ_m of both principal axes on a strain grid, and its PCHIP interpolant (built once per
+    strand and friction): ``(grid, table (2, n), spline, slope)``."""
+    from skcable.strand._bending import BendingLaw
+
+    section = strand.section()
+    grid = np.linspace(0.0, 0.999 * strand.material.eps_rupture, 201)
+    table = np.array(
+        [BendingLaw(section, mu=mu, axial_strain=e).kappa_m if e > 0 else np.zeros(2) for e in grid]
+    ).T
+    spline = PchipInterpolator(grid, table, axis=1)
+    return grid, table, spline, spline.derivative()
+
+
+class HelicalWires(SectionTerm):
+    r"""Every wire a fibre on its helix: material and geometric stiffness, with a slip law.
+
+    A wire's axial strain, with y up and z out of the v-plane (Pino Vidal 2021, eq. 4.5),
+
+    .. math:: \varepsilon_j = \cos^2\alpha_j\left(\varepsilon_a - y_j\kappa_v - z_j\kappa_w\right)
+              + R_j\sin\alpha_j\cos\alpha_j\,d_j\,\varphi', \qquad
+              \varepsilon_a = u' + \tfrac12(v'^2 + w'^2),
+
+    with the lever (y_j, z_j) split into the net section's centroid c(x) (the
+    eccentricity, which never slips) and the offset from it, whose curvature the
+    slip law saturates. Section forces :math:`S = \sum_j s_j b_j` with
+    :math:`s_j = A_j\sigma(\varepsilon_j)/\cos\alpha_j`, :math:`b_j = \partial\varepsilon_j/\partial g`,
+    and the consistent tangent
+
+    .. math:: D = \sum_j \frac{A_j E_t(\varepsilon_j)}{\cos\alpha_j} b_j b_j^T
+              + N\,(e_{v'}e_{v'}^T + e_{w'}e_{w'}^T), \qquad N = \sum_j s_j\,\partial\varepsilon_j/\partial\varepsilon_a,
+
+    the material stiffness K_L and the geometric stiffness K_G (eq. 4.1).
+
+    Parameters
+    ----------
+    slip : str or SlipLaw
+        ``"none"``, ``"axis"``, ``"element"`` or a [`SlipLaw`][skcable.strand.SlipLaw].
+    mu : float
+        Friction coefficient when ``slip`` is a name.
+    helical : bool
+        Fibres on their helices (the eccentricity of a damaged section turns with
+        the lay: mechanism (a)); False: at their positions at x = 0 (a prismatic
+        section, the thesis's reading, used with :class:`SinusoidalDamageLoads`).
+    """
+
+    def __init__(self, slip="none", mu: float = 0.5, *, helical: bool = True):
+        self.slip = slip_law(slip, mu)
+        self.helical = bool(helical)
+
+    def __repr__(self) -> str:
+        return f"HelicalWires(slip={self.slip!r}, helical={self.helical})"
+
+    def setup(self, model) -> None:
+        super().setup(model)
+        s = model.strand
+        w = s.wires()
+        self.material = s.material
+        self.alive = w.intact
+        cos, sin = np.cos(w.lay_angle), np.sin(w.lay_angle)
+        helical = w.layer > 0
+        lay_length = np.ones_like(w.radius)
+        lay_length[helical] = s.lay_lengths[w.layer[helical] - 1]
+        rate = np.where(helical, w.direction * 2 * np.pi / lay_length, 0.0)
+        x = model.x
+        fibre_rate = rate if self.helical else 0.0 * rate
+        psi = w.psi[:, None, None] + fibre_rate[:, None, None] * x[None]
+        self.wire_y = w.radius[:, None, None] * np.sin(psi)
+        self.wire_z = w.radius[:, None, None] * np.cos(psi)
+        rotation = fibre_rate[helical][0] * x if helical.any() else 0 * x
+        weight = np.where(self.alive, w.area * cos**3, 0.0)[:, None, None]  # axial stiffness / E
+        self.centroid_y = np.sum(weight * self.wire_y, axis=0) / np.sum(weight)
+        self.centroid_z = np.sum(weight * self.wire_z, axis=0) / np.sum(weight)
+        self.c2 = (cos**2)[:, None, None]
+        self.sc = (w.radius * sin * cos * w.direction)[:, None, None]
+        self.area_weight = np.where(self.alive, w.area / cos, 0.0)[:, None, None]
+        section = s.section()
+        levers = [np.array([-t[1], t[0]]) for t in section.principal_axes]
+        lever_angle = np.array([np.arctan2(n[0], n[1]) for n in levers])
+        angle = lever_angle[:, None, None] + rotation[None]
+        self.levers = np.array([np.sin(angle), np.cos(angle)]).transpose(1, 0, 2, 3)  # (axis, yz, ne, nq)
+        self.kappa_grid, _, self._spline, self._slope = critical_curvature_table(s, self.slip.mu)
+        # the lever offsets from the centroid, and the centroid, per wire: fixed per model
+        self._y = self.wire_y - self.centroid_y[None]
+        self._z = self.wire_z - self.centroid_z[None]
+        self._alive3 = self.alive[:, None, None]
+
+    def kappa_m(self, axial_strain):
+        """Critical curvatures (2, ...) and their derivative with respect to the axial strain.
+
+        A monotone C¹ interpolant (PCHIP) of the tabulated law: a piecewise-linear one
+        has a derivative that jumps at every grid point, and Newton stalls on a kink.
+        """
+        eps = np.clip(axial_strain, 0.0, self.kappa_grid[-1])
+        return self._spline(eps), self._slope(eps) * (axial_strain > 0)
+
+    def initial_state(self, model):
+        return self.slip.initial_state((2, *model.x.shape))
+
+    def next_state(self, output, state):
+        return self.slip.next_state(output["curvature"], output["kappa_m"], state)
+
+    def section(self, g, step):
+        axial = g[0] + 0.5 * (g[1] ** 2 + g[3] ** 2)
+        kappa = np.array([g[2], g[4]])  # (v'', w'') components along y, z
+        levers = self.levers
+        k_principal = np.einsum("kcen,cen->ken", levers, kappa)
+        k_m, dk_m = self.kappa_m(axial)
+        state = step.state
+        clamped, d_clamp, d_km = self.slip.composite(k_principal, k_m, state)
+        d_eps = d_km * dk_m
+        kappa_c = np.einsum("kcen,ken->cen", levers, clamped)  # bending about the centroid seen by the wires
+        P = np.einsum("kcen,ken,kden->cden", levers, d_clamp, levers)  # dκc/dκ (2x2)
+        q = np.einsum("kcen,ken->cen", levers, d_eps)  # dκc/dε_a
+        cy, cz = self.centroid_y[None], self.centroid_z[None]
+        y, z, c2, sc = self._y, self._z, self.c2, self.sc
+        eccentric = cy * kappa[0][None] + cz * kappa[1][None]
+        strain = (
+            c2 * (axial[None] - eccentric - y * kappa_c[0][None] - z * kappa_c[1][None]) + sc * g[5][None]
+        )
+        stress = np.where(self._alive3, self.material.stress(strain), 0.0)
+        tangent = np.where(self._alive3, self.material.tangent(strain), 0.0)
+        d_axial = c2 * (1.0 - y * q[0][None] - z * q[1][None])  # ∂ε_j/∂ε_a
+        b = np.array(
+            [
+                d_axial,
+                d_axial * g[1][None],
+                -c2 * (cy + y * P[0, 0][None] + z * P[1, 0][None]),
+                d_axial * g[3][None],
+                -c2 * (cz + y * P[0, 1][None] + z * P[1, 1][None]),
+                np.broadcast_to(sc, strain.shape),
+            ]
+        )  # (6, nw, ne, nq)
+        s = self.area_weight * stress
+        k = self.area_weight * tangent
+        S = np.einsum("jen,ajen->aen", s, b, optimize=True)
+        D = np.einsum("ajen,jen,bjen->aben", b, k, b, optimize=True)
+        N = np.einsum("jen,jen->en", s, d_axial)
+        D[1, 1] += N  # the geometric stiffness K_G
+        D[3, 3] += N
+        output = dict(
+            strain=strain,
+            stress=stress,
+            curvature=k_principal,
+            kappa_m=k_m,
+            slipping=self.slip.slipping(k_principal, k_m, state),
+            axial=axial,
+            N=N,
+        )
+        return S, D, output
+
+
+class WireBending(SectionTerm):
+    """The wires' own bending and torsion: ``EI_w = Σ E I_w cos α``, ``GJ_w = Σ G J_w cos α`` over
+    the intact wires (the core straight), on v″, w″ and φ′ (Pino Vidal 2021, eqs. 3.11–3.12)."""
+
+    def setup(self, model):
+        super().setup(model)
+        s, w = model.strand, model.strand.wires()
+        cos = np.cos(w.lay_angle)
+        self.EI = s.material.E_e * float(np.sum(np.where(w.intact, w.inertia * cos, 0.0)))
+        self.GJ = s.material.G * float(np.sum(np.where(w.intact, 2 * w.inertia * cos, 0.0)))
+        ne, nq = model.x.shape
+        self._D = np.zeros((6, 6, ne, nq))
+        self._D[2, 2] = self._D[4, 4] = self.EI
+        self._D[5, 5] = self.GJ
+
+    def section(self, g, step):
+        S = np.zeros_like(g)
+        S[2], S[4], S[5] = self.EI * g[2], self.EI * g[4], self.GJ * g[5]
+        return S, self._D, {}
+
+
+# --- field terms -----------------------------------------------------------------------------
+
+
+def _evaluate(model, value, name):
+    """A parameter at the quadrature points: a constant, or a callable of x (m)."""
+    if callable(value):
+        out = np.asarray(value(model.x), dtype=float)
+        try:
+            out = np.broadcast_to(out, model.x.shape)
+        except ValueError as exc:
+            raise InputError(name, f"a callable must return values at x of shape {model.x.shape}") from exc
+        return real(name, out)
+    return real(name, value)
+
+
+class FieldTerm(Term):
+    """Any scikit-fem forms on the named fields ``u``, ``v``, ``w``, ``phi``.
+
+    Parameters
+    ----------
+    tangent : dict of (str, str) to BilinearForm, optional
+        ``{(test, trial): form}``: the term's tangent. Without ``residual`` the
+        term is linear and its residual is ``K U``; assembled once.
+    load : dict of str to LinearForm, optional
+        ``{field: form}``: an external load (N, subtracted from the residual); assembled once.
+    residual : dict of str to LinearForm, optional
+        ``{field: form}``: a nonlinear term's residual at the current fields,
+        which its forms (and those of ``tangent``) see as ``w["u"]``, ``w["v"]``,
+        ``w["w"]``, ``w["phi"]``; assembled at every iteration.
+    damage : bool
+        Leave the term out of the intact reference twin (D_r).
+    **params
+        Passed to the forms as ``w.<name>``: numbers, or callables of x evaluated
+        once at the quadrature points.
+    """
+
+    def __init__(self, tangent=None, load=None, residual=None, *, damage: bool = False, **params):
+        self.tangent = dict(tangent or {})
+        self.load = dict(load or {})
+        self.residual = dict(residual or {})
+        self.damage = bool(damage)
+        self.params = params
+        for test, trial in self.tangent:
+            for name in (test, trial):
+                if name not in FIELDS:
+                    raise InputError("tangent", f"unknown field {name!r}; fields are {FIELDS}")
+        for name in (*self.load, *self.residual):
+            if name not in FIELDS:
+                raise InputError("load" if name in self.load else "residual", f"unknown field {name!r}")
+
+    def __repr__(self) -> str:
+        return f"{type(self).__name__}({', '.join(f'{k}={v!r}' for k, v in self.params.items())})"
+
+    def setup(self, model):
+        self._model = model
+        self._w = {k: _evaluate(model, v, k) for k, v in self.params.items()}
+        self._K = None if self.residual else self._matrix(self._w)
+        self._f = self._vector(self.load, self._w) if self.load else None
+
+    @property
+    def linear(self) -> bool:
+        return not self.residual
+
+    def _matrix(self, w):
+        if not self.tangent:
+            return None
+        m = self._model
+        index = {n: i for i, n in enumerate(FIELDS)}
+        blocks = [[None] * len(FIELDS) for _ in FIELDS]
+        for (test, trial), form in self.tangent.items():
+            blocks[index[test]][index[trial]] = asm(form, m.bases[trial], m.bases[test], **w)
+        for i, name in enumerate(FIELDS):  # bmat needs every block row and column sized
+            if blocks[i][i] is None:
+                blocks[i][i] = sp.csr_matrix((m.bases[name].N, m.bases[name].N))
+        return sp.bmat(blocks, format="csr")
+
+    def _vector(self, forms, w):
+        m, out = self._model, np.zeros(self._model.assembly.N)
+        parts = m.split(out)
+        for name, form in forms.items():
+            parts[name][:] += asm(form, m.bases[name], **w)
+        return out
+
+    def contribute(self, U, step):
+        R = None
+        if self.linear:
+            K = self._K
+            if K is not None:
+                R = K @ U
+        else:
+            parts = self._model.split(U)
+            w = dict(self._w, **{n: self._model.bases[n].interpolate(parts[n]) for n in FIELDS})
+            R = self._vector(self.residual, w)
+            K = self._matrix(w)
+        if self._f is not None:
+            R = -self._f if R is None else R - self._f
+        return R, K, {}
+
+
+@BilinearForm
+def _mass(u, v, w):
+    return w.k * u * v
+
+
+@LinearForm
+def _load(v, w):
+    return w.q * v
+
+
+class ElasticFoundation(FieldTerm):
+    """A Winkler foundation under the strand: ``q = −k v`` and ``−k w`` (k in N/m per m of strand).
+
+    ``ElasticFoundation(k)`` acts in both transverse directions; ``ky``/``kz`` set each
+    (None or 0: none in that direction). Constants or callables of x.
+    """
+
+    def __init__(self, k=None, *, ky=None, kz=None):
+        if k is not None and (ky is not None or kz is not None):
+            raise InputError("k", "give k (both directions) or ky/kz, not both")
+        ky, kz = (k, k) if k is not None else (ky, kz)
+        if ky is None and kz is None:
+            raise InputError("k", "give the foundation modulus k (N/m per m), or ky and/or kz")
+        self.ky, self.kz = ky, kz
+        super().__init__()
+
+    def __repr__(self):
+        return f"ElasticFoundation(ky={self.ky!r}, kz={self.kz!r})"
+
+    def setup(self, model):
+        self._model = model
+        K = None
+        for name, k in (("v", self.ky), ("w", self.kz)):
+            if k is None:
+                continue
+            value = _evaluate(model, k, "ky" if name == "v" else "kz")
+            nonnegative("ky" if name == "v" else "kz", value)
+            self.tangent = {(name, name): _mass}
+            part = self._matrix({"k": value})
+            K = part if K is None else K + part
+        self.tangent = {}
+        self._K, self._f, self._w = K, None, {}
+
+
+class DistributedLoad(FieldTerm):
+    """A transverse load per unit length on the strand axis: ``qy`` along y (v), ``qz`` along z (w),
+    in N/m; constants or callables of x (m)."""
+
+    def __init__(self, qy=0.0, qz=0.0):
+        self.qy, self.qz = qy, qz
+        super().__init__()
+
+    def __repr__(self):
+        return f"DistributedLoad(qy={self.qy!r}, qz={self.qz!r})"
+
+    def setup(self, model):
+        self._model = model
+        f = np.zeros(model.assembly.N)
+        parts = model.split(f)
+        parts["v"][:] = asm(_load, model.bases["v"], q=_evaluate(model, self.qy, "qy"))
+        parts["w"][:] = asm(_load, model.bases["w"], q=_evaluate(model, self.qz, "qz"))
+        self._K, self._f, self._w = None, f, {}
+
+
+class NodalSpring(Term):
+    """A linear spring of stiffness ``k`` on the value of ``field`` at the mesh node at ``x``:
+    N/m for u, v, w; N·m/rad for phi."""
+
+    def __init__(self, x: float, k: float, field: str = "v"):
+        if field not in FIELDS:
+            raise InputError("field", f"must be one of {FIELDS}, got {field!r}")
+        self.x, self.k, self.field = float(real("x", x)), float(positive("k", k)), field
+
+    def __repr__(self):
+        return f"NodalSpring(x={self.x:g}, k={self.k:g}, field={self.field!r})"
+
+    def setup(self, model):
+        nodes = model.mesh.p[0]
+        node = int(np.argmin(np.abs(nodes - self.x)))
+        if abs(nodes[node] - self.x) > 1e-9 * model.length:
+            raise InputError("x", f"must be a mesh node; the nearest is at {nodes[node]:.6g} m")
+        basis = model.bases[self.field]
+        dof = model.offsets[FIELDS.index(self.field)] + basis.nodal_dofs[0][node]
+        N = model.assembly.N
+        self._K = sp.csr_matrix(([self.k], ([dof], [dof])), shape=(N, N))
+
+    def contribute(self, U, step):
+        return self._K @ U, self._K, {}
+
+
+class SinusoidalDamageLoads(Term):
+    r"""The thesis's reading of the damage: the loads a broken wire's missing pressure leaves.
+
+    A helical wire of tension F presses on the core with :math:`F\sin^2\alpha/(R\cos\alpha)`
+    per unit strand length; intact wires balance, so each broken wire b leaves a resultant
+    pointing at it and turning with the lay (Beltrán & De Vico 2015; Pino Vidal 2021 §2.4):
+
+    .. math:: q_y + i\,q_z = \sum_b \frac{F_b\sin^2\alpha_b}{R_b\cos\alpha_b}
+              \left(\sin\psi_b(x) + i\cos\psi_b(x)\right), \qquad F_b = A_b\,\sigma(\cos^2\alpha_b\,\varepsilon),
+
+    with ε the imposed strain of the step (a dead load within the step). Use with
+    ``HelicalWires(helical=False)``; a damage term (left out of the D_r twin).
+    """
+
+    damage = True
+
+    def setup(self, model):
+        s, w = model.strand, model.strand.wires()
+        self.material = s.material
+        self.broken = np.flatnonzero(~w.intact & (w.layer > 0))
+        helical = w.layer > 0
+        lay_length = np.ones_like(w.radius)
+        lay_length[helical] = s.lay_lengths[w.layer[helical] - 1]
+        rate = np.where(helical, w.direction * 2 * np.pi / lay_length, 0.0)
+        rows = []
+        for j in self.broken:
+            psi = w.psi[j] + rate[j] * model.x
+            alpha = w.lay_angle[j]
+            q = np.sin(alpha) ** 2 / (w.radius[j] * np.cos(alpha))
+            vec = np.zeros(model.assembly.N)
+            parts = model.split(vec)
+            parts["v"][:] = asm(_load, model.bases["v"], q=q * np.sin(psi))
+            parts["w"][:] = asm(_load, model.bases["w"], q=q * np.cos(psi))
+            rows.append(vec)
+        self.unit = np.array(rows).reshape(len(self.broken), model.assembly.N)  # per newton of wire force
+        self.area = w.area[self.broken]
+        self.cos = np.cos(w.lay_angle[self.broken])
+
+    def loads(self, strain: float) -> np.ndarray:
+        """The load vector (N) at the imposed axial strain."""
+        return (self.area * self.material.stress(self.cos**2 * strain)) @ self.unit
+
+    def contribute(self, U, step):
+        return -self.loads(step.strain), None, {}
+
+
+def is_section_term(term) -> bool:
+    return isinstance(term, SectionTerm)
+
+
+def check_terms(terms) -> list:
+    out = list(terms)
+    for i, t in enumerate(out):
+        if not isinstance(t, Term):
+            raise InputError("terms", f"item {i} is not a Term: {t!r}")
+    return out
+
+
+__all__ += ["SlipLaw", "critical_curvature_table"]
