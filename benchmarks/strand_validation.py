@@ -316,15 +316,16 @@ def main(argv=None):
             )
             step = model.capacity_curve(max_strain=0.002, n_steps=8).steps[-1]
             g = model.generalized_strains(step.dofs)
-            weights = model.ub.dx / np.sum(model.ub.dx)
-            bending = np.sum(weights * (model.centroid_y * g[2] + model.centroid_z * g[4]))
+            weights = model.bases["u"].dx / np.sum(model.bases["u"].dx)
+            cy, cz = model.centroid()
+            bending = np.sum(weights * (cy * g[2] + cz * g[4]))
             membrane = np.sum(weights * 0.5 * (g[1] ** 2 + g[3] ** 2))
             lines.append(
                 row(
                     [
                         load,
                         "stick" if slip == "none" else "element rule",
-                        f"{step.force / (model.section.EA * step.strain):.3f}",
+                        f"{step.force / (model.EA * step.strain):.3f}",
                         f"{bending / step.strain:.3f}",
                         f"{membrane / step.strain:.3f}",
                         f"{step.slip_fraction:.2f}",

@@ -107,7 +107,8 @@ def moment_curvature(law, kappa=None, ax=None):
 
 def _describe(curve) -> str:
     model = curve.model
-    return {"none": "stick", "axis": "stick–slip (axis)", "element": "stick–slip (element)"}[model.slip]
+    names = {"none": "stick", "axis": "stick–slip (axis)", "element": "stick–slip (element)"}
+    return names.get(model.slip.name, f"stick–slip ({model.slip!r})")
 
 
 def render_strand(
@@ -129,7 +130,7 @@ def render_strand(
     segments = wires.cells[0].data
     broken = wires.cell_data["broken"][0].astype(bool)
     stress = wires.cell_data["wire_stress"][0] / 1e6
-    radius = 0.5 * float(np.min(curve.model.wire_data.diameter))
+    radius = float(np.min(curve.steps[step].layout.wire_size))
     plotter = pv.Plotter(off_screen=True, window_size=list(window))
     for chosen, style in (
         (~broken, {"scalars": "wire stress [MPa]"}),

@@ -35,6 +35,8 @@ class StrandLayout:
     wire_psi, wire_rate, wire_radius, wire_layer, wire_broken : ndarray (n_wires,)
         Angular position at x = 0 (rad), lay rate dψ/dx (rad/m, 0 for the core),
         helix radius (m), layer (0 core) and whether the wire is broken.
+    wire_size : ndarray (n_wires,)
+        Each wire's own radius (m).
     slip : str
         Name of the slip law.
     eps_rupture, eps_y1 : float
@@ -50,6 +52,7 @@ class StrandLayout:
     wire_radius: np.ndarray
     wire_layer: np.ndarray
     wire_broken: np.ndarray
+    wire_size: np.ndarray
     slip: str
     eps_rupture: float
     eps_y1: float
@@ -240,17 +243,17 @@ class CapacityCurve:
         )
         return path
 
-    def step_mesh(self, step: int, *, wires: bool = False, scale: float = 1.0):
+    def step_mesh(self, step: int, *, wires: bool = False, scale: float = 1.0, radial_scale: float = 1.0):
         """The strand (or, with ``wires``, its wires) at one step as a meshio mesh
-        (:func:`skcable.io.strand_mesh`, :func:`skcable.io.wire_mesh`)."""
+        ([`strand_mesh`][skcable.io.strand_mesh], [`wire_mesh`][skcable.io.wire_mesh])."""
         from skcable.io import strand_mesh, wire_mesh
 
         if not -len(self.steps) <= step < len(self.steps):
             raise InputError("step", f"must index one of the {len(self.steps)} steps, got {step!r}")
         result = self.steps[step]
-        return wire_mesh(result, scale=scale) if wires else strand_mesh(result)
+        return wire_mesh(result, scale=scale, radial_scale=radial_scale) if wires else strand_mesh(result)
 
-    def to_vtk(self, path, *, wires: bool = False, scale: float = 1.0):
+    def to_vtk(self, path, *, wires: bool = False, scale: float = 1.0, radial_scale: float = 1.0):
         """Write every step as a ParaView time series ``path`` (``.pvd`` + one ``.vtu`` per step,
         time = imposed axial strain). With ``wires``, also ``<stem>_wires.pvd``. Returns the paths."""
         from pathlib import Path
@@ -261,7 +264,10 @@ class CapacityCurve:
         times = [s.strain for s in self.steps]
         out = [write_series((self.step_mesh(i) for i in range(len(self.steps))), times, path)]
         if wires:
-            meshes = (self.step_mesh(i, wires=True, scale=scale) for i in range(len(self.steps)))
+            meshes = (
+                self.step_mesh(i, wires=True, scale=scale, radial_scale=radial_scale)
+                for i in range(len(self.steps))
+            )
             out.append(write_series(meshes, times, path.with_name(path.stem + "_wires.pvd")))
         return out
 

@@ -82,8 +82,12 @@ def test_strand_series_round_trip(tmp_path, curves):
     mesh = meshio.read(tmp_path / f"s_{len(curve.steps) - 1:04d}.vtu")
     parts = model.split(step.dofs)
     np.testing.assert_allclose(mesh.points[:, 0], model.mesh.p[0])
-    np.testing.assert_allclose(mesh.point_data["displacement"][:, 0], parts["u"][model.ub.nodal_dofs[0]])
-    np.testing.assert_allclose(mesh.point_data["displacement"][:, 1], parts["v"][model.vb.nodal_dofs[0]])
+    np.testing.assert_allclose(
+        mesh.point_data["displacement"][:, 0], parts["u"][model.bases["u"].nodal_dofs[0]]
+    )
+    np.testing.assert_allclose(
+        mesh.point_data["displacement"][:, 1], parts["v"][model.bases["v"].nodal_dofs[0]]
+    )
     np.testing.assert_allclose(grid.point_data["displacement"], mesh.point_data["displacement"])
     # the pulled end moves by strain * length
     assert mesh.point_data["displacement"][np.argmax(model.mesh.p[0]), 0] == pytest.approx(step.strain * 0.3)
@@ -93,7 +97,7 @@ def test_strand_series_round_trip(tmp_path, curves):
     np.testing.assert_allclose(grid.cell_data["slip_1"], mesh.cell_data["slip_1"][0])
     assert np.all((mesh.cell_data["slip_1"][0] >= 0) & (mesh.cell_data["slip_1"][0] <= 1))
     EI = mesh.cell_data["EI_in_use"][0]
-    section = model.section
+    section = model.strand.section()
     assert np.all(EI > 0.9 * section.EI_min.min()) and np.all(EI < 1.1 * section.EI_max.max())
     w = meshio.read(tmp_path / f"s_wires_{len(curve.steps) - 1:04d}.vtu")
     n_nodes = model.mesh.p.shape[1]
@@ -106,7 +110,7 @@ def test_intact_strand_fields_match_closed_form(tmp_path, curves):
     curve = curves[1]
     step = curve.steps[-1]
     mesh = curve.step_mesh(-1)
-    EA = curve.model.section.EA
+    EA = curve.model.strand.section().EA
     np.testing.assert_allclose(mesh.point_data["axial_force"], EA * step.strain, rtol=1e-6)
     assert np.max(np.abs(mesh.point_data["curvature"])) < 1e-9
     # undeformed wires (scale 0) lie on their helix: radius = core + wire radius = d for equal wires

@@ -206,6 +206,7 @@ class StrandModel:
             wire_radius=w.radius,
             wire_layer=w.layer,
             wire_broken=~w.intact,
+            wire_size=np.sqrt(w.area / np.pi),
             slip=self.slip.name,
             eps_rupture=self.strand.material.eps_rupture,
             eps_y1=self.strand.material.eps_y1,
@@ -243,6 +244,14 @@ class StrandModel:
     def initial_state(self):
         """The terms' states at the start of a curve (all stick)."""
         return tuple(t.initial_state(self) for t in self._bound)
+
+    def centroid(self) -> np.ndarray:
+        """(y_c, z_c) of the net section at the quadrature points (m): (2, ne, nq), axial-stiffness
+        weighted (A cos³α), turning with the lay under the eccentricity reading (zero without wires)."""
+        for t in self._bound:
+            if isinstance(t, HelicalWires):
+                return np.array([t.centroid_y, t.centroid_z])
+        return np.zeros((2, *self.x.shape))
 
     def damage_loads(self, strain: float) -> np.ndarray:
         """External load vector of the sinusoidal damage loads at the imposed strain (zero without them)."""
@@ -355,14 +364,22 @@ class StrandModel:
 
     def _step_result(self, strain, result, state, settled, assemblies):
         a, U = result.state, result.x
-        wires = next((o for t, o in zip(self._bound, a["outputs"], strict=True) if isinstance(t, HelicalWires)), None)
+        wires = next(
+            (o for t, o in zip(self._bound, a["outputs"], strict=True) if isinstance(t, HelicalWires)), None
+        )
         shape = (2, *self.x.shape)
         zeros = np.zeros(shape)
         g, S, D = a["g"], a["S"], a["D"]
         if wires is None:
-            wires = dict(curvature=np.array([g[2], g[4]]), kappa_m=zeros, slipping=zeros.astype(bool),
-                         strain=np.zeros((0, *self.x.shape)), stress=np.zeros((0, *self.x.shape)),
-                         axial=g[0] + 0.5 * (g[1] ** 2 + g[3] ** 2), N=S[0] if S is not None else zeros[0])
+            wires = dict(
+                curvature=np.array([g[2], g[4]]),
+                kappa_m=zeros,
+                slipping=zeros.astype(bool),
+                strain=np.zeros((0, *self.x.shape)),
+                stress=np.zeros((0, *self.x.shape)),
+                axial=g[0] + 0.5 * (g[1] ** 2 + g[3] ** 2),
+                N=S[0] if S is not None else zeros[0],
+            )
         alive = ~self.layout.wire_broken[:, None, None]
         return StepResult(
             strain=strain,

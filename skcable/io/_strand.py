@@ -1,0 +1,113 @@
+"""Strand step results as VTK meshes (meshio): the axis and the wires.
+
+The writers consume a [`StepResult`][skcable.strand.StepResult] only (what it
+carries and its shared layout); they never call back into the model.
+"""
+
+from __future__ import annotations
+
+import meshio
+import numpy as np
+from skfem import Basis, ElementLineP1, MeshLine
+
+from skcable._checks import nonnegative, positive
+from skcable.errors import InputError
+
+__all__ = ["strand_mesh", "wire_mesh"]
+
+
+def _to_nodes(layout, values):
+    """L² projection of quadrature-point values (..., ne, nq) onto P1 at the mesh nodes."""
+    mesh = MeshLine(layout.nodes)
+    p1 = Basis(mesh, ElementLineP1(), intorder=6)
+    if p1.dx.shape != layout.dx.shape or not np.allclose(p1.dx, layout.dx, rtol=1e-12, atol=0):
+        raise InputError("step", "its quadrature does not match its mesh (order 6 on the layout's nodes)")
+    flat = np.reshape(values, (-1, *values.shape[-2:]))
+    nodal = np.array([p1.project(v)[p1.nodal_dofs[0]] for v in flat])
+    return nodal.reshape(*values.shape[:-2], -1)
+
+
+def _element_mean(layout, values):
+    """Mean over each element (quadrature-weighted) of values (..., ne, nq): (..., ne)."""
+    dx = layout.dx
+    return np.sum(values * dx, axis=-1) / np.sum(dx, axis=-1)
+
+
+def strand_mesh(step) -> meshio.Mesh:
+    """The strand axis at one load step: nodes of the mesh, undeformed.
+
+    Point data (at the nodes; quadrature values by L² projection onto P1):
+    ``displacement`` (u, v, w in m: apply *Warp By Vector*), ``twist`` (rad),
+    ``axial_strain`` (ε_a), ``axial_force`` (N), ``curvature_1``,
+    ``curvature_2`` (about the principal axes, 1/m), ``curvature`` (v″, w″),
+    ``moment`` (N·m, conjugate to v″ and w″). Cell data (per element):
+    ``slip_1``, ``slip_2`` (fraction of the element in slip about each
+    principal axis), ``slipping`` (1 if any), ``EI_in_use`` (tangent bending
+    stiffness about y and z, N·m²), ``element_size`` (m).
+    """
+    layout, at = step.layout, step.nodal
+    nodes = layout.nodes
+    displacement = np.column_stack([at["u"], at["v"], at["w"]])
+    projected = _to_nodes(
+        layout, np.array([step.axial_strain, step.axial_force, *step.curvature, *step.bending, *step.moment])
+    )
+    points = np.column_stack([nodes, np.zeros_like(nodes), np.zeros_like(nodes)])
+    slipping = np.asarray(step.slipping, dtype=float).mean(axis=2)  # (2, ne)
+    zero = np.zeros_like(nodes)
+    point_data = {
+        "displacement": displacement,
+        "twist": at["phi"],
+        "axial_strain": projected[0],
+        "axial_force": projected[1],
+        "curvature_1": projected[2],
+        "curvature_2": projected[3],
+        "curvature": np.column_stack([zero, projected[4], projected[5]]),
+        "moment": np.column_stack([zero, projected[6], projected[7]]),
+    }
+    cell_data = {
+        "slip_1": [slipping[0]],
+        "slip_2": [slipping[1]],
+        "slipping": [np.any(step.slipping, axis=(0, 2)).astype(np.int32)],
+        "EI_in_use": [np.column_stack([_element_mean(layout, e) for e in step.EI_in_use])],
+        "element_size": [np.diff(nodes[layout.elements], axis=0)[0]],
+    }
+    return meshio.Mesh(points, [("line", layout.elements.T)], point_data=point_data, cell_data=cell_data)
+
+
+def wire_mesh(step, *, scale: float = 1.0, radial_scale: float = 1.0) -> meshio.Mesh:
+    """Every wire as a polyline along its helix on the deformed axis.
+
+    The axis displacement (times ``scale``) and the twist carry each wire; points
+    at the mesh nodes. ``radial_scale`` multiplies the helix radii and the wires'
+    own radii, so that a strand much longer than thick is more than a line in a
+    view (the axial coordinate is never scaled). Point data: ``radius``, the
+    wire's own radius (m, times ``radial_scale``): ParaView's *Tube* filter with
+    "Vary Radius: By Absolute Scalar" draws the wires at their size. Cell data
+    per segment: ``wire`` (index), ``layer``, ``broken`` (1 for a broken wire),
+    ``wire_strain`` and ``wire_stress`` (Pa), the element means.
+    """
+    scale = nonnegative("scale", scale)
+    radial_scale = positive("radial_scale", radial_scale)
+    layout, at = step.layout, step.nodal
+    nodes = layout.nodes
+    if np.any(np.diff(nodes) <= 0):
+        raise InputError("step", "mesh nodes must be numbered along the axis for wire output")
+    psi = layout.wire_psi[:, None] + layout.wire_rate[:, None] * nodes[None] - at["phi"][None]
+    n_wires, n_nodes = psi.shape
+    radius = radial_scale * layout.wire_radius[:, None]
+    x = np.broadcast_to(nodes + scale * at["u"], psi.shape)
+    y = scale * at["v"][None] + radius * np.sin(psi)
+    z = scale * at["w"][None] + radius * np.cos(psi)
+    points = np.stack([x, y, z], axis=-1).reshape(-1, 3)
+    start = (np.arange(n_wires)[:, None] * n_nodes + np.arange(n_nodes - 1)[None]).ravel()
+    segments = np.column_stack([start, start + 1])
+    repeat = lambda a: np.repeat(a, n_nodes - 1)  # noqa: E731
+    cell_data = {
+        "wire": [repeat(np.arange(n_wires))],
+        "layer": [repeat(layout.wire_layer)],
+        "broken": [repeat(layout.wire_broken.astype(np.int32))],
+        "wire_strain": [_element_mean(layout, step.wire_strain).ravel()],
+        "wire_stress": [_element_mean(layout, step.wire_stress).ravel()],
+    }
+    point_data = {"radius": np.repeat(radial_scale * layout.wire_size, n_nodes)}
+    return meshio.Mesh(points, [("line", segments)], point_data=point_data, cell_data=cell_data)
