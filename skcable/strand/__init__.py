@@ -4,10 +4,11 @@ annexes A and B). SI units: m, N, Pa.
 """
 
 from skcable.strand._bending import BendingLaw
-from skcable.strand.capacity import CapacityCurve, StepResult, StrandLayout, capacity_curve
 from skcable.strand._choice import Analysis, ClosedFormCurve, analyse, axial_force
 from skcable.strand._geometry import Layer, Strand, Wires, preset
 from skcable.strand._material import Material, material
+from skcable.strand._section import Section
+from skcable.strand.capacity import CapacityCurve, StepResult, StrandLayout, capacity_curve
 from skcable.strand.fe import (
     AxisSlip,
     DistributedLoad,
@@ -26,7 +27,6 @@ from skcable.strand.fe import (
     WireBending,
     default_physics,
 )
-from skcable.strand._section import Section
 
 __all__ = [
     "AxisSlip",

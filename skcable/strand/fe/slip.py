@@ -68,6 +68,12 @@ class SlipLaw(ABC):
     def composite(self, kappa: np.ndarray, kappa_m: np.ndarray, state):
         """``(κ_c, ∂κ_c/∂κ, ∂κ_c/∂κ_m)``, each (2, ne, nq), at principal curvatures ``kappa`` (1/m)."""
 
+    def second_derivatives(self, kappa: np.ndarray, kappa_m: np.ndarray, state):
+        """``(∂²κ_c/∂κ², ∂²κ_c/∂κ∂κ_m, ∂²κ_c/∂κ_m²)``, each (2, ne, nq), for the consistent
+        tangent of a law that is curved in κ or κ_m; None (the default) when they vanish,
+        as for the piecewise-linear built-in laws."""
+        return None
+
 
 class Stick(SlipLaw):
     """No slip: the wires bend as one section at any curvature."""

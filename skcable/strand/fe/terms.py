@@ -169,7 +169,8 @@ class HelicalWires(SectionTerm):
     and the consistent tangent
 
     .. math:: D = \sum_j \frac{A_j E_t(\varepsilon_j)}{\cos\alpha_j} b_j b_j^T
-              + N\,(e_{v'}e_{v'}^T + e_{w'}e_{w'}^T), \qquad N = \sum_j s_j\,\partial\varepsilon_j/\partial\varepsilon_a,
+              + N\,(e_{v'}e_{v'}^T + e_{w'}e_{w'}^T),
+              \qquad N = \sum_j s_j\,\partial\varepsilon_j/\partial\varepsilon_a,
 
     the material stiffness K_L and the geometric stiffness K_G (eq. 4.1).
 
@@ -219,8 +220,10 @@ class HelicalWires(SectionTerm):
         levers = [np.array([-t[1], t[0]]) for t in section.principal_axes]
         lever_angle = np.array([np.arctan2(n[0], n[1]) for n in levers])
         angle = lever_angle[:, None, None] + rotation[None]
-        self.levers = np.array([np.sin(angle), np.cos(angle)]).transpose(1, 0, 2, 3)  # (axis, yz, ne, nq)
+        # unit lever directions (y, z) of principal axes 1, 2: (axis, yz, ne, nq)
+        self.levers = np.array([np.sin(angle), np.cos(angle)]).transpose(1, 0, 2, 3)
         self.kappa_grid, _, self._spline, self._slope = critical_curvature_table(s, self.slip.mu)
+        self._curvature = self._slope.derivative()
         # the lever offsets from the centroid, and the centroid, per wire: fixed per model
         self._y = self.wire_y - self.centroid_y[None]
         self._z = self.wire_z - self.centroid_z[None]
@@ -240,6 +243,29 @@ class HelicalWires(SectionTerm):
 
     def next_state(self, output, state):
         return self.slip.next_state(output["curvature"], output["kappa_m"], state)
+
+    def _curved_slip(self, D, s, g, axial, levers, k_principal, k_m, dk_m, d_km, state):
+        """Stress times the second derivatives of the wire strains through the slip law:
+        ``Σ_j s_j ∂²ε_j/∂g²`` beyond the membrane part, for a law curved in κ or κ_m (and κ_m″)."""
+        second = self.slip.second_derivatives(k_principal, k_m, state)
+        d2k_m = self._curvature(np.clip(axial, 0.0, self.kappa_grid[-1])) * (axial > 0)
+        if second is None and not np.any(d_km):
+            return
+        # M_k = Σ_j s_j ∂ε_j/∂κ_c,k: minus the composite moment about axis k
+        rho = np.einsum("kcen,cjen->kjen", levers, np.array([self._y, self._z]))
+        M = -np.einsum("jen,kjen->ken", s * self.c2, rho)
+        zero = np.zeros_like(axial)
+        E = np.array([np.ones_like(axial), g[1], zero, g[3], zero, zero])  # ∂ε_a/∂g
+        coef_ee = M * d_km * d2k_m
+        if second is not None:
+            f_kk, f_km, f_mm = second
+            A = np.zeros((2, 6, *axial.shape))  # ∂κ_k/∂g
+            A[:, 2], A[:, 4] = levers[:, 0], levers[:, 1]
+            coef_ee = coef_ee + M * f_mm * dk_m**2
+            D += np.einsum("ken,kaen,kben->aben", M * f_kk, A, A, optimize=True)
+            cross = np.einsum("ken,kaen,ben->aben", M * f_km * dk_m, A, E, optimize=True)
+            D += cross + cross.transpose(1, 0, 2, 3)
+        D += np.einsum("en,aen,ben->aben", coef_ee.sum(axis=0), E, E, optimize=True)
 
     def section(self, g, step):
         axial = g[0] + 0.5 * (g[1] ** 2 + g[3] ** 2)
@@ -279,6 +305,7 @@ class HelicalWires(SectionTerm):
         N = np.einsum("jen,jen->en", s, d_axial)
         D[1, 1] += N  # the geometric stiffness K_G
         D[3, 3] += N
+        self._curved_slip(D, s, g, axial, levers, k_principal, k_m, dk_m, d_km, state)
         output = dict(
             strain=strain,
             stress=stress,
@@ -412,8 +439,13 @@ class FieldTerm(Term):
 
 
 @BilinearForm
-def _mass(u, v, w):
-    return w.k * u * v
+def _winkler_y(u, v, w):
+    return w.ky * u * v
+
+
+@BilinearForm
+def _winkler_z(u, v, w):
+    return w.kz * u * v
 
 
 @LinearForm
@@ -421,11 +453,21 @@ def _load(v, w):
     return w.q * v
 
 
+@LinearForm
+def _load_y(v, w):
+    return w.qy * v
+
+
+@LinearForm
+def _load_z(v, w):
+    return w.qz * v
+
+
 class ElasticFoundation(FieldTerm):
     """A Winkler foundation under the strand: ``q = −k v`` and ``−k w`` (k in N/m per m of strand).
 
     ``ElasticFoundation(k)`` acts in both transverse directions; ``ky``/``kz`` set each
-    (None or 0: none in that direction). Constants or callables of x.
+    (None: none in that direction). Constants or callables of x, >= 0.
     """
 
     def __init__(self, k=None, *, ky=None, kz=None):
@@ -434,25 +476,18 @@ class ElasticFoundation(FieldTerm):
         ky, kz = (k, k) if k is not None else (ky, kz)
         if ky is None and kz is None:
             raise InputError("k", "give the foundation modulus k (N/m per m), or ky and/or kz")
-        self.ky, self.kz = ky, kz
-        super().__init__()
-
-    def __repr__(self):
-        return f"ElasticFoundation(ky={self.ky!r}, kz={self.kz!r})"
+        tangent = {
+            key: form
+            for key, form, value in ((("v", "v"), _winkler_y, ky), (("w", "w"), _winkler_z, kz))
+            if value is not None
+        }
+        params = {name: value for name, value in (("ky", ky), ("kz", kz)) if value is not None}
+        super().__init__(tangent=tangent, **params)
 
     def setup(self, model):
-        self._model = model
-        K = None
-        for name, k in (("v", self.ky), ("w", self.kz)):
-            if k is None:
-                continue
-            value = _evaluate(model, k, "ky" if name == "v" else "kz")
-            nonnegative("ky" if name == "v" else "kz", value)
-            self.tangent = {(name, name): _mass}
-            part = self._matrix({"k": value})
-            K = part if K is None else K + part
-        self.tangent = {}
-        self._K, self._f, self._w = K, None, {}
+        super().setup(model)
+        for name, value in self._w.items():
+            nonnegative(name, value)
 
 
 class DistributedLoad(FieldTerm):
@@ -460,19 +495,7 @@ class DistributedLoad(FieldTerm):
     in N/m; constants or callables of x (m)."""
 
     def __init__(self, qy=0.0, qz=0.0):
-        self.qy, self.qz = qy, qz
-        super().__init__()
-
-    def __repr__(self):
-        return f"DistributedLoad(qy={self.qy!r}, qz={self.qz!r})"
-
-    def setup(self, model):
-        self._model = model
-        f = np.zeros(model.assembly.N)
-        parts = model.split(f)
-        parts["v"][:] = asm(_load, model.bases["v"], q=_evaluate(model, self.qy, "qy"))
-        parts["w"][:] = asm(_load, model.bases["w"], q=_evaluate(model, self.qz, "qz"))
-        self._K, self._f, self._w = None, f, {}
+        super().__init__(load={"v": _load_y, "w": _load_z}, qy=qy, qz=qz)
 
 
 class NodalSpring(Term):
@@ -509,7 +532,8 @@ class SinusoidalDamageLoads(Term):
     pointing at it and turning with the lay (Beltrán & De Vico 2015; Pino Vidal 2021 §2.4):
 
     .. math:: q_y + i\,q_z = \sum_b \frac{F_b\sin^2\alpha_b}{R_b\cos\alpha_b}
-              \left(\sin\psi_b(x) + i\cos\psi_b(x)\right), \qquad F_b = A_b\,\sigma(\cos^2\alpha_b\,\varepsilon),
+              \left(\sin\psi_b(x) + i\cos\psi_b(x)\right),
+              \qquad F_b = A_b\,\sigma(\cos^2\alpha_b\,\varepsilon),
 
     with ε the imposed strain of the step (a dead load within the step). Use with
     ``HelicalWires(helical=False)``; a damage term (left out of the D_r twin).
