@@ -47,6 +47,7 @@ from skfem import BilinearForm, LinearForm, asm
 
 from skcable._checks import nonnegative, positive, real
 from skcable.errors import InputError
+from skcable.fe.assembly import contract
 from skcable.strand.fe.slip import SlipLaw, slip_law
 
 __all__ = [
@@ -252,8 +253,8 @@ class HelicalWires(SectionTerm):
         if second is None and not np.any(d_km):
             return
         # M_k = Σ_j s_j ∂ε_j/∂κ_c,k: minus the composite moment about axis k
-        rho = np.einsum("kcen,cjen->kjen", levers, np.array([self._y, self._z]))
-        M = -np.einsum("jen,kjen->ken", s * self.c2, rho)
+        rho = contract("kcen,cjen->kjen", levers, np.array([self._y, self._z]))
+        M = -contract("jen,kjen->ken", s * self.c2, rho)
         zero = np.zeros_like(axial)
         E = np.array([np.ones_like(axial), g[1], zero, g[3], zero, zero])  # ∂ε_a/∂g
         coef_ee = M * d_km * d2k_m
@@ -262,23 +263,23 @@ class HelicalWires(SectionTerm):
             A = np.zeros((2, 6, *axial.shape))  # ∂κ_k/∂g
             A[:, 2], A[:, 4] = levers[:, 0], levers[:, 1]
             coef_ee = coef_ee + M * f_mm * dk_m**2
-            D += np.einsum("ken,kaen,kben->aben", M * f_kk, A, A, optimize=True)
-            cross = np.einsum("ken,kaen,ben->aben", M * f_km * dk_m, A, E, optimize=True)
+            D += contract("ken,kaen,kben->aben", M * f_kk, A, A)
+            cross = contract("ken,kaen,ben->aben", M * f_km * dk_m, A, E)
             D += cross + cross.transpose(1, 0, 2, 3)
-        D += np.einsum("en,aen,ben->aben", coef_ee.sum(axis=0), E, E, optimize=True)
+        D += contract("en,aen,ben->aben", coef_ee.sum(axis=0), E, E)
 
     def section(self, g, step):
         axial = g[0] + 0.5 * (g[1] ** 2 + g[3] ** 2)
         kappa = np.array([g[2], g[4]])  # (v'', w'') components along y, z
         levers = self.levers
-        k_principal = np.einsum("kcen,cen->ken", levers, kappa)
+        k_principal = contract("kcen,cen->ken", levers, kappa)
         k_m, dk_m = self.kappa_m(axial)
         state = step.state
         clamped, d_clamp, d_km = self.slip.composite(k_principal, k_m, state)
         d_eps = d_km * dk_m
-        kappa_c = np.einsum("kcen,ken->cen", levers, clamped)  # bending about the centroid seen by the wires
-        P = np.einsum("kcen,ken,kden->cden", levers, d_clamp, levers)  # dκc/dκ (2x2)
-        q = np.einsum("kcen,ken->cen", levers, d_eps)  # dκc/dε_a
+        kappa_c = contract("kcen,ken->cen", levers, clamped)  # bending about the centroid seen by the wires
+        P = contract("kcen,ken,kden->cden", levers, d_clamp, levers)  # dκc/dκ (2x2)
+        q = contract("kcen,ken->cen", levers, d_eps)  # dκc/dε_a
         cy, cz = self.centroid_y[None], self.centroid_z[None]
         y, z, c2, sc = self._y, self._z, self.c2, self.sc
         eccentric = cy * kappa[0][None] + cz * kappa[1][None]
@@ -300,9 +301,9 @@ class HelicalWires(SectionTerm):
         )  # (6, nw, ne, nq)
         s = self.area_weight * stress
         k = self.area_weight * tangent
-        S = np.einsum("jen,ajen->aen", s, b, optimize=True)
-        D = np.einsum("ajen,jen,bjen->aben", b, k, b, optimize=True)
-        N = np.einsum("jen,jen->en", s, d_axial)
+        S = contract("jen,ajen->aen", s, b)
+        D = contract("ajen,jen,bjen->aben", b, k, b)
+        N = contract("jen,jen->en", s, d_axial)
         D[1, 1] += N  # the geometric stiffness K_G
         D[3, 3] += N
         self._curved_slip(D, s, g, axial, levers, k_principal, k_m, dk_m, d_km, state)
