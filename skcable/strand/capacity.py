@@ -15,6 +15,7 @@ from functools import cached_property
 
 import numpy as np
 
+from skcable._checks import positive
 from skcable.errors import ConvergenceError, InputError
 
 __all__ = ["CapacityCurve", "StepResult", "StrandLayout", "capacity_curve"]
@@ -309,9 +310,21 @@ def capacity_curve(
     if on_failure not in ("raise", "stop"):
         raise InputError("on_failure", f"must be 'raise' or 'stop', got {on_failure!r}")
     material = model.strand.material
-    n_steps = int(n_steps or 60)
+    if n_steps is None:
+        n_steps = 60
+    elif isinstance(n_steps, bool) or not isinstance(n_steps, (int, np.integer)):
+        raise InputError("n_steps", f"must be a whole number of steps (at least 4), got {n_steps!r}")
+    n_steps = int(n_steps)
     if n_steps < 4:
         raise InputError("n_steps", f"must be at least 4, got {n_steps!r}")
+    if max_strain is not None:
+        positive("max_strain", max_strain)
+    if not (
+        isinstance(state_passes, (int, np.integer))
+        and not isinstance(state_passes, bool)
+        and state_passes >= 0
+    ):
+        raise InputError("state_passes", f"must be a whole number >= 0, got {state_passes!r}")
     top = float(max_strain) if max_strain is not None else 1.5 * material.eps_rupture
     # half the steps, uniform, up to twice the yield strain (where slip and yield
     # shape the curve and K_Leq is measured), half from there to rupture with
@@ -329,9 +342,11 @@ def capacity_curve(
     strains, forces, fractions, steps, chatter = [0.0], [0.0], [0.0], [], []
     U, eps, previous, cutbacks = None, 0.0, None, 0
     ruptured, failure = False, None
+    limit = np.inf  # after a cutback the increment stays reduced, doubling back as steps converge
     for goal in schedule:
         while eps < goal - 1e-15:
-            target = goal
+            target = min(goal, eps + limit)
+            cut = False
             for _ in range(7):
                 try:
                     guess = None if U is None else _extrapolate(U, previous, eps, target)
@@ -341,6 +356,7 @@ def capacity_curve(
                     last = exc
                     target = eps + 0.5 * (target - eps)
                     cutbacks += 1
+                    cut = True
             else:
                 failure = f"no convergence beyond strain {eps:.6g} after 6 cutbacks"
                 failure += _softening_note(model, steps[-1] if steps else None)
@@ -349,6 +365,9 @@ def capacity_curve(
                 break
             previous, step = (U, eps), result
             U, state = step.dofs, step.state
+            limit = 2.0 * (target - eps) if (cut or np.isfinite(limit)) else np.inf
+            if limit >= np.max(np.diff(schedule)):
+                limit = np.inf
             if not step.settled:
                 chatter.append(len(steps))
             eps = target
