@@ -21,9 +21,8 @@ from math import pi, radians
 
 import numpy as np
 
-from skcable._checks import positive
 from skcable.errors import InputError
-from skcable.strand._material import Material, material
+from skcable.strand._material import Material, _integer, _name, _scalar, material
 
 __all__ = ["Layer", "Strand", "Wires", "preset"]
 
@@ -45,17 +44,31 @@ class Layer:
     phase: float = 0.0
 
     def __post_init__(self):
-        if not (isinstance(self.count, (int, np.integer)) and self.count >= 1):
-            raise InputError("count", f"must be a positive integer, got {self.count!r}")
-        positive("wire_diameter", self.wire_diameter)
+        count = _integer("count", self.count)
+        if count < 1:
+            raise InputError("count", f"must be a positive integer, got {count!r}")
+        values = dict(
+            count=count, wire_diameter=_scalar("wire_diameter", self.wire_diameter, lower=0.0, strict=True)
+        )
         if (self.lay_angle is None) == (self.lay_length is None):
             raise InputError("lay_angle", "give exactly one of lay_angle and lay_length")
-        if self.lay_angle is not None and not 0 < self.lay_angle < pi / 2:
-            raise InputError("lay_angle", f"must lie in (0, pi/2) rad, got {self.lay_angle!r}")
-        if self.lay_length is not None:
-            positive("lay_length", self.lay_length)
+        if self.lay_angle is not None:
+            alpha = _scalar("lay_angle", self.lay_angle)
+            if not 0 < alpha < pi / 2:
+                raise InputError("lay_angle", f"must lie in (0, pi/2) rad, got {alpha!r}")
+            values["lay_angle"] = alpha
+        else:
+            values["lay_length"] = _scalar("lay_length", self.lay_length, lower=0.0, strict=True)
+        if isinstance(self.direction, (bool, np.bool_)) or not isinstance(self.direction, (int, np.integer)):
+            raise InputError(
+                "direction", f"must be the int +1 (right lay) or -1 (left lay), got {self.direction!r}"
+            )
         if self.direction not in (1, -1):
             raise InputError("direction", f"must be +1 (right lay) or -1 (left lay), got {self.direction!r}")
+        values["direction"] = int(self.direction)
+        values["phase"] = _scalar("phase", self.phase)
+        for key, value in values.items():  # plain Python numbers
+            object.__setattr__(self, key, value)
 
 
 @dataclass(frozen=True)
@@ -108,12 +121,60 @@ class Strand:
     name: str = ""
 
     def __post_init__(self):
-        positive("core_diameter", self.core_diameter)
-        if not self.layers:
+        object.__setattr__(
+            self, "core_diameter", _scalar("core_diameter", self.core_diameter, lower=0.0, strict=True)
+        )
+        layers = self.layers
+        if isinstance(layers, Layer) or not isinstance(layers, (tuple, list)):
+            raise InputError("layers", f"must be a tuple of Layer (core outward), got {layers!r}")
+        if not layers:
             raise InputError("layers", "a strand needs at least one helical layer")
-        for layer_index, wire in self.broken:
-            if not 1 <= layer_index <= len(self.layers) or not 0 <= wire < self.layers[layer_index - 1].count:
-                raise InputError("wires", f"no wire {wire} in layer {layer_index}")
+        for k, layer in enumerate(layers, 1):
+            if not isinstance(layer, Layer):
+                raise InputError("layers", f"layer {k} must be a Layer, got {layer!r}")
+        object.__setattr__(self, "layers", tuple(layers))
+        if not isinstance(self.material, Material):
+            raise InputError(
+                "material", f"must be a Material (e.g. strand.material('steel')), got {self.material!r}"
+            )
+        object.__setattr__(self, "broken", frozenset(self._wire_set("broken", self.broken)))
+        _name(self.name)
+
+    def _wire_set(self, argument: str, wires) -> list[tuple[int, int]]:
+        """Validated (layer, index) pairs of ``wires`` (a set, list or tuple of pairs).
+
+        Layers count from 1 (the first helical layer; the core cannot break), indices
+        from 0 to the layer's count - 1. Non-integers (2.7, also 2.0), booleans,
+        out-of-range numbers and a pair listed twice raise InputError(argument).
+        """
+        if isinstance(wires, (str, bytes)) or not isinstance(wires, (set, frozenset, list, tuple)):
+            raise InputError(argument, f"must be a set or list of (layer, index) pairs, got {wires!r}")
+        out = []
+        for item in wires:
+            if not isinstance(item, (tuple, list)) or len(item) != 2:
+                raise InputError(
+                    argument, f"each wire must be a (layer, index) pair, got {item!r} (in {wires!r})"
+                )
+            try:
+                layer, index = _integer(argument, item[0]), _integer(argument, item[1])
+            except InputError:
+                raise InputError(argument, f"layer and index must be integers, got {tuple(item)!r}") from None
+            if not 1 <= layer <= len(self.layers):
+                raise InputError(
+                    argument,
+                    f"no layer {layer} in {tuple(item)!r}: helical layers are 1..{len(self.layers)} "
+                    "(the core, layer 0, cannot break)",
+                )
+            count = self.layers[layer - 1].count
+            if not 0 <= index < count:
+                raise InputError(
+                    argument,
+                    f"no wire {index} in layer {layer} ({tuple(item)!r}): indices are 0..{count - 1}",
+                )
+            if (layer, index) in out:
+                raise InputError(argument, f"wire {(layer, index)!r} is listed twice")
+            out.append((layer, index))
+        return out
 
     # --- geometry ---------------------------------------------------------
     @property
@@ -189,28 +250,40 @@ class Strand:
         ----------
         n : int, optional
             Break n adjacent wires of the outer layer, placed symmetrically
-            about +z (the outer layer is rotated so; seed 003 Table 3.2).
-        wires : iterable of (layer, index), optional
-            Break exactly these wires (layer 1 is the first helical layer),
-            without rotating anything.
+            about +z (the outer layer is rotated so; Pino Vidal (2021), Table 3.2),
+            ``0 <= n < count`` of the outer layer. Only for a strand without broken
+            wires (the rotation would move them); ``n = 0`` returns the strand unrotated.
+        wires : list or set of (layer, index), optional
+            Break exactly these wires (layer 1 is the first helical layer, indices
+            from 0), without rotating anything, in addition to those already broken.
+            Integers only; a wire already broken or listed twice raises InputError.
         """
         if (n is None) == (wires is None):
             raise InputError("n", "give exactly one of n and wires")
         if wires is not None:
-            return replace(self, broken=frozenset(self.broken | {tuple(map(int, w)) for w in wires}))
+            new = self._wire_set("wires", wires)
+            again = sorted(set(new) & self.broken)
+            if again:
+                raise InputError("wires", f"wire {again[0]!r} is already broken")
+            return replace(self, broken=self.broken | frozenset(new))
         outer = self.layers[-1]
-        if not (isinstance(n, (int, np.integer)) and 0 <= n < outer.count):
+        n = _integer("n", n)
+        if not 0 <= n < outer.count:
             raise InputError("n", f"must be an integer in [0, {outer.count - 1}], got {n!r}")
+        if self.broken:
+            raise InputError(
+                "n",
+                f"damaged(n) rotates the outer layer and needs a strand without broken wires; this one has "
+                f"{sorted(self.broken)} (use damaged(wires=...) to add breaks)",
+            )
+        name = f"{self.name} damage {n}".strip()
+        if n == 0:
+            return replace(self, name=name)
         # wires 0..n-1 straddle +z: psi_j = (j - (n-1)/2) * 2 pi / count
         phase = -(n - 1) / 2 * 2 * pi / outer.count
         layers = (*self.layers[:-1], replace(outer, phase=phase))
         top = len(self.layers)
-        return replace(
-            self,
-            layers=layers,
-            broken=frozenset({(top, j) for j in range(n)}),
-            name=f"{self.name} damage {n}".strip(),
-        )
+        return replace(self, layers=layers, broken=frozenset({(top, j) for j in range(n)}), name=name)
 
     def section(self):
         """Section properties of this strand (see :class:`~skcable.strand.Section`)."""
@@ -235,10 +308,9 @@ _TABLE_3_1 = {
 
 
 def preset(name: str) -> Strand:
-    """A 1x7 strand of seed 003 Table 3.1: ``"steel-9.5"``, ``"aluminium-10.1"``,
+    """A 1x7 strand of Pino Vidal (2021), Table 3.1: ``"steel-9.5"``, ``"aluminium-10.1"``,
     ``"steel-12.7"`` or ``"aluminium-14.3"`` (equal wires, helix radius d)."""
-    try:
-        d, mat, _nominal, alpha = _TABLE_3_1[name]
-    except KeyError:
-        raise InputError("name", f"unknown strand {name!r}; known: {', '.join(_TABLE_3_1)}") from None
+    if not isinstance(name, str) or name not in _TABLE_3_1:
+        raise InputError("name", f"unknown strand {name!r}; known: {', '.join(_TABLE_3_1)}")
+    d, mat, _nominal, alpha = _TABLE_3_1[name]
     return Strand(d, (Layer(6, d, lay_angle=radians(alpha)),), material(mat), name=name)
