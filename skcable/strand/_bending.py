@@ -18,7 +18,15 @@ the wire force under the strand's axial strain ε (no twist); θ_i is the
 wire's angular position about the core centre measured from the bending
 neutral axis (principal axis k), taken in [-π/2, π/2] (a wire of the far half
 maps by θ → π - θ, so that the capstan gain grows away from the neutral axis
-on both sides); R_i is its helix radius. The thesis's Table 3.5 is not
+on both sides); R_i is its helix radius. The capstan term is not odd in θ
+(``e^{x} - 1`` against ``1 - e^{-x}``), so M_rf depends on which side of the
+neutral axis counts θ > 0: it is the side away from the net centroid (the side
+of the missing wires), or, where the centroid lies on the neutral axis, the side
+where the third moment ``sum A across³`` of the intact helical wires is negative
+(where that vanishes too, the orientation of `Section.principal_axes` decides;
+no such asymmetric section is known among 1x7 and 1+6+12 patterns). This makes the law of a damage pattern that of any rotation
+or mirror image of it (the same damage) and keeps the values of ``damaged(n)``; the
+law is taken odd in κ with this one M_rf. The thesis's Table 3.5 is not
 reproduced by these (nor by eq. 3.16 literally, `BendingLaw.kappa_m_eq_3_16`):
 docs/strand_sections.md shows both beside the table.
 
@@ -84,14 +92,30 @@ def _strains(section: Section, axial_strain, *, scalar: bool) -> np.ndarray:
     return strain
 
 
+def _side(section: Section, axis: int) -> float:
+    """+1 or -1: the sign that puts θ > 0 on the side of the neutral axis away from the net
+    centroid (the side of the missing wires); see `BendingLaw.theta`."""
+    w = section.wires
+    t = section.principal_axes[axis]
+    across = -w.y * t[1] + w.z * t[0]  # about the core centre, positive to the left of t
+    weights = np.where(w.intact & (w.layer > 0), w.area, 0.0)
+    reach = float(np.max(w.radius))
+    for power in (1, 3):  # first moment (the centroid's side); where it vanishes, the third
+        moment = float(weights @ across**power)
+        if abs(moment) > 1e-9 * float(weights.sum()) * reach**power:
+            return -1.0 if moment > 0 else 1.0
+    return 1.0
+
+
 def _theta(section: Section, axis: int) -> np.ndarray:
     """Angular position of every wire about the core centre from principal axis ``axis``,
-    mapped into [-π/2, π/2]."""
+    mapped into [-π/2, π/2], positive away from the net centroid."""
     w = section.wires
     t = section.principal_axes[axis]
     along, across = w.y * t[0] + w.z * t[1], -w.y * t[1] + w.z * t[0]
     theta = np.arctan2(across, along)
-    return np.where(theta > np.pi / 2, np.pi - theta, np.where(theta < -np.pi / 2, -np.pi - theta, theta))
+    theta = np.where(theta > np.pi / 2, np.pi - theta, np.where(theta < -np.pi / 2, -np.pi - theta, theta))
+    return _side(section, axis) * theta
 
 
 def _law(section: Section, mu: float, strain: np.ndarray) -> dict:
@@ -205,8 +229,9 @@ class BendingLaw:
     EI_min = _deprecated("EI_min", "EI_slip")
 
     def theta(self, axis: int) -> np.ndarray:
-        """Angular position (rad) of every wire about the core centre from the neutral axis,
-        in [-π/2, π/2]; ``axis`` is the int 0 (principal axis 1) or 1 (principal axis 2)."""
+        """Angular position θ (rad) of every wire about the core centre from the neutral axis,
+        in [-π/2, π/2], positive on the side away from the net centroid (the module's
+        conventions); ``axis`` is the int 0 (principal axis 1) or 1 (principal axis 2)."""
         return _theta(self.section, _axis(axis))
 
     @property

@@ -1,6 +1,7 @@
 """Stick/slip bending law: hand-derived limits and Pino Vidal (2021), Table 3.5 (stated gap)."""
 
 import itertools
+import math
 
 import numpy as np
 import pytest
@@ -280,3 +281,126 @@ def test_repr_and_deprecated_names(law):
         np.testing.assert_array_equal(law.EI_min, law.EI_slip)
     core = strand.preset("steel-9.5").damaged(wires=[(1, j) for j in range(6)]).bending_law()
     assert "linear about principal axis 1 and 2" in repr(core)
+
+
+# --- symmetry and an independent computation -------------------------------------------
+def _reference_kappa_m(s, mu, eps):
+    """kappa_m of the documented law, wire by wire with the math module: the closed-form
+    principal directions of the stick tensor, θ about the core centre positive away from
+    the net centroid (third moment where the first vanishes), the rupture curvature of the
+    thickest intact wire about an axis with no lever."""
+    w, m = s.wires(), s.material
+    live = [i for i in range(len(w.y)) if w.intact[i]]
+    area = {i: math.pi * w.diameter[i] ** 2 / 4 for i in live}
+    total = sum(area.values())
+    yc, zc = (sum(area[i] * c[i] for i in live) / total for c in (w.y, w.z))
+    c3 = {i: math.cos(w.lay_angle[i]) ** 3 for i in live}
+    syy = sum(area[i] * c3[i] * (w.y[i] - yc) ** 2 for i in live)
+    szz = sum(area[i] * c3[i] * (w.z[i] - zc) ** 2 for i in live)
+    syz = sum(area[i] * c3[i] * (w.y[i] - yc) * (w.z[i] - zc) for i in live)
+    mean, radius = (syy + szz) / 2, math.hypot((syy - szz) / 2, syz)
+    if radius <= 1e-12 * mean:  # isotropic: axis 1 along y, axis 2 along z (documented)
+        directions = [(1.0, 0.0), (0.0, 1.0)]
+    else:  # lever of axis 1 at phi from +y, the axis itself a quarter turn away
+        phi = 0.5 * math.atan2(2 * syz, syy - szz)
+        directions = [(math.sin(phi), -math.cos(phi)), (math.cos(phi), math.sin(phi))]
+    out = []
+    for ty, tz in directions:
+        across = {i: -w.y[i] * tz + w.z[i] * ty for i in live}  # about the core centre
+        lever = {i: -(w.y[i] - yc) * tz + (w.z[i] - zc) * ty for i in live}
+        helical = [i for i in live if w.layer[i] > 0]
+        if sum(area[i] * lever[i] ** 2 for i in live) <= 1e-12 * (syy + szz + 1e-300):
+            out.append(2 * m.eps_rupture / max(w.diameter[i] for i in live))
+            continue
+        side, reach = 1.0, max(w.radius)
+        for power in (1, 3):
+            moment = sum(area[i] * across[i] ** power for i in helical)
+            if abs(moment) > 1e-9 * sum(area[i] for i in helical) * reach**power:
+                side = -1.0 if moment > 0 else 1.0
+                break
+        friction = stick = 0.0
+        for i in live:
+            alpha = w.lay_angle[i]
+            strain = math.cos(alpha) ** 2 * eps
+            sigma = float(m.stress(strain))
+            stick += sigma / strain * area[i] * math.cos(alpha) ** 3 * lever[i] ** 2
+            if i in helical:
+                theta = math.atan2(across[i], w.y[i] * ty + w.z[i] * tz)
+                theta = (
+                    math.pi - theta
+                    if theta > math.pi / 2
+                    else -math.pi - theta
+                    if theta < -math.pi / 2
+                    else theta
+                )
+                theta *= side
+                force = area[i] * sigma
+                friction += (
+                    w.radius[i]
+                    * force
+                    * math.cos(alpha)
+                    * math.expm1(mu * theta * math.sin(alpha))
+                    * math.sin(theta)
+                )
+        out.append(friction / stick)
+    return np.array(out)
+
+
+@pytest.mark.parametrize("mu", [0.1, 0.5, 1.0])
+@pytest.mark.parametrize("eps", [0.004, 0.03])
+def test_kappa_m_matches_an_independent_computation_on_every_1x7_pattern(mu, eps):
+    for broken, s in _patterns_1x7():
+        law = s.bending_law(mu=mu, axial_strain=eps)
+        np.testing.assert_allclose(
+            law.kappa_m, _reference_kappa_m(s, mu, eps), rtol=1e-11, err_msg=str(broken)
+        )
+
+
+def test_kappa_m_matches_an_independent_computation_on_1_6_12_patterns():
+    for _pattern, s in itertools.islice(_patterns_1_6_12(), 0, None, 3):
+        law = s.bending_law(mu=0.5, axial_strain=0.004)
+        np.testing.assert_allclose(law.kappa_m, _reference_kappa_m(s, 0.5, 0.004), rtol=1e-11)
+
+
+#: the symmetries of six equally spaced wires: rotations j -> j + r and mirrors j -> r - j
+_D6 = [(1, r) for r in range(6)] + [(-1, r) for r in range(6)]
+
+
+@pytest.mark.parametrize("mu", [0.1, 0.5, 1.0])
+def test_rotated_or_mirrored_damage_gives_the_same_law(mu):
+    # breaking wire 3 instead of wire 0 (a half turn) is the same damage: same kappa_m,
+    # same stiffnesses, about the same-numbered principal axes, for all 64 patterns
+    s = strand.preset("steel-9.5")
+    for broken, damaged in _patterns_1x7():
+        law = damaged.bending_law(mu=mu, axial_strain=0.004)
+        for sign, shift in _D6:
+            image = s.damaged(wires=[(1, (sign * j + shift) % 6) for j in broken])
+            other = image.bending_law(mu=mu, axial_strain=0.004)
+            for name in ("kappa_m", "M_rf", "EI_stick", "EI_slip"):
+                np.testing.assert_allclose(
+                    getattr(other, name), getattr(law, name), rtol=1e-12, atol=0, err_msg=f"{broken} {name}"
+                )
+
+
+def test_symmetric_damage_equals_its_mirror_and_rotations_on_1_6_12():
+    # a rotation by one inner wire (60 deg: inner j -> j+1, outer j -> j+2) and the mirror
+    # about z (j -> -j in both layers) map the 1+6+12 strand onto itself
+    s = _strand_1_6_12()
+    rng = np.random.default_rng(3)
+    maps = [lambda k, j: (j + k) % (6 * k), lambda k, j: (-j) % (6 * k)]
+    for _ in range(40):
+        broken = [(k, j) for k in (1, 2) for j in range(6 * k) if rng.random() < 0.4]
+        law = s.damaged(wires=broken).bending_law(mu=0.5, axial_strain=0.004)
+        for f in maps:
+            other = s.damaged(wires=[(k, f(k, j)) for k, j in broken]).bending_law(mu=0.5, axial_strain=0.004)
+            np.testing.assert_allclose(other.kappa_m, law.kappa_m, rtol=1e-12, atol=0, err_msg=str(broken))
+
+
+def test_damaged_n_values_are_those_of_the_wire_patterns_they_rotate_to():
+    # damaged(n) rotates the outer layer so that the breaks straddle +z; the same damage
+    # given as wire indices (no rotation) is the same section turned: the same law
+    s = strand.preset("steel-9.5")
+    for n in range(1, 6):
+        law = s.damaged(n).bending_law(mu=0.5, axial_strain=0.004)
+        other = s.damaged(wires=[(1, j) for j in range(n)]).bending_law(mu=0.5, axial_strain=0.004)
+        np.testing.assert_allclose(other.kappa_m, law.kappa_m, rtol=1e-12)
