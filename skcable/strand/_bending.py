@@ -24,9 +24,10 @@ neutral axis counts θ > 0: it is the side away from the net centroid (the side
 of the missing wires), or, where the centroid lies on the neutral axis, the side
 where the third moment ``sum A across³`` of the intact helical wires is negative
 (where that vanishes too, the orientation of `Section.principal_axes` decides;
-no such asymmetric section is known among 1x7 and 1+6+12 patterns). This makes the law of a damage pattern that of any rotation
-or mirror image of it (the same damage) and keeps the values of ``damaged(n)``; the
-law is taken odd in κ with this one M_rf. The thesis's Table 3.5 is not
+no such asymmetric section is known among 1x7 and 1+6+12 patterns). This makes
+the law of a damage pattern that of any rotation or mirror image of it (the
+same damage) and keeps the values of ``damaged(n)``; the law is taken odd in κ
+with this one M_rf. The thesis's Table 3.5 is not
 reproduced by these (nor by eq. 3.16 literally, `BendingLaw.kappa_m_eq_3_16`):
 docs/strand_sections.md shows both beside the table.
 

@@ -1,6 +1,6 @@
 """Strand geometry: a straight core wire and layers of helical wires.
 
-Cross-section axes (seed 003 Fig. 3.6): y horizontal, z vertical, origin at
+Cross-section axes (Pino Vidal (2021), Fig. 3.6): y horizontal, z vertical, origin at
 the core's centre. Wire j of a layer of n wires sits at the angle
 ``psi_j = phase + 2 pi j / n`` measured from +z toward +y, on the helix
 radius R of its layer. Helix radii follow from radial contact: layer 1
@@ -9,9 +9,15 @@ touches the core, ``R_1 = (d_core + d_1)/2``; layer k touches layer k-1,
 strand of equal wires). Lay angle alpha and lay length p are tied by
 ``tan(alpha) = 2 pi R / p``.
 
-Damage (REFERENCE.md §2, the convention that reproduces seed 003 annex A):
+Damage (the convention that reproduces the thesis's annex A):
 ``damaged(n)`` breaks n adjacent wires of the outer layer placed
-symmetrically about +z, so that the net section stays symmetric about z.
+symmetrically about +z, so that the net section stays symmetric about z;
+``damaged(wires=[(layer, index), ...])`` breaks any set of helical wires
+(layers from 1, indices from 0; the core cannot break).
+
+Reference: S. Pino Vidal, "Rigidez a flexión en cables: análisis numérico",
+Universidad de Chile, 2021 (the thesis; its tables and equations are cited by
+number).
 """
 
 from __future__ import annotations
@@ -31,9 +37,22 @@ __all__ = ["Layer", "Strand", "Wires", "preset"]
 class Layer:
     """A layer of ``count`` helical wires of diameter ``wire_diameter`` (m).
 
-    Give the lay as ``lay_angle`` (rad, to the strand axis) or as
-    ``lay_length`` (m, the pitch), not both. ``direction`` is +1 for a
-    right-hand lay, -1 for left. ``phase`` (rad) rotates the layer.
+    Parameters
+    ----------
+    count : int
+        Number of wires, >= 1.
+    wire_diameter : float
+        Wire diameter (m), > 0.
+    lay_angle, lay_length : float
+        The lay, as the angle to the strand axis (rad, in (0, π/2)) or as the
+        lay length (m, the pitch, > 0): give exactly one.
+    direction : int
+        +1 for a right-hand lay, -1 for left.
+    phase : float
+        Rotation of the layer (rad): wire j sits at ``phase + 2 pi j / count`` from +z.
+
+    Every number must be finite; booleans, strings and arrays are refused
+    (InputError naming the argument). Numbers are stored as Python int/float.
     """
 
     count: int
@@ -105,11 +124,14 @@ class Strand:
     core_diameter : float
         Diameter of the straight core wire (m).
     layers : tuple of Layer
-        From the core outward.
+        From the core outward (a list is stored as a tuple).
     material : Material
         Wire material (all wires).
     broken : frozenset of (layer, index)
-        Broken wires: layer number (1 = first helical layer) and wire index.
+        Broken wires: layer number (1 = first helical layer; the core cannot
+        break) and wire index (0 to the layer's count - 1), integers only. A
+        set or list of pairs is accepted and stored as a frozenset; a pair
+        listed twice raises InputError.
     name : str
         Label (presets: ``"steel-9.5"`` ...).
     """
@@ -175,6 +197,32 @@ class Strand:
                 raise InputError(argument, f"wire {(layer, index)!r} is listed twice")
             out.append((layer, index))
         return out
+
+    def __repr__(self):
+        def m(x):
+            return f"{x:.4g} m"
+
+        rows = [
+            f"layer {k}: {layer.count} x {m(layer.wire_diameter)}, R = {m(R)}, "
+            f"lay {np.degrees(alpha):.4g}° {'right' if layer.direction > 0 else 'left'}"
+            for k, (layer, R, alpha) in enumerate(
+                zip(self.layers, self.helix_radii, self.lay_angles, strict=True), 1
+            )
+        ]
+        if len(rows) > 4:
+            rows = [*rows[:2], f"... ({len(rows) - 3} more layers)", rows[-1]]
+        broken = sorted(self.broken)
+        shown = ", ".join(map(str, broken[:6])) + (", ..." if len(broken) > 6 else "")
+        counts = ["1", *(str(layer.count) for layer in self.layers)]
+        if len(counts) > 5:
+            counts = [*counts[:3], "...", counts[-1]]
+        counts = f"{'+'.join(counts)} = {1 + sum(layer.count for layer in self.layers)}"
+        return (
+            f"Strand({self.name or 'strand'!r}: {counts} wires, diameter {m(self.diameter)}, "
+            f"core {m(self.core_diameter)}; {'; '.join(rows)}; "
+            f"{len(broken)} broken{': ' + shown if broken else ''}; "
+            f"material {self.material.name or 'custom'!r})"
+        )
 
     # --- geometry ---------------------------------------------------------
     @property
@@ -286,19 +334,20 @@ class Strand:
         return replace(self, layers=layers, broken=frozenset({(top, j) for j in range(n)}), name=name)
 
     def section(self):
-        """Section properties of this strand (see :class:`~skcable.strand.Section`)."""
+        """Section properties of this strand (see [Section][skcable.strand.Section])."""
         from skcable.strand._section import Section
 
         return Section(self)
 
     def bending_law(self, mu: float = 0.5, axial_strain: float = 0.004):
-        """Cardou's bilinear stick/slip moment–curvature law (see :class:`~skcable.strand.BendingLaw`)."""
+        """Cardou's bilinear stick/slip moment–curvature law at friction ``mu`` and axial
+        strain ``axial_strain`` (see [BendingLaw][skcable.strand.BendingLaw])."""
         from skcable.strand._bending import BendingLaw
 
         return BendingLaw(self.section(), mu=mu, axial_strain=axial_strain)
 
 
-#: Seed 003 Table 3.1: wire diameter (m), material, nominal strand diameter (m), lay angle (deg).
+#: Pino Vidal (2021), Table 3.1: wire diameter (m), material, nominal strand diameter (m), lay angle (deg).
 _TABLE_3_1 = {
     "steel-9.5": (3.1e-3, "steel", 9.5e-3, 7.5),
     "aluminium-10.1": (3.37e-3, "aluminium", 10.1e-3, 8.0),

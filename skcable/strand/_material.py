@@ -1,12 +1,13 @@
-r"""Wire constitutive law: bilinear with a C¹ cubic blend (seed 003 eq. 3.21, annex B).
+r"""Wire constitutive law: bilinear with a C¹ cubic blend (Pino Vidal (2021), eq. 3.21, annex B).
 
-.. math::
-    \sigma(\varepsilon) = \begin{cases}
-      E_e\,\varepsilon & |\varepsilon| \le \varepsilon'_y \\
-      a t^3 + b t^2 + c t + d,\quad t = \varepsilon - \varepsilon'_y
-        & \varepsilon'_y < |\varepsilon| < \varepsilon''_y \\
-      E_e\,\varepsilon_y + E_p(\varepsilon - \varepsilon_y) & |\varepsilon| \ge \varepsilon''_y
-    \end{cases}
+$$
+\sigma(\varepsilon) = \begin{cases}
+  E_e\,\varepsilon & |\varepsilon| \le \varepsilon'_y \\
+  a t^3 + b t^2 + c t + d,\quad t = \varepsilon - \varepsilon'_y
+    & \varepsilon'_y < |\varepsilon| < \varepsilon''_y \\
+  E_e\,\varepsilon_y + E_p(\varepsilon - \varepsilon_y) & |\varepsilon| \ge \varepsilon''_y
+\end{cases}
+$$
 
 odd in ε. The cubic's coefficients follow from the C¹ conditions B.1–B.4
 (slope ``E_e`` and value ``E_e ε'_y`` at ε'_y; slope ``E_p`` and the
@@ -14,6 +15,10 @@ hardening line's value at ε''_y); they are computed, not typed in. The
 third branch is the line through (ε_y, E_e ε_y) of slope E_p, as B.4
 states; eq. 3.21 writes it through ε'_y, a misprint (B.4 is the form that
 gives Table 3.4's rupture stress, 1443 MPa for steel).
+
+Reference: S. Pino Vidal, "Rigidez a flexión en cables: análisis numérico",
+Universidad de Chile, 2021 (the thesis; its tables and equations are cited by
+number).
 """
 
 from __future__ import annotations
@@ -163,6 +168,13 @@ class Material:
         a, b = np.linalg.solve(lhs, rhs)
         object.__setattr__(self, "_cubic", (float(a), float(b), E_e, E_e * e1))
 
+    def __repr__(self):
+        return (
+            f"Material({self.name or 'custom'!r}: E_e={self.E_e:.4g} Pa, E_p={self.E_p:.4g} Pa, "
+            f"eps_y={self.eps_y:g} (blend {self.eps_y1:g} to {self.eps_y2:g}), "
+            f"eps_rupture={self.eps_rupture:g}, poisson={self.poisson:g})"
+        )
+
     @property
     def a(self) -> float:
         """Cubic coefficient (Pa per strain³)."""
@@ -253,7 +265,7 @@ class Material:
         return out[()] if out.ndim == 0 else out
 
 
-#: Table B.1 of seed 003 (MPa in the table, Pa here).
+#: Pino Vidal (2021), Table B.1 (MPa in the table, Pa here).
 _PRESETS = {
     "steel": dict(
         E_e=196603.774e6, E_p=5228.162e6, eps_y=0.0053, eps_y1=0.005, eps_y2=0.006, eps_rupture=0.082

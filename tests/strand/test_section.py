@@ -221,3 +221,14 @@ def test_section_bad_input():
             sec.lever(axis)
         assert info.value.argument == "axis"
     np.testing.assert_array_equal(sec.lever(np.int64(1)), sec.lever(1))
+
+
+def test_strand_repr_is_short_and_lists_the_damage():
+    s = strand.preset("steel-9.5").damaged(2)
+    text = repr(s)
+    assert "1+6 = 7 wires" in text and "2 broken: (1, 0), (1, 1)" in text and " m" in text
+    d = 1e-3
+    layers = tuple(strand.Layer(6 * k, d, lay_angle=0.2) for k in range(1, 30))
+    big = strand.Strand(d, layers, strand.material("steel")).damaged(wires=[(29, j) for j in range(50)])
+    text = repr(big)
+    assert len(text) < 500 and "\n" not in text and "2611 wires" in text and "50 broken" in text
