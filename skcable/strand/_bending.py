@@ -1,46 +1,204 @@
-r"""Cardou's bilinear stick/slip moment–curvature law (seed 003 §3.1, eqs. 3.1–3.16).
+r"""Cardou's bilinear stick/slip moment–curvature law (Pino Vidal (2021), §3.1, eqs. 3.1–3.16).
 
 Per principal axis k, with the stick and full-slip bending stiffnesses
-``EI_max``, ``EI_min`` (eqs. 3.11–3.12, secant modulus at the axial strain)
+``EI_stick``, ``EI_slip`` (eqs. 3.11–3.12, secant modulus at the axial strain)
 and the residual friction moment (eq. 3.14, Papailiou's capstan law along
 the helix)
 
-.. math::
-    M_{rf} = \sum_i R_i F_i \cos\alpha_i \left(e^{\mu\theta_i\sin\alpha_i} - 1\right)\sin\theta_i,
-    \qquad \kappa_m = \frac{M_{rf}}{EI_\mathrm{max} - EI_\mathrm{min}},
+$$
+M_{rf} = \sum_i R_i F_i \cos\alpha_i \left(e^{\mu\theta_i\sin\alpha_i} - 1\right)\sin\theta_i,
+\qquad \kappa_m = \frac{M_{rf}}{EI_\mathrm{stick} - EI_\mathrm{slip}},
+$$
 
-the law is ``M = EI_max κ`` for ``|κ| <= κ_m`` and
-``M = M_m + EI_min (κ - κ_m)``, ``M_m = EI_max κ_m``, beyond (odd in κ).
+the law is ``M = EI_stick κ`` for ``|κ| <= κ_m`` and
+``M = M_m + EI_slip (κ - κ_m)``, ``M_m = EI_stick κ_m``, beyond (odd in κ).
 
-Conventions (stated because seed 003 leaves them open, REFERENCE.md §2):
-``F_i = A_i σ(cos²α_i · ε)`` is the wire force under the strand's axial
-strain ε (no twist); θ_i is the wire's angular position about the core
-centre measured from the bending neutral axis (principal axis k), taken in
-[-π/2, π/2] (a wire of the far half maps by θ → π - θ, so that the capstan
-gain grows away from the neutral axis on both sides); R_i is its helix
-radius. Seed 003's Table 3.5 is not reproduced by these (nor by eq. 3.16
-literally, :attr:`BendingLaw.kappa_m_eq_3_16`): docs/strand_sections.md
-shows both beside the table.
+Conventions (the thesis leaves them open): ``F_i = A_i σ(cos²α_i · ε)`` is
+the wire force under the strand's axial strain ε (no twist); θ_i is the
+wire's angular position about the core centre measured from the bending
+neutral axis (principal axis k), taken in [-π/2, π/2] (a wire of the far half
+maps by θ → π - θ, so that the capstan gain grows away from the neutral axis
+on both sides); R_i is its helix radius. The capstan term is not odd in θ
+(``e^{x} - 1`` against ``1 - e^{-x}``), so M_rf depends on which side of the
+neutral axis counts θ > 0: it is the side away from the net centroid (the side
+of the missing wires), or, where the centroid lies on the neutral axis, the side
+where the third moment ``sum A across³`` of the intact helical wires is negative
+(where that vanishes too, the orientation of `Section.principal_axes` decides;
+no such asymmetric section is known among 1x7 and 1+6+12 patterns). This makes
+the law of a damage pattern that of any rotation or mirror image of it (the
+same damage) and keeps the values of ``damaged(n)``; the law is taken odd in κ
+with this one M_rf. The thesis's Table 3.5 is not
+reproduced by these (nor by eq. 3.16 literally, `BendingLaw.kappa_m_eq_3_16`):
+docs/strand_sections.md shows both beside the table.
+
+**No composite bending about an axis.** When every intact wire lies on one
+line through the core centre (one helical wire left besides the core, two
+opposite ones, or none: `Section.composite_bending` is False), no wire has a
+lever about the principal axis along that line. The stick and slip stiffnesses
+about it coincide exactly, no wire has a friction lever (θ = 0, ``M_rf = 0``),
+and the law is linear, ``M = EI_slip κ``, whatever κ_m is: no interwire shear
+arises, so slip about that axis never starts. It is represented finitely by
+``BendingLaw.linear`` = True, ``M_rf = 0`` and
+``κ_m = 2 ε_rupture / d_max``, the curvature at which the thickest intact wire
+would break by its own bending alone: no slip about that axis within the
+range where the law means anything. That κ_m does not depend on μ or ε.
+
+Axes: arrays of two entries are over principal axes 1 and 2 (index 0 is
+principal axis 1, as ``curvature_1`` in the CLI and the VTK files), and every
+``axis`` argument is the int 0 (principal axis 1) or 1 (principal axis 2).
+
+References: S. Pino Vidal, "Rigidez a flexión en cables: análisis numérico",
+Universidad de Chile, 2021; A. Cardou, "Stick-slip mechanical models for
+overhead electrical conductors in bending", GREMCA, Université Laval, 2013;
+K. O. Papailiou, "On the bending stiffness of transmission line conductors",
+IEEE Trans. Power Delivery 12(4), 1997.
 """
 
 from __future__ import annotations
 
-from functools import cached_property
-
 import numpy as np
 
-from skcable._checks import nonnegative, real
 from skcable.errors import InputError
+from skcable.strand._material import _array, _axis, _is_real_scalar, _scalar
+from skcable.strand._section import Section, _deprecated
 
-__all__ = ["BendingLaw"]
+__all__ = ["BendingLaw", "critical_curvature"]
+
+
+def _section(section) -> Section:
+    if not isinstance(section, Section):
+        raise InputError("section", f"must be a Section (strand.section()), got {section!r}")
+    return section
+
+
+def _strains(section: Section, axial_strain, *, scalar: bool) -> np.ndarray:
+    top = section.strand.material.eps_rupture
+    if scalar:
+        if not _is_real_scalar(axial_strain):
+            raise InputError(
+                "axial_strain",
+                f"must be a single real number, got {axial_strain!r:.80}; for many strains at once "
+                "use critical_curvature(section, mu, axial_strain_array)",
+            )
+        strain = np.array([_scalar("axial_strain", axial_strain)])
+    else:
+        strain = _array("axial_strain", axial_strain)
+    bad = ~((strain >= 0) & (strain < top))
+    if bad.any():
+        index = tuple(int(i) for i in np.argwhere(bad)[0])
+        where = f" at index {index}" if strain.ndim and not scalar else ""
+        raise InputError(
+            "axial_strain", f"must lie in [0, eps_rupture={top!r}), got {float(strain[index])!r}{where}"
+        )
+    return strain
+
+
+def _side(section: Section, axis: int) -> float:
+    """+1 or -1: the sign that puts θ > 0 on the side of the neutral axis away from the net
+    centroid (the side of the missing wires); see `BendingLaw.theta`."""
+    w = section.wires
+    t = section.principal_axes[axis]
+    across = -w.y * t[1] + w.z * t[0]  # about the core centre, positive to the left of t
+    weights = np.where(w.intact & (w.layer > 0), w.area, 0.0)
+    reach = float(np.max(w.radius))
+    for power in (1, 3):  # first moment (the centroid's side); where it vanishes, the third
+        moment = float(weights @ across**power)
+        if abs(moment) > 1e-9 * float(weights.sum()) * reach**power:
+            return -1.0 if moment > 0 else 1.0
+    return 1.0
+
+
+def _theta(section: Section, axis: int) -> np.ndarray:
+    """Angular position of every wire about the core centre from principal axis ``axis``,
+    mapped into [-π/2, π/2], positive away from the net centroid."""
+    w = section.wires
+    t = section.principal_axes[axis]
+    along, across = w.y * t[0] + w.z * t[1], -w.y * t[1] + w.z * t[0]
+    theta = np.arctan2(across, along)
+    theta = np.where(theta > np.pi / 2, np.pi - theta, np.where(theta < -np.pi / 2, -np.pi - theta, theta))
+    return _side(section, axis) * theta
+
+
+def _law(section: Section, mu: float, strain: np.ndarray) -> dict:
+    """EI_stick, EI_slip, M_rf, kappa_m (2, *strain.shape) of Cardou's law at every strain."""
+    w, material = section.wires, section.strand.material
+    alive, composite = w.intact, section.composite_bending
+    helical = alive & (w.layer > 0)
+    cos, sin = np.cos(w.lay_angle), np.sin(w.lay_angle)
+    levers = np.array([section.lever(k) for k in (0, 1)])  # (2, wires)
+    theta = np.array([_theta(section, k) for k in (0, 1)])
+    # strain-independent per-wire factors; nothing composite about a lever-less axis
+    stick = np.where(alive & composite[:, None], w.area * cos**3 * levers**2, 0.0)
+    own = np.where(alive, w.inertia * cos, 0.0)
+    with np.errstate(over="ignore", invalid="ignore"):
+        capstan = np.where(
+            helical & composite[:, None], w.radius * cos * np.expm1(mu * theta * sin) * np.sin(theta), 0.0
+        )
+    if not np.all(np.isfinite(capstan)):
+        raise InputError("mu", f"the capstan factor exp(mu·θ·sin α) overflows for mu = {mu!r}")
+    flat = strain.reshape(-1)
+    wire_strain = np.multiply.outer(cos**2, flat)  # (wires, n)
+    modulus = material.secant(wire_strain)  # secant modulus per wire
+    force = w.area[:, None] * material.stress(wire_strain)
+    composite_part = stick @ modulus  # (2, n)
+    slip = np.broadcast_to(own @ modulus, composite_part.shape)
+    M_rf = capstan @ force
+    no_lever = 2.0 * material.eps_rupture / float(np.max(w.diameter[alive]))
+    with np.errstate(divide="ignore", invalid="ignore"):
+        kappa = np.where(composite[:, None], M_rf / composite_part, no_lever)
+    out = dict(EI_stick=composite_part + slip, EI_slip=slip.copy(), M_rf=M_rf, kappa_m=kappa)
+    for key, value in out.items():
+        if not np.all(np.isfinite(value)):
+            raise InputError("section", f"{key} is not finite: wire sizes or moduli beyond floating point?")
+        out[key] = value.reshape((2, *strain.shape))
+    return out
+
+
+def critical_curvature(section, mu: float, axial_strain) -> np.ndarray:
+    """Critical curvatures κ_m (1/m) of Cardou's law at many axial strains in one call.
+
+    Parameters
+    ----------
+    section : Section
+        The strand section (``strand.section()``).
+    mu : float
+        Friction coefficient, >= 0.
+    axial_strain : float or array_like
+        Axial strains of the strand, each in ``[0, eps_rupture)`` (at 0, κ_m = 0:
+        no tension, no friction); any shape, not empty.
+
+    Returns
+    -------
+    ndarray (2, *axial_strain.shape)
+        Row 0: about principal axis 1; row 1: about principal axis 2. Equal to
+        ``BendingLaw(section, mu=mu, axial_strain=e).kappa_m`` for each strain e.
+        About an axis without composite bending (`Section.composite_bending` False)
+        the documented constant ``2 ε_rupture / d_max`` (see `BendingLaw`).
+    """
+    section = _section(section)
+    mu = _scalar("mu", mu, lower=0.0)
+    return _law(section, mu, _strains(section, axial_strain, scalar=False))["kappa_m"]
 
 
 class BendingLaw:
     """Stick/slip bending law of a strand section at friction ``mu`` and axial strain.
 
+    Arrays of two entries are over the principal axes: index 0 is principal
+    axis 1, index 1 is principal axis 2.
+
+    Parameters
+    ----------
+    section : Section
+        The strand section (``strand.section()``).
+    mu : float
+        Friction coefficient between wires, >= 0.
+    axial_strain : float
+        Axial strain of the strand, in ``[0, eps_rupture)`` (a single number; for
+        many strains at once use `critical_curvature`).
+
     Attributes
     ----------
-    EI_max, EI_min : ndarray (2,)
+    EI_stick, EI_slip : ndarray (2,)
         Secant stick and full-slip stiffnesses about principal axes 1, 2 (N·m²).
     M_rf : ndarray (2,)
         Residual friction moments (N·m).
@@ -48,107 +206,90 @@ class BendingLaw:
         Critical (mean) curvatures (1/m).
     M_m : ndarray (2,)
         Moments at the stick/slip transition (N·m).
+    linear : ndarray of bool (2,)
+        True about an axis without composite bending: ``EI_stick == EI_slip``,
+        ``M_rf = 0``, ``κ_m = 2 ε_rupture / d_max`` (the module's documentation).
     """
 
     def __init__(self, section, *, mu: float, axial_strain: float):
-        self.section = section
-        self.mu = float(nonnegative("mu", mu))
-        self.axial_strain = float(real("axial_strain", axial_strain))
-        material, wires = section.strand.material, section.wires
-        if not 0 < self.axial_strain < material.eps_rupture:
-            raise InputError(
-                "axial_strain", f"must lie in (0, eps_rupture={material.eps_rupture}), got {axial_strain!r}"
-            )
-        cos = np.cos(wires.lay_angle)
-        self._wire_strain = cos**2 * self.axial_strain
-        self._modulus = material.secant(self._wire_strain)  # per wire
-        self._force = wires.area * material.stress(self._wire_strain)
-
-    def _stiffnesses(self, axis):
-        s, w = self.section, self.section.wires
-        alive = w.intact
-        cos = np.cos(w.lay_angle)
-        stick = np.sum(np.where(alive, self._modulus * w.area * cos**3 * s.lever(axis) ** 2, 0.0))
-        own = np.sum(np.where(alive, self._modulus * w.inertia * cos, 0.0))
-        return stick + own, own
-
-    @cached_property
-    def EI_max(self) -> np.ndarray:
-        return np.array([self._stiffnesses(k)[0] for k in (0, 1)])
-
-    @cached_property
-    def EI_min(self) -> np.ndarray:
-        return np.array([self._stiffnesses(k)[1] for k in (0, 1)])
-
-    def theta(self, axis: int) -> np.ndarray:
-        """Angular position of every wire from the neutral axis, in [-π/2, π/2] (rad)."""
-        w = self.section.wires
-        t = self.section.principal_axes[axis]
-        along, across = w.y * t[0] + w.z * t[1], -w.y * t[1] + w.z * t[0]
-        theta = np.arctan2(across, along)
-        return np.where(theta > np.pi / 2, np.pi - theta, np.where(theta < -np.pi / 2, -np.pi - theta, theta))
-
-    @cached_property
-    def M_rf(self) -> np.ndarray:
-        w = self.section.wires
-        helical = w.intact & (w.layer > 0)
-        sin_a, cos_a = np.sin(w.lay_angle), np.cos(w.lay_angle)
-        out = []
-        for k in (0, 1):
-            theta = self.theta(k)
-            with np.errstate(over="ignore"):
-                terms = w.radius * self._force * cos_a * np.expm1(self.mu * theta * sin_a) * np.sin(theta)
-            out.append(np.sum(np.where(helical, terms, 0.0)))
-        if not np.all(np.isfinite(out)):
-            raise InputError("mu", f"the capstan factor exp(mu·θ·sin α) overflows for mu = {self.mu!r}")
-        return np.array(out)
-
-    @cached_property
-    def kappa_m(self) -> np.ndarray:
-        return self.M_rf / (self.EI_max - self.EI_min)
+        self.section = _section(section)
+        self.mu = _scalar("mu", mu, lower=0.0)
+        self.axial_strain = float(_strains(section, axial_strain, scalar=True)[0])
+        law = _law(section, self.mu, np.array([self.axial_strain]))
+        self.EI_stick, self.EI_slip, self.M_rf, self.kappa_m = (
+            law[k][:, 0] for k in ("EI_stick", "EI_slip", "M_rf", "kappa_m")
+        )
+        self.linear = ~section.composite_bending
 
     @property
     def M_m(self) -> np.ndarray:
-        return self.EI_max * self.kappa_m
+        """Moments ``EI_stick κ_m`` at the stick/slip transition, principal axes 1, 2 (N·m)."""
+        return self.EI_stick * self.kappa_m
 
-    @cached_property
+    EI_max = _deprecated("EI_max", "EI_stick")
+    EI_min = _deprecated("EI_min", "EI_slip")
+
+    def theta(self, axis: int) -> np.ndarray:
+        """Angular position θ (rad) of every wire about the core centre from the neutral axis,
+        in [-π/2, π/2], positive on the side away from the net centroid (the module's
+        conventions); ``axis`` is the int 0 (principal axis 1) or 1 (principal axis 2)."""
+        return _theta(self.section, _axis(axis))
+
+    @property
     def kappa_m_eq_3_16(self) -> np.ndarray:
-        """Seed 003 eq. 3.16 read literally (1x7 strands):
-        ``(1/3)(eps/R) sum (e^{mu theta sin(alpha)} - 1) sin(theta) / cos^2(alpha)``, per axis."""
-        w = self.section.wires
-        outer = w.intact & (w.layer == w.layer.max())
-        R, alpha = w.radius[outer][0], w.lay_angle[outer][0]
+        """Pino Vidal (2021), eq. 3.16, read literally (1x7 strands), per principal axis (1/m):
+        ``(1/3)(eps/R) sum (e^{mu theta sin(alpha)} - 1) sin(theta) / cos^2(alpha)`` over the
+        intact wires of the outer layer (R, α of that layer); 0 about an axis without
+        composite bending (every θ is 0 there)."""
+        w, strand = self.section.wires, self.section.strand
+        outer = w.intact & (w.layer == len(strand.layers))
+        R, alpha = float(strand.helix_radii[-1]), float(strand.lay_angles[-1])
         out = []
         for k in (0, 1):
-            theta = self.theta(k)[outer]
+            theta = _theta(self.section, k)[outer]
             total = np.sum(np.expm1(self.mu * theta * np.sin(alpha)) * np.sin(theta))
             out.append(self.axial_strain / (3.0 * R) * total / np.cos(alpha) ** 2)
-        return np.array(out)
-
-    def _check_axis(self, axis):
-        if axis not in (0, 1):
-            raise InputError("axis", f"must be 0 or 1 (principal axis 1 or 2), got {axis!r}")
+        return np.where(self.linear, 0.0, out)
 
     def moment(self, kappa, axis: int):
-        """Bending moment (N·m) at curvature ``kappa`` (1/m) about principal axis ``axis``."""
-        self._check_axis(axis)
-        kappa = np.asarray(real("kappa", kappa), dtype=float)
-        k_m, ei_max, ei_min = self.kappa_m[axis], self.EI_max[axis], self.EI_min[axis]
+        """Bending moment (N·m) at curvature ``kappa`` (1/m, a number or an array of any
+        shape) about a principal axis: ``axis`` is the int 0 (principal axis 1) or 1
+        (principal axis 2)."""
+        axis = _axis(axis)
+        kappa = _array("kappa", kappa)
+        k_m, ei_stick, ei_slip = self.kappa_m[axis], self.EI_stick[axis], self.EI_slip[axis]
         size = np.abs(kappa)
-        out = np.copysign(np.where(size <= k_m, ei_max * size, ei_max * k_m + ei_min * (size - k_m)), kappa)
+        out = np.copysign(
+            np.where(size <= k_m, ei_stick * size, ei_stick * k_m + ei_slip * (size - k_m)), kappa
+        )
         return out[()] if out.ndim == 0 else out
 
     def bending_stiffness(self, kappa, axis: int, kind: str = "secant"):
-        """``M/κ`` (secant) or ``dM/dκ`` (tangent) at ``kappa`` (N·m²)."""
-        self._check_axis(axis)
-        kappa = np.asarray(real("kappa", kappa), dtype=float)
+        """``M/κ`` (``kind="secant"``) or ``dM/dκ`` (``"tangent"``) at ``kappa`` (N·m²)
+        about a principal axis: ``axis`` is the int 0 (principal axis 1) or 1 (principal
+        axis 2)."""
+        axis = _axis(axis)
+        if kind not in ("secant", "tangent"):
+            raise InputError("kind", f"must be 'secant' or 'tangent', got {kind!r}")
+        kappa = _array("kappa", kappa)
         size = np.abs(kappa)
         stick = size <= self.kappa_m[axis]
         if kind == "tangent":
-            out = np.where(stick, self.EI_max[axis], self.EI_min[axis])
-        elif kind == "secant":
-            safe = np.where(size == 0.0, 1.0, size)
-            out = np.where(stick, self.EI_max[axis], np.abs(self.moment(safe, axis)) / safe)
+            out = np.where(stick, self.EI_stick[axis], self.EI_slip[axis])
         else:
-            raise InputError("kind", f"must be 'secant' or 'tangent', got {kind!r}")
+            safe = np.where(size == 0.0, 1.0, size)
+            out = np.where(stick, self.EI_stick[axis], np.abs(self.moment(safe, axis)) / safe)
         return out[()] if out.ndim == 0 else out
+
+    def __repr__(self):
+        def pair(values, unit):
+            return f"({values[0]:.4g}, {values[1]:.4g}) {unit}"
+
+        linear = [k + 1 for k in (0, 1) if self.linear[k]]
+        note = f", linear about principal axis {' and '.join(map(str, linear))}" if linear else ""
+        return (
+            f"BendingLaw({self.section.strand.name or 'strand'!r}, mu={self.mu:g}, "
+            f"axial_strain={self.axial_strain:g}: EI_stick={pair(self.EI_stick, 'N·m²')}, "
+            f"EI_slip={pair(self.EI_slip, 'N·m²')}, M_rf={pair(self.M_rf, 'N·m')}, "
+            f"kappa_m={pair(self.kappa_m, '1/m')}{note})"
+        )

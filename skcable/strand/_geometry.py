@@ -1,6 +1,6 @@
 """Strand geometry: a straight core wire and layers of helical wires.
 
-Cross-section axes (seed 003 Fig. 3.6): y horizontal, z vertical, origin at
+Cross-section axes (Pino Vidal (2021), Fig. 3.6): y horizontal, z vertical, origin at
 the core's centre. Wire j of a layer of n wires sits at the angle
 ``psi_j = phase + 2 pi j / n`` measured from +z toward +y, on the helix
 radius R of its layer. Helix radii follow from radial contact: layer 1
@@ -9,9 +9,15 @@ touches the core, ``R_1 = (d_core + d_1)/2``; layer k touches layer k-1,
 strand of equal wires). Lay angle alpha and lay length p are tied by
 ``tan(alpha) = 2 pi R / p``.
 
-Damage (REFERENCE.md §2, the convention that reproduces seed 003 annex A):
+Damage (the convention that reproduces the thesis's annex A):
 ``damaged(n)`` breaks n adjacent wires of the outer layer placed
-symmetrically about +z, so that the net section stays symmetric about z.
+symmetrically about +z, so that the net section stays symmetric about z;
+``damaged(wires=[(layer, index), ...])`` breaks any set of helical wires
+(layers from 1, indices from 0; the core cannot break).
+
+Reference: S. Pino Vidal, "Rigidez a flexión en cables: análisis numérico",
+Universidad de Chile, 2021 (the thesis; its tables and equations are cited by
+number).
 """
 
 from __future__ import annotations
@@ -21,9 +27,8 @@ from math import pi, radians
 
 import numpy as np
 
-from skcable._checks import positive
 from skcable.errors import InputError
-from skcable.strand._material import Material, material
+from skcable.strand._material import Material, _integer, _name, _scalar, material
 
 __all__ = ["Layer", "Strand", "Wires", "preset"]
 
@@ -32,9 +37,22 @@ __all__ = ["Layer", "Strand", "Wires", "preset"]
 class Layer:
     """A layer of ``count`` helical wires of diameter ``wire_diameter`` (m).
 
-    Give the lay as ``lay_angle`` (rad, to the strand axis) or as
-    ``lay_length`` (m, the pitch), not both. ``direction`` is +1 for a
-    right-hand lay, -1 for left. ``phase`` (rad) rotates the layer.
+    Parameters
+    ----------
+    count : int
+        Number of wires, >= 1.
+    wire_diameter : float
+        Wire diameter (m), > 0.
+    lay_angle, lay_length : float
+        The lay, as the angle to the strand axis (rad, in (0, π/2)) or as the
+        lay length (m, the pitch, > 0): give exactly one.
+    direction : int
+        +1 for a right-hand lay, -1 for left.
+    phase : float
+        Rotation of the layer (rad): wire j sits at ``phase + 2 pi j / count`` from +z.
+
+    Every number must be finite; booleans, strings and arrays are refused
+    (InputError naming the argument). Numbers are stored as Python int/float.
     """
 
     count: int
@@ -45,17 +63,31 @@ class Layer:
     phase: float = 0.0
 
     def __post_init__(self):
-        if not (isinstance(self.count, (int, np.integer)) and self.count >= 1):
-            raise InputError("count", f"must be a positive integer, got {self.count!r}")
-        positive("wire_diameter", self.wire_diameter)
+        count = _integer("count", self.count)
+        if count < 1:
+            raise InputError("count", f"must be a positive integer, got {count!r}")
+        values = dict(
+            count=count, wire_diameter=_scalar("wire_diameter", self.wire_diameter, lower=0.0, strict=True)
+        )
         if (self.lay_angle is None) == (self.lay_length is None):
             raise InputError("lay_angle", "give exactly one of lay_angle and lay_length")
-        if self.lay_angle is not None and not 0 < self.lay_angle < pi / 2:
-            raise InputError("lay_angle", f"must lie in (0, pi/2) rad, got {self.lay_angle!r}")
-        if self.lay_length is not None:
-            positive("lay_length", self.lay_length)
+        if self.lay_angle is not None:
+            alpha = _scalar("lay_angle", self.lay_angle)
+            if not 0 < alpha < pi / 2:
+                raise InputError("lay_angle", f"must lie in (0, pi/2) rad, got {alpha!r}")
+            values["lay_angle"] = alpha
+        else:
+            values["lay_length"] = _scalar("lay_length", self.lay_length, lower=0.0, strict=True)
+        if isinstance(self.direction, (bool, np.bool_)) or not isinstance(self.direction, (int, np.integer)):
+            raise InputError(
+                "direction", f"must be the int +1 (right lay) or -1 (left lay), got {self.direction!r}"
+            )
         if self.direction not in (1, -1):
             raise InputError("direction", f"must be +1 (right lay) or -1 (left lay), got {self.direction!r}")
+        values["direction"] = int(self.direction)
+        values["phase"] = _scalar("phase", self.phase)
+        for key, value in values.items():  # plain Python numbers
+            object.__setattr__(self, key, value)
 
 
 @dataclass(frozen=True)
@@ -92,11 +124,14 @@ class Strand:
     core_diameter : float
         Diameter of the straight core wire (m).
     layers : tuple of Layer
-        From the core outward.
+        From the core outward (a list is stored as a tuple).
     material : Material
         Wire material (all wires).
     broken : frozenset of (layer, index)
-        Broken wires: layer number (1 = first helical layer) and wire index.
+        Broken wires: layer number (1 = first helical layer; the core cannot
+        break) and wire index (0 to the layer's count - 1), integers only. A
+        set or list of pairs is accepted and stored as a frozenset; a pair
+        listed twice raises InputError.
     name : str
         Label (presets: ``"steel-9.5"`` ...).
     """
@@ -108,12 +143,86 @@ class Strand:
     name: str = ""
 
     def __post_init__(self):
-        positive("core_diameter", self.core_diameter)
-        if not self.layers:
+        object.__setattr__(
+            self, "core_diameter", _scalar("core_diameter", self.core_diameter, lower=0.0, strict=True)
+        )
+        layers = self.layers
+        if isinstance(layers, Layer) or not isinstance(layers, (tuple, list)):
+            raise InputError("layers", f"must be a tuple of Layer (core outward), got {layers!r}")
+        if not layers:
             raise InputError("layers", "a strand needs at least one helical layer")
-        for layer_index, wire in self.broken:
-            if not 1 <= layer_index <= len(self.layers) or not 0 <= wire < self.layers[layer_index - 1].count:
-                raise InputError("wires", f"no wire {wire} in layer {layer_index}")
+        for k, layer in enumerate(layers, 1):
+            if not isinstance(layer, Layer):
+                raise InputError("layers", f"layer {k} must be a Layer, got {layer!r}")
+        object.__setattr__(self, "layers", tuple(layers))
+        if not isinstance(self.material, Material):
+            raise InputError(
+                "material", f"must be a Material (e.g. strand.material('steel')), got {self.material!r}"
+            )
+        object.__setattr__(self, "broken", frozenset(self._wire_set("broken", self.broken)))
+        _name(self.name)
+
+    def _wire_set(self, argument: str, wires) -> list[tuple[int, int]]:
+        """Validated (layer, index) pairs of ``wires`` (a set, list or tuple of pairs).
+
+        Layers count from 1 (the first helical layer; the core cannot break), indices
+        from 0 to the layer's count - 1. Non-integers (2.7, also 2.0), booleans,
+        out-of-range numbers and a pair listed twice raise InputError(argument).
+        """
+        if isinstance(wires, (str, bytes)) or not isinstance(wires, (set, frozenset, list, tuple)):
+            raise InputError(argument, f"must be a set or list of (layer, index) pairs, got {wires!r}")
+        out = []
+        for item in wires:
+            if not isinstance(item, (tuple, list)) or len(item) != 2:
+                raise InputError(
+                    argument, f"each wire must be a (layer, index) pair, got {item!r} (in {wires!r})"
+                )
+            try:
+                layer, index = _integer(argument, item[0]), _integer(argument, item[1])
+            except InputError:
+                raise InputError(argument, f"layer and index must be integers, got {tuple(item)!r}") from None
+            if not 1 <= layer <= len(self.layers):
+                raise InputError(
+                    argument,
+                    f"no layer {layer} in {tuple(item)!r}: helical layers are 1..{len(self.layers)} "
+                    "(the core, layer 0, cannot break)",
+                )
+            count = self.layers[layer - 1].count
+            if not 0 <= index < count:
+                raise InputError(
+                    argument,
+                    f"no wire {index} in layer {layer} ({tuple(item)!r}): indices are 0..{count - 1}",
+                )
+            if (layer, index) in out:
+                raise InputError(argument, f"wire {(layer, index)!r} is listed twice")
+            out.append((layer, index))
+        return out
+
+    def __repr__(self):
+        def m(x):
+            return f"{x:.4g} m"
+
+        rows = [
+            f"layer {k}: {layer.count} x {m(layer.wire_diameter)}, R = {m(R)}, "
+            f"lay {np.degrees(alpha):.4g}° {'right' if layer.direction > 0 else 'left'}"
+            for k, (layer, R, alpha) in enumerate(
+                zip(self.layers, self.helix_radii, self.lay_angles, strict=True), 1
+            )
+        ]
+        if len(rows) > 4:
+            rows = [*rows[:2], f"... ({len(rows) - 3} more layers)", rows[-1]]
+        broken = sorted(self.broken)
+        shown = ", ".join(map(str, broken[:6])) + (", ..." if len(broken) > 6 else "")
+        counts = ["1", *(str(layer.count) for layer in self.layers)]
+        if len(counts) > 5:
+            counts = [*counts[:3], "...", counts[-1]]
+        counts = f"{'+'.join(counts)} = {1 + sum(layer.count for layer in self.layers)}"
+        return (
+            f"Strand({self.name or 'strand'!r}: {counts} wires, diameter {m(self.diameter)}, "
+            f"core {m(self.core_diameter)}; {'; '.join(rows)}; "
+            f"{len(broken)} broken{': ' + shown if broken else ''}; "
+            f"material {self.material.name or 'custom'!r})"
+        )
 
     # --- geometry ---------------------------------------------------------
     @property
@@ -189,43 +298,56 @@ class Strand:
         ----------
         n : int, optional
             Break n adjacent wires of the outer layer, placed symmetrically
-            about +z (the outer layer is rotated so; seed 003 Table 3.2).
-        wires : iterable of (layer, index), optional
-            Break exactly these wires (layer 1 is the first helical layer),
-            without rotating anything.
+            about +z (the outer layer is rotated so; Pino Vidal (2021), Table 3.2),
+            ``0 <= n < count`` of the outer layer. Only for a strand without broken
+            wires (the rotation would move them); ``n = 0`` returns the strand unrotated.
+        wires : list or set of (layer, index), optional
+            Break exactly these wires (layer 1 is the first helical layer, indices
+            from 0), without rotating anything, in addition to those already broken.
+            Integers only; a wire already broken or listed twice raises InputError.
         """
         if (n is None) == (wires is None):
             raise InputError("n", "give exactly one of n and wires")
         if wires is not None:
-            return replace(self, broken=frozenset(self.broken | {tuple(map(int, w)) for w in wires}))
+            new = self._wire_set("wires", wires)
+            again = sorted(set(new) & self.broken)
+            if again:
+                raise InputError("wires", f"wire {again[0]!r} is already broken")
+            return replace(self, broken=self.broken | frozenset(new))
         outer = self.layers[-1]
-        if not (isinstance(n, (int, np.integer)) and 0 <= n < outer.count):
+        n = _integer("n", n)
+        if not 0 <= n < outer.count:
             raise InputError("n", f"must be an integer in [0, {outer.count - 1}], got {n!r}")
+        if self.broken:
+            raise InputError(
+                "n",
+                f"damaged(n) rotates the outer layer and needs a strand without broken wires; this one has "
+                f"{sorted(self.broken)} (use damaged(wires=...) to add breaks)",
+            )
+        name = f"{self.name} damage {n}".strip()
+        if n == 0:
+            return replace(self, name=name)
         # wires 0..n-1 straddle +z: psi_j = (j - (n-1)/2) * 2 pi / count
         phase = -(n - 1) / 2 * 2 * pi / outer.count
         layers = (*self.layers[:-1], replace(outer, phase=phase))
         top = len(self.layers)
-        return replace(
-            self,
-            layers=layers,
-            broken=frozenset({(top, j) for j in range(n)}),
-            name=f"{self.name} damage {n}".strip(),
-        )
+        return replace(self, layers=layers, broken=frozenset({(top, j) for j in range(n)}), name=name)
 
     def section(self):
-        """Section properties of this strand (see :class:`~skcable.strand.Section`)."""
+        """Section properties of this strand (see [Section][skcable.strand.Section])."""
         from skcable.strand._section import Section
 
         return Section(self)
 
     def bending_law(self, mu: float = 0.5, axial_strain: float = 0.004):
-        """Cardou's bilinear stick/slip moment–curvature law (see :class:`~skcable.strand.BendingLaw`)."""
+        """Cardou's bilinear stick/slip moment–curvature law at friction ``mu`` and axial
+        strain ``axial_strain`` (see [BendingLaw][skcable.strand.BendingLaw])."""
         from skcable.strand._bending import BendingLaw
 
         return BendingLaw(self.section(), mu=mu, axial_strain=axial_strain)
 
 
-#: Seed 003 Table 3.1: wire diameter (m), material, nominal strand diameter (m), lay angle (deg).
+#: Pino Vidal (2021), Table 3.1: wire diameter (m), material, nominal strand diameter (m), lay angle (deg).
 _TABLE_3_1 = {
     "steel-9.5": (3.1e-3, "steel", 9.5e-3, 7.5),
     "aluminium-10.1": (3.37e-3, "aluminium", 10.1e-3, 8.0),
@@ -235,10 +357,9 @@ _TABLE_3_1 = {
 
 
 def preset(name: str) -> Strand:
-    """A 1x7 strand of seed 003 Table 3.1: ``"steel-9.5"``, ``"aluminium-10.1"``,
+    """A 1x7 strand of Pino Vidal (2021), Table 3.1: ``"steel-9.5"``, ``"aluminium-10.1"``,
     ``"steel-12.7"`` or ``"aluminium-14.3"`` (equal wires, helix radius d)."""
-    try:
-        d, mat, _nominal, alpha = _TABLE_3_1[name]
-    except KeyError:
-        raise InputError("name", f"unknown strand {name!r}; known: {', '.join(_TABLE_3_1)}") from None
+    if not isinstance(name, str) or name not in _TABLE_3_1:
+        raise InputError("name", f"unknown strand {name!r}; known: {', '.join(_TABLE_3_1)}")
+    d, mat, _nominal, alpha = _TABLE_3_1[name]
     return Strand(d, (Layer(6, d, lay_angle=radians(alpha)),), material(mat), name=name)

@@ -1,12 +1,13 @@
-r"""Wire constitutive law: bilinear with a C¹ cubic blend (seed 003 eq. 3.21, annex B).
+r"""Wire constitutive law: bilinear with a C¹ cubic blend (Pino Vidal (2021), eq. 3.21, annex B).
 
-.. math::
-    \sigma(\varepsilon) = \begin{cases}
-      E_e\,\varepsilon & |\varepsilon| \le \varepsilon'_y \\
-      a t^3 + b t^2 + c t + d,\quad t = \varepsilon - \varepsilon'_y
-        & \varepsilon'_y < |\varepsilon| < \varepsilon''_y \\
-      E_e\,\varepsilon_y + E_p(\varepsilon - \varepsilon_y) & |\varepsilon| \ge \varepsilon''_y
-    \end{cases}
+$$
+\sigma(\varepsilon) = \begin{cases}
+  E_e\,\varepsilon & |\varepsilon| \le \varepsilon'_y \\
+  a t^3 + b t^2 + c t + d,\quad t = \varepsilon - \varepsilon'_y
+    & \varepsilon'_y < |\varepsilon| < \varepsilon''_y \\
+  E_e\,\varepsilon_y + E_p(\varepsilon - \varepsilon_y) & |\varepsilon| \ge \varepsilon''_y
+\end{cases}
+$$
 
 odd in ε. The cubic's coefficients follow from the C¹ conditions B.1–B.4
 (slope ``E_e`` and value ``E_e ε'_y`` at ε'_y; slope ``E_p`` and the
@@ -14,18 +15,100 @@ hardening line's value at ε''_y); they are computed, not typed in. The
 third branch is the line through (ε_y, E_e ε_y) of slope E_p, as B.4
 states; eq. 3.21 writes it through ε'_y, a misprint (B.4 is the form that
 gives Table 3.4's rupture stress, 1443 MPa for steel).
+
+Reference: S. Pino Vidal, "Rigidez a flexión en cables: análisis numérico",
+Universidad de Chile, 2021 (the thesis; its tables and equations are cited by
+number).
 """
 
 from __future__ import annotations
 
+import numbers
 from dataclasses import dataclass, field
 
 import numpy as np
 
-from skcable._checks import positive, real
 from skcable.errors import InputError
 
 __all__ = ["Material", "material"]
+
+
+# --- argument checks of skcable.strand (scalars, integers, arrays) ------------------
+def _is_real_scalar(value) -> bool:
+    if isinstance(value, np.ndarray) and value.ndim == 0:
+        value = value[()]
+    return isinstance(value, numbers.Real) and not isinstance(value, (bool, np.bool_))
+
+
+def _scalar(name: str, value, *, lower: float | None = None, strict: bool = False) -> float:
+    """``value`` as a finite float, refusing booleans, strings, arrays and non-finite numbers.
+
+    With ``lower``, also refuse values below it (``strict``: at or below it).
+    """
+    if not _is_real_scalar(value):
+        if isinstance(value, (np.ndarray, list, tuple)):
+            raise InputError(name, f"must be a single real number, got an array of shape {np.shape(value)}")
+        raise InputError(name, f"must be a real number, got {value!r}")
+    out = float(value)
+    if out != out or out in (float("inf"), float("-inf")):
+        raise InputError(name, f"must be finite, got {out!r}")
+    if lower is not None and (out <= lower if strict else out < lower):
+        raise InputError(name, f"must be {'>' if strict else '>='} {lower:g}, got {out!r}")
+    return out
+
+
+def _integer(name: str, value) -> int:
+    """``value`` as an int, refusing booleans, floats (also 2.0) and anything else."""
+    if isinstance(value, np.ndarray) and value.ndim == 0:
+        value = value[()]
+    if not isinstance(value, numbers.Integral) or isinstance(value, (bool, np.bool_)):
+        raise InputError(name, f"must be an integer, got {value!r}")
+    return int(value)
+
+
+def _axis(value) -> int:
+    """A principal-axis index: the int 0 (principal axis 1) or 1 (principal axis 2)."""
+    if not (
+        isinstance(value, (int, np.integer)) and not isinstance(value, (bool, np.bool_))
+    ) or value not in (
+        0,
+        1,
+    ):
+        raise InputError(
+            "axis", f"must be the int 0 (principal axis 1) or 1 (principal axis 2), got {value!r}"
+        )
+    return int(value)
+
+
+def _array(name: str, value, *, finite: bool = True, empty: bool = False) -> np.ndarray:
+    """``value`` as a float ndarray (any shape), refusing strings, booleans, objects,
+    non-finite entries (unless ``finite=False``) and empty arrays (unless ``empty``)."""
+    if isinstance(value, (str, bytes, bool, np.bool_)) or value is None:
+        raise InputError(name, f"must be a real number or an array of them, got {value!r}")
+    try:
+        raw = np.asarray(value)
+    except ValueError as exc:  # ragged nested sequences
+        raise InputError(name, f"must be a real number or a regular array of them ({exc})") from None
+    if raw.dtype.kind not in "iuf":
+        raise InputError(
+            name, f"must be a real number or an array of them, got dtype {raw.dtype} ({value!r:.60})"
+        )
+    if raw.size == 0 and not empty:
+        raise InputError(name, "must not be empty")
+    arr = raw.astype(float, copy=False)
+    if finite:
+        bad = ~np.isfinite(arr)
+        if bad.any():
+            index = tuple(int(i) for i in np.argwhere(bad)[0])
+            where = f" at index {index}" if arr.ndim else ""
+            raise InputError(name, f"must be finite, got {arr[index]!r}{where}")
+    return arr
+
+
+def _name(value) -> str:
+    if not isinstance(value, str):
+        raise InputError("name", f"must be a str, got {value!r}")
+    return value
 
 
 @dataclass(frozen=True)
@@ -59,22 +142,38 @@ class Material:
     _cubic: tuple = field(init=False, repr=False, compare=False)
 
     def __post_init__(self):
-        E_e, E_p = positive("E_e", self.E_e), float(real("E_p", self.E_p))
+        E_e = _scalar("E_e", self.E_e, lower=0.0, strict=True)
+        E_p = _scalar("E_p", self.E_p)
         if not 0 <= E_p < E_e:
-            raise InputError("E_p", f"must satisfy 0 <= E_p < E_e, got {E_p!r}")
-        e1, ey, e2 = (positive(n, getattr(self, n)) for n in ("eps_y1", "eps_y", "eps_y2"))
+            raise InputError("E_p", f"must satisfy 0 <= E_p < E_e = {E_e!r}, got {E_p!r}")
+        e1, ey, e2 = (
+            _scalar(n, getattr(self, n), lower=0.0, strict=True) for n in ("eps_y1", "eps_y", "eps_y2")
+        )
         if not e1 < ey < e2:
             raise InputError("eps_y", f"need eps_y1 < eps_y < eps_y2, got {e1!r}, {ey!r}, {e2!r}")
-        if not positive("eps_rupture", self.eps_rupture) > e2:
-            raise InputError("eps_rupture", f"must exceed eps_y2 = {e2!r}")
-        if not 0 <= self.poisson < 0.5:
-            raise InputError("poisson", f"must lie in [0, 0.5), got {self.poisson!r}")
+        rupture = _scalar("eps_rupture", self.eps_rupture)
+        if not rupture > e2:
+            raise InputError("eps_rupture", f"must exceed eps_y2 = {e2!r}, got {rupture!r}")
+        poisson = _scalar("poisson", self.poisson)
+        if not 0 <= poisson < 0.5:
+            raise InputError("poisson", f"must lie in [0, 0.5), got {poisson!r}")
+        _name(self.name)
+        values = dict(E_e=E_e, E_p=E_p, eps_y=ey, eps_y1=e1, eps_y2=e2, eps_rupture=rupture, poisson=poisson)
+        for key, value in values.items():  # plain floats (np.float32 etc. are not kept)
+            object.__setattr__(self, key, value)
         # B.1 slope E_e and B.3 value at eps_y1 give c and d; B.2 and B.4 a and b
         delta = e2 - e1
         lhs = np.array([[3 * delta**2, 2 * delta], [delta**3, delta**2]])
         rhs = np.array([E_p - E_e, E_e * ey + E_p * (e2 - ey) - E_e * e1 - E_e * delta])
         a, b = np.linalg.solve(lhs, rhs)
         object.__setattr__(self, "_cubic", (float(a), float(b), E_e, E_e * e1))
+
+    def __repr__(self):
+        return (
+            f"Material({self.name or 'custom'!r}: E_e={self.E_e:.4g} Pa, E_p={self.E_p:.4g} Pa, "
+            f"eps_y={self.eps_y:g} (blend {self.eps_y1:g} to {self.eps_y2:g}), "
+            f"eps_rupture={self.eps_rupture:g}, poisson={self.poisson:g})"
+        )
 
     @property
     def a(self) -> float:
@@ -107,7 +206,7 @@ class Material:
         return float(self.stress(self.eps_rupture))
 
     def _branches(self, strain):
-        eps = np.abs(np.asarray(strain, dtype=float))
+        eps = np.abs(strain)
         t = eps - self.eps_y1
         a, b, c, d = self._cubic
         elastic = eps <= self.eps_y1
@@ -115,7 +214,13 @@ class Material:
         return eps, t, elastic, plastic, (a, b, c, d)
 
     def stress(self, strain):
-        """Stress (Pa) at ``strain``; vectorised, odd in the strain."""
+        """Stress (Pa) at ``strain``: element-wise over an array of any shape, odd in the strain.
+
+        Strings, booleans and other non-numbers raise InputError. Non-finite strains are
+        not refused: they give non-finite stresses (the finite-element model relies on this
+        to report a diverged Newton iterate as a ConvergenceError, not as bad input).
+        """
+        strain = _array("strain", strain, finite=False, empty=True)
         eps, t, elastic, plastic, (a, b, c, d) = self._branches(strain)
         blend = ((a * t + b) * t + c) * t + d
         line = self.E_e * self.eps_y + self.E_p * (eps - self.eps_y)
@@ -124,7 +229,9 @@ class Material:
         return out[()] if out.ndim == 0 else out
 
     def tangent(self, strain):
-        """Tangent modulus dσ/dε (Pa) at ``strain``; vectorised, even."""
+        """Tangent modulus dσ/dε (Pa) at ``strain``: element-wise, even in the strain
+        (inputs as for `stress`)."""
+        strain = _array("strain", strain, finite=False, empty=True)
         eps, t, elastic, plastic, (a, b, c, _) = self._branches(strain)
         out = np.where(elastic, self.E_e, np.where(plastic, self.E_p, (3 * a * t + 2 * b) * t + c))
         return out[()] if out.ndim == 0 else out
@@ -150,14 +257,15 @@ class Material:
         return float(self.eps_y1 + lo), float(self.eps_y1 + hi)
 
     def secant(self, strain):
-        """Secant modulus σ/ε (Pa); ``E_e`` at zero strain."""
-        strain = np.asarray(strain, dtype=float)
+        """Secant modulus σ/ε (Pa), ``E_e`` at zero strain: element-wise, even in the strain
+        (inputs as for `stress`)."""
+        strain = _array("strain", strain, finite=False, empty=True)
         safe = np.where(strain == 0.0, 1.0, strain)
         out = np.where(strain == 0.0, self.E_e, self.stress(safe) / safe)
         return out[()] if out.ndim == 0 else out
 
 
-#: Table B.1 of seed 003 (MPa in the table, Pa here).
+#: Pino Vidal (2021), Table B.1 (MPa in the table, Pa here).
 _PRESETS = {
     "steel": dict(
         E_e=196603.774e6, E_p=5228.162e6, eps_y=0.0053, eps_y1=0.005, eps_y2=0.006, eps_rupture=0.082
@@ -170,8 +278,7 @@ _PRESETS = {
 
 
 def material(name: str) -> Material:
-    """Wire material of seed 003 Table B.1: ``"steel"`` (galvanised) or ``"aluminium"``."""
-    try:
-        return Material(**_PRESETS[name], name=name)
-    except KeyError:
-        raise InputError("name", f"unknown material {name!r}; known: {', '.join(_PRESETS)}") from None
+    """Wire material of Pino Vidal (2021), Table B.1: ``"steel"`` (galvanised) or ``"aluminium"``."""
+    if not isinstance(name, str) or name not in _PRESETS:
+        raise InputError("name", f"unknown material {name!r}; known: {', '.join(_PRESETS)}")
+    return Material(**_PRESETS[name], name=name)

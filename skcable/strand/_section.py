@@ -1,55 +1,107 @@
-r"""Section properties of an intact or damaged strand (seed 003 §3.1–3.2, annex A).
+r"""Section properties of an intact or damaged strand (Pino Vidal (2021), §3.1–3.2, annex A).
 
 With every helical wire a fibre of area A at (y, z) inclined at the lay
-angle alpha (the core straight, alpha = 0), seed 003 eqs. 3.11–3.13 give
+angle alpha (the core straight, alpha = 0), Pino Vidal (2021), eqs. 3.11–3.13, give
 
-.. math::
-    I_\mathrm{max} = \sum_i A_i d_i^2 \cos^3\alpha_i + \sum_i I_{w,i}\cos\alpha_i,
-    \qquad I_\mathrm{min} = \sum_i I_{w,i}\cos\alpha_i, \qquad I_w = \pi r^4/4,
+$$
+I_\mathrm{stick} = \sum_i A_i d_i^2 \cos^3\alpha_i + \sum_i I_{w,i}\cos\alpha_i,
+\qquad I_\mathrm{slip} = \sum_i I_{w,i}\cos\alpha_i, \qquad I_w = \pi r^4/4,
+$$
 
-where d_i is the distance to the bending axis through the net centroid
-(stick: the wires act as one section), and ``I_min`` is the full-slip value
-(every wire bends about its own axis). The centroid uses plain wire areas
-(Table 3.2: ``z_c = -r/3`` for one broken wire, ``-r sqrt(12/25)`` for two).
-Principal axes diagonalise the stick tensor; principal axis 1 carries the
-larger ``I_max``. ``EA = E sum A cos^3 alpha`` (Papailiou eq. 2.20).
+where d_i is the distance to the bending axis through the net centroid.
+``I_stick`` is the stick value (the wires act as one section; the thesis's
+"I máx") and ``I_slip`` the full-slip value (every wire bends about its own
+axis; "I mín"). Both are given about the two principal axes of the stick
+section: they are not a largest and a smallest principal inertia. The
+centroid uses plain wire areas (Table 3.2: ``z_c = -r/3`` for one broken
+wire, ``-r sqrt(12/25)`` for two). Principal axes diagonalise the stick
+tensor; principal axis 1 carries the larger stick inertia. ``EA = E sum A
+cos^3 alpha`` (Papailiou (1997), eq. 2.20 of the thesis).
 
-Seed 003's annex A "Iyy" column is principal axis 1 here; its "Izz" column
+Axes are numbered 1 and 2 (as in the CLI's and the VTK files' ``curvature_1``,
+``EI_stick_1_Nm2``); arrays over the axes and the ``axis`` arguments of the
+Python API index them from 0: index 0 is principal axis 1, index 1 is
+principal axis 2.
+
+If every intact wire lies on one line (one helical wire left besides the core,
+two opposite ones, or none), no wire has a lever about the principal axis along
+that line: there is no composite bending about it, ``I_stick == I_slip`` there
+exactly and `Section.composite_bending` is False for it.
+
+The thesis's annex A "Iyy" column is principal axis 1 here; its "Izz" column
 applies the lay factor cos^3 alpha to the core's parallel-axis term as well
 (a difference of ``A z_c^2 (1 - cos^3 alpha)``, 0.03–1 %); the rows for three
 broken wires of the 3.1 and 3.37 mm strands are typos (tests/strand).
+
+References: S. Pino Vidal, "Rigidez a flexión en cables: análisis numérico",
+Universidad de Chile, 2021; K. O. Papailiou, "On the bending stiffness of
+transmission line conductors", IEEE Trans. Power Delivery 12(4), 1997;
+J. Lanteigne, "Theoretical estimation of the response of helically armored
+cables to tension, torsion, and bending", J. Appl. Mech. 52, 1985.
 """
 
 from __future__ import annotations
 
+import warnings
 from functools import cached_property
 from math import pi
 
 import numpy as np
 
 from skcable.errors import InputError
+from skcable.strand._material import _axis
 
 __all__ = ["Section"]
+
+#: a principal stick inertia at or below this fraction of the tensor's trace is a
+#: round-off of zero (all intact wires on one line); a discrete wire geometry has no
+#: genuine values this small
+_DEGENERATE = 1e-12
+
+
+def _deprecated(old: str, new: str):
+    def getter(self):
+        warnings.warn(
+            f"{type(self).__name__}.{old} is deprecated: use {new} (the same values)",
+            DeprecationWarning,
+            stacklevel=2,
+        )
+        return getattr(self, new)
+
+    getter.__doc__ = f"Deprecated alias of `{new}` (the stick/slip pair is not a max/min pair)."
+    return property(getter)
 
 
 class Section:
     """Section properties of ``strand`` (SI units: m, m², m⁴, N, N·m²).
+
+    Arrays of two entries are over the principal axes: index 0 is principal
+    axis 1 (the larger stick inertia), index 1 is principal axis 2.
+
+    Parameters
+    ----------
+    strand : Strand
+        The strand (intact or with broken wires).
 
     Attributes
     ----------
     area : float
         Net area (intact wires), m².
     centroid : (float, float)
-        (y_c, z_c) of the net section, plain areas.
+        (y_c, z_c) of the net section, plain areas (m).
     principal_angle : float
         Angle from +y to principal axis 1, toward +z (rad).
     principal_axes : ndarray (2, 2)
         Rows: unit vectors (y, z) of principal axes 1 and 2.
-    I_max, I_min : ndarray (2,)
+    I_stick, I_slip : ndarray (2,)
         Stick and full-slip second moments about principal axes 1 and 2,
-        lay factors included (m⁴).
-    EA, EI_max, EI_min : float, ndarray (2,), ndarray (2,)
-        The same times the elastic modulus E_e.
+        lay factors included (m⁴). Not principal maxima and minima: both
+        entries of ``I_stick`` are stick values.
+    composite_bending : ndarray of bool (2,)
+        False about a principal axis along which every intact wire lies (no
+        wire has a lever, ``I_stick == I_slip`` exactly).
+    EA, EI_stick, EI_slip : float, ndarray (2,), ndarray (2,)
+        The same times the elastic modulus E_e (N, N·m²).
     axial_torsion_coupling, torsional_stiffness : float
         ``sum E A R sin(alpha) cos^2(alpha)`` (signed by lay direction, N·m)
         and ``sum E A R^2 sin^2(alpha) cos(alpha) + sum G J_w cos(alpha)``
@@ -57,6 +109,10 @@ class Section:
     """
 
     def __init__(self, strand):
+        from skcable.strand._geometry import Strand
+
+        if not isinstance(strand, Strand):
+            raise InputError("strand", f"must be a Strand (e.g. strand.preset('steel-9.5')), got {strand!r}")
         self.strand = strand
         self.wires = w = strand.wires()
         self._alive = w.intact
@@ -69,10 +125,12 @@ class Section:
 
     @cached_property
     def area(self) -> float:
+        """Net area of the intact wires (m²)."""
         return self._sum(self.wires.area)
 
     @cached_property
     def centroid(self) -> tuple[float, float]:
+        """(y_c, z_c) of the net section, plain wire areas (m)."""
         a = np.where(self._alive, self.wires.area, 0.0)
         return float(a @ self.wires.y / a.sum()), float(a @ self.wires.z / a.sum())
 
@@ -90,61 +148,88 @@ class Section:
 
     @cached_property
     def _principal(self):
-        values, vectors = np.linalg.eigh(self._stick_tensor)  # ascending
+        tensor = self._stick_tensor
+        values, vectors = np.linalg.eigh(tensor)  # ascending
         lever_1, lever_2 = vectors[:, 1], vectors[:, 0]
-        if values[1] - values[0] <= 1e-12 * values[1]:  # isotropic: axis 1 = y
+        if values[1] - values[0] <= 1e-12 * values[1]:  # isotropic (or no lever at all): axis 1 = y
             lever_1, lever_2 = np.array([0.0, 1.0]), np.array([1.0, 0.0])
             values = np.array([values[1], values[1]])
         rotate = np.array([[0.0, 1.0], [-1.0, 0.0]])  # lever (height) -> axis direction
         axes = np.vstack([rotate @ lever_1, rotate @ lever_2])
         axes[axes @ np.array([1.0, 1e-9]) < 0] *= -1  # orientation: toward +y (or +z)
-        return np.array([values[1], values[0]]), axes
+        principal = np.array([values[1], values[0]])
+        composite = principal > _DEGENERATE * np.trace(tensor)
+        return np.where(composite, principal, 0.0), axes, composite
 
     @property
     def principal_axes(self) -> np.ndarray:
+        """Unit vectors (y, z) of principal axes 1 and 2 (rows 0 and 1)."""
         return self._principal[1]
 
     @property
     def principal_angle(self) -> float:
+        """Angle from +y to principal axis 1, toward +z (rad)."""
         y, z = self.principal_axes[0]
         return float(np.arctan2(z, y))
 
+    @property
+    def composite_bending(self) -> np.ndarray:
+        """Per principal axis (index 0: axis 1), whether some intact wire has a lever about it.
+
+        False where every intact wire lies on the axis: bending about it is the
+        wires' own bending only, stick and slip coincide (``I_stick == I_slip``).
+        """
+        return self._principal[2].copy()
+
     def lever(self, axis: int) -> np.ndarray:
-        """Signed distance of every wire from principal axis ``axis`` (0 or 1),
-        measured through the centroid (m)."""
-        if axis not in (0, 1):
-            raise InputError("axis", f"must be 0 or 1 (principal axis 1 or 2), got {axis!r}")
-        t = self.principal_axes[axis]
+        """Signed distance (m) of every wire from a principal axis through the centroid.
+
+        ``axis`` is the int 0 for principal axis 1 or 1 for principal axis 2. The
+        sign is that of the component along the axis direction turned by +90°.
+        """
+        t = self.principal_axes[_axis(axis)]
         normal = np.array([-t[1], t[0]])
         y_c, z_c = self.centroid
         return (self.wires.y - y_c) * normal[0] + (self.wires.z - z_c) * normal[1]
 
     @property
-    def I_max(self) -> np.ndarray:
+    def I_stick(self) -> np.ndarray:
+        """Stick second moments about principal axes 1 and 2 (index 0, 1), m⁴."""
         return self._principal[0] + self._own
 
     @property
-    def I_min(self) -> np.ndarray:
+    def I_slip(self) -> np.ndarray:
+        """Full-slip second moments (the wires' own, lay factor cos α) about principal axes 1, 2, m⁴."""
         return np.array([self._own, self._own])
 
     @property
     def E(self) -> float:
+        """Elastic modulus of the wires, ``E_e`` (Pa)."""
         return self.strand.material.E_e
 
     @property
     def EA(self) -> float:
+        """Axial stiffness ``E sum A cos^3 alpha`` of the intact wires (N)."""
         return self.E * self._sum(self.wires.area * self._axial_factor)
 
     @property
-    def EI_max(self) -> np.ndarray:
-        return self.E * self.I_max
+    def EI_stick(self) -> np.ndarray:
+        """``E_e I_stick`` about principal axes 1 and 2 (index 0, 1), N·m²."""
+        return self.E * self.I_stick
 
     @property
-    def EI_min(self) -> np.ndarray:
-        return self.E * self.I_min
+    def EI_slip(self) -> np.ndarray:
+        """``E_e I_slip`` about principal axes 1 and 2 (index 0, 1), N·m²."""
+        return self.E * self.I_slip
+
+    I_max = _deprecated("I_max", "I_stick")
+    I_min = _deprecated("I_min", "I_slip")
+    EI_max = _deprecated("EI_max", "EI_stick")
+    EI_min = _deprecated("EI_min", "EI_slip")
 
     @property
     def axial_torsion_coupling(self) -> float:
+        """``sum E A R sin(alpha) cos^2(alpha)``, signed by the lay direction (N·m)."""
         w = self.wires
         return self.E * self._sum(
             w.direction * w.area * w.radius * np.sin(w.lay_angle) * np.cos(w.lay_angle) ** 2
@@ -152,32 +237,43 @@ class Section:
 
     @property
     def torsional_stiffness(self) -> float:
+        """``sum E A R^2 sin^2(alpha) cos(alpha) + sum G J_w cos(alpha)`` (N·m²)."""
         w = self.wires
         helical = self.E * self._sum(w.area * w.radius**2 * np.sin(w.lay_angle) ** 2 * np.cos(w.lay_angle))
         own = self.strand.material.G * self._sum(2.0 * w.inertia * self._own_factor)
         return helical + own
 
-    # --- Lanteigne (1985) / Papailiou (1997), eqs. 2.12-2.13 -----------------
+    # --- Lanteigne (1985) / Papailiou (1997): Pino Vidal (2021), eqs. 2.12-2.13 ------
     def _require_intact(self):
         if not self._alive.all():
             raise InputError("strand", "the Lanteigne/Papailiou formulas hold for undamaged strands only")
 
     @property
-    def EI_max_lanteigne(self) -> float:
-        """Eq. 2.12: ``sum n E A (R^2 + r^2/2)/2 cos^3(beta)`` over core and layers."""
+    def EI_stick_lanteigne(self) -> float:
+        """Eq. 2.12: ``sum n E A (R^2 + r^2/2)/2 cos^3(beta)`` over core and layers (N·m², intact strands)."""
         self._require_intact()
         w = self.wires
         r = w.diameter / 2
         return self.E * float(np.sum(pi * r**2 * (w.radius**2 + r**2 / 2) / 2 * np.cos(w.lay_angle) ** 3))
 
     @property
-    def EI_min_lanteigne(self) -> float:
-        """Eq. 2.13: ``sum n E I cos(beta)``."""
+    def EI_slip_lanteigne(self) -> float:
+        """Eq. 2.13: ``sum n E I cos(beta)`` (N·m², intact strands)."""
         self._require_intact()
         return self.E * self._own
 
+    EI_max_lanteigne = _deprecated("EI_max_lanteigne", "EI_stick_lanteigne")
+    EI_min_lanteigne = _deprecated("EI_min_lanteigne", "EI_slip_lanteigne")
+
     def __repr__(self):
+        w = self.wires
+        y_c, z_c = self.centroid
+        stick, slip = self.I_stick, self.I_slip
+        label = self.strand.name or "strand"
         return (
-            f"Section({self.strand.name or 'strand'}: area={self.area:.6g} m2, centroid={self.centroid}, "
-            f"I_max={self.I_max}, I_min={self.I_min})"
+            f"Section({label!r}: {int(w.intact.sum())} of {w.intact.size} wires intact, "
+            f"area={self.area:.4g} m², centroid=({y_c:.4g}, {z_c:.4g}) m, "
+            f"principal axis 1 at {np.degrees(self.principal_angle):.4g}° from +y, "
+            f"I_stick=({stick[0]:.4g}, {stick[1]:.4g}) m⁴, I_slip=({slip[0]:.4g}, {slip[1]:.4g}) m⁴, "
+            f"EA={self.EA:.4g} N)"
         )

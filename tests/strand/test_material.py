@@ -79,3 +79,9 @@ def test_vectorised_and_bad_input():
         strand.material("copper")
     with pytest.raises(InputError, match="eps_y"):
         strand.Material(2e11, 1e9, eps_y=0.004, eps_y1=0.005, eps_y2=0.006, eps_rupture=0.08)
+
+
+def test_repr_is_one_short_line_with_units():
+    text = repr(strand.material("steel"))
+    assert "\n" not in text and len(text) < 200
+    assert "'steel'" in text and "Pa" in text and "eps_rupture=0.082" in text
