@@ -44,7 +44,7 @@ def test_cable_profile_and_moment_curvature():
     ax = plot.moment_curvature(law)
     kappa, moment = ax.lines[0].get_xdata(), ax.lines[0].get_ydata()
     stick = kappa < law.kappa_m[0]
-    np.testing.assert_allclose(moment[stick], law.EI_max[0] * kappa[stick], rtol=1e-9)  # stick branch
+    np.testing.assert_allclose(moment[stick], law.EI_stick[0] * kappa[stick], rtol=1e-9)  # stick branch
 
 
 def test_render_strand_off_screen(tmp_path, curve):

@@ -3,7 +3,7 @@ wire materials and the stick/slip bending law (seed 003 chapters 2-3,
 annexes A and B). SI units: m, N, Pa.
 """
 
-from skcable.strand._bending import BendingLaw
+from skcable.strand._bending import BendingLaw, critical_curvature
 from skcable.strand._choice import Analysis, ClosedFormCurve, analyse, axial_force
 from skcable.strand._geometry import Layer, Strand, Wires, preset
 from skcable.strand._material import Material, material
@@ -59,6 +59,7 @@ __all__ = [
     "StrandModel",
     "Wires",
     "capacity_curve",
+    "critical_curvature",
     "material",
     "preset",
 ]

@@ -24,7 +24,7 @@ def test_straight_section_gives_textbook_euler_bernoulli_matrices():
     _, K, _ = model.assemble(U)
     _, K0, _ = model.assemble(model.uniform(0.0))  # no tension: the bending matrix alone
     sec = STRAIGHT.section()
-    EI, N, h = sec.EI_max[0], sec.EA * strain, L / 2
+    EI, N, h = sec.EI_stick[0], sec.EA * strain, L / 2
     # Hermite element: EI (bending) + N/(30 h) (geometric), dofs (v, v') per node
     kb = (
         EI
@@ -98,7 +98,7 @@ def test_clamped_tensioned_beam_under_transverse_load():
     L, q, strain = 1.0, 1.0, 0.001
     model = strand.StrandModel(STRAIGHT, L, n_elements=64, grading=0.0, terms=[strand.DistributedLoad(qy=q)])
     U = model.solve(strain).dofs
-    N, EI = STRAIGHT.section().EA * strain, STRAIGHT.section().EI_max[0]
+    N, EI = STRAIGHT.section().EA * strain, STRAIGHT.section().EI_stick[0]
     k = np.sqrt(N / EI)
     x = np.array([0.05, 0.25, 0.5])
     A = q * L / (2 * N * k * np.sinh(k * L / 2))

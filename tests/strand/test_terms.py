@@ -38,7 +38,7 @@ def test_analyst_foundation_term_matches_the_closed_form_and_the_ready_term():
     L, strain, q, k = 1.0, 0.001, 1.0, 2e4
     sec = STRAIGHT.section()
     x = np.array([0.03, 0.1, 0.25, 0.5])
-    exact = _beam_on_foundation(sec.EI_max[0], sec.EA * strain, k, q, L, x)
+    exact = _beam_on_foundation(sec.EI_stick[0], sec.EA * strain, k, q, L, x)
     load = strand.DistributedLoad(qy=q)
     for term in (my_foundation(k), strand.ElasticFoundation(ky=k)):
         model = strand.StrandModel(STRAIGHT, L, n_elements=64, grading=0.0, terms=[term, load])

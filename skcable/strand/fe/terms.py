@@ -48,6 +48,7 @@ from skfem import BilinearForm, LinearForm, asm
 from skcable._checks import nonnegative, positive, real
 from skcable.errors import InputError
 from skcable.fe.assembly import contract
+from skcable.strand._bending import critical_curvature
 from skcable.strand.fe.slip import SlipLaw, slip_law
 
 __all__ = [
@@ -142,14 +143,10 @@ class SectionTerm(Term):
 @lru_cache(maxsize=32)
 def critical_curvature_table(strand, mu: float):
     """κ_m of both principal axes on a strain grid, and its PCHIP interpolant (built once per
-    strand and friction): ``(grid, table (2, n), spline, slope)``."""
-    from skcable.strand._bending import BendingLaw
-
+    strand and friction, one vectorised call of Cardou's law): ``(grid, table (2, n), spline, slope)``."""
     section = strand.section()
     grid = np.linspace(0.0, 0.999 * strand.material.eps_rupture, 201)
-    table = np.array(
-        [BendingLaw(section, mu=mu, axial_strain=e).kappa_m if e > 0 else np.zeros(2) for e in grid]
-    ).T
+    table = critical_curvature(section, mu, grid)
     spline = PchipInterpolator(grid, table, axis=1)
     return grid, table, spline, spline.derivative()
 
