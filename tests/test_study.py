@@ -433,3 +433,19 @@ def test_shipped_study_files_load():
         for name in ("seed003_tables_4_1_4_2.toml", "pino_vidal_2021_tables_4_1_4_2.toml")
     )
     assert old["cases"] == new["cases"] and len(new["cases"]) == 16  # the former name still works
+
+
+def test_cli_reports_a_damaged_entry_in_one_line_and_recomputes_it(tmp_path, capsys):
+    path = write_study(
+        tmp_path,
+        f'model = "cable_solve"\noutput = "{tmp_path / "t.csv"}"\ncache = "{tmp_path / "c"}"\n' + GOOD_GRID,
+    )
+    assert cli.main(["study", "run", str(path), "--serial", "--no-progress"]) == 0
+    entry = next((tmp_path / "c").glob("*.json"))
+    entry.write_bytes(b"")  # what a kill during the old non-atomic write left
+    capsys.readouterr()
+    assert cli.main(["study", "run", str(path), "--serial", "--no-progress"]) == 0
+    out, err = capsys.readouterr()
+    assert err.count("\n") == 1 and err.startswith("skcable: warning: study cache:") and str(entry) in err
+    assert "0 read from the cache" in out
+    assert pd.read_csv(tmp_path / "t.csv").H[0] == cable.catenary(100.0, 0.0, 1.0, sag=5.0).H
