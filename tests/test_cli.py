@@ -1,17 +1,30 @@
-"""The command line: readable output, JSON equal to the API, files written, one-line errors."""
+"""The command line: readable output, JSON equal to the API, files written atomically, one-line
+errors naming the flag (never a traceback), and exit statuses that say what happened."""
 
+import argparse
+import dataclasses
 import json
+import os
 import subprocess
 import sys
+import warnings
+from pathlib import Path
 
 import numpy as np
 import pytest
 
-from skcable import cable, strand
+import skcable
+from skcable import cable, cli, strand
+from skcable.errors import ConvergenceError
+
+ROOT = Path(skcable.__file__).resolve().parents[1]
+ENV = os.environ | {"PYTHONPATH": str(ROOT)}  # subprocesses import this checkout, whatever their cwd
 
 
 def run(*args, cwd=None):
-    return subprocess.run([sys.executable, "-m", "skcable", *args], capture_output=True, text=True, cwd=cwd)
+    return subprocess.run(
+        [sys.executable, "-m", "skcable", *args], capture_output=True, text=True, cwd=cwd, env=ENV
+    )
 
 
 def as_json(*args):
@@ -20,16 +33,29 @@ def as_json(*args):
     return json.loads(out.stdout)
 
 
-def test_seeds_table():
-    out = run("seeds")
-    assert out.returncode == 0 and "85743.7" in out.stdout
+def main(capsys, *args):
+    """The command line in this process: (status, stdout, stderr)."""
+    status = cli.main([str(a) for a in args])
+    out, err = capsys.readouterr()
+    return status, out, err
+
+
+def test_examples_table_cites_its_sources(capsys):
+    status, out, err = main(capsys, "examples")
+    assert status == 0 and err == ""
+    assert 'The lecture notes "Cables":' in out and 'J.M. Goicolea, "Cálculo de cables", UPM, 2012:' in out
+    assert "seed" not in out.lower()
+    ours = f"{float(cable.parabola(800, -20, 20, low=-30).H):16.10g}"
+    assert "85743.7" in out and ours in out
+    for alias in ("seeds", "worked-examples"):  # the old name keeps working
+        assert main(capsys, alias) == (0, out, "")
 
 
 def test_closed_forms_as_json(tmp_path):
     values = as_json("catenary", "--span", "800", "--dh", "-20", "--w", "20", "--low", "-30")
-    assert values["H"] == pytest.approx(85819.2, abs=0.05)  # seed 000 ex. 4 to full precision
+    assert values["H"] == pytest.approx(85819.2, abs=0.05)  # lecture notes "Cables", ex. 4, full precision
     values = as_json("parabola", "--span", "800", "--dh", "-20", "--w", "20", "--low", "-30")
-    assert values["H"] == pytest.approx(85743.7, abs=0.05)  # seed 000 ex. 3
+    assert values["H"] == pytest.approx(85743.7, abs=0.05)  # lecture notes "Cables", ex. 3
     values = as_json(
         "elastic-catenary",
         "--span",
@@ -47,11 +73,11 @@ def test_closed_forms_as_json(tmp_path):
     )
     assert values["H"] == pytest.approx(cable.elastic_catenary(400, 10, 16, 3e7, length=401.2).H, rel=1e-12)
     assert (tmp_path / "e.vtu").stat().st_size > 1000
+    assert [p.name for p in tmp_path.iterdir()] == ["e.vtu"]  # no temporary file left
 
 
-def test_funicular_seed_example():
-    values = as_json(
-        "funicular",
+def test_funicular_worked_example(capsys):
+    args = [
         "--B",
         "20",
         "2",
@@ -67,22 +93,27 @@ def test_funicular_seed_example():
         "-100",
         "5",
         "-75",
-    )
-    np.testing.assert_allclose(values["T"], [233.04, 205.38, 205.66, 237.85], atol=0.005)  # seed 000 ex. 1
+    ]
+    status, out, _ = main(capsys, "funicular", *args, "--json")
+    sol = cable.funicular((20, 2), [5, 6, 6, 5], [(5, -75), (10, -100), (5, -75)])
+    assert status == 0 and json.loads(out)["T"] == sol.T.tolist()
+    np.testing.assert_allclose(json.loads(out)["T"], [233.04, 205.38, 205.66, 237.85], atol=0.005)  # ex. 1
 
 
-def test_readable_table():
-    out = run("catenary", "--span", "200", "--w", "1", "--sag", "20")
-    assert out.returncode == 0
-    rows = dict(map(str.strip, line.split(" = ")) for line in out.stdout.strip().splitlines())
-    assert round(float(rows["H"]), 4) == 253.2649  # seed 001 ex. 5
+def test_readable_table(capsys):
+    status, out, _ = main(capsys, "catenary", "--span", "200", "--w", "1", "--sag", "20")
+    assert status == 0
+    rows = dict(map(str.strip, line.split(" = ")) for line in out.strip().splitlines())
+    assert float(rows["H"]) == float(f"{cable.catenary(200, 0, 1, sag=20).H:.10g}")
+    assert round(float(rows["H"]), 4) == 253.2649  # Goicolea 2012, ex. 5
 
 
-def test_strand_section_json_is_the_api():
-    values = as_json("strand", "section", "--preset", "steel-9.5", "--damage", "1")
+def test_strand_section_json_is_the_api(capsys):
+    status, out, _ = main(capsys, "strand", "section", "--preset", "steel-9.5", "--damage", "1", "--json")
+    values = json.loads(out)
     section = strand.preset("steel-9.5").damaged(1).section()
-    assert values["EA_N"] == section.EA and values["EI_stick_1_Nm2"] == section.EI_max[0]
-    # one of six outer wires (helix radius d) missing: z_c = -d/6 (seed 003 Table 3.2: -r/3, r = d/2)
+    assert status == 0 and values["EA_N"] == section.EA and values["EI_stick_1_Nm2"] == section.EI_max[0]
+    # one of six outer wires (helix radius d) missing: z_c = -d/6 (Pino Vidal 2021, Table 3.2: -r/3, r = d/2)
     assert values["centroid_z_m"] == pytest.approx(-3.1e-3 / 6)
 
 
@@ -115,46 +146,209 @@ def test_strand_capacity_writes_csv_vtk_png(tmp_path):
         "capacity.png",
         f"{stem}_curvature.png",
     } <= names
+    assert all(Path(p).is_file() for p in values["written"])
+    assert {p.name for p in tmp_path.iterdir() if p.suffix != ".vtu"} == names  # nothing else (no stage)
     table = np.genfromtxt(tmp_path / f"{stem}.csv", delimiter=",", names=True)
     assert values["rupture_force_N"] == pytest.approx(table["force_N"][-1])
     assert "%" in out.stderr  # the progress bar
 
 
-def test_strand_capacity_thesis_reading_equals_the_api():
-    from skcable import strand
-
+def test_strand_capacity_thesis_reading_equals_the_api(capsys):
     args = ("--damage", "2", "--slip", "none", "--length", "0.3", "--n-elements", "16", "--n-steps", "8")
-    out = run("strand", "capacity", *args, "--damage-load", "sinusoidal", "--no-progress", "--json")
-    assert out.returncode == 0, out.stderr
+    status, out, err = main(
+        capsys, "strand", "capacity", *args, "--damage-load", "sinusoidal", "--no-progress", "--json"
+    )
+    assert status == 0, err
     model = strand.StrandModel(
         strand.preset("steel-9.5").damaged(2), 0.3, n_elements=16, damage_load="sinusoidal"
     )
     curve = model.capacity_curve(n_steps=8)
-    assert json.loads(out.stdout)["K_Leq_N"] == pytest.approx(curve.K_Leq, rel=1e-12)
+    assert json.loads(out)["K_Leq_N"] == pytest.approx(curve.K_Leq, rel=1e-12)
+
+
+@pytest.mark.parametrize("converged", [3, 0])
+def test_no_convergence_writes_what_converged_and_exits_3(tmp_path, capsys, monkeypatch, converged):
+    # a curve that stops after `converged` steps: the library's own curve, cut short as a solver that
+    # gives up there would return it (a real stop takes minutes; the CLI's handling is tested here)
+    real, stopped = strand.StrandModel.capacity_curve, []
+
+    def stopping(self, max_strain=None, n_steps=None, **kwargs):
+        curve = real(self, max_strain, n_steps, **kwargs)
+        assert kwargs["on_failure"] == "stop"  # the CLI asks for the converged part
+        k = converged
+        stopped.append(
+            dataclasses.replace(
+                curve,
+                strain=curve.strain[: k + 1],
+                force=curve.force[: k + 1],
+                slip_fraction=curve.slip_fraction[: k + 1],
+                steps=curve.steps[:k],
+                ruptured=False,
+                failure=f"no convergence beyond strain {curve.strain[k]:.6g} after 6 cutbacks",
+            )
+        )
+        return stopped[-1]
+
+    monkeypatch.setattr(strand.StrandModel, "capacity_curve", stopping)
+    flags = ["--length", "0.3", "--n-elements", "8", "--n-steps", "8", "--no-progress", "--json"]
+    status, out, err = main(capsys, "strand", "capacity", "--damage", "1", *flags, "--out", tmp_path / "r")
+    curve = stopped[0]
+    assert status == cli.EXIT_NO_CONVERGENCE
+    assert err.count("\n") == 1 and err.startswith("skcable: error: no convergence") and curve.failure in err
+    if not converged:  # nothing to write
+        assert out == "" and not (tmp_path / "r").exists()
+        return
+    assert str(tmp_path / "r") in err
+    values = json.loads(out)
+    assert values["ruptured"] is False and values["last_strain"] == float(curve.strain[-1])
+    assert values["K_Leq_N"] == curve.K_Leq and "D_r" not in values
+    table = np.genfromtxt(tmp_path / "r" / "steel-9.5_damage1_axis.csv", delimiter=",", names=True)
+    np.testing.assert_array_equal(table["strain"], curve.strain)  # the curve up to the last converged step
+    np.testing.assert_array_equal(table["force_N"], curve.force)
 
 
 def test_demo_writes_results(tmp_path):
-    out = run("demo", "--no-progress", cwd=tmp_path)
+    out = run("demo", "--no-progress", "--n-elements", "16", "--n-steps", "8", cwd=tmp_path)
     assert out.returncode == 0, out.stderr
-    assert "stick-slip" in out.stdout
+    assert "stick-slip" in out.stdout and out.stderr == ""
     for name in ("stick.csv", "stick-slip.pvd", "stick-slip_wires.pvd", "capacity.png", "slip_fraction.png"):
         assert (tmp_path / "results" / name).exists(), name
+    assert not [p for p in (tmp_path / "results").iterdir() if p.name.startswith(".")]  # no stage left
+
+
+def test_bare_skcable_prints_help_and_runs_nothing(tmp_path):
+    out = run(cwd=tmp_path)
+    assert out.returncode == cli.EXIT_USAGE and out.stderr == ""
+    assert out.stdout.startswith("usage: skcable") and "exit status" in out.stdout
+    assert list(tmp_path.iterdir()) == []  # no demo over results/
+
+
+def test_version():
+    out = run("--version")
+    assert out.returncode == 0 and out.stdout == f"skcable {skcable.__version__}\n"
+
+
+def _options(parser):
+    for action in parser._actions:
+        if isinstance(action, argparse._SubParsersAction):
+            for name, sub in action.choices.items():
+                yield from ((f"{name} {where}", a) for where, a in _options(sub))
+        elif action.option_strings and action.dest not in ("help", "version"):
+            yield "", action
+
+
+def test_every_flag_has_help_with_its_default_and_units():
+    options = list(_options(cli._parser()))
+    assert len(options) > 40
+    for where, action in options:
+        flag = f"{where}{action.option_strings[-1]}"
+        assert action.help and ("(default:" in action.help or "(required)" in action.help), flag
+        if action.type is cli._finite:  # a quantity: its unit in brackets
+            assert "[" in action.help and "]" in action.help, flag
+
+
+def test_numpy_warnings_do_not_reach_stderr():
+    with warnings.catch_warnings(record=True) as caught:  # the API: numpy warns, the solver gives up
+        warnings.simplefilter("always")
+        with pytest.raises(ConvergenceError):
+            cable.catenary(1e300, 0.0, 1e300, sag=1e300)
+    assert any(issubclass(w.category, RuntimeWarning) for w in caught)
+    out = run("catenary", "--span", "1e300", "--w", "1e300", "--sag", "1e300")
+    assert out.returncode == cli.EXIT_NO_CONVERGENCE and out.stdout == ""
+    assert out.stderr.count("\n") == 1 and out.stderr.startswith("skcable: error: no convergence")
+
+
+def test_usage_error_from_a_real_process_is_one_line():
+    out = run("parabola", "--span", "1e300", "--w", "1", "--sag", "2")
+    assert out.returncode == cli.EXIT_USAGE and out.stdout == ""
+    assert out.stderr.count("\n") == 1 and "--span 1e+300" in out.stderr and "Traceback" not in out.stderr
 
 
 @pytest.mark.parametrize(
     "args, flag",
     [
-        (("catenary", "--span", "800", "--w", "20", "--length", "10"), "length"),
+        (("catenary", "--span", "800", "--w", "20", "--length", "10"), "--length"),
+        (("catenary", "--span", "100", "--w", "1"), "--T-max"),  # no constraint: the flags are listed
+        (("catenary", "--span", "nan", "--w", "1", "--sag", "2"), "--span"),
+        (("catenary", "--span", "1e300", "--w", "1", "--H", "1"), "--span 1e+300"),  # overflow, named
+        (("parabola", "--span", "1e300", "--w", "1", "--sag", "2"), "--span 1e+300"),
         (("strand", "section", "--damage", "9"), "--damage"),
         (("strand", "section", "--preset", "copper"), "--preset"),
         (("strand", "capacity", "--slip", "sometimes"), "--slip"),
         (("strand", "capacity", "--damage-load", "both"), "--damage-load"),
-        (("funicular", "--B", "1", "0", "--lengths", "1", "1", "--loads", "1"), "loads"),
+        (("strand", "capacity", "--n-steps", "0"), "--n-steps"),  # it ran with 60 steps
+        (("strand", "capacity", "--n-steps", "3"), "--n-steps"),
+        (("strand", "capacity", "--n-elements", "1", "--no-progress"), "--n-elements"),
+        (("strand", "capacity", "--mu", "-1", "--no-progress"), "--mu"),
+        (("funicular", "--B", "1", "0", "--lengths", "1", "1", "--loads", "1"), "--loads"),
         (("elastic-catenary", "--span", "100", "--w", "1"), "--EA"),
         (("strand",), "strand"),
+        (("study",), "study"),
+        (("frobnicate",), "frobnicate"),
     ],
 )
-def test_bad_argument_is_one_line_exit_2(args, flag):
-    out = run(*args)
-    assert out.returncode == 2
-    assert out.stderr.strip().count("\n") == 0 and flag in out.stderr and "Traceback" not in out.stderr
+def test_bad_argument_is_one_line_exit_2(capsys, args, flag):
+    status, out, err = main(capsys, *args)
+    assert status == cli.EXIT_USAGE and out == ""
+    assert err.count("\n") == 1 and flag in err and "Traceback" not in err
+
+
+@pytest.fixture
+def no_computing(monkeypatch):
+    """Fail the test if a strand model or a study case is computed."""
+    from skcable import study
+
+    def computed(*args, **kwargs):
+        raise AssertionError("computed before refusing")
+
+    monkeypatch.setattr(strand, "StrandModel", computed)
+    monkeypatch.setattr(study, "_evaluate", computed)
+
+
+@pytest.fixture
+def study_file(tmp_path):
+    path = tmp_path / "study.toml"
+    path.write_text(
+        f'model = "cable_solve"\noutput = "{tmp_path / "t.csv"}"\n[grid]\nspan = [100.0]\nsag = [5.0]\n'
+        "[fixed]\nw = 1.0\n"
+    )
+    return path
+
+
+@pytest.mark.parametrize(
+    "args, flag, reason",
+    [
+        (("strand", "capacity", "--out", "{file}"), "--out", "is a file, not a folder"),
+        (("strand", "capacity", "--out", "{file}/sub"), "--out", "is not a folder"),
+        (("demo", "--out", "{file}"), "--out", "is a file, not a folder"),
+        (("catenary", "--span", "9", "--w", "1", "--sag", "1", "--vtk", "{dir}"), "--vtk", "is a folder"),
+        (("catenary", "--span", "9", "--w", "1", "--sag", "1", "--vtk", "{dir}/c.foo"), "--vtk", "extension"),
+        (
+            ("catenary", "--span", "9", "--w", "1", "--sag", "1", "--vtk", "{file}/c.vtu"),
+            "--vtk",
+            "not a folder",
+        ),
+        (("study", "run", "{study}", "--serial", "--out", "{dir}"), "--out", "is a folder"),
+        (
+            ("study", "run", "{study}", "--serial", "--out", "{dir}/t.txt"),
+            "--out",
+            "unknown extension '.txt'",
+        ),
+        (("study", "run", "{study}", "--serial", "--out", "{file}/t.csv"), "--out", "not a folder"),
+        (("study", "run", "{study}", "--serial", "--cache", "{file}"), "--cache", "is a file"),
+        (("study", "run", "{study}", "--workers", "0"), "--workers", "at least 1"),  # it used to hang
+        (("study", "run", "{study}", "--scheduler", "nonsense"), "--scheduler", "not a scheduler address"),
+        (("study", "run", "{study}", "--scheduler", "foo://h:1"), "--scheduler", "unknown address scheme"),
+        (("study", "run", "{study}", "--serial", "--scheduler", "tcp://h:1"), "--scheduler", "--serial"),
+        (("study", "run", "{study}", "--serial", "--workers", "2"), "--workers", "--serial"),
+    ],
+)
+def test_unusable_paths_and_options_are_refused_before_computing(
+    tmp_path, capsys, no_computing, study_file, args, flag, reason
+):
+    regular = tmp_path / "regular_file"
+    regular.write_text("")
+    args = [a.format(file=regular, dir=tmp_path, study=study_file) for a in args]
+    status, out, err = main(capsys, *args)
+    assert status == cli.EXIT_USAGE and out == "", err
+    assert err.count("\n") == 1 and flag in err and reason in err
