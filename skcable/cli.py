@@ -191,10 +191,10 @@ def _section(args) -> int:
         "centroid_z_m": float(section.centroid[1]),
         "principal_angle_deg": float(np.degrees(section.principal_angle)),
         "EA_N": float(section.EA),
-        "EI_stick_1_Nm2": float(section.EI_max[0]),
-        "EI_stick_2_Nm2": float(section.EI_max[1]),
-        "EI_slip_1_Nm2": float(section.EI_min[0]),
-        "EI_slip_2_Nm2": float(section.EI_min[1]),
+        "EI_stick_1_Nm2": float(section.EI_stick[0]),
+        "EI_stick_2_Nm2": float(section.EI_stick[1]),
+        "EI_slip_1_Nm2": float(section.EI_slip[0]),
+        "EI_slip_2_Nm2": float(section.EI_slip[1]),
     }
     _print(values, args.json)
     return EXIT_OK

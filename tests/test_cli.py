@@ -112,7 +112,7 @@ def test_strand_section_json_is_the_api(capsys):
     status, out, _ = main(capsys, "strand", "section", "--preset", "steel-9.5", "--damage", "1", "--json")
     values = json.loads(out)
     section = strand.preset("steel-9.5").damaged(1).section()
-    assert status == 0 and values["EA_N"] == section.EA and values["EI_stick_1_Nm2"] == section.EI_max[0]
+    assert status == 0 and values["EA_N"] == section.EA and values["EI_stick_1_Nm2"] == section.EI_stick[0]
     # one of six outer wires (helix radius d) missing: z_c = -d/6 (Pino Vidal 2021, Table 3.2: -r/3, r = d/2)
     assert values["centroid_z_m"] == pytest.approx(-3.1e-3 / 6)
 

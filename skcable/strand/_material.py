@@ -236,6 +236,16 @@ class Material:
         out = np.where(elastic, self.E_e, np.where(plastic, self.E_p, (3 * a * t + 2 * b) * t + c))
         return out[()] if out.ndim == 0 else out
 
+    def stress_and_tangent(self, strain: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        """`stress` and `tangent` of a float array in one pass, without input checks: the
+        finite-element models' hot path (their strains are float arrays they computed)."""
+        eps, t, elastic, plastic, (a, b, c, d) = self._branches(strain)
+        blend = ((a * t + b) * t + c) * t + d
+        line = self.E_e * self.eps_y + self.E_p * (eps - self.eps_y)
+        stress = np.copysign(np.where(elastic, self.E_e * eps, np.where(plastic, line, blend)), strain)
+        tangent = np.where(elastic, self.E_e, np.where(plastic, self.E_p, (3 * a * t + 2 * b) * t + c))
+        return stress, tangent
+
     @property
     def softening_range(self) -> tuple[float, float] | None:
         """Strains ``(lo, hi)`` inside the blend where the tangent is negative, or None.

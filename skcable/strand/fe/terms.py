@@ -246,9 +246,9 @@ class HelicalWires(SectionTerm):
         """Stress times the second derivatives of the wire strains through the slip law:
         ``Σ_j s_j ∂²ε_j/∂g²`` beyond the membrane part, for a law curved in κ or κ_m (and κ_m″)."""
         second = self.slip.second_derivatives(k_principal, k_m, state)
-        d2k_m = self._curvature(np.clip(axial, 0.0, self.kappa_grid[-1])) * (axial > 0)
         if second is None and not np.any(d_km):
             return
+        d2k_m = self._curvature(np.clip(axial, 0.0, self.kappa_grid[-1])) * (axial > 0)
         # M_k = Σ_j s_j ∂ε_j/∂κ_c,k: minus the composite moment about axis k
         rho = contract("kcen,cjen->kjen", levers, np.array([self._y, self._z]))
         M = -contract("jen,kjen->ken", s * self.c2, rho)
@@ -283,8 +283,8 @@ class HelicalWires(SectionTerm):
         strain = (
             c2 * (axial[None] - eccentric - y * kappa_c[0][None] - z * kappa_c[1][None]) + sc * g[5][None]
         )
-        stress = np.where(self._alive3, self.material.stress(strain), 0.0)
-        tangent = np.where(self._alive3, self.material.tangent(strain), 0.0)
+        stress, tangent = self.material.stress_and_tangent(strain)
+        stress, tangent = stress * self._alive3, tangent * self._alive3
         d_axial = c2 * (1.0 - y * q[0][None] - z * q[1][None])  # ∂ε_j/∂ε_a
         b = np.array(
             [
