@@ -9,8 +9,6 @@ booleans and complex numbers are refused rather than converted.
 
 from __future__ import annotations
 
-from contextlib import contextmanager
-
 import numpy as np
 
 from skcable.errors import InputError
@@ -137,19 +135,29 @@ def broadcast(**values) -> tuple[int, ...]:
     return shape
 
 
-@contextmanager
-def float_range(name: str, what: str):
-    """Turn the ``OverflowError``, ``ZeroDivisionError`` and "math domain
-    error" that ``math`` and Python floats raise at extreme magnitudes (where
-    NumPy would return inf or NaN) into ``InputError(name, ...)``."""
-    try:
-        yield
-    except (OverflowError, ZeroDivisionError) as exc:
-        raise InputError(name, f"gives {what} outside the range of a float ({exc})") from exc
-    except ValueError as exc:
-        if isinstance(exc, InputError) or "math domain error" not in str(exc):
-            raise
-        raise InputError(name, f"gives {what} outside the range of a float ({exc})") from exc
+class float_range:  # noqa: N801 - used like a function: ``with float_range(name, what):``
+    """Context turning the ``OverflowError``, ``ZeroDivisionError`` and "math
+    domain error" that ``math`` and Python floats raise at extreme magnitudes
+    (where NumPy would return inf or NaN) into ``InputError(name, ...)``.
+
+    A class rather than a generator: it guards hot scalar paths.
+    """
+
+    __slots__ = ("name", "what")
+
+    def __init__(self, name: str, what: str):
+        self.name, self.what = name, what
+
+    def __enter__(self):
+        return self
+
+    def __exit__(self, kind, exc, traceback):
+        if kind is None:
+            return False
+        domain = issubclass(kind, ValueError) and not issubclass(kind, InputError) and "domain" in str(exc)
+        if domain or issubclass(kind, (OverflowError, ZeroDivisionError)):
+            raise InputError(self.name, f"gives {self.what} outside the range of a float ({exc})") from exc
+        return False
 
 
 def exactly_one(**constraints) -> tuple[str, object]:

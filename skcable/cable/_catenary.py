@@ -37,7 +37,7 @@ from skcable._checks import broadcast, exactly_one, float_range, positive, real,
 from skcable._xp import namespace
 from skcable.cable._roots import find_root
 from skcable.cable._special import dsinhc, largest_abs, log_cosh, piecewise, sinhc_m1
-from skcable.cable.solution import CableSolution, checked, representable
+from skcable.cable.solution import CableSolution, checked_closed_form
 from skcable.errors import ConvergenceError, InputError
 
 __all__ = ["Catenary", "catenary"]
@@ -473,5 +473,4 @@ def catenary(span, dh, w, *, length=None, sag=None, H=None, low=None, T_max=None
     require(name, a < math.inf, "makes H/w overflow a float", value)
     value = np.asarray(value, dtype=float)[()]
     with float_range(name, "a result"):
-        solution = representable(Catenary(span, dh, w, a, z, (name, value)), name)
-        return checked(solution, history)
+        return checked_closed_form(Catenary(span, dh, w, a, z, (name, value)), name, history)

@@ -27,7 +27,7 @@ from skcable._xp import namespace
 from skcable.cable._catenary import catenary
 from skcable.cable._roots import find_root
 from skcable.cable._special import asinh_diff, largest_abs
-from skcable.cable.solution import CableSolution, checked, representable
+from skcable.cable.solution import CableSolution, checked_closed_form
 from skcable.errors import ConvergenceError, InputError
 
 __all__ = ["ElasticCatenary", "elastic_catenary"]
@@ -268,5 +268,5 @@ def elastic_catenary(span, dh, w, EA, *, length):
     except (OverflowError, ZeroDivisionError) as exc:
         raise InputError("EA", f"the closure equations overflow for these data ({exc})") from exc
     with float_range("length", "a result"):
-        solution = representable(ElasticCatenary(span, dh, w, EA, L0, H, V_A, ("length", L0)), "length")
-        return checked(solution, history)
+        solution = ElasticCatenary(span, dh, w, EA, L0, H, V_A, ("length", L0))
+        return checked_closed_form(solution, "length", history)

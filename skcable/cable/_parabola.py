@@ -34,7 +34,7 @@ from skcable._xp import namespace
 from skcable.cable._catenary import _finite_at, _lowest, _unit
 from skcable.cable._roots import find_root
 from skcable.cable._special import asinh_diff
-from skcable.cable.solution import CableSolution, checked, representable
+from skcable.cable.solution import CableSolution, checked_closed_form
 from skcable.errors import InputError
 
 __all__ = ["Parabola", "parabola"]
@@ -46,6 +46,19 @@ _DELTA_MIN, _DELTA_MAX = 1e-300, 1e150
 _STEEPEST = 1e150
 
 _NODES, _WEIGHTS = np.polynomial.legendre.leggauss(24)
+
+
+_NODE_WEIGHT = tuple(zip(_NODES.tolist(), _WEIGHTS.tolist(), strict=True))
+
+
+def _excess_quadrature_scalar(a, slope, delta):
+    """:func:`_excess_quadrature` for floats (a NumPy call per node pair costs more)."""
+    base = math.hypot(1.0, slope)
+    total = 0.0
+    for node, weight in _NODE_WEIGHT:
+        t = node * delta
+        total += weight * t * (2.0 * slope + t) / (math.hypot(1.0, slope + t) + base)
+    return a * delta * total
 
 
 def _excess_quadrature(a, slope, delta):
@@ -65,7 +78,7 @@ def _excess_length(a, slope, delta):
     """Length minus chord of the parabola with parameter ``a`` whose slopes
     run from ``slope - delta`` to ``slope + delta``."""
     if namespace(a, slope, delta) is not np:
-        return float(_excess_quadrature(a, slope, delta)) if delta <= 0.5 else _excess_closed(a, slope, delta)
+        return _excess_quadrature_scalar(a, slope, delta) if delta <= 0.5 else _excess_closed(a, slope, delta)
     a, slope, delta = np.broadcast_arrays(a, slope, delta)
     small = delta <= 0.5
     out = np.empty(a.shape)
@@ -338,5 +351,4 @@ def parabola(span, dh, w, *, length=None, sag=None, H=None, low=None, T_max=None
     )
     value = np.asarray(value, dtype=float)[()]
     with float_range(name, "a result"):
-        solution = representable(Parabola(span, dh, w, a, (name, value)), name)
-        return checked(solution, history)
+        return checked_closed_form(Parabola(span, dh, w, a, (name, value)), name, history)

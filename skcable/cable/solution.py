@@ -12,11 +12,13 @@ against that shape.
 
 from __future__ import annotations
 
+import functools
+import math
 from functools import cached_property
 
 import numpy as np
 
-from skcable._checks import float_range, require
+from skcable._checks import require
 from skcable._xp import namespace
 from skcable.cable._special import largest_abs
 from skcable.errors import ConvergenceError, InputError
@@ -79,7 +81,7 @@ class CableSolution:
         name = type(self).__name__
         if np.ndim(self.H) != 0:
             return f"{name}(shape={np.shape(self.H)}, constraint={self.constraint[0]!r})"
-        shown = ", ".join(f"{k}={float(getattr(self, k)):.9g}" for k in _SHOWN if hasattr(type(self), k))
+        shown = ", ".join(f"{k}={float(getattr(self, k)):.9g}" for k in _shown(type(self)))
         return f"{name}(span={self.span:g}, dh={self.dh:g}, w={self.w:g}: {shown})"
 
     @cached_property
@@ -128,27 +130,54 @@ def _count(name: str, n, least: int) -> int:
     return int(n)
 
 
-def representable(solution: CableSolution, argument: str, load: str = "w") -> CableSolution:
-    """Evaluate every shown attribute of a closed-form ``solution`` and raise
-    :class:`InputError` if one is not a finite float.
+#: The shown attributes a closed form's residual does not evaluate (a finite
+#: residual implies finite forces and, where it enters, length). The rest of
+#: ``_SHOWN`` is bounded by these (0 <= sag <= length; the lowest point lies
+#: between the supports and the vertex).
+_BEYOND_RESIDUAL = ("length", "x_vertex", "y_vertex")
+_CHECKED = ("H", "V_A", "V_B", "T_A", "T_B", *_BEYOND_RESIDUAL)
+
+
+def _finite(value) -> bool:
+    return bool(np.isfinite(value).all()) if isinstance(value, np.ndarray) else math.isfinite(value)
+
+
+def representable(solution: CableSolution, argument: str, load: str = "w") -> None:
+    """Raise :class:`InputError` if a force, the length or the vertex of a
+    closed-form ``solution`` is not a finite float (the other shown
+    attributes are bounded by them).
 
     Overflowing forces are blamed on ``load`` unless the constraint is itself
     a force (``H``, ``T_max``); everything else on ``argument``.
     """
     force_constraint = solution.constraint[0] in ("H", "T_max")
-    for name in _SHOWN:
-        if not hasattr(type(solution), name):
-            continue
-        blame = load if name in _FORCES and not force_constraint else argument
-        with float_range(blame, name):
-            value = getattr(solution, name)
-        bad = ~np.isfinite(value)
-        if np.any(bad):
-            where = f" at index {tuple(int(i) for i in np.argwhere(bad)[0])}" if np.ndim(value) else ""
-            raise InputError(
-                blame, f"puts {name} outside the range of a float{where} (the data are too extreme)"
-            )
-    return solution
+    for name in _CHECKED:
+        try:
+            finite = _finite(getattr(solution, name))
+        except (OverflowError, ZeroDivisionError):  # math on Python floats raises, NumPy gives inf
+            finite = False
+        if not finite:
+            blame = load if name in _FORCES and not force_constraint else argument
+            raise InputError(blame, f"puts {name} outside the range of a float (the data are too extreme)")
+
+
+def checked_closed_form(solution: CableSolution, argument: str, history=(), load: str = "w") -> CableSolution:
+    """:func:`checked` for a closed form: a result outside the range of a float
+    raises :class:`InputError` naming ``argument`` (or ``load``), a residual
+    above :data:`ACCEPT` :class:`~skcable.errors.ConvergenceError`."""
+    try:
+        residual = solution.residual()
+        if residual <= ACCEPT and all(_finite(getattr(solution, name)) for name in _BEYOND_RESIDUAL):
+            return solution
+    except (OverflowError, ZeroDivisionError):
+        pass
+    representable(solution, argument, load)  # raises if a result is not finite
+    return checked(solution, history)
+
+
+@functools.cache
+def _shown(cls) -> tuple[str, ...]:
+    return tuple(name for name in _SHOWN if hasattr(cls, name))
 
 
 def checked(solution: CableSolution, history=()) -> CableSolution:
