@@ -24,7 +24,7 @@ import numpy as np
 
 from skcable._checks import broadcast, float_range, positive, real, require
 from skcable._xp import namespace
-from skcable.cable._catenary import catenary
+from skcable.cable._catenary import _finite_at, catenary
 from skcable.cable._roots import find_root
 from skcable.cable._special import asinh_diff, largest_abs
 from skcable.cable.solution import CableSolution, checked_closed_form
@@ -134,7 +134,9 @@ class ElasticCatenary(CableSolution):
     def x_of_s(self, s):
         """Abscissa of the material point ``s`` (unstretched arc length from A)."""
         s = real("s", s)
-        return self.H * s / self.EA + self.H / self.w * asinh_diff(self._tv(s) / self.H, -self.V_A / self.H)
+        with float_range("s", "x(s)"):
+            x = self.H * s / self.EA + self.H / self.w * asinh_diff(self._tv(s) / self.H, -self.V_A / self.H)
+        return _finite_at("s", x, "x(s)")
 
     def _y_terms(self, s):
         tv, tv_a = self._tv(s), -self.V_A
@@ -144,8 +146,10 @@ class ElasticCatenary(CableSolution):
 
     def y_of_s(self, s):
         """Height above A of the material point ``s``."""
-        stretch, shape = self._y_terms(real("s", s))
-        return stretch + shape
+        s = real("s", s)
+        with float_range("s", "y(s)"):
+            stretch, shape = self._y_terms(s)
+            return _finite_at("s", stretch + shape, "y(s)")
 
     def s_of_x(self, x):
         """Material point at abscissa ``x`` in [0, span] (x(s) is increasing)."""
