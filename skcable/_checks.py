@@ -2,7 +2,9 @@
 
 Each check returns the argument as a Python float (scalar input, which
 keeps scalar calls fast, see :mod:`skcable._xp`) or as a float array, and raises
-:class:`skcable.errors.InputError` naming the argument otherwise.
+:class:`skcable.errors.InputError` naming the argument otherwise. Numbers are
+Python or NumPy integers and floats (or arrays of them); strings, ``None``,
+booleans and complex numbers are refused rather than converted.
 """
 
 from __future__ import annotations
@@ -11,6 +13,11 @@ import numpy as np
 
 from skcable.errors import InputError
 
+#: Smallest positive normal float: below it a result has lost relative precision.
+TINY = float(np.finfo(float).tiny)
+
+_NOT_REAL = (str, bytes, bool, np.bool_, complex, np.complexfloating)
+
 
 def _first_bad(arr: np.ndarray, bad: np.ndarray) -> str:
     index = np.argwhere(bad)[0]
@@ -18,18 +25,46 @@ def _first_bad(arr: np.ndarray, bad: np.ndarray) -> str:
     return value if arr.ndim == 0 else f"{value} at index {tuple(int(i) for i in index)}"
 
 
+def _not_real(name: str, value, detail: str = "") -> InputError:
+    shown = repr(value)
+    shown = shown if len(shown) <= 60 else shown[:57] + "..."
+    return InputError(name, f"must be a real number or an array of them, got {shown}{detail}")
+
+
+def _as_float_array(name: str, value) -> np.ndarray:
+    if value is None or isinstance(value, _NOT_REAL):
+        raise _not_real(name, value)
+    try:
+        raw = np.asarray(value)
+    except (TypeError, ValueError) as exc:  # ragged nesting, objects numpy refuses
+        raise _not_real(name, value) from exc
+    kind = raw.dtype.kind
+    if kind == "f" and raw.dtype == np.float64:
+        return raw
+    if kind in "fiu":
+        return raw.astype(float)
+    if kind == "O":
+        if any(item is None or isinstance(item, _NOT_REAL) for item in raw.flat):
+            raise _not_real(name, value)
+        try:
+            return raw.astype(float)
+        except (TypeError, ValueError, OverflowError) as exc:
+            raise _not_real(name, value, f" ({exc})") from exc
+    raise _not_real(name, value, f" (array of dtype {raw.dtype})")
+
+
 def real(name: str, value) -> np.ndarray | float:
     """Return ``value`` as a float (scalar input) or float array, raising if
-    it is not finite."""
+    it is not a finite real number (or array of them)."""
     if isinstance(value, (float, int)) and not isinstance(value, bool):
-        value = float(value)
+        try:
+            value = float(value)
+        except OverflowError as exc:  # a Python integer beyond the float range
+            raise InputError(name, f"must be finite, got an integer of {value.bit_length()} bits") from exc
         if value != value or value in (float("inf"), float("-inf")):
             raise InputError(name, f"must be finite, got {value!r}")
         return value
-    try:
-        arr = np.asarray(value, dtype=float)
-    except (TypeError, ValueError) as exc:
-        raise InputError(name, f"must be a real number or array of them, got {value!r}") from exc
+    arr = _as_float_array(name, value)
     bad = ~np.isfinite(arr)
     if bad.any():
         raise InputError(name, f"must be finite, got {_first_bad(arr, bad)}")
@@ -56,6 +91,17 @@ def nonnegative(name: str, value) -> np.ndarray | float:
     return arr
 
 
+def scalar(name: str, value) -> float:
+    """Return ``value`` as a finite Python float, raising if it is an array of
+    more than one element (or not a real number)."""
+    value = real(name, value)
+    if isinstance(value, np.ndarray):
+        if value.size != 1:
+            raise InputError(name, f"must be a single number, got an array of shape {value.shape}")
+        value = float(value.reshape(()))
+    return value
+
+
 def require(name: str, ok, reason: str, value) -> None:
     """Raise ``InputError(name, reason)`` where the boolean ``ok`` is False."""
     if ok is True or (not isinstance(ok, np.ndarray) and ok):
@@ -64,6 +110,54 @@ def require(name: str, ok, reason: str, value) -> None:
     if not ok.all():
         arr = np.broadcast_to(np.asarray(value, dtype=float), ok.shape)
         raise InputError(name, f"{reason}, got {_first_bad(arr, ~ok)}")
+
+
+def broadcast(**values) -> tuple[int, ...]:
+    """Shape the (already checked) arguments broadcast to.
+
+    Scalars broadcast with anything. Raises :class:`InputError` naming the
+    first array argument that is empty or whose shape does not broadcast
+    with the shapes of the arguments before it.
+    """
+    shape: tuple[int, ...] = ()
+    for name, value in values.items():
+        if not isinstance(value, np.ndarray):
+            continue
+        if value.size == 0:
+            raise InputError(name, f"is an empty array (shape {value.shape}); give at least one value")
+        try:
+            shape = np.broadcast_shapes(shape, value.shape)
+        except ValueError:
+            before = ", ".join(k for k in values if k != name and isinstance(values[k], np.ndarray))
+            raise InputError(
+                name, f"has shape {value.shape}, which does not broadcast with shape {shape} (of {before})"
+            ) from None
+    return shape
+
+
+class float_range:  # noqa: N801 - used like a function: ``with float_range(name, what):``
+    """Context turning the ``OverflowError``, ``ZeroDivisionError`` and "math
+    domain error" that ``math`` and Python floats raise at extreme magnitudes
+    (where NumPy would return inf or NaN) into ``InputError(name, ...)``.
+
+    A class rather than a generator: it guards hot scalar paths.
+    """
+
+    __slots__ = ("name", "what")
+
+    def __init__(self, name: str, what: str):
+        self.name, self.what = name, what
+
+    def __enter__(self):
+        return self
+
+    def __exit__(self, kind, exc, traceback):
+        if kind is None:
+            return False
+        domain = issubclass(kind, ValueError) and not issubclass(kind, InputError) and "domain" in str(exc)
+        if domain or issubclass(kind, (OverflowError, ZeroDivisionError)):
+            raise InputError(self.name, f"gives {self.what} outside the range of a float ({exc})") from exc
+        return False
 
 
 def exactly_one(**constraints) -> tuple[str, object]:

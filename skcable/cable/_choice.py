@@ -48,7 +48,7 @@ from __future__ import annotations
 
 import math
 
-from skcable._checks import exactly_one, positive
+from skcable._checks import exactly_one, positive, scalar
 from skcable.cable._bvp import solve_bvp
 from skcable.cable._catenary import catenary
 from skcable.cable._elastic import elastic_catenary
@@ -131,15 +131,21 @@ def solve(
     >>> s.model, s.error_estimate < 1e-2  # a suspension bridge's main cable
     ('parabola', True)
     """
-    span = float(positive("span", span))
-    dh = float(dh)
-    rtol = float(positive("rtol", rtol))
+    span = positive("span", scalar("span", span))
+    dh = scalar("dh", dh)
+    rtol = positive("rtol", scalar("rtol", rtol))
     if EA is not None:
-        EA = float(positive("EA", EA))
-    constraint = exactly_one(length=length, sag=sag, H=H, low=low, T_max=T_max)
+        EA = positive("EA", scalar("EA", EA))
+    name, value = exactly_one(length=length, sag=sag, H=H, low=low, T_max=T_max)
+    constraint = (name, scalar(name, value))
     loads = list(loads) if isinstance(loads, (list, tuple)) else [loads]
     if not loads:
         raise InputError("loads", "give at least one load")
+    for load in loads:
+        if not callable(getattr(load, "graph_terms", None)):
+            raise InputError(
+                "loads", f"must be load objects (SelfWeight, DeckLoad, ...), got {type(load).__name__}"
+            )
     tried = []
     if all(type(ld) in (SelfWeight, DeckLoad) for ld in loads):
         deck = sum(float(ld.w) for ld in loads if isinstance(ld, DeckLoad))

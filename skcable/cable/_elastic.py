@@ -22,12 +22,12 @@ from functools import cached_property
 
 import numpy as np
 
-from skcable._checks import positive, real, require
+from skcable._checks import broadcast, float_range, positive, real, require
 from skcable._xp import namespace
-from skcable.cable._catenary import catenary
+from skcable.cable._catenary import _finite_at, catenary
 from skcable.cable._roots import find_root
 from skcable.cable._special import asinh_diff, largest_abs
-from skcable.cable.solution import CableSolution, checked
+from skcable.cable.solution import CableSolution, checked_closed_form
 from skcable.errors import ConvergenceError, InputError
 
 __all__ = ["ElasticCatenary", "elastic_catenary"]
@@ -94,12 +94,20 @@ def _solve(span, dh, w, EA, L0):
     raise ConvergenceError("elastic_catenary: Newton did not converge", history)
 
 
+def _x_of_s_minus(s, x, H, V_A, w, EA):
+    return H * s / EA + H / w * asinh_diff((w * s - V_A) / H, -V_A / H) - x
+
+
 class ElasticCatenary(CableSolution):
     """Solution of :func:`elastic_catenary`.
 
     Attributes are those of :class:`~skcable.cable.Catenary`, with
     ``length`` the unstretched length, plus ``EA``, ``stretched_length`` and
-    the Lagrangian maps ``x_of_s(s)``, ``y_of_s(s)``, ``s_of_x(x)``.
+    the Lagrangian maps ``x_of_s(s)``, ``y_of_s(s)``, ``s_of_x(x)``. The
+    lowest point ``x_low, y_low`` is that of the cable (a support when the
+    material point of zero slope, ``s = V_A/w``, lies outside ``[0, length]``);
+    ``x_vertex, y_vertex`` is that point of the elastic catenary continued
+    beyond the supports.
     """
 
     def __init__(self, span, dh, w, EA, length, H, V_A, constraint):
@@ -126,22 +134,33 @@ class ElasticCatenary(CableSolution):
     def x_of_s(self, s):
         """Abscissa of the material point ``s`` (unstretched arc length from A)."""
         s = real("s", s)
-        return self.H * s / self.EA + self.H / self.w * asinh_diff(self._tv(s) / self.H, -self.V_A / self.H)
+        with float_range("s", "x(s)"):
+            x = self.H * s / self.EA + self.H / self.w * asinh_diff(self._tv(s) / self.H, -self.V_A / self.H)
+        return _finite_at("s", x, "x(s)")
+
+    def _y_terms(self, s):
+        tv, tv_a = self._tv(s), -self.V_A
+        xp = namespace(s, tv)
+        rise = (tv - tv_a) * (tv + tv_a) / (xp.hypot(self.H, tv) + self.T_A)
+        return s * (0.5 * self.w * s - self.V_A) / self.EA, rise / self.w  # stretch, inextensible
 
     def y_of_s(self, s):
         """Height above A of the material point ``s``."""
         s = real("s", s)
-        tv, tv_a = self._tv(s), -self.V_A
-        xp = namespace(s, tv)
-        rise = (tv - tv_a) * (tv + tv_a) / (xp.hypot(self.H, tv) + self.T_A)
-        return s * (0.5 * self.w * s - self.V_A) / self.EA + rise / self.w
+        with float_range("s", "y(s)"):
+            stretch, shape = self._y_terms(s)
+            return _finite_at("s", stretch + shape, "y(s)")
 
     def s_of_x(self, x):
         """Material point at abscissa ``x`` in [0, span] (x(s) is increasing)."""
         x = real("x", x)
         require("x", (x >= 0) & (x <= self.span), "must lie in [0, span]", x)
-        x = namespace(x).minimum(x, self.x_of_s(self.length))  # x(length) = span up to rounding
-        s, _ = find_root(lambda s, x, *p: self.x_of_s(s) - x, 0.0, self.length, (x, self.H), what="s_of_x")
+        x_end = self.x_of_s(self.length)
+        x = namespace(x, x_end).minimum(x, x_end)  # x(length) = span up to rounding
+        # the parameters go in as arguments: the vectorised search passes them
+        # compressed to the elements still iterating
+        args = (x, self.H, self.V_A, self.w, self.EA)
+        s, _ = find_root(_x_of_s_minus, 0.0, self.length, args, what="s_of_x")
         return s
 
     def y(self, x):
@@ -171,12 +190,30 @@ class ElasticCatenary(CableSolution):
         return self.length + (primitive(self.V_B) - primitive(-self.V_A)) / (self.w * self.EA)
 
     @cached_property
+    def _s_vertex(self):
+        return self.V_A / self.w  # T_v(s) = 0
+
+    @cached_property
+    def x_vertex(self):
+        return self.x_of_s(self._s_vertex)
+
+    @cached_property
+    def y_vertex(self):
+        return self.y_of_s(self._s_vertex)
+
+    @cached_property
     def x_low(self):
-        return self.x_of_s(self.V_A / self.w)
+        s, xp = self._s_vertex, self._xp
+        if xp is not np:
+            return 0.0 if s <= 0 else self.span if s >= self.length else self.x_vertex
+        return np.where(s <= 0, 0.0, np.where(s >= self.length, self.span, self.x_vertex))
 
     @cached_property
     def y_low(self):
-        return self.y_of_s(self.V_A / self.w)
+        s, xp = self._s_vertex, self._xp
+        if xp is not np:
+            return 0.0 if s <= 0 else self.dh if s >= self.length else self.y_vertex
+        return np.where(s <= 0, 0.0, np.where(s >= self.length, self.dh, self.y_vertex))
 
     @cached_property
     def sag(self):
@@ -186,10 +223,12 @@ class ElasticCatenary(CableSolution):
     def _residuals(self):
         xp = self._xp
         chord = xp.hypot(self.span, self.dh)
-        yield (self.x_of_s(self.length) - self.span) / chord
-        yield (self.y_of_s(self.length) - self.dh) / chord
+        yield (self.x_of_s(self.length) - self.span) / chord  # both terms of x(s) are positive
+        stretch, shape = self._y_terms(self.length)
+        yield (stretch + shape - self.dh) / (chord + xp.abs(stretch) + xp.abs(shape))
         weight = self.w * self.length
-        yield (self.V_A + self.V_B - weight) / weight
+        # V_B is w·L - V_A: the sum cancels to round-off of the reactions
+        yield (self.V_A + self.V_B - weight) / (xp.abs(self.V_A) + xp.abs(self.V_B) + weight)
         yield from self._common_residuals(xp)
 
 
@@ -212,7 +251,8 @@ def elastic_catenary(span, dh, w, EA, *, length):
     -------
     ElasticCatenary
         ``H, V_A, V_B, T_A, T_B, length`` (unstretched), ``stretched_length``,
-        ``sag, x_low, y_low``, ``y(x), T(x), slope(x), residual()``.
+        ``sag``, the lowest point ``x_low, y_low``, the vertex ``x_vertex,
+        y_vertex``, ``y(x), T(x), slope(x), residual()``.
 
     Raises
     ------
@@ -226,8 +266,11 @@ def elastic_catenary(span, dh, w, EA, *, length):
     w = positive("w", w)
     EA = positive("EA", EA)
     L0 = positive("length", length)
+    broadcast(span=span, dh=dh, w=w, EA=EA, length=L0)
     try:
         H, V_A, history = _solve(span, dh, w, EA, L0)
     except (OverflowError, ZeroDivisionError) as exc:
         raise InputError("EA", f"the closure equations overflow for these data ({exc})") from exc
-    return checked(ElasticCatenary(span, dh, w, EA, L0, H, V_A, ("length", L0)), history)
+    with float_range("length", "a result"):
+        solution = ElasticCatenary(span, dh, w, EA, L0, H, V_A, ("length", L0))
+        return checked_closed_form(solution, "length", history)

@@ -11,19 +11,48 @@ method (analytic Jacobian :math:`\sum_j L_j (I - e_j e_j^T)/|t_j|`).
 :func:`funicular_vertical` (§1.b) takes vertical loads at given abscissae
 and applies the general cable theorem :math:`H\,y_c(x) = M(x)`: ``H`` times
 the depth below the chord equals the bending moment of a simply supported
-beam of the same span.
+beam of the same span. Loads at the same abscissa act as one load, their sum.
+
+Both problems are homogeneous: forces scale with the loads and positions
+with the lengths. They are solved with loads and lengths divided by powers
+of two near their sizes (exact), so that magnitudes from 1e-300 to 1e300
+neither over- nor underflow on the way; the result is residual-checked
+(:data:`~skcable.cable.solution.ACCEPT`) before it is returned.
 """
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
 
 import numpy as np
 
-from skcable._checks import positive, real, require
+from skcable._checks import positive, real, require, scalar
+from skcable.cable.solution import ACCEPT
 from skcable.errors import ConvergenceError, InputError
 
 __all__ = ["Funicular", "FunicularVertical", "funicular", "funicular_vertical"]
+
+
+def _unit(size):
+    """A power of two near ``size`` (> 0): dividing by it is exact."""
+    return math.ldexp(0.5, math.frexp(float(size))[1])
+
+
+def _finite(name, what, *arrays):
+    for array in arrays:
+        if not np.all(np.isfinite(array)):
+            raise InputError(name, f"gives {what} outside the range of a float (the data are too extreme)")
+
+
+def _accept(solution, history, accept=ACCEPT):
+    residual = solution.residual()
+    if not residual <= accept:
+        raise ConvergenceError(
+            f"{type(solution).__name__}: residual {residual:.3e} above {accept:.0e} after the solver stopped",
+            history,
+        )
+    return solution
 
 
 @dataclass(frozen=True)
@@ -63,14 +92,26 @@ class Funicular:
         return write(funicular_mesh(self), path)
 
     def residual(self) -> float:
-        """Largest of the joint force imbalance (relative to the largest
-        tension) and the segment-length / closure error (relative to the total
-        length)."""
-        imbalance = self.forces[1:] - self.forces[:-1] + self.loads
-        segments = np.hypot(*np.diff(self.nodes, axis=0).T) - self.lengths
-        force_scale, length_scale = self.T.max(), self.lengths.sum()
+        """Largest relative residual: joint equilibrium (relative to the
+        largest tension plus the loads, whose running sums the forces carry),
+        segment lengths and directions against the forces (relative to the
+        total length, the size of the node coordinates)."""
+        F, L = _unit(self.T.max()), _unit(self.lengths.max())  # exact rescaling: no overflow below
+        forces, loads, T = self.forces / F, self.loads / F, self.T / F
+        nodes, lengths = self.nodes / L, self.lengths / L
+        force_scale = T.max() + np.abs(loads).sum()
+        length_scale = lengths.sum()
+        imbalance = forces[1:] - forces[:-1] + loads
+        sides = np.diff(nodes, axis=0)
+        segments = np.hypot(sides[:, 0], sides[:, 1]) - lengths
+        # a side along its force: cross(side, force)/|force| is the side's offset from that line
+        offset = (sides[:, 0] * forces[:, 1] - sides[:, 1] * forces[:, 0]) / T
         return float(
-            max(np.abs(imbalance).max(initial=0.0) / force_scale, np.abs(segments).max() / length_scale)
+            max(
+                np.abs(imbalance).max(initial=0.0) / force_scale,
+                np.abs(segments).max() / length_scale,
+                np.abs(offset).max() / length_scale,
+            )
         )
 
 
@@ -85,7 +126,13 @@ def funicular(B, lengths, loads, *, tol: float = 1e-13, max_iter: int = 100) -> 
         Segment lengths from A to B (m), > 0, with ``sum(lengths) > |B|``.
     loads : array_like (n, 2)
         Load ``(Px, Py)`` at each joint, in global axes (y up: a weight has
-        ``Py < 0``), N.
+        ``Py < 0``), N; not all zero.
+    tol : float
+        Newton stops when the closure error is below ``tol`` times the
+        total length; the returned polygon's :meth:`~Funicular.residual` is
+        checked against ``max(1e-9, 2·tol)``.
+    max_iter : int
+        Largest number of Newton iterations.
 
     Returns
     -------
@@ -97,7 +144,8 @@ def funicular(B, lengths, loads, *, tol: float = 1e-13, max_iter: int = 100) -> 
     InputError
         Bad lengths or loads, or a span the segments cannot reach.
     ConvergenceError
-        Newton failed (for instance a segment that would go slack).
+        Newton failed (for instance a segment that would go slack), or the
+        residual of the polygon is above tolerance.
 
     Examples
     --------
@@ -109,52 +157,88 @@ def funicular(B, lengths, loads, *, tol: float = 1e-13, max_iter: int = 100) -> 
     """
     B = real("B", B)
     require("B", np.shape(B) == (2,), "must be a point (x, y)", 0.0)
-    lengths = positive("lengths", np.atleast_1d(lengths))
-    loads = real("loads", loads)
-    loads = np.asarray(loads, dtype=float).reshape(-1, 2) if np.size(loads) else np.zeros((0, 2))
+    lengths = positive("lengths", np.atleast_1d(real("lengths", lengths)))
+    loads = np.atleast_1d(real("loads", loads))
+    if loads.size == 0:
+        loads = np.zeros((0, 2))
+    if loads.ndim == 1 and loads.size == 2:
+        loads = loads.reshape(1, 2)
+    if loads.ndim != 2 or loads.shape[1] != 2:
+        raise InputError(
+            "loads", f"must be (Px, Py) pairs, an array of shape (n, 2); got shape {loads.shape}"
+        )
     if lengths.ndim != 1 or len(lengths) != len(loads) + 1:
         raise InputError(
             "lengths", f"need one more segment than loads: {len(lengths)} segments, {len(loads)} loads"
         )
-    total, reach = lengths.sum(), float(np.hypot(*B))
-    require("lengths", total > reach, f"must add up to more than the distance A-B ({reach:.6g})", total)
-    offsets = np.vstack([np.zeros(2), np.cumsum(loads, axis=0)])  # t_j = t_1 - offsets_j
+    tol = scalar("tol", tol)
+    require("tol", tol > 0, "must be > 0", tol)
+    if isinstance(max_iter, (bool, np.bool_)) or not isinstance(max_iter, (int, np.integer)) or max_iter < 1:
+        raise InputError("max_iter", f"must be a positive integer, got {max_iter!r}")
+    largest = np.abs(loads).max(initial=0.0)
+    if not largest > 0:
+        raise InputError(
+            "loads", "give at least one non-zero load: an unloaded weightless cable has no shape"
+        )
+    # homogeneous problem: solve in units where the loads and lengths are of order one
+    force_unit, length_unit = _unit(largest), _unit(lengths.max())
+    P, L, target = loads / force_unit, lengths / length_unit, B / length_unit
+    total, reach = L.sum(), float(np.hypot(*target))
+    if not total > reach:
+        raise InputError(
+            "lengths",
+            f"must add up to more than the distance A-B ({reach:.6g} x {length_unit:g}), "
+            f"got {total:.6g} x {length_unit:g}",
+        )
+    offsets = np.vstack([np.zeros(2), np.cumsum(P, axis=0)])  # t_j = t_1 - offsets_j
 
     # start: a parabola-like guess, H from the total load, V sharing the weight
-    scale = max(np.abs(loads).sum(), 1e-300)
-    t1 = np.array([scale, -0.5 * loads[:, 1].sum() - 0.5 * loads[:, 0].sum() + B[1] / total * scale])
+    scale = np.abs(P).sum()
+    t1 = np.array([scale, -0.5 * P[:, 1].sum() - 0.5 * P[:, 0].sum() + target[1] / total * scale])
     history = []
 
     def closure(t1):
         forces = t1 - offsets
         norms = np.hypot(forces[:, 0], forces[:, 1])
         units = forces / norms[:, None]
-        return forces, norms, units, units.T @ lengths - B
+        return forces, norms, units, units.T @ L - target
 
-    forces, norms, units, error = closure(t1)
-    for _ in range(max_iter):
-        history.append(float(np.abs(error).max() / total))
-        if history[-1] < tol:
-            break
-        jac = np.einsum("j,jab->ab", lengths / norms, np.eye(2) - units[:, :, None] * units[:, None, :])
-        try:
-            step = -np.linalg.solve(jac, error)
-        except np.linalg.LinAlgError as exc:
-            raise ConvergenceError(f"funicular: singular Jacobian ({exc})", history) from exc
-        alpha = 1.0
-        for _ in range(40):  # backtracking on the closure error
-            trial = closure(t1 + alpha * step)
-            if np.all(trial[1] > 0) and np.abs(trial[3]).max() < np.abs(error).max() * (1 - 1e-4 * alpha):
+    with np.errstate(divide="ignore", invalid="ignore"):
+        forces, norms, units, error = closure(t1)
+        for _ in range(max_iter):
+            history.append(float(np.abs(error).max() / total))
+            if history[-1] < tol:
                 break
-            alpha *= 0.5
-        t1 = t1 + alpha * step
-        forces, norms, units, error = trial
-    else:
-        raise ConvergenceError("funicular: Newton did not converge", history)
-    nodes = np.vstack([np.zeros(2), np.cumsum(lengths[:, None] * units, axis=0)])
+            jac = np.einsum("j,jab->ab", L / norms, np.eye(2) - units[:, :, None] * units[:, None, :])
+            try:
+                step = -np.linalg.solve(jac, error)
+            except np.linalg.LinAlgError as exc:
+                raise ConvergenceError(f"funicular: singular Jacobian ({exc})", history) from exc
+            alpha = 1.0
+            for _ in range(40):  # backtracking on the closure error
+                trial = closure(t1 + alpha * step)
+                if np.all(trial[1] > 0) and np.abs(trial[3]).max() < np.abs(error).max() * (1 - 1e-4 * alpha):
+                    break
+                alpha *= 0.5
+            else:  # no step along Newton's direction reduces the closure error: stop now
+                raise ConvergenceError(
+                    "funicular: line search found no decrease of the closure error", history
+                )
+            t1 = t1 + alpha * step
+            forces, norms, units, error = trial
+        else:
+            raise ConvergenceError("funicular: Newton did not converge", history)
+    if not (np.all(np.isfinite(forces)) and np.all(norms > 0)):
+        raise ConvergenceError("funicular: Newton stopped on a slack or undefined segment", history)
+    nodes = np.vstack([np.zeros(2), np.cumsum(L[:, None] * units, axis=0)]) * length_unit
     nodes[-1] = B
+    forces = forces * force_unit
+    T = np.hypot(forces[:, 0], forces[:, 1])
+    _finite("loads", "the segment forces", forces, T)
+    require("loads", T > 0, "are so small that the segment forces underflow", T)
     angles = np.arctan2(forces[:, 1], forces[:, 0])
-    return Funicular(norms, angles, nodes, forces, loads, lengths, history)
+    solution = Funicular(T, angles, nodes, forces, loads, lengths, history)
+    return _accept(solution, history, max(ACCEPT, 2.0 * tol))
 
 
 @dataclass(frozen=True)
@@ -169,6 +253,11 @@ class FunicularVertical:
         Segment tensions.
     nodes : ndarray (n+2, 2)
         A, the load points, B.
+    loads : ndarray (n, 2)
+        The ``(x, P)`` pairs in increasing x, loads at the same abscissa
+        summed into one.
+    constraint : tuple
+        ``("through", (x, y))`` or ``("H", H)``.
     """
 
     H: float
@@ -177,6 +266,7 @@ class FunicularVertical:
     T: np.ndarray
     nodes: np.ndarray
     loads: np.ndarray
+    constraint: tuple = ("H", None)
 
     def to_vtk(self, path):
         """Write the polygon as VTK (see :func:`skcable.io.funicular_mesh`); returns the path."""
@@ -185,12 +275,44 @@ class FunicularVertical:
         return write(funicular_mesh(self), path)
 
     def residual(self) -> float:
-        """Largest joint force imbalance relative to the largest tension."""
-        dx, dy = np.diff(self.nodes, axis=0).T
-        vertical = self.H * dy / dx  # vertical force component in each segment
-        joint = vertical[1:] - vertical[:-1] - self.loads[:, 1]
-        ends = [vertical[0] + self.V_A, vertical[-1] - self.V_B]
-        return float(np.abs(np.concatenate([joint, ends])).max() / self.T.max())
+        """Largest relative residual, each term divided by the size of what cancels in it.
+
+        Segment directions against the segment forces (``H dy + v dx = 0``,
+        v the vertical force from ``V_A`` and the loads; relative to the
+        tension times the node coordinates, whose differences give dx and
+        dy), the tensions (``T = hypot(H, v)``), vertical equilibrium and
+        moment about A of the whole cable, and the point the cable was
+        asked to pass through.
+        """
+        # exact rescaling by powers of two, so that nothing below overflows
+        F, L = _unit(self.T.max()), _unit(np.abs(self.nodes).max())
+        H, V_A, V_B, T = self.H / F, self.V_A / F, self.V_B / F, self.T / F
+        nodes, x, P = self.nodes / L, self.loads[:, 0] / L, self.loads[:, 1] / F
+        span, dh = nodes[-1]
+        vertical = V_A - np.concatenate([[0.0], np.cumsum(P)])
+        carried = abs(V_A) + np.concatenate([[0.0], np.cumsum(np.abs(P))])
+        dx, dy = np.diff(nodes, axis=0).T
+        size = np.abs(nodes).sum(axis=1)
+        # a segment below the resolution of the scene's coordinates (both ends
+        # rounded to the same point) has no direction to check: 0/0 counts as 0
+        cross, scale = H * dy + vertical * dx, T * (size[:-1] + size[1:]) + carried * np.abs(dx)
+        direction = np.divide(cross, scale, out=np.zeros_like(cross), where=scale > 0)
+        tension = (T - np.hypot(H, vertical)) / T
+        weight = np.abs(P).sum()
+        vertical_sum = (V_A + V_B - P.sum()) / (abs(V_A) + abs(V_B) + weight)
+        moment_terms = (V_B * span, H * dh, (P * x).sum())
+        moment = (moment_terms[0] - moment_terms[1] - moment_terms[2]) / (
+            abs(moment_terms[0]) + abs(moment_terms[1]) + (np.abs(P) * x).sum()
+        )
+        terms = [np.abs(direction).max(), np.abs(tension).max(), abs(vertical_sum), abs(moment)]
+        if self.constraint[0] == "through":
+            xd, yd = self.constraint[1][0] / L, self.constraint[1][1] / L
+            j = int(np.searchsorted(nodes[:, 0], xd)) - 1
+            j = min(max(j, 0), len(dx) - 1)
+            y_at = nodes[j, 1] + dy[j] * (xd - nodes[j, 0]) / dx[j]
+            terms.append(abs(y_at - yd) / (size[j] + size[j + 1] + abs(xd) + abs(yd)))
+        values = np.array(terms, dtype=float)
+        return float("nan") if np.isnan(values).any() else float(values.max())
 
 
 def funicular_vertical(span, dh, loads, *, through=None, H=None) -> FunicularVertical:
@@ -202,10 +324,19 @@ def funicular_vertical(span, dh, loads, *, through=None, H=None) -> FunicularVer
         B = (span, dh) (m).
     loads : array_like (n, 2)
         ``(x, P)`` pairs: abscissa in (0, span) and downward load P (N).
+        Loads at the same abscissa are one load, their sum.
     through : (float, float), optional
         A point (x, y) the cable passes through, x in (0, span).
     H : float, optional
         Horizontal tension. Give exactly one of ``through`` and ``H``.
+
+    Raises
+    ------
+    InputError
+        A bad argument (named), or data so extreme that a result leaves
+        the range of a float.
+    ConvergenceError
+        The residual of the polygon exceeds 1e-9 (a bug, reported loudly).
 
     Examples
     --------
@@ -215,32 +346,62 @@ def funicular_vertical(span, dh, loads, *, through=None, H=None) -> FunicularVer
     >>> round(f.H, 3), round(f.V_A, 3)
     (28.511, 80.851)
     """
-    span = positive("span", span)
-    dh = real("dh", dh)
-    loads = np.asarray(real("loads", loads), dtype=float).reshape(-1, 2)
-    order = np.argsort(loads[:, 0])
-    x, P = loads[order, 0], loads[order, 1]
+    span = scalar("span", span)
+    require("span", span > 0, "must be > 0", span)
+    dh = scalar("dh", dh)
+    loads = np.atleast_1d(real("loads", loads))
+    if loads.size == 0:
+        loads = np.zeros((0, 2))
+    if loads.ndim == 1 and loads.size == 2:
+        loads = loads.reshape(1, 2)
+    if loads.ndim != 2 or loads.shape[1] != 2:
+        raise InputError("loads", f"must be (x, P) pairs, an array of shape (n, 2); got shape {loads.shape}")
+    if (through is None) == (H is None):
+        raise InputError("constraint", "give exactly one of through=(x, y) and H")
+    x, inverse = np.unique(loads[:, 0], return_inverse=True)  # sorted; coincident loads summed
+    P = np.bincount(inverse.ravel(), weights=loads[:, 1], minlength=len(x))
     require("loads", (x > 0) & (x < span), "load abscissae must lie strictly inside (0, span)", x)
+    require("dh", abs(dh) <= 1e150 * span, "must satisfy |dh| <= 1e150·span", dh)
+    # homogeneous problem: lengths and forces divided by powers of two near their sizes
+    length_unit = _unit(max(span, abs(dh)))
+    largest = float(np.abs(P).max(initial=0.0))
+    force_unit = _unit(largest) if largest > 0 else 1.0
+    span_, dh_, x_, P_ = span / length_unit, dh / length_unit, x / length_unit, P / force_unit
+    reaction_a = float((P_ * (span_ - x_)).sum() / span_)
 
     def moment(at):  # simply supported beam of the same span
         at = np.asarray(at, dtype=float)
-        reaction_a = (P * (span - x)).sum() / span
-        return reaction_a * at - (P * np.clip(at[..., None] - x, 0.0, None)).sum(axis=-1)
+        return reaction_a * at - (P_ * np.clip(at[..., None] - x_, 0.0, None)).sum(axis=-1)
 
-    if (through is None) == (H is None):
-        raise InputError("constraint", "give exactly one of through=(x, y) and H")
     if H is None:
-        xd, yd = real("through", through)
+        through = real("through", through)
+        require("through", np.shape(through) == (2,), "must be a point (x, y)", 0.0)
+        xd, yd = float(through[0]), float(through[1])
         require("through", 0 < xd < span, "x must lie strictly inside (0, span)", xd)
-        depth = dh * xd / span - yd
+        depth = dh_ * (xd / length_unit) / span_ - yd / length_unit
         require("through", depth > 0, "the point must lie below the chord AB", yd)
-        H = float(moment(xd)) / depth
-        require("through", H > 0, "needs a positive beam moment there (downward loads)", H)
-    H = float(positive("H", H))
-    xs = np.concatenate([[0.0], x, [span]])
-    ys = dh * xs / span - moment(xs) / H
-    V_A = (P * (span - x)).sum() / span - H * dh / span
-    V_B = P.sum() - V_A
-    vertical = V_A - np.concatenate([[0.0], np.cumsum(P)])
-    T = np.hypot(H, vertical)
-    return FunicularVertical(H, float(V_A), float(V_B), T, np.column_stack([xs, ys]), np.column_stack([x, P]))
+        H_ = float(moment(xd / length_unit)) / depth
+        require("through", H_ > 0, "needs a positive beam moment there (downward loads)", H_ * force_unit)
+        H = H_ * force_unit
+        require("through", math.isfinite(H) and H > 0, "gives an H outside the range of a float", H)
+        constraint = ("through", (xd, yd))
+    else:
+        H = scalar("H", H)
+        require("H", H > 0, "must be > 0", H)
+        H_ = H / force_unit
+        constraint = ("H", H)
+    xs = np.concatenate([[0.0], x_, [span_]])
+    with np.errstate(over="ignore", divide="ignore", invalid="ignore"):
+        ys = dh_ * xs / span_ - moment(xs) / H_
+        ys[0], ys[-1] = 0.0, dh_  # the supports, exactly
+        V_A_ = reaction_a - H_ * dh_ / span_
+        vertical = V_A_ - np.concatenate([[0.0], np.cumsum(P_)])
+        nodes = np.column_stack([xs, ys]) * length_unit
+        V_A, V_B = float(V_A_ * force_unit), float((P_.sum() - V_A_) * force_unit)
+        T = np.hypot(H_, vertical) * force_unit
+    blame = "through" if constraint[0] == "through" else "H"
+    _finite(blame, "the cable's shape", nodes)
+    _finite("loads", "the reactions and tensions", V_A, V_B, T)
+    require("loads", T > 0, "are so small that the tensions underflow", T)
+    solution = FunicularVertical(H, V_A, V_B, T, nodes, np.column_stack([x, P]), constraint)
+    return _accept(solution, [])

@@ -21,10 +21,15 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from skcable._checks import positive, real
+from skcable._checks import positive, scalar
 from skcable.errors import InputError
 
 __all__ = ["DeckLoad", "DistributedLoad", "PointLoad", "SelfWeight", "unstretched_measure"]
+
+
+def _positive_scalar(name, value) -> float:
+    """One finite number > 0 (a load intensity is one number, not an array)."""
+    return positive(name, scalar(name, value))
 
 
 def unstretched_measure(slope, H, EA):
@@ -44,7 +49,7 @@ class SelfWeight:
     w: float
 
     def __post_init__(self):
-        positive("w", self.w)
+        object.__setattr__(self, "w", _positive_scalar("w", self.w))
 
     def graph_terms(self, x, slope, H, EA):
         f, df_ds, df_dh = unstretched_measure(slope, H, EA)
@@ -58,7 +63,7 @@ class DeckLoad:
     w: float
 
     def __post_init__(self):
-        positive("w", self.w)
+        object.__setattr__(self, "w", _positive_scalar("w", self.w))
 
     def graph_terms(self, x, slope, H, EA):
         zero = np.zeros_like(slope)
@@ -80,7 +85,7 @@ class DistributedLoad:
     per: str = "cable"
 
     def __post_init__(self):
-        if self.per not in ("cable", "horizontal"):
+        if not isinstance(self.per, str) or self.per not in ("cable", "horizontal"):
             raise InputError("per", f"must be 'cable' or 'horizontal', got {self.per!r}")
         if self.qx is None and self.qy is None:
             raise InputError("qy", "give qy, qx or both")
@@ -117,5 +122,5 @@ class PointLoad:
     P: float
 
     def __post_init__(self):
-        real("x", self.x)
-        real("P", self.P)
+        object.__setattr__(self, "x", scalar("x", self.x))
+        object.__setattr__(self, "P", scalar("P", self.P))

@@ -24,20 +24,41 @@ quadrature of a cancellation-free integrand while ``δ ≤ 1/2`` (error below
 
 from __future__ import annotations
 
+import math
 from functools import cached_property
 
 import numpy as np
 
-from skcable._checks import exactly_one, positive, real, require
+from skcable._checks import broadcast, exactly_one, float_range, positive, real, require
 from skcable._xp import namespace
+from skcable.cable._catenary import _finite_at, _lowest, _unit
 from skcable.cable._roots import find_root
 from skcable.cable._special import asinh_diff
-from skcable.cable.solution import CableSolution, checked
+from skcable.cable.solution import CableSolution, checked_closed_form
 from skcable.errors import InputError
 
 __all__ = ["Parabola", "parabola"]
 
+#: Range of delta = span/(2a), the half-difference of the end slopes, and
+#: largest |dh|/span: below/above, squares of slopes or x/(2a) leave the
+#: range (or the precision) of a float.
+_DELTA_MIN, _DELTA_MAX = 1e-300, 1e150
+_STEEPEST = 1e150
+
 _NODES, _WEIGHTS = np.polynomial.legendre.leggauss(24)
+
+
+_NODE_WEIGHT = tuple(zip(_NODES.tolist(), _WEIGHTS.tolist(), strict=True))
+
+
+def _excess_quadrature_scalar(a, slope, delta):
+    """:func:`_excess_quadrature` for floats (a NumPy call per node pair costs more)."""
+    base = math.hypot(1.0, slope)
+    total = 0.0
+    for node, weight in _NODE_WEIGHT:
+        t = node * delta
+        total += weight * t * (2.0 * slope + t) / (math.hypot(1.0, slope + t) + base)
+    return a * delta * total
 
 
 def _excess_quadrature(a, slope, delta):
@@ -49,15 +70,15 @@ def _excess_quadrature(a, slope, delta):
 def _excess_closed(a, slope, delta):
     xp = namespace(a, slope, delta)
     p_a, p_b = slope - delta, slope + delta
-    rise = p_b * xp.sqrt(1.0 + p_b * p_b) - p_a * xp.sqrt(1.0 + p_a * p_a)
-    return 0.5 * a * (rise + asinh_diff(p_b, p_a)) - 2.0 * a * delta * xp.sqrt(1.0 + slope * slope)
+    rise = p_b * xp.hypot(1.0, p_b) - p_a * xp.hypot(1.0, p_a)
+    return 0.5 * a * (rise + asinh_diff(p_b, p_a)) - 2.0 * a * delta * xp.hypot(1.0, slope)
 
 
 def _excess_length(a, slope, delta):
     """Length minus chord of the parabola with parameter ``a`` whose slopes
     run from ``slope - delta`` to ``slope + delta``."""
     if namespace(a, slope, delta) is not np:
-        return float(_excess_quadrature(a, slope, delta)) if delta <= 0.5 else _excess_closed(a, slope, delta)
+        return _excess_quadrature_scalar(a, slope, delta) if delta <= 0.5 else _excess_closed(a, slope, delta)
     a, slope, delta = np.broadcast_arrays(a, slope, delta)
     small = delta <= 0.5
     out = np.empty(a.shape)
@@ -66,12 +87,55 @@ def _excess_length(a, slope, delta):
     return out
 
 
+def length_derivatives(a, slope, delta, length):
+    """``(dS/da, dS/dspan)`` of the parabola's length at constant ``dh``.
+
+    With ``r = sqrt(1 + p²)``: ``dS/da = S/a - delta (r_A + r_B)``, the error
+    of the trapezoidal rule for ``∫ r dp``, which cancels for taut cables: for
+    ``delta <= 1/2`` it is taken as that error's integral,
+    ``-(delta³/2) ∫_{-1}^{1} (1 - t²) (1 + (slope + delta t)²)^{-3/2} dt``
+    (24-point Gauss–Legendre). ``dS/dspan = (r_A + r_B)/2 - 2 slope²/(r_A + r_B)``
+    is written as ``(1 + delta² + r_A r_B - slope²)/(r_A + r_B)`` with
+    ``r_A r_B - slope² = ((1 + delta²)² + 2 slope² (1 - delta²))/(r_A r_B + slope²)``,
+    free of cancellation for ``delta <= 1``.
+    """
+    xp = namespace(a, slope, delta, length)
+    p_a, p_b = slope - delta, slope + delta
+    r_a, r_b = xp.hypot(1.0, p_a), xp.hypot(1.0, p_b)
+
+    def quadrature(slope, delta):
+        t = np.multiply.outer(_NODES, delta)
+        integrand = (1.0 - _NODES[:, None] ** 2).reshape((24,) + (1,) * np.ndim(delta)) * (
+            1.0 + (slope + t) ** 2
+        ) ** -1.5
+        return -0.5 * delta**3 * np.tensordot(_WEIGHTS, integrand, axes=1)
+
+    def direct(length, a, delta, r_a, r_b):
+        return length / a - delta * (r_a + r_b)
+
+    if xp is not np:
+        d_a = float(quadrature(slope, delta)) if delta <= 0.5 else direct(length, a, delta, r_a, r_b)
+    else:
+        a, slope, delta, length, r_a, r_b = np.broadcast_arrays(a, slope, delta, length, r_a, r_b)
+        small = delta <= 0.5
+        d_a = np.empty(a.shape)
+        d_a[small] = quadrature(slope[small], delta[small])
+        d_a[~small] = direct(length[~small], a[~small], delta[~small], r_a[~small], r_b[~small])
+    product = r_a * r_b
+    rest = ((1.0 + delta * delta) ** 2 + 2.0 * slope * slope * (1.0 - delta * delta)) / (
+        product + slope * slope
+    )
+    d_span = (1.0 + delta * delta + rest) / (r_a + r_b)
+    return d_a, d_span
+
+
 class Parabola(CableSolution):
     """Solution of :func:`parabola`; every attribute broadcasts.
 
     Attributes are those of :class:`~skcable.cable.Catenary` (``H, V_A, V_B,
-    T_A, T_B, length, sag, x_low, y_low``); ``a = H/w`` and the end slopes
-    ``p_A``, ``p_B``.
+    T_A, T_B, length, sag``, the lowest point ``x_low, y_low`` in [0, span],
+    the vertex ``x_vertex, y_vertex``, which may lie outside the span);
+    ``a = H/w`` and the end slopes ``p_A``, ``p_B``.
     """
 
     def __init__(self, span, dh, w, a, constraint):
@@ -97,11 +161,11 @@ class Parabola(CableSolution):
 
     @cached_property
     def T_A(self):
-        return self.H * self._xp.sqrt(1.0 + self.p_A**2)
+        return self.H * self._xp.hypot(1.0, self.p_A)
 
     @cached_property
     def T_B(self):
-        return self.H * self._xp.sqrt(1.0 + self.p_B**2)
+        return self.H * self._xp.hypot(1.0, self.p_B)
 
     @cached_property
     def length(self):
@@ -110,57 +174,101 @@ class Parabola(CableSolution):
 
     @cached_property
     def sag(self):
-        return self.span**2 / (8.0 * self.a)
+        return 0.25 * self.span * self._delta  # span²/(8a)
 
     @cached_property
-    def x_low(self):
+    def x_vertex(self):
         return -self.a * self.p_A
 
     @cached_property
+    def y_vertex(self):
+        return -0.5 * (self.a * self.p_A) * self.p_A
+
+    @cached_property
+    def x_low(self):
+        xp = self._xp
+        return xp.minimum(xp.maximum(self.x_vertex, 0.0), self.span)
+
+    @cached_property
     def y_low(self):
-        return -0.5 * self.a * self.p_A**2
+        return _lowest(self.p_A, self.p_B, self.y_vertex, self.dh)
 
     def slope(self, x):
         """dy/dx at ``x``."""
-        return self.p_A + real("x", x) / self.a
+        with float_range("x", "slope(x)"):
+            return _finite_at("x", self.p_A + real("x", x) / self.a, "slope(x)")
 
     def y(self, x):
         """Height of the cable above A at abscissa ``x`` (m)."""
         x = real("x", x)
-        return x * (self.p_A + 0.5 * x / self.a)
+        with float_range("x", "y(x)"):
+            return _finite_at("x", x * (self.p_A + 0.5 * x / self.a), "y(x)")
 
     def T(self, x):
         """Tension at ``x`` (N)."""
         slope = self.slope(x)
-        return self.H * namespace(slope).sqrt(1.0 + slope * slope)
+        with float_range("x", "T(x)"):
+            return _finite_at("x", self.H * namespace(slope).hypot(1.0, slope), "T(x)")
 
     def weight_per_length(self, x, slope):
-        return self.w / np.sqrt(1.0 + slope * slope)  # w per horizontal metre
+        return self.w / np.hypot(1.0, slope)  # w per horizontal metre
 
     def _residuals(self):
         xp = self._xp
         chord = xp.hypot(self.span, self.dh)
         load = self.w * self.span
-        yield (self.span * (self.p_A + 0.5 * self.span / self.a) - self.dh) / chord
-        yield (self.V_A + self.V_B - load) / load
+        # closure at B: p_A = slope - delta, then + delta again: scale by the slopes that cancel
+        closure = self.span * (self.p_A + 0.5 * self.span / self.a) - self.dh
+        yield closure / (chord + self.span * (xp.abs(self.p_A) + xp.abs(self.p_B)))
+        # vertical equilibrium: V_A and V_B cancel for taut inclined cables
+        yield (self.V_A + self.V_B - load) / (xp.abs(self.V_A) + xp.abs(self.V_B) + load)
         yield from self._common_residuals(xp)
 
 
 def _a_from_length(span, dh, length):
     xp = namespace(span, dh, length)
+    unit = _unit(xp.maximum(span, xp.abs(dh)), xp)
+    span, dh, length = span / unit, dh / unit, length / unit  # exact
     chord = xp.hypot(span, dh)
-    require("length", length > chord, "must exceed the chord sqrt(span**2 + dh**2)", length)
+    require("length", length > chord, "must exceed the chord sqrt(span**2 + dh**2)", length * unit)
+    require(
+        "length",
+        length <= 1e100 * span,
+        "is more than 1e100 spans: the end slopes of the parabola leave the range of a float",
+        length * unit,
+    )
     excess = length - chord
     slope = dh / span
     # shallow-parabola estimate, excess ~ span^3 / (24 a^2 (1 + slope^2)^(3/2))
-    a_guess = xp.sqrt(span**3 / (24.0 * excess)) / (1.0 + slope * slope) ** 0.75
+    a_guess = xp.sqrt(span / (24.0 * excess)) * span / (1.0 + slope * slope) ** 0.75
 
     def f(t, span, slope, excess, a_guess):
         a = a_guess * np.exp(t)
         return _excess_length(a, slope, span / (2.0 * a)) / excess - 1.0
 
-    t, history = find_root(f, -40.0, 40.0, (span, slope, excess, a_guess), what="parabola(length=...)")
-    return a_guess * namespace(t).exp(t), history
+    # at lo the end slopes differ by 2·_DELTA_MAX: far more excess than asked
+    lo = xp.log(span / (2.0 * _DELTA_MAX * a_guess))
+    t, history = find_root(
+        f, lo, 40.0, (span, slope, excess, a_guess), what="parabola(length=...)", xtol=_LOG_XTOL
+    )
+    return a_guess * namespace(t).exp(t) * unit, history
+
+
+_LOG_XTOL = 4.0 * np.finfo(float).eps
+
+
+def _a_from_T_max(span, dh, tau, T_max):
+    """``a`` from ``tau = T_max/w``: T_max = w·a·sqrt(1 + (|dh|/span + span/2a)²)
+    is a quadratic in ``a``; lengths scaled to order one first."""
+    xp = namespace(span, dh, tau)
+    require(
+        "T_max", tau > 0.5 * span, "must exceed w·span/2, the weight carried by one support at least", T_max
+    )
+    slope = xp.abs(dh / span)
+    unit = _unit(xp.maximum(span, tau), xp)
+    span, tau = span / unit, tau / unit  # exact
+    root = xp.sqrt(4.0 * (1.0 + slope * slope) * tau * tau - span * span)
+    return 2.0 * (tau - 0.5 * span) * (tau + 0.5 * span) / (span * slope + root) * unit
 
 
 def parabola(span, dh, w, *, length=None, sag=None, H=None, low=None, T_max=None):
@@ -175,12 +283,23 @@ def parabola(span, dh, w, *, length=None, sag=None, H=None, low=None, T_max=None
         from the cable, seed 000 §2).
     length, sag, H, low, T_max : float or array_like
         Exactly one constraint, as in :func:`~skcable.cable.catenary`; here
-        ``sag`` is the mid-span sag ``f`` of ``H = w span² / (8 f)``.
+        ``sag`` is the mid-span sag ``f`` of ``H = w span² / (8 f)`` and
+        ``low`` the y of the vertex, below both supports (``low < min(0, dh)``).
 
     Returns
     -------
     Parabola
-        The same interface as :class:`~skcable.cable.Catenary`.
+        The same interface as :class:`~skcable.cable.Catenary`: ``x_low, y_low``
+        the cable's lowest point, ``x_vertex, y_vertex`` the parabola's vertex.
+
+    Raises
+    ------
+    InputError
+        A non-physical argument (named), not exactly one constraint, arrays
+        that do not broadcast, or data so extreme that a result would leave
+        the range of a float.
+    ConvergenceError
+        The length search stopped, or the residual exceeds 1e-9.
 
     Examples
     --------
@@ -194,34 +313,42 @@ def parabola(span, dh, w, *, length=None, sag=None, H=None, low=None, T_max=None
     dh = real("dh", dh)
     w = positive("w", w)
     name, value = exactly_one(length=length, sag=sag, H=H, low=low, T_max=T_max)
-    xp = namespace(span, dh, w, value if isinstance(value, np.ndarray) else 0.0)
+    value = real(name, value) if name == "low" else positive(name, value)
+    broadcast(span=span, dh=dh, w=w, **{name: value})
+    xp = namespace(span, dh, w, value)
+    require("dh", xp.abs(dh) <= _STEEPEST * span, f"must satisfy |dh| <= {_STEEPEST:g}·span", dh)
     history = []
-    if name == "H":
-        a = positive("H", value) / w
-    elif name == "sag":
-        a = span**2 / (8.0 * positive("sag", value))
-    elif name == "low":
-        low = real("low", value)
-        depth_a, depth_b = -low, dh - low
-        require("low", (depth_a > 0) & (depth_b > 0), "must lie below both supports, low < min(0, dh)", low)
-        a = span**2 / (2.0 * (xp.sqrt(depth_a) + xp.sqrt(depth_b)) ** 2)
-    elif name == "T_max":
-        tau = positive("T_max", value) / w
-        require(
-            "T_max",
-            tau > 0.5 * span,
-            "must exceed w·span/2, the weight carried by one support at least",
-            value,
-        )
-        slope = xp.abs(dh / span)
-        a = (
-            2.0
-            * (tau**2 - 0.25 * span**2)
-            / (span * slope + xp.sqrt(4.0 * (1.0 + slope**2) * tau**2 - span**2))
-        )
-    elif name == "length":
-        a, history = _a_from_length(span, dh, positive("length", value))
-    else:  # pragma: no cover - exactly_one guards the names
-        raise InputError("constraint", name)
+    with float_range(name, "an intermediate value"):
+        if name == "H":
+            a = value / w
+        elif name == "sag":
+            a = span / 8.0 * (span / value)
+        elif name == "low":
+            depth_a, depth_b = -value, dh - value
+            require(
+                "low", (depth_a > 0) & (depth_b > 0), "must lie below both supports, low < min(0, dh)", value
+            )
+            a = 0.5 * (span / (xp.sqrt(depth_a) + xp.sqrt(depth_b))) ** 2
+        elif name == "T_max":
+            tau = value / w
+            require("T_max", tau < math.inf, "is so large relative to w that T_max/w overflows", value)
+            a = _a_from_T_max(span, dh, tau, value)
+        elif name == "length":
+            a, history = _a_from_length(span, dh, value)
+        else:  # pragma: no cover - exactly_one guards the names
+            raise InputError("constraint", name)
+        delta = span / (2.0 * a)
+    require(name, a > 0, "makes a = H/w underflow", value)
+    require(name, a < math.inf, "makes a = H/w overflow a float", value)
+    require(
+        name, delta >= _DELTA_MIN, "makes the cable so taut that span·w/(2H) underflows (below 1e-300)", value
+    )
+    require(
+        name,
+        delta <= _DELTA_MAX,
+        f"makes the cable so slack that span·w/(2H) exceeds {_DELTA_MAX:g} (squared slopes overflow)",
+        value,
+    )
     value = np.asarray(value, dtype=float)[()]
-    return checked(Parabola(span, dh, w, a, (name, value)), history)
+    with float_range(name, "a result"):
+        return checked_closed_form(Parabola(span, dh, w, a, (name, value)), name, history)

@@ -15,8 +15,12 @@ from scipy.optimize import brentq, elementwise
 from skcable.errors import ConvergenceError
 
 
-def find_root(f, lo, hi, args=(), *, what: str = "root"):
+def find_root(f, lo, hi, args=(), *, what: str = "root", xtol: float | None = None):
     """Root of the monotone ``f(x, *args)`` in ``[lo, hi]``, elementwise.
+
+    ``xtol`` is the absolute tolerance on x of the scalar (Brent) path, by
+    default a few ulps of the bracket's larger end; a search in log space
+    passes a few ulps of one (a relative tolerance on the quantity).
 
     Raises
     ------
@@ -30,7 +34,7 @@ def find_root(f, lo, hi, args=(), *, what: str = "root"):
     hi = np.broadcast_to(np.asarray(hi, dtype=float), shape)
     history: list[float] = []
     if shape == ():
-        return _scalar_root(f, float(lo), float(hi), args, what, history)
+        return _scalar_root(f, float(lo), float(hi), args, what, history, xtol)
 
     def record(res):
         history.append(float(np.max(np.abs(res.f_x))))
@@ -48,15 +52,16 @@ def find_root(f, lo, hi, args=(), *, what: str = "root"):
     return (float(x) if x.ndim == 0 else x), history
 
 
-def _scalar_root(f, lo, hi, args, what, history):
-    """Brent's method to a few ulps of the bracket's scale."""
+def _scalar_root(f, lo, hi, args, what, history, xtol=None):
+    """Brent's method to a few ulps of the bracket's scale (or to ``xtol``)."""
 
     def g(x, *a):
         value = float(f(x, *a))
         history.append(abs(value))
         return value
 
-    xtol = 4.0 * np.finfo(float).eps * max(abs(lo), abs(hi))
+    if xtol is None:
+        xtol = 4.0 * np.finfo(float).eps * max(abs(lo), abs(hi))
     try:
         x, info = brentq(g, lo, hi, args=args, xtol=xtol, maxiter=200, full_output=True, disp=False)
     except ValueError as exc:  # f(lo), f(hi) of the same sign, or not finite

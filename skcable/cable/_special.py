@@ -10,7 +10,7 @@ is at most a factor 6 of the machine epsilon. They take floats or arrays
 
 from __future__ import annotations
 
-from math import factorial
+from math import factorial, log
 
 import numpy as np
 
@@ -21,6 +21,7 @@ _SINHC = tuple(1.0 / factorial(2 * k + 1) for k in range(9, 0, -1))
 #: Coefficients of d/dz(sinh z / z) / z in powers of z**2.
 _DSINHC = tuple(2.0 * k / factorial(2 * k + 1) for k in range(9, 0, -1))
 _SERIES_BELOW = 1.0
+_LOG2 = log(2.0)
 
 
 def horner(coefficients, t):
@@ -80,6 +81,17 @@ def z_minus_tanh(z):
     return z * z * dsinhc(z) / namespace(z).cosh(z)
 
 
+def z_minus_tanh_over_cube(z):
+    """``(z - tanh z) / z**3`` (-> 1/3 as z -> 0), without forming z**3."""
+    xp = namespace(z)
+    return piecewise(
+        z,
+        abs(z) < _SERIES_BELOW,
+        lambda z: horner(_DSINHC, z * z) / xp.cosh(z),
+        lambda z: z_minus_tanh(z) / (z * z * z),
+    )
+
+
 def asinh_diff(p, q):
     """``asinh(p) - asinh(q)`` without cancellation when p and q are close.
 
@@ -94,3 +106,50 @@ def asinh_diff(p, q):
         return xp.arcsinh((p - q) * (p + q) / (p * rq + q * rp) if same else p * rq - q * rp)
     den = np.where(same, p * rq + q * rp, 1.0)
     return np.arcsinh(np.where(same, (p - q) * (p + q) / den, p * rq - q * rp))
+
+
+def log_cosh(x):
+    """``log(cosh(x))`` for any real x, without overflow (absolute error ~1e-16)."""
+    xp = namespace(x)
+    ax = xp.abs(x)
+    return ax + xp.log1p(xp.exp(-2.0 * ax)) - _LOG2
+
+
+def power_product(coefficient, *factors):
+    """``coefficient · Π x**p`` over ``(x, p)`` in ``factors`` as ``(mantissa, exponent)``.
+
+    ``x > 0`` (float or array), ``p`` a small integer. The mantissas of the
+    factors (in [1/2, 1)) and their binary exponents are combined apart, so
+    that no intermediate over- or underflows: the result is right to a few
+    ulps whenever it is representable. Turn it into a float with :func:`ldexp_sum`.
+    """
+    xp = namespace(*(x for x, _ in factors))
+    mantissa, exponent = coefficient, 0
+    for x, p in factors:
+        m, e = xp.frexp(x)
+        mantissa = mantissa * m**p
+        exponent = exponent + e * p
+    return mantissa, exponent
+
+
+def ldexp_sum(*terms):
+    """Sum of ``mantissa · 2**exponent`` terms (from :func:`power_product`).
+
+    The terms are brought to the largest exponent before adding, so only the
+    final scaling can over- or underflow: it gives ``inf`` (never raises) or
+    a zero/subnormal the caller can reject.
+    """
+    xp = namespace(*(m for m, _ in terms), *(e for _, e in terms))
+    top = terms[0][1]
+    for _, e in terms[1:]:
+        top = xp.maximum(top, e)
+    total = 0.0
+    for m, e in terms:
+        total = total + xp.ldexp(m, e - top)  # underflows harmlessly to 0 for negligible terms
+    if xp is np:
+        with np.errstate(over="ignore"):
+            return np.ldexp(total, top)
+    try:
+        return xp.ldexp(total, top)
+    except OverflowError:
+        return float("inf") if total > 0 else float("-inf")

@@ -14,11 +14,13 @@ In series with the elastic stiffness :math:`k_E = EA/S`:
 
 from __future__ import annotations
 
-from skcable._checks import positive
+import numpy as np
+
+from skcable._checks import TINY, broadcast, float_range, positive
 from skcable._xp import namespace
 from skcable.cable._catenary import Catenary
-from skcable.cable._parabola import Parabola
-from skcable.cable._special import z_minus_tanh
+from skcable.cable._parabola import Parabola, length_derivatives
+from skcable.cable._special import ldexp_sum, power_product, z_minus_tanh_over_cube
 from skcable.errors import InputError
 
 __all__ = ["geometric_stiffness", "geometric_stiffness_series"]
@@ -39,23 +41,44 @@ def geometric_stiffness(solution, *, EA=None):
     -------
     float or ndarray
         ``k_G``, or the combined stiffness with ``EA``.
+
+    Raises
+    ------
+    InputError
+        Not a catenary or parabola, a bad ``EA``, or a stiffness beyond the
+        range of a float.
     """
     if isinstance(solution, Catenary):
-        k_g = solution.w / (2.0 * z_minus_tanh(solution.z))
+        # w/(2(z - tanh z)), z - tanh z ~ z³/3 for taut cables: z³ underflows long
+        # before the stiffness overflows, so w/z³ is formed from mantissas and exponents
+        z = solution.z
+        k_g = ldexp_sum(power_product(0.5, (solution.w, 1), (z, -3))) / z_minus_tanh_over_cube(z)
     elif isinstance(solution, Parabola):
-        # S(a, span) at constant dh; k_G = -w (dS/dspan) / (dS/da)
-        s, a, span, dh = solution, solution.a, solution.span, solution.dh
-        xp = namespace(a, span, dh)
-        r_a, r_b = xp.sqrt(1.0 + s.p_A**2), xp.sqrt(1.0 + s.p_B**2)
-        ds_da = s.length / a - span / (2.0 * a) * (r_a + r_b)
-        ds_dspan = 0.5 * (r_a + r_b) + a * dh * (r_a - r_b) / span**2
-        k_g = -s.w * ds_dspan / ds_da
+        # S(a, span) at constant dh; k_G = -w (dS/dspan) / (dS/da), both derivatives
+        # free of the cancellation of the textbook forms for taut cables
+        s = solution
+        with float_range("solution", "k_G"), np.errstate(over="ignore", divide="ignore"):
+            ds_da, ds_dspan = length_derivatives(s.a, s._slope, s._delta, s.length)
+            k_g = -s.w * ds_dspan / ds_da
     else:
         raise InputError("solution", f"must be a Catenary or a Parabola, got {type(solution).__name__}")
+    _representable("solution", k_g, "k_G")
     if EA is None:
         return k_g
-    k_e = positive("EA", EA) / solution.length
-    return 1.0 / (1.0 / k_g + 1.0 / k_e)
+    EA = positive("EA", EA)
+    broadcast(EA=EA, length=solution.length if isinstance(solution.length, np.ndarray) else 0.0)
+    # 1/(1/k_G + 1/k_E) = k_G k_E / (k_G + k_E): the smaller over (1 + smaller/larger)
+    k_e = _representable("EA", ldexp_sum(power_product(1.0, (EA, 1), (solution.length, -1))), "EA/length")
+    xp = namespace(k_g, k_e)
+    small, large = xp.minimum(k_g, k_e), xp.maximum(k_g, k_e)
+    return small / (1.0 + small / large)
+
+
+def _representable(name, value, what):
+    bad = ~np.isfinite(value) | (np.abs(value) < TINY)
+    if np.any(bad):
+        raise InputError(name, f"gives {what} outside the range of a float (over- or underflow)")
+    return value
 
 
 def geometric_stiffness_series(span, w, H):
@@ -68,7 +91,15 @@ def geometric_stiffness_series(span, w, H):
 
     Its leading term is the textbook :math:`12 H^3/(w^2 \mathrm{span}^3)`.
     ``w`` is the weight per unit cable length (N/m).
+
+    It is evaluated as :math:`3H/(2\,\mathrm{span}) + 12 H^3/(w^2\mathrm{span}^3)`
+    with mantissas and exponents apart, so that only a stiffness beyond the
+    range of a float raises :class:`~skcable.errors.InputError`.
     """
     span, w, H = positive("span", span), positive("w", w), positive("H", H)
-    xi = 0.5 * w * span / H
-    return 0.5 * w * (1.0 + 0.5 * xi * xi) / (xi**3 / 3.0)
+    broadcast(span=span, w=w, H=H)
+    k = ldexp_sum(
+        power_product(1.5, (H, 1), (span, -1)),
+        power_product(12.0, (H, 3), (w, -2), (span, -3)),
+    )
+    return _representable("span, w, H", k, "k_G")

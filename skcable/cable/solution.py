@@ -12,13 +12,16 @@ against that shape.
 
 from __future__ import annotations
 
+import functools
+import math
 from functools import cached_property
 
 import numpy as np
 
+from skcable._checks import require
 from skcable._xp import namespace
 from skcable.cable._special import largest_abs
-from skcable.errors import ConvergenceError
+from skcable.errors import ConvergenceError, InputError
 
 __all__ = ["CableSolution", "checked"]
 
@@ -26,7 +29,9 @@ __all__ = ["CableSolution", "checked"]
 ACCEPT = 1e-9
 #: Which attribute of a solution each constraint keyword fixes.
 _ATTRIBUTE_OF = {"length": "length", "sag": "sag", "H": "H", "low": "y_low", "T_max": "T_max"}
-_SHOWN = ("H", "V_A", "V_B", "T_A", "T_B", "length", "sag", "x_low", "y_low")
+_SHOWN = ("H", "V_A", "V_B", "T_A", "T_B", "length", "sag", "x_low", "y_low", "x_vertex", "y_vertex")
+#: The forces among them (an overflow there is blamed on the load unless a force is the constraint).
+_FORCES = frozenset(("H", "V_A", "V_B", "T_A", "T_B"))
 
 
 class CableSolution:
@@ -34,6 +39,11 @@ class CableSolution:
 
     Subclasses define ``H, V_A, V_B, T_A, T_B, length, sag, x_low, y_low``
     and the methods ``y(x)``, ``T(x)``, ``slope(x)`` and ``_residuals()``.
+    ``x_low, y_low`` is the lowest point *of the cable*, in ``[0, span]``: a
+    support when the profile rises or falls all along the span. The closed
+    forms also define ``x_vertex, y_vertex``, the vertex (horizontal tangent)
+    of the catenary or parabola the cable is a piece of, which may lie outside
+    the span; the two coincide when the vertex lies between the supports.
     """
 
     span: np.ndarray
@@ -62,7 +72,8 @@ class CableSolution:
         ]
         name, value = self.constraint
         achieved = getattr(self, _ATTRIBUTE_OF[name])
-        scale = xp.hypot(self.span, self.dh) if name == "low" else value
+        # the lowest point against the chord, or against itself when deeper
+        scale = xp.hypot(self.span, self.dh) + xp.abs(value) if name == "low" else value
         out.append((achieved - value) / scale)
         return out
 
@@ -70,7 +81,7 @@ class CableSolution:
         name = type(self).__name__
         if np.ndim(self.H) != 0:
             return f"{name}(shape={np.shape(self.H)}, constraint={self.constraint[0]!r})"
-        shown = ", ".join(f"{k}={float(getattr(self, k)):.9g}" for k in _SHOWN)
+        shown = ", ".join(f"{k}={float(getattr(self, k)):.9g}" for k in _shown(type(self)))
         return f"{name}(span={self.span:g}, dh={self.dh:g}, w={self.w:g}: {shown})"
 
     @cached_property
@@ -85,7 +96,7 @@ class CableSolution:
         above the horizontal) and ``load`` (n, 2): the distributed load in N
         per metre of unstretched cable, y up (concentrated loads not included).
         """
-        x = np.linspace(0.0, float(self.span), n)
+        x = np.linspace(0.0, float(self.span), _count("n", n, 2))
         slope = np.asarray(self.slope(x), dtype=float)
         weight = np.broadcast_to(self.weight_per_length(x, slope), x.shape)
         return {
@@ -107,9 +118,66 @@ class CableSolution:
 
     def points(self, n: int = 101) -> np.ndarray:
         """Profile sampled at ``n`` equally spaced x: array ``(*shape, n, 2)``."""
-        x = np.multiply.outer(np.linspace(0.0, 1.0, n), self.span)  # (n, *shape)
+        x = np.multiply.outer(np.linspace(0.0, 1.0, _count("n", n, 2)), self.span)  # (n, *shape)
         xy = np.stack([x, np.broadcast_to(self.y(x), x.shape)], axis=-1)
         return np.moveaxis(xy, 0, -2)
+
+
+def _count(name: str, n, least: int) -> int:
+    if isinstance(n, (bool, np.bool_)) or not isinstance(n, (int, np.integer)):
+        raise InputError(name, f"must be an integer, got {n!r}")
+    require(name, n >= least, f"must be at least {least}", n)
+    return int(n)
+
+
+#: The shown attributes a closed form's residual does not evaluate (a finite
+#: residual implies finite forces and, where it enters, length). The rest of
+#: ``_SHOWN`` is bounded by these (0 <= sag <= length; the lowest point lies
+#: between the supports and the vertex).
+_BEYOND_RESIDUAL = ("length", "x_vertex", "y_vertex")
+_CHECKED = ("H", "V_A", "V_B", "T_A", "T_B", *_BEYOND_RESIDUAL)
+
+
+def _finite(value) -> bool:
+    return bool(np.isfinite(value).all()) if isinstance(value, np.ndarray) else math.isfinite(value)
+
+
+def representable(solution: CableSolution, argument: str, load: str = "w") -> None:
+    """Raise :class:`InputError` if a force, the length or the vertex of a
+    closed-form ``solution`` is not a finite float (the other shown
+    attributes are bounded by them).
+
+    Overflowing forces are blamed on ``load`` unless the constraint is itself
+    a force (``H``, ``T_max``); everything else on ``argument``.
+    """
+    force_constraint = solution.constraint[0] in ("H", "T_max")
+    for name in _CHECKED:
+        try:
+            finite = _finite(getattr(solution, name))
+        except (OverflowError, ZeroDivisionError):  # math on Python floats raises, NumPy gives inf
+            finite = False
+        if not finite:
+            blame = load if name in _FORCES and not force_constraint else argument
+            raise InputError(blame, f"puts {name} outside the range of a float (the data are too extreme)")
+
+
+def checked_closed_form(solution: CableSolution, argument: str, history=(), load: str = "w") -> CableSolution:
+    """:func:`checked` for a closed form: a result outside the range of a float
+    raises :class:`InputError` naming ``argument`` (or ``load``), a residual
+    above :data:`ACCEPT` :class:`~skcable.errors.ConvergenceError`."""
+    try:
+        residual = solution.residual()
+        if residual <= ACCEPT and all(_finite(getattr(solution, name)) for name in _BEYOND_RESIDUAL):
+            return solution
+    except (OverflowError, ZeroDivisionError):
+        pass
+    representable(solution, argument, load)  # raises if a result is not finite
+    return checked(solution, history)
+
+
+@functools.cache
+def _shown(cls) -> tuple[str, ...]:
+    return tuple(name for name in _SHOWN if hasattr(cls, name))
 
 
 def checked(solution: CableSolution, history=()) -> CableSolution:

@@ -221,3 +221,148 @@ def test_bad_input_names_the_argument(kwargs, argument):
 def test_bad_element_of_an_array_is_located():
     with pytest.raises(InputError, match=r"index \(1,\)"):
         cable.catenary(np.array([10.0, 10.0]), 0.0, 1.0, length=np.array([11.0, 9.0]))
+
+
+# --- issue #14: residuals sized to their round-off ---------------------------------
+def mp_catenary_state(span, dh, w, a):
+    """40-digit H, V_A, V_B, T_A, T_B, length of the catenary with parameter ``a``."""
+    span, dh, w, a = (mp.mpf(v) for v in (span, dh, w, a))
+    z = span / (2 * a)
+    m = mp.asinh(dh / span * z / mp.sinh(z))
+    H = w * a
+    return {
+        "H": H,
+        "V_A": H * mp.sinh(z - m),
+        "V_B": H * mp.sinh(z + m),
+        "T_A": H * mp.cosh(m - z),
+        "T_B": H * mp.cosh(m + z),
+        "length": 2 * a * mp.sinh(z) * mp.cosh(m),
+    }
+
+
+def test_taut_inclined_cable_passes_its_own_check():
+    # V_A ≈ -3e9 and V_B ≈ 3e9 balance a weight of 104: the old vertical
+    # equilibrium residual (relative to the weight) was 5.7e-9 from round-off alone
+    c = cable.catenary(100.0, 30.0, 1.0, H=1e10)
+    assert c.residual() < 1e-15
+    for name, exact in mp_catenary_state(100.0, 30.0, 1.0, 1e10).items():
+        assert getattr(c, name) == pytest.approx(float(exact), rel=1e-14), name
+    p = cable.parabola(100.0, 30.0, 1.0, H=1e10)
+    assert p.residual() < 1e-15
+    # parabola, seed 000 §2: V_A = w span/2 - H dh/span
+    assert p.V_A == pytest.approx(50.0 - 1e10 * 0.3, rel=1e-15)
+
+
+def random_low_scenes(n=1000, seed=141):
+    """Vertex from 1e-10 to 1e8 spans below the lower support, any chord slope in ±2."""
+    rng = np.random.default_rng(seed)
+    span = 10 ** rng.uniform(0, 3, n)
+    dh = span * rng.uniform(-2, 2, n)
+    w = 10 ** rng.uniform(-2, 4, n)
+    depth = span * 10 ** rng.uniform(-10, 8, n)
+    return span, dh, w, np.minimum(0.0, dh) - depth
+
+
+def random_T_max_scenes(n=1000, seed=142):
+    """Counterweights from 2 to 1e10 times the weight of a span's cable."""
+    rng = np.random.default_rng(seed)
+    span = 10 ** rng.uniform(0, 3, n)
+    dh = span * rng.uniform(-2, 2, n)
+    w = 10 ** rng.uniform(-2, 4, n)
+    return span, dh, w, w * span * 10 ** rng.uniform(0.3, 10, n)
+
+
+def test_1000_random_low_scenes_in_one_array_call():
+    # before the fix 163 of these failed their own check (deep vertices: the
+    # constraint residual was relative to the chord, not to the depth)
+    span, dh, w, low = random_low_scenes()
+    c = cable.catenary(span, dh, w, low=low)
+    assert c.residual() < 1e-12
+    # the vertex is the lowest point; its depth is right to the round-off of the scene
+    assert np.all((c.x_low > 0) & (c.x_low < span))
+    assert np.all(np.abs(c.y_low - low) <= 1e-13 * (np.hypot(span, dh) + np.abs(low)))
+    # 40-digit references: 2a[asinh sqrt(d_A/2a) + asinh sqrt(d_B/2a)] = span (vertex inside)
+    mp.mp.dps = 40
+    for i in range(0, 1000, 40):
+        a = mp_root_in(mp_low_equation(span[i], dh[i], low[i]), c.a[i])
+        exact = mp_catenary_state(span[i], dh[i], w[i], a)
+        for name in ("H", "T_A", "T_B", "length"):
+            assert getattr(c, name)[i] == pytest.approx(float(exact[name]), rel=1e-11), (i, name)
+
+
+def mp_low_equation(span, dh, low):
+    """f(a) = 2a[asinh sqrt(d_A/2a) + asinh sqrt(d_B/2a)] - span: the vertex d_A below A, d_B below B."""
+    d_a, d_b, span = -mp.mpf(low), mp.mpf(dh) - mp.mpf(low), mp.mpf(span)
+    return lambda a: 2 * a * (mp.asinh(mp.sqrt(d_a / (2 * a))) + mp.asinh(mp.sqrt(d_b / (2 * a)))) - span
+
+
+def mp_T_max_equation(span, dh, w, T_max):
+    """g(a) = w a cosh(|m| + z) - T_max, z = span/2a, sinh m = (dh/span) z / sinh z."""
+    span, dh, w, T_max = (mp.mpf(v) for v in (span, dh, w, T_max))
+
+    def g(a):
+        z = span / (2 * a)
+        return w * a * mp.cosh(abs(mp.asinh(dh / span * z / mp.sinh(z))) + z) - T_max
+
+    return g
+
+
+def mp_root_in(f, near):
+    """The 40-digit root of f within 1e-6 (relative) of ``near``: it must be bracketed there."""
+    near = mp.mpf(near)
+    return mp.findroot(f, (near * (1 - mp.mpf("1e-6")), near * (1 + mp.mpf("1e-6"))), solver="anderson")
+
+
+def test_1000_random_T_max_scenes_in_one_array_call():
+    # before the fix 262 of these failed their own check (taut cables: V_A and
+    # V_B cancel in the vertical equilibrium)
+    span, dh, w, T_max = random_T_max_scenes()
+    for branch in ("taut", "slack"):
+        c = cable.catenary(span, dh, w, T_max=T_max, branch=branch)
+        assert c.residual() < 1e-10
+        assert c.T_max == pytest.approx(T_max, rel=1e-10)
+    taut = cable.catenary(span, dh, w, T_max=T_max)
+    mp.mp.dps = 40
+    for i in range(0, 1000, 40):
+        a = mp_root_in(mp_T_max_equation(span[i], dh[i], w[i], T_max[i]), taut.a[i])
+        exact = mp_catenary_state(span[i], dh[i], w[i], a)
+        for name in ("H", "V_A", "V_B", "length"):
+            assert getattr(taut, name)[i] == pytest.approx(float(exact[name]), rel=1e-10), (i, name)
+
+
+# --- issue #14: the lowest point of the cable, and the vertex -------------------------
+def test_lowest_point_is_a_support_when_the_vertex_lies_beyond_it():
+    # B 150 m below A on a 646 m span, taut: the vertex is thousands of metres
+    # past B, and the lowest point of the cable is B itself
+    c = cable.catenary(646.0, -150.0, 10.0, H=2e5)
+    assert c.x_vertex > 5 * 646.0
+    assert (c.x_low, c.y_low) == (646.0, -150.0)
+    x = np.linspace(0.0, 646.0, 200_001)
+    assert np.min(c.y(x)) == pytest.approx(c.y_low, abs=1e-9)  # brute force: B is lowest
+    # the vertex: zero slope there, and y(x_vertex) on the continued catenary
+    assert abs(c.slope(c.x_vertex)) < 1e-12
+    assert c.y(c.x_vertex) == pytest.approx(c.y_vertex, rel=1e-12)
+    # seed 000 §3: the vertex lies a·asinh(V_A/H) right of A (V_A < 0 here: the cable falls from A)
+    assert c.x_vertex == pytest.approx(c.a * np.arcsinh(c.V_A / c.H), rel=1e-12)
+    # mirrored: the vertex lies left of A and the lowest point is A
+    m = cable.catenary(646.0, 150.0, 10.0, H=2e5)
+    assert (m.x_low, m.y_low) == (0.0, 0.0)
+    assert m.x_vertex == pytest.approx(646.0 - c.x_vertex, rel=1e-12)
+
+
+def test_lowest_point_and_vertex_agree_inside_the_span_and_broadcast():
+    c = cable.catenary(800.0, -20.0, 20.0, low=-30.0)  # seed 000 ex. 4
+    assert (c.x_low, c.y_low) == (c.x_vertex, c.y_vertex)
+    assert c.y_low == pytest.approx(-30.0, rel=1e-13)
+    spans = np.array([800.0, 646.0, 646.0])
+    v = cable.catenary(
+        spans, np.array([-20.0, -150.0, 150.0]), np.array([20.0, 10.0, 10.0]), H=np.array([85819.2, 2e5, 2e5])
+    )
+    assert v.x_low[1:].tolist() == [646.0, 0.0] and v.y_low[1:].tolist() == [-150.0, 0.0]
+    assert v.x_low[0] == v.x_vertex[0] and v.y_low[0] == v.y_vertex[0]
+    for i in range(3):
+        s = cable.catenary(spans[i], v.dh[i], v.w[i], H=v.H[i])
+        assert (s.x_low, s.y_low, s.x_vertex, s.y_vertex) == pytest.approx(
+            (v.x_low[i], v.y_low[i], v.x_vertex[i], v.y_vertex[i]), rel=1e-13
+        )
+    assert "x_vertex=" in repr(c)

@@ -63,3 +63,16 @@ def test_bad_input():
         cable.elastic_catenary(100.0, 0.0, 1.0, 0.0, length=110.0)
     with pytest.raises(InputError, match="length"):
         cable.elastic_catenary(100.0, 0.0, 1.0, 1e6, length=-1.0)
+
+
+def test_lowest_point_and_vertex_tend_to_the_inextensible_ones():
+    # issue #14: x_low, y_low is a point of the cable; the vertex may lie beyond a support
+    for dh, length in [(-20.0, 801.409), (-300.0, 870.0), (300.0, 870.0)]:
+        ref = cable.catenary(800.0, dh, 20.0, length=length)
+        e = cable.elastic_catenary(800.0, dh, 20.0, 1e15, length=length)
+        assert e.x_vertex == pytest.approx(ref.x_vertex, rel=1e-7)
+        assert e.y_vertex == pytest.approx(ref.y_vertex, rel=1e-7)
+        assert (e.x_low, e.y_low) == pytest.approx((ref.x_low, ref.y_low), rel=1e-7, abs=1e-9)
+    assert (e.x_low, e.y_low) == (0.0, 0.0) and e.x_vertex < 0  # B far above A: the cable rises from A
+    with pytest.raises(InputError, match="s"):
+        e.x_of_s(1e300)

@@ -4,7 +4,7 @@ import numpy as np
 import pytest
 
 from skcable import cable
-from skcable.errors import InputError
+from skcable.errors import ConvergenceError, InputError
 
 
 def test_seed000_ex1_published_values():
@@ -59,3 +59,70 @@ def test_bad_input():
         cable.funicular_vertical(10, 0, [(5, 1)], through=(5, 1))  # above chord
     with pytest.raises(InputError, match="loads"):
         cable.funicular_vertical(10, 0, [(12, 1)], H=1.0)
+
+
+# --- issue #14 ------------------------------------------------------------------------
+def test_coincident_loads_act_as_their_sum():
+    # two loads at x = 3 are one load of 30 + 12 = 42 there (statics: forces at a point add)
+    split = cable.funicular_vertical(10, -1, [(1, 50), (3, 30), (7, 40), (3, 12)], through=(3, -5))
+    summed = cable.funicular_vertical(10, -1, [(1, 50), (3, 42), (7, 40)], through=(3, -5))
+    assert split.residual() < 1e-15  # was NaN: a zero-length segment between the two
+    assert split.loads.tolist() == [[1.0, 50.0], [3.0, 42.0], [7.0, 40.0]]
+    for name in ("H", "V_A", "V_B"):
+        assert getattr(split, name) == pytest.approx(getattr(summed, name), rel=1e-15)
+    assert split.T == pytest.approx(summed.T, rel=1e-15)
+    assert split.nodes == pytest.approx(summed.nodes, rel=1e-15, abs=1e-15)
+    # with H given: the reactions of a simply supported beam, V_A = sum P (span - x)/span - H dh/span
+    f = cable.funicular_vertical(10.0, 2.0, [(4.0, 5.0), (4.0, 7.0)], H=20.0)
+    assert f.V_A == pytest.approx(12.0 * 6.0 / 10.0 - 20.0 * 0.2, rel=1e-15)
+    assert f.nodes[1, 1] == pytest.approx(2.0 * 0.4 - 12.0 * 4.0 * 6.0 / 10.0 / 20.0, rel=1e-15)
+
+
+def test_results_are_residual_checked_before_they_are_returned(monkeypatch):
+    monkeypatch.setattr(cable.FunicularVertical, "residual", lambda self: 1e-6)
+    with pytest.raises(ConvergenceError, match="residual"):
+        cable.funicular_vertical(10, -1, [(1, 50), (3, 30), (7, 40)], through=(3, -5))
+    monkeypatch.setattr(cable.Funicular, "residual", lambda self: float("nan"))
+    with pytest.raises(ConvergenceError, match="residual"):
+        cable.funicular((20, 2), [5, 6, 6, 5], [(5, -75), (10, -100), (5, -75)])
+
+
+def test_the_residual_sees_a_wrong_polygon():
+    f = cable.funicular_vertical(10, -1, [(1, 50), (3, 30), (7, 40)], through=(3, -5))
+    nodes = f.nodes.copy()
+    nodes[2, 1] += 1e-6  # a joint moved by a micrometre
+    moved = cable.FunicularVertical(f.H, f.V_A, f.V_B, f.T, nodes, f.loads, f.constraint)
+    assert 1e-8 < moved.residual() < 1e-5
+    g = cable.funicular((20, 2), [5, 6, 6, 5], [(5, -75), (10, -100), (5, -75)])
+    forces = g.forces.copy()
+    forces[1] *= 1 + 1e-6
+    wrong = cable.Funicular(g.T, g.angles, g.nodes, forces, g.loads, g.lengths, g.history)
+    assert wrong.residual() > 1e-8
+
+
+def test_magnitudes_from_1e_minus_300_to_1e300_scale_exactly():
+    # the problems are homogeneous: forces scale with the loads, positions with the lengths
+    ref = cable.funicular((20, 2), [5, 6, 6, 5], [(5, -75), (10, -100), (5, -75)])
+    for k in (2.0**-990, 2.0**990):  # powers of two: the scaled data are exact
+        f = cable.funicular((20, 2), [5, 6, 6, 5], np.array([(5, -75), (10, -100), (5, -75)]) * k)
+        assert f.T == pytest.approx(ref.T * k, rel=1e-13)
+        g = cable.funicular((20 * k, 2 * k), np.array([5, 6, 6, 5]) * k, [(5, -75), (10, -100), (5, -75)])
+        assert g.T == pytest.approx(ref.T, rel=1e-13) and g.nodes == pytest.approx(ref.nodes * k, rel=1e-12)
+    v = cable.funicular_vertical(10, -1, [(1, 50), (3, 30), (7, 40)], through=(3, -5))
+    w = cable.funicular_vertical(
+        10e300, -1e300, [(1e300, 50e-300), (3e300, 30e-300), (7e300, 40e-300)], through=(3e300, -5e300)
+    )
+    assert w.H == pytest.approx(v.H * 1e-300, rel=1e-13) and w.nodes == pytest.approx(
+        v.nodes * 1e300, rel=1e-13
+    )
+
+
+def test_unloaded_or_malformed_input_is_refused():
+    with pytest.raises(InputError, match="loads"):
+        cable.funicular((20, 2), [5, 6, 6, 5], np.zeros((3, 2)))  # no loads: no equilibrium shape
+    with pytest.raises(InputError, match="loads"):
+        cable.funicular((20, 2), [5, 6, 6, 5], [5, -75, 10, -100, 5, -75])  # flat list: not reinterpreted
+    with pytest.raises(InputError, match="tol"):
+        cable.funicular((20, 2), [5, 6, 6, 5], [(5, -75), (10, -100), (5, -75)], tol=0.0)
+    with pytest.raises(InputError, match="through"):
+        cable.funicular_vertical(10, 0, [(5, 1)], through=5.0)

@@ -92,3 +92,37 @@ def test_bad_input():
         cable.parabola(100.0, 0.0, 1.0, length=99.0)
     with pytest.raises(InputError, match="low"):
         cable.parabola(100.0, -10.0, 1.0, low=-5.0)
+
+
+def test_lowest_point_and_vertex():
+    # seed 000 ex. 3: the vertex 507.18 m from A is the lowest point
+    p = cable.parabola(800.0, -20.0, 20.0, low=-30.0)
+    assert (p.x_low, p.y_low) == (p.x_vertex, p.y_vertex)
+    # taut and steep: the vertex lies beyond B (x_v = -a p_A, seed 001 §3.2), B is the lowest point
+    q = cable.parabola(646.0, -150.0, 10.0, H=2e5)
+    assert q.x_vertex == pytest.approx(2e5 / 10.0 * (150.0 / 646.0 + 646.0 / (2 * 2e4)), rel=1e-14)
+    assert (q.x_low, q.y_low) == (646.0, -150.0)
+    assert np.min(q.y(np.linspace(0, 646.0, 100_001))) == pytest.approx(-150.0, abs=1e-9)
+    r = cable.parabola(646.0, 150.0, 10.0, H=2e5)
+    assert (r.x_low, r.y_low) == (0.0, 0.0)
+
+
+def test_taut_inclined_parabola_passes_its_own_check():
+    # issue #14: V_A and V_B of ±3e9 balance 100 N; the residual now divides by them
+    p = cable.parabola(100.0, 30.0, 1.0, H=1e10)
+    assert p.residual() < 1e-15
+    assert p.V_B == pytest.approx(50.0 + 1e10 * 0.3, rel=1e-15)  # w span/2 + H dh/span
+    span = np.array([100.0, 646.0])
+    v = cable.parabola(span, np.array([30.0, -150.0]), 1.0, H=np.array([1e10, 1e12]))
+    assert v.residual() < 1e-15
+
+
+def test_extreme_constraints_are_scaled_not_overflowed():
+    # T_max = 1e200 N on a 1e-50 m span: the quadratic in a is formed in scaled units (tau² overflows).
+    # Level span: T_max = H sqrt(1 + (span/2a)²) = H sqrt(1 + (w span/2H)²)
+    p = cable.parabola(1e-50, 0.0, 1.0, T_max=1e200)
+    assert p.H == pytest.approx(1e200, rel=1e-15)
+    # length 1e-300 m above a chord of 1e-300 m: S = chord (1 + 8/3 (f/L)² ...) with f/L = 1/4 here
+    q = cable.parabola(1e-300, 0.0, 1.0, sag=0.25e-300)
+    r = cable.parabola(1e-300, 0.0, 1.0, length=q.length)
+    assert r.H == pytest.approx(q.H, rel=1e-12)

@@ -60,11 +60,17 @@ def test_other_constraints_reproduce_the_same_cable(ratio, excess, sign):
 
 
 def test_lowest_point_outside_the_span():
-    # steep chord, taut cable: the vertex lies left of A
+    # steep chord, taut cable: the vertex lies left of A, the cable rises all
+    # along the span and its lowest point is A (issue #14: x_low used to be the vertex)
     c = cable.catenary(10.0, 100.0, 1.0, length=100.6)
-    assert c.x_low < 0
-    assert c.y_low < 0 and c.residual() < 1e-12
+    assert c.x_vertex < 0
+    assert c.y_vertex < 0 and c.residual() < 1e-12
     assert np.all(np.diff(c.y(np.linspace(0, 10, 50))) > 0)  # monotone rise
+    assert (c.x_low, c.y_low) == (0.0, 0.0)
+    e = cable.elastic_catenary(10.0, 100.0, 1.0, 1e6, length=100.6)
+    assert e.x_vertex < 0 and (e.x_low, e.y_low) == (0.0, 0.0)
+    # V_A < 0: no material point of the cable has zero slope
+    assert e.V_A < 0 and e.slope(0.0) > 0
 
 
 def test_elastic_catenary_in_the_hard_corners():

@@ -1,5 +1,7 @@
 """Geometric stiffness (seed 001 ex. 7), end conditions (§3.4), surfaces (§4)."""
 
+import functools
+
 import mpmath as mp
 import numpy as np
 import pytest
@@ -98,3 +100,88 @@ def test_smooth_surface_reaction():
     assert cable.smooth_surface_reaction(10.0, 2.0) == -5.0
     with pytest.raises(InputError, match="R_n"):
         cable.smooth_surface_reaction(10.0, 0.0)
+
+
+# --- issue #14: finite, right numbers at extreme magnitudes ---------------------------
+def test_geometric_stiffness_series_at_extreme_magnitudes():
+    # k = 3H/(2 span) + 12 H³/(w² span³), in 40 digits
+    mp.mp.dps = 40
+    for span, w, H in [(1e-300, 1.0, 1e-300), (1e300, 1e300, 1.0), (1.0, 1e-300, 1e-100), (2.0, 0.5, 10.0)]:
+        exact = 1.5 * mp.mpf(H) / span + 12 * mp.mpf(H) ** 3 / (mp.mpf(w) ** 2 * mp.mpf(span) ** 3)
+        assert cable.geometric_stiffness_series(span, w, H) == pytest.approx(float(exact), rel=1e-14)
+    with pytest.raises(InputError, match="span, w, H"):
+        cable.geometric_stiffness_series(1e-300, 1.0, 1.0)  # 12/1e-900: beyond the float range
+
+
+def test_parabola_stiffness_for_taut_cables_against_mpmath():
+    # dH/dspan at constant length and dh, from the exact length by 40-digit differentiation;
+    # the textbook form S/a - delta (r_A + r_B) loses every digit for taut cables
+    mp.mp.dps = 40
+
+    def length(a, span, dh):
+        p_a, p_b = dh / span - span / (2 * a), dh / span + span / (2 * a)
+
+        def F(q):
+            return q * mp.sqrt(1 + q * q) + mp.asinh(q)
+
+        return a / 2 * (F(p_b) - F(p_a))
+
+    def length_at_span(span, a, dh):
+        return length(a, span, dh)
+
+    for dh, H in [(30.0, 1e4), (30.0, 1e10), (0.0, 1e8), (-3000.0, 1e6), (30.0, 20.0)]:
+        p = cable.parabola(100.0, dh, 1.0, H=H)
+        a, span, h = mp.mpf(H), mp.mpf(100), mp.mpf(dh)
+        d_span = mp.diff(functools.partial(length_at_span, a=a, dh=h), span)
+        d_a = mp.diff(functools.partial(length, span=span, dh=h), a)
+        exact = -d_span / d_a
+        assert cable.geometric_stiffness(p) == pytest.approx(float(exact), rel=1e-13), (dh, H)
+
+
+def test_catenary_stiffness_when_z_cubed_underflows():
+    # k_G = w/(2(z - tanh z)) ~ 3w/(2 z³): here z = span w/(2H) = 1e-150, z³ underflows,
+    # but w = 1e-200 brings k_G back to 1.5e250
+    c = cable.catenary(100.0, 0.0, 1e-200, H=5e-49)
+    with mp.workdps(340):  # z - tanh z = z³/3 + ... cancels 300 digits
+        z = mp.mpf(100) * mp.mpf("1e-200") / (2 * mp.mpf("5e-49"))
+        exact = mp.mpf("1e-200") / (2 * (z - mp.tanh(z)))
+    assert cable.geometric_stiffness(c) == pytest.approx(float(exact), rel=1e-13)
+    with pytest.raises(InputError, match="solution"):
+        cable.geometric_stiffness(cable.catenary(100.0, 0.0, 1.0, H=1e151))  # 3/(2 z³) = 1.2e448
+
+
+def test_capstan_and_sphere_at_extreme_magnitudes():
+    mp.mp.dps = 40
+    # e^1000 is beyond the float range, 1e-300·e^1000 is not
+    assert cable.capstan(1e-300, 10.0, 100.0) == pytest.approx(
+        float(mp.mpf("1e-300") * mp.exp(1000)), rel=1e-13
+    )
+    assert cable.capstan(np.array([1e-300, 1.0]), 10.0, np.array([100.0, 1.0])) == pytest.approx(
+        [float(mp.mpf("1e-300") * mp.exp(1000)), float(mp.exp(10))], rel=1e-13
+    )
+    with pytest.raises(InputError, match="T0, mu, angle"):
+        cable.capstan(1.0, 1e300, 1e300)  # mu·angle overflows: so does the tension
+    # T = q R cos²/sin, Q = q/sin: q R = 1e-300·1e300 = 1; latitude 1e-300: Q = q/sin = 1e300·q
+    T, Q = cable.sphere_parallel(1e-300, 1e300, 0.6)
+    assert T == pytest.approx(float(mp.cos(mp.mpf(0.6)) ** 2 / mp.sin(mp.mpf(0.6))), rel=1e-14)
+    T, Q = cable.sphere_parallel(1e-10, 1e-10, 1e-300)
+    assert (T, Q) == pytest.approx((float(mp.mpf("1e-20") / mp.sin(mp.mpf("1e-300"))), 1e290), rel=1e-14)
+    with pytest.raises(InputError, match="q, R, latitude"):
+        cable.sphere_parallel(1.0, 1.0, 1e-320)  # T = 1e320
+    assert cable.smooth_surface_reaction(1e300, -1e-7) == pytest.approx(1e307, rel=1e-15)
+    with pytest.raises(InputError, match="T, R_n"):
+        cable.smooth_surface_reaction(1e300, 1e-300)
+
+
+def test_sliding_load_and_ring_at_extreme_ratios():
+    # a slack cable 1e6 spans long: each arc a catenary of half the length, the load carried by V = P/2
+    s = cable.sliding_load(1.0, 1.0, 1e6, 1e8)
+    assert s.residual() < 1e-12
+    assert s.V_A == pytest.approx((1e6 + 1e8) / 2, rel=1e-12)  # vertical equilibrium of the whole
+    # the unloaded limit is the catenary of the same length
+    assert cable.sliding_load(1.0, 1.0, 1e6, 0.0).H == pytest.approx(
+        cable.catenary(1.0, 0.0, 1.0, length=1e6).H, rel=1e-10
+    )
+    # ring on a nearly smooth rod (mu = 1e-6): H = mu V_B still holds at the limit
+    c = cable.ring_on_rod(5.0, 2.0, 100.0, 1e-6)
+    assert c.H == pytest.approx(1e-6 * c.V_B, rel=1e-9) and c.length == pytest.approx(100.0, rel=1e-12)
