@@ -10,6 +10,7 @@ from skcable.strand._material import Material, material
 from skcable.strand._section import Section
 from skcable.strand.capacity import CapacityCurve, StepResult, StrandLayout, capacity_curve
 from skcable.strand.fe import (
+    AnnexE,
     AxisSlip,
     DistributedLoad,
     ElasticFoundation,
@@ -29,6 +30,7 @@ from skcable.strand.fe import (
 )
 
 __all__ = [
+    "AnnexE",
     "AxisSlip",
     "DistributedLoad",
     "ElasticFoundation",

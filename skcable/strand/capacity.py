@@ -342,30 +342,42 @@ def capacity_curve(
     strains, forces, fractions, steps, chatter = [0.0], [0.0], [0.0], [], []
     U, eps, previous, cutbacks = None, 0.0, None, 0
     ruptured, failure = False, None
-    limit = np.inf  # after a cutback the increment stays reduced, doubling back as steps converge
+    limit, streak = np.inf, 0  # after a cutback the increment stays reduced (see below)
+    previous_goal = 0.0
     for goal in schedule:
-        while eps < goal - 1e-15:
+        smallest = (goal - previous_goal) / 2**6  # at most six halvings of the schedule's increment
+        previous_goal = goal
+        while eps < goal - 1e-15 and failure is None:
             target = min(goal, eps + limit)
             cut = False
-            for _ in range(7):
+            while True:
                 try:
                     guess = None if U is None else _extrapolate(U, previous, eps, target)
                     result = model.solve(target, guess, state, passes=state_passes)
                     break
                 except ConvergenceError as exc:
                     last = exc
-                    target = eps + 0.5 * (target - eps)
                     cutbacks += 1
                     cut = True
-            else:
-                failure = f"no convergence beyond strain {eps:.6g} after 6 cutbacks"
-                failure += _softening_note(model, steps[-1] if steps else None)
+                    if 0.5 * (target - eps) < smallest * (1 - 1e-9):
+                        failure = (
+                            f"no convergence beyond strain {eps:.6g} (increment cut to 1/64 of the step)"
+                        )
+                        failure += _softening_note(model, steps[-1] if steps else None)
+                        break
+                    target = eps + 0.5 * (target - eps)
+            if failure is not None:
                 if on_failure == "raise":
                     raise ConvergenceError("capacity_curve: " + failure, last.history) from last
                 break
             previous, step = (U, eps), result
             U, state = step.dofs, step.state
-            limit = 2.0 * (target - eps) if (cut or np.isfinite(limit)) else np.inf
+            # a cut increment is kept; it doubles after two steps in a row converge at it
+            streak = 0 if cut else streak + 1
+            if cut:
+                limit = target - eps
+            elif np.isfinite(limit) and streak >= 2:
+                limit, streak = 2.0 * limit, 0
             if limit >= np.max(np.diff(schedule)):
                 limit = np.inf
             if not step.settled:
@@ -377,7 +389,7 @@ def capacity_curve(
             fractions.append(step.slip_fraction)
             if callback is not None:
                 callback(step, eps / schedule[-1])
-            if np.max(step.wire_strain) >= material.eps_rupture:
+            if step.wire_strain.size and np.max(step.wire_strain) >= material.eps_rupture:
                 # end the curve where the most strained wire reaches its rupture strain
                 before = np.max(steps[-2].wire_strain) if len(steps) > 1 else 0.0
                 t = (material.eps_rupture - before) / (np.max(step.wire_strain) - before)

@@ -14,7 +14,7 @@ import pytest
 
 from skcable.errors import InputError
 from skcable.strand import Layer, Strand, preset
-from skcable.strand.annex_e import THESIS_DOFS, annex_e_element, annex_e_forces, annex_e_section
+from skcable.strand.fe.annex_e import THESIS_DOFS, annex_e_element, annex_e_forces, annex_e_section
 
 L = 0.05  # element length (m)
 F = 1.5e3  # axial force of the geometric matrices (N)

@@ -310,3 +310,27 @@ def test_critical_curvature_is_c1_in_the_axial_strain():
     )
     law = [strand.BendingLaw(d.section(), mu=0.5, axial_strain=e).kappa_m for e in grid[1::40]]
     np.testing.assert_allclose(spline(grid[1::40]).T, law, rtol=1e-12)
+
+
+class FailingLargeIncrements(strand.StrandModel):
+    """Newton 'fails' whenever the strain jumps by more than a third of a schedule step."""
+
+    jump = None
+
+    def solve(self, strain, guess=None, state=None, **kw):
+        if strain - self.last > self.jump:
+            raise ConvergenceError(f"forced failure at {strain}", [1.0, 0.9])
+        step = super().solve(strain, guess, state, **kw)
+        self.last = strain
+        return step
+
+
+def test_after_a_cutback_the_increment_stays_reduced():
+    model = FailingLargeIncrements(strand.preset("steel-9.5"), 0.3, n_elements=4)
+    model.last, model.jump = 0.0, 2 * model.strand.material.eps_y / 4 / 3  # a third of a step
+    curve = model.capacity_curve(max_strain=2 * model.strand.material.eps_y, n_steps=8)
+    accepted = len(curve.steps)
+    # the reduced increment is kept and doubled only after two converged steps: one failure per
+    # three accepted steps, where jumping back to the goal failed about twice per accepted step
+    assert accepted >= 12 and curve.cutbacks <= accepted // 2
+    assert np.all(np.diff(curve.strain) <= model.jump * (1 + 1e-9))

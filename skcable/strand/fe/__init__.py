@@ -1,5 +1,6 @@
 """The strand finite element: slip laws, terms and the model (mesh + bases + terms)."""
 
+from skcable.strand.fe.annex_e import AnnexE, annex_e_forces, annex_e_section
 from skcable.strand.fe.model import DAMAGE_LOADS, StrandModel, default_physics
 from skcable.strand.fe.slip import AxisSlip, ElementSlip, SlipLaw, Stick, slip_law
 from skcable.strand.fe.terms import (
@@ -18,6 +19,9 @@ from skcable.strand.fe.terms import (
 )
 
 __all__ = [
+    "AnnexE",
+    "annex_e_forces",
+    "annex_e_section",
     "DAMAGE_LOADS",
     "FIELDS",
     "STRAINS",

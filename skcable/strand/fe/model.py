@@ -89,6 +89,9 @@ class StrandModel:
         analyst's own).
     physics : sequence of Term, optional
         Replaces the built-in physics (``slip``, ``mu`` and ``damage_load`` are then unused).
+    twist : {"clamped", "free"}
+        The twist at the pulled end x = L: clamped (the thesis's "fixed – fixed sliding",
+        default) or free to turn.
 
     Attributes
     ----------
@@ -115,8 +118,12 @@ class StrandModel:
         damage_load: str = "eccentricity",
         terms=(),
         physics=None,
+        twist: str = "clamped",
     ):
         self.strand, self.length = strand, float(positive("length", length))
+        if twist not in ("clamped", "free"):
+            raise InputError("twist", f"must be 'clamped' or 'free', got {twist!r}")
+        self.twist = twist
         if not 0 <= grading < 1:
             raise InputError("grading", f"must lie in [0, 1), got {grading!r}")
         nonnegative("mu", mu)
@@ -185,7 +192,7 @@ class StrandModel:
         for i, name in enumerate(FIELDS):
             basis, offset = self.bases[name], self.offsets[i]
             left, right = basis.get_dofs("left").all(), basis.get_dofs("right").all()
-            fixed += [offset + left, offset + right]
+            fixed += [offset + left] + ([] if name == "phi" and self.twist == "free" else [offset + right])
             if name == "u":
                 self.pull = int(offset + right[0])
         self.fixed = np.unique(np.concatenate(fixed))
@@ -219,7 +226,7 @@ class StrandModel:
 
         strand = replace(self.strand, broken=frozenset()) if strand is None else strand
         kept = [t for t in self.terms if not t.damage]
-        return type(self)(strand, self.length, mesh=self.mesh, physics=kept)
+        return type(self)(strand, self.length, mesh=self.mesh, physics=kept, twist=self.twist)
 
     # --- fields ----------------------------------------------------------------
     def split(self, U):
@@ -364,9 +371,8 @@ class StrandModel:
 
     def _step_result(self, strain, result, state, settled, assemblies):
         a, U = result.state, result.x
-        wires = next(
-            (o for t, o in zip(self._bound, a["outputs"], strict=True) if isinstance(t, HelicalWires)), None
-        )
+        # the wire kinematics of the first term that reports them (HelicalWires, AnnexE, ...)
+        wires = next((o for o in a["outputs"] if o and {"strain", "curvature", "kappa_m"} <= set(o)), None)
         shape = (2, *self.x.shape)
         zeros = np.zeros(shape)
         g, S, D = a["g"], a["S"], a["D"]

@@ -83,6 +83,7 @@ import numpy as np
 
 from skcable._checks import positive, real
 from skcable.errors import InputError
+from skcable.strand.fe.terms import SectionTerm
 
 __all__ = ["STRAINS", "THESIS_DOFS", "annex_e_section", "annex_e_forces", "annex_e_element"]
 
@@ -338,3 +339,68 @@ def annex_e_element(D, length):
     B[5][tx] = du
     B = _FLIP[:, None, None] * B  # to the model's g
     return np.einsum("aiq,abq,bjq,q->ij", B, Dq, B, weights)
+
+
+class AnnexE(SectionTerm):
+    r"""The thesis's own formulation as a section term: annex E's element matrices (typos fixed).
+
+    Section forces ``S = (D_E + F D_G) g`` with the section matrices of E.1 (stick) or E.2
+    (slip) from :func:`annex_e_section` and F the current axial force of the point
+    (:func:`annex_e_forces` with ``F=None``): no membrane stretch couples u with v and w,
+    as in the thesis's internal force ``(K_E + K_G(F)) U``. The modulus is the wires'
+    elastic E_e (the annex's E): this term set is linear elastic, so its capacity curve is
+    a straight line whose slope is its K_Leq. Used alone, as the model's ``physics``:
+    ``StrandModel(s, physics=[AnnexE(slip="element")])`` (the wires' own bending is in the
+    annex's matrices already).
+
+    Parameters
+    ----------
+    slip : {"none", "element", "axis"} or SlipLaw
+        Where E.2 replaces E.1: nowhere (stick), in elements whose curvature exceeds κ_m
+        anywhere (the thesis's rule), or at points beyond κ_m about either axis.
+    mu : float
+        Friction coefficient of κ_m (Cardou's law).
+    turning : bool
+        The section turns with the lay (the centroid rotates along the strand); False: a
+        prismatic section (its position at x = 0).
+
+    Notes
+    -----
+    Wire strains, curvatures and κ_m in the step results come from the helical-fibre
+    kinematics of the same displacement field (for rupture, the elastic limit and slip maps).
+    """
+
+    def __init__(self, slip="none", mu: float = 0.5, *, turning: bool = True):
+        from skcable.strand.fe.slip import slip_law
+
+        self.slip = slip_law(slip, mu)
+        self.turning = bool(turning)
+
+    def __repr__(self) -> str:
+        return f"AnnexE(slip={self.slip!r}, turning={self.turning})"
+
+    def setup(self, model):
+        from skcable.strand.fe.terms import HelicalWires
+
+        super().setup(model)
+        self._matrices = {
+            flag: annex_e_section(model.strand, slip=flag, x=model.x, turning=self.turning)
+            for flag in (False, True)
+        }
+        self._kinematics = HelicalWires(self.slip, helical=self.turning).bind(model)
+
+    def initial_state(self, model):
+        return self._kinematics.initial_state(model)
+
+    def next_state(self, output, state):
+        return self._kinematics.next_state(output, state)
+
+    def section(self, g, step):
+        _, _, output = self._kinematics.section(g, step)
+        slipping = np.any(output["slipping"], axis=0)  # (ne, nq): E.2 where either axis slips
+        (E1, G1), (E2, G2) = self._matrices[False], self._matrices[True]
+        D_E = np.where(slipping, E2, E1)
+        D_G = np.where(slipping, G2, G1)
+        S, D = annex_e_forces(g, None, D_E, D_G)
+        output["N"] = S[0]
+        return S, D, output
