@@ -55,7 +55,8 @@ def main():
         f"{STEPS} steps, μ = {MU}, E_e (the law is linear: K_Leq is its slope). K_Leq in kN; the",
         "ratio is element rule / stick in %. Each cell: 40 elements / 80 elements.",
         "",
-        "| case | twist at x = L | stick | element rule | ratio [%] | Table 4.1 stick | Table 4.1 stick-slip | Table 4.1 ratio |",
+        "| case | twist at x = L | stick | element rule | ratio [%] "
+        "| Table 4.1 stick | Table 4.1 stick-slip | Table 4.1 ratio |",
         "|---|---|---|---|---|---|---|---|",
     ]
     for (name, damage), (k_stick, k_slip, ratio, *_) in THESIS.items():
