@@ -52,16 +52,16 @@ def test_analyst_foundation_term_matches_the_closed_form_and_the_ready_term():
 
 # --- a slip law written outside the library -----------------------------------------------------
 class SmoothSaturation(strand.SlipLaw):
-    """κ_c = k tanh(κ/k), k = κ_m + κ_0: stateless and smooth (κ_0 = 0.01 1/m keeps the
+    """κ_c = k tanh(κ/k), k = κ_m + κ_0: stateless and smooth (κ_0 = 0.05 1/m keeps the
     untensioned strand, whose κ_m is 0, from a zero-width transition)."""
 
     def composite(self, kappa, kappa_m, state):
-        k = kappa_m + 0.01
+        k = kappa_m + 0.05
         t = np.tanh(kappa / k)
         return k * t, 1.0 - t**2, t - (kappa / k) * (1.0 - t**2)
 
     def second_derivatives(self, kappa, kappa_m, state):  # for the consistent tangent
-        k = kappa_m + 0.01
+        k = kappa_m + 0.05
         t, r = np.tanh(kappa / k), kappa / k
         sech2 = 1.0 - t**2
         return -2 * t * sech2 / k, 2 * r * t * sech2 / k, -2 * r**2 * t * sech2 / k

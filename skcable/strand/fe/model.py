@@ -322,6 +322,7 @@ class StrandModel:
             lambda x: self._assemble(x, state, strain),
             U,
             norm=lambda a: float(np.max(np.abs(a["R"][free]))) / scale,
+            merit=lambda a: float(np.sqrt(np.sum(a["R"][free] ** 2))) / scale,  # smooth, for the line search
             increment=self._increment,
             tol=tol,
             max_iter=max_iter,
