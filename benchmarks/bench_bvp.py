@@ -213,8 +213,6 @@ def large(args):
         )
 
 
-
-
 def stability(args):
     """Both formulations over span/|dh| x length/chord x B above/below A."""
     rows, counts = [], {}
