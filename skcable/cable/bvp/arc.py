@@ -42,7 +42,7 @@ import numpy as np
 from scipy.optimize import elementwise
 from skfem import Basis, ElementLineP1DG, ElementLineP2, MeshLine
 
-from skcable._checks import real, require
+from skcable._checks import positive, real, require
 from skcable.cable._catenary import catenary
 from skcable.cable._loads import DeckLoad, DistributedLoad, PointLoad, SelfWeight
 from skcable.cable.bvp.assembly import LineAssembly
@@ -133,7 +133,9 @@ class ArcProblem:
             )
         self.span, self.dh, self.EA, self.constraint, self.loads = span, dh, EA, constraint, loads
         self.compliance = 0.0 if EA is None else 1.0 / EA
-        self.mesh = MeshLine(np.linspace(0.0, 1.0, int(n_elements) + 1))
+        n = positive("n_elements", n_elements)
+        require("n_elements", n == int(n), "must be a whole number", n)
+        self.mesh = MeshLine(np.linspace(0.0, 1.0, int(n) + 1))
         self.basis = Basis(self.mesh, ElementLineP2(), intorder=6)
         self.tbasis = self.basis.with_element(ElementLineP1DG() if tension is None else tension)
         N, M = self.basis.N, self.tbasis.N
@@ -178,7 +180,7 @@ class ArcProblem:
         gap, dg, dg_dL0 = self.constraint_terms(z, R, Ke, dR_dL0, g)
         force = np.abs(R[self._force_rows]) / self.load_scale
         stretch = np.abs(R[self._stretch_rows]) / self.length_scale
-        constraint = abs(gap) / self.constraint_scale
+        constraint = float(abs(gap) / self.constraint_scale)
         merit = max(float(np.max(force, initial=0.0)), float(np.max(stretch, initial=0.0)), constraint)
         descent = float(np.sqrt(np.sum(force * force) + np.sum(stretch * stretch) + constraint * constraint))
         return ArcState(R, Ke, dR_dL0, float(gap), dg, float(dg_dL0), merit, descent, asmb)

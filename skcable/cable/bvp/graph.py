@@ -71,7 +71,8 @@ def _mesh_nodes(mesh, n_elements, span, at):
     if mesh is None:
         n = positive("n_elements", n_elements)
         require("n_elements", n == int(n) and n < 2**31, "must be a whole number", n)
-        return np.union1d(np.linspace(0.0, span, int(n) + 1), at)
+        nodes = np.linspace(0.0, span, int(n) + 1)
+        return np.union1d(nodes, at) if len(at) else nodes
     given = np.asarray(real("mesh", mesh.p[0] if isinstance(mesh, MeshLine) else mesh), dtype=float)
     if given.ndim != 1 or given.size < 2:
         raise InputError("mesh", f"must be a 1-D array of at least 2 node abscissae, got shape {given.shape}")
@@ -83,7 +84,7 @@ def _mesh_nodes(mesh, n_elements, span, at):
     if not (np.isclose(nodes[0], 0.0) and np.isclose(nodes[-1], span)):
         raise InputError("mesh", f"must run from 0 to span = {span}, got [{nodes[0]}, {nodes[-1]}]")
     nodes[0], nodes[-1] = 0.0, span
-    return np.union1d(nodes, at)
+    return np.union1d(nodes, at) if len(at) else nodes
 
 
 class GraphProblem:
@@ -190,7 +191,7 @@ class GraphProblem:
             dg_dy = (v / T) * asmb.row(Ke, end)
             dg_dH = (H + v * dR_dH[end]) / T
         force = np.abs(R[self.interior]) / self.load_scale
-        constraint = abs(g) / self.constraint_scale
+        constraint = float(abs(g) / self.constraint_scale)
         merit = max(float(np.max(force, initial=0.0)), constraint)
         descent = float(np.sqrt(np.sum(force * force) + constraint * constraint))
         return GraphState(R, Ke, dR_dH, float(g), dg_dy, float(dg_dH), merit, descent, asmb)
