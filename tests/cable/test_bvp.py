@@ -316,3 +316,11 @@ def test_bvp_modules_import_on_their_own():
         "    importlib.import_module('skcable.cable.bvp.' + name)\n"
     )
     subprocess.run([sys.executable, "-c", code], check=True, capture_output=True)
+
+
+@pytest.mark.parametrize("degree", [1, 2, 3, 4, 5, 6])
+def test_band_is_one_element_wide_for_every_degree(degree):
+    # modal dofs (ElementLinePp) have no location in scikit-fem: ordered by their element,
+    # the band stays `degree` wide instead of spanning the mesh
+    problem = _GraphProblem(SPAN, DH, [cable.SelfWeight(W)], None, ("H", 1e5), None, 64, degree)
+    assert problem.solver.system.kl == degree

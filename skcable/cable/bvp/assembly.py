@@ -47,6 +47,19 @@ def _derivative(field, order: int) -> np.ndarray:
     raise InputError("order", f"must be 0, 1 or 2, got {order!r}")
 
 
+def _locations(basis) -> np.ndarray:
+    """Where each dof sits along the line: its node, or for a modal dof (scikit-fem's
+    ``doflocs`` is NaN there, e.g. ``ElementLinePp``) the middle of its element."""
+    location = np.array(basis.doflocs[0], dtype=float)
+    modal = ~np.isfinite(location)
+    if modal.any():
+        middle = basis.mesh.p[0, basis.mesh.t].mean(axis=0)  # (ne,)
+        owner = np.zeros(basis.N, dtype=int)
+        owner[basis.element_dofs] = np.arange(basis.element_dofs.shape[1])
+        location[modal] = middle[owner[modal]]
+    return location
+
+
 class LineAssembly:
     """``∫ Bᵀ S`` and ``∫ Bᵀ D B`` for fields on line bases sharing one quadrature.
 
@@ -96,7 +109,7 @@ class LineAssembly:
             for i in range(basis.Nbfun):
                 self.B[a, :, start[name] + i] = _derivative(basis.basis[i][0], order).T
         self._flat_dofs = self.dofs.ravel()
-        self._location = np.concatenate([basis.doflocs[0] for basis in self.bases.values()])
+        self._location = np.concatenate([_locations(basis) for basis in self.bases.values()])
 
     def interpolate(self, U: np.ndarray) -> np.ndarray:
         """Generalized strains at the quadrature points: (n_strains, nq, ne)."""
