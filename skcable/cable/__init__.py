@@ -6,8 +6,6 @@ horizontal tension; V_A, V_B are the upward support reactions. SI units by
 default (m, N, N/m); any consistent system works.
 """
 
-from skcable.cable._arc import ArcSolution, arc_constitutive, arc_equilibrium_x, arc_equilibrium_y
-from skcable.cable._bvp import BVPSolution, graph_dH, graph_residual, graph_tangent, solve_bvp
 from skcable.cable._catenary import Catenary, catenary
 from skcable.cable._choice import solve
 from skcable.cable._elastic import ElasticCatenary, elastic_catenary
@@ -17,6 +15,17 @@ from skcable.cable._parabola import Parabola, parabola
 from skcable.cable._stiffness import geometric_stiffness, geometric_stiffness_series
 from skcable.cable._supports import SlidingLoad, anchor_block_weight, ring_on_rod, sliding_load
 from skcable.cable._surfaces import capstan, membrane_tension, smooth_surface_reaction, sphere_parallel
+from skcable.cable.bvp import (
+    ArcSolution,
+    BVPSolution,
+    arc_constitutive,
+    arc_equilibrium_x,
+    arc_equilibrium_y,
+    graph_dH,
+    graph_residual,
+    graph_tangent,
+    solve_bvp,
+)
 from skcable.cable.solution import CableSolution
 
 __all__ = [

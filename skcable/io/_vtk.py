@@ -32,7 +32,8 @@ def cable_mesh(solution, n: int = 201) -> meshio.Mesh:
 
     Point data: ``tension`` (N), ``tangent`` (unit vector toward B),
     ``angle`` (rad above the horizontal), ``load`` (N per metre of
-    unstretched cable, y up: a weight has a negative y component).
+    unstretched cable, y up: a weight has a negative y component). Reads
+    only ``solution.samples(n)`` (and ``H``, to refuse an array of scenes).
     """
     if np.ndim(solution.H) != 0:
         raise InputError("solution", "write one scene at a time: this solution holds an array of scenes")
@@ -55,17 +56,17 @@ def funicular_mesh(solution) -> meshio.Mesh:
     """Funicular polygon: the joints as points, the segments as cells.
 
     Cell data ``tension`` (N); point data ``load`` (N, the joint loads; zero
-    at the supports).
+    at the supports). Reads ``nodes``, ``T`` and ``loads``: load vectors when
+    the solution also has segment ``forces`` (:func:`~skcable.cable.funicular`),
+    ``(x, P downward)`` pairs otherwise (:func:`~skcable.cable.funicular_vertical`).
     """
     points, cells = _polyline(solution.nodes)
-    from skcable.cable import FunicularVertical
-
     loads = np.zeros((len(points), 3))
     joint = np.asarray(solution.loads, dtype=float)
-    if isinstance(solution, FunicularVertical):  # (x, P downward) pairs
-        loads[1:-1, 1] = -joint[:, 1]
-    else:  # load vectors, y up
+    if hasattr(solution, "forces"):  # funicular(): load vectors (Px, Py), y up
         loads[1:-1, :2] = joint
+    else:  # funicular_vertical(): (x, P downward) pairs
+        loads[1:-1, 1] = -joint[:, 1]
     return meshio.Mesh(
         points, cells, point_data={"load": loads}, cell_data={"tension": [np.asarray(solution.T)]}
     )

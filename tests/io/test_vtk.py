@@ -1,5 +1,8 @@
 """VTK output read back with meshio and pyvista, compared with the results and closed forms."""
 
+import ast
+from pathlib import Path
+
 import meshio
 import numpy as np
 import pytest
@@ -133,3 +136,59 @@ def test_csv_matches_curve(tmp_path, curves):
     np.testing.assert_allclose(table["strain"], curve.strain)
     np.testing.assert_allclose(table["force_N"], curve.force)
     np.testing.assert_allclose(table["slip_fraction"], curve.slip_fraction)
+
+
+# --- writers consume results: no import of the models, no import circle ------------------
+ROOT = Path(__file__).resolve().parents[2] / "skcable"
+
+
+def _import_graph():
+    """Every skcable module and the skcable modules it imports (function-level imports included)."""
+    modules = {}
+    for path in ROOT.rglob("*.py"):
+        parts = path.relative_to(ROOT.parent).with_suffix("").parts
+        modules[".".join(parts[:-1] if parts[-1] == "__init__" else parts)] = path
+    graph = {}
+    for name, path in modules.items():
+        package = name if path.name == "__init__.py" else name.rpartition(".")[0]
+        found = set()
+        for node in ast.walk(ast.parse(path.read_text())):
+            if isinstance(node, ast.Import):
+                found.update(alias.name for alias in node.names)
+            elif isinstance(node, ast.ImportFrom):
+                base = node.module or ""
+                if node.level:
+                    head = package.split(".")[: len(package.split(".")) - node.level + 1]
+                    base = ".".join(head + ([base] if base else []))
+                found.update(
+                    f"{base}.{a.name}" if f"{base}.{a.name}" in modules else base for a in node.names
+                )
+        graph[name] = {m for m in found if m in modules and m != name}
+    return graph
+
+
+def test_writers_import_no_model():
+    graph = _import_graph()
+    writers = [name for name in graph if name.startswith("skcable.io")]
+    assert "skcable.io._vtk" in writers
+    for name in writers:
+        models = sorted(m for m in graph[name] if m.startswith(("skcable.cable", "skcable.strand")))
+        assert not models, f"{name} imports {models}"
+
+
+def test_no_import_circle_through_the_cables_or_the_writers():
+    graph = _import_graph()
+
+    def reaches(start, goal):
+        seen, todo = set(), [start]
+        while todo:
+            for nxt in graph[todo.pop()] - seen:
+                if nxt == goal:
+                    return True
+                seen.add(nxt)
+                todo.append(nxt)
+        return False
+
+    mine = [name for name in graph if name.startswith(("skcable.io", "skcable.cable"))]
+    circles = [name for name in mine if reaches(name, name)]
+    assert not circles, f"modules on an import circle: {circles}"

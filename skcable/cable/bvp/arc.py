@@ -1,4 +1,4 @@
-r"""Arc-length (Lagrangian) formulation of the suspended cable on scikit-fem.
+r"""Arc-length (Lagrangian) formulation of the suspended cable.
 
 Seed 001 eq. (3), ``d/ds (T dr/ds / |dr/ds|) + q = 0``, in the unstretched
 arc length ``s = L0 σ``, σ ∈ [0, 1], with position r(σ) = (x, y) and
@@ -13,17 +13,21 @@ tension T(σ) as fields and the unstretched length L0 as a global unknown
 (the second is the stretch law; ``EA = ∞`` makes it inextensibility). It
 describes any shape, including cables that are not graphs y(x), and takes
 horizontal loads. Positions are P2 and the tension discontinuous P1, on
-bases that share one quadrature, assembled block by block. The pairing
-matters: with a *continuous* P1 tension the system counts more tangential
-position modes than stretch constraints, and the tangential re-
-parametrisation modes inside elements, which no stiffness holds (the
-geometric term ``T (I - e e^T)/n`` has none along the cable), make the
-tangent nearly singular as soon as the cable curves (condition number above
-1e8 and stalled Newton for a cable six times its chord); P2/P1-DG is square
-element by element and stays well conditioned (below 1e5 in the same case;
-both tested). Newton's method with the consistent tangent (the only
-non-analytic piece: the x-derivative of a user's load callable, by central
-differences).
+bases that share one quadrature. The pairing matters: with a *continuous*
+P1 tension the system counts more tangential position modes than stretch
+constraints, and the tangential re-parametrisation modes inside elements,
+which no stiffness holds (the geometric term ``T (I - e e^T)/n`` has none
+along the cable), make the tangent nearly singular as soon as the cable
+curves (condition number above 1e8 and stalled Newton for a cable six times
+its chord); P2/P1-DG is square element by element and stays well
+conditioned (below 1e5 in the same case; both tested). Newton's method with
+the consistent tangent (the only non-analytic piece: the x-derivative of a
+user's load callable, by central differences).
+
+The forms (:mod:`skcable.cable.bvp.forms`) are a *section law* in the
+generalized strains ``(x', y', x, y, T)``: :class:`ArcProblem` assembles them
+with :class:`~skcable.cable.bvp.assembly.LineAssembly` (basis values and patterns once) and
+solves the bordered banded system of :mod:`skcable.cable.bvp.bordered`.
 
 Support reactions come from the residual rows at the supports:
 ``H_A = -R_x(A)``, ``V_A = R_y(A)``, ``H_B = R_x(B)``, ``V_B = R_y(B)``.
@@ -35,60 +39,24 @@ from dataclasses import dataclass
 from functools import cached_property
 
 import numpy as np
-import scipy.sparse as sp
 from scipy.optimize import elementwise
-from skfem import Basis, BilinearForm, ElementLineP1DG, ElementLineP2, LinearForm, MeshLine, asm, solve
+from skfem import Basis, ElementLineP1DG, ElementLineP2, MeshLine
 
-from skcable._checks import real, require
-from skcable.cable._bvp import FiniteElementSolution, _gradient_probes, element_minimum, element_values
+from skcable._checks import positive, real, require
 from skcable.cable._catenary import catenary
 from skcable.cable._loads import DeckLoad, DistributedLoad, PointLoad, SelfWeight
-from skcable.errors import ConvergenceError, InputError
+from skcable.cable.bvp.assembly import LineAssembly
+from skcable.cable.bvp.base import FiniteElementSolution
+from skcable.cable.bvp.bordered import BorderedSolver
+from skcable.cable.bvp.elements import end_dofs
+from skcable.cable.bvp.probes import element_values, gradient_probes, minimum_near
+from skcable.errors import InputError
 
-__all__ = ["ArcSolution", "arc_constitutive", "arc_equilibrium_x", "arc_equilibrium_y", "arc_loads"]
+__all__ = ["ArcProblem", "ArcSolution", "ArcState", "arc_guess", "arc_loads"]
 
-
-# --- forms -------------------------------------------------------------------
-@LinearForm
-def arc_equilibrium_x(v, w):
-    """``∫ (T e_x v' - Q_x v) dσ``."""
-    return w.T * w.ex * v.grad[0] - w.Qx * v
-
-
-@LinearForm
-def arc_equilibrium_y(v, w):
-    """``∫ (T e_y v' - Q_y v) dσ``."""
-    return w.T * w.ey * v.grad[0] - w.Qy * v
-
-
-@LinearForm
-def arc_constitutive(v, w):
-    """``∫ (n - L0 (1 + T/EA)) v dσ``."""
-    return (w.n - w.L0 * (1.0 + w.T * w.compliance)) * v
-
-
-@BilinearForm
-def _geometric(u, v, w):
-    """``∫ T (δ_ij - e_i e_j) / n u' v'`` for the (i, j) block given as w.P."""
-    return w.T * w.P / w.n * u.grad[0] * v.grad[0]
-
-
-@BilinearForm
-def _load_position(u, v, w):
-    """``-∫ (dQ_i/dx u + dQ_i/dx' u') v``."""
-    return -(w.dQ_dx * u + w.dQ_dxp * u.grad[0]) * v
-
-
-@BilinearForm
-def _tension_coupling(u, v, w):
-    """``∫ u e_i v'``: tension trial u, position test v."""
-    return u * w.e * v.grad[0]
-
-
-@BilinearForm
-def _tension_mass(u, v, w):
-    """``-∫ L0/EA u v``."""
-    return -w.L0 * w.compliance * u * v
+#: generalized strains of the section law: x', y', x, y, T
+_STRAINS = (("x", 1), ("y", 1), ("x", 0), ("y", 0), ("T", 0))
+_AX, _AY, _X, _Y, _T = range(5)
 
 
 def arc_loads(loads, x, dx, L0, span):
@@ -127,114 +95,144 @@ def arc_loads(loads, x, dx, L0, span):
 
 
 @dataclass
-class _ArcState:
-    R: np.ndarray  # [Rx, Ry, Rc] full
-    J: sp.csr_matrix  # full Jacobian wrt [x, y, T]
-    dR_dL0: np.ndarray
+class ArcState:
+    """Everything assembled at one iterate; vectors over all dofs ``[x, y, T]``."""
+
+    R: np.ndarray | None
+    Ke: np.ndarray | None  # element tangents (n_local, n_local, ne)
+    dR_dL0: np.ndarray | None
     g: float
-    dg: np.ndarray  # wrt [x, y, T]
+    dg: np.ndarray | None  # wrt [x, y, T]
     dg_dL0: float
-    merit: float  # max-norm of the scaled residual: the convergence test
-    descent: float  # 2-norm of the scaled residual: the line-search merit
+    merit: float  # max-norm of the scaled residual: the convergence test and line-search merit
+    descent: float  # 2-norm of the scaled residual
+    assembly: LineAssembly | None = None
+
+    @cached_property
+    def J(self):
+        """The global Jacobian wrt ``[x, y, T]`` (CSR), for inspection; Newton uses the band."""
+        return self.assembly.matrix(element_matrices=self.Ke)
 
 
-class _ArcProblem:
-    def __init__(self, span, dh, loads, EA, constraint, n_elements, degree):
+_REJECTED = ArcState(None, None, None, np.inf, None, np.inf, np.inf, np.inf)
+
+
+class ArcProblem:
+    """Mesh, bases, loads, constraint and the assembly of one arc-length solve.
+
+    ``tension`` is the tension's element (P1-DG; a continuous P1 is there to
+    show why not, see the module docstring).
+    """
+
+    def __init__(self, span, dh, loads, EA, constraint, n_elements, degree, tension=None):
         if any(isinstance(ld, PointLoad) for ld in loads):
             raise InputError("load", "point loads at fixed x need formulation='graph'")
-        if degree < 2 or degree > 2:
+        if degree != 2:
             raise InputError(
                 "degree", f"formulation='arc' uses degree 2 (P2 positions, P1 tension), got {degree!r}"
             )
         self.span, self.dh, self.EA, self.constraint, self.loads = span, dh, EA, constraint, loads
         self.compliance = 0.0 if EA is None else 1.0 / EA
-        self.mesh = MeshLine(np.linspace(0.0, 1.0, int(n_elements) + 1))
+        n = positive("n_elements", n_elements)
+        require("n_elements", n == int(n), "must be a whole number", n)
+        self.mesh = MeshLine(np.linspace(0.0, 1.0, int(n) + 1))
         self.basis = Basis(self.mesh, ElementLineP2(), intorder=6)
-        self.tbasis = self.basis.with_element(ElementLineP1DG())
+        self.tbasis = self.basis.with_element(ElementLineP1DG() if tension is None else tension)
         N, M = self.basis.N, self.tbasis.N
         self.N, self.M = N, M
-        ends = self.basis.get_dofs().all()
-        self.end_a, self.end_b = (ends[0], ends[1]) if self.basis.doflocs[0, ends[0]] == 0 else ends[::-1]
-        inner = self.basis.complement_dofs(ends)
+        self.end_a, self.end_b, inner = end_dofs(self.basis)
         self.free = np.concatenate([inner, N + inner, 2 * N + np.arange(M)])
         self.fixed_length = constraint[0] == "length"
+        self.assembly = LineAssembly({"x": self.basis, "y": self.basis, "T": self.tbasis}, _STRAINS)
+        self.solver = BorderedSolver(self.assembly.banded(self.free))
+        self._force_rows = self.free[self.free < 2 * N]
+        self._stretch_rows = self.free[self.free >= 2 * N]
 
     def fields(self, z):
         N = self.N
         return z[:N], z[N : 2 * N], z[2 * N :]
 
-    def assemble(self, z, L0) -> _ArcState:
-        b, tb = self.basis, self.tbasis
-        xd, yd, Td = self.fields(z)
-        X, Y, T = b.interpolate(xd), b.interpolate(yd), tb.interpolate(Td)
-        ax, ay = X.grad[0], Y.grad[0]
+    def assemble(self, z, L0) -> ArcState:
+        asmb = self.assembly
+        g = asmb.interpolate(z)
+        ax, ay, X, T = g[_AX], g[_AY], g[_X], g[_T]
         n = np.sqrt(ax * ax + ay * ay)
         if not np.all(n > 0):  # a collapsed tangent: reject this iterate
-            return _ArcState(None, None, None, np.inf, None, np.inf, np.inf, np.inf)
+            return _REJECTED
         ex, ey = ax / n, ay / n
-        Qx, Qy, dQx_dx, dQy_dx, dQx_dxp, dQy_dxp, dQx_dL, dQy_dL = arc_loads(
-            self.loads, np.asarray(X), ax, L0, self.span
-        )
-        common = dict(T=np.asarray(T), n=n, ex=ex, ey=ey)
-        Rx = asm(arc_equilibrium_x, b, Qx=Qx, **common)
-        Ry = asm(arc_equilibrium_y, b, Qy=Qy, **common)
-        Rc = asm(arc_constitutive, tb, n=n, L0=L0, T=np.asarray(T), compliance=self.compliance)
-        Kxx = asm(_geometric, b, T=np.asarray(T), n=n, P=1 - ex * ex) + asm(
-            _load_position, b, dQ_dx=dQx_dx, dQ_dxp=dQx_dxp
-        )
-        Kxy = asm(_geometric, b, T=np.asarray(T), n=n, P=-ex * ey)
-        Kyx = Kxy + asm(_load_position, b, dQ_dx=dQy_dx, dQ_dxp=dQy_dxp)
-        Kyy = asm(_geometric, b, T=np.asarray(T), n=n, P=1 - ey * ey)
-        KxT = asm(_tension_coupling, tb, b, e=ex)  # rows: x tests, cols: T trials
-        KyT = asm(_tension_coupling, tb, b, e=ey)
-        KTT = asm(_tension_mass, tb, L0=L0, compliance=self.compliance)
-        J = sp.bmat([[Kxx, Kxy, KxT], [Kyx, Kyy, KyT], [KxT.T, KyT.T, KTT]], format="csr")
-        dRx_dL = -asm(LinearForm(lambda v, w: w.d * v), b, d=dQx_dL)
-        dRy_dL = -asm(LinearForm(lambda v, w: w.d * v), b, d=dQy_dL)
-        dRc_dL = -asm(LinearForm(lambda v, w: (1.0 + w.T * w.c) * v), tb, T=np.asarray(T), c=self.compliance)
-        R = np.concatenate([Rx, Ry, Rc])
-        dR_dL0 = np.concatenate([dRx_dL, dRy_dL, dRc_dL])
-        g, dg, dg_dL0 = self.constraint_terms(z, L0, R, J, dR_dL0)
-        scaled = self.scaled(R, g)
-        return _ArcState(
-            R, J, dR_dL0, g, dg, dg_dL0, float(np.max(np.abs(scaled))), float(np.linalg.norm(scaled))
-        )
+        Qx, Qy, dQx_dx, dQy_dx, dQx_dxp, dQy_dxp, dQx_dL, dQy_dL = arc_loads(self.loads, X, ax, L0, self.span)
+        c = self.compliance
+        S = np.stack([T * ex, T * ey, -Qx, -Qy, n - L0 * (1.0 + T * c)])
+        D = np.zeros((5, 5, *n.shape))
+        Tn = T / n
+        D[_AX, _AX] = Tn * (1.0 - ex * ex)
+        D[_AX, _AY] = D[_AY, _AX] = -Tn * ex * ey
+        D[_AY, _AY] = Tn * (1.0 - ey * ey)
+        D[_AX, _T] = D[_T, _AX] = ex
+        D[_AY, _T] = D[_T, _AY] = ey
+        D[_X, _X], D[_X, _AX] = -dQx_dx, -dQx_dxp
+        D[_Y, _X], D[_Y, _AX] = -dQy_dx, -dQy_dxp
+        D[_T, _T] = -L0 * c
+        R = asmb.vector(S)
+        Ke = asmb.element_matrices(D)
+        zero = np.zeros_like(n)
+        dR_dL0 = asmb.vector(np.stack([zero, zero, -dQx_dL, -dQy_dL, -(1.0 + T * c)]))
+        gap, dg, dg_dL0 = self.constraint_terms(z, R, Ke, dR_dL0, g)
+        force = np.abs(R[self._force_rows]) / self.load_scale
+        stretch = np.abs(R[self._stretch_rows]) / self.length_scale
+        constraint = float(abs(gap) / self.constraint_scale)
+        merit = max(float(np.max(force, initial=0.0)), float(np.max(stretch, initial=0.0)), constraint)
+        descent = float(np.sqrt(np.sum(force * force) + np.sum(stretch * stretch) + constraint * constraint))
+        return ArcState(R, Ke, dR_dL0, float(gap), dg, float(dg_dL0), merit, descent, asmb)
 
     def scaled(self, R, g):
         """Residual in consistent units: forces over the total load, stretch
         rows over the length, the constraint over its own scale."""
-        N = self.N
-        force_rows, stretch_rows = self.free[self.free < 2 * N], self.free[self.free >= 2 * N]
         return np.concatenate(
             [
-                R[force_rows] / self.load_scale,
-                R[stretch_rows] / self.length_scale,
+                R[self._force_rows] / self.load_scale,
+                R[self._stretch_rows] / self.length_scale,
                 [g / self.constraint_scale],
             ]
         )
+
+    def increment(self, state: ArcState) -> np.ndarray:
+        """Newton increment of (z, L0): the bordered banded solve."""
+        system, free = self.solver.system, self.free
+        ab = system.add_elements(system.band(), state.Ke)
+        if self.fixed_length:
+            d_z, d_L = self.solver.solve(ab, state.R[free], gap=0.0)
+        else:
+            d_z, d_L = self.solver.solve(
+                ab, state.R[free], state.dR_dL0[free], state.dg[free], state.dg_dL0, state.g
+            )
+        step = np.zeros(2 * self.N + self.M + 1)
+        step[free] = d_z
+        step[-1] = d_L
+        return step
 
     # --- constraint -------------------------------------------------------------
     def reactions(self, R):
         N = self.N
         return -R[self.end_a], R[N + self.end_a], R[self.end_b], R[N + self.end_b]  # H_A, V_A, H_B, V_B
 
-    def constraint_terms(self, z, L0, R, J, dR_dL0):
+    def constraint_terms(self, z, R, Ke, dR_dL0, strains):
         name, value = self.constraint
-        size = 2 * self.N + self.M
+        size = self.assembly.N
         if name == "length":
             return 0.0, np.zeros(size), 0.0
         N = self.N
         if name == "H":
             row = self.end_a
-            return -R[row] - value, -J.getrow(row).toarray()[0], -dR_dL0[row]
+            return -R[row] - value, -self.assembly.row(Ke, row), -dR_dL0[row]
         if name == "T_max":
             rows = [(self.end_a, N + self.end_a), (self.end_b, N + self.end_b)]
             tensions = [np.hypot(R[i], R[j]) for i, j in rows]
             i, j = rows[int(np.argmax(tensions))]
             T = max(tensions)
-            dg = (R[i] * J.getrow(i).toarray()[0] + R[j] * J.getrow(j).toarray()[0]) / T
+            dg = (R[i] * self.assembly.row(Ke, i) + R[j] * self.assembly.row(Ke, j)) / T
             return T - value, dg, (R[i] * dR_dL0[i] + R[j] * dR_dL0[j]) / T
-        sigma, achieved, row = self.extremum(z, name)
+        sigma, achieved, row = self.extremum(z, name, strains)
         dg = np.zeros(size)
         if name == "low":
             dg[N : 2 * N] = row
@@ -242,56 +240,37 @@ class _ArcProblem:
             dg[:N], dg[N : 2 * N] = self.dh / self.span * row, -row
         return achieved - value, dg, 0.0
 
-    def extremum(self, z, kind):
+    def extremum(self, z, kind, strains=None):
         """(σ*, value, d value/d dofs of the field) for sag (max tilt·x - y) or lowest point (min y)."""
         xd, yd, _ = self.fields(z)
+        g = self.assembly.interpolate(z) if strains is None else strains
         tilt = 0.0 if kind == "low" else self.dh / self.span
-        at_quad = np.asarray(self.basis.interpolate(yd)) - tilt * np.asarray(self.basis.interpolate(xd))
-        element = int(np.unravel_index(np.argmin(at_quad), at_quad.shape)[0])
-        best = None
-        for k in range(max(element - 1, 0), min(element + 2, self.mesh.t.shape[1])):
-            dofs = self.basis.element_dofs[:, k]
-            candidate = (*element_minimum(self.basis, k, yd[dofs] - tilt * xd[dofs]), k)
-            best = candidate if best is None or candidate < best else best
-        value, s_star, k = best
+        element_dofs = self.basis.element_dofs
+        value, s_star, k = minimum_near(
+            self.basis, g[_Y] - tilt * g[_X], lambda k: yd[element_dofs[:, k]] - tilt * xd[element_dofs[:, k]]
+        )
         row = np.zeros(self.N)
-        row[self.basis.element_dofs[:, k]] = element_values(self.basis, k, s_star)
+        row[element_dofs[:, k]] = element_values(self.basis, k, s_star)
         return s_star, (value if kind == "low" else -value), row
 
-    #: set by :func:`_arc_guess` from the initial catenary
+    #: set by :func:`arc_guess` from the initial catenary
     length_scale = 1.0
     load_scale = 1.0
 
     def total_load(self, L0):
         """Magnitude of the distributed load on a straight cable of length L0 (N)."""
-        x = np.asarray(self.basis.global_coordinates())[0] * self.span
+        x = self.assembly.x * self.span
         out = arc_loads(self.loads, x, np.full_like(x, self.span), L0, self.span)
-        return float(np.sum(np.hypot(out[0], out[1]) * self.basis.dx)) or 1.0
+        return float(np.sum(np.hypot(out[0], out[1]) * self.assembly.dx)) or 1.0
 
     @property
     def constraint_scale(self):
         name, value = self.constraint
         return float(np.hypot(self.span, self.dh)) if name in ("low", "length") else abs(float(value))
 
-    def step(self, state):
-        free = self.free
-        J = state.J[free][:, free]
-        rhs = -state.R[free]
-        if self.fixed_length:
-            return solve(J, rhs), 0.0
-        border = sp.bmat(
-            [
-                [J, sp.csr_matrix(state.dR_dL0[free][:, None])],
-                [sp.csr_matrix(state.dg[free][None, :]), sp.csr_matrix([[state.dg_dL0]])],
-            ],
-            format="csr",
-        )
-        out = solve(border, np.concatenate([rhs, [-state.g]]))
-        return out[:-1], out[-1]
 
-
-def _arc_guess(problem):
-    """Catenary under the mean load, in the frame where that load is gravity.
+def arc_guess(problem: ArcProblem):
+    """Catenary under the mean load, in the frame where that load is gravity: (z, L0).
 
     A uniform load per unit length in any direction hangs the cable in a
     catenary whose "vertical" is the load's direction; the mean load of the
@@ -302,9 +281,9 @@ def _arc_guess(problem):
     name, value = problem.constraint
     chord = float(np.hypot(span, dh))
     length = (value if value > chord else chord * (1 + 1e-6)) if name == "length" else chord
-    x = np.asarray(problem.basis.global_coordinates())[0] * span
+    x, dx = problem.assembly.x * span, problem.assembly.dx
     Q = arc_loads(problem.loads, x, np.full_like(x, span), length, span)
-    mean = np.array([np.sum(Q[0] * problem.basis.dx), np.sum(Q[1] * problem.basis.dx)]) / length
+    mean = np.array([np.sum(Q[0] * dx), np.sum(Q[1] * dx)]) / length
     q = float(np.hypot(*mean))
     up = -mean / q
     across = np.array([up[1], -up[0]])
@@ -351,15 +330,9 @@ class ArcSolution(FiniteElementSolution):
 
     formulation = "arc"
 
-    def __init__(self, problem, z, L0, history):
-        self._problem = problem
-        self.span, self.dh, self.EA = problem.span, problem.dh, problem.EA
-        self.mesh, self.basis = problem.mesh, problem.basis
-        self.dofs, self.L0 = z, L0
-        self.history = list(history)
-        self.iterations = len(self.history) - 1
-        self.constraint = problem.constraint
-        self._state = problem.assemble(z, L0)
+    def __init__(self, problem: ArcProblem, z, L0, history, state: ArcState | None = None):
+        super().__init__(problem, z, history, problem.assemble(z, L0) if state is None else state)
+        self.L0 = float(L0)
         self.H, self.V_A, self.H_B, self.V_B = (float(v) for v in problem.reactions(self._state.R))
 
     @property
@@ -376,9 +349,8 @@ class ArcSolution(FiniteElementSolution):
 
     @cached_property
     def stretched_length(self):
-        xd, yd, _ = self._problem.fields(self.dofs)
-        ax, ay = self.basis.interpolate(xd).grad[0], self.basis.interpolate(yd).grad[0]
-        return float(np.sum(np.sqrt(ax * ax + ay * ay) * self.basis.dx))
+        g = self._problem.assembly.interpolate(self.dofs)
+        return float(np.sum(np.hypot(g[_AX], g[_AY]) * self._problem.assembly.dx))
 
     @property
     def x_low(self):
@@ -416,8 +388,7 @@ class ArcSolution(FiniteElementSolution):
     def slope(self, x):
         s = np.atleast_1d(self._sigma_of_x(x))
         xd, yd, _ = self._problem.fields(self.dofs)
-
-        G = _gradient_probes(self.basis, s.reshape(1, -1))
+        G = gradient_probes(self.basis, s.reshape(1, -1))
         return ((G @ yd) / (G @ xd)).reshape(np.shape(x))[()]
 
     def T(self, x):
@@ -430,7 +401,7 @@ class ArcSolution(FiniteElementSolution):
         :meth:`CableSolution.samples`; non-graph shapes included."""
         sigma = np.linspace(0.0, 1.0, n)
         xd, yd, T = self._problem.fields(self.dofs)
-        G = _gradient_probes(self.basis, sigma.reshape(1, -1))
+        G = gradient_probes(self.basis, sigma.reshape(1, -1))
         dx, dy = G @ xd, G @ yd
         xy = self.xy(sigma)
         loads = arc_loads(self._problem.loads, xy[:, 0], dx, self.L0, self.span)
@@ -452,36 +423,3 @@ class ArcSolution(FiniteElementSolution):
             f"H={self.H:.9g}, V_A={self.V_A:.9g}, V_B={self.V_B:.9g}, length={self.length:.9g}, "
             f"iterations={self.iterations})"
         )
-
-
-def solve_arc(span, dh, loads, EA, constraint, n_elements, degree, rtol, max_iter):
-    """Newton on the arc-length formulation; see :func:`~skcable.cable.solve_bvp`."""
-    problem = _ArcProblem(span, dh, loads, EA, constraint, n_elements, degree)
-    z, L0 = _arc_guess(problem)
-    if problem.fixed_length:
-        L0 = float(constraint[1])
-    state = problem.assemble(z, L0)
-    history = [state.merit]
-    for _ in range(max_iter):
-        if state.merit < rtol:
-            break
-        dz, dL = problem.step(state)
-        step = 1.0
-        for _ in range(40):
-            trial_z = z.copy()
-            trial_z[problem.free] += step * dz
-            trial_L = L0 + step * dL
-            if trial_L > 0:
-                trial = problem.assemble(trial_z, trial_L)
-                if np.isfinite(trial.merit) and (
-                    trial.merit < (1 - 1e-4 * step) * state.merit or trial.merit < rtol
-                ):
-                    break
-            step *= 0.5
-        else:
-            raise ConvergenceError("solve_bvp(formulation='arc'): line search failed", history)
-        z, L0, state = trial_z, trial_L, trial
-        history.append(state.merit)
-    if state.merit >= rtol:
-        raise ConvergenceError(f"solve_bvp(formulation='arc'): no convergence to {rtol:g}", history)
-    return ArcSolution(problem, z, L0, history)

@@ -1,0 +1,42 @@
+"""Suspended cables as 1D nonlinear boundary-value problems on scikit-fem.
+
+One concern per module:
+
+- :mod:`~skcable.cable.bvp.forms`: the weak forms of both formulations as
+  scikit-fem forms (the reference the fast assembly is tested against);
+- :mod:`~skcable.cable.bvp.elements`: the line elements (and a scikit-fem
+  workaround for hierarchical ones);
+- :mod:`~skcable.cable.bvp.probes`: values, slopes and minima of a field at
+  arbitrary points;
+- :mod:`~skcable.cable.bvp.bordered`: the Newton increment of a banded
+  tangent bordered by one global unknown;
+- :mod:`~skcable.cable.bvp.base`: what both solutions share;
+- :mod:`~skcable.cable.bvp.graph`: the graph form y(x), H global;
+- :mod:`~skcable.cable.bvp.arc`: the arc-length form, L0 global;
+- :mod:`~skcable.cable.bvp.solve`: :func:`solve_bvp`, which checks the
+  arguments, picks the formulation and runs :func:`skcable.fe.newton`.
+"""
+
+from skcable.cable.bvp.arc import ArcSolution
+from skcable.cable.bvp.forms import (
+    arc_constitutive,
+    arc_equilibrium_x,
+    arc_equilibrium_y,
+    graph_dH,
+    graph_residual,
+    graph_tangent,
+)
+from skcable.cable.bvp.graph import BVPSolution
+from skcable.cable.bvp.solve import solve_bvp
+
+__all__ = [
+    "ArcSolution",
+    "BVPSolution",
+    "arc_constitutive",
+    "arc_equilibrium_x",
+    "arc_equilibrium_y",
+    "graph_dH",
+    "graph_residual",
+    "graph_tangent",
+    "solve_bvp",
+]

@@ -1,0 +1,40 @@
+"""What the graph and arc-length solutions share."""
+
+from __future__ import annotations
+
+from functools import cached_property
+
+from skcable.cable.solution import CableSolution
+
+__all__ = ["FiniteElementSolution"]
+
+
+class FiniteElementSolution(CableSolution):
+    """A finite-element cable solution: sag and lowest point by a search of
+    the discrete profile (``problem.extremum``), Newton's history."""
+
+    def __init__(self, problem, dofs, history, state):
+        self._problem = problem
+        self.span, self.dh, self.EA = problem.span, problem.dh, problem.EA
+        self.mesh, self.basis = problem.mesh, problem.basis
+        self.dofs = dofs
+        self.history = [float(h) for h in history]
+        self.iterations = len(self.history) - 1
+        self.constraint = problem.constraint
+        self._state = state
+
+    @cached_property
+    def _sag(self):
+        return self._problem.extremum(self.dofs, "sag")
+
+    @cached_property
+    def _low(self):
+        return self._problem.extremum(self.dofs, "low")
+
+    @property
+    def sag(self):
+        return self._sag[1]
+
+    @property
+    def y_low(self):
+        return self._low[1]

@@ -1,0 +1,190 @@
+"""``solve_bvp``: arguments checked, the formulation chosen, one Newton run, the result checked."""
+
+from __future__ import annotations
+
+import numpy as np
+
+from skcable._checks import exactly_one, positive, real, require
+from skcable.cable.bvp.arc import ArcProblem, ArcSolution, arc_guess
+from skcable.cable.bvp.graph import BVPSolution, GraphProblem, initial_guess
+from skcable.cable.solution import ACCEPT
+from skcable.errors import ConvergenceError, InputError
+from skcable.fe import newton
+
+__all__ = ["solve_bvp"]
+
+
+def _choose_formulation(formulation, loads):
+    if formulation not in ("auto", "graph", "arc"):
+        raise InputError("formulation", f"must be 'auto', 'graph' or 'arc', got {formulation!r}")
+    if formulation != "auto":
+        return formulation
+    horizontal = any(getattr(ld, "qx", None) is not None for ld in loads)
+    return "arc" if horizontal else "graph"
+
+
+#: Newton stops, raising, when the merit has not halved in this many iterations: a damped
+#: start on a slack cable can crawl for 4 (a uniform arc mesh on a cable 100 times its chord)
+STAGNATION_WINDOW = 8
+
+
+def _newton(problem, dofs, value, *, rtol, max_iter, merit, name):
+    """:func:`skcable.fe.newton` on ``x = [dofs, value]`` (value: H or L0, kept > 0)."""
+    size = len(dofs)
+    visited = []  # merit of every state an increment was taken from: the history so far
+
+    def increment(state):
+        visited.append(state.merit)
+        return problem.increment(state)
+
+    try:
+        return newton(
+            lambda x: problem.assemble(x[:size], x[size]),
+            np.append(dofs, value),
+            norm=lambda state: state.merit,
+            increment=increment,
+            tol=rtol,
+            max_iter=max_iter,
+            merit=merit,
+            admissible=lambda x: x[size] > 0,
+            stagnation_window=STAGNATION_WINDOW,
+            name=name,
+        )
+    except ConvergenceError as exc:
+        if exc.history:
+            raise
+        raise ConvergenceError(f"{name}: {exc}", visited) from exc
+
+
+def _checked(solution, rtol):
+    """The solution if its residual meets the requested ``rtol`` (plus round-off), else raise.
+
+    Newton stopped with every scaled residual below ``rtol``; the check
+    recomputes them with the closure terms, which differ by round-off
+    (:data:`skcable.cable.solution.ACCEPT`).
+    """
+    residual = solution.residual()
+    limit = rtol + ACCEPT
+    if not residual <= limit:
+        raise ConvergenceError(
+            f"{type(solution).__name__}: residual {residual:.3e} above {limit:.3e} after Newton stopped",
+            solution.history,
+        )
+    return solution
+
+
+def solve_bvp(
+    span,
+    dh,
+    load,
+    *,
+    length=None,
+    sag=None,
+    H=None,
+    low=None,
+    T_max=None,
+    EA=None,
+    n_elements: int = 64,
+    degree: int = 2,
+    mesh=None,
+    rtol: float = 1e-10,
+    max_iter: int = 50,
+    formulation: str = "auto",
+):
+    """Suspended cable under any vertical loads, solved by finite elements.
+
+    Parameters
+    ----------
+    span, dh : float
+        B = (span, dh) relative to A = (0, 0) (m).
+    load : load or list of loads
+        :class:`SelfWeight`, :class:`DeckLoad`, :class:`DistributedLoad`,
+        :class:`PointLoad`, or any object with ``graph_terms``. Point loads at
+        the same x add up.
+    length, sag, H, low, T_max : float
+        Exactly one constraint, as in :func:`~skcable.cable.catenary`; with
+        ``EA``, ``length`` is the unstretched length. ``T_max`` is the larger
+        end tension.
+    EA : float, optional
+        Axial stiffness (N); inextensible when omitted.
+    n_elements, degree : int
+        Uniform mesh size and polynomial degree (1 to 6) of y.
+    mesh : MeshLine or array, optional
+        Node abscissae from 0 to span, instead of ``n_elements`` (distinct
+        nodes; a repeated node raises).
+    rtol : float
+        Newton stops when the interior residual (relative to the total load)
+        and the constraint residual are both below ``rtol``; the returned
+        solution's :meth:`residual` is below ``rtol`` plus round-off (1e-9).
+    max_iter : int
+        Newton iterations at most; Newton also stops, raising, when the
+        residual stagnates (less than halved in 4 iterations) or no step
+        length along the Newton direction reduces it.
+    formulation : {"auto", "graph", "arc"}
+        ``"graph"``: y(x) with H a global unknown (any degree, point loads);
+        ``"arc"``: position and tension along the unstretched arc length
+        (:mod:`skcable.cable.bvp.arc`: any shape, horizontal loads, P2/P1).
+        ``"auto"`` takes the arc form when a load has a horizontal
+        component, the graph form otherwise: started from the catenary of
+        the same weight it converges from 1e-9 to 99 times the chord and
+        for spans down to 1e-3 of the height difference, and it is the more
+        accurate per element (docs/bvp.md maps both).
+
+    Returns
+    -------
+    BVPSolution or ArcSolution
+        ``formulation`` tells which was used.
+
+    Raises
+    ------
+    InputError
+        Bad data (named argument).
+    ConvergenceError
+        Newton stalled; ``history`` holds the merit per iteration.
+    """
+    span, dh = positive("span", span), real("dh", dh)
+    if not isinstance(span, float) or not isinstance(dh, float):
+        raise InputError("span", "solve_bvp solves one scene: give scalar span and dh")
+    loads = list(load) if isinstance(load, (list, tuple)) else [load]
+    if not loads:
+        raise InputError("load", "give at least one load")
+    EA = None if EA is None else positive("EA", EA)
+    name, value = exactly_one(length=length, sag=sag, H=H, low=low, T_max=T_max)
+    value = real(name, value) if name == "low" else positive(name, value)
+    if name == "low":
+        require("low", value < min(0.0, dh), "must lie below both supports, low < min(0, dh)", value)
+    rtol = positive("rtol", rtol)
+    max_iter = positive("max_iter", max_iter)
+    require("max_iter", max_iter == int(max_iter), "must be a whole number", max_iter)
+    formulation = _choose_formulation(formulation, loads)
+    if formulation == "arc":
+        problem = ArcProblem(span, dh, loads, EA, (name, value), n_elements, degree)
+        z, L0 = arc_guess(problem)
+        if problem.fixed_length:
+            L0 = float(value)
+        result = _newton(
+            problem,
+            z,
+            L0,
+            rtol=rtol,
+            max_iter=int(max_iter),
+            merit=lambda state: state.merit,
+            name="solve_bvp(formulation='arc')",
+        )
+        size = len(z)
+        solution = ArcSolution(problem, result.x[:size], result.x[size], result.history, result.state)
+        return _checked(solution, rtol)
+    problem = GraphProblem(span, dh, loads, EA, (name, value), mesh, n_elements, degree)
+    dofs, H0 = initial_guess(problem)
+    result = _newton(
+        problem,
+        dofs,
+        H0,
+        rtol=rtol,
+        max_iter=int(max_iter),
+        merit=lambda state: state.descent,
+        name="solve_bvp",
+    )
+    size = len(dofs)
+    solution = BVPSolution(problem, result.x[:size], result.x[size], result.history, result.state)
+    return _checked(solution, rtol)
