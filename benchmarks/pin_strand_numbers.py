@@ -40,6 +40,9 @@ def run(preset, damage, slip, damage_load):
     top = ALUMINIUM_TOP if preset.startswith("aluminium") else None
     curve = model.capacity_curve(top, n_steps=N_STEPS)
     peak = max(float(np.max(np.abs(st.curvature))) for st in curve.steps)
+    # the steps up to rupture: the last step of this commit lies beyond the rupture strain
+    inside = curve.steps[:-1] if curve.ruptured else curve.steps
+    peak_inside = max(float(np.max(np.abs(st.curvature))) for st in inside)
     return {
         "preset": preset,
         "damage": damage,
@@ -53,6 +56,7 @@ def run(preset, damage, slip, damage_load):
         "rupture_force": float(curve.force[-1]),
         "max_slip_fraction": float(np.max(curve.slip_fraction)),
         "peak_curvature": peak,
+        "peak_curvature_before_rupture": peak_inside,
         "strain": curve.strain.tolist(),
         "force": curve.force.tolist(),
         "slip_fraction": curve.slip_fraction.tolist(),

@@ -49,11 +49,11 @@ from __future__ import annotations
 import math
 
 from skcable._checks import exactly_one, positive, scalar
-from skcable.cable._bvp import solve_bvp
 from skcable.cable._catenary import catenary
 from skcable.cable._elastic import elastic_catenary
-from skcable.cable._loads import DeckLoad, SelfWeight
+from skcable.cable._loads import DeckLoad, PointLoad, SelfWeight
 from skcable.cable._parabola import parabola
+from skcable.cable.bvp import solve_bvp
 from skcable.errors import ConvergenceError, InputError
 
 __all__ = ["solve"]
@@ -142,9 +142,10 @@ def solve(
     if not loads:
         raise InputError("loads", "give at least one load")
     for load in loads:
-        if not callable(getattr(load, "graph_terms", None)):
+        if not (isinstance(load, PointLoad) or callable(getattr(load, "graph_terms", None))):
             raise InputError(
-                "loads", f"must be load objects (SelfWeight, DeckLoad, ...), got {type(load).__name__}"
+                "loads",
+                f"must be load objects (SelfWeight, DeckLoad, PointLoad, ...), got {type(load).__name__}",
             )
     tried = []
     if all(type(ld) in (SelfWeight, DeckLoad) for ld in loads):

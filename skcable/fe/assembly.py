@@ -27,6 +27,7 @@ factorisation for every size used here and wakes no BLAS threads.
 from __future__ import annotations
 
 from dataclasses import dataclass
+from functools import cached_property
 
 import numpy as np
 import scipy.sparse as sp
@@ -111,14 +112,18 @@ class StrainAssembly:
             self.B.transpose(2, 1, 3, 0).reshape(ne, n_local, nq * len(self.strains))
         )
         self._Bdx_t = np.ascontiguousarray(self.Bdx.transpose(2, 3, 0, 1))
-        # the CSR pattern of every (element, i, j) entry, computed once
-        rows = np.broadcast_to(self.dofs.T[:, :, None], (ne, n_local, n_local)).ravel()
-        cols = np.broadcast_to(self.dofs.T[:, None, :], (ne, n_local, n_local)).ravel()
-        key = rows.astype(np.int64) * self.N + cols
-        unique, self._entry = np.unique(key, return_inverse=True)
-        self._indices = (unique % self.N).astype(np.int32)
-        self._indptr = np.searchsorted(unique // self.N, np.arange(self.N + 1)).astype(np.int32)
-        self._rows, self._cols = rows, cols
+        # the (row, column) of every (element, i, j) entry; the CSR pattern is built from them
+        # once, when a sparse matrix is first asked for
+        self._rows = np.broadcast_to(self.dofs.T[:, :, None], (ne, n_local, n_local)).ravel()
+        self._cols = np.broadcast_to(self.dofs.T[:, None, :], (ne, n_local, n_local)).ravel()
+
+    @cached_property
+    def _pattern(self):
+        key = self._rows.astype(np.int64) * self.N + self._cols
+        unique, entry = np.unique(key, return_inverse=True)
+        indices = (unique % self.N).astype(np.int32)
+        indptr = np.searchsorted(unique // self.N, np.arange(self.N + 1)).astype(np.int32)
+        return entry, indices, indptr
 
     def interpolate(self, U: np.ndarray) -> np.ndarray:
         """Generalized strains at the quadrature points: (n_strains, ne, nq)."""
@@ -138,8 +143,9 @@ class StrainAssembly:
     def matrix(self, D: np.ndarray | None = None, *, element_matrices=None) -> sp.csr_matrix:
         """Global CSR matrix (N, N) from D (or from element matrices already computed)."""
         Ke = self.element_matrices(D) if element_matrices is None else element_matrices
-        data = np.bincount(self._entry, weights=Ke.ravel(), minlength=len(self._indices))
-        return sp.csr_matrix((data, self._indices, self._indptr), shape=(self.N, self.N))
+        entry, indices, indptr = self._pattern
+        data = np.bincount(entry, weights=Ke.ravel(), minlength=len(indices))
+        return sp.csr_matrix((data, indices, indptr), shape=(self.N, self.N))
 
     def banded(self, free: np.ndarray) -> BandedSystem:
         """A :class:`BandedSystem` for the ``free`` dofs of this pattern (ordered along the axis)."""

@@ -17,7 +17,8 @@ a trial ``x + t·dx`` is accepted when ``merit`` falls by the Armijo factor
 :class:`~skcable.errors.ConvergenceError` carrying the history, when no step
 length gives descent or when the residual *stagnates*: ``norm`` has not fallen
 below ``stagnation_factor`` times its value ``stagnation_window`` iterations
-earlier (a converging Newton gains far more than that per iteration; one
+earlier, or two iterations earlier once it is below 1e-12, the round-off floor of a
+residual relative to its force scale (a converging Newton gains far more than that per iteration; one
 that crawls is either at the round-off floor of a near-singular tangent or
 off the path, and more iterations only cost assemblies).
 """
@@ -121,7 +122,9 @@ def newton(
         if len(history) > max_iter:
             break
         back = len(history) - 1 - stagnation_window
-        if back >= 0 and current > stagnation_factor * history[back]:
+        # at the round-off floor of a relative residual (below 1e-12) two iterations are enough to tell
+        floor = current < 1e-12 and len(history) > 2 and current > stagnation_factor * history[-3]
+        if floor or (back >= 0 and current > stagnation_factor * history[back]):
             raise ConvergenceError(
                 f"{name}: the residual stagnates (less than a factor {1 / stagnation_factor:g} "
                 f"in {stagnation_window} iterations)",

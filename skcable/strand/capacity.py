@@ -138,7 +138,7 @@ class StepResult:
         )
 
 
-@dataclass
+@dataclass(repr=False)
 class CapacityCurve:
     """Force–strain curve and the state at every step.
 
@@ -167,6 +167,18 @@ class CapacityCurve:
     n_steps: int = 0
     failure: str | None = None
     cutbacks: int = 0
+
+    def __repr__(self) -> str:
+        end = "ruptured" if self.ruptured else f"stopped: {self.failure}" if self.failure else "not ruptured"
+        try:
+            k = f"{self.K_Leq:.6g} N"
+        except (ZeroDivisionError, FloatingPointError, IndexError):
+            k = "n/a"
+        return (
+            f"CapacityCurve({len(self.steps)} steps to strain {self.strain[-1]:.6g}, force "
+            f"{self.force[-1]:.6g} N, K_Leq={k}, max slip fraction {np.max(self.slip_fraction):.3f}, "
+            f"{end}, cutbacks={self.cutbacks})"
+        )
 
     @cached_property
     def _elastic_end(self):
@@ -396,6 +408,13 @@ def capacity_curve(
                 strains[-1] = strains[-2] + t * (strains[-1] - strains[-2])
                 forces[-1] = forces[-2] + t * (forces[-1] - forces[-2])
                 ruptured = True
+                # one last state everywhere: the last step is the equilibrium at the rupture strain
+                # (the force of the curve stays the interpolated one; they differ by its error)
+                guess = None if previous[0] is None else previous[0] + t * (U - previous[0])
+                try:
+                    steps[-1] = model.solve(strains[-1], guess, steps[-2].state if len(steps) > 1 else None)
+                except ConvergenceError:
+                    pass  # keep the step beyond rupture: the curve itself ends at the rupture strain
                 break
         if ruptured or failure:
             break

@@ -41,7 +41,16 @@ def test_strand_numbers_are_unchanged(case):
     assert curve.strain[-1] == pytest.approx(case["rupture_strain"], rel=1e-9)
     assert curve.force[-1] == pytest.approx(case["rupture_force"], rel=1e-9)
     assert np.max(curve.slip_fraction) == pytest.approx(case["max_slip_fraction"], abs=1e-12)
-    peak = max(float(np.max(np.abs(st.curvature))) for st in curve.steps)
-    assert peak == pytest.approx(case["peak_curvature"], rel=1e-9)
+    # up to rupture; the pinned code's last step lay beyond the rupture strain (issue #14: one last
+    # state everywhere), the last step is now the equilibrium at the curve's rupture strain
+    inside = curve.steps[:-1] if curve.ruptured else curve.steps
+    peak = max(float(np.max(np.abs(st.curvature))) for st in inside)
+    assert peak == pytest.approx(case["peak_curvature_before_rupture"], rel=1e-9)
     if case["ruptured"]:
         assert curve.D_r == pytest.approx(case["D_r"], rel=1e-9)
+        last = curve.steps[-1]
+        assert last.strain == curve.strain[-1]
+        # the curve's force is interpolated to the rupture strain; the step there is solved
+        assert last.force == pytest.approx(curve.force[-1], rel=1e-2)
+        eps_r = strand.material(s.material.name).eps_rupture
+        assert np.max(last.wire_strain) == pytest.approx(eps_r, rel=0.1)
