@@ -1,4 +1,4 @@
-"""Validation of the strand model against seed 003 Tables 4.1 and 4.2, with sensitivities.
+"""Validation of the strand model against Pino Vidal (2021) Tables 4.1 and 4.2, with sensitivities.
 
 For the 8 strand/damage cases: K_Leq (eq. 4.30) of the stick model, of the
 thesis's element slip rule and of the per-point (axis) rule, their ratios, and
@@ -25,7 +25,7 @@ import numpy as np  # noqa: E402
 from skcable import strand  # noqa: E402
 
 ROOT = Path(__file__).resolve().parents[1]
-#: seed 003 Table 4.1 (K_Leq stick, stick-slip [kN], ratio [%]) and
+#: Pino Vidal (2021) Table 4.1 (K_Leq stick, stick-slip [kN], ratio [%]) and
 #: Table 4.2 (D_r stick, stick-slip, net area [%])
 THESIS = {
     ("steel-9.5", 1): (8698.14, 7177.32, 82.5, 8.4, 11.9, 14.29),
@@ -87,13 +87,13 @@ def main(argv=None):
     args = parser.parse_args(argv)
     cases = [c for c in THESIS if not args.quick or c[0] == "steel-9.5"]
     lines = [
-        "# Strand model against seed 003 Tables 4.1 and 4.2",
+        "# Strand model against Pino Vidal (2021) Tables 4.1 and 4.2",
         "",
         f"Produced by `python benchmarks/strand_validation.py`: specimen length {LENGTH} m (the thesis does",
         f"not state it), {ELEMENTS} elements graded toward the clamps, {STEPS} load steps, mu = {MU}.",
         "K_Leq is the secant at the strain where the first wire leaves the linear branch (eq. 4.30);",
         "D_r = 1 - U_T/U_T0 against the undamaged strand with the same settings (eq. 4.31).",
-        'Two readings of the damage (REFERENCE.md §3): the default `damage_load="eccentricity"`',
+        'Two readings of the damage: the default `damage_load="eccentricity"`',
         "(fibres on their helices, the net section's centroid turning with the lay) and the thesis's",
         '`damage_load="sinusoidal"` (prismatic section + the sinusoidal loads of Beltrán & De Vico).',
         "",

@@ -1,8 +1,8 @@
 """Argument checks shared by the public functions.
 
 Each check returns the argument as a Python float (scalar input, which
-keeps scalar calls fast, see :mod:`skcable._xp`) or as a float array, and raises
-:class:`skcable.errors.InputError` naming the argument otherwise. Numbers are
+keeps scalar calls fast, see `skcable._xp`) or as a float array, and raises
+`skcable.errors.InputError` naming the argument otherwise. Numbers are
 Python or NumPy integers and floats (or arrays of them); strings, ``None``,
 booleans and complex numbers are refused rather than converted.
 """
@@ -115,7 +115,7 @@ def require(name: str, ok, reason: str, value) -> None:
 def broadcast(**values) -> tuple[int, ...]:
     """Shape the (already checked) arguments broadcast to.
 
-    Scalars broadcast with anything. Raises :class:`InputError` naming the
+    Scalars broadcast with anything. Raises `InputError` naming the
     first array argument that is empty or whose shape does not broadcast
     with the shapes of the arguments before it.
     """

@@ -34,7 +34,7 @@ scalar_math = SimpleNamespace(
 
 
 def namespace(*values):
-    """``numpy`` if any of ``values`` is an ndarray, else :data:`scalar_math`."""
+    """``numpy`` if any of ``values`` is an ndarray, else `scalar_math`."""
     for value in values:
         if isinstance(value, np.ndarray):
             return np

@@ -9,7 +9,7 @@ worked examples of the sources beside skcable's values; ``catenary``,
 runs a study file. Every command takes ``--json`` where it prints numbers.
 
 Errors are one line on stderr naming the flag, never a traceback; the exit
-status says what happened (:data:`EXIT_STATUS`, also in ``skcable --help``).
+status says what happened (`EXIT_STATUS`, also in ``skcable --help``).
 Output paths are checked before computing and files are written atomically.
 """
 

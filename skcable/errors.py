@@ -1,8 +1,8 @@
 """Exceptions raised by skcable.
 
-Bad input raises :class:`InputError` (a :class:`ValueError`) naming the
+Bad input raises `InputError` (a `ValueError`) naming the
 argument and the reason; a solver that does not converge raises
-:class:`ConvergenceError` carrying its iteration history.
+`ConvergenceError` carrying its iteration history.
 """
 
 from __future__ import annotations

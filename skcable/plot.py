@@ -1,7 +1,7 @@
 """Figures of results: matplotlib for curves, pyvista (off screen) for the deformed strand.
 
 Every function draws on the given ``ax`` (or a new figure) and returns the
-axes, so figures compose; :func:`render_strand` writes a PNG. SI units on
+axes, so figures compose; `render_strand` writes a PNG. SI units on
 the axes (the strain is dimensionless, forces in kN for readability).
 """
 

@@ -1,10 +1,10 @@
 """Parameter studies: a grid or a sample of cases over a model function, run on Dask.
 
 A study is a list of cases (dicts of keyword arguments) and a model
-function that turns one case into a dict of outputs. :func:`run` maps the
+function that turns one case into a dict of outputs. `run` maps the
 function over the cases on a Dask cluster (a local cluster of processes by
 default, or any ``dask.distributed`` scheduler address) or serially, and
-collects one row per case into a :class:`StudyTable` (a pandas DataFrame that
+collects one row per case into a `StudyTable` (a pandas DataFrame that
 prints as a short summary):
 
     case parameters | outputs | status ("ok" / "failed") | error | time_s | key
@@ -19,7 +19,7 @@ cache reads it back instead of recomputing: an interrupted study resumes.
 The key is a hash of the model's name and the case's parameters; an entry
 records the model, the parameters, the skcable version and a checksum, and
 is verified when read: a damaged, hand-edited or foreign entry is recomputed
-with a :class:`CacheWarning` naming the file. Entries are written atomically,
+with a `CacheWarning` naming the file. Entries are written atomically,
 and a case in progress is locked (``<key>.lock``), so two runs sharing a cache
 neither compute a case twice nor leave a torn file.
 
@@ -572,14 +572,14 @@ def run(
     cache=None,
     progress: bool = True,
 ) -> StudyTable:
-    """Run ``model(**case)`` for every case; return a :class:`StudyTable`, one row per case.
+    """Run ``model(**case)`` for every case; return a `StudyTable`, one row per case.
 
     Parameters
     ----------
     model : callable
         Returns a dict of scalar outputs; importable by the workers (a module-level function).
     cases : list of dict
-        Keyword arguments per case (see :func:`grid` and :func:`sample`); a case the model's
+        Keyword arguments per case (see `grid` and `sample`); a case the model's
         signature cannot take (misspelt or missing parameter) is refused before computing.
     executor : {"auto", "dask", "serial"}
         "auto": Dask when installed, else serial.
@@ -742,7 +742,7 @@ def load_study(path) -> dict:
 
     ``[sample]`` holds ``n``, ``seed`` and ``[low, high]`` ranges. Unknown keys, both
     ``[grid]`` and ``[sample]``, a parameter given twice or one the model does not take
-    are refused (:class:`skcable.InputError`), never ignored.
+    are refused (`skcable.InputError`), never ignored.
     """
     path = Path(path)
     if not path.is_file():

@@ -14,16 +14,16 @@ EXAMPLES = sorted((ROOT / "examples").glob("*.py"))
 def test_example_runs_as_a_script(script, tmp_path, monkeypatch, capsys):
     monkeypatch.setattr(sys, "argv", [str(script), "--out", str(tmp_path)])
     monkeypatch.setenv("MPLBACKEND", "Agg")
-    if script.stem == "seed_worked_examples":
+    if script.stem == "worked_examples":
         monkeypatch.setattr(sys, "argv", [str(script)])
     runpy.run_path(str(script), run_name="__main__")
     assert capsys.readouterr().out.strip()
-    if script.stem != "seed_worked_examples":
+    if script.stem != "worked_examples":
         assert any(tmp_path.iterdir()), "the example wrote nothing"
 
 
 def test_seed_examples_script_prints_the_published_values():
-    mod = runpy.run_path(str(ROOT / "examples" / "seed_worked_examples.py"))
+    mod = runpy.run_path(str(ROOT / "examples" / "worked_examples.py"))
     rows = list(mod["rows"]())
     for label, published, ours in rows:
         if label.startswith("000 ex.4"):

@@ -1,6 +1,6 @@
 """Suspended cables: closed forms, stiffness, end conditions, surfaces.
 
-Conventions (REFERENCE.md §1): x to the right, y up, support A at (0, 0),
+Conventions: x to the right, y up, support A at (0, 0),
 support B at (span, dh); distributed loads w > 0 act downward; H > 0 is the
 horizontal tension; V_A, V_B are the upward support reactions. SI units by
 default (m, N, N/m); any consistent system works.

@@ -2,7 +2,7 @@ r"""Inextensible catenary between supports at different heights.
 
 A uniform cable of weight ``w`` per unit length hangs from A = (0, 0) to
 B = (span, dh). With the catenary parameter :math:`a = H/w` its profile is
-(seed 000 §3, seed 001 eq. 17)
+(the lecture notes "Cables" §3, Goicolea (2012) eq. 17)
 
 .. math:: y(x) = y_\mathrm{low} + a\left[\cosh\frac{x - x_\mathrm{low}}{a} - 1\right],
           \qquad T(x) = H\cosh\frac{x - x_\mathrm{low}}{a}.
@@ -14,11 +14,11 @@ hyperbolic angle at mid-span :math:`m`, where :math:`u_A = m - z`,
 .. math:: \sinh m = \frac{dh}{\mathrm{span}}\,\frac{z}{\sinh z}, \qquad
           S^2 - dh^2 = 4a^2\sinh^2 z, \qquad S = 2a\sinh z\cosh m.
 
-The "fourth equation" (seed 000) is one of: unstretched ``length``, ``sag``
+The "fourth equation" (the lecture notes "Cables") is one of: unstretched ``length``, ``sag``
 (largest vertical distance chord–cable), horizontal tension ``H``, ``low``
 (y of the vertex relative to A; it must lie below both supports, so the
 vertex lies inside the span and is the cable's lowest point) or ``T_max``
-(tension at the higher support, seed 001 §3.4.1: a counterweight over a
+(tension at the higher support, Goicolea (2012) §3.4.1: a counterweight over a
 pulley). Given the length,
 ``sinh(z)/z = sqrt(S² − dh²)/span`` is solved by Newton's method on
 ``log(sinh z / z)``, which is increasing and convex in z: started from an
@@ -51,7 +51,7 @@ _STEEPEST = 1e150
 
 
 class Catenary(CableSolution):
-    """Solution of :func:`catenary`; every attribute broadcasts.
+    """Solution of `catenary`; every attribute broadcasts.
 
     Attributes
     ----------
@@ -409,9 +409,9 @@ def catenary(span, dh, w, *, length=None, sag=None, H=None, low=None, T_max=None
         relative to A, which must lie below both supports (``low < min(0,
         dh)``: the vertex is then inside the span and is the lowest point);
         or the tension at the higher support (a counterweight over a
-        pulley, seed 001 §3.4.1).
+        pulley, Goicolea (2012) §3.4.1).
     branch : {"taut", "slack"}
-        With ``T_max`` two catenaries exist (seed 001 §3.4.1): the taut one
+        With ``T_max`` two catenaries exist (Goicolea (2012) §3.4.1): the taut one
         (default) or the slack one.
 
     Returns
@@ -433,7 +433,7 @@ def catenary(span, dh, w, *, length=None, sag=None, H=None, low=None, T_max=None
 
     Examples
     --------
-    Seed 000, example 4 (kN, m): lowest point 30 m below A.
+    The lecture notes "Cables", example 4 (kN, m): lowest point 30 m below A.
 
     >>> c = catenary(800.0, -20.0, 20.0, low=-30.0)
     >>> round(float(c.H), 1), round(float(c.x_low), 2)

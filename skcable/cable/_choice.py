@@ -1,6 +1,6 @@
 r"""Model no more than a scene needs: the cheapest cable model within a tolerance.
 
-:func:`solve` takes the cheapest model whose *estimated* relative error is
+`solve` takes the cheapest model whose *estimated* relative error is
 below ``rtol``:
 
 1. **parabola** for a deck load (load per horizontal length, exact), with
@@ -15,10 +15,10 @@ below ``rtol``:
 Error estimates (relative, on H, the end tensions and the length):
 
 - *Shape*: a parabola standing for a catenary errs by the
-  first neglected term of seed 001 §3.2.1's series
+  first neglected term of Goicolea (2012) §3.2.1's series
   :math:`z = a[1 + \tfrac12 (x/a)^2 + \tfrac1{24}(x/a)^4 + \dots]` relative to
   the kept one, :math:`t^2/12` for a level span with support slopes ±t
-  (seed 001 ex. 4/5: 1.33 % against the true 1.3 % in H). For any chord,
+  (Goicolea (2012) ex. 4/5: 1.33 % against the true 1.3 % in H). For any chord,
   with :math:`u_A, u_B` the support values of x/a (Δ = |u_B − u_A|,
   c = |u_A + u_B|/2), the estimate is :math:`K\,\tfrac{\Delta^2}{48}(1 + c)`
   (Δ = 2t gives t²/12 when c = 0); the factor 1 + c and K = 2 (5 for the
@@ -108,7 +108,7 @@ def solve(
     span, dh : float
         B = (span, dh) relative to A (m).
     loads : load or list of loads
-        As for :func:`~skcable.cable.solve_bvp`.
+        As for `solve_bvp`.
     length, sag, H, low, T_max : float
         Exactly one constraint (``length`` unstretched when ``EA`` is given).
     EA : float, optional
@@ -120,12 +120,12 @@ def solve(
     -------
     CableSolution
         The chosen model's solution with four more attributes: ``model``
-        (one of :data:`MODELS`), ``error_estimate``, ``reason`` (why this
+        (one of `MODELS`), ``error_estimate``, ``reason`` (why this
         model) and ``tried`` (the cheaper models rejected, with their estimates).
 
     Examples
     --------
-    >>> solve(200.0, 0.0, SelfWeight(1.0), sag=20.0).model  # seed 001 ex. 5
+    >>> solve(200.0, 0.0, SelfWeight(1.0), sag=20.0).model  # Goicolea (2012) ex. 5
     'catenary'
     >>> s = solve(1000.0, 0.0, [DeckLoad(100e3), SelfWeight(15e3)], sag=100.0, rtol=1e-2)
     >>> s.model, s.error_estimate < 1e-2  # a suspension bridge's main cable

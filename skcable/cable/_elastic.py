@@ -99,9 +99,9 @@ def _x_of_s_minus(s, x, H, V_A, w, EA):
 
 
 class ElasticCatenary(CableSolution):
-    """Solution of :func:`elastic_catenary`.
+    """Solution of `elastic_catenary`.
 
-    Attributes are those of :class:`~skcable.cable.Catenary`, with
+    Attributes are those of `Catenary`, with
     ``length`` the unstretched length, plus ``EA``, ``stretched_length`` and
     the Lagrangian maps ``x_of_s(s)``, ``y_of_s(s)``, ``s_of_x(x)``. The
     lowest point ``x_low, y_low`` is that of the cable (a support when the

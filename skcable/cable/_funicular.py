@@ -1,14 +1,14 @@
-r"""Funicular polygons: weightless cables under point loads (seed 000 §1).
+r"""Funicular polygons: weightless cables under point loads (the lecture notes "Cables" §1).
 
-:func:`funicular` (§1.a) takes segments of fixed lengths and loads of any
+`funicular` (§1.a) takes segments of fixed lengths and loads of any
 direction at the joints. Node equilibrium :math:`\mathbf t_{i+1} = \mathbf t_i
 - \mathbf P_i` makes every segment force a function of the first one,
-:math:`\mathbf t_1`; the seed's 2n+2 unknowns reduce to the two components
+:math:`\mathbf t_1`; the notes' 2n+2 unknowns reduce to the two components
 of :math:`\mathbf t_1`, fixed by the closure
 :math:`\sum_j L_j\,\mathbf t_j/|\mathbf t_j| = \mathbf B`, solved by Newton's
 method (analytic Jacobian :math:`\sum_j L_j (I - e_j e_j^T)/|t_j|`).
 
-:func:`funicular_vertical` (§1.b) takes vertical loads at given abscissae
+`funicular_vertical` (§1.b) takes vertical loads at given abscissae
 and applies the general cable theorem :math:`H\,y_c(x) = M(x)`: ``H`` times
 the depth below the chord equals the bending moment of a simply supported
 beam of the same span. Loads at the same abscissa act as one load, their sum.
@@ -17,7 +17,7 @@ Both problems are homogeneous: forces scale with the loads and positions
 with the lengths. They are solved with loads and lengths divided by powers
 of two near their sizes (exact), so that magnitudes from 1e-300 to 1e300
 neither over- nor underflow on the way; the result is residual-checked
-(:data:`~skcable.cable.solution.ACCEPT`) before it is returned.
+(`ACCEPT`) before it is returned.
 """
 
 from __future__ import annotations
@@ -57,7 +57,7 @@ def _accept(solution, history, accept=ACCEPT):
 
 @dataclass(frozen=True)
 class Funicular:
-    """Solution of :func:`funicular`.
+    """Solution of `funicular`.
 
     Attributes
     ----------
@@ -86,7 +86,7 @@ class Funicular:
     history: list
 
     def to_vtk(self, path):
-        """Write the polygon as VTK (see :func:`skcable.io.funicular_mesh`); returns the path."""
+        """Write the polygon as VTK (see `skcable.io.funicular_mesh`); returns the path."""
         from skcable.io import funicular_mesh, write
 
         return write(funicular_mesh(self), path)
@@ -116,7 +116,7 @@ class Funicular:
 
 
 def funicular(B, lengths, loads, *, tol: float = 1e-13, max_iter: int = 100) -> Funicular:
-    """Weightless cable of fixed segment lengths under joint loads (seed 000 §1.a).
+    """Weightless cable of fixed segment lengths under joint loads (the lecture notes "Cables" §1.a).
 
     Parameters
     ----------
@@ -129,7 +129,7 @@ def funicular(B, lengths, loads, *, tol: float = 1e-13, max_iter: int = 100) -> 
         ``Py < 0``), N; not all zero.
     tol : float
         Newton stops when the closure error is below ``tol`` times the
-        total length; the returned polygon's :meth:`~Funicular.residual` is
+        total length; the returned polygon's `residual` is
         checked against ``max(1e-9, 2·tol)``.
     max_iter : int
         Largest number of Newton iterations.
@@ -149,7 +149,7 @@ def funicular(B, lengths, loads, *, tol: float = 1e-13, max_iter: int = 100) -> 
 
     Examples
     --------
-    Seed 000, example 1:
+    The lecture notes "Cables", example 1:
 
     >>> f = funicular((20, 2), [5, 6, 6, 5], [(5, -75), (10, -100), (5, -75)])
     >>> np.round(f.T, 2)
@@ -243,7 +243,7 @@ def funicular(B, lengths, loads, *, tol: float = 1e-13, max_iter: int = 100) -> 
 
 @dataclass(frozen=True)
 class FunicularVertical:
-    """Solution of :func:`funicular_vertical`.
+    """Solution of `funicular_vertical`.
 
     Attributes
     ----------
@@ -269,7 +269,7 @@ class FunicularVertical:
     constraint: tuple = ("H", None)
 
     def to_vtk(self, path):
-        """Write the polygon as VTK (see :func:`skcable.io.funicular_mesh`); returns the path."""
+        """Write the polygon as VTK (see `skcable.io.funicular_mesh`); returns the path."""
         from skcable.io import funicular_mesh, write
 
         return write(funicular_mesh(self), path)
@@ -316,7 +316,7 @@ class FunicularVertical:
 
 
 def funicular_vertical(span, dh, loads, *, through=None, H=None) -> FunicularVertical:
-    """Weightless cable under vertical point loads (seed 000 §1.b).
+    """Weightless cable under vertical point loads (the lecture notes "Cables" §1.b).
 
     Parameters
     ----------
@@ -340,7 +340,7 @@ def funicular_vertical(span, dh, loads, *, through=None, H=None) -> FunicularVer
 
     Examples
     --------
-    Seed 000, example 2 (D at x = 3 m, 5 m below A):
+    The lecture notes "Cables", example 2 (D at x = 3 m, 5 m below A):
 
     >>> f = funicular_vertical(10, -1, [(1, 50), (3, 30), (7, 40)], through=(3, -5))
     >>> round(f.H, 3), round(f.V_A, 3)

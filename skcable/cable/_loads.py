@@ -1,4 +1,4 @@
-r"""Loads on a suspended cable, for :func:`skcable.cable.solve_bvp`.
+r"""Loads on a suspended cable, for `skcable.cable.solve_bvp`.
 
 Each distributed load tells the graph formulation ``H y'' = q(x, y', H)``
 its downward load per unit *horizontal* length ``q`` and the derivatives

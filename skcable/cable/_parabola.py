@@ -1,6 +1,6 @@
 r"""Cable under a uniform load per unit horizontal length: the parabola.
 
-With ``w`` per horizontal length and :math:`a = H/w` (seed 000 §2, seed 001
+With ``w`` per horizontal length and :math:`a = H/w` (the lecture notes "Cables" §2, Goicolea (2012)
 §3.2), the slope grows linearly, :math:`y'(x) = p_A + x/a`, so
 
 .. math:: y(x) = p_A x + \frac{x^2}{2a}, \qquad
@@ -52,7 +52,7 @@ _NODE_WEIGHT = tuple(zip(_NODES.tolist(), _WEIGHTS.tolist(), strict=True))
 
 
 def _excess_quadrature_scalar(a, slope, delta):
-    """:func:`_excess_quadrature` for floats (a NumPy call per node pair costs more)."""
+    """`_excess_quadrature` for floats (a NumPy call per node pair costs more)."""
     base = math.hypot(1.0, slope)
     total = 0.0
     for node, weight in _NODE_WEIGHT:
@@ -130,9 +130,9 @@ def length_derivatives(a, slope, delta, length):
 
 
 class Parabola(CableSolution):
-    """Solution of :func:`parabola`; every attribute broadcasts.
+    """Solution of `parabola`; every attribute broadcasts.
 
-    Attributes are those of :class:`~skcable.cable.Catenary` (``H, V_A, V_B,
+    Attributes are those of `Catenary` (``H, V_A, V_B,
     T_A, T_B, length, sag``, the lowest point ``x_low, y_low`` in [0, span],
     the vertex ``x_vertex, y_vertex``, which may lie outside the span);
     ``a = H/w`` and the end slopes ``p_A``, ``p_B``.
@@ -280,16 +280,16 @@ def parabola(span, dh, w, *, length=None, sag=None, H=None, low=None, T_max=None
         Horizontal distance A→B (> 0) and height of B above A (m).
     w : float or array_like
         Load per unit horizontal length (N/m), > 0, downward (a deck hung
-        from the cable, seed 000 §2).
+        from the cable, the lecture notes "Cables" §2).
     length, sag, H, low, T_max : float or array_like
-        Exactly one constraint, as in :func:`~skcable.cable.catenary`; here
+        Exactly one constraint, as in `catenary`; here
         ``sag`` is the mid-span sag ``f`` of ``H = w span² / (8 f)`` and
         ``low`` the y of the vertex, below both supports (``low < min(0, dh)``).
 
     Returns
     -------
     Parabola
-        The same interface as :class:`~skcable.cable.Catenary`: ``x_low, y_low``
+        The same interface as `Catenary`: ``x_low, y_low``
         the cable's lowest point, ``x_vertex, y_vertex`` the parabola's vertex.
 
     Raises
@@ -303,7 +303,7 @@ def parabola(span, dh, w, *, length=None, sag=None, H=None, low=None, T_max=None
 
     Examples
     --------
-    Seed 001, example 4 (kg, m): ``T0 = 250.0``, ``Tmax = 269.26``.
+    Goicolea (2012), example 4 (kg, m): ``T0 = 250.0``, ``Tmax = 269.26``.
 
     >>> p = parabola(200.0, 0.0, 1.0, sag=20.0)
     >>> round(p.H, 4), round(p.T_max, 2), round(p.length, 4)

@@ -1,7 +1,7 @@
 """Bracketed, vectorised scalar root finding with loud failure.
 
-Thin wrapper of :func:`scipy.optimize.elementwise.find_root` (Chandrupatla's
-method) for arrays and of :func:`scipy.optimize.brentq` for scalars (the
+Thin wrapper of `scipy.optimize.elementwise.find_root` (Chandrupatla's
+method) for arrays and of `scipy.optimize.brentq` for scalars (the
 elementwise machinery costs about 10 ms per call, Brent's method tens of
 microseconds): it checks the bracket, collects the history of ``|f|`` and
 raises instead of returning an unconverged root.

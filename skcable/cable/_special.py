@@ -5,7 +5,7 @@ forms of ``sinh(z)/z - 1`` or ``z - tanh z`` then lose every digit. These
 helpers switch to their Maclaurin series below ``|z| = 1`` (9 terms, error
 below 1e-17 relative there) and use the direct forms above, where the loss
 is at most a factor 6 of the machine epsilon. They take floats or arrays
-(see :mod:`skcable._xp`).
+(see `skcable._xp`).
 """
 
 from __future__ import annotations
@@ -121,7 +121,7 @@ def power_product(coefficient, *factors):
     ``x > 0`` (float or array), ``p`` a small integer. The mantissas of the
     factors (in [1/2, 1)) and their binary exponents are combined apart, so
     that no intermediate over- or underflows: the result is right to a few
-    ulps whenever it is representable. Turn it into a float with :func:`ldexp_sum`.
+    ulps whenever it is representable. Turn it into a float with `ldexp_sum`.
     """
     xp = namespace(*(x for x, _ in factors))
     mantissa, exponent = coefficient, 0
@@ -133,7 +133,7 @@ def power_product(coefficient, *factors):
 
 
 def ldexp_sum(*terms):
-    """Sum of ``mantissa · 2**exponent`` terms (from :func:`power_product`).
+    """Sum of ``mantissa · 2**exponent`` terms (from `power_product`).
 
     The terms are brought to the largest exponent before adding, so only the
     final scaling can over- or underflow: it gives ``inf`` (never raises) or

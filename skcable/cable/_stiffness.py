@@ -1,4 +1,4 @@
-r"""Geometric stiffness of a suspended cable (seed 001 §3.2, example 7).
+r"""Geometric stiffness of a suspended cable (Goicolea (2012) §3.2, example 7).
 
 ``k_G = dH/d(span)`` at constant cable length and support height difference
 (an inextensible cable whose end moves horizontally). For the catenary,
@@ -7,9 +7,9 @@ S and dh gives, for any dh,
 
 .. math:: k_G = \frac{w}{2\,(z - \tanh z)},
 
-which is seed 001's :math:`k_G = (H/2a)/((x/a) - \tanh(x/a))` with x = span/2.
+which is Goicolea's (2012) :math:`k_G = (H/2a)/((x/a) - \tanh(x/a))` with x = span/2.
 In series with the elastic stiffness :math:`k_E = EA/S`:
-:math:`1/k = 1/k_G + 1/k_E` (seed 001, footnote 5).
+:math:`1/k = 1/k_G + 1/k_E` (Goicolea (2012), footnote 5).
 """
 
 from __future__ import annotations
@@ -82,10 +82,10 @@ def _representable(name, value, what):
 
 
 def geometric_stiffness_series(span, w, H):
-    r"""Seed 001's parabolic approximation of the catenary's ``k_G`` (equal heights).
+    r"""Goicolea's (2012) parabolic approximation of the catenary's ``k_G`` (equal heights).
 
     With the two-term length series :math:`S \approx 2x(1 + \xi^2/6)`,
-    :math:`\xi = x/a = w\,\mathrm{span}/(2H)` (seed 001 eq. 25):
+    :math:`\xi = x/a = w\,\mathrm{span}/(2H)` (Goicolea (2012) eq. 25):
 
     .. math:: k_G = \frac{H}{2a}\,\frac{1 + \xi^2/2}{\xi^3/3}.
 
@@ -94,7 +94,7 @@ def geometric_stiffness_series(span, w, H):
 
     It is evaluated as :math:`3H/(2\,\mathrm{span}) + 12 H^3/(w^2\mathrm{span}^3)`
     with mantissas and exponents apart, so that only a stiffness beyond the
-    range of a float raises :class:`~skcable.errors.InputError`.
+    range of a float raises `InputError`.
     """
     span, w, H = positive("span", span), positive("w", w), positive("H", H)
     broadcast(span=span, w=w, H=H)

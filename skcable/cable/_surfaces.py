@@ -1,4 +1,4 @@
-"""Cables on surfaces (seed 001 §2.2 and §4).
+"""Cables on surfaces (Goicolea (2012) §2.2 and §4).
 
 On a smooth surface with no other load the thread follows a geodesic at
 constant tension and presses with ``T/R`` per unit length; with loads the
@@ -7,9 +7,9 @@ normal reaction follows eq. (29); on a rough drum the tension grows as
 
 Every function broadcasts over its arguments and returns finite numbers:
 products and quotients are formed from mantissas and binary exponents
-apart (:func:`~skcable.cable._special.power_product`), so that only a
+apart (`power_product`), so that only a
 result that itself leaves the range of a float raises
-:class:`~skcable.errors.InputError`.
+`InputError`.
 """
 
 from __future__ import annotations
@@ -46,7 +46,7 @@ def capstan(T0, mu, angle):
 
     .. math:: T = T_0\,e^{\mu\varphi}
 
-    (seed 001 eq. 32; any convex drum section, thread in a normal section).
+    (Goicolea (2012) eq. 32; any convex drum section, thread in a normal section).
 
     Parameters
     ----------
@@ -85,7 +85,7 @@ def capstan(T0, mu, angle):
 
 def membrane_tension(p, R):
     """Hoop tension per unit length of a cylindrical membrane, ``T = p R``
-    (seed 001 example 1)."""
+    (Goicolea (2012) example 1)."""
     p, R = positive("p", p), positive("R", R)
     broadcast(p=p, R=R)
     return _in_range("p, R", p * R, "p·R")
@@ -94,7 +94,7 @@ def membrane_tension(p, R):
 def smooth_surface_reaction(T, R_n, q_N=0.0):
     r"""Normal reaction per unit length on a thread lying on a smooth surface.
 
-    Seed 001 eq. (29): :math:`q_N + Q + T/R_n = 0`, with ``R_n`` the radius
+    Goicolea (2012) eq. (29): :math:`q_N + Q + T/R_n = 0`, with ``R_n`` the radius
     of the normal section tangent to the thread (signed: positive when its
     centre lies along the surface normal N) and ``q_N`` the load along N.
     With no load the thread is a geodesic at constant tension.
@@ -110,7 +110,7 @@ def smooth_surface_reaction(T, R_n, q_N=0.0):
 
 
 def sphere_parallel(q, R, latitude):
-    r"""Heavy thread lying on a horizontal parallel of a smooth sphere (seed 001 example 8).
+    r"""Heavy thread lying on a horizontal parallel of a smooth sphere (Goicolea (2012) example 8).
 
     .. math:: Q = \frac{q}{\sin\alpha}, \qquad
               T = qR\,\frac{\cos^2\alpha}{\sin\alpha} = qR\cos\alpha\cot\alpha

@@ -1,6 +1,6 @@
 """Common interface of every suspended-cable solution.
 
-Conventions (REFERENCE.md §1): x to the right, y up, support A at (0, 0),
+Conventions: x to the right, y up, support A at (0, 0),
 support B at (span, dh); distributed loads w > 0 act downward; H > 0 is the
 horizontal tension; V_A, V_B are the upward support reactions. Any
 consistent unit system works (SI by default: m, N, N/m).
@@ -90,7 +90,7 @@ class CableSolution:
         return namespace(self.T_A, self.T_B).maximum(self.T_A, self.T_B)
 
     def samples(self, n: int = 201) -> dict:
-        """One scene's profile at ``n`` equally spaced x (the input to :meth:`to_vtk`).
+        """One scene's profile at ``n`` equally spaced x (the input to `to_vtk`).
 
         Returns a dict: ``xy`` (n, 2) in m, ``tension`` (N), ``angle`` (rad
         above the horizontal) and ``load`` (n, 2): the distributed load in N
@@ -111,7 +111,7 @@ class CableSolution:
         raise NotImplementedError
 
     def to_vtk(self, path, n: int = 201):
-        """Write the profile as a VTK polyline (see :func:`skcable.io.cable_mesh`); returns the path."""
+        """Write the profile as a VTK polyline (see `skcable.io.cable_mesh`); returns the path."""
         from skcable.io import cable_mesh, write
 
         return write(cable_mesh(self, n), path)
@@ -143,7 +143,7 @@ def _finite(value) -> bool:
 
 
 def representable(solution: CableSolution, argument: str, load: str = "w") -> None:
-    """Raise :class:`InputError` if a force, the length or the vertex of a
+    """Raise `InputError` if a force, the length or the vertex of a
     closed-form ``solution`` is not a finite float (the other shown
     attributes are bounded by them).
 
@@ -162,9 +162,9 @@ def representable(solution: CableSolution, argument: str, load: str = "w") -> No
 
 
 def checked_closed_form(solution: CableSolution, argument: str, history=(), load: str = "w") -> CableSolution:
-    """:func:`checked` for a closed form: a result outside the range of a float
-    raises :class:`InputError` naming ``argument`` (or ``load``), a residual
-    above :data:`ACCEPT` :class:`~skcable.errors.ConvergenceError`."""
+    """`checked` for a closed form: a result outside the range of a float
+    raises `InputError` naming ``argument`` (or ``load``), a residual
+    above `ACCEPT` `ConvergenceError`."""
     try:
         residual = solution.residual()
         if residual <= ACCEPT and all(_finite(getattr(solution, name)) for name in _BEYOND_RESIDUAL):
@@ -181,7 +181,7 @@ def _shown(cls) -> tuple[str, ...]:
 
 
 def checked(solution: CableSolution, history=()) -> CableSolution:
-    """Return ``solution`` if its residual is below :data:`ACCEPT`, else raise."""
+    """Return ``solution`` if its residual is below `ACCEPT`, else raise."""
     residual = solution.residual()
     if not residual <= ACCEPT:
         raise ConvergenceError(

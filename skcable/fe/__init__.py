@@ -1,8 +1,8 @@
 """Finite-element machinery shared by cables and strands; it knows no physics.
 
-- :mod:`skcable.fe.assembly`: section laws assembled by ``einsum`` on scikit-fem's basis
+- `skcable.fe.assembly`: section laws assembled by ``einsum`` on scikit-fem's basis
   values, fixed sparsity patterns, banded LAPACK solves;
-- :mod:`skcable.fe.newton`: one Newton–Raphson with line search, a stagnation stop and a
+- `skcable.fe.newton`: one Newton–Raphson with line search, a stagnation stop and a
   result carrying its history.
 """
 

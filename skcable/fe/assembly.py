@@ -12,14 +12,14 @@ with :math:`B_{ai}` the derivative of order :math:`k_a` of basis function
 :math:`i` of field :math:`f_a`. These are the forms
 ``LinearForm(lambda v, w: sum(w.S[a] * d_a(v)))`` and
 ``BilinearForm(lambda u, v, w: sum(w.D[a, b] * d_b(u) * d_a(v)))`` of
-scikit-fem; :class:`StrainAssembly` evaluates them with the basis values that
+scikit-fem; `StrainAssembly` evaluates them with the basis values that
 scikit-fem computes once (``Basis.basis``, ``Basis.dx``), one ``einsum`` per
 call, and a sparsity pattern whose index maps are computed once: no form
 evaluation, COO sorting or keyword normalisation per call. The result equals
 scikit-fem's ``asm`` to round-off (``tests/fe/test_assembly.py``).
 
 The linear systems of a one-dimensional mesh are banded once the dofs are
-ordered along the axis: :class:`BandedSystem` keeps that ordering and solves
+ordered along the axis: `BandedSystem` keeps that ordering and solves
 with LAPACK's banded LU (``dgbsv``), which on a 2-core machine beats a sparse
 factorisation for every size used here and wakes no BLAS threads.
 """
@@ -148,7 +148,7 @@ class StrainAssembly:
         return sp.csr_matrix((data, indices, indptr), shape=(self.N, self.N))
 
     def banded(self, free: np.ndarray) -> BandedSystem:
-        """A :class:`BandedSystem` for the ``free`` dofs of this pattern (ordered along the axis)."""
+        """A `BandedSystem` for the ``free`` dofs of this pattern (ordered along the axis)."""
         location = np.zeros(self.N)
         for k, basis in enumerate(self.bases.values()):
             location[self.offsets[k] : self.offsets[k + 1]] = basis.doflocs[0]

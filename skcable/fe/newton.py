@@ -14,7 +14,7 @@ Each increment is damped by backtracking on ``merit`` (``norm`` unless given):
 a trial ``x + t·dx`` is accepted when ``merit`` falls by the Armijo factor
 ``1 − 10⁻⁴ t`` (or the trial has converged), halving ``t`` up to
 ``max_halvings`` times. The iteration stops at once, with a
-:class:`~skcable.errors.ConvergenceError` carrying the history, when no step
+`ConvergenceError` carrying the history, when no step
 length gives descent or when the residual *stagnates*: ``norm`` has not fallen
 below ``stagnation_factor`` times its value ``stagnation_window`` iterations
 earlier, or two iterations earlier once it is below 1e-12, the round-off floor of a

@@ -1,11 +1,11 @@
 """Files written whole or not at all, and output paths checked before any computing.
 
-:func:`atomic_path` hands a writer a temporary path in the target's directory
+`atomic_path` hands a writer a temporary path in the target's directory
 (same file system, same suffix, so writers that pick a format from the suffix
-still work) and moves the finished file onto the target with :func:`os.replace`:
+still work) and moves the finished file onto the target with `os.replace`:
 a reader, a concurrent writer or a kill never leaves a torn or empty target, and
-the last writer wins with a complete file. :func:`writable_file` and
-:func:`writable_dir` refuse, with :class:`skcable.InputError`, a path that cannot
+the last writer wins with a complete file. `writable_file` and
+`writable_dir` refuse, with `skcable.InputError`, a path that cannot
 be written (a directory where a file is meant, a file where a folder is meant,
 an unknown extension, a parent that is not a writable folder).
 """
@@ -21,7 +21,7 @@ from skcable.errors import InputError
 
 __all__ = ["TEMP_GLOB", "atomic_path", "writable_dir", "writable_file", "write_text"]
 
-#: Glob of the temporary files :func:`atomic_path` creates (left behind only by a kill).
+#: Glob of the temporary files `atomic_path` creates (left behind only by a kill).
 TEMP_GLOB = ".*.tmp*"
 
 

@@ -1,6 +1,6 @@
 """Results as VTK meshes (meshio) for ParaView.
 
-Points are always 3-component (REFERENCE.md §3): a suspended cable lies in
+Points are always 3-component (VTK and ParaView need them): a suspended cable lies in
 the plane z = 0 with y up; a strand's axis is x, its transverse
 displacements are along y and z. Load-stepped results are written as a
 ParaView collection (``.pvd``) of ``.vtu`` files, one per step, that
@@ -57,8 +57,8 @@ def funicular_mesh(solution) -> meshio.Mesh:
 
     Cell data ``tension`` (N); point data ``load`` (N, the joint loads; zero
     at the supports). Reads ``nodes``, ``T`` and ``loads``: load vectors when
-    the solution also has segment ``forces`` (:func:`~skcable.cable.funicular`),
-    ``(x, P downward)`` pairs otherwise (:func:`~skcable.cable.funicular_vertical`).
+    the solution also has segment ``forces`` (`funicular`),
+    ``(x, P downward)`` pairs otherwise (`funicular_vertical`).
     """
     points, cells = _polyline(solution.nodes)
     loads = np.zeros((len(points), 3))

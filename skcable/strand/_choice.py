@@ -1,6 +1,6 @@
 r"""Model no more than a strand needs: closed form, stick, or stick–slip.
 
-:func:`analyse` picks the cheapest model that represents the strand:
+`analyse` picks the cheapest model that represents the strand:
 
 1. **closed form** for an undamaged strand in tension: it stays straight
    and untwisted (clamped ends, symmetric section), so every wire carries
@@ -71,7 +71,7 @@ def axial_force(strand, strain):
 
 @dataclass
 class Analysis:
-    """Result of :func:`analyse`: the ``curve`` of the chosen ``model``
+    """Result of `analyse`: the ``curve`` of the chosen ``model``
     ("closed form", "stick" or "stick-slip"), the ``reason``, and the stick curve
     used to decide (``stick``, None for the closed form)."""
 
@@ -86,8 +86,8 @@ def analyse(
 ) -> Analysis:
     """Capacity of ``strand`` with the cheapest adequate model (see the module text).
 
-    ``model_options`` go to :class:`~skcable.strand.StrandModel` and
-    :meth:`~skcable.strand.StrandModel.capacity_curve` (``n_elements``,
+    ``model_options`` go to `StrandModel` and
+    `capacity_curve` (``n_elements``,
     ``n_steps``...); ``n_points`` samples the closed-form curve.
     """
     from skcable.strand.fe.model import StrandModel

@@ -245,7 +245,7 @@ class CapacityCurve:
         }
 
     def to_csv(self, path):
-        """Write :meth:`columns` as CSV; returns the path."""
+        """Write `columns` as CSV; returns the path."""
         from pathlib import Path
 
         path = Path(path)
@@ -316,7 +316,7 @@ def capacity_curve(
     ``on_failure="raise"`` (default) raises ConvergenceError;
     ``on_failure="stop"`` returns the converged part with ``failure`` set.
     ``callback(step, done)``, if given, is called after every converged step
-    with its :class:`StepResult` and the fraction of the strain schedule done
+    with its `StepResult` and the fraction of the strain schedule done
     (for progress bars).
     """
     if on_failure not in ("raise", "stop"):

@@ -2,19 +2,19 @@
 
 One concern per module:
 
-- :mod:`~skcable.cable.bvp.forms`: the weak forms of both formulations as
+- `forms`: the weak forms of both formulations as
   scikit-fem forms (the reference the fast assembly is tested against);
-- :mod:`~skcable.cable.bvp.elements`: the line elements (and a scikit-fem
+- `elements`: the line elements (and a scikit-fem
   workaround for hierarchical ones);
-- :mod:`~skcable.cable.bvp.probes`: values, slopes and minima of a field at
+- `probes`: values, slopes and minima of a field at
   arbitrary points;
-- :mod:`~skcable.cable.bvp.bordered`: the Newton increment of a banded
+- `bordered`: the Newton increment of a banded
   tangent bordered by one global unknown;
-- :mod:`~skcable.cable.bvp.base`: what both solutions share;
-- :mod:`~skcable.cable.bvp.graph`: the graph form y(x), H global;
-- :mod:`~skcable.cable.bvp.arc`: the arc-length form, L0 global;
-- :mod:`~skcable.cable.bvp.solve`: :func:`solve_bvp`, which checks the
-  arguments, picks the formulation and runs :func:`skcable.fe.newton`.
+- `base`: what both solutions share;
+- `graph`: the graph form y(x), H global;
+- `arc`: the arc-length form, L0 global;
+- `solve`: `solve_bvp`, which checks the
+  arguments, picks the formulation and runs `skcable.fe.newton`.
 """
 
 from skcable.cable.bvp.arc import ArcSolution

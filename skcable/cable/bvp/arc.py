@@ -1,6 +1,6 @@
 r"""Arc-length (Lagrangian) formulation of the suspended cable.
 
-Seed 001 eq. (3), ``d/ds (T dr/ds / |dr/ds|) + q = 0``, in the unstretched
+Goicolea (2012) eq. (3), ``d/ds (T dr/ds / |dr/ds|) + q = 0``, in the unstretched
 arc length ``s = L0 σ``, σ ∈ [0, 1], with position r(σ) = (x, y) and
 tension T(σ) as fields and the unstretched length L0 as a global unknown
 (fixed when the constraint is the length). With ``a = dr/dσ``, ``n = |a|``,
@@ -24,10 +24,10 @@ conditioned (below 1e5 in the same case; both tested). Newton's method with
 the consistent tangent (the only non-analytic piece: the x-derivative of a
 user's load callable, by central differences).
 
-The forms (:mod:`skcable.cable.bvp.forms`) are a *section law* in the
-generalized strains ``(x', y', x, y, T)``: :class:`ArcProblem` assembles them
-with :class:`~skcable.cable.bvp.assembly.LineAssembly` (basis values and patterns once) and
-solves the bordered banded system of :mod:`skcable.cable.bvp.bordered`.
+The forms (`skcable.cable.bvp.forms`) are a *section law* in the
+generalized strains ``(x', y', x, y, T)``: `ArcProblem` assembles them
+with `LineAssembly` (basis values and patterns once) and
+solves the bordered banded system of `skcable.cable.bvp.bordered`.
 
 Support reactions come from the residual rows at the supports:
 ``H_A = -R_x(A)``, ``V_A = R_y(A)``, ``H_B = R_x(B)``, ``V_B = R_y(B)``.
@@ -253,7 +253,7 @@ class ArcProblem:
         row[element_dofs[:, k]] = element_values(self.basis, k, s_star)
         return s_star, (value if kind == "low" else -value), row
 
-    #: set by :func:`arc_guess` from the initial catenary
+    #: set by `arc_guess` from the initial catenary
     length_scale = 1.0
     load_scale = 1.0
 
@@ -320,9 +320,9 @@ def arc_guess(problem: ArcProblem):
 
 
 class ArcSolution(FiniteElementSolution):
-    """Solution of :func:`~skcable.cable.solve_bvp` with ``formulation="arc"``.
+    """Solution of `solve_bvp` with ``formulation="arc"``.
 
-    Attributes as :class:`~skcable.cable.BVPSolution`; ``H`` is the
+    Attributes as `BVPSolution`; ``H`` is the
     horizontal reaction at A (constant along the cable unless horizontal
     loads act), ``H_B`` the one at B; ``xy(sigma)`` gives the position at
     the normalised unstretched arc length σ ∈ [0, 1].
@@ -398,7 +398,7 @@ class ArcSolution(FiniteElementSolution):
 
     def samples(self, n: int = 201) -> dict:
         """The profile at ``n`` equally spaced σ (unstretched arc length): see
-        :meth:`CableSolution.samples`; non-graph shapes included."""
+        `CableSolution.samples`; non-graph shapes included."""
         sigma = np.linspace(0.0, 1.0, n)
         xd, yd, T = self._problem.fields(self.dofs)
         G = gradient_probes(self.basis, sigma.reshape(1, -1))

@@ -1,6 +1,6 @@
 r"""Section-law assembly on scikit-fem line bases, for the cable's hot path.
 
-The integrals of :class:`skcable.fe.StrainAssembly` — ``∫ Σ_a S_a B_a dx``
+The integrals of `skcable.fe.StrainAssembly` — ``∫ Σ_a S_a B_a dx``
 and ``∫ Bᵀ D B dx`` for section forces ``S`` and tangents ``D`` at the
 quadrature points — built for a solve that runs a handful of assemblies on
 a large mesh:
@@ -14,14 +14,14 @@ a large mesh:
   ``optimize=True`` goes through batched ``matmul`` with copies (slower, and
   threaded BLAS on a shared 2-core machine);
 - **nothing the Newton loop does not use**: element matrices ``(n_local,
-  n_local, ne)`` go into a :class:`~skcable.fe.BandedSystem`; the CSR
+  n_local, ne)`` go into a `BandedSystem`; the CSR
   matrix (for inspection and tests) is built only when asked for; the
   quadrature weights multiply the section forces (one ``(nq, ne)`` product)
   instead of a second copy of the basis values. On this machine every fresh
   megabyte costs page faults: a 10,000-element solve touches about 15 MB.
 
 ``tests/cable/test_bvp.py`` and ``test_arc.py`` check it against
-scikit-fem's ``asm`` of the forms of :mod:`skcable.cable.bvp.forms`.
+scikit-fem's ``asm`` of the forms of `skcable.cable.bvp.forms`.
 """
 
 from __future__ import annotations
@@ -149,8 +149,8 @@ class LineAssembly:
         return sp.coo_matrix((element_matrices.ravel(), (rows, cols)), shape=(self.N, self.N)).tocsr()
 
     def banded(self, free: np.ndarray) -> BandedSystem:
-        """A :class:`~skcable.fe.BandedSystem` for the ``free`` dofs, ordered along the axis;
-        fill it with ``add_elements(ab, Ke)`` (``Ke`` as :meth:`element_matrices` returns)."""
+        """A `BandedSystem` for the ``free`` dofs, ordered along the axis;
+        fill it with ``add_elements(ab, Ke)`` (``Ke`` as `element_matrices` returns)."""
         rows, cols = self._pattern
         return BandedSystem(self.N, free, rows, cols, self._location)
 

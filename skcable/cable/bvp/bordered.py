@@ -26,7 +26,7 @@ __all__ = ["BorderedSolver"]
 
 
 class BorderedSolver:
-    """Solves the bordered system above on the free dofs of a :class:`~skcable.fe.BandedSystem`."""
+    """Solves the bordered system above on the free dofs of a `BandedSystem`."""
 
     def __init__(self, system: BandedSystem):
         self.system = system

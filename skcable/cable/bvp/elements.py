@@ -2,7 +2,7 @@
 
 Degrees 1 and 2 are scikit-fem's ``ElementLineP1`` / ``ElementLineP2``;
 degrees 3 to 6 its hierarchical ``ElementLinePp``, through
-:class:`ElementLinePpExact`, which evaluates at the points it is given.
+`ElementLinePpExact`, which evaluates at the points it is given.
 """
 
 from __future__ import annotations

@@ -1,8 +1,8 @@
 r"""The weak forms of both cable formulations, as scikit-fem forms.
 
-These are the reference: :mod:`skcable.cable.bvp.graph` and
-:mod:`skcable.cable.bvp.arc` assemble the same integrals with basis values
-computed once (:class:`skcable.fe.StrainAssembly`), and
+These are the reference: `skcable.cable.bvp.graph` and
+`skcable.cable.bvp.arc` assemble the same integrals with basis values
+computed once (`skcable.fe.StrainAssembly`), and
 ``tests/cable/test_bvp.py`` / ``test_arc.py`` check that both ways agree to
 round-off. A user adding a term can prototype it here with ``asm``.
 
@@ -14,8 +14,8 @@ load per horizontal length, ``w.dq_dslope``, ``w.dq_dH`` its derivatives):
           \partial R/\partial H = \int (y' v' + q_{,H} v)\,dx.
 
 Arc form (fields x, y, T of σ; ``e = r'/|r'|``, ``n = |r'|``, ``Q`` the
-load per unit σ): :data:`arc_equilibrium_x`, :data:`arc_equilibrium_y`,
-:data:`arc_constitutive` and the blocks of their tangent.
+load per unit σ): `arc_equilibrium_x`, `arc_equilibrium_y`,
+`arc_constitutive` and the blocks of their tangent.
 """
 
 from __future__ import annotations

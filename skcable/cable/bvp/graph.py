@@ -1,14 +1,14 @@
 r"""Graph form of the suspended cable: y(x) with the horizontal tension H a global unknown.
 
-Seed 000 §3, seed 001 §3.1: with no horizontal load H is constant and
+The lecture notes "Cables" §3, Goicolea (2012) §3.1: with no horizontal load H is constant and
 
 .. math:: H\,y'' = q(x, y', H), \qquad y(0) = 0,\quad y(\mathrm{span}) = dh,
 
 ``q`` the downward load per unit horizontal length (self weight per cable
 length becomes ``w sqrt(1 + y'^2)``, or ``w f`` with the unstretched measure
-``f`` of :mod:`skcable.cable._loads` when ``EA`` is given), plus point loads
+``f`` of `skcable.cable._loads` when ``EA`` is given), plus point loads
 ``P`` that kink the cable. Weak form, for every test function v vanishing at
-the supports (:data:`~skcable.cable.bvp.forms.graph_residual`):
+the supports (`graph_residual`):
 
 .. math:: R(y, H; v) = \int_0^{\mathrm{span}} \left(H y' v' + q\,v\right)dx
           + \sum_k P_k v(x_k) = 0,
@@ -16,10 +16,10 @@ the supports (:data:`~skcable.cable.bvp.forms.graph_residual`):
 closed by one constraint ``g(y, H) = 0`` (length, sag, H, lowest point or
 maximum tension). The unknown is the depth below the chord ``u = y - (dh/span)
 x`` (zero at both supports, so that rounding scales with the sag), any degree
-1–6. :meth:`GraphProblem.assemble` evaluates the residual, the tangent (per
+1–6. `GraphProblem.assemble` evaluates the residual, the tangent (per
 element), ``∂R/∂H`` and the constraint row with basis values, element
 products and a band layout computed once per problem; the increment is the
-bordered banded solve of :mod:`skcable.cable.bvp.bordered`. Support
+bordered banded solve of `skcable.cable.bvp.bordered`. Support
 reactions are the residual rows at the supports (``V_A = R_A``, ``V_B =
 R_B``), exact for the discrete solution.
 """
@@ -242,7 +242,7 @@ class GraphProblem:
             return float(self.excess_length) if self.EA is None else self.stretched_excess
         return abs(float(value))
 
-    #: stretched length minus chord at the initial guess (set by :func:`initial_guess`)
+    #: stretched length minus chord at the initial guess (set by `initial_guess`)
     stretched_excess = 1.0
 
 
@@ -275,16 +275,16 @@ def initial_guess(problem: GraphProblem):
 
 
 class BVPSolution(FiniteElementSolution):
-    """Solution of :func:`~skcable.cable.solve_bvp` (graph form).
+    """Solution of `solve_bvp` (graph form).
 
-    Attributes are those of :class:`~skcable.cable.Catenary` (``H, V_A, V_B,
+    Attributes are those of `Catenary` (``H, V_A, V_B,
     T_A, T_B, length, sag, x_low, y_low``, methods ``y, T, slope,
     residual``) plus ``mesh``, ``basis``, ``iterations``, ``history`` (merit
     per Newton iteration), ``dofs`` (the FE vector of ``u = y - (dh/span)
     x``, the depth below the chord, so that rounding scales with the sag
     rather than with dh), ``stretched_length`` and ``EA``. With ``EA``,
     ``length`` is the unstretched length, as for
-    :func:`~skcable.cable.elastic_catenary`.
+    `elastic_catenary`.
     """
 
     formulation = "graph"

@@ -1,8 +1,8 @@
 """Evaluation of a scikit-fem field at arbitrary points of a line mesh.
 
-scikit-fem's ``Basis.probes`` gives values; :func:`gradient_probes` gives
-derivatives, :func:`element_values` the basis values inside one element and
-:func:`element_minimum` the exact minimum of the field over one element
+scikit-fem's ``Basis.probes`` gives values; `gradient_probes` gives
+derivatives, `element_values` the basis values inside one element and
+`element_minimum` the exact minimum of the field over one element
 (used for the sag and the lowest point).
 """
 

@@ -29,7 +29,7 @@ STAGNATION_WINDOW = 8
 
 
 def _newton(problem, dofs, value, *, rtol, max_iter, merit, name):
-    """:func:`skcable.fe.newton` on ``x = [dofs, value]`` (value: H or L0, kept > 0)."""
+    """`skcable.fe.newton` on ``x = [dofs, value]`` (value: H or L0, kept > 0)."""
     size = len(dofs)
     visited = []  # merit of every state an increment was taken from: the history so far
 
@@ -61,7 +61,7 @@ def _checked(solution, rtol):
 
     Newton stopped with every scaled residual below ``rtol``; the check
     recomputes them with the closure terms, which differ by round-off
-    (:data:`skcable.cable.solution.ACCEPT`).
+    (`skcable.cable.solution.ACCEPT`).
     """
     residual = solution.residual()
     limit = rtol + ACCEPT
@@ -98,11 +98,11 @@ def solve_bvp(
     span, dh : float
         B = (span, dh) relative to A = (0, 0) (m).
     load : load or list of loads
-        :class:`SelfWeight`, :class:`DeckLoad`, :class:`DistributedLoad`,
-        :class:`PointLoad`, or any object with ``graph_terms``. Point loads at
+        `SelfWeight`, `DeckLoad`, `DistributedLoad`,
+        `PointLoad`, or any object with ``graph_terms``. Point loads at
         the same x add up.
     length, sag, H, low, T_max : float
-        Exactly one constraint, as in :func:`~skcable.cable.catenary`; with
+        Exactly one constraint, as in `catenary`; with
         ``EA``, ``length`` is the unstretched length. ``T_max`` is the larger
         end tension.
     EA : float, optional
@@ -115,7 +115,7 @@ def solve_bvp(
     rtol : float
         Newton stops when the interior residual (relative to the total load)
         and the constraint residual are both below ``rtol``; the returned
-        solution's :meth:`residual` is below ``rtol`` plus round-off (1e-9).
+        solution's `residual` is below ``rtol`` plus round-off (1e-9).
     max_iter : int
         Newton iterations at most; Newton also stops, raising, when the
         residual stagnates (less than halved in 4 iterations) or no step
@@ -123,7 +123,7 @@ def solve_bvp(
     formulation : {"auto", "graph", "arc"}
         ``"graph"``: y(x) with H a global unknown (any degree, point loads);
         ``"arc"``: position and tension along the unstretched arc length
-        (:mod:`skcable.cable.bvp.arc`: any shape, horizontal loads, P2/P1).
+        (`skcable.cable.bvp.arc`: any shape, horizontal loads, P2/P1).
         ``"auto"`` takes the arc form when a load has a horizontal
         component, the graph form otherwise: started from the catenary of
         the same weight it converges from 1e-9 to 99 times the chord and

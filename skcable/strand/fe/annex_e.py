@@ -55,7 +55,7 @@ couplings of ``D_E`` vanish (β = 0); the eccentric terms (A y_c, A z_c) stay.
 The annex has no GJ (twist is resisted only through the helical wires' axial
 strain) and no v″–w″ term: the latter vanishes for the thesis's sections,
 symmetric about z (y_c = 0, I_yz = 0); it is the term that makes the matrices
-of a turned section the turned matrices (:func:`annex_e_section`).
+of a turned section the turned matrices (`annex_e_section`).
 
 Section properties (annex E's reading): one lay angle for the whole section,
 ``A E cos³α`` with A the *net* area (the core counted like a laid wire), so
@@ -66,11 +66,11 @@ Section properties (annex E's reading): one lay angle for the whole section,
           I_\mathrm{min} = c \sum_j I_{w,j}
 
 over the intact wires (``I_w = π r⁴/4``). These differ from
-:class:`~skcable.strand.Section` (core straight) by the core's factors only
+`Section` (core straight) by the core's factors only
 (0.3 % on I_zz of steel 9.5, damage 2).
 
 Internal force (eq. 4.1 and annex E): ``(K_E + K_G(F)) U``, no membrane
-stretch; as a section law ``S = (D_E + F D_G) g`` (:func:`annex_e_forces`),
+stretch; as a section law ``S = (D_E + F D_G) g`` (`annex_e_forces`),
 F the element's current axial force ``∫ σ_tt dA`` (eq. 4.26), from the axial
 strain through the elastic part: ``F = (D_E g)_0``.
 """
@@ -145,7 +145,7 @@ def annex_e_section(strand, *, slip, x, turning: bool = True):
     D_E, D_G : ndarray (6, 6, *shape)
         Elastic section matrix (N, N·m, N·m²) and geometric section matrix per
         newton of axial force, rows and columns in the order of
-        :data:`STRAINS`, ``g = (u', v', v'', w', w'', φ')``; ``shape`` is the
+        `STRAINS`, ``g = (u', v', v'', w', w'', φ')``; ``shape`` is the
         broadcast shape of ``x`` and ``slip``. See the module docstring for the
         entries and the sign convention.
 
@@ -237,7 +237,7 @@ def annex_e_forces(g, F, D_E, D_G):
         fixed (imposed, or lagged from the previous iterate as in the
         thesis's eq. 4.1), tangent ``D_E + F D_G``.
     D_E, D_G : array_like (6, 6, ...)
-        Section matrices from :func:`annex_e_section`.
+        Section matrices from `annex_e_section`.
 
     Returns
     -------
@@ -293,7 +293,7 @@ def annex_e_element(D, length):
     r"""Annex E's 12×12 element matrix ``∫ Bᵀ D B dx`` with the thesis's shape functions.
 
     Linear u and θ_x, cubic Hermite v and w (eqs. 3.22–3.31), in the thesis's
-    degrees of freedom and order :data:`THESIS_DOFS` (eq. E.1:
+    degrees of freedom and order `THESIS_DOFS` (eq. E.1:
     ``u_A, u_B, v_A, v_B, w_A, w_B, θ_xA, θ_xB, θ_yA, θ_yB, θ_zA, θ_zB``,
     with ``θ_z = v'`` and ``θ_y = w'`` at the nodes), so that its entries
     compare one to one with the printed ``K_E0101 … K_G1212``. The section
@@ -345,8 +345,8 @@ class AnnexE(SectionTerm):
     r"""The thesis's own formulation as a section term: annex E's element matrices (typos fixed).
 
     Section forces ``S = (D_E + F D_G) g`` with the section matrices of E.1 (stick) or E.2
-    (slip) from :func:`annex_e_section` and F the current axial force of the point
-    (:func:`annex_e_forces` with ``F=None``): no membrane stretch couples u with v and w,
+    (slip) from `annex_e_section` and F the current axial force of the point
+    (`annex_e_forces` with ``F=None``): no membrane stretch couples u with v and w,
     as in the thesis's internal force ``(K_E + K_G(F)) U``. The modulus is the wires'
     elastic E_e (the annex's E): this term set is linear elastic, so its capacity curve is
     a straight line whose slope is its K_Leq. Used alone, as the model's ``physics``:

@@ -9,7 +9,7 @@ thesis's reading of the damage, its sinusoidal loads). The strand is clamped
 at both ends and pulled at x = L: ``u(L) = ε L`` (Pino Vidal 2021, §4.1,
 "fixed – fixed sliding").
 
-Pipeline: strand → mesh and bases → terms → :func:`skcable.fe.newton` per step
+Pipeline: strand → mesh and bases → terms → `skcable.fe.newton` per step
 → [`StepResult`][skcable.strand.StepResult] → [`CapacityCurve`][skcable.strand.CapacityCurve]
 → writers and plots.
 

@@ -16,8 +16,8 @@ carried by the wires' own bending, so ``M = M_rf + EI_slip κ`` beyond κ_m.
 
 A law may keep a *state* (which points or elements slip): it is frozen within
 a Newton solve and updated from the converged curvatures between solves, until
-it settles (:meth:`SlipLaw.next_state`). A law written outside the library
-subclasses :class:`SlipLaw` and implements :meth:`SlipLaw.composite`; a
+it settles (`SlipLaw.next_state`). A law written outside the library
+subclasses `SlipLaw` and implements `SlipLaw.composite`; a
 stateless smooth law needs nothing else.
 """
 

@@ -1,11 +1,11 @@
 r"""Terms: the physics of a strand model, each contributing to the residual and the tangent.
 
 A [`StrandModel`][skcable.strand.StrandModel] is a mesh, its bases and a list
-of terms. Every term follows one protocol: :meth:`Term.bind` (per-model set-up,
+of terms. Every term follows one protocol: `Term.bind` (per-model set-up,
 done once), optional state between Newton solves, and a contribution to the
 residual ``R(U)`` and the tangent ``K = ∂R/∂U``. There are two kinds:
 
-**Section terms** (:class:`SectionTerm`) see the generalized strains at the
+**Section terms** (`SectionTerm`) see the generalized strains at the
 quadrature points,
 
 .. math:: g = (u',\ v',\ v'',\ w',\ w'',\ \varphi'),
@@ -14,20 +14,20 @@ and return section forces :math:`S_a(g, x)` (the virtual-work conjugates of
 :math:`g_a`) and their tangent :math:`D_{ab} = \partial S_a/\partial g_b`,
 6 × 6 per point. The model sums them and assembles
 :math:`\int B^T S\,dx` and :math:`\int B^T D B\,dx` once for all of them
-(:class:`skcable.fe.StrainAssembly`).
+(`skcable.fe.StrainAssembly`).
 
-**Field terms** (:class:`FieldTerm`) are scikit-fem forms on the named fields
+**Field terms** (`FieldTerm`) are scikit-fem forms on the named fields
 ``u``, ``v``, ``w``, ``phi``: a ``BilinearForm`` per (test, trial) pair for the
 tangent, a ``LinearForm`` per field for an external load, and, for a
 nonlinear term, a ``LinearForm`` per field for its residual (its forms then
 see the current fields as ``w["u"]``, ``w["v"]``, ``w["w"]``, ``w["phi"]``).
 A linear term is assembled once and reused.
 
-Built-in physics: :class:`HelicalWires` (the wire fibres: material and
-geometric stiffness with a slip law), :class:`WireBending` (the wires' own
-bending and torsion) and :class:`SinusoidalDamageLoads` (the thesis's reading
-of the damage). Ready terms for analysts: :class:`ElasticFoundation`,
-:class:`DistributedLoad`, :class:`NodalSpring`. A term flagged ``damage = True``
+Built-in physics: `HelicalWires` (the wire fibres: material and
+geometric stiffness with a slip law), `WireBending` (the wires' own
+bending and torsion) and `SinusoidalDamageLoads` (the thesis's reading
+of the damage). Ready terms for analysts: `ElasticFoundation`,
+`DistributedLoad`, `NodalSpring`. A term flagged ``damage = True``
 is left out of the intact reference twin used for the damage index D_r.
 
 Source: S. Pino Vidal, "Rigidez a flexión en cables: análisis numérico",
@@ -91,8 +91,8 @@ class Step:
 
 
 class Term:
-    """Base of every term. Subclasses implement :meth:`setup` (per-model data) and either
-    :meth:`SectionTerm.section` or :meth:`contribute`."""
+    """Base of every term. Subclasses implement `setup` (per-model data) and either
+    `SectionTerm.section` or `contribute`."""
 
     #: dropped from the intact reference twin (D_r) when True
     damage: bool = False
@@ -181,7 +181,7 @@ class HelicalWires(SectionTerm):
     helical : bool
         Fibres on their helices (the eccentricity of a damaged section turns with
         the lay: mechanism (a)); False: at their positions at x = 0 (a prismatic
-        section, the thesis's reading, used with :class:`SinusoidalDamageLoads`).
+        section, the thesis's reading, used with `SinusoidalDamageLoads`).
     """
 
     def __init__(self, slip="none", mu: float = 0.5, *, helical: bool = True):

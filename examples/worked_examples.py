@@ -1,8 +1,7 @@
-"""The worked examples of the seeds, published values beside skcable's.
+"""The worked examples of the sources, published values beside skcable's.
 
-Seed 000 (lecture notes "Cables"): examples 1-4; seed 001 (Goicolea,
-"Cálculo de cables"): examples 4, 5 and 7. Units as in the seeds (kN, m;
-kg for seed 001). Run: ``python examples/seed_worked_examples.py``.
+The lecture notes "Cables": examples 1-4; J.M. Goicolea, "Cálculo de cables" (UPM, 2012):
+examples 4, 5 and 7. Units as in the sources (kN, m; kg for Goicolea). Run: ``python examples/worked_examples.py``.
 """
 
 import numpy as np
@@ -21,7 +20,7 @@ def rows():
     yield "000 ex.3 x_m, H, f", "507.18 85743.7 18.66", f"{p3.x_low:.2f} {p3.H:.1f} {p3.sag:.2f}"
     yield "000 ex.3 T_A, T_B, S", "86341.7 85943.5 801.408", f"{p3.T_A:.1f} {p3.T_B:.1f} {p3.length:.3f}"
     c4 = cable.catenary(800, -20, 20, low=-30)
-    yield "000 ex.4 x_m, H (seed stopped early)", "507.107 85818.7", f"{c4.x_low:.3f} {c4.H:.1f}"
+    yield "000 ex.4 x_m, H (the notes stopped early)", "507.107 85818.7", f"{c4.x_low:.3f} {c4.H:.1f}"
     yield "000 ex.4 T_A, T_B, S", "86418.7 86018.7 801.409", f"{c4.T_A:.1f} {c4.T_B:.1f} {c4.length:.3f}"
     p4 = cable.parabola(200, 0, 1, sag=20)
     yield "001 ex.4 T0, Tmax, S", "250.0 269.26 205.2121", f"{p4.H:.1f} {p4.T_max:.2f} {p4.length:.4f}"
