@@ -1,7 +1,8 @@
 """The worked examples of the sources, published values beside skcable's.
 
 The lecture notes "Cables": examples 1-4; J.M. Goicolea, "Cálculo de cables" (UPM, 2012):
-examples 4, 5 and 7. Units as in the sources (kN, m; kg for Goicolea). Run: ``python examples/worked_examples.py``.
+examples 4, 5 and 7. Units as in the sources (kN, m; kg for Goicolea).
+Run: ``python examples/worked_examples.py``.
 """
 
 import numpy as np

@@ -411,7 +411,7 @@ def catenary(span, dh, w, *, length=None, sag=None, H=None, low=None, T_max=None
         or the tension at the higher support (a counterweight over a
         pulley, Goicolea (2012) §3.4.1).
     branch : {"taut", "slack"}
-        With ``T_max`` two catenaries exist (Goicolea (2012) §3.4.1): the taut one
+        With ``T_max`` two catenaries exist (Goicolea 2012, §3.4.1): the taut one
         (default) or the slack one.
 
     Returns

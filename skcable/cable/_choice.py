@@ -18,7 +18,7 @@ Error estimates (relative, on H, the end tensions and the length):
   first neglected term of Goicolea (2012) §3.2.1's series
   :math:`z = a[1 + \tfrac12 (x/a)^2 + \tfrac1{24}(x/a)^4 + \dots]` relative to
   the kept one, :math:`t^2/12` for a level span with support slopes ±t
-  (Goicolea (2012) ex. 4/5: 1.33 % against the true 1.3 % in H). For any chord,
+  (Goicolea 2012, ex. 4/5: 1.33 % against the true 1.3 % in H). For any chord,
   with :math:`u_A, u_B` the support values of x/a (Δ = |u_B − u_A|,
   c = |u_A + u_B|/2), the estimate is :math:`K\,\tfrac{\Delta^2}{48}(1 + c)`
   (Δ = 2t gives t²/12 when c = 0); the factor 1 + c and K = 2 (5 for the

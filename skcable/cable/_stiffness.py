@@ -1,4 +1,4 @@
-r"""Geometric stiffness of a suspended cable (Goicolea (2012) §3.2, example 7).
+r"""Geometric stiffness of a suspended cable (Goicolea 2012, §3.2, example 7).
 
 ``k_G = dH/d(span)`` at constant cable length and support height difference
 (an inextensible cable whose end moves horizontally). For the catenary,
@@ -85,7 +85,7 @@ def geometric_stiffness_series(span, w, H):
     r"""Goicolea's (2012) parabolic approximation of the catenary's ``k_G`` (equal heights).
 
     With the two-term length series :math:`S \approx 2x(1 + \xi^2/6)`,
-    :math:`\xi = x/a = w\,\mathrm{span}/(2H)` (Goicolea (2012) eq. 25):
+    :math:`\xi = x/a = w\,\mathrm{span}/(2H)` (Goicolea 2012, eq. 25):
 
     .. math:: k_G = \frac{H}{2a}\,\frac{1 + \xi^2/2}{\xi^3/3}.
 

@@ -39,7 +39,7 @@ def ring_on_rod(dh, w, length, mu) -> Catenary:
     r"""Catenary whose end B is a ring on a rough horizontal rod, at the limit of slip.
 
     A is fixed at (0, 0); the ring at height ``dh`` holds while
-    ``H <= mu·V_B`` (Goicolea (2012) §3.4.3), i.e. while the cable meets the rod at
+    ``H <= mu·V_B`` (Goicolea 2012, §3.4.3), i.e. while the cable meets the rod at
     ``sinh u_B >= 1/mu``. At the limit ``sinh u_B = 1/mu`` the length and
     height give ``a`` in closed form,
 
@@ -95,7 +95,7 @@ def ring_on_rod(dh, w, length, mu) -> Catenary:
 
 
 def anchor_block_weight(solution, mu, *, end: str = "A"):
-    """Least weight of a block on a rough floor anchoring one end (Goicolea (2012) §3.4.4).
+    """Least weight of a block on a rough floor anchoring one end (Goicolea 2012, §3.4.4).
 
     The cable lifts the block by ``V`` and drags it by ``H``; with normal
     force ``N = W - V`` the block holds while ``H <= mu·N``, so
@@ -183,7 +183,7 @@ def sliding_load(span, w, length, P) -> SlidingLoad:
     r"""Point load ``P`` free to slide on a cable with supports at equal height.
 
     The load settles at mid-span; each half is a catenary arc whose end
-    tension at the load carries ``P/2`` vertically (Goicolea (2012) §3.4.5). With
+    tension at the load carries ``P/2`` vertically (Goicolea 2012, §3.4.5). With
     the load point at hyperbolic angle :math:`u_C = -\operatorname{asinh}(P/2wa)`,
     the parameter ``a`` solves
     :math:`\sinh u_C - \sinh(u_C - \mathrm{span}/2a) = S/2a`, taken in logs

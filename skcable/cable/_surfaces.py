@@ -1,4 +1,4 @@
-"""Cables on surfaces (Goicolea (2012) §2.2 and §4).
+"""Cables on surfaces (Goicolea 2012, §2.2 and §4).
 
 On a smooth surface with no other load the thread follows a geodesic at
 constant tension and presses with ``T/R`` per unit length; with loads the
@@ -46,7 +46,7 @@ def capstan(T0, mu, angle):
 
     .. math:: T = T_0\,e^{\mu\varphi}
 
-    (Goicolea (2012) eq. 32; any convex drum section, thread in a normal section).
+    (Goicolea 2012, eq. 32; any convex drum section, thread in a normal section).
 
     Parameters
     ----------
@@ -85,7 +85,7 @@ def capstan(T0, mu, angle):
 
 def membrane_tension(p, R):
     """Hoop tension per unit length of a cylindrical membrane, ``T = p R``
-    (Goicolea (2012) example 1)."""
+    (Goicolea 2012, example 1)."""
     p, R = positive("p", p), positive("R", R)
     broadcast(p=p, R=R)
     return _in_range("p, R", p * R, "p·R")
@@ -110,7 +110,7 @@ def smooth_surface_reaction(T, R_n, q_N=0.0):
 
 
 def sphere_parallel(q, R, latitude):
-    r"""Heavy thread lying on a horizontal parallel of a smooth sphere (Goicolea (2012) example 8).
+    r"""Heavy thread lying on a horizontal parallel of a smooth sphere (Goicolea 2012, example 8).
 
     .. math:: Q = \frac{q}{\sin\alpha}, \qquad
               T = qR\,\frac{\cos^2\alpha}{\sin\alpha} = qR\cos\alpha\cot\alpha

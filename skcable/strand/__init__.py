@@ -1,5 +1,5 @@
 """Metallic strands: wire geometry, asymmetric damage, section properties,
-wire materials and the stick/slip bending law (Pino Vidal (2021) chapters 2-3,
+wire materials and the stick/slip bending law (Pino Vidal 2021, chapters 2-3,
 annexes A and B). SI units: m, N, Pa.
 """
 
