@@ -7,6 +7,6 @@
 """
 
 from skcable.fe.assembly import BandedSystem, StrainAssembly
-from skcable.fe.newton import NewtonResult, newton
+from skcable.fe.newton import NewtonResult, minimize, newton
 
-__all__ = ["BandedSystem", "NewtonResult", "StrainAssembly", "newton"]
+__all__ = ["BandedSystem", "NewtonResult", "StrainAssembly", "minimize", "newton"]

@@ -205,6 +205,23 @@ class BandedSystem:
         np.add.at(ab.ravel(), self._flat(i[keep], j[keep]), K.data[keep])
         return ab
 
+    def solve_positive(self, ab: np.ndarray, b: np.ndarray, shift: np.ndarray | None = None, mu: float = 0.0):
+        """Solve ``(A + mu·M) x = b`` by banded Cholesky (LAPACK ``dpbtrf``/``dpbtrs``) for a
+        symmetric A (and M) in this band storage; raises ``numpy.linalg.LinAlgError`` when the
+        matrix is not positive definite."""
+        upper = ab[self.kl : self.kl + self.ku + 1]
+        if shift is not None and mu != 0.0:
+            upper = upper + mu * shift[self.kl : self.kl + self.ku + 1]
+        c, info = lapack.dpbtrf(upper, lower=0)
+        if info != 0:
+            raise np.linalg.LinAlgError(f"not positive definite (LAPACK dpbtrf info = {info})")
+        rhs = np.empty(self.n)
+        rhs[self._free_rank] = b
+        x, info = lapack.dpbtrs(c, rhs, lower=0)
+        if info != 0:
+            raise np.linalg.LinAlgError(f"LAPACK dpbtrs info = {info}")
+        return x[self._free_rank]
+
     def solve(self, ab: np.ndarray, b: np.ndarray) -> np.ndarray:
         """Solve the banded system for a right-hand side over the free dofs (in ``free`` order)."""
         rhs = np.empty(self.n)

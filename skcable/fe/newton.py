@@ -33,7 +33,7 @@ import numpy as np
 
 from skcable.errors import ConvergenceError
 
-__all__ = ["NewtonResult", "newton"]
+__all__ = ["NewtonResult", "minimize", "newton"]
 
 
 @dataclass
@@ -50,12 +50,15 @@ class NewtonResult:
         ``norm`` at the start and after every iteration.
     assemblies : int
         Calls of ``assemble`` (line-search trials included).
+    shifted : bool
+        [`minimize`][skcable.fe.newton.minimize] only: the tangent needed a shift somewhere.
     """
 
     x: np.ndarray
     state: Any
     history: list = field(default_factory=list)
     assemblies: int = 0
+    shifted: bool = False
 
     @property
     def iterations(self) -> int:
@@ -144,4 +147,98 @@ def newton(
             raise ConvergenceError(f"{name}: line search found no descent along the Newton step", history)
         x, state = trial_x, trial
         history.append(norm(state))
+    raise ConvergenceError(f"{name}: no convergence to {tol:g} in {max_iter} iterations", history)
+
+
+def minimize(
+    assemble: Callable[[np.ndarray], Any],
+    x0: np.ndarray,
+    *,
+    norm: Callable[[Any], float],
+    energy: Callable[[Any], float],
+    gradient: Callable[[Any], np.ndarray],
+    solve: Callable[[Any, float], np.ndarray],
+    tol: float,
+    max_iter: int = 40,
+    mu0: float = 1e-6,
+    mu_max: float = 1.0,
+    halvings: int = 8,
+    window: int = 3,
+    factor: float = 0.5,
+    noise: float = 1e-12,
+    name: str = "minimize",
+    state=None,
+) -> NewtonResult:
+    r"""Newton for a problem with a potential Π (residual R = ∇Π, tangent K = ∇²Π), shifted where
+    K is not positive definite: a Newton that passes the folds of a softening law.
+
+    Per iteration: converged when ``norm < tol``; the increment ``d = −(K + μ K₀)⁻¹ R`` by a
+    Cholesky factorisation (``solve(state, μ)``, which raises ``numpy.linalg.LinAlgError`` when
+    the shifted tangent is not positive definite), with μ = 0 (plain Newton) unless the
+    factorisation fails or the residual stagnates (less than ``factor`` in ``window``
+    iterations): then μ starts at ``mu0`` and doubles until the factorisation succeeds, K₀ being
+    the problem's own positive-definite metric (for a strand: its elastic tangent). d is then a
+    descent direction of Π, and a step t = 1, ½, … is accepted by Armijo's rule on the energy,
+    ``Π(x + t d) ≤ Π(x) + 10⁻⁴ t R·d``, or, where the energy change is at its round-off
+    (``noise``·|Π|), by the residual falling. After an accepted step μ shrinks fourfold (to 0
+    below ``mu0``); after a failed line search it grows tenfold. Gives up (ConvergenceError with
+    the history) when μ exceeds ``mu_max``, when neither the residual nor the energy moves over
+    ``window`` iterations, or after ``max_iter`` iterations. ``NewtonResult.shifted`` tells
+    whether the shift was needed: the path passed a point where the tangent was not positive
+    definite (a fold of the equilibrium path under the imposed data).
+    """
+    x = np.array(x0, dtype=float)
+    state = assemble(x) if state is None else state
+    assemblies = 1
+    history, energies = [norm(state)], [energy(state)]
+    mu, shifted = 0.0, False
+    for _ in range(max_iter + 1):
+        current, Pi = history[-1], energies[-1]
+        if not (np.isfinite(current) and np.isfinite(Pi)):
+            raise ConvergenceError(f"{name}: the residual or the energy is not finite", history)
+        if current < tol:
+            return NewtonResult(x, state, history, assemblies, shifted)
+        if len(history) > max_iter:
+            break
+        if len(history) > window and current > factor * history[-1 - window]:
+            if abs(Pi - energies[-1 - window]) <= noise * abs(Pi):
+                raise ConvergenceError(f"{name}: neither the residual nor the energy moves", history)
+            if mu == 0.0:
+                mu, shifted = mu0, True
+        while True:
+            try:
+                d = solve(state, mu)
+                break
+            except np.linalg.LinAlgError:
+                mu, shifted = (mu0 if mu == 0.0 else 2.0 * mu), True
+                if mu > mu_max:
+                    raise ConvergenceError(
+                        f"{name}: the tangent needs a shift above {mu_max:g} to be positive definite", history
+                    ) from None
+        R = gradient(state)
+        slope = float(R @ d)
+        t, accepted = 1.0, False
+        for _ in range(halvings):
+            trial_x = x + t * d
+            trial = assemble(trial_x)
+            assemblies += 1
+            drop = energy(trial) - Pi
+            n_t = norm(trial)
+            if (
+                n_t < tol
+                or drop <= 1e-4 * t * slope
+                or (abs(drop) <= noise * abs(Pi) and n_t < (1 - 1e-4 * t) * current)
+            ):
+                accepted = True
+                break
+            t *= 0.5
+        if accepted:
+            x, state = trial_x, trial
+            history.append(n_t)
+            energies.append(energy(state))
+            mu = 0.0 if mu <= mu0 else mu / 4.0
+        else:
+            mu, shifted = (mu0 if mu == 0.0 else 10.0 * mu), True
+            history.append(current)
+            energies.append(Pi)
     raise ConvergenceError(f"{name}: no convergence to {tol:g} in {max_iter} iterations", history)

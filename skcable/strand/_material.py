@@ -246,6 +246,24 @@ class Material:
         tangent = np.where(elastic, self.E_e, np.where(plastic, self.E_p, (3 * a * t + 2 * b) * t + c))
         return stress, tangent
 
+    def energy(self, strain: np.ndarray) -> np.ndarray:
+        r"""Strain energy density :math:`W(\varepsilon) = \int_0^\varepsilon \sigma\,d\varepsilon` (J/m³)
+        of a float array, without input checks (even in the strain):
+        ½E_eε² on the linear branch, the integral of the cubic blend (t = |ε| − ε'_y)
+        :math:`W(\varepsilon'_y) + d t + c t^2/2 + b t^3/3 + a t^4/4`, then the hardening line's
+        :math:`W(\varepsilon''_y) + E_e\varepsilon_y(|\varepsilon| - \varepsilon''_y)
+        + \tfrac12 E_p[(|\varepsilon| - \varepsilon_y)^2 - (\varepsilon''_y - \varepsilon_y)^2]`."""
+        eps, t, elastic, plastic, (a, b, c, d) = self._branches(strain)
+        e1, e2, ey = self.eps_y1, self.eps_y2, self.eps_y
+
+        def blend(t):
+            return (((a / 4 * t + b / 3) * t + c / 2) * t + d) * t
+
+        W1 = 0.5 * self.E_e * e1**2
+        W2 = W1 + blend(e2 - e1)
+        line = W2 + self.E_e * ey * (eps - e2) + 0.5 * self.E_p * ((eps - ey) ** 2 - (e2 - ey) ** 2)
+        return np.where(elastic, 0.5 * self.E_e * eps**2, np.where(plastic, line, W1 + blend(t)))
+
     @property
     def softening_range(self) -> tuple[float, float] | None:
         """Strains ``(lo, hi)`` inside the blend where the tangent is negative, or None.

@@ -99,6 +99,10 @@ class StepResult:
         previous state was kept).
     assemblies : int
         Residual and tangent evaluations the step took.
+    shifted : bool
+        The tangent was not positive definite on the way to this state and the solver shifted
+        it ([`minimize`][skcable.fe.newton.minimize]): the equilibrium path has a fold (a
+        snap under the imposed strain) between the previous step and this one.
     """
 
     strain: float
@@ -122,6 +126,7 @@ class StepResult:
     state: tuple = ()
     settled: bool = True
     assemblies: int = 0
+    shifted: bool = False
 
     @property
     def slip_fraction(self) -> float:
@@ -168,6 +173,13 @@ class CapacityCurve:
     failure: str | None = None
     cutbacks: int = 0
 
+    @property
+    def snaps(self) -> list:
+        """Strains of the steps reached past a fold of the equilibrium path (the solver had to
+        shift a tangent that was not positive definite): where a softening wire law (the printed
+        aluminium blend of Pino Vidal 2021, Table B.1) makes the quasi-static path snap."""
+        return [float(s.strain) for s in self.steps if s.shifted]
+
     def __repr__(self) -> str:
         end = "ruptured" if self.ruptured else f"stopped: {self.failure}" if self.failure else "not ruptured"
         try:
@@ -177,7 +189,7 @@ class CapacityCurve:
         return (
             f"CapacityCurve({len(self.steps)} steps to strain {self.strain[-1]:.6g}, force "
             f"{self.force[-1]:.6g} N, K_Leq={k}, max slip fraction {np.max(self.slip_fraction):.3f}, "
-            f"{end}, cutbacks={self.cutbacks})"
+            f"{end}, cutbacks={self.cutbacks}, snaps={len(self.snaps)})"
         )
 
     @cached_property

@@ -6,7 +6,7 @@ import scipy.sparse.linalg as spla
 from skfem import Basis, BilinearForm, ElementLineHermite, ElementLineP2, LinearForm, MeshLine, asm, bmat
 
 from skcable.errors import ConvergenceError, InputError
-from skcable.fe import StrainAssembly, newton
+from skcable.fe import StrainAssembly, minimize, newton
 
 STRAINS = (("u", 1), ("v", 0), ("v", 1), ("v", 2), ("phi", 1))
 
@@ -122,3 +122,50 @@ def test_newton_converges_quadratically_and_stops_on_stagnation():
             max_iter=50,
         )
     assert len(info.value.history) < 10
+
+
+def test_banded_cholesky_equals_sparse_solve_and_refuses_indefinite(setup):
+    asmb, _ = setup
+    rng = np.random.default_rng(5)
+    ne, nq = asmb.dx.shape
+    A = rng.standard_normal((len(STRAINS), len(STRAINS), ne, nq))
+    D = np.einsum("abeq,cbeq->aceq", A, A) + 0.1 * np.eye(len(STRAINS))[:, :, None, None]
+    K = asmb.matrix(D)
+    free = np.setdiff1d(np.arange(asmb.N), [0, 3, asmb.N - 1])
+    system = asmb.banded(free)
+    ab = system.add_elements(system.band(), asmb.element_matrices(D))
+    b = rng.standard_normal(len(free))
+    expected = spla.spsolve(K[free][:, free].tocsc(), b)
+    np.testing.assert_allclose(
+        system.solve_positive(ab, b), expected, rtol=1e-9, atol=1e-12 * np.abs(expected).max()
+    )
+    # a shift by the same matrix: (1 + mu) K x = b
+    x = system.solve_positive(ab, b, shift=ab, mu=1.0)
+    np.testing.assert_allclose(2 * x, expected, rtol=1e-9, atol=1e-12 * np.abs(expected).max())
+    with pytest.raises(np.linalg.LinAlgError):
+        system.solve_positive(-ab, b)
+
+
+def test_minimize_passes_a_fold_that_newton_cannot():
+    """Π(x) = x⁴/4 − x²/2 − 0.3 x: at x0 = 0.2 the tangent 3x² − 1 is negative; plain Newton heads for
+    the local maximum, the shifted one descends to the minimum near x = 1.13 (a root of x³ − x − 0.3)."""
+    f = lambda x: x[0] ** 3 - x[0] - 0.3  # noqa: E731
+
+    def solve(x, mu):
+        k = 3 * x[0] ** 2 - 1 + mu
+        if k <= 0:
+            raise np.linalg.LinAlgError("not positive definite")
+        return np.array([-f(x) / k])
+
+    result = minimize(
+        lambda x: x,
+        np.array([0.2]),
+        norm=lambda x: abs(f(x)),
+        energy=lambda x: x[0] ** 4 / 4 - x[0] ** 2 / 2 - 0.3 * x[0],
+        gradient=lambda x: np.array([f(x)]),
+        solve=solve,
+        tol=1e-13,
+        mu_max=10.0,
+    )
+    root = max(np.roots([1, 0, -1, -0.3]).real)
+    assert result.x[0] == pytest.approx(root, rel=1e-12) and result.shifted

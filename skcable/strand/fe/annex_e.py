@@ -397,6 +397,7 @@ class AnnexE(SectionTerm):
 
     def section(self, g, step):
         _, _, output = self._kinematics.section(g, step)
+        output.pop("energy")  # the annex's law has no potential: its tangent is not symmetric
         slipping = np.any(output["slipping"], axis=0)  # (ne, nq): E.2 where either axis slips
         (E1, G1), (E2, G2) = self._matrices[False], self._matrices[True]
         D_E = np.where(slipping, E2, E1)

@@ -24,7 +24,7 @@ from skfem import Basis, ElementLineHermite, ElementLineP2, MeshLine
 
 from skcable._checks import nonnegative, positive
 from skcable.errors import ConvergenceError, InputError
-from skcable.fe import StrainAssembly, newton
+from skcable.fe import StrainAssembly, minimize, newton
 from skcable.strand.capacity import StepResult, StrandLayout, capacity_curve
 from skcable.strand.fe.slip import slip_law
 from skcable.strand.fe.terms import (
@@ -150,6 +150,8 @@ class StrandModel:
         self._section_terms = [t for t in self._bound if isinstance(t, SectionTerm)]
         self._other_terms = [t for t in self._bound if not isinstance(t, SectionTerm)]
         self._band = self.assembly.banded(self.free)
+        self._dx = self.bases["u"].dx
+        self._metric = None  # the elastic tangent of the straight strand, band storage (on first use)
         self.layout = self._layout()
 
     def __repr__(self) -> str:
@@ -282,15 +284,21 @@ class StrandModel:
             S, D = (St, Dt.copy()) if S is None else (S + St, D + Dt)
         R = self.assembly.vector(S) if S is not None else np.zeros(self.assembly.N)
         Ke = self.assembly.element_matrices(D) if D is not None else None
+        densities = [outputs[index[id(t)]].get("energy") for t in self._section_terms]
+        energy = None if any(e is None for e in densities) else float(np.sum(sum(densities) * self._dx))
         extra = []
         for t in self._other_terms:
             i = index[id(t)]
-            Rt, Kt, outputs[i] = t.contribute(U, Step(strain, self.x, state[i]))
+            step = Step(strain, self.x, state[i])
+            Rt, Kt, outputs[i] = t.contribute(U, step)
             if Rt is not None:
                 R = R + Rt
             if Kt is not None:
                 extra.append(Kt)
-        return dict(R=R, Ke=Ke, extra=extra, outputs=outputs, g=g, S=S, D=D)
+            if energy is not None:
+                e = t.energy(U, step)
+                energy = None if e is None else energy + e
+        return dict(R=R, Ke=Ke, extra=extra, outputs=outputs, g=g, S=S, D=D, energy=energy)
 
     def assemble(self, U, state=None):
         """``(R, K, outputs)``: residual (N,), tangent (CSR, N × N) and the terms' outputs at ``U``
@@ -312,21 +320,68 @@ class StrandModel:
         return dU
 
     # --- solution ----------------------------------------------------------------
+    def _increment_positive(self, a, mu):
+        """``-(K + mu K0)⁻¹ R`` by banded Cholesky (raises LinAlgError when not positive definite)."""
+        ab = self._band.band()
+        if a["Ke"] is not None:
+            self._band.add_elements(ab, a["Ke"])
+        for Kt in a["extra"]:
+            self._band.add_sparse(ab, Kt)
+        if mu != 0.0 and self._metric is None:
+            straight = self._assemble(np.zeros(self.assembly.N), self.initial_state(), 0.0)
+            self._metric = self._band.band()
+            if straight["Ke"] is not None:
+                self._band.add_elements(self._metric, straight["Ke"])
+            for Kt in straight["extra"]:
+                self._band.add_sparse(self._metric, Kt)
+        dU = np.zeros(self.assembly.N)
+        dU[self.free] = self._band.solve_positive(ab, -a["R"][self.free], self._metric, mu)
+        return dU
+
     def _newton(self, U, strain, state, tol, max_iter):
         U = self.uniform(strain) if U is None else np.array(U, dtype=float)
         U[self.fixed] = 0.0
         U[self.pull] = strain * self.length
         scale = max(self.EA * max(abs(strain), 1e-6), 1.0)
         free = self.free
+        name = f"StrandModel: Newton at strain {strain:.6g}"
+
+        def norm(a):
+            return float(np.max(np.abs(a["R"][free]))) / scale
+
+        def assemble(x):
+            return self._assemble(x, state, strain)
+
+        first = assemble(U)
+        if first["energy"] is not None:  # every term has a potential: minimise it, shifted at folds
+            free_R = np.zeros(self.assembly.N)
+
+            def gradient(a):
+                free_R[free] = a["R"][free]
+                return free_R
+
+            return minimize(
+                assemble,
+                U,
+                norm=norm,
+                energy=lambda a: a["energy"],
+                gradient=gradient,
+                solve=self._increment_positive,
+                tol=tol,
+                max_iter=max(max_iter, 40),
+                name=name,
+                state=first,
+            )
         return newton(
-            lambda x: self._assemble(x, state, strain),
+            assemble,
             U,
-            norm=lambda a: float(np.max(np.abs(a["R"][free]))) / scale,
+            norm=norm,
             merit=lambda a: float(np.sqrt(np.sum(a["R"][free] ** 2))) / scale,  # smooth, for the line search
             increment=self._increment,
             tol=tol,
             max_iter=max_iter,
-            name=f"StrandModel: Newton at strain {strain:.6g}",
+            name=name,
+            state=first,
         )
 
     def solve(self, strain: float, guess=None, state=None, *, passes: int = 6, tol=1e-9, max_iter=25):
@@ -349,7 +404,7 @@ class StrandModel:
             raise InputError("strain", f"must be finite, got {strain!r}")
         state = self.initial_state() if state is None else tuple(state)
         result = self._newton(guess, strain, state, tol, max_iter)
-        settled, seen, assemblies = True, [state], result.assemblies
+        settled, seen, assemblies, shifted = True, [state], result.assemblies, result.shifted
         for _ in range(passes):
             outputs = result.state["outputs"]
             new = tuple(t.next_state(o, s) for t, o, s in zip(self._bound, outputs, state, strict=True))
@@ -364,13 +419,14 @@ class StrandModel:
                 settled = False
                 break
             assemblies += retry.assemblies
+            shifted = shifted or retry.shifted
             seen.append(new)
             state, result = new, retry
         else:
             settled = False
-        return self._step_result(strain, result, state, settled, assemblies)
+        return self._step_result(strain, result, state, settled, assemblies, shifted)
 
-    def _step_result(self, strain, result, state, settled, assemblies):
+    def _step_result(self, strain, result, state, settled, assemblies, shifted=False):
         a, U = result.state, result.x
         # the wire kinematics of the first term that reports them (HelicalWires, AnnexE, ...)
         wires = next((o for o in a["outputs"] if o and {"strain", "curvature", "kappa_m"} <= set(o)), None)
@@ -410,6 +466,7 @@ class StrandModel:
             state=state,
             settled=settled,
             assemblies=assemblies,
+            shifted=shifted,
         )
 
     def capacity_curve(self, max_strain=None, n_steps=None, **kwargs):

@@ -118,6 +118,12 @@ class Term:
         """``(R, K, output)``: residual (N,) or None, tangent (N, N) sparse or None, and a dict."""
         raise NotImplementedError
 
+    def energy(self, U: np.ndarray, step: Step) -> float | None:
+        """The term's potential (J) whose gradient is its residual, or None when it has none
+        (then the model solves with plain Newton instead of energy minimisation). Section terms
+        give theirs per unit length as ``output["energy"]`` of `section`."""
+        return None
+
     def __repr__(self) -> str:
         return f"{type(self).__name__}()"
 
@@ -285,6 +291,7 @@ class HelicalWires(SectionTerm):
         )
         stress, tangent = self.material.stress_and_tangent(strain)
         stress, tangent = stress * self._alive3, tangent * self._alive3
+        energy = np.sum(self.area_weight * self.material.energy(strain), axis=0)
         d_axial = c2 * (1.0 - y * q[0][None] - z * q[1][None])  # ∂ε_j/∂ε_a
         b = np.array(
             [
@@ -312,6 +319,7 @@ class HelicalWires(SectionTerm):
             slipping=self.slip.slipping(k_principal, k_m, state),
             axial=axial,
             N=N,
+            energy=energy,
         )
         return S, D, output
 
@@ -334,7 +342,7 @@ class WireBending(SectionTerm):
     def section(self, g, step):
         S = np.zeros_like(g)
         S[2], S[4], S[5] = self.EI * g[2], self.EI * g[4], self.GJ * g[5]
-        return S, self._D, {}
+        return S, self._D, {"energy": 0.5 * (S[2] * g[2] + S[4] * g[4] + S[5] * g[5])}
 
 
 # --- field terms -----------------------------------------------------------------------------
@@ -435,6 +443,12 @@ class FieldTerm(Term):
             R = -self._f if R is None else R - self._f
         return R, K, {}
 
+    def energy(self, U, step):
+        if not self.linear:
+            return None
+        out = 0.5 * float(U @ (self._K @ U)) if self._K is not None else 0.0
+        return out - float(self._f @ U) if self._f is not None else out
+
 
 @BilinearForm
 def _winkler_y(u, v, w):
@@ -521,6 +535,9 @@ class NodalSpring(Term):
     def contribute(self, U, step):
         return self._K @ U, self._K, {}
 
+    def energy(self, U, step):
+        return 0.5 * float(U @ (self._K @ U))
+
 
 class SinusoidalDamageLoads(Term):
     r"""The thesis's reading of the damage: the loads a broken wire's missing pressure leaves.
@@ -567,6 +584,9 @@ class SinusoidalDamageLoads(Term):
 
     def contribute(self, U, step):
         return -self.loads(step.strain), None, {}
+
+    def energy(self, U, step):  # a dead load within the step
+        return -float(self.loads(step.strain) @ U)
 
 
 def is_section_term(term) -> bool:
