@@ -9,6 +9,7 @@ default (m, N, N/m); any consistent system works.
 from skcable.cable._catenary import Catenary, catenary
 from skcable.cable._choice import solve
 from skcable.cable._elastic import ElasticCatenary, elastic_catenary
+from skcable.cable._frequencies import NaturalFrequencies, irvine_frequencies, natural_frequencies
 from skcable.cable._funicular import Funicular, FunicularVertical, funicular, funicular_vertical
 from skcable.cable._loads import DeckLoad, DistributedLoad, PointLoad, SelfWeight
 from skcable.cable._parabola import Parabola, parabola
@@ -58,6 +59,9 @@ __all__ = [
     "Catenary",
     "ElasticCatenary",
     "Funicular",
+    "NaturalFrequencies",
+    "irvine_frequencies",
+    "natural_frequencies",
     "FunicularVertical",
     "Parabola",
     "SlidingLoad",
