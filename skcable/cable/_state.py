@@ -273,7 +273,7 @@ def change_of_state(
         positive("sag0", sag0)
     w, t, wind = positive("w", w), real("t", t), nonnegative("wind", wind)
     shape = broadcast(w=w, t=t, wind=wind)
-    w, t, wind = (np.broadcast_to(np.asarray(v, dtype=float), shape) for v in (w, t, wind))
+    w, t, wind = (np.array(np.broadcast_to(v, shape), dtype=float) for v in (w, t, wind))
     k = _thermal_factor(alpha, t, t0)
     q, span_p, dh_p = _plane(span, dh, w, wind)
     chord = np.hypot(span, dh)
@@ -295,6 +295,13 @@ def change_of_state(
         cos = span_p / chord
         excess0 = (w0 * span * cos0) ** 2 / (24.0 * H0**2)  # (S0 - c) / c
         L0 = chord * (1.0 + excess0) - H0 * chord / (EA * cos0)
+        if not L0 > 0:
+            name = "H0" if sag0 is None else "sag0"
+            raise InputError(
+                name,
+                "the reference state stretches the cable by more than its length (H0/(EA cos psi) "
+                f"= {H0 / (EA * cos0):.3g}): the parabolic equation, a small-strain form, does not apply",
+            )
         b = -H0 * cos / cos0 + EA * cos * (alpha * (t - t0)) + EA * cos * excess0
         d = EA * cos * (q * span_p * cos) ** 2 / 24.0
         H_plane = _cubic(b, d)
@@ -308,11 +315,10 @@ def change_of_state(
     for name, value in out.items():
         if not np.all(np.isfinite(value)):
             raise ConvergenceError(f"change_of_state: non-finite {name} for these data")
+    out.update(w=w, t=t, wind=wind)
     if shape == ():
         out = {key: float(value) for key, value in out.items()}
-    return ChangeOfState(
-        **out, L0=float(L0), H0=float(H0_out), sag0=float(sag0_out), w=w, t=t, wind=wind, model=model
-    )
+    return ChangeOfState(**out, L0=float(L0), H0=float(H0_out), sag0=float(sag0_out), model=model)
 
 
 def sag_tension_table(

@@ -189,6 +189,7 @@ KW = dict(EA=3e7, alpha=2e-5, w0=15.0, t0=15.0, w=15.0, t=20.0)
         (dict(H0=2e4, alpha=0.1, t=-100.0), "t"),
         (dict(H0=2e4, w0=0.0), "w0"),
         (dict(H0=2e4, t0="15"), "t0"),
+        (dict(H0=2e8, model="parabola"), "H0"),  # strain 6.7: beyond a small-strain equation
     ],
 )
 def test_bad_input_raises_naming_the_argument(change, argument):
