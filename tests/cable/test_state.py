@@ -66,6 +66,15 @@ def test_thermal_mapping_against_mpmath():
     assert c.residual() < 1e-12
 
 
+def test_thermal_catenary_broadcasts():
+    t = np.array([-20.0, 15.0, 60.0])
+    c = cable.thermal_catenary(250.0, 30.0, 12.0, 4e6, length=262.0, alpha=2.3e-5, t=t, t0=15.0)
+    for i in range(3):
+        one = cable.thermal_catenary(250.0, 30.0, 12.0, 4e6, length=262.0, alpha=2.3e-5, t=t[i], t0=15.0)
+        assert c.H[i] == pytest.approx(one.H, rel=1e-12)
+    assert np.all(np.diff(c.H) < 0)  # warmer: longer, slacker
+
+
 def test_thermal_catenary_at_reference_temperature_is_elastic_catenary():
     e = cable.elastic_catenary(300.0, -10.0, 9.0, 2e7, length=302.0)
     c = cable.thermal_catenary(300.0, -10.0, 9.0, 2e7, length=302.0, alpha=1.9e-5, t=40.0, t0=40.0)
@@ -134,15 +143,17 @@ def test_parabola_sag0_gives_textbook_H0():
     assert r.H == pytest.approx(15.0 * 300.0**2 / (8 * 6.0), rel=1e-14)
 
 
-def test_exact_and_parabola_agree_for_small_sag():
+@pytest.mark.parametrize("dh", [0.0, 60.0])
+def test_exact_and_parabola_agree_for_small_sag(dh):
     # nearly inextensible, no temperature change: the parabola is the first
-    # term in sag/span, the sags differ by O((sag/span)^2)
+    # term in sag/span, the sags differ by O((sag/span)^2), level or inclined, with wind
     rel = []
     for H0 in (1e4, 4e4, 1.6e5):  # sag/span ~ 5.6, 1.4, 0.35 %
         kw = dict(EA=1e12, alpha=2e-5, w0=15.0, t0=15.0, H0=H0, w=18.0, t=15.0, wind=5.0)
-        e = cable.change_of_state(300.0, 0.0, **kw)
-        p = cable.change_of_state(300.0, 0.0, **kw, model="parabola")
+        e = cable.change_of_state(300.0, dh, **kw)
+        p = cable.change_of_state(300.0, dh, **kw, model="parabola")
         rel.append(abs(p.sag / e.sag - 1) / (e.sag / 300.0) ** 2)
+        assert p.T_max == pytest.approx(e.T_max, rel=e.sag / 300.0 / 10)
     # the ratio to (sag/span)^2 tends to a constant
     assert rel[2] == pytest.approx(rel[1], rel=0.05) and rel[1] == pytest.approx(rel[0], rel=0.1)
 
