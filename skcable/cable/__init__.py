@@ -9,9 +9,17 @@ default (m, N, N/m); any consistent system works.
 from skcable.cable._catenary import Catenary, catenary
 from skcable.cable._choice import solve
 from skcable.cable._elastic import ElasticCatenary, elastic_catenary
+from skcable.cable._frequencies import NaturalFrequencies, irvine_frequencies, natural_frequencies
 from skcable.cable._funicular import Funicular, FunicularVertical, funicular, funicular_vertical
 from skcable.cable._loads import DeckLoad, DistributedLoad, PointLoad, SelfWeight
 from skcable.cable._parabola import Parabola, parabola
+from skcable.cable._state import (
+    ChangeOfState,
+    ThermalCatenary,
+    change_of_state,
+    sag_tension_table,
+    thermal_catenary,
+)
 from skcable.cable._stiffness import geometric_stiffness, geometric_stiffness_series
 from skcable.cable._supports import SlidingLoad, anchor_block_weight, ring_on_rod, sliding_load
 from skcable.cable._surfaces import capstan, membrane_tension, smooth_surface_reaction, sphere_parallel
@@ -43,9 +51,17 @@ __all__ = [
     "graph_tangent",
     "solve_bvp",
     "CableSolution",
+    "ChangeOfState",
+    "ThermalCatenary",
+    "change_of_state",
+    "sag_tension_table",
+    "thermal_catenary",
     "Catenary",
     "ElasticCatenary",
     "Funicular",
+    "NaturalFrequencies",
+    "irvine_frequencies",
+    "natural_frequencies",
     "FunicularVertical",
     "Parabola",
     "SlidingLoad",

@@ -1,0 +1,363 @@
+r"""Thermal strain in the elastic catenary and the change-of-state equation.
+
+Thermal strain
+--------------
+A material element of unstressed length :math:`ds_0` at the reference
+temperature :math:`t_0` has, at temperature :math:`t` and tension :math:`T`,
+the length :math:`ds = ds_0\,(1 + \alpha(t - t_0) + T/EA)`; the weight
+``w`` is per unstressed *reference* length. With :math:`k = 1 + \alpha(t-t_0)`
+this is exactly
+
+.. math:: ds = (k\,ds_0)\left(1 + \frac{T}{EA\,k}\right),
+
+Irvine's elastic catenary (H.M. Irvine, "Cable Structures", MIT Press,
+1981, §2.2) of unstressed length :math:`k L_0`, weight :math:`w/k` per unit of
+that length and axial stiffness :math:`EA\,k`. `thermal_catenary` solves it
+that way with `elastic_catenary`.
+
+Change of state
+---------------
+The unstressed reference length :math:`L_0` is found from a reference state
+(load ``w0``, temperature ``t0``, horizontal tension ``H0`` or sag ``sag0``)
+and kept for every other state (vertical load ``w`` including ice,
+temperature ``t``, transverse wind ``wind``). A uniform load of fixed
+direction keeps the cable in the plane through the chord and the load
+direction; the exact model solves the thermal elastic catenary in that plane
+under the resultant :math:`q = \sqrt{w^2 + \text{wind}^2}`. The
+``"parabola"`` model is the classical cubic change-of-state equation (e.g.
+CIGRE TB 324, "Sag-tension calculation methods for overhead lines", 2007;
+F. Kiessling et al., "Overhead Power Lines", Springer, 2003), written in the
+same plane for a chord inclined at :math:`\psi` (span :math:`a` in the plane):
+
+.. math::
+    H^2\left[H - H_0\frac{\cos\psi}{\cos\psi_0} + EA\cos\psi\,\alpha(t - t_0)
+    + \frac{EA\cos\psi\,q_0^2 a_0^2\cos^2\psi_0}{24 H_0^2}\right]
+    = \frac{EA\cos\psi\, q^2 a^2 \cos^2\psi}{24},
+
+which for a level span is the textbook
+:math:`H^2[H - H_0 + EA\,\alpha\Delta t + EA\,w_0^2a^2/(24H_0^2)] = EA\,w^2a^2/24`.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from skcable._checks import broadcast, nonnegative, positive, real, require, scalar
+from skcable.cable._catenary import catenary
+from skcable.cable._elastic import elastic_catenary
+from skcable.cable._roots import find_root
+from skcable.errors import ConvergenceError, InputError
+
+__all__ = ["ThermalCatenary", "thermal_catenary", "ChangeOfState", "change_of_state", "sag_tension_table"]
+
+_MODELS = ("catenary", "parabola")
+
+
+class ThermalCatenary:
+    """Solution of `thermal_catenary`.
+
+    ``H, V_A, V_B, T_A, T_B, sag`` and ``y(x), T(x), slope(x)`` of the loaded
+    cable; ``length`` the unstressed length at the reference temperature,
+    ``stretched_length`` the length under load at temperature ``t``;
+    ``k = 1 + alpha (t - t0)``; ``curve`` the equivalent `ElasticCatenary`
+    (unstressed length ``k length``, weight ``w/k``, stiffness ``EA k``).
+    """
+
+    def __init__(self, curve, w, EA, length, k):
+        self.curve, self.w, self.EA, self.length, self.k = curve, w, EA, length, k
+        self.span, self.dh = curve.span, curve.dh
+        self.H, self.V_A, self.V_B = curve.H, curve.V_A, curve.V_B
+        self.T_A, self.T_B = curve.T_A, curve.T_B
+        self.sag, self.stretched_length = curve.sag, curve.stretched_length
+
+    def y(self, x):
+        """Height above A at abscissa ``x``."""
+        return self.curve.y(x)
+
+    def T(self, x):
+        """Tension at abscissa ``x``."""
+        return self.curve.T(x)
+
+    def slope(self, x):
+        """dy/dx at ``x``."""
+        return self.curve.slope(x)
+
+    def residual(self):
+        """Largest relative residual of the equivalent elastic catenary."""
+        return self.curve.residual()
+
+
+def thermal_catenary(span, dh, w, EA, *, length, alpha, t, t0=0.0):
+    """Elastic catenary with thermal strain, A = (0, 0) to B = (span, dh).
+
+    An element of unstressed length ``ds0`` at ``t0`` stretches to
+    ``ds0 (1 + alpha (t - t0) + T/EA)`` (Irvine, "Cable Structures", 1981,
+    with a uniform thermal strain).
+
+    Parameters
+    ----------
+    span, dh : float or array_like
+        Horizontal distance (> 0) and height of B above A.
+    w : float or array_like
+        Weight per unit unstressed length at ``t0`` (> 0).
+    EA : float or array_like
+        Axial stiffness (> 0).
+    length : float or array_like
+        Unstressed length at ``t0`` (> 0).
+    alpha : float or array_like
+        Coefficient of thermal expansion (1/K), finite.
+    t, t0 : float or array_like
+        Temperature and reference temperature; ``1 + alpha (t - t0)`` must be > 0.
+
+    Raises
+    ------
+    InputError, ConvergenceError
+        As `elastic_catenary`; ``t`` when the thermal factor is not positive.
+    """
+    span = positive("span", span)
+    dh = real("dh", dh)
+    w = positive("w", w)
+    EA = positive("EA", EA)
+    length = positive("length", length)
+    alpha, t, t0 = real("alpha", alpha), real("t", t), real("t0", t0)
+    broadcast(span=span, dh=dh, w=w, EA=EA, length=length, alpha=alpha, t=t, t0=t0)
+    k = _thermal_factor(alpha, t, t0)
+    curve = elastic_catenary(span, dh, w / k, EA * k, length=length * k)
+    return ThermalCatenary(curve, w, EA, length, k)
+
+
+def _thermal_factor(alpha, t, t0):
+    k = 1.0 + alpha * (t - t0)
+    require("t", k > 0, "gives a thermal factor 1 + alpha (t - t0) <= 0", k)
+    return k
+
+
+def _plane(span, dh, w, wind):
+    """Resultant load and the span, height difference in its plane."""
+    q = np.hypot(w, wind)
+    dh_p = dh * w / q
+    span_p = np.sqrt(span**2 + dh**2 - dh_p**2)
+    return q, span_p, dh_p
+
+
+def _reference_length(span, dh, w0, EA, H0, sag0):
+    """Unstressed length at t0 of the elastic catenary with H0 (or sag0)."""
+    if H0 is not None:
+        guess = catenary(span, dh, w0, H=H0)
+
+        def f(L0, *a):
+            return elastic_catenary(*a[:4], length=L0).H / a[4] - 1.0  # decreasing in L0
+
+        target = H0
+    else:
+        guess = catenary(span, dh, w0, sag=sag0)
+
+        def f(L0, *a):
+            return 1.0 - elastic_catenary(*a[:4], length=L0).sag / a[4]  # sag increases with L0
+
+        target = sag0
+    # the inextensible length: the elastic cable of that unstressed length
+    # sags more; one of 4 T_max/EA less sags less (widened if not)
+    hi = guess.length
+    stretch = 4.0 * np.maximum(guess.T_A, guess.T_B) / EA
+    args = np.broadcast_arrays(span, dh, w0, EA, target)
+    lo = hi / (1.0 + stretch)
+    for _ in range(8):
+        bad = np.asarray(f(lo, *args) < 0)
+        if not bad.any():
+            break
+        lo = np.where(bad, lo / (1.0 + stretch), lo)
+    L0, _ = find_root(f, lo, hi, tuple(args), what="change_of_state: reference length")
+    return L0
+
+
+def _cubic(b, d):
+    """The positive root of H^3 + b H^2 - d = 0 (d > 0): Newton from above."""
+    H = np.maximum(0.0, -b) + np.cbrt(d)
+    history = []
+    for _ in range(200):
+        step = (H**3 + b * H**2 - d) / (3 * H**2 + 2 * b * H)
+        H = H - step
+        history.append(float(np.max(np.abs(step / H))))
+        if history[-1] < 4e-16:
+            return H
+    raise ConvergenceError("change_of_state: Newton on the parabolic cubic did not converge", history)
+
+
+class ChangeOfState:
+    """Result of `change_of_state`; arrays over the broadcast states.
+
+    Attributes
+    ----------
+    H : tension component along the span (horizontal, in the span's vertical
+        plane direction x), constant along the cable.
+    H_plane : tension component perpendicular to the resultant load in the
+        plane of the cable (equal to ``H`` without wind or for a level span).
+    sag : largest distance chord–cable in the plane of the resultant load,
+        measured along the load (the vertical sag without wind).
+    T_max : largest tension (at the higher end of the plane).
+    length : loaded length at temperature ``t``.
+    blowout : angle of the resultant load (and, for a level span, of the
+        cable's plane) from the vertical, ``atan(wind / w)`` (rad).
+    L0 : unstressed length at the reference temperature.
+    H0, sag0 : the reference state's horizontal tension and sag (model's).
+    w, t, wind, model : the states, as given.
+    """
+
+    def __init__(self, **values):
+        self.__dict__.update(values)
+
+    def __repr__(self):
+        return f"ChangeOfState(model={self.model!r}, shape={np.shape(self.H)})"
+
+
+def change_of_state(
+    span, dh, *, EA, alpha, w0, t0, H0=None, sag0=None, w, t, wind=0.0, model="catenary"
+) -> ChangeOfState:
+    """Sag and tension of a cable in other states at its unstressed length.
+
+    Parameters
+    ----------
+    span, dh : float
+        Horizontal distance between the supports (> 0) and height of B above A.
+    EA : float
+        Axial stiffness (> 0).
+    alpha : float
+        Coefficient of thermal expansion (1/K), finite.
+    w0, t0 : float
+        Reference state: weight per length (> 0, no wind) and temperature.
+    H0, sag0 : float
+        Exactly one: the horizontal tension or the sag (vertical distance
+        chord–cable, largest) of the reference state.
+    w, t, wind : float or array_like
+        The states: vertical load per unstressed reference length including
+        ice (> 0), temperature, transverse (horizontal, perpendicular to the
+        span) wind load per the same length (>= 0); broadcast together.
+    model : {"catenary", "parabola"}
+        ``"catenary"``: the elastic catenary with thermal strain (exact, see
+        `thermal_catenary`), in the plane of the resultant load.
+        ``"parabola"``: the classical cubic change-of-state equation (CIGRE TB
+        324, 2007; Kiessling et al., "Overhead Power Lines", 2003), valid for
+        small sag/span, with the same plane.
+
+    Returns
+    -------
+    ChangeOfState
+        ``H, H_plane, sag, T_max, length, blowout, L0`` over the states.
+
+    Raises
+    ------
+    InputError
+        A non-physical argument, both or neither of ``H0``, ``sag0``, an
+        unknown model, a thermal factor ``1 + alpha (t - t0) <= 0``.
+    ConvergenceError
+        A solver stopped (with its history).
+    """
+    if not isinstance(model, str) or model not in _MODELS:
+        raise InputError("model", f"must be one of {_MODELS}, got {model!r}")
+    span, dh = scalar("span", span), scalar("dh", dh)
+    positive("span", span)
+    EA = scalar("EA", EA)
+    positive("EA", EA)
+    alpha, t0 = scalar("alpha", alpha), scalar("t0", t0)
+    w0 = scalar("w0", w0)
+    positive("w0", w0)
+    if (H0 is None) == (sag0 is None):
+        got = "both" if H0 is not None else "neither"
+        raise InputError("H0", f"give exactly one of H0, sag0 for the reference state; got {got}")
+    if H0 is not None:
+        H0 = scalar("H0", H0)
+        positive("H0", H0)
+    else:
+        sag0 = scalar("sag0", sag0)
+        positive("sag0", sag0)
+    w, t, wind = positive("w", w), real("t", t), nonnegative("wind", wind)
+    shape = broadcast(w=w, t=t, wind=wind)
+    w, t, wind = (np.array(np.broadcast_to(v, shape), dtype=float) for v in (w, t, wind))
+    k = _thermal_factor(alpha, t, t0)
+    q, span_p, dh_p = _plane(span, dh, w, wind)
+    chord = np.hypot(span, dh)
+    cos0 = span / chord
+    if model == "catenary":
+        L0 = _reference_length(span, dh, w0, EA, H0, sag0)
+        ref = elastic_catenary(span, dh, w0, EA, length=L0)
+        H0_out, sag0_out = ref.H, ref.sag
+        sol = elastic_catenary(span_p, dh_p, q / k, EA * k, length=L0 * k)
+        H_plane, sag = sol.H, sol.sag
+        T_max, length = np.maximum(sol.T_A, sol.T_B), sol.stretched_length
+        for name, value in (("H", H_plane), ("sag", sag)):  # the solver's residual is checked inside
+            if not np.all(np.isfinite(value)):
+                raise ConvergenceError(f"change_of_state: non-finite {name}")
+    else:
+        if H0 is None:
+            H0 = w0 * span**2 / (8.0 * sag0 * cos0)
+        H0_out, sag0_out = H0, w0 * span**2 / (8.0 * H0 * cos0)
+        cos = span_p / chord
+        excess0 = (w0 * span * cos0) ** 2 / (24.0 * H0**2)  # (S0 - c) / c
+        L0 = chord * (1.0 + excess0) - H0 * chord / (EA * cos0)
+        if not L0 > 0:
+            name = "H0" if sag0 is None else "sag0"
+            raise InputError(
+                name,
+                "the reference state stretches the cable by more than its length (H0/(EA cos psi) "
+                f"= {H0 / (EA * cos0):.3g}): the parabolic equation, a small-strain form, does not apply",
+            )
+        b = -H0 * cos / cos0 + EA * cos * (alpha * (t - t0)) + EA * cos * excess0
+        d = EA * cos * (q * span_p * cos) ** 2 / 24.0
+        H_plane = _cubic(b, d)
+        sag = q * span_p**2 / (8.0 * H_plane * cos)
+        tan = dh_p / span_p
+        T_max = np.hypot(H_plane, H_plane * np.abs(tan) + q * span_p / (2.0 * cos))
+        length = chord * (1.0 + (q * span_p * cos) ** 2 / (24.0 * H_plane**2))
+    H = H_plane * span / span_p
+    blowout = np.arctan2(wind, w)
+    out = dict(H=H, H_plane=H_plane, sag=sag, T_max=T_max, length=length, blowout=blowout)
+    for name, value in out.items():
+        if not np.all(np.isfinite(value)):
+            raise ConvergenceError(f"change_of_state: non-finite {name} for these data")
+    out.update(w=w, t=t, wind=wind)
+    if shape == ():
+        out = {key: float(value) for key, value in out.items()}
+    return ChangeOfState(**out, L0=float(L0), H0=float(H0_out), sag0=float(sag0_out), model=model)
+
+
+def sag_tension_table(
+    span, dh, *, EA, alpha, w0, t0, H0=None, sag0=None, temperatures, load_cases, model="catenary"
+):
+    """Sag-tension table: a pandas DataFrame over load case × temperature.
+
+    ``load_cases`` maps a case name to ``(w, wind)`` (vertical load per length
+    including ice, transverse wind per length); ``temperatures`` is a
+    sequence. The other arguments are those of `change_of_state`. The index
+    is ``(case, t)``; the columns ``w, wind, H, sag, T_max, length,
+    blowout_deg``.
+    """
+    import pandas as pd
+
+    if not isinstance(load_cases, dict) or not load_cases:
+        raise InputError("load_cases", "must be a non-empty dict name -> (w, wind)")
+    temps = np.atleast_1d(real("temperatures", temperatures))
+    if temps.ndim != 1:
+        raise InputError("temperatures", f"must be a 1-D sequence, got shape {temps.shape}")
+    names = list(load_cases)
+    try:
+        loads = np.array([[float(v) for v in load_cases[n]] for n in names], dtype=float)
+    except (TypeError, ValueError) as exc:
+        raise InputError("load_cases", f"each value must be a pair (w, wind) of numbers ({exc})") from None
+    if loads.shape != (len(names), 2):
+        raise InputError("load_cases", "each value must be a pair (w, wind)")
+    res = change_of_state(
+        span, dh, EA=EA, alpha=alpha, w0=w0, t0=t0, H0=H0, sag0=sag0,
+        w=loads[:, :1], t=temps[None, :], wind=loads[:, 1:], model=model,
+    )  # fmt: skip
+    index = pd.MultiIndex.from_product([names, temps], names=["case", "t"])
+    data = {
+        "w": np.repeat(loads[:, 0], temps.size),
+        "wind": np.repeat(loads[:, 1], temps.size),
+        "H": np.ravel(res.H),
+        "sag": np.ravel(res.sag),
+        "T_max": np.ravel(res.T_max),
+        "length": np.ravel(res.length),
+        "blowout_deg": np.degrees(np.ravel(res.blowout)),
+    }
+    return pd.DataFrame(data, index=index)

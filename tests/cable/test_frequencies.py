@@ -1,0 +1,142 @@
+"""Natural frequencies: Irvine's closed forms for small sag, the taut string,
+the crossover at lambda^2 = 4 pi^2, mode counts, orthogonality, errors."""
+
+import numpy as np
+import pytest
+
+from skcable import cable
+from skcable.errors import InputError
+
+L, W, H = 100.0, 10.0, 12500.0  # sag/span = wL/8H = 1 %
+
+
+def _EA_for(lambda2, L=L, w=W, H=H):
+    """EA giving Irvine's lambda^2 = (wL/H)^2 L EA / (H L_e), L_e = L (1 + 8 (d/L)^2)."""
+    d = w * L**2 / (8 * H)
+    L_e = L * (1 + 8 * (d / L) ** 2)
+    return lambda2 * H * L_e / ((w * L / H) ** 2 * L)
+
+
+def _irvine_by_hand(lambda2, n_modes, L=L, w=W, H=H, g=9.81):
+    """Irvine's frequencies from the textbook formulas, roots by a dense scan + bisection."""
+    c = np.sqrt(H * g / w)
+    sym = []
+    for j in range(1, n_modes + 1):  # tan(b) = b - 4 b^3 / lambda2 on ((j-1/2) pi, (j+1/2) pi)
+        lo, hi = (j - 0.5) * np.pi + 1e-12, (j + 0.5) * np.pi - 1e-12
+        for _ in range(200):
+            mid = 0.5 * (lo + hi)
+            if np.tan(mid) - mid + 4 / lambda2 * mid**3 > 0:
+                hi = mid
+            else:
+                lo = mid
+        sym.append(0.5 * (lo + hi) * c / (np.pi * L))
+    anti = [j * c / L for j in range(1, n_modes + 1)]
+    return np.sort(np.array(sym + anti))[:n_modes], np.arange(1, n_modes + 1) * c / (2 * L)
+
+
+@pytest.mark.parametrize("lambda2", [0.5, 10.0, 100.0, 400.0, 2000.0])
+def test_irvine_within_one_percent_for_small_sag(lambda2):
+    r = cable.natural_frequencies(L, 0.0, W, _EA_for(lambda2), H=H)
+    in_plane, out_of_plane = _irvine_by_hand(lambda2, 6)
+    assert r.lambda2 == pytest.approx(lambda2, rel=1e-5)  # L_e = ∫ sec^3 vs L (1 + 8 (d/L)^2)
+    assert r.f_in_plane == pytest.approx(in_plane, rel=1e-2)
+    assert r.f_out_of_plane == pytest.approx(out_of_plane, rel=1e-2)
+    # the closed form returned beside the FE result is the same textbook formula
+    assert r.irvine["in_plane"] == pytest.approx(in_plane, rel=1e-12)
+    assert r.irvine["out_of_plane"] == pytest.approx(out_of_plane, rel=1e-14)
+    assert r.irvine["lambda2"] == pytest.approx(lambda2, rel=1e-12)
+
+
+def test_taut_string_limit():
+    # w -> 0: sag/span ~ 1e-6, lambda^2 ~ 1e-6: both families are the string's n c / 2L
+    w, H_s, EA = 1e-3, 1e4, 1e8
+    r = cable.natural_frequencies(L, 0.0, w, EA, H=H_s, n_modes=8)
+    string = np.arange(1, 9) * np.sqrt(H_s * 9.81 / w) / (2 * L)
+    assert r.f_in_plane == pytest.approx(string, rel=1e-4)
+    assert r.f_out_of_plane == pytest.approx(string, rel=1e-4)
+    assert r.irvine["in_plane"] == pytest.approx(string, rel=1e-4)
+    # mode shapes sin(n pi x / L), up to sign and normalisation
+    for n in range(1, 9):
+        exact = np.sin(n * np.pi * r.x / L)
+        for shape in (r.modes_in_plane[n - 1], r.modes_out_of_plane[n - 1]):
+            cos = abs(shape @ exact) / (np.linalg.norm(shape) * np.linalg.norm(exact))
+            assert cos == pytest.approx(1.0, abs=1e-8)
+
+
+def test_inclined_taut_string_limit():
+    # an inclined taut wire: the string along the chord, tension H / cos psi,
+    # mass w/g per chord length: f_n = n / (2 L_c) sqrt(T / m), L_c = L / cos psi
+    dh, w, H_s = 40.0, 1e-3, 1e4
+    r = cable.natural_frequencies(L, dh, w, 1e8, H=H_s, n_modes=4)
+    chord = np.hypot(L, dh)
+    string = np.arange(1, 5) / (2 * chord) * np.sqrt(H_s * chord / L / (w / 9.81))
+    assert r.f_out_of_plane == pytest.approx(string, rel=1e-4)
+    assert r.f_in_plane == pytest.approx(string, rel=1e-4)
+
+
+def test_crossover_at_four_pi_squared():
+    # closed form: at lambda^2 = 4 pi^2 the first symmetric root is beta = pi, i.e. c / L
+    c = np.sqrt(H * 9.81 / W)
+    at = cable.irvine_frequencies(L, W, _EA_for(4 * np.pi**2), H, n_modes=2)
+    assert at["in_plane"] == pytest.approx([c / L, c / L], rel=1e-9)
+    below = cable.natural_frequencies(L, 0.0, W, _EA_for(0.8 * 4 * np.pi**2), H=H, n_modes=3)
+    above = cable.natural_frequencies(L, 0.0, W, _EA_for(1.2 * 4 * np.pi**2), H=H, n_modes=3)
+    assert below.in_plane_symmetric.tolist() == [True, False, True]
+    assert above.in_plane_symmetric.tolist() == [False, True, True]
+    assert below.irvine["in_plane_symmetric"].tolist() == [True, False, True]
+    assert above.irvine["in_plane_symmetric"].tolist() == [False, True, True]
+
+
+@pytest.mark.parametrize("n_modes", [1, 3, 10])
+def test_mode_counts_and_orthogonality(n_modes):
+    r = cable.natural_frequencies(300.0, 20.0, 15.0, 2e7, sag=9.0, n_modes=n_modes)
+    assert r.f_in_plane.shape == r.f_out_of_plane.shape == (n_modes,)
+    assert r.modes_in_plane.shape == r.modes_out_of_plane.shape == (n_modes, r.x.size)
+    assert np.all(np.diff(r.f_in_plane) > 0) and np.all(np.diff(r.f_out_of_plane) > 0)
+    assert r.sag == pytest.approx(9.0, rel=1e-12)
+    for modes, K, f in (
+        (r.modes_in_plane, r.stiffness_in_plane, r.f_in_plane),
+        (r.modes_out_of_plane, r.stiffness_out_of_plane, r.f_out_of_plane),
+    ):
+        phi = modes[:, 1:-1].T
+        assert phi.T @ r.mass @ phi == pytest.approx(np.eye(n_modes), abs=1e-10)
+        assert phi.T @ K @ phi == pytest.approx(
+            np.diag((2 * np.pi * f) ** 2), rel=1e-10, abs=1e-8 * f[-1] ** 2
+        )
+        assert np.all(modes[:, 0] == 0) and np.all(modes[:, -1] == 0)
+
+
+def test_given_H_or_sag_agree():
+    a = cable.natural_frequencies(300.0, 0.0, 15.0, 2e7, sag=9.0, n_modes=3)
+    b = cable.natural_frequencies(300.0, 0.0, 15.0, 2e7, H=a.H, n_modes=3)
+    assert b.f_in_plane == pytest.approx(a.f_in_plane, rel=1e-12)
+
+
+@pytest.mark.parametrize(
+    "kw, argument",
+    [
+        (dict(H=1e4, sag=2.0), "constraint"),
+        (dict(), "constraint"),
+        (dict(H=-1.0), "H"),
+        (dict(sag=0.0), "sag"),
+        (dict(H=1e4, n_modes=0), "n_modes"),
+        (dict(H=1e4, n_modes=2.0), "n_modes"),
+        (dict(H=1e4, n_modes=True), "n_modes"),
+        (dict(H=1e4, n_modes=61), "n_modes"),
+        (dict(H=1e4, g=0.0), "g"),
+        (dict(H=[1e4, 2e4]), "H"),
+    ],
+)
+def test_bad_input(kw, argument):
+    with pytest.raises(InputError) as info:
+        cable.natural_frequencies(100.0, 0.0, 10.0, 1e7, **kw)
+    assert info.value.argument == argument
+
+
+def test_bad_input_positional():
+    with pytest.raises(InputError, match="EA"):
+        cable.natural_frequencies(100.0, 0.0, 10.0, -1e7, H=1e4)
+    with pytest.raises(InputError, match="w"):
+        cable.natural_frequencies(100.0, 0.0, np.nan, 1e7, H=1e4)
+    with pytest.raises(InputError, match="dh"):
+        cable.natural_frequencies(100.0, np.inf, 10.0, 1e7, H=1e4)
