@@ -214,6 +214,15 @@ def test_demo_writes_results(tmp_path):
     for name in ("stick.csv", "stick-slip.pvd", "stick-slip_wires.pvd", "capacity.png", "slip_fraction.png"):
         assert (tmp_path / "results" / name).exists(), name
     assert not [p for p in (tmp_path / "results").iterdir() if p.name.startswith(".")]  # no stage left
+    # one last state everywhere: the time series ends where the CSV ends (the rupture strain)
+    import xml.etree.ElementTree as ET
+
+    for name in ("stick", "stick-slip"):
+        times = [
+            float(d.get("timestep")) for d in ET.parse(tmp_path / "results" / f"{name}.pvd").iter("DataSet")
+        ]
+        csv = np.loadtxt(tmp_path / "results" / f"{name}.csv", delimiter=",", skiprows=1)
+        assert times[-1] == pytest.approx(csv[-1, 0], rel=1e-12)
 
 
 def test_bare_skcable_prints_help_and_runs_nothing(tmp_path):
