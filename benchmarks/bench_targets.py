@@ -7,7 +7,8 @@
 - the default ``capacity_curve()`` of every preset, intact and with one broken wire;
 - the 10,000-element catenary solved by the BVP's graph form (P2, to 1e-10).
 
-Times are the minimum of ``--repeats`` runs (the machine may be shared).
+Times are the minimum of ``--repeats`` runs (three times as many for the millisecond BVP
+solve; the machine may be shared).
 
 Run:  python benchmarks/bench_targets.py [--repeats 5]   (OpenSeesPy: pip install ".[bench]";
       Debian's libblas3 liblapack3)        writes docs/speed_targets.md
@@ -88,7 +89,8 @@ def main(argv=None):
             )
     ref = cable.catenary(800.0, -20.0, 20.0, low=-30.0)
     t_bvp = best(
-        lambda: cable.solve_bvp(800.0, -20.0, cable.SelfWeight(20.0), n_elements=10_000, length=ref.length), r
+        lambda: cable.solve_bvp(800.0, -20.0, cable.SelfWeight(20.0), n_elements=10_000, length=ref.length),
+        3 * r,
     )
     rows.append(
         ("10k-element catenary, BVP graph form (P2, 1e-10)", f"{t_bvp * 1e3:.1f} ms", "target <= 25 ms")
