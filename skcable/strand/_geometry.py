@@ -51,6 +51,8 @@ class Layer:
     phase : float
         Rotation of the layer (rad): wire j sits at ``phase + 2 pi j / count`` from +z.
 
+    Notes
+    -----
     Every number must be finite; booleans, strings and arrays are refused
     (InputError naming the argument). Numbers are stored as Python int/float.
     """
