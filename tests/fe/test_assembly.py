@@ -63,9 +63,10 @@ def test_vector_and_matrix_equal_scikit_fem_forms(setup):
     np.testing.assert_allclose(asmb.interpolate(U), g, rtol=0, atol=1e-12 * np.max(np.abs(g)))
 
 
-def test_banded_solve_equals_sparse_solve(setup):
-    asmb, _ = setup
-    rng = np.random.default_rng(2)
+def _positive_system(asmb, seed):
+    """A symmetric positive-definite section tangent, its banded free block, a right-hand side and
+    the sparse solution to compare with."""
+    rng = np.random.default_rng(seed)
     ne, nq = asmb.dx.shape
     A = rng.standard_normal((len(STRAINS), len(STRAINS), ne, nq))
     D = np.einsum("abeq,cbeq->aceq", A, A) + 0.1 * np.eye(len(STRAINS))[:, :, None, None]
@@ -74,8 +75,13 @@ def test_banded_solve_equals_sparse_solve(setup):
     system = asmb.banded(free)
     ab = system.add_elements(system.band(), asmb.element_matrices(D))
     b = rng.standard_normal(len(free))
+    return K, free, system, ab, b, spla.spsolve(K[free][:, free].tocsc(), b)
+
+
+def test_banded_solve_equals_sparse_solve(setup):
+    asmb, _ = setup
+    K, free, system, ab, b, expected = _positive_system(asmb, 2)
     x = system.solve(ab, b)
-    expected = spla.spsolve(K[free][:, free].tocsc(), b)
     np.testing.assert_allclose(x, expected, rtol=1e-9, atol=1e-12 * np.max(np.abs(expected)))
     assert system.kl < len(free) // 2  # ordered along the axis: a narrow band
     ab = system.add_sparse(system.band(), K)  # the same matrix from CSR
@@ -126,16 +132,7 @@ def test_newton_converges_quadratically_and_stops_on_stagnation():
 
 def test_banded_cholesky_equals_sparse_solve_and_refuses_indefinite(setup):
     asmb, _ = setup
-    rng = np.random.default_rng(5)
-    ne, nq = asmb.dx.shape
-    A = rng.standard_normal((len(STRAINS), len(STRAINS), ne, nq))
-    D = np.einsum("abeq,cbeq->aceq", A, A) + 0.1 * np.eye(len(STRAINS))[:, :, None, None]
-    K = asmb.matrix(D)
-    free = np.setdiff1d(np.arange(asmb.N), [0, 3, asmb.N - 1])
-    system = asmb.banded(free)
-    ab = system.add_elements(system.band(), asmb.element_matrices(D))
-    b = rng.standard_normal(len(free))
-    expected = spla.spsolve(K[free][:, free].tocsc(), b)
+    K, free, system, ab, b, expected = _positive_system(asmb, 5)
     np.testing.assert_allclose(
         system.solve_positive(ab, b), expected, rtol=1e-9, atol=1e-12 * np.abs(expected).max()
     )
