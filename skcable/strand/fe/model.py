@@ -26,7 +26,7 @@ from skcable._checks import nonnegative, positive
 from skcable.errors import ConvergenceError, InputError
 from skcable.fe import StrainAssembly, minimize, newton
 from skcable.strand.capacity import StepResult, StrandLayout, capacity_curve
-from skcable.strand.fe.slip import slip_law
+from skcable.strand.fe.slip import SlipLaw, slip_law
 from skcable.strand.fe.terms import (
     FIELDS,
     STRAINS,
@@ -133,8 +133,8 @@ class StrandModel:
         else:
             self.damage_load = "custom"
         self.terms = check_terms(physics) + check_terms(terms)
-        wires = [t for t in self.terms if isinstance(t, HelicalWires)]
-        self.slip = wires[0].slip if wires else slip_law("none", mu)
+        laws = [t.slip for t in self.terms if isinstance(getattr(t, "slip", None), SlipLaw)]
+        self.slip = laws[0] if laws else slip_law("none", mu)
         if self.slip.name != "none" and len(strand.layers) != 1:
             raise InputError("slip", "slip models need a single helical layer (1x7-type strands)")
         self.mesh = self._mesh(n_elements, mesh, grading)
@@ -309,33 +309,28 @@ class StrandModel:
             K = K + Kt
         return a["R"], K, a["outputs"]
 
-    def _increment(self, a):
+    def _band_of(self, a) -> np.ndarray:
+        """The free–free tangent of an assembly in band storage (section terms and the others)."""
         ab = self._band.band()
         if a["Ke"] is not None:
             self._band.add_elements(ab, a["Ke"])
         for Kt in a["extra"]:
             self._band.add_sparse(ab, Kt)
+        return ab
+
+    def _increment(self, a):
         dU = np.zeros(self.assembly.N)
-        dU[self.free] = self._band.solve(ab, -a["R"][self.free])
+        dU[self.free] = self._band.solve(self._band_of(a), -a["R"][self.free])
         return dU
 
     # --- solution ----------------------------------------------------------------
     def _increment_positive(self, a, mu):
-        """``-(K + mu K0)⁻¹ R`` by banded Cholesky (raises LinAlgError when not positive definite)."""
-        ab = self._band.band()
-        if a["Ke"] is not None:
-            self._band.add_elements(ab, a["Ke"])
-        for Kt in a["extra"]:
-            self._band.add_sparse(ab, Kt)
+        """``-(K + mu K0)⁻¹ R`` by banded Cholesky (raises LinAlgError when not positive definite);
+        K0 is the tangent of the straight, unstrained strand (positive definite), built on first use."""
         if mu != 0.0 and self._metric is None:
-            straight = self._assemble(np.zeros(self.assembly.N), self.initial_state(), 0.0)
-            self._metric = self._band.band()
-            if straight["Ke"] is not None:
-                self._band.add_elements(self._metric, straight["Ke"])
-            for Kt in straight["extra"]:
-                self._band.add_sparse(self._metric, Kt)
+            self._metric = self._band_of(self._assemble(np.zeros(self.assembly.N), self.initial_state(), 0.0))
         dU = np.zeros(self.assembly.N)
-        dU[self.free] = self._band.solve_positive(ab, -a["R"][self.free], self._metric, mu)
+        dU[self.free] = self._band.solve_positive(self._band_of(a), -a["R"][self.free], self._metric, mu)
         return dU
 
     def _newton(self, U, strain, state, tol, max_iter):

@@ -49,7 +49,7 @@ from skcable._checks import nonnegative, positive, real
 from skcable.errors import InputError
 from skcable.fe.assembly import contract
 from skcable.strand._bending import critical_curvature
-from skcable.strand.fe.slip import SlipLaw, slip_law
+from skcable.strand.fe.slip import slip_law
 
 __all__ = [
     "Step",
@@ -64,6 +64,7 @@ __all__ = [
     "NodalSpring",
     "STRAINS",
     "FIELDS",
+    "critical_curvature_table",
 ]
 
 FIELDS = ("u", "v", "w", "phi")
@@ -589,16 +590,9 @@ class SinusoidalDamageLoads(Term):
         return -float(self.loads(step.strain) @ U)
 
 
-def is_section_term(term) -> bool:
-    return isinstance(term, SectionTerm)
-
-
 def check_terms(terms) -> list:
     out = list(terms)
     for i, t in enumerate(out):
         if not isinstance(t, Term):
             raise InputError("terms", f"item {i} is not a Term: {t!r}")
     return out
-
-
-__all__ += ["SlipLaw", "critical_curvature_table"]
