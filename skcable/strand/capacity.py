@@ -322,10 +322,12 @@ def capacity_curve(
 
     ``n_steps`` (default 60) strain increments, half of them up to twice the
     yield strain and half from there to ``max_strain`` (default 1.5 eps_rupture;
-    the curve stops at the first wire rupture). A step that fails is halved up
-    to 6 times; the slip state is frozen in each Newton solve and updated
-    between solves (at most ``state_passes``). When a step still fails,
-    ``on_failure="raise"`` (default) raises ConvergenceError;
+    the curve stops at the first wire rupture, interpolated to the strain where the
+    most strained wire reaches eps_rupture, and its last step is solved there). A step
+    that fails is halved; the cut increment is kept until two steps in a row converge
+    at it (then it doubles), down to 1/64 of the schedule's step. The slip state is
+    frozen in each Newton solve and updated between solves (at most ``state_passes``).
+    When a step still fails, ``on_failure="raise"`` (default) raises ConvergenceError;
     ``on_failure="stop"`` returns the converged part with ``failure`` set.
     ``callback(step, done)``, if given, is called after every converged step
     with its `StepResult` and the fraction of the strain schedule done
@@ -411,8 +413,6 @@ def capacity_curve(
             strains.append(step.strain)
             forces.append(step.force)
             fractions.append(step.slip_fraction)
-            if callback is not None:
-                callback(step, eps / schedule[-1])
             if step.wire_strain.size and np.max(step.wire_strain) >= material.eps_rupture:
                 # end the curve where the most strained wire reaches its rupture strain
                 before = np.max(steps[-2].wire_strain) if len(steps) > 1 else 0.0
@@ -427,6 +427,9 @@ def capacity_curve(
                     steps[-1] = model.solve(strains[-1], guess, steps[-2].state if len(steps) > 1 else None)
                 except ConvergenceError:
                     pass  # keep the step beyond rupture: the curve itself ends at the rupture strain
+            if callback is not None:
+                callback(steps[-1], 1.0 if ruptured else eps / schedule[-1])
+            if ruptured:
                 break
         if ruptured or failure:
             break
