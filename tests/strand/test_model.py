@@ -382,3 +382,14 @@ def test_a_failing_curve_costs_at_most_twice_a_successful_one():
         and failed.strain[-1] == pytest.approx(0.01, rel=1e-3)
     )
     assert BreaksBeyond.calls <= 2 * success
+
+
+def test_summaries_are_short():
+    """print(curve) printed 58,761 lines: curve, step and model now print one line each."""
+    model = strand.StrandModel(strand.preset("steel-9.5").damaged(1), 0.3, n_elements=8)
+    curve = model.capacity_curve(n_steps=8)
+    for thing in (curve, curve.steps[-1], model):
+        text = repr(thing)
+        assert "\n" not in text and len(text) < 600, text
+    assert f"{curve.K_Leq:.6g}" in repr(curve) and "ruptured" in repr(curve)
+    assert f"{curve.steps[-1].strain:.6g}" in repr(curve.steps[-1])
