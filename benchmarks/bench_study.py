@@ -1,6 +1,6 @@
 """Speed-up of a parameter study on a local Dask cluster against serial, same process.
 
-The study is Pino Vidal's (2021) 16-run grid (studies/seed003_tables_4_1_4_2.toml): 4 strands x
+The study is Pino Vidal's (2021) 16-run grid (studies/pino_vidal_2021_tables_4_1_4_2.toml): 4 strands x
 2 damage patterns x 2 models. Runs it serially, then on a local cluster of 2 single-threaded
 worker processes (this machine has 2 cores), checks that both tables are identical (all
 columns but the run time) and prints the wall times and their ratio.
