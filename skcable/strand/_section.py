@@ -109,9 +109,9 @@ class Section:
     """
 
     def __init__(self, strand):
-        from skcable.strand._geometry import Strand
-
-        if not isinstance(strand, Strand):
+        # a strand is what gives its wires and material (no import of the geometry module:
+        # the strand builds its section, not the other way round)
+        if not (callable(getattr(strand, "wires", None)) and hasattr(strand, "material")):
             raise InputError("strand", f"must be a Strand (e.g. strand.preset('steel-9.5')), got {strand!r}")
         self.strand = strand
         self.wires = w = strand.wires()
