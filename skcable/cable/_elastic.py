@@ -22,7 +22,7 @@ from functools import cached_property
 
 import numpy as np
 
-from skcable._checks import broadcast, float_range, positive, real, require
+from skcable._checks import broadcast, float_range, nonnegative, positive, real, require
 from skcable._xp import namespace
 from skcable.cable._catenary import _finite_at, catenary
 from skcable.cable._roots import find_root
@@ -179,6 +179,16 @@ class ElasticCatenary(CableSolution):
     def weight_per_length(self, x, slope):
         return self.w + 0.0 * slope
 
+    def stiffness(self):
+        """Fairlead stiffness ``∂(H, V_B)/∂(span, dh)`` with A fixed, shape ``(*shape, 2, 2)``.
+
+        Rows ``(H, V_B)``, columns ``(span, dh)``: the inverse of the Jacobian of
+        the closure equations (implicit function theorem), at constant length.
+        """
+        from skcable.cable._seabed import stiffness_matrix
+
+        return stiffness_matrix(self)
+
     @cached_property
     def stretched_length(self):
         """Length of the loaded cable, ``L0 + ∫ T/EA ds``."""
@@ -232,7 +242,7 @@ class ElasticCatenary(CableSolution):
         yield from self._common_residuals(xp)
 
 
-def elastic_catenary(span, dh, w, EA, *, length):
+def elastic_catenary(span, dh, w, EA, *, length, seabed=None, friction=0.0):
     """Elastic (Irvine) catenary from A = (0, 0) to B = (span, dh).
 
     Parameters
@@ -246,13 +256,26 @@ def elastic_catenary(span, dh, w, EA, *, length):
     length : float or array_like
         Unstretched length (m), > 0; it may be shorter than the chord (the
         cable then stretches to reach B).
+    seabed : float or array_like, optional
+        Height of a flat seabed relative to A (m), ``<= 0``. With ``seabed=0``
+        (the anchor on the seabed) the part of the line that would hang below
+        A rests on it (J.M. Jonkman, "Dynamics modeling and loads analysis of
+        an offshore floating wind turbine", NREL, 2007); below A the line must
+        stay above it (a touchdown between A and B raises `InputError`).
+        B must lie above the seabed.
+    friction : float or array_like, optional
+        Coulomb friction coefficient of the grounded part, ``>= 0``; only with
+        a ``seabed``.
 
     Returns
     -------
     ElasticCatenary
         ``H, V_A, V_B, T_A, T_B, length`` (unstretched), ``stretched_length``,
         ``sag``, the lowest point ``x_low, y_low``, the vertex ``x_vertex,
-        y_vertex``, ``y(x), T(x), slope(x), residual()``.
+        y_vertex``, ``y(x), T(x), slope(x), residual()``, ``stiffness()``.
+    SeabedCatenary
+        With a ``seabed``: the same forces and maps plus ``H_A``,
+        ``length_on_seabed``, ``x_touchdown``, ``T_of_s(s)``, ``suspended``.
 
     Raises
     ------
@@ -266,6 +289,15 @@ def elastic_catenary(span, dh, w, EA, *, length):
     w = positive("w", w)
     EA = positive("EA", EA)
     L0 = positive("length", length)
+    if seabed is not None:
+        seabed = real("seabed", seabed)
+        friction = nonnegative("friction", friction)
+        broadcast(span=span, dh=dh, w=w, EA=EA, length=L0, seabed=seabed, friction=friction)
+        from skcable.cable._seabed import seabed_catenary
+
+        return seabed_catenary(span, dh, w, EA, L0, seabed, friction)
+    if friction is not None and np.any(np.asarray(friction) != 0.0):
+        raise InputError("friction", "applies to a line on the seabed: give seabed= as well")
     broadcast(span=span, dh=dh, w=w, EA=EA, length=L0)
     try:
         H, V_A, history = _solve(span, dh, w, EA, L0)
