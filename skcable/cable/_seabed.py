@@ -102,9 +102,12 @@ def _solve_grounded(span, dh, w, EA, L, mu_w, H0):
     f_x, f_z, *jac = grounded_closure(span, dh, w, EA, L, mu_w, H, V)
     norm = np.maximum(np.abs(f_x), np.abs(f_z)) / chord
     history = [largest_abs(norm)]
+    polish = 0
     for _ in range(80):
         if history[-1] < _TOL:
-            return H, V, history
+            polish += 1  # one more step into the round-off floor
+            if polish > 1:
+                return H, V, history
         j_xh, j_xv, j_zh, j_zv = jac
         det = j_xh * j_zv - j_xv * j_zh
         d_h = -(f_x * j_zv - f_z * j_xv) / det
@@ -354,6 +357,16 @@ def seabed_catenary(span, dh, w, EA, L0, seabed, friction):
     L_B = np.zeros(shape)
     history = []
     if contact.any():
+        # H -> 0: B holds the hanging V_0 (Z = V/w + V^2/(2 EA w)) and the rest lies at
+        # X_0 = L - V_0/w; a shorter span leaves line in a heap on the seabed (H = 0)
+        v_0 = 2.0 * w * dh / (1.0 + np.sqrt(1.0 + 2.0 * w * dh / EA))
+        heap = contact & np.broadcast_to(span <= L0 - v_0 / w, shape)
+        if heap.any():
+            raise InputError(
+                "length",
+                "leaves slack line lying in a heap on the seabed (span <= length - hanging length, "
+                "H = 0): give a shorter line or a longer span",
+            )
         args = [np.broadcast_to(v, shape)[contact] for v in (span, dh, w, EA, L0, friction * w, H)]
         Hc, Vc, history = _solve_grounded(*args)
         H[contact], V_t[contact] = Hc, 0.0
