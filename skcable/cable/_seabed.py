@@ -79,8 +79,9 @@ def _inextensible_guess(span, dh, w, EA, L, H0):
     h_max = np.where(ok, (L1 * L1 - dh * dh) / (2.0 * np.where(ok, dh, 1.0)), 1.0)
 
     def f(h, span, dh, L1):
-        v = np.sqrt(dh * dh + 2.0 * dh * h)
-        return L1 - v + h * np.arcsinh(v / h) - span
+        xp = namespace(h, span)
+        v = xp.sqrt(dh * dh + 2.0 * dh * h)
+        return L1 - v + h * xp.arcsinh(v / h) - span
 
     lo, hi = h_max * 1e-12, h_max
     f_lo, f_hi = f(lo, span, dh, L1), f(hi, span, dh, L1)
@@ -88,7 +89,11 @@ def _inextensible_guess(span, dh, w, EA, L, H0):
     h = np.where(f_lo >= 0, lo, hi)
     if inside.any():
         idx = np.flatnonzero(inside)
-        root, _ = find_root(f, lo[idx], hi[idx], (span[idx], dh[idx], L1[idx]), what="seabed guess")
+        args = [v[idx] for v in (lo, hi, span, dh, L1)]
+        if idx.size == 1:  # Brent's method on floats: the elementwise search costs ~10 ms a call
+            args = [float(v[0]) for v in args]
+        # a starting point only: Newton on the full equations refines it
+        root, _ = find_root(f, args[0], args[1], tuple(args[2:]), what="seabed guess", xtol=1e-9 * args[1])
         h[idx] = root
     h = np.where(ok, h, H0 / w)
     V = np.where(ok, np.sqrt(dh * dh + 2.0 * dh * h), w * L * (1 - 1e-9))
@@ -220,7 +225,7 @@ class SeabedCatenary(CableSolution):
         L_B = self.length_on_seabed
         hang = self.suspended
         tv = self.w * np.maximum(s - L_B, 0.0) - hang.V_A
-        return np.where(s <= L_B, self._grounded_tension(np.minimum(s, L_B)), np.hypot(self.H, tv))
+        return _out(np.where(s <= L_B, self._grounded_tension(np.minimum(s, L_B)), np.hypot(self.H, tv)))
 
     def x_of_s(self, s):
         """Abscissa of the material point ``s`` (unstretched arc length from A)."""
@@ -229,13 +234,13 @@ class SeabedCatenary(CableSolution):
         d = np.maximum(np.minimum(s, L_B) - (L_B - ell), 0.0)
         ground = np.minimum(s, L_B) + (self.H_A * d + 0.5 * self._mu_w * d * d) / self.EA
         hang = self.suspended.x_of_s(np.maximum(s - L_B, 0.0))
-        return np.where(s <= L_B, ground, self.x_touchdown + hang)
+        return _out(np.where(s <= L_B, ground, self.x_touchdown + hang))
 
     def y_of_s(self, s):
         """Height above A of the material point ``s`` (0 on the seabed)."""
         s = self._arc("s", s)
         L_B = self.length_on_seabed
-        return np.where(s <= L_B, 0.0, self.suspended.y_of_s(np.maximum(s - L_B, 0.0)))
+        return _out(np.where(s <= L_B, 0.0, self.suspended.y_of_s(np.maximum(s - L_B, 0.0))))
 
     def _arc(self, name, s):
         s = real(name, s)
@@ -259,16 +264,16 @@ class SeabedCatenary(CableSolution):
         b = 1.0 + self.H_A / self.EA
         d = 2.0 * c / (b + np.sqrt(b * b + 2.0 * self._mu_w * c / self.EA))
         ground = np.minimum(np.where(x <= a, x, a + d), L_B)
-        return np.where(grounded, ground, L_B + self.suspended.s_of_x(xs))
+        return _out(np.where(grounded, ground, L_B + self.suspended.s_of_x(xs)))
 
     def y(self, x):
         """Height above A at abscissa ``x`` (0 on the seabed)."""
         x, grounded, xs = self._split(x)
-        return np.where(grounded, 0.0, self.suspended.y(xs))
+        return _out(np.where(grounded, 0.0, self.suspended.y(xs)))
 
     def slope(self, x):
         x, grounded, xs = self._split(x)
-        return np.where(grounded, 0.0, self.suspended.slope(xs))
+        return _out(np.where(grounded, 0.0, self.suspended.slope(xs)))
 
     def T(self, x):
         """Tension at abscissa ``x`` (N)."""
@@ -314,6 +319,11 @@ class SeabedCatenary(CableSolution):
         )[2:]
         ground = _inverse(*jac)
         return np.where(np.asarray(grounded)[..., None, None], ground, free)
+
+
+def _out(value):
+    """A 0-d result as a Python float (scalar in, scalar out)."""
+    return float(value) if np.ndim(value) == 0 else value
 
 
 def _inverse(j11, j12, j21, j22):
