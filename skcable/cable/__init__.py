@@ -12,7 +12,8 @@ from skcable.cable._elastic import ElasticCatenary, elastic_catenary
 from skcable.cable._funicular import Funicular, FunicularVertical, funicular, funicular_vertical
 from skcable.cable._loads import DeckLoad, DistributedLoad, PointLoad, SelfWeight
 from skcable.cable._parabola import Parabola, parabola
-from skcable.cable._stiffness import geometric_stiffness, geometric_stiffness_series
+from skcable.cable._seabed import SeabedCatenary
+from skcable.cable._stiffness import fairlead_stiffness, geometric_stiffness, geometric_stiffness_series
 from skcable.cable._supports import SlidingLoad, anchor_block_weight, ring_on_rod, sliding_load
 from skcable.cable._surfaces import capstan, membrane_tension, smooth_surface_reaction, sphere_parallel
 from skcable.cable.bvp import (
@@ -45,6 +46,7 @@ __all__ = [
     "CableSolution",
     "Catenary",
     "ElasticCatenary",
+    "SeabedCatenary",
     "Funicular",
     "FunicularVertical",
     "Parabola",
@@ -53,6 +55,7 @@ __all__ = [
     "capstan",
     "catenary",
     "elastic_catenary",
+    "fairlead_stiffness",
     "funicular",
     "funicular_vertical",
     "geometric_stiffness",

@@ -185,9 +185,9 @@ class ElasticCatenary(CableSolution):
         Rows ``(H, V_B)``, columns ``(span, dh)``: the inverse of the Jacobian of
         the closure equations (implicit function theorem), at constant length.
         """
-        from skcable.cable._seabed import stiffness_matrix
+        from skcable.cable._stiffness import elastic_stiffness
 
-        return stiffness_matrix(self)
+        return elastic_stiffness(self)
 
     @cached_property
     def stretched_length(self):

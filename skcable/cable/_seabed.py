@@ -37,6 +37,7 @@ from skcable._xp import namespace
 from skcable.cable._elastic import ElasticCatenary
 from skcable.cable._roots import find_root
 from skcable.cable._special import largest_abs
+from skcable.cable._stiffness import elastic_stiffness, inverse_2x2
 from skcable.cable.solution import ACCEPT, CableSolution, checked_closed_form
 from skcable.errors import ConvergenceError, InputError
 
@@ -313,36 +314,17 @@ class SeabedCatenary(CableSolution):
         closure equations in ``(H, V_B)``, grounded or free, friction included.
         """
         grounded = self.length_on_seabed > 0
-        free = stiffness_matrix(self.suspended)
+        free = elastic_stiffness(self.suspended)
         jac = grounded_closure(
             self.span, self.dh, self.w, self.EA, self.length, self._mu_w, self.H, self.V_B
         )[2:]
-        ground = _inverse(*jac)
+        ground = inverse_2x2(*jac)
         return np.where(np.asarray(grounded)[..., None, None], ground, free)
 
 
 def _out(value):
     """A 0-d result as a Python float (scalar in, scalar out)."""
     return float(value) if np.ndim(value) == 0 else value
-
-
-def _inverse(j11, j12, j21, j22):
-    det = j11 * j22 - j12 * j21
-    out = (
-        np.stack([np.stack([j22, -j12], -1), np.stack([-j21, j11], -1)], -2)
-        / np.asarray(det)[..., None, None]
-    )
-    return out
-
-
-def stiffness_matrix(solution):
-    """``∂(H, V_B)/∂(span, dh)`` of a free `ElasticCatenary` (A fixed, length fixed)."""
-    from skcable.cable._elastic import _closure
-
-    s = solution
-    _, _, j_xh, j_xv, j_yh, j_yv = _closure(s.span, s.dh, s.w, s.EA, s.length, s.H, s.V_A)
-    inv = _inverse(j_xh, j_xv, j_yh, j_yv)  # ∂(H, V_A)/∂(span, dh)
-    return inv * np.array([[1.0], [-1.0]])  # V_B = wL - V_A
 
 
 def seabed_catenary(span, dh, w, EA, L0, seabed, friction):
