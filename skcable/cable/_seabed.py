@@ -327,6 +327,25 @@ def _out(value):
     return float(value) if np.ndim(value) == 0 else value
 
 
+def _lifted(span, dh, w, EA, L):
+    """Whether the line leaves the anchor upwards (no contact), and the lift-off ``H``.
+
+    At lift-off ``V_A = 0``, ``V_B = wL``: the height equation gives
+    ``T + H = P = wL²/D`` with ``D = dh - wL²/(2EA)``, so ``H = (P - (wL)²/P)/2``;
+    the line is lifted where ``span`` reaches the lift-off ``X(H, wL)``. With
+    ``D <= 0`` the line's own stretch exceeds ``dh`` and it always touches.
+    """
+    D = dh - w * L * L / (2.0 * EA)
+    touches = np.asarray(D <= 0)
+    with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
+        P = w * L * L / np.where(touches, 1.0, D)
+        H = 0.5 * (P - (w * L) * (w * L / P))
+        ok = ~touches & (H > 0)
+        H_safe = np.where(ok, H, 1.0)
+        X = H_safe * L / EA + H_safe / w * np.arcsinh(w * L / H_safe)
+    return ~touches & (~ok | (span >= X)), np.where(ok, H, 0.0)
+
+
 def seabed_catenary(span, dh, w, EA, L0, seabed, friction):
     """The checked arguments of `elastic_catenary` with a ``seabed``; see there."""
     from skcable.cable._elastic import elastic_catenary
@@ -334,20 +353,25 @@ def seabed_catenary(span, dh, w, EA, L0, seabed, friction):
     require("seabed", np.asarray(seabed) <= 0, "must be at or below the anchor (A at height 0)", seabed)
     require("dh", np.asarray(dh) > seabed, "must put B above the seabed", dh)
     shape = np.broadcast_shapes(*(np.shape(v) for v in (span, dh, w, EA, L0, seabed, friction)))
-    free = elastic_catenary(span, dh, w, EA, length=L0)
     on_bed = np.broadcast_to(np.asarray(seabed) == 0, shape)
-    below = np.broadcast_to(np.asarray(free.y_low) < seabed, shape) & ~on_bed
-    if below.any():
-        raise InputError(
-            "seabed",
-            "lies above the low point of the freely hanging line with the anchor above it: "
-            "a touchdown between A and B is not supported (put the anchor on the seabed, seabed=0)",
-        )
-    contact = on_bed & np.broadcast_to(np.asarray(free.V_A) > 0, shape)
-    H = np.array(np.broadcast_to(free.H, shape), dtype=float)
-    V_t = np.array(np.broadcast_to(free.V_A, shape), dtype=float)
-    L_B = np.zeros(shape)
+    lifted, H_lift = _lifted(span, dh, w, EA, L0)
+    contact = np.asarray(on_bed & ~np.broadcast_to(lifted, shape))
+    H, V_t, L_B = np.zeros(shape), np.zeros(shape), np.zeros(shape)
     history = []
+    if not contact.all():
+        hanging = np.asarray(~contact)
+        args = [np.broadcast_to(v, shape)[hanging] for v in (span, dh, w, EA, L0)]
+        if shape == ():
+            args = [float(v[0]) for v in args]
+        free = elastic_catenary(*args[:4], length=args[4])
+        below = np.asarray(free.y_low) < np.broadcast_to(seabed, shape)[hanging]
+        if below.any():
+            raise InputError(
+                "seabed",
+                "lies above the low point of the freely hanging line with the anchor above it: "
+                "a touchdown between A and B is not supported (put the anchor on the seabed, seabed=0)",
+            )
+        H[hanging], V_t[hanging] = free.H, free.V_A
     if contact.any():
         # H -> 0: B holds the hanging V_0 (Z = V/w + V^2/(2 EA w)) and the rest lies at
         # X_0 = L - V_0/w; a shorter span leaves line in a heap on the seabed (H = 0)
@@ -359,7 +383,8 @@ def seabed_catenary(span, dh, w, EA, L0, seabed, friction):
                 "leaves slack line lying in a heap on the seabed (span <= length - hanging length, "
                 "H = 0): give a shorter line or a longer span",
             )
-        args = [np.broadcast_to(v, shape)[contact] for v in (span, dh, w, EA, L0, friction * w, H)]
+        strain_guess = np.where(H_lift > 0, np.minimum(H_lift, w * L0), w * L0)
+        args = [np.broadcast_to(v, shape)[contact] for v in (span, dh, w, EA, L0, friction * w, strain_guess)]
         Hc, Vc, history = _solve_grounded(*args)
         H[contact], V_t[contact] = Hc, 0.0
         L_B[contact] = np.maximum(args[4] - Vc / args[2], 0.0)
