@@ -244,3 +244,27 @@ def test_errors(kwargs, name):
     with pytest.raises(InputError) as err:
         cable.elastic_catenary(800.0, dh, 1000.0, 5e8, **args)
     assert err.value.args[0].startswith(name) or name in str(err.value)
+
+
+def test_extreme_magnitudes_converge_or_refuse():
+    # lengths from mm to 100 km, weights and stiffnesses over many decades, with contact
+    rng = np.random.default_rng(11)
+    n = 400
+    span = 10 ** rng.uniform(-3, 5, n)
+    dh = span * 10 ** rng.uniform(-5, 2, n)
+    w, EA = 10 ** rng.uniform(-3, 6, n), 10 ** rng.uniform(3, 13, n)
+    chord = np.hypot(span, dh)
+    L = chord + rng.uniform(0.05, 0.9, n) * (span + dh - chord)
+    cb = rng.choice([0.0, 0.1, 1.0, 10.0], n)
+    solved = 0
+    for args in zip(span, dh, w, EA, L, cb, strict=True):
+        try:
+            r = cable.elastic_catenary(*args[:4], length=args[4], seabed=0.0, friction=args[5])
+        except InputError as err:
+            assert err.argument == "length"  # a heap on the seabed
+            continue
+        solved += r.length_on_seabed > 0
+        assert r.residual() < 1e-10
+        K = r.stiffness()
+        assert np.isfinite(K).all() and K[0, 0] > 0 and K[1, 1] > 0
+    assert solved > 200  # grounded lines
