@@ -51,6 +51,19 @@ def _closure(span, dh, w, EA, L0, H, V_A):
     return f_x, f_y, j_xh, j_xv, j_yh, j_yv
 
 
+def _round_off(span, dh, w, EA, L0, H, V_A, chord):
+    """Round-off floor of the closure residual: a few ulps of its terms over the chord
+    (a strongly stretched line has terms far larger than the span)."""
+    xp = namespace(H, V_A, span, EA)
+    tv_a, tv_b = -V_A, w * L0 - V_A
+    arc = asinh_diff(tv_b / H, tv_a / H)
+    # the operands of the differences that cancel: w L0/2 - V_A and tv_b + tv_a
+    rise = (tv_b - tv_a) * (xp.abs(tv_b) + xp.abs(tv_a)) / (xp.hypot(H, tv_b) + xp.hypot(H, tv_a))
+    terms_x = H * L0 / EA + H / w * xp.abs(arc) + span
+    terms_y = L0 * (0.5 * w * L0 + xp.abs(V_A)) / EA + rise / w + xp.abs(dh)
+    return 16.0 * 2.220446049250313e-16 * xp.maximum(terms_x, terms_y) / chord
+
+
 def _initial_guess(span, dh, w, EA, L0):
     xp = namespace(span, dh, w, EA, L0)
     chord = xp.hypot(span, dh)
@@ -74,6 +87,10 @@ def _solve(span, dh, w, EA, L0):
     history = [largest_abs(norm)]
     for _ in range(60):
         if history[-1] < _TOL:
+            return H, V_A, history
+        # stalled above _TOL: accept if at the round-off of the closure's terms
+        stalled = len(history) > 2 and history[-1] > 0.25 * history[-2]
+        if stalled and np.all(norm <= _round_off(span, dh, w, EA, L0, H, V_A, chord)):
             return H, V_A, history
         j_xh, j_xv, j_yh, j_yv = jac
         det = j_xh * j_yv - j_xv * j_yh
