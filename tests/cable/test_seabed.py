@@ -88,13 +88,13 @@ def test_issue_scene_against_moorpy():
     assert free.H == pytest.approx(-fBH, rel=1e-9) and free.V_B == pytest.approx(-fBV, rel=1e-9)
 
 
-def _random_scenes(n, seed):
+def _random_scenes(n, seed, top=0.98):
     rng = np.random.default_rng(seed)
     span = rng.uniform(20.0, 1500.0, n)
     dh = rng.uniform(1.0, 400.0, n)
     chord = np.hypot(span, dh)
     # between the chord (taut) and span + dh (the L-shape: longer lies in a heap)
-    L = chord + rng.uniform(-0.002, 0.98, n) * (span + dh - chord)
+    L = chord + rng.uniform(-0.002, top, n) * (span + dh - chord)
     w = rng.uniform(50.0, 3000.0, n)
     EA = 10 ** rng.uniform(6.0, 10.0, n)
     cb = rng.choice([0.0, 0.05, 0.3, 1.0, 5.0], n)
@@ -268,3 +268,26 @@ def test_extreme_magnitudes_converge_or_refuse():
         K = r.stiffness()
         assert np.isfinite(K).all() and K[0, 0] > 0 and K[1, 1] > 0
     assert solved > 200  # grounded lines
+
+
+def test_frictionless_stiffness_is_symmetric_friction_breaks_it():
+    # without friction the line is conservative: K = ∂(H, V_B)/∂(span, dh) is a Hessian
+    args = _random_scenes(60, 13, top=0.8)
+    r = cable.elastic_catenary(*args[:4], length=args[4], seabed=0.0)
+    K = r.stiffness()
+    np.testing.assert_allclose(K[..., 0, 1], K[..., 1, 0], rtol=1e-10)
+    f = cable.elastic_catenary(*args[:4], length=args[4], seabed=0.0, friction=1.0)
+    Kf = f.stiffness()
+    holding = (f.length_on_seabed > 0) & (f.H_A > 0)  # friction acts and the anchor still pulls
+    assert np.all(np.abs(Kf[holding, 0, 1] - Kf[holding, 1, 0]) > 1e-9 * np.abs(Kf[holding, 0, 1]))
+
+
+def test_mixed_seabed_heights_broadcast():
+    seabed = np.array([0.0, -60.0, 0.0])
+    span = np.array([800.0, 800.0, 760.0])
+    r = cable.elastic_catenary(span, 150.0, 1000.0, 5e8, length=850.0, seabed=seabed, friction=0.0)
+    for i in range(3):
+        s = cable.elastic_catenary(span[i], 150.0, 1000.0, 5e8, length=850.0, seabed=seabed[i])
+        assert r.H[i] == pytest.approx(s.H, rel=1e-12) and r.V_B[i] == pytest.approx(s.V_B, rel=1e-12)
+        assert r.length_on_seabed[i] == pytest.approx(s.length_on_seabed, rel=1e-12)
+    assert r.length_on_seabed[0] > 0 and r.length_on_seabed[1] == 0
