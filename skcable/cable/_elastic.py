@@ -27,7 +27,7 @@ from skcable._xp import namespace
 from skcable.cable._catenary import _finite_at, catenary
 from skcable.cable._roots import find_root
 from skcable.cable._special import asinh_diff, largest_abs
-from skcable.cable.solution import CableSolution, checked_closed_form
+from skcable.cable.solution import ACCEPT, CableSolution, checked_closed_form
 from skcable.errors import ConvergenceError, InputError
 
 __all__ = ["ElasticCatenary", "elastic_catenary"]
@@ -90,8 +90,10 @@ def _solve(span, dh, w, EA, L0):
             return H, V_A, history
         # stalled above _TOL: accept if at the round-off of the closure's terms
         stalled = len(history) > 2 and history[-1] > 0.25 * history[-2]
-        if stalled and np.all(norm <= _round_off(span, dh, w, EA, L0, H, V_A, chord)):
-            return H, V_A, history
+        if stalled:
+            floor = _round_off(span, dh, w, EA, L0, H, V_A, chord)
+            if np.all(norm <= floor) and history[-1] <= ACCEPT:  # residual() checks it again
+                return H, V_A, history
         j_xh, j_xv, j_yh, j_yv = jac
         det = j_xh * j_yv - j_xv * j_yh
         d_h = -(f_x * j_yv - f_y * j_xv) / det
@@ -277,12 +279,12 @@ def elastic_catenary(span, dh, w, EA, *, length, seabed=None, friction=0.0):
         Height of a flat seabed relative to A (m), ``<= 0``. With ``seabed=0``
         (the anchor on the seabed) the part of the line that would hang below
         A rests on it (J.M. Jonkman, "Dynamics modeling and loads analysis of
-        an offshore floating wind turbine", NREL, 2007); below A the line must
-        stay above it (a touchdown between A and B raises `InputError`).
-        B must lie above the seabed.
+        an offshore floating wind turbine", NREL, 2007). Below A (``seabed < 0``)
+        a line that reaches it hangs from A down to the seabed, rests on it and
+        rises to B (frictionless only). B must lie above the seabed.
     friction : float or array_like, optional
         Coulomb friction coefficient of the grounded part, ``>= 0``; only with
-        a ``seabed``.
+        a ``seabed``, and 0 where the line touches down between A and B.
 
     Returns
     -------
@@ -292,7 +294,8 @@ def elastic_catenary(span, dh, w, EA, *, length, seabed=None, friction=0.0):
         y_vertex``, ``y(x), T(x), slope(x), residual()``, ``stiffness()``.
     SeabedCatenary
         With a ``seabed``: the same forces and maps plus ``H_A``,
-        ``length_on_seabed``, ``x_touchdown``, ``T_of_s(s)``, ``suspended``.
+        ``length_on_seabed``, ``x_touchdown``, ``length_to_seabed``, ``x_landing``,
+        ``T_of_s(s)``, ``suspended``.
 
     Raises
     ------

@@ -22,6 +22,14 @@ here written with the tensioned grounded length
 :math:`H_A = \max(H - C_B w L_B, 0)`. With ``L_B <= 0`` the line hangs
 freely (H.M. Irvine, "Cable Structures", MIT Press, 1981).
 
+With the anchor a height ``d`` above the seabed and no friction, the line
+hangs from A down to a first touchdown (its vertex on the seabed): its height
+:math:`(T_1 - H)/w + V_1^2/(2 EA w) = d` is a quadratic in :math:`u = T_1 - H`,
+so :math:`V_1(H)` is closed-form and the same two closure equations hold with
+:math:`x_1(H)` added to X and :math:`s_1 = V_1/w` taken from the grounded
+length (MoorPy splits the line the same way). With friction the grounded part
+between two touchdowns is statically indeterminate, and refused.
+
 The fairlead stiffness :math:`\partial(H, V_B)/\partial(X, Z)` is the inverse
 of the Jacobian of the closure equations (implicit function theorem).
 """
@@ -36,7 +44,7 @@ from skcable._checks import float_range, real, require
 from skcable._xp import namespace
 from skcable.cable._elastic import ElasticCatenary
 from skcable.cable._roots import find_root
-from skcable.cable._special import largest_abs
+from skcable.cable._special import asinh_diff, largest_abs
 from skcable.cable._stiffness import elastic_stiffness, inverse_2x2
 from skcable.cable.solution import ACCEPT, CableSolution, checked_closed_form
 from skcable.errors import ConvergenceError, InputError
@@ -53,18 +61,45 @@ def _tensioned(H, L_B, mu_w):
     return np.minimum(L_B, reach)
 
 
-def grounded_closure(span, dh, w, EA, L, mu_w, H, V):
+def anchor_part(H, w, EA, depth):
+    """The part hanging from an anchor ``depth`` above the seabed down to its
+    touchdown (vertex on the seabed), in closed form for a given ``H``.
+
+    Its height ``(T_1 - H)/w + V_1^2/(2 EA w) = depth`` with ``u = T_1 - H`` is the
+    quadratic ``u^2/(2EA) + u (1 + H/EA) - w depth = 0``. Returns ``V_1`` (the
+    vertical reaction at A), ``T_1``, its abscissa ``x_1``, the length ``s_1 = V_1/w``
+    and ``dV_1/dH``; all zero for ``depth = 0``.
+    """
+    b = 1.0 + H / EA
+    u = 2.0 * w * depth / (b + np.sqrt(b * b + 2.0 * w * depth / EA))
+    T1 = H + u
+    V1 = np.sqrt(u * (u + 2.0 * H))
+    s1 = V1 / w
+    x1 = H * s1 / EA + H / w * np.arcsinh(V1 / H)
+    # implicit derivative of the height at constant depth
+    with np.errstate(invalid="ignore", divide="ignore"):
+        dV1 = np.where(depth > 0, u / (np.where(V1 > 0, V1, 1.0) * (1.0 + T1 / EA)), 0.0)
+    return V1, T1, x1, s1, dV1
+
+
+def grounded_closure(span, dh, w, EA, L, mu_w, H, V, depth=0.0):
     """Residuals ``X(H, V) - span``, ``Z(H, V) - dh`` of the grounded line and
     their Jacobian in ``(H, V)`` (``V`` the vertical force at B, ``mu_w``
-    the friction force per unit grounded length)."""
-    L_B = L - V / w
+    the friction force per unit grounded length). With ``depth > 0`` the anchor
+    is that high above the seabed and the line hangs from it down to a first
+    touchdown (`anchor_part`); ``dh`` is then measured from A, as always."""
+    V1, T1, x1, s1, dV1 = anchor_part(H, w, EA, depth)
+    L_B = L - s1 - V / w
     T = np.hypot(H, V)
     ell = _tensioned(H, L_B, mu_w)
     H_A = np.maximum(H - mu_w * L_B, 0.0)
     asinh = np.arcsinh(V / H)
-    f_x = L_B + H / w * asinh + H * V / (w * EA) + (H * ell - 0.5 * mu_w * ell * ell) / EA - span
-    f_z = V * V / (T + H) / w + V * V / (2.0 * EA * w) - dh  # (T - H)/w without cancellation
+    f_x = x1 + L_B + H / w * asinh + H * V / (w * EA) + (H * ell - 0.5 * mu_w * ell * ell) / EA - span
+    f_z = V * V / (T + H) / w + V * V / (2.0 * EA * w) - (dh + depth)  # (T - H)/w without cancellation
     j_xh = (asinh - V / T) / w + V / (w * EA) + ell / EA
+    # the anchor part: dx_1/dH - ds_1/dH (1 + H_A/EA), ds_1/dH = dV_1/dH / w
+    j_xh = j_xh + s1 / EA + (np.arcsinh(V1 / H) - V1 / T1) / w
+    j_xh = j_xh + dV1 * ((H / T1 - 1.0) + (H - H_A) / EA) / w
     j_xv = (-1.0 + H / T + (H - H_A) / EA) / w
     j_zh = -(V * V / (T + H)) / (T * w)  # (H/T - 1)/w
     j_zv = V / (w * T) + V / (w * EA)
@@ -101,11 +136,12 @@ def _inextensible_guess(span, dh, w, EA, L, H0):
     return w * h, np.minimum(V * w, w * L * (1 - 1e-9))
 
 
-def _solve_grounded(span, dh, w, EA, L, mu_w, H0):
+def _solve_grounded(span, dh, w, EA, L, mu_w, H0, depth):
     """Newton with backtracking on the grounded closure, arrays of contact elements."""
-    H, V = _inextensible_guess(span, dh, w, EA, L, H0)
+    _, _, x1, s1, _ = anchor_part(H0, w, EA, depth)
+    H, V = _inextensible_guess(span - x1, dh + depth, w, EA, L - s1, H0)
     chord = np.hypot(span, dh)
-    f_x, f_z, *jac = grounded_closure(span, dh, w, EA, L, mu_w, H, V)
+    f_x, f_z, *jac = grounded_closure(span, dh, w, EA, L, mu_w, H, V, depth)
     norm = np.maximum(np.abs(f_x), np.abs(f_z)) / chord
     history = [largest_abs(norm)]
     polish = 0
@@ -121,10 +157,12 @@ def _solve_grounded(span, dh, w, EA, L, mu_w, H0):
         step = np.ones_like(H)
         for _ in range(40):  # backtrack: H > 0, 0 < V <= wL, residual reduced
             H_new, V_new = H + step * d_h, V + step * d_v
-            valid = (H_new > 0) & (V_new > 0) & (V_new <= w * L)
+            with np.errstate(invalid="ignore", divide="ignore"):
+                s1 = anchor_part(np.where(H_new > 0, H_new, 1.0), w, EA, depth)[3]
+            valid = (H_new > 0) & (V_new > 0) & (V_new <= w * (L - s1))
             H_try = np.where(valid, H_new, H)
             V_try = np.where(valid, V_new, V)
-            f_x, f_z, *jac = grounded_closure(span, dh, w, EA, L, mu_w, H_try, V_try)
+            f_x, f_z, *jac = grounded_closure(span, dh, w, EA, L, mu_w, H_try, V_try, depth)
             new = np.maximum(np.abs(f_x), np.abs(f_z)) / chord
             ok = valid & (new < norm * (1.0 - 1e-4 * step) + 4 * _TOL)
             if ok.all():
@@ -143,22 +181,35 @@ class SeabedCatenary(CableSolution):
     when the line rests on the seabed there), ``H_A`` the horizontal tension
     at the anchor (``H`` less the friction, never negative), ``T_A, T_B``.
     ``length_on_seabed`` is the unstretched grounded length ``L_B``,
-    ``x_touchdown`` the abscissa where the line leaves the seabed (0 when it
-    hangs freely). ``suspended`` is the `ElasticCatenary` of the hanging part
-    (from the touchdown point to B). ``T_of_s``, ``x_of_s``, ``y_of_s`` map
-    the unstretched arc length from A; ``y(x)``, ``T(x)``, ``slope(x)`` the
-    abscissa (the grounded part lies on the seabed).
+    ``x_touchdown`` the abscissa where the line leaves the seabed towards B
+    (0 when it hangs freely). With the anchor above the seabed (frictionless
+    only) the line first hangs from A down to the seabed: ``length_to_seabed``
+    (unstretched), landing at ``x_landing``; both are 0 otherwise.
+    ``suspended`` is the `ElasticCatenary` of the part that rises from the
+    seabed (or from A, when nothing touches) to B. ``T_of_s``, ``x_of_s``,
+    ``y_of_s`` map the unstretched arc length from A; ``y(x)``,
+    ``T(x)``, ``slope(x)`` the abscissa (the grounded part lies on the seabed).
     """
 
-    def __init__(self, span, dh, w, EA, length, friction, seabed, H, V_t, L_B):
+    def __init__(self, span, dh, w, EA, length, friction, seabed, H, V_t, L_B, V_1=0.0, y_t=0.0):
         self.span, self.dh, self.w, self.EA, self.length = span, dh, w, EA, length
         self.friction, self.seabed = friction, seabed
         self.H, self.length_on_seabed = H, L_B
         self.constraint = ("length", length)
-        self._xp = namespace(span, dh, w, EA, length, friction, H, V_t, L_B)
+        self._xp = namespace(span, dh, w, EA, length, friction, H, V_t, L_B, V_1, y_t)
         self._mu_w = friction * w
+        self._V1, self._y_t = V_1, y_t
+        self.length_to_seabed = V_1 / w
+        """Unstretched length hanging from A down to the seabed (0 unless the anchor is above it)."""
         self.suspended = ElasticCatenary(
-            span - self.x_touchdown, dh, w, EA, length - L_B, H, V_t, ("length", length - L_B)
+            span - self.x_touchdown,
+            dh - y_t,
+            w,
+            EA,
+            length - L_B - self.length_to_seabed,
+            H,
+            V_t,
+            ("length", length - L_B - self.length_to_seabed),
         )
 
     @cached_property
@@ -170,16 +221,32 @@ class SeabedCatenary(CableSolution):
     def _ell(self):
         return _tensioned(self.H, self.length_on_seabed, self._mu_w) + 0.0 * self.H
 
+    # -- the part hanging from an anchor above the seabed (empty otherwise) -----------
+    def _left_x(self, s):
+        return self.H * s / self.EA + self.H / self.w * asinh_diff(
+            (self.w * s - self._V1) / self.H, -self._V1 / self.H
+        )
+
+    def _left_y(self, s):
+        tv, tv_a = self.w * s - self._V1, -self._V1
+        rise = (tv - tv_a) * (tv + tv_a) / (np.hypot(self.H, tv) + np.hypot(self.H, tv_a))
+        return s * (0.5 * self.w * s - self._V1) / self.EA + rise / self.w
+
+    @cached_property
+    def x_landing(self):
+        """Abscissa where the line from an anchor above the seabed lands on it (0 otherwise)."""
+        return _out(self._left_x(self.length_to_seabed))
+
     @cached_property
     def x_touchdown(self):
-        """Abscissa of the touchdown point (the grounded line stretched)."""
+        """Abscissa where the line leaves the seabed towards B (the grounded line stretched)."""
         ell = _tensioned(self.H, self.length_on_seabed, self._mu_w)
-        out = self.length_on_seabed + (self.H * ell - 0.5 * self._mu_w * ell * ell) / self.EA
-        return out if self._xp is np else float(out)
+        grounded = self.length_on_seabed + (self.H * ell - 0.5 * self._mu_w * ell * ell) / self.EA
+        return _out(self.x_landing + grounded)
 
     @property
     def V_A(self):
-        return self.suspended.V_A
+        return self.suspended.V_A + self._V1
 
     @property
     def V_B(self):
@@ -195,8 +262,15 @@ class SeabedCatenary(CableSolution):
 
     @cached_property
     def stretched_length(self):
-        """Stretched length of the whole line (grounded plus suspended)."""
-        return self.x_touchdown + self.suspended.stretched_length - (self.length - self.length_on_seabed)
+        """Stretched length of the whole line (anchor part, grounded, suspended)."""
+        H, V1 = self.H, self._V1
+
+        def primitive(tv):  # ∫ sqrt(H² + tv²) d(tv)
+            return 0.5 * (tv * np.hypot(H, tv) + H * H * np.arcsinh(tv / H))
+
+        left = self.length_to_seabed + (primitive(0.0) - primitive(-V1)) / (self.w * self.EA)
+        grounded = self.x_touchdown - self.x_landing
+        return _out(left + grounded + self.suspended.stretched_length)
 
     @property
     def x_vertex(self):
@@ -204,7 +278,7 @@ class SeabedCatenary(CableSolution):
 
     @property
     def y_vertex(self):
-        return self.suspended.y_vertex
+        return self._y_t + self.suspended.y_vertex
 
     @property
     def x_low(self):
@@ -212,36 +286,41 @@ class SeabedCatenary(CableSolution):
 
     @property
     def y_low(self):
-        return self.suspended.y_low
+        return self._y_t + self.suspended.y_low
 
     # -- along the line ---------------------------------------------------------------
     def _grounded_tension(self, s):
-        """Tension of the grounded part at ``s`` in [0, L_B]: ``H_A + C_B w (s - a)``."""
+        """Tension of the grounded part at ``s`` in [0, L_B] from its start: ``H_A + C_B w (s - a)``."""
         a = self.length_on_seabed - self._ell
         return self.H_A + self._mu_w * np.maximum(s - a, 0.0)
 
     def T_of_s(self, s):
         """Tension (N) at unstretched arc length ``s`` from A, in [0, length]."""
         s = self._arc("s", s)
-        L_B = self.length_on_seabed
-        hang = self.suspended
-        tv = self.w * np.maximum(s - L_B, 0.0) - hang.V_A
-        return _out(np.where(s <= L_B, self._grounded_tension(np.minimum(s, L_B)), np.hypot(self.H, tv)))
+        s1, L_B = self.length_to_seabed, self.length_on_seabed
+        tv = self.w * np.maximum(s - s1 - L_B, 0.0) - self.suspended.V_A
+        hang = np.where(s <= s1, np.hypot(self.H, self.w * s - self._V1), np.hypot(self.H, tv))
+        ground = self._grounded_tension(np.clip(s - s1, 0.0, L_B))
+        return _out(np.where((s >= s1) & (s <= s1 + L_B), ground, hang))
 
     def x_of_s(self, s):
         """Abscissa of the material point ``s`` (unstretched arc length from A)."""
         s = self._arc("s", s)
-        L_B, ell = self.length_on_seabed, self._ell
-        d = np.maximum(np.minimum(s, L_B) - (L_B - ell), 0.0)
-        ground = np.minimum(s, L_B) + (self.H_A * d + 0.5 * self._mu_w * d * d) / self.EA
-        hang = self.suspended.x_of_s(np.maximum(s - L_B, 0.0))
-        return _out(np.where(s <= L_B, ground, self.x_touchdown + hang))
+        s1, L_B, ell = self.length_to_seabed, self.length_on_seabed, self._ell
+        on = np.clip(s - s1, 0.0, L_B)
+        d = np.maximum(on - (L_B - ell), 0.0)
+        ground = self.x_landing + on + (self.H_A * d + 0.5 * self._mu_w * d * d) / self.EA
+        hang = self.x_touchdown + self.suspended.x_of_s(np.maximum(s - s1 - L_B, 0.0))
+        left = self._left_x(np.minimum(s, s1))
+        return _out(np.where(s <= s1, left, np.where(s <= s1 + L_B, ground, hang)))
 
     def y_of_s(self, s):
-        """Height above A of the material point ``s`` (0 on the seabed)."""
+        """Height above A of the material point ``s`` (the seabed's height on it)."""
         s = self._arc("s", s)
-        L_B = self.length_on_seabed
-        return _out(np.where(s <= L_B, 0.0, self.suspended.y_of_s(np.maximum(s - L_B, 0.0))))
+        s1, L_B = self.length_to_seabed, self.length_on_seabed
+        hang = self._y_t + self.suspended.y_of_s(np.maximum(s - s1 - L_B, 0.0))
+        left = self._left_y(np.minimum(s, s1))
+        return _out(np.where(s <= s1, left, np.where(s <= s1 + L_B, self._y_t, hang)))
 
     def _arc(self, name, s):
         s = real(name, s)
@@ -255,26 +334,59 @@ class SeabedCatenary(CableSolution):
         grounded = x <= x_t
         return x, grounded, np.clip(x - x_t, 0.0, self.suspended.span)
 
+    def _left_s_of_x(self, x):
+        """Material point on the anchor part at ``x < x_landing`` (NaN elsewhere)."""
+        x1 = self.x_landing
+        xb, x1b, Hb, Vb, wb, EAb, s1b = np.broadcast_arrays(
+            x, x1, self.H, self._V1, self.w, self.EA, self.length_to_seabed
+        )
+        out = np.full(xb.shape, np.nan)
+        inside = xb < x1b
+        if inside.any():
+
+            def f(s, x, H, V1, w, EA):
+                return H * s / EA + H / w * asinh_diff((w * s - V1) / H, -V1 / H) - x
+
+            args = tuple(v[inside] for v in (xb, Hb, Vb, wb, EAb))
+            if args[0].size == 1:
+                args = tuple(float(v[0]) for v in args)
+            root, _ = find_root(
+                f,
+                0.0 * s1b[inside] if args[0].__class__ is not float else 0.0,
+                s1b[inside] if args[0].__class__ is not float else float(s1b[inside][0]),
+                args,
+                what="s_of_x",
+            )
+            out[inside] = root
+        return out
+
     def s_of_x(self, x):
         """Material point at abscissa ``x`` in [0, span]."""
         x, grounded, xs = self._split(x)
-        # on the seabed x - a = d (1 + H_A/EA) + C_B w d^2 / (2 EA), s = a + d
-        L_B, ell = self.length_on_seabed, self._ell
+        s1, L_B, ell = self.length_to_seabed, self.length_on_seabed, self._ell
+        # on the seabed x - x_1 - a = d (1 + H_A/EA) + C_B w d^2 / (2 EA), s = s_1 + a + d
         a = L_B - ell
-        c = np.maximum(np.minimum(x, self.x_touchdown) - a, 0.0)
+        on = np.maximum(np.minimum(x, self.x_touchdown) - self.x_landing, 0.0)
+        c = np.maximum(on - a, 0.0)
         b = 1.0 + self.H_A / self.EA
         d = 2.0 * c / (b + np.sqrt(b * b + 2.0 * self._mu_w * c / self.EA))
-        ground = np.minimum(np.where(x <= a, x, a + d), L_B)
-        return _out(np.where(grounded, ground, L_B + self.suspended.s_of_x(xs)))
+        ground = s1 + np.minimum(np.where(on <= a, on, a + d), L_B)
+        left = self._left_s_of_x(x)
+        hang = s1 + L_B + self.suspended.s_of_x(xs)
+        return _out(np.where(x < self.x_landing, left, np.where(grounded, ground, hang)))
 
     def y(self, x):
-        """Height above A at abscissa ``x`` (0 on the seabed)."""
-        x, grounded, xs = self._split(x)
-        return _out(np.where(grounded, 0.0, self.suspended.y(xs)))
+        """Height above A at abscissa ``x`` (the seabed's on the grounded part)."""
+        s = self.s_of_x(x)
+        return self.y_of_s(s)
 
     def slope(self, x):
-        x, grounded, xs = self._split(x)
-        return _out(np.where(grounded, 0.0, self.suspended.slope(xs)))
+        """dy/dx at ``x`` (0 on the seabed)."""
+        s = np.asarray(self.s_of_x(x))
+        s1, L_B = self.length_to_seabed, self.length_on_seabed
+        tv_right = self.w * np.maximum(s - s1 - L_B, 0.0) - self.suspended.V_A
+        tv = np.where(s <= s1, self.w * s - self._V1, np.where(s <= s1 + L_B, 0.0, tv_right))
+        return _out(tv / self.H)
 
     def T(self, x):
         """Tension at abscissa ``x`` (N)."""
@@ -288,10 +400,14 @@ class SeabedCatenary(CableSolution):
         xp = self._xp
         chord = xp.hypot(self.span, self.dh)
         hang = self.suspended
-        L_s = self.length - self.length_on_seabed
+        L_s = hang.length
         yield (self.x_touchdown + hang.x_of_s(L_s) - self.span) / chord
         stretch, shape = hang._y_terms(L_s)
-        yield (stretch + shape - self.dh) / (chord + xp.abs(stretch) + xp.abs(shape))
+        scale = chord + xp.abs(stretch) + xp.abs(shape) + xp.abs(self._y_t)
+        yield (self._y_t + stretch + shape - self.dh) / scale
+        # the anchor part lands on the seabed
+        left = self._left_y(self.length_to_seabed)
+        yield (left - self._y_t) * (self._V1 > 0) / (chord + xp.abs(self._y_t))
         weight = self.w * self.length
         # the seabed carries w·L_B: V_A + V_B + w·L_B = w·L
         ground = self.w * self.length_on_seabed
@@ -313,13 +429,14 @@ class SeabedCatenary(CableSolution):
         Rows ``(H, V_B)``, columns ``(span, dh)``: the inverse of the Jacobian of the
         closure equations in ``(H, V_B)``, grounded or free, friction included.
         """
-        grounded = self.length_on_seabed > 0
+        touches = (self.length_on_seabed > 0) | (self._V1 > 0)
         free = elastic_stiffness(self.suspended)
+        depth = -self._y_t
         jac = grounded_closure(
-            self.span, self.dh, self.w, self.EA, self.length, self._mu_w, self.H, self.V_B
+            self.span, self.dh, self.w, self.EA, self.length, self._mu_w, self.H, self.V_B, depth
         )[2:]
         ground = inverse_2x2(*jac)
-        return np.where(np.asarray(grounded)[..., None, None], ground, free)
+        return np.where(np.asarray(touches)[..., None, None], ground, free)
 
 
 def _out(value):
@@ -356,7 +473,9 @@ def seabed_catenary(span, dh, w, EA, L0, seabed, friction):
     on_bed = np.broadcast_to(np.asarray(seabed) == 0, shape)
     lifted, H_lift = _lifted(span, dh, w, EA, L0)
     contact = np.asarray(on_bed & ~np.broadcast_to(lifted, shape))
-    H, V_t, L_B = np.zeros(shape), np.zeros(shape), np.zeros(shape)
+    H, V_t, L_B, V_1 = np.zeros(shape), np.zeros(shape), np.zeros(shape), np.zeros(shape)
+    guess = np.array(np.broadcast_to(np.where(H_lift > 0, np.minimum(H_lift, w * L0), w * L0), shape))
+    depth = np.zeros(shape)
     history = []
     if not contact.all():
         hanging = np.asarray(~contact)
@@ -364,34 +483,44 @@ def seabed_catenary(span, dh, w, EA, L0, seabed, friction):
         if shape == ():
             args = [float(v[0]) for v in args]
         free = elastic_catenary(*args[:4], length=args[4])
-        below = np.asarray(free.y_low) < np.broadcast_to(seabed, shape)[hanging]
-        if below.any():
-            raise InputError(
-                "seabed",
-                "lies above the low point of the freely hanging line with the anchor above it: "
-                "a touchdown between A and B is not supported (put the anchor on the seabed, seabed=0)",
-            )
         H[hanging], V_t[hanging] = free.H, free.V_A
+        # anchor above the seabed and the free line below it: a touchdown between A and B
+        dips = np.zeros(shape, dtype=bool)
+        dips[hanging] = np.asarray(free.y_low) < np.broadcast_to(seabed, shape)[hanging]
+        if dips.any():
+            require(
+                "friction",
+                ~dips | (np.broadcast_to(friction, shape) == 0),
+                "must be 0 where the line touches down between A and B (anchor above the seabed): "
+                "the static friction there depends on the history of the motion",
+                friction,
+            )
+            contact = contact | dips
+            depth[dips] = -np.broadcast_to(seabed, shape)[dips]
+            guess[dips] = H[dips]
     if contact.any():
-        # H -> 0: B holds the hanging V_0 (Z = V/w + V^2/(2 EA w)) and the rest lies at
-        # X_0 = L - V_0/w; a shorter span leaves line in a heap on the seabed (H = 0)
-        v_0 = 2.0 * w * dh / (1.0 + np.sqrt(1.0 + 2.0 * w * dh / EA))
-        heap = contact & np.broadcast_to(span <= L0 - v_0 / w, shape)
+        # H -> 0: A and B hold the vertical parts V_0 (Z = V/w + V^2/(2 EA w)), the rest lies
+        # at X_0 = L - V_0,A/w - V_0,B/w; a shorter span leaves line in a heap (H = 0)
+        def v_0(height):
+            return 2.0 * w * height / (1.0 + np.sqrt(1.0 + 2.0 * w * height / EA))
+
+        heap = contact & np.broadcast_to(span <= L0 - (v_0(dh + depth) + v_0(depth)) / w, shape)
         if heap.any():
             raise InputError(
                 "length",
                 "leaves slack line lying in a heap on the seabed (span <= length - hanging length, "
                 "H = 0): give a shorter line or a longer span",
             )
-        strain_guess = np.where(H_lift > 0, np.minimum(H_lift, w * L0), w * L0)
-        args = [np.broadcast_to(v, shape)[contact] for v in (span, dh, w, EA, L0, friction * w, strain_guess)]
+        args = [np.broadcast_to(v, shape)[contact] for v in (span, dh, w, EA, L0, friction * w, guess, depth)]
         Hc, Vc, history = _solve_grounded(*args)
-        H[contact], V_t[contact] = Hc, 0.0
-        L_B[contact] = np.maximum(args[4] - Vc / args[2], 0.0)
+        V1 = anchor_part(Hc, args[2], args[3], args[7])[0]
+        H[contact], V_t[contact], V_1[contact] = Hc, 0.0, V1
+        L_B[contact] = np.maximum(args[4] - V1 / args[2] - Vc / args[2], 0.0)
+    y_t = np.where(contact, np.broadcast_to(seabed, shape), 0.0)
     if shape == ():
-        H, V_t, L_B = float(H), float(V_t), float(L_B)
+        H, V_t, L_B, V_1, y_t = (float(v) for v in (H, V_t, L_B, V_1, y_t))
     with float_range("length", "a result"):
-        solution = SeabedCatenary(span, dh, w, EA, L0, friction, seabed, H, V_t, L_B)
+        solution = SeabedCatenary(span, dh, w, EA, L0, friction, seabed, H, V_t, L_B, V_1, y_t)
         return checked_closed_form(solution, "length", history)
 
 

@@ -231,7 +231,7 @@ def test_to_vtk(tmp_path):
         ({"seabed": 5.0}, "seabed"),  # above the anchor
         ({"seabed": 0.0, "friction": -0.1}, "friction"),
         ({"friction": 0.3}, "friction"),  # no seabed to rub on
-        ({"seabed": -20.0}, "seabed"),  # the line would touch down between A and B
+        ({"seabed": -20.0, "friction": 0.3}, "friction"),  # touchdown between A and B: indeterminate
         ({"seabed": 0.0, "length": 990.0}, "length"),  # longer than the L-shape: a heap
         ({"seabed": 200.0 - 400.0, "dh": -250.0}, "dh"),  # B below the seabed
         ({"seabed": 0.0, "dh": 0.0}, "dh"),  # B on the seabed
@@ -291,3 +291,76 @@ def test_mixed_seabed_heights_broadcast():
         assert r.H[i] == pytest.approx(s.H, rel=1e-12) and r.V_B[i] == pytest.approx(s.V_B, rel=1e-12)
         assert r.length_on_seabed[i] == pytest.approx(s.length_on_seabed, rel=1e-12)
     assert r.length_on_seabed[0] > 0 and r.length_on_seabed[1] == 0
+
+
+def _mp_anchor_above(span, dh, w, EA, L, d, H0, V10, VB0):
+    """Three parts at 40 digits: A down to the seabed (vertex there), grounded, up to B;
+    unknowns H, V_1 (vertical at A), V_B; frictionless, so H is constant."""
+    mp.mp.dps = 40
+    span, dh, w, EA, L, d = (mp.mpf(v) for v in (span, dh, w, EA, L, d))
+
+    def height(H, V):  # rise of an elastic catenary from its vertex, V = w s
+        return (mp.sqrt(H**2 + V**2) - H) / w + V**2 / (2 * EA * w)
+
+    def run(H, V):  # its horizontal run
+        return H * V / (w * EA) + H / w * mp.asinh(V / H)
+
+    def f(H, V1, VB):
+        L_B = L - V1 / w - VB / w
+        return [
+            height(H, V1) - d,
+            height(H, VB) - (dh + d),
+            run(H, V1) + L_B * (1 + H / EA) + run(H, VB) - span,
+        ]
+
+    return mp.findroot(f, (mp.mpf(H0), mp.mpf(V10), mp.mpf(VB0)), tol=mp.mpf(10) ** -35)
+
+
+@pytest.mark.parametrize(
+    "scene",
+    [
+        (800.0, 150.0, 1000.0, 5e8, 850.0, 20.0),
+        (800.0, 150.0, 1000.0, 5e8, 850.0, 46.5),  # the free line dips 47 m: just touching
+        (600.0, 100.0, 300.0, 1e8, 700.0, 30.0),
+        (300.0, 80.0, 50.0, 2e6, 420.0, 60.0),  # soft
+    ],
+)
+def test_anchor_above_seabed_against_mpmath(scene):
+    span, dh, w, EA, L, d = scene
+    r = cable.elastic_catenary(span, dh, w, EA, length=L, seabed=-d)
+    H, V1, VB = _mp_anchor_above(*scene, r.H, r.V_A, r.V_B)
+    assert r.H == pytest.approx(float(H), rel=1e-12) and r.H_A == r.H
+    assert r.V_A == pytest.approx(float(V1), rel=1e-12) and r.V_B == pytest.approx(float(VB), rel=1e-12)
+    assert r.length_on_seabed == pytest.approx(float(L - (V1 + VB) / w), rel=1e-10)
+    assert r.residual() < 1e-13 and r.y_low == -d
+    K, K_fd = (
+        r.stiffness(),
+        _fd_stiffness(span, dh, {"w": w, "EA": EA, "length": L, "seabed": -d}, 1e-5 * span),
+    )
+    np.testing.assert_allclose(K, K_fd, rtol=2e-5)
+    # the profile: down to the seabed, along it, up to B
+    x = np.linspace(0.0, span, 101)
+    y = r.y(x)
+    assert np.all(y >= -d - 1e-12 * d) and y[0] == 0.0 and y[-1] == pytest.approx(dh, rel=1e-12)
+    assert np.all(y[(x >= r.x_landing) & (x <= r.x_touchdown)] == -d)
+    np.testing.assert_allclose(r.x_of_s(r.s_of_x(x)), x, rtol=1e-12, atol=1e-9)
+    assert r.T_of_s(0.0) == pytest.approx(r.T_A, rel=1e-14) and r.T_of_s(L) == pytest.approx(r.T_B, rel=1e-14)
+
+
+def test_anchor_above_seabed_against_moorpy():
+    # MoorPy splits the line at the touchdown (frictionless there); where it converges, both agree
+    fAH, fAV, fBH, fBV, info = moorpy_catenary(800.0, 150.0, 850.0, 5e8, 1000.0, CB=-40.0, Tol=1e-12)
+    r = cable.elastic_catenary(800.0, 150.0, 1000.0, 5e8, length=850.0, seabed=-40.0)
+    assert r.H == pytest.approx(-fBH, rel=1e-9) and r.V_B == pytest.approx(-fBV, rel=1e-9)
+    assert r.V_A == pytest.approx(-fAV, rel=1e-9) and r.length_on_seabed == pytest.approx(
+        info["LBot"], rel=1e-9
+    )
+    np.testing.assert_allclose(r.stiffness(), info["stiffnessB"], rtol=1e-8)
+
+
+def test_anchor_above_seabed_continuous_at_first_contact():
+    free = cable.elastic_catenary(800.0, 150.0, 1000.0, 5e8, length=850.0)
+    d = -free.y_low  # the seabed at the free line's low point
+    for seabed in (-d * (1 - 1e-12), -d * (1 + 1e-12)):
+        r = cable.elastic_catenary(800.0, 150.0, 1000.0, 5e8, length=850.0, seabed=seabed)
+        assert r.H == pytest.approx(free.H, rel=1e-8) and r.length_on_seabed < 1e-6
