@@ -347,16 +347,10 @@ class SeabedCatenary(CableSolution):
             def f(s, x, H, V1, w, EA):
                 return H * s / EA + H / w * asinh_diff((w * s - V1) / H, -V1 / H) - x
 
-            args = tuple(v[inside] for v in (xb, Hb, Vb, wb, EAb))
-            if args[0].size == 1:
-                args = tuple(float(v[0]) for v in args)
-            root, _ = find_root(
-                f,
-                0.0 * s1b[inside] if args[0].__class__ is not float else 0.0,
-                s1b[inside] if args[0].__class__ is not float else float(s1b[inside][0]),
-                args,
-                what="s_of_x",
-            )
+            args = [v[inside] for v in (s1b, xb, Hb, Vb, wb, EAb)]
+            if args[0].size == 1:  # Brent's method on floats
+                args = [float(v[0]) for v in args]
+            root, _ = find_root(f, 0.0 * args[0], args[0], tuple(args[1:]), what="s_of_x")
             out[inside] = root
         return out
 

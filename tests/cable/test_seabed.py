@@ -364,3 +364,20 @@ def test_anchor_above_seabed_continuous_at_first_contact():
     for seabed in (-d * (1 - 1e-12), -d * (1 + 1e-12)):
         r = cable.elastic_catenary(800.0, 150.0, 1000.0, 5e8, length=850.0, seabed=seabed)
         assert r.H == pytest.approx(free.H, rel=1e-8) and r.length_on_seabed < 1e-6
+
+
+@pytest.mark.parametrize(("seabed", "friction"), [(0.0, 0.4), (-20.0, 0.0), (-100.0, 0.0)])
+def test_stretched_length_is_the_integral_of_the_strain(seabed, friction):
+    from scipy.integrate import quad
+
+    r = cable.elastic_catenary(800.0, 150.0, 1000.0, 5e6, length=850.0, seabed=seabed, friction=friction)
+    breaks = [r.length_to_seabed, r.length_to_seabed + r.length_on_seabed]
+    total = quad(lambda s: 1.0 + r.T_of_s(s) / 5e6, 0.0, 850.0, points=breaks, epsabs=0, epsrel=1e-13)[0]
+    assert r.stretched_length == pytest.approx(total, rel=1e-12)
+    # the grounded part lies straight: its stretched length is x_touchdown - x_landing
+    ground = (
+        quad(lambda s: 1.0 + r.T_of_s(s) / 5e6, *breaks, epsabs=0, epsrel=1e-13)[0]
+        if breaks[1] > breaks[0]
+        else 0
+    )
+    assert r.x_touchdown - r.x_landing == pytest.approx(ground, rel=1e-12, abs=1e-12)
