@@ -70,6 +70,9 @@ def anchor_part(H, w, EA, depth):
     vertical reaction at A), ``T_1``, its abscissa ``x_1``, the length ``s_1 = V_1/w``
     and ``dV_1/dH``; all zero for ``depth = 0``.
     """
+    if not np.any(depth):  # the anchor on the seabed: no anchor part
+        zero = 0.0 * H
+        return zero, H, zero, zero, zero
     b = 1.0 + H / EA
     u = 2.0 * w * depth / (b + np.sqrt(b * b + 2.0 * w * depth / EA))
     T1 = H + u
