@@ -8,11 +8,11 @@ default (m, N, N/m); any consistent system works.
 
 from skcable.cable._catenary import Catenary, catenary
 from skcable.cable._choice import solve
-from skcable.cable._elastic import ElasticCatenary, elastic_catenary
+from skcable.cable._elastic import ElasticCatenary
 from skcable.cable._funicular import Funicular, FunicularVertical, funicular, funicular_vertical
 from skcable.cable._loads import DeckLoad, DistributedLoad, PointLoad, SelfWeight
 from skcable.cable._parabola import Parabola, parabola
-from skcable.cable._seabed import SeabedCatenary
+from skcable.cable._seabed import SeabedCatenary, elastic_catenary
 from skcable.cable._stiffness import fairlead_stiffness, geometric_stiffness, geometric_stiffness_series
 from skcable.cable._supports import SlidingLoad, anchor_block_weight, ring_on_rod, sliding_load
 from skcable.cable._surfaces import capstan, membrane_tension, smooth_surface_reaction, sphere_parallel

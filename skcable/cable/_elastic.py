@@ -22,7 +22,7 @@ from functools import cached_property
 
 import numpy as np
 
-from skcable._checks import broadcast, float_range, nonnegative, positive, real, require
+from skcable._checks import broadcast, float_range, positive, real, require
 from skcable._xp import namespace
 from skcable.cable._catenary import _finite_at, catenary
 from skcable.cable._roots import find_root
@@ -111,6 +111,19 @@ def _solve(span, dh, w, EA, L0):
         H, V_A, norm = H_new, V_A + step * d_v, new
         history.append(largest_abs(norm))
     raise ConvergenceError("elastic_catenary: Newton did not converge", history)
+
+
+def inverse_2x2(j11, j12, j21, j22):
+    """Inverse of ``[[j11, j12], [j21, j22]]`` elementwise, shape ``(*shape, 2, 2)``."""
+    det = np.asarray(j11 * j22 - j12 * j21)[..., None, None]
+    return np.stack([np.stack([j22, -j12], -1), np.stack([-j21, j11], -1)], -2) / det
+
+
+def elastic_stiffness(s):
+    """``∂(H, V_B)/∂(span, dh)`` of a free `ElasticCatenary`: the closure's Jacobian
+    in ``(H, V_A)`` inverted (implicit function theorem), ``V_B = wL - V_A``."""
+    _, _, j_xh, j_xv, j_yh, j_yv = _closure(s.span, s.dh, s.w, s.EA, s.length, s.H, s.V_A)
+    return inverse_2x2(j_xh, j_xv, j_yh, j_yv) * np.array([[1.0], [-1.0]])
 
 
 def _x_of_s_minus(s, x, H, V_A, w, EA):
@@ -204,8 +217,6 @@ class ElasticCatenary(CableSolution):
         Rows ``(H, V_B)``, columns ``(span, dh)``: the inverse of the Jacobian of
         the closure equations (implicit function theorem), at constant length.
         """
-        from skcable.cable._stiffness import elastic_stiffness
-
         return elastic_stiffness(self)
 
     @cached_property
@@ -261,7 +272,7 @@ class ElasticCatenary(CableSolution):
         yield from self._common_residuals(xp)
 
 
-def elastic_catenary(span, dh, w, EA, *, length, seabed=None, friction=0.0):
+def elastic_catenary(span, dh, w, EA, *, length):
     """Elastic (Irvine) catenary from A = (0, 0) to B = (span, dh).
 
     Parameters
@@ -275,16 +286,6 @@ def elastic_catenary(span, dh, w, EA, *, length, seabed=None, friction=0.0):
     length : float or array_like
         Unstretched length (m), > 0; it may be shorter than the chord (the
         cable then stretches to reach B).
-    seabed : float or array_like, optional
-        Height of a flat seabed relative to A (m), ``<= 0``. With ``seabed=0``
-        (the anchor on the seabed) the part of the line that would hang below
-        A rests on it (J.M. Jonkman, "Dynamics modeling and loads analysis of
-        an offshore floating wind turbine", NREL, 2007). Below A (``seabed < 0``)
-        a line that reaches it hangs from A down to the seabed, rests on it and
-        rises to B (frictionless only). B must lie above the seabed.
-    friction : float or array_like, optional
-        Coulomb friction coefficient of the grounded part, ``>= 0``; only with
-        a ``seabed``, and 0 where the line touches down between A and B.
 
     Returns
     -------
@@ -292,10 +293,6 @@ def elastic_catenary(span, dh, w, EA, *, length, seabed=None, friction=0.0):
         ``H, V_A, V_B, T_A, T_B, length`` (unstretched), ``stretched_length``,
         ``sag``, the lowest point ``x_low, y_low``, the vertex ``x_vertex,
         y_vertex``, ``y(x), T(x), slope(x), residual()``, ``stiffness()``.
-    SeabedCatenary
-        With a ``seabed``: the same forces and maps plus ``H_A``,
-        ``length_on_seabed``, ``x_touchdown``, ``length_to_seabed``, ``x_landing``,
-        ``T_of_s(s)``, ``suspended``.
 
     Raises
     ------
@@ -309,15 +306,6 @@ def elastic_catenary(span, dh, w, EA, *, length, seabed=None, friction=0.0):
     w = positive("w", w)
     EA = positive("EA", EA)
     L0 = positive("length", length)
-    if seabed is not None:
-        seabed = real("seabed", seabed)
-        friction = nonnegative("friction", friction)
-        broadcast(span=span, dh=dh, w=w, EA=EA, length=L0, seabed=seabed, friction=friction)
-        from skcable.cable._seabed import seabed_catenary
-
-        return seabed_catenary(span, dh, w, EA, L0, seabed, friction)
-    if friction is not None and np.any(np.asarray(friction) != 0.0):
-        raise InputError("friction", "applies to a line on the seabed: give seabed= as well")
     broadcast(span=span, dh=dh, w=w, EA=EA, length=L0)
     try:
         H, V_A, history = _solve(span, dh, w, EA, L0)

@@ -40,16 +40,16 @@ from functools import cached_property
 
 import numpy as np
 
-from skcable._checks import float_range, real, require
+from skcable._checks import broadcast, float_range, nonnegative, positive, real, require
 from skcable._xp import namespace
-from skcable.cable._elastic import ElasticCatenary
+from skcable.cable._elastic import ElasticCatenary, elastic_stiffness, inverse_2x2
+from skcable.cable._elastic import elastic_catenary as free_elastic_catenary
 from skcable.cable._roots import find_root
 from skcable.cable._special import asinh_diff, largest_abs
-from skcable.cable._stiffness import elastic_stiffness, inverse_2x2
 from skcable.cable.solution import ACCEPT, CableSolution, checked_closed_form
 from skcable.errors import ConvergenceError, InputError
 
-__all__ = ["SeabedCatenary", "grounded_closure", "seabed_catenary"]
+__all__ = ["SeabedCatenary", "elastic_catenary", "grounded_closure"]
 
 _TOL = 1e-13
 
@@ -460,10 +460,64 @@ def _lifted(span, dh, w, EA, L):
     return ~touches & (~ok | (span >= X)), np.where(ok, H, 0.0)
 
 
-def seabed_catenary(span, dh, w, EA, L0, seabed, friction):
-    """The checked arguments of `elastic_catenary` with a ``seabed``; see there."""
-    from skcable.cable._elastic import elastic_catenary
+def elastic_catenary(span, dh, w, EA, *, length, seabed=None, friction=0.0):
+    """Elastic (Irvine) catenary from A = (0, 0) to B = (span, dh), optionally on a seabed.
 
+    Parameters
+    ----------
+    span, dh : float or array_like
+        Horizontal distance A→B (> 0) and height of B above A (m).
+    w : float or array_like
+        Weight per unit *unstretched* length (N/m), > 0.
+    EA : float or array_like
+        Axial stiffness (N), > 0.
+    length : float or array_like
+        Unstretched length (m), > 0; it may be shorter than the chord (the
+        cable then stretches to reach B).
+    seabed : float or array_like, optional
+        Height of a flat seabed relative to A (m), ``<= 0``. With ``seabed=0``
+        (the anchor on the seabed) the part of the line that would hang below
+        A rests on it (J.M. Jonkman, "Dynamics modeling and loads analysis of
+        an offshore floating wind turbine", NREL, 2007). Below A (``seabed < 0``)
+        a line that reaches it hangs from A down to the seabed, rests on it and
+        rises to B (frictionless only). B must lie above the seabed.
+    friction : float or array_like, optional
+        Coulomb friction coefficient of the grounded part, ``>= 0``; only with
+        a ``seabed``, and 0 where the line touches down between A and B.
+
+    Returns
+    -------
+    ElasticCatenary
+        Without a seabed (H.M. Irvine, "Cable Structures", MIT Press, 1981):
+        ``H, V_A, V_B, T_A, T_B, length`` (unstretched), ``stretched_length``,
+        ``sag``, the lowest point ``x_low, y_low``, the vertex ``x_vertex,
+        y_vertex``, ``y(x), T(x), slope(x), residual()``, ``stiffness()``.
+    SeabedCatenary
+        With a ``seabed``: the same forces, maps and ``stiffness()``, plus
+        ``H_A``, ``length_on_seabed``, ``x_touchdown``, ``length_to_seabed``,
+        ``x_landing``, ``T_of_s(s)``, ``suspended``.
+
+    Raises
+    ------
+    InputError
+        A non-physical argument, named: a seabed above A, B on or below it,
+        friction without a seabed or where it is indeterminate, a line so long
+        that its slack lies in a heap on the seabed (H = 0).
+    ConvergenceError
+        Newton stalled; the error carries the residual history.
+    """
+    if seabed is None:
+        if friction is not None and np.any(np.asarray(friction) != 0.0):
+            raise InputError("friction", "applies to a line on the seabed: give seabed= as well")
+        return free_elastic_catenary(span, dh, w, EA, length=length)
+    span = positive("span", span)
+    dh = real("dh", dh)
+    w = positive("w", w)
+    EA = positive("EA", EA)
+    L0 = positive("length", length)
+    seabed = real("seabed", seabed)
+    friction = nonnegative("friction", friction)
+    broadcast(span=span, dh=dh, w=w, EA=EA, length=L0, seabed=seabed, friction=friction)
     require("seabed", np.asarray(seabed) <= 0, "must be at or below the anchor (A at height 0)", seabed)
     require("dh", np.asarray(dh) > seabed, "must put B above the seabed", dh)
     shape = np.broadcast_shapes(*(np.shape(v) for v in (span, dh, w, EA, L0, seabed, friction)))
@@ -479,7 +533,7 @@ def seabed_catenary(span, dh, w, EA, L0, seabed, friction):
         args = [np.broadcast_to(v, shape)[hanging] for v in (span, dh, w, EA, L0)]
         if shape == ():
             args = [float(v[0]) for v in args]
-        free = elastic_catenary(*args[:4], length=args[4])
+        free = free_elastic_catenary(*args[:4], length=args[4])
         H[hanging], V_t[hanging] = free.H, free.V_A
         # anchor above the seabed and the free line below it: a touchdown between A and B
         dips = np.zeros(shape, dtype=bool)

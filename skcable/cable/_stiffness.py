@@ -35,8 +35,9 @@ import numpy as np
 from skcable._checks import TINY, broadcast, float_range, positive
 from skcable._xp import namespace
 from skcable.cable._catenary import Catenary
-from skcable.cable._elastic import ElasticCatenary, _closure
+from skcable.cable._elastic import ElasticCatenary, elastic_stiffness
 from skcable.cable._parabola import Parabola, length_derivatives
+from skcable.cable._seabed import SeabedCatenary
 from skcable.cable._special import ldexp_sum, power_product, z_minus_tanh_over_cube
 from skcable.errors import InputError
 
@@ -102,8 +103,6 @@ def geometric_stiffness(solution, *, EA=None):
 
 
 def _is_elastic(solution):
-    from skcable.cable._seabed import SeabedCatenary
-
     return isinstance(solution, (ElasticCatenary, SeabedCatenary))
 
 
@@ -127,8 +126,6 @@ def fairlead_stiffness(solution):
     InputError
         Another kind of solution, or a stiffness beyond the range of a float.
     """
-    from skcable.cable._seabed import SeabedCatenary
-
     if isinstance(solution, SeabedCatenary):
         k = solution.stiffness()
     elif isinstance(solution, ElasticCatenary):
@@ -145,19 +142,6 @@ def fairlead_stiffness(solution):
     if not np.isfinite(k).all():  # zeros are legitimate here (dh = 0 decouples H and V_B)
         raise InputError("solution", "gives the stiffness outside the range of a float (over- or underflow)")
     return k
-
-
-def inverse_2x2(j11, j12, j21, j22):
-    """Inverse of ``[[j11, j12], [j21, j22]]`` elementwise, shape ``(*shape, 2, 2)``."""
-    det = np.asarray(j11 * j22 - j12 * j21)[..., None, None]
-    return np.stack([np.stack([j22, -j12], -1), np.stack([-j21, j11], -1)], -2) / det
-
-
-def elastic_stiffness(s):
-    """``∂(H, V_B)/∂(span, dh)`` of a free `ElasticCatenary`: the closure's Jacobian
-    in ``(H, V_A)`` inverted, ``V_B = wL - V_A``."""
-    _, _, j_xh, j_xv, j_yh, j_yv = _closure(s.span, s.dh, s.w, s.EA, s.length, s.H, s.V_A)
-    return inverse_2x2(j_xh, j_xv, j_yh, j_yv) * np.array([[1.0], [-1.0]])
 
 
 def _matrix(k11, k12, k21, k22):
