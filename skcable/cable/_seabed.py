@@ -7,8 +7,8 @@ A downwards (upward reaction ``V_A > 0``), the part ``L_B = L - V_B/w`` rests
 on the seabed and the rest hangs as an elastic catenary tangent to the
 seabed at the touchdown point. The closure equations in the fairlead forces
 ``(H, V_B)`` are those of J.M. Jonkman, "Dynamics modeling and loads analysis
-of an offshore floating wind turbine", NREL, 2007 (§4.2), also used by MoorPy
-(M. Hall, "MoorPy: quasi-static mooring analysis in Python", NREL, 2021):
+of an offshore floating wind turbine", NREL, 2007, also used by MoorPy
+(M. Hall's quasi-static mooring code at NREL):
 
 .. math::
     X = L_B + \frac{H}{w}\operatorname{asinh}\frac{V_B}{H} + \frac{H L}{EA}
@@ -46,7 +46,7 @@ from skcable.cable._elastic import ElasticCatenary, elastic_stiffness, inverse_2
 from skcable.cable._elastic import elastic_catenary as free_elastic_catenary
 from skcable.cable._roots import find_root
 from skcable.cable._special import asinh_diff, largest_abs
-from skcable.cable.solution import ACCEPT, CableSolution, checked_closed_form
+from skcable.cable.solution import CableSolution, checked_closed_form
 from skcable.errors import ConvergenceError, InputError
 
 __all__ = ["SeabedCatenary", "elastic_catenary", "grounded_closure"]
@@ -573,6 +573,3 @@ def elastic_catenary(span, dh, w, EA, *, length, seabed=None, friction=0.0):
     with float_range("length", "a result"):
         solution = SeabedCatenary(span, dh, w, EA, L0, friction, seabed, H, V_t, L_B, V_1, y_t)
         return checked_closed_form(solution, "length", history)
-
-
-assert ACCEPT > _TOL
