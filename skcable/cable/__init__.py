@@ -8,11 +8,12 @@ default (m, N, N/m); any consistent system works.
 
 from skcable.cable._catenary import Catenary, catenary
 from skcable.cable._choice import solve
-from skcable.cable._elastic import ElasticCatenary, elastic_catenary
+from skcable.cable._elastic import ElasticCatenary
 from skcable.cable._frequencies import NaturalFrequencies, irvine_frequencies, natural_frequencies
 from skcable.cable._funicular import Funicular, FunicularVertical, funicular, funicular_vertical
 from skcable.cable._loads import DeckLoad, DistributedLoad, PointLoad, SelfWeight
 from skcable.cable._parabola import Parabola, parabola
+from skcable.cable._seabed import SeabedCatenary, elastic_catenary
 from skcable.cable._state import (
     ChangeOfState,
     ThermalCatenary,
@@ -20,7 +21,7 @@ from skcable.cable._state import (
     sag_tension_table,
     thermal_catenary,
 )
-from skcable.cable._stiffness import geometric_stiffness, geometric_stiffness_series
+from skcable.cable._stiffness import fairlead_stiffness, geometric_stiffness, geometric_stiffness_series
 from skcable.cable._supports import SlidingLoad, anchor_block_weight, ring_on_rod, sliding_load
 from skcable.cable._surfaces import capstan, membrane_tension, smooth_surface_reaction, sphere_parallel
 from skcable.cable.bvp import (
@@ -58,6 +59,7 @@ __all__ = [
     "thermal_catenary",
     "Catenary",
     "ElasticCatenary",
+    "SeabedCatenary",
     "Funicular",
     "NaturalFrequencies",
     "irvine_frequencies",
@@ -69,6 +71,7 @@ __all__ = [
     "capstan",
     "catenary",
     "elastic_catenary",
+    "fairlead_stiffness",
     "funicular",
     "funicular_vertical",
     "geometric_stiffness",

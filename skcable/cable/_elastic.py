@@ -27,7 +27,7 @@ from skcable._xp import namespace
 from skcable.cable._catenary import _finite_at, catenary
 from skcable.cable._roots import find_root
 from skcable.cable._special import asinh_diff, largest_abs
-from skcable.cable.solution import CableSolution, checked_closed_form
+from skcable.cable.solution import ACCEPT, CableSolution, checked_closed_form
 from skcable.errors import ConvergenceError, InputError
 
 __all__ = ["ElasticCatenary", "elastic_catenary"]
@@ -49,6 +49,19 @@ def _closure(span, dh, w, EA, L0, H, V_A):
     j_yh = H / w * (1.0 / t_b - 1.0 / t_a)
     j_yv = -L0 / EA + (tv_a / t_a - tv_b / t_b) / w
     return f_x, f_y, j_xh, j_xv, j_yh, j_yv
+
+
+def _round_off(span, dh, w, EA, L0, H, V_A, chord):
+    """Round-off floor of the closure residual: a few ulps of its terms over the chord
+    (a strongly stretched line has terms far larger than the span)."""
+    xp = namespace(H, V_A, span, EA)
+    tv_a, tv_b = -V_A, w * L0 - V_A
+    arc = asinh_diff(tv_b / H, tv_a / H)
+    # the operands of the differences that cancel: w L0/2 - V_A and tv_b + tv_a
+    rise = (tv_b - tv_a) * (xp.abs(tv_b) + xp.abs(tv_a)) / (xp.hypot(H, tv_b) + xp.hypot(H, tv_a))
+    terms_x = H * L0 / EA + H / w * xp.abs(arc) + span
+    terms_y = L0 * (0.5 * w * L0 + xp.abs(V_A)) / EA + rise / w + xp.abs(dh)
+    return 16.0 * 2.220446049250313e-16 * xp.maximum(terms_x, terms_y) / chord
 
 
 def _initial_guess(span, dh, w, EA, L0):
@@ -75,6 +88,12 @@ def _solve(span, dh, w, EA, L0):
     for _ in range(60):
         if history[-1] < _TOL:
             return H, V_A, history
+        # stalled above _TOL: accept if at the round-off of the closure's terms
+        stalled = len(history) > 2 and history[-1] > 0.25 * history[-2]
+        if stalled:
+            floor = _round_off(span, dh, w, EA, L0, H, V_A, chord)
+            if np.all(norm <= floor) and history[-1] <= ACCEPT:  # residual() checks it again
+                return H, V_A, history
         j_xh, j_xv, j_yh, j_yv = jac
         det = j_xh * j_yv - j_xv * j_yh
         d_h = -(f_x * j_yv - f_y * j_xv) / det
@@ -92,6 +111,19 @@ def _solve(span, dh, w, EA, L0):
         H, V_A, norm = H_new, V_A + step * d_v, new
         history.append(largest_abs(norm))
     raise ConvergenceError("elastic_catenary: Newton did not converge", history)
+
+
+def inverse_2x2(j11, j12, j21, j22):
+    """Inverse of ``[[j11, j12], [j21, j22]]`` elementwise, shape ``(*shape, 2, 2)``."""
+    det = np.asarray(j11 * j22 - j12 * j21)[..., None, None]
+    return np.stack([np.stack([j22, -j12], -1), np.stack([-j21, j11], -1)], -2) / det
+
+
+def elastic_stiffness(s):
+    """``∂(H, V_B)/∂(span, dh)`` of a free `ElasticCatenary`: the closure's Jacobian
+    in ``(H, V_A)`` inverted (implicit function theorem), ``V_B = wL - V_A``."""
+    _, _, j_xh, j_xv, j_yh, j_yv = _closure(s.span, s.dh, s.w, s.EA, s.length, s.H, s.V_A)
+    return inverse_2x2(j_xh, j_xv, j_yh, j_yv) * np.array([[1.0], [-1.0]])
 
 
 def _x_of_s_minus(s, x, H, V_A, w, EA):
@@ -179,6 +211,14 @@ class ElasticCatenary(CableSolution):
     def weight_per_length(self, x, slope):
         return self.w + 0.0 * slope
 
+    def stiffness(self):
+        """Fairlead stiffness ``∂(H, V_B)/∂(span, dh)`` with A fixed, shape ``(*shape, 2, 2)``.
+
+        Rows ``(H, V_B)``, columns ``(span, dh)``: the inverse of the Jacobian of
+        the closure equations (implicit function theorem), at constant length.
+        """
+        return elastic_stiffness(self)
+
     @cached_property
     def stretched_length(self):
         """Length of the loaded cable, ``L0 + ∫ T/EA ds``."""
@@ -252,7 +292,7 @@ def elastic_catenary(span, dh, w, EA, *, length):
     ElasticCatenary
         ``H, V_A, V_B, T_A, T_B, length`` (unstretched), ``stretched_length``,
         ``sag``, the lowest point ``x_low, y_low``, the vertex ``x_vertex,
-        y_vertex``, ``y(x), T(x), slope(x), residual()``.
+        y_vertex``, ``y(x), T(x), slope(x), residual()``, ``stiffness()``.
 
     Raises
     ------

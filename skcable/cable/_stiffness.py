@@ -10,6 +10,22 @@ S and dh gives, for any dh,
 which is Goicolea's (2012) :math:`k_G = (H/2a)/((x/a) - \tanh(x/a))` with x = span/2.
 In series with the elastic stiffness :math:`k_E = EA/S`:
 :math:`1/k = 1/k_G + 1/k_E` (Goicolea (2012), footnote 5).
+
+`fairlead_stiffness` gives the full 2×2 matrix :math:`\partial(H, V_B)/\partial(\mathrm{span}, dh)`
+with A fixed and the (unstretched) length constant. For the catenary, from
+:math:`S^2 = dh^2 + Q^2`, :math:`Q = 2a\sinh z`, :math:`V_B = (wS + w\,dh\coth z)/2`
+and :math:`\sinh m = dh/Q`:
+
+.. math::
+    K = \begin{pmatrix} k_G & k_G \sinh m/\cosh z \\
+        k_G \sinh m/\cosh z & \tfrac{w}{2}\coth z + k_G \sinh^2 m \, z/(\sinh z\cosh z)
+        \end{pmatrix};
+
+for the parabola the same steps on its length :math:`S(a, \mathrm{span}, dh)`;
+for the elastic catenary (H.M. Irvine, "Cable Structures", MIT Press, 1981)
+and the line on the seabed (J.M. Jonkman, "Dynamics modeling and loads
+analysis of an offshore floating wind turbine", NREL, 2007) the inverse of
+the Jacobian of the closure equations (implicit function theorem).
 """
 
 from __future__ import annotations
@@ -19,11 +35,13 @@ import numpy as np
 from skcable._checks import TINY, broadcast, float_range, positive
 from skcable._xp import namespace
 from skcable.cable._catenary import Catenary
+from skcable.cable._elastic import ElasticCatenary, elastic_stiffness
 from skcable.cable._parabola import Parabola, length_derivatives
+from skcable.cable._seabed import SeabedCatenary
 from skcable.cable._special import ldexp_sum, power_product, z_minus_tanh_over_cube
 from skcable.errors import InputError
 
-__all__ = ["geometric_stiffness", "geometric_stiffness_series"]
+__all__ = ["fairlead_stiffness", "geometric_stiffness", "geometric_stiffness_series"]
 
 
 def geometric_stiffness(solution, *, EA=None):
@@ -31,11 +49,13 @@ def geometric_stiffness(solution, *, EA=None):
 
     Parameters
     ----------
-    solution : Catenary or Parabola
-        A solved cable (any constraint).
+    solution : Catenary, Parabola, ElasticCatenary or SeabedCatenary
+        A solved cable (any constraint). For the elastic solutions (their own
+        ``EA`` included) this is ``fairlead_stiffness(solution)[..., 0, 0]``.
     EA : float or array_like, optional
-        Axial stiffness (N). When given, the series combination
-        ``1/(1/k_G + 1/k_E)`` with ``k_E = EA/length`` is returned.
+        Axial stiffness (N), for a Catenary or Parabola only. When given, the
+        series combination ``1/(1/k_G + 1/k_E)`` with ``k_E = EA/length`` is
+        returned.
 
     Returns
     -------
@@ -48,6 +68,11 @@ def geometric_stiffness(solution, *, EA=None):
         Not a catenary or parabola, a bad ``EA``, or a stiffness beyond the
         range of a float.
     """
+    if _is_elastic(solution):
+        if EA is not None:
+            raise InputError("EA", "the elastic solution has its own EA; leave EA out")
+        k = fairlead_stiffness(solution)[..., 0, 0]
+        return _representable("solution", float(k) if k.ndim == 0 else k, "dH/dspan")
     if isinstance(solution, Catenary):
         # w/(2(z - tanh z)), z - tanh z ~ z³/3 for taut cables: z³ underflows long
         # before the stiffness overflows, so w/z³ is formed from mantissas and exponents
@@ -61,7 +86,10 @@ def geometric_stiffness(solution, *, EA=None):
             ds_da, ds_dspan = length_derivatives(s.a, s._slope, s._delta, s.length)
             k_g = -s.w * ds_dspan / ds_da
     else:
-        raise InputError("solution", f"must be a Catenary or a Parabola, got {type(solution).__name__}")
+        raise InputError(
+            "solution",
+            f"must be a Catenary, Parabola, ElasticCatenary or SeabedCatenary, got {type(solution).__name__}",
+        )
     _representable("solution", k_g, "k_G")
     if EA is None:
         return k_g
@@ -72,6 +100,79 @@ def geometric_stiffness(solution, *, EA=None):
     xp = namespace(k_g, k_e)
     small, large = xp.minimum(k_g, k_e), xp.maximum(k_g, k_e)
     return small / (1.0 + small / large)
+
+
+def _is_elastic(solution):
+    return isinstance(solution, (ElasticCatenary, SeabedCatenary))
+
+
+def fairlead_stiffness(solution):
+    """Stiffness of the force at B, ``∂(H, V_B)/∂(span, dh)``, A fixed, length constant.
+
+    Parameters
+    ----------
+    solution : Catenary, Parabola, ElasticCatenary or SeabedCatenary
+        A solved cable (any constraint of the inextensible forms; the length is
+        held at its solved value).
+
+    Returns
+    -------
+    ndarray
+        Shape ``(*shape, 2, 2)``: rows ``(H, V_B)``, columns ``(span, dh)`` (N/m),
+        analytic (no finite differences).
+
+    Raises
+    ------
+    InputError
+        Another kind of solution, or a stiffness beyond the range of a float.
+    """
+    if isinstance(solution, SeabedCatenary):
+        k = solution.stiffness()
+    elif isinstance(solution, ElasticCatenary):
+        k = elastic_stiffness(solution)
+    elif isinstance(solution, Catenary):
+        k = _catenary_stiffness(solution)
+    elif isinstance(solution, Parabola):
+        k = _parabola_stiffness(solution)
+    else:
+        raise InputError(
+            "solution",
+            f"must be a Catenary, Parabola, ElasticCatenary or SeabedCatenary, got {type(solution).__name__}",
+        )
+    if not np.isfinite(k).all():  # zeros are legitimate here (dh = 0 decouples H and V_B)
+        raise InputError("solution", "gives the stiffness outside the range of a float (over- or underflow)")
+    return k
+
+
+def _matrix(k11, k12, k21, k22):
+    return np.stack(
+        [np.stack(np.broadcast_arrays(k11, k12), -1), np.stack(np.broadcast_arrays(k21, k22), -1)], -2
+    )
+
+
+def _catenary_stiffness(c):
+    xp = c._xp
+    k_g = geometric_stiffness(c)
+    z = c.z
+    with float_range("solution", "the stiffness"), np.errstate(over="ignore"):
+        sinh_m, cosh_z, tanh_z = xp.sinh(c.m), xp.cosh(z), xp.tanh(z)
+        cross = k_g * (sinh_m / cosh_z)
+        # z/(sinh z cosh z) = 2z/sinh 2z, in (0, 1]
+        vv = 0.5 * c.w / tanh_z + k_g * sinh_m * sinh_m * (z / cosh_z) / xp.sinh(z)
+    return _matrix(k_g, cross, cross, vv)
+
+
+def _parabola_stiffness(p):
+    # S(a, span, dh) constant: da/dq = -S_q/S_a; H = w a, V_B = H dh/span + w span/2
+    slope, delta = p._slope, p._delta
+    with float_range("solution", "the stiffness"), np.errstate(over="ignore", divide="ignore"):
+        ds_da, ds_dspan = length_derivatives(p.a, slope, delta, p.length)
+        r_a, r_b = namespace(slope).hypot(1.0, p.p_A), namespace(slope).hypot(1.0, p.p_B)
+        ds_ddh = 2.0 * slope / (r_a + r_b)
+        h_span, h_dh = -p.w * ds_dspan / ds_da, -p.w * ds_ddh / ds_da
+        v_span = h_span * slope - p.H * slope / p.span + 0.5 * p.w
+        v_dh = h_dh * slope + p.H / p.span
+    return _matrix(h_span, h_dh, v_span, v_dh)
 
 
 def _representable(name, value, what):

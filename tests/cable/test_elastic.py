@@ -76,3 +76,24 @@ def test_lowest_point_and_vertex_tend_to_the_inextensible_ones():
     assert (e.x_low, e.y_low) == (0.0, 0.0) and e.x_vertex < 0  # B far above A: the cable rises from A
     with pytest.raises(InputError, match="s"):
         e.x_of_s(1e300)
+
+
+def test_strongly_stretched_line_stops_at_the_round_off_of_its_terms():
+    # strain w L/EA ~ 1.7e4: the closure's terms are 1e4 times the span, and its
+    # residual cannot fall below their round-off; against Irvine's equations at 40 digits
+    import mpmath as mp
+
+    span, dh, w, EA, L = 1800.988193505437, 16.54946719505425, 932.2190796045037, 100.4200470840098, 1809.31
+    e = cable.elastic_catenary(span, dh, w, EA, length=L)
+    mp.mp.dps = 40
+    span_, dh_, w_, EA_, L_ = (mp.mpf(v) for v in (span, dh, w, EA, L))
+
+    def closure(H, VA):
+        VB = w_ * L_ - VA
+        X = H * L_ / EA_ + H / w_ * (mp.asinh(VB / H) - mp.asinh(-VA / H))
+        Z = L_ * (w_ * L_ / 2 - VA) / EA_ + (mp.sqrt(H**2 + VB**2) - mp.sqrt(H**2 + VA**2)) / w_
+        return [X - span_, Z - dh_]
+
+    H, VA = mp.findroot(closure, (mp.mpf(e.H), mp.mpf(e.V_A)), tol=mp.mpf(10) ** -30)
+    assert e.H == pytest.approx(float(H), rel=1e-10)
+    assert e.V_A == pytest.approx(float(VA), rel=1e-10, abs=1e-10 * float(H))

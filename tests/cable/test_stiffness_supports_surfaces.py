@@ -185,3 +185,87 @@ def test_sliding_load_and_ring_at_extreme_ratios():
     # ring on a nearly smooth rod (mu = 1e-6): H = mu V_B still holds at the limit
     c = cable.ring_on_rod(5.0, 2.0, 100.0, 1e-6)
     assert c.H == pytest.approx(1e-6 * c.V_B, rel=1e-9) and c.length == pytest.approx(100.0, rel=1e-12)
+
+
+# --- fairlead stiffness d(H, V_B)/d(span, dh) of every closed form ------------------------
+
+
+def _mp_catenary_forces(span, dh, w, S):
+    """(H, V_B) of the inextensible catenary at 40 digits: S² - dh² = (2a sinh(span/2a))²."""
+    mp.mp.dps = 40
+    span, dh = mp.mpf(span), mp.mpf(dh)
+    z = mp.findroot(
+        lambda z: mp.sinh(z) / z - mp.sqrt(S**2 - dh**2) / span, mp.mpf(0.5), tol=mp.mpf(10) ** -38
+    )
+    a = span / (2 * z)
+    return w * a, w * (S + dh / mp.tanh(z)) / 2  # V_B = (wS + w dh coth z)/2
+
+
+@pytest.mark.parametrize(
+    ("span", "dh", "excess"), [(100, 20, 0.1), (100, -30, 0.05), (100, 0, 1e-6), (80, 50, 1.5)]
+)
+def test_fairlead_stiffness_catenary_against_mpmath_derivatives(span, dh, excess):
+    w = 10.0
+    S = float(np.hypot(span, dh)) * (1 + excess)
+    c = cable.catenary(float(span), float(dh), w, length=S)
+    K = cable.fairlead_stiffness(c)
+    mp.mp.dps = 40
+    S_mp, h = mp.mpf(S), mp.mpf(10) ** -12  # central differences at 40 digits: error ~ h² ~ 1e-24
+    ref = np.empty((2, 2))
+    for j, (ds, dd) in enumerate(((h, 0), (0, h))):
+        plus = _mp_catenary_forces(span + ds, dh + dd, w, S_mp)
+        minus = _mp_catenary_forces(span - ds, dh - dd, w, S_mp)
+        ref[:, j] = [float((p - m) / (2 * h)) for p, m in zip(plus, minus, strict=True)]
+    np.testing.assert_allclose(K, ref, rtol=1e-11)
+    assert cable.geometric_stiffness(c) == K[0, 0]
+
+
+def _central(make, span, dh, h):
+    out = np.empty((2, 2))
+    for j, (ds, dd) in enumerate(((h, 0.0), (0.0, h))):
+        p, m = make(span + ds, dh + dd), make(span - ds, dh - dd)
+        out[:, j] = [(p.H - m.H) / (2 * h), (p.V_B - m.V_B) / (2 * h)]
+    return out
+
+
+@pytest.mark.parametrize(
+    ("span", "dh", "L"), [(100.0, 20.0, 110.0), (100.0, -30.0, 105.0), (100.0, 0.0, 100.5)]
+)
+def test_fairlead_stiffness_parabola_against_central_differences(span, dh, L):
+    # w per horizontal length: V_B = H dh/span + w span/2, K is not symmetric
+    K = cable.fairlead_stiffness(cable.parabola(span, dh, 10.0, length=L))
+    K_fd = _central(lambda s, d: cable.parabola(s, d, 10.0, length=L), span, dh, 1e-4)
+    np.testing.assert_allclose(K, K_fd, rtol=1e-7, atol=1e-7 * np.abs(K).max())
+
+
+def test_fairlead_stiffness_elastic_tends_to_catenary_and_matches_moorpy():
+    moorpy_catenary = pytest.importorskip("moorpy.Catenary").catenary
+    c = cable.fairlead_stiffness(cable.catenary(100.0, 20.0, 10.0, length=110.0))
+    e = cable.elastic_catenary(100.0, 20.0, 10.0, 1e15, length=110.0)
+    np.testing.assert_allclose(e.stiffness(), c, rtol=1e-9)
+    assert cable.geometric_stiffness(e) == e.stiffness()[0, 0]
+    with pytest.raises(InputError, match="EA"):
+        cable.geometric_stiffness(e, EA=1e9)
+    # a free line: MoorPy's stiffness without seabed contact (CB < 0)
+    e = cable.elastic_catenary(800.0, 150.0, 1000.0, 5e8, length=850.0)
+    info = moorpy_catenary(800.0, 150.0, 850.0, 5e8, 1000.0, CB=-1e3, Tol=1e-12)[4]
+    np.testing.assert_allclose(e.stiffness(), info["stiffnessB"], rtol=1e-8)
+
+
+def test_fairlead_stiffness_broadcasts_and_refuses_other_solutions():
+    span, dh = np.array([100.0, 100.0, 80.0]), np.array([20.0, -30.0, 50.0])
+    for solution in (
+        cable.catenary(span, dh, 10.0, length=120.0),
+        cable.parabola(span, dh, 10.0, length=120.0),
+        cable.elastic_catenary(span, dh, 10.0, 1e6, length=120.0),
+    ):
+        K = cable.fairlead_stiffness(solution)
+        assert K.shape == (3, 2, 2)
+        for i in range(3):
+            one = type(solution).__name__.lower()
+            kwargs = {"EA": 1e6} if one == "elasticcatenary" else {}
+            make = {"catenary": cable.catenary, "parabola": cable.parabola}.get(one, cable.elastic_catenary)
+            single = make(span[i], dh[i], 10.0, length=120.0, **kwargs)
+            np.testing.assert_allclose(K[i], cable.fairlead_stiffness(single), rtol=1e-12)
+    with pytest.raises(InputError, match="solution"):
+        cable.fairlead_stiffness(cable.solve_bvp)  # not a closed-form solution

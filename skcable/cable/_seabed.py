@@ -1,0 +1,575 @@
+r"""Elastic catenary resting on a flat seabed, with Coulomb friction.
+
+Anchor A at (0, 0) on the seabed, fairlead B at (span, dh) above it, weight
+``w`` per unstretched length, axial stiffness ``EA``, unstretched length
+``L``, friction coefficient ``C_B``. When the freely hanging line would leave
+A downwards (upward reaction ``V_A > 0``), the part ``L_B = L - V_B/w`` rests
+on the seabed and the rest hangs as an elastic catenary tangent to the
+seabed at the touchdown point. The closure equations in the fairlead forces
+``(H, V_B)`` are those of J.M. Jonkman, "Dynamics modeling and loads analysis
+of an offshore floating wind turbine", NREL, 2007, also used by MoorPy
+(M. Hall's quasi-static mooring code at NREL):
+
+.. math::
+    X = L_B + \frac{H}{w}\operatorname{asinh}\frac{V_B}{H} + \frac{H L}{EA}
+        + \frac{C_B w}{2EA}\Big[-L_B^2 + (L_B - \tfrac{H}{C_B w})
+          \max(L_B - \tfrac{H}{C_B w}, 0)\Big], \qquad
+    Z = \frac{H}{w}\Big(\sqrt{1 + (V_B/H)^2} - 1\Big) + \frac{V_B^2}{2 EA w},
+
+here written with the tensioned grounded length
+:math:`\ell = \min(L_B, H/(C_B w))`: the grounded part stretches by
+:math:`(H\ell - C_B w \ell^2/2)/EA` and the anchor keeps
+:math:`H_A = \max(H - C_B w L_B, 0)`. With ``L_B <= 0`` the line hangs
+freely (H.M. Irvine, "Cable Structures", MIT Press, 1981).
+
+With the anchor a height ``d`` above the seabed and no friction, the line
+hangs from A down to a first touchdown (its vertex on the seabed): its height
+:math:`(T_1 - H)/w + V_1^2/(2 EA w) = d` is a quadratic in :math:`u = T_1 - H`,
+so :math:`V_1(H)` is closed-form and the same two closure equations hold with
+:math:`x_1(H)` added to X and :math:`s_1 = V_1/w` taken from the grounded
+length (MoorPy splits the line the same way). With friction the grounded part
+between two touchdowns is statically indeterminate, and refused.
+
+The fairlead stiffness :math:`\partial(H, V_B)/\partial(X, Z)` is the inverse
+of the Jacobian of the closure equations (implicit function theorem).
+"""
+
+from __future__ import annotations
+
+from functools import cached_property
+
+import numpy as np
+
+from skcable._checks import broadcast, float_range, nonnegative, positive, real, require
+from skcable._xp import namespace
+from skcable.cable._elastic import ElasticCatenary, elastic_stiffness, inverse_2x2
+from skcable.cable._elastic import elastic_catenary as free_elastic_catenary
+from skcable.cable._roots import find_root
+from skcable.cable._special import asinh_diff, largest_abs
+from skcable.cable.solution import CableSolution, checked_closed_form
+from skcable.errors import ConvergenceError, InputError
+
+__all__ = ["SeabedCatenary", "elastic_catenary", "grounded_closure"]
+
+_TOL = 1e-13
+
+
+def _tensioned(H, L_B, mu_w):
+    """Length of the grounded part that carries tension, ``min(L_B, H/(C_B w))``."""
+    with np.errstate(divide="ignore"):
+        reach = np.where(mu_w > 0, H / np.where(mu_w > 0, mu_w, 1.0), np.inf)
+    return np.minimum(L_B, reach)
+
+
+def anchor_part(H, w, EA, depth):
+    """The part hanging from an anchor ``depth`` above the seabed down to its
+    touchdown (vertex on the seabed), in closed form for a given ``H``.
+
+    Its height ``(T_1 - H)/w + V_1^2/(2 EA w) = depth`` with ``u = T_1 - H`` is the
+    quadratic ``u^2/(2EA) + u (1 + H/EA) - w depth = 0``. Returns ``V_1`` (the
+    vertical reaction at A), ``T_1``, its abscissa ``x_1``, the length ``s_1 = V_1/w``
+    and ``dV_1/dH``; all zero for ``depth = 0``.
+    """
+    if not np.any(depth):  # the anchor on the seabed: no anchor part
+        zero = 0.0 * H
+        return zero, H, zero, zero, zero
+    b = 1.0 + H / EA
+    u = 2.0 * w * depth / (b + np.sqrt(b * b + 2.0 * w * depth / EA))
+    T1 = H + u
+    V1 = np.sqrt(u * (u + 2.0 * H))
+    s1 = V1 / w
+    x1 = H * s1 / EA + H / w * np.arcsinh(V1 / H)
+    # implicit derivative of the height at constant depth
+    with np.errstate(invalid="ignore", divide="ignore"):
+        dV1 = np.where(depth > 0, u / (np.where(V1 > 0, V1, 1.0) * (1.0 + T1 / EA)), 0.0)
+    return V1, T1, x1, s1, dV1
+
+
+def grounded_closure(span, dh, w, EA, L, mu_w, H, V, depth=0.0):
+    """Residuals ``X(H, V) - span``, ``Z(H, V) - dh`` of the grounded line and
+    their Jacobian in ``(H, V)`` (``V`` the vertical force at B, ``mu_w``
+    the friction force per unit grounded length). With ``depth > 0`` the anchor
+    is that high above the seabed and the line hangs from it down to a first
+    touchdown (`anchor_part`); ``dh`` is then measured from A, as always."""
+    V1, T1, x1, s1, dV1 = anchor_part(H, w, EA, depth)
+    L_B = L - s1 - V / w
+    T = np.hypot(H, V)
+    ell = _tensioned(H, L_B, mu_w)
+    H_A = np.maximum(H - mu_w * L_B, 0.0)
+    asinh = np.arcsinh(V / H)
+    f_x = x1 + L_B + H / w * asinh + H * V / (w * EA) + (H * ell - 0.5 * mu_w * ell * ell) / EA - span
+    f_z = V * V / (T + H) / w + V * V / (2.0 * EA * w) - (dh + depth)  # (T - H)/w without cancellation
+    j_xh = (asinh - V / T) / w + V / (w * EA) + ell / EA
+    # the anchor part: dx_1/dH - ds_1/dH (1 + H_A/EA), ds_1/dH = dV_1/dH / w
+    j_xh = j_xh + s1 / EA + (np.arcsinh(V1 / H) - V1 / T1) / w
+    j_xh = j_xh + dV1 * ((H / T1 - 1.0) + (H - H_A) / EA) / w
+    j_xv = (-1.0 + H / T + (H - H_A) / EA) / w
+    j_zh = -(V * V / (T + H)) / (T * w)  # (H/T - 1)/w
+    j_zv = V / (w * T) + V / (w * EA)
+    return f_x, f_z, j_xh, j_xv, j_zh, j_zv
+
+
+def _inextensible_guess(span, dh, w, EA, L, H0):
+    """Frictionless inextensible touchdown line, lengthened by the strain of
+    the free solution (``H0``): ``h = H/w`` from the monotone
+    ``X(h) = L - v + h asinh(v/h)``, ``v = sqrt(Z^2 + 2 Z h)``."""
+    L1 = L * (1.0 + H0 / EA)
+    ok = L1 > dh * (1 + 1e-9)
+    h_max = np.where(ok, (L1 * L1 - dh * dh) / (2.0 * np.where(ok, dh, 1.0)), 1.0)
+
+    def f(h, span, dh, L1):
+        xp = namespace(h, span)
+        v = xp.sqrt(dh * dh + 2.0 * dh * h)
+        return L1 - v + h * xp.arcsinh(v / h) - span
+
+    lo, hi = h_max * 1e-12, h_max
+    f_lo, f_hi = f(lo, span, dh, L1), f(hi, span, dh, L1)
+    inside = ok & (f_lo < 0) & (f_hi > 0)
+    h = np.where(f_lo >= 0, lo, hi)
+    if inside.any():
+        idx = np.flatnonzero(inside)
+        args = [v[idx] for v in (lo, hi, span, dh, L1)]
+        if idx.size == 1:  # Brent's method on floats: the elementwise search costs ~10 ms a call
+            args = [float(v[0]) for v in args]
+        # a starting point only: Newton on the full equations refines it
+        root, _ = find_root(f, args[0], args[1], tuple(args[2:]), what="seabed guess", xtol=1e-9 * args[1])
+        h[idx] = root
+    h = np.where(ok, h, H0 / w)
+    V = np.where(ok, np.sqrt(dh * dh + 2.0 * dh * h), w * L * (1 - 1e-9))
+    return w * h, np.minimum(V * w, w * L * (1 - 1e-9))
+
+
+def _solve_grounded(span, dh, w, EA, L, mu_w, H0, depth):
+    """Newton with backtracking on the grounded closure, arrays of contact elements."""
+    _, _, x1, s1, _ = anchor_part(H0, w, EA, depth)
+    H, V = _inextensible_guess(span - x1, dh + depth, w, EA, L - s1, H0)
+    chord = np.hypot(span, dh)
+    f_x, f_z, *jac = grounded_closure(span, dh, w, EA, L, mu_w, H, V, depth)
+    norm = np.maximum(np.abs(f_x), np.abs(f_z)) / chord
+    history = [largest_abs(norm)]
+    polish = 0
+    for _ in range(80):
+        if history[-1] < _TOL:
+            polish += 1  # one more step into the round-off floor
+            if polish > 1:
+                return H, V, history
+        j_xh, j_xv, j_zh, j_zv = jac
+        det = j_xh * j_zv - j_xv * j_zh
+        d_h = -(f_x * j_zv - f_z * j_xv) / det
+        d_v = -(j_xh * f_z - j_zh * f_x) / det
+        step = np.ones_like(H)
+        for _ in range(40):  # backtrack: H > 0, 0 < V <= wL, residual reduced
+            H_new, V_new = H + step * d_h, V + step * d_v
+            with np.errstate(invalid="ignore", divide="ignore"):
+                s1 = anchor_part(np.where(H_new > 0, H_new, 1.0), w, EA, depth)[3]
+            valid = (H_new > 0) & (V_new > 0) & (V_new <= w * (L - s1))
+            H_try = np.where(valid, H_new, H)
+            V_try = np.where(valid, V_new, V)
+            f_x, f_z, *jac = grounded_closure(span, dh, w, EA, L, mu_w, H_try, V_try, depth)
+            new = np.maximum(np.abs(f_x), np.abs(f_z)) / chord
+            ok = valid & (new < norm * (1.0 - 1e-4 * step) + 4 * _TOL)
+            if ok.all():
+                break
+            step = np.where(ok, step, 0.5 * step)
+        H, V, norm = H_try, V_try, new
+        history.append(largest_abs(norm))
+    raise ConvergenceError("elastic_catenary (seabed): Newton did not converge", history)
+
+
+class SeabedCatenary(CableSolution):
+    """Solution of `elastic_catenary` with a ``seabed``.
+
+    ``H`` is the horizontal tension of the suspended part (the fairlead's),
+    ``V_B`` the vertical force at B, ``V_A`` the upward reaction at A (zero
+    when the line rests on the seabed there), ``H_A`` the horizontal tension
+    at the anchor (``H`` less the friction, never negative), ``T_A, T_B``.
+    ``length_on_seabed`` is the unstretched grounded length ``L_B``,
+    ``x_touchdown`` the abscissa where the line leaves the seabed towards B
+    (0 when it hangs freely). With the anchor above the seabed (frictionless
+    only) the line first hangs from A down to the seabed: ``length_to_seabed``
+    (unstretched), landing at ``x_landing``; both are 0 otherwise.
+    ``suspended`` is the `ElasticCatenary` of the part that rises from the
+    seabed (or from A, when nothing touches) to B. ``T_of_s``, ``x_of_s``,
+    ``y_of_s`` map the unstretched arc length from A; ``y(x)``,
+    ``T(x)``, ``slope(x)`` the abscissa (the grounded part lies on the seabed).
+    """
+
+    def __init__(self, span, dh, w, EA, length, friction, seabed, H, V_t, L_B, V_1=0.0, y_t=0.0):
+        self.span, self.dh, self.w, self.EA, self.length = span, dh, w, EA, length
+        self.friction, self.seabed = friction, seabed
+        self.H, self.length_on_seabed = H, L_B
+        self.constraint = ("length", length)
+        self._xp = namespace(span, dh, w, EA, length, friction, H, V_t, L_B, V_1, y_t)
+        self._mu_w = friction * w
+        self._V1, self._y_t = V_1, y_t
+        self.length_to_seabed = V_1 / w
+        """Unstretched length hanging from A down to the seabed (0 unless the anchor is above it)."""
+        self.suspended = ElasticCatenary(
+            span - self.x_touchdown,
+            dh - y_t,
+            w,
+            EA,
+            length - L_B - self.length_to_seabed,
+            H,
+            V_t,
+            ("length", length - L_B - self.length_to_seabed),
+        )
+
+    @cached_property
+    def H_A(self):
+        """Horizontal tension at the anchor (N)."""
+        return self._xp.maximum(self.H - self._mu_w * self.length_on_seabed, 0.0)
+
+    @cached_property
+    def _ell(self):
+        return _tensioned(self.H, self.length_on_seabed, self._mu_w) + 0.0 * self.H
+
+    # -- the part hanging from an anchor above the seabed (empty otherwise) -----------
+    def _left_x(self, s):
+        return self.H * s / self.EA + self.H / self.w * asinh_diff(
+            (self.w * s - self._V1) / self.H, -self._V1 / self.H
+        )
+
+    def _left_y(self, s):
+        tv, tv_a = self.w * s - self._V1, -self._V1
+        rise = (tv - tv_a) * (tv + tv_a) / (np.hypot(self.H, tv) + np.hypot(self.H, tv_a))
+        return s * (0.5 * self.w * s - self._V1) / self.EA + rise / self.w
+
+    @cached_property
+    def x_landing(self):
+        """Abscissa where the line from an anchor above the seabed lands on it (0 otherwise)."""
+        return _out(self._left_x(self.length_to_seabed))
+
+    @cached_property
+    def x_touchdown(self):
+        """Abscissa where the line leaves the seabed towards B (the grounded line stretched)."""
+        ell = _tensioned(self.H, self.length_on_seabed, self._mu_w)
+        grounded = self.length_on_seabed + (self.H * ell - 0.5 * self._mu_w * ell * ell) / self.EA
+        return _out(self.x_landing + grounded)
+
+    @property
+    def V_A(self):
+        return self.suspended.V_A + self._V1
+
+    @property
+    def V_B(self):
+        return self.suspended.V_B
+
+    @cached_property
+    def T_A(self):
+        return self._xp.hypot(self.H_A, self.V_A)
+
+    @property
+    def T_B(self):
+        return self.suspended.T_B
+
+    @cached_property
+    def stretched_length(self):
+        """Stretched length of the whole line (anchor part, grounded, suspended)."""
+        H, V1 = self.H, self._V1
+
+        def primitive(tv):  # ∫ sqrt(H² + tv²) d(tv)
+            return 0.5 * (tv * np.hypot(H, tv) + H * H * np.arcsinh(tv / H))
+
+        left = self.length_to_seabed + (primitive(0.0) - primitive(-V1)) / (self.w * self.EA)
+        grounded = self.x_touchdown - self.x_landing
+        return _out(left + grounded + self.suspended.stretched_length)
+
+    @property
+    def x_vertex(self):
+        return self.x_touchdown + self.suspended.x_vertex
+
+    @property
+    def y_vertex(self):
+        return self._y_t + self.suspended.y_vertex
+
+    @property
+    def x_low(self):
+        return self.x_touchdown + self.suspended.x_low
+
+    @property
+    def y_low(self):
+        return self._y_t + self.suspended.y_low
+
+    # -- along the line ---------------------------------------------------------------
+    def _grounded_tension(self, s):
+        """Tension of the grounded part at ``s`` in [0, L_B] from its start: ``H_A + C_B w (s - a)``."""
+        a = self.length_on_seabed - self._ell
+        return self.H_A + self._mu_w * np.maximum(s - a, 0.0)
+
+    def T_of_s(self, s):
+        """Tension (N) at unstretched arc length ``s`` from A, in [0, length]."""
+        s = self._arc("s", s)
+        s1, L_B = self.length_to_seabed, self.length_on_seabed
+        tv = self.w * np.maximum(s - s1 - L_B, 0.0) - self.suspended.V_A
+        hang = np.where(s <= s1, np.hypot(self.H, self.w * s - self._V1), np.hypot(self.H, tv))
+        ground = self._grounded_tension(np.clip(s - s1, 0.0, L_B))
+        return _out(np.where((s >= s1) & (s <= s1 + L_B), ground, hang))
+
+    def x_of_s(self, s):
+        """Abscissa of the material point ``s`` (unstretched arc length from A)."""
+        s = self._arc("s", s)
+        s1, L_B, ell = self.length_to_seabed, self.length_on_seabed, self._ell
+        on = np.clip(s - s1, 0.0, L_B)
+        d = np.maximum(on - (L_B - ell), 0.0)
+        ground = self.x_landing + on + (self.H_A * d + 0.5 * self._mu_w * d * d) / self.EA
+        hang = self.x_touchdown + self.suspended.x_of_s(np.maximum(s - s1 - L_B, 0.0))
+        left = self._left_x(np.minimum(s, s1))
+        return _out(np.where(s <= s1, left, np.where(s <= s1 + L_B, ground, hang)))
+
+    def y_of_s(self, s):
+        """Height above A of the material point ``s`` (the seabed's height on it)."""
+        s = self._arc("s", s)
+        s1, L_B = self.length_to_seabed, self.length_on_seabed
+        hang = self._y_t + self.suspended.y_of_s(np.maximum(s - s1 - L_B, 0.0))
+        left = self._left_y(np.minimum(s, s1))
+        return _out(np.where(s <= s1, left, np.where(s <= s1 + L_B, self._y_t, hang)))
+
+    def _arc(self, name, s):
+        s = real(name, s)
+        require(name, (s >= 0) & (s <= self.length), "must lie in [0, length]", s)
+        return s
+
+    def _split(self, x):
+        x = real("x", x)
+        require("x", (x >= 0) & (x <= self.span), "must lie in [0, span]", x)
+        x_t = self.x_touchdown
+        grounded = x <= x_t
+        return x, grounded, np.clip(x - x_t, 0.0, self.suspended.span)
+
+    def _left_s_of_x(self, x):
+        """Material point on the anchor part at ``x < x_landing`` (NaN elsewhere)."""
+        x1 = self.x_landing
+        xb, x1b, Hb, Vb, wb, EAb, s1b = np.broadcast_arrays(
+            x, x1, self.H, self._V1, self.w, self.EA, self.length_to_seabed
+        )
+        out = np.full(xb.shape, np.nan)
+        inside = xb < x1b
+        if inside.any():
+
+            def f(s, x, H, V1, w, EA):
+                return H * s / EA + H / w * asinh_diff((w * s - V1) / H, -V1 / H) - x
+
+            args = [v[inside] for v in (s1b, xb, Hb, Vb, wb, EAb)]
+            if args[0].size == 1:  # Brent's method on floats
+                args = [float(v[0]) for v in args]
+            root, _ = find_root(f, 0.0 * args[0], args[0], tuple(args[1:]), what="s_of_x")
+            out[inside] = root
+        return out
+
+    def s_of_x(self, x):
+        """Material point at abscissa ``x`` in [0, span]."""
+        x, grounded, xs = self._split(x)
+        s1, L_B, ell = self.length_to_seabed, self.length_on_seabed, self._ell
+        # on the seabed x - x_1 - a = d (1 + H_A/EA) + C_B w d^2 / (2 EA), s = s_1 + a + d
+        a = L_B - ell
+        on = np.maximum(np.minimum(x, self.x_touchdown) - self.x_landing, 0.0)
+        c = np.maximum(on - a, 0.0)
+        b = 1.0 + self.H_A / self.EA
+        d = 2.0 * c / (b + np.sqrt(b * b + 2.0 * self._mu_w * c / self.EA))
+        ground = s1 + np.minimum(np.where(on <= a, on, a + d), L_B)
+        left = self._left_s_of_x(x)
+        hang = s1 + L_B + self.suspended.s_of_x(xs)
+        return _out(np.where(x < self.x_landing, left, np.where(grounded, ground, hang)))
+
+    def y(self, x):
+        """Height above A at abscissa ``x`` (the seabed's on the grounded part)."""
+        s = self.s_of_x(x)
+        return self.y_of_s(s)
+
+    def slope(self, x):
+        """dy/dx at ``x`` (0 on the seabed)."""
+        s = np.asarray(self.s_of_x(x))
+        s1, L_B = self.length_to_seabed, self.length_on_seabed
+        tv_right = self.w * np.maximum(s - s1 - L_B, 0.0) - self.suspended.V_A
+        tv = np.where(s <= s1, self.w * s - self._V1, np.where(s <= s1 + L_B, 0.0, tv_right))
+        return _out(tv / self.H)
+
+    def T(self, x):
+        """Tension at abscissa ``x`` (N)."""
+        return self.T_of_s(self.s_of_x(x))
+
+    def weight_per_length(self, x, slope):
+        return self.w + 0.0 * slope
+
+    # -- checks and stiffness -----------------------------------------------------------
+    def _residuals(self):
+        xp = self._xp
+        chord = xp.hypot(self.span, self.dh)
+        hang = self.suspended
+        L_s = hang.length
+        yield (self.x_touchdown + hang.x_of_s(L_s) - self.span) / chord
+        stretch, shape = hang._y_terms(L_s)
+        scale = chord + xp.abs(stretch) + xp.abs(shape) + xp.abs(self._y_t)
+        yield (self._y_t + stretch + shape - self.dh) / scale
+        # the anchor part lands on the seabed
+        left = self._left_y(self.length_to_seabed)
+        yield (left - self._y_t) * (self._V1 > 0) / (chord + xp.abs(self._y_t))
+        weight = self.w * self.length
+        # the seabed carries w·L_B: V_A + V_B + w·L_B = w·L
+        ground = self.w * self.length_on_seabed
+        yield (self.V_A + self.V_B + ground - weight) / (xp.abs(self.V_A) + xp.abs(self.V_B) + weight)
+        # friction carries H - H_A, at most C_B w L_B; the anchor never pushes
+        slack = self.H - self.H_A - self._mu_w * self.length_on_seabed
+        yield xp.maximum(slack, 0.0) / (self.H + self._mu_w * self.length_on_seabed)
+        yield xp.minimum(self.H_A, 0.0) / self.H
+        # touchdown tangent to the seabed, or no contact with the anchor pulled up
+        yield xp.minimum(self.length_on_seabed, 0.0) / self.length
+        contact = self.length_on_seabed > 0
+        yield xp.abs(hang.V_A) * contact / hang.T_A if xp is np else (hang.V_A / hang.T_A if contact else 0.0)
+        for T, H, V in ((self.T_A, self.H_A, self.V_A), (self.T_B, self.H, self.V_B)):
+            yield (T - xp.hypot(H, V)) / xp.maximum(T, self.H)
+
+    def stiffness(self):
+        """Fairlead stiffness ``∂(H, V_B)/∂(span, dh)`` with A fixed, shape ``(*shape, 2, 2)``.
+
+        Rows ``(H, V_B)``, columns ``(span, dh)``: the inverse of the Jacobian of the
+        closure equations in ``(H, V_B)``, grounded or free, friction included.
+        """
+        touches = (self.length_on_seabed > 0) | (self._V1 > 0)
+        free = elastic_stiffness(self.suspended)
+        depth = -self._y_t
+        jac = grounded_closure(
+            self.span, self.dh, self.w, self.EA, self.length, self._mu_w, self.H, self.V_B, depth
+        )[2:]
+        ground = inverse_2x2(*jac)
+        return np.where(np.asarray(touches)[..., None, None], ground, free)
+
+
+def _out(value):
+    """A 0-d result as a Python float (scalar in, scalar out)."""
+    return float(value) if np.ndim(value) == 0 else value
+
+
+def _lifted(span, dh, w, EA, L):
+    """Whether the line leaves the anchor upwards (no contact), and the lift-off ``H``.
+
+    At lift-off ``V_A = 0``, ``V_B = wL``: the height equation gives
+    ``T + H = P = wL²/D`` with ``D = dh - wL²/(2EA)``, so ``H = (P - (wL)²/P)/2``;
+    the line is lifted where ``span`` reaches the lift-off ``X(H, wL)``. With
+    ``D <= 0`` the line's own stretch exceeds ``dh`` and it always touches.
+    """
+    D = dh - w * L * L / (2.0 * EA)
+    touches = np.asarray(D <= 0)
+    with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
+        P = w * L * L / np.where(touches, 1.0, D)
+        H = 0.5 * (P - (w * L) * (w * L / P))
+        ok = ~touches & (H > 0)
+        H_safe = np.where(ok, H, 1.0)
+        X = H_safe * L / EA + H_safe / w * np.arcsinh(w * L / H_safe)
+    return ~touches & (~ok | (span >= X)), np.where(ok, H, 0.0)
+
+
+def elastic_catenary(span, dh, w, EA, *, length, seabed=None, friction=0.0):
+    """Elastic (Irvine) catenary from A = (0, 0) to B = (span, dh), optionally on a seabed.
+
+    Parameters
+    ----------
+    span, dh : float or array_like
+        Horizontal distance A→B (> 0) and height of B above A (m).
+    w : float or array_like
+        Weight per unit *unstretched* length (N/m), > 0.
+    EA : float or array_like
+        Axial stiffness (N), > 0.
+    length : float or array_like
+        Unstretched length (m), > 0; it may be shorter than the chord (the
+        cable then stretches to reach B).
+    seabed : float or array_like, optional
+        Height of a flat seabed relative to A (m), ``<= 0``. With ``seabed=0``
+        (the anchor on the seabed) the part of the line that would hang below
+        A rests on it (J.M. Jonkman, "Dynamics modeling and loads analysis of
+        an offshore floating wind turbine", NREL, 2007). Below A (``seabed < 0``)
+        a line that reaches it hangs from A down to the seabed, rests on it and
+        rises to B (frictionless only). B must lie above the seabed.
+    friction : float or array_like, optional
+        Coulomb friction coefficient of the grounded part, ``>= 0``; only with
+        a ``seabed``, and 0 where the line touches down between A and B.
+
+    Returns
+    -------
+    ElasticCatenary
+        Without a seabed (H.M. Irvine, "Cable Structures", MIT Press, 1981):
+        ``H, V_A, V_B, T_A, T_B, length`` (unstretched), ``stretched_length``,
+        ``sag``, the lowest point ``x_low, y_low``, the vertex ``x_vertex,
+        y_vertex``, ``y(x), T(x), slope(x), residual()``, ``stiffness()``.
+    SeabedCatenary
+        With a ``seabed``: the same forces, maps and ``stiffness()``, plus
+        ``H_A``, ``length_on_seabed``, ``x_touchdown``, ``length_to_seabed``,
+        ``x_landing``, ``T_of_s(s)``, ``suspended``.
+
+    Raises
+    ------
+    InputError
+        A non-physical argument, named: a seabed above A, B on or below it,
+        friction without a seabed or where it is indeterminate, a line so long
+        that its slack lies in a heap on the seabed (H = 0).
+    ConvergenceError
+        Newton stalled; the error carries the residual history.
+    """
+    if seabed is None:
+        if friction is not None and np.any(np.asarray(friction) != 0.0):
+            raise InputError("friction", "applies to a line on the seabed: give seabed= as well")
+        return free_elastic_catenary(span, dh, w, EA, length=length)
+    span = positive("span", span)
+    dh = real("dh", dh)
+    w = positive("w", w)
+    EA = positive("EA", EA)
+    L0 = positive("length", length)
+    seabed = real("seabed", seabed)
+    friction = nonnegative("friction", friction)
+    broadcast(span=span, dh=dh, w=w, EA=EA, length=L0, seabed=seabed, friction=friction)
+    require("seabed", np.asarray(seabed) <= 0, "must be at or below the anchor (A at height 0)", seabed)
+    require("dh", np.asarray(dh) > seabed, "must put B above the seabed", dh)
+    shape = np.broadcast_shapes(*(np.shape(v) for v in (span, dh, w, EA, L0, seabed, friction)))
+    on_bed = np.broadcast_to(np.asarray(seabed) == 0, shape)
+    lifted, H_lift = _lifted(span, dh, w, EA, L0)
+    contact = np.asarray(on_bed & ~np.broadcast_to(lifted, shape))
+    H, V_t, L_B, V_1 = np.zeros(shape), np.zeros(shape), np.zeros(shape), np.zeros(shape)
+    guess = np.array(np.broadcast_to(np.where(H_lift > 0, np.minimum(H_lift, w * L0), w * L0), shape))
+    depth = np.zeros(shape)
+    history = []
+    if not contact.all():
+        hanging = np.asarray(~contact)
+        args = [np.broadcast_to(v, shape)[hanging] for v in (span, dh, w, EA, L0)]
+        if shape == ():
+            args = [float(v[0]) for v in args]
+        free = free_elastic_catenary(*args[:4], length=args[4])
+        H[hanging], V_t[hanging] = free.H, free.V_A
+        # anchor above the seabed and the free line below it: a touchdown between A and B
+        dips = np.zeros(shape, dtype=bool)
+        dips[hanging] = np.asarray(free.y_low) < np.broadcast_to(seabed, shape)[hanging]
+        if dips.any():
+            require(
+                "friction",
+                ~dips | (np.broadcast_to(friction, shape) == 0),
+                "must be 0 where the line touches down between A and B (anchor above the seabed): "
+                "the static friction there depends on the history of the motion",
+                friction,
+            )
+            contact = contact | dips
+            depth[dips] = -np.broadcast_to(seabed, shape)[dips]
+            guess[dips] = H[dips]
+    if contact.any():
+        # H -> 0: A and B hold the vertical parts V_0 (Z = V/w + V^2/(2 EA w)), the rest lies
+        # at X_0 = L - V_0,A/w - V_0,B/w; a shorter span leaves line in a heap (H = 0)
+        def v_0(height):
+            return 2.0 * w * height / (1.0 + np.sqrt(1.0 + 2.0 * w * height / EA))
+
+        heap = contact & np.broadcast_to(span <= L0 - (v_0(dh + depth) + v_0(depth)) / w, shape)
+        if heap.any():
+            raise InputError(
+                "length",
+                "leaves slack line lying in a heap on the seabed (span <= length - hanging length, "
+                "H = 0): give a shorter line or a longer span",
+            )
+        args = [np.broadcast_to(v, shape)[contact] for v in (span, dh, w, EA, L0, friction * w, guess, depth)]
+        Hc, Vc, history = _solve_grounded(*args)
+        V1 = anchor_part(Hc, args[2], args[3], args[7])[0]
+        H[contact], V_t[contact], V_1[contact] = Hc, 0.0, V1
+        L_B[contact] = np.maximum(args[4] - V1 / args[2] - Vc / args[2], 0.0)
+    y_t = np.where(contact, np.broadcast_to(seabed, shape), 0.0)
+    if shape == ():
+        H, V_t, L_B, V_1, y_t = (float(v) for v in (H, V_t, L_B, V_1, y_t))
+    with float_range("length", "a result"):
+        solution = SeabedCatenary(span, dh, w, EA, L0, friction, seabed, H, V_t, L_B, V_1, y_t)
+        return checked_closed_form(solution, "length", history)
