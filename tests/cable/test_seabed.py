@@ -12,7 +12,12 @@ import pytest
 from skcable import cable
 from skcable.errors import InputError
 
-moorpy_catenary = pytest.importorskip("moorpy.Catenary").catenary
+
+def _moorpy_catenary():
+    """MoorPy's catenary, for the tests that compare with it (skipped where MoorPy is absent;
+    the rest of this module runs everywhere)."""
+    return pytest.importorskip("moorpy.Catenary").catenary
+
 
 # (span, dh, w, EA, length, friction): slack, taut, nearly vertical, nearly all grounded
 SCENES = [
@@ -73,6 +78,7 @@ def test_against_mpmath_40_digits(scene):
 
 
 def test_issue_scene_against_moorpy():
+    moorpy_catenary = _moorpy_catenary()
     # skcable gave H = 753 kN with the line 47 m below the anchor; MoorPy with contact 250 kN
     free = cable.elastic_catenary(800, 150, 1000, 5e8, length=850)
     r = cable.elastic_catenary(800, 150, 1000, 5e8, length=850, seabed=0.0)
@@ -102,6 +108,7 @@ def _random_scenes(n, seed, top=0.98):
 
 
 def test_random_scenes_against_moorpy_forces_length_stiffness():
+    moorpy_catenary = _moorpy_catenary()
     compared = heaps = 0
     for span, dh, w, EA, L, cb in zip(*_random_scenes(150, 7), strict=True):
         fAH, fAV, fBH, fBV, info = moorpy_catenary(span, dh, L, EA, w, CB=cb, Tol=1e-12, MaxIter=500)
@@ -348,6 +355,7 @@ def test_anchor_above_seabed_against_mpmath(scene):
 
 
 def test_anchor_above_seabed_against_moorpy():
+    moorpy_catenary = _moorpy_catenary()
     # MoorPy splits the line at the touchdown (frictionless there); where it converges, both agree
     fAH, fAV, fBH, fBV, info = moorpy_catenary(800.0, 150.0, 850.0, 5e8, 1000.0, CB=-40.0, Tol=1e-12)
     r = cable.elastic_catenary(800.0, 150.0, 1000.0, 5e8, length=850.0, seabed=-40.0)
