@@ -6,6 +6,8 @@ carries and its shared layout); they never call back into the model.
 
 from __future__ import annotations
 
+from functools import lru_cache
+
 import meshio
 import numpy as np
 from skfem import Basis, ElementLineP1, MeshLine
@@ -16,12 +18,18 @@ from skcable.errors import InputError
 __all__ = ["strand_mesh", "wire_mesh"]
 
 
-def _to_nodes(layout, values):
-    """L² projection of quadrature-point values (..., ne, nq) onto P1 at the mesh nodes."""
-    mesh = MeshLine(layout.nodes)
-    p1 = Basis(mesh, ElementLineP1(), intorder=6)
+@lru_cache(maxsize=8)
+def _p1(layout):
+    """The P1 basis of a layout's mesh on its quadrature (once per model, not per step)."""
+    p1 = Basis(MeshLine(layout.nodes), ElementLineP1(), intorder=6)
     if p1.dx.shape != layout.dx.shape or not np.allclose(p1.dx, layout.dx, rtol=1e-12, atol=0):
         raise InputError("step", "its quadrature does not match its mesh (order 6 on the layout's nodes)")
+    return p1
+
+
+def _to_nodes(layout, values):
+    """L² projection of quadrature-point values (..., ne, nq) onto P1 at the mesh nodes."""
+    p1 = _p1(layout)
     flat = np.reshape(values, (-1, *values.shape[-2:]))
     nodal = np.array([p1.project(v)[p1.nodal_dofs[0]] for v in flat])
     return nodal.reshape(*values.shape[:-2], -1)

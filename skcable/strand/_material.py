@@ -220,25 +220,19 @@ class Material:
         not refused: they give non-finite stresses (the finite-element model relies on this
         to report a diverged Newton iterate as a ConvergenceError, not as bad input).
         """
-        strain = _array("strain", strain, finite=False, empty=True)
-        eps, t, elastic, plastic, (a, b, c, d) = self._branches(strain)
-        blend = ((a * t + b) * t + c) * t + d
-        line = self.E_e * self.eps_y + self.E_p * (eps - self.eps_y)
-        out = np.where(elastic, self.E_e * eps, np.where(plastic, line, blend))
-        out = np.copysign(out, strain)
+        out, _ = self.stress_and_tangent(_array("strain", strain, finite=False, empty=True))
         return out[()] if out.ndim == 0 else out
 
     def tangent(self, strain):
         """Tangent modulus dσ/dε (Pa) at ``strain``: element-wise, even in the strain
         (inputs as for `stress`)."""
-        strain = _array("strain", strain, finite=False, empty=True)
-        eps, t, elastic, plastic, (a, b, c, _) = self._branches(strain)
-        out = np.where(elastic, self.E_e, np.where(plastic, self.E_p, (3 * a * t + 2 * b) * t + c))
+        _, out = self.stress_and_tangent(_array("strain", strain, finite=False, empty=True))
         return out[()] if out.ndim == 0 else out
 
     def stress_and_tangent(self, strain: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-        """`stress` and `tangent` of a float array in one pass, without input checks: the
-        finite-element models' hot path (their strains are float arrays they computed)."""
+        """`stress` and `tangent` of a float array in one pass, without input checks (the
+        finite-element models' hot path: their strains are float arrays they computed);
+        `stress` and `tangent` check their input and call it."""
         eps, t, elastic, plastic, (a, b, c, d) = self._branches(strain)
         blend = ((a * t + b) * t + c) * t + d
         line = self.E_e * self.eps_y + self.E_p * (eps - self.eps_y)

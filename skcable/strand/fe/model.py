@@ -147,8 +147,9 @@ class StrandModel:
         self._boundary()
         self.EA = strand.section().EA
         self._bound = [t.bind(self) for t in self.terms]
-        self._section_terms = [t for t in self._bound if isinstance(t, SectionTerm)]
-        self._other_terms = [t for t in self._bound if not isinstance(t, SectionTerm)]
+        # (position in the model's term list, bound term): the states and outputs follow that list
+        self._section_terms = [(i, t) for i, t in enumerate(self._bound) if isinstance(t, SectionTerm)]
+        self._other_terms = [(i, t) for i, t in enumerate(self._bound) if not isinstance(t, SectionTerm)]
         self._band = self.assembly.banded(self.free)
         self._dx = self.bases["u"].dx
         self._metric = None  # the elastic tangent of the straight strand, band storage (on first use)
@@ -277,18 +278,15 @@ class StrandModel:
         g = self.assembly.interpolate(U)
         S = D = None
         outputs = [None] * len(self._bound)
-        index = {id(t): i for i, t in enumerate(self._bound)}
-        for t in self._section_terms:
-            i = index[id(t)]
+        for i, t in self._section_terms:
             St, Dt, outputs[i] = t.section(g, Step(strain, self.x, state[i]))
             S, D = (St, Dt.copy()) if S is None else (S + St, D + Dt)
         R = self.assembly.vector(S) if S is not None else np.zeros(self.assembly.N)
         Ke = self.assembly.element_matrices(D) if D is not None else None
-        densities = [outputs[index[id(t)]].get("energy") for t in self._section_terms]
+        densities = [outputs[i].get("energy") for i, _ in self._section_terms]
         energy = None if any(e is None for e in densities) else float(np.sum(sum(densities) * self._dx))
         extra = []
-        for t in self._other_terms:
-            i = index[id(t)]
+        for i, t in self._other_terms:
             step = Step(strain, self.x, state[i])
             Rt, Kt, outputs[i] = t.contribute(U, step)
             if Rt is not None:
