@@ -1,0 +1,9 @@
+"""Mooring and anchor lines: seabed contact, multi-segment lines, line systems.
+
+Conventions as in :mod:`skcable.cable`: anchor A at (0, 0), fairlead B at
+(span, dh), y up, weights per unstretched length act downward.
+"""
+
+from skcable.cable.lines.seabed import SeabedCatenary, elastic_catenary
+
+__all__ = ["SeabedCatenary", "elastic_catenary"]
