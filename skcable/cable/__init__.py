@@ -13,7 +13,6 @@ from skcable.cable._frequencies import NaturalFrequencies, irvine_frequencies, n
 from skcable.cable._funicular import Funicular, FunicularVertical, funicular, funicular_vertical
 from skcable.cable._loads import DeckLoad, DistributedLoad, PointLoad, SelfWeight
 from skcable.cable._parabola import Parabola, parabola
-from skcable.cable.lines.seabed import SeabedCatenary, elastic_catenary
 from skcable.cable._state import (
     ChangeOfState,
     ThermalCatenary,
@@ -35,6 +34,7 @@ from skcable.cable.bvp import (
     graph_tangent,
     solve_bvp,
 )
+from skcable.cable.lines.seabed import SeabedCatenary, elastic_catenary
 from skcable.cable.solution import CableSolution
 
 __all__ = [

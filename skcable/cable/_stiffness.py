@@ -37,8 +37,8 @@ from skcable._xp import namespace
 from skcable.cable._catenary import Catenary
 from skcable.cable._elastic import ElasticCatenary, elastic_stiffness
 from skcable.cable._parabola import Parabola, length_derivatives
-from skcable.cable.lines.seabed import SeabedCatenary
 from skcable.cable._special import ldexp_sum, power_product, z_minus_tanh_over_cube
+from skcable.cable.lines.seabed import SeabedCatenary
 from skcable.errors import InputError
 
 __all__ = ["fairlead_stiffness", "geometric_stiffness", "geometric_stiffness_series"]
