@@ -36,8 +36,17 @@ from scipy.optimize import elementwise
 from skcable._checks import broadcast, exactly_one, float_range, positive, real, require
 from skcable._xp import namespace
 from skcable.cable._roots import find_root
-from skcable.cable._special import dsinhc, largest_abs, log_cosh, piecewise, sinhc_m1
-from skcable.cable.solution import CableSolution, checked_closed_form
+from skcable.cable._special import (
+    dsinhc,
+    largest_abs,
+    ldexp_sum,
+    log_cosh,
+    piecewise,
+    power_product,
+    sinhc_m1,
+    z_minus_tanh_over_cube,
+)
+from skcable.cable.solution import CableSolution, checked_closed_form, matrix_2x2
 from skcable.errors import ConvergenceError, InputError
 
 __all__ = ["Catenary", "catenary"]
@@ -154,6 +163,40 @@ class Catenary(CableSolution):
 
     def weight_per_length(self, x, slope):
         return self.w + 0.0 * slope
+
+    @cached_property
+    def k_G(self):
+        r"""Geometric stiffness ``dH/d(span)`` at constant length and ``dh`` (N/m).
+
+        :math:`k_G = w/(2(z - \tanh z))` (Goicolea 2012, example 7), any ``dh``.
+        """
+        # w/z³ from mantissas and exponents: z³ underflows for taut cables long
+        # before the stiffness overflows
+        z = self.z
+        with float_range("solution", "k_G"):
+            return ldexp_sum(power_product(0.5, (self.w, 1), (z, -3))) / z_minus_tanh_over_cube(z)
+
+    def stiffness(self):
+        r"""Fairlead stiffness ``∂(H, V_B)/∂(span, dh)`` with A fixed, length constant.
+
+        From :math:`S^2 = dh^2 + Q^2`, :math:`Q = 2a\sinh z`,
+        :math:`V_B = (wS + w\,dh\coth z)/2` and :math:`\sinh m = dh/Q`:
+
+        .. math::
+            K = \begin{pmatrix} k_G & k_G \sinh m/\cosh z \\
+                k_G \sinh m/\cosh z & \tfrac{w}{2}\coth z + k_G \sinh^2 m \, z/(\sinh z\cosh z)
+                \end{pmatrix}.
+
+        Returns an array of shape ``(*shape, 2, 2)`` (N/m): rows ``(H, V_B)``,
+        columns ``(span, dh)``.
+        """
+        xp, z, k_g = self._xp, self.z, self.k_G
+        with float_range("solution", "the stiffness"), np.errstate(over="ignore"):
+            sinh_m, cosh_z, tanh_z = xp.sinh(self.m), xp.cosh(z), xp.tanh(z)
+            cross = k_g * (sinh_m / cosh_z)
+            # z/(sinh z cosh z) = 2z/sinh 2z, in (0, 1]
+            vv = 0.5 * self.w / tanh_z + k_g * sinh_m * sinh_m * (z / cosh_z) / xp.sinh(z)
+        return matrix_2x2(k_g, cross, cross, vv)
 
     def _residuals(self):
         span, dh, a, z, m, xp = self.span, self.dh, self.a, self.z, self.m, self._xp

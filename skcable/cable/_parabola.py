@@ -34,7 +34,7 @@ from skcable._xp import namespace
 from skcable.cable._catenary import _finite_at, _lowest, _unit
 from skcable.cable._roots import find_root
 from skcable.cable._special import asinh_diff
-from skcable.cable.solution import CableSolution, checked_closed_form
+from skcable.cable.solution import CableSolution, checked_closed_form, matrix_2x2
 from skcable.errors import InputError
 
 __all__ = ["Parabola", "parabola"]
@@ -212,6 +212,34 @@ class Parabola(CableSolution):
 
     def weight_per_length(self, x, slope):
         return self.w / np.hypot(1.0, slope)  # w per horizontal metre
+
+    @cached_property
+    def k_G(self):
+        """Geometric stiffness ``dH/d(span)`` at constant length and ``dh`` (N/m).
+
+        ``S(a, span)`` held constant: ``k_G = -w (∂S/∂span)/(∂S/∂a)``, both
+        derivatives free of the cancellation of the textbook forms for taut cables.
+        """
+        with float_range("solution", "k_G"), np.errstate(over="ignore", divide="ignore"):
+            ds_da, ds_dspan = length_derivatives(self.a, self._slope, self._delta, self.length)
+            return -self.w * ds_dspan / ds_da
+
+    def stiffness(self):
+        """Fairlead stiffness ``∂(H, V_B)/∂(span, dh)`` with A fixed, length constant.
+
+        ``S(a, span, dh)`` constant gives ``da/dq = -S_q/S_a``; then ``H = w a``
+        and ``V_B = H dh/span + w span/2``. Returns an array of shape
+        ``(*shape, 2, 2)`` (N/m): rows ``(H, V_B)``, columns ``(span, dh)``.
+        """
+        slope, delta = self._slope, self._delta
+        with float_range("solution", "the stiffness"), np.errstate(over="ignore", divide="ignore"):
+            ds_da, ds_dspan = length_derivatives(self.a, slope, delta, self.length)
+            r_a, r_b = namespace(slope).hypot(1.0, self.p_A), namespace(slope).hypot(1.0, self.p_B)
+            ds_ddh = 2.0 * slope / (r_a + r_b)
+            h_span, h_dh = -self.w * ds_dspan / ds_da, -self.w * ds_ddh / ds_da
+            v_span = h_span * slope - self.H * slope / self.span + 0.5 * self.w
+            v_dh = h_dh * slope + self.H / self.span
+        return matrix_2x2(h_span, h_dh, v_span, v_dh)
 
     def _residuals(self):
         xp = self._xp

@@ -32,12 +32,12 @@ from __future__ import annotations
 
 import numpy as np
 
-from skcable._checks import TINY, broadcast, float_range, positive
+from skcable._checks import TINY, broadcast, positive
 from skcable._xp import namespace
 from skcable.cable._catenary import Catenary
-from skcable.cable._elastic import ElasticCatenary, elastic_stiffness
-from skcable.cable._parabola import Parabola, length_derivatives
-from skcable.cable._special import ldexp_sum, power_product, z_minus_tanh_over_cube
+from skcable.cable._elastic import ElasticCatenary
+from skcable.cable._parabola import Parabola
+from skcable.cable._special import ldexp_sum, power_product
 from skcable.cable.lines.seabed import SeabedCatenary
 from skcable.errors import InputError
 
@@ -73,18 +73,8 @@ def geometric_stiffness(solution, *, EA=None):
             raise InputError("EA", "the elastic solution has its own EA; leave EA out")
         k = fairlead_stiffness(solution)[..., 0, 0]
         return _representable("solution", float(k) if k.ndim == 0 else k, "dH/dspan")
-    if isinstance(solution, Catenary):
-        # w/(2(z - tanh z)), z - tanh z ~ z³/3 for taut cables: z³ underflows long
-        # before the stiffness overflows, so w/z³ is formed from mantissas and exponents
-        z = solution.z
-        k_g = ldexp_sum(power_product(0.5, (solution.w, 1), (z, -3))) / z_minus_tanh_over_cube(z)
-    elif isinstance(solution, Parabola):
-        # S(a, span) at constant dh; k_G = -w (dS/dspan) / (dS/da), both derivatives
-        # free of the cancellation of the textbook forms for taut cables
-        s = solution
-        with float_range("solution", "k_G"), np.errstate(over="ignore", divide="ignore"):
-            ds_da, ds_dspan = length_derivatives(s.a, s._slope, s._delta, s.length)
-            k_g = -s.w * ds_dspan / ds_da
+    if isinstance(solution, (Catenary, Parabola)):
+        k_g = solution.k_G
     else:
         raise InputError(
             "solution",
@@ -126,14 +116,8 @@ def fairlead_stiffness(solution):
     InputError
         Another kind of solution, or a stiffness beyond the range of a float.
     """
-    if isinstance(solution, SeabedCatenary):
+    if isinstance(solution, (Catenary, Parabola, ElasticCatenary, SeabedCatenary)):
         k = solution.stiffness()
-    elif isinstance(solution, ElasticCatenary):
-        k = elastic_stiffness(solution)
-    elif isinstance(solution, Catenary):
-        k = _catenary_stiffness(solution)
-    elif isinstance(solution, Parabola):
-        k = _parabola_stiffness(solution)
     else:
         raise InputError(
             "solution",
@@ -142,37 +126,6 @@ def fairlead_stiffness(solution):
     if not np.isfinite(k).all():  # zeros are legitimate here (dh = 0 decouples H and V_B)
         raise InputError("solution", "gives the stiffness outside the range of a float (over- or underflow)")
     return k
-
-
-def _matrix(k11, k12, k21, k22):
-    return np.stack(
-        [np.stack(np.broadcast_arrays(k11, k12), -1), np.stack(np.broadcast_arrays(k21, k22), -1)], -2
-    )
-
-
-def _catenary_stiffness(c):
-    xp = c._xp
-    k_g = geometric_stiffness(c)
-    z = c.z
-    with float_range("solution", "the stiffness"), np.errstate(over="ignore"):
-        sinh_m, cosh_z, tanh_z = xp.sinh(c.m), xp.cosh(z), xp.tanh(z)
-        cross = k_g * (sinh_m / cosh_z)
-        # z/(sinh z cosh z) = 2z/sinh 2z, in (0, 1]
-        vv = 0.5 * c.w / tanh_z + k_g * sinh_m * sinh_m * (z / cosh_z) / xp.sinh(z)
-    return _matrix(k_g, cross, cross, vv)
-
-
-def _parabola_stiffness(p):
-    # S(a, span, dh) constant: da/dq = -S_q/S_a; H = w a, V_B = H dh/span + w span/2
-    slope, delta = p._slope, p._delta
-    with float_range("solution", "the stiffness"), np.errstate(over="ignore", divide="ignore"):
-        ds_da, ds_dspan = length_derivatives(p.a, slope, delta, p.length)
-        r_a, r_b = namespace(slope).hypot(1.0, p.p_A), namespace(slope).hypot(1.0, p.p_B)
-        ds_ddh = 2.0 * slope / (r_a + r_b)
-        h_span, h_dh = -p.w * ds_dspan / ds_da, -p.w * ds_ddh / ds_da
-        v_span = h_span * slope - p.H * slope / p.span + 0.5 * p.w
-        v_dh = h_dh * slope + p.H / p.span
-    return _matrix(h_span, h_dh, v_span, v_dh)
 
 
 def _representable(name, value, what):

@@ -23,7 +23,7 @@ from skcable._xp import namespace
 from skcable.cable._special import largest_abs
 from skcable.errors import ConvergenceError, InputError
 
-__all__ = ["CableSolution", "checked"]
+__all__ = ["CableSolution", "checked", "matrix_2x2"]
 
 #: Largest relative residual a solver may hand back without raising.
 ACCEPT = 1e-9
@@ -32,6 +32,13 @@ _ATTRIBUTE_OF = {"length": "length", "sag": "sag", "H": "H", "low": "y_low", "T_
 _SHOWN = ("H", "V_A", "V_B", "T_A", "T_B", "length", "sag", "x_low", "y_low", "x_vertex", "y_vertex")
 #: The forces among them (an overflow there is blamed on the load unless a force is the constraint).
 _FORCES = frozenset(("H", "V_A", "V_B", "T_A", "T_B"))
+
+
+def matrix_2x2(k11, k12, k21, k22):
+    """Stack four broadcastable entries into an array of shape ``(*shape, 2, 2)``."""
+    return np.stack(
+        [np.stack(np.broadcast_arrays(k11, k12), -1), np.stack(np.broadcast_arrays(k21, k22), -1)], -2
+    )
 
 
 class CableSolution:
