@@ -40,7 +40,6 @@ import mpmath as mp
 import numpy as np
 
 from skcable import cable
-from skcable.errors import ConvergenceError, InputError
 
 ROOT = Path(__file__).resolve().parents[1]
 SPAN, W = 100.0, 1.0
@@ -87,7 +86,14 @@ def exact(dh, L, EA, cb, starts):
                 H, V = mp.findroot(f, (mp.mpf(H0), mp.mpf(V0)), tol=mp.mpf(10) ** -30, maxsteps=200)
             except (ValueError, ZeroDivisionError):
                 continue
-            if mp.im(H) == 0 and mp.im(V) == 0 and H > 0 and V > 0 and ok(V) and max(map(abs, f(H, V))) < 1e-25:
+            if (
+                mp.im(H) == 0
+                and mp.im(V) == 0
+                and H > 0
+                and V > 0
+                and ok(V)
+                and max(map(abs, f(H, V))) < 1e-25
+            ):
                 return float(H), float(V)
     return None
 
@@ -169,7 +175,9 @@ def notes(rows):
             out.append(f"- {name}: no wrong or failed run.")
             continue
         cells = sorted({(r[0], r[1]) for r in bad})
-        where = ", ".join(f"dh/span {a:g} slack {b:g}" for a, b in cells[:6]) + (" ..." if len(cells) > 6 else "")
+        where = ", ".join(f"dh/span {a:g} slack {b:g}" for a, b in cells[:6]) + (
+            " ..." if len(cells) > 6 else ""
+        )
         kinds = sorted({r[7].split(":")[0] or r[5] for r in bad})
         out.append(f"- {name}: {len(bad)} wrong or failed ({', '.join(kinds)}) at {where}.")
     return "\n".join(out)
