@@ -28,7 +28,7 @@ from math import pi, radians
 import numpy as np
 
 from skcable.errors import InputError
-from skcable.strand._material import Material, _integer, _name, _scalar, material
+from skcable.strand._material import Material, WireMaterials, _integer, _name, _scalar, material
 
 __all__ = ["Layer", "Strand", "Wires", "preset"]
 
@@ -50,6 +50,9 @@ class Layer:
         +1 for a right-hand lay, -1 for left.
     phase : float
         Rotation of the layer (rad): wire j sits at ``phase + 2 pi j / count`` from +z.
+    material : Material or None
+        The material of this layer's wires; None (default): the strand's ``material``.
+        A conductor such as ACSR has aluminium layers around a steel core.
 
     Notes
     -----
@@ -63,6 +66,7 @@ class Layer:
     lay_length: float | None = None
     direction: int = 1
     phase: float = 0.0
+    material: Material | None = None
 
     def __post_init__(self):
         count = _integer("count", self.count)
@@ -88,6 +92,10 @@ class Layer:
             raise InputError("direction", f"must be +1 (right lay) or -1 (left lay), got {self.direction!r}")
         values["direction"] = int(self.direction)
         values["phase"] = _scalar("phase", self.phase)
+        if self.material is not None and not isinstance(self.material, Material):
+            raise InputError(
+                "material", f"must be a Material or None (the strand's), got {self.material!r}"
+            )
         for key, value in values.items():  # plain Python numbers
             object.__setattr__(self, key, value)
 
@@ -105,6 +113,7 @@ class Wires:
     diameter: np.ndarray  #: wire diameter (m)
     layer: np.ndarray  #: 0 for the core, k for layer k
     intact: np.ndarray  #: False for broken wires
+    material: np.ndarray  #: index of the wire's material in `Strand.materials`
 
     @property
     def area(self) -> np.ndarray:
@@ -128,7 +137,9 @@ class Strand:
     layers : tuple of Layer
         From the core outward (a list is stored as a tuple).
     material : Material
-        Wire material (all wires).
+        Wire material: of every wire whose layer names none (and of the core unless
+        ``core_material`` is given). The reference modulus of the section's
+        transformed (modular-ratio) inertias.
     broken : frozenset of (layer, index)
         Broken wires: layer number (1 = first helical layer; the core cannot
         break) and wire index (0 to the layer's count - 1), integers only. A
@@ -136,6 +147,9 @@ class Strand:
         listed twice raises InputError.
     name : str
         Label (presets: ``"steel-9.5"`` ...).
+    core_material : Material or None
+        The core wire's material; None (default): ``material``. With `Layer.material`,
+        a material per layer (multi-material strands: ACSR's steel core and aluminium layers).
     """
 
     core_diameter: float
@@ -143,6 +157,7 @@ class Strand:
     material: Material
     broken: frozenset = field(default_factory=frozenset)
     name: str = ""
+    core_material: Material | None = None
 
     def __post_init__(self):
         object.__setattr__(
@@ -163,6 +178,33 @@ class Strand:
             )
         object.__setattr__(self, "broken", frozenset(self._wire_set("broken", self.broken)))
         _name(self.name)
+        if self.core_material is not None and not isinstance(self.core_material, Material):
+            raise InputError(
+                "core_material", f"must be a Material or None (the strand's), got {self.core_material!r}"
+            )
+
+    # --- materials --------------------------------------------------------
+    @property
+    def layer_materials(self) -> tuple[Material, ...]:
+        """The material of the core (entry 0) and of every layer (entries 1, 2, ...)."""
+        core = self.core_material if self.core_material is not None else self.material
+        return (core, *(layer.material or self.material for layer in self.layers))
+
+    @property
+    def materials(self) -> tuple[Material, ...]:
+        """The distinct wire materials, in order of first appearance from the core outward."""
+        out = []
+        for item in self.layer_materials:
+            if item not in out:
+                out.append(item)
+        return tuple(out)
+
+    def wire_materials(self) -> WireMaterials:
+        """Every wire's material (core first), grouped for vectorised evaluation."""
+        materials = self.materials
+        per_layer = np.array([materials.index(m) for m in self.layer_materials])
+        counts = [1, *(layer.count for layer in self.layers)]
+        return WireMaterials(materials, np.repeat(per_layer, counts))
 
     def _wire_set(self, argument: str, wires) -> list[tuple[int, int]]:
         """Validated (layer, index) pairs of ``wires`` (a set, list or tuple of pairs).
@@ -223,7 +265,7 @@ class Strand:
             f"Strand({self.name or 'strand'!r}: {counts} wires, diameter {m(self.diameter)}, "
             f"core {m(self.core_diameter)}; {'; '.join(rows)}; "
             f"{len(broken)} broken{': ' + shown if broken else ''}; "
-            f"material {self.material.name or 'custom'!r})"
+            f"material {'/'.join(m.name or 'custom' for m in self.materials)!r})"
         )
 
     # --- geometry ---------------------------------------------------------
@@ -271,6 +313,7 @@ class Strand:
                 diameter=self.core_diameter,
                 layer=0,
                 intact=True,
+                material=0,
             ).items()
         }
         for k, (layer, R, alpha) in enumerate(
@@ -287,9 +330,11 @@ class Strand:
                 diameter=np.full(layer.count, layer.wire_diameter),
                 layer=np.full(layer.count, k),
                 intact=np.array([(k, j) not in self.broken for j in range(layer.count)]),
+                material=np.zeros(layer.count, dtype=int),
             )
             for key, value in values.items():
                 columns[key].extend(np.atleast_1d(value).tolist())
+        columns["material"] = self.wire_materials().index
         return Wires(**{k: np.array(v) for k, v in columns.items()})
 
     # --- damage -----------------------------------------------------------
