@@ -93,9 +93,7 @@ class Layer:
         values["direction"] = int(self.direction)
         values["phase"] = _scalar("phase", self.phase)
         if self.material is not None and not isinstance(self.material, Material):
-            raise InputError(
-                "material", f"must be a Material or None (the strand's), got {self.material!r}"
-            )
+            raise InputError("material", f"must be a Material or None (the strand's), got {self.material!r}")
         for key, value in values.items():  # plain Python numbers
             object.__setattr__(self, key, value)
 
@@ -403,10 +401,53 @@ _TABLE_3_1 = {
 }
 
 
+#: ACSR conductors of ASTM B232/B232M-17, "Standard Specification for Concentric-Lay-Stranded
+#: Aluminum Conductors, Coated-Steel Reinforced (ACSR)": code word -> (steel wire diameter (m),
+#: aluminium wire diameter (m), aluminium wires per layer from the core outward). The core is 1+6
+#: steel wires. Lay ratios (lay length / outside diameter of the layer) are not fixed by the
+#: code word; the standard bounds them (steel layer 16-26, inner aluminium layers 10-16, outer
+#: layer 10-13) and these presets take 19, 13 and 11; the outer layer is right-hand and the
+#: directions alternate inward (the standard's rule).
+_ACSR = {
+    "acsr-drake": (3.454e-3, 4.442e-3, (10, 16)),  # 795 kcmil 26/7, outer diameter 28.14 mm
+    "acsr-hawk": (2.675e-3, 3.439e-3, (10, 16)),  # 477 kcmil 26/7, outer diameter 21.79 mm
+}
+_ACSR_LAY_RATIO = {"steel": 19.0, "inner": 13.0, "outer": 11.0}
+
+
+def _acsr(name: str) -> Strand:
+    steel_d, al_d, counts = _ACSR[name]
+    steel, aluminium = material("steel"), material("aluminium")
+    layers, outside = [], 3 * steel_d
+    specs = [(6, steel_d, steel)] + [(n, al_d, aluminium) for n in counts]
+    for k, (count, d, wire_material) in enumerate(specs):
+        outside = 3 * steel_d if k == 0 else outside + 2 * d
+        ratio = _ACSR_LAY_RATIO["steel" if k == 0 else "outer" if k == len(specs) - 1 else "inner"]
+        direction = 1 if (len(specs) - 1 - k) % 2 == 0 else -1  # outer right-hand, alternating inward
+        layers.append(
+            Layer(count, d, lay_length=ratio * outside, direction=direction, material=wire_material)
+        )
+    return Strand(steel_d, tuple(layers), aluminium, name=name, core_material=steel)
+
+
 def preset(name: str) -> Strand:
-    """A 1x7 strand of Pino Vidal (2021), Table 3.1: ``"steel-9.5"``, ``"aluminium-10.1"``,
-    ``"steel-12.7"`` or ``"aluminium-14.3"`` (equal wires, helix radius d)."""
+    """A preset strand.
+
+    The 1x7 strands of Pino Vidal (2021), Table 3.1: ``"steel-9.5"``, ``"aluminium-10.1"``,
+    ``"steel-12.7"`` or ``"aluminium-14.3"`` (equal wires, helix radius d, one material).
+
+    Multi-material conductors, ACSR 26/7 of ASTM B232/B232M-17 (a 1+6 steel core under 10 and 16
+    aluminium wires): ``"acsr-drake"`` (795 kcmil, steel 3.454 mm, aluminium 4.442 mm wires,
+    28.14 mm) and ``"acsr-hawk"`` (477 kcmil, steel 2.675 mm, aluminium 3.439 mm, 21.79 mm). Lay
+    ratios 19 (steel), 13 (inner aluminium), 11 (outer), inside the standard's ranges; the
+    strand's ``material`` is aluminium, ``core_material`` and the first layer's steel (the wire
+    laws of Pino Vidal (2021), Table B.1, with the densities and expansion coefficients of
+    IEC 61089:1991).
+    """
+    if isinstance(name, str) and name in _ACSR:
+        return _acsr(name)
     if not isinstance(name, str) or name not in _TABLE_3_1:
-        raise InputError("name", f"unknown strand {name!r}; known: {', '.join(_TABLE_3_1)}")
+        known = ", ".join([*_TABLE_3_1, *_ACSR])
+        raise InputError("name", f"unknown strand {name!r}; known: {known}")
     d, mat, _nominal, alpha = _TABLE_3_1[name]
     return Strand(d, (Layer(6, d, lay_angle=radians(alpha)),), material(mat), name=name)
