@@ -147,3 +147,34 @@ def test_annex_e_refuses_several_materials():
     with pytest.raises(InputError) as err:
         strand.fe.annex_e.annex_e_section(strand.preset("acsr-drake").damaged(1), slip=False, x=0.0)
     assert err.value.argument == "strand"
+
+
+#: a 1x7 of a steel core under six aluminium wires (the slip laws need one helical layer)
+STEEL_CORE_1X7 = strand.Strand(
+    3.1e-3, (strand.Layer(6, 3.1e-3, lay_angle=0.13, material=ALUMINIUM),), STEEL, name="steel/aluminium 1x7"
+)
+
+
+@pytest.mark.parametrize(
+    "name, slip, damage_load",
+    [
+        ("acsr-hawk", "none", "eccentricity"),
+        ("acsr-hawk", "none", "sinusoidal"),
+        ("1x7", "axis", "eccentricity"),
+    ],
+)
+def test_damaged_multi_material_tangent_agrees_with_central_differences(name, slip, damage_load):
+    """Per-material stresses and tangents, the modulus-weighted centroid, the slip law's κ_m of
+    mixed wires and the sinusoidal loads of broken aluminium wires: K = ∂R/∂U by central
+    differences, at a strain where the aluminium has left its linear branch (its blend starts
+    at 0.003) and the steel has not."""
+    d = (STEEL_CORE_1X7 if name == "1x7" else strand.preset(name)).damaged(2)
+    model = strand.StrandModel(d, 0.4, n_elements=8, slip=slip, damage_load=damage_load)
+    rng = np.random.default_rng(1)
+    U = model.uniform(0.0036) + 1e-5 * rng.standard_normal(model.offsets[-1])
+    R, K, _ = model.assemble(U)
+    direction = np.zeros(U.size)
+    direction[model.free] = rng.standard_normal(model.free.size) * 1e-3
+    eps = 1e-6
+    fd = (model.assemble(U + eps * direction)[0] - model.assemble(U - eps * direction)[0]) / (2 * eps)
+    assert K @ direction == pytest.approx(fd, rel=1e-4, abs=1e-6 * np.abs(fd).max())
