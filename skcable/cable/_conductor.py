@@ -8,12 +8,12 @@ loads of radial ice and of wind pressure on the (iced) diameter.
 
 From a strand (`Conductor.from_strand`, any `skcable.strand.Strand`, several
 materials or one, damaged or not), with every wire i of area A_i, lay angle α_i,
-modulus E_i, density ρ_i and expansion α_i of its own material:
+modulus E_i, density ρ_i and thermal expansion coefficient α_T,i of its own material:
 
 .. math::
     EA = \sum_{\text{intact}} E_i A_i\cos^3\alpha_i, \qquad
     w = g \sum_{\text{all}} \rho_i A_i / \cos\alpha_i, \qquad
-    \alpha = \frac{\sum_{\text{intact}} E_i A_i\cos^3\alpha_i\,\alpha_i}
+    \alpha = \frac{\sum_{\text{intact}} E_i A_i\cos^3\alpha_i\,\alpha_{T,i}}
                   {\sum_{\text{intact}} E_i A_i\cos^3\alpha_i}.
 
 ``EA`` is the section's axial stiffness (`skcable.strand.Section.EA`; K.O. Papailiou,
