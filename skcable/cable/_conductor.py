@@ -125,7 +125,9 @@ class Conductor:
 
     # --- from a strand ----------------------------------------------------------------
     @classmethod
-    def from_strand(cls, strand, *, damage=None, g: float = STANDARD_GRAVITY, name: str | None = None):
+    def from_strand(
+        cls, strand, *, damage=None, EA=None, g: float = STANDARD_GRAVITY, name: str | None = None
+    ):
         """The conductor of a strand (see the module text for the formulas and their sources).
 
         Parameters
@@ -137,6 +139,12 @@ class Conductor:
             Wires to break first: an int n breaks n adjacent outer wires
             (``strand.damaged(n)``), a list of pairs those wires (``strand.damaged(wires=...)``);
             None (default) takes the strand as it is.
+        EA : float, optional
+            Axial stiffness (N) to use instead of the section's, e.g. the secant
+            ``K_Leq`` of a finite-element capacity curve of the damaged strand
+            (``StrandModel(strand, length).capacity_curve().K_Leq``) for a span where the
+            broken wires' eccentric bending matters; the weight, ``alpha`` and ``rts``
+            still come from the strand.
         g : float
             Acceleration of gravity (m/s²), > 0; standard gravity by default.
         name : str, optional
@@ -194,7 +202,13 @@ class Conductor:
         rts = float(axial_force(strand, first))
         label = strand.name if name is None else name
         return cls(
-            EA=section.EA, w=weight, alpha=alpha, diameter=strand.diameter, rts=rts, name=label, strand=strand
+            EA=section.EA if EA is None else _positive_scalar("EA", EA),
+            w=weight,
+            alpha=alpha,
+            diameter=strand.diameter,
+            rts=rts,
+            name=label,
+            strand=strand,
         )
 
     # --- loads ------------------------------------------------------------------------

@@ -67,6 +67,14 @@ def test_acsr_alpha_is_the_stiffness_weighted_mean_and_damage_removes_outer_alum
     # damage as a list of wires: the same two outer wires in the preset's numbering (no rotation)
     listed = cable.Conductor.from_strand(drake, damage=[(3, 0), (3, 1)])
     assert listed.EA == pytest.approx(broken.EA, rel=1e-12)
+    # a stiffness from elsewhere (e.g. a capacity curve's K_Leq) replaces EA only
+    given = cable.Conductor.from_strand(drake, damage=2, EA=0.9 * broken.EA)
+    assert (given.EA, given.w, given.alpha, given.rts) == (
+        0.9 * broken.EA,
+        broken.w,
+        broken.alpha,
+        broken.rts,
+    )
 
 
 def test_ice_and_wind_loads():
@@ -170,6 +178,7 @@ def test_bad_input_raises_naming_the_argument():
     raises("strand", lambda: cable.Conductor.from_strand("steel-9.5"))
     raises("damage", lambda: cable.Conductor.from_strand(strand.preset("steel-9.5"), damage="two"))
     raises("n", lambda: cable.Conductor.from_strand(strand.preset("steel-9.5"), damage=6))
+    raises("EA", lambda: cable.Conductor.from_strand(strand.preset("steel-9.5"), EA=0.0))
     raises("g", lambda: cable.Conductor.from_strand(strand.preset("steel-9.5"), g=-9.8))
     # a material without density cannot give a weight
     bare = strand.Material(2e11, 1e9, eps_y=0.004, eps_y1=0.003, eps_y2=0.005, eps_rupture=0.05, alpha=12e-6)
