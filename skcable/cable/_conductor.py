@@ -324,6 +324,7 @@ class Conductor:
                     "load_cases", f"case {case!r} must be a pair (ice, wind_pressure), got {value!r}"
                 )
             ice, pressure = scalar("load_cases", value[0]), scalar("load_cases", value[1])
+            nonnegative("load_cases", np.array([ice, pressure]))  # ice thickness and pressure >= 0
             w = float(self.w + self.ice_load(ice, density=ice_density, g=g))
             loads[case] = (w, float(self.wind_load(pressure, ice=ice)))
         H0, sag0 = self._reference(span, dh, H0, sag0, length, model)

@@ -311,7 +311,6 @@ class Strand:
                 diameter=self.core_diameter,
                 layer=0,
                 intact=True,
-                material=0,
             ).items()
         }
         for k, (layer, R, alpha) in enumerate(
@@ -328,7 +327,6 @@ class Strand:
                 diameter=np.full(layer.count, layer.wire_diameter),
                 layer=np.full(layer.count, k),
                 intact=np.array([(k, j) not in self.broken for j in range(layer.count)]),
-                material=np.zeros(layer.count, dtype=int),
             )
             for key, value in values.items():
                 columns[key].extend(np.atleast_1d(value).tolist())

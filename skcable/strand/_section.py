@@ -108,6 +108,8 @@ class Section:
         Stick and full-slip second moments about principal axes 1 and 2,
         lay factors included (m⁴). Not principal maxima and minima: both
         entries of ``I_stick`` are stick values.
+        With several materials, those of the transformed section (each wire's
+        area and own inertia times ``E_i / E``, E the strand's ``material``).
     composite_bending : ndarray of bool (2,)
         False about a principal axis along which every intact wire lies (no
         wire has a lever, ``I_stick == I_slip`` exactly).

@@ -175,6 +175,10 @@ def test_bad_input_raises_naming_the_argument():
     raises(
         "load_cases", lambda: c.sag_tension_table(SPAN, t0=T0, H0=H0, temperatures=[0], load_cases={"x": 1})
     )
+    raises(
+        "load_cases",
+        lambda: c.sag_tension_table(SPAN, t0=T0, H0=H0, temperatures=[0], load_cases={"x": (-0.01, 0)}),
+    )
     raises("strand", lambda: cable.Conductor.from_strand("steel-9.5"))
     raises("damage", lambda: cable.Conductor.from_strand(strand.preset("steel-9.5"), damage="two"))
     raises("n", lambda: cable.Conductor.from_strand(strand.preset("steel-9.5"), damage=6))
