@@ -8,6 +8,7 @@ default (m, N, N/m); any consistent system works.
 
 from skcable.cable._catenary import Catenary, catenary
 from skcable.cable._choice import solve
+from skcable.cable._conductor import Conductor
 from skcable.cable._elastic import ElasticCatenary
 from skcable.cable._frequencies import NaturalFrequencies, irvine_frequencies, natural_frequencies
 from skcable.cable._funicular import Funicular, FunicularVertical, funicular, funicular_vertical
@@ -83,4 +84,5 @@ __all__ = [
     "solve",
     "smooth_surface_reaction",
     "sphere_parallel",
+    "Conductor",
 ]

@@ -39,9 +39,16 @@ about it coincide exactly, no wire has a friction lever (θ = 0, ``M_rf = 0``),
 and the law is linear, ``M = EI_slip κ``, whatever κ_m is: no interwire shear
 arises, so slip about that axis never starts. It is represented finitely by
 ``BendingLaw.linear`` = True, ``M_rf = 0`` and
-``κ_m = 2 ε_rupture / d_max``, the curvature at which the thickest intact wire
+``κ_m = 2 ε_rupture / d_max`` (with several materials, the smallest
+``2 ε_rupture,i / d_i`` over the intact wires), the curvature at which the thickest intact wire
 would break by its own bending alone: no slip about that axis within the
 range where the law means anything. That κ_m does not depend on μ or ε.
+
+**Several materials** (a material per layer, `Layer.material`): every wire's
+secant modulus and stress are those of its own material at its strain, so
+``EI_stick = sum E_sec,i (A_i cos^3 α_i d_i^2 + I_w,i cos α_i)`` with d_i about
+the section's modulus-weighted centroid, and ``F_i = A_i σ_i(cos²α_i ε)``; the
+axial strain must stay below the smallest rupture strain of the materials.
 
 Axes: arrays of two entries are over principal axes 1 and 2 (index 0 is
 principal axis 1, as ``curvature_1`` in the CLI and the VTK files), and every
@@ -71,8 +78,13 @@ def _section(section) -> Section:
     return section
 
 
+def _rupture(strand) -> float:
+    """The smallest rupture strain among the strand's materials (its only one if it has one)."""
+    return min(m.eps_rupture for m in strand.materials)
+
+
 def _strains(section: Section, axial_strain, *, scalar: bool) -> np.ndarray:
-    top = section.strand.material.eps_rupture
+    top = _rupture(section.strand)
     if scalar:
         if not _is_real_scalar(axial_strain):
             raise InputError(
@@ -121,7 +133,7 @@ def _theta(section: Section, axis: int) -> np.ndarray:
 
 def _law(section: Section, mu: float, strain: np.ndarray) -> dict:
     """EI_stick, EI_slip, M_rf, kappa_m (2, *strain.shape) of Cardou's law at every strain."""
-    w, material = section.wires, section.strand.material
+    w, materials = section.wires, section.materials
     alive, composite = w.intact, section.composite_bending
     helical = alive & (w.layer > 0)
     cos, sin = np.cos(w.lay_angle), np.sin(w.lay_angle)
@@ -138,12 +150,15 @@ def _law(section: Section, mu: float, strain: np.ndarray) -> dict:
         raise InputError("mu", f"the capstan factor exp(mu·θ·sin α) overflows for mu = {mu!r}")
     flat = strain.reshape(-1)
     wire_strain = np.multiply.outer(cos**2, flat)  # (wires, n)
-    modulus = material.secant(wire_strain)  # secant modulus per wire
-    force = w.area[:, None] * material.stress(wire_strain)
+    modulus = materials.secant(wire_strain)  # secant modulus per wire, its own material
+    force = w.area[:, None] * materials.stress(wire_strain)
     composite_part = stick @ modulus  # (2, n)
     slip = np.broadcast_to(own @ modulus, composite_part.shape)
     M_rf = capstan @ force
-    no_lever = 2.0 * material.eps_rupture / float(np.max(w.diameter[alive]))
+    if materials.uniform:
+        no_lever = 2.0 * materials.materials[0].eps_rupture / float(np.max(w.diameter[alive]))
+    else:  # the intact wire that breaks first by its own bending
+        no_lever = float(np.min(2.0 * materials.take("eps_rupture")[alive] / w.diameter[alive]))
     with np.errstate(divide="ignore", invalid="ignore"):
         kappa = np.where(composite[:, None], M_rf / composite_part, no_lever)
     out = dict(EI_stick=composite_part + slip, EI_slip=slip.copy(), M_rf=M_rf, kappa_m=kappa)

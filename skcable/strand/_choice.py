@@ -43,7 +43,7 @@ class ClosedFormCurve:
     @property
     def K_Leq(self) -> float:
         """Secant stiffness at the strain where the core leaves the linear branch (N)."""
-        limit = self.strand.material.eps_y1  # the core (alpha = 0) is the most strained wire
+        limit = _first_wire_strain(self.strand, "eps_y1")
         return float(axial_force(self.strand, limit) / limit)
 
     @property
@@ -59,13 +59,24 @@ class ClosedFormCurve:
         return np.zeros_like(self.strain)
 
 
+def _first_wire_strain(strand, attribute: str) -> float:
+    """The strand strain at which the first intact wire reaches its material's limit strain
+    ``attribute`` ("eps_y1" or "eps_rupture"): ``min_j limit_j / cos²α_j`` (the straight core,
+    α = 0, when every wire has one material)."""
+    wires = strand.wires()
+    limit = strand.wire_materials().take(attribute)[wires.intact]
+    return float(np.min(limit / np.cos(wires.lay_angle[wires.intact]) ** 2))
+
+
 def axial_force(strand, strain):
-    """``Σ A_j cos α_j σ(cos²α_j ε)`` over the intact wires (N), for any array of strains."""
+    """``Σ A_j cos α_j σ_j(cos²α_j ε)`` over the intact wires (N), for any array of strains;
+    σ_j the law of wire j's own material."""
     wires = strand.wires()
     strain = np.asarray(strain, dtype=float)
     cos = np.cos(wires.lay_angle)[wires.intact]
     area = wires.area[wires.intact]
-    stress = strand.material.stress(np.multiply.outer(strain, cos**2))
+    materials = strand.wire_materials().subset(wires.intact)
+    stress = materials.stress(np.multiply.outer(strain, cos**2), axis=-1)
     return np.sum(area * cos * stress, axis=-1)
 
 
@@ -96,7 +107,7 @@ def analyse(
     if int(n_points) < 2:
         raise InputError("n_points", f"must be at least 2, got {n_points!r}")
     if not strand.broken:
-        top = strand.material.eps_rupture  # the straight core ruptures first
+        top = _first_wire_strain(strand, "eps_rupture")  # one material: the straight core
         strain = np.linspace(0.0, top, int(n_points))
         reason = "undamaged strand in tension: straight and untwisted, F = Σ A cos α σ(cos²α ε) (no FE)"
         return Analysis("closed form", reason, ClosedFormCurve(strand, strain, axial_force(strand, strain)))

@@ -28,7 +28,7 @@ from math import pi, radians
 import numpy as np
 
 from skcable.errors import InputError
-from skcable.strand._material import Material, _integer, _name, _scalar, material
+from skcable.strand._material import Material, WireMaterials, _integer, _name, _scalar, material
 
 __all__ = ["Layer", "Strand", "Wires", "preset"]
 
@@ -50,6 +50,9 @@ class Layer:
         +1 for a right-hand lay, -1 for left.
     phase : float
         Rotation of the layer (rad): wire j sits at ``phase + 2 pi j / count`` from +z.
+    material : Material or None
+        The material of this layer's wires; None (default): the strand's ``material``.
+        A conductor such as ACSR has aluminium layers around a steel core.
 
     Notes
     -----
@@ -63,6 +66,7 @@ class Layer:
     lay_length: float | None = None
     direction: int = 1
     phase: float = 0.0
+    material: Material | None = None
 
     def __post_init__(self):
         count = _integer("count", self.count)
@@ -88,6 +92,8 @@ class Layer:
             raise InputError("direction", f"must be +1 (right lay) or -1 (left lay), got {self.direction!r}")
         values["direction"] = int(self.direction)
         values["phase"] = _scalar("phase", self.phase)
+        if self.material is not None and not isinstance(self.material, Material):
+            raise InputError("material", f"must be a Material or None (the strand's), got {self.material!r}")
         for key, value in values.items():  # plain Python numbers
             object.__setattr__(self, key, value)
 
@@ -105,6 +111,7 @@ class Wires:
     diameter: np.ndarray  #: wire diameter (m)
     layer: np.ndarray  #: 0 for the core, k for layer k
     intact: np.ndarray  #: False for broken wires
+    material: np.ndarray  #: index of the wire's material in `Strand.materials`
 
     @property
     def area(self) -> np.ndarray:
@@ -128,7 +135,9 @@ class Strand:
     layers : tuple of Layer
         From the core outward (a list is stored as a tuple).
     material : Material
-        Wire material (all wires).
+        Wire material: of every wire whose layer names none (and of the core unless
+        ``core_material`` is given). The reference modulus of the section's
+        transformed (modular-ratio) inertias.
     broken : frozenset of (layer, index)
         Broken wires: layer number (1 = first helical layer; the core cannot
         break) and wire index (0 to the layer's count - 1), integers only. A
@@ -136,6 +145,9 @@ class Strand:
         listed twice raises InputError.
     name : str
         Label (presets: ``"steel-9.5"`` ...).
+    core_material : Material or None
+        The core wire's material; None (default): ``material``. With `Layer.material`,
+        a material per layer (multi-material strands: ACSR's steel core and aluminium layers).
     """
 
     core_diameter: float
@@ -143,6 +155,7 @@ class Strand:
     material: Material
     broken: frozenset = field(default_factory=frozenset)
     name: str = ""
+    core_material: Material | None = None
 
     def __post_init__(self):
         object.__setattr__(
@@ -163,6 +176,33 @@ class Strand:
             )
         object.__setattr__(self, "broken", frozenset(self._wire_set("broken", self.broken)))
         _name(self.name)
+        if self.core_material is not None and not isinstance(self.core_material, Material):
+            raise InputError(
+                "core_material", f"must be a Material or None (the strand's), got {self.core_material!r}"
+            )
+
+    # --- materials --------------------------------------------------------
+    @property
+    def layer_materials(self) -> tuple[Material, ...]:
+        """The material of the core (entry 0) and of every layer (entries 1, 2, ...)."""
+        core = self.core_material if self.core_material is not None else self.material
+        return (core, *(layer.material or self.material for layer in self.layers))
+
+    @property
+    def materials(self) -> tuple[Material, ...]:
+        """The distinct wire materials, in order of first appearance from the core outward."""
+        out = []
+        for item in self.layer_materials:
+            if item not in out:
+                out.append(item)
+        return tuple(out)
+
+    def wire_materials(self) -> WireMaterials:
+        """Every wire's material (core first), grouped for vectorised evaluation."""
+        materials = self.materials
+        per_layer = np.array([materials.index(m) for m in self.layer_materials])
+        counts = [1, *(layer.count for layer in self.layers)]
+        return WireMaterials(materials, np.repeat(per_layer, counts))
 
     def _wire_set(self, argument: str, wires) -> list[tuple[int, int]]:
         """Validated (layer, index) pairs of ``wires`` (a set, list or tuple of pairs).
@@ -223,7 +263,7 @@ class Strand:
             f"Strand({self.name or 'strand'!r}: {counts} wires, diameter {m(self.diameter)}, "
             f"core {m(self.core_diameter)}; {'; '.join(rows)}; "
             f"{len(broken)} broken{': ' + shown if broken else ''}; "
-            f"material {self.material.name or 'custom'!r})"
+            f"material {'/'.join(m.name or 'custom' for m in self.materials)!r})"
         )
 
     # --- geometry ---------------------------------------------------------
@@ -290,6 +330,7 @@ class Strand:
             )
             for key, value in values.items():
                 columns[key].extend(np.atleast_1d(value).tolist())
+        columns["material"] = self.wire_materials().index
         return Wires(**{k: np.array(v) for k, v in columns.items()})
 
     # --- damage -----------------------------------------------------------
@@ -358,10 +399,53 @@ _TABLE_3_1 = {
 }
 
 
+#: ACSR conductors of ASTM B232/B232M-17, "Standard Specification for Concentric-Lay-Stranded
+#: Aluminum Conductors, Coated-Steel Reinforced (ACSR)": code word -> (steel wire diameter (m),
+#: aluminium wire diameter (m), aluminium wires per layer from the core outward). The core is 1+6
+#: steel wires. Lay ratios (lay length / outside diameter of the layer) are not fixed by the
+#: code word; the standard bounds them (steel layer 16-26, inner aluminium layers 10-16, outer
+#: layer 10-13) and these presets take 19, 13 and 11; the outer layer is right-hand and the
+#: directions alternate inward (the standard's rule).
+_ACSR = {
+    "acsr-drake": (3.454e-3, 4.442e-3, (10, 16)),  # 795 kcmil 26/7, outer diameter 28.14 mm
+    "acsr-hawk": (2.675e-3, 3.439e-3, (10, 16)),  # 477 kcmil 26/7, outer diameter 21.79 mm
+}
+_ACSR_LAY_RATIO = {"steel": 19.0, "inner": 13.0, "outer": 11.0}
+
+
+def _acsr(name: str) -> Strand:
+    steel_d, al_d, counts = _ACSR[name]
+    steel, aluminium = material("steel"), material("aluminium")
+    layers, outside = [], 3 * steel_d
+    specs = [(6, steel_d, steel)] + [(n, al_d, aluminium) for n in counts]
+    for k, (count, d, wire_material) in enumerate(specs):
+        outside = 3 * steel_d if k == 0 else outside + 2 * d
+        ratio = _ACSR_LAY_RATIO["steel" if k == 0 else "outer" if k == len(specs) - 1 else "inner"]
+        direction = 1 if (len(specs) - 1 - k) % 2 == 0 else -1  # outer right-hand, alternating inward
+        layers.append(
+            Layer(count, d, lay_length=ratio * outside, direction=direction, material=wire_material)
+        )
+    return Strand(steel_d, tuple(layers), aluminium, name=name, core_material=steel)
+
+
 def preset(name: str) -> Strand:
-    """A 1x7 strand of Pino Vidal (2021), Table 3.1: ``"steel-9.5"``, ``"aluminium-10.1"``,
-    ``"steel-12.7"`` or ``"aluminium-14.3"`` (equal wires, helix radius d)."""
+    """A preset strand.
+
+    The 1x7 strands of Pino Vidal (2021), Table 3.1: ``"steel-9.5"``, ``"aluminium-10.1"``,
+    ``"steel-12.7"`` or ``"aluminium-14.3"`` (equal wires, helix radius d, one material).
+
+    Multi-material conductors, ACSR 26/7 of ASTM B232/B232M-17 (a 1+6 steel core under 10 and 16
+    aluminium wires): ``"acsr-drake"`` (795 kcmil, steel 3.454 mm, aluminium 4.442 mm wires,
+    28.14 mm) and ``"acsr-hawk"`` (477 kcmil, steel 2.675 mm, aluminium 3.439 mm, 21.79 mm). Lay
+    ratios 19 (steel), 13 (inner aluminium), 11 (outer), inside the standard's ranges; the
+    strand's ``material`` is aluminium, ``core_material`` and the first layer's steel (the wire
+    laws of Pino Vidal (2021), Table B.1, with the densities and expansion coefficients of
+    IEC 61089:1991).
+    """
+    if isinstance(name, str) and name in _ACSR:
+        return _acsr(name)
     if not isinstance(name, str) or name not in _TABLE_3_1:
-        raise InputError("name", f"unknown strand {name!r}; known: {', '.join(_TABLE_3_1)}")
+        known = ", ".join([*_TABLE_3_1, *_ACSR])
+        raise InputError("name", f"unknown strand {name!r}; known: {known}")
     d, mat, _nominal, alpha = _TABLE_3_1[name]
     return Strand(d, (Layer(6, d, lay_angle=radians(alpha)),), material(mat), name=name)

@@ -129,6 +129,13 @@ class Material:
         Poisson's ratio (for the shear modulus of the wires), default 0.3.
     name : str
         Label.
+    density : float or None
+        Mass density (kg/m³), > 0; None (the default) when unknown: the section
+        and the FE model do not need it, a conductor's weight does
+        (`skcable.cable.Conductor.from_strand` raises InputError naming it).
+    alpha : float or None
+        Coefficient of linear thermal expansion (1/K), >= 0; None (the default)
+        when unknown (a conductor's thermal strain needs it, as ``density``).
     """
 
     E_e: float
@@ -139,6 +146,8 @@ class Material:
     eps_rupture: float
     poisson: float = 0.3
     name: str = ""
+    density: float | None = None
+    alpha: float | None = None
     _cubic: tuple = field(init=False, repr=False, compare=False)
 
     def __post_init__(self):
@@ -159,6 +168,10 @@ class Material:
             raise InputError("poisson", f"must lie in [0, 0.5), got {poisson!r}")
         _name(self.name)
         values = dict(E_e=E_e, E_p=E_p, eps_y=ey, eps_y1=e1, eps_y2=e2, eps_rupture=rupture, poisson=poisson)
+        if self.density is not None:
+            values["density"] = _scalar("density", self.density, lower=0.0, strict=True)
+        if self.alpha is not None:
+            values["alpha"] = _scalar("alpha", self.alpha, lower=0.0)
         for key, value in values.items():  # plain floats (np.float32 etc. are not kept)
             object.__setattr__(self, key, value)
         # B.1 slope E_e and B.3 value at eps_y1 give c and d; B.2 and B.4 a and b
@@ -172,7 +185,10 @@ class Material:
         return (
             f"Material({self.name or 'custom'!r}: E_e={self.E_e:.4g} Pa, E_p={self.E_p:.4g} Pa, "
             f"eps_y={self.eps_y:g} (blend {self.eps_y1:g} to {self.eps_y2:g}), "
-            f"eps_rupture={self.eps_rupture:g}, poisson={self.poisson:g})"
+            f"eps_rupture={self.eps_rupture:g}, poisson={self.poisson:g}"
+            + (f", density={self.density:g} kg/m³" if self.density is not None else "")
+            + (f", alpha={self.alpha:g} 1/K" if self.alpha is not None else "")
+            + ")"
         )
 
     @property
@@ -287,20 +303,110 @@ class Material:
         return out[()] if out.ndim == 0 else out
 
 
-#: Pino Vidal (2021), Table B.1 (MPa in the table, Pa here).
+#: Pino Vidal (2021), Table B.1 (MPa in the table, Pa here); density and thermal expansion:
+#: IEC 61089:1991, "Round wire concentric lay overhead electrical stranded conductors",
+#: Annex B (the same values in EN 50182:2001): zinc-coated steel 7780 kg/m³, 11.5e-6 /K;
+#: hard-drawn aluminium (1350) 2703 kg/m³, 23e-6 /K.
 _PRESETS = {
     "steel": dict(
-        E_e=196603.774e6, E_p=5228.162e6, eps_y=0.0053, eps_y1=0.005, eps_y2=0.006, eps_rupture=0.082
+        E_e=196603.774e6,
+        E_p=5228.162e6,
+        eps_y=0.0053,
+        eps_y1=0.005,
+        eps_y2=0.006,
+        eps_rupture=0.082,
+        density=7780.0,
+        alpha=11.5e-6,
     ),
     # Table B.1 prints eps_y = 0.0049; its a and b follow from 0.0049 (Table 3.3 reads 0.00449)
     "aluminium": dict(
-        E_e=64509.8e6, E_p=207e6, eps_y=0.0049, eps_y1=0.003, eps_y2=0.0095, eps_rupture=0.0745
+        E_e=64509.8e6,
+        E_p=207e6,
+        eps_y=0.0049,
+        eps_y1=0.003,
+        eps_y2=0.0095,
+        eps_rupture=0.0745,
+        density=2703.0,
+        alpha=23e-6,
     ),
 }
 
 
 def material(name: str) -> Material:
-    """Wire material of Pino Vidal (2021), Table B.1: ``"steel"`` (galvanised) or ``"aluminium"``."""
+    """Wire material of Pino Vidal (2021), Table B.1: ``"steel"`` (galvanised) or ``"aluminium"``.
+
+    The constitutive law is the thesis's; ``density`` (kg/m³) and ``alpha`` (1/K) are those of
+    IEC 61089:1991, "Round wire concentric lay overhead electrical stranded conductors",
+    Annex B (also EN 50182:2001, "Conductors for overhead lines"): zinc-coated steel wire
+    7780 kg/m³ and 11.5e-6 /K, hard-drawn aluminium 1350 wire 2703 kg/m³ and 23e-6 /K.
+    """
     if not isinstance(name, str) or name not in _PRESETS:
         raise InputError("name", f"unknown material {name!r}; known: {', '.join(_PRESETS)}")
     return Material(**_PRESETS[name], name=name)
+
+
+class WireMaterials:
+    """The material of every wire of a strand, grouped by material (one entry per wire, core first).
+
+    A strand of one material has one group; a conductor such as ACSR (a steel core under
+    aluminium layers) has two. Material laws are evaluated per group, one vectorised call per
+    material (never a Python loop over wires); a single-material strand calls its material's
+    law on the whole array, exactly as before per-wire materials existed.
+
+    Parameters
+    ----------
+    materials : tuple of Material
+        The distinct materials, in order of first appearance (core outward).
+    index : ndarray of int (n_wires,)
+        Position in ``materials`` of every wire's material.
+    """
+
+    def __init__(self, materials: tuple, index: np.ndarray):
+        self.materials = tuple(materials)
+        self.index = np.asarray(index, dtype=int)
+        self._masks = [self.index == k for k in range(len(self.materials))]
+
+    @property
+    def uniform(self) -> bool:
+        """True when every wire has the same material."""
+        return len(self.materials) == 1
+
+    def take(self, attribute: str) -> np.ndarray:
+        """A material attribute (``"E_e"``, ``"G"``, ``"eps_rupture"``, ``"density"`` ...) per wire."""
+        values = np.array([float(getattr(m, attribute)) for m in self.materials])
+        return values[self.index]
+
+    def subset(self, selection) -> WireMaterials:
+        """The map of the wires ``selection`` (a boolean mask or indices over the wires)."""
+        return WireMaterials(self.materials, self.index[selection])
+
+    def _per_group(self, method: str, strain: np.ndarray, axis: int, outputs: int):
+        if self.uniform:
+            out = getattr(self.materials[0], method)(strain)
+            return out if outputs > 1 else (out,)
+        moved = np.moveaxis(strain, axis, 0)
+        results = [np.empty(moved.shape) for _ in range(outputs)]
+        for material, mask in zip(self.materials, self._masks, strict=True):
+            if not mask.any():
+                continue
+            values = getattr(material, method)(moved[mask])
+            values = values if outputs > 1 else (values,)
+            for result, value in zip(results, values, strict=True):
+                result[mask] = value
+        return tuple(np.moveaxis(r, 0, axis) for r in results)
+
+    def stress_and_tangent(self, strain: np.ndarray, axis: int = 0) -> tuple[np.ndarray, np.ndarray]:
+        """`Material.stress_and_tangent` of every wire's own material; the wires run along ``axis``."""
+        return self._per_group("stress_and_tangent", strain, axis, 2)
+
+    def stress(self, strain: np.ndarray, axis: int = 0) -> np.ndarray:
+        """`Material.stress` (Pa) of every wire's own material; the wires run along ``axis``."""
+        return self.stress_and_tangent(np.asarray(strain, dtype=float), axis)[0]
+
+    def secant(self, strain: np.ndarray, axis: int = 0) -> np.ndarray:
+        """`Material.secant` (Pa) of every wire's own material; the wires run along ``axis``."""
+        return self._per_group("secant", np.asarray(strain, dtype=float), axis, 1)[0]
+
+    def energy(self, strain: np.ndarray, axis: int = 0) -> np.ndarray:
+        """`Material.energy` (J/m³) of every wire's own material; the wires run along ``axis``."""
+        return self._per_group("energy", strain, axis, 1)[0]

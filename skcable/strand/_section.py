@@ -18,6 +18,17 @@ wire, ``-r sqrt(12/25)`` for two). Principal axes diagonalise the stick
 tensor; principal axis 1 carries the larger stick inertia. ``EA = E sum A
 cos^3 alpha`` (Papailiou (1997), eq. 2.20 of the thesis).
 
+**Several materials** (a material per layer, e.g. ACSR's steel core under
+aluminium layers): the section is the transformed section of composite beam
+theory, each wire's area scaled by its modular ratio ``n_i = E_i / E`` against
+the strand's reference material ``E = strand.material.E_e`` (J.M. Gere and
+S.P. Timoshenko, "Mechanics of Materials", §6.3, "transformed-section method").
+The centroid, the principal axes and the inertias are those of the areas
+``n_i A_i`` (so ``EI_stick = E I_stick = sum E_i A_i cos^3 alpha_i d_i^2 +
+sum E_i I_w,i cos alpha_i`` about the modulus-weighted centroid), ``EA = sum E_i
+A_i cos^3 alpha_i``, and the torsion terms use each wire's own E_i and G_i.
+With one material every ``n_i`` is exactly 1 and nothing changes.
+
 Axes are numbered 1 and 2 (as in the CLI's and the VTK files' ``curvature_1``,
 ``EI_stick_1_Nm2``); arrays over the axes and the ``axis`` arguments of the
 Python API index them from 0: index 0 is principal axis 1, index 1 is
@@ -97,6 +108,8 @@ class Section:
         Stick and full-slip second moments about principal axes 1 and 2,
         lay factors included (m⁴). Not principal maxima and minima: both
         entries of ``I_stick`` are stick values.
+        With several materials, those of the transformed section (each wire's
+        area and own inertia times ``E_i / E``, E the strand's ``material``).
     composite_bending : ndarray of bool (2,)
         False about a principal axis along which every intact wire lies (no
         wire has a lever, ``I_stick == I_slip`` exactly).
@@ -117,8 +130,12 @@ class Section:
         self.wires = w = strand.wires()
         self._alive = w.intact
         cos = np.cos(w.lay_angle)
-        self._axial_factor = cos**3
-        self._own_factor = cos
+        self.materials = strand.wire_materials()
+        # modular ratios E_i / E against the reference material (exactly 1.0 with one material)
+        self._modular = self.materials.take("E_e") / strand.material.E_e
+        self._shear_ratio = self.materials.take("G") / strand.material.G
+        self._axial_factor = cos**3 * self._modular
+        self._own_factor = cos * self._modular
 
     def _sum(self, values):
         return float(np.sum(np.where(self._alive, values, 0.0)))
@@ -130,8 +147,9 @@ class Section:
 
     @cached_property
     def centroid(self) -> tuple[float, float]:
-        """(y_c, z_c) of the net section, plain wire areas (m)."""
-        a = np.where(self._alive, self.wires.area, 0.0)
+        """(y_c, z_c) of the net section (m): plain wire areas, each times its modular ratio
+        ``E_i / E`` when the strand has several materials (the transformed section)."""
+        a = np.where(self._alive, self.wires.area * self._modular, 0.0)
         return float(a @ self.wires.y / a.sum()), float(a @ self.wires.z / a.sum())
 
     @cached_property
@@ -204,12 +222,13 @@ class Section:
 
     @property
     def E(self) -> float:
-        """Elastic modulus of the wires, ``E_e`` (Pa)."""
+        """Elastic modulus ``E_e`` (Pa) of the strand's material: of every wire with one material,
+        the reference modulus of the transformed inertias with several."""
         return self.strand.material.E_e
 
     @property
     def EA(self) -> float:
-        """Axial stiffness ``E sum A cos^3 alpha`` of the intact wires (N)."""
+        """Axial stiffness ``sum E_i A_i cos^3 alpha_i`` of the intact wires (N)."""
         return self.E * self._sum(self.wires.area * self._axial_factor)
 
     @property
@@ -232,15 +251,17 @@ class Section:
         """``sum E A R sin(alpha) cos^2(alpha)``, signed by the lay direction (N·m)."""
         w = self.wires
         return self.E * self._sum(
-            w.direction * w.area * w.radius * np.sin(w.lay_angle) * np.cos(w.lay_angle) ** 2
+            w.direction * w.area * w.radius * np.sin(w.lay_angle) * np.cos(w.lay_angle) ** 2 * self._modular
         )
 
     @property
     def torsional_stiffness(self) -> float:
         """``sum E A R^2 sin^2(alpha) cos(alpha) + sum G J_w cos(alpha)`` (N·m²)."""
         w = self.wires
-        helical = self.E * self._sum(w.area * w.radius**2 * np.sin(w.lay_angle) ** 2 * np.cos(w.lay_angle))
-        own = self.strand.material.G * self._sum(2.0 * w.inertia * self._own_factor)
+        helical = self.E * self._sum(
+            w.area * w.radius**2 * np.sin(w.lay_angle) ** 2 * np.cos(w.lay_angle) * self._modular
+        )
+        own = self.strand.material.G * self._sum(2.0 * w.inertia * np.cos(w.lay_angle) * self._shear_ratio)
         return helical + own
 
     # --- Lanteigne (1985) / Papailiou (1997): Pino Vidal (2021), eqs. 2.12-2.13 ------
@@ -254,7 +275,9 @@ class Section:
         self._require_intact()
         w = self.wires
         r = w.diameter / 2
-        return self.E * float(np.sum(pi * r**2 * (w.radius**2 + r**2 / 2) / 2 * np.cos(w.lay_angle) ** 3))
+        return self.E * float(
+            np.sum(pi * r**2 * (w.radius**2 + r**2 / 2) / 2 * np.cos(w.lay_angle) ** 3 * self._modular)
+        )
 
     @property
     def EI_slip_lanteigne(self) -> float:

@@ -41,7 +41,11 @@ class StrandLayout:
     slip : str
         Name of the slip law.
     eps_rupture, eps_y1 : float
-        The wire material's rupture strain and end of its linear branch.
+        The wire material's rupture strain and end of its linear branch (the smallest
+        among the materials of a multi-material strand).
+    wire_eps_rupture, wire_eps_y1 : ndarray (n_wires,) or None
+        The same per wire, from each wire's own material (None: ``eps_rupture`` and
+        ``eps_y1`` for every wire).
     """
 
     nodes: np.ndarray
@@ -57,6 +61,36 @@ class StrandLayout:
     slip: str
     eps_rupture: float
     eps_y1: float
+    wire_eps_rupture: np.ndarray | None = None
+    wire_eps_y1: np.ndarray | None = None
+
+    def _per_wire(self, attribute: str):
+        """The limit strain ``attribute`` ("eps_rupture" or "eps_y1") per wire when the wires
+        differ in it, else None (one scalar limit for every wire, ``getattr(self, attribute)``)."""
+        values = getattr(self, "wire_" + attribute)
+        if values is None or np.all(values == getattr(self, attribute)):
+            return None
+        return values
+
+    def peak(self, wire_strain: np.ndarray, attribute: str) -> tuple[float, float]:
+        """``(peak, limit)``: the largest wire strain and the limit ``attribute``, or, when the
+        wires' materials differ in it, the largest ratio of a wire's strain to its own limit
+        and 1 (a wire reaches its limit when ``peak >= limit``)."""
+        own = self._per_wire(attribute)
+        if not wire_strain.size:
+            return 0.0, (getattr(self, attribute) if own is None else 1.0)
+        if own is None:
+            return float(np.max(wire_strain)), getattr(self, attribute)
+        return float(np.max(wire_strain / own[:, None, None])), 1.0
+
+    def critical_wires(self, wire_strain: np.ndarray, attribute: str = "eps_rupture") -> np.ndarray:
+        """Indices of the wires nearest their own limit ``attribute`` at these wire strains
+        (the wires that break first at rupture), ties within 1e-9 relative included."""
+        own = self._per_wire(attribute)
+        limit = getattr(self, "wire_" + attribute) if own is not None else None
+        limit = np.full(wire_strain.shape[0], getattr(self, attribute)) if limit is None else limit
+        ratio = np.max(wire_strain.reshape(wire_strain.shape[0], -1), axis=1) / limit
+        return np.flatnonzero(ratio >= np.max(ratio) * (1 - 1e-9))
 
 
 @dataclass(eq=False)
@@ -195,8 +229,9 @@ class CapacityCurve:
     @cached_property
     def _elastic_end(self):
         """(strain, force) where the most strained wire reaches eps_y1, interpolated between steps."""
-        limit = self.model.strand.material.eps_y1
-        peak = np.concatenate([[0.0], [np.max(s.wire_strain) for s in self.steps]])
+        layout = self.model.layout
+        limit = layout.peak(np.zeros((0,)), "eps_y1")[1]
+        peak = np.concatenate([[0.0], [layout.peak(s.wire_strain, "eps_y1")[0] for s in self.steps]])
         beyond = np.flatnonzero(peak >= limit)
         if beyond.size == 0:
             return float(self.strain[-1]), float(self.force[-1])
@@ -236,6 +271,13 @@ class CapacityCurve:
         return float(np.interp(strain, self.strain, self.force) / strain)
 
     @property
+    def rupture_wires(self) -> np.ndarray:
+        """Indices (into ``strand.wires()``, core first) of the wires nearest their own rupture
+        strain at the last step: at rupture, the wires that break first (with several
+        materials, each wire against its own material's ``eps_rupture``)."""
+        return self.model.layout.critical_wires(self.steps[-1].wire_strain, "eps_rupture")
+
+    @property
     def toughness(self) -> float:
         """Area under the force–strain curve (N), up to rupture or the last step."""
         return float(np.trapezoid(self.force, self.strain))
@@ -245,8 +287,11 @@ class CapacityCurve:
         curvature about each principal axis (1/m) and the largest wire strain."""
         peak = np.array([[0.0, 0.0]] + [np.max(np.abs(s.curvature), axis=(1, 2)) for s in self.steps])
         wire = np.concatenate([[0.0], [np.max(s.wire_strain) for s in self.steps]])
-        if self.ruptured:  # the last row was interpolated to the rupture strain
-            wire[-1] = self.model.strand.material.eps_rupture
+        if self.ruptured:  # the last row was interpolated to the rupture strain of the breaking wire
+            layout = self.model.layout
+            own = layout.wire_eps_rupture
+            first = self.rupture_wires[0]
+            wire[-1] = layout.eps_rupture if own is None else float(own[first])
         return {
             "strain": self.strain,
             "force_N": self.force,
@@ -335,7 +380,8 @@ def capacity_curve(
     """
     if on_failure not in ("raise", "stop"):
         raise InputError("on_failure", f"must be 'raise' or 'stop', got {on_failure!r}")
-    material = model.strand.material
+    materials = model.strand.materials
+    layout = model.layout
     if n_steps is None:
         n_steps = 60
     elif isinstance(n_steps, bool) or not isinstance(n_steps, (int, np.integer)):
@@ -351,11 +397,11 @@ def capacity_curve(
         and state_passes >= 0
     ):
         raise InputError("state_passes", f"must be a whole number >= 0, got {state_passes!r}")
-    top = float(max_strain) if max_strain is not None else 1.5 * material.eps_rupture
+    top = float(max_strain) if max_strain is not None else 1.5 * min(m.eps_rupture for m in materials)
     # half the steps, uniform, up to twice the yield strain (where slip and yield
     # shape the curve and K_Leq is measured), half from there to rupture with
     # geometrically growing increments (no jump in step size for Newton to absorb)
-    knee = min(2.0 * material.eps_y, top)
+    knee = min(2.0 * min(m.eps_y for m in materials), top)
     schedule = np.unique(
         np.concatenate(
             [
@@ -413,10 +459,12 @@ def capacity_curve(
             strains.append(step.strain)
             forces.append(step.force)
             fractions.append(step.slip_fraction)
-            if step.wire_strain.size and np.max(step.wire_strain) >= material.eps_rupture:
-                # end the curve where the most strained wire reaches its rupture strain
-                before = np.max(steps[-2].wire_strain) if len(steps) > 1 else 0.0
-                t = (material.eps_rupture - before) / (np.max(step.wire_strain) - before)
+            peak, rupture = layout.peak(step.wire_strain, "eps_rupture")
+            if step.wire_strain.size and peak >= rupture:
+                # end the curve where the most strained wire (relative to its own material's
+                # rupture strain) reaches its rupture strain
+                before = layout.peak(steps[-2].wire_strain, "eps_rupture")[0] if len(steps) > 1 else 0.0
+                t = (rupture - before) / (peak - before)
                 strains[-1] = strains[-2] + t * (strains[-1] - strains[-2])
                 forces[-1] = forces[-2] + t * (forces[-1] - forces[-2])
                 ruptured = True
@@ -449,12 +497,18 @@ def capacity_curve(
 
 def _softening_note(model, step) -> str:
     """Why a curve may stop: wires inside the material law's softening range."""
-    window = model.strand.material.softening_range
-    if step is None or window is None:
+    if step is None:
         return ""
-    lo, hi = window
-    wires = step.wire_strain[~step.layout.wire_broken]
-    if not np.any((wires > lo) & (wires < hi)):
+    index = model.strand.wire_materials().index
+    for k, material in enumerate(model.strand.materials):
+        window = material.softening_range
+        if window is None:
+            continue
+        lo, hi = window
+        wires = step.wire_strain[~step.layout.wire_broken & (index == k)]
+        if np.any((wires > lo) & (wires < hi)):
+            break
+    else:
         return ""
     return (
         f"; wires lie where the material law softens (strain {lo:.4g} to {hi:.4g}, tangent < 0),"

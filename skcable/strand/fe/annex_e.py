@@ -101,6 +101,10 @@ def _strand_data(strand):
         wires, layers, section = strand.wires(), strand.layers, strand.section()
     except AttributeError:
         raise InputError("strand", f"must be a skcable.strand.Strand, got {type(strand).__name__}") from None
+    if len(strand.materials) != 1:
+        raise InputError(
+            "strand", "annex E's section takes one modulus E: give a strand whose wires share one material"
+        )
     if len(layers) != 1:
         raise InputError(
             "strand", f"annex E's section has one lay angle: need one helical layer, got {len(layers)}"

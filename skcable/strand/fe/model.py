@@ -218,8 +218,10 @@ class StrandModel:
             wire_broken=~w.intact,
             wire_size=np.sqrt(w.area / np.pi),
             slip=self.slip.name,
-            eps_rupture=self.strand.material.eps_rupture,
-            eps_y1=self.strand.material.eps_y1,
+            eps_rupture=min(m.eps_rupture for m in self.strand.materials),
+            eps_y1=min(m.eps_y1 for m in self.strand.materials),
+            wire_eps_rupture=self.strand.wire_materials().take("eps_rupture"),
+            wire_eps_y1=self.strand.wire_materials().take("eps_y1"),
         )
 
     def twin(self, strand=None) -> StrandModel:

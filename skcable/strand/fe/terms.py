@@ -152,7 +152,7 @@ def critical_curvature_table(strand, mu: float):
     """κ_m of both principal axes on a strain grid, and its PCHIP interpolant (built once per
     strand and friction, one vectorised call of Cardou's law): ``(grid, table (2, n), spline, slope)``."""
     section = strand.section()
-    grid = np.linspace(0.0, 0.999 * strand.material.eps_rupture, 201)
+    grid = np.linspace(0.0, 0.999 * min(m.eps_rupture for m in strand.materials), 201)
     table = critical_curvature(section, mu, grid)
     spline = PchipInterpolator(grid, table, axis=1)
     return grid, table, spline, spline.derivative()
@@ -177,7 +177,10 @@ class HelicalWires(SectionTerm):
               + N\,(e_{v'}e_{v'}^T + e_{w'}e_{w'}^T),
               \qquad N = \sum_j s_j\,\partial\varepsilon_j/\partial\varepsilon_a,
 
-    the material stiffness K_L and the geometric stiffness K_G (eq. 4.1).
+    the material stiffness K_L and the geometric stiffness K_G (eq. 4.1). Every wire
+    has its own material's σ and E_t (`Layer.material`: a steel core under aluminium
+    layers), evaluated per material group; the centroid c(x) is modulus-weighted,
+    :math:`\sum E_j A_j\cos^3\alpha_j (y_j, z_j) / \sum E_j A_j\cos^3\alpha_j`.
 
     Parameters
     ----------
@@ -203,6 +206,7 @@ class HelicalWires(SectionTerm):
         s = model.strand
         w = s.wires()
         self.material = s.material
+        self.materials = s.wire_materials()
         self.alive = w.intact
         cos, sin = np.cos(w.lay_angle), np.sin(w.lay_angle)
         helical = w.layer > 0
@@ -215,7 +219,8 @@ class HelicalWires(SectionTerm):
         self.wire_y = w.radius[:, None, None] * np.sin(psi)
         self.wire_z = w.radius[:, None, None] * np.cos(psi)
         rotation = fibre_rate[helical][0] * x if helical.any() else 0 * x
-        weight = np.where(self.alive, w.area * cos**3, 0.0)[:, None, None]  # axial stiffness / E
+        modular = self.materials.take("E_e") / s.material.E_e  # exactly 1.0 with one material
+        weight = np.where(self.alive, w.area * cos**3 * modular, 0.0)[:, None, None]  # axial stiffness / E
         self.centroid_y = np.sum(weight * self.wire_y, axis=0) / np.sum(weight)
         self.centroid_z = np.sum(weight * self.wire_z, axis=0) / np.sum(weight)
         self.c2 = (cos**2)[:, None, None]
@@ -290,9 +295,9 @@ class HelicalWires(SectionTerm):
         strain = (
             c2 * (axial[None] - eccentric - y * kappa_c[0][None] - z * kappa_c[1][None]) + sc * g[5][None]
         )
-        stress, tangent = self.material.stress_and_tangent(strain)
+        stress, tangent = self.materials.stress_and_tangent(strain)
         stress, tangent = stress * self._alive3, tangent * self._alive3
-        energy = np.sum(self.area_weight * self.material.energy(strain), axis=0)
+        energy = np.sum(self.area_weight * self.materials.energy(strain), axis=0)
         d_axial = c2 * (1.0 - y * q[0][None] - z * q[1][None])  # ∂ε_j/∂ε_a
         b = np.array(
             [
@@ -327,14 +332,18 @@ class HelicalWires(SectionTerm):
 
 class WireBending(SectionTerm):
     """The wires' own bending and torsion: ``EI_w = Σ E I_w cos α``, ``GJ_w = Σ G J_w cos α`` over
-    the intact wires (the core straight), on v″, w″ and φ′ (Pino Vidal 2021, eqs. 3.11–3.12)."""
+    the intact wires (the core straight), on v″, w″ and φ′ (Pino Vidal 2021, eqs. 3.11–3.12);
+    E and G of each wire's own material."""
 
     def setup(self, model):
         super().setup(model)
         s, w = model.strand, model.strand.wires()
         cos = np.cos(w.lay_angle)
-        self.EI = s.material.E_e * float(np.sum(np.where(w.intact, w.inertia * cos, 0.0)))
-        self.GJ = s.material.G * float(np.sum(np.where(w.intact, 2 * w.inertia * cos, 0.0)))
+        materials = s.wire_materials()
+        E_ratio = materials.take("E_e") / s.material.E_e  # exactly 1.0 with one material
+        G_ratio = materials.take("G") / s.material.G
+        self.EI = s.material.E_e * float(np.sum(np.where(w.intact, w.inertia * cos * E_ratio, 0.0)))
+        self.GJ = s.material.G * float(np.sum(np.where(w.intact, 2 * w.inertia * cos * G_ratio, 0.0)))
         ne, nq = model.x.shape
         self._D = np.zeros((6, 6, ne, nq))
         self._D[2, 2] = self._D[4, 4] = self.EI
@@ -561,6 +570,7 @@ class SinusoidalDamageLoads(Term):
         s, w = model.strand, model.strand.wires()
         self.material = s.material
         self.broken = np.flatnonzero(~w.intact & (w.layer > 0))
+        self.materials = s.wire_materials().subset(self.broken)
         helical = w.layer > 0
         lay_length = np.ones_like(w.radius)
         lay_length[helical] = s.lay_lengths[w.layer[helical] - 1]
@@ -581,7 +591,7 @@ class SinusoidalDamageLoads(Term):
 
     def loads(self, strain: float) -> np.ndarray:
         """The load vector (N) at the imposed axial strain."""
-        return (self.area * self.material.stress(self.cos**2 * strain)) @ self.unit
+        return (self.area * self.materials.stress(self.cos**2 * strain)) @ self.unit
 
     def contribute(self, U, step):
         return -self.loads(step.strain), None, {}
