@@ -47,8 +47,10 @@ otherwise, and ``b''`` (Jacobian only) central differences of ``b'``.
 
 Support reactions come from ``R⁰`` at the supports: ``H_A = -R⁰_x(A)``,
 ``V_A = R⁰_y(A)``, ``H_B = R⁰_x(B)``, ``V_B = R⁰_y(B)``. With the anchor on
-the seabed the anchor still carries the weight share of its half-element
-(``w h/6`` for P2), which tends to zero with ``h``.
+the seabed, A is a contact node as well: the seabed takes its push
+``λ_A = max(n_A·R⁰_A/|n_A|², 0)`` (friction included) and the anchor the
+rest, so that a line grounded at A has ``V_A = 0`` and ``H_A = H - μ·(normal
+forces)`` as in Jonkman's closed form.
 """
 
 from __future__ import annotations
@@ -192,7 +194,7 @@ def _seabed(seabed, seabed_slope, span):
 class LineProblem:
     """Mesh, bases, properties per quadrature point and the assembly of one line."""
 
-    def __init__(self, span, dh, segments, point_loads, seabed, friction, n_elements):
+    def __init__(self, span, dh, segments, point_loads, seabed, friction, n_elements, fitted=()):
         self.span, self.dh, self.seabed, self.friction = span, dh, seabed, friction
         self.segments = segments
         lengths = np.array([seg.length for seg in segments])
@@ -204,6 +206,15 @@ class LineProblem:
         nodes = [np.linspace(a, b, k + 1) for a, b, k in zip(self.joints[:-1], self.joints[1:], per, strict=True)]
         self.point_loads = point_loads
         nodes = np.unique(np.concatenate([*nodes, [s for s, _ in point_loads]]))
+        for s_fit in fitted:  # a node at s_fit: move the nearest inner node there, or insert one
+            k = int(np.argmin(np.abs(nodes - s_fit)))
+            spacing = np.min(np.diff(nodes))
+            movable = 0 < k < len(nodes) - 1 and not np.any(np.isclose(nodes[k], self.joints))
+            movable = movable and not any(np.isclose(nodes[k], s) for s, _ in point_loads)
+            if movable and abs(nodes[k] - s_fit) < 0.25 * spacing:
+                nodes[k] = s_fit
+            elif np.min(np.abs(nodes - s_fit)) > 1e-9 * self.L:
+                nodes = np.sort(np.append(nodes, s_fit))
         self.mesh = MeshLine(nodes)
         self.basis = Basis(self.mesh, ElementLineP2(), intorder=6)
         self.tbasis = self.basis.with_element(ElementLineP1DG())
@@ -243,6 +254,8 @@ class LineProblem:
         self.length_scale = self.L
         self.stiffness = self.load_scale / self.L  # c of the complementarity function (N/m)
         self.contact = inner if seabed is not None else np.zeros(0, dtype=int)
+        #: A lies on the seabed (to 1e-12 of the length): the seabed, not the anchor, carries its push
+        self.anchor_on_seabed = seabed is not None and abs(float(seabed(np.array([0.0]))[0])) <= 1e-12 * self.L
 
     # --- residual and tangent -----------------------------------------------------------
     def internal(self, z):
@@ -435,17 +448,26 @@ class LineBVPSolution:
         self.iterations = len(self.history) - 1
         self.friction = problem.friction
         H_A, V_A, H_B, V_B = (float(v) for v in problem.reactions(state.R0))
-        self.H_A, self.V_A, self.H, self.V_B = H_A, V_A, H_B, V_B
-        self.H_B = H_B
+        self.H, self.V_B, self.H_B = H_B, V_B, H_B
         i, N = problem.contact, problem.N
         order = np.argsort(problem.basis.doflocs[0][i], kind="stable")
         i = i[order]
-        self._contact_dofs = i
         self.contact_s = problem.basis.doflocs[0][i]
         self.contact_xy = np.column_stack([z[i], z[N + i]])
+        self.anchor_on_seabed = problem.anchor_on_seabed
         if i.size:
             bp, _, gap, lam, active, _, _ = state.terms
             bp, gap, lam, active = bp[order], gap[order], lam[order], active[order]
+            if self.anchor_on_seabed:
+                # the seabed under the anchor takes the anchor's downward push, friction included
+                slope = float(problem.seabed.slope(np.array([0.0]))[0])
+                lam_a = max((V_A + slope * H_A) / (1.0 + slope * slope), 0.0)  # n·R⁰_A / |n|², R⁰_x(A) = -H_A
+                mu = problem.friction
+                H_A, V_A = H_A + lam_a * (-slope - mu), V_A - lam_a * (1.0 - mu * slope)
+                self.contact_s = np.concatenate([[0.0], self.contact_s])
+                self.contact_xy = np.vstack([[0.0, 0.0], self.contact_xy])
+                bp, gap = np.concatenate([[slope], bp]), np.concatenate([[0.0], gap])
+                lam, active = np.concatenate([[lam_a], lam]), np.concatenate([[lam_a > 0], active])
             mu = problem.friction
             self.normal_force = lam * np.sqrt(1.0 + bp * bp)
             self.contact_force = lam[:, None] * np.column_stack([-bp - mu, 1.0 - mu * bp])
@@ -453,6 +475,7 @@ class LineBVPSolution:
         else:
             self.normal_force, self.gap = np.zeros(0), np.zeros(0)
             self.contact_force, self.in_contact = np.zeros((0, 2)), np.zeros(0, dtype=bool)
+        self.H_A, self.V_A = H_A, V_A
 
     @property
     def T_A(self):
@@ -543,9 +566,7 @@ class LineBVPSolution:
     def length_on_seabed(self):
         if not self.in_contact.any():
             return 0.0
-        p = self._problem
-        on_anchor = abs(float(p.seabed(np.array([0.0]))[0])) <= 1e-12 * self.length
-        first = 0.0 if on_anchor else float(self.contact_s[self.in_contact][0])
+        first = float(self.contact_s[self.in_contact][0])
         return self.s_touchdown - first
 
     def residual(self):
@@ -570,6 +591,7 @@ def solve_line_bvp(
     friction: float = 0.0,
     point_loads=(),
     n_elements: int = 64,
+    fit_touchdown: int = 2,
     rtol: float = 1e-10,
     max_iter: int = 50,
 ):
@@ -598,6 +620,15 @@ def solve_line_bvp(
     n_elements : int
         Elements over the whole line, shared among segments by length (at
         least one each).
+    fit_touchdown : int
+        Passes of touchdown fitting: after a solve that touches the seabed,
+        a mesh node is put at the touchdown the vertical balance gives
+        (`LineBVPSolution.s_touchdown`: the nearest inner node moves there
+        when it is closer than a quarter of an element, else a node is
+        inserted) and the line is solved again from the previous solution,
+        until the touchdown moves less than 1e-9 of the length. Nodal contact
+        otherwise misplaces the touchdown by up to half an element, an error
+        in H of order (that distance)² that jumps with the mesh; 0 turns it off.
     rtol : float
         Newton stops when every scaled residual (forces over the total load,
         the stretch over the length, the complementarity rows over the total
@@ -642,23 +673,39 @@ def solve_line_bvp(
         s, P = real("point_loads", s), real("point_loads", P)
         require("point_loads", 0.0 < s < L, "s must lie strictly inside the line (0, length)", s)
         loads.append((float(s), float(P)))
+    require("fit_touchdown", fit_touchdown in range(0, 11), "must be a whole number from 0 to 10", -1)
     rtol = positive("rtol", rtol)
     max_iter = positive("max_iter", max_iter)
     require("max_iter", max_iter == int(max_iter), "must be a whole number", max_iter)
-    problem = LineProblem(span, dh, segs, loads, bed, friction, n_elements)
-    z0 = _guess(problem)
     name = "solve_line_bvp"
-    result = newton(
-        problem.assemble,
-        z0,
-        norm=lambda state: state.merit,
-        increment=problem.increment,
-        tol=rtol,
-        max_iter=int(max_iter),
-        stagnation_window=8,
-        name=name,
-    )
-    solution = LineBVPSolution(problem, result.x, result.history, result.state)
+
+    def run(problem, z0):
+        result = newton(
+            problem.assemble,
+            z0,
+            norm=lambda state: state.merit,
+            increment=problem.increment,
+            tol=rtol,
+            max_iter=int(max_iter),
+            stagnation_window=8,
+            name=name,
+        )
+        return LineBVPSolution(problem, result.x, result.history, result.state)
+
+    problem = LineProblem(span, dh, segs, loads, bed, friction, n_elements)
+    solution = run(problem, _guess(problem))
+    fitted = []
+    for _ in range(int(fit_touchdown)):
+        if not solution.in_contact[solution.contact_s > 0].any():
+            break
+        s_td = solution.s_touchdown
+        if fitted and abs(s_td - fitted[-1]) <= 1e-9 * L:
+            break
+        fitted = [s_td]
+        problem = LineProblem(span, dh, segs, loads, bed, friction, n_elements, fitted=fitted)
+        xy = solution.xy(problem.basis.doflocs[0])
+        tension = solution.tension(np.clip(problem.tbasis.doflocs[0], 0.0, L))
+        solution = run(problem, np.concatenate([xy[:, 0], xy[:, 1], tension]))
     values = (solution.H, solution.V_B, solution.H_A, solution.V_A)
     if not all(np.isfinite(values)) or not np.all(np.isfinite(solution.dofs)):
         raise ConvergenceError(f"{name}: non-finite result", result.history)
