@@ -65,10 +65,10 @@ from scipy.optimize import brentq
 from skfem import Basis, ElementLineP1DG, ElementLineP2, MeshLine
 
 from skcable._checks import nonnegative, positive, real, require
+from skcable.cable._elastic import elastic_catenary as free_catenary
 from skcable.cable.bvp.arc import _AX, _AY, _STRAINS, _T
 from skcable.cable.bvp.assembly import LineAssembly
 from skcable.cable.bvp.elements import end_dofs
-from skcable.cable._elastic import elastic_catenary as free_catenary
 from skcable.cable.bvp.probes import gradient_probes
 from skcable.cable.lines.seabed import elastic_catenary
 from skcable.errors import ConvergenceError, InputError
@@ -203,7 +203,9 @@ class LineProblem:
         n = positive("n_elements", n_elements)
         require("n_elements", n == int(n), "must be a whole number", n)
         per = np.maximum(1, np.round(int(n) * lengths / self.L)).astype(int)
-        nodes = [np.linspace(a, b, k + 1) for a, b, k in zip(self.joints[:-1], self.joints[1:], per, strict=True)]
+        nodes = [
+            np.linspace(a, b, k + 1) for a, b, k in zip(self.joints[:-1], self.joints[1:], per, strict=True)
+        ]
         self.point_loads = point_loads
         nodes = np.unique(np.concatenate([*nodes, [s for s, _ in point_loads]]))
         for s_fit in fitted:  # a node at s_fit: move the nearest inner node there, or insert one
@@ -250,12 +252,16 @@ class LineProblem:
         s_dof = self.basis.doflocs[0]
         self.point_rows = np.array([N + int(np.argmin(np.abs(s_dof - s))) for s, _ in point_loads], dtype=int)
         self.point_values = np.array([P for _, P in point_loads], dtype=float)
-        self.load_scale = float(np.sum(np.abs(self.w_q) * self.assembly.dx) + np.sum(np.abs(self.point_values)))
+        self.load_scale = float(
+            np.sum(np.abs(self.w_q) * self.assembly.dx) + np.sum(np.abs(self.point_values))
+        )
         self.length_scale = self.L
         self.stiffness = self.load_scale / self.L  # c of the complementarity function (N/m)
         self.contact = inner if seabed is not None else np.zeros(0, dtype=int)
         #: A lies on the seabed (to 1e-12 of the length): the seabed, not the anchor, carries its push
-        self.anchor_on_seabed = seabed is not None and abs(float(seabed(np.array([0.0]))[0])) <= 1e-12 * self.L
+        self.anchor_on_seabed = (
+            seabed is not None and abs(float(seabed(np.array([0.0]))[0])) <= 1e-12 * self.L
+        )
 
     # --- residual and tangent -----------------------------------------------------------
     def internal(self, z):
@@ -338,9 +344,7 @@ class LineProblem:
             k = self.stiffness
             rows = np.concatenate([i, N + i, N + i])
             cols = np.concatenate([i, i, N + i])
-            vals = np.concatenate(
-                [dtx, np.where(active, -k * bp, dlx), np.where(active, k, 0.0)]
-            )
+            vals = np.concatenate([dtx, np.where(active, -k * bp, dlx), np.where(active, k, 0.0)])
             extra = sp.coo_matrix((vals, (rows, cols)), shape=(self.assembly.N, self.assembly.N))
         system = self.system
         ab = system.add_elements(system.band(), Ke)
@@ -708,7 +712,7 @@ def solve_line_bvp(
         solution = run(problem, np.concatenate([xy[:, 0], xy[:, 1], tension]))
     values = (solution.H, solution.V_B, solution.H_A, solution.V_A)
     if not all(np.isfinite(values)) or not np.all(np.isfinite(solution.dofs)):
-        raise ConvergenceError(f"{name}: non-finite result", result.history)
+        raise ConvergenceError(f"{name}: non-finite result", solution.history)
     if friction > 0:
         T = solution._fields()[2]
         if np.min(T) < -1e3 * rtol * problem.load_scale:
