@@ -150,10 +150,9 @@ class Seabed:
         except (TypeError, ValueError) as exc:
             raise InputError(name, f"must be a callable of x (array in, array out): {exc}") from exc
         if value.shape != np.shape(x):
-            try:
-                value = np.broadcast_to(value, np.shape(x)).copy()
-            except ValueError as exc:
-                raise InputError(name, f"returned shape {value.shape} for x of shape {np.shape(x)}") from exc
+            if value.ndim != 0:
+                raise InputError(name, f"returned shape {value.shape} for x of shape {np.shape(x)}")
+            value = np.full(np.shape(x), float(value))
         if not np.all(np.isfinite(value)):
             raise InputError(name, "returned non-finite values")
         return value
@@ -436,10 +435,14 @@ class LineBVPSolution:
         vertical balance ``V_B - ∫_s^L w - ΣP = H b'(x(s))`` holds (a point
         between mesh nodes, not the last contact node), and its abscissa; 0
         without contact.
+    s_landing : float
+        Where a line hanging from an anchor above the seabed first lands
+        (the balance of the part hanging from A, as for ``s_touchdown``); 0
+        when A lies on the seabed.
     length_on_seabed : float
-        Unstretched length from the first contact (A itself when the anchor
-        lies on the seabed, otherwise the first contact node) to
-        ``s_touchdown`` (m).
+        ``s_touchdown - s_landing`` (m): the unstretched length between the
+        first landing and the last touchdown (where the line lifts off a bump
+        in between, that free stretch is included).
     history, iterations
         Newton's merit per iteration.
     """
@@ -522,41 +525,69 @@ class LineBVPSolution:
         xd, yd, _ = self._fields()
         return np.arctan2(G @ yd, G @ xd)
 
-    @cached_property
-    def _touchdown(self):
-        if not self.in_contact.any():
-            return 0.0, 0.0
+    def _weight_before(self, s):
+        """Weight of the line over [0, s] and of the point loads before s (N)."""
         p = self._problem
         s_nodes = self.mesh.p[0]
-        # weight beyond s: cumulative per element (quadrature), then linear inside the element
-        per_element = np.sum(p.w_q * p.assembly.dx, axis=0)
+        k = int(np.clip(np.searchsorted(s_nodes, s) - 1, 0, len(s_nodes) - 2))
+        fraction = (s - s_nodes[k]) / (s_nodes[k + 1] - s_nodes[k])
+        before = self._cumulative_weight
+        points = sum(P for s_p, P in p.point_loads if s_p < s)
+        return before[k] + fraction * (before[k + 1] - before[k]) + points
+
+    @cached_property
+    def _cumulative_weight(self):
+        p = self._problem
         order = np.argsort(self.mesh.p[0, self.mesh.t].mean(axis=0))
-        beyond = np.concatenate([np.cumsum(per_element[order][::-1])[::-1], [0.0]])
-        s_p = np.array([s for s, _ in p.point_loads])
+        return np.concatenate([[0.0], np.cumsum(np.sum(p.w_q * p.assembly.dx, axis=0)[order])])
+
+    def _transition(self, balance, near):
+        """Root of ``balance(s)`` between the mesh nodes around ``near`` (a contact node)."""
+        s_nodes = self.mesh.p[0]
+        h = np.max(np.diff(s_nodes))
+        grid = s_nodes[(s_nodes >= near - 2 * h) & (s_nodes <= near + 2 * h)]
+        values = np.array([balance(s) for s in grid])
+        zero = np.flatnonzero(values == 0.0)
+        if zero.size:
+            return float(grid[zero[0]])
+        change = np.flatnonzero(np.sign(values[:-1]) != np.sign(values[1:]))
+        if not change.size:
+            raise ConvergenceError(
+                "solve_line_bvp: no sign change of the vertical balance near the contact edge", self.history
+            )
+        k = int(change[np.argmin(np.abs(grid[change] - near))])
+        return float(brentq(balance, grid[k], grid[k + 1], xtol=1e-12 * self.length))
+
+    def _slope_at(self, s):
+        x = self.xy(np.array(s))[0]
+        return float(self._problem.seabed.slope(np.array([x]))[0])
+
+    @cached_property
+    def _touchdown(self):
+        """(s, x) of the last touchdown: ``V_B - (W - W(s)) = H b'(x(s))`` (the suspended part's
+        vertical balance, the line leaving the seabed tangentially)."""
+        if not self.in_contact[self.contact_s > 0].any():
+            return 0.0, 0.0
+        total = self._weight_before(self.length)
 
         def balance(s):
-            k = int(np.clip(np.searchsorted(s_nodes, s) - 1, 0, len(s_nodes) - 2))
-            fraction = (s_nodes[k + 1] - s) / (s_nodes[k + 1] - s_nodes[k])
-            weight = beyond[k + 1] + fraction * (beyond[k] - beyond[k + 1])
-            points = float(np.sum(p.point_values[s_p > s])) if s_p.size else 0.0
-            x = self.xy(np.array(s))[0]
-            return self.V_B - weight - points - self.H * float(p.seabed.slope(np.array([x]))[0])
+            return self.V_B - (total - self._weight_before(s)) - self.H * self._slope_at(s)
 
-        last = self.contact_s[self.in_contact][-1]
-        grid = s_nodes[s_nodes >= last - 2 * np.max(np.diff(s_nodes))]
-        values = np.array([balance(s) for s in grid])
-        change = np.flatnonzero(np.sign(values[:-1]) != np.sign(values[1:]))
-        if values[0] == 0.0:
-            s_td = float(grid[0])
-        elif change.size:
-            k = int(change[0])
-            s_td = float(brentq(balance, grid[k], grid[k + 1], xtol=1e-12 * self.length))
-        else:
-            raise ConvergenceError(
-                "solve_line_bvp: no touchdown found by the vertical balance near the last contact node",
-                self.history,
-            )
+        s_td = self._transition(balance, self.contact_s[self.in_contact][-1])
         return s_td, float(self.xy(np.array(s_td))[0])
+
+    @cached_property
+    def s_landing(self):
+        """Where a line hanging from an anchor above the seabed first lands on it: the unstretched
+        arc length from A (m) where ``W(s) - V_A = H_A b'(x(s))`` (the balance of the part
+        hanging from A); 0 when A lies on the seabed or nothing touches."""
+        if self.anchor_on_seabed or not self.in_contact.any():
+            return 0.0
+
+        def balance(s):
+            return self._weight_before(s) - self.V_A - self.H_A * self._slope_at(s)
+
+        return self._transition(balance, self.contact_s[self.in_contact][0])
 
     @property
     def s_touchdown(self):
@@ -570,8 +601,7 @@ class LineBVPSolution:
     def length_on_seabed(self):
         if not self.in_contact.any():
             return 0.0
-        first = float(self.contact_s[self.in_contact][0])
-        return self.s_touchdown - first
+        return self.s_touchdown - self.s_landing
 
     def residual(self):
         """Largest scaled residual (forces over the total load, stretch over the length)."""
@@ -626,8 +656,9 @@ def solve_line_bvp(
         least one each).
     fit_touchdown : int
         Passes of touchdown fitting: after a solve that touches the seabed,
-        a mesh node is put at the touchdown the vertical balance gives
-        (`LineBVPSolution.s_touchdown`: the nearest inner node moves there
+        a mesh node is put at the touchdown (and the landing, for an anchor
+        above the seabed) the vertical balance gives
+        (`LineBVPSolution.s_touchdown`, ``s_landing``: the nearest inner node moves there
         when it is closer than a quarter of an element, else a node is
         inserted) and the line is solved again from the previous solution,
         until the touchdown moves less than 1e-9 of the length. Nodal contact
@@ -702,10 +733,10 @@ def solve_line_bvp(
     for _ in range(int(fit_touchdown)):
         if not solution.in_contact[solution.contact_s > 0].any():
             break
-        s_td = solution.s_touchdown
-        if fitted and abs(s_td - fitted[-1]) <= 1e-9 * L:
+        edges = [solution.s_touchdown] + ([solution.s_landing] if solution.s_landing > 0 else [])
+        if fitted and max(abs(a - b) for a, b in zip(edges, fitted, strict=False)) <= 1e-9 * L:
             break
-        fitted = [s_td]
+        fitted = edges
         problem = LineProblem(span, dh, segs, loads, bed, friction, n_elements, fitted=fitted)
         xy = solution.xy(problem.basis.doflocs[0])
         tension = solution.tension(np.clip(problem.tbasis.doflocs[0], 0.0, L))
