@@ -318,7 +318,9 @@ class LineProblem:
         merit = max(float(np.max(force, initial=0.0)), float(np.max(stretch, initial=0.0)))
         return LineState(F, R0, Ke, terms, merit)
 
-    def increment(self, state):
+    def tangent(self, state):
+        """The generalized Jacobian of ``F``: element matrices with the contact rows mixed in,
+        and the terms they cannot carry (sparse, or None)."""
         Ke = state.Ke
         extra = None
         if self.contact.size:
@@ -345,6 +347,17 @@ class LineProblem:
             cols = np.concatenate([i, i, N + i])
             vals = np.concatenate([dtx, np.where(active, -k * bp, dlx), np.where(active, k, 0.0)])
             extra = sp.coo_matrix((vals, (rows, cols)), shape=(self.assembly.N, self.assembly.N))
+        return Ke, extra
+
+    def jacobian(self, state):
+        """The generalized Jacobian as a CSR matrix over all dofs (for inspection; Newton uses the band)."""
+        Ke, extra = self.tangent(state)
+        J = self.assembly.matrix(Ke)
+        return J if extra is None else (J + extra).tocsr()
+
+    def increment(self, state):
+        """Newton increment: the banded solve of the generalized Jacobian."""
+        Ke, extra = self.tangent(state)
         system = self.system
         ab = system.add_elements(system.band(), Ke)
         if extra is not None:
