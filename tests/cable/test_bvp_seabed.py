@@ -49,7 +49,7 @@ def test_flat_seabed_converges_to_jonkman_at_h4_with_the_touchdown_fitted():
     rate = np.log2(e80 / e160)
     assert np.all(rate > 3.5)  # measured 3.9-4.0 for H, V_B and the grounded length
     # the finest error within the bound the observed rate gives from the coarser one
-    assert np.all(e160 <= e80 * 2.0 ** -3.5)
+    assert np.all(e160 <= e80 * 2.0**-3.5)
     assert np.all(e160 < 5e-9)  # measured 4.1e-9 (H), 1.8e-9 (V_B), 7.4e-10 (grounded length / L)
 
 

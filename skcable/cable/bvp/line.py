@@ -76,8 +76,8 @@ from skcable.fe import newton
 
 __all__ = ["BVPSegment", "LineBVPSolution", "solve_line_bvp"]
 
-#: generalized strains as in the arc form: x', y', x, y, T
-_Y = 3
+#: elements of the first solve of a fine mesh whose start touches the seabed
+COARSE = 32
 
 
 @dataclass(frozen=True)
@@ -286,6 +286,11 @@ class LineProblem:
         R = asmb.vector(S)
         np.add.at(R, self.point_rows, self.point_values)
         return R, asmb.element_matrices(D)
+
+    def gaps(self, z):
+        """Height of every contact node above the seabed (m)."""
+        i = self.contact
+        return z[self.N + i] - self.seabed(z[i])
 
     def contact_terms(self, z, R0):
         """Per contact node: slope, curvature, gap, multiplier λ, active flag."""
@@ -740,8 +745,18 @@ def solve_line_bvp(
         )
         return LineBVPSolution(problem, result.x, result.history, result.state)
 
+    def restart(solution, problem):  # the previous solution interpolated on a new mesh
+        xy = solution.xy(problem.basis.doflocs[0])
+        tension = solution.tension(np.clip(problem.tbasis.doflocs[0], 0.0, L))
+        return np.concatenate([xy[:, 0], xy[:, 1], tension])
+
     problem = LineProblem(span, dh, segs, loads, bed, friction, n_elements)
-    solution = run(problem, _guess(problem))
+    z0 = _guess(problem)
+    if problem.mesh.t.shape[1] > 2 * COARSE and bed is not None and np.any(problem.gaps(z0) <= 0):
+        # the active set moves by a few nodes per iteration: find it on a coarse mesh first
+        coarse = LineProblem(span, dh, segs, loads, bed, friction, COARSE)
+        z0 = restart(run(coarse, _guess(coarse)), problem)
+    solution = run(problem, z0)
     fitted = []
     for _ in range(int(fit_touchdown)):
         if not solution.in_contact[solution.contact_s > 0].any():
@@ -751,9 +766,7 @@ def solve_line_bvp(
             break
         fitted = edges
         problem = LineProblem(span, dh, segs, loads, bed, friction, n_elements, fitted=fitted)
-        xy = solution.xy(problem.basis.doflocs[0])
-        tension = solution.tension(np.clip(problem.tbasis.doflocs[0], 0.0, L))
-        solution = run(problem, np.concatenate([xy[:, 0], xy[:, 1], tension]))
+        solution = run(problem, restart(solution, problem))
     values = (solution.H, solution.V_B, solution.H_A, solution.V_A)
     if not all(np.isfinite(values)) or not np.all(np.isfinite(solution.dofs)):
         raise ConvergenceError(f"{name}: non-finite result", solution.history)
