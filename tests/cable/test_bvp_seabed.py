@@ -302,3 +302,20 @@ def test_generalized_jacobian_agrees_with_central_differences():
     rows = problem.free
     scale = np.max(np.abs(fd[rows]))
     assert np.max(np.abs((J @ d)[rows] - fd[rows])) < 1e-6 * scale
+
+
+def test_solve_bvp_takes_the_seabed_scene():
+    ref = cable.elastic_catenary(SPAN, DH, W, EA, length=L, seabed=0.0, friction=0.2)
+    b = cable.solve_bvp(
+        SPAN, DH, cable.SelfWeight(W), length=L, EA=EA, seabed=0.0, friction=0.2, n_elements=80
+    )
+    direct = solve_line_bvp(SPAN, DH, [(L, W, EA)], seabed=0.0, friction=0.2, n_elements=80)
+    assert (b.H, b.V_B, b.H_A) == (direct.H, direct.V_B, direct.H_A)
+    assert b.H == pytest.approx(ref.H, rel=2e-7)
+    with pytest.raises(InputError, match="friction"):
+        cable.solve_bvp(SPAN, DH, cable.SelfWeight(W), length=L, friction=0.2)
+    with pytest.raises(InputError) as info:
+        cable.solve_bvp(SPAN, DH, cable.SelfWeight(W), H=1e5, EA=EA, seabed=0.0)
+    assert info.value.argument == "H"
+    with pytest.raises(InputError, match="load"):
+        cable.solve_bvp(SPAN, DH, cable.DeckLoad(W), length=L, EA=EA, seabed=0.0)
