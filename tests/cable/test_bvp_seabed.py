@@ -319,3 +319,18 @@ def test_solve_bvp_takes_the_seabed_scene():
     assert info.value.argument == "H"
     with pytest.raises(InputError, match="load"):
         cable.solve_bvp(SPAN, DH, cable.DeckLoad(W), length=L, EA=EA, seabed=0.0)
+
+
+def test_inextensible_line_with_a_buoy_on_the_seabed():
+    # inextensible: Jonkman's closed form in the limit EA -> inf
+    b = solve_line_bvp(SPAN, DH, [(L, W, None)], seabed=0.0, n_elements=80)
+    ref = cable.elastic_catenary(SPAN, DH, W, 1e15, length=L, seabed=0.0)
+    assert b.H == pytest.approx(ref.H, rel=2e-7)  # measured 6.6e-8, as with EA = 5e8
+    # a buoy (upward point force) on the suspended part: statics and contact still exact
+    buoyed = solve_line_bvp(
+        SPAN, DH, [(200.0, W, EA), (240.0, W, EA)], seabed=0.0, point_loads=[(300.0, -5e4)], n_elements=80
+    )
+    assert buoyed.weight == pytest.approx(W * L - 5e4, rel=1e-12)
+    assert max(abs(v) for v in _statics(buoyed)) < 1e-12
+    _contact_is_exact(buoyed)
+    assert buoyed.s_touchdown < 300.0

@@ -414,9 +414,13 @@ def _guess(problem: LineProblem):
     if bed is not None and np.any(y < bed(x)):
         level = min(float(bed(np.array([0.0]))[0]), 0.0)
         level = min(level, dh - 1e-3 * abs(span))
-        grounded = elastic_catenary(span, dh, w, EA, length=L, seabed=level)
-        x, y, T = grounded.x_of_s(s_dof), grounded.y_of_s(s_dof), grounded.T_of_s(s_t)
-        y = np.maximum(y, bed(x))
+        try:
+            grounded = elastic_catenary(span, dh, w, EA, length=L, seabed=level)
+            x, y, T = grounded.x_of_s(s_dof), grounded.y_of_s(s_dof), grounded.T_of_s(s_t)
+        except (InputError, ConvergenceError):
+            if bed.flat is not None:  # on a flat seabed the closed form's refusal (slack in a heap) holds
+                raise
+        y = np.maximum(y, bed(x))  # a curved seabed: the free line lifted onto it, if nothing better
     x[problem.end_a], y[problem.end_a] = 0.0, 0.0
     x[problem.end_b], y[problem.end_b] = span, dh
     return np.concatenate([x, y, T])
