@@ -39,8 +39,8 @@ as a semismooth Newton method", SIAM J. Optim., 2002) on the system where
 
 ``c`` any positive constant (here the total load over the length). Its
 generalized Jacobian takes ``c ∇g_i`` on the nodes where ``λ_i > c g_i``
-(active) and ``∇λ_i`` elsewhere: Newton's method then identifies the active
-set in finitely many steps and converges quadratically near the solution.
+(active) and ``∇λ_i`` elsewhere: near the solution Newton's method identifies the active
+set in finitely many steps and converges quadratically.
 The seabed is ``y = b(x)``: a float (flat) or a callable; its slope ``b'``
 is the callable ``seabed_slope`` if given, central differences of ``b``
 otherwise, and ``b''`` (Jacobian only) central differences of ``b'``.
