@@ -15,6 +15,7 @@ lumped at the nodes, 10 load steps of Newton).
 Run:  python benchmarks/bench_bvp.py                 (chart + CSV + 10k-element timing)
       python benchmarks/bench_bvp.py --large         (only the 10k-element timing)
       python benchmarks/bench_bvp.py --stability     (where each formulation converges)
+      python benchmarks/bench_bvp.py --seabed        (solve_line_bvp on a seabed: error and time)
 Output: benchmarks/out/bvp_accuracy_time.csv, docs/img/bvp_accuracy_time.png
 """
 
@@ -262,12 +263,52 @@ def stability(args):
         )
 
 
+def seabed(args):
+    """`solve_line_bvp` on a flat seabed (with and without friction) and on a slope, against
+    the closed forms: error in H and time per solve (touchdown fitted, the default), by mesh."""
+    from skcable.cable.bvp import solve_line_bvp
+    from skcable.cable.lines.seabed import sloped_seabed_catenary
+
+    span, dh, w, ea, length = 400.0, 100.0, 1000.0, 5e8, 440.0
+    cases = [
+        ("flat, frictionless", cable.elastic_catenary(span, dh, w, ea, length=length, seabed=0.0), {}),
+        (
+            "flat, friction 0.2",
+            cable.elastic_catenary(span, dh, w, ea, length=length, seabed=0.0, friction=0.2),
+            {"friction": 0.2},
+        ),
+        (
+            "slope 0.05, friction 0.1",
+            sloped_seabed_catenary(span, dh, w, ea, length=length, seabed_slope=0.05, friction=0.1),
+            {"seabed": lambda x: 0.05 * x, "seabed_slope": lambda x: 0.05 + 0 * x, "friction": 0.1},
+        ),
+    ]
+    for label, ref, kw in cases:
+        kw = {"seabed": 0.0, **kw}
+        for n in (40, 80, 160, 320, 1280):
+            for fit in (0, 2):
+                fn = lambda n=n, fit=fit, kw=kw: solve_line_bvp(  # noqa: E731
+                    span, dh, [(length, w, ea)], n_elements=n, fit_touchdown=fit, **kw
+                )
+                b = fn()
+                times = np.sort([_timed(fn) for _ in range(args.repeats // 3 or 1)])
+                print(
+                    f"{label:26s} n={n:5d} fit_touchdown={fit}: |H/H_ref - 1| = {abs(b.H / ref.H - 1):.1e}, "
+                    f"|H_A/H_A,ref - 1| = {abs(b.H_A / ref.H_A - 1):.1e}, "
+                    f"{times[0] * 1e3:6.1f} ms (min; median {np.median(times) * 1e3:.1f} ms), "
+                    f"{b.iterations} Newton iterations in the last pass"
+                )
+
+
 def main(argv=None):
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--stability", action="store_true", help="map where each formulation converges")
     parser.add_argument("--large", action="store_true", help="only the 10,000-element timings")
+    parser.add_argument("--seabed", action="store_true", help="solve_line_bvp on a seabed: error, time")
     parser.add_argument("--repeats", type=int, default=30, help="runs of each 10,000-element case")
     args = parser.parse_args(argv)
+    if args.seabed:
+        return seabed(args)
     (stability if args.stability else large if args.large else accuracy_time)(args)
 
 

@@ -14,7 +14,9 @@ One concern per module:
 - `graph`: the graph form y(x), H global;
 - `arc`: the arc-length form, L0 global;
 - `solve`: `solve_bvp`, which checks the
-  arguments, picks the formulation and runs `skcable.fe.newton`.
+  arguments, picks the formulation and runs `skcable.fe.newton`;
+- `line`: `solve_line_bvp`, a mooring line in the arc form (segments,
+  w(s), point loads) with unilateral seabed contact of any shape.
 """
 
 from skcable.cable.bvp.arc import ArcSolution
@@ -27,11 +29,14 @@ from skcable.cable.bvp.forms import (
     graph_tangent,
 )
 from skcable.cable.bvp.graph import BVPSolution
+from skcable.cable.bvp.line import BVPSegment, LineBVPSolution, solve_line_bvp
 from skcable.cable.bvp.solve import solve_bvp
 
 __all__ = [
     "ArcSolution",
+    "BVPSegment",
     "BVPSolution",
+    "LineBVPSolution",
     "arc_constitutive",
     "arc_equilibrium_x",
     "arc_equilibrium_y",
@@ -39,4 +44,5 @@ __all__ = [
     "graph_residual",
     "graph_tangent",
     "solve_bvp",
+    "solve_line_bvp",
 ]

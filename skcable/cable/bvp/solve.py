@@ -5,8 +5,10 @@ from __future__ import annotations
 import numpy as np
 
 from skcable._checks import exactly_one, positive, real, require
+from skcable.cable._loads import SelfWeight
 from skcable.cable.bvp.arc import ArcProblem, ArcSolution, arc_guess
 from skcable.cable.bvp.graph import BVPSolution, GraphProblem, initial_guess
+from skcable.cable.bvp.line import solve_line_bvp
 from skcable.cable.solution import ACCEPT
 from skcable.errors import ConvergenceError, InputError
 from skcable.fe import newton
@@ -90,6 +92,8 @@ def solve_bvp(
     rtol: float = 1e-10,
     max_iter: int = 50,
     formulation: str = "auto",
+    seabed=None,
+    friction: float = 0.0,
 ):
     """Suspended cable under any vertical loads, solved by finite elements.
 
@@ -142,6 +146,10 @@ def solve_bvp(
     ConvergenceError
         Newton stalled; ``history`` holds the merit per iteration.
     """
+    if seabed is not None:
+        return _on_seabed(span, dh, load, locals())
+    if friction != 0.0:
+        raise InputError("friction", "applies to a line on the seabed: give seabed= as well")
     span, dh = positive("span", span), real("dh", dh)
     if not isinstance(span, float) or not isinstance(dh, float):
         raise InputError("span", "solve_bvp solves one scene: give scalar span and dh")
@@ -188,3 +196,27 @@ def solve_bvp(
     size = len(dofs)
     solution = BVPSolution(problem, result.x[:size], result.x[size], result.history, result.state)
     return _checked(solution, rtol)
+
+
+def _on_seabed(span, dh, load, given):
+    """`solve_bvp` with ``seabed=``: Jonkman's scene (one self weight, length, EA) by `solve_line_bvp`."""
+    loads = list(load) if isinstance(load, (list, tuple)) else [load]
+    if len(loads) != 1 or not isinstance(loads[0], SelfWeight):
+        raise InputError("load", "with seabed=, give one SelfWeight (use solve_line_bvp for segments)")
+    for name in ("sag", "H", "low", "T_max", "mesh"):
+        if given[name] is not None:
+            raise InputError(name, "with seabed=, the line is given by its length (and EA)")
+    if given["length"] is None or given["EA"] is None:
+        raise InputError("length", "with seabed=, give length= and EA=")
+    if given["formulation"] not in ("auto", "arc") or given["degree"] != 2:
+        raise InputError("formulation", "a line on the seabed is solved in the arc form (degree 2)")
+    return solve_line_bvp(
+        span,
+        dh,
+        [(given["length"], loads[0].w, given["EA"])],
+        seabed=given["seabed"],
+        friction=given["friction"],
+        n_elements=given["n_elements"],
+        rtol=given["rtol"],
+        max_iter=given["max_iter"],
+    )

@@ -1,0 +1,785 @@
+r"""A mooring line as an arc-length BVP: segments, w(s), point loads and unilateral seabed contact.
+
+The arc-length form of `skcable.cable.bvp.arc` (Goicolea 2012, eq. (3)) on
+the *unstretched* arc length ``s ∈ [0, L]`` itself: positions ``r(s) = (x,
+y)`` P2, tension ``T(s)`` discontinuous P1, ``a = dr/ds``, ``n = |a|``,
+``e = a/n``; the length is given (a mooring line), so there is no global
+unknown. With the weight ``w(s)`` per unstretched length (N/m, any sign: a
+buoyant segment has ``w < 0``) and the axial stiffness ``EA(s)`` per element:
+
+.. math::
+    R_{\mathbf r} = \int_0^L T\,\mathbf e\cdot\delta\mathbf r'\,ds
+        + \int_0^L w\,\delta y\,ds + \sum_k P_k\,\delta y(s_k)
+        - \sum_i \lambda_i (\mathbf n_i - \mu\,\mathbf t_i)\cdot\delta\mathbf r_i = 0,
+    \qquad R_T = \int_0^L \big(n - 1 - T/EA\big)\,\delta T\,ds = 0,
+
+``P_k`` the downward point loads (clump weights ``P > 0``, buoys ``P < 0``)
+at mesh nodes ``s_k``.
+
+**Seabed.** The line stays above the seabed, ``g_i = y_i - b(x_i) >= 0``,
+at every position node ``i`` (vertices and mid-side nodes of the P2
+elements, the ends excepted: they are supports). ``λ_i >= 0`` is the
+multiplier of ``g_i``: the seabed pushes with ``λ_i n_i``, ``n_i = (-b'(x_i),
+1)`` (normal to the seabed, of length ``sqrt(1 + b'^2)``, so the normal force
+is ``N_i = λ_i |n_i|``). With Coulomb friction fully mobilised (Jonkman's
+model: the line is being dragged towards the fairlead, so friction pulls it
+back towards the anchor) the force is ``-μ N_i`` along the unit tangent
+``t_i/|t_i|``, ``t_i = (1, b'(x_i))``, i.e. ``-μ λ_i t_i``. The contact
+conditions are exact at the nodes: ``λ_i >= 0, g_i >= 0, λ_i g_i = 0``,
+solved by a semismooth (primal–dual active set) Newton method
+(M. Hintermüller, K. Ito, K. Kunisch, "The primal-dual active set strategy
+as a semismooth Newton method", SIAM J. Optim., 2002) on the system where
+``λ_i`` is eliminated: with ``R⁰`` the residual without contact,
+``λ_i = n_i·R⁰_i / |n_i|²``, each node's two rows become
+
+.. math::
+    \mathbf t_i\cdot\mathbf R^0_i + \mu\,\mathbf n_i\cdot\mathbf R^0_i = 0
+    \quad\text{(tangential equilibrium)}, \qquad
+    \min(\lambda_i,\ c\,g_i) = 0 \quad\text{(complementarity)},
+
+``c`` any positive constant (here the total load over the length). Its
+generalized Jacobian takes ``c ∇g_i`` on the nodes where ``λ_i > c g_i``
+(active) and ``∇λ_i`` elsewhere: near the solution Newton's method identifies the active
+set in finitely many steps and converges quadratically.
+The seabed is ``y = b(x)``: a float (flat) or a callable; its slope ``b'``
+is the callable ``seabed_slope`` if given, central differences of ``b``
+otherwise, and ``b''`` (Jacobian only) central differences of ``b'``.
+
+Support reactions come from ``R⁰`` at the supports: ``H_A = -R⁰_x(A)``,
+``V_A = R⁰_y(A)``, ``H_B = R⁰_x(B)``, ``V_B = R⁰_y(B)``. With the anchor on
+the seabed, A is a contact node as well: the seabed takes its push
+``λ_A = max(n_A·R⁰_A/|n_A|², 0)`` (friction included) and the anchor the
+rest, so that a line grounded at A has ``V_A = 0`` and ``H_A = H - μ·(normal
+forces)`` as in Jonkman's closed form.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+from dataclasses import dataclass
+from functools import cached_property
+
+import numpy as np
+import scipy.sparse as sp
+from scipy.optimize import brentq
+from skfem import Basis, ElementLineP1DG, ElementLineP2, MeshLine
+
+from skcable._checks import nonnegative, positive, real, require
+from skcable.cable._elastic import elastic_catenary as free_catenary
+from skcable.cable.bvp.arc import _AX, _AY, _STRAINS, _T
+from skcable.cable.bvp.assembly import LineAssembly
+from skcable.cable.bvp.elements import end_dofs
+from skcable.cable.bvp.probes import gradient_probes
+from skcable.cable.lines.seabed import elastic_catenary
+from skcable.errors import ConvergenceError, InputError
+from skcable.fe import newton
+
+__all__ = ["BVPSegment", "LineBVPSolution", "solve_line_bvp"]
+
+#: elements of the first solve of a fine mesh whose start touches the seabed
+COARSE = 32
+
+
+@dataclass(frozen=True)
+class BVPSegment:
+    """One segment of a line for `solve_line_bvp`, listed from the anchor A.
+
+    Attributes
+    ----------
+    length : float
+        Unstretched length (m), > 0.
+    w : float or callable
+        Weight per unit unstretched length (N/m, downward; negative for a
+        buoyant segment), or a callable of the arc length ``s`` from A (m,
+        over the whole line) returning it: a weight that varies continuously.
+    EA : float or None
+        Axial stiffness (N), > 0; ``None`` for an inextensible segment.
+    """
+
+    length: float
+    w: float | Callable
+    EA: float | None = None
+
+    def __post_init__(self):
+        object.__setattr__(self, "length", positive("length", self.length))
+        if not callable(self.w):
+            object.__setattr__(self, "w", real("w", self.w))
+            if isinstance(self.w, np.ndarray):
+                raise InputError("w", "one number per segment (or a callable of s)")
+        if self.EA is not None:
+            object.__setattr__(self, "EA", positive("EA", self.EA))
+
+
+def _segments(segments):
+    if isinstance(segments, BVPSegment):
+        segments = [segments]
+    try:
+        items = list(segments)
+    except TypeError as exc:
+        raise InputError("segments", "give a list of BVPSegment or (length, w, EA) tuples") from exc
+    if not items:
+        raise InputError("segments", "give at least one segment")
+    out = []
+    for item in items:
+        if isinstance(item, BVPSegment):
+            out.append(item)
+        elif isinstance(item, (tuple, list)) and len(item) in (2, 3):
+            out.append(BVPSegment(*item))
+        else:
+            raise InputError("segments", f"each segment is a BVPSegment or (length, w[, EA]), got {item!r}")
+    return out
+
+
+@dataclass(frozen=True)
+class Seabed:
+    """The seabed ``y = b(x)`` (m), with its slope and curvature at any x."""
+
+    height: Callable
+    slope_fn: Callable | None
+    flat: float | None
+    step: float
+
+    def __call__(self, x):
+        if self.flat is not None:
+            return np.full_like(x, self.flat)
+        return self._checked(self.height, x, "seabed")
+
+    def _checked(self, fn, x, name):
+        try:
+            value = np.asarray(fn(x), dtype=float)
+        except (TypeError, ValueError) as exc:
+            raise InputError(name, f"must be a callable of x (array in, array out): {exc}") from exc
+        if value.shape != np.shape(x):
+            if value.ndim != 0:
+                raise InputError(name, f"returned shape {value.shape} for x of shape {np.shape(x)}")
+            value = np.full(np.shape(x), float(value))
+        if not np.all(np.isfinite(value)):
+            raise InputError(name, "returned non-finite values")
+        return value
+
+    def slope(self, x):
+        if self.flat is not None:
+            return np.zeros_like(x)
+        if self.slope_fn is not None:
+            return self._checked(self.slope_fn, x, "seabed_slope")
+        h = self.step
+        return (self(x + h) - self(x - h)) / (2.0 * h)
+
+    def curvature(self, x):
+        if self.flat is not None:
+            return np.zeros_like(x)
+        h = self.step
+        return (self.slope(x + h) - self.slope(x - h)) / (2.0 * h)
+
+
+def _seabed(seabed, seabed_slope, span):
+    if seabed is None:
+        if seabed_slope is not None:
+            raise InputError("seabed_slope", "applies to a seabed: give seabed= as well")
+        return None
+    step = 1e-5 * span
+    if callable(seabed):
+        if seabed_slope is not None and not callable(seabed_slope):
+            raise InputError("seabed_slope", "must be a callable of x returning db/dx")
+        return Seabed(seabed, seabed_slope, None, step)
+    if seabed_slope is not None:
+        raise InputError("seabed_slope", "a flat seabed (a number) has no slope to give")
+    if isinstance(seabed, (np.ndarray, list, tuple)) and np.size(seabed) != 1:
+        raise InputError("seabed", "a height (m) or a callable b(x); one scene at a time")
+    flat = real("seabed", seabed)
+    return Seabed(lambda x: np.full_like(x, flat), None, float(np.asarray(flat)), step)
+
+
+class LineProblem:
+    """Mesh, bases, properties per quadrature point and the assembly of one line."""
+
+    def __init__(self, span, dh, segments, point_loads, seabed, friction, n_elements, fitted=()):
+        self.span, self.dh, self.seabed, self.friction = span, dh, seabed, friction
+        self.segments = segments
+        lengths = np.array([seg.length for seg in segments])
+        self.joints = np.concatenate([[0.0], np.cumsum(lengths)])
+        self.L = float(self.joints[-1])
+        n = positive("n_elements", n_elements)
+        require("n_elements", n == int(n), "must be a whole number", n)
+        per = np.maximum(1, np.round(int(n) * lengths / self.L)).astype(int)
+        nodes = [
+            np.linspace(a, b, k + 1) for a, b, k in zip(self.joints[:-1], self.joints[1:], per, strict=True)
+        ]
+        self.point_loads = point_loads
+        nodes = np.unique(np.concatenate([*nodes, [s for s, _ in point_loads]]))
+        for s_fit in fitted:  # a node at s_fit: move the nearest inner node there, or insert one
+            k = int(np.argmin(np.abs(nodes - s_fit)))
+            spacing = np.min(np.diff(nodes))
+            movable = 0 < k < len(nodes) - 1 and not np.any(np.isclose(nodes[k], self.joints))
+            movable = movable and not any(np.isclose(nodes[k], s) for s, _ in point_loads)
+            if movable and abs(nodes[k] - s_fit) < 0.25 * spacing:
+                nodes[k] = s_fit
+            elif np.min(np.abs(nodes - s_fit)) > 1e-9 * self.L:
+                nodes = np.sort(np.append(nodes, s_fit))
+        self.mesh = MeshLine(nodes)
+        self.basis = Basis(self.mesh, ElementLineP2(), intorder=6)
+        self.tbasis = self.basis.with_element(ElementLineP1DG())
+        N, M = self.basis.N, self.tbasis.N
+        self.N, self.M = N, M
+        self.assembly = LineAssembly({"x": self.basis, "y": self.basis, "T": self.tbasis}, _STRAINS)
+        self.end_a, self.end_b, inner = end_dofs(self.basis)
+        self.free = np.concatenate([inner, N + inner, 2 * N + np.arange(M)])
+        self.system = self.assembly.banded(self.free)
+        self._force_rows = self.free[self.free < 2 * N]
+        self._stretch_rows = self.free[self.free >= 2 * N]
+        # properties at the quadrature points: the element's segment by its midpoint
+        s_q = self.assembly.x
+        middle = self.mesh.p[0, self.mesh.t].mean(axis=0)
+        owner = np.clip(np.searchsorted(self.joints, middle) - 1, 0, len(segments) - 1)
+        self.w_q = np.empty_like(s_q)
+        self.compliance_q = np.empty_like(s_q)
+        for k, seg in enumerate(segments):
+            cols = owner == k
+            if callable(seg.w):
+                values = np.asarray(seg.w(s_q[:, cols]), dtype=float)
+                try:
+                    values = np.broadcast_to(values, s_q[:, cols].shape)
+                except ValueError as exc:
+                    raise InputError("w", f"the callable returned shape {values.shape}") from exc
+                if not np.all(np.isfinite(values)):
+                    raise InputError("w", "the callable returned non-finite values")
+                self.w_q[:, cols] = values
+            else:
+                self.w_q[:, cols] = seg.w
+            self.compliance_q[:, cols] = 0.0 if seg.EA is None else 1.0 / seg.EA
+        self.weight = float(np.sum(self.w_q * self.assembly.dx))
+        s_dof = self.basis.doflocs[0]
+        self.point_rows = np.array([N + int(np.argmin(np.abs(s_dof - s))) for s, _ in point_loads], dtype=int)
+        self.point_values = np.array([P for _, P in point_loads], dtype=float)
+        self.load_scale = float(
+            np.sum(np.abs(self.w_q) * self.assembly.dx) + np.sum(np.abs(self.point_values))
+        )
+        self.length_scale = self.L
+        self.stiffness = self.load_scale / self.L  # c of the complementarity function (N/m)
+        self.contact = inner if seabed is not None else np.zeros(0, dtype=int)
+        #: A lies on the seabed (to 1e-12 of the length): the seabed, not the anchor, carries its push
+        self.anchor_on_seabed = (
+            seabed is not None and abs(float(seabed(np.array([0.0]))[0])) <= 1e-12 * self.L
+        )
+
+    # --- residual and tangent -----------------------------------------------------------
+    def internal(self, z):
+        """``R⁰`` (no contact) and the element tangents, or None for a collapsed tangent."""
+        asmb = self.assembly
+        g = asmb.interpolate(z)
+        ax, ay, T = g[_AX], g[_AY], g[_T]
+        n = np.sqrt(ax * ax + ay * ay)
+        if not np.all(n > 0):
+            return None
+        ex, ey = ax / n, ay / n
+        c = self.compliance_q
+        zero = np.zeros_like(n)
+        S = np.stack([T * ex, T * ey, zero, self.w_q, n - 1.0 - T * c])
+        D = np.zeros((5, 5, *n.shape))
+        Tn = T / n
+        D[_AX, _AX] = Tn * (1.0 - ex * ex)
+        D[_AX, _AY] = D[_AY, _AX] = -Tn * ex * ey
+        D[_AY, _AY] = Tn * (1.0 - ey * ey)
+        D[_AX, _T] = D[_T, _AX] = ex
+        D[_AY, _T] = D[_T, _AY] = ey
+        D[_T, _T] = -c
+        R = asmb.vector(S)
+        np.add.at(R, self.point_rows, self.point_values)
+        return R, asmb.element_matrices(D)
+
+    def gaps(self, z):
+        """Height of every contact node above the seabed (m)."""
+        i = self.contact
+        return z[self.N + i] - self.seabed(z[i])
+
+    def contact_terms(self, z, R0):
+        """Per contact node: slope, curvature, gap, multiplier λ, active flag."""
+        i, N = self.contact, self.N
+        x, y = z[i], z[N + i]
+        bp, bpp = self.seabed.slope(x), self.seabed.curvature(x)
+        gap = y - self.seabed(x)
+        Rx, Ry = R0[i], R0[N + i]
+        norm2 = 1.0 + bp * bp
+        lam = (Ry - bp * Rx) / norm2
+        active = lam > self.stiffness * gap
+        return bp, bpp, gap, lam, active, Rx, Ry
+
+    def assemble(self, z):
+        out = self.internal(z)
+        if out is None:
+            return _REJECTED
+        R0, Ke = out
+        F = R0.copy()
+        terms = None
+        if self.contact.size:
+            terms = self.contact_terms(z, R0)
+            bp, _, gap, lam, active, Rx, Ry = terms
+            mu = self.friction
+            i, N = self.contact, self.N
+            F[i] = (1.0 - mu * bp) * Rx + (bp + mu) * Ry
+            F[N + i] = np.where(active, self.stiffness * gap, lam)
+        force = np.abs(F[self._force_rows]) / self.load_scale
+        stretch = np.abs(F[self._stretch_rows]) / self.length_scale
+        merit = max(float(np.max(force, initial=0.0)), float(np.max(stretch, initial=0.0)))
+        return LineState(F, R0, Ke, terms, merit)
+
+    def tangent(self, state):
+        """The generalized Jacobian of ``F``: element matrices with the contact rows mixed in,
+        and the terms they cannot carry (sparse, or None)."""
+        Ke = state.Ke
+        extra = None
+        if self.contact.size:
+            Ke = Ke.copy()
+            bp, bpp, _, lam, active, Rx, Ry = state.terms
+            mu, i, N = self.friction, self.contact, self.N
+            norm2 = 1.0 + bp * bp
+            # row mixing per position dof: x row -> a Kx + b Ky, y row -> c Kx + d Ky
+            a, b = np.ones(N), np.zeros(N)
+            c, d = np.zeros(N), np.ones(N)
+            a[i], b[i] = 1.0 - mu * bp, bp + mu
+            c[i] = np.where(active, 0.0, -bp / norm2)
+            d[i] = np.where(active, 0.0, 1.0 / norm2)
+            ed = self.basis.element_dofs  # (3, ne): local position dofs 0..2 (x) and 3..5 (y)
+            nb = ed.shape[0]
+            Kx, Ky = state.Ke[:nb], state.Ke[nb : 2 * nb]
+            Ke[:nb] = a[ed][:, None, :] * Kx + b[ed][:, None, :] * Ky
+            Ke[nb : 2 * nb] = c[ed][:, None, :] * Kx + d[ed][:, None, :] * Ky
+            # what the element matrices cannot carry: derivatives of b'(x_i) and the active rows
+            dtx = bpp * (Ry - mu * Rx)  # d(tangential row)/dx_i through b'
+            dlx = bpp * (-Rx / norm2 - lam * 2.0 * bp / norm2)  # dλ/dx_i through b'
+            k = self.stiffness
+            rows = np.concatenate([i, N + i, N + i])
+            cols = np.concatenate([i, i, N + i])
+            vals = np.concatenate([dtx, np.where(active, -k * bp, dlx), np.where(active, k, 0.0)])
+            extra = sp.coo_matrix((vals, (rows, cols)), shape=(self.assembly.N, self.assembly.N))
+        return Ke, extra
+
+    def jacobian(self, state):
+        """The generalized Jacobian as a CSR matrix over all dofs (for inspection; Newton uses the band)."""
+        Ke, extra = self.tangent(state)
+        J = self.assembly.matrix(Ke)
+        return J if extra is None else (J + extra).tocsr()
+
+    def increment(self, state):
+        """Newton increment: the banded solve of the generalized Jacobian."""
+        Ke, extra = self.tangent(state)
+        system = self.system
+        ab = system.add_elements(system.band(), Ke)
+        if extra is not None:
+            system.add_sparse(ab, extra)
+        step = np.zeros(self.assembly.N)
+        step[self.free] = system.solve(ab, -state.F[self.free])
+        return step
+
+    def reactions(self, R0):
+        N = self.N
+        return -R0[self.end_a], R0[N + self.end_a], R0[self.end_b], R0[N + self.end_b]
+
+
+@dataclass
+class LineState:
+    F: np.ndarray | None
+    R0: np.ndarray | None
+    Ke: np.ndarray | None
+    terms: tuple | None
+    merit: float
+
+
+_REJECTED = LineState(None, None, None, None, np.inf)
+
+
+def _guess(problem: LineProblem):
+    """The elastic catenary of the mean weight and stiffness, on the flat seabed at the
+    anchor's level when the free one dips below the seabed; positions lifted onto the seabed."""
+    span, dh, L = problem.span, problem.dh, problem.L
+    w = problem.weight / L
+    if not w > 0:
+        raise InputError("segments", f"the line's mean weight must be > 0 (downward), got {w:g} N/m")
+    c = float(np.sum(problem.compliance_q * problem.assembly.dx)) / L
+    EA = 1.0 / c if c > 0 else 1e6 * w * L
+    s_dof, s_t = problem.basis.doflocs[0], problem.tbasis.doflocs[0]
+    free = free_catenary(span, dh, w, EA, length=L)
+    u_a = -free.V_A / free.H
+
+    def free_x(s):
+        return free.H * s / EA + free.H / w * (np.arcsinh(u_a + w * s / free.H) - np.arcsinh(u_a))
+
+    def free_y(s):
+        t0, t1 = np.hypot(1.0, u_a), np.hypot(1.0, u_a + w * s / free.H)
+        return (free.H / w) * (t1 - t0) + (-free.V_A * s + 0.5 * w * s * s) / EA
+
+    x, y = free_x(s_dof), free_y(s_dof)
+    T = np.hypot(free.H, -free.V_A + w * s_t)
+    bed = problem.seabed
+    if bed is not None and np.any(y < bed(x)):
+        level = min(float(bed(np.array([0.0]))[0]), 0.0)
+        level = min(level, dh - 1e-3 * abs(span))
+        try:
+            grounded = elastic_catenary(span, dh, w, EA, length=L, seabed=level)
+            x, y, T = grounded.x_of_s(s_dof), grounded.y_of_s(s_dof), grounded.T_of_s(s_t)
+        except (InputError, ConvergenceError):
+            if bed.flat is not None:  # on a flat seabed the closed form's refusal (slack in a heap) holds
+                raise
+        y = np.maximum(y, bed(x))  # a curved seabed: the free line lifted onto it, if nothing better
+    x[problem.end_a], y[problem.end_a] = 0.0, 0.0
+    x[problem.end_b], y[problem.end_b] = span, dh
+    return np.concatenate([x, y, T])
+
+
+class LineBVPSolution:
+    """Solution of `solve_line_bvp`.
+
+    Attributes
+    ----------
+    H, V_B : float
+        Horizontal and vertical force at the fairlead B (N), as in
+        `skcable.cable.elastic_catenary` (``H`` is the fairlead's, ``H_B``).
+    H_A, V_A : float
+        Horizontal and upward vertical reaction at the anchor A (N).
+    T_A, T_B : float
+        End tensions (N).
+    length : float
+        Unstretched length (m).
+    contact_s, contact_xy : ndarray
+        Arc length from A (m) and position (m) of every contact node.
+    normal_force : ndarray
+        Seabed normal force ``N_i >= 0`` at each contact node (N).
+    contact_force : ndarray (n, 2)
+        Force of the seabed on the line at each contact node, friction
+        included (N): ``λ_i (n_i - μ t_i)``.
+    gap : ndarray
+        Height of each contact node above the seabed (m), ``>= 0`` to round-off.
+    in_contact : ndarray of bool
+        The nodes on the seabed (the final active set).
+    s_touchdown, x_touchdown : float
+        Where the line leaves the seabed for the last time towards B: the
+        unstretched arc length from A (m) at which the suspended part's
+        vertical balance ``V_B - ∫_s^L w - ΣP = H b'(x(s))`` holds (a point
+        between mesh nodes, not the last contact node), and its abscissa; 0
+        without contact.
+    s_landing : float
+        Where a line hanging from an anchor above the seabed first lands
+        (the balance of the part hanging from A, as for ``s_touchdown``); 0
+        when A lies on the seabed.
+    length_on_seabed : float
+        ``s_touchdown - s_landing`` (m): the unstretched length between the
+        first landing and the last touchdown (where the line lifts off a bump
+        in between, that free stretch is included).
+    history, iterations
+        Newton's merit per iteration.
+    """
+
+    def __init__(self, problem: LineProblem, z, history, state: LineState):
+        self._problem, self.dofs, self._state = problem, z, state
+        self.span, self.dh, self.length = problem.span, problem.dh, problem.L
+        self.mesh, self.basis = problem.mesh, problem.basis
+        self.history = [float(h) for h in history]
+        self.iterations = len(self.history) - 1
+        self.friction = problem.friction
+        H_A, V_A, H_B, V_B = (float(v) for v in problem.reactions(state.R0))
+        self.H, self.V_B, self.H_B = H_B, V_B, H_B
+        i, N = problem.contact, problem.N
+        order = np.argsort(problem.basis.doflocs[0][i], kind="stable")
+        i = i[order]
+        self.contact_s = problem.basis.doflocs[0][i]
+        self.contact_xy = np.column_stack([z[i], z[N + i]])
+        self.anchor_on_seabed = problem.anchor_on_seabed
+        if i.size:
+            bp, _, gap, lam, active, _, _ = state.terms
+            bp, gap, lam, active = bp[order], gap[order], lam[order], active[order]
+            if self.anchor_on_seabed:
+                # the seabed under the anchor takes the anchor's downward push, friction included
+                slope = float(problem.seabed.slope(np.array([0.0]))[0])
+                lam_a = max((V_A + slope * H_A) / (1.0 + slope * slope), 0.0)  # n·R⁰_A / |n|², R⁰_x(A) = -H_A
+                mu = problem.friction
+                H_A, V_A = H_A + lam_a * (-slope - mu), V_A - lam_a * (1.0 - mu * slope)
+                self.contact_s = np.concatenate([[0.0], self.contact_s])
+                self.contact_xy = np.vstack([[0.0, 0.0], self.contact_xy])
+                bp, gap = np.concatenate([[slope], bp]), np.concatenate([[0.0], gap])
+                lam, active = np.concatenate([[lam_a], lam]), np.concatenate([[lam_a > 0], active])
+            mu = problem.friction
+            self.normal_force = lam * np.sqrt(1.0 + bp * bp)
+            self.contact_force = lam[:, None] * np.column_stack([-bp - mu, 1.0 - mu * bp])
+            self.gap, self.in_contact = gap, active
+        else:
+            self.normal_force, self.gap = np.zeros(0), np.zeros(0)
+            self.contact_force, self.in_contact = np.zeros((0, 2)), np.zeros(0, dtype=bool)
+        self.H_A, self.V_A = H_A, V_A
+
+    @property
+    def T_A(self):
+        return float(np.hypot(self.H_A, self.V_A))
+
+    @property
+    def T_B(self):
+        return float(np.hypot(self.H, self.V_B))
+
+    @property
+    def weight(self):
+        """Total weight of the line and its point loads (N, downward)."""
+        p = self._problem
+        return p.weight + float(np.sum(p.point_values))
+
+    def _fields(self):
+        N = self._problem.N
+        return self.dofs[:N], self.dofs[N : 2 * N], self.dofs[2 * N :]
+
+    def xy(self, s):
+        """Position (x, y) (m) at unstretched arc length ``s`` from A, array ``(..., 2)``."""
+        s = np.asarray(real("s", s), dtype=float)
+        require("s", (s >= 0) & (s <= self.length), "must lie in [0, length]", s)
+        probes = self.basis.probes(s.reshape(1, -1))
+        xd, yd, _ = self._fields()
+        return np.stack([probes @ xd, probes @ yd], axis=-1).reshape(*s.shape, 2)
+
+    def tension(self, s):
+        """Tension (N) at unstretched arc length ``s`` (P1-DG: the value of the element containing s)."""
+        s = np.asarray(real("s", s), dtype=float)
+        require("s", (s >= 0) & (s <= self.length), "must lie in [0, length]", s)
+        T = self._fields()[2]
+        return (self._problem.tbasis.probes(s.reshape(1, -1)) @ T).reshape(s.shape)[()]
+
+    def angle(self, s):
+        """Angle of the line to the horizontal (rad) at ``s``."""
+        s = np.atleast_1d(np.asarray(real("s", s), dtype=float))
+        require("s", (s >= 0) & (s <= self.length), "must lie in [0, length]", s)
+        G = gradient_probes(self.basis, s.reshape(1, -1))
+        xd, yd, _ = self._fields()
+        return np.arctan2(G @ yd, G @ xd)
+
+    def _weight_before(self, s):
+        """Weight of the line over [0, s] and of the point loads before s (N)."""
+        p = self._problem
+        s_nodes = self.mesh.p[0]
+        k = int(np.clip(np.searchsorted(s_nodes, s) - 1, 0, len(s_nodes) - 2))
+        fraction = (s - s_nodes[k]) / (s_nodes[k + 1] - s_nodes[k])
+        before = self._cumulative_weight
+        points = sum(P for s_p, P in p.point_loads if s_p < s)
+        return before[k] + fraction * (before[k + 1] - before[k]) + points
+
+    @cached_property
+    def _cumulative_weight(self):
+        p = self._problem
+        order = np.argsort(self.mesh.p[0, self.mesh.t].mean(axis=0))
+        return np.concatenate([[0.0], np.cumsum(np.sum(p.w_q * p.assembly.dx, axis=0)[order])])
+
+    def _transition(self, balance, near):
+        """Root of ``balance(s)`` between the mesh nodes around ``near`` (a contact node)."""
+        s_nodes = self.mesh.p[0]
+        h = np.max(np.diff(s_nodes))
+        grid = s_nodes[(s_nodes >= near - 2 * h) & (s_nodes <= near + 2 * h)]
+        values = np.array([balance(s) for s in grid])
+        zero = np.flatnonzero(values == 0.0)
+        if zero.size:
+            return float(grid[zero[0]])
+        change = np.flatnonzero(np.sign(values[:-1]) != np.sign(values[1:]))
+        if not change.size:
+            raise ConvergenceError(
+                "solve_line_bvp: no sign change of the vertical balance near the contact edge", self.history
+            )
+        k = int(change[np.argmin(np.abs(grid[change] - near))])
+        return float(brentq(balance, grid[k], grid[k + 1], xtol=1e-12 * self.length))
+
+    def _slope_at(self, s):
+        x = self.xy(np.array(s))[0]
+        return float(self._problem.seabed.slope(np.array([x]))[0])
+
+    @cached_property
+    def _touchdown(self):
+        """(s, x) of the last touchdown: ``V_B - (W - W(s)) = H b'(x(s))`` (the suspended part's
+        vertical balance, the line leaving the seabed tangentially)."""
+        if not self.in_contact[self.contact_s > 0].any():
+            return 0.0, 0.0
+        total = self._weight_before(self.length)
+
+        def balance(s):
+            return self.V_B - (total - self._weight_before(s)) - self.H * self._slope_at(s)
+
+        s_td = self._transition(balance, self.contact_s[self.in_contact][-1])
+        return s_td, float(self.xy(np.array(s_td))[0])
+
+    @cached_property
+    def s_landing(self):
+        """Where a line hanging from an anchor above the seabed first lands on it: the unstretched
+        arc length from A (m) where ``W(s) - V_A = H_A b'(x(s))`` (the balance of the part
+        hanging from A); 0 when A lies on the seabed or nothing touches."""
+        if self.anchor_on_seabed or not self.in_contact.any():
+            return 0.0
+
+        def balance(s):
+            return self._weight_before(s) - self.V_A - self.H_A * self._slope_at(s)
+
+        return self._transition(balance, self.contact_s[self.in_contact][0])
+
+    @property
+    def s_touchdown(self):
+        return self._touchdown[0]
+
+    @property
+    def x_touchdown(self):
+        return self._touchdown[1]
+
+    @property
+    def length_on_seabed(self):
+        if not self.in_contact.any():
+            return 0.0
+        return self.s_touchdown - self.s_landing
+
+    def residual(self):
+        """Largest scaled residual (forces over the total load, stretch over the length)."""
+        return self._state.merit
+
+    def __repr__(self):
+        return (
+            f"LineBVPSolution(span={self.span:g}, dh={self.dh:g}, {self.mesh.t.shape[1]} elements: "
+            f"H={self.H:.9g}, V_B={self.V_B:.9g}, H_A={self.H_A:.9g}, V_A={self.V_A:.9g}, "
+            f"{int(self.in_contact.sum())} nodes on the seabed, iterations={self.iterations})"
+        )
+
+
+def solve_line_bvp(
+    span,
+    dh,
+    segments,
+    *,
+    seabed=None,
+    seabed_slope=None,
+    friction: float = 0.0,
+    point_loads=(),
+    n_elements: int = 64,
+    fit_touchdown: int = 2,
+    rtol: float = 1e-10,
+    max_iter: int = 50,
+):
+    """A mooring line from anchor A = (0, 0) to fairlead B = (span, dh), by finite elements,
+    optionally resting on a seabed of any shape (see `skcable.cable.bvp.line`).
+
+    Parameters
+    ----------
+    span, dh : float
+        Fairlead position relative to the anchor (m), ``span > 0``.
+    segments : list of BVPSegment or (length, w, EA) tuples
+        From A to B: unstretched length (m), weight per unstretched length
+        (N/m, or a callable of the arc length s from A) and axial stiffness
+        (N, None for inextensible). Joints are mesh nodes.
+    seabed : float or callable, optional
+        Seabed height ``b`` relative to A (m): a number (flat) or a callable
+        ``b(x)`` (array in, array out). A must lie on or above it, B above it.
+    seabed_slope : callable, optional
+        ``b'(x)``; central differences of ``b`` (step 1e-5 span) otherwise.
+    friction : float
+        Coulomb coefficient μ of the grounded line, fully mobilised towards
+        the anchor (Jonkman's model); needs a seabed.
+    point_loads : sequence of (s, P)
+        Downward force ``P`` (N; negative for a buoy) at arc length ``s``
+        from A (a mesh node is put there).
+    n_elements : int
+        Elements over the whole line, shared among segments by length (at
+        least one each).
+    fit_touchdown : int
+        Passes of touchdown fitting: after a solve that touches the seabed,
+        a mesh node is put at the touchdown (and the landing, for an anchor
+        above the seabed) the vertical balance gives
+        (`LineBVPSolution.s_touchdown`, ``s_landing``: the nearest inner node moves there
+        when it is closer than a quarter of an element, else a node is
+        inserted) and the line is solved again from the previous solution,
+        until the touchdown moves less than 1e-9 of the length. Nodal contact
+        otherwise misplaces the touchdown by up to half an element, an error
+        in H of order (that distance)² that jumps with the mesh; 0 turns it off.
+    rtol : float
+        Newton stops when every scaled residual (forces over the total load,
+        the stretch over the length, the complementarity rows over the total
+        load) is below ``rtol``.
+    max_iter : int
+        Newton iterations at most.
+
+    Returns
+    -------
+    LineBVPSolution
+
+    Raises
+    ------
+    InputError
+        Bad data, named; fully mobilised friction that would compress the
+        grounded line (Jonkman's zero-tension stretch near the anchor, not
+        modelled here).
+    ConvergenceError
+        Newton stalled; ``history`` holds the merit per iteration.
+    """
+    span, dh = positive("span", span), real("dh", dh)
+    if not isinstance(span, float) or not isinstance(dh, float):
+        raise InputError("span", "solve_line_bvp solves one scene: give scalar span and dh")
+    segs = _segments(segments)
+    bed = _seabed(seabed, seabed_slope, span)
+    friction = nonnegative("friction", friction)
+    if not isinstance(friction, float):
+        raise InputError("friction", "one coefficient for the whole line")
+    if friction > 0 and bed is None:
+        raise InputError("friction", "applies to a line on the seabed: give seabed= as well")
+    if bed is not None:
+        ends = bed(np.array([0.0, span]))
+        require("seabed", ends[0] <= 0.0, "must be at or below the anchor A = (0, 0)", ends[0])
+        require("dh", dh > ends[1], "must put B above the seabed", dh)
+    L = sum(seg.length for seg in segs)
+    loads = []
+    for item in point_loads:
+        try:
+            s, P = item
+        except (TypeError, ValueError) as exc:
+            raise InputError("point_loads", f"each is (s, P), got {item!r}") from exc
+        s, P = real("point_loads", s), real("point_loads", P)
+        require("point_loads", 0.0 < s < L, "s must lie strictly inside the line (0, length)", s)
+        loads.append((float(s), float(P)))
+    require("fit_touchdown", fit_touchdown in range(0, 11), "must be a whole number from 0 to 10", -1)
+    rtol = positive("rtol", rtol)
+    max_iter = positive("max_iter", max_iter)
+    require("max_iter", max_iter == int(max_iter), "must be a whole number", max_iter)
+    name = "solve_line_bvp"
+
+    def run(problem, z0):
+        result = newton(
+            problem.assemble,
+            z0,
+            norm=lambda state: state.merit,
+            increment=problem.increment,
+            tol=rtol,
+            max_iter=int(max_iter),
+            stagnation_window=8,
+            name=name,
+        )
+        return LineBVPSolution(problem, result.x, result.history, result.state)
+
+    def restart(solution, problem):  # the previous solution interpolated on a new mesh
+        xy = solution.xy(problem.basis.doflocs[0])
+        tension = solution.tension(np.clip(problem.tbasis.doflocs[0], 0.0, L))
+        return np.concatenate([xy[:, 0], xy[:, 1], tension])
+
+    problem = LineProblem(span, dh, segs, loads, bed, friction, n_elements)
+    z0 = _guess(problem)
+    if problem.mesh.t.shape[1] > 2 * COARSE and bed is not None and np.any(problem.gaps(z0) <= 0):
+        # the active set moves by a few nodes per iteration: find it on a coarse mesh first
+        coarse = LineProblem(span, dh, segs, loads, bed, friction, COARSE)
+        z0 = restart(run(coarse, _guess(coarse)), problem)
+    solution = run(problem, z0)
+    fitted = []
+    for _ in range(int(fit_touchdown)):
+        if not solution.in_contact[solution.contact_s > 0].any():
+            break
+        edges = [solution.s_touchdown] + ([solution.s_landing] if solution.s_landing > 0 else [])
+        if fitted and max(abs(a - b) for a, b in zip(edges, fitted, strict=False)) <= 1e-9 * L:
+            break
+        fitted = edges
+        problem = LineProblem(span, dh, segs, loads, bed, friction, n_elements, fitted=fitted)
+        solution = run(problem, restart(solution, problem))
+    values = (solution.H, solution.V_B, solution.H_A, solution.V_A)
+    if not all(np.isfinite(values)) or not np.all(np.isfinite(solution.dofs)):
+        raise ConvergenceError(f"{name}: non-finite result", solution.history)
+    if friction > 0:
+        T = solution._fields()[2]
+        if np.min(T) < -1e3 * rtol * problem.load_scale:
+            raise InputError(
+                "friction",
+                "fully mobilised friction would put the grounded line near the anchor in compression "
+                f"(min T = {np.min(T):.3g} N): Jonkman's zero-tension stretch is not modelled by the BVP",
+            )
+    return solution
