@@ -42,8 +42,13 @@ from skfem.helpers import dd, ddot
 from skcable._checks import nonnegative, positive, scalar
 from skcable.errors import ConvergenceError, InputError
 
-__all__ = ["BeamFrequencies", "StrandFrequencies", "beam_frequencies", "pinned_beam_frequencies",
-           "strand_bending_frequencies"]
+__all__ = [
+    "BeamFrequencies",
+    "StrandFrequencies",
+    "beam_frequencies",
+    "pinned_beam_frequencies",
+    "strand_bending_frequencies",
+]
 
 _ENDS = ("clamped", "pinned")
 
@@ -176,7 +181,7 @@ def beam_frequencies(EI, N, length, mass_per_length, *, ends="clamped", n_modes=
     if isinstance(n_elements, (bool, np.bool_)) or not isinstance(n_elements, (int, np.integer)):
         raise InputError("n_elements", f"must be a whole number, got {n_elements!r}")
     if not 2 * n_modes <= n_elements <= 4000:
-        raise InputError("n_elements", f"must lie in [2 n_modes, 4000] = [{2 * n_modes}, 4000], got {n_elements}")
+        raise InputError("n_elements", f"must lie in [2 n_modes = {2 * n_modes}, 4000], got {n_elements}")
 
     mesh = MeshLine(np.linspace(0.0, length, int(n_elements) + 1))
     basis = Basis(mesh, ElementLineHermite())
