@@ -164,13 +164,15 @@ def test_mode_shapes_round_trip_through_vtk(tmp_path, suffix):
     np.testing.assert_array_equal(mesh.points[:, 1], res.y)
     np.testing.assert_array_equal(mesh.points[:, 2], 0.0)
     for k in range(3):
-        in_plane, out_of_plane = mesh.point_data[f"in_plane_{k + 1}"], mesh.point_data[f"out_of_plane_{k + 1}"]
+        in_plane = mesh.point_data[f"in_plane_{k + 1}"]
+        out_of_plane = mesh.point_data[f"out_of_plane_{k + 1}"]
         np.testing.assert_array_equal(in_plane[:, 1], res.modes_in_plane[k])
         np.testing.assert_array_equal(out_of_plane[:, 2], res.modes_out_of_plane[k])
         np.testing.assert_array_equal(in_plane[:, [0, 2]], 0.0)
         np.testing.assert_array_equal(out_of_plane[:, :2], 0.0)
     cells = mesh.cells_dict["line"]
-    np.testing.assert_array_equal(cells, np.column_stack([np.arange(res.x.size - 1), np.arange(1, res.x.size)]))
+    joined = np.column_stack([np.arange(res.x.size - 1), np.arange(1, res.x.size)])
+    np.testing.assert_array_equal(cells, joined)
 
 
 def test_mode_shape_writer_refuses_bad_input(tmp_path):
