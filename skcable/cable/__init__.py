@@ -36,6 +36,7 @@ from skcable.cable.bvp import (
 )
 from skcable.cable.lines.seabed import SeabedCatenary, elastic_catenary
 from skcable.cable.solution import CableSolution
+from skcable.cable._spans import TensionSection, ruling_span, tension_section  # noqa: I001
 
 __all__ = [
     "ArcSolution",
@@ -84,3 +85,4 @@ __all__ = [
     "smooth_surface_reaction",
     "sphere_parallel",
 ]
+__all__ += ["TensionSection", "ruling_span", "tension_section"]
