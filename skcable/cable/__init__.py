@@ -13,6 +13,7 @@ from skcable.cable._frequencies import NaturalFrequencies, irvine_frequencies, n
 from skcable.cable._funicular import Funicular, FunicularVertical, funicular, funicular_vertical
 from skcable.cable._loads import DeckLoad, DistributedLoad, PointLoad, SelfWeight
 from skcable.cable._parabola import Parabola, parabola
+from skcable.cable._spans import TensionSection, ruling_span, tension_section
 from skcable.cable._state import (
     ChangeOfState,
     ThermalCatenary,
@@ -36,7 +37,6 @@ from skcable.cable.bvp import (
 )
 from skcable.cable.lines.seabed import SeabedCatenary, elastic_catenary
 from skcable.cable.solution import CableSolution
-from skcable.cable._spans import TensionSection, ruling_span, tension_section  # noqa: I001
 
 __all__ = [
     "ArcSolution",
