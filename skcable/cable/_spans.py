@@ -123,8 +123,8 @@ class TensionSection:
         Each span's sag by the ruling-span approximation,
         ``sag_ruling_span (L_i / L_r)²`` with the reference spans ``L_i``.
     moment_residual : float
-        Largest ``|ΔH cos φ - (V + W/2) sin φ| / max H`` over the strings and
-        states (the balance solved).
+        Largest ``|ΔH cos φ - (V + W/2) sin φ| / max H`` over the swinging
+        strings (length > 0) and the states (the balance solved).
     iterations : (...) int
         Newton iterations per state.
     """
@@ -172,9 +172,12 @@ class _Section:
         _, _, span, dh = self.geometry(delta)
         if np.any(span <= 0):
             raise InputError("insulator_length", "a string swings so far that a span vanishes")
-        return thermal_catenary(
-            span, dh, self.w, self.EA, length=self.L0, alpha=self.alpha, t=self.t, t0=self.t0
-        )
+        # the vectorised Newton of elastic_catenary probes backtracking steps whose closure
+        # overflows (and are rejected); its result is checked by its own residual
+        with np.errstate(over="ignore", invalid="ignore", divide="ignore"):
+            return thermal_catenary(
+                span, dh, self.w, self.EA, length=self.L0, alpha=self.alpha, t=self.t, t0=self.t0
+            )
 
     def residual(self, delta):
         """Moment balance of every string (N), and its Jacobian in ``delta`` (free strings)."""
@@ -207,13 +210,12 @@ class _Section:
 
 def _solve_state(eqs: _Section, delta0):
     delta = np.where(eqs.free, delta0, 0.0)
-    R, sol, J = eqs.residual(delta)
-    scale = float(np.max(sol.H))
-    history = [float(np.max(np.abs(R), initial=0.0)) / scale]
     free = np.flatnonzero(eqs.free)
+    R, sol, J = eqs.residual(delta)
+    history = [float(np.max(np.abs(R[free]), initial=0.0)) / float(np.max(sol.H))]
     for iteration in range(_MAX_ITER):
         if history[-1] < _TOL:
-            return delta, R, sol, iteration
+            return delta, history[-1], sol, iteration
         step = np.zeros_like(delta)
         step[free] = -np.linalg.solve(J[np.ix_(free, free)], R[free])
         if not np.all(np.isfinite(step)):
@@ -227,17 +229,16 @@ def _solve_state(eqs: _Section, delta0):
                 except (ConvergenceError, InputError):
                     R_new = None
                 if R_new is not None:
-                    norm = float(np.max(np.abs(R_new))) / float(np.max(sol_new.H))
+                    norm = float(np.max(np.abs(R_new[free]), initial=0.0)) / float(np.max(sol_new.H))
                     if norm < (1.0 - 1e-4 * t) * history[-1] or norm < _TOL:
                         break
             t *= 0.5
         else:
             raise ConvergenceError("tension_section: the line search found no descent", history)
         delta, R, sol, J = trial, R_new, sol_new, J_new
-        scale = float(np.max(sol.H))
         history.append(norm)
     if history[-1] < _TOL:
-        return delta, R, sol, _MAX_ITER
+        return delta, history[-1], sol, _MAX_ITER
     raise ConvergenceError("tension_section: Newton on the strings' balance did not converge", history)
 
 
@@ -329,9 +330,9 @@ def tension_section(
     delta = np.zeros(n - 1)
     for j, (w_j, t_j) in enumerate(zip(w_all, t_all, strict=True)):
         eqs = _Section(spans, dh, L0, EA, float(w_j), alpha, float(t_j), t0, lam, weight)
-        delta, R, sol, iterations[j] = _solve_state(eqs, delta)  # continuation from the last state
+        delta, residual, sol, iterations[j] = _solve_state(eqs, delta)  # continuation from the last state
         rise, _, span_j, dh_j = eqs.geometry(delta)
-        worst = max(worst, float(np.max(np.abs(R), initial=0.0)) / float(np.max(sol.H)))
+        worst = max(worst, residual)
         values = dict(
             H=sol.H, V_A=sol.V_A, V_B=sol.V_B, T_max=np.maximum(sol.T_A, sol.T_B), sag=sol.sag,
             span=span_j, dh=dh_j, swing=delta,
