@@ -707,8 +707,8 @@ def _state_and_frequency_commands(sub, command) -> None:
         type=_finite,
         nargs="+",
         required=True,
-        help="weight per unstressed length of the states, ice included [N/m] (required; several values "
-        "broadcast with --t and --wind)",
+        help="weight per unstressed length of the states, ice included [N/m]; several values broadcast "
+        "with --t and --wind (required)",
     )
     cs.add_argument(
         "--t", type=_finite, nargs="+", required=True, help="temperatures of the states [°C] (required)"
