@@ -6,7 +6,7 @@ from scipy.optimize import brentq, fsolve
 
 from skcable import cable
 from skcable.cable._spans import _Section
-from skcable.errors import InputError
+from skcable.errors import ConvergenceError, InputError
 
 CONDUCTOR = dict(EA=3.0e7, alpha=2.3e-5, w0=15.0, t0=15.0, H0=2.0e4)
 SPANS = [300.0, 450.0, 250.0, 400.0]
@@ -176,3 +176,19 @@ def test_bad_input_is_named(kwargs, name):
     assert info.value.argument == name
     with pytest.raises(InputError, match="spans"):
         cable.ruling_span([[1.0, 2.0]])
+
+
+def test_one_span_is_the_change_of_state():
+    section = cable.tension_section([300.0], 5.0, **CONDUCTOR, w=15.0, t=60.0, **STRINGS)
+    alone = cable.change_of_state(300.0, 5.0, **CONDUCTOR, w=15.0, t=60.0)
+    assert section.H.shape == (1,) and section.swing.shape == (0,)
+    assert section.H[0] == pytest.approx(alone.H, rel=1e-13)
+
+
+def test_non_convergence_raises_with_its_history(monkeypatch):
+    import skcable.cable._spans as spans
+
+    monkeypatch.setattr(spans, "_MAX_ITER", 1)
+    with pytest.raises(ConvergenceError) as info:
+        cable.tension_section(SPANS, 0.0, **CONDUCTOR, w=15.0, t=60.0, **STRINGS)
+    assert len(info.value.history) == 2 and info.value.history[1] < info.value.history[0]
