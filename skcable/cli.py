@@ -621,7 +621,7 @@ def _output_flags(p) -> None:
 _STATE_FIELDS = ("H", "H_plane", "sag", "T_max", "length", "blowout")
 
 
-def _numbers(name: str, values) -> float | np.ndarray:
+def _numbers(values) -> float | np.ndarray:
     """One number as a float, several as an array (the API broadcasts them)."""
     return float(values[0]) if len(values) == 1 else np.asarray(values, dtype=float)
 
@@ -640,8 +640,8 @@ def _listed(values: dict) -> dict:
 def _change_of_state(args) -> int:
     res = cable.change_of_state(
         args.span, args.dh, EA=args.EA, alpha=args.alpha, w0=args.w0, t0=args.t0, H0=args.H0,
-        sag0=args.sag0, w=_numbers("w", args.w), t=_numbers("t", args.t),
-        wind=_numbers("wind", args.wind), model=args.model,
+        sag0=args.sag0, w=_numbers(args.w), t=_numbers(args.t),
+        wind=_numbers(args.wind), model=args.model,
     )  # fmt: skip
     values = {k: getattr(res, k) for k in _STATE_FIELDS} | {"L0": res.L0, "H0": res.H0, "sag0": res.sag0}
     _print(_listed(values), args.json)
