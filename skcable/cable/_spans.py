@@ -44,7 +44,11 @@ conductor the clamp carries (the string's own weight acting at its middle).
 The swings :math:`\delta` are found by Newton's method with the analytic
 Jacobian (each span's fairlead stiffness, `ElasticCatenary.stiffness`, by the
 implicit function theorem), with backtracking that keeps
-:math:`|\delta| < \lambda`. A string of zero length holds its clamp fixed (the
+:math:`|\delta| < \lambda`, to a balance of :math:`10^{-11}` of the largest
+:math:`H` (or, when Newton stalls above it, within four times the round-off
+that the spans' own closure tolerance puts on :math:`H` and :math:`V`, which a
+very stiff, taut conductor amplifies; ``moment_residual`` reports the balance
+reached). A string of zero length holds its clamp fixed (the
 spans on both sides are then independent). Loads are vertical (no wind): the
 section stays in its vertical plane.
 """
@@ -61,6 +65,7 @@ __all__ = ["ruling_span", "TensionSection", "tension_section"]
 
 _TOL = 1e-11  # on the moment balance of the strings, relative to the largest H
 _MAX_ITER = 60
+_CLOSURE = 1e-13  # relative closure tolerance of elastic_catenary's Newton
 
 
 def _spans(spans) -> np.ndarray:
@@ -180,7 +185,8 @@ class _Section:
             )
 
     def residual(self, delta):
-        """Moment balance of every string (N), and its Jacobian in ``delta`` (free strings)."""
+        """Moment balance of every string (N), the spans' solution, and the balance's
+        Jacobian in ``delta`` (strings × strings, rows and columns of fixed strings unused)."""
         sol = self.curves(delta)
         H, V_A, V_B = sol.H, sol.V_A, sol.V_B
         lam = np.where(self.free, self.lam, 1.0)
@@ -206,6 +212,15 @@ class _Section:
         J = J[:, 1:-1]  # the interior clamps: the strings
         J[np.diag_indices(n - 1)] += (-dH * s / c - load) / lam
         return R, sol, J
+
+
+def _round_off(eqs: _Section, sol) -> float:
+    """Floor of the balance residual (relative to max H) set by the spans' own tolerance:
+    each catenary closes to ``_CLOSURE`` of its chord, which moves its H and V_B by its
+    stiffness times that (a stiff, taut cable amplifies it)."""
+    K = np.abs(sol.curve.stiffness()).sum(axis=(-2, -1))
+    chord = np.hypot(sol.span, sol.dh)
+    return max(_TOL, _CLOSURE * float(np.max(K * chord)) / float(np.max(sol.H)))
 
 
 def _solve_state(eqs: _Section, delta0):
@@ -234,6 +249,8 @@ def _solve_state(eqs: _Section, delta0):
                         break
             t *= 0.5
         else:
+            if history[-1] <= 4.0 * _round_off(eqs, sol):  # stalled at the spans' round-off
+                return delta, history[-1], sol, iteration
             raise ConvergenceError("tension_section: the line search found no descent", history)
         delta, R, sol, J = trial, R_new, sol_new, J_new
         history.append(norm)

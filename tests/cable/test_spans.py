@@ -192,3 +192,15 @@ def test_non_convergence_raises_with_its_history(monkeypatch):
     with pytest.raises(ConvergenceError) as info:
         cable.tension_section(SPANS, 0.0, **CONDUCTOR, w=15.0, t=60.0, **STRINGS)
     assert len(info.value.history) == 2 and info.value.history[1] < info.value.history[0]
+
+
+def test_a_very_stiff_taut_conductor_converges_to_its_round_off():
+    """EA = 1e11 N at H0 = 200 kN: the spans' closure tolerance (1e-13 of the chord) moves H by
+    ~1e-10 of H; Newton stops there and reports it, the balance still holds to that."""
+    section = cable.tension_section(
+        [100.0, 500.0, 250.0, 800.0, 50.0], [0, 50, -80, 20, 5], EA=1e11, alpha=2e-5, w0=15.0, t0=15.0,
+        H0=2e5, w=40.0, t=90.0, insulator_length=4.0, insulator_weight=300.0,
+    )  # fmt: skip
+    assert 0 < section.moment_residual < 1e-8
+    load = section.V_B[:-1] + section.V_A[1:] + 150.0
+    np.testing.assert_allclose(np.tan(section.swing_angle), np.diff(section.H) / load, rtol=1e-6)
