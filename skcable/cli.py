@@ -591,6 +591,7 @@ def _parser() -> argparse.ArgumentParser:
     for p in (section, cap):
         p.add_argument("--json", action="store_true", help="print one JSON object (default: a table)")
     cap.add_argument("--no-progress", action="store_true", help="no progress bar on stderr (default: shown)")
+    _state_and_frequency_commands(sub, command)
     return parser
 
 
@@ -614,6 +615,125 @@ def _output_flags(p) -> None:
         "--vtk", metavar="FILE", help="also write the cable to this .vtu or .vtk file (default: none)"
     )
     p.add_argument("--json", action="store_true", help="print one JSON object (default: a table)")
+
+
+# --- change of state and natural frequencies -------------------------------------
+_STATE_FIELDS = ("H", "H_plane", "sag", "T_max", "length", "blowout")
+
+
+def _numbers(values) -> float | np.ndarray:
+    """One number as a float, several as an array (the API broadcasts them)."""
+    return float(values[0]) if len(values) == 1 else np.asarray(values, dtype=float)
+
+
+def _listed(values: dict) -> dict:
+    """Arrays as (nested) lists of floats, each checked finite."""
+    out = {}
+    for key, value in values.items():
+        array = np.asarray(value)
+        if array.dtype.kind == "f" and not np.all(np.isfinite(array)):
+            raise RuntimeError(f"{key} came out with a value that is not finite")
+        out[key] = array.tolist() if array.ndim else value
+    return out
+
+
+def _change_of_state(args) -> int:
+    res = cable.change_of_state(
+        args.span, args.dh, EA=args.EA, alpha=args.alpha, w0=args.w0, t0=args.t0, H0=args.H0,
+        sag0=args.sag0, w=_numbers(args.w), t=_numbers(args.t),
+        wind=_numbers(args.wind), model=args.model,
+    )  # fmt: skip
+    values = {k: getattr(res, k) for k in _STATE_FIELDS} | {"L0": res.L0, "H0": res.H0, "sag0": res.sag0}
+    _print(_listed(values), args.json)
+    return EXIT_OK
+
+
+def _frequencies(args) -> int:
+    from skcable.io import write_mode_shapes
+
+    vtk = writable_file("vtk", args.vtk, _VTK_SUFFIXES) if args.vtk else None
+    res = cable.natural_frequencies(
+        args.span, args.dh, args.w, args.EA, H=args.H, sag=args.sag, n_modes=args.n_modes, g=args.g
+    )
+    values = {
+        "f_in_plane": res.f_in_plane,
+        "f_out_of_plane": res.f_out_of_plane,
+        "in_plane_symmetric": [bool(b) for b in res.in_plane_symmetric],
+        "H": res.H,
+        "sag": res.sag,
+        "L_e": res.L_e,
+        "lambda2": res.lambda2,
+        "irvine_in_plane": res.irvine["in_plane"],
+        "irvine_out_of_plane": res.irvine["out_of_plane"],
+    }
+    values = _listed(values)
+    if vtk:
+        values["vtk"] = str(write_mode_shapes(res, vtk))
+    _print(values, args.json)
+    return EXIT_OK
+
+
+def _state_and_frequency_commands(sub, command) -> None:
+    """``skcable change-of-state`` and ``skcable frequencies``."""
+    cs = command(
+        sub,
+        "change-of-state",
+        _change_of_state,
+        "sag and tension of a span in other states (load, temperature, wind) at the unstressed length "
+        "of a reference state (skcable.cable.change_of_state)",
+    )
+    fr = command(
+        sub,
+        "frequencies",
+        _frequencies,
+        "in-plane and out-of-plane natural frequencies and mode shapes of a sagging cable (Irvine's "
+        "linear theory on finite elements; skcable.cable.natural_frequencies)",
+    )
+    for p in (cs, fr):
+        p.add_argument("span", type=_finite, metavar="SPAN", help="horizontal distance A-B [m], > 0")
+        p.add_argument("dh", type=_finite, metavar="DH", help="height of B above A [m]")
+        p.add_argument("--EA", type=_finite, required=True, help="axial stiffness [N], > 0 (required)")
+    cs.add_argument("--alpha", type=_finite, required=True, help="thermal expansion [1/K] (required)")
+    cs.add_argument(
+        "--w0", type=_finite, required=True, help="reference weight per unstressed length [N/m] (required)"
+    )
+    cs.add_argument("--t0", type=_finite, required=True, help="reference temperature [°C] (required)")
+    cs.add_argument(
+        "--H0", type=_finite, help="reference horizontal tension [N] (default: none; give --H0 or --sag0)"
+    )
+    cs.add_argument("--sag0", type=_finite, help="reference sag [m] (default: none; give --H0 or --sag0)")
+    cs.add_argument(
+        "--w",
+        type=_finite,
+        nargs="+",
+        required=True,
+        help="weight per unstressed length of the states, ice included [N/m]; several values broadcast "
+        "with --t and --wind (required)",
+    )
+    cs.add_argument(
+        "--t", type=_finite, nargs="+", required=True, help="temperatures of the states [°C] (required)"
+    )
+    cs.add_argument(
+        "--wind", type=_finite, nargs="+", default=[0.0], help="transverse wind per length [N/m] (default: 0)"
+    )
+    cs.add_argument(
+        "--model",
+        default="catenary",
+        choices=("catenary", "parabola"),
+        help="elastic catenary with thermal strain, or the classical parabolic cubic (default: catenary)",
+    )
+    cs.add_argument("--json", action="store_true", help="print one JSON object (default: a table)")
+    fr.add_argument(
+        "--w", type=_finite, required=True, help="weight per metre of cable [N/m], > 0 (required)"
+    )
+    fr.add_argument("--H", type=_finite, help="horizontal tension [N] (default: none; give --H or --sag)")
+    fr.add_argument("--sag", type=_finite, help="sag [m] (default: none; give --H or --sag)")
+    fr.add_argument("--n-modes", type=_whole(1), default=6, help="modes per family, 1 to 60 (default: 6)")
+    fr.add_argument("--g", type=_finite, default=9.81, help="gravity [m/s²], > 0 (default: 9.81)")
+    fr.add_argument(
+        "--vtk", metavar="FILE", help="also write the mode shapes to this .vtu or .vtk file (default: none)"
+    )
+    fr.add_argument("--json", action="store_true", help="print one JSON object (default: a table)")
 
 
 # --- main -----------------------------------------------------------------------

@@ -370,3 +370,74 @@ def test_unusable_paths_and_options_are_refused_before_computing(
     status, out, err = main(capsys, *args)
     assert status == cli.EXIT_USAGE and out == "", err
     assert err.count("\n") == 1 and flag in err and reason in err
+
+
+# --- change of state and natural frequencies -------------------------------------
+_STATE = ("300", "-10", "--EA", "3e7", "--alpha", "2.3e-5", "--w0", "15", "--t0", "15")
+
+
+@pytest.mark.parametrize("model", ["catenary", "parabola"])
+def test_change_of_state_json_is_the_api(capsys, model):
+    status, out, err = main(
+        capsys, "change-of-state", *_STATE, "--H0", "2e4", "--w", "15", "25", "--t", "-20", "60",
+        "--wind", "0", "8", "--model", model, "--json",
+    )  # fmt: skip
+    assert status == cli.EXIT_OK, err
+    got = json.loads(out)
+    api = cable.change_of_state(
+        300.0, -10.0, EA=3e7, alpha=2.3e-5, w0=15.0, t0=15.0, H0=2e4,
+        w=np.array([15.0, 25.0]), t=np.array([-20.0, 60.0]), wind=np.array([0.0, 8.0]), model=model,
+    )  # fmt: skip
+    for key in ("H", "H_plane", "sag", "T_max", "length", "blowout"):
+        assert got[key] == getattr(api, key).tolist(), key
+    assert (got["L0"], got["H0"], got["sag0"]) == (api.L0, api.H0, api.sag0)
+
+
+def test_change_of_state_single_state_by_sag(capsys):
+    status, out, _ = main(capsys, "change-of-state", *_STATE, "--sag0", "8", "--w", "15", "--t", "60")
+    assert status == cli.EXIT_OK
+    api = cable.change_of_state(
+        300.0, -10.0, EA=3e7, alpha=2.3e-5, w0=15.0, t0=15.0, sag0=8.0, w=15.0, t=60.0
+    )
+    assert f"{api.H:.10g}" in out and f"{api.sag:.10g}" in out
+
+
+def test_frequencies_json_and_vtk_are_the_api(tmp_path, capsys):
+    import meshio
+
+    path = tmp_path / "modes.vtu"
+    args = ("frequencies", "250", "12", "--EA", "2e7", "--w", "12", "--sag", "6", "--n-modes", "3")
+    status, out, err = main(capsys, *args, "--g", "9.8", "--vtk", path, "--json")
+    assert status == cli.EXIT_OK, err
+    got = json.loads(out)
+    api = cable.natural_frequencies(250.0, 12.0, 12.0, 2e7, sag=6.0, n_modes=3, g=9.8)
+    assert got["f_in_plane"] == api.f_in_plane.tolist()
+    assert got["f_out_of_plane"] == api.f_out_of_plane.tolist()
+    assert got["in_plane_symmetric"] == api.in_plane_symmetric.tolist()
+    assert (got["H"], got["lambda2"], got["L_e"]) == (api.H, api.lambda2, api.L_e)
+    assert got["irvine_in_plane"] == api.irvine["in_plane"].tolist()
+    assert got["vtk"] == str(path)
+    np.testing.assert_array_equal(meshio.read(path).point_data["in_plane_2"][:, 1], api.modes_in_plane[1])
+
+
+@pytest.mark.parametrize(
+    "args, flag",
+    [
+        (("change-of-state", *_STATE, "--w", "15", "--t", "20"), "--H0"),  # neither H0 nor sag0
+        (("change-of-state", *_STATE, "--H0", "2e4", "--sag0", "8", "--w", "15", "--t", "20"), "--H0"),
+        (("change-of-state", *_STATE, "--H0", "2e4", "--w", "15", "16", "--t", "1", "2", "3"), "--t"),
+        (("change-of-state", *_STATE, "--H0", "-2e4", "--w", "15", "--t", "20"), "--H0"),
+        (("change-of-state", *_STATE, "--H0", "2e4", "--w", "15", "--t", "20", "--model", "x"), "--model"),
+        (("change-of-state", *_STATE, "--H0", "2e4", "--w", "nan", "--t", "20"), "--w"),
+        (("change-of-state", *_STATE, "--H0", "2e4", "--w", "15", "--t", "-1e5"), "--t"),
+        (("frequencies", "250", "0", "--EA", "2e7", "--w", "12"), "--sag"),
+        (("frequencies", "250", "0", "--EA", "2e7", "--w", "12", "--H", "1", "--n-modes", "0"), "--n-modes"),
+        (("frequencies", "250", "0", "--EA", "2e7", "--w", "12", "--H", "1e4", "--g", "0"), "--g"),
+        (("frequencies", "250", "0", "--EA", "2e7", "--w", "12", "--H", "1e4", "--vtk", "m.csv"), "--vtk"),
+        (("frequencies", "250", "0", "--w", "12", "--H", "1e4"), "--EA"),
+    ],
+)
+def test_state_and_frequency_bad_flags_exit_2(capsys, args, flag):
+    status, out, err = main(capsys, *args)
+    assert status == cli.EXIT_USAGE and out == ""
+    assert err.count("\n") == 1 and flag in err and "Traceback" not in err

@@ -14,6 +14,7 @@ from skcable.cable._frequencies import NaturalFrequencies, irvine_frequencies, n
 from skcable.cable._funicular import Funicular, FunicularVertical, funicular, funicular_vertical
 from skcable.cable._loads import DeckLoad, DistributedLoad, PointLoad, SelfWeight
 from skcable.cable._parabola import Parabola, parabola
+from skcable.cable._spans import TensionSection, ruling_span, tension_section
 from skcable.cable._state import (
     ChangeOfState,
     ThermalCatenary,
@@ -86,3 +87,4 @@ __all__ = [
     "sphere_parallel",
     "Conductor",
 ]
+__all__ += ["TensionSection", "ruling_span", "tension_section"]

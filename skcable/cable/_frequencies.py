@@ -106,6 +106,10 @@ class NaturalFrequencies:
         part of its mass-weighted norm; exact for a level span).
     x : (n_points,) array
         Abscissae of the mode shapes (element ends and midpoints, ends included).
+    y : (n_points,) array
+        Height of the static profile above A at ``x`` (m).
+    span, dh : float
+        The supports: A = (0, 0), B = (span, dh).
     modes_in_plane, modes_out_of_plane : (n_modes, n_points) arrays
         Mode shapes, vertical and transverse, mass-normalised (``φᵀMφ = 1``).
     H, sag, L_e, lambda2 : float
@@ -246,6 +250,9 @@ def natural_frequencies(span, dh, w, EA, *, H=None, sag=None, n_modes=6, g=9.81)
         f_out_of_plane=results["out"][0],
         in_plane_symmetric=sym_part > anti_part,
         x=x,
+        y=_static_profile(static, x, dh),
+        span=span,
+        dh=dh,
         modes_in_plane=results["in"][1],
         modes_out_of_plane=results["out"][1],
         H=H,
@@ -257,3 +264,12 @@ def natural_frequencies(span, dh, w, EA, *, H=None, sag=None, n_modes=6, g=9.81)
         stiffness_in_plane=K_in,
         stiffness_out_of_plane=K_out,
     )
+
+
+def _static_profile(static, x, dh):
+    """Heights of the static catenary at ``x``, the ends exactly 0 and ``dh``."""
+    y = np.asarray(static.y(x), dtype=float)
+    y[0], y[-1] = 0.0, dh
+    if not np.all(np.isfinite(y)):
+        raise ConvergenceError("natural_frequencies: the static profile came out non-finite")
+    return y

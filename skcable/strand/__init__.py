@@ -8,6 +8,13 @@ from skcable.strand._choice import Analysis, ClosedFormCurve, analyse, axial_for
 from skcable.strand._geometry import Layer, Strand, Wires, preset
 from skcable.strand._material import Material, material
 from skcable.strand._section import Section
+from skcable.strand._vibration import (
+    BeamFrequencies,
+    StrandFrequencies,
+    beam_frequencies,
+    pinned_beam_frequencies,
+    strand_bending_frequencies,
+)
 from skcable.strand.capacity import CapacityCurve, StepResult, StrandLayout, capacity_curve
 from skcable.strand.fe import (
     AnnexE,
@@ -64,4 +71,9 @@ __all__ = [
     "critical_curvature",
     "material",
     "preset",
+    "BeamFrequencies",
+    "StrandFrequencies",
+    "beam_frequencies",
+    "pinned_beam_frequencies",
+    "strand_bending_frequencies",
 ]

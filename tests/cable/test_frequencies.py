@@ -140,3 +140,50 @@ def test_bad_input_positional():
         cable.natural_frequencies(100.0, 0.0, np.nan, 1e7, H=1e4)
     with pytest.raises(InputError, match="dh"):
         cable.natural_frequencies(100.0, np.inf, 10.0, 1e7, H=1e4)
+
+
+# --- static profile and mode shapes to VTK ---------------------------------------
+def test_static_profile_is_the_catenary():
+    res = cable.natural_frequencies(120.0, 15.0, 12.0, 2e7, H=8e3, n_modes=2)
+    ref = cable.catenary(120.0, 15.0, 12.0, H=8e3)
+    np.testing.assert_allclose(res.y, ref.y(res.x), rtol=0, atol=1e-12 * 120)
+    assert (res.span, res.dh) == (120.0, 15.0)
+
+
+@pytest.mark.parametrize("suffix", [".vtu", ".vtk"])
+def test_mode_shapes_round_trip_through_vtk(tmp_path, suffix):
+    import meshio
+
+    from skcable.io import write_mode_shapes
+
+    res = cable.natural_frequencies(100.0, -8.0, 10.0, 5e7, sag=3.0, n_modes=3)
+    path = write_mode_shapes(res, tmp_path / f"modes{suffix}")
+    assert [p.name for p in tmp_path.iterdir()] == [path.name]  # no temporary left behind
+    mesh = meshio.read(path)
+    np.testing.assert_array_equal(mesh.points[:, 0], res.x)
+    np.testing.assert_array_equal(mesh.points[:, 1], res.y)
+    np.testing.assert_array_equal(mesh.points[:, 2], 0.0)
+    for k in range(3):
+        in_plane = mesh.point_data[f"in_plane_{k + 1}"]
+        out_of_plane = mesh.point_data[f"out_of_plane_{k + 1}"]
+        np.testing.assert_array_equal(in_plane[:, 1], res.modes_in_plane[k])
+        np.testing.assert_array_equal(out_of_plane[:, 2], res.modes_out_of_plane[k])
+        np.testing.assert_array_equal(in_plane[:, [0, 2]], 0.0)
+        np.testing.assert_array_equal(out_of_plane[:, :2], 0.0)
+    cells = mesh.cells_dict["line"]
+    joined = np.column_stack([np.arange(res.x.size - 1), np.arange(1, res.x.size)])
+    np.testing.assert_array_equal(cells, joined)
+
+
+def test_mode_shape_writer_refuses_bad_input(tmp_path):
+    from skcable.io import mode_shape_mesh, write_mode_shapes
+
+    res = cable.natural_frequencies(100.0, 0.0, 10.0, 5e7, sag=3.0, n_modes=2)
+    with pytest.raises(InputError, match="path"):
+        write_mode_shapes(res, tmp_path / "modes.csv")
+    with pytest.raises(InputError, match="result"):
+        mode_shape_mesh(object())
+    res.modes_in_plane = res.modes_in_plane[:, :-1]
+    with pytest.raises(InputError, match="modes_in_plane"):
+        mode_shape_mesh(res)
+    assert list(tmp_path.iterdir()) == []

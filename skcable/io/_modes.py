@@ -1,0 +1,89 @@
+"""Mode shapes of a vibrating cable as a VTK mesh for ParaView.
+
+The cable's static profile is a polyline in the plane z = 0 (y up, x along
+the span, as the other cable meshes of `skcable.io`); every mode is a point
+data *vector*: an in-plane mode moves the points along y, an out-of-plane
+mode along z. In ParaView, Warp By Vector on one of them (with a scale
+factor: the shapes are mass-normalised, ``φᵀMφ = 1``, in m/√kg) shows the
+mode, and animating the scale factor between ±s animates it.
+
+This module reads a result (`skcable.cable.NaturalFrequencies` or any object
+with the same attributes) and imports no model.
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import meshio
+import numpy as np
+
+from skcable.errors import InputError
+from skcable.io._atomic import atomic_path, writable_file
+
+__all__ = ["mode_shape_mesh", "write_mode_shapes"]
+
+_SUFFIXES = (".vtu", ".vtk")
+
+
+def mode_shape_mesh(result) -> meshio.Mesh:
+    """Static profile and mode shapes of a natural-frequency result as a polyline.
+
+    Parameters
+    ----------
+    result : NaturalFrequencies
+        Reads ``x``, ``y`` (static profile, m), ``modes_in_plane``,
+        ``modes_out_of_plane`` ((n_modes, n_points) each).
+
+    Returns
+    -------
+    meshio.Mesh
+        Points ``(x, y, 0)``; line cells joining them in order. Point data
+        ``in_plane_<k>`` = ``(0, φ_k, 0)`` and ``out_of_plane_<k>`` =
+        ``(0, 0, φ_k)`` for k = 1..n_modes, mode k of each family being the
+        k-th frequency of ``f_in_plane``, ``f_out_of_plane`` (not stored:
+        meshio writes no field data to VTU/VTK files).
+
+    Raises
+    ------
+    InputError
+        ``result`` lacks one of those attributes, or their shapes disagree, or
+        a value is not finite.
+    """
+    try:
+        x, y = np.asarray(result.x, dtype=float), np.asarray(result.y, dtype=float)
+        fields = {
+            "in_plane": (np.asarray(result.modes_in_plane, dtype=float), 1),
+            "out_of_plane": (np.asarray(result.modes_out_of_plane, dtype=float), 2),
+        }
+    except AttributeError as exc:
+        raise InputError("result", f"must be a natural_frequencies() result ({exc})") from None
+    if x.ndim != 1 or x.size < 2 or y.shape != x.shape:
+        raise InputError("result", f"x and y must be 1-D of the same size >= 2, got {x.shape}, {y.shape}")
+    points = np.column_stack([x, y, np.zeros_like(x)])
+    segments = np.column_stack([np.arange(x.size - 1), np.arange(1, x.size)])
+    point_data = {}
+    for name, (shapes, component) in fields.items():
+        if shapes.ndim != 2 or shapes.shape[1] != x.size:
+            raise InputError("result", f"modes_{name} has shape {shapes.shape} for {x.size} points")
+        for k, shape in enumerate(shapes, start=1):
+            vector = np.zeros((x.size, 3))
+            vector[:, component] = shape
+            point_data[f"{name}_{k}"] = vector
+    for name, value in [("points", points), *point_data.items()]:
+        if not np.all(np.isfinite(value)):
+            raise InputError("result", f"{name} holds a value that is not finite")
+    return meshio.Mesh(points, [("line", segments)], point_data=point_data)
+
+
+def write_mode_shapes(result, path) -> Path:
+    """Write `mode_shape_mesh` of ``result`` to ``path`` (``.vtu`` or ``.vtk``), atomically.
+
+    The file appears whole or not at all (`skcable.io._atomic.atomic_path`);
+    returns the path.
+    """
+    path = writable_file("path", path, _SUFFIXES)
+    mesh = mode_shape_mesh(result)
+    with atomic_path(path) as temp:
+        meshio.write(temp, mesh)
+    return path

@@ -1,0 +1,206 @@
+"""Ruling span and the exact tension section with suspension strings."""
+
+import numpy as np
+import pytest
+from scipy.optimize import brentq, fsolve
+
+from skcable import cable
+from skcable.cable._spans import _Section
+from skcable.errors import ConvergenceError, InputError
+
+CONDUCTOR = dict(EA=3.0e7, alpha=2.3e-5, w0=15.0, t0=15.0, H0=2.0e4)
+SPANS = [300.0, 450.0, 250.0, 400.0]
+STRINGS = dict(insulator_length=2.5, insulator_weight=600.0)
+
+
+def test_ruling_span_is_the_common_tension_of_the_parabolic_section():
+    """Independent derivation: at a common H the parabolic length excess w²L³/24H² plus
+    the elastic and thermal strains, summed over the level spans, is conserved; the H
+    solving that (brentq) is the parabolic change of state of the span sqrt(ΣL³/ΣL)."""
+    spans = np.array(SPANS)
+    EA, alpha, w0, t0, H0 = (CONDUCTOR[k] for k in ("EA", "alpha", "w0", "t0", "H0"))
+    w, t = 22.0, -5.0
+
+    def excess(H, w, t):  # (stretched length - span) summed over the spans, at L0 fixed
+        return np.sum(w**2 * spans**3 / (24 * H**2) - H * spans / EA - alpha * (t - t0) * spans)
+
+    H = brentq(lambda H: excess(H, w, t) - excess(H0, w0, t0), 1e3, 1e6, xtol=1e-12, rtol=1e-15)
+    L_r = cable.ruling_span(spans)
+    ruling = cable.change_of_state(L_r, 0.0, **CONDUCTOR, w=w, t=t, model="parabola")
+    assert ruling.H == pytest.approx(H, rel=1e-12)
+    assert cable.ruling_span([123.0]) == 123.0
+    assert cable.ruling_span([1e200, 1e200]) == pytest.approx(1e200, rel=1e-15)
+
+
+def test_equal_level_spans_are_each_a_single_span():
+    section = cable.tension_section(
+        [350.0] * 4, 0.0, **CONDUCTOR, w=[15.0, 25.0], t=[[-20.0], [60.0]], **STRINGS
+    )
+    single = cable.change_of_state(350.0, 0.0, **CONDUCTOR, w=[15.0, 25.0], t=[[-20.0], [60.0]])
+    assert section.H.shape == (2, 2, 4)
+    np.testing.assert_allclose(section.H, np.repeat(single.H[..., None], 4, -1), rtol=1e-12)
+    np.testing.assert_allclose(section.sag, np.repeat(single.sag[..., None], 4, -1), rtol=1e-12)
+    np.testing.assert_array_equal(section.swing, 0.0)
+    # equal spans: the ruling span is the span and its approximation is exact
+    np.testing.assert_allclose(section.H_gap, 0.0, atol=1e-12)
+
+
+def test_zero_length_strings_leave_the_spans_independent():
+    dh = [10.0, -25.0, 5.0, 30.0]
+    section = cable.tension_section(
+        SPANS, dh, **CONDUCTOR, w=25.0, t=[-20.0, 60.0], insulator_length=0.0, insulator_weight=600.0
+    )
+    for i, (span, h) in enumerate(zip(SPANS, dh, strict=True)):
+        alone = cable.change_of_state(span, h, **CONDUCTOR, w=25.0, t=[-20.0, 60.0])
+        np.testing.assert_allclose(section.H[:, i], alone.H, rtol=1e-10)  # solver tolerance
+        np.testing.assert_allclose(section.sag[:, i], alone.sag, rtol=1e-10)
+    np.testing.assert_array_equal(section.swing, 0.0)
+
+
+def test_moment_balance_of_every_string():
+    section = cable.tension_section(SPANS, [0.0, 20.0, -10.0, 0.0], **CONDUCTOR, w=18.0, t=70.0, **STRINGS)
+    dH = np.diff(section.H)
+    load = section.V_B[:-1] + section.V_A[1:] + 0.5 * STRINGS["insulator_weight"]
+    np.testing.assert_allclose(np.tan(section.swing_angle), dH / load, rtol=1e-9, atol=1e-13)
+    np.testing.assert_allclose(section.swing, 2.5 * np.sin(section.swing_angle), rtol=1e-14)
+    np.testing.assert_allclose(section.clamp_rise, 2.5 * (1 - np.cos(section.swing_angle)), rtol=1e-9)
+    # the clamps moved, the dead-ends did not: the spans add up to the section's length
+    assert np.sum(section.span) == pytest.approx(np.sum(SPANS), rel=1e-15)
+    assert np.sum(section.dh) == pytest.approx(10.0, rel=1e-13)
+    assert section.moment_residual < 1e-11
+    # the hot, long-span side loses tension less than the short spans: strings swing
+    # toward the longer span
+    assert np.all(np.sign(section.swing) == np.sign(np.diff(section.H)))
+
+
+def test_jacobian_equals_central_differences():
+    spans = np.array(SPANS)
+    dh = [0.0, 20.0, -10.0, 0.0]
+    L0 = np.array(
+        [cable.change_of_state(a, h, **CONDUCTOR, w=15.0, t=15.0).L0 for a, h in zip(spans, dh, strict=True)]
+    )
+    eqs = _Section(spans, np.array([0.0, 20, -10, 0]), L0, 3e7, 21.0, 2.3e-5, 55.0, 15.0,
+                   np.array([2.5, 1.5, 3.0]), np.array([600.0, 300.0, 900.0]))  # fmt: skip
+    delta = np.array([0.3, -0.2, 0.5])
+    _, _, J = eqs.residual(delta)
+    step = 1e-6
+    numeric = np.column_stack(
+        [
+            (eqs.residual(delta + step * e)[0] - eqs.residual(delta - step * e)[0]) / (2 * step)
+            for e in np.eye(3)
+        ]
+    )
+    np.testing.assert_allclose(J, numeric, rtol=2e-6, atol=1e-6 * np.abs(J).max())
+
+
+def _independent(spans, dh, EA, alpha, w0, t0, H0, w, t, lam, W):
+    """The same section written afresh: unknowns the swing angles, each span Irvine's
+    elastic catenary of length k L0, weight w/k, stiffness EA k (k = 1 + alpha (t - t0)),
+    L0 from the reference tension by brentq, the balance by fsolve."""
+    spans, dh = np.asarray(spans), np.asarray(dh)
+
+    def reference_length(a, h):
+        chord = np.hypot(a, h)
+        return brentq(
+            lambda L: cable.elastic_catenary(a, h, w0, EA, length=L).H - H0,
+            chord * 0.999,
+            chord * 1.05,
+            xtol=1e-14,
+            rtol=1e-15,
+        )
+
+    L0 = [reference_length(a, h) for a, h in zip(spans, dh, strict=True)]
+    L0 = np.array(L0)
+    k = 1 + alpha * (t - t0)
+
+    def spans_of(phi):
+        x = np.concatenate([[0.0], lam * np.sin(phi), [0.0]])
+        z = np.concatenate([[0.0], lam * (1 - np.cos(phi)), [0.0]])
+        return [
+            cable.elastic_catenary(a + x[i + 1] - x[i], h + z[i + 1] - z[i], w / k, EA * k, length=k * L)
+            for i, (a, h, L) in enumerate(zip(spans, dh, L0, strict=True))
+        ]
+
+    def balance(phi):
+        c = spans_of(phi)
+        return [
+            ((c[j + 1].H - c[j].H) - np.tan(phi[j]) * (c[j].V_B + c[j + 1].V_A + W / 2)) / H0
+            for j in range(len(phi))
+        ]
+
+    phi = fsolve(balance, np.zeros(len(spans) - 1), xtol=1e-14)
+    return phi, spans_of(phi)
+
+
+def test_against_an_independent_solution():
+    dh = [0.0, 20.0, -10.0, 0.0]
+    section = cable.tension_section(SPANS, dh, **CONDUCTOR, w=30.0, t=-10.0, **STRINGS)
+    phi, spans = _independent(SPANS, dh, **CONDUCTOR, w=30.0, t=-10.0, lam=2.5, W=600.0)
+    np.testing.assert_allclose(section.swing_angle, phi, rtol=1e-8)
+    np.testing.assert_allclose(section.H, [s.H for s in spans], rtol=1e-10)
+    np.testing.assert_allclose(section.sag, [s.sag for s in spans], rtol=1e-10)
+    assert np.abs(section.swing_angle).max() > 1e-3  # a real swing, not a trivial case
+
+
+def test_long_strings_equalise_the_tension_as_the_ruling_span_assumes():
+    section = cable.tension_section(
+        SPANS, 0.0, **CONDUCTOR, w=15.0, t=[-20.0, 80.0], insulator_length=1e4, insulator_weight=1.0
+    )
+    spread = section.H.max(axis=-1) / section.H.min(axis=-1) - 1
+    assert np.all(spread < 2e-4)
+    # a free section at one H: the ruling span's tension up to its parabolic terms
+    np.testing.assert_allclose(section.H_gap, 0.0, atol=2e-3)
+    short = cable.tension_section(SPANS, 0.0, **CONDUCTOR, w=15.0, t=[-20.0, 80.0], **STRINGS)
+    assert np.all(np.abs(short.H_gap).max(axis=-1) > 10 * np.abs(section.H_gap).max(axis=-1))
+
+
+@pytest.mark.parametrize(
+    "kwargs, name",
+    [
+        (dict(spans=[100.0, -1.0]), "spans"),
+        (dict(dh=[0.0, 1.0, 2.0]), "dh"),
+        (dict(EA=0.0), "EA"),
+        (dict(H0=float("nan")), "H0"),
+        (dict(w=-1.0), "w"),
+        (dict(insulator_length=-1.0), "insulator_length"),
+        (dict(insulator_weight=[1.0, 2.0, 3.0]), "insulator_weight"),
+        (dict(t=-1e5), "t"),
+        (dict(alpha="x"), "alpha"),
+    ],
+)
+def test_bad_input_is_named(kwargs, name):
+    args = dict(spans=[100.0, 200.0], dh=0.0, **CONDUCTOR, w=15.0, t=20.0, **STRINGS) | kwargs
+    spans = args.pop("spans")
+    with pytest.raises(InputError) as info:
+        cable.tension_section(spans, **args)
+    assert info.value.argument == name
+    with pytest.raises(InputError, match="spans"):
+        cable.ruling_span([[1.0, 2.0]])
+
+
+def test_one_span_is_the_change_of_state():
+    section = cable.tension_section([300.0], 5.0, **CONDUCTOR, w=15.0, t=60.0, **STRINGS)
+    alone = cable.change_of_state(300.0, 5.0, **CONDUCTOR, w=15.0, t=60.0)
+    assert section.H.shape == (1,) and section.swing.shape == (0,)
+    assert section.H[0] == pytest.approx(alone.H, rel=1e-13)
+
+
+def test_non_convergence_raises_with_its_history(monkeypatch):
+    import skcable.cable._spans as spans
+
+    monkeypatch.setattr(spans, "_MAX_ITER", 1)
+    with pytest.raises(ConvergenceError) as info:
+        cable.tension_section(SPANS, 0.0, **CONDUCTOR, w=15.0, t=60.0, **STRINGS)
+    assert len(info.value.history) == 2 and info.value.history[1] < info.value.history[0]
+
+
+def test_a_very_stiff_taut_conductor_converges_to_its_round_off():
+    """EA = 1e11 N at H0 = 200 kN: the spans' closure tolerance (1e-13 of the chord) moves H by
+    ~1e-10 of H; Newton stops there and reports it, the balance still holds to that."""
+    section = cable.tension_section(
+        [100.0, 500.0, 250.0, 800.0, 50.0], [0, 50, -80, 20, 5], EA=1e11, alpha=2e-5, w0=15.0, t0=15.0,
+        H0=2e5, w=40.0, t=90.0, insulator_length=4.0, insulator_weight=300.0,
+    )  # fmt: skip
+    assert 0 < section.moment_residual < 1e-8
+    load = section.V_B[:-1] + section.V_A[1:] + 150.0
+    np.testing.assert_allclose(np.tan(section.swing_angle), np.diff(section.H) / load, rtol=1e-6)
