@@ -84,3 +84,16 @@ __all__ = [
     "smooth_surface_reaction",
     "sphere_parallel",
 ]
+
+# lines in 3-D and moored bodies (skcable.cable.lines)
+from skcable.cable.lines import (  # noqa: E402
+    Line3D,
+    MooringEquilibrium,
+    MooringSystem,
+    PointBody,
+    RigidBody,
+    line_3d,
+    rotation_matrix,
+)
+
+__all__ += ["Line3D", "MooringEquilibrium", "MooringSystem", "PointBody", "RigidBody", "line_3d", "rotation_matrix"]
