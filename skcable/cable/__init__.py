@@ -96,4 +96,12 @@ from skcable.cable.lines import (  # noqa: E402
     rotation_matrix,
 )
 
-__all__ += ["Line3D", "MooringEquilibrium", "MooringSystem", "PointBody", "RigidBody", "line_3d", "rotation_matrix"]
+__all__ += [
+    "Line3D",
+    "MooringEquilibrium",
+    "MooringSystem",
+    "PointBody",
+    "RigidBody",
+    "line_3d",
+    "rotation_matrix",
+]

@@ -13,4 +13,12 @@ from skcable.cable.lines.body import PointBody, RigidBody, rotation_matrix  # no
 from skcable.cable.lines.line3d import Line3D, line_3d  # noqa: E402
 from skcable.cable.lines.system import MooringEquilibrium, MooringSystem  # noqa: E402
 
-__all__ += ["Line3D", "MooringEquilibrium", "MooringSystem", "PointBody", "RigidBody", "line_3d", "rotation_matrix"]
+__all__ += [
+    "Line3D",
+    "MooringEquilibrium",
+    "MooringSystem",
+    "PointBody",
+    "RigidBody",
+    "line_3d",
+    "rotation_matrix",
+]

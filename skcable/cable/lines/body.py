@@ -119,7 +119,9 @@ class RigidBody(_Hydrostatics):
     ):
         fairleads = real("fairleads", fairleads)
         if np.ndim(fairleads) != 2 or np.shape(fairleads)[1] != 3 or len(fairleads) == 0:
-            raise InputError("fairleads", f"must be an (n, 3) array of points, got shape {np.shape(fairleads)}")
+            raise InputError(
+                "fairleads", f"must be an (n, 3) array of points, got shape {np.shape(fairleads)}"
+            )
         self.fairleads = np.array(fairleads, dtype=float)
         self.center_of_gravity = point("center_of_gravity", center_of_gravity)
         self.metacentre = point("metacentre", metacentre)
@@ -151,7 +153,9 @@ class RigidBody(_Hydrostatics):
         out = np.zeros(6)
         out[:3] = self.weight + self.buoyancy
         out[2] -= self.heave_stiffness * q[2]
-        out[3:] = np.cross(R @ self.center_of_gravity, self.weight) + np.cross(R @ self.metacentre, self.buoyancy)
+        out[3:] = np.cross(R @ self.center_of_gravity, self.weight) + np.cross(
+            R @ self.metacentre, self.buoyancy
+        )
         return out
 
     def own_stiffness(self, q) -> np.ndarray:

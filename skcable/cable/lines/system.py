@@ -4,8 +4,9 @@ Lines run from fixed anchors to the body's fairleads; each hangs in its vertical
 plane (`skcable.cable.lines.line3d`). At body position :math:`\mathbf q` the net
 generalised force on the body is
 
-.. math:: \mathbf G(\mathbf q) = \sum_i \begin{pmatrix}\mathbf f_i \\ \mathbf r_i\times\mathbf f_i\end{pmatrix}
-    + \mathbf G_\text{own}(\mathbf q) + \begin{pmatrix}\mathbf F_\text{ext}\\ \mathbf M_\text{ext}\end{pmatrix},
+.. math:: \mathbf G(\mathbf q) = \sum_i \begin{pmatrix}\mathbf f_i \\
+    \mathbf r_i\times\mathbf f_i\end{pmatrix} + \mathbf G_\text{own}(\mathbf q)
+    + \begin{pmatrix}\mathbf F_\text{ext}\\ \mathbf M_\text{ext}\end{pmatrix},
 
 with :math:`\mathbf f_i` the force of line *i* on its fairlead, :math:`\mathbf r_i` its
 arm from the body's reference point (global axes), :math:`\mathbf G_\text{own}` the
@@ -86,8 +87,11 @@ class MooringSystem:
             raise InputError("lines", "give at least one line")
         anchors = np.asarray(anchors, dtype=float) if not isinstance(anchors, str) else anchors
         if np.shape(anchors) != (len(lines), 3):
-            raise InputError("anchors", f"must be one point (x, y, z) per line, shape ({len(lines)}, 3), "
-                             f"got shape {np.shape(anchors)}")
+            raise InputError(
+                "anchors",
+                f"must be one point (x, y, z) per line, shape ({len(lines)}, 3), "
+                f"got shape {np.shape(anchors)}",
+            )
         anchors = np.array([point(f"anchors[{i}]", a) for i, a in enumerate(anchors)])
         if isinstance(body, RigidBody) and len(body.fairleads) != len(lines):
             raise InputError(
@@ -188,8 +192,8 @@ class MooringSystem:
             raise InputError("max_iter", f"must be an integer >= 1, got {max_iter!r}")
         arm = max(1.0, float(np.abs(getattr(self.body, "fairleads", np.zeros(1))).max()))
         body_scale = max(np.abs(self.body.weight[2]), self.body.buoyancy[2], np.linalg.norm(external[:3]))
-        span_min = min(float(np.hypot(*(self.anchors[i, :2] - self.body.fairlead_positions(q, len(self.lines))[i, :2])))
-                       for i in range(len(self.lines)))
+        reach = self.anchors[:, :2] - self.body.fairlead_positions(q, len(self.lines))[:, :2]
+        span_min = float(np.hypot(reach[:, 0], reach[:, 1]).min())
         step_cap = np.concatenate([np.full(3, 0.25 * span_min), np.full(self.n_dof - 3, 0.2)])
 
         def scaled(G, lines):
