@@ -302,11 +302,11 @@ class MooringEquilibrium:
         return pd.concat(frames, ignore_index=True)
 
     def to_vtk(self, path, n: int = 101):
-        """Write the lines, the seabed and the body to a VTK file (see
-        `skcable.io.mooring_mesh`); returns the path."""
-        from skcable.io import mooring_mesh, write
+        """Write the lines (tension as point data), the seabed patch and the body to a
+        ``.vtu``/``.vtk`` file, atomically (see `skcable.io.mooring_mesh`); returns the path."""
+        from skcable.io import write_mooring
 
-        return write(mooring_mesh(self, n), path)
+        return write_mooring(self, path, n)
 
     def __repr__(self):
         return (
