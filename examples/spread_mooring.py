@@ -101,12 +101,12 @@ def report(rest, pushed, peer) -> str:
     out = ["A three-line spread mooring under a steady force and moment (SI units)"]
     names = ("surge x", "sway y", "heave z", "roll", "pitch", "yaw")
     units = ("m", "m", "m", "deg", "deg", "deg")
-    out.append(f"{'':10s} {'at rest':>12s} {'pushed':>12s} {'MoorPy':>12s}")
+    out.append(f"{'':12s} {'at rest':>12s} {'pushed':>12s} {'MoorPy':>12s}")
     for i, (name, unit) in enumerate(zip(names, units, strict=True)):
         scale = 1.0 if i < 3 else 180.0 / np.pi
         theirs = f"{peer[0][i] * scale:12.6f}" if peer else f"{'-':>12s}"
         out.append(
-            f"{name + ' [' + unit + ']':14s} {rest.position[i] * scale:12.6f} "
+            f"{name + ' [' + unit + ']':12s} {rest.position[i] * scale:12.6f} "
             f"{pushed.position[i] * scale:12.6f} {theirs}"
         )
     out.append(f"heel: {np.degrees(pushed.heel):.4f} deg")

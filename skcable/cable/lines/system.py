@@ -208,10 +208,12 @@ class MooringSystem:
             if history[-1] <= tol:
                 return MooringEquilibrium(self, q, external, G, K, lines, history)
             jac = K @ self.body.rate_map(q)  # -∂G/∂q
-            try:
+            # singular values in consistent units (rotations times the arm) tell a free direction
+            units = np.concatenate([np.ones(3), np.full(self.n_dof - 3, arm)])
+            singular = np.linalg.svd(jac / units[:, None] / units[None, :], compute_uv=False)
+            dq = np.full(self.n_dof, np.nan)
+            if singular[-1] > 1e-11 * singular[0]:
                 dq = np.linalg.solve(jac, G)
-            except np.linalg.LinAlgError:
-                dq = np.full(self.n_dof, np.nan)
             if not np.isfinite(dq).all():
                 raise ConvergenceError(
                     "mooring equilibrium: the stiffness is singular (a direction neither the lines nor the "
