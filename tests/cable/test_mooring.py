@@ -175,7 +175,7 @@ def test_spread_mooring_matches_moorpy():
     pytest.importorskip("moorpy")
     _, pushed = EXAMPLE["solve"]()
     r6, tensions, K_moorpy, ms = EXAMPLE["moorpy_solve"]()
-    # MoorPy stops at tol = 1e-8 on its position steps with lines solved to 1e-4 relative (its default):
+    # MoorPy: solveEquilibrium(tol=1e-8 m on positions), each line solved to 1e-4 m on its end point:
     # positions agree to 1e-6 m and 1e-9 rad, forces and stiffness to ~1e-7
     np.testing.assert_allclose(pushed.position[:3], r6[:3], atol=1e-5)
     np.testing.assert_allclose(pushed.position[3:], r6[3:], atol=1e-8)
