@@ -282,3 +282,17 @@ def test_cli_line_as_json_equals_the_api(capsys):
     out, err = capsys.readouterr()
     assert status == cli.EXIT_USAGE and out == "" and err.startswith("skcable: error: --w:")
     assert len(err.strip().splitlines()) == 1
+
+
+def test_cli_line_free_and_vtk(capsys, tmp_path):
+    args = ["line", "--span", "380", "--dh", "60", "--length", "400", "--w", "200", "--EA", "1e8"]
+    status = cli.main([*args, "--json", "--vtk", str(tmp_path / "line.vtu")])
+    out, err = capsys.readouterr()
+    assert status == 0 and err == ""
+    values = json.loads(out)
+    ref = cable.elastic_catenary(380.0, 60.0, 200.0, 1e8, length=400.0)  # Irvine's, no seabed
+    assert values["H"] == ref.H and values["H_A"] == ref.H and values["V_A"] == ref.V_A
+    assert values["length_on_seabed"] == 0.0
+    mesh = meshio.read(tmp_path / "line.vtu")
+    assert mesh.point_data["tension"][-1] == pytest.approx(ref.T_B, rel=1e-12)
+    assert [p.name for p in tmp_path.iterdir()] == ["line.vtu"]
