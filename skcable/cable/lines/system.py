@@ -36,7 +36,7 @@ from __future__ import annotations
 import numpy as np
 import pandas as pd
 
-from skcable._checks import positive, scalar
+from skcable._checks import positive, real, scalar
 from skcable.cable.lines.body import PointBody, RigidBody
 from skcable.cable.lines.line3d import Line3D, line_3d, point
 from skcable.errors import ConvergenceError, InputError
@@ -85,14 +85,14 @@ class MooringSystem:
                 raise InputError("lines", f"line {i} ({type(model).__name__}) has no solve(span, dh) method")
         if not lines:
             raise InputError("lines", "give at least one line")
-        anchors = np.asarray(anchors, dtype=float) if not isinstance(anchors, str) else anchors
+        anchors = real("anchors", anchors)
         if np.shape(anchors) != (len(lines), 3):
             raise InputError(
                 "anchors",
                 f"must be one point (x, y, z) per line, shape ({len(lines)}, 3), "
                 f"got shape {np.shape(anchors)}",
             )
-        anchors = np.array([point(f"anchors[{i}]", a) for i, a in enumerate(anchors)])
+        anchors = np.array(anchors, dtype=float)
         if isinstance(body, RigidBody) and len(body.fairleads) != len(lines):
             raise InputError(
                 "body", f"has {len(body.fairleads)} fairleads for {len(lines)} lines: give one per line"
