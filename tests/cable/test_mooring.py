@@ -187,6 +187,18 @@ def test_spread_mooring_matches_moorpy():
     np.testing.assert_allclose(K_all, K_all_moorpy, rtol=1e-6, atol=1e-7 * np.abs(K_all).max())
 
 
+def test_large_yaw_matches_moorpy():
+    """A yaw moment that turns the platform by 46 degrees: large rotations, same parametrisation."""
+    pytest.importorskip("moorpy")
+    force, moment = np.array([2e6, 5e5, 0.0]), np.array([1e6, 1e7, 6e7])
+    eq = EXAMPLE["system"]().equilibrium(force=force, moment=moment)
+    r6, tensions, _, _ = EXAMPLE["moorpy_solve"](force, moment)
+    assert r6[5] > 0.7  # radians
+    np.testing.assert_allclose(eq.position[:3], r6[:3], atol=1e-5)
+    np.testing.assert_allclose(eq.position[3:], r6[3:], atol=1e-8)
+    np.testing.assert_allclose([line.tension_at_fairlead for line in eq.lines], tensions, rtol=1e-7)
+
+
 def test_point_body_equilibrium_and_stiffness():
     anchors = EXAMPLE["layout"]()[0]
     buoy = cable.PointBody(mass=2e4, volume=60.0, waterplane_area=30.0)

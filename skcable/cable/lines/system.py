@@ -236,7 +236,11 @@ class MooringSystem:
                     break
                 alpha *= 0.5
             if not accepted:
-                raise ConvergenceError("mooring equilibrium: the line search found no descent", history)
+                raise ConvergenceError(
+                    "mooring equilibrium: the line search found no descent (the residual stalls: the "
+                    "loads may exceed what the mooring can hold, or the start is too far)",
+                    history,
+                )
         if history[-1] <= tol:
             return MooringEquilibrium(self, q, external, G, K, lines, history)
         raise ConvergenceError(f"mooring equilibrium: not converged in {max_iter} iterations", history)
