@@ -529,6 +529,7 @@ def _parser() -> argparse.ArgumentParser:
         "--loads", type=_finite, nargs="+", required=True, help="Px Py per joint [N], y up (required)"
     )
     _output_flags(f)
+    _line_parser(sub, command)
     study = sub.add_parser("study", help="parameter studies on Dask").add_subparsers(
         dest="study_command", metavar="command"
     )
@@ -673,6 +674,32 @@ def _frequencies(args) -> int:
     return EXIT_OK
 
 
+# --- mooring line ---------------------------------------------------------------
+_LINE_FIELDS = ("H", "V_B", "V_A", "H_A", "T_B", "length_on_seabed", "x_touchdown")
+
+
+def _line(args) -> int:
+    """One 2-D mooring line: fairlead and anchor forces, grounded length, 2x2 stiffness."""
+    from skcable.cable.lines._single_segment import _SingleSegment  # cable.Line at merge
+
+    vtk = _vtk_path(args)
+    model = _SingleSegment(args.length, args.w, args.EA, seabed=args.seabed, friction=args.friction)
+    sol = model.solve(args.span, args.dh)
+    k = np.asarray(sol.stiffness(), dtype=float)
+    values = {name: float(getattr(sol, name)) for name in _LINE_FIELDS}
+    values |= {
+        "k_H_span": float(k[0, 0]),
+        "k_H_dh": float(k[0, 1]),
+        "k_VB_span": float(k[1, 0]),
+        "k_VB_dh": float(k[1, 1]),
+        "residual": sol.residual(),
+    }
+    if vtk:
+        values["vtk"] = _write_vtk(sol, vtk)
+    _print(values, args.json)
+    return EXIT_OK
+
+
 def _state_and_frequency_commands(sub, command) -> None:
     """``skcable change-of-state`` and ``skcable frequencies``."""
     cs = command(
@@ -734,6 +761,35 @@ def _state_and_frequency_commands(sub, command) -> None:
         "--vtk", metavar="FILE", help="also write the mode shapes to this .vtu or .vtk file (default: none)"
     )
     fr.add_argument("--json", action="store_true", help="print one JSON object (default: a table)")
+
+
+def _line_parser(sub, command) -> None:
+    """``skcable line``: one elastic line from the anchor A = (0, 0) to the fairlead B = (span, dh)."""
+    p = command(
+        sub,
+        "line",
+        _line,
+        "mooring line from the anchor A = (0, 0) to the fairlead B = (span, dh), optionally on a flat "
+        "seabed with friction (Jonkman 2007): fairlead and anchor forces, grounded length and the 2x2 "
+        "fairlead stiffness d(H, V_B)/d(span, dh)",
+    )
+    p.add_argument("--span", type=_finite, required=True, help="horizontal distance A-B [m], > 0 (required)")
+    p.add_argument("--dh", type=_finite, required=True, help="height of B above A [m] (required)")
+    p.add_argument("--length", type=_finite, required=True, help="unstretched length [m], > 0 (required)")
+    p.add_argument(
+        "--w", type=_finite, required=True, help="weight in water per unstretched metre [N/m], > 0 (required)"
+    )
+    p.add_argument("--EA", type=_finite, required=True, help="axial stiffness [N], > 0 (required)")
+    p.add_argument(
+        "--seabed",
+        type=_finite,
+        help="height of a flat seabed relative to A [m], <= 0; 0: the anchor on the seabed "
+        "(default: none, the line hangs free)",
+    )
+    p.add_argument(
+        "--friction", type=_finite, default=0.0, help="seabed friction coefficient [-], >= 0 (default: 0)"
+    )
+    _output_flags(p)
 
 
 # --- main -----------------------------------------------------------------------

@@ -18,6 +18,7 @@ __all__ = [
     "capacity_curves",
     "curvature_along",
     "moment_curvature",
+    "mooring_profiles",
     "render_strand",
     "slip_fraction",
 ]
@@ -152,3 +153,28 @@ def render_strand(
     plotter.screenshot(str(path))
     plotter.close()
     return path
+
+
+def mooring_profiles(result, ax=None, *, n: int = 201, depth=None):
+    """Profile of each line of a moored body in its own vertical plane: height z (m)
+    against the horizontal distance from its anchor (m), coloured by line, with the
+    seabed (``result.depth``, or ``depth``) as a line. Reads ``result.lines`` (each
+    line's ``profile(n)``, ``anchor`` and ``direction``)."""
+    ax = _axes(ax)
+    lines = list(result.lines)
+    if not lines:
+        raise InputError("result", "has no lines to plot")
+    depth = getattr(result, "depth", None) if depth is None else depth
+    reach = 0.0
+    for i, line in enumerate(lines):
+        xyz, _ = line.profile(n)
+        r = (xyz[:, :2] - line.anchor[:2]) @ line.direction[:2]
+        reach = max(reach, float(r.max()))
+        ax.plot(
+            r, xyz[:, 2], color=f"C{i % 10}", label=f"line {i}: T_B = {line.tension_at_fairlead / 1e3:.0f} kN"
+        )
+    if depth is not None:
+        ax.axhline(-float(depth), color="0.4", lw=0.8, ls="--", label="seabed")
+    ax.set(xlabel="horizontal distance from the anchor [m]", ylabel="z [m]", xlim=(0.0, 1.02 * reach))
+    ax.legend(loc="upper left", fontsize="small")
+    return ax

@@ -88,3 +88,24 @@ __all__ = [
     "Conductor",
 ]
 __all__ += ["TensionSection", "ruling_span", "tension_section"]
+
+# lines in 3-D and moored bodies (skcable.cable.lines)
+from skcable.cable.lines import (  # noqa: E402
+    Line3D,
+    MooringEquilibrium,
+    MooringSystem,
+    PointBody,
+    RigidBody,
+    line_3d,
+    rotation_matrix,
+)
+
+__all__ += [
+    "Line3D",
+    "MooringEquilibrium",
+    "MooringSystem",
+    "PointBody",
+    "RigidBody",
+    "line_3d",
+    "rotation_matrix",
+]

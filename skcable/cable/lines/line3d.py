@@ -1,0 +1,193 @@
+r"""A line between two points in space hangs in its vertical plane.
+
+Anchor :math:`\mathbf a` and fairlead :math:`\mathbf b` (3-vectors, z up, m). The
+line lies in the vertical plane through them: horizontal distance
+:math:`r = |\mathbf b_{xy} - \mathbf a_{xy}| > 0`, unit horizontal direction
+:math:`\mathbf e = (\mathbf b_{xy} - \mathbf a_{xy})/r`, height :math:`dh = b_z - a_z`.
+Its 2-D model, solved for ``(span, dh) = (r, dh)``, gives the fairlead forces
+``H, V_B`` and the anchor forces ``H_A, V_A``; the force the line exerts on the
+fairlead and on the anchor are
+
+.. math:: \mathbf F_b = (-H\,\mathbf e,\; -V_B), \qquad \mathbf F_a = (H_A\,\mathbf e,\; -V_A)
+
+(``V_A`` is the upward reaction at A: the line pulls the anchor down by it). The
+difference :math:`(H - H_A)\,\mathbf e` is the friction the seabed carries, and
+:math:`\mathbf F_a + \mathbf F_b + (0, 0, -w L) + \text{seabed reactions} = 0`.
+
+The 3x3 fairlead stiffness in global axes, :math:`K = -\partial\mathbf F_b/\partial\mathbf b`
+with the anchor fixed, follows from the 2x2 stiffness
+:math:`k = \partial(H, V_B)/\partial(r, dh)` and :math:`\partial\mathbf e/\partial\mathbf b_{xy}
+= (I - \mathbf e\mathbf e^T)/r`:
+
+.. math::
+    K = \begin{pmatrix} k_{HH}\,\mathbf e\mathbf e^T + \frac{H}{r}(I_2 - \mathbf e\mathbf e^T)
+        & k_{HV}\,\mathbf e \\ k_{VH}\,\mathbf e^T & k_{VV} \end{pmatrix},
+
+the radial block from the line's own stiffness and the transverse (pendulum) term
+:math:`H/r`: the standard result of quasi-static mooring analysis (J.M. Jonkman,
+"Dynamics modeling and loads analysis of an offshore floating wind turbine", NREL,
+2007; MoorPy, M. Hall's quasi-static mooring code at NREL, builds the same matrix).
+It has the sign of the 2-D stiffness: the growth of the reaction the fairlead
+must supply as it moves (MoorPy's convention), positive semi-definite for a line
+in tension.
+
+A *line model* is any object with ``solve(span, dh)`` returning a 2-D solution
+with ``H, V_A, V_B, H_A, length, length_on_seabed, x_touchdown``, ``x_of_s(s)``,
+``y_of_s(s)``, ``T_of_s(s)`` (unstretched arc length ``s`` from A), ``stiffness()``
+and ``tensions()`` (a pandas DataFrame, one row per segment).
+"""
+
+from __future__ import annotations
+
+from functools import cached_property
+
+import numpy as np
+
+from skcable._checks import real
+from skcable.errors import InputError
+
+__all__ = ["Line3D", "line_3d", "point"]
+
+
+def point(name: str, value) -> np.ndarray:
+    """``value`` as a finite float 3-vector, raising `InputError` naming ``name`` otherwise."""
+    arr = real(name, value)
+    if np.shape(arr) != (3,):
+        raise InputError(name, f"must be a point (x, y, z) of 3 numbers, got shape {np.shape(arr)}")
+    return np.array(arr, dtype=float)
+
+
+def _finite(name: str, value) -> float:
+    value = float(value)
+    if not np.isfinite(value):
+        raise InputError(name, f"the line model returned a non-finite value {value!r}")
+    return value
+
+
+class Line3D:
+    """A line solved between an anchor and a fairlead in space (see module docstring).
+
+    Attributes
+    ----------
+    anchor, fairlead : ndarray, shape (3,)
+        The end points (m), z up.
+    span, dh : float
+        Horizontal distance ``r`` (m, > 0) and height of the fairlead above the anchor (m).
+    direction : ndarray, shape (3,)
+        Unit horizontal vector ``e`` from the anchor towards the fairlead.
+    solution : object
+        The 2-D solution of the line model in the line's plane (A at (0, 0)).
+    H, V_B, H_A, V_A : float
+        Fairlead and anchor forces of the 2-D solution (N).
+    force_on_fairlead, force_on_anchor : ndarray, shape (3,)
+        ``F_b = (-H e, -V_B)`` and ``F_a = (H_A e, -V_A)`` (N), global axes.
+    tension_at_fairlead, tension_at_anchor : float
+        ``|F_b|`` and ``|F_a|`` (N).
+    """
+
+    def __init__(self, model, anchor, fairlead, solution):
+        self.model, self.anchor, self.fairlead, self.solution = model, anchor, fairlead, solution
+        d = fairlead - anchor
+        self.span = float(np.hypot(d[0], d[1]))
+        self.dh = float(d[2])
+        self.direction = np.array([d[0] / self.span, d[1] / self.span, 0.0])
+        self.H = _finite("model", solution.H)
+        self.V_B = _finite("model", solution.V_B)
+        self.H_A = _finite("model", solution.H_A)
+        self.V_A = _finite("model", solution.V_A)
+        e = self.direction
+        self.force_on_fairlead = np.array([-self.H * e[0], -self.H * e[1], -self.V_B])
+        self.force_on_anchor = np.array([self.H_A * e[0], self.H_A * e[1], -self.V_A])
+        self.tension_at_fairlead = float(np.linalg.norm(self.force_on_fairlead))
+        self.tension_at_anchor = float(np.linalg.norm(self.force_on_anchor))
+
+    @cached_property
+    def _k2(self) -> np.ndarray:
+        k2 = np.asarray(self.solution.stiffness(), dtype=float)
+        if k2.shape != (2, 2) or not np.isfinite(k2).all():
+            raise InputError("model", f"the line model's stiffness() must be a finite 2x2 matrix, got {k2!r}")
+        return k2
+
+    def stiffness(self) -> np.ndarray:
+        """Fairlead stiffness ``K = -∂F_b/∂b`` (N/m), shape (3, 3), global axes, anchor fixed.
+
+        Radial and vertical terms from the 2-D ``stiffness()`` ``∂(H, V_B)/∂(span, dh)``,
+        transverse term ``H/r`` (see the module docstring for the matrix).
+        """
+        k = self._k2
+        e = self.direction[:2]
+        ee = np.outer(e, e)
+        K = np.empty((3, 3))
+        K[:2, :2] = k[0, 0] * ee + (self.H / self.span) * (np.eye(2) - ee)
+        K[:2, 2] = k[0, 1] * e
+        K[2, :2] = k[1, 0] * e
+        K[2, 2] = k[1, 1]
+        return K
+
+    def to_global(self, x, y) -> np.ndarray:
+        """Points ``(x, y)`` of the line's plane (A at the origin, y up) in global axes, shape (n, 3)."""
+        x, y = np.asarray(x, dtype=float), np.asarray(y, dtype=float)
+        return self.anchor + np.multiply.outer(x, self.direction) + np.multiply.outer(y, [0.0, 0.0, 1.0])
+
+    def profile(self, n: int = 101):
+        """The line at ``n`` material points equally spaced in unstretched arc length.
+
+        Returns ``(points, tension)``: points (n, 3) in global axes (m) and the
+        tension there (N), from the model's ``x_of_s, y_of_s, T_of_s``.
+        """
+        if isinstance(n, bool) or not isinstance(n, (int, np.integer)) or n < 2:
+            raise InputError("n", f"must be an integer >= 2, got {n!r}")
+        s = np.linspace(0.0, float(self.solution.length), int(n))
+        points = self.to_global(self.solution.x_of_s(s), self.solution.y_of_s(s))
+        tension = np.asarray(self.solution.T_of_s(s), dtype=float)
+        if not (np.isfinite(points).all() and np.isfinite(tension).all()):
+            raise InputError("model", "the line model returned a non-finite profile")
+        return points, np.broadcast_to(tension, (int(n),)).copy()
+
+    def tensions(self):
+        """The model's tension table (pandas DataFrame, one row per segment)."""
+        return self.solution.tensions()
+
+    def __repr__(self):
+        return (
+            f"Line3D(anchor={self.anchor.tolist()}, fairlead={self.fairlead.tolist()}, "
+            f"H={self.H:.6g}, V_B={self.V_B:.6g})"
+        )
+
+
+def line_3d(model, anchor, fairlead) -> Line3D:
+    """Solve a line model between an anchor and a fairlead in space.
+
+    Parameters
+    ----------
+    model : object
+        A line model: ``model.solve(span, dh)`` returns the 2-D solution (see the
+        module docstring for the attributes it must have).
+    anchor, fairlead : array_like, shape (3,)
+        End points (m), z up. The fairlead must not lie on the anchor's vertical.
+
+    Returns
+    -------
+    Line3D
+        Forces on both ends in global axes and the 3x3 fairlead ``stiffness()``.
+
+    Raises
+    ------
+    InputError
+        A point that is not 3 finite numbers, or a fairlead directly above or
+        below the anchor (``r = 0``: the line's plane, the horizontal direction
+        and the transverse stiffness ``H/r`` are undefined); errors of the model.
+    ConvergenceError
+        The model's solver did not converge.
+    """
+    a = point("anchor", anchor)
+    b = point("fairlead", fairlead)
+    r = float(np.hypot(b[0] - a[0], b[1] - a[1]))
+    if not r > 1e-9 * max(1.0, float(np.abs(b - a).max())):
+        raise InputError(
+            "fairlead",
+            f"lies on the vertical of the anchor (horizontal distance {r:.3g} m): the line's vertical "
+            "plane is undefined; give a fairlead offset horizontally from the anchor",
+        )
+    solution = model.solve(r, float(b[2] - a[2]))
+    return Line3D(model, a, b, solution)

@@ -1,0 +1,321 @@
+r"""A body moored by lines: static equilibrium and the stiffness of the mooring system.
+
+Lines run from fixed anchors to the body's fairleads; each hangs in its vertical
+plane (`skcable.cable.lines.line3d`). At body position :math:`\mathbf q` the net
+generalised force on the body is
+
+.. math:: \mathbf G(\mathbf q) = \sum_i \begin{pmatrix}\mathbf f_i \\
+    \mathbf r_i\times\mathbf f_i\end{pmatrix} + \mathbf G_\text{own}(\mathbf q)
+    + \begin{pmatrix}\mathbf F_\text{ext}\\ \mathbf M_\text{ext}\end{pmatrix},
+
+with :math:`\mathbf f_i` the force of line *i* on its fairlead, :math:`\mathbf r_i` its
+arm from the body's reference point (global axes), :math:`\mathbf G_\text{own}` the
+body's weight, buoyancy and heave restoring (`skcable.cable.lines.body`) and a
+constant external force and moment (global axes, moment about the reference
+point). Static equilibrium :math:`\mathbf G = 0` is found by Newton's method with
+the analytic Jacobian :math:`\partial\mathbf G/\partial\mathbf q = -K\,T` (``K`` the
+stiffness below, ``T`` the map of Euler-angle increments to rotation vectors) and
+backtracking on the scaled residual.
+
+The stiffness of the mooring system,
+:math:`K = -\partial\mathbf G/\partial(\mathbf x, \delta\boldsymbol\theta)`, is taken
+with respect to a translation and a small rotation vector about global axes (as
+MoorPy's ``Body.getStiffnessA``, M. Hall, NREL):
+
+.. math:: K = \sum_i \begin{pmatrix} K_i & -K_i[\mathbf r_i]_\times \\
+    [\mathbf r_i]_\times K_i & -[\mathbf f_i]_\times[\mathbf r_i]_\times
+    - [\mathbf r_i]_\times K_i [\mathbf r_i]_\times \end{pmatrix} + K_\text{own},
+
+:math:`K_i` the 3x3 fairlead stiffness of line *i*. The term
+:math:`-[\mathbf f_i]_\times[\mathbf r_i]_\times` (the change of moment arm under
+tension) makes :math:`K` unsymmetric where the line forces have a net moment.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+import pandas as pd
+
+from skcable._checks import positive, real, scalar
+from skcable.cable.lines.body import PointBody, RigidBody
+from skcable.cable.lines.line3d import Line3D, line_3d, point
+from skcable.errors import ConvergenceError, InputError
+
+__all__ = ["MooringEquilibrium", "MooringSystem"]
+
+
+class MooringSystem:
+    """A body held by lines from fixed anchors.
+
+    Parameters
+    ----------
+    body : RigidBody or PointBody
+        The moored body; a `RigidBody` carries the fairleads (body axes), a
+        `PointBody` takes every line at its point.
+    lines : sequence of line models
+        One per anchor: objects with ``solve(span, dh)`` (see
+        `skcable.cable.lines.line3d`); anchor A of the model is the anchor, B the fairlead.
+    anchors : array_like, shape (n, 3)
+        Anchor points in global axes (m), z up.
+    depth : float, optional
+        Water depth (m), > 0: the seabed is the plane z = -depth. Used to draw the
+        seabed (VTK) only; each line model holds its own seabed height.
+
+    Examples
+    --------
+    >>> from skcable import cable
+    >>> from skcable.cable.lines._single_segment import _SingleSegment  # cable.Line at merge
+    >>> import numpy as np
+    >>> angles = np.radians([0.0, 120.0, 240.0])
+    >>> anchors = np.column_stack([800 * np.cos(angles), 800 * np.sin(angles), np.full(3, -200.0)])
+    >>> fairleads = np.column_stack([20 * np.cos(angles), 20 * np.sin(angles), np.full(3, -10.0)])
+    >>> chain = _SingleSegment(length=850.0, w=1000.0, EA=5e8, seabed=0.0)
+    >>> system = cable.MooringSystem(cable.RigidBody(fairleads, waterplane_area=500.0), [chain] * 3, anchors)
+    >>> eq = system.equilibrium(force=(1e5, 0.0, 0.0))
+    >>> bool(eq.offset[0] > 0), bool(abs(eq.offset[1]) < 1e-6)
+    (True, True)
+    """
+
+    def __init__(self, body, lines, anchors, *, depth=None):
+        if not isinstance(body, (RigidBody, PointBody)):
+            raise InputError("body", f"must be a RigidBody or a PointBody, got {type(body).__name__}")
+        lines = list(lines)
+        for i, model in enumerate(lines):
+            if not callable(getattr(model, "solve", None)):
+                raise InputError("lines", f"line {i} ({type(model).__name__}) has no solve(span, dh) method")
+        if not lines:
+            raise InputError("lines", "give at least one line")
+        anchors = real("anchors", anchors)
+        if np.shape(anchors) != (len(lines), 3):
+            raise InputError(
+                "anchors",
+                f"must be one point (x, y, z) per line, shape ({len(lines)}, 3), "
+                f"got shape {np.shape(anchors)}",
+            )
+        anchors = np.array(anchors, dtype=float)
+        if isinstance(body, RigidBody) and len(body.fairleads) != len(lines):
+            raise InputError(
+                "body", f"has {len(body.fairleads)} fairleads for {len(lines)} lines: give one per line"
+            )
+        self.body, self.lines, self.anchors = body, lines, anchors
+        self.depth = None if depth is None else scalar("depth", positive("depth", depth))
+
+    @property
+    def n_dof(self) -> int:
+        return self.body.n_dof
+
+    def _position(self, name, position):
+        return np.zeros(self.n_dof) if position is None else self.body.check_position(name, position)
+
+    def _loads(self, force, moment):
+        force = point("force", force)
+        moment = point("moment", moment)
+        if self.n_dof == 3:
+            if np.any(moment != 0):
+                raise InputError("moment", "a point body takes no moment: leave it out or use a RigidBody")
+            return force
+        return np.concatenate([force, moment])
+
+    def solve_lines(self, position) -> list[Line3D]:
+        """Every line solved with the body at ``position`` (m, rad)."""
+        q = self._position("position", position)
+        fairleads = self.body.fairlead_positions(q, len(self.lines))
+        return [line_3d(model, a, b) for model, a, b in zip(self.lines, self.anchors, fairleads, strict=True)]
+
+    def _state(self, q, external, lines_only=False):
+        """Net force ``G(q)`` and stiffness ``K(q)`` and the solved lines."""
+        lines = self.solve_lines(q)
+        forces = np.array([line.force_on_fairlead for line in lines])
+        stiffnesses = np.array([line.stiffness() for line in lines])
+        G, K = self.body.add_lines(self.body.arms(q), forces, stiffnesses)
+        if not lines_only:
+            G = G + self.body.own_force(q) + external
+            K = K + self.body.own_stiffness(q)
+        return G, K, lines
+
+    def net_force(self, position, *, force=(0.0, 0.0, 0.0), moment=(0.0, 0.0, 0.0)) -> np.ndarray:
+        """Net force (N) and moment (N m, about the reference point) on the body at ``position``:
+        lines, own loads and the external ``force`` and ``moment``, global axes."""
+        return self._state(self._position("position", position), self._loads(force, moment))[0]
+
+    def stiffness(self, position, *, lines_only=False) -> np.ndarray:
+        """Stiffness ``-∂G/∂(x, rotation vector)`` at ``position`` (N/m, N, N m/rad), (n_dof, n_dof).
+
+        ``lines_only``: the lines alone (MoorPy's ``lines_only=True``); otherwise the
+        body's hydrostatic stiffness is added.
+        """
+        q = self._position("position", position)
+        return self._state(q, 0.0, lines_only=lines_only)[1]
+
+    def equilibrium(
+        self,
+        *,
+        force=(0.0, 0.0, 0.0),
+        moment=(0.0, 0.0, 0.0),
+        start=None,
+        tol: float = 1e-10,
+        max_iter: int = 60,
+    ) -> MooringEquilibrium:
+        """Static equilibrium of the body under a constant external force and moment.
+
+        Parameters
+        ----------
+        force, moment : array_like, shape (3,)
+            External force (N) and moment (N m, about the reference point), global axes.
+        start : array_like, optional
+            Starting position, ``(x, y, z, roll, pitch, yaw)`` (m, rad) for a rigid
+            body, ``(x, y, z)`` for a point body; default all zeros.
+        tol : float
+            Convergence when the net force over the force scale (the largest of the
+            fairlead tensions, the weight, the buoyancy and the external force), and
+            the net moment over force scale times the largest arm, are below ``tol``.
+        max_iter : int
+            Newton iterations at most.
+
+        Returns
+        -------
+        MooringEquilibrium
+
+        Raises
+        ------
+        InputError
+            Bad arguments, or a starting position where a line cannot be solved.
+        ConvergenceError
+            No equilibrium within ``max_iter`` iterations, or a singular stiffness
+            (a direction the mooring and the hydrostatics do not restrain); carries
+            the history of the scaled residual.
+        """
+        external = self._loads(force, moment)
+        q = self._position("start", start)
+        tol = scalar("tol", positive("tol", tol))
+        if isinstance(max_iter, bool) or not isinstance(max_iter, (int, np.integer)) or max_iter < 1:
+            raise InputError("max_iter", f"must be an integer >= 1, got {max_iter!r}")
+        arm = max(1.0, float(np.abs(getattr(self.body, "fairleads", np.zeros(1))).max()))
+        body_scale = max(np.abs(self.body.weight[2]), self.body.buoyancy[2], np.linalg.norm(external[:3]))
+        reach = self.anchors[:, :2] - self.body.fairlead_positions(q, len(self.lines))[:, :2]
+        span_min = float(np.hypot(reach[:, 0], reach[:, 1]).min())
+        step_cap = np.concatenate([np.full(3, 0.25 * span_min), np.full(self.n_dof - 3, 0.2)])
+
+        def scaled(G, lines):
+            scale = max(body_scale, max(line.tension_at_fairlead for line in lines), 1e-300)
+            g = G / scale
+            g[3:] /= arm
+            return float(np.linalg.norm(g))
+
+        G, K, lines = self._state(q, external)
+        history = [scaled(G, lines)]
+        for _ in range(max_iter):
+            if history[-1] <= tol:
+                return MooringEquilibrium(self, q, external, G, K, lines, history)
+            jac = K @ self.body.rate_map(q)  # -∂G/∂q
+            # singular values in consistent units (rotations times the arm) tell a free direction
+            units = np.concatenate([np.ones(3), np.full(self.n_dof - 3, arm)])
+            singular = np.linalg.svd(jac / units[:, None] / units[None, :], compute_uv=False)
+            dq = np.full(self.n_dof, np.nan)
+            if singular[-1] > 1e-11 * singular[0]:
+                dq = np.linalg.solve(jac, G)
+            if not np.isfinite(dq).all():
+                raise ConvergenceError(
+                    "mooring equilibrium: the stiffness is singular (a direction neither the lines nor the "
+                    "hydrostatics restrain: add waterplane_area, a metacentre or lines)",
+                    history,
+                )
+            dq *= min(1.0, float(np.min(step_cap / np.maximum(np.abs(dq), 1e-300))))
+            alpha, accepted = 1.0, False
+            while alpha > 1e-6:
+                trial = q + alpha * dq
+                try:
+                    G_t, K_t, lines_t = self._state(trial, external)
+                except (InputError, ConvergenceError):  # a line cannot reach the trial position
+                    alpha *= 0.5
+                    continue
+                r_t = scaled(G_t, lines_t)
+                if r_t < (1.0 - 1e-4 * alpha) * history[-1] or r_t <= tol:
+                    q, G, K, lines, accepted = trial, G_t, K_t, lines_t, True
+                    history.append(r_t)
+                    break
+                alpha *= 0.5
+            if not accepted:
+                raise ConvergenceError(
+                    "mooring equilibrium: the line search found no descent (the residual stalls: the "
+                    "loads may exceed what the mooring can hold, or the start is too far)",
+                    history,
+                )
+        if history[-1] <= tol:
+            return MooringEquilibrium(self, q, external, G, K, lines, history)
+        raise ConvergenceError(f"mooring equilibrium: not converged in {max_iter} iterations", history)
+
+
+class MooringEquilibrium:
+    """A moored body in static equilibrium (`MooringSystem.equilibrium`).
+
+    Attributes
+    ----------
+    system : MooringSystem
+    position : ndarray
+        ``(x, y, z, roll, pitch, yaw)`` (m, rad) of a rigid body, ``(x, y, z)`` of a point.
+    offset : ndarray, shape (3,)
+        Displacement of the reference point from the origin (m).
+    angles : ndarray, shape (3,)
+        Roll, pitch, yaw (rad); zeros for a point body.
+    heel : float
+        Angle between the body's z axis and the vertical (rad).
+    lines : list of Line3D
+        Each line at equilibrium.
+    fairlead_forces, anchor_forces : ndarray, shape (n, 3)
+        Force of each line on its fairlead and on its anchor (N), global axes.
+    residual : ndarray
+        Net force and moment left on the body (N, N m).
+    history : list of float
+        Scaled residual at each Newton iteration.
+    """
+
+    def __init__(self, system, q, external, G, K, lines, history):
+        self.system, self.position, self.external, self.residual = system, q, external, G
+        self._K, self.lines, self.history = K, lines, history
+        self.offset = q[:3].copy()
+        self.angles = q[3:].copy() if len(q) == 6 else np.zeros(3)
+        R = system.body.rotation(q)
+        self.heel = float(np.arccos(np.clip(R[2, 2], -1.0, 1.0)))
+        self.fairlead_forces = np.array([line.force_on_fairlead for line in lines])
+        self.anchor_forces = np.array([line.force_on_anchor for line in lines])
+        self.fairleads = np.array([line.fairlead for line in lines])
+        self.anchors = system.anchors
+        self.depth = system.depth
+        self.rotation = R
+        for name in ("position", "residual", "fairlead_forces", "anchor_forces"):
+            if not np.isfinite(getattr(self, name)).all():
+                raise ConvergenceError(f"mooring equilibrium: non-finite {name}", history)
+
+    def stiffness(self, *, lines_only: bool = False) -> np.ndarray:
+        """Stiffness of the mooring system at equilibrium, ``-∂G/∂(x, rotation vector)``
+        (N/m, N/rad, N m/rad), shape (n_dof, n_dof); ``lines_only`` leaves out the
+        body's hydrostatics (see `MooringSystem.stiffness`)."""
+        if lines_only:
+            return self.system.stiffness(self.position, lines_only=True)
+        return self._K.copy()
+
+    def tensions(self) -> pd.DataFrame:
+        """Tension table: each line's per-segment table (its model's ``tensions()``) with
+        the line's number in front, plus its fairlead and anchor forces (N)."""
+        frames = []
+        for i, line in enumerate(self.lines):
+            table = line.tensions().copy()
+            table.insert(0, "line", i)
+            table["H"], table["V_B"], table["H_A"], table["V_A"] = line.H, line.V_B, line.H_A, line.V_A
+            table["T_fairlead"] = line.tension_at_fairlead
+            frames.append(table)
+        return pd.concat(frames, ignore_index=True)
+
+    def to_vtk(self, path, n: int = 101):
+        """Write the lines (tension as point data), the seabed patch and the body to a
+        ``.vtu``/``.vtk`` file, atomically (see `skcable.io.mooring_mesh`); returns the path."""
+        from skcable.io import write_mooring
+
+        return write_mooring(self, path, n)
+
+    def __repr__(self):
+        return (
+            f"MooringEquilibrium(offset={np.round(self.offset, 6).tolist()}, "
+            f"angles={np.round(self.angles, 9).tolist()}, iterations={len(self.history) - 1})"
+        )

@@ -1,0 +1,107 @@
+"""A moored body at equilibrium as one VTK mesh (meshio) for ParaView.
+
+Global axes, z up, metres. Cells: each line as a polyline (``line`` cells), the
+seabed patch (one ``quad`` at z = -depth, under the anchors and the body, when the
+result has a ``depth``) and the body (a ``hexahedron``: the box of its fairleads in
+body axes, turned and moved with it; a ``vertex`` for a point body). Point data:
+``tension`` (N, zero off the lines); cell data: ``part`` (0 line, 1 seabed, 2 body)
+and ``line`` (the line's number, -1 off the lines). Reads only the result's
+``lines`` (``profile(n)``), ``anchors``, ``fairleads``, ``offset``, ``rotation``,
+``depth`` and ``position``.
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import meshio
+import numpy as np
+
+from skcable.errors import InputError
+from skcable.io._atomic import atomic_path, writable_file
+
+__all__ = ["mooring_mesh", "write_mooring"]
+
+# VTK's hexahedron: the bottom face counter-clockwise, then the top face
+_BOX = np.array([[0, 0, 0], [1, 0, 0], [1, 1, 0], [0, 1, 0], [0, 0, 1], [1, 0, 1], [1, 1, 1], [0, 1, 1]])
+
+
+def _body_box(result) -> np.ndarray:
+    """The 8 corners (global axes) of the box of the fairleads in body axes, each side at
+    least a tenth of the largest (and 1 m)."""
+    R, x0 = np.asarray(result.rotation), np.asarray(result.offset)
+    local = (np.asarray(result.fairleads) - x0) @ R  # R^T (b - x0), row-wise
+    low, high = local.min(axis=0), local.max(axis=0)
+    side = max(1.0, 0.1 * float((high - low).max()))
+    centre, half = 0.5 * (low + high), np.maximum(0.5 * (high - low), 0.5 * side)
+    corners = centre - half + _BOX * (2.0 * half)
+    return x0 + corners @ R.T
+
+
+def mooring_mesh(result, n: int = 101) -> meshio.Mesh:
+    """Lines, seabed patch and body of a `MooringEquilibrium` (see the module docstring).
+
+    Parameters
+    ----------
+    result : MooringEquilibrium
+        A solved moored body.
+    n : int
+        Points per line, >= 2.
+    """
+    if isinstance(n, bool) or not isinstance(n, (int, np.integer)) or n < 2:
+        raise InputError("n", f"must be an integer >= 2, got {n!r}")
+    points, tension, cells, part, line_id = [], [], [], [], []
+    count = 0
+    segments = []
+    for i, line in enumerate(result.lines):
+        xyz, T = line.profile(int(n))
+        points.append(xyz)
+        tension.append(T)
+        index = count + np.arange(len(xyz))
+        segments.append(np.column_stack([index[:-1], index[1:]]))
+        line_id.append(np.full(len(xyz) - 1, i))
+        count += len(xyz)
+    cells.append(("line", np.concatenate(segments)))
+    part.append(np.zeros(count - len(result.lines), dtype=int))
+    line_id = [np.concatenate(line_id)]
+    if getattr(result, "depth", None) is not None:
+        corners = np.vstack([np.asarray(result.anchors)[:, :2], np.asarray(result.fairleads)[:, :2]])
+        low, high = corners.min(axis=0), corners.max(axis=0)
+        margin = 0.1 * float((high - low).max())
+        low, high = low - margin, high + margin
+        z = -float(result.depth)
+        quad = np.array(
+            [[low[0], low[1], z], [high[0], low[1], z], [high[0], high[1], z], [low[0], high[1], z]]
+        )
+        points.append(quad)
+        tension.append(np.zeros(4))
+        cells.append(("quad", count + np.arange(4)[None, :]))
+        part.append(np.ones(1, dtype=int))
+        line_id.append(np.full(1, -1))
+        count += 4
+    rigid = len(result.position) == 6
+    body = _body_box(result) if rigid else np.asarray(result.offset, dtype=float)[None, :]
+    points.append(body)
+    tension.append(np.zeros(len(body)))
+    cells.append(("hexahedron" if rigid else "vertex", count + np.arange(len(body))[None, :]))
+    part.append(np.full(1, 2))
+    line_id.append(np.full(1, -1))
+    points = np.vstack(points)
+    if not np.isfinite(points).all():
+        raise InputError("result", "holds non-finite coordinates")
+    return meshio.Mesh(
+        points,
+        cells,
+        point_data={"tension": np.concatenate(tension)},
+        cell_data={"part": part, "line": line_id},
+    )
+
+
+def write_mooring(result, path, n: int = 101) -> Path:
+    """Write `mooring_mesh` of ``result`` to ``path`` (``.vtu`` or ``.vtk``), atomically: the
+    file appears whole or not at all. The path is checked before the mesh is built."""
+    path = writable_file("path", path, (".vtu", ".vtk"))
+    mesh = mooring_mesh(result, n)
+    with atomic_path(path) as temp:
+        meshio.write(temp, mesh)
+    return path

@@ -1,0 +1,310 @@
+"""Lines in 3-D and moored bodies.
+
+References: the 2-D solution rotated into the line's plane by hand, central
+differences of the forces for every stiffness (3x3 of a line, 6x6 and 3x3 of the
+moored body, perturbing rotations with scipy's `Rotation`), equilibrium of the
+forces recomputed from the lines, the symmetry of a three-line spread mooring,
+and MoorPy's ``System`` on the same layout (an independent implementation).
+"""
+
+import json
+import runpy
+from pathlib import Path
+
+import meshio
+import numpy as np
+import pytest
+from scipy.spatial.transform import Rotation
+
+from skcable import cable, cli
+from skcable.cable.lines._single_segment import _SingleSegment  # cable.Line at merge
+from skcable.errors import ConvergenceError, InputError
+
+ROOT = Path(__file__).resolve().parents[2]
+EXAMPLE = runpy.run_path(str(ROOT / "examples" / "spread_mooring.py"))
+
+CHAIN = _SingleSegment(850.0, 1000.0, 5e8, seabed=0.0, friction=0.4)
+FREE = _SingleSegment(400.0, 200.0, 1e8)  # no seabed: hangs free
+
+
+def test_single_line_force_is_the_2d_solution_rotated():
+    anchor, heading = np.array([10.0, -20.0, -200.0]), np.radians(37.0)
+    fairlead = anchor + [780.0 * np.cos(heading), 780.0 * np.sin(heading), 186.0]
+    line = cable.line_3d(CHAIN, anchor, fairlead)
+    flat = cable.elastic_catenary(780.0, 186.0, 1000.0, 5e8, length=850.0, seabed=0.0, friction=0.4)
+    turn = Rotation.from_euler("z", heading).as_matrix()
+    np.testing.assert_allclose(line.force_on_fairlead, turn @ [-flat.H, 0.0, -flat.V_B], rtol=1e-12)
+    np.testing.assert_allclose(line.force_on_anchor, turn @ [flat.H_A, 0.0, -flat.V_A], rtol=1e-12, atol=1e-9)
+    # the seabed takes the friction: the line's forces and weight balance with it
+    friction = (flat.H - flat.H_A) * line.direction
+    weight_left = flat.w * (flat.length - flat.length_on_seabed)
+    total = line.force_on_fairlead + line.force_on_anchor + friction + [0.0, 0.0, weight_left]
+    assert np.abs(total).max() < 1e-9 * flat.H
+    points, tension = line.profile(51)
+    np.testing.assert_allclose(points[[0, -1]], [anchor, fairlead], atol=1e-6)
+    assert tension[-1] == pytest.approx(line.tension_at_fairlead, rel=1e-12)
+
+
+@pytest.mark.parametrize("model", [CHAIN, FREE], ids=["grounded, friction", "free"])
+def test_line_stiffness_matches_central_differences(model):
+    anchor = np.array([5.0, 3.0, -2.0])
+    reach = (780.0, 186.0) if model is CHAIN else (380.0, 60.0)
+    heading = np.radians(-113.0)
+    fairlead = anchor + [reach[0] * np.cos(heading), reach[0] * np.sin(heading), reach[1]]
+    K = cable.line_3d(model, anchor, fairlead).stiffness()
+    h = 1e-3
+    numeric = np.empty((3, 3))
+    for j in range(3):
+        step = np.eye(3)[j] * h
+        up = cable.line_3d(model, anchor, fairlead + step).force_on_fairlead
+        down = cable.line_3d(model, anchor, fairlead - step).force_on_fairlead
+        numeric[:, j] = -(up - down) / (2 * h)
+    np.testing.assert_allclose(K, numeric, rtol=1e-6, atol=1e-6 * np.abs(K).max())
+
+
+def test_vertical_line_and_bad_points_are_refused():
+    with pytest.raises(InputError) as err:
+        cable.line_3d(CHAIN, [0.0, 0.0, -200.0], [0.0, 0.0, -10.0])
+    assert err.value.argument == "fairlead"
+    with pytest.raises(InputError) as err:
+        cable.line_3d(CHAIN, [0.0, 0.0], [1.0, 0.0, 0.0])
+    assert err.value.argument == "anchor"
+    with pytest.raises(InputError) as err:
+        cable.line_3d(CHAIN, [0.0, 0.0, 0.0], [1.0, np.nan, 0.0])
+    assert err.value.argument == "fairlead"
+
+
+def _euler_after(q, rotation_vector):
+    """Position q with the body turned further by a small rotation about global axes."""
+    turned = Rotation.from_rotvec(rotation_vector) * Rotation.from_euler("ZYX", q[[5, 4, 3]])
+    yaw, pitch, roll = turned.as_euler("ZYX")
+    return np.concatenate([q[:3], [roll, pitch, yaw]])
+
+
+def _numeric_stiffness(system, q, lines_only, h=(1e-3, 1e-6)):
+    numeric = np.empty((6, 6))
+    for j in range(6):
+        step = np.eye(6)[j]
+        if j < 3:
+            up, down = q + h[0] * step, q - h[0] * step
+            size = h[0]
+        else:
+            up, down = _euler_after(q, h[1] * step[3:]), _euler_after(q, -h[1] * step[3:])
+            size = h[1]
+        if lines_only:
+            f_up, f_down = system.lines_force(up), system.lines_force(down)
+        else:
+            f_up, f_down = system.net_force(up), system.net_force(down)
+        numeric[:, j] = -(f_up - f_down) / (2 * size)
+    return numeric
+
+
+class _LinesOnly:
+    """The net force of the lines alone, from the public pieces (line_3d and the arms)."""
+
+    def __init__(self, system):
+        self.system = system
+
+    def lines_force(self, q):
+        lines = self.system.solve_lines(q)
+        arms = np.array([line.fairlead for line in lines]) - q[:3]
+        forces = np.array([line.force_on_fairlead for line in lines])
+        return np.concatenate([forces.sum(axis=0), np.cross(arms, forces).sum(axis=0)])
+
+
+def test_rigid_body_stiffness_matches_central_differences():
+    system = EXAMPLE["system"]()
+    q = np.array([30.0, -12.0, 0.5, 0.03, -0.05, 0.4])  # turned and off equilibrium: f x r terms count
+    K = system.stiffness(q, lines_only=True)
+    numeric = _numeric_stiffness(_LinesOnly(system), q, lines_only=True)
+    np.testing.assert_allclose(K, numeric, rtol=1e-5, atol=2e-6 * np.abs(K).max())
+    K_total = system.stiffness(q)
+    numeric = _numeric_stiffness(system, q, lines_only=False)
+    np.testing.assert_allclose(K_total, numeric, rtol=1e-5, atol=2e-6 * np.abs(K_total).max())
+    assert np.abs(K_total - K_total.T).max() > 1e-3 * np.abs(K_total).max()  # unsymmetric off equilibrium
+
+
+def test_equilibrium_balances_the_forces_recomputed_from_the_lines():
+    rest, pushed = EXAMPLE["solve"]()
+    system = pushed.system
+    q = pushed.position
+    body = system.body
+    R = cable.rotation_matrix(*q[3:])
+    lines = [
+        cable.line_3d(m, a, q[:3] + R @ p)
+        for m, a, p in zip(system.lines, system.anchors, body.fairleads, strict=True)
+    ]
+    arms = np.array([line.fairlead for line in lines]) - q[:3]
+    forces = np.array([line.force_on_fairlead for line in lines])
+    g, rho = 9.81, 1025.0
+    weight, buoyancy = np.array([0, 0, -body.mass * g]), np.array([0, 0, rho * g * body.volume])
+    total_force = forces.sum(axis=0) + weight + buoyancy + EXAMPLE["FORCE"]
+    total_force[2] -= rho * g * body.waterplane_area * q[2]
+    total_moment = (
+        np.cross(arms, forces).sum(axis=0)
+        + np.cross(R @ body.center_of_gravity, weight)
+        + np.cross(R @ body.metacentre, buoyancy)
+        + EXAMPLE["MOMENT"]
+    )
+    scale = max(line.tension_at_fairlead for line in lines)
+    assert np.abs(total_force).max() < 1e-9 * scale
+    assert np.abs(total_moment).max() < 1e-9 * scale * 20.0
+    assert pushed.heel == pytest.approx(np.arccos(R[2, 2]), abs=1e-15)
+    assert pushed.offset[0] > 0 and pushed.offset[1] > 0  # pushed along +x, +y
+    table = pushed.tensions()
+    np.testing.assert_allclose(table["T_top"], [line.tension_at_fairlead for line in lines], rtol=1e-10)
+    np.testing.assert_allclose(table["T_fairlead"], np.linalg.norm(forces, axis=1), rtol=1e-12)
+
+
+def test_spread_mooring_at_rest_is_symmetric():
+    rest, _ = EXAMPLE["solve"]()
+    scale = rest.lines[0].tension_at_fairlead
+    assert np.abs(rest.position[[0, 1, 3, 4, 5]]).max() < 1e-9
+    tensions = [line.tension_at_fairlead for line in rest.lines]
+    np.testing.assert_allclose(tensions, tensions[0], rtol=1e-10)
+    K = rest.stiffness(lines_only=True)
+    # three-fold symmetry: isotropic in the horizontal plane, equal roll and pitch, no surge-yaw coupling
+    assert K[0, 0] == pytest.approx(K[1, 1], rel=1e-9) and abs(K[0, 1]) < 1e-9 * K[0, 0]
+    assert K[3, 3] == pytest.approx(K[4, 4], rel=1e-9)
+    assert abs(K[0, 5]) < 1e-9 * K[0, 0] * 20 and abs(K[1, 5]) < 1e-9 * K[0, 0] * 20
+    np.testing.assert_allclose(K, K.T, atol=1e-9 * np.abs(K).max())  # no net force of the lines: symmetric
+    assert np.all(np.linalg.eigvalsh(0.5 * (K + K.T)) > 0) and scale > 0
+
+
+def test_spread_mooring_matches_moorpy():
+    pytest.importorskip("moorpy")
+    _, pushed = EXAMPLE["solve"]()
+    r6, tensions, K_moorpy, ms = EXAMPLE["moorpy_solve"]()
+    # MoorPy: solveEquilibrium(tol=1e-8 m on positions), each line solved to 1e-4 m on its end point:
+    # positions agree to 1e-6 m and 1e-9 rad, forces and stiffness to ~1e-7
+    np.testing.assert_allclose(pushed.position[:3], r6[:3], atol=1e-5)
+    np.testing.assert_allclose(pushed.position[3:], r6[3:], atol=1e-8)
+    np.testing.assert_allclose([line.tension_at_fairlead for line in pushed.lines], tensions, rtol=1e-7)
+    K = pushed.system.stiffness(r6, lines_only=True)  # at MoorPy's own position
+    np.testing.assert_allclose(K, K_moorpy, rtol=1e-6, atol=1e-7 * np.abs(K).max())
+    K_all = pushed.system.stiffness(r6)
+    K_all_moorpy = ms.bodyList[0].getStiffnessA(lines_only=False, all_DOFs=True)
+    np.testing.assert_allclose(K_all, K_all_moorpy, rtol=1e-6, atol=1e-7 * np.abs(K_all).max())
+
+
+def test_large_yaw_matches_moorpy():
+    """A yaw moment that turns the platform by 46 degrees: large rotations, same parametrisation."""
+    pytest.importorskip("moorpy")
+    force, moment = np.array([2e6, 5e5, 0.0]), np.array([1e6, 1e7, 6e7])
+    eq = EXAMPLE["system"]().equilibrium(force=force, moment=moment)
+    r6, tensions, _, _ = EXAMPLE["moorpy_solve"](force, moment)
+    assert r6[5] > 0.7  # radians
+    np.testing.assert_allclose(eq.position[:3], r6[:3], atol=1e-5)
+    np.testing.assert_allclose(eq.position[3:], r6[3:], atol=1e-8)
+    np.testing.assert_allclose([line.tension_at_fairlead for line in eq.lines], tensions, rtol=1e-7)
+
+
+def test_point_body_equilibrium_and_stiffness():
+    anchors = EXAMPLE["layout"]()[0]
+    buoy = cable.PointBody(mass=2e4, volume=60.0, waterplane_area=30.0)
+    chain = _SingleSegment(850.0, 600.0, 3e8, seabed=0.0)
+    system = cable.MooringSystem(buoy, [chain] * 3, anchors, depth=200.0)
+    eq = system.equilibrium(force=(5e4, -2e4, 0.0))
+    forces = eq.fairlead_forces.sum(axis=0) + [5e4, -2e4, 0.0]
+    forces[2] += 9.81 * (1025.0 * 60.0 - 2e4) - 1025.0 * 9.81 * 30.0 * eq.offset[2]
+    assert np.abs(forces).max() < 1e-9 * eq.lines[0].tension_at_fairlead
+    K, h = eq.stiffness(), 1e-3
+    numeric = np.column_stack(
+        [
+            -(system.net_force(eq.position + h * e) - system.net_force(eq.position - h * e)) / (2 * h)
+            for e in np.eye(3)
+        ]
+    )
+    np.testing.assert_allclose(K, numeric, rtol=1e-6, atol=1e-7 * np.abs(K).max())
+    with pytest.raises(InputError) as err:
+        system.equilibrium(moment=(0.0, 0.0, 1.0))
+    assert err.value.argument == "moment"
+
+
+def test_failures_are_loud():
+    system = EXAMPLE["system"]()
+    with pytest.raises(ConvergenceError) as err:
+        system.equilibrium(force=EXAMPLE["FORCE"], max_iter=1)
+    assert len(err.value.history) >= 2 and err.value.history[-1] > 1e-10
+    # one line and no hydrostatics: nothing holds the body's yaw about the line
+    body = cable.RigidBody([[20.0, 0.0, -14.0]])
+    single = cable.MooringSystem(
+        body, [_SingleSegment(850.0, 2456.82, 1.2326e9, seabed=0.0)], [[800.0, 0.0, -200.0]]
+    )
+    with pytest.raises(ConvergenceError, match="singular"):
+        single.equilibrium()
+    with pytest.raises(InputError) as err:
+        cable.MooringSystem(system.body, system.lines[:2], system.anchors[:2])
+    assert err.value.argument == "body"
+    with pytest.raises(InputError) as err:
+        cable.MooringSystem(system.body, system.lines, system.anchors[:, :2])
+    assert err.value.argument == "anchors"
+    with pytest.raises(InputError) as err:
+        system.equilibrium(start=[0.0, 0.0, 0.0, 0.0, np.pi / 2, 0.0])
+    assert err.value.argument == "start"
+
+
+def test_vtk_of_lines_seabed_and_body(tmp_path):
+    _, pushed = EXAMPLE["solve"]()
+    path = pushed.to_vtk(tmp_path / "moored.vtu", n=41)
+    assert [p.name for p in tmp_path.iterdir()] == ["moored.vtu"]  # written atomically, nothing else left
+    mesh = meshio.read(path)
+    kinds = {block.type: len(block.data) for block in mesh.cells}
+    assert kinds == {"line": 3 * 40, "quad": 1, "hexahedron": 1}
+    tension = mesh.point_data["tension"]
+    for i, line in enumerate(pushed.lines):  # the last point of each line is its fairlead
+        assert mesh.points[41 * i + 40] == pytest.approx(line.fairlead, abs=1e-6)
+        assert tension[41 * i + 40] == pytest.approx(line.tension_at_fairlead, rel=1e-12)
+    assert np.all(mesh.points[3 * 41 : 3 * 41 + 4, 2] == -200.0)  # the seabed patch
+    with pytest.raises(InputError) as err:
+        pushed.to_vtk(tmp_path / "moored.txt")
+    assert err.value.argument == "path"
+
+
+def test_plot_of_line_profiles():
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    from skcable import plot
+
+    _, pushed = EXAMPLE["solve"]()
+    ax = plot.mooring_profiles(pushed, n=31)
+    drawn = ax.get_lines()
+    assert len(drawn) == 4  # three lines and the seabed
+    for line, curve in zip(pushed.lines, drawn, strict=False):
+        assert curve.get_ydata()[-1] == pytest.approx(line.fairlead[2], abs=1e-6)
+    plt.close(ax.figure)
+
+
+def test_cli_line_as_json_equals_the_api(capsys):
+    args = ["line", "--span", "800", "--dh", "150", "--length", "850", "--w", "1000", "--EA", "5e8"]
+    status = cli.main([*args, "--seabed", "0", "--friction", "0.5", "--json"])
+    out, err = capsys.readouterr()
+    assert status == 0 and err == ""
+    values = json.loads(out)
+    ref = cable.elastic_catenary(800.0, 150.0, 1000.0, 5e8, length=850.0, seabed=0.0, friction=0.5)
+    assert values["H"] == ref.H and values["H_A"] == ref.H_A and values["V_B"] == ref.V_B
+    assert values["length_on_seabed"] == ref.length_on_seabed
+    assert [
+        values[k] for k in ("k_H_span", "k_H_dh", "k_VB_span", "k_VB_dh")
+    ] == ref.stiffness().ravel().tolist()
+    status = cli.main([*args, "--w", "-1", "--seabed", "0"])
+    out, err = capsys.readouterr()
+    assert status == cli.EXIT_USAGE and out == "" and err.startswith("skcable: error: --w:")
+    assert len(err.strip().splitlines()) == 1
+
+
+def test_cli_line_free_and_vtk(capsys, tmp_path):
+    args = ["line", "--span", "380", "--dh", "60", "--length", "400", "--w", "200", "--EA", "1e8"]
+    status = cli.main([*args, "--json", "--vtk", str(tmp_path / "line.vtu")])
+    out, err = capsys.readouterr()
+    assert status == 0 and err == ""
+    values = json.loads(out)
+    ref = cable.elastic_catenary(380.0, 60.0, 200.0, 1e8, length=400.0)  # Irvine's, no seabed
+    assert values["H"] == ref.H and values["H_A"] == ref.H and values["V_A"] == ref.V_A
+    assert values["length_on_seabed"] == 0.0
+    mesh = meshio.read(tmp_path / "line.vtu")
+    assert mesh.point_data["tension"][-1] == pytest.approx(ref.T_B, rel=1e-12)
+    assert [p.name for p in tmp_path.iterdir()] == ["line.vtu"]
