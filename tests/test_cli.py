@@ -373,7 +373,7 @@ def test_unusable_paths_and_options_are_refused_before_computing(
 
 
 # --- change of state and natural frequencies -------------------------------------
-_STATE = ("300", "-10", "--EA", "3e7", "--alpha", "2.3e-5", "--w0", "15", "--t0", "15")
+_STATE = ("--span", "300", "--dh", "-10", "--EA", "3e7", "--alpha", "2.3e-5", "--w0", "15", "--t0", "15")
 
 
 @pytest.mark.parametrize("model", ["catenary", "parabola"])
@@ -406,7 +406,7 @@ def test_frequencies_json_and_vtk_are_the_api(tmp_path, capsys):
     import meshio
 
     path = tmp_path / "modes.vtu"
-    args = ("frequencies", "250", "12", "--EA", "2e7", "--w", "12", "--sag", "6", "--n-modes", "3")
+    args = ("frequencies", "--span", "250", "--dh", "12", "--EA", "2e7", "--w", "12", "--sag", "6", "--n-modes", "3")
     status, out, err = main(capsys, *args, "--g", "9.8", "--vtk", path, "--json")
     assert status == cli.EXIT_OK, err
     got = json.loads(out)
@@ -430,11 +430,11 @@ def test_frequencies_json_and_vtk_are_the_api(tmp_path, capsys):
         (("change-of-state", *_STATE, "--H0", "2e4", "--w", "15", "--t", "20", "--model", "x"), "--model"),
         (("change-of-state", *_STATE, "--H0", "2e4", "--w", "nan", "--t", "20"), "--w"),
         (("change-of-state", *_STATE, "--H0", "2e4", "--w", "15", "--t", "-1e5"), "--t"),
-        (("frequencies", "250", "0", "--EA", "2e7", "--w", "12"), "--sag"),
-        (("frequencies", "250", "0", "--EA", "2e7", "--w", "12", "--H", "1", "--n-modes", "0"), "--n-modes"),
-        (("frequencies", "250", "0", "--EA", "2e7", "--w", "12", "--H", "1e4", "--g", "0"), "--g"),
-        (("frequencies", "250", "0", "--EA", "2e7", "--w", "12", "--H", "1e4", "--vtk", "m.csv"), "--vtk"),
-        (("frequencies", "250", "0", "--w", "12", "--H", "1e4"), "--EA"),
+        (("frequencies", "--span", "250", "--EA", "2e7", "--w", "12"), "--sag"),
+        (("frequencies", "--span", "250", "--EA", "2e7", "--w", "12", "--H", "1", "--n-modes", "0"), "--n-modes"),
+        (("frequencies", "--span", "250", "--EA", "2e7", "--w", "12", "--H", "1e4", "--g", "0"), "--g"),
+        (("frequencies", "--span", "250", "--EA", "2e7", "--w", "12", "--H", "1e4", "--vtk", "m.csv"), "--vtk"),
+        (("frequencies", "--span", "250", "--w", "12", "--H", "1e4"), "--EA"),
     ],
 )
 def test_state_and_frequency_bad_flags_exit_2(capsys, args, flag):
