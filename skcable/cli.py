@@ -717,7 +717,9 @@ def _state_and_frequency_commands(sub, command) -> None:
         "linear theory on finite elements; skcable.cable.natural_frequencies)",
     )
     for p in (cs, fr):
-        p.add_argument("--span", type=_finite, required=True, help="horizontal distance A-B [m], > 0 (required)")
+        p.add_argument(
+            "--span", type=_finite, required=True, help="horizontal distance A-B [m], > 0 (required)"
+        )
         p.add_argument("--dh", type=_finite, default=0.0, help="height of B above A [m] (default: 0)")
         p.add_argument("--EA", type=_finite, required=True, help="axial stiffness [N], > 0 (required)")
     cs.add_argument("--alpha", type=_finite, required=True, help="thermal expansion [1/K] (required)")

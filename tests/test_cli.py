@@ -406,7 +406,21 @@ def test_frequencies_json_and_vtk_are_the_api(tmp_path, capsys):
     import meshio
 
     path = tmp_path / "modes.vtu"
-    args = ("frequencies", "--span", "250", "--dh", "12", "--EA", "2e7", "--w", "12", "--sag", "6", "--n-modes", "3")
+    args = (
+        "frequencies",
+        "--span",
+        "250",
+        "--dh",
+        "12",
+        "--EA",
+        "2e7",
+        "--w",
+        "12",
+        "--sag",
+        "6",
+        "--n-modes",
+        "3",
+    )
     status, out, err = main(capsys, *args, "--g", "9.8", "--vtk", path, "--json")
     assert status == cli.EXIT_OK, err
     got = json.loads(out)
@@ -431,9 +445,15 @@ def test_frequencies_json_and_vtk_are_the_api(tmp_path, capsys):
         (("change-of-state", *_STATE, "--H0", "2e4", "--w", "nan", "--t", "20"), "--w"),
         (("change-of-state", *_STATE, "--H0", "2e4", "--w", "15", "--t", "-1e5"), "--t"),
         (("frequencies", "--span", "250", "--EA", "2e7", "--w", "12"), "--sag"),
-        (("frequencies", "--span", "250", "--EA", "2e7", "--w", "12", "--H", "1", "--n-modes", "0"), "--n-modes"),
+        (
+            ("frequencies", "--span", "250", "--EA", "2e7", "--w", "12", "--H", "1", "--n-modes", "0"),
+            "--n-modes",
+        ),
         (("frequencies", "--span", "250", "--EA", "2e7", "--w", "12", "--H", "1e4", "--g", "0"), "--g"),
-        (("frequencies", "--span", "250", "--EA", "2e7", "--w", "12", "--H", "1e4", "--vtk", "m.csv"), "--vtk"),
+        (
+            ("frequencies", "--span", "250", "--EA", "2e7", "--w", "12", "--H", "1e4", "--vtk", "m.csv"),
+            "--vtk",
+        ),
         (("frequencies", "--span", "250", "--w", "12", "--H", "1e4"), "--EA"),
     ],
 )
