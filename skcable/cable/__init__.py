@@ -27,7 +27,9 @@ from skcable.cable._supports import SlidingLoad, anchor_block_weight, ring_on_ro
 from skcable.cable._surfaces import capstan, membrane_tension, smooth_surface_reaction, sphere_parallel
 from skcable.cable.bvp import (
     ArcSolution,
+    BVPSegment,
     BVPSolution,
+    LineBVPSolution,
     arc_constitutive,
     arc_equilibrium_x,
     arc_equilibrium_y,
@@ -35,12 +37,23 @@ from skcable.cable.bvp import (
     graph_residual,
     graph_tangent,
     solve_bvp,
+    solve_line_bvp,
 )
-from skcable.cable.lines.seabed import SeabedCatenary, elastic_catenary
+from skcable.cable.lines.seabed import (
+    SeabedCatenary,
+    SlopedSeabedCatenary,
+    elastic_catenary,
+    sloped_seabed_catenary,
+)
 from skcable.cable.solution import CableSolution
 
 __all__ = [
     "ArcSolution",
+    "BVPSegment",
+    "LineBVPSolution",
+    "SlopedSeabedCatenary",
+    "sloped_seabed_catenary",
+    "solve_line_bvp",
     "arc_constitutive",
     "arc_equilibrium_x",
     "arc_equilibrium_y",

@@ -4,9 +4,14 @@ Conventions as in :mod:`skcable.cable`: anchor A at (0, 0), fairlead B at
 (span, dh), y up, weights per unstretched length act downward.
 """
 
-from skcable.cable.lines.seabed import SeabedCatenary, elastic_catenary
+from skcable.cable.lines.seabed import (
+    SeabedCatenary,
+    SlopedSeabedCatenary,
+    elastic_catenary,
+    sloped_seabed_catenary,
+)
 
-__all__ = ["SeabedCatenary", "elastic_catenary"]
+__all__ = ["SeabedCatenary", "SlopedSeabedCatenary", "elastic_catenary", "sloped_seabed_catenary"]
 
 # lines in 3-D and moored bodies
 from skcable.cable.lines.body import PointBody, RigidBody, rotation_matrix  # noqa: E402
