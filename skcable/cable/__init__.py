@@ -35,6 +35,7 @@ from skcable.cable.bvp import (
     solve_bvp,
 )
 from skcable.cable.lines.seabed import SeabedCatenary, elastic_catenary
+from skcable.cable.lines.segments import Buoy, ClumpWeight, Line, LineSolution, Segment
 from skcable.cable.solution import CableSolution
 
 __all__ = [
@@ -83,4 +84,9 @@ __all__ = [
     "solve",
     "smooth_surface_reaction",
     "sphere_parallel",
+    "Buoy",
+    "ClumpWeight",
+    "Line",
+    "LineSolution",
+    "Segment",
 ]

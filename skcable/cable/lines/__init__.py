@@ -5,5 +5,6 @@ Conventions as in :mod:`skcable.cable`: anchor A at (0, 0), fairlead B at
 """
 
 from skcable.cable.lines.seabed import SeabedCatenary, elastic_catenary
+from skcable.cable.lines.segments import Buoy, ClumpWeight, Line, LineSolution, Segment
 
-__all__ = ["SeabedCatenary", "elastic_catenary"]
+__all__ = ["SeabedCatenary", "elastic_catenary", "Buoy", "ClumpWeight", "Line", "LineSolution", "Segment"]
