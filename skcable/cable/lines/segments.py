@@ -160,7 +160,7 @@ class Line:
             segments = list(segments)
             attachments = list(attachments)
         except TypeError:
-            raise InputError("segments", "must be a sequence of Segment (and attachments a sequence)") from None
+            raise InputError("segments", "must be sequences of Segment and of attachments") from None
         if not segments or not all(isinstance(s, Segment) for s in segments):
             raise InputError("segments", "must be a non-empty sequence of cable.Segment")
         n = len(segments)
@@ -478,7 +478,8 @@ class LineSolution:
         chord = np.hypot(self.span, self.dh)
         closure = max(abs(st.X - self.span), abs(st.Z - self.dh)) / chord
         load = self.line.weight
-        scale = abs(self.V_A) + abs(self.V_B) + float(self.line._w @ self.line._L) + abs(self.joint_forces).sum()
+        scale = abs(self.V_A) + abs(self.V_B) + float(self.line._w @ self.line._L)
+        scale += float(np.abs(self.joint_forces).sum())
         statics = abs(self.V_A + self.V_B + self.seabed_reaction - load) / scale
         geometry = max(
             abs(self.x_joints[-1] - self.span) / chord, abs(self.y_joints[-1] - self.dh) / chord
