@@ -631,7 +631,7 @@ class LineSolution:
             grounded[: k + 1] = st.l_g
             stretched[: k + 1] += self._g_str
             T_end = np.maximum(st.T_g - st.m_g * st.l_g, 0.0)
-            T_low[: k + 1] = T_end
+            T_low[:k] = T_end[:k]
             T_up[:k] = st.T_g[:k]
             H_seg[:k] = st.T_g[:k]
             if st.a > 0:
