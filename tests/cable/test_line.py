@@ -206,6 +206,8 @@ STATE_SCENES = [
     (_chain_wire_chain(clump=2.0e5, friction=0.2), 780.0, 120.0),  # grounded clump, friction
     (cable.Line([cable.Segment(400.0, *CHAIN), cable.Segment(300.0, *WIRE), cable.Segment(150.0, *CHAIN)],
                 [cable.Buoy(2, 8.0e4), cable.ClumpWeight(1, 1.0e4)], seabed=0.0, friction=0.3), 620.0, 300.0),
+    (cable.Line([cable.Segment(300.0, *CHAIN), cable.Segment(400.0, *WIRE), cable.Segment(300.0, *WIRE)],
+                [cable.Buoy(2, 1.0e5)], seabed=0.0, friction=0.4), 800.0, 60.0),  # lazy wave
     (_chain_wire_chain(seabed=None), 500.0, -100.0),  # no seabed, B below A
 ]  # fmt: skip
 
@@ -344,7 +346,7 @@ def test_refusals():
     # a lazy wave whose sag after the buoy would reach the seabed again
     wave = cable.Line(
         [cable.Segment(300.0, *CHAIN), cable.Segment(400.0, *WIRE), cable.Segment(300.0, *WIRE)],
-        [cable.Buoy(2, 2.0e5)],
+        [cable.Buoy(2, 5.0e4)],
         seabed=0.0,
     )
     with pytest.raises(InputError, match="attachments"):
