@@ -54,8 +54,8 @@ def _reference(span, dh, w, EA, L, seabed, mu):
 def test_one_material_equals_elastic_catenary(scene, pieces):
     span, dh, w, EA, L, seabed, mu = scene
     ref, H_A, L_B = _reference(*scene)
-    cuts = np.array([0.0, 0.37, 0.81, 1.0])[[0, 1, 3] if pieces == 2 else slice(None)] if pieces > 1 else [0, 1]
-    segments = [cable.Segment(L * (b - a), w, EA) for a, b in zip(cuts[:-1], cuts[1:])]
+    cuts = {1: [0.0, 1.0], 2: [0.0, 0.37, 1.0], 3: [0.0, 0.37, 0.81, 1.0]}[pieces]
+    segments = [cable.Segment(L * (b - a), w, EA) for a, b in zip(cuts[:-1], cuts[1:], strict=True)]
     sol = cable.Line(segments, seabed=seabed, friction=mu).solve(span, dh)
     scale = max(ref.H, abs(ref.V_B))
     assert abs(sol.H - ref.H) <= 1e-12 * scale * 10
@@ -96,7 +96,8 @@ def _mp_solve(line, span, dh, regime, H0, V0):
     'free' (nothing on the seabed), 'in0' (touchdown inside segment 0),
     'joint1' (segment 0 grounded, the clump at joint 1 resting on the seabed)."""
     mp.mp.dps = 30
-    (L0, L1, L2), (w0, w1, w2) = ([mp.mpf(s.length) for s in line.segments], [mp.mpf(s.w) for s in line.segments])
+    L0, L1, L2 = (mp.mpf(s.length) for s in line.segments)
+    w0, w1, w2 = (mp.mpf(s.w) for s in line.segments)
     EA0, EA1, EA2 = (mp.mpf(s.EA) for s in line.segments)
     P1 = mp.mpf(line.joint_forces[1])
     mu = mp.mpf(line.friction)
@@ -170,7 +171,8 @@ def _moorpy_fairlead(line, span, dh, depth, g=9.81, rho=1025.0):
     points.append(ms.addPoint(1, [span, 0.0, z0 + dh]))
     for i, seg in enumerate(line.segments):
         name = f"t{i}"
-        ms.setLineType(name=name, lineType=dict(name=name, d_vol=0.0, m=seg.w / g, w=seg.w, EA=seg.EA, d_nom=0.1))
+        props = dict(name=name, d_vol=0.0, m=seg.w / g, w=seg.w, EA=seg.EA, d_nom=0.1)
+        ms.setLineType(name=name, lineType=props)
         ms.addLine(seg.length, name, pointA=i + 1, pointB=i + 2, cb=line.friction)
     ms.initialize()
     ms.solveEquilibrium(tol=1e-9, maxIter=2000)
@@ -248,9 +250,8 @@ def test_stiffness_against_central_differences(line, span, dh):
 def test_tension_along_the_line(line, span, dh):
     sol = line.solve(span, dh)
     table = sol.tensions()
-    assert list(table.columns) == [
-        "segment", "length", "w", "EA", "T_lower", "T_upper", "H_upper", "stretched_length", "grounded_length",
-    ]  # fmt: skip
+    columns = ["segment", "length", "w", "EA", "T_lower", "T_upper", "H_upper"]
+    assert list(table.columns) == [*columns, "stretched_length", "grounded_length"]
     ends = np.concatenate([[0.0], np.cumsum(table["length"])])
     eps = 1e-9
     # T at the segment ends equals the table, from inside the segment
@@ -258,7 +259,7 @@ def test_tension_along_the_line(line, span, dh):
     assert sol.T_of_s(ends[1:] - eps) == pytest.approx(table["T_upper"], rel=1e-8, abs=1e-3)
     # stretched length: the arc length of the profile, segment by segment (the line kinks at
     # loaded joints), from the chord sum of x_of_s, y_of_s
-    for (a, b), stretched in zip(zip(ends[:-1], ends[1:]), table["stretched_length"]):
+    for a, b, stretched in zip(ends[:-1], ends[1:], table["stretched_length"], strict=True):
         s = np.linspace(a, b, 20001)
         arc = np.hypot(np.diff(sol.x_of_s(s)), np.diff(sol.y_of_s(s))).sum()
         assert arc == pytest.approx(stretched, rel=1e-8)

@@ -48,6 +48,7 @@ from skcable._checks import nonnegative, positive, real, require, scalar
 from skcable.cable._elastic import inverse_2x2
 from skcable.cable._roots import find_root
 from skcable.cable._special import asinh_diff
+from skcable.cable.lines.seabed import elastic_catenary
 from skcable.errors import ConvergenceError, InputError
 
 __all__ = ["Buoy", "ClumpWeight", "Line", "LineSolution", "Segment"]
@@ -309,6 +310,73 @@ class Line:
             return lo
         return find_root(lambda v: f(v), lo, hi, what="Line.solve, V at fixed H", xtol=1e-12 * hi)[0]
 
+    def _guess(self, span, dh):
+        """``(H, V)`` of the uniform line of the same length, weight and compliance, or None."""
+        L = self.length
+        W = float(self._w @ self._L + self.joint_forces[1:-1].sum())
+        w = W / L if W > 0 else float(self._w @ self._L) / L
+        EA = L / float(np.sum(self._L / self._EA))
+        seabed = 0.0 if self._contact else None
+        try:
+            ref = elastic_catenary(span, dh, w, EA, length=L, seabed=seabed, friction=0.0)
+        except (InputError, ConvergenceError):
+            return None
+        return float(ref.H), float(ref.V_B)
+
+    def _newton(self, span, dh, H, V, chord, iterations):
+        """Newton's method with the analytic Jacobian and backtracking on ``max|residual|``."""
+        st = self._state(H, V)
+        if st is None:
+            return None, np.inf, []
+        norm = max(abs(st.X - span), abs(st.Z - dh)) / chord
+        history = [norm]
+        for _ in range(iterations):
+            if norm < _TOL:
+                break
+            with np.errstate(all="ignore"):
+                step = np.linalg.solve(st.jac, -np.array([st.X - span, st.Z - dh]))
+            if not np.all(np.isfinite(step)):
+                break
+            t = 1.0
+            for _ in range(30):
+                H_new, V_new = H + t * step[0], V + t * step[1]
+                new = self._state(H_new, V_new) if H_new > 0 else None
+                if new is not None:
+                    new_norm = max(abs(new.X - span), abs(new.Z - dh)) / chord
+                    if np.isfinite(new_norm) and new_norm < norm:
+                        break
+                t *= 0.5
+            else:
+                break
+            H, V, st, norm = H_new, V_new, new, new_norm
+            history.append(norm)
+        return st, norm, history
+
+    def _bracketed(self, span, dh):
+        """``(H, V)`` by nested bracketing: ``V(H)`` from the height, then ``H`` from the run."""
+        W = float(self._w @ self._L)
+
+        def x_of_h(H):
+            V = self._height_of_v(H, dh)
+            return self._state(H, V).X - span
+
+        H_lo = 1e-10 * W
+        if x_of_h(H_lo) >= 0:
+            if self._contact:
+                raise InputError(
+                    "length",
+                    "leaves slack line lying in a heap on the seabed (the grounded run exceeds the "
+                    "span at H -> 0): give a shorter line or a longer span",
+                )
+            raise ConvergenceError("Line.solve: the run exceeds the span at H -> 0")
+        H_hi = W
+        while x_of_h(H_hi) < 0:
+            H_hi *= 4.0
+            if H_hi > 1e16 * W:
+                raise InputError("span", "is out of reach of the line (tension beyond the float range)")
+        H, hist = find_root(x_of_h, H_lo, H_hi, what="Line.solve, H", xtol=1e-10 * H_hi)
+        return H, self._height_of_v(H, dh), hist
+
     def solve(self, span, dh):
         """Static equilibrium with A at (0, 0) and B at (span, dh).
 
@@ -340,49 +408,14 @@ class Line:
         if self.seabed is not None:
             require("dh", dh > self.seabed, "must put B above the seabed", dh)
         chord = float(np.hypot(span, dh))
-        W = float(self._w @ self._L)
-
-        def x_of_h(H):
-            V = self._height_of_v(H, dh)
-            return self._state(H, V).X - span
-
-        H_lo = 1e-10 * W
-        if x_of_h(H_lo) >= 0:
-            if self._contact:
-                raise InputError(
-                    "length",
-                    "leaves slack line lying in a heap on the seabed (the grounded run exceeds the "
-                    "span at H -> 0): give a shorter line or a longer span",
-                )
-            raise ConvergenceError("Line.solve: the run exceeds the span at H -> 0")
-        H_hi = W
-        while x_of_h(H_hi) < 0:
-            H_hi *= 4.0
-            if H_hi > 1e16 * W:
-                raise InputError("span", "is out of reach of the line (tension beyond the float range)")
-        H, hist = find_root(x_of_h, H_lo, H_hi, what="Line.solve, H", xtol=1e-10 * H_hi)
-        V = self._height_of_v(H, dh)
-        # Newton polish on the full closure with the analytic Jacobian
-        st = self._state(H, V)
-        norm = max(abs(st.X - span), abs(st.Z - dh)) / chord
-        history = [*hist, norm]
-        for _ in range(20):
-            if norm < _TOL:
-                break
-            step = np.linalg.solve(st.jac, -np.array([st.X - span, st.Z - dh]))
-            t = 1.0
-            for _ in range(30):
-                H_new, V_new = H + t * step[0], V + t * step[1]
-                new = self._state(H_new, V_new) if H_new > 0 else None
-                if new is not None:
-                    new_norm = max(abs(new.X - span), abs(new.Z - dh)) / chord
-                    if np.isfinite(new_norm) and new_norm < norm:
-                        break
-                t *= 0.5
-            else:
-                break
-            H, V, st, norm = H_new, V_new, new, new_norm
-            history.append(norm)
+        st, norm, history = None, np.inf, []
+        guess = self._guess(span, dh)
+        if guess is not None:  # Newton from the equivalent uniform line
+            st, norm, history = self._newton(span, dh, *guess, chord, 40)
+        if not norm < 1e-11:  # nested bracketing, then Newton polish
+            H, V, hist = self._bracketed(span, dh)
+            st, norm, more = self._newton(span, dh, H, V, chord, 20)
+            history = [*history, *hist, *more]
         if not norm < 1e-11:
             raise ConvergenceError("Line.solve: closure not met", history)
         solution = LineSolution(self, span, dh, st)
@@ -481,9 +514,7 @@ class LineSolution:
         scale = abs(self.V_A) + abs(self.V_B) + float(self.line._w @ self.line._L)
         scale += float(np.abs(self.joint_forces).sum())
         statics = abs(self.V_A + self.V_B + self.seabed_reaction - load) / scale
-        geometry = max(
-            abs(self.x_joints[-1] - self.span) / chord, abs(self.y_joints[-1] - self.dh) / chord
-        )
+        geometry = max(abs(self.x_joints[-1] - self.span) / chord, abs(self.y_joints[-1] - self.dh) / chord)
         return float(max(closure, statics, geometry))
 
     def _validate(self):
