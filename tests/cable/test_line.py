@@ -210,6 +210,8 @@ STATE_SCENES = [
                 [cable.Buoy(2, 8.0e4), cable.ClumpWeight(1, 1.0e4)], seabed=0.0, friction=0.3), 620.0, 300.0),
     (cable.Line([cable.Segment(300.0, *CHAIN), cable.Segment(400.0, *WIRE), cable.Segment(300.0, *WIRE)],
                 [cable.Buoy(2, 1.0e5)], seabed=0.0, friction=0.4), 800.0, 60.0),  # lazy wave
+    (cable.Line([cable.Segment(420.0, 180.0, 3e7), cable.Segment(25.0, 60.0, 5e8)],
+                [cable.Buoy(1, 9.0e4)], seabed=0.0, friction=1.0), 260.0, 200.0),  # buoy above B: V_B < 0
     (_chain_wire_chain(seabed=None), 500.0, -100.0),  # no seabed, B below A
 ]  # fmt: skip
 

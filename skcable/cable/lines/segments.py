@@ -293,14 +293,11 @@ class Line:
             st = self._state(H, V)
             return -dh if st is None else st.Z - dh
 
-        if self._contact:
-            lo = 1e-12 * scale
-        else:
-            lo = -scale
-            while f(lo) > 0:
-                lo *= 2.0
-                if lo < -1e12 * scale:
-                    raise ConvergenceError("Line.solve: no bracket for the fairlead's vertical force")
+        lo = -scale  # V < 0: the fairlead holds a buoyant line down
+        while f(lo) > 0:
+            lo *= 2.0
+            if lo < -1e12 * scale:
+                raise ConvergenceError("Line.solve: no bracket for the fairlead's vertical force")
         hi = scale
         while f(hi) < 0:
             hi *= 2.0
