@@ -272,6 +272,22 @@ def test_tension_along_the_line(line, span, dh):
     assert px[0] == 0.0 and px[-1] == pytest.approx(span) and np.all(py >= floor - 1e-9 * span)
 
 
+def test_end_attachments_go_to_the_supports():
+    """A clump at the fairlead joint adds its weight to V_B, one at the anchor to V_A, a buoy
+    at the fairlead takes its buoyancy off V_B; the line itself is unchanged (statics)."""
+    bare = _chain_wire_chain(clump=0.0, friction=0.3).solve(600.0, 450.0)
+    segments = list(_chain_wire_chain().segments)
+    for att, dA, dB in (
+        (cable.ClumpWeight(3, 5.0e4), 0.0, 5.0e4),
+        (cable.ClumpWeight(0, 7.0e4), 7.0e4, 0.0),
+        (cable.Buoy(3, 2.0e4), 0.0, -2.0e4),
+    ):
+        sol = cable.Line(segments, [att], seabed=0.0, friction=0.3).solve(600.0, 450.0)
+        assert sol.H == bare.H and sol.H_A == bare.H_A and sol.T_B == bare.T_B
+        assert sol.V_A == pytest.approx(bare.V_A + dA, rel=1e-15, abs=1e-9)
+        assert sol.V_B == pytest.approx(bare.V_B + dB, rel=1e-15)
+
+
 # -- robustness ---------------------------------------------------------------------------
 def test_robustness_sweep():
     rng = np.random.default_rng(0)

@@ -173,7 +173,8 @@ class Line:
                 raise InputError("joint", f"{att!r}: joint must lie in [0, {n}] for {n} segments")
             P[att.joint] += att.force
         if seabed is None:
-            if friction is None or real("friction", friction) != 0.0:
+            friction = 0.0 if friction is None else friction
+            if real("friction", friction) != 0.0:
                 raise InputError("friction", "applies to a line on the seabed: give seabed= as well")
         else:
             seabed = scalar("seabed", seabed)
