@@ -617,7 +617,7 @@ class LineSolution:
         return _out(self._maps(s)[1])
 
     def T_of_s(self, s):
-        """Tension (N) at unstretched arc length ``s`` from A (below a joint's attachment at a joint)."""
+        """Tension (N) at unstretched arc length ``s`` from A; at a joint, that of the segment above it."""
         return _out(self._maps(s)[2])
 
     def profile(self, n=200):
