@@ -392,6 +392,8 @@ def test_refusals():
         (lambda: cable.Line([cable.Segment(1.0, 1.0, 1.0)], friction=0.2), "friction"),
         (lambda: cable.Line([cable.Segment(1.0, 1.0, 1.0)], seabed=1.0), "seabed"),
         (lambda: cable.Line([cable.Segment(1.0, 1.0, 1.0)], seabed=0.0, friction=-0.1), "friction"),
+        (lambda: _chain_wire_chain().solve(600.0, 450.0).profile(2.5), "n"),
+        (lambda: _chain_wire_chain().solve(600.0, 450.0).x_of_s(851.0), "s"),
     ],
 )
 def test_bad_inputs_name_the_argument(build, argument):

@@ -623,7 +623,8 @@ class LineSolution:
     def profile(self, n=200):
         """``(x, y)`` arrays of ``n`` points evenly spaced in unstretched arc length, plus the joints
         and the touchdown, sorted along the line (the grounded part on the seabed)."""
-        n = int(scalar("n", positive("n", n)))
+        if isinstance(n, (bool, np.bool_)) or not isinstance(n, (int, np.integer)) or n < 2:
+            raise InputError("n", f"must be an integer >= 2, got {n!r}")
         st = self._st
         s = np.concatenate([np.linspace(0.0, self.length, max(n, 2)), self._s0, [self._s0[st.k] + st.a]])
         s = np.unique(np.clip(s, 0.0, self.length))
@@ -637,7 +638,11 @@ class LineSolution:
         ``∂(X, Z)/∂(H, V)`` (implicit function theorem), friction and clump regimes included.
         """
         J = self._st.jac
-        return inverse_2x2(J[0, 0], J[0, 1], J[1, 0], J[1, 1])
+        with np.errstate(all="ignore"):
+            K = inverse_2x2(J[0, 0], J[0, 1], J[1, 0], J[1, 1])
+        if not np.all(np.isfinite(K)):
+            raise ConvergenceError("LineSolution.stiffness: the closure's Jacobian is singular here")
+        return K
 
     @cached_property
     def _segment_table(self):
