@@ -39,10 +39,22 @@ from skcable.cable.bvp import (
     solve_bvp,
     solve_line_bvp,
 )
-from skcable.cable.lines.seabed import (
+from skcable.cable.lines import (
+    Buoy,
+    ClumpWeight,
+    Line,
+    Line3D,
+    LineSolution,
+    MooringEquilibrium,
+    MooringSystem,
+    PointBody,
+    RigidBody,
     SeabedCatenary,
+    Segment,
     SlopedSeabedCatenary,
     elastic_catenary,
+    line_3d,
+    rotation_matrix,
     sloped_seabed_catenary,
 )
 from skcable.cable.solution import CableSolution
@@ -99,21 +111,14 @@ __all__ = [
     "smooth_surface_reaction",
     "sphere_parallel",
     "Conductor",
-]
-__all__ += ["TensionSection", "ruling_span", "tension_section"]
-
-# lines in 3-D and moored bodies (skcable.cable.lines)
-from skcable.cable.lines import (  # noqa: E402
-    Line3D,
-    MooringEquilibrium,
-    MooringSystem,
-    PointBody,
-    RigidBody,
-    line_3d,
-    rotation_matrix,
-)
-
-__all__ += [
+    "TensionSection",
+    "ruling_span",
+    "tension_section",
+    "Buoy",
+    "ClumpWeight",
+    "Line",
+    "LineSolution",
+    "Segment",
     "Line3D",
     "MooringEquilibrium",
     "MooringSystem",

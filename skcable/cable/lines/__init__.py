@@ -1,29 +1,43 @@
-"""Mooring and anchor lines: seabed contact, multi-segment lines, line systems.
+"""Mooring and anchor lines: seabed contact, multi-segment lines, lines in 3-D, moored bodies.
 
 Conventions as in :mod:`skcable.cable`: anchor A at (0, 0), fairlead B at
 (span, dh), y up, weights per unstretched length act downward.
+
+One concern per module:
+
+- `seabed`: one elastic line on a flat or sloped seabed, in closed form;
+- `segments`: `Line`, a multi-segment line with clump weights and buoys;
+- `line3d`: a line between two points in 3-D, in its vertical plane;
+- `body`: point and rigid bodies (6 dofs) with their own loads;
+- `system`: `MooringSystem`, a body moored by several lines: equilibrium, stiffness.
 """
 
+from skcable.cable.lines.body import PointBody, RigidBody, rotation_matrix
+from skcable.cable.lines.line3d import Line3D, line_3d
 from skcable.cable.lines.seabed import (
     SeabedCatenary,
     SlopedSeabedCatenary,
     elastic_catenary,
     sloped_seabed_catenary,
 )
+from skcable.cable.lines.segments import Buoy, ClumpWeight, Line, LineSolution, Segment
+from skcable.cable.lines.system import MooringEquilibrium, MooringSystem
 
-__all__ = ["SeabedCatenary", "SlopedSeabedCatenary", "elastic_catenary", "sloped_seabed_catenary"]
-
-# lines in 3-D and moored bodies
-from skcable.cable.lines.body import PointBody, RigidBody, rotation_matrix  # noqa: E402
-from skcable.cable.lines.line3d import Line3D, line_3d  # noqa: E402
-from skcable.cable.lines.system import MooringEquilibrium, MooringSystem  # noqa: E402
-
-__all__ += [
+__all__ = [
+    "Buoy",
+    "ClumpWeight",
+    "Line",
     "Line3D",
+    "LineSolution",
     "MooringEquilibrium",
     "MooringSystem",
     "PointBody",
     "RigidBody",
+    "SeabedCatenary",
+    "Segment",
+    "SlopedSeabedCatenary",
+    "elastic_catenary",
     "line_3d",
     "rotation_matrix",
+    "sloped_seabed_catenary",
 ]

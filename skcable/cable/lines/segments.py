@@ -1,0 +1,702 @@
+r"""Multi-segment mooring lines with clump weights and buoys, in closed form.
+
+A line runs from the anchor A = (0, 0) to the fairlead B = (span, dh) through
+segments ``0 .. n-1`` (from A), each an elastic catenary with its own
+unstretched length ``L_i``, weight in water per unstretched length ``w_i > 0``
+and axial stiffness ``EA_i``. Joint ``j`` lies between segments ``j-1`` and
+``j`` (joint 0 is A, joint n is B) and may carry a point force ``P_j``
+(downward positive: a clump weight ``P_j = W``, a buoy ``P_j = -B``).
+
+With no horizontal point load the horizontal tension ``H`` of the suspended
+part is the same in every segment. From the vertical component ``V`` of the
+tension at the fairlead (just below joint n) the vertical components at the
+ends of each segment follow by statics, ``V_{bot,i} = V_{top,i} - w_i L_i``,
+``V_{top,i-1} = V_{bot,i} - P_i``, and each suspended segment spans the
+elastic catenary run and rise (H.M. Irvine, "Cable Structures", MIT Press,
+1981)
+
+.. math::
+    \Delta x_i = \frac{H L_i}{EA_i} + \frac{H}{w_i}\Big(\operatorname{asinh}\frac{V_{top}}{H}
+        - \operatorname{asinh}\frac{V_{bot}}{H}\Big), \qquad
+    \Delta y_i = \frac{L_i (V_{top} + V_{bot})}{2 EA_i} + \frac{T_{top} - T_{bot}}{w_i}.
+
+On a flat seabed through the anchor (``seabed=0``) the line rests on it from
+A up to the touchdown, the first point (from A) where the vertical force of
+the suspended extension ``V_{ext}(s)`` becomes non-negative: inside a segment
+(``V = 0``, tangent touchdown) or at a joint carrying a clump weight that the
+seabed partly supports. Along the grounded part the tension falls towards the
+anchor by Coulomb friction ``C_B w_i`` per unit length and ``C_B R_j`` at a
+grounded clump (``R_j`` the part of its weight the seabed carries), down to
+``H_A = max(H - friction, 0)``; the grounded length ``\ell`` of a piece under
+tension ``T_u`` at its upper end stretches by ``(T_u \ell - C_B w \ell^2/2)/EA``
+(J.M. Jonkman, "Dynamics modeling and loads analysis of an offshore floating
+wind turbine", NREL, 2007, applied piece by piece).
+
+The closure ``X(H, V) = span``, ``Z(H, V) = dh`` is solved by nested
+bracketing (``Z`` increases with ``V`` at fixed ``H``; then ``X`` in ``H``),
+then polished by Newton's method with its analytic Jacobian. The fairlead
+stiffness is the inverse of that Jacobian (implicit function theorem).
+"""
+
+from __future__ import annotations
+
+from functools import cached_property
+
+import numpy as np
+
+from skcable._checks import nonnegative, positive, real, require, scalar
+from skcable.cable._elastic import inverse_2x2
+from skcable.cable._roots import find_root
+from skcable.cable._special import asinh_diff
+from skcable.cable.lines.seabed import elastic_catenary
+from skcable.errors import ConvergenceError, InputError
+
+__all__ = ["Buoy", "ClumpWeight", "Line", "LineSolution", "Segment"]
+
+_TOL = 1e-13
+
+
+class Segment:
+    """A uniform segment of a mooring line.
+
+    Parameters
+    ----------
+    length : float
+        Unstretched length (m), > 0.
+    w : float
+        Weight in water per unstretched length (N/m), > 0 (a segment lighter
+        than water is a buoyant line: model its buoyancy with `Buoy` at joints).
+    EA : float
+        Axial stiffness (N), > 0.
+    """
+
+    __slots__ = ("length", "w", "EA")
+
+    def __init__(self, length, w, EA):
+        self.length = scalar("length", positive("length", length))
+        self.w = scalar("w", positive("w", w))
+        self.EA = scalar("EA", positive("EA", EA))
+
+    def __repr__(self):
+        return f"Segment(length={self.length!r}, w={self.w!r}, EA={self.EA!r})"
+
+
+class ClumpWeight:
+    """A clump weight at ``joint`` (0 = anchor, n = fairlead): a downward force ``weight`` (N, > 0)
+    in water."""
+
+    __slots__ = ("joint", "weight")
+
+    def __init__(self, joint, weight):
+        self.joint = _joint_index(joint)
+        self.weight = scalar("weight", positive("weight", weight))
+
+    @property
+    def force(self):
+        """Downward force on the joint (N)."""
+        return self.weight
+
+    def __repr__(self):
+        return f"ClumpWeight(joint={self.joint}, weight={self.weight!r})"
+
+
+class Buoy:
+    """A buoy at ``joint`` (0 = anchor, n = fairlead): a net upward force ``buoyancy`` (N, > 0)."""
+
+    __slots__ = ("joint", "buoyancy")
+
+    def __init__(self, joint, buoyancy):
+        self.joint = _joint_index(joint)
+        self.buoyancy = scalar("buoyancy", positive("buoyancy", buoyancy))
+
+    @property
+    def force(self):
+        """Downward force on the joint (N), negative."""
+        return -self.buoyancy
+
+    def __repr__(self):
+        return f"Buoy(joint={self.joint}, buoyancy={self.buoyancy!r})"
+
+
+def _joint_index(joint):
+    if isinstance(joint, (bool, np.bool_)) or not isinstance(joint, (int, np.integer)):
+        raise InputError("joint", f"must be an integer joint index, got {joint!r}")
+    if joint < 0:
+        raise InputError("joint", f"must be >= 0 (0 is the anchor), got {joint}")
+    return int(joint)
+
+
+class _State:
+    """The closed form evaluated at ``(H, V)``: closure, Jacobian and the pieces."""
+
+    __slots__ = (
+        "H", "V", "k", "a", "V_top", "V_bot", "Vb", "L_s", "X", "Z", "jac",
+        "l_g", "T_g", "m_g", "R", "contact", "H_A",
+    )  # fmt: skip
+
+
+class Line:
+    """A mooring line of segments in series, with clump weights and buoys at the joints.
+
+    Parameters
+    ----------
+    segments : sequence of Segment
+        From the anchor (segment 0) to the fairlead.
+    attachments : sequence of ClumpWeight or Buoy, optional
+        Point forces at the joints; joint ``j`` joins segments ``j-1`` and ``j``,
+        joint 0 is the anchor A, joint ``n = len(segments)`` the fairlead B. A force
+        at an end joint is carried by the support there (it enters ``V_A`` or ``V_B``).
+        Several attachments at one joint add up.
+    seabed : float, optional
+        Height of a flat seabed relative to A (m), ``<= 0``, as in `elastic_catenary`.
+        With ``seabed=0`` the line may rest on it from A up to a touchdown; with
+        ``seabed < 0`` the line must stay clear of it (a touchdown between A and B
+        raises).
+    friction : float, optional
+        Coulomb coefficient ``C_B >= 0`` of the grounded part (only with ``seabed``).
+    """
+
+    def __init__(self, segments, attachments=(), *, seabed=None, friction=0.0):
+        try:
+            segments = list(segments)
+            attachments = list(attachments)
+        except TypeError:
+            raise InputError("segments", "must be sequences of Segment and of attachments") from None
+        if not segments or not all(isinstance(s, Segment) for s in segments):
+            raise InputError("segments", "must be a non-empty sequence of cable.Segment")
+        n = len(segments)
+        if not all(isinstance(a, (ClumpWeight, Buoy)) for a in attachments):
+            raise InputError("attachments", "must be cable.ClumpWeight or cable.Buoy objects")
+        P = np.zeros(n + 1)
+        for att in attachments:
+            if att.joint > n:
+                raise InputError("joint", f"{att!r}: joint must lie in [0, {n}] for {n} segments")
+            P[att.joint] += att.force
+        if seabed is None:
+            friction = 0.0 if friction is None else friction
+            if real("friction", friction) != 0.0:
+                raise InputError("friction", "applies to a line on the seabed: give seabed= as well")
+        else:
+            seabed = scalar("seabed", seabed)
+            require("seabed", seabed <= 0, "must be at or below the anchor (A at height 0)", seabed)
+        self.friction = scalar("friction", nonnegative("friction", friction))
+        self.seabed = seabed
+        self.segments = tuple(segments)
+        self.attachments = tuple(attachments)
+        self._L = np.array([s.length for s in segments])
+        self._w = np.array([s.w for s in segments])
+        self._EA = np.array([s.EA for s in segments])
+        self.joint_forces = P
+        """Downward point force at each joint (N), ``n + 1`` values (buoys negative)."""
+        # load between the top of segment i and the fairlead (joint n excluded)
+        c = P[1:n] + self._w[1:] * self._L[1:]
+        self._Q_top = np.append(np.cumsum(c[::-1])[::-1], 0.0)
+        self._contact = seabed is not None and seabed == 0.0
+
+    @property
+    def length(self):
+        """Total unstretched length (m)."""
+        return float(self._L.sum())
+
+    @property
+    def weight(self):
+        """Total weight in water of the segments and the attachments (N)."""
+        return float(self._w @ self._L + self.joint_forces.sum())
+
+    def __repr__(self):
+        return (
+            f"Line(segments={list(self.segments)!r}, attachments={list(self.attachments)!r}, "
+            f"seabed={self.seabed!r}, friction={self.friction!r})"
+        )
+
+    # -- the closed form ----------------------------------------------------------------
+    def _state(self, H, V):
+        """Closure ``(X, Z)`` and its Jacobian in ``(H, V)`` at fairlead forces ``(H, V)``."""
+        L, w, EA, P, mu = self._L, self._w, self._EA, self.joint_forces, self.friction
+        st = _State()
+        st.H, st.V = H, V
+        V_top = V - self._Q_top
+        V_bot = V_top - w * L
+        st.V_top, st.V_bot = V_top, V_bot
+        contact = self._contact and V_bot[0] < 0
+        if contact:
+            up = np.flatnonzero(V_top > 0)
+            if up.size == 0:
+                return None  # the whole line would lie on the seabed
+            k = int(up[0])
+        else:
+            k = 0
+        st.contact, st.k = contact, k
+        # suspended pieces k .. n-1
+        Vt = V_top[k:]
+        Vb = V_bot[k:].copy()
+        dVb = np.ones_like(Vb)
+        a = 0.0
+        if contact and Vb[0] < 0:
+            a = -Vb[0] / w[k]
+            Vb[0], dVb[0] = 0.0, 0.0
+        st.a, st.Vb = a, Vb
+        Ls = L[k:].copy()
+        Ls[0] -= a
+        st.L_s = Ls
+        ws, EAs = w[k:], EA[k:]
+        Tt, Tb = np.hypot(H, Vt), np.hypot(H, Vb)
+        ad = asinh_diff(Vt / H, Vb / H)
+        dx = H * Ls / EAs + H / ws * ad
+        dy = Ls * (Vt + Vb) / (2.0 * EAs) + (Vt - Vb) * (Vt + Vb) / ((Tt + Tb) * ws)
+        x_h = Ls / EAs + ad / ws - (Vt / Tt - Vb / Tb) / ws
+        x_v = H / ws * (1.0 / EAs + 1.0 / Tt) - dVb * H / ws * (1.0 / EAs + 1.0 / Tb)
+        y_h = H * (Tb - Tt) / (Tt * Tb * ws)
+        y_v = Vt * (1.0 / Tt + 1.0 / EAs) / ws - dVb * Vb * (1.0 / Tb + 1.0 / EAs) / ws
+        X, Z = dx.sum(), dy.sum()
+        J = np.array([[x_h.sum(), x_v.sum()], [y_h.sum(), y_v.sum()]])
+        # grounded pieces k, k-1, .. 0 from the touchdown towards the anchor
+        l_g = np.zeros(k + 1)
+        T_g = np.zeros(k + 1)  # tension at each grounded piece's upper end
+        R = np.zeros(k + 1)  # seabed reaction at joints 1..k (index j)
+        if contact:
+            l_g[:k] = L[:k]
+            l_g[k] = a
+            R[1:] = P[1 : k + 1]
+            R[k] = P[k] - max(V_bot[k], 0.0) if k > 0 else 0.0
+            T, dT = H, np.array([1.0, 0.0])
+            for i in range(k, -1, -1):
+                if i < k:  # the joint above piece i (joint i+1)
+                    dR = np.array([0.0, -1.0]) if (i + 1 == k and V_bot[k] > 0) else np.zeros(2)
+                    Rj = R[i + 1]
+                    T = T - mu * max(Rj, 0.0)
+                    dT = dT - (mu * dR if Rj > 0 else 0.0)
+                    if T <= 0:
+                        T, dT = 0.0, np.zeros(2)
+                T_g[i] = T
+                l = l_g[i]
+                dl = np.array([0.0, -1.0 / w[k]]) if (i == k and a > 0) else np.zeros(2)
+                m = mu * w[i]
+                if m == 0 or T - m * l > 0:
+                    X += l + (T * l - 0.5 * m * l * l) / EA[i]
+                    J[0] += dl + (dT * l + T * dl - m * l * dl) / EA[i]
+                    T, dT = T - m * l, dT - m * dl
+                else:
+                    X += l + 0.5 * T * T / (m * EA[i])
+                    J[0] += dl + T * dT / (m * EA[i])
+                    T, dT = 0.0, np.zeros(2)
+        st.l_g, st.T_g, st.R = l_g, T_g, R
+        st.m_g = mu * w[: k + 1]
+        st.H_A = T if contact else H
+        st.X, st.Z, st.jac = X, Z, J
+        return st
+
+    def _height_of_v(self, H, dh):
+        """``V`` with ``Z(H, V) = dh`` (``Z`` increases with ``V``), by bracketing."""
+        scale = float(self._w @ self._L + np.abs(self.joint_forces).sum())
+
+        def f(V):
+            st = self._state(H, V)
+            return -dh if st is None else st.Z - dh
+
+        lo = -scale  # V < 0: the fairlead holds a buoyant line down
+        while f(lo) > 0:
+            lo *= 2.0
+            if lo < -1e12 * scale:
+                raise ConvergenceError("Line.solve: no bracket for the fairlead's vertical force")
+        hi = scale
+        while f(hi) < 0:
+            hi *= 2.0
+            if hi > 1e12 * scale:
+                raise ConvergenceError("Line.solve: no bracket for the fairlead's vertical force")
+        if f(lo) >= 0:
+            return lo
+        return find_root(lambda v: f(v), lo, hi, what="Line.solve, V at fixed H", xtol=1e-12 * hi)[0]
+
+    def _guess(self, span, dh):
+        """``(H, V)`` of the uniform line of the same length, weight and compliance, or None."""
+        L = self.length
+        W = float(self._w @ self._L + self.joint_forces[1:-1].sum())
+        w = W / L if W > 0 else float(self._w @ self._L) / L
+        EA = L / float(np.sum(self._L / self._EA))
+        seabed = 0.0 if self._contact else None
+        try:
+            ref = elastic_catenary(span, dh, w, EA, length=L, seabed=seabed, friction=0.0)
+        except (InputError, ConvergenceError):
+            return None
+        return float(ref.H), float(ref.V_B)
+
+    def _newton(self, span, dh, H, V, chord, iterations):
+        """Newton's method with the analytic Jacobian and backtracking on ``max|residual|``."""
+        st = self._state(H, V)
+        if st is None:
+            return None, np.inf, []
+        norm = max(abs(st.X - span), abs(st.Z - dh)) / chord
+        history = [norm]
+        for _ in range(iterations):
+            if norm < _TOL:
+                break
+            with np.errstate(all="ignore"):
+                step = np.linalg.solve(st.jac, -np.array([st.X - span, st.Z - dh]))
+            if not np.all(np.isfinite(step)):
+                break
+            t = 1.0
+            for _ in range(30):
+                H_new, V_new = H + t * step[0], V + t * step[1]
+                new = self._state(H_new, V_new) if H_new > 0 else None
+                if new is not None:
+                    new_norm = max(abs(new.X - span), abs(new.Z - dh)) / chord
+                    if np.isfinite(new_norm) and new_norm < norm:
+                        break
+                t *= 0.5
+            else:
+                break
+            H, V, st, norm = H_new, V_new, new, new_norm
+            history.append(norm)
+        return st, norm, history
+
+    def _bracketed(self, span, dh):
+        """``(H, V)`` by nested bracketing: ``V(H)`` from the height, then ``H`` from the run."""
+        W = float(self._w @ self._L)
+
+        def x_of_h(H):
+            V = self._height_of_v(H, dh)
+            return self._state(H, V).X - span
+
+        H_lo = 1e-10 * W
+        if x_of_h(H_lo) >= 0:
+            if self._contact:
+                raise InputError(
+                    "length",
+                    "leaves slack line lying in a heap on the seabed (the grounded run exceeds the "
+                    "span at H -> 0): give a shorter line or a longer span",
+                )
+            raise ConvergenceError("Line.solve: the run exceeds the span at H -> 0")
+        H_hi = W
+        while x_of_h(H_hi) < 0:
+            H_hi *= 4.0
+            if H_hi > 1e16 * W:
+                raise InputError("span", "is out of reach of the line (tension beyond the float range)")
+        H, hist = find_root(x_of_h, H_lo, H_hi, what="Line.solve, H", xtol=1e-10 * H_hi)
+        return H, self._height_of_v(H, dh), hist
+
+    def solve(self, span, dh):
+        """Static equilibrium with A at (0, 0) and B at (span, dh).
+
+        Parameters
+        ----------
+        span : float
+            Horizontal distance A→B (m), > 0.
+        dh : float
+            Height of B above A (m); above the seabed when one is given.
+
+        Returns
+        -------
+        LineSolution
+
+        Raises
+        ------
+        InputError
+            ``span``/``dh`` not finite or out of range; ``length`` when the line is so
+            long that its slack lies in a heap on the seabed (``H = 0``); ``attachments``
+            when a buoy would rest on the grounded part or the suspended line would dip
+            to the seabed again (a second touchdown: solve it with `cable.solve_bvp`);
+            ``seabed`` when the line would touch a seabed below the anchor. An elastic
+            line always reaches B by stretching, so a short line is not an error.
+        ConvergenceError
+            Bracketing or Newton failed; carries the residual history.
+        """
+        span = scalar("span", positive("span", span))
+        dh = scalar("dh", real("dh", dh))
+        if self.seabed is not None:
+            require("dh", dh > self.seabed, "must put B above the seabed", dh)
+        chord = float(np.hypot(span, dh))
+        st, norm, history = None, np.inf, []
+        guess = self._guess(span, dh)
+        if guess is not None:  # Newton from the equivalent uniform line
+            st, norm, history = self._newton(span, dh, *guess, chord, 40)
+        if not norm < 1e-11:  # nested bracketing, then Newton polish
+            H, V, hist = self._bracketed(span, dh)
+            st, norm, more = self._newton(span, dh, H, V, chord, 20)
+            history = [*history, *hist, *more]
+        if not norm < 1e-11:
+            raise ConvergenceError("Line.solve: closure not met", history)
+        solution = LineSolution(self, span, dh, st)
+        solution._validate()
+        return solution
+
+
+class LineSolution:
+    """Equilibrium of a `Line` between A = (0, 0) and B = (span, dh).
+
+    Attributes
+    ----------
+    H : float
+        Horizontal tension of the suspended part (N), the fairlead's.
+    V_B, V_A : float
+        Upward reactions at B and A (N), attachments at the end joints included.
+    H_A : float
+        Horizontal tension at the anchor (N), ``H`` less the friction, never negative.
+    T_A, T_B : float
+        Line tension at A and B (N).
+    length : float
+        Total unstretched length (m).
+    length_on_seabed : float
+        Unstretched grounded length (m).
+    x_touchdown : float
+        Abscissa where the line leaves the seabed towards B (m), 0 when it hangs freely.
+    x_joints, y_joints : ndarray
+        Position of the joints (m), ``n + 1`` values from A to B.
+    joint_forces : ndarray
+        Downward point force at each joint (N).
+    seabed_reaction : float
+        Total upward force of the seabed on the line (N).
+    """
+
+    def __init__(self, line, span, dh, state):
+        self.line, self.span, self.dh = line, span, dh
+        self._st = st = state
+        n = len(line._L)
+        P = line.joint_forces
+        self.length = line.length
+        self.H = float(st.H)
+        self.H_A = float(st.H_A)
+        self.V_B = float(st.V + P[n])
+        self.V_A = float((0.0 if st.contact else -st.V_bot[0]) + P[0])
+        self.T_B = float(np.hypot(st.H, st.V))
+        self.T_A = float(np.hypot(self.H_A, 0.0 if st.contact else st.V_bot[0]))
+        self.joint_forces = P.copy()
+        self.length_on_seabed = float(st.l_g.sum()) if st.contact else 0.0
+        self.seabed_reaction = float(line._w[: st.k + 1] @ st.l_g + st.R[1:].sum()) if st.contact else 0.0
+        # per-segment arrays: start of each segment along s, and of each suspended piece
+        L, w, EA = line._L, line._w, line._EA
+        self._s0 = np.concatenate([[0.0], np.cumsum(L)])
+        k = st.k
+        H = st.H
+        # grounded pieces: x at their lower ends, stretched lengths
+        if st.contact:
+            g_str = st.l_g + self._grounded_stretch(st.T_g, st.m_g, st.l_g, EA[: k + 1])
+        else:
+            g_str = np.zeros(k + 1)
+        x_g0 = np.concatenate([[0.0], np.cumsum(g_str)])[:-1]
+        self.x_touchdown = float(g_str.sum()) if st.contact else 0.0
+        self._x_g0 = x_g0
+        self._g_str = g_str
+        # suspended pieces: segment i >= k from s_b (start on the line) with Vb
+        Vt, Vb = st.V_top[k:], st.Vb
+        Tt, Tb = np.hypot(H, Vt), np.hypot(H, Vb)
+        Ls = st.L_s
+        ws, EAs = w[k:], EA[k:]
+        dx = H * Ls / EAs + H / ws * asinh_diff(Vt / H, Vb / H)
+        dy = Ls * (Vt + Vb) / (2.0 * EAs) + (Vt - Vb) * (Vt + Vb) / ((Tt + Tb) * ws)
+        self._x_p0 = self.x_touchdown + np.concatenate([[0.0], np.cumsum(dx)])[:-1]
+        self._y_p0 = np.concatenate([[0.0], np.cumsum(dy)])[:-1]
+        self._s_p0 = self._s0[k:-1].copy()
+        self._s_p0[0] += st.a
+        self.x_joints = np.concatenate([x_g0, self._x_p0[1:], [self._x_p0[-1] + dx[-1]]])
+        self.y_joints = np.concatenate([np.zeros(k + 1), self._y_p0[1:], [self._y_p0[-1] + dy[-1]]])
+        if st.contact and st.a > 0:  # joint k lies on the seabed, the piece starts at the touchdown
+            self.x_joints[k] = x_g0[k]
+        self._Tt, self._Tb, self._dx, self._dy = Tt, Tb, dx, dy
+
+    @staticmethod
+    def _grounded_stretch(T_u, m, l, EA):
+        """``∫ max(T_u - m d, 0) dd / EA`` over ``d`` in ``[0, l]``."""
+        with np.errstate(divide="ignore", invalid="ignore"):
+            ell = np.where(m > 0, np.minimum(l, T_u / np.where(m > 0, m, 1.0)), l)
+        ell = np.maximum(ell, 0.0)
+        return (T_u * ell - 0.5 * m * ell * ell) / EA
+
+    # -- checks -----------------------------------------------------------------------
+    def residual(self):
+        """Largest relative residual of the closure and of the vertical equilibrium."""
+        st = self._st
+        chord = np.hypot(self.span, self.dh)
+        closure = max(abs(st.X - self.span), abs(st.Z - self.dh)) / chord
+        load = self.line.weight
+        scale = abs(self.V_A) + abs(self.V_B) + float(self.line._w @ self.line._L)
+        scale += float(np.abs(self.joint_forces).sum())
+        statics = abs(self.V_A + self.V_B + self.seabed_reaction - load) / scale
+        geometry = max(abs(self.x_joints[-1] - self.span) / chord, abs(self.y_joints[-1] - self.dh) / chord)
+        return float(max(closure, statics, geometry))
+
+    def _validate(self):
+        st, line = self._st, self.line
+        values = (self.H, self.V_A, self.V_B, self.H_A, self.T_A, self.T_B, self.length_on_seabed)
+        if not all(np.isfinite(v) for v in values) or not np.all(np.isfinite(self.x_joints)):
+            raise InputError("span", "gives a result outside the range of a float")
+        if st.contact:
+            buoyed = np.flatnonzero(st.R[1:] < 0) + 1
+            if buoyed.size:
+                raise InputError(
+                    "attachments",
+                    f"a buoy at joint {int(buoyed[0])} lies on the grounded part and would lift it: a second "
+                    "touchdown that this closed form does not represent (solve it with cable.solve_bvp)",
+                )
+        y_min = self._lowest_suspended()
+        floor = 0.0 if line.seabed is None else line.seabed
+        tol = 1e-9 * np.hypot(self.span, self.dh)
+        if line.seabed is not None and y_min < floor - tol:
+            argument = "attachments" if st.contact or floor == 0.0 else "seabed"
+            raise InputError(
+                argument,
+                f"the suspended line dips to {y_min:.6g} m, below the seabed at {floor:.6g} m: a touchdown "
+                "between A and B that this closed form does not represent (solve it with cable.solve_bvp, "
+                "or elastic_catenary for one segment)",
+            )
+        residual = self.residual()
+        if not residual < 1e-9:
+            raise ConvergenceError(f"Line.solve: residual {residual:.3e} after the solve", [residual])
+
+    def _lowest_suspended(self):
+        """Lowest height of the suspended part: its joints and the vertices inside segments."""
+        st = self._st
+        H, k = st.H, st.k
+        Vb, Vt = st.Vb, st.V_top[k:]
+        ws, EAs = self.line._w[k:], self.line._EA[k:]
+        inside = (Vb < 0) & (Vt > 0)
+        sig = np.where(inside, -Vb / ws, 0.0)
+        Tb = np.hypot(H, Vb)
+        drop = sig * Vb / (2.0 * EAs) + (H - Tb) / ws  # from the piece's start to its vertex
+        y_vertex = np.where(inside, self._y_p0 + drop, np.inf)
+        start = 1 if st.contact else 0
+        return float(min(self.y_joints[start:].min(), y_vertex.min()))
+
+    # -- along the line ---------------------------------------------------------------
+    def _arc(self, s):
+        s = real("s", s)
+        require("s", (np.asarray(s) >= 0) & (np.asarray(s) <= self.length), "must lie in [0, length]", s)
+        return np.asarray(s, dtype=float)
+
+    def _locate(self, s):
+        st = self._st
+        k = st.k
+        s_t = self._s0[k] + st.a
+        grounded = st.contact & (s < s_t)
+        seg = np.clip(np.searchsorted(self._s0, s, side="right") - 1, 0, len(self.line._L) - 1)
+        piece = np.clip(seg - k, 0, None)
+        return grounded, seg, piece
+
+    def _suspended(self, s, piece):
+        st = self._st
+        H = st.H
+        k = st.k
+        w, EA = self.line._w[k:][piece], self.line._EA[k:][piece]
+        sig = np.maximum(s - self._s_p0[piece], 0.0)
+        Vb = st.Vb[piece]
+        V = Vb + w * sig
+        T, Tb = np.hypot(H, V), np.hypot(H, Vb)
+        x = self._x_p0[piece] + H * sig / EA + H / w * asinh_diff(V / H, Vb / H)
+        y = self._y_p0[piece] + sig * (Vb + 0.5 * w * sig) / EA + (V - Vb) * (V + Vb) / ((T + Tb) * w)
+        return x, y, T
+
+    def _grounded(self, s, seg):
+        st = self._st
+        k = st.k
+        i = np.minimum(seg, k)
+        up = self._s0[i] + st.l_g[i]  # upper end of the grounded piece
+        d = np.maximum(up - s, 0.0)
+        T_u, m, EA = st.T_g[i], st.m_g[i], self.line._EA[i]
+        T = np.maximum(T_u - m * d, 0.0)
+        x_up = self._x_g0[i] + self._g_str[i]
+        back = d + self._grounded_stretch(T_u, m, d, EA)
+        return x_up - back, T
+
+    def _maps(self, s):
+        s = self._arc(s)
+        grounded, seg, piece = self._locate(s)
+        x, y, T = self._suspended(s, piece)
+        if self._st.contact:
+            xg, Tg = self._grounded(s, seg)
+            x = np.where(grounded, xg, x)
+            y = np.where(grounded, 0.0, y)
+            T = np.where(grounded, Tg, T)
+        return x, y, T
+
+    def x_of_s(self, s):
+        """Abscissa (m) of the material point at unstretched arc length ``s`` from A."""
+        return _out(self._maps(s)[0])
+
+    def y_of_s(self, s):
+        """Height above A (m) of the material point ``s`` (the seabed's on the grounded part)."""
+        return _out(self._maps(s)[1])
+
+    def T_of_s(self, s):
+        """Tension (N) at unstretched arc length ``s`` from A; at a joint, that of the segment above it."""
+        return _out(self._maps(s)[2])
+
+    def profile(self, n=200):
+        """``(x, y)`` arrays of ``n`` points evenly spaced in unstretched arc length, plus the joints
+        and the touchdown, sorted along the line (the grounded part on the seabed)."""
+        if isinstance(n, (bool, np.bool_)) or not isinstance(n, (int, np.integer)) or n < 2:
+            raise InputError("n", f"must be an integer >= 2, got {n!r}")
+        st = self._st
+        s = np.concatenate([np.linspace(0.0, self.length, max(n, 2)), self._s0, [self._s0[st.k] + st.a]])
+        s = np.unique(np.clip(s, 0.0, self.length))
+        x, y, _ = self._maps(s)
+        return x, y
+
+    def stiffness(self):
+        """Fairlead stiffness ``∂(H, V_B)/∂(span, dh)`` with A fixed, shape ``(2, 2)``.
+
+        Rows ``(H, V_B)``, columns ``(span, dh)``: the inverse of the closure's Jacobian
+        ``∂(X, Z)/∂(H, V)`` (implicit function theorem), friction and clump regimes included.
+        """
+        J = self._st.jac
+        with np.errstate(all="ignore"):
+            K = inverse_2x2(J[0, 0], J[0, 1], J[1, 0], J[1, 1])
+        if not np.all(np.isfinite(K)):
+            raise ConvergenceError("LineSolution.stiffness: the closure's Jacobian is singular here")
+        return K
+
+    @cached_property
+    def _segment_table(self):
+        st, line = self._st, self.line
+        n, k = len(line._L), st.k
+        H = st.H
+        T_low, T_up, H_seg = np.zeros(n), np.zeros(n), np.full(n, H)
+        stretched, grounded = np.zeros(n), np.zeros(n)
+        # suspended pieces
+        Vt, Vb = st.V_top[k:], st.Vb
+        ws, EAs, Ls = line._w[k:], line._EA[k:], st.L_s
+
+        def prim(v):  # ∫ sqrt(H² + v²) dv
+            return 0.5 * (v * np.hypot(H, v) + H * H * np.arcsinh(v / H))
+
+        T_up[k:] = np.hypot(H, Vt)
+        T_low[k:] = np.hypot(H, Vb)
+        stretched[k:] = Ls + (prim(Vt) - prim(Vb)) / (ws * EAs)
+        if st.contact:
+            grounded[: k + 1] = st.l_g
+            stretched[: k + 1] += self._g_str
+            T_end = np.maximum(st.T_g - st.m_g * st.l_g, 0.0)
+            T_low[:k] = T_end[:k]
+            T_up[:k] = st.T_g[:k]
+            H_seg[:k] = st.T_g[:k]
+            if st.a > 0:
+                T_low[k] = T_end[k]
+        return T_low, T_up, H_seg, stretched, grounded
+
+    def tensions(self):
+        """One row per segment: ``segment, length, w, EA, T_lower, T_upper, H_upper,
+        stretched_length, grounded_length`` (SI units), a `pandas.DataFrame`.
+
+        ``T_lower``/``T_upper`` are the tensions at the segment's ends towards A and B,
+        ``H_upper`` its horizontal tension at the upper end (``H`` where suspended, less
+        the friction below the touchdown)."""
+        import pandas as pd
+
+        line = self.line
+        T_low, T_up, H_seg, stretched, grounded = self._segment_table
+        return pd.DataFrame(
+            {
+                "segment": np.arange(len(line._L)),
+                "length": line._L,
+                "w": line._w,
+                "EA": line._EA,
+                "T_lower": T_low,
+                "T_upper": T_up,
+                "H_upper": H_seg,
+                "stretched_length": stretched,
+                "grounded_length": grounded,
+            }
+        )
+
+
+def _out(value):
+    return float(value) if np.ndim(value) == 0 else value
