@@ -21,7 +21,6 @@ from pathlib import Path
 import numpy as np
 
 from skcable import cable
-from skcable.cable.lines._single_segment import _SingleSegment  # cable.Line at merge
 from skcable.io._atomic import write_text
 
 DEPTH = 200.0  # m, water depth; anchors on the seabed
@@ -46,7 +45,7 @@ def layout():
 
 def system():
     anchors, fairleads = layout()
-    chain = _SingleSegment(LENGTH, W, EA, seabed=0.0)  # anchors on the seabed
+    chain = cable.Line([cable.Segment(LENGTH, W, EA)], seabed=0.0)  # anchors on the seabed
     platform = cable.RigidBody(
         fairleads,
         mass=MASS,

@@ -680,10 +680,18 @@ _LINE_FIELDS = ("H", "V_B", "V_A", "H_A", "T_B", "length_on_seabed", "x_touchdow
 
 def _line(args) -> int:
     """One 2-D mooring line: fairlead and anchor forces, grounded length, 2x2 stiffness."""
-    from skcable.cable.lines._single_segment import _SingleSegment  # cable.Line at merge
-
     vtk = _vtk_path(args)
-    model = _SingleSegment(args.length, args.w, args.EA, seabed=args.seabed, friction=args.friction)
+    n = len(args.length)
+    for name in ("w", "EA"):
+        if len(getattr(args, name)) not in (1, n):
+            raise InputError(
+                name, f"takes one value or one per segment ({n}), got {len(getattr(args, name))}"
+            )
+    w, EA = (v if len(v) == n else v * n for v in (args.w, args.EA))
+    segments = [cable.Segment(*values) for values in zip(args.length, w, EA, strict=True)]
+    attachments = [cable.ClumpWeight(_joint("clump", j), f) for j, f in args.clump or ()]
+    attachments += [cable.Buoy(_joint("buoy", j), f) for j, f in args.buoy or ()]
+    model = cable.Line(segments, attachments, seabed=args.seabed, friction=args.friction)
     sol = model.solve(args.span, args.dh)
     k = np.asarray(sol.stiffness(), dtype=float)
     values = {name: float(getattr(sol, name)) for name in _LINE_FIELDS}
@@ -694,8 +702,16 @@ def _line(args) -> int:
         "k_VB_dh": float(k[1, 1]),
         "residual": sol.residual(),
     }
+    table = sol.tensions()
+    values |= {
+        f"segment_{c}": [float(v) for v in table[c]] for c in ("T_lower", "T_upper", "grounded_length")
+    }
     if vtk:
-        values["vtk"] = _write_vtk(sol, vtk)
+        from skcable.io import write_lines
+
+        values["vtk"] = str(
+            write_lines([cable.line_3d(model, (0.0, 0.0, 0.0), (args.span, 0.0, args.dh))], vtk)
+        )
     _print(values, args.json)
     return EXIT_OK
 
@@ -765,23 +781,62 @@ def _state_and_frequency_commands(sub, command) -> None:
     fr.add_argument("--json", action="store_true", help="print one JSON object (default: a table)")
 
 
+def _joint(flag: str, value: float) -> int:
+    if not float(value).is_integer():
+        raise InputError(flag, f"takes JOINT FORCE with JOINT a whole number, got {value!r}")
+    return int(value)
+
+
 def _line_parser(sub, command) -> None:
-    """``skcable line``: one elastic line from the anchor A = (0, 0) to the fairlead B = (span, dh)."""
+    """``skcable line``: a multi-segment line from the anchor A = (0, 0) to the fairlead B = (span, dh)."""
     p = command(
         sub,
         "line",
         _line,
-        "mooring line from the anchor A = (0, 0) to the fairlead B = (span, dh), optionally on a flat "
-        "seabed with friction (Jonkman 2007): fairlead and anchor forces, grounded length and the 2x2 "
-        "fairlead stiffness d(H, V_B)/d(span, dh)",
+        "mooring line of one or several segments, with clump weights and buoys, from the anchor "
+        "A = (0, 0) to the fairlead B = (span, dh), optionally on a flat seabed with friction "
+        "(Jonkman 2007): fairlead and anchor forces, grounded length, each segment's end tensions "
+        "and the 2x2 fairlead stiffness d(H, V_B)/d(span, dh)",
     )
     p.add_argument("--span", type=_finite, required=True, help="horizontal distance A-B [m], > 0 (required)")
     p.add_argument("--dh", type=_finite, required=True, help="height of B above A [m] (required)")
-    p.add_argument("--length", type=_finite, required=True, help="unstretched length [m], > 0 (required)")
     p.add_argument(
-        "--w", type=_finite, required=True, help="weight in water per unstretched metre [N/m], > 0 (required)"
+        "--length",
+        type=_finite,
+        nargs="+",
+        required=True,
+        help="unstretched length of each segment from the anchor to the fairlead [m], > 0 (required)",
     )
-    p.add_argument("--EA", type=_finite, required=True, help="axial stiffness [N], > 0 (required)")
+    p.add_argument(
+        "--w",
+        type=_finite,
+        nargs="+",
+        required=True,
+        help="weight in water per unstretched metre [N/m], > 0: one value, or one per segment (required)",
+    )
+    p.add_argument(
+        "--EA",
+        type=_finite,
+        nargs="+",
+        required=True,
+        help="axial stiffness [N], > 0: one, or one per segment",
+    )
+    p.add_argument(
+        "--clump",
+        type=_finite,
+        nargs=2,
+        action="append",
+        metavar=("JOINT", "WEIGHT"),
+        help="clump weight [N] at a joint (0 the anchor, n the fairlead); repeat for more (default: none)",
+    )
+    p.add_argument(
+        "--buoy",
+        type=_finite,
+        nargs=2,
+        action="append",
+        metavar=("JOINT", "BUOYANCY"),
+        help="buoy (net upward force [N]) at a joint; repeat for more (default: none)",
+    )
     p.add_argument(
         "--seabed",
         type=_finite,

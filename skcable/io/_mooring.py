@@ -20,7 +20,7 @@ import numpy as np
 from skcable.errors import InputError
 from skcable.io._atomic import atomic_path, writable_file
 
-__all__ = ["mooring_mesh", "write_mooring"]
+__all__ = ["lines_mesh", "mooring_mesh", "write_lines", "write_mooring"]
 
 # VTK's hexahedron: the bottom face counter-clockwise, then the top face
 _BOX = np.array([[0, 0, 0], [1, 0, 0], [1, 1, 0], [0, 1, 0], [0, 0, 1], [1, 0, 1], [1, 1, 1], [0, 1, 1]])
@@ -38,6 +38,53 @@ def _body_box(result) -> np.ndarray:
     return x0 + corners @ R.T
 
 
+def _checked_n(n) -> int:
+    if isinstance(n, bool) or not isinstance(n, (int, np.integer)) or n < 2:
+        raise InputError("n", f"must be an integer >= 2, got {n!r}")
+    return int(n)
+
+
+def _polylines(lines, n):
+    """Points, tension, segment cells and line numbers of lines with ``profile(n)``."""
+    n = _checked_n(n)
+    profiles = [line.profile(n) for line in lines]
+    if not profiles:
+        raise InputError("lines", "holds no line")
+    sizes = [len(xyz) for xyz, _ in profiles]
+    start = np.concatenate([[0], np.cumsum(sizes)[:-1]])
+    segments = np.concatenate(
+        [
+            np.column_stack([k + np.arange(m - 1), k + np.arange(1, m)])
+            for k, m in zip(start, sizes, strict=True)
+        ]
+    )
+    line_id = np.concatenate([np.full(m - 1, i) for i, m in enumerate(sizes)])
+    points = np.vstack([xyz for xyz, _ in profiles])
+    tension = np.concatenate([np.asarray(T, dtype=float) for _, T in profiles])
+    return [points], [tension], segments, line_id
+
+
+def lines_mesh(lines, n: int = 101) -> meshio.Mesh:
+    """Lines in 3-D (e.g. `skcable.cable.Line3D`, anything with ``profile(n)`` giving
+    ``(points (m, 3), tension (m,))``) as polylines: point data ``tension`` (N), cell data
+    ``line`` (the line's number)."""
+    points, tension, segments, line_id = _polylines(lines, n)
+    if not (np.isfinite(points[0]).all() and np.isfinite(tension[0]).all()):
+        raise InputError("lines", "hold non-finite coordinates or tensions")
+    return meshio.Mesh(
+        points[0], [("line", segments)], point_data={"tension": tension[0]}, cell_data={"line": [line_id]}
+    )
+
+
+def write_lines(lines, path, n: int = 101) -> Path:
+    """Write `lines_mesh` of ``lines`` to ``path`` (``.vtu`` or ``.vtk``), atomically."""
+    path = writable_file("path", path, (".vtu", ".vtk"))
+    mesh = lines_mesh(lines, n)
+    with atomic_path(path) as temp:
+        meshio.write(temp, mesh)
+    return path
+
+
 def mooring_mesh(result, n: int = 101) -> meshio.Mesh:
     """Lines, seabed patch and body of a `MooringEquilibrium` (see the module docstring).
 
@@ -48,22 +95,12 @@ def mooring_mesh(result, n: int = 101) -> meshio.Mesh:
     n : int
         Points per line, >= 2.
     """
-    if isinstance(n, bool) or not isinstance(n, (int, np.integer)) or n < 2:
-        raise InputError("n", f"must be an integer >= 2, got {n!r}")
-    points, tension, cells, part, line_id = [], [], [], [], []
-    count = 0
-    segments = []
-    for i, line in enumerate(result.lines):
-        xyz, T = line.profile(int(n))
-        points.append(xyz)
-        tension.append(T)
-        index = count + np.arange(len(xyz))
-        segments.append(np.column_stack([index[:-1], index[1:]]))
-        line_id.append(np.full(len(xyz) - 1, i))
-        count += len(xyz)
-    cells.append(("line", np.concatenate(segments)))
-    part.append(np.zeros(count - len(result.lines), dtype=int))
-    line_id = [np.concatenate(line_id)]
+    points, tension, segments, line_id = _polylines(result.lines, n)
+    count = len(points[0])
+    points, tension = list(points), list(tension)
+    cells = [("line", segments)]
+    part = [np.zeros(len(segments), dtype=int)]
+    line_id = [line_id]
     if getattr(result, "depth", None) is not None:
         corners = np.vstack([np.asarray(result.anchors)[:, :2], np.asarray(result.fairleads)[:, :2]])
         low, high = corners.min(axis=0), corners.max(axis=0)

@@ -17,14 +17,13 @@ import pytest
 from scipy.spatial.transform import Rotation
 
 from skcable import cable, cli
-from skcable.cable.lines._single_segment import _SingleSegment  # cable.Line at merge
 from skcable.errors import ConvergenceError, InputError
 
 ROOT = Path(__file__).resolve().parents[2]
 EXAMPLE = runpy.run_path(str(ROOT / "examples" / "spread_mooring.py"))
 
-CHAIN = _SingleSegment(850.0, 1000.0, 5e8, seabed=0.0, friction=0.4)
-FREE = _SingleSegment(400.0, 200.0, 1e8)  # no seabed: hangs free
+CHAIN = cable.Line([cable.Segment(850.0, 1000.0, 5e8)], seabed=0.0, friction=0.4)
+FREE = cable.Line([cable.Segment(400.0, 200.0, 1e8)])  # no seabed: hangs free
 
 
 def test_single_line_force_is_the_2d_solution_rotated():
@@ -152,7 +151,7 @@ def test_equilibrium_balances_the_forces_recomputed_from_the_lines():
     assert pushed.heel == pytest.approx(np.arccos(R[2, 2]), abs=1e-15)
     assert pushed.offset[0] > 0 and pushed.offset[1] > 0  # pushed along +x, +y
     table = pushed.tensions()
-    np.testing.assert_allclose(table["T_top"], [line.tension_at_fairlead for line in lines], rtol=1e-10)
+    np.testing.assert_allclose(table["T_upper"], [line.tension_at_fairlead for line in lines], rtol=1e-10)
     np.testing.assert_allclose(table["T_fairlead"], np.linalg.norm(forces, axis=1), rtol=1e-12)
 
 
@@ -202,7 +201,7 @@ def test_large_yaw_matches_moorpy():
 def test_point_body_equilibrium_and_stiffness():
     anchors = EXAMPLE["layout"]()[0]
     buoy = cable.PointBody(mass=2e4, volume=60.0, waterplane_area=30.0)
-    chain = _SingleSegment(850.0, 600.0, 3e8, seabed=0.0)
+    chain = cable.Line([cable.Segment(850.0, 600.0, 3e8)], seabed=0.0)
     system = cable.MooringSystem(buoy, [chain] * 3, anchors, depth=200.0)
     eq = system.equilibrium(force=(5e4, -2e4, 0.0))
     forces = eq.fairlead_forces.sum(axis=0) + [5e4, -2e4, 0.0]
@@ -229,7 +228,7 @@ def test_failures_are_loud():
     # one line and no hydrostatics: nothing holds the body's yaw about the line
     body = cable.RigidBody([[20.0, 0.0, -14.0]])
     single = cable.MooringSystem(
-        body, [_SingleSegment(850.0, 2456.82, 1.2326e9, seabed=0.0)], [[800.0, 0.0, -200.0]]
+        body, [cable.Line([cable.Segment(850.0, 2456.82, 1.2326e9)], seabed=0.0)], [[800.0, 0.0, -200.0]]
     )
     with pytest.raises(ConvergenceError, match="singular"):
         single.equilibrium()
@@ -279,21 +278,56 @@ def test_plot_of_line_profiles():
 
 
 def test_cli_line_as_json_equals_the_api(capsys):
-    args = ["line", "--span", "800", "--dh", "150", "--length", "850", "--w", "1000", "--EA", "5e8"]
-    status = cli.main([*args, "--seabed", "0", "--friction", "0.5", "--json"])
+    args = [
+        "line",
+        "--span",
+        "800",
+        "--dh",
+        "150",
+        "--length",
+        "300",
+        "250",
+        "300",
+        "--w",
+        "1000",
+        "400",
+        "1000",
+    ]
+    status = cli.main(
+        [*args, "--EA", "5e8", "--clump", "1", "2e4", "--seabed", "0", "--friction", "0.5", "--json"]
+    )
     out, err = capsys.readouterr()
     assert status == 0 and err == ""
     values = json.loads(out)
-    ref = cable.elastic_catenary(800.0, 150.0, 1000.0, 5e8, length=850.0, seabed=0.0, friction=0.5)
+    segments = [
+        cable.Segment(300.0, 1000.0, 5e8),
+        cable.Segment(250.0, 400.0, 5e8),
+        cable.Segment(300.0, 1000.0, 5e8),
+    ]
+    line = cable.Line(segments, [cable.ClumpWeight(1, 2e4)], seabed=0.0, friction=0.5)
+    ref = line.solve(800.0, 150.0)
     assert values["H"] == ref.H and values["H_A"] == ref.H_A and values["V_B"] == ref.V_B
     assert values["length_on_seabed"] == ref.length_on_seabed
+    assert values["segment_T_upper"] == ref.tensions()["T_upper"].tolist()
     assert [
         values[k] for k in ("k_H_span", "k_H_dh", "k_VB_span", "k_VB_dh")
     ] == ref.stiffness().ravel().tolist()
-    status = cli.main([*args, "--w", "-1", "--seabed", "0"])
-    out, err = capsys.readouterr()
-    assert status == cli.EXIT_USAGE and out == "" and err.startswith("skcable: error: --w:")
-    assert len(err.strip().splitlines()) == 1
+    # one segment: Jonkman's closed form (elastic_catenary), to round-off
+    one = ["line", "--span", "800", "--dh", "150", "--length", "850", "--w", "1000", "--EA", "5e8", "--json"]
+    assert cli.main([*one, "--seabed", "0", "--friction", "0.5"]) == 0
+    values = json.loads(capsys.readouterr().out)
+    closed = cable.elastic_catenary(800.0, 150.0, 1000.0, 5e8, length=850.0, seabed=0.0, friction=0.5)
+    for name in ("H", "H_A", "V_B", "length_on_seabed"):
+        assert values[name] == pytest.approx(getattr(closed, name), rel=1e-12)
+    for flags, flag in (
+        (["--w", "-1", "--seabed", "0"], "--w"),
+        (["--w", "1000", "1000"], "--w"),
+        (["--clump", "0.5", "10"], "--clump"),
+    ):
+        status = cli.main([*args, "--EA", "5e8", *flags])
+        out, err = capsys.readouterr()
+        assert status == cli.EXIT_USAGE and out == "" and err.startswith(f"skcable: error: {flag}:"), err
+        assert len(err.strip().splitlines()) == 1
 
 
 def test_cli_line_free_and_vtk(capsys, tmp_path):

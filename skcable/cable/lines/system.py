@@ -64,12 +64,11 @@ class MooringSystem:
     Examples
     --------
     >>> from skcable import cable
-    >>> from skcable.cable.lines._single_segment import _SingleSegment  # cable.Line at merge
     >>> import numpy as np
     >>> angles = np.radians([0.0, 120.0, 240.0])
     >>> anchors = np.column_stack([800 * np.cos(angles), 800 * np.sin(angles), np.full(3, -200.0)])
     >>> fairleads = np.column_stack([20 * np.cos(angles), 20 * np.sin(angles), np.full(3, -10.0)])
-    >>> chain = _SingleSegment(length=850.0, w=1000.0, EA=5e8, seabed=0.0)
+    >>> chain = cable.Line([cable.Segment(850.0, 1000.0, 5e8)], seabed=0.0)
     >>> system = cable.MooringSystem(cable.RigidBody(fairleads, waterplane_area=500.0), [chain] * 3, anchors)
     >>> eq = system.equilibrium(force=(1e5, 0.0, 0.0))
     >>> bool(eq.offset[0] > 0), bool(abs(eq.offset[1]) < 1e-6)
