@@ -102,8 +102,10 @@ def _solve(span, dh, w, EA, L0):
         for _ in range(30):  # backtrack: keep H > 0 and reduce the residual
             H_new = H + step * d_h
             H_safe = xp.maximum(H_new, 1e-300)
-            f_x, f_y, *jac = _closure(span, dh, w, EA, L0, H_safe, V_A + step * d_v)
-            new = xp.maximum(xp.abs(f_x), xp.abs(f_y)) / chord
+            # a trial step may overflow (H near 0): its non-finite residual fails `ok`
+            with np.errstate(over="ignore", invalid="ignore"):
+                f_x, f_y, *jac = _closure(span, dh, w, EA, L0, H_safe, V_A + step * d_v)
+                new = xp.maximum(xp.abs(f_x), xp.abs(f_y)) / chord
             ok = (H_new > 0) & (new < norm * (1.0 - 1e-4 * step) + 4 * _TOL)
             if np.all(ok):
                 break

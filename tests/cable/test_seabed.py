@@ -389,3 +389,13 @@ def test_stretched_length_is_the_integral_of_the_strain(seabed, friction):
         else 0
     )
     assert r.x_touchdown - r.x_landing == pytest.approx(ground, rel=1e-12, abs=1e-12)
+
+
+def test_tension_at_the_anchor_of_a_lifted_line_is_T_A():
+    # the line leaves the anchor upward (nothing grounded): T(0) carries the anchor's pull
+    # V_A, not the seabed's H_A; checked against hypot(H, V_A) and Irvine's free line
+    r = cable.elastic_catenary(np.array([700.0, 800.0]), 100.0, 800.0, 1e9, length=690.0, seabed=0.0)
+    free = cable.elastic_catenary(np.array([700.0, 800.0]), 100.0, 800.0, 1e9, length=690.0)
+    assert np.all(r.length_on_seabed == 0.0) and np.all(r.V_A < 0)
+    np.testing.assert_allclose(r.T_of_s(0.0), np.hypot(free.H, free.V_A), rtol=1e-14)
+    np.testing.assert_allclose(r.T_of_s(0.0), r.T_A, rtol=1e-14)

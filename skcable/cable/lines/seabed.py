@@ -308,9 +308,11 @@ class SeabedCatenary(CableSolution):
         s = self._arc("s", s)
         s1, L_B = self.length_to_seabed, self.length_on_seabed
         tv = self.w * np.maximum(s - s1 - L_B, 0.0) - self.suspended.V_A
-        hang = np.where(s <= s1, np.hypot(self.H, self.w * s - self._V1), np.hypot(self.H, tv))
+        hang = np.where((s <= s1) & (s1 > 0), np.hypot(self.H, self.w * s - self._V1), np.hypot(self.H, tv))
         ground = self._grounded_tension(np.clip(s - s1, 0.0, L_B))
-        return _out(np.where((s >= s1) & (s <= s1 + L_B), ground, hang))
+        # nothing grounded (L_B = 0): the point s1 belongs to the hanging line, whose
+        # tension there carries the anchor's vertical pull
+        return _out(np.where((s >= s1) & (s <= s1 + L_B) & (L_B > 0), ground, hang))
 
     def x_of_s(self, s):
         """Abscissa of the material point ``s`` (unstretched arc length from A)."""
