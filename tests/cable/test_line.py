@@ -400,3 +400,27 @@ def test_bad_inputs_name_the_argument(build, argument):
     with pytest.raises(InputError) as info:
         build()
     assert info.value.argument == argument
+
+
+@pytest.mark.parametrize(
+    ("span", "dh", "friction"), [(800.0, 150.0, 0.3), (500.0, 400.0, 0.0), (500.0, 400.0, 0.02)]
+)
+def test_line_against_the_seabed_bvp(span, dh, friction):
+    # an independent discretisation: the arc-length BVP on scikit-fem with unilateral nodal
+    # contact (primal-dual active set) converges to the closed form (as h^4 with the touchdown
+    # fitted and the clump suspended; about h^3 with the clump resting on the seabed)
+    segments = [(300.0, 1000.0, 5e8), (250.0, 400.0, 2e8), (300.0, 1000.0, 5e8)]
+    line = cable.Line(
+        [cable.Segment(*s) for s in segments], [cable.ClumpWeight(1, 2e4)], seabed=0.0, friction=friction
+    )
+    r = line.solve(span, dh)
+    errors = []
+    for n in (80, 160):
+        b = cable.solve_line_bvp(
+            span, dh, segments, seabed=0.0, friction=friction, point_loads=[(300.0, 2e4)], n_elements=n
+        )
+        errors.append(
+            max(abs(b.H - r.H) / r.T_B, abs(b.V_B - r.V_B) / r.T_B, abs(b.H_A - r.H_A) / r.T_B,
+                abs(b.length_on_seabed - r.length_on_seabed) / line.length)
+        )  # fmt: skip
+    assert errors[1] < 1e-6 and errors[0] / errors[1] > 6.0, errors
