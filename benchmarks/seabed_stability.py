@@ -36,9 +36,9 @@ import contextlib
 import csv
 import io
 import itertools
-from collections import Counter
 import sys
 import warnings
+from collections import Counter
 from pathlib import Path
 
 import mpmath as mp
