@@ -28,10 +28,11 @@ strand length being ``1/cos α_i``. ``alpha`` is the composite coefficient of a
 conductor of several materials, the stiffness-weighted mean (F. Kiessling, P. Nefzger,
 J.F. Nolasco, U. Kaintzyk, "Overhead Power Lines", Springer, 2003, §13; IEC/TR 61597:1995,
 "Overhead electrical conductors – Calculation methods for stranded bare conductors"),
-weighted here with the same lay factors as ``EA``. ``rts`` is the axial force at which
-the first intact wire reaches its material's rupture strain in straight tension,
-``Σ A_i cos α_i σ_i(cos²α_i ε*)`` at ``ε* = min ε_rupture,i / cos²α_i`` — of the wire
-laws, not a catalogue's rated strength.
+weighted here with the same lay factors as ``EA``. ``rupture_force`` is the axial force
+at which the first intact wire reaches its material's rupture strain in straight tension,
+``Σ A_i cos α_i σ_i(cos²α_i ε*)`` at ``ε* = min ε_rupture,i / cos²α_i`` — a figure of the
+wire laws, not a rated strength: ``rts`` (used by ``T_max_per_rts``) is only ever the value
+you give, from the conductor's standard or catalogue.
 
 Ice and wind: a radial ice thickness b on a conductor of diameter d weighs
 :math:`w_\text{ice} = \rho_\text{ice}\,g\,\pi\,b\,(d + b)` per unit length (the
@@ -84,9 +85,13 @@ class Conductor:
     diameter : float
         Outer diameter (m), > 0: the ice and wind loads act on it.
     rts : float or None
-        Rated tensile strength (N), > 0, or None when unknown.
+        Rated tensile strength (N), > 0, from the conductor's standard or catalogue; None
+        when unknown.
     name : str
         Label.
+    rupture_force : float or None
+        Axial force (N) at which the first wire breaks in straight tension, from the wire
+        laws (`Conductor.from_strand` sets it); not a rated strength.
 
     Notes
     -----
@@ -102,6 +107,7 @@ class Conductor:
     rts: float | None = None
     name: str = ""
     strand: object = None
+    rupture_force: float | None = None
 
     def __post_init__(self):
         values = dict(
@@ -110,6 +116,9 @@ class Conductor:
             alpha=scalar("alpha", self.alpha),
             diameter=_positive_scalar("diameter", self.diameter),
             rts=None if self.rts is None else _positive_scalar("rts", self.rts),
+            rupture_force=None
+            if self.rupture_force is None
+            else _positive_scalar("rupture_force", self.rupture_force),
         )
         if not isinstance(self.name, str):
             raise InputError("name", f"must be a str, got {self.name!r}")
@@ -126,7 +135,14 @@ class Conductor:
     # --- from a strand ----------------------------------------------------------------
     @classmethod
     def from_strand(
-        cls, strand, *, damage=None, EA=None, g: float = STANDARD_GRAVITY, name: str | None = None
+        cls,
+        strand,
+        *,
+        damage=None,
+        EA=None,
+        rts=None,
+        g: float = STANDARD_GRAVITY,
+        name: str | None = None,
     ):
         """The conductor of a strand (see the module text for the formulas and their sources).
 
@@ -143,8 +159,12 @@ class Conductor:
             Axial stiffness (N) to use instead of the section's, e.g. the secant
             ``K_Leq`` of a finite-element capacity curve of the damaged strand
             (``StrandModel(strand, length).capacity_curve().K_Leq``) for a span where the
-            broken wires' eccentric bending matters; the weight, ``alpha`` and ``rts``
-            still come from the strand.
+            broken wires' eccentric bending matters; the weight and ``alpha`` still come
+            from the strand.
+        rts : float, optional
+            Rated tensile strength (N) from the conductor's standard or catalogue (of the
+            intact conductor, or reduced for the broken wires as your standard says); None
+            (default) leaves it unknown. It is never derived from the wire laws.
         g : float
             Acceleration of gravity (m/s²), > 0; standard gravity by default.
         name : str, optional
@@ -154,8 +174,9 @@ class Conductor:
         -------
         Conductor
             ``EA`` (N) of the intact wires' section, ``w`` (N/m) of every wire, ``alpha``
-            (1/K) the stiffness-weighted mean, ``diameter`` (m), ``rts`` (N) the axial force
-            at the first wire's rupture; ``strand`` the (damaged) strand.
+            (1/K) the stiffness-weighted mean, ``diameter`` (m), ``rts`` as given,
+            ``rupture_force`` (N) the axial force at the first wire's rupture in straight
+            tension (wire laws); ``strand`` the (damaged) strand.
 
         Raises
         ------
@@ -199,16 +220,17 @@ class Conductor:
         stiffness = np.where(wires.intact, materials.take("E_e") * wires.area * cos**3, 0.0)
         alpha = float(stiffness @ materials.take("alpha") / np.sum(stiffness))
         first = _first_wire_strain(strand, "eps_rupture")
-        rts = float(axial_force(strand, first))
+        rupture_force = float(axial_force(strand, first))
         label = strand.name if name is None else name
         return cls(
             EA=section.EA if EA is None else _positive_scalar("EA", EA),
             w=weight,
             alpha=alpha,
             diameter=strand.diameter,
-            rts=rts,
+            rts=None if rts is None else _positive_scalar("rts", rts),
             name=label,
             strand=strand,
+            rupture_force=rupture_force,
         )
 
     # --- loads ------------------------------------------------------------------------

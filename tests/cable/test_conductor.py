@@ -35,7 +35,8 @@ def test_from_a_one_material_strand_the_closed_forms():
     rts = A * _sigma_beyond_blend(STEEL, eps) + 6 * A * cos(alpha) * _sigma_beyond_blend(
         STEEL, cos(alpha) ** 2 * eps
     )
-    assert c.rts == pytest.approx(rts, rel=1e-12)
+    assert c.rupture_force == pytest.approx(rts, rel=1e-12)
+    assert c.rts is None  # a rated strength is never derived from the wire laws
 
 
 @pytest.mark.parametrize(
@@ -63,18 +64,21 @@ def test_acsr_alpha_is_the_stiffness_weighted_mean_and_damage_removes_outer_alum
     assert broken.EA == pytest.approx(ks + ka - lost, rel=1e-12)
     assert broken.alpha == pytest.approx((ks * 11.5e-6 + (ka - lost) * 23e-6) / (ks + ka - lost), rel=1e-12)
     assert broken.w == intact.w  # the broken wires still hang in the span
-    assert broken.rts < intact.rts
+    assert broken.rupture_force < intact.rupture_force
     # damage as a list of wires: the same two outer wires in the preset's numbering (no rotation)
     listed = cable.Conductor.from_strand(drake, damage=[(3, 0), (3, 1)])
     assert listed.EA == pytest.approx(broken.EA, rel=1e-12)
     # a stiffness from elsewhere (e.g. a capacity curve's K_Leq) replaces EA only
     given = cable.Conductor.from_strand(drake, damage=2, EA=0.9 * broken.EA)
-    assert (given.EA, given.w, given.alpha, given.rts) == (
+    assert (given.EA, given.w, given.alpha, given.rupture_force) == (
         0.9 * broken.EA,
         broken.w,
         broken.alpha,
-        broken.rts,
+        broken.rupture_force,
     )
+    # ASTM B232: Drake's rated strength 31 200 lbf = 138.8 kN, given, not derived
+    rated = cable.Conductor.from_strand(drake, rts=138.8e3)
+    assert rated.rts == 138.8e3 and rated.rupture_force == intact.rupture_force
 
 
 def test_ice_and_wind_loads():
@@ -144,7 +148,10 @@ def test_iced_and_windy_state_is_the_resultant_load_in_the_cable_plane():
 
 
 def test_sag_tension_table_rows_are_the_change_of_state_results():
-    c = cable.Conductor.from_strand(strand.preset("acsr-drake"))
+    c = cable.Conductor.from_strand(strand.preset("acsr-drake"), rts=138.8e3)
+    assert "T_max_per_rts" not in cable.Conductor.from_strand(strand.preset("acsr-drake")).sag_tension_table(
+        SPAN, t0=T0, H0=H0, temperatures=[15.0]
+    )
     cases = {"bare": (0.0, 0.0), "ice": (0.0125, 0.0), "wind": (0.0, 380.0)}
     df = c.sag_tension_table(SPAN, t0=T0, H0=H0, temperatures=[-5.0, 15.0, 75.0], load_cases=cases)
     for name, (ice, p) in cases.items():
