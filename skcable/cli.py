@@ -819,7 +819,7 @@ def _line_parser(sub, command) -> None:
         type=_finite,
         nargs="+",
         required=True,
-        help="axial stiffness [N], > 0: one, or one per segment",
+        help="axial stiffness [N], > 0: one value, or one per segment (required)",
     )
     p.add_argument(
         "--clump",

@@ -41,7 +41,7 @@ suspension string,
 
 i.e. :math:`\tan\varphi = \Delta H / (V + W/2)` with :math:`V` the weight of
 conductor the clamp carries (the string's own weight acting at its middle).
-The swings :math:`\delta` are found by Newton's method with the analytic
+The swings :math:`\delta` are found by Newton's method (`skcable.fe.newton`) with the analytic
 Jacobian (each span's fairlead stiffness, `ElasticCatenary.stiffness`, by the
 implicit function theorem), with backtracking that keeps
 :math:`|\delta| < \lambda`, to a balance of :math:`10^{-11}` of the largest
@@ -60,6 +60,7 @@ import numpy as np
 from skcable._checks import broadcast, nonnegative, positive, real, scalar
 from skcable.cable._state import _reference_length, _thermal_factor, change_of_state, thermal_catenary
 from skcable.errors import ConvergenceError, InputError
+from skcable.fe import newton
 
 __all__ = ["ruling_span", "TensionSection", "tension_section"]
 
@@ -224,39 +225,40 @@ def _round_off(eqs: _Section, sol) -> float:
 
 
 def _solve_state(eqs: _Section, delta0):
-    delta = np.where(eqs.free, delta0, 0.0)
+    """The swings of one state by `skcable.fe.newton`: a trial whose spans cannot be solved
+    is rejected, and a stop within four times the spans' round-off (`_round_off`) is kept."""
     free = np.flatnonzero(eqs.free)
-    R, sol, J = eqs.residual(delta)
-    history = [float(np.max(np.abs(R[free]), initial=0.0)) / float(np.max(sol.H))]
-    for iteration in range(_MAX_ITER):
-        if history[-1] < _TOL:
-            return delta, history[-1], sol, iteration
-        step = np.zeros_like(delta)
-        step[free] = -np.linalg.solve(J[np.ix_(free, free)], R[free])
-        if not np.all(np.isfinite(step)):
-            raise ConvergenceError("tension_section: singular Jacobian of the strings' balance", history)
-        t = 1.0
-        for _ in range(40):
-            trial = delta + t * step
-            if np.all(np.abs(trial[free]) < eqs.lam[free]):
-                try:
-                    R_new, sol_new, J_new = eqs.residual(trial)
-                except (ConvergenceError, InputError):
-                    R_new = None
-                if R_new is not None:
-                    norm = float(np.max(np.abs(R_new[free]), initial=0.0)) / float(np.max(sol_new.H))
-                    if norm < (1.0 - 1e-4 * t) * history[-1] or norm < _TOL:
-                        break
-            t *= 0.5
-        else:
-            if history[-1] <= 4.0 * _round_off(eqs, sol):  # stalled at the spans' round-off
-                return delta, history[-1], sol, iteration
-            raise ConvergenceError("tension_section: the line search found no descent", history)
-        delta, R, sol, J = trial, R_new, sol_new, J_new
-        history.append(norm)
-    if history[-1] < _TOL:
-        return delta, history[-1], sol, _MAX_ITER
-    raise ConvergenceError("tension_section: Newton on the strings' balance did not converge", history)
+
+    def norm(state):
+        R, sol, _ = state
+        return float(np.max(np.abs(R[free]), initial=0.0)) / float(np.max(sol.H))
+
+    def increment(state):
+        R, _, J = state
+        step, J_free = np.zeros_like(R), J[np.ix_(free, free)]
+        with np.errstate(all="ignore"):
+            step[free] = -np.linalg.lstsq(J_free, R[free], rcond=None)[0]
+        if not np.all(np.isfinite(step)) or np.linalg.cond(J_free) > 1e14:
+            raise ConvergenceError(
+                "tension_section: singular Jacobian of the strings' balance", [norm(state)]
+            )
+        return step
+
+    result = newton(
+        eqs.residual,
+        np.where(eqs.free, delta0, 0.0),
+        norm=norm,
+        increment=increment,
+        tol=_TOL,
+        max_iter=_MAX_ITER,
+        admissible=lambda delta: bool(np.all(np.abs(delta[free]) < eqs.lam[free])),
+        max_halvings=39,
+        stagnation_window=_MAX_ITER,  # no stagnation rule: the floor below decides
+        name="tension_section",
+        rejects=(ConvergenceError, InputError),
+        floor=lambda state: 4.0 * _round_off(eqs, state[1]),
+    )
+    return result.x, result.history[-1], result.state[1], result.iterations
 
 
 def tension_section(

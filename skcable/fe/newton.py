@@ -21,6 +21,14 @@ earlier, or two iterations earlier once it is below 1e-12, the round-off floor o
 residual relative to its force scale (a converging Newton gains far more than that per iteration; one
 that crawls is either at the round-off floor of a near-singular tangent or
 off the path, and more iterations only cost assemblies).
+
+Two options serve problems whose residual is itself the output of an inner
+solve (a catenary's closure inside a tension section, say): ``rejects`` lists
+the exceptions a trial's ``assemble`` may raise, such a trial being rejected
+like an inadmissible one (the step is halved); ``floor(state)`` is the
+round-off floor of ``norm`` that the inner solves put on it, and a Newton that
+stops (no descent, stagnation) with ``norm <= floor`` returns its iterate with
+``NewtonResult.at_floor`` set instead of raising.
 """
 
 from __future__ import annotations
@@ -52,6 +60,9 @@ class NewtonResult:
         Calls of ``assemble`` (line-search trials included).
     shifted : bool
         [`minimize`][skcable.fe.newton.minimize] only: the tangent needed a shift somewhere.
+    at_floor : bool
+        [`newton`][skcable.fe.newton.newton] with ``floor`` only: it stopped above ``tol``
+        at the round-off floor ``floor(state)`` of the residual.
     """
 
     x: np.ndarray
@@ -59,6 +70,7 @@ class NewtonResult:
     history: list = field(default_factory=list)
     assemblies: int = 0
     shifted: bool = False
+    at_floor: bool = False
 
     @property
     def iterations(self) -> int:
@@ -81,6 +93,8 @@ def newton(
     stagnation_factor: float = 0.5,
     name: str = "newton",
     state=None,
+    rejects: tuple[type[Exception], ...] = (),
+    floor: Callable[[Any], float] | None = None,
 ) -> NewtonResult:
     """Solve ``R(x) = 0`` from ``x0``; see the module docstring.
 
@@ -104,13 +118,24 @@ def newton(
         Prefix of error messages.
     state : object, optional
         ``assemble(x0)`` if the caller has it already.
+    rejects : tuple of exception types
+        Raised by ``assemble`` at a trial iterate: the trial is rejected (the step halved).
+    floor : callable, optional
+        ``floor(state)``: the round-off floor of ``norm``; a stop at or below it returns.
 
     Raises
     ------
     ConvergenceError
-        No descent, stagnation, or ``max_iter`` reached; ``history`` holds ``norm`` per iteration.
+        No descent, stagnation, or ``max_iter`` reached (above ``floor``, when given);
+        ``history`` holds ``norm`` per iteration.
     """
     merit = norm if merit is None else merit
+
+    def stop(message):
+        if floor is not None and history[-1] <= floor(state):
+            return NewtonResult(x, state, history, assemblies, at_floor=True)
+        raise ConvergenceError(f"{name}: {message}", history)
+
     update = (lambda x, dx, t: x + t * dx) if update is None else update
     x = np.array(x0, dtype=float)
     state = assemble(x) if state is None else state
@@ -126,28 +151,30 @@ def newton(
             break
         back = len(history) - 1 - stagnation_window
         # at the round-off floor of a relative residual (below 1e-12) two iterations are enough to tell
-        floor = current < 1e-12 and len(history) > 2 and current > stagnation_factor * history[-3]
-        if floor or (back >= 0 and current > stagnation_factor * history[back]):
-            raise ConvergenceError(
-                f"{name}: the residual stagnates (less than a factor {1 / stagnation_factor:g} "
-                f"in {stagnation_window} iterations)",
-                history,
+        at_round_off = current < 1e-12 and len(history) > 2 and current > stagnation_factor * history[-3]
+        if at_round_off or (back >= 0 and current > stagnation_factor * history[back]):
+            return stop(
+                f"the residual stagnates (less than a factor {1 / stagnation_factor:g} "
+                f"in {stagnation_window} iterations)"
             )
         dx = increment(state)
         base, t = merit(state), 1.0
         for _ in range(max_halvings + 1):
             trial_x = update(x, dx, t)
             if admissible is None or admissible(trial_x):
-                trial = assemble(trial_x)
+                try:
+                    trial = assemble(trial_x)
+                except rejects:
+                    trial = None
                 assemblies += 1
-                if merit(trial) < (1.0 - 1e-4 * t) * base or norm(trial) < tol:
+                if trial is not None and (merit(trial) < (1.0 - 1e-4 * t) * base or norm(trial) < tol):
                     break
             t *= 0.5
         else:
-            raise ConvergenceError(f"{name}: line search found no descent along the Newton step", history)
+            return stop("line search found no descent along the Newton step")
         x, state = trial_x, trial
         history.append(norm(state))
-    raise ConvergenceError(f"{name}: no convergence to {tol:g} in {max_iter} iterations", history)
+    return stop(f"no convergence to {tol:g} in {max_iter} iterations")
 
 
 def minimize(
