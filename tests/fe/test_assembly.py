@@ -166,3 +166,50 @@ def test_minimize_passes_a_fold_that_newton_cannot():
     )
     root = max(np.roots([1, 0, -1, -0.3]).real)
     assert result.x[0] == pytest.approx(root, rel=1e-12) and result.shifted
+
+
+def test_newton_rejects_failed_trials_and_stops_at_a_given_round_off_floor():
+
+    # R(x) = x³ - 8 from x0 = 1: the full first step lands at x = 10/3; an inner solve that
+    # fails beyond x = 2.5 (raising InputError) makes that trial rejected, the step halved
+    calls = []
+
+    def assemble(x):
+        calls.append(float(x[0]))
+        if x[0] > 2.5:
+            raise InputError("x", "beyond the inner solve's range")
+        return x**3 - 8.0
+
+    result = newton(
+        assemble,
+        np.array([1.0]),
+        norm=lambda r: abs(float(r[0])) / 8.0,
+        increment=lambda r: -r / (3.0 * (np.cbrt(r + 8.0)) ** 2),
+        tol=1e-14,
+        rejects=(InputError,),
+    )
+    assert result.x[0] == pytest.approx(2.0, rel=1e-14) and not result.at_floor
+    assert calls[1] == pytest.approx(1.0 + 7.0 / 3.0) and calls[2] == pytest.approx(1.0 + 7.0 / 6.0)
+    with pytest.raises(InputError):  # not listed in rejects: it propagates
+        newton(
+            assemble,
+            np.array([1.0]),
+            norm=lambda r: abs(float(r[0])),
+            increment=lambda r: -r / 3.0,
+            tol=1e-14,
+        )
+
+    # a residual that cannot fall below 1e-9 (an inner solve's round-off): stops loudly, unless
+    # that floor is given, when the stop at it returns, marked
+    def noisy(x):
+        return x - 2.0
+
+    def floored(r):  # the measure cannot tell residuals below 1e-9
+        return max(abs(float(r[0])), 1e-9)
+
+    with pytest.raises(ConvergenceError):
+        newton(noisy, np.array([0.0]), norm=floored, increment=lambda r: -r, tol=1e-14)
+    result = newton(
+        noisy, np.array([0.0]), norm=floored, increment=lambda r: -r, tol=1e-14, floor=lambda r: 2e-9
+    )
+    assert result.at_floor and result.x[0] == 2.0
