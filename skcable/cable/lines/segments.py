@@ -40,11 +40,13 @@ stiffness is the inverse of that Jacobian (implicit function theorem).
 
 from __future__ import annotations
 
+import math
 from functools import cached_property
 
 import numpy as np
 
 from skcable._checks import nonnegative, positive, real, require, scalar
+from skcable._xp import scalar_math
 from skcable.cable._elastic import inverse_2x2
 from skcable.cable._roots import find_root
 from skcable.cable._special import asinh_diff
@@ -130,7 +132,7 @@ class _State:
     """The closed form evaluated at ``(H, V)``: closure, Jacobian and the pieces."""
 
     __slots__ = (
-        "H", "V", "k", "a", "V_top", "V_bot", "Vb", "L_s", "X", "Z", "jac",
+        "H", "V", "k", "a", "V_top", "V_bot", "Vb", "L_s", "Tt", "Tb", "dx", "dy", "X", "Z", "jac",
         "l_g", "T_g", "m_g", "R", "contact", "H_A",
     )  # fmt: skip
 
@@ -186,6 +188,15 @@ class Line:
         self._L = np.array([s.length for s in segments])
         self._w = np.array([s.w for s in segments])
         self._EA = np.array([s.EA for s in segments])
+        # the same as Python floats, for the scalar parts of the closed form
+        self._Lf = [float(s.length) for s in segments]
+        self._wf = [float(s.w) for s in segments]
+        self._EAf = [float(s.EA) for s in segments]
+        self._wL = self._w * self._L
+        self._no_ground = np.zeros(1)
+        self._no_ground.flags.writeable = False
+        self._s0 = np.concatenate([[0.0], np.cumsum(self._L)])
+        self._s0.flags.writeable = False
         self.joint_forces = P
         """Downward point force at each joint (N), ``n + 1`` values (buoys negative)."""
         # load between the top of segment i and the fairlead (joint n excluded)
@@ -211,13 +222,19 @@ class Line:
 
     # -- the closed form ----------------------------------------------------------------
     def _state(self, H, V):
-        """Closure ``(X, Z)`` and its Jacobian in ``(H, V)`` at fairlead forces ``(H, V)``."""
+        """Closure ``(X, Z)`` and its Jacobian in ``(H, V)`` at fairlead forces ``(H, V)``.
+
+        The suspended pieces are evaluated with NumPy over the segments, or with `math`
+        when a single piece hangs (`skcable._xp`: one formula, two back ends); the
+        grounded pieces are walked from the touchdown to the anchor with Python floats
+        (the tension at each piece's lower end depends on the piece above it)."""
         L, w, EA, P, mu = self._L, self._w, self._EA, self.joint_forces, self.friction
         st = _State()
         st.H, st.V = H, V
         V_top = V - self._Q_top
-        V_bot = V_top - w * L
+        V_bot = V_top - self._wL
         st.V_top, st.V_bot = V_top, V_bot
+        n = len(L)
         contact = self._contact and V_bot[0] < 0
         if contact:
             up = np.flatnonzero(V_top > 0)
@@ -227,20 +244,26 @@ class Line:
         else:
             k = 0
         st.contact, st.k = contact, k
-        # suspended pieces k .. n-1
-        Vt = V_top[k:]
-        Vb = V_bot[k:].copy()
-        dVb = np.ones_like(Vb)
+        # suspended pieces k .. n-1; a tangent touchdown inside piece k (contact, V_bot < 0)
+        # starts it at V = 0, a length a = -V_bot/w from its lower end
         a = 0.0
-        if contact and Vb[0] < 0:
-            a = -Vb[0] / w[k]
-            Vb[0], dVb[0] = 0.0, 0.0
-        st.a, st.Vb = a, Vb
-        Ls = L[k:].copy()
-        Ls[0] -= a
-        st.L_s = Ls
-        ws, EAs = w[k:], EA[k:]
-        Tt, Tb = np.hypot(H, Vt), np.hypot(H, Vb)
+        Vb_k = float(V_bot[k])
+        touchdown = contact and Vb_k < 0
+        if touchdown:
+            a = -Vb_k / self._wf[k]
+        st.a = a
+        if k == n - 1:  # one suspended piece: Python floats
+            xp = scalar_math
+            Vt, Vb, Ls = float(V_top[k]), (0.0 if touchdown else Vb_k), self._Lf[k] - a
+            ws, EAs, dVb = self._wf[k], self._EAf[k], (0.0 if touchdown else 1.0)
+        else:
+            xp = np
+            Vt, Vb, Ls = V_top[k:], V_bot[k:].copy(), L[k:].copy()
+            ws, EAs, dVb = w[k:], EA[k:], np.ones(n - k)
+            if touchdown:
+                Vb[0], dVb[0] = 0.0, 0.0
+                Ls[0] -= a
+        Tt, Tb = xp.hypot(H, Vt), xp.hypot(H, Vb)
         ad = asinh_diff(Vt / H, Vb / H)
         dx = H * Ls / EAs + H / ws * ad
         dy = Ls * (Vt + Vb) / (2.0 * EAs) + (Vt - Vb) * (Vt + Vb) / ((Tt + Tb) * ws)
@@ -248,42 +271,53 @@ class Line:
         x_v = H / ws * (1.0 / EAs + 1.0 / Tt) - dVb * H / ws * (1.0 / EAs + 1.0 / Tb)
         y_h = H * (Tb - Tt) / (Tt * Tb * ws)
         y_v = Vt * (1.0 / Tt + 1.0 / EAs) / ws - dVb * Vb * (1.0 / Tb + 1.0 / EAs) / ws
-        X, Z = dx.sum(), dy.sum()
-        J = np.array([[x_h.sum(), x_v.sum()], [y_h.sum(), y_v.sum()]])
-        # grounded pieces k, k-1, .. 0 from the touchdown towards the anchor
-        l_g = np.zeros(k + 1)
-        T_g = np.zeros(k + 1)  # tension at each grounded piece's upper end
-        R = np.zeros(k + 1)  # seabed reaction at joints 1..k (index j)
+        if xp is np:
+            X, Z = float(dx.sum()), float(dy.sum())
+            jxh, jxv, jzh, jzv = float(x_h.sum()), float(x_v.sum()), float(y_h.sum()), float(y_v.sum())
+        else:
+            X, Z, jxh, jxv, jzh, jzv = dx, dy, x_h, x_v, y_h, y_v
+        st.Vb, st.L_s, st.Tt, st.Tb, st.dx, st.dy = Vb, Ls, Tt, Tb, dx, dy
+        # grounded pieces k, k-1, .. 0 from the touchdown towards the anchor; T and its
+        # derivatives (dT_h, dT_v) in (H, V) at the upper end of each piece
         if contact:
-            l_g[:k] = L[:k]
-            l_g[k] = a
-            R[1:] = P[1 : k + 1]
-            R[k] = P[k] - max(V_bot[k], 0.0) if k > 0 else 0.0
-            T, dT = H, np.array([1.0, 0.0])
+            Lf, wf, EAf = self._Lf, self._wf, self._EAf
+            l_g = [*Lf[:k], a]
+            T_g = [0.0] * (k + 1)  # tension at each grounded piece's upper end
+            R = [0.0, *(float(p) for p in P[1 : k + 1])]  # seabed reaction at joints 1..k (index j)
+            vk = float(V_bot[k])
+            if k > 0:
+                R[k] = float(P[k]) - max(vk, 0.0)
+            T, dT_h, dT_v = H, 1.0, 0.0
             for i in range(k, -1, -1):
                 if i < k:  # the joint above piece i (joint i+1)
-                    dR = np.array([0.0, -1.0]) if (i + 1 == k and V_bot[k] > 0) else np.zeros(2)
                     Rj = R[i + 1]
-                    T = T - mu * max(Rj, 0.0)
-                    dT = dT - (mu * dR if Rj > 0 else 0.0)
+                    if Rj > 0:
+                        T = T - mu * Rj
+                        if i + 1 == k and vk > 0:  # dR/dV = -1
+                            dT_v = dT_v + mu
                     if T <= 0:
-                        T, dT = 0.0, np.zeros(2)
+                        T, dT_h, dT_v = 0.0, 0.0, 0.0
                 T_g[i] = T
                 l = l_g[i]
-                dl = np.array([0.0, -1.0 / w[k]]) if (i == k and a > 0) else np.zeros(2)
-                m = mu * w[i]
+                dl_v = -1.0 / wf[k] if (i == k and a > 0) else 0.0
+                m = mu * wf[i]
                 if m == 0 or T - m * l > 0:
-                    X += l + (T * l - 0.5 * m * l * l) / EA[i]
-                    J[0] += dl + (dT * l + T * dl - m * l * dl) / EA[i]
-                    T, dT = T - m * l, dT - m * dl
+                    X += l + (T * l - 0.5 * m * l * l) / EAf[i]
+                    jxh += dT_h * l / EAf[i]
+                    jxv += dl_v + (dT_v * l + T * dl_v - m * l * dl_v) / EAf[i]
+                    T, dT_v = T - m * l, dT_v - m * dl_v
                 else:
-                    X += l + 0.5 * T * T / (m * EA[i])
-                    J[0] += dl + T * dT / (m * EA[i])
-                    T, dT = 0.0, np.zeros(2)
-        st.l_g, st.T_g, st.R = l_g, T_g, R
+                    X += l + 0.5 * T * T / (m * EAf[i])
+                    jxh += T * dT_h / (m * EAf[i])
+                    jxv += dl_v + T * dT_v / (m * EAf[i])
+                    T, dT_h, dT_v = 0.0, 0.0, 0.0
+            st.l_g, st.T_g, st.R = np.array(l_g), np.array(T_g), np.array(R)
+            st.H_A = T
+        else:
+            st.l_g, st.T_g, st.R = self._no_ground, self._no_ground, self._no_ground
+            st.H_A = H
         st.m_g = mu * w[: k + 1]
-        st.H_A = T if contact else H
-        st.X, st.Z, st.jac = X, Z, J
+        st.X, st.Z, st.jac = X, Z, (jxh, jxv, jzh, jzv)
         return st
 
     def _height_of_v(self, H, dh):
@@ -322,7 +356,11 @@ class Line:
         return float(ref.H), float(ref.V_B)
 
     def _newton(self, span, dh, H, V, chord, iterations):
-        """Newton's method with the analytic Jacobian and backtracking on ``max|residual|``."""
+        """Newton's method with the analytic Jacobian and backtracking on ``max|residual|``.
+
+        Works on Python floats: the 2x2 step by Cramer's rule (a singular or non-finite
+        step ends the iteration; the caller checks the residual reached)."""
+        H, V = float(H), float(V)
         st = self._state(H, V)
         if st is None:
             return None, np.inf, []
@@ -331,17 +369,22 @@ class Line:
         for _ in range(iterations):
             if norm < _TOL:
                 break
-            with np.errstate(all="ignore"):
-                step = np.linalg.solve(st.jac, -np.array([st.X - span, st.Z - dh]))
-            if not np.all(np.isfinite(step)):
+            j11, j12, j21, j22 = st.jac
+            r1, r2 = st.X - span, st.Z - dh
+            det = j11 * j22 - j12 * j21
+            if not (det != 0.0 and math.isfinite(det)):
+                break
+            step_H = -(r1 * j22 - r2 * j12) / det
+            step_V = -(j11 * r2 - j21 * r1) / det
+            if not (math.isfinite(step_H) and math.isfinite(step_V)):
                 break
             t = 1.0
             for _ in range(30):
-                H_new, V_new = H + t * step[0], V + t * step[1]
+                H_new, V_new = H + t * step_H, V + t * step_V
                 new = self._state(H_new, V_new) if H_new > 0 else None
                 if new is not None:
                     new_norm = max(abs(new.X - span), abs(new.Z - dh)) / chord
-                    if np.isfinite(new_norm) and new_norm < norm:
+                    if new_norm < norm:  # False for NaN
                         break
                 t *= 0.5
             else:
@@ -375,7 +418,7 @@ class Line:
         H, hist = find_root(x_of_h, H_lo, H_hi, what="Line.solve, H", xtol=1e-10 * H_hi)
         return H, self._height_of_v(H, dh), hist
 
-    def solve(self, span, dh):
+    def solve(self, span, dh, start=None):
         """Static equilibrium with A at (0, 0) and B at (span, dh).
 
         Parameters
@@ -384,6 +427,16 @@ class Line:
             Horizontal distance A→B (m), > 0.
         dh : float
             Height of B above A (m); above the seabed when one is given.
+        start : LineSolution or (float, float), optional
+            A warm start: a previous solution of this line (typically at a nearby
+            ``(span, dh)``, as in the Newton iterations of a moored body), or the pair
+            ``(H, V_B)`` (N, ``H > 0``). Newton's method starts from its fairlead forces
+            instead of from the uniform line of the same length, weight and compliance.
+            If it does not converge from there, the cold path runs (Newton from the
+            uniform line, then nested bracketing). This is no fallback of results:
+            the closure ``X(H, V) = span``, ``Z(H, V) = dh`` has one root, every path
+            polishes it to a relative residual below 1e-13 and the solution is
+            checked the same way, so warm and cold solutions agree to round-off.
 
         Returns
         -------
@@ -396,8 +449,10 @@ class Line:
             long that its slack lies in a heap on the seabed (``H = 0``); ``attachments``
             when a buoy would rest on the grounded part or the suspended line would dip
             to the seabed again (a second touchdown: solve it with `cable.solve_bvp`);
-            ``seabed`` when the line would touch a seabed below the anchor. An elastic
-            line always reaches B by stretching, so a short line is not an error.
+            ``seabed`` when the line would touch a seabed below the anchor; ``start``
+            when it is neither a solution of this line nor a pair ``(H, V_B)`` of
+            finite numbers with ``H > 0``. An elastic line always reaches B by
+            stretching, so a short line is not an error.
         ConvergenceError
             Bracketing or Newton failed; carries the residual history.
         """
@@ -405,11 +460,15 @@ class Line:
         dh = scalar("dh", real("dh", dh))
         if self.seabed is not None:
             require("dh", dh > self.seabed, "must put B above the seabed", dh)
-        chord = float(np.hypot(span, dh))
+        chord = math.hypot(span, dh)
         st, norm, history = None, np.inf, []
-        guess = self._guess(span, dh)
-        if guess is not None:  # Newton from the equivalent uniform line
-            st, norm, history = self._newton(span, dh, *guess, chord, 40)
+        if start is not None:  # Newton from the previous solution
+            st, norm, history = self._newton(span, dh, *self._start(start), chord, 40)
+        if not norm < 1e-11:  # Newton from the equivalent uniform line
+            guess = self._guess(span, dh)
+            if guess is not None:
+                st, norm, more = self._newton(span, dh, *guess, chord, 40)
+                history = [*history, *more]
         if not norm < 1e-11:  # nested bracketing, then Newton polish
             H, V, hist = self._bracketed(span, dh)
             st, norm, more = self._newton(span, dh, H, V, chord, 20)
@@ -419,6 +478,22 @@ class Line:
         solution = LineSolution(self, span, dh, st)
         solution._validate()
         return solution
+
+    def _start(self, start):
+        """``(H, V)`` (fairlead forces, ``V`` below the fairlead's joint) of a warm start."""
+        if isinstance(start, LineSolution):
+            if start.line is not self:
+                raise InputError("start", "is a solution of another line: give one of this line or (H, V_B)")
+            return start._st.H, start._st.V
+        try:
+            H, V_B = start
+        except (TypeError, ValueError):
+            raise InputError(
+                "start", f"must be a LineSolution of this line or a pair (H, V_B), got {start!r}"
+            ) from None
+        H = scalar("start", positive("start", H))
+        V_B = scalar("start", real("start", V_B))
+        return H, V_B - float(self.joint_forces[-1])
 
 
 class LineSolution:
@@ -451,48 +526,51 @@ class LineSolution:
     def __init__(self, line, span, dh, state):
         self.line, self.span, self.dh = line, span, dh
         self._st = st = state
+        # the suspended pieces as arrays (the closed form keeps one piece as floats)
+        st.Vb, st.L_s, st.Tt, st.Tb, st.dx, st.dy = (
+            np.atleast_1d(np.asarray(v, dtype=float)) for v in (st.Vb, st.L_s, st.Tt, st.Tb, st.dx, st.dy)
+        )
         n = len(line._L)
         P = line.joint_forces
         self.length = line.length
         self.H = float(st.H)
         self.H_A = float(st.H_A)
         self.V_B = float(st.V + P[n])
-        self.V_A = float((0.0 if st.contact else -st.V_bot[0]) + P[0])
-        self.T_B = float(np.hypot(st.H, st.V))
-        self.T_A = float(np.hypot(self.H_A, 0.0 if st.contact else st.V_bot[0]))
+        V_A0 = 0.0 if st.contact else float(st.V_bot[0])
+        self.V_A = float((0.0 if st.contact else -V_A0) + P[0])
+        self.T_B = math.hypot(st.H, st.V)
+        self.T_A = math.hypot(self.H_A, V_A0)
         self.joint_forces = P.copy()
         self.length_on_seabed = float(st.l_g.sum()) if st.contact else 0.0
         self.seabed_reaction = float(line._w[: st.k + 1] @ st.l_g + st.R[1:].sum()) if st.contact else 0.0
         # per-segment arrays: start of each segment along s, and of each suspended piece
-        L, w, EA = line._L, line._w, line._EA
-        self._s0 = np.concatenate([[0.0], np.cumsum(L)])
+        self._s0 = line._s0
         k = st.k
-        H = st.H
         # grounded pieces: x at their lower ends, stretched lengths
         if st.contact:
-            g_str = st.l_g + self._grounded_stretch(st.T_g, st.m_g, st.l_g, EA[: k + 1])
+            g_str = st.l_g + self._grounded_stretch(st.T_g, st.m_g, st.l_g, line._EA[: k + 1])
+            x_g0 = np.concatenate([[0.0], np.cumsum(g_str)])[:-1]
+            self.x_touchdown = float(g_str.sum())
         else:
-            g_str = np.zeros(k + 1)
-        x_g0 = np.concatenate([[0.0], np.cumsum(g_str)])[:-1]
-        self.x_touchdown = float(g_str.sum()) if st.contact else 0.0
+            g_str, x_g0 = line._no_ground, line._no_ground
+            self.x_touchdown = 0.0
         self._x_g0 = x_g0
         self._g_str = g_str
         # suspended pieces: segment i >= k from s_b (start on the line) with Vb
-        Vt, Vb = st.V_top[k:], st.Vb
-        Tt, Tb = np.hypot(H, Vt), np.hypot(H, Vb)
-        Ls = st.L_s
-        ws, EAs = w[k:], EA[k:]
-        dx = H * Ls / EAs + H / ws * asinh_diff(Vt / H, Vb / H)
-        dy = Ls * (Vt + Vb) / (2.0 * EAs) + (Vt - Vb) * (Vt + Vb) / ((Tt + Tb) * ws)
-        self._x_p0 = self.x_touchdown + np.concatenate([[0.0], np.cumsum(dx)])[:-1]
-        self._y_p0 = np.concatenate([[0.0], np.cumsum(dy)])[:-1]
+        dx, dy = st.dx, st.dy
+        if len(dx) == 1:
+            self._x_p0 = np.array([self.x_touchdown])
+            self._y_p0 = np.zeros(1)
+        else:
+            self._x_p0 = self.x_touchdown + np.concatenate([[0.0], np.cumsum(dx)])[:-1]
+            self._y_p0 = np.concatenate([[0.0], np.cumsum(dy)])[:-1]
         self._s_p0 = self._s0[k:-1].copy()
         self._s_p0[0] += st.a
         self.x_joints = np.concatenate([x_g0, self._x_p0[1:], [self._x_p0[-1] + dx[-1]]])
         self.y_joints = np.concatenate([np.zeros(k + 1), self._y_p0[1:], [self._y_p0[-1] + dy[-1]]])
         if st.contact and st.a > 0:  # joint k lies on the seabed, the piece starts at the touchdown
             self.x_joints[k] = x_g0[k]
-        self._Tt, self._Tb, self._dx, self._dy = Tt, Tb, dx, dy
+        self._Tt, self._Tb, self._dx, self._dy = st.Tt, st.Tb, dx, dy
 
     @staticmethod
     def _grounded_stretch(T_u, m, l, EA):
@@ -637,9 +715,8 @@ class LineSolution:
         Rows ``(H, V_B)``, columns ``(span, dh)``: the inverse of the closure's Jacobian
         ``∂(X, Z)/∂(H, V)`` (implicit function theorem), friction and clump regimes included.
         """
-        J = self._st.jac
         with np.errstate(all="ignore"):
-            K = inverse_2x2(J[0, 0], J[0, 1], J[1, 0], J[1, 1])
+            K = inverse_2x2(*self._st.jac)
         if not np.all(np.isfinite(K)):
             raise ConvergenceError("LineSolution.stiffness: the closure's Jacobian is singular here")
         return K
