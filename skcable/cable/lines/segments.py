@@ -133,7 +133,7 @@ class _State:
 
     __slots__ = (
         "H", "V", "k", "a", "V_top", "V_bot", "Vb", "L_s", "Tt", "Tb", "dx", "dy", "X", "Z", "jac",
-        "l_g", "T_g", "m_g", "R", "contact", "H_A",
+        "l_g", "T_g", "m_g", "R", "stretch", "contact", "H_A",
     )  # fmt: skip
 
 
@@ -193,6 +193,8 @@ class Line:
         self._wf = [float(s.w) for s in segments]
         self._EAf = [float(s.EA) for s in segments]
         self._wL = self._w * self._L
+        self._wLf = self._wL.tolist()
+        self._weight = float(self._w @ self._L + P.sum())
         self._no_ground = np.zeros(1)
         self._no_ground.flags.writeable = False
         self._s0 = np.concatenate([[0.0], np.cumsum(self._L)])
@@ -212,7 +214,7 @@ class Line:
     @property
     def weight(self):
         """Total weight in water of the segments and the attachments (N)."""
-        return float(self._w @ self._L + self.joint_forces.sum())
+        return self._weight
 
     def __repr__(self):
         return (
@@ -231,30 +233,38 @@ class Line:
         L, w, EA, P, mu = self._L, self._w, self._EA, self.joint_forces, self.friction
         st = _State()
         st.H, st.V = H, V
-        V_top = V - self._Q_top
-        V_bot = V_top - self._wL
-        st.V_top, st.V_bot = V_top, V_bot
         n = len(L)
-        contact = self._contact and V_bot[0] < 0
-        if contact:
-            up = np.flatnonzero(V_top > 0)
-            if up.size == 0:
+        if n == 1:  # one segment: Python floats throughout
+            V_top = V_bot = None  # not needed here; LineSolution forms them
+            V_bot_k = V - self._wLf[0]
+            contact = self._contact and V_bot_k < 0
+            if contact and not V > 0:
                 return None  # the whole line would lie on the seabed
-            k = int(up[0])
-        else:
             k = 0
+            V_top_k = V
+        else:
+            V_top = V - self._Q_top
+            V_bot = V_top - self._wL
+            contact = self._contact and V_bot[0] < 0
+            if contact:
+                up = np.flatnonzero(V_top > 0)
+                if up.size == 0:
+                    return None  # the whole line would lie on the seabed
+                k = int(up[0])
+            else:
+                k = 0
+            V_bot_k, V_top_k = float(V_bot[k]), float(V_top[k])
         st.contact, st.k = contact, k
         # suspended pieces k .. n-1; a tangent touchdown inside piece k (contact, V_bot < 0)
         # starts it at V = 0, a length a = -V_bot/w from its lower end
         a = 0.0
-        Vb_k = float(V_bot[k])
-        touchdown = contact and Vb_k < 0
+        touchdown = contact and V_bot_k < 0
         if touchdown:
-            a = -Vb_k / self._wf[k]
+            a = -V_bot_k / self._wf[k]
         st.a = a
         if k == n - 1:  # one suspended piece: Python floats
             xp = scalar_math
-            Vt, Vb, Ls = float(V_top[k]), (0.0 if touchdown else Vb_k), self._Lf[k] - a
+            Vt, Vb, Ls = V_top_k, (0.0 if touchdown else V_bot_k), self._Lf[k] - a
             ws, EAs, dVb = self._wf[k], self._EAf[k], (0.0 if touchdown else 1.0)
         else:
             xp = np
@@ -283,8 +293,9 @@ class Line:
             Lf, wf, EAf = self._Lf, self._wf, self._EAf
             l_g = [*Lf[:k], a]
             T_g = [0.0] * (k + 1)  # tension at each grounded piece's upper end
+            stretch = [0.0] * (k + 1)  # elongation of each grounded piece
             R = [0.0, *(float(p) for p in P[1 : k + 1])]  # seabed reaction at joints 1..k (index j)
-            vk = float(V_bot[k])
+            vk = V_bot_k
             if k > 0:
                 R[k] = float(P[k]) - max(vk, 0.0)
             T, dT_h, dT_v = H, 1.0, 0.0
@@ -302,21 +313,23 @@ class Line:
                 dl_v = -1.0 / wf[k] if (i == k and a > 0) else 0.0
                 m = mu * wf[i]
                 if m == 0 or T - m * l > 0:
-                    X += l + (T * l - 0.5 * m * l * l) / EAf[i]
+                    stretch[i] = (T * l - 0.5 * m * l * l) / EAf[i]
+                    X += l + stretch[i]
                     jxh += dT_h * l / EAf[i]
                     jxv += dl_v + (dT_v * l + T * dl_v - m * l * dl_v) / EAf[i]
                     T, dT_v = T - m * l, dT_v - m * dl_v
                 else:
-                    X += l + 0.5 * T * T / (m * EAf[i])
+                    stretch[i] = 0.5 * T * T / (m * EAf[i])
+                    X += l + stretch[i]
                     jxh += T * dT_h / (m * EAf[i])
                     jxv += dl_v + T * dT_v / (m * EAf[i])
                     T, dT_h, dT_v = 0.0, 0.0, 0.0
-            st.l_g, st.T_g, st.R = np.array(l_g), np.array(T_g), np.array(R)
+            st.l_g, st.T_g, st.R, st.stretch = l_g, T_g, R, stretch
             st.H_A = T
         else:
-            st.l_g, st.T_g, st.R = self._no_ground, self._no_ground, self._no_ground
+            st.l_g = st.T_g = st.R = st.stretch = None
             st.H_A = H
-        st.m_g = mu * w[: k + 1]
+        st.V_top, st.V_bot = V_top, V_bot
         st.X, st.Z, st.jac = X, Z, (jxh, jxv, jzh, jzv)
         return st
 
@@ -526,10 +539,21 @@ class LineSolution:
     def __init__(self, line, span, dh, state):
         self.line, self.span, self.dh = line, span, dh
         self._st = st = state
-        # the suspended pieces as arrays (the closed form keeps one piece as floats)
-        st.Vb, st.L_s, st.Tt, st.Tb, st.dx, st.dy = (
-            np.atleast_1d(np.asarray(v, dtype=float)) for v in (st.Vb, st.L_s, st.Tt, st.Tb, st.dx, st.dy)
-        )
+        k = st.k
+        # arrays of the pieces (the closed form keeps one suspended piece and the
+        # grounded pieces as floats)
+        if st.V_top is None:
+            st.V_top = st.V - line._Q_top
+            st.V_bot = st.V_top - line._wL
+        if not isinstance(st.Vb, np.ndarray):
+            st.Vb, st.L_s, st.Tt, st.Tb, st.dx, st.dy = np.array(
+                [st.Vb, st.L_s, st.Tt, st.Tb, st.dx, st.dy], dtype=float
+            ).reshape(6, 1)
+        if st.contact:
+            st.l_g, st.T_g, st.R, stretch = np.array([st.l_g, st.T_g, st.R, st.stretch], dtype=float)
+        else:
+            st.l_g = st.T_g = st.R = stretch = line._no_ground
+        st.m_g = line.friction * line._w[: k + 1]
         n = len(line._L)
         P = line.joint_forces
         self.length = line.length
@@ -542,14 +566,13 @@ class LineSolution:
         self.T_A = math.hypot(self.H_A, V_A0)
         self.joint_forces = P.copy()
         self.length_on_seabed = float(st.l_g.sum()) if st.contact else 0.0
-        self.seabed_reaction = float(line._w[: st.k + 1] @ st.l_g + st.R[1:].sum()) if st.contact else 0.0
+        self.seabed_reaction = float(line._w[: k + 1] @ st.l_g + st.R[1:].sum()) if st.contact else 0.0
         # per-segment arrays: start of each segment along s, and of each suspended piece
         self._s0 = line._s0
-        k = st.k
         # grounded pieces: x at their lower ends, stretched lengths
         if st.contact:
-            g_str = st.l_g + self._grounded_stretch(st.T_g, st.m_g, st.l_g, line._EA[: k + 1])
-            x_g0 = np.concatenate([[0.0], np.cumsum(g_str)])[:-1]
+            g_str = st.l_g + stretch
+            x_g0 = np.concatenate([[0.0], np.cumsum(g_str)[:-1]])
             self.x_touchdown = float(g_str.sum())
         else:
             g_str, x_g0 = line._no_ground, line._no_ground
