@@ -118,15 +118,17 @@ class Line3D:
         Radial and vertical terms from the 2-D ``stiffness()`` ``∂(H, V_B)/∂(span, dh)``,
         transverse term ``H/r`` (see the module docstring for the matrix).
         """
-        k = self._k2
-        e = self.direction[:2]
-        ee = np.outer(e, e)
-        K = np.empty((3, 3))
-        K[:2, :2] = k[0, 0] * ee + (self.H / self.span) * (np.eye(2) - ee)
-        K[:2, 2] = k[0, 1] * e
-        K[2, :2] = k[1, 0] * e
-        K[2, 2] = k[1, 1]
-        return K
+        (k_hh, k_hv), (k_vh, k_vv) = self._k2.tolist()
+        ex, ey = float(self.direction[0]), float(self.direction[1])
+        exx, exy, eyy = ex * ex, ex * ey, ey * ey
+        c = self.H / self.span
+        return np.array(
+            [
+                [k_hh * exx + c * (1.0 - exx), k_hh * exy + c * (0.0 - exy), k_hv * ex],
+                [k_hh * exy + c * (0.0 - exy), k_hh * eyy + c * (1.0 - eyy), k_hv * ey],
+                [k_vh * ex, k_vh * ey, k_vv],
+            ]
+        )
 
     def to_global(self, x, y) -> np.ndarray:
         """Points ``(x, y)`` of the line's plane (A at the origin, y up) in global axes, shape (n, 3)."""

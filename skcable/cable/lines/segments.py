@@ -47,7 +47,6 @@ import numpy as np
 
 from skcable._checks import nonnegative, positive, real, require, scalar
 from skcable._xp import scalar_math
-from skcable.cable._elastic import inverse_2x2
 from skcable.cable._roots import find_root
 from skcable.cable._special import asinh_diff
 from skcable.cable.lines.seabed import elastic_catenary
@@ -195,6 +194,8 @@ class Line:
         self._wL = self._w * self._L
         self._wLf = self._wL.tolist()
         self._weight = float(self._w @ self._L + P.sum())
+        self._weight_segments = float(self._w @ self._L)
+        self._abs_joint_forces = float(np.abs(P).sum())
         self._no_ground = np.zeros(1)
         self._no_ground.flags.writeable = False
         self._s0 = np.concatenate([[0.0], np.cumsum(self._L)])
@@ -606,22 +607,20 @@ class LineSolution:
     # -- checks -----------------------------------------------------------------------
     def residual(self):
         """Largest relative residual of the closure and of the vertical equilibrium."""
-        st = self._st
-        chord = np.hypot(self.span, self.dh)
+        st, line = self._st, self.line
+        chord = math.hypot(self.span, self.dh)
         closure = max(abs(st.X - self.span), abs(st.Z - self.dh)) / chord
-        load = self.line.weight
-        scale = abs(self.V_A) + abs(self.V_B) + float(self.line._w @ self.line._L)
-        scale += float(np.abs(self.joint_forces).sum())
-        statics = abs(self.V_A + self.V_B + self.seabed_reaction - load) / scale
+        scale = abs(self.V_A) + abs(self.V_B) + line._weight_segments + line._abs_joint_forces
+        statics = abs(self.V_A + self.V_B + self.seabed_reaction - line._weight) / scale
         geometry = max(abs(self.x_joints[-1] - self.span) / chord, abs(self.y_joints[-1] - self.dh) / chord)
         return float(max(closure, statics, geometry))
 
     def _validate(self):
         st, line = self._st, self.line
         values = (self.H, self.V_A, self.V_B, self.H_A, self.T_A, self.T_B, self.length_on_seabed)
-        if not all(np.isfinite(v) for v in values) or not np.all(np.isfinite(self.x_joints)):
+        if not all(map(math.isfinite, values)) or not np.isfinite(self.x_joints).all():
             raise InputError("span", "gives a result outside the range of a float")
-        if st.contact:
+        if st.contact and st.k > 0:
             buoyed = np.flatnonzero(st.R[1:] < 0) + 1
             if buoyed.size:
                 raise InputError(
@@ -629,17 +628,18 @@ class LineSolution:
                     f"a buoy at joint {int(buoyed[0])} lies on the grounded part and would lift it: a second "
                     "touchdown that this closed form does not represent (solve it with cable.solve_bvp)",
                 )
-        y_min = self._lowest_suspended()
-        floor = 0.0 if line.seabed is None else line.seabed
-        tol = 1e-9 * np.hypot(self.span, self.dh)
-        if line.seabed is not None and y_min < floor - tol:
-            argument = "attachments" if st.contact or floor == 0.0 else "seabed"
-            raise InputError(
-                argument,
-                f"the suspended line dips to {y_min:.6g} m, below the seabed at {floor:.6g} m: a touchdown "
-                "between A and B that this closed form does not represent (solve it with cable.solve_bvp, "
-                "or elastic_catenary for one segment)",
-            )
+        if line.seabed is not None:
+            y_min = self._lowest_suspended()
+            floor = line.seabed
+            tol = 1e-9 * math.hypot(self.span, self.dh)
+            if y_min < floor - tol:
+                argument = "attachments" if st.contact or floor == 0.0 else "seabed"
+                raise InputError(
+                    argument,
+                    f"the suspended line dips to {y_min:.6g} m, below the seabed at {floor:.6g} m: a "
+                    "touchdown between A and B that this closed form does not represent (solve it with "
+                    "cable.solve_bvp, or elastic_catenary for one segment)",
+                )
         residual = self.residual()
         if not residual < 1e-9:
             raise ConvergenceError(f"Line.solve: residual {residual:.3e} after the solve", [residual])
@@ -648,6 +648,16 @@ class LineSolution:
         """Lowest height of the suspended part: its joints and the vertices inside segments."""
         st = self._st
         H, k = st.H, st.k
+        start = 1 if st.contact else 0
+        lowest_joint = float(self.y_joints[start:].min())
+        if len(st.Vb) == 1:  # one suspended piece, on floats
+            Vb, Vt = float(st.Vb[0]), float(st.V_top[k])
+            if not (Vb < 0 and Vt > 0):
+                return lowest_joint
+            w, EA = self.line._wf[k], self.line._EAf[k]
+            sig = -Vb / w
+            drop = sig * Vb / (2.0 * EA) + (H - math.hypot(H, Vb)) / w
+            return min(lowest_joint, float(self._y_p0[0]) + drop)
         Vb, Vt = st.Vb, st.V_top[k:]
         ws, EAs = self.line._w[k:], self.line._EA[k:]
         inside = (Vb < 0) & (Vt > 0)
@@ -655,8 +665,7 @@ class LineSolution:
         Tb = np.hypot(H, Vb)
         drop = sig * Vb / (2.0 * EAs) + (H - Tb) / ws  # from the piece's start to its vertex
         y_vertex = np.where(inside, self._y_p0 + drop, np.inf)
-        start = 1 if st.contact else 0
-        return float(min(self.y_joints[start:].min(), y_vertex.min()))
+        return float(min(lowest_joint, y_vertex.min()))
 
     # -- along the line ---------------------------------------------------------------
     def _arc(self, s):
@@ -738,8 +747,9 @@ class LineSolution:
         Rows ``(H, V_B)``, columns ``(span, dh)``: the inverse of the closure's Jacobian
         ``∂(X, Z)/∂(H, V)`` (implicit function theorem), friction and clump regimes included.
         """
+        j11, j12, j21, j22 = self._st.jac
         with np.errstate(all="ignore"):
-            K = inverse_2x2(*self._st.jac)
+            K = np.array([[j22, -j12], [-j21, j11]]) / (j11 * j22 - j12 * j21)
         if not np.all(np.isfinite(K)):
             raise ConvergenceError("LineSolution.stiffness: the closure's Jacobian is singular here")
         return K
