@@ -131,7 +131,7 @@ class _State:
     """The closed form evaluated at ``(H, V)``: closure, Jacobian and the pieces."""
 
     __slots__ = (
-        "H", "V", "k", "a", "V_top", "V_bot", "Vb", "L_s", "Tt", "Tb", "dx", "dy", "X", "Z", "jac",
+        "H", "V", "k", "a", "V_top", "V_bot", "V_bot0", "Vb", "L_s", "Tt", "Tb", "dx", "dy", "X", "Z", "jac",
         "l_g", "T_g", "m_g", "R", "stretch", "contact", "H_A",
     )  # fmt: skip
 
@@ -194,6 +194,8 @@ class Line:
         self._wL = self._w * self._L
         self._wLf = self._wL.tolist()
         self._weight = float(self._w @ self._L + P.sum())
+        self._length = float(self._L.sum())
+        self._P_end = (float(P[0]), float(P[n]))
         self._weight_segments = float(self._w @ self._L)
         self._abs_joint_forces = float(np.abs(P).sum())
         self._no_ground = np.zeros(1)
@@ -210,7 +212,7 @@ class Line:
     @property
     def length(self):
         """Total unstretched length (m)."""
-        return float(self._L.sum())
+        return self._length
 
     @property
     def weight(self):
@@ -237,7 +239,7 @@ class Line:
         n = len(L)
         if n == 1:  # one segment: Python floats throughout
             V_top = V_bot = None  # not needed here; LineSolution forms them
-            V_bot_k = V - self._wLf[0]
+            V_bot_k = st.V_bot0 = V - self._wLf[0]
             contact = self._contact and V_bot_k < 0
             if contact and not V > 0:
                 return None  # the whole line would lie on the seabed
@@ -246,6 +248,7 @@ class Line:
         else:
             V_top = V - self._Q_top
             V_bot = V_top - self._wL
+            st.V_bot0 = float(V_bot[0])
             contact = self._contact and V_bot[0] < 0
             if contact:
                 up = np.flatnonzero(V_top > 0)
@@ -540,13 +543,41 @@ class LineSolution:
     def __init__(self, line, span, dh, state):
         self.line, self.span, self.dh = line, span, dh
         self._st = st = state
+        self._expanded = False
+        k, contact = st.k, st.contact
+        P = line.joint_forces
+        self.length = line._length
+        self.H = float(st.H)
+        self.H_A = float(st.H_A)
+        self.V_B = float(st.V + line._P_end[1])
+        V_A0 = 0.0 if contact else float(st.V_bot0)
+        self.V_A = float((0.0 if contact else -V_A0) + line._P_end[0])
+        self.T_B = math.hypot(st.H, st.V)
+        self.T_A = math.hypot(self.H_A, V_A0)
+        self.joint_forces = P.copy()
+        if contact:  # the grounded pieces, still Python floats from the closed form
+            self.length_on_seabed = float(sum(st.l_g))
+            self.seabed_reaction = float(line._w[: k + 1] @ np.array(st.l_g) + sum(st.R[1:]))
+            self.x_touchdown = float(sum(l + e for l, e in zip(st.l_g, st.stretch, strict=True)))
+        else:
+            self.length_on_seabed = self.seabed_reaction = self.x_touchdown = 0.0
+        if len(line._L) == 1:  # A, then B at the end of the one suspended piece
+            self.x_joints = np.array([0.0, self.x_touchdown + st.dx])
+            self.y_joints = np.array([0.0, st.dy])
+        else:
+            self._expand()
+
+    def _expand(self):
+        """The per-piece arrays of the profile (built once, when a map or the joints need them)."""
+        if self._expanded:
+            return
+        self._expanded = True
+        st, line = self._st, self.line
         k = st.k
-        # arrays of the pieces (the closed form keeps one suspended piece and the
-        # grounded pieces as floats)
         if st.V_top is None:
             st.V_top = st.V - line._Q_top
             st.V_bot = st.V_top - line._wL
-        if not isinstance(st.Vb, np.ndarray):
+        if not isinstance(st.Vb, np.ndarray):  # one suspended piece, kept as floats
             st.Vb, st.L_s, st.Tt, st.Tb, st.dx, st.dy = np.array(
                 [st.Vb, st.L_s, st.Tt, st.Tb, st.dx, st.dy], dtype=float
             ).reshape(6, 1)
@@ -555,46 +586,29 @@ class LineSolution:
         else:
             st.l_g = st.T_g = st.R = stretch = line._no_ground
         st.m_g = line.friction * line._w[: k + 1]
-        n = len(line._L)
-        P = line.joint_forces
-        self.length = line.length
-        self.H = float(st.H)
-        self.H_A = float(st.H_A)
-        self.V_B = float(st.V + P[n])
-        V_A0 = 0.0 if st.contact else float(st.V_bot[0])
-        self.V_A = float((0.0 if st.contact else -V_A0) + P[0])
-        self.T_B = math.hypot(st.H, st.V)
-        self.T_A = math.hypot(self.H_A, V_A0)
-        self.joint_forces = P.copy()
-        self.length_on_seabed = float(st.l_g.sum()) if st.contact else 0.0
-        self.seabed_reaction = float(line._w[: k + 1] @ st.l_g + st.R[1:].sum()) if st.contact else 0.0
         # per-segment arrays: start of each segment along s, and of each suspended piece
         self._s0 = line._s0
         # grounded pieces: x at their lower ends, stretched lengths
         if st.contact:
             g_str = st.l_g + stretch
             x_g0 = np.concatenate([[0.0], np.cumsum(g_str)[:-1]])
-            self.x_touchdown = float(g_str.sum())
         else:
             g_str, x_g0 = line._no_ground, line._no_ground
-            self.x_touchdown = 0.0
         self._x_g0 = x_g0
         self._g_str = g_str
         # suspended pieces: segment i >= k from s_b (start on the line) with Vb
         dx, dy = st.dx, st.dy
-        if len(dx) == 1:
-            self._x_p0 = np.array([self.x_touchdown])
-            self._y_p0 = np.zeros(1)
-        else:
-            self._x_p0 = self.x_touchdown + np.concatenate([[0.0], np.cumsum(dx)])[:-1]
-            self._y_p0 = np.concatenate([[0.0], np.cumsum(dy)])[:-1]
+        self._x_p0 = self.x_touchdown + np.concatenate([[0.0], np.cumsum(dx)])[:-1]
+        self._y_p0 = np.concatenate([[0.0], np.cumsum(dy)])[:-1]
         self._s_p0 = self._s0[k:-1].copy()
         self._s_p0[0] += st.a
+        self._Tt, self._Tb, self._dx, self._dy = st.Tt, st.Tb, dx, dy
+        if len(line._L) == 1:
+            return  # the joints are set
         self.x_joints = np.concatenate([x_g0, self._x_p0[1:], [self._x_p0[-1] + dx[-1]]])
         self.y_joints = np.concatenate([np.zeros(k + 1), self._y_p0[1:], [self._y_p0[-1] + dy[-1]]])
         if st.contact and st.a > 0:  # joint k lies on the seabed, the piece starts at the touchdown
             self.x_joints[k] = x_g0[k]
-        self._Tt, self._Tb, self._dx, self._dy = st.Tt, st.Tb, dx, dy
 
     @staticmethod
     def _grounded_stretch(T_u, m, l, EA):
@@ -650,14 +664,15 @@ class LineSolution:
         H, k = st.H, st.k
         start = 1 if st.contact else 0
         lowest_joint = float(self.y_joints[start:].min())
-        if len(st.Vb) == 1:  # one suspended piece, on floats
-            Vb, Vt = float(st.Vb[0]), float(st.V_top[k])
+        if k == len(self.line._L) - 1:  # one suspended piece, on floats; it starts at height 0
+            Vb = st.Vb if isinstance(st.Vb, float) else float(st.Vb[0])
+            Vt = st.V if st.V_top is None else float(st.V_top[k])
             if not (Vb < 0 and Vt > 0):
                 return lowest_joint
             w, EA = self.line._wf[k], self.line._EAf[k]
             sig = -Vb / w
             drop = sig * Vb / (2.0 * EA) + (H - math.hypot(H, Vb)) / w
-            return min(lowest_joint, float(self._y_p0[0]) + drop)
+            return min(lowest_joint, drop)
         Vb, Vt = st.Vb, st.V_top[k:]
         ws, EAs = self.line._w[k:], self.line._EA[k:]
         inside = (Vb < 0) & (Vt > 0)
@@ -709,6 +724,7 @@ class LineSolution:
 
     def _maps(self, s):
         s = self._arc(s)
+        self._expand()
         grounded, seg, piece = self._locate(s)
         x, y, T = self._suspended(s, piece)
         if self._st.contact:
@@ -735,6 +751,7 @@ class LineSolution:
         and the touchdown, sorted along the line (the grounded part on the seabed)."""
         if isinstance(n, (bool, np.bool_)) or not isinstance(n, (int, np.integer)) or n < 2:
             raise InputError("n", f"must be an integer >= 2, got {n!r}")
+        self._expand()
         st = self._st
         s = np.concatenate([np.linspace(0.0, self.length, max(n, 2)), self._s0, [self._s0[st.k] + st.a]])
         s = np.unique(np.clip(s, 0.0, self.length))
@@ -756,6 +773,7 @@ class LineSolution:
 
     @cached_property
     def _segment_table(self):
+        self._expand()
         st, line = self._st, self.line
         n, k = len(line._L), st.k
         H = st.H
