@@ -216,18 +216,27 @@ def line_3d(model, anchor, fairlead, start=None) -> Line3D:
     """
     a = point("anchor", anchor)
     b = point("fairlead", fairlead)
-    r = float(np.hypot(b[0] - a[0], b[1] - a[1]))
+    r = math.hypot(float(b[0] - a[0]), float(b[1] - a[1]))
     if not r > 1e-9 * max(1.0, float(np.abs(b - a).max())):
         raise InputError(
             "fairlead",
             f"lies on the vertical of the anchor (horizontal distance {r:.3g} m): the line's vertical "
             "plane is undefined; give a fairlead offset horizontally from the anchor",
         )
+    if start is not None and not takes_start(model):
+        raise InputError("start", f"the line model {type(model).__name__}.solve takes no start= argument")
+    return solve_in_space(model, a, b, r, start)
+
+
+def solve_in_space(model, anchor, fairlead, span, start=None) -> Line3D:
+    """`line_3d` on checked arguments: float 3-vectors ``anchor`` and ``fairlead`` at the
+    horizontal distance ``span > 0``, and a ``start`` the model takes (or None).
+
+    For callers that checked them once (`skcable.cable.MooringSystem` in its Newton loop).
+    """
+    dh = float(fairlead[2] - anchor[2])
     if start is None:
-        solution = model.solve(r, float(b[2] - a[2]))
+        solution = model.solve(span, dh)
     else:
-        if not takes_start(model):
-            raise InputError("start", f"the line model {type(model).__name__}.solve takes no start= argument")
-        previous = start.solution if isinstance(start, Line3D) else start
-        solution = model.solve(r, float(b[2] - a[2]), start=previous)
-    return Line3D(model, a, b, solution)
+        solution = model.solve(span, dh, start=start.solution if isinstance(start, Line3D) else start)
+    return Line3D(model, anchor, fairlead, solution)

@@ -193,6 +193,7 @@ class Line:
         self._EAf = [float(s.EA) for s in segments]
         self._wL = self._w * self._L
         self._wLf = self._wL.tolist()
+        self._Pf = P.tolist()
         self._weight = float(self._w @ self._L + P.sum())
         self._length = float(self._L.sum())
         self._P_end = (float(P[0]), float(P[n]))
@@ -233,7 +234,7 @@ class Line:
         when a single piece hangs (`skcable._xp`: one formula, two back ends); the
         grounded pieces are walked from the touchdown to the anchor with Python floats
         (the tension at each piece's lower end depends on the piece above it)."""
-        L, w, EA, P, mu = self._L, self._w, self._EA, self.joint_forces, self.friction
+        L, w, EA, mu = self._L, self._w, self._EA, self.friction
         st = _State()
         st.H, st.V = H, V
         n = len(L)
@@ -298,10 +299,10 @@ class Line:
             l_g = [*Lf[:k], a]
             T_g = [0.0] * (k + 1)  # tension at each grounded piece's upper end
             stretch = [0.0] * (k + 1)  # elongation of each grounded piece
-            R = [0.0, *(float(p) for p in P[1 : k + 1])]  # seabed reaction at joints 1..k (index j)
+            R = [0.0, *self._Pf[1 : k + 1]]  # seabed reaction at joints 1..k (index j)
             vk = V_bot_k
             if k > 0:
-                R[k] = float(P[k]) - max(vk, 0.0)
+                R[k] = self._Pf[k] - max(vk, 0.0)
             T, dT_h, dT_v = H, 1.0, 0.0
             for i in range(k, -1, -1):
                 if i < k:  # the joint above piece i (joint i+1)

@@ -33,12 +33,14 @@ tension) makes :math:`K` unsymmetric where the line forces have a net moment.
 
 from __future__ import annotations
 
+import math
+
 import numpy as np
 import pandas as pd
 
 from skcable._checks import positive, real, scalar
 from skcable.cable.lines.body import PointBody, RigidBody
-from skcable.cable.lines.line3d import Line3D, line_3d, point, takes_start
+from skcable.cable.lines.line3d import Line3D, line_3d, point, solve_in_space, takes_start
 from skcable.errors import ConvergenceError, InputError
 
 __all__ = ["MooringEquilibrium", "MooringSystem"]
@@ -135,10 +137,17 @@ class MooringSystem:
             start = [None] * len(self.lines)
         elif len(start) != len(self.lines) or not all(isinstance(s, Line3D) for s in start):
             raise InputError("start", f"must be a list of {len(self.lines)} Line3D, one per line")
+        reach = fairleads - self.anchors
+        spans = [math.hypot(x, y) for x, y, _ in reach.tolist()]
+        extent = np.maximum(np.abs(reach).max(1), 1.0)
+        if not (np.isfinite(fairleads).all() and (np.array(spans) > 1e-9 * extent).all()):
+            # line_3d's checks raise the error, naming the point
+            pairs = zip(self.anchors, fairleads, strict=True)
+            return [line_3d(model, a, b) for model, (a, b) in zip(self.lines, pairs, strict=True)]
         return [
-            line_3d(model, a, b, previous if warm else None)
-            for model, a, b, previous, warm in zip(
-                self.lines, self.anchors, fairleads, start, self._warm, strict=True
+            solve_in_space(model, a, b, r, previous if warm else None)
+            for model, a, b, r, previous, warm in zip(
+                self.lines, self.anchors, fairleads, spans, start, self._warm, strict=True
             )
         ]
 
