@@ -108,7 +108,7 @@ class Line3D:
     @cached_property
     def _k2(self) -> np.ndarray:
         k2 = np.asarray(self.solution.stiffness(), dtype=float)
-        if k2.shape != (2, 2) or not np.isfinite(k2).all():
+        if k2.shape != (2, 2) or not all(map(math.isfinite, k2.flat)):
             raise InputError("model", f"the line model's stiffness() must be a finite 2x2 matrix, got {k2!r}")
         return k2
 

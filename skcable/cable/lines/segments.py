@@ -766,11 +766,11 @@ class LineSolution:
         ``∂(X, Z)/∂(H, V)`` (implicit function theorem), friction and clump regimes included.
         """
         j11, j12, j21, j22 = self._st.jac
-        with np.errstate(all="ignore"):
-            K = np.array([[j22, -j12], [-j21, j11]]) / (j11 * j22 - j12 * j21)
-        if not np.all(np.isfinite(K)):
+        det = j11 * j22 - j12 * j21
+        K = (j22 / det, -j12 / det, -j21 / det, j11 / det) if det != 0.0 else (math.inf,)
+        if not all(map(math.isfinite, K)):
             raise ConvergenceError("LineSolution.stiffness: the closure's Jacobian is singular here")
-        return K
+        return np.array(K).reshape(2, 2)
 
     @cached_property
     def _segment_table(self):

@@ -127,6 +127,8 @@ class MooringSystem:
         ``start``: the lines solved at another position (a list of `Line3D`, one per
         line), each model that takes a warm start starting from its own (see
         `skcable.cable.Line.solve`: the same solution as without it, to round-off).
+        Without it, a line whose model was solved for an earlier line of this call
+        (lines of one model, e.g. a spread mooring) starts from that solution.
         """
         q = self._position("position", position)
         return self._solve_lines(q, start)
@@ -144,12 +146,16 @@ class MooringSystem:
             # line_3d's checks raise the error, naming the point
             pairs = zip(self.anchors, fairleads, strict=True)
             return [line_3d(model, a, b) for model, (a, b) in zip(self.lines, pairs, strict=True)]
-        return [
-            solve_in_space(model, a, b, r, previous if warm else None)
-            for model, a, b, r, previous, warm in zip(
-                self.lines, self.anchors, fairleads, spans, start, self._warm, strict=True
-            )
-        ]
+        solved, latest = [], {}
+        for model, a, b, r, previous, warm in zip(
+            self.lines, self.anchors, fairleads, spans, start, self._warm, strict=True
+        ):
+            if warm and previous is None:  # another line of the same model, solved just now
+                previous = latest.get(id(model))
+            line = solve_in_space(model, a, b, r, previous if warm else None)
+            latest[id(model)] = line
+            solved.append(line)
+        return solved
 
     def _state(self, q, external, lines_only=False, start=None):
         """Net force ``G(q)`` and stiffness ``K(q)`` and the solved lines (warm-started
