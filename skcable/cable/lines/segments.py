@@ -32,10 +32,12 @@ tension ``T_u`` at its upper end stretches by ``(T_u \ell - C_B w \ell^2/2)/EA``
 (J.M. Jonkman, "Dynamics modeling and loads analysis of an offshore floating
 wind turbine", NREL, 2007, applied piece by piece).
 
-The closure ``X(H, V) = span``, ``Z(H, V) = dh`` is solved by nested
-bracketing (``Z`` increases with ``V`` at fixed ``H``; then ``X`` in ``H``),
-then polished by Newton's method with its analytic Jacobian. The fairlead
-stiffness is the inverse of that Jacobian (implicit function theorem).
+The closure ``X(H, V) = span``, ``Z(H, V) = dh`` is solved by Newton's method
+with its analytic Jacobian, from a previous solution (a warm start), else from
+the uniform line of the same length, weight and compliance, else from nested
+bracketing (``Z`` increases with ``V`` at fixed ``H``; then ``X`` in ``H``); every
+path ends polishing the same root to round-off. The fairlead stiffness is the
+inverse of that Jacobian (implicit function theorem).
 """
 
 from __future__ import annotations
