@@ -375,13 +375,14 @@ class Line:
             return None
         return float(ref.H), float(ref.V_B)
 
-    def _newton(self, span, dh, H, V, chord, iterations):
+    def _newton(self, span, dh, H, V, chord, iterations, state=None):
         """Newton's method with the analytic Jacobian and backtracking on ``max|residual|``.
 
         Works on Python floats: the 2x2 step by Cramer's rule (a singular or non-finite
-        step ends the iteration; the caller checks the residual reached)."""
+        step ends the iteration; the caller checks the residual reached). ``state``: the
+        closed form already evaluated at ``(H, V)`` (a previous solution's)."""
         H, V = float(H), float(V)
-        st = self._state(H, V)
+        st = self._state(H, V) if state is None else state
         if st is None:
             return None, np.inf, []
         norm = max(abs(st.X - span), abs(st.Z - dh)) / chord
@@ -411,6 +412,8 @@ class Line:
                 break
             H, V, st, norm = H_new, V_new, new, new_norm
             history.append(norm)
+        if st is state:  # no step from a previous solution's state: a state of its own
+            st = self._state(H, V)
         return st, norm, history
 
     def _bracketed(self, span, dh):
@@ -482,8 +485,9 @@ class Line:
             require("dh", dh > self.seabed, "must put B above the seabed", dh)
         chord = math.hypot(span, dh)
         st, norm, history = None, np.inf, []
-        if start is not None:  # Newton from the previous solution
-            st, norm, history = self._newton(span, dh, *self._start(start), chord, 40)
+        if start is not None:  # Newton from the previous solution (its closed form known)
+            H0, V0, state = self._start(start)
+            st, norm, history = self._newton(span, dh, H0, V0, chord, 40, state)
         if not norm < 1e-11:  # Newton from the equivalent uniform line
             guess = self._guess(span, dh)
             if guess is not None:
@@ -500,11 +504,12 @@ class Line:
         return solution
 
     def _start(self, start):
-        """``(H, V)`` (fairlead forces, ``V`` below the fairlead's joint) of a warm start."""
+        """``(H, V, state)`` of a warm start: fairlead forces (``V`` below the fairlead's
+        joint) and the closed form evaluated there (None for a pair ``(H, V_B)``)."""
         if isinstance(start, LineSolution):
             if start.line is not self:
                 raise InputError("start", "is a solution of another line: give one of this line or (H, V_B)")
-            return start._st.H, start._st.V
+            return start._st.H, start._st.V, start._st
         try:
             H, V_B = start
         except (TypeError, ValueError):
@@ -513,7 +518,7 @@ class Line:
             ) from None
         H = scalar("start", positive("start", H))
         V_B = scalar("start", real("start", V_B))
-        return H, V_B - float(self.joint_forces[-1])
+        return H, V_B - self._P_end[1], None
 
 
 class LineSolution:
