@@ -246,6 +246,8 @@ class MooringSystem:
         reach = self.anchors[:, :2] - self.body.fairlead_positions(q, len(self.lines))[:, :2]
         span_min = float(np.hypot(reach[:, 0], reach[:, 1]).min())
         step_cap = np.concatenate([np.full(3, 0.25 * span_min), np.full(self.n_dof - 3, 0.2)])
+        # singular values in consistent units (rotations times the arm) tell a free direction
+        units = np.concatenate([np.ones(3), np.full(self.n_dof - 3, arm)])
 
         def scaled(G, lines):
             scale = max(body_scale, max(line.tension_at_fairlead for line in lines), 1e-300)
@@ -259,8 +261,6 @@ class MooringSystem:
             if history[-1] <= tol:
                 return MooringEquilibrium(self, q, external, G, K, lines, history)
             jac = K @ self.body.rate_map(q)  # -∂G/∂q
-            # singular values in consistent units (rotations times the arm) tell a free direction
-            units = np.concatenate([np.ones(3), np.full(self.n_dof - 3, arm)])
             singular = np.linalg.svd(jac / units[:, None] / units[None, :], compute_uv=False)
             dq = np.full(self.n_dof, np.nan)
             if singular[-1] > 1e-11 * singular[0]:
