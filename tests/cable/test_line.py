@@ -478,6 +478,10 @@ def test_warm_start_from_far_away_falls_back_on_the_cold_path(line, span, dh, mo
     _same_solution(line.solve(span, dh, start=(cold.H, -1e3 * line.weight)), cold, rtol=1e-12)
     assert len(calls) == 1
     _same_solution(line.solve(span, dh, start=(1e-9 * cold.H, 1e3 * line.weight)), cold, rtol=1e-12)
+    # forces whose products underflow (the smallest float): no state there, the cold path runs
+    _same_solution(line.solve(span, dh, start=(5e-324, 0.0)), cold, rtol=1e-12)
+    one = cable.Line([line.segments[0]], seabed=line.seabed, friction=line.friction)
+    _same_solution(one.solve(span, 0.5 * dh, start=(5e-324, 1e-300)), one.solve(span, 0.5 * dh), rtol=1e-12)
 
 
 def test_bad_warm_starts_are_refused():

@@ -180,7 +180,11 @@ def takes_start(model) -> bool:
     ``solve(span, dh)`` only are called without it.
     """
     solve = model.solve
-    return _solve_takes_start(getattr(solve, "__func__", solve))
+    solve = getattr(solve, "__func__", solve)
+    try:
+        return _solve_takes_start(solve)
+    except TypeError:  # an unhashable callable: inspected each time
+        return _solve_takes_start.__wrapped__(solve)
 
 
 def line_3d(model, anchor, fairlead, start=None) -> Line3D:

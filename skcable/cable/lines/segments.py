@@ -340,6 +340,17 @@ class Line:
         st.X, st.Z, st.jac = X, Z, (jxh, jxv, jzh, jzv)
         return st
 
+    def _trial_state(self, H, V):
+        """`_state` at a Newton iterate, None where it is no state: ``H <= 0``, the whole line
+        on the seabed, or forces so small that a product of them underflows to a division
+        by zero (the Python floats of a one-segment line raise there)."""
+        if not H > 0:
+            return None
+        try:
+            return self._state(H, V)
+        except ZeroDivisionError:
+            return None
+
     def _height_of_v(self, H, dh):
         """``V`` with ``Z(H, V) = dh`` (``Z`` increases with ``V``), by bracketing."""
         scale = float(self._w @ self._L + np.abs(self.joint_forces).sum())
@@ -382,7 +393,7 @@ class Line:
         step ends the iteration; the caller checks the residual reached). ``state``: the
         closed form already evaluated at ``(H, V)`` (a previous solution's)."""
         H, V = float(H), float(V)
-        st = self._state(H, V) if state is None else state
+        st = self._trial_state(H, V) if state is None else state
         if st is None:
             return None, np.inf, []
         norm = max(abs(st.X - span), abs(st.Z - dh)) / chord
@@ -402,7 +413,7 @@ class Line:
             t = 1.0
             for _ in range(30):
                 H_new, V_new = H + t * step_H, V + t * step_V
-                new = self._state(H_new, V_new) if H_new > 0 else None
+                new = self._trial_state(H_new, V_new)
                 if new is not None:
                     new_norm = max(abs(new.X - span), abs(new.Z - dh)) / chord
                     if new_norm < norm:  # False for NaN
