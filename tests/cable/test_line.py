@@ -424,3 +424,79 @@ def test_line_against_the_seabed_bvp(span, dh, friction):
                 abs(b.length_on_seabed - r.length_on_seabed) / line.length)
         )  # fmt: skip
     assert errors[1] < 1e-6 and errors[0] / errors[1] > 6.0, errors
+
+
+# -- warm starts ------------------------------------------------------------------------------
+def _one_material_line(span, dh, w, EA, L, seabed, mu):
+    return cable.Line([cable.Segment(L, w, EA)], seabed=seabed, friction=mu)
+
+
+WARM_SCENES = [
+    *((_one_material_line(*scene), scene[0], scene[1]) for scene in ONE),
+    *((_chain_wire_chain(clump=clump, friction=mu), span, dh) for span, dh, clump, mu, _ in MP_SCENES),
+    *STATE_SCENES,
+]
+
+
+def _same_solution(warm, cold, rtol):
+    """Forces, stiffness and joints of two solutions of one scene, relative to their scale."""
+    force = max(abs(cold.H), abs(cold.V_B), abs(cold.V_A))
+    for name in ("H", "V_B", "V_A", "H_A", "T_A", "T_B", "seabed_reaction"):
+        assert getattr(warm, name) == pytest.approx(getattr(cold, name), rel=rtol, abs=rtol * force), name
+    length = cold.length
+    assert warm.length_on_seabed == pytest.approx(cold.length_on_seabed, abs=rtol * length)
+    assert warm.x_joints == pytest.approx(cold.x_joints, abs=rtol * length)
+    assert warm.y_joints == pytest.approx(cold.y_joints, abs=rtol * length)
+    K = cold.stiffness()
+    assert warm.stiffness() == pytest.approx(K, rel=1e-9, abs=1e-9 * np.abs(K).max())
+
+
+@pytest.mark.parametrize("line, span, dh", WARM_SCENES)
+def test_warm_start_gives_the_cold_solution(line, span, dh, monkeypatch):
+    """Newton from the solution at a nearby fairlead (0.3% off, as between two iterates of a
+    moored body) reaches the cold solution to round-off, without the cold path."""
+    cold = line.solve(span, dh)
+    near = line.solve(span * 1.003, dh + 0.003 * abs(dh))
+
+    def no_cold_path(*args):
+        raise AssertionError("the warm start fell back on the cold path")
+
+    monkeypatch.setattr(line, "_guess", no_cold_path)
+    monkeypatch.setattr(line, "_bracketed", no_cold_path)
+    for start in (near, (near.H, near.V_B)):
+        _same_solution(line.solve(span, dh, start=start), cold, rtol=1e-12)
+
+
+@pytest.mark.parametrize("line, span, dh", STATE_SCENES[1:6])
+def test_warm_start_from_far_away_falls_back_on_the_cold_path(line, span, dh, monkeypatch):
+    """A start where the closed form has no state (the whole line on the seabed): the cold
+    path runs and gives the cold solution; so does a start far off in H and V."""
+    cold = line.solve(span, dh)
+    calls = []
+    guess = line._guess
+    monkeypatch.setattr(line, "_guess", lambda *args: calls.append(args) or guess(*args))
+    _same_solution(line.solve(span, dh, start=(cold.H, -1e3 * line.weight)), cold, rtol=1e-12)
+    assert len(calls) == 1
+    _same_solution(line.solve(span, dh, start=(1e-9 * cold.H, 1e3 * line.weight)), cold, rtol=1e-12)
+    # forces whose products underflow (the smallest float): no state there, the cold path runs
+    _same_solution(line.solve(span, dh, start=(5e-324, 0.0)), cold, rtol=1e-12)
+    one = cable.Line([line.segments[0]], seabed=line.seabed, friction=line.friction)
+    _same_solution(one.solve(span, 0.5 * dh, start=(5e-324, 1e-300)), one.solve(span, 0.5 * dh), rtol=1e-12)
+
+
+def test_bad_warm_starts_are_refused():
+    line = _chain_wire_chain()
+    other = _chain_wire_chain()
+    sol = other.solve(600.0, 450.0)
+    for start, argument in (
+        (sol, "start"),  # a solution of another line
+        ((float("nan"), 1e5), "start"),
+        ((-1.0, 1e5), "start"),
+        ((1e5, float("inf")), "start"),
+        ((1e5, 1e5, 0.0), "start"),
+        ("warm", "start"),
+        (1e5, "start"),
+    ):
+        with pytest.raises(InputError) as err:
+            line.solve(600.0, 450.0, start=start)
+        assert err.value.argument == argument

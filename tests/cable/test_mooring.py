@@ -7,6 +7,7 @@ forces recomputed from the lines, the symmetry of a three-line spread mooring,
 and MoorPy's ``System`` on the same layout (an independent implementation).
 """
 
+import importlib.util
 import json
 import runpy
 from pathlib import Path
@@ -342,3 +343,91 @@ def test_cli_line_free_and_vtk(capsys, tmp_path):
     mesh = meshio.read(tmp_path / "line.vtu")
     assert mesh.point_data["tension"][-1] == pytest.approx(ref.T_B, rel=1e-12)
     assert [p.name for p in tmp_path.iterdir()] == ["line.vtu"]
+
+
+# -- warm starts in the equilibrium loop -------------------------------------------------------
+class _ColdLine:
+    """A third-party line model: ``solve(span, dh)`` only, no warm start."""
+
+    def __init__(self, line):
+        self.line = line
+        self.calls = 0
+
+    def solve(self, span, dh):
+        self.calls += 1
+        return self.line.solve(span, dh)
+
+
+def test_equilibrium_with_warm_starts_equals_cold_solves_and_moorpy(monkeypatch):
+    """The lines warm-started from their previous solutions give the iterates of cold solves
+    (a model without ``start=``), to round-off; both agree with MoorPy."""
+    force, moment = np.array(EXAMPLE["FORCE"]), np.array(EXAMPLE["MOMENT"])
+    warm_system = EXAMPLE["system"]()
+    chain = warm_system.lines[0]
+    cold_models = [_ColdLine(chain) for _ in range(3)]
+    cold_system = cable.MooringSystem(warm_system.body, cold_models, warm_system.anchors)
+    cold = cold_system.equilibrium(force=force, moment=moment)
+    cold_starts = []
+    guess = chain._guess
+    monkeypatch.setattr(chain, "_guess", lambda *args: cold_starts.append(args) or guess(*args))
+    warm = warm_system.equilibrium(force=force, moment=moment)
+    # only the first line at rest is solved cold; the two others of the same model start from it
+    assert len(cold_starts) == 1
+    assert sum(model.calls for model in cold_models) >= 3 * len(cold.history)
+    assert len(warm.history) == len(cold.history)
+    np.testing.assert_allclose(warm.position[:3], cold.position[:3], rtol=0, atol=1e-9)
+    np.testing.assert_allclose(warm.position[3:], cold.position[3:], rtol=0, atol=1e-12)
+    np.testing.assert_allclose(warm.fairlead_forces, cold.fairlead_forces, rtol=1e-10, atol=1e-4)
+    K = cold.stiffness()
+    np.testing.assert_allclose(warm.stiffness(), K, rtol=1e-9, atol=1e-9 * np.abs(K).max())
+    if importlib.util.find_spec("moorpy") is None:
+        return
+    r6, tensions, _, _ = EXAMPLE["moorpy_solve"]()
+    for eq in (warm, cold):
+        np.testing.assert_allclose(eq.position[:3], r6[:3], atol=1e-5)
+        np.testing.assert_allclose(eq.position[3:], r6[3:], atol=1e-8)
+        np.testing.assert_allclose([line.tension_at_fairlead for line in eq.lines], tensions, rtol=1e-7)
+
+
+def test_equilibrium_restarted_from_an_equilibrium():
+    system = EXAMPLE["system"]()
+    force, moment = np.array(EXAMPLE["FORCE"]), np.array(EXAMPLE["MOMENT"])
+    first = system.equilibrium(force=force, moment=moment)
+    again = system.equilibrium(force=force, moment=moment, start=first)
+    assert len(again.history) == 1  # already in equilibrium: no Newton step
+    np.testing.assert_allclose(again.position, first.position, rtol=0, atol=1e-12)
+    # a nearby load from the previous equilibrium: the same as from rest
+    pushed = system.equilibrium(force=1.1 * force, moment=moment, start=first)
+    from_rest = system.equilibrium(force=1.1 * force, moment=moment)
+    np.testing.assert_allclose(pushed.position[:3], from_rest.position[:3], rtol=0, atol=1e-8)
+    np.testing.assert_allclose(pushed.position[3:], from_rest.position[3:], rtol=0, atol=1e-10)
+    other = EXAMPLE["system"]()
+    with pytest.raises(InputError) as err:
+        other.equilibrium(force=force, start=first)
+    assert err.value.argument == "start"
+    with pytest.raises(InputError) as err:
+        system.solve_lines(first.position, start=first.lines[:2])
+    assert err.value.argument == "start"
+
+
+def test_line_models_with_and_without_start():
+    from skcable.cable.lines.line3d import takes_start
+
+    class Keyword:
+        def solve(self, span, dh, *, start=None): ...
+
+    class Anything:
+        def solve(self, span, dh, **options): ...
+
+    assert takes_start(CHAIN) and takes_start(Keyword()) and takes_start(Anything())
+    cold = _ColdLine(CHAIN)
+    assert not takes_start(cold)
+    anchor, fairlead = [0.0, 0.0, -200.0], [780.0, 0.0, -14.0]
+    previous = cable.line_3d(CHAIN, anchor, [785.0, 1.0, -14.5])
+    with pytest.raises(InputError) as err:
+        cable.line_3d(cold, anchor, fairlead, start=previous)
+    assert err.value.argument == "start"
+    warm = cable.line_3d(CHAIN, anchor, fairlead, start=previous)
+    reference = cable.line_3d(cold, anchor, fairlead)
+    np.testing.assert_allclose(warm.force_on_fairlead, reference.force_on_fairlead, rtol=1e-12)
+    np.testing.assert_allclose(warm.stiffness(), reference.stiffness(), rtol=1e-9)

@@ -399,3 +399,25 @@ def test_tension_at_the_anchor_of_a_lifted_line_is_T_A():
     assert np.all(r.length_on_seabed == 0.0) and np.all(r.V_A < 0)
     np.testing.assert_allclose(r.T_of_s(0.0), np.hypot(free.H, free.V_A), rtol=1e-14)
     np.testing.assert_allclose(r.T_of_s(0.0), r.T_A, rtol=1e-14)
+
+
+def test_scalar_path_equals_the_array_path_over_every_regime():
+    """One scene runs on Python floats, several on arrays: the same iteration, to round-off.
+    Grounded with and without friction, lifted, and anchor above the seabed with and without
+    a touchdown."""
+    span = np.array([800.0, 800.0, 700.0, 800.0, 800.0, 760.0, 990.0])
+    dh = np.array([150.0, 150.0, 100.0, 150.0, 150.0, 150.0, 10.0])
+    length = np.array([850.0, 850.0, 690.0, 850.0, 850.0, 850.0, 999.0])
+    seabed = np.array([0.0, 0.0, 0.0, -20.0, -46.5, -200.0, 0.0])
+    friction = np.array([0.0, 0.5, 0.0, 0.0, 0.0, 0.0, 0.6])
+    r = cable.elastic_catenary(span, dh, 1000.0, 5e8, length=length, seabed=seabed, friction=friction)
+    assert np.any(r.length_to_seabed > 0) and np.any(r.length_on_seabed == 0)
+    for i in range(len(span)):
+        s = cable.elastic_catenary(
+            span[i], dh[i], 1000.0, 5e8, length=length[i], seabed=seabed[i], friction=friction[i]
+        )
+        assert isinstance(s.H, float)
+        names = ("H", "V_A", "V_B", "H_A", "T_B", "length_on_seabed", "length_to_seabed", "x_touchdown")
+        for name in names:
+            assert getattr(s, name) == pytest.approx(getattr(r, name)[i], rel=1e-12, abs=1e-12 * s.T_B), name
+        np.testing.assert_allclose(s.stiffness(), r.stiffness()[i], rtol=1e-10)

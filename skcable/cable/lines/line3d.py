@@ -34,19 +34,23 @@ in tension.
 A *line model* is any object with ``solve(span, dh)`` returning a 2-D solution
 with ``H, V_A, V_B, H_A, length, length_on_seabed, x_touchdown``, ``x_of_s(s)``,
 ``y_of_s(s)``, ``T_of_s(s)`` (unstretched arc length ``s`` from A), ``stiffness()``
-and ``tensions()`` (a pandas DataFrame, one row per segment).
+and ``tensions()`` (a pandas DataFrame, one row per segment). A model may also take
+a warm start, ``solve(span, dh, start=previous_solution)`` (as `skcable.cable.Line`
+does): the 3-D layer then passes the line's previous solution (`takes_start` tells).
 """
 
 from __future__ import annotations
 
-from functools import cached_property
+import inspect
+import math
+from functools import cached_property, lru_cache
 
 import numpy as np
 
 from skcable._checks import real
 from skcable.errors import InputError
 
-__all__ = ["Line3D", "line_3d", "point"]
+__all__ = ["Line3D", "line_3d", "point", "takes_start"]
 
 
 def point(name: str, value) -> np.ndarray:
@@ -59,7 +63,7 @@ def point(name: str, value) -> np.ndarray:
 
 def _finite(name: str, value) -> float:
     value = float(value)
-    if not np.isfinite(value):
+    if not math.isfinite(value):
         raise InputError(name, f"the line model returned a non-finite value {value!r}")
     return value
 
@@ -87,24 +91,24 @@ class Line3D:
 
     def __init__(self, model, anchor, fairlead, solution):
         self.model, self.anchor, self.fairlead, self.solution = model, anchor, fairlead, solution
-        d = fairlead - anchor
-        self.span = float(np.hypot(d[0], d[1]))
-        self.dh = float(d[2])
-        self.direction = np.array([d[0] / self.span, d[1] / self.span, 0.0])
-        self.H = _finite("model", solution.H)
-        self.V_B = _finite("model", solution.V_B)
-        self.H_A = _finite("model", solution.H_A)
-        self.V_A = _finite("model", solution.V_A)
-        e = self.direction
-        self.force_on_fairlead = np.array([-self.H * e[0], -self.H * e[1], -self.V_B])
-        self.force_on_anchor = np.array([self.H_A * e[0], self.H_A * e[1], -self.V_A])
-        self.tension_at_fairlead = float(np.linalg.norm(self.force_on_fairlead))
-        self.tension_at_anchor = float(np.linalg.norm(self.force_on_anchor))
+        dx, dy, dz = (fairlead - anchor).tolist()
+        self.span = r = math.hypot(dx, dy)
+        self.dh = dz
+        ex, ey = dx / r, dy / r
+        self.direction = np.array([ex, ey, 0.0])
+        self.H = H = _finite("model", solution.H)
+        self.V_B = V_B = _finite("model", solution.V_B)
+        self.H_A = H_A = _finite("model", solution.H_A)
+        self.V_A = V_A = _finite("model", solution.V_A)
+        self.force_on_fairlead = np.array([-H * ex, -H * ey, -V_B])
+        self.force_on_anchor = np.array([H_A * ex, H_A * ey, -V_A])
+        self.tension_at_fairlead = math.hypot(H * ex, H * ey, V_B)
+        self.tension_at_anchor = math.hypot(H_A * ex, H_A * ey, V_A)
 
     @cached_property
     def _k2(self) -> np.ndarray:
         k2 = np.asarray(self.solution.stiffness(), dtype=float)
-        if k2.shape != (2, 2) or not np.isfinite(k2).all():
+        if k2.shape != (2, 2) or not all(map(math.isfinite, k2.flat)):
             raise InputError("model", f"the line model's stiffness() must be a finite 2x2 matrix, got {k2!r}")
         return k2
 
@@ -114,15 +118,17 @@ class Line3D:
         Radial and vertical terms from the 2-D ``stiffness()`` ``∂(H, V_B)/∂(span, dh)``,
         transverse term ``H/r`` (see the module docstring for the matrix).
         """
-        k = self._k2
-        e = self.direction[:2]
-        ee = np.outer(e, e)
-        K = np.empty((3, 3))
-        K[:2, :2] = k[0, 0] * ee + (self.H / self.span) * (np.eye(2) - ee)
-        K[:2, 2] = k[0, 1] * e
-        K[2, :2] = k[1, 0] * e
-        K[2, 2] = k[1, 1]
-        return K
+        (k_hh, k_hv), (k_vh, k_vv) = self._k2.tolist()
+        ex, ey = float(self.direction[0]), float(self.direction[1])
+        exx, exy, eyy = ex * ex, ex * ey, ey * ey
+        c = self.H / self.span
+        return np.array(
+            [
+                [k_hh * exx + c * (1.0 - exx), k_hh * exy + c * (0.0 - exy), k_hv * ex],
+                [k_hh * exy + c * (0.0 - exy), k_hh * eyy + c * (1.0 - eyy), k_hv * ey],
+                [k_vh * ex, k_vh * ey, k_vv],
+            ]
+        )
 
     def to_global(self, x, y) -> np.ndarray:
         """Points ``(x, y)`` of the line's plane (A at the origin, y up) in global axes, shape (n, 3)."""
@@ -155,7 +161,33 @@ class Line3D:
         )
 
 
-def line_3d(model, anchor, fairlead) -> Line3D:
+@lru_cache(maxsize=256)
+def _solve_takes_start(solve) -> bool:
+    try:
+        parameters = inspect.signature(solve).parameters.values()
+    except (TypeError, ValueError):  # a callable without an introspectable signature
+        return False
+    return any(
+        (p.name == "start" and p.kind in (p.POSITIONAL_OR_KEYWORD, p.KEYWORD_ONLY)) or p.kind is p.VAR_KEYWORD
+        for p in parameters
+    )
+
+
+def takes_start(model) -> bool:
+    """Whether ``model.solve`` accepts a warm start ``start=`` (a keyword or ``**kwargs``).
+
+    Inspected once per ``solve`` function (cached): third-party line models with
+    ``solve(span, dh)`` only are called without it.
+    """
+    solve = model.solve
+    solve = getattr(solve, "__func__", solve)
+    try:
+        return _solve_takes_start(solve)
+    except TypeError:  # an unhashable callable: inspected each time
+        return _solve_takes_start.__wrapped__(solve)
+
+
+def line_3d(model, anchor, fairlead, start=None) -> Line3D:
     """Solve a line model between an anchor and a fairlead in space.
 
     Parameters
@@ -165,6 +197,11 @@ def line_3d(model, anchor, fairlead) -> Line3D:
         module docstring for the attributes it must have).
     anchor, fairlead : array_like, shape (3,)
         End points (m), z up. The fairlead must not lie on the anchor's vertical.
+    start : Line3D or 2-D solution, optional
+        A previous solution of the same model (typically at a nearby fairlead),
+        passed on as ``model.solve(span, dh, start=...)``: a warm start for Newton's
+        method (see `skcable.cable.Line.solve`); the model must accept it
+        (`takes_start`).
 
     Returns
     -------
@@ -176,18 +213,34 @@ def line_3d(model, anchor, fairlead) -> Line3D:
     InputError
         A point that is not 3 finite numbers, or a fairlead directly above or
         below the anchor (``r = 0``: the line's plane, the horizontal direction
-        and the transverse stiffness ``H/r`` are undefined); errors of the model.
+        and the transverse stiffness ``H/r`` are undefined); a ``start`` given to a
+        model whose ``solve`` takes none; errors of the model.
     ConvergenceError
         The model's solver did not converge.
     """
     a = point("anchor", anchor)
     b = point("fairlead", fairlead)
-    r = float(np.hypot(b[0] - a[0], b[1] - a[1]))
+    r = math.hypot(float(b[0] - a[0]), float(b[1] - a[1]))
     if not r > 1e-9 * max(1.0, float(np.abs(b - a).max())):
         raise InputError(
             "fairlead",
             f"lies on the vertical of the anchor (horizontal distance {r:.3g} m): the line's vertical "
             "plane is undefined; give a fairlead offset horizontally from the anchor",
         )
-    solution = model.solve(r, float(b[2] - a[2]))
-    return Line3D(model, a, b, solution)
+    if start is not None and not takes_start(model):
+        raise InputError("start", f"the line model {type(model).__name__}.solve takes no start= argument")
+    return solve_in_space(model, a, b, r, start)
+
+
+def solve_in_space(model, anchor, fairlead, span, start=None) -> Line3D:
+    """`line_3d` on checked arguments: float 3-vectors ``anchor`` and ``fairlead`` at the
+    horizontal distance ``span > 0``, and a ``start`` the model takes (or None).
+
+    For callers that checked them once (`skcable.cable.MooringSystem` in its Newton loop).
+    """
+    dh = float(fairlead[2] - anchor[2])
+    if start is None:
+        solution = model.solve(span, dh)
+    else:
+        solution = model.solve(span, dh, start=start.solution if isinstance(start, Line3D) else start)
+    return Line3D(model, anchor, fairlead, solution)

@@ -36,12 +36,13 @@ of the Jacobian of the closure equations (implicit function theorem).
 
 from __future__ import annotations
 
+import math
 from functools import cached_property
 
 import numpy as np
 
 from skcable._checks import broadcast, float_range, nonnegative, positive, real, require
-from skcable._xp import namespace
+from skcable._xp import namespace, scalar_math
 from skcable.cable._elastic import ElasticCatenary, elastic_stiffness, inverse_2x2
 from skcable.cable._elastic import elastic_catenary as free_elastic_catenary
 from skcable.cable._roots import find_root
@@ -62,6 +63,8 @@ _TOL = 1e-13
 
 def _tensioned(H, L_B, mu_w):
     """Length of the grounded part that carries tension, ``min(L_B, H/(C_B w))``."""
+    if namespace(H, L_B, mu_w) is scalar_math:
+        return min(L_B, H / mu_w) if mu_w > 0 else L_B
     with np.errstate(divide="ignore"):
         reach = np.where(mu_w > 0, H / np.where(mu_w > 0, mu_w, 1.0), np.inf)
     return np.minimum(L_B, reach)
@@ -76,16 +79,20 @@ def anchor_part(H, w, EA, depth):
     vertical reaction at A), ``T_1``, its abscissa ``x_1``, the length ``s_1 = V_1/w``
     and ``dV_1/dH``; all zero for ``depth = 0``.
     """
-    if not np.any(depth):  # the anchor on the seabed: no anchor part
+    xp = namespace(H, w, EA, depth)
+    if not (depth if xp is scalar_math else np.any(depth)):  # the anchor on the seabed: no anchor part
         zero = 0.0 * H
         return zero, H, zero, zero, zero
     b = 1.0 + H / EA
-    u = 2.0 * w * depth / (b + np.sqrt(b * b + 2.0 * w * depth / EA))
+    u = 2.0 * w * depth / (b + xp.sqrt(b * b + 2.0 * w * depth / EA))
     T1 = H + u
-    V1 = np.sqrt(u * (u + 2.0 * H))
+    V1 = xp.sqrt(u * (u + 2.0 * H))
     s1 = V1 / w
-    x1 = H * s1 / EA + H / w * np.arcsinh(V1 / H)
+    x1 = H * s1 / EA + H / w * xp.arcsinh(V1 / H)
     # implicit derivative of the height at constant depth
+    if xp is scalar_math:
+        dV1 = u / ((V1 if V1 > 0 else 1.0) * (1.0 + T1 / EA)) if depth > 0 else 0.0
+        return V1, T1, x1, s1, dV1
     with np.errstate(invalid="ignore", divide="ignore"):
         dV1 = np.where(depth > 0, u / (np.where(V1 > 0, V1, 1.0) * (1.0 + T1 / EA)), 0.0)
     return V1, T1, x1, s1, dV1
@@ -97,17 +104,18 @@ def grounded_closure(span, dh, w, EA, L, mu_w, H, V, depth=0.0):
     the friction force per unit grounded length). With ``depth > 0`` the anchor
     is that high above the seabed and the line hangs from it down to a first
     touchdown (`anchor_part`); ``dh`` is then measured from A, as always."""
+    xp = namespace(span, dh, w, EA, L, mu_w, H, V, depth)
     V1, T1, x1, s1, dV1 = anchor_part(H, w, EA, depth)
     L_B = L - s1 - V / w
-    T = np.hypot(H, V)
+    T = xp.hypot(H, V)
     ell = _tensioned(H, L_B, mu_w)
-    H_A = np.maximum(H - mu_w * L_B, 0.0)
-    asinh = np.arcsinh(V / H)
+    H_A = xp.maximum(H - mu_w * L_B, 0.0)
+    asinh = xp.arcsinh(V / H)
     f_x = x1 + L_B + H / w * asinh + H * V / (w * EA) + (H * ell - 0.5 * mu_w * ell * ell) / EA - span
     f_z = V * V / (T + H) / w + V * V / (2.0 * EA * w) - (dh + depth)  # (T - H)/w without cancellation
     j_xh = (asinh - V / T) / w + V / (w * EA) + ell / EA
     # the anchor part: dx_1/dH - ds_1/dH (1 + H_A/EA), ds_1/dH = dV_1/dH / w
-    j_xh = j_xh + s1 / EA + (np.arcsinh(V1 / H) - V1 / T1) / w
+    j_xh = j_xh + s1 / EA + (xp.arcsinh(V1 / H) - V1 / T1) / w
     j_xh = j_xh + dV1 * ((H / T1 - 1.0) + (H - H_A) / EA) / w
     j_xv = (-1.0 + H / T + (H - H_A) / EA) / w
     j_zh = -(V * V / (T + H)) / (T * w)  # (H/T - 1)/w
@@ -143,6 +151,62 @@ def _inextensible_guess(span, dh, w, EA, L, H0):
     h = np.where(ok, h, H0 / w)
     V = np.where(ok, np.sqrt(dh * dh + 2.0 * dh * h), w * L * (1 - 1e-9))
     return w * h, np.minimum(V * w, w * L * (1 - 1e-9))
+
+
+def _inextensible_guess_scalar(span, dh, w, EA, L, H0):
+    """`_inextensible_guess` of one scene, on Python floats."""
+    L1 = L * (1.0 + H0 / EA)
+    cap = w * L * (1 - 1e-9)
+    if not L1 > dh * (1 + 1e-9):
+        return w * (H0 / w), min(cap * w, cap)
+    h_max = (L1 * L1 - dh * dh) / (2.0 * dh)
+
+    def f(h):
+        v = math.sqrt(dh * dh + 2.0 * dh * h)
+        return L1 - v + h * math.asinh(v / h) - span
+
+    lo, hi = h_max * 1e-12, h_max
+    f_lo, f_hi = f(lo), f(hi)
+    h = lo if f_lo >= 0 else hi
+    if f_lo < 0 and f_hi > 0:  # a starting point only: Newton on the full equations refines it
+        h, _ = find_root(f, lo, hi, what="seabed guess", xtol=1e-9 * hi)
+    V = math.sqrt(dh * dh + 2.0 * dh * h)
+    return w * h, min(V * w, cap)
+
+
+def _solve_grounded_scalar(span, dh, w, EA, L, mu_w, H0, depth):
+    """`_solve_grounded` of one scene, on Python floats (the same iteration)."""
+    _, _, x1, s1, _ = anchor_part(H0, w, EA, depth)
+    H, V = _inextensible_guess_scalar(span - x1, dh + depth, w, EA, L - s1, H0)
+    chord = math.hypot(span, dh)
+    f_x, f_z, j_xh, j_xv, j_zh, j_zv = grounded_closure(span, dh, w, EA, L, mu_w, H, V, depth)
+    norm = max(abs(f_x), abs(f_z)) / chord
+    history = [norm]
+    polish = 0
+    for _ in range(80):
+        if norm < _TOL:
+            polish += 1  # one more step into the round-off floor
+            if polish > 1:
+                return H, V, history
+        det = j_xh * j_zv - j_xv * j_zh
+        if not (det != 0.0 and math.isfinite(det)):
+            break
+        d_h = -(f_x * j_zv - f_z * j_xv) / det
+        d_v = -(j_xh * f_z - j_zh * f_x) / det
+        step = 1.0
+        for _ in range(40):  # backtrack: H > 0, 0 < V <= wL, residual reduced
+            H_new, V_new = H + step * d_h, V + step * d_v
+            s1 = anchor_part(H_new if H_new > 0 else 1.0, w, EA, depth)[3]
+            valid = H_new > 0 and V_new > 0 and V_new <= w * (L - s1)
+            H_try, V_try = (H_new, V_new) if valid else (H, V)
+            f_x, f_z, j_xh, j_xv, j_zh, j_zv = grounded_closure(span, dh, w, EA, L, mu_w, H_try, V_try, depth)
+            new = max(abs(f_x), abs(f_z)) / chord
+            if valid and new < norm * (1.0 - 1e-4 * step) + 4 * _TOL:
+                break
+            step = 0.5 * step
+        H, V, norm = H_try, V_try, new
+        history.append(norm)
+    raise ConvergenceError("elastic_catenary (seabed): Newton did not converge", history)
 
 
 def _solve_grounded(span, dh, w, EA, L, mu_w, H0, depth):
@@ -458,6 +522,15 @@ def _lifted(span, dh, w, EA, L):
     ``D <= 0`` the line's own stretch exceeds ``dh`` and it always touches.
     """
     D = dh - w * L * L / (2.0 * EA)
+    if namespace(span, dh, w, EA, L) is scalar_math:  # one scene, on floats
+        if D <= 0:
+            return False, 0.0
+        P = w * L * L / D
+        H = 0.5 * (P - (w * L) * (w * L / P))
+        if not H > 0:
+            return True, 0.0
+        X = H * L / EA + H / w * math.asinh(w * L / H)
+        return span >= X, H
     touches = np.asarray(D <= 0)
     with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
         P = w * L * L / np.where(touches, 1.0, D)
@@ -528,6 +601,8 @@ def elastic_catenary(span, dh, w, EA, *, length, seabed=None, friction=0.0):
     broadcast(span=span, dh=dh, w=w, EA=EA, length=L0, seabed=seabed, friction=friction)
     require("seabed", np.asarray(seabed) <= 0, "must be at or below the anchor (A at height 0)", seabed)
     require("dh", np.asarray(dh) > seabed, "must put B above the seabed", dh)
+    if all(isinstance(v, float) for v in (span, dh, w, EA, L0, seabed, friction)):
+        return _seabed_catenary_scalar(span, dh, w, EA, L0, seabed, friction)
     shape = np.broadcast_shapes(*(np.shape(v) for v in (span, dh, w, EA, L0, seabed, friction)))
     on_bed = np.broadcast_to(np.asarray(seabed) == 0, shape)
     lifted, H_lift = _lifted(span, dh, w, EA, L0)
@@ -571,13 +646,57 @@ def elastic_catenary(span, dh, w, EA, *, length, seabed=None, friction=0.0):
                 "H = 0): give a shorter line or a longer span",
             )
         args = [np.broadcast_to(v, shape)[contact] for v in (span, dh, w, EA, L0, friction * w, guess, depth)]
-        Hc, Vc, history = _solve_grounded(*args)
+        if shape == ():  # one scene: the same Newton on Python floats
+            args = [float(v[0]) for v in args]
+            Hc, Vc, history = _solve_grounded_scalar(*args)
+        else:
+            Hc, Vc, history = _solve_grounded(*args)
         V1 = anchor_part(Hc, args[2], args[3], args[7])[0]
         H[contact], V_t[contact], V_1[contact] = Hc, 0.0, V1
         L_B[contact] = np.maximum(args[4] - V1 / args[2] - Vc / args[2], 0.0)
     y_t = np.where(contact, np.broadcast_to(seabed, shape), 0.0)
     if shape == ():
         H, V_t, L_B, V_1, y_t = (float(v) for v in (H, V_t, L_B, V_1, y_t))
+    with float_range("length", "a result"):
+        solution = SeabedCatenary(span, dh, w, EA, L0, friction, seabed, H, V_t, L_B, V_1, y_t)
+        return checked_closed_form(solution, "length", history)
+
+
+def _seabed_catenary_scalar(span, dh, w, EA, L0, seabed, friction):
+    """`elastic_catenary` with a seabed for one scene (checked Python floats): the same
+    steps as the array path without its masks and broadcasts."""
+    lifted, H_lift = _lifted(span, dh, w, EA, L0)
+    contact = seabed == 0 and not lifted
+    guess = min(H_lift, w * L0) if H_lift > 0 else w * L0
+    H, V_t, L_B, V_1, depth, history = 0.0, 0.0, 0.0, 0.0, 0.0, []
+    if not contact:
+        free = free_elastic_catenary(span, dh, w, EA, length=L0)
+        H, V_t = free.H, free.V_A
+        if free.y_low < seabed:  # anchor above the seabed, the free line below it: a touchdown
+            require(
+                "friction",
+                friction == 0,
+                "must be 0 where the line touches down between A and B (anchor above the seabed): "
+                "the static friction there depends on the history of the motion",
+                friction,
+            )
+            contact, depth, guess = True, -seabed, H
+    if contact:
+        # H -> 0: A and B hold the vertical parts V_0 (Z = V/w + V^2/(2 EA w)), the rest lies
+        # at X_0 = L - V_0,A/w - V_0,B/w; a shorter span leaves line in a heap (H = 0)
+        def v_0(height):
+            return 2.0 * w * height / (1.0 + math.sqrt(1.0 + 2.0 * w * height / EA))
+
+        if span <= L0 - (v_0(dh + depth) + v_0(depth)) / w:
+            raise InputError(
+                "length",
+                "leaves slack line lying in a heap on the seabed (span <= length - hanging length, "
+                "H = 0): give a shorter line or a longer span",
+            )
+        H, Vc, history = _solve_grounded_scalar(span, dh, w, EA, L0, friction * w, guess, depth)
+        V_1 = anchor_part(H, w, EA, depth)[0]
+        V_t, L_B = 0.0, max(L0 - V_1 / w - Vc / w, 0.0)
+    y_t = seabed if contact else 0.0
     with float_range("length", "a result"):
         solution = SeabedCatenary(span, dh, w, EA, L0, friction, seabed, H, V_t, L_B, V_1, y_t)
         return checked_closed_form(solution, "length", history)

@@ -32,20 +32,23 @@ tension ``T_u`` at its upper end stretches by ``(T_u \ell - C_B w \ell^2/2)/EA``
 (J.M. Jonkman, "Dynamics modeling and loads analysis of an offshore floating
 wind turbine", NREL, 2007, applied piece by piece).
 
-The closure ``X(H, V) = span``, ``Z(H, V) = dh`` is solved by nested
-bracketing (``Z`` increases with ``V`` at fixed ``H``; then ``X`` in ``H``),
-then polished by Newton's method with its analytic Jacobian. The fairlead
-stiffness is the inverse of that Jacobian (implicit function theorem).
+The closure ``X(H, V) = span``, ``Z(H, V) = dh`` is solved by Newton's method
+with its analytic Jacobian, from a previous solution (a warm start), else from
+the uniform line of the same length, weight and compliance, else from nested
+bracketing (``Z`` increases with ``V`` at fixed ``H``; then ``X`` in ``H``); every
+path ends polishing the same root to round-off. The fairlead stiffness is the
+inverse of that Jacobian (implicit function theorem).
 """
 
 from __future__ import annotations
 
+import math
 from functools import cached_property
 
 import numpy as np
 
 from skcable._checks import nonnegative, positive, real, require, scalar
-from skcable.cable._elastic import inverse_2x2
+from skcable._xp import scalar_math
 from skcable.cable._roots import find_root
 from skcable.cable._special import asinh_diff
 from skcable.cable.lines.seabed import elastic_catenary
@@ -130,8 +133,8 @@ class _State:
     """The closed form evaluated at ``(H, V)``: closure, Jacobian and the pieces."""
 
     __slots__ = (
-        "H", "V", "k", "a", "V_top", "V_bot", "Vb", "L_s", "X", "Z", "jac",
-        "l_g", "T_g", "m_g", "R", "contact", "H_A",
+        "H", "V", "k", "a", "V_top", "V_bot", "V_bot0", "Vb", "L_s", "Tt", "Tb", "dx", "dy", "X", "Z", "jac",
+        "l_g", "T_g", "m_g", "R", "stretch", "contact", "H_A",
     )  # fmt: skip
 
 
@@ -186,6 +189,22 @@ class Line:
         self._L = np.array([s.length for s in segments])
         self._w = np.array([s.w for s in segments])
         self._EA = np.array([s.EA for s in segments])
+        # the same as Python floats, for the scalar parts of the closed form
+        self._Lf = [float(s.length) for s in segments]
+        self._wf = [float(s.w) for s in segments]
+        self._EAf = [float(s.EA) for s in segments]
+        self._wL = self._w * self._L
+        self._wLf = self._wL.tolist()
+        self._Pf = P.tolist()
+        self._weight = float(self._w @ self._L + P.sum())
+        self._length = float(self._L.sum())
+        self._P_end = (float(P[0]), float(P[n]))
+        self._weight_segments = float(self._w @ self._L)
+        self._abs_joint_forces = float(np.abs(P).sum())
+        self._no_ground = np.zeros(1)
+        self._no_ground.flags.writeable = False
+        self._s0 = np.concatenate([[0.0], np.cumsum(self._L)])
+        self._s0.flags.writeable = False
         self.joint_forces = P
         """Downward point force at each joint (N), ``n + 1`` values (buoys negative)."""
         # load between the top of segment i and the fairlead (joint n excluded)
@@ -196,12 +215,12 @@ class Line:
     @property
     def length(self):
         """Total unstretched length (m)."""
-        return float(self._L.sum())
+        return self._length
 
     @property
     def weight(self):
         """Total weight in water of the segments and the attachments (N)."""
-        return float(self._w @ self._L + self.joint_forces.sum())
+        return self._weight
 
     def __repr__(self):
         return (
@@ -211,36 +230,57 @@ class Line:
 
     # -- the closed form ----------------------------------------------------------------
     def _state(self, H, V):
-        """Closure ``(X, Z)`` and its Jacobian in ``(H, V)`` at fairlead forces ``(H, V)``."""
-        L, w, EA, P, mu = self._L, self._w, self._EA, self.joint_forces, self.friction
+        """Closure ``(X, Z)`` and its Jacobian in ``(H, V)`` at fairlead forces ``(H, V)``.
+
+        The suspended pieces are evaluated with NumPy over the segments, or with `math`
+        when a single piece hangs (`skcable._xp`: one formula, two back ends); the
+        grounded pieces are walked from the touchdown to the anchor with Python floats
+        (the tension at each piece's lower end depends on the piece above it)."""
+        L, w, EA, mu = self._L, self._w, self._EA, self.friction
         st = _State()
         st.H, st.V = H, V
-        V_top = V - self._Q_top
-        V_bot = V_top - w * L
-        st.V_top, st.V_bot = V_top, V_bot
-        contact = self._contact and V_bot[0] < 0
-        if contact:
-            up = np.flatnonzero(V_top > 0)
-            if up.size == 0:
+        n = len(L)
+        if n == 1:  # one segment: Python floats throughout
+            V_top = V_bot = None  # not needed here; LineSolution forms them
+            V_bot_k = st.V_bot0 = V - self._wLf[0]
+            contact = self._contact and V_bot_k < 0
+            if contact and not V > 0:
                 return None  # the whole line would lie on the seabed
-            k = int(up[0])
-        else:
             k = 0
+            V_top_k = V
+        else:
+            V_top = V - self._Q_top
+            V_bot = V_top - self._wL
+            st.V_bot0 = float(V_bot[0])
+            contact = self._contact and V_bot[0] < 0
+            if contact:
+                up = np.flatnonzero(V_top > 0)
+                if up.size == 0:
+                    return None  # the whole line would lie on the seabed
+                k = int(up[0])
+            else:
+                k = 0
+            V_bot_k, V_top_k = float(V_bot[k]), float(V_top[k])
         st.contact, st.k = contact, k
-        # suspended pieces k .. n-1
-        Vt = V_top[k:]
-        Vb = V_bot[k:].copy()
-        dVb = np.ones_like(Vb)
+        # suspended pieces k .. n-1; a tangent touchdown inside piece k (contact, V_bot < 0)
+        # starts it at V = 0, a length a = -V_bot/w from its lower end
         a = 0.0
-        if contact and Vb[0] < 0:
-            a = -Vb[0] / w[k]
-            Vb[0], dVb[0] = 0.0, 0.0
-        st.a, st.Vb = a, Vb
-        Ls = L[k:].copy()
-        Ls[0] -= a
-        st.L_s = Ls
-        ws, EAs = w[k:], EA[k:]
-        Tt, Tb = np.hypot(H, Vt), np.hypot(H, Vb)
+        touchdown = contact and V_bot_k < 0
+        if touchdown:
+            a = -V_bot_k / self._wf[k]
+        st.a = a
+        if k == n - 1:  # one suspended piece: Python floats
+            xp = scalar_math
+            Vt, Vb, Ls = V_top_k, (0.0 if touchdown else V_bot_k), self._Lf[k] - a
+            ws, EAs, dVb = self._wf[k], self._EAf[k], (0.0 if touchdown else 1.0)
+        else:
+            xp = np
+            Vt, Vb, Ls = V_top[k:], V_bot[k:].copy(), L[k:].copy()
+            ws, EAs, dVb = w[k:], EA[k:], np.ones(n - k)
+            if touchdown:
+                Vb[0], dVb[0] = 0.0, 0.0
+                Ls[0] -= a
+        Tt, Tb = xp.hypot(H, Vt), xp.hypot(H, Vb)
         ad = asinh_diff(Vt / H, Vb / H)
         dx = H * Ls / EAs + H / ws * ad
         dy = Ls * (Vt + Vb) / (2.0 * EAs) + (Vt - Vb) * (Vt + Vb) / ((Tt + Tb) * ws)
@@ -248,43 +288,68 @@ class Line:
         x_v = H / ws * (1.0 / EAs + 1.0 / Tt) - dVb * H / ws * (1.0 / EAs + 1.0 / Tb)
         y_h = H * (Tb - Tt) / (Tt * Tb * ws)
         y_v = Vt * (1.0 / Tt + 1.0 / EAs) / ws - dVb * Vb * (1.0 / Tb + 1.0 / EAs) / ws
-        X, Z = dx.sum(), dy.sum()
-        J = np.array([[x_h.sum(), x_v.sum()], [y_h.sum(), y_v.sum()]])
-        # grounded pieces k, k-1, .. 0 from the touchdown towards the anchor
-        l_g = np.zeros(k + 1)
-        T_g = np.zeros(k + 1)  # tension at each grounded piece's upper end
-        R = np.zeros(k + 1)  # seabed reaction at joints 1..k (index j)
+        if xp is np:
+            X, Z = float(dx.sum()), float(dy.sum())
+            jxh, jxv, jzh, jzv = float(x_h.sum()), float(x_v.sum()), float(y_h.sum()), float(y_v.sum())
+        else:
+            X, Z, jxh, jxv, jzh, jzv = dx, dy, x_h, x_v, y_h, y_v
+        st.Vb, st.L_s, st.Tt, st.Tb, st.dx, st.dy = Vb, Ls, Tt, Tb, dx, dy
+        # grounded pieces k, k-1, .. 0 from the touchdown towards the anchor; T and its
+        # derivatives (dT_h, dT_v) in (H, V) at the upper end of each piece
         if contact:
-            l_g[:k] = L[:k]
-            l_g[k] = a
-            R[1:] = P[1 : k + 1]
-            R[k] = P[k] - max(V_bot[k], 0.0) if k > 0 else 0.0
-            T, dT = H, np.array([1.0, 0.0])
+            Lf, wf, EAf = self._Lf, self._wf, self._EAf
+            l_g = [*Lf[:k], a]
+            T_g = [0.0] * (k + 1)  # tension at each grounded piece's upper end
+            stretch = [0.0] * (k + 1)  # elongation of each grounded piece
+            R = [0.0, *self._Pf[1 : k + 1]]  # seabed reaction at joints 1..k (index j)
+            vk = V_bot_k
+            if k > 0:
+                R[k] = self._Pf[k] - max(vk, 0.0)
+            T, dT_h, dT_v = H, 1.0, 0.0
             for i in range(k, -1, -1):
                 if i < k:  # the joint above piece i (joint i+1)
-                    dR = np.array([0.0, -1.0]) if (i + 1 == k and V_bot[k] > 0) else np.zeros(2)
                     Rj = R[i + 1]
-                    T = T - mu * max(Rj, 0.0)
-                    dT = dT - (mu * dR if Rj > 0 else 0.0)
+                    if Rj > 0:
+                        T = T - mu * Rj
+                        if i + 1 == k and vk > 0:  # dR/dV = -1
+                            dT_v = dT_v + mu
                     if T <= 0:
-                        T, dT = 0.0, np.zeros(2)
+                        T, dT_h, dT_v = 0.0, 0.0, 0.0
                 T_g[i] = T
                 l = l_g[i]
-                dl = np.array([0.0, -1.0 / w[k]]) if (i == k and a > 0) else np.zeros(2)
-                m = mu * w[i]
+                dl_v = -1.0 / wf[k] if (i == k and a > 0) else 0.0
+                m = mu * wf[i]
                 if m == 0 or T - m * l > 0:
-                    X += l + (T * l - 0.5 * m * l * l) / EA[i]
-                    J[0] += dl + (dT * l + T * dl - m * l * dl) / EA[i]
-                    T, dT = T - m * l, dT - m * dl
+                    stretch[i] = (T * l - 0.5 * m * l * l) / EAf[i]
+                    X += l + stretch[i]
+                    jxh += dT_h * l / EAf[i]
+                    jxv += dl_v + (dT_v * l + T * dl_v - m * l * dl_v) / EAf[i]
+                    T, dT_v = T - m * l, dT_v - m * dl_v
                 else:
-                    X += l + 0.5 * T * T / (m * EA[i])
-                    J[0] += dl + T * dT / (m * EA[i])
-                    T, dT = 0.0, np.zeros(2)
-        st.l_g, st.T_g, st.R = l_g, T_g, R
-        st.m_g = mu * w[: k + 1]
-        st.H_A = T if contact else H
-        st.X, st.Z, st.jac = X, Z, J
+                    stretch[i] = 0.5 * T * T / (m * EAf[i])
+                    X += l + stretch[i]
+                    jxh += T * dT_h / (m * EAf[i])
+                    jxv += dl_v + T * dT_v / (m * EAf[i])
+                    T, dT_h, dT_v = 0.0, 0.0, 0.0
+            st.l_g, st.T_g, st.R, st.stretch = l_g, T_g, R, stretch
+            st.H_A = T
+        else:
+            st.l_g = st.T_g = st.R = st.stretch = None
+            st.H_A = H
+        st.V_top, st.V_bot = V_top, V_bot
+        st.X, st.Z, st.jac = X, Z, (jxh, jxv, jzh, jzv)
         return st
+
+    def _trial_state(self, H, V):
+        """`_state` at a Newton iterate, None where it is no state: ``H <= 0``, the whole line
+        on the seabed, or forces so small that a product of them underflows to a division
+        by zero (the Python floats of a one-segment line raise there)."""
+        if not H > 0:
+            return None
+        try:
+            return self._state(H, V)
+        except ZeroDivisionError:
+            return None
 
     def _height_of_v(self, H, dh):
         """``V`` with ``Z(H, V) = dh`` (``Z`` increases with ``V``), by bracketing."""
@@ -321,9 +386,14 @@ class Line:
             return None
         return float(ref.H), float(ref.V_B)
 
-    def _newton(self, span, dh, H, V, chord, iterations):
-        """Newton's method with the analytic Jacobian and backtracking on ``max|residual|``."""
-        st = self._state(H, V)
+    def _newton(self, span, dh, H, V, chord, iterations, state=None):
+        """Newton's method with the analytic Jacobian and backtracking on ``max|residual|``.
+
+        Works on Python floats: the 2x2 step by Cramer's rule (a singular or non-finite
+        step ends the iteration; the caller checks the residual reached). ``state``: the
+        closed form already evaluated at ``(H, V)`` (a previous solution's)."""
+        H, V = float(H), float(V)
+        st = self._trial_state(H, V) if state is None else state
         if st is None:
             return None, np.inf, []
         norm = max(abs(st.X - span), abs(st.Z - dh)) / chord
@@ -331,23 +401,30 @@ class Line:
         for _ in range(iterations):
             if norm < _TOL:
                 break
-            with np.errstate(all="ignore"):
-                step = np.linalg.solve(st.jac, -np.array([st.X - span, st.Z - dh]))
-            if not np.all(np.isfinite(step)):
+            j11, j12, j21, j22 = st.jac
+            r1, r2 = st.X - span, st.Z - dh
+            det = j11 * j22 - j12 * j21
+            if not (det != 0.0 and math.isfinite(det)):
+                break
+            step_H = -(r1 * j22 - r2 * j12) / det
+            step_V = -(j11 * r2 - j21 * r1) / det
+            if not (math.isfinite(step_H) and math.isfinite(step_V)):
                 break
             t = 1.0
             for _ in range(30):
-                H_new, V_new = H + t * step[0], V + t * step[1]
-                new = self._state(H_new, V_new) if H_new > 0 else None
+                H_new, V_new = H + t * step_H, V + t * step_V
+                new = self._trial_state(H_new, V_new)
                 if new is not None:
                     new_norm = max(abs(new.X - span), abs(new.Z - dh)) / chord
-                    if np.isfinite(new_norm) and new_norm < norm:
+                    if new_norm < norm:  # False for NaN
                         break
                 t *= 0.5
             else:
                 break
             H, V, st, norm = H_new, V_new, new, new_norm
             history.append(norm)
+        if st is state:  # no step from a previous solution's state: a state of its own
+            st = self._state(H, V)
         return st, norm, history
 
     def _bracketed(self, span, dh):
@@ -375,7 +452,7 @@ class Line:
         H, hist = find_root(x_of_h, H_lo, H_hi, what="Line.solve, H", xtol=1e-10 * H_hi)
         return H, self._height_of_v(H, dh), hist
 
-    def solve(self, span, dh):
+    def solve(self, span, dh, start=None):
         """Static equilibrium with A at (0, 0) and B at (span, dh).
 
         Parameters
@@ -384,6 +461,16 @@ class Line:
             Horizontal distance A→B (m), > 0.
         dh : float
             Height of B above A (m); above the seabed when one is given.
+        start : LineSolution or (float, float), optional
+            A warm start: a previous solution of this line (typically at a nearby
+            ``(span, dh)``, as in the Newton iterations of a moored body), or the pair
+            ``(H, V_B)`` (N, ``H > 0``). Newton's method starts from its fairlead forces
+            instead of from the uniform line of the same length, weight and compliance.
+            If it does not converge from there, the cold path runs (Newton from the
+            uniform line, then nested bracketing). This is no fallback of results:
+            the closure ``X(H, V) = span``, ``Z(H, V) = dh`` has one root, every path
+            polishes it to a relative residual below 1e-13 and the solution is
+            checked the same way, so warm and cold solutions agree to round-off.
 
         Returns
         -------
@@ -396,8 +483,10 @@ class Line:
             long that its slack lies in a heap on the seabed (``H = 0``); ``attachments``
             when a buoy would rest on the grounded part or the suspended line would dip
             to the seabed again (a second touchdown: solve it with `cable.solve_bvp`);
-            ``seabed`` when the line would touch a seabed below the anchor. An elastic
-            line always reaches B by stretching, so a short line is not an error.
+            ``seabed`` when the line would touch a seabed below the anchor; ``start``
+            when it is neither a solution of this line nor a pair ``(H, V_B)`` of
+            finite numbers with ``H > 0``. An elastic line always reaches B by
+            stretching, so a short line is not an error.
         ConvergenceError
             Bracketing or Newton failed; carries the residual history.
         """
@@ -405,11 +494,16 @@ class Line:
         dh = scalar("dh", real("dh", dh))
         if self.seabed is not None:
             require("dh", dh > self.seabed, "must put B above the seabed", dh)
-        chord = float(np.hypot(span, dh))
+        chord = math.hypot(span, dh)
         st, norm, history = None, np.inf, []
-        guess = self._guess(span, dh)
-        if guess is not None:  # Newton from the equivalent uniform line
-            st, norm, history = self._newton(span, dh, *guess, chord, 40)
+        if start is not None:  # Newton from the previous solution (its closed form known)
+            H0, V0, state = self._start(start)
+            st, norm, history = self._newton(span, dh, H0, V0, chord, 40, state)
+        if not norm < 1e-11:  # Newton from the equivalent uniform line
+            guess = self._guess(span, dh)
+            if guess is not None:
+                st, norm, more = self._newton(span, dh, *guess, chord, 40)
+                history = [*history, *more]
         if not norm < 1e-11:  # nested bracketing, then Newton polish
             H, V, hist = self._bracketed(span, dh)
             st, norm, more = self._newton(span, dh, H, V, chord, 20)
@@ -419,6 +513,23 @@ class Line:
         solution = LineSolution(self, span, dh, st)
         solution._validate()
         return solution
+
+    def _start(self, start):
+        """``(H, V, state)`` of a warm start: fairlead forces (``V`` below the fairlead's
+        joint) and the closed form evaluated there (None for a pair ``(H, V_B)``)."""
+        if isinstance(start, LineSolution):
+            if start.line is not self:
+                raise InputError("start", "is a solution of another line: give one of this line or (H, V_B)")
+            return start._st.H, start._st.V, start._st
+        try:
+            H, V_B = start
+        except (TypeError, ValueError):
+            raise InputError(
+                "start", f"must be a LineSolution of this line or a pair (H, V_B), got {start!r}"
+            ) from None
+        H = scalar("start", positive("start", H))
+        V_B = scalar("start", real("start", V_B))
+        return H, V_B - self._P_end[1], None
 
 
 class LineSolution:
@@ -451,48 +562,72 @@ class LineSolution:
     def __init__(self, line, span, dh, state):
         self.line, self.span, self.dh = line, span, dh
         self._st = st = state
-        n = len(line._L)
+        self._expanded = False
+        k, contact = st.k, st.contact
         P = line.joint_forces
-        self.length = line.length
+        self.length = line._length
         self.H = float(st.H)
         self.H_A = float(st.H_A)
-        self.V_B = float(st.V + P[n])
-        self.V_A = float((0.0 if st.contact else -st.V_bot[0]) + P[0])
-        self.T_B = float(np.hypot(st.H, st.V))
-        self.T_A = float(np.hypot(self.H_A, 0.0 if st.contact else st.V_bot[0]))
+        self.V_B = float(st.V + line._P_end[1])
+        V_A0 = 0.0 if contact else float(st.V_bot0)
+        self.V_A = float((0.0 if contact else -V_A0) + line._P_end[0])
+        self.T_B = math.hypot(st.H, st.V)
+        self.T_A = math.hypot(self.H_A, V_A0)
         self.joint_forces = P.copy()
-        self.length_on_seabed = float(st.l_g.sum()) if st.contact else 0.0
-        self.seabed_reaction = float(line._w[: st.k + 1] @ st.l_g + st.R[1:].sum()) if st.contact else 0.0
-        # per-segment arrays: start of each segment along s, and of each suspended piece
-        L, w, EA = line._L, line._w, line._EA
-        self._s0 = np.concatenate([[0.0], np.cumsum(L)])
+        if contact:  # the grounded pieces, still Python floats from the closed form
+            self.length_on_seabed = float(sum(st.l_g))
+            self.seabed_reaction = float(line._w[: k + 1] @ np.array(st.l_g) + sum(st.R[1:]))
+            self.x_touchdown = float(sum(l + e for l, e in zip(st.l_g, st.stretch, strict=True)))
+        else:
+            self.length_on_seabed = self.seabed_reaction = self.x_touchdown = 0.0
+        if len(line._L) == 1:  # A, then B at the end of the one suspended piece
+            self.x_joints = np.array([0.0, self.x_touchdown + st.dx])
+            self.y_joints = np.array([0.0, st.dy])
+        else:
+            self._expand()
+
+    def _expand(self):
+        """The per-piece arrays of the profile (built once, when a map or the joints need them)."""
+        if self._expanded:
+            return
+        self._expanded = True
+        st, line = self._st, self.line
         k = st.k
-        H = st.H
+        if st.V_top is None:
+            st.V_top = st.V - line._Q_top
+            st.V_bot = st.V_top - line._wL
+        if not isinstance(st.Vb, np.ndarray):  # one suspended piece, kept as floats
+            st.Vb, st.L_s, st.Tt, st.Tb, st.dx, st.dy = np.array(
+                [st.Vb, st.L_s, st.Tt, st.Tb, st.dx, st.dy], dtype=float
+            ).reshape(6, 1)
+        if st.contact:
+            st.l_g, st.T_g, st.R, stretch = np.array([st.l_g, st.T_g, st.R, st.stretch], dtype=float)
+        else:
+            st.l_g = st.T_g = st.R = stretch = line._no_ground
+        st.m_g = line.friction * line._w[: k + 1]
+        # per-segment arrays: start of each segment along s, and of each suspended piece
+        self._s0 = line._s0
         # grounded pieces: x at their lower ends, stretched lengths
         if st.contact:
-            g_str = st.l_g + self._grounded_stretch(st.T_g, st.m_g, st.l_g, EA[: k + 1])
+            g_str = st.l_g + stretch
+            x_g0 = np.concatenate([[0.0], np.cumsum(g_str)[:-1]])
         else:
-            g_str = np.zeros(k + 1)
-        x_g0 = np.concatenate([[0.0], np.cumsum(g_str)])[:-1]
-        self.x_touchdown = float(g_str.sum()) if st.contact else 0.0
+            g_str, x_g0 = line._no_ground, line._no_ground
         self._x_g0 = x_g0
         self._g_str = g_str
         # suspended pieces: segment i >= k from s_b (start on the line) with Vb
-        Vt, Vb = st.V_top[k:], st.Vb
-        Tt, Tb = np.hypot(H, Vt), np.hypot(H, Vb)
-        Ls = st.L_s
-        ws, EAs = w[k:], EA[k:]
-        dx = H * Ls / EAs + H / ws * asinh_diff(Vt / H, Vb / H)
-        dy = Ls * (Vt + Vb) / (2.0 * EAs) + (Vt - Vb) * (Vt + Vb) / ((Tt + Tb) * ws)
+        dx, dy = st.dx, st.dy
         self._x_p0 = self.x_touchdown + np.concatenate([[0.0], np.cumsum(dx)])[:-1]
         self._y_p0 = np.concatenate([[0.0], np.cumsum(dy)])[:-1]
         self._s_p0 = self._s0[k:-1].copy()
         self._s_p0[0] += st.a
+        self._Tt, self._Tb, self._dx, self._dy = st.Tt, st.Tb, dx, dy
+        if len(line._L) == 1:
+            return  # the joints are set
         self.x_joints = np.concatenate([x_g0, self._x_p0[1:], [self._x_p0[-1] + dx[-1]]])
         self.y_joints = np.concatenate([np.zeros(k + 1), self._y_p0[1:], [self._y_p0[-1] + dy[-1]]])
         if st.contact and st.a > 0:  # joint k lies on the seabed, the piece starts at the touchdown
             self.x_joints[k] = x_g0[k]
-        self._Tt, self._Tb, self._dx, self._dy = Tt, Tb, dx, dy
 
     @staticmethod
     def _grounded_stretch(T_u, m, l, EA):
@@ -505,22 +640,20 @@ class LineSolution:
     # -- checks -----------------------------------------------------------------------
     def residual(self):
         """Largest relative residual of the closure and of the vertical equilibrium."""
-        st = self._st
-        chord = np.hypot(self.span, self.dh)
+        st, line = self._st, self.line
+        chord = math.hypot(self.span, self.dh)
         closure = max(abs(st.X - self.span), abs(st.Z - self.dh)) / chord
-        load = self.line.weight
-        scale = abs(self.V_A) + abs(self.V_B) + float(self.line._w @ self.line._L)
-        scale += float(np.abs(self.joint_forces).sum())
-        statics = abs(self.V_A + self.V_B + self.seabed_reaction - load) / scale
+        scale = abs(self.V_A) + abs(self.V_B) + line._weight_segments + line._abs_joint_forces
+        statics = abs(self.V_A + self.V_B + self.seabed_reaction - line._weight) / scale
         geometry = max(abs(self.x_joints[-1] - self.span) / chord, abs(self.y_joints[-1] - self.dh) / chord)
         return float(max(closure, statics, geometry))
 
     def _validate(self):
         st, line = self._st, self.line
         values = (self.H, self.V_A, self.V_B, self.H_A, self.T_A, self.T_B, self.length_on_seabed)
-        if not all(np.isfinite(v) for v in values) or not np.all(np.isfinite(self.x_joints)):
+        if not all(map(math.isfinite, values)) or not np.isfinite(self.x_joints).all():
             raise InputError("span", "gives a result outside the range of a float")
-        if st.contact:
+        if st.contact and st.k > 0:
             buoyed = np.flatnonzero(st.R[1:] < 0) + 1
             if buoyed.size:
                 raise InputError(
@@ -528,17 +661,18 @@ class LineSolution:
                     f"a buoy at joint {int(buoyed[0])} lies on the grounded part and would lift it: a second "
                     "touchdown that this closed form does not represent (solve it with cable.solve_bvp)",
                 )
-        y_min = self._lowest_suspended()
-        floor = 0.0 if line.seabed is None else line.seabed
-        tol = 1e-9 * np.hypot(self.span, self.dh)
-        if line.seabed is not None and y_min < floor - tol:
-            argument = "attachments" if st.contact or floor == 0.0 else "seabed"
-            raise InputError(
-                argument,
-                f"the suspended line dips to {y_min:.6g} m, below the seabed at {floor:.6g} m: a touchdown "
-                "between A and B that this closed form does not represent (solve it with cable.solve_bvp, "
-                "or elastic_catenary for one segment)",
-            )
+        if line.seabed is not None:
+            y_min = self._lowest_suspended()
+            floor = line.seabed
+            tol = 1e-9 * math.hypot(self.span, self.dh)
+            if y_min < floor - tol:
+                argument = "attachments" if st.contact or floor == 0.0 else "seabed"
+                raise InputError(
+                    argument,
+                    f"the suspended line dips to {y_min:.6g} m, below the seabed at {floor:.6g} m: a "
+                    "touchdown between A and B that this closed form does not represent (solve it with "
+                    "cable.solve_bvp, or elastic_catenary for one segment)",
+                )
         residual = self.residual()
         if not residual < 1e-9:
             raise ConvergenceError(f"Line.solve: residual {residual:.3e} after the solve", [residual])
@@ -547,6 +681,17 @@ class LineSolution:
         """Lowest height of the suspended part: its joints and the vertices inside segments."""
         st = self._st
         H, k = st.H, st.k
+        start = 1 if st.contact else 0
+        lowest_joint = float(self.y_joints[start:].min())
+        if k == len(self.line._L) - 1:  # one suspended piece, on floats; it starts at height 0
+            Vb = st.Vb if isinstance(st.Vb, float) else float(st.Vb[0])
+            Vt = st.V if st.V_top is None else float(st.V_top[k])
+            if not (Vb < 0 and Vt > 0):
+                return lowest_joint
+            w, EA = self.line._wf[k], self.line._EAf[k]
+            sig = -Vb / w
+            drop = sig * Vb / (2.0 * EA) + (H - math.hypot(H, Vb)) / w
+            return min(lowest_joint, drop)
         Vb, Vt = st.Vb, st.V_top[k:]
         ws, EAs = self.line._w[k:], self.line._EA[k:]
         inside = (Vb < 0) & (Vt > 0)
@@ -554,8 +699,7 @@ class LineSolution:
         Tb = np.hypot(H, Vb)
         drop = sig * Vb / (2.0 * EAs) + (H - Tb) / ws  # from the piece's start to its vertex
         y_vertex = np.where(inside, self._y_p0 + drop, np.inf)
-        start = 1 if st.contact else 0
-        return float(min(self.y_joints[start:].min(), y_vertex.min()))
+        return float(min(lowest_joint, y_vertex.min()))
 
     # -- along the line ---------------------------------------------------------------
     def _arc(self, s):
@@ -599,6 +743,7 @@ class LineSolution:
 
     def _maps(self, s):
         s = self._arc(s)
+        self._expand()
         grounded, seg, piece = self._locate(s)
         x, y, T = self._suspended(s, piece)
         if self._st.contact:
@@ -625,6 +770,7 @@ class LineSolution:
         and the touchdown, sorted along the line (the grounded part on the seabed)."""
         if isinstance(n, (bool, np.bool_)) or not isinstance(n, (int, np.integer)) or n < 2:
             raise InputError("n", f"must be an integer >= 2, got {n!r}")
+        self._expand()
         st = self._st
         s = np.concatenate([np.linspace(0.0, self.length, max(n, 2)), self._s0, [self._s0[st.k] + st.a]])
         s = np.unique(np.clip(s, 0.0, self.length))
@@ -637,15 +783,16 @@ class LineSolution:
         Rows ``(H, V_B)``, columns ``(span, dh)``: the inverse of the closure's Jacobian
         ``∂(X, Z)/∂(H, V)`` (implicit function theorem), friction and clump regimes included.
         """
-        J = self._st.jac
-        with np.errstate(all="ignore"):
-            K = inverse_2x2(J[0, 0], J[0, 1], J[1, 0], J[1, 1])
-        if not np.all(np.isfinite(K)):
+        j11, j12, j21, j22 = self._st.jac
+        det = j11 * j22 - j12 * j21
+        K = (j22 / det, -j12 / det, -j21 / det, j11 / det) if det != 0.0 else (math.inf,)
+        if not all(map(math.isfinite, K)):
             raise ConvergenceError("LineSolution.stiffness: the closure's Jacobian is singular here")
-        return K
+        return np.array(K).reshape(2, 2)
 
     @cached_property
     def _segment_table(self):
+        self._expand()
         st, line = self._st, self.line
         n, k = len(line._L), st.k
         H = st.H

@@ -33,12 +33,14 @@ tension) makes :math:`K` unsymmetric where the line forces have a net moment.
 
 from __future__ import annotations
 
+import math
+
 import numpy as np
 import pandas as pd
 
 from skcable._checks import positive, real, scalar
 from skcable.cable.lines.body import PointBody, RigidBody
-from skcable.cable.lines.line3d import Line3D, line_3d, point
+from skcable.cable.lines.line3d import Line3D, line_3d, point, solve_in_space, takes_start
 from skcable.errors import ConvergenceError, InputError
 
 __all__ = ["MooringEquilibrium", "MooringSystem"]
@@ -55,6 +57,9 @@ class MooringSystem:
     lines : sequence of line models
         One per anchor: objects with ``solve(span, dh)`` (see
         `skcable.cable.lines.line3d`); anchor A of the model is the anchor, B the fairlead.
+        A model whose ``solve`` also takes ``start=`` (`skcable.cable.Line`) is
+        warm-started from its previous solution in the equilibrium iterations; the
+        others are solved from their own start each time.
     anchors : array_like, shape (n, 3)
         Anchor points in global axes (m), z up.
     depth : float, optional
@@ -97,6 +102,7 @@ class MooringSystem:
                 "body", f"has {len(body.fairleads)} fairleads for {len(lines)} lines: give one per line"
             )
         self.body, self.lines, self.anchors = body, lines, anchors
+        self._warm = [takes_start(model) for model in lines]
         self.depth = None if depth is None else scalar("depth", positive("depth", depth))
 
     @property
@@ -115,15 +121,46 @@ class MooringSystem:
             return force
         return np.concatenate([force, moment])
 
-    def solve_lines(self, position) -> list[Line3D]:
-        """Every line solved with the body at ``position`` (m, rad)."""
-        q = self._position("position", position)
-        fairleads = self.body.fairlead_positions(q, len(self.lines))
-        return [line_3d(model, a, b) for model, a, b in zip(self.lines, self.anchors, fairleads, strict=True)]
+    def solve_lines(self, position, start=None) -> list[Line3D]:
+        """Every line solved with the body at ``position`` (m, rad).
 
-    def _state(self, q, external, lines_only=False):
-        """Net force ``G(q)`` and stiffness ``K(q)`` and the solved lines."""
-        lines = self.solve_lines(q)
+        ``start``: the lines solved at another position (a list of `Line3D`, one per
+        line), each model that takes a warm start starting from its own (see
+        `skcable.cable.Line.solve`: the same solution as without it, to round-off).
+        Without it, a line whose model was solved for an earlier line of this call
+        (lines of one model, e.g. a spread mooring) starts from that solution.
+        """
+        q = self._position("position", position)
+        return self._solve_lines(q, start)
+
+    def _solve_lines(self, q, start):
+        fairleads = self.body.fairlead_positions(q, len(self.lines))
+        if start is None:
+            start = [None] * len(self.lines)
+        elif len(start) != len(self.lines) or not all(isinstance(s, Line3D) for s in start):
+            raise InputError("start", f"must be a list of {len(self.lines)} Line3D, one per line")
+        reach = fairleads - self.anchors
+        spans = [math.hypot(x, y) for x, y, _ in reach.tolist()]
+        extent = np.maximum(np.abs(reach).max(1), 1.0)
+        if not (np.isfinite(fairleads).all() and (np.array(spans) > 1e-9 * extent).all()):
+            # line_3d's checks raise the error, naming the point
+            pairs = zip(self.anchors, fairleads, strict=True)
+            return [line_3d(model, a, b) for model, (a, b) in zip(self.lines, pairs, strict=True)]
+        solved, latest = [], {}
+        for model, a, b, r, previous, warm in zip(
+            self.lines, self.anchors, fairleads, spans, start, self._warm, strict=True
+        ):
+            if warm and previous is None:  # another line of the same model, solved just now
+                previous = latest.get(id(model))
+            line = solve_in_space(model, a, b, r, previous if warm else None)
+            latest[id(model)] = line
+            solved.append(line)
+        return solved
+
+    def _state(self, q, external, lines_only=False, start=None):
+        """Net force ``G(q)`` and stiffness ``K(q)`` and the solved lines (warm-started
+        from the lines ``start``, if given)."""
+        lines = self._solve_lines(q, start)
         forces = np.array([line.force_on_fairlead for line in lines])
         stiffnesses = np.array([line.stiffness() for line in lines])
         G, K = self.body.add_lines(self.body.arms(q), forces, stiffnesses)
@@ -161,9 +198,11 @@ class MooringSystem:
         ----------
         force, moment : array_like, shape (3,)
             External force (N) and moment (N m, about the reference point), global axes.
-        start : array_like, optional
+        start : array_like or MooringEquilibrium, optional
             Starting position, ``(x, y, z, roll, pitch, yaw)`` (m, rad) for a rigid
-            body, ``(x, y, z)`` for a point body; default all zeros.
+            body, ``(x, y, z)`` for a point body; default all zeros. Or an earlier
+            equilibrium of this system (e.g. under a nearby load): its position, and
+            its lines as warm starts of the first line solves.
         tol : float
             Convergence when the net force over the force scale (the largest of the
             fairlead tensions, the weight, the buoyancy and the external force), and
@@ -183,9 +222,22 @@ class MooringSystem:
             No equilibrium within ``max_iter`` iterations, or a singular stiffness
             (a direction the mooring and the hydrostatics do not restrain); carries
             the history of the scaled residual.
+
+        Notes
+        -----
+        Each trial position solves every line warm-started from its solution at the
+        last accepted position (models that take ``start=``, see `solve_lines`);
+        a warm-started line has the cold solution to round-off, so the iterates are
+        those of cold solves.
         """
         external = self._loads(force, moment)
-        q = self._position("start", start)
+        warm_lines = None
+        if isinstance(start, MooringEquilibrium):
+            if start.system is not self:
+                raise InputError("start", "is the equilibrium of another MooringSystem")
+            q, warm_lines = start.position.copy(), start.lines
+        else:
+            q = self._position("start", start)
         tol = scalar("tol", positive("tol", tol))
         if isinstance(max_iter, bool) or not isinstance(max_iter, (int, np.integer)) or max_iter < 1:
             raise InputError("max_iter", f"must be an integer >= 1, got {max_iter!r}")
@@ -194,6 +246,8 @@ class MooringSystem:
         reach = self.anchors[:, :2] - self.body.fairlead_positions(q, len(self.lines))[:, :2]
         span_min = float(np.hypot(reach[:, 0], reach[:, 1]).min())
         step_cap = np.concatenate([np.full(3, 0.25 * span_min), np.full(self.n_dof - 3, 0.2)])
+        # singular values in consistent units (rotations times the arm) tell a free direction
+        units = np.concatenate([np.ones(3), np.full(self.n_dof - 3, arm)])
 
         def scaled(G, lines):
             scale = max(body_scale, max(line.tension_at_fairlead for line in lines), 1e-300)
@@ -201,14 +255,12 @@ class MooringSystem:
             g[3:] /= arm
             return float(np.linalg.norm(g))
 
-        G, K, lines = self._state(q, external)
+        G, K, lines = self._state(q, external, start=warm_lines)
         history = [scaled(G, lines)]
         for _ in range(max_iter):
             if history[-1] <= tol:
                 return MooringEquilibrium(self, q, external, G, K, lines, history)
             jac = K @ self.body.rate_map(q)  # -∂G/∂q
-            # singular values in consistent units (rotations times the arm) tell a free direction
-            units = np.concatenate([np.ones(3), np.full(self.n_dof - 3, arm)])
             singular = np.linalg.svd(jac / units[:, None] / units[None, :], compute_uv=False)
             dq = np.full(self.n_dof, np.nan)
             if singular[-1] > 1e-11 * singular[0]:
@@ -224,7 +276,7 @@ class MooringSystem:
             while alpha > 1e-6:
                 trial = q + alpha * dq
                 try:
-                    G_t, K_t, lines_t = self._state(trial, external)
+                    G_t, K_t, lines_t = self._state(trial, external, start=lines)
                 except (InputError, ConvergenceError):  # a line cannot reach the trial position
                     alpha *= 0.5
                     continue
