@@ -153,9 +153,8 @@ class RigidBody(_Hydrostatics):
         out = np.zeros(6)
         out[:3] = self.weight + self.buoyancy
         out[2] -= self.heave_stiffness * q[2]
-        out[3:] = np.cross(R @ self.center_of_gravity, self.weight) + np.cross(
-            R @ self.metacentre, self.buoyancy
-        )
+        # r x f as [r]x f: np.cross costs more than the products on 3-vectors
+        out[3:] = skew(R @ self.center_of_gravity) @ self.weight + skew(R @ self.metacentre) @ self.buoyancy
         return out
 
     def own_stiffness(self, q) -> np.ndarray:
@@ -178,8 +177,8 @@ class RigidBody(_Hydrostatics):
         """Sum of the line forces ``f_i`` at arms ``r_i`` (global) as (force, moment), and their
         stiffness ``[[K, -K[r]x], [[r]x K, -[f]x[r]x - [r]x K [r]x]]`` summed over the lines,
         from each fairlead's 3x3 stiffness ``K_i = -∂f_i/∂b_i``."""
-        F = np.concatenate([forces.sum(axis=0), np.cross(arms, forces).sum(axis=0)])
         skews, fskews = _skews(arms), _skews(forces)
+        F = np.concatenate([forces.sum(axis=0), np.einsum("nij,nj->i", skews, forces)])  # Σ r_i x f_i
         K = np.zeros((6, 6))
         K[:3, :3] = stiffnesses.sum(axis=0)
         K[:3, 3:] = -(stiffnesses @ skews).sum(axis=0)
