@@ -5,6 +5,8 @@ curves of the damaged steel 9.5 mm strand written to ``results/`` (CSV,
 VTK for ParaView, PNG). ``skcable examples`` (also ``seeds``) prints the
 worked examples of the sources beside skcable's values; ``catenary``,
 ``parabola``, ``elastic-catenary`` and ``funicular`` solve one cable;
+``line`` one mooring line (segments, clump weights, buoys, seabed and
+friction); ``change-of-state`` and ``frequencies`` a conductor's span;
 ``strand section`` and ``strand capacity`` analyse a strand; ``study run``
 runs a study file. Every command takes ``--json`` where it prints numbers.
 
