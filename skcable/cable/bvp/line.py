@@ -78,6 +78,32 @@ __all__ = ["BVPSegment", "LineBVPSolution", "solve_line_bvp"]
 
 #: elements of the first solve of a fine mesh whose start touches the seabed
 COARSE = 32
+#: Newton steps past rtol at most, while the merit falls tenfold
+POLISH = 2
+#: updates of the end of the slack stretch at most (secant on the tension there)
+SLACK_PASSES = 12
+
+
+def _next_slack_end(tried, slope, s_touchdown):
+    """The next end ``s0`` of the slack stretch from the (s0, tension just past s0) pairs tried.
+
+    The tension there grows with s0 by about the friction force per length, ``slope`` (N/m): a
+    Newton step on the last pair with that slope, kept inside the bracket of the earlier pairs
+    (the largest s0 with a negative tension and the smallest with a positive one; bisection when
+    the step leaves it), and below the touchdown.
+    """
+    s_last, g_last = tried[-1]
+    if not slope > 0:
+        raise ConvergenceError(
+            "solve_line_bvp: the tension does not grow away from the slack stretch",
+            [abs(g) for _, g in tried],
+        )
+    lo = max((s for s, g in tried if g < 0), default=0.0)
+    hi = min((s for s, g in tried if g > 0), default=s_touchdown)
+    s_next = s_last - g_last / slope
+    if not lo < s_next < hi:
+        s_next = 0.5 * (lo + hi)
+    return float(s_next)
 
 
 @dataclass(frozen=True)
@@ -193,8 +219,21 @@ def _seabed(seabed, seabed_slope, span):
 class LineProblem:
     """Mesh, bases, properties per quadrature point and the assembly of one line."""
 
-    def __init__(self, span, dh, segments, point_loads, seabed, friction, n_elements, fitted=()):
+    def __init__(
+        self,
+        span,
+        dh,
+        segments,
+        point_loads,
+        seabed,
+        friction,
+        n_elements,
+        fitted=(),
+        slack_end=0.0,
+        nodes_at=None,
+    ):
         self.span, self.dh, self.seabed, self.friction = span, dh, seabed, friction
+        self.slack_end = float(slack_end)
         self.segments = segments
         lengths = np.array([seg.length for seg in segments])
         self.joints = np.concatenate([[0.0], np.cumsum(lengths)])
@@ -207,11 +246,17 @@ class LineProblem:
         ]
         self.point_loads = point_loads
         nodes = np.unique(np.concatenate([*nodes, [s for s, _ in point_loads]]))
+        if nodes_at is not None:  # a graded mesh: joints and point loads stay nodes
+            nodes = np.unique(np.concatenate([nodes_at, self.joints, [s for s, _ in point_loads]]))
+        placed = []
         for s_fit in fitted:  # a node at s_fit: move the nearest inner node there, or insert one
             k = int(np.argmin(np.abs(nodes - s_fit)))
             spacing = np.min(np.diff(nodes))
             movable = 0 < k < len(nodes) - 1 and not np.any(np.isclose(nodes[k], self.joints))
-            movable = movable and not any(np.isclose(nodes[k], s) for s, _ in point_loads)
+            movable = movable and not any(
+                np.isclose(nodes[k], s) for s in [*placed, *(s for s, _ in point_loads)]
+            )
+            placed.append(s_fit)
             if movable and abs(nodes[k] - s_fit) < 0.25 * spacing:
                 nodes[k] = s_fit
             elif np.min(np.abs(nodes - s_fit)) > 1e-9 * self.L:
@@ -257,6 +302,20 @@ class LineProblem:
         self.length_scale = self.L
         self.stiffness = self.load_scale / self.L  # c of the complementarity function (N/m)
         self.contact = inner if seabed is not None else np.zeros(0, dtype=int)
+        # the external load vector (weight and point loads), and per contact node the share of its
+        # weight that lies beyond the slack stretch [0, slack_end] (where friction is fully mobilised)
+        zero = np.zeros_like(self.w_q)
+        self.external = self.assembly.vector(np.stack([zero, zero, zero, self.w_q, zero]))
+        np.add.at(self.external, self.point_rows, self.point_values)
+        sliding_q = np.where((middle > self.slack_end)[None, :], self.w_q, 0.0)
+        sliding = self.assembly.vector(np.stack([zero, zero, zero, sliding_q, zero]))[N + self.contact]
+        own = self.assembly.vector(np.stack([zero, zero, zero, self.w_q, zero]))[N + self.contact]
+        self.sliding_share = np.ones(self.contact.size)
+        if self.slack_end > 0:
+            self.sliding_share = np.divide(sliding, own, out=np.ones_like(own), where=own != 0)
+            self.sliding_share[self.basis.doflocs[0][self.contact] < self.slack_end] = 0.0
+        #: friction coefficient per contact node: μ where it slides, 0 on the slack stretch
+        self.mu_nodes = friction * self.sliding_share
         #: A lies on the seabed (to 1e-12 of the length): the seabed, not the anchor, carries its push
         self.anchor_on_seabed = (
             seabed is not None and abs(float(seabed(np.array([0.0]))[0])) <= 1e-12 * self.L
@@ -314,9 +373,10 @@ class LineProblem:
         if self.contact.size:
             terms = self.contact_terms(z, R0)
             bp, _, gap, lam, active, Rx, Ry = terms
-            mu = self.friction
+            mu, stuck = self.mu_nodes, 1.0 - self.sliding_share
             i, N = self.contact, self.N
-            F[i] = (1.0 - mu * bp) * Rx + (bp + mu) * Ry
+            # on the slack stretch friction holds the line's own tangential weight (stuck)
+            F[i] = (1.0 - mu * bp) * Rx + (bp + mu) * Ry - stuck * bp * self.external[N + i]
             F[N + i] = np.where(active, self.stiffness * gap, lam)
         force = np.abs(F[self._force_rows]) / self.load_scale
         stretch = np.abs(F[self._stretch_rows]) / self.length_scale
@@ -331,7 +391,7 @@ class LineProblem:
         if self.contact.size:
             Ke = Ke.copy()
             bp, bpp, _, lam, active, Rx, Ry = state.terms
-            mu, i, N = self.friction, self.contact, self.N
+            mu, i, N = self.mu_nodes, self.contact, self.N
             norm2 = 1.0 + bp * bp
             # row mixing per position dof: x row -> a Kx + b Ky, y row -> c Kx + d Ky
             a, b = np.ones(N), np.zeros(N)
@@ -345,7 +405,8 @@ class LineProblem:
             Ke[:nb] = a[ed][:, None, :] * Kx + b[ed][:, None, :] * Ky
             Ke[nb : 2 * nb] = c[ed][:, None, :] * Kx + d[ed][:, None, :] * Ky
             # what the element matrices cannot carry: derivatives of b'(x_i) and the active rows
-            dtx = bpp * (Ry - mu * Rx)  # d(tangential row)/dx_i through b'
+            stuck_y = (1.0 - self.sliding_share) * self.external[N + i]
+            dtx = bpp * (Ry - mu * Rx - stuck_y)  # d(tangential row)/dx_i through b'
             dlx = bpp * (-Rx / norm2 - lam * 2.0 * bp / norm2)  # dλ/dx_i through b'
             k = self.stiffness
             rows = np.concatenate([i, N + i, N + i])
@@ -487,19 +548,24 @@ class LineBVPSolution:
         if i.size:
             bp, _, gap, lam, active, _, _ = state.terms
             bp, gap, lam, active = bp[order], gap[order], lam[order], active[order]
+            mu = problem.mu_nodes[order]
+            # friction that holds the slack stretch: its own tangential weight, t·R_ext / |t|²
+            held = (1.0 - problem.sliding_share[order]) * bp * problem.external[N + i] / (1.0 + bp * bp)
             if self.anchor_on_seabed:
                 # the seabed under the anchor takes the anchor's downward push, friction included
                 slope = float(problem.seabed.slope(np.array([0.0]))[0])
                 lam_a = max((V_A + slope * H_A) / (1.0 + slope * slope), 0.0)  # n·R⁰_A / |n|², R⁰_x(A) = -H_A
-                mu = problem.friction
-                H_A, V_A = H_A + lam_a * (-slope - mu), V_A - lam_a * (1.0 - mu * slope)
+                mu_a = problem.friction if problem.slack_end == 0 else 0.0  # the anchor holds a slack stretch
+                H_A, V_A = H_A + lam_a * (-slope - mu_a), V_A - lam_a * (1.0 - mu_a * slope)
                 self.contact_s = np.concatenate([[0.0], self.contact_s])
                 self.contact_xy = np.vstack([[0.0, 0.0], self.contact_xy])
                 bp, gap = np.concatenate([[slope], bp]), np.concatenate([[0.0], gap])
                 lam, active = np.concatenate([[lam_a], lam]), np.concatenate([[lam_a > 0], active])
-            mu = problem.friction
+                mu, held = np.concatenate([[mu_a], mu]), np.concatenate([[0.0], held])
             self.normal_force = lam * np.sqrt(1.0 + bp * bp)
-            self.contact_force = lam[:, None] * np.column_stack([-bp - mu, 1.0 - mu * bp])
+            self.contact_force = lam[:, None] * np.column_stack([-bp - mu, 1.0 - mu * bp]) + held[
+                :, None
+            ] * np.column_stack([np.ones_like(bp), bp])
             self.gap, self.in_contact = gap, active
         else:
             self.normal_force, self.gap = np.zeros(0), np.zeros(0)
@@ -625,6 +691,55 @@ class LineBVPSolution:
             return 0.0
         return self.s_touchdown - self.s_landing
 
+    def _tension_profile(self):
+        """The P1-DG tension per element, sorted along the line: (s_left, s_right, T_left, T_right)."""
+        tb = self._problem.tbasis
+        dofs = tb.element_dofs  # (2, ne)
+        at = tb.doflocs[0][dofs]
+        T = self._fields()[2][dofs]
+        first = np.argmin(at, axis=0)
+        cols = np.arange(dofs.shape[1])
+        s_l, s_r = at[first, cols], at[1 - first, cols]
+        T_l, T_r = T[first, cols], T[1 - first, cols]
+        order = np.argsort(s_l)
+        return s_l[order], s_r[order], T_l[order], T_r[order]
+
+    def _tension_zero(self, tol):
+        """Where the tension of a line grounded at A last rises through zero (m of arc length): the
+        end of Jonkman's slack stretch estimated from a solve with friction fully mobilised
+        everywhere; 0 when the tension is nowhere below ``-tol`` (N)."""
+        s_l, s_r, T_l, T_r = self._tension_profile()
+        s, T = np.column_stack([s_l, s_r]).ravel(), np.column_stack([T_l, T_r]).ravel()
+        negative = np.flatnonzero(T < -tol)
+        if not negative.size:
+            return 0.0
+        k = int(negative[-1])
+        if k + 1 >= T.size or s[k + 1] == s[k] or T[k + 1] <= T[k]:
+            zero = s[min(k + 1, T.size - 1)]
+        else:
+            zero = s[k] - T[k] * (s[k + 1] - s[k]) / (T[k + 1] - T[k])
+        return float(min(zero, 0.99 * self.s_touchdown))
+
+    def _slack_estimate(self, friction):
+        """The end ``s0`` of the slack stretch (m) that friction ``μ`` fully mobilised from the
+        touchdown towards A would give a frictionless solution's grounded line on a flat seabed:
+        ``μ (W(s_td) - W(s0)) = T(s_td)``, W the weight from A; 0 when friction cannot take the pull."""
+        if not self.in_contact[self.contact_s > 0].any():
+            return 0.0
+        s_td = self.s_touchdown
+        pull = float(self.tension(s_td)) / friction
+        if self._weight_before(s_td) <= pull:
+            return 0.0
+        return float(brentq(lambda s: self._weight_before(s_td) - self._weight_before(s) - pull, 0.0, s_td))
+
+    def _slack_tension(self):
+        """Tension (N) just past the end ``s0`` of the slack stretch, and its slope (N/m) there:
+        the first element that starts at s0."""
+        s_l, s_r, T_l, T_r = self._tension_profile()
+        k = int(np.argmin(np.abs(s_l - self._problem.slack_end)))
+        friction_force = self.friction * (self._weight_before(s_r[k]) - self._weight_before(s_l[k]))
+        return float(T_l[k]), float(friction_force / (s_r[k] - s_l[k]))
+
     def residual(self):
         """Largest scaled residual (forces over the total load, stretch over the length)."""
         return self._state.merit
@@ -747,39 +862,109 @@ def solve_line_bvp(
             stagnation_window=8,
             name=name,
         )
-        return LineBVPSolution(problem, result.x, result.history, result.state)
+        z, state, history = result.x, result.state, list(result.history)
+        # past rtol, full Newton steps while the merit still falls tenfold: quadratic convergence
+        # takes the solution to its round-off floor for one or two more solves
+        for _ in range(POLISH):
+            trial_z = z + problem.increment(state)
+            trial = problem.assemble(trial_z)
+            if not trial.merit < 0.1 * state.merit:
+                break
+            z, state = trial_z, trial
+            history.append(state.merit)
+        return LineBVPSolution(problem, z, history, state)
 
     def restart(solution, problem):  # the previous solution interpolated on a new mesh
         xy = solution.xy(problem.basis.doflocs[0])
         tension = solution.tension(np.clip(problem.tbasis.doflocs[0], 0.0, L))
         return np.concatenate([xy[:, 0], xy[:, 1], tension])
 
-    problem = LineProblem(span, dh, segs, loads, bed, friction, n_elements)
+    def build(n, fitted=(), slack_end=0.0, mu=friction):
+        return LineProblem(span, dh, segs, loads, bed, mu, n, fitted=fitted, slack_end=slack_end)
+
+    # with friction, the frictionless line first: it tells where friction takes the whole pull
+    start_mu = 0.0
+    problem = build(n_elements, mu=start_mu)
     z0 = _guess(problem)
     if problem.mesh.t.shape[1] > 2 * COARSE and bed is not None and np.any(problem.gaps(z0) <= 0):
-        # the active set moves by a few nodes per iteration: find it on a coarse mesh first
-        coarse = LineProblem(span, dh, segs, loads, bed, friction, COARSE)
-        z0 = restart(run(coarse, _guess(coarse)), problem)
+        # the active set moves by a few nodes per iteration: find it on a coarse mesh first and
+        # carry it to the fine one by doubling (each start a node or two off its active set)
+        sizes = [COARSE]
+        while 2 * sizes[-1] < n_elements:
+            sizes.append(2 * sizes[-1])
+        coarse_solution = None
+        for size in sizes:
+            coarse = build(size, mu=start_mu)
+            z_start = _guess(coarse) if coarse_solution is None else restart(coarse_solution, coarse)
+            coarse_solution = run(coarse, z_start)
+        z0 = restart(coarse_solution, problem)
     solution = run(problem, z0)
-    fitted = []
-    for _ in range(int(fit_touchdown)):
-        if not solution.in_contact[solution.contact_s > 0].any():
-            break
-        edges = [solution.s_touchdown] + ([solution.s_landing] if solution.s_landing > 0 else [])
-        if fitted and max(abs(a - b) for a, b in zip(edges, fitted, strict=False)) <= 1e-9 * L:
-            break
-        fitted = edges
-        problem = LineProblem(span, dh, segs, loads, bed, friction, n_elements, fitted=fitted)
+    # Jonkman's slack stretch [0, s0] of a grounded line whose friction takes the whole pull: first
+    # estimated from the frictionless line, then where friction fully mobilised everywhere would
+    # leave the line near the anchor in compression
+    s0 = 0.0
+    if friction > 0:
+        if problem.anchor_on_seabed:
+            s0 = solution._slack_estimate(friction)
+        problem = build(n_elements, [s0] if s0 > 0 else [], s0)
         solution = run(problem, restart(solution, problem))
+        if s0 == 0 and problem.anchor_on_seabed:
+            s0 = solution._tension_zero(1e3 * rtol * problem.load_scale)
+    slack_tol = rtol * problem.load_scale
+    fitted, edge_passes, tried = [], 0, []
+    for _ in range(int(fit_touchdown) + SLACK_PASSES):
+        move, settled = False, True
+        touching = solution.in_contact[solution.contact_s > 0].any()
+        if (edge_passes < int(fit_touchdown) or (s0 > 0 and fit_touchdown)) and touching:
+            edges = [solution.s_touchdown] + ([solution.s_landing] if solution.s_landing > 0 else [])
+            moved = np.inf
+            if len(edges) == len(fitted):
+                moved = max((abs(a - b) for a, b in zip(edges, fitted, strict=True)), default=np.inf)
+            if moved > 1e-9 * L:
+                fitted, move, edge_passes = edges, True, edge_passes + 1
+                settled = moved <= 1e-6 * L  # the tension past s0 is worth a bracket only then
+        if s0 > 0:
+            if solution._problem.slack_end == s0:
+                g, slope = solution._slack_tension()
+                if abs(g) > slack_tol:
+                    s0 = _next_slack_end([*tried, (s0, g)], slope, solution.s_touchdown)
+                    if settled:
+                        tried.append((solution._problem.slack_end, g))
+                    move = True
+            else:
+                move = True
+        if not move:
+            break
+        problem = build(n_elements, fitted + ([s0] if s0 > 0 else []), s0)
+        solution = run(problem, restart(solution, problem))
+    if s0 > 0:
+        g, _ = solution._slack_tension()
+        if not abs(g) <= slack_tol:
+            raise ConvergenceError(
+                f"{name}: the end of the slack stretch near the anchor was not found "
+                f"(tension {g:.3g} N there after {len(tried)} updates)",
+                solution.history,
+            )
+        # the friction that holds the slack stretch (its tangential force) is at most μN
+        on = solution.contact_s < s0
+        slope = solution._problem.seabed.slope(solution.contact_xy[on, 0])
+        force = solution.contact_force[on]
+        tangential = np.abs(force[:, 0] + slope * force[:, 1]) / np.sqrt(1.0 + slope * slope)
+        if np.any(tangential > friction * solution.normal_force[on] + slack_tol):
+            raise InputError(
+                "friction",
+                "too weak to hold the slack stretch near the anchor on the sloping seabed "
+                "(the line would slide down it)",
+            )
     values = (solution.H, solution.V_B, solution.H_A, solution.V_A)
     if not all(np.isfinite(values)) or not np.all(np.isfinite(solution.dofs)):
         raise ConvergenceError(f"{name}: non-finite result", solution.history)
     if friction > 0:
         T = solution._fields()[2]
         if np.min(T) < -1e3 * rtol * problem.load_scale:
-            raise InputError(
-                "friction",
-                "fully mobilised friction would put the grounded line near the anchor in compression "
-                f"(min T = {np.min(T):.3g} N): Jonkman's zero-tension stretch is not modelled by the BVP",
+            raise ConvergenceError(
+                f"{name}: fully mobilised friction leaves the grounded line in compression "
+                f"(min T = {np.min(T):.3g} N) with the anchor above the seabed",
+                solution.history,
             )
     return solution
