@@ -84,6 +84,34 @@ POLISH = 2
 SLACK_PASSES = 12
 
 
+def _graded_nodes(solution, n_elements):
+    """Mesh nodes (unstretched arc length, m) equidistributing ``1 + L |dθ/ds|`` over the line.
+
+    θ(s) is the solution's angle to the horizontal, so the density is one per length plus the
+    turning of the line per length: a slack line's elements gather where it bends, near its
+    touchdown or its lowest point, instead of lying on the seabed where it is straight. The
+    equidistribution of a monitor function: W. Huang, R.D. Russell, "Adaptive Moving Mesh
+    Methods", Springer, 2011, ch. 2. Each stretch between joints and point loads gets its share
+    (at least one element) of the ``n_elements``.
+    """
+    p = solution._problem
+    L = p.L
+    s = np.linspace(0.0, L, 16 * n_elements + 1)
+    theta = np.unwrap(solution.angle(s))
+    density = 1.0 + L * np.abs(np.gradient(theta, s))
+    mass = np.concatenate([[0.0], np.cumsum(0.5 * (density[1:] + density[:-1]) * np.diff(s))])
+    fixed = np.unique(np.concatenate([p.joints, [s_p for s_p, _ in p.point_loads]]))
+    at_fixed = np.interp(fixed, s, mass)
+    share = np.diff(at_fixed) / at_fixed[-1]
+    counts = np.maximum(1, np.round(n_elements * share)).astype(int)
+    pieces = [
+        np.interp(np.linspace(a, b, k + 1), mass, s)
+        for a, b, k in zip(at_fixed[:-1], at_fixed[1:], counts, strict=True)
+    ]
+    nodes = np.unique(np.concatenate([*pieces, fixed]))
+    return nodes
+
+
 def _next_slack_end(tried, slope, s_touchdown):
     """The next end ``s0`` of the slack stretch from the (s0, tension just past s0) pairs tried.
 
@@ -879,8 +907,12 @@ def solve_line_bvp(
         tension = solution.tension(np.clip(problem.tbasis.doflocs[0], 0.0, L))
         return np.concatenate([xy[:, 0], xy[:, 1], tension])
 
+    graded = None  # the mesh nodes equidistributed by curvature, after the first solve
+
     def build(n, fitted=(), slack_end=0.0, mu=friction):
-        return LineProblem(span, dh, segs, loads, bed, mu, n, fitted=fitted, slack_end=slack_end)
+        return LineProblem(
+            span, dh, segs, loads, bed, mu, n, fitted=fitted, slack_end=slack_end, nodes_at=graded
+        )
 
     # with friction, the frictionless line first: it tells where friction takes the whole pull
     start_mu = 0.0
@@ -899,6 +931,11 @@ def solve_line_bvp(
             coarse_solution = run(coarse, z_start)
         z0 = restart(coarse_solution, problem)
     solution = run(problem, z0)
+    if fit_touchdown:
+        graded = _graded_nodes(solution, int(n_elements))
+        if friction == 0:
+            problem = build(n_elements)
+            solution = run(problem, restart(solution, problem))
     # Jonkman's slack stretch [0, s0] of a grounded line whose friction takes the whole pull: first
     # estimated from the frictionless line, then where friction fully mobilised everywhere would
     # leave the line near the anchor in compression
