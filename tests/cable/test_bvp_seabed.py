@@ -45,12 +45,12 @@ def test_flat_seabed_converges_to_jonkman_at_h4_with_the_touchdown_fitted():
         _contact_is_exact(b)
         assert b.V_A == 0.0 and b.H_A == pytest.approx(b.H, rel=1e-12)  # Jonkman: V_A = 0, H_A = H
         assert max(abs(v) for v in _statics(b)) < 1e-12
-    e40, e80, e160 = (np.abs(errors[n]) for n in (40, 80, 160))
-    rate = np.log2(e80 / e160)
-    assert np.all(rate > 3.5)  # measured 3.9-4.0 for H, V_B and the grounded length
-    # the finest error within the bound the observed rate gives from the coarser one
-    assert np.all(e160 <= e80 * 2.0**-3.5)
-    assert np.all(e160 < 5e-9)  # measured 4.1e-9 (H), 1.8e-9 (V_B), 7.4e-10 (grounded length / L)
+    e40, e160 = (np.abs(errors[n]) for n in (40, 160))
+    # on the mesh graded by curvature the error still falls at h⁴, unevenly from one doubling to
+    # the next: the rate over two doublings
+    rate = np.log2(e40 / e160) / 2
+    assert np.all(rate > 3.5)  # measured 4.1 (H), 4.6 (V_B, grounded length)
+    assert np.all(e160 < 1e-10)  # measured 3.5e-11 (H), 5.6e-13 (V_B), 2.3e-13 (grounded length / L)
 
 
 def test_nodal_contact_without_fitting_misplaces_the_touchdown_by_less_than_an_element():
@@ -102,10 +102,11 @@ def test_friction_that_takes_the_whole_pull_leaves_a_slack_stretch_as_jonkman():
         sliding = b.in_contact & (b.contact_s > s0 + L / n)
         assert np.all(np.abs(b.contact_force[slack, 0]) <= 1e-12 * W * L)  # no friction where T = 0
         assert np.allclose(b.contact_force[sliding, 0], -mu * b.normal_force[sliding], rtol=1e-12, atol=0)
-    e40, e80, e160 = (np.abs(errors[n]) for n in (40, 80, 160))
-    assert np.all(np.log2(e80 / e160) > 3.5)  # measured 3.9-4.0, as without friction
-    assert np.all(e160 < 5e-9)  # measured 4.1e-9 (H), 1.8e-9 (V_B), 7.4e-10 (grounded length / L)
-    assert b._problem.slack_end == pytest.approx(s0, rel=1e-7)  # measured 3e-8
+    e40, e160 = (np.abs(errors[n]) for n in (40, 160))
+    assert np.all(np.log2(e40 / e160) / 2 > 3.5)  # measured 4.1 (H), 4.9 (V_B, grounded length)
+    assert np.all(e160 < 1e-10)  # measured 3.5e-11 (H), 4.4e-13 (V_B), 1.8e-13 (grounded length / L)
+    # s0 is found to a tension RTOL·W·L past it, which friction μW builds in RTOL·L/μ (measured 7e-9 m)
+    assert b._problem.slack_end == pytest.approx(s0, abs=RTOL * L / mu)
 
 
 def test_sloped_closed_form_matches_moorpy():

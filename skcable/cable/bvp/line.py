@@ -104,12 +104,11 @@ def _graded_nodes(solution, n_elements):
     at_fixed = np.interp(fixed, s, mass)
     share = np.diff(at_fixed) / at_fixed[-1]
     counts = np.maximum(1, np.round(n_elements * share)).astype(int)
-    pieces = [
-        np.interp(np.linspace(a, b, k + 1), mass, s)
+    inner = [  # the nodes inside each stretch; its ends are the fixed nodes themselves
+        np.interp(np.linspace(a, b, k + 1)[1:-1], mass, s)
         for a, b, k in zip(at_fixed[:-1], at_fixed[1:], counts, strict=True)
     ]
-    nodes = np.unique(np.concatenate([*pieces, fixed]))
-    return nodes
+    return np.unique(np.concatenate([*inner, fixed]))
 
 
 def _next_slack_end(tried, slope, s_touchdown):
