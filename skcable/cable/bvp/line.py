@@ -80,26 +80,78 @@ __all__ = ["BVPSegment", "LineBVPSolution", "solve_line_bvp"]
 COARSE = 32
 #: Newton steps past rtol at most, while the merit falls tenfold
 POLISH = 2
+#: gradings of the mesh at most, and how much finer an element may get at one
+GRADE_PASSES = 10
+REFINEMENT = 4.0
 #: updates of the end of the slack stretch at most (secant on the tension there)
 SLACK_PASSES = 12
 
 
-def _graded_nodes(solution, n_elements):
-    """Mesh nodes (unstretched arc length, m) equidistributing ``1 + L |dθ/ds|`` over the line.
+def _full_steps(problem, z0, rtol, max_iter):
+    """Semismooth Newton with full steps (halved only where the tangent collapses): (z, state,
+    history) once the merit is below ``rtol``, None if it is not within ``max_iter`` steps or
+    grows a thousandfold."""
+    state = problem.assemble(z0)
+    z, history = z0, [state.merit]
+    for _ in range(max_iter):
+        if state.merit < rtol:
+            return z, state, history
+        if not state.merit < 1e3 * history[0]:
+            return None
+        dz, t = problem.increment(state), 1.0
+        for _ in range(12):
+            trial = problem.assemble(z + t * dz)
+            if np.isfinite(trial.merit):
+                break
+            t *= 0.5
+        else:
+            return None
+        z, state = z + t * dz, trial
+        history.append(state.merit)
+    return (z, state, history) if state.merit < rtol else None
+
+
+def _graded_nodes(solution, n_elements, refinement=REFINEMENT):
+    """Mesh nodes (unstretched arc length, m) equidistributing ``1 + L |dθ/ds|`` over the line,
+    no element smaller than ``1/refinement`` of the solution's element there; and whether that
+    bound held anywhere (another pass would refine further).
 
     θ(s) is the solution's angle to the horizontal, so the density is one per length plus the
     turning of the line per length: a slack line's elements gather where it bends, near its
-    touchdown or its lowest point, instead of lying on the seabed where it is straight. The
+    touchdown or its lowest point, instead of lying on the seabed where it is straight (the
     equidistribution of a monitor function: W. Huang, R.D. Russell, "Adaptive Moving Mesh
-    Methods", Springer, 2011, ch. 2. Each stretch between joints and point loads gets its share
-    (at least one element) of the ``n_elements``.
+    Methods", Springer, 2011, ch. 2). The bound keeps each solve's start (the previous solution
+    interpolated) within a node or two of its contact set. Each stretch between joints and
+    point loads gets its share (at least one element) of the ``n_elements``.
     """
     p = solution._problem
     L = p.L
-    s = np.linspace(0.0, L, 16 * n_elements + 1)
-    theta = np.unwrap(solution.angle(s))
-    density = 1.0 + L * np.abs(np.gradient(theta, s))
-    mass = np.concatenate([[0.0], np.cumsum(0.5 * (density[1:] + density[:-1]) * np.diff(s))])
+    old = solution.mesh.p[0]
+    old = np.sort(old)
+    h_old = np.diff(old)
+    cells = 16  # per element of the solution: its turning is measured inside each element, so
+    # that the kink of a point load or a joint (a node of every mesh) draws no elements
+    fraction = (np.arange(cells) + 0.5) / cells
+    inside = old[:-1, None] + fraction[None, :] * h_old[:, None]  # (ne, cells)
+    theta = np.unwrap(solution.angle(inside.ravel()).reshape(inside.shape), axis=1)
+    turning = np.abs(np.gradient(theta, axis=1)) / (h_old[:, None] / cells)
+    rho = (1.0 + L * turning).ravel()
+    ds = np.repeat(h_old / cells, cells)
+    h_old = np.repeat(h_old, cells)
+    s = np.concatenate([[0.0], np.cumsum(ds)])
+    s[-1] = L
+
+    def density(scale):  # elements per length: the monitor over scale, at most refinement / h_old
+        return np.minimum(rho / scale, refinement / h_old)
+
+    total = np.sum(rho * ds)
+    if np.sum(refinement / h_old * ds) <= n_elements:
+        scale = 0.0
+    else:
+        scale = brentq(lambda c: np.sum(density(c) * ds) - n_elements, 1e-12 * total / n_elements, total)
+    rate = density(scale) if scale > 0 else refinement / h_old
+    capped = bool(np.any(rho / max(scale, 1e-300) > refinement / h_old * (1 + 1e-9)))
+    mass = np.concatenate([[0.0], np.cumsum(rate * ds)])
     fixed = np.unique(np.concatenate([p.joints, [s_p for s_p, _ in p.point_loads]]))
     at_fixed = np.interp(fixed, s, mass)
     share = np.diff(at_fixed) / at_fixed[-1]
@@ -108,7 +160,7 @@ def _graded_nodes(solution, n_elements):
         np.interp(np.linspace(a, b, k + 1)[1:-1], mass, s)
         for a, b, k in zip(at_fixed[:-1], at_fixed[1:], counts, strict=True)
     ]
-    return np.unique(np.concatenate([*inner, fixed]))
+    return np.unique(np.concatenate([*inner, fixed])), capped
 
 
 def _next_slack_end(tried, slope, s_touchdown):
@@ -329,6 +381,12 @@ class LineProblem:
         self.length_scale = self.L
         self.stiffness = self.load_scale / self.L  # c of the complementarity function (N/m)
         self.contact = inner if seabed is not None else np.zeros(0, dtype=int)
+        # c per contact node: the total load per length, times the node's element length over the
+        # mean one (uniform on a uniform mesh), so that λ_i ~ w h_i switches at a gap ~ h_i / h̄·h̄
+        element_length = np.diff(self.mesh.p[0, self.mesh.t], axis=0)[0]
+        node_length = np.zeros(N)
+        np.maximum.at(node_length, self.basis.element_dofs.ravel(), np.tile(element_length, 3))
+        self.stiffness_nodes = self.stiffness * node_length[self.contact] / (self.L / element_length.size)
         # the external load vector (weight and point loads), and per contact node the share of its
         # weight that lies beyond the slack stretch [0, slack_end] (where friction is fully mobilised)
         zero = np.zeros_like(self.w_q)
@@ -387,7 +445,7 @@ class LineProblem:
         Rx, Ry = R0[i], R0[N + i]
         norm2 = 1.0 + bp * bp
         lam = (Ry - bp * Rx) / norm2
-        active = lam > self.stiffness * gap
+        active = lam > self.stiffness_nodes * gap
         return bp, bpp, gap, lam, active, Rx, Ry
 
     def assemble(self, z):
@@ -404,7 +462,7 @@ class LineProblem:
             i, N = self.contact, self.N
             # on the slack stretch friction holds the line's own tangential weight (stuck)
             F[i] = (1.0 - mu * bp) * Rx + (bp + mu) * Ry - stuck * bp * self.external[N + i]
-            F[N + i] = np.where(active, self.stiffness * gap, lam)
+            F[N + i] = np.where(active, self.stiffness_nodes * gap, lam)
         force = np.abs(F[self._force_rows]) / self.load_scale
         stretch = np.abs(F[self._stretch_rows]) / self.length_scale
         merit = max(float(np.max(force, initial=0.0)), float(np.max(stretch, initial=0.0)))
@@ -435,7 +493,7 @@ class LineProblem:
             stuck_y = (1.0 - self.sliding_share) * self.external[N + i]
             dtx = bpp * (Ry - mu * Rx - stuck_y)  # d(tangential row)/dx_i through b'
             dlx = bpp * (-Rx / norm2 - lam * 2.0 * bp / norm2)  # dλ/dx_i through b'
-            k = self.stiffness
+            k = self.stiffness_nodes
             rows = np.concatenate([i, N + i, N + i])
             cols = np.concatenate([i, i, N + i])
             vals = np.concatenate([dtx, np.where(active, -k * bp, dlx), np.where(active, k, 0.0)])
@@ -754,7 +812,8 @@ class LineBVPSolution:
         if not self.in_contact[self.contact_s > 0].any():
             return 0.0
         s_td = self.s_touchdown
-        pull = float(self.tension(s_td)) / friction
+        slope = self._slope_at(s_td)
+        pull = self.H * np.sqrt(1.0 + slope * slope) / friction  # the tension at the touchdown / μ
         if self._weight_before(s_td) <= pull:
             return 0.0
         return float(brentq(lambda s: self._weight_before(s_td) - self._weight_before(s) - pull, 0.0, s_td))
@@ -879,17 +938,25 @@ def solve_line_bvp(
     name = "solve_line_bvp"
 
     def run(problem, z0):
-        result = newton(
-            problem.assemble,
-            z0,
-            norm=lambda state: state.merit,
-            increment=problem.increment,
-            tol=rtol,
-            max_iter=int(max_iter),
-            stagnation_window=8,
-            name=name,
-        )
-        z, state, history = result.x, result.state, list(result.history)
+        try:
+            result = newton(
+                problem.assemble,
+                z0,
+                norm=lambda state: state.merit,
+                increment=problem.increment,
+                tol=rtol,
+                max_iter=int(max_iter),
+                stagnation_window=8,
+                name=name,
+            )
+            z, state, history = result.x, result.state, list(result.history)
+        except ConvergenceError as failed:
+            # the max-norm merit of a semismooth system can refuse every damped step where full
+            # steps identify the active set and converge: try them before giving up
+            out = _full_steps(problem, z0, rtol, int(max_iter))
+            if out is None:
+                raise failed from None
+            z, state, history = out
         # past rtol, full Newton steps while the merit still falls tenfold: quadratic convergence
         # takes the solution to its round-off floor for one or two more solves
         for _ in range(POLISH):
@@ -931,10 +998,18 @@ def solve_line_bvp(
         z0 = restart(coarse_solution, problem)
     solution = run(problem, z0)
     if fit_touchdown:
-        graded = _graded_nodes(solution, int(n_elements))
-        if friction == 0:
-            problem = build(n_elements)
+        # the mesh graded by the solution's curvature; again while the discrete line is in
+        # compression, a sign that the bends are not resolved yet
+        # compression, a sign that the bends are not resolved yet, or while the elements of the
+        # bends could shrink no more than REFINEMENT times at one solve (its start then puts the
+        # touchdown a node or two off; nodal contact moves a few nodes per Newton iteration)
+        for _ in range(GRADE_PASSES):
+            graded, capped = _graded_nodes(solution, int(n_elements))
+            problem = build(n_elements, mu=start_mu)
             solution = run(problem, restart(solution, problem))
+            compressed = np.min(solution._fields()[2]) < -1e3 * rtol * problem.load_scale
+            if not (capped or compressed):
+                break
     # Jonkman's slack stretch [0, s0] of a grounded line whose friction takes the whole pull: first
     # estimated from the frictionless line, then where friction fully mobilised everywhere would
     # leave the line near the anchor in compression
@@ -995,12 +1070,16 @@ def solve_line_bvp(
     values = (solution.H, solution.V_B, solution.H_A, solution.V_A)
     if not all(np.isfinite(values)) or not np.all(np.isfinite(solution.dofs)):
         raise ConvergenceError(f"{name}: non-finite result", solution.history)
-    if friction > 0:
-        T = solution._fields()[2]
-        if np.min(T) < -1e3 * rtol * problem.load_scale:
-            raise ConvergenceError(
-                f"{name}: fully mobilised friction leaves the grounded line in compression "
-                f"(min T = {np.min(T):.3g} N) with the anchor above the seabed",
-                solution.history,
-            )
+    T = solution._fields()[2]
+    if np.min(T) < -1e3 * rtol * problem.load_scale:
+        raise ConvergenceError(
+            f"{name}: the discrete line is in compression "
+            f"(min T = {np.min(T):.3g} N, H = {solution.H:.3g} N): "
+            + (
+                "fully mobilised friction with the anchor above the seabed"
+                if friction > 0 and not problem.anchor_on_seabed
+                else f"{problem.mesh.t.shape[1]} elements do not resolve its bends; give more"
+            ),
+            solution.history,
+        )
     return solution
