@@ -169,7 +169,8 @@ def _next_slack_end(tried, slope, s_touchdown):
     The tension there grows with s0 by about the friction force per length, ``slope`` (N/m): a
     Newton step on the last pair with that slope, kept inside the bracket of the earlier pairs
     (the largest s0 with a negative tension and the smallest with a positive one; bisection when
-    the step leaves it), and below the touchdown.
+    the step leaves it), and below the touchdown; 0 when the step passes the anchor and no
+    negative tension was tried (friction does not take the whole pull after all).
     """
     s_last, g_last = tried[-1]
     if not slope > 0:
@@ -180,6 +181,8 @@ def _next_slack_end(tried, slope, s_touchdown):
     lo = max((s for s, g in tried if g < 0), default=0.0)
     hi = min((s for s, g in tried if g > 0), default=s_touchdown)
     s_next = s_last - g_last / slope
+    if s_next <= 0 and not any(g < 0 for _, g in tried):
+        return 0.0  # the tension stays positive down to the anchor: no slack stretch
     if not lo < s_next < hi:
         s_next = 0.5 * (lo + hi)
     return float(s_next)
@@ -973,89 +976,104 @@ def solve_line_bvp(
         tension = solution.tension(np.clip(problem.tbasis.doflocs[0], 0.0, L))
         return np.concatenate([xy[:, 0], xy[:, 1], tension])
 
-    graded = None  # the mesh nodes equidistributed by curvature, after the first solve
-
-    def build(n, fitted=(), slack_end=0.0, mu=friction):
+    def build(n, fitted=(), slack_end=0.0, mu=friction, nodes_at=None):
         return LineProblem(
-            span, dh, segs, loads, bed, mu, n, fitted=fitted, slack_end=slack_end, nodes_at=graded
+            span, dh, segs, loads, bed, mu, n, fitted=fitted, slack_end=slack_end, nodes_at=nodes_at
         )
 
-    # with friction, the frictionless line first: it tells where friction takes the whole pull
-    start_mu = 0.0
-    problem = build(n_elements, mu=start_mu)
-    z0 = _guess(problem)
-    if problem.mesh.t.shape[1] > 2 * COARSE and bed is not None and np.any(problem.gaps(z0) <= 0):
-        # the active set moves by a few nodes per iteration: find it on a coarse mesh first and
-        # carry it to the fine one by doubling (each start a node or two off its active set)
-        sizes = [COARSE]
-        while 2 * sizes[-1] < n_elements:
-            sizes.append(2 * sizes[-1])
-        coarse_solution = None
-        for size in sizes:
-            coarse = build(size, mu=start_mu)
-            z_start = _guess(coarse) if coarse_solution is None else restart(coarse_solution, coarse)
-            coarse_solution = run(coarse, z_start)
-        z0 = restart(coarse_solution, problem)
-    solution = run(problem, z0)
-    if fit_touchdown:
-        # the mesh graded by the solution's curvature; again while the discrete line is in
-        # compression, a sign that the bends are not resolved yet
-        # compression, a sign that the bends are not resolved yet, or while the elements of the
-        # bends could shrink no more than REFINEMENT times at one solve (its start then puts the
-        # touchdown a node or two off; nodal contact moves a few nodes per Newton iteration)
-        for _ in range(GRADE_PASSES):
-            graded, capped = _graded_nodes(solution, int(n_elements))
-            problem = build(n_elements, mu=start_mu)
+    def edges_of(solution):  # the touchdown and landing to put nodes at
+        if not (fit_touchdown and solution.in_contact[solution.contact_s > 0].any()):
+            return []
+        return [solution.s_touchdown] + ([solution.s_landing] if solution.s_landing > 0 else [])
+
+    def solve_level(n, start=None):
+        """The line on n elements, from scratch or from ``start``, the finished solution on n/2."""
+        s0, fitted, graded, tried = 0.0, [], None, []
+        if start is None:
+            # with friction, the frictionless line first: it tells where friction takes the pull
+            problem = build(n, mu=0.0)
+            solution = run(problem, _guess(problem))
+        else:
+            solution, s0, fitted = start, start._problem.slack_end, edges_of(start)
+        mu_now = friction if start is not None else 0.0
+        if fit_touchdown:
+            # the mesh graded by the solution's curvature; again while the elements of the bends
+            # could shrink no more than REFINEMENT times at one solve (its start then puts the
+            # touchdown a node or two off: nodal contact moves a few nodes per Newton iteration)
+            # or while the discrete line is in compression, a sign that its bends are not resolved
+            for _ in range(GRADE_PASSES):
+                graded, capped = _graded_nodes(solution, n)
+                problem = build(n, fitted + ([s0] if s0 > 0 else []), s0, mu_now, graded)
+                solution = run(problem, restart(solution, problem))
+                compressed = np.min(solution._fields()[2]) < -1e3 * rtol * problem.load_scale
+                if not (capped or compressed):
+                    break
+        elif start is not None:
+            problem = build(n, [s0] if s0 > 0 else [], s0)
             solution = run(problem, restart(solution, problem))
-            compressed = np.min(solution._fields()[2]) < -1e3 * rtol * problem.load_scale
-            if not (capped or compressed):
-                break
-    # Jonkman's slack stretch [0, s0] of a grounded line whose friction takes the whole pull: first
-    # estimated from the frictionless line, then where friction fully mobilised everywhere would
-    # leave the line near the anchor in compression
-    s0 = 0.0
-    if friction > 0:
-        if problem.anchor_on_seabed:
-            s0 = solution._slack_estimate(friction)
-        problem = build(n_elements, [s0] if s0 > 0 else [], s0)
-        solution = run(problem, restart(solution, problem))
-        if s0 == 0 and problem.anchor_on_seabed:
-            s0 = solution._tension_zero(1e3 * rtol * problem.load_scale)
-    slack_tol = rtol * problem.load_scale
-    fitted, edge_passes, tried = [], 0, []
-    for _ in range(int(fit_touchdown) + SLACK_PASSES):
-        move, settled = False, True
-        touching = solution.in_contact[solution.contact_s > 0].any()
-        if (edge_passes < int(fit_touchdown) or (s0 > 0 and fit_touchdown)) and touching:
-            edges = [solution.s_touchdown] + ([solution.s_landing] if solution.s_landing > 0 else [])
-            moved = np.inf
-            if len(edges) == len(fitted):
-                moved = max((abs(a - b) for a, b in zip(edges, fitted, strict=True)), default=np.inf)
-            if moved > 1e-9 * L:
-                fitted, move, edge_passes = edges, True, edge_passes + 1
-                settled = moved <= 1e-6 * L  # the tension past s0 is worth a bracket only then
-        if s0 > 0:
-            if solution._problem.slack_end == s0:
-                g, slope = solution._slack_tension()
-                if abs(g) > slack_tol:
-                    s0 = _next_slack_end([*tried, (s0, g)], slope, solution.s_touchdown)
-                    if settled:
-                        tried.append((solution._problem.slack_end, g))
+        if start is None and friction > 0:
+            # Jonkman's slack stretch [0, s0] of a grounded line whose friction takes the whole
+            # pull: estimated from the frictionless line, or where friction fully mobilised
+            # everywhere leaves the line near the anchor in compression
+            if problem.anchor_on_seabed:
+                s0 = solution._slack_estimate(friction)
+            problem = build(n, [s0] if s0 > 0 else [], s0, friction, graded)
+            solution = run(problem, restart(solution, problem))
+            if s0 == 0 and problem.anchor_on_seabed:
+                s0 = solution._tension_zero(1e3 * rtol * problem.load_scale)
+        slack_tol = rtol * problem.load_scale
+        edge_passes = 0
+        for _ in range(int(fit_touchdown) + SLACK_PASSES):
+            move, settled = False, True
+            if edge_passes < int(fit_touchdown) or s0 > 0:
+                edges = edges_of(solution)
+                moved = np.inf
+                if len(edges) == len(fitted):
+                    moved = max((abs(a - b) for a, b in zip(edges, fitted, strict=True)), default=0.0)
+                if moved > 1e-9 * L:
+                    fitted, move, edge_passes = edges, True, edge_passes + 1
+                    settled = moved <= 1e-6 * L  # the tension past s0 is worth a bracket only then
+            if s0 > 0 or solution._problem.slack_end > 0:
+                if solution._problem.slack_end == s0:
+                    g, slope = solution._slack_tension()
+                    if abs(g) > slack_tol:
+                        s0 = _next_slack_end([*tried, (s0, g)], slope, solution.s_touchdown)
+                        if settled:
+                            tried.append((solution._problem.slack_end, g))
+                        move = True
+                else:
                     move = True
-            else:
-                move = True
-        if not move:
-            break
-        problem = build(n_elements, fitted + ([s0] if s0 > 0 else []), s0)
-        solution = run(problem, restart(solution, problem))
+            if not move:
+                break
+            problem = build(n, fitted + ([s0] if s0 > 0 else []), s0, friction, graded)
+            solution = run(problem, restart(solution, problem))
+        if s0 > 0:
+            g, _ = solution._slack_tension()
+            if not abs(g) <= slack_tol:
+                raise ConvergenceError(
+                    f"{name}: the end of the slack stretch near the anchor was not found "
+                    f"(tension {g:.3g} N there after {len(tried)} updates)",
+                    solution.history,
+                )
+        return solution
+
+    n = int(n_elements)
+    probe = build(n, mu=0.0)
+    if n > 2 * COARSE and bed is not None and np.any(probe.gaps(_guess(probe)) <= 0):
+        # nested meshes: the active set moves by a few nodes per Newton iteration, so the line is
+        # solved on COARSE-odd elements first and each finished solution starts the doubled mesh
+        sizes = [n]
+        while sizes[-1] // 2 >= COARSE:
+            sizes.append(sizes[-1] // 2)
+        solution = None
+        for size in reversed(sizes):
+            solution = solve_level(size, solution)
+    else:
+        solution = solve_level(n)
+    problem = solution._problem
+    slack_tol = rtol * problem.load_scale
+    s0 = problem.slack_end
     if s0 > 0:
-        g, _ = solution._slack_tension()
-        if not abs(g) <= slack_tol:
-            raise ConvergenceError(
-                f"{name}: the end of the slack stretch near the anchor was not found "
-                f"(tension {g:.3g} N there after {len(tried)} updates)",
-                solution.history,
-            )
         # the friction that holds the slack stretch (its tangential force) is at most μN
         on = solution.contact_s < s0
         slope = solution._problem.seabed.slope(solution.contact_xy[on, 0])
