@@ -37,7 +37,8 @@ as a semismooth Newton method", SIAM J. Optim., 2002) on the system where
     \quad\text{(tangential equilibrium)}, \qquad
     \min(\lambda_i,\ c\,g_i) = 0 \quad\text{(complementarity)},
 
-``c`` any positive constant (here the total load over the length). Its
+``c`` any positive constant (here the total load over the length, times the
+node's element length over the mean one). Its
 generalized Jacobian takes ``c ∇g_i`` on the nodes where ``λ_i > c g_i``
 (active) and ``∇λ_i`` elsewhere: near the solution Newton's method identifies the active
 set in finitely many steps and converges quadratically.
@@ -51,6 +52,29 @@ the seabed, A is a contact node as well: the seabed takes its push
 ``λ_A = max(n_A·R⁰_A/|n_A|², 0)`` (friction included) and the anchor the
 rest, so that a line grounded at A has ``V_A = 0`` and ``H_A = H - μ·(normal
 forces)`` as in Jonkman's closed form.
+
+**Slack stretch.** Where friction fully mobilised would take more than the
+pull, the grounded line near the anchor is slack (J.M. Jonkman, "Dynamics
+modeling and loads analysis of an offshore floating wind turbine", NREL,
+2007: ``H_A = 0``, tension ``max(H - μ w (L_B - s), 0)``): friction is only
+partly mobilised there. Its end ``s0`` is a mesh node found like the
+touchdown: on ``[0, s0]`` the friction holds the line's own tangential
+weight (the tangential row becomes ``t_i·(R⁰_i - R_ext,i) = 0``: no friction
+on a flat seabed), beyond it friction is fully mobilised (at the node ``s0``
+for the share of its weight beyond), and ``s0`` is moved (a Newton step on
+the tension just past it, with slope ``μ w``, kept in the bracket of the
+tensions tried) until that tension is zero to ``rtol`` of the total load.
+With P2 positions and P1 tension the grounded line's exact solution (T
+linear, x quadratic in s) is then represented exactly; the friction that
+holds a slack stretch on a slope is checked against ``μN``.
+
+**Meshes.** The first solve is on a mesh graded by the start's curvature
+(`_guess_nodes`), each later one on a mesh graded by the last solution's
+(`_graded_nodes`: ``1 + L|dθ/ds|`` equidistributed, neighbouring elements
+within a factor 1.5, no element more than four times smaller than the
+last solution's there), until the grading settles; fine meshes are reached
+by nested solves from 32 elements up, each finished solution (graded mesh,
+touchdown, slack stretch) starting the doubled mesh.
 """
 
 from __future__ import annotations
@@ -83,6 +107,8 @@ POLISH = 2
 #: gradings of the mesh at most, and how much finer an element may get at one
 GRADE_PASSES = 10
 REFINEMENT = 4.0
+#: growth of the element size per length away from small elements (neighbours differ by 1.5 at most)
+GROWTH = 0.5
 #: updates of the end of the slack stretch at most (secant on the tension there)
 SLACK_PASSES = 12
 
@@ -151,8 +177,33 @@ def _graded_nodes(solution, n_elements, refinement=REFINEMENT):
         scale = brentq(lambda c: np.sum(density(c) * ds) - n_elements, 1e-12 * total / n_elements, total)
     rate = density(scale) if scale > 0 else refinement / h_old
     capped = bool(np.any(rho / max(scale, 1e-300) > refinement / h_old * (1 + 1e-9)))
+    rate = _smoothed(s, rate, n_elements)
     mass = np.concatenate([[0.0], np.cumsum(rate * ds)])
-    fixed = np.unique(np.concatenate([p.joints, [s_p for s_p, _ in p.point_loads]]))
+    return _equidistributed(p, s, mass, n_elements), capped
+
+
+def _smoothed(s, rate, n_elements, growth=None):
+    """Elements per length ``rate`` on the intervals of ``s``, raised where the element size
+    ``h = 1/rate`` would grow faster than ``growth`` per length away from small elements (a mesh
+    whose neighbouring elements differ by a factor ``1 + growth`` at most), and scaled back to
+    ``n_elements`` in all: ``h_i = min_j (h_j + growth |m_i - m_j|)``, m the midpoints, two running
+    minima."""
+    growth = GROWTH if growth is None else growth
+    m = 0.5 * (s[1:] + s[:-1])
+    ds = np.diff(s)
+    for _ in range(3):
+        h = 1.0 / rate
+        forward = growth * m + np.minimum.accumulate(h - growth * m)
+        backward = -growth * m + np.minimum.accumulate((h + growth * m)[::-1])[::-1]
+        rate = 1.0 / np.minimum(forward, backward)
+        rate *= n_elements / np.sum(rate * ds)
+    return rate
+
+
+def _equidistributed(problem, s, mass, n_elements):
+    """Nodes at equal steps of ``mass(s)`` (increasing, sampled at ``s``), each stretch between
+    joints and point loads getting its share (at least one element) of ``n_elements``."""
+    fixed = np.unique(np.concatenate([problem.joints, [s_p for s_p, _ in problem.point_loads]]))
     at_fixed = np.interp(fixed, s, mass)
     share = np.diff(at_fixed) / at_fixed[-1]
     counts = np.maximum(1, np.round(n_elements * share)).astype(int)
@@ -160,7 +211,37 @@ def _graded_nodes(solution, n_elements, refinement=REFINEMENT):
         np.interp(np.linspace(a, b, k + 1)[1:-1], mass, s)
         for a, b, k in zip(at_fixed[:-1], at_fixed[1:], counts, strict=True)
     ]
-    return np.unique(np.concatenate([*inner, fixed])), capped
+    inner = np.unique(np.concatenate(inner))
+    near = np.abs(inner[:, None] - fixed[None, :]).min(axis=1, initial=np.inf) <= 1e-9 * problem.L
+    inner = inner[~near & np.concatenate([[True], np.diff(inner) > 1e-9 * problem.L])]  # no slivers
+    return np.unique(np.concatenate([inner, fixed]))
+
+
+def _guess_nodes(problem, n_elements):
+    """Mesh nodes for the first solve: ``1 + L |dθ/ds|`` equidistributed over the start's shape
+    (`_guess`), whose angle is known in closed form, ``tan θ = w (s - s_v) / H`` (zero on the
+    grounded part): the elements gather at its touchdown or lowest point down to the bend's
+    radius ``H/w``, which a uniform mesh of a nearly L-shaped line cannot see."""
+    H, w, s_v, grounded = _guess(problem, shape=True)
+    L = problem.L
+
+    def angle(s):
+        v = w * (s - s_v)
+        return np.arctan((np.maximum(v, 0.0) if grounded else v) / H)
+
+    turns = np.linspace(angle(0.0), angle(L), 32 * n_elements + 1)
+    s = np.unique(
+        np.concatenate(
+            [np.linspace(0.0, L, 16 * n_elements + 1), np.clip(s_v + H / w * np.tan(turns), 0.0, L)]
+        )
+    )
+    m = 0.5 * (s[1:] + s[:-1])
+    v = w * (m - s_v)
+    turning = np.where(grounded & (v < 0), 0.0, (w / H) / (1.0 + (v / H) ** 2))  # dθ/ds
+    monitor = 1.0 + L * turning
+    rate = _smoothed(s, n_elements * monitor / np.sum(monitor * np.diff(s)), n_elements)
+    mass = np.concatenate([[0.0], np.cumsum(rate * np.diff(s))])
+    return _equidistributed(problem, s, mass, n_elements)
 
 
 def _next_slack_end(tried, slope, s_touchdown):
@@ -333,7 +414,7 @@ class LineProblem:
         placed = []
         for s_fit in fitted:  # a node at s_fit: move the nearest inner node there, or insert one
             k = int(np.argmin(np.abs(nodes - s_fit)))
-            spacing = np.min(np.diff(nodes))
+            spacing = np.min(np.diff(nodes[max(k - 1, 0) : k + 2]))  # of the elements at that node
             movable = 0 < k < len(nodes) - 1 and not np.any(np.isclose(nodes[k], self.joints))
             movable = movable and not any(
                 np.isclose(nodes[k], s) for s in [*placed, *(s for s, _ in point_loads)]
@@ -537,9 +618,11 @@ class LineState:
 _REJECTED = LineState(None, None, None, None, np.inf)
 
 
-def _guess(problem: LineProblem):
+def _guess(problem: LineProblem, shape=False):
     """The elastic catenary of the mean weight and stiffness, on the flat seabed at the
-    anchor's level when the free one dips below the seabed; positions lifted onto the seabed."""
+    anchor's level when the free one dips below the seabed; positions lifted onto the seabed.
+    With ``shape``: ``(H, w, s_v, grounded)`` of that catenary instead, its vertical force
+    ``w (s - s_v)`` (zero where grounded)."""
     span, dh, L = problem.span, problem.dh, problem.L
     w = problem.weight / L
     if not w > 0:
@@ -559,6 +642,7 @@ def _guess(problem: LineProblem):
 
     x, y = free_x(s_dof), free_y(s_dof)
     T = np.hypot(free.H, -free.V_A + w * s_t)
+    form = (float(free.H), w, float(free.V_A) / w, False)
     bed = problem.seabed
     if bed is not None and np.any(y < bed(x)):
         level = min(float(bed(np.array([0.0]))[0]), 0.0)
@@ -566,10 +650,13 @@ def _guess(problem: LineProblem):
         try:
             grounded = elastic_catenary(span, dh, w, EA, length=L, seabed=level)
             x, y, T = grounded.x_of_s(s_dof), grounded.y_of_s(s_dof), grounded.T_of_s(s_t)
+            form = (float(grounded.H), w, L - float(grounded.V_B) / w, True)
         except (InputError, ConvergenceError):
             if bed.flat is not None:  # on a flat seabed the closed form's refusal (slack in a heap) holds
                 raise
         y = np.maximum(y, bed(x))  # a curved seabed: the free line lifted onto it, if nothing better
+    if shape:
+        return form
     x[problem.end_a], y[problem.end_a] = 0.0, 0.0
     x[problem.end_b], y[problem.end_b] = span, dh
     return np.concatenate([x, y, T])
@@ -595,7 +682,9 @@ class LineBVPSolution:
         Seabed normal force ``N_i >= 0`` at each contact node (N).
     contact_force : ndarray (n, 2)
         Force of the seabed on the line at each contact node, friction
-        included (N): ``λ_i (n_i - μ t_i)``.
+        included (N): ``λ_i (n_i - μ t_i)`` where the line slides, on a slack
+        stretch near the anchor the friction that holds its tangential weight
+        (none on a flat seabed).
     gap : ndarray
         Height of each contact node above the seabed (m), ``>= 0`` to round-off.
     in_contact : ndarray of bool
@@ -881,7 +970,8 @@ def solve_line_bvp(
         Elements over the whole line, shared among segments by length (at
         least one each).
     fit_touchdown : int
-        Passes of touchdown fitting: after a solve that touches the seabed,
+        Passes of touchdown fitting (and, when > 0, meshes graded by the
+        line's curvature: module docstring): after a solve that touches the seabed,
         a mesh node is put at the touchdown (and the landing, for an anchor
         above the seabed) the vertical balance gives
         (`LineBVPSolution.s_touchdown`, ``s_landing``: the nearest inner node moves there
@@ -904,11 +994,12 @@ def solve_line_bvp(
     Raises
     ------
     InputError
-        Bad data, named; fully mobilised friction that would compress the
-        grounded line (Jonkman's zero-tension stretch near the anchor, not
-        modelled here).
+        Bad data, named; friction too weak to hold a slack stretch on a
+        sloping seabed.
     ConvergenceError
-        Newton stalled; ``history`` holds the merit per iteration.
+        Newton stalled (``history`` holds the merit per iteration); the end
+        of a slack stretch not found; the discrete line in compression (its
+        bends not resolved by the mesh).
     """
     span, dh = positive("span", span), real("dh", dh)
     if not isinstance(span, float) or not isinstance(dh, float):
@@ -992,6 +1083,8 @@ def solve_line_bvp(
         if start is None:
             # with friction, the frictionless line first: it tells where friction takes the pull
             problem = build(n, mu=0.0)
+            if fit_touchdown:
+                problem = build(n, mu=0.0, nodes_at=_guess_nodes(problem, n))
             solution = run(problem, _guess(problem))
         else:
             solution, s0, fitted = start, start._problem.slack_end, edges_of(start)
