@@ -354,3 +354,59 @@ def test_inextensible_line_with_a_buoy_on_the_seabed():
     assert max(abs(v) for v in _statics(buoyed)) < 1e-12
     _contact_is_exact(buoyed)
     assert buoyed.s_touchdown < 300.0
+
+
+# Scenes of benchmarks/seabed_stability.py (span 100 m, w = 1 N/m, A on a flat seabed) that
+# failed before the slack stretch, the graded meshes and the nested solves: (dh/span, slack
+# (L - chord)/(span + dh - chord), μ, EA/(wL)).
+STABILITY_SCENES = [
+    (10.0, 0.5, 5.0, 1e3),  # nearly vertical, friction takes the whole pull: slack stretch
+    (0.3, 0.9, 0.5, 1e7),  # slack, a slack stretch of 90 % of the grounded line
+    (0.05, 0.5, 0.0, 1e3),  # nearly horizontal: 7 % of the line hangs, a uniform mesh wastes it
+    (0.05, 1e-6, 5.0, 1e3),  # taut: the frictionless estimate sees a slack stretch, there is none
+]
+
+
+def _stability_scene(ratio, slack, mu, ea_over_weight):
+    span = 100.0
+    dh = ratio * span
+    chord = float(np.hypot(span, dh))
+    length = chord + slack * (span + dh - chord)
+    return span, dh, length, ea_over_weight * length
+
+
+@pytest.mark.parametrize("ratio, slack, mu, ea_over_weight", STABILITY_SCENES)
+def test_stability_map_scenes_converge_to_jonkman_at_h4(ratio, slack, mu, ea_over_weight):
+    span, dh, length, ea = _stability_scene(ratio, slack, mu, ea_over_weight)
+    ref = cable.elastic_catenary(span, dh, 1.0, ea, length=length, seabed=0.0, friction=mu)
+    values, errors = {}, {}
+    for n in (40, 80):
+        b = solve_line_bvp(span, dh, [(length, 1.0, ea)], seabed=0.0, friction=mu, n_elements=n)
+        values[n] = np.array([b.H, b.V_B, b.length_on_seabed])
+        errors[n] = np.abs(
+            values[n] / np.array([ref.H, ref.V_B, length]) - [1, 1, ref.length_on_seabed / length]
+        )
+        if ref.H_A == 0.0:  # Jonkman's slack stretch: H_A = 0 to rtol of the weight
+            assert (
+                abs(b.H_A) <= RTOL * length and b.tension(np.linspace(0, length, 501)).min() >= -RTOL * length
+            )
+        else:
+            assert b.H_A == pytest.approx(ref.H_A, rel=1e-6)
+        _contact_is_exact(b)
+        assert max(abs(v) for v in _statics(b)) < 1e-12
+    rate = np.log2(errors[40] / errors[80])
+    assert np.all(rate > 3.3)  # measured 3.7-4.3 (H, V_B, grounded length)
+    # so the error at 80 elements is within the Richardson bound of the change from 40 to 80
+    scale = np.array([ref.H, ref.V_B, length])
+    assert np.all(errors[80] <= np.abs(values[80] - values[40]) / scale / (2**3.3 - 1))
+
+
+def test_a_fine_mesh_finds_its_contact_set_by_nested_solves():
+    # 1280 elements from the start's 32-element active set stalled (the contact set crawls a few
+    # nodes per Newton iteration); nested solves 40 -> 1280 reach the round-off floor
+    span, dh, length, ea = _stability_scene(1.0, 0.5, 0.0, 1e7)
+    ref = cable.elastic_catenary(span, dh, 1.0, ea, length=length, seabed=0.0)
+    b = solve_line_bvp(span, dh, [(length, 1.0, ea)], seabed=0.0, n_elements=1280)
+    assert b.H == pytest.approx(ref.H, rel=1e-10)  # measured 1e-12
+    assert b.V_B == pytest.approx(ref.V_B, rel=1e-10)
+    _contact_is_exact(b)
