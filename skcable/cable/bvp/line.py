@@ -37,7 +37,8 @@ as a semismooth Newton method", SIAM J. Optim., 2002) on the system where
     \quad\text{(tangential equilibrium)}, \qquad
     \min(\lambda_i,\ c\,g_i) = 0 \quad\text{(complementarity)},
 
-``c`` any positive constant (here the total load over the length). Its
+``c`` any positive constant (here the total load over the length, times the
+node's element length over the mean one). Its
 generalized Jacobian takes ``c ∇g_i`` on the nodes where ``λ_i > c g_i``
 (active) and ``∇λ_i`` elsewhere: near the solution Newton's method identifies the active
 set in finitely many steps and converges quadratically.
@@ -51,6 +52,29 @@ the seabed, A is a contact node as well: the seabed takes its push
 ``λ_A = max(n_A·R⁰_A/|n_A|², 0)`` (friction included) and the anchor the
 rest, so that a line grounded at A has ``V_A = 0`` and ``H_A = H - μ·(normal
 forces)`` as in Jonkman's closed form.
+
+**Slack stretch.** Where friction fully mobilised would take more than the
+pull, the grounded line near the anchor is slack (J.M. Jonkman, "Dynamics
+modeling and loads analysis of an offshore floating wind turbine", NREL,
+2007: ``H_A = 0``, tension ``max(H - μ w (L_B - s), 0)``): friction is only
+partly mobilised there. Its end ``s0`` is a mesh node found like the
+touchdown: on ``[0, s0]`` the friction holds the line's own tangential
+weight (the tangential row becomes ``t_i·(R⁰_i - R_ext,i) = 0``: no friction
+on a flat seabed), beyond it friction is fully mobilised (at the node ``s0``
+for the share of its weight beyond), and ``s0`` is moved (a Newton step on
+the tension just past it, with slope ``μ w``, kept in the bracket of the
+tensions tried) until that tension is zero to ``rtol`` of the total load.
+With P2 positions and P1 tension the grounded line's exact solution (T
+linear, x quadratic in s) is then represented exactly; the friction that
+holds a slack stretch on a slope is checked against ``μN``.
+
+**Meshes.** The first solve is on a mesh graded by the start's curvature
+(`_guess_nodes`), each later one on a mesh graded by the last solution's
+(`_graded_nodes`: ``1 + L|dθ/ds|`` equidistributed, neighbouring elements
+within a factor 1.5, no element more than four times smaller than the
+last solution's there), until the grading settles; fine meshes are reached
+by nested solves from 32 elements up, each finished solution (graded mesh,
+touchdown, slack stretch) starting the doubled mesh.
 """
 
 from __future__ import annotations
@@ -78,6 +102,171 @@ __all__ = ["BVPSegment", "LineBVPSolution", "solve_line_bvp"]
 
 #: elements of the first solve of a fine mesh whose start touches the seabed
 COARSE = 32
+#: Newton steps past rtol at most, while the merit falls tenfold
+POLISH = 2
+#: gradings of the mesh at most, and how much finer an element may get at one
+GRADE_PASSES = 10
+REFINEMENT = 4.0
+#: growth of the element size per length away from small elements (neighbours differ by 1.5 at most)
+GROWTH = 0.5
+#: updates of the end of the slack stretch at most (secant on the tension there)
+SLACK_PASSES = 12
+
+
+def _full_steps(problem, z0, rtol, max_iter):
+    """Semismooth Newton with full steps (halved only where the tangent collapses): (z, state,
+    history) once the merit is below ``rtol``, None if it is not within ``max_iter`` steps or
+    grows a thousandfold."""
+    state = problem.assemble(z0)
+    z, history = z0, [state.merit]
+    for _ in range(max_iter):
+        if state.merit < rtol:
+            return z, state, history
+        if not state.merit < 1e3 * history[0]:
+            return None
+        dz, t = problem.increment(state), 1.0
+        for _ in range(12):
+            trial = problem.assemble(z + t * dz)
+            if np.isfinite(trial.merit):
+                break
+            t *= 0.5
+        else:
+            return None
+        z, state = z + t * dz, trial
+        history.append(state.merit)
+    return (z, state, history) if state.merit < rtol else None
+
+
+def _graded_nodes(solution, n_elements, refinement=REFINEMENT):
+    """Mesh nodes (unstretched arc length, m) equidistributing ``1 + L |dθ/ds|`` over the line,
+    no element smaller than ``1/refinement`` of the solution's element there; and whether that
+    bound held anywhere (another pass would refine further).
+
+    θ(s) is the solution's angle to the horizontal, so the density is one per length plus the
+    turning of the line per length: a slack line's elements gather where it bends, near its
+    touchdown or its lowest point, instead of lying on the seabed where it is straight (the
+    equidistribution of a monitor function: W. Huang, R.D. Russell, "Adaptive Moving Mesh
+    Methods", Springer, 2011, ch. 2). The bound keeps each solve's start (the previous solution
+    interpolated) within a node or two of its contact set. Each stretch between joints and
+    point loads gets its share (at least one element) of the ``n_elements``.
+    """
+    p = solution._problem
+    L = p.L
+    old = solution.mesh.p[0]
+    old = np.sort(old)
+    h_old = np.diff(old)
+    cells = 16  # per element of the solution: its turning is measured inside each element, so
+    # that the kink of a point load or a joint (a node of every mesh) draws no elements
+    fraction = (np.arange(cells) + 0.5) / cells
+    inside = old[:-1, None] + fraction[None, :] * h_old[:, None]  # (ne, cells)
+    theta = np.unwrap(solution.angle(inside.ravel()).reshape(inside.shape), axis=1)
+    turning = np.abs(np.gradient(theta, axis=1)) / (h_old[:, None] / cells)
+    rho = (1.0 + L * turning).ravel()
+    ds = np.repeat(h_old / cells, cells)
+    h_old = np.repeat(h_old, cells)
+    s = np.concatenate([[0.0], np.cumsum(ds)])
+    s[-1] = L
+
+    def density(scale):  # elements per length: the monitor over scale, at most refinement / h_old
+        return np.minimum(rho / scale, refinement / h_old)
+
+    total = np.sum(rho * ds)
+    if np.sum(refinement / h_old * ds) <= n_elements:
+        scale = 0.0
+    else:
+        scale = brentq(lambda c: np.sum(density(c) * ds) - n_elements, 1e-12 * total / n_elements, total)
+    rate = density(scale) if scale > 0 else refinement / h_old
+    capped = bool(np.any(rho / max(scale, 1e-300) > refinement / h_old * (1 + 1e-9)))
+    rate = _smoothed(s, rate, n_elements)
+    mass = np.concatenate([[0.0], np.cumsum(rate * ds)])
+    return _equidistributed(p, s, mass, n_elements), capped
+
+
+def _smoothed(s, rate, n_elements, growth=None):
+    """Elements per length ``rate`` on the intervals of ``s``, raised where the element size
+    ``h = 1/rate`` would grow faster than ``growth`` per length away from small elements (a mesh
+    whose neighbouring elements differ by a factor ``1 + growth`` at most), and scaled back to
+    ``n_elements`` in all: ``h_i = min_j (h_j + growth |m_i - m_j|)``, m the midpoints, two running
+    minima."""
+    growth = GROWTH if growth is None else growth
+    m = 0.5 * (s[1:] + s[:-1])
+    ds = np.diff(s)
+    for _ in range(3):
+        h = 1.0 / rate
+        forward = growth * m + np.minimum.accumulate(h - growth * m)
+        backward = -growth * m + np.minimum.accumulate((h + growth * m)[::-1])[::-1]
+        rate = 1.0 / np.minimum(forward, backward)
+        rate *= n_elements / np.sum(rate * ds)
+    return rate
+
+
+def _equidistributed(problem, s, mass, n_elements):
+    """Nodes at equal steps of ``mass(s)`` (increasing, sampled at ``s``), each stretch between
+    joints and point loads getting its share (at least one element) of ``n_elements``."""
+    fixed = np.unique(np.concatenate([problem.joints, [s_p for s_p, _ in problem.point_loads]]))
+    at_fixed = np.interp(fixed, s, mass)
+    share = np.diff(at_fixed) / at_fixed[-1]
+    counts = np.maximum(1, np.round(n_elements * share)).astype(int)
+    inner = [  # the nodes inside each stretch; its ends are the fixed nodes themselves
+        np.interp(np.linspace(a, b, k + 1)[1:-1], mass, s)
+        for a, b, k in zip(at_fixed[:-1], at_fixed[1:], counts, strict=True)
+    ]
+    inner = np.unique(np.concatenate(inner))
+    near = np.abs(inner[:, None] - fixed[None, :]).min(axis=1, initial=np.inf) <= 1e-9 * problem.L
+    inner = inner[~near & np.concatenate([[True], np.diff(inner) > 1e-9 * problem.L])]  # no slivers
+    return np.unique(np.concatenate([inner, fixed]))
+
+
+def _guess_nodes(problem, n_elements):
+    """Mesh nodes for the first solve: ``1 + L |dθ/ds|`` equidistributed over the start's shape
+    (`_guess`), whose angle is known in closed form, ``tan θ = w (s - s_v) / H`` (zero on the
+    grounded part): the elements gather at its touchdown or lowest point down to the bend's
+    radius ``H/w``, which a uniform mesh of a nearly L-shaped line cannot see."""
+    H, w, s_v, grounded = _guess(problem, shape=True)
+    L = problem.L
+
+    def angle(s):
+        v = w * (s - s_v)
+        return np.arctan((np.maximum(v, 0.0) if grounded else v) / H)
+
+    turns = np.linspace(angle(0.0), angle(L), 32 * n_elements + 1)
+    s = np.unique(
+        np.concatenate(
+            [np.linspace(0.0, L, 16 * n_elements + 1), np.clip(s_v + H / w * np.tan(turns), 0.0, L)]
+        )
+    )
+    m = 0.5 * (s[1:] + s[:-1])
+    v = w * (m - s_v)
+    turning = np.where(grounded & (v < 0), 0.0, (w / H) / (1.0 + (v / H) ** 2))  # dθ/ds
+    monitor = 1.0 + L * turning
+    rate = _smoothed(s, n_elements * monitor / np.sum(monitor * np.diff(s)), n_elements)
+    mass = np.concatenate([[0.0], np.cumsum(rate * np.diff(s))])
+    return _equidistributed(problem, s, mass, n_elements)
+
+
+def _next_slack_end(tried, slope, s_touchdown):
+    """The next end ``s0`` of the slack stretch from the (s0, tension just past s0) pairs tried.
+
+    The tension there grows with s0 by about the friction force per length, ``slope`` (N/m): a
+    Newton step on the last pair with that slope, kept inside the bracket of the earlier pairs
+    (the largest s0 with a negative tension and the smallest with a positive one; bisection when
+    the step leaves it), and below the touchdown; 0 when the step passes the anchor and no
+    negative tension was tried (friction does not take the whole pull after all).
+    """
+    s_last, g_last = tried[-1]
+    if not slope > 0:
+        raise ConvergenceError(
+            "solve_line_bvp: the tension does not grow away from the slack stretch",
+            [abs(g) for _, g in tried],
+        )
+    lo = max((s for s, g in tried if g < 0), default=0.0)
+    hi = min((s for s, g in tried if g > 0), default=s_touchdown)
+    s_next = s_last - g_last / slope
+    if s_next <= 0 and not any(g < 0 for _, g in tried):
+        return 0.0  # the tension stays positive down to the anchor: no slack stretch
+    if not lo < s_next < hi:
+        s_next = 0.5 * (lo + hi)
+    return float(s_next)
 
 
 @dataclass(frozen=True)
@@ -193,8 +382,21 @@ def _seabed(seabed, seabed_slope, span):
 class LineProblem:
     """Mesh, bases, properties per quadrature point and the assembly of one line."""
 
-    def __init__(self, span, dh, segments, point_loads, seabed, friction, n_elements, fitted=()):
+    def __init__(
+        self,
+        span,
+        dh,
+        segments,
+        point_loads,
+        seabed,
+        friction,
+        n_elements,
+        fitted=(),
+        slack_end=0.0,
+        nodes_at=None,
+    ):
         self.span, self.dh, self.seabed, self.friction = span, dh, seabed, friction
+        self.slack_end = float(slack_end)
         self.segments = segments
         lengths = np.array([seg.length for seg in segments])
         self.joints = np.concatenate([[0.0], np.cumsum(lengths)])
@@ -207,11 +409,17 @@ class LineProblem:
         ]
         self.point_loads = point_loads
         nodes = np.unique(np.concatenate([*nodes, [s for s, _ in point_loads]]))
+        if nodes_at is not None:  # a graded mesh: joints and point loads stay nodes
+            nodes = np.unique(np.concatenate([nodes_at, self.joints, [s for s, _ in point_loads]]))
+        placed = []
         for s_fit in fitted:  # a node at s_fit: move the nearest inner node there, or insert one
             k = int(np.argmin(np.abs(nodes - s_fit)))
-            spacing = np.min(np.diff(nodes))
+            spacing = np.min(np.diff(nodes[max(k - 1, 0) : k + 2]))  # of the elements at that node
             movable = 0 < k < len(nodes) - 1 and not np.any(np.isclose(nodes[k], self.joints))
-            movable = movable and not any(np.isclose(nodes[k], s) for s, _ in point_loads)
+            movable = movable and not any(
+                np.isclose(nodes[k], s) for s in [*placed, *(s for s, _ in point_loads)]
+            )
+            placed.append(s_fit)
             if movable and abs(nodes[k] - s_fit) < 0.25 * spacing:
                 nodes[k] = s_fit
             elif np.min(np.abs(nodes - s_fit)) > 1e-9 * self.L:
@@ -257,6 +465,26 @@ class LineProblem:
         self.length_scale = self.L
         self.stiffness = self.load_scale / self.L  # c of the complementarity function (N/m)
         self.contact = inner if seabed is not None else np.zeros(0, dtype=int)
+        # c per contact node: the total load per length, times the node's element length over the
+        # mean one (uniform on a uniform mesh), so that λ_i ~ w h_i switches at a gap ~ h_i / h̄·h̄
+        element_length = np.diff(self.mesh.p[0, self.mesh.t], axis=0)[0]
+        node_length = np.zeros(N)
+        np.maximum.at(node_length, self.basis.element_dofs.ravel(), np.tile(element_length, 3))
+        self.stiffness_nodes = self.stiffness * node_length[self.contact] / (self.L / element_length.size)
+        # the external load vector (weight and point loads), and per contact node the share of its
+        # weight that lies beyond the slack stretch [0, slack_end] (where friction is fully mobilised)
+        zero = np.zeros_like(self.w_q)
+        self.external = self.assembly.vector(np.stack([zero, zero, zero, self.w_q, zero]))
+        np.add.at(self.external, self.point_rows, self.point_values)
+        sliding_q = np.where((middle > self.slack_end)[None, :], self.w_q, 0.0)
+        sliding = self.assembly.vector(np.stack([zero, zero, zero, sliding_q, zero]))[N + self.contact]
+        own = self.assembly.vector(np.stack([zero, zero, zero, self.w_q, zero]))[N + self.contact]
+        self.sliding_share = np.ones(self.contact.size)
+        if self.slack_end > 0:
+            self.sliding_share = np.divide(sliding, own, out=np.ones_like(own), where=own != 0)
+            self.sliding_share[self.basis.doflocs[0][self.contact] < self.slack_end] = 0.0
+        #: friction coefficient per contact node: μ where it slides, 0 on the slack stretch
+        self.mu_nodes = friction * self.sliding_share
         #: A lies on the seabed (to 1e-12 of the length): the seabed, not the anchor, carries its push
         self.anchor_on_seabed = (
             seabed is not None and abs(float(seabed(np.array([0.0]))[0])) <= 1e-12 * self.L
@@ -301,7 +529,7 @@ class LineProblem:
         Rx, Ry = R0[i], R0[N + i]
         norm2 = 1.0 + bp * bp
         lam = (Ry - bp * Rx) / norm2
-        active = lam > self.stiffness * gap
+        active = lam > self.stiffness_nodes * gap
         return bp, bpp, gap, lam, active, Rx, Ry
 
     def assemble(self, z):
@@ -314,10 +542,11 @@ class LineProblem:
         if self.contact.size:
             terms = self.contact_terms(z, R0)
             bp, _, gap, lam, active, Rx, Ry = terms
-            mu = self.friction
+            mu, stuck = self.mu_nodes, 1.0 - self.sliding_share
             i, N = self.contact, self.N
-            F[i] = (1.0 - mu * bp) * Rx + (bp + mu) * Ry
-            F[N + i] = np.where(active, self.stiffness * gap, lam)
+            # on the slack stretch friction holds the line's own tangential weight (stuck)
+            F[i] = (1.0 - mu * bp) * Rx + (bp + mu) * Ry - stuck * bp * self.external[N + i]
+            F[N + i] = np.where(active, self.stiffness_nodes * gap, lam)
         force = np.abs(F[self._force_rows]) / self.load_scale
         stretch = np.abs(F[self._stretch_rows]) / self.length_scale
         merit = max(float(np.max(force, initial=0.0)), float(np.max(stretch, initial=0.0)))
@@ -331,7 +560,7 @@ class LineProblem:
         if self.contact.size:
             Ke = Ke.copy()
             bp, bpp, _, lam, active, Rx, Ry = state.terms
-            mu, i, N = self.friction, self.contact, self.N
+            mu, i, N = self.mu_nodes, self.contact, self.N
             norm2 = 1.0 + bp * bp
             # row mixing per position dof: x row -> a Kx + b Ky, y row -> c Kx + d Ky
             a, b = np.ones(N), np.zeros(N)
@@ -345,9 +574,10 @@ class LineProblem:
             Ke[:nb] = a[ed][:, None, :] * Kx + b[ed][:, None, :] * Ky
             Ke[nb : 2 * nb] = c[ed][:, None, :] * Kx + d[ed][:, None, :] * Ky
             # what the element matrices cannot carry: derivatives of b'(x_i) and the active rows
-            dtx = bpp * (Ry - mu * Rx)  # d(tangential row)/dx_i through b'
+            stuck_y = (1.0 - self.sliding_share) * self.external[N + i]
+            dtx = bpp * (Ry - mu * Rx - stuck_y)  # d(tangential row)/dx_i through b'
             dlx = bpp * (-Rx / norm2 - lam * 2.0 * bp / norm2)  # dλ/dx_i through b'
-            k = self.stiffness
+            k = self.stiffness_nodes
             rows = np.concatenate([i, N + i, N + i])
             cols = np.concatenate([i, i, N + i])
             vals = np.concatenate([dtx, np.where(active, -k * bp, dlx), np.where(active, k, 0.0)])
@@ -388,9 +618,11 @@ class LineState:
 _REJECTED = LineState(None, None, None, None, np.inf)
 
 
-def _guess(problem: LineProblem):
+def _guess(problem: LineProblem, shape=False):
     """The elastic catenary of the mean weight and stiffness, on the flat seabed at the
-    anchor's level when the free one dips below the seabed; positions lifted onto the seabed."""
+    anchor's level when the free one dips below the seabed; positions lifted onto the seabed.
+    With ``shape``: ``(H, w, s_v, grounded)`` of that catenary instead, its vertical force
+    ``w (s - s_v)`` (zero where grounded)."""
     span, dh, L = problem.span, problem.dh, problem.L
     w = problem.weight / L
     if not w > 0:
@@ -410,6 +642,7 @@ def _guess(problem: LineProblem):
 
     x, y = free_x(s_dof), free_y(s_dof)
     T = np.hypot(free.H, -free.V_A + w * s_t)
+    form = (float(free.H), w, float(free.V_A) / w, False)
     bed = problem.seabed
     if bed is not None and np.any(y < bed(x)):
         level = min(float(bed(np.array([0.0]))[0]), 0.0)
@@ -417,10 +650,13 @@ def _guess(problem: LineProblem):
         try:
             grounded = elastic_catenary(span, dh, w, EA, length=L, seabed=level)
             x, y, T = grounded.x_of_s(s_dof), grounded.y_of_s(s_dof), grounded.T_of_s(s_t)
+            form = (float(grounded.H), w, L - float(grounded.V_B) / w, True)
         except (InputError, ConvergenceError):
             if bed.flat is not None:  # on a flat seabed the closed form's refusal (slack in a heap) holds
                 raise
         y = np.maximum(y, bed(x))  # a curved seabed: the free line lifted onto it, if nothing better
+    if shape:
+        return form
     x[problem.end_a], y[problem.end_a] = 0.0, 0.0
     x[problem.end_b], y[problem.end_b] = span, dh
     return np.concatenate([x, y, T])
@@ -446,7 +682,9 @@ class LineBVPSolution:
         Seabed normal force ``N_i >= 0`` at each contact node (N).
     contact_force : ndarray (n, 2)
         Force of the seabed on the line at each contact node, friction
-        included (N): ``λ_i (n_i - μ t_i)``.
+        included (N): ``λ_i (n_i - μ t_i)`` where the line slides, on a slack
+        stretch near the anchor the friction that holds its tangential weight
+        (none on a flat seabed).
     gap : ndarray
         Height of each contact node above the seabed (m), ``>= 0`` to round-off.
     in_contact : ndarray of bool
@@ -487,19 +725,24 @@ class LineBVPSolution:
         if i.size:
             bp, _, gap, lam, active, _, _ = state.terms
             bp, gap, lam, active = bp[order], gap[order], lam[order], active[order]
+            mu = problem.mu_nodes[order]
+            # friction that holds the slack stretch: its own tangential weight, t·R_ext / |t|²
+            held = (1.0 - problem.sliding_share[order]) * bp * problem.external[N + i] / (1.0 + bp * bp)
             if self.anchor_on_seabed:
                 # the seabed under the anchor takes the anchor's downward push, friction included
                 slope = float(problem.seabed.slope(np.array([0.0]))[0])
                 lam_a = max((V_A + slope * H_A) / (1.0 + slope * slope), 0.0)  # n·R⁰_A / |n|², R⁰_x(A) = -H_A
-                mu = problem.friction
-                H_A, V_A = H_A + lam_a * (-slope - mu), V_A - lam_a * (1.0 - mu * slope)
+                mu_a = problem.friction if problem.slack_end == 0 else 0.0  # the anchor holds a slack stretch
+                H_A, V_A = H_A + lam_a * (-slope - mu_a), V_A - lam_a * (1.0 - mu_a * slope)
                 self.contact_s = np.concatenate([[0.0], self.contact_s])
                 self.contact_xy = np.vstack([[0.0, 0.0], self.contact_xy])
                 bp, gap = np.concatenate([[slope], bp]), np.concatenate([[0.0], gap])
                 lam, active = np.concatenate([[lam_a], lam]), np.concatenate([[lam_a > 0], active])
-            mu = problem.friction
+                mu, held = np.concatenate([[mu_a], mu]), np.concatenate([[0.0], held])
             self.normal_force = lam * np.sqrt(1.0 + bp * bp)
-            self.contact_force = lam[:, None] * np.column_stack([-bp - mu, 1.0 - mu * bp])
+            self.contact_force = lam[:, None] * np.column_stack([-bp - mu, 1.0 - mu * bp]) + held[
+                :, None
+            ] * np.column_stack([np.ones_like(bp), bp])
             self.gap, self.in_contact = gap, active
         else:
             self.normal_force, self.gap = np.zeros(0), np.zeros(0)
@@ -625,6 +868,56 @@ class LineBVPSolution:
             return 0.0
         return self.s_touchdown - self.s_landing
 
+    def _tension_profile(self):
+        """The P1-DG tension per element, sorted along the line: (s_left, s_right, T_left, T_right)."""
+        tb = self._problem.tbasis
+        dofs = tb.element_dofs  # (2, ne)
+        at = tb.doflocs[0][dofs]
+        T = self._fields()[2][dofs]
+        first = np.argmin(at, axis=0)
+        cols = np.arange(dofs.shape[1])
+        s_l, s_r = at[first, cols], at[1 - first, cols]
+        T_l, T_r = T[first, cols], T[1 - first, cols]
+        order = np.argsort(s_l)
+        return s_l[order], s_r[order], T_l[order], T_r[order]
+
+    def _tension_zero(self, tol):
+        """Where the tension of a line grounded at A last rises through zero (m of arc length): the
+        end of Jonkman's slack stretch estimated from a solve with friction fully mobilised
+        everywhere; 0 when the tension is nowhere below ``-tol`` (N)."""
+        s_l, s_r, T_l, T_r = self._tension_profile()
+        s, T = np.column_stack([s_l, s_r]).ravel(), np.column_stack([T_l, T_r]).ravel()
+        negative = np.flatnonzero(T < -tol)
+        if not negative.size:
+            return 0.0
+        k = int(negative[-1])
+        if k + 1 >= T.size or s[k + 1] == s[k] or T[k + 1] <= T[k]:
+            zero = s[min(k + 1, T.size - 1)]
+        else:
+            zero = s[k] - T[k] * (s[k + 1] - s[k]) / (T[k + 1] - T[k])
+        return float(min(zero, 0.99 * self.s_touchdown))
+
+    def _slack_estimate(self, friction):
+        """The end ``s0`` of the slack stretch (m) that friction ``μ`` fully mobilised from the
+        touchdown towards A would give a frictionless solution's grounded line on a flat seabed:
+        ``μ (W(s_td) - W(s0)) = T(s_td)``, W the weight from A; 0 when friction cannot take the pull."""
+        if not self.in_contact[self.contact_s > 0].any():
+            return 0.0
+        s_td = self.s_touchdown
+        slope = self._slope_at(s_td)
+        pull = self.H * np.sqrt(1.0 + slope * slope) / friction  # the tension at the touchdown / μ
+        if self._weight_before(s_td) <= pull:
+            return 0.0
+        return float(brentq(lambda s: self._weight_before(s_td) - self._weight_before(s) - pull, 0.0, s_td))
+
+    def _slack_tension(self):
+        """Tension (N) just past the end ``s0`` of the slack stretch, and its slope (N/m) there:
+        the first element that starts at s0."""
+        s_l, s_r, T_l, T_r = self._tension_profile()
+        k = int(np.argmin(np.abs(s_l - self._problem.slack_end)))
+        friction_force = self.friction * (self._weight_before(s_r[k]) - self._weight_before(s_l[k]))
+        return float(T_l[k]), float(friction_force / (s_r[k] - s_l[k]))
+
     def residual(self):
         """Largest scaled residual (forces over the total load, stretch over the length)."""
         return self._state.merit
@@ -677,7 +970,8 @@ def solve_line_bvp(
         Elements over the whole line, shared among segments by length (at
         least one each).
     fit_touchdown : int
-        Passes of touchdown fitting: after a solve that touches the seabed,
+        Passes of touchdown fitting (and, when > 0, meshes graded by the
+        line's curvature: module docstring): after a solve that touches the seabed,
         a mesh node is put at the touchdown (and the landing, for an anchor
         above the seabed) the vertical balance gives
         (`LineBVPSolution.s_touchdown`, ``s_landing``: the nearest inner node moves there
@@ -700,11 +994,12 @@ def solve_line_bvp(
     Raises
     ------
     InputError
-        Bad data, named; fully mobilised friction that would compress the
-        grounded line (Jonkman's zero-tension stretch near the anchor, not
-        modelled here).
+        Bad data, named; friction too weak to hold a slack stretch on a
+        sloping seabed.
     ConvergenceError
-        Newton stalled; ``history`` holds the merit per iteration.
+        Newton stalled (``history`` holds the merit per iteration); the end
+        of a slack stretch not found; the discrete line in compression (its
+        bends not resolved by the mesh).
     """
     span, dh = positive("span", span), real("dh", dh)
     if not isinstance(span, float) or not isinstance(dh, float):
@@ -737,49 +1032,165 @@ def solve_line_bvp(
     name = "solve_line_bvp"
 
     def run(problem, z0):
-        result = newton(
-            problem.assemble,
-            z0,
-            norm=lambda state: state.merit,
-            increment=problem.increment,
-            tol=rtol,
-            max_iter=int(max_iter),
-            stagnation_window=8,
-            name=name,
-        )
-        return LineBVPSolution(problem, result.x, result.history, result.state)
+        try:
+            result = newton(
+                problem.assemble,
+                z0,
+                norm=lambda state: state.merit,
+                increment=problem.increment,
+                tol=rtol,
+                max_iter=int(max_iter),
+                stagnation_window=8,
+                name=name,
+            )
+            z, state, history = result.x, result.state, list(result.history)
+        except ConvergenceError as failed:
+            # the max-norm merit of a semismooth system can refuse every damped step where full
+            # steps identify the active set and converge: try them before giving up
+            out = _full_steps(problem, z0, rtol, int(max_iter))
+            if out is None:
+                raise failed from None
+            z, state, history = out
+        # past rtol, full Newton steps while the merit still falls tenfold: quadratic convergence
+        # takes the solution to its round-off floor for one or two more solves
+        for _ in range(POLISH):
+            trial_z = z + problem.increment(state)
+            trial = problem.assemble(trial_z)
+            if not trial.merit < 0.1 * state.merit:
+                break
+            z, state = trial_z, trial
+            history.append(state.merit)
+        return LineBVPSolution(problem, z, history, state)
 
     def restart(solution, problem):  # the previous solution interpolated on a new mesh
         xy = solution.xy(problem.basis.doflocs[0])
         tension = solution.tension(np.clip(problem.tbasis.doflocs[0], 0.0, L))
         return np.concatenate([xy[:, 0], xy[:, 1], tension])
 
-    problem = LineProblem(span, dh, segs, loads, bed, friction, n_elements)
-    z0 = _guess(problem)
-    if problem.mesh.t.shape[1] > 2 * COARSE and bed is not None and np.any(problem.gaps(z0) <= 0):
-        # the active set moves by a few nodes per iteration: find it on a coarse mesh first
-        coarse = LineProblem(span, dh, segs, loads, bed, friction, COARSE)
-        z0 = restart(run(coarse, _guess(coarse)), problem)
-    solution = run(problem, z0)
-    fitted = []
-    for _ in range(int(fit_touchdown)):
-        if not solution.in_contact[solution.contact_s > 0].any():
-            break
-        edges = [solution.s_touchdown] + ([solution.s_landing] if solution.s_landing > 0 else [])
-        if fitted and max(abs(a - b) for a, b in zip(edges, fitted, strict=False)) <= 1e-9 * L:
-            break
-        fitted = edges
-        problem = LineProblem(span, dh, segs, loads, bed, friction, n_elements, fitted=fitted)
-        solution = run(problem, restart(solution, problem))
+    def build(n, fitted=(), slack_end=0.0, mu=friction, nodes_at=None):
+        return LineProblem(
+            span, dh, segs, loads, bed, mu, n, fitted=fitted, slack_end=slack_end, nodes_at=nodes_at
+        )
+
+    def edges_of(solution):  # the touchdown and landing to put nodes at
+        if not (fit_touchdown and solution.in_contact[solution.contact_s > 0].any()):
+            return []
+        return [solution.s_touchdown] + ([solution.s_landing] if solution.s_landing > 0 else [])
+
+    def solve_level(n, start=None):
+        """The line on n elements, from scratch or from ``start``, the finished solution on n/2."""
+        s0, fitted, graded, tried = 0.0, [], None, []
+        if start is None:
+            # with friction, the frictionless line first: it tells where friction takes the pull
+            problem = build(n, mu=0.0)
+            if fit_touchdown:
+                problem = build(n, mu=0.0, nodes_at=_guess_nodes(problem, n))
+            solution = run(problem, _guess(problem))
+        else:
+            solution, s0, fitted = start, start._problem.slack_end, edges_of(start)
+        mu_now = friction if start is not None else 0.0
+        if fit_touchdown:
+            # the mesh graded by the solution's curvature; again while the elements of the bends
+            # could shrink no more than REFINEMENT times at one solve (its start then puts the
+            # touchdown a node or two off: nodal contact moves a few nodes per Newton iteration)
+            # or while the discrete line is in compression, a sign that its bends are not resolved
+            for _ in range(GRADE_PASSES):
+                graded, capped = _graded_nodes(solution, n)
+                problem = build(n, fitted + ([s0] if s0 > 0 else []), s0, mu_now, graded)
+                solution = run(problem, restart(solution, problem))
+                compressed = np.min(solution._fields()[2]) < -1e3 * rtol * problem.load_scale
+                if not (capped or compressed):
+                    break
+        elif start is not None:
+            problem = build(n, [s0] if s0 > 0 else [], s0)
+            solution = run(problem, restart(solution, problem))
+        if start is None and friction > 0:
+            # Jonkman's slack stretch [0, s0] of a grounded line whose friction takes the whole
+            # pull: estimated from the frictionless line, or where friction fully mobilised
+            # everywhere leaves the line near the anchor in compression
+            if problem.anchor_on_seabed:
+                s0 = solution._slack_estimate(friction)
+            problem = build(n, [s0] if s0 > 0 else [], s0, friction, graded)
+            solution = run(problem, restart(solution, problem))
+            if s0 == 0 and problem.anchor_on_seabed:
+                s0 = solution._tension_zero(1e3 * rtol * problem.load_scale)
+        slack_tol = rtol * problem.load_scale
+        edge_passes = 0
+        for _ in range(int(fit_touchdown) + SLACK_PASSES):
+            move, settled = False, True
+            if edge_passes < int(fit_touchdown) or s0 > 0:
+                edges = edges_of(solution)
+                moved = np.inf
+                if len(edges) == len(fitted):
+                    moved = max((abs(a - b) for a, b in zip(edges, fitted, strict=True)), default=0.0)
+                if moved > 1e-9 * L:
+                    fitted, move, edge_passes = edges, True, edge_passes + 1
+                    settled = moved <= 1e-6 * L  # the tension past s0 is worth a bracket only then
+            if s0 > 0 or solution._problem.slack_end > 0:
+                if solution._problem.slack_end == s0:
+                    g, slope = solution._slack_tension()
+                    if abs(g) > slack_tol:
+                        s0 = _next_slack_end([*tried, (s0, g)], slope, solution.s_touchdown)
+                        if settled:
+                            tried.append((solution._problem.slack_end, g))
+                        move = True
+                else:
+                    move = True
+            if not move:
+                break
+            problem = build(n, fitted + ([s0] if s0 > 0 else []), s0, friction, graded)
+            solution = run(problem, restart(solution, problem))
+        if s0 > 0:
+            g, _ = solution._slack_tension()
+            if not abs(g) <= slack_tol:
+                raise ConvergenceError(
+                    f"{name}: the end of the slack stretch near the anchor was not found "
+                    f"(tension {g:.3g} N there after {len(tried)} updates)",
+                    solution.history,
+                )
+        return solution
+
+    n = int(n_elements)
+    probe = build(n, mu=0.0)
+    if n > 2 * COARSE and bed is not None and np.any(probe.gaps(_guess(probe)) <= 0):
+        # nested meshes: the active set moves by a few nodes per Newton iteration, so the line is
+        # solved on COARSE-odd elements first and each finished solution starts the doubled mesh
+        sizes = [n]
+        while sizes[-1] // 2 >= COARSE:
+            sizes.append(sizes[-1] // 2)
+        solution = None
+        for size in reversed(sizes):
+            solution = solve_level(size, solution)
+    else:
+        solution = solve_level(n)
+    problem = solution._problem
+    slack_tol = rtol * problem.load_scale
+    s0 = problem.slack_end
+    if s0 > 0:
+        # the friction that holds the slack stretch (its tangential force) is at most μN
+        on = solution.contact_s < s0
+        slope = solution._problem.seabed.slope(solution.contact_xy[on, 0])
+        force = solution.contact_force[on]
+        tangential = np.abs(force[:, 0] + slope * force[:, 1]) / np.sqrt(1.0 + slope * slope)
+        if np.any(tangential > friction * solution.normal_force[on] + slack_tol):
+            raise InputError(
+                "friction",
+                "too weak to hold the slack stretch near the anchor on the sloping seabed "
+                "(the line would slide down it)",
+            )
     values = (solution.H, solution.V_B, solution.H_A, solution.V_A)
     if not all(np.isfinite(values)) or not np.all(np.isfinite(solution.dofs)):
         raise ConvergenceError(f"{name}: non-finite result", solution.history)
-    if friction > 0:
-        T = solution._fields()[2]
-        if np.min(T) < -1e3 * rtol * problem.load_scale:
-            raise InputError(
-                "friction",
-                "fully mobilised friction would put the grounded line near the anchor in compression "
-                f"(min T = {np.min(T):.3g} N): Jonkman's zero-tension stretch is not modelled by the BVP",
-            )
+    T = solution._fields()[2]
+    if np.min(T) < -1e3 * rtol * problem.load_scale:
+        raise ConvergenceError(
+            f"{name}: the discrete line is in compression "
+            f"(min T = {np.min(T):.3g} N, H = {solution.H:.3g} N): "
+            + (
+                "fully mobilised friction with the anchor above the seabed"
+                if friction > 0 and not problem.anchor_on_seabed
+                else f"{problem.mesh.t.shape[1]} elements do not resolve its bends; give more"
+            ),
+            solution.history,
+        )
     return solution
