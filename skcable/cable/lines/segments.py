@@ -211,6 +211,7 @@ class Line:
         c = P[1:n] + self._w[1:] * self._L[1:]
         self._Q_top = np.append(np.cumsum(c[::-1])[::-1], 0.0)
         self._contact = seabed is not None and seabed == 0.0
+        self._buoyed = bool((P[1:n] < 0).any())  # buoys between the ends
 
     @property
     def length(self):
@@ -388,6 +389,8 @@ class Line:
         def height(V):
             return self._vertical(V)[0] - dh
 
+        if height(0.0) >= 0:  # buoys hold the line up even with no pull at B: no heap state
+            return None
         V, _ = find_root(height, 0.0, V_all * (1.0 - 1e-15), what="Line.solve, heap", xtol=1e-15 * V_all)
         for _ in range(3):  # Newton polish on the piecewise quadratic Z(V)
             Z, dZ = self._vertical(V)[:2]
@@ -414,6 +417,8 @@ class Line:
         st.Vb, st.L_s, st.Tt, st.Tb = Vb, Ls, V_top[k:].copy(), Vb.copy()
         st.dx = np.zeros_like(Vb)
         st.dy = Ls * (1.0 + 0.5 * (st.Tt + Vb) / self._EA[k:])
+        if k == len(self._L) - 1:  # one piece hangs: Python floats, as `_state` keeps them
+            st.Vb, st.L_s, st.Tt, st.Tb, st.dx, st.dy = (float(v[0]) for v in (Vb, Ls, st.Tt, st.Tb, st.dx, st.dy))
         st.X, st.Z = span, Z  # the slack fills the span (an inequality, checked in residual())
         st.jac = (0.0, 0.0, 0.0, dZ)
         st.l_g = [*self._Lf[:k], a]
@@ -522,7 +527,8 @@ class Line:
 
         H_lo = 1e-10 * W
         if x_of_h(H_lo) >= 0:
-            if self._contact:  # `_heap` found no heap state: buoys lift the slack
+            if self._contact:  # buoys: a heap state raises in `_heap`, else none of this form
+                self._heap(span, dh)
                 raise InputError(
                     "attachments",
                     "leave slack line on the seabed with H -> 0 that is no heap state of this closed "
@@ -585,7 +591,7 @@ class Line:
             H0, V0, state = self._start(start)
             if H0 > 0:  # a heap state (H = 0) is no start for Newton
                 st, norm, history = self._newton(span, dh, H0, V0, chord, 40, state)
-        if not norm < 1e-11:  # the slack in a heap on the seabed (H = 0)?
+        if not norm < 1e-11 and not self._buoyed:  # the slack in a heap on the seabed (H = 0)?
             heap = self._heap(span, dh)
             if heap is not None:
                 st, norm = heap, 0.0
