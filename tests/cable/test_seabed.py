@@ -466,8 +466,12 @@ def test_heap_is_the_vertical_hanging_line(span, dh, w, EA, L, seabed, mu):
     up = s >= L - l_B
     sigma = s[up] - (L - l_B)
     np.testing.assert_allclose(T[up], w * sigma, rtol=1e-12, atol=1e-12 * r.V_B)
-    with mp.workdps(30):  # height of the point sigma: ∫ (1 + w (l_B - u)/EA) du from the foot
-        expected = [float(mp.quad(lambda u: 1 + w * (l_B - u) / EA, [0, sg])) + seabed for sg in sigma[::50]]
+    with mp.workdps(30):  # height of the point sigma: ∫ (1 + T(u)/EA) du from the foot, T = w u
+        expected = [float(mp.quad(lambda u: 1 + w * u / EA, [0, sg])) + seabed for sg in sigma[::50]]
+    below = s <= l_A  # the part from A: T = w (l_A - u) at u below A
+    with mp.workdps(30):
+        expected_A = [-float(mp.quad(lambda u: 1 + w * (l_A - u) / EA, [0, sg])) for sg in s[below][::20]]
+    np.testing.assert_allclose(y[below][::20], expected_A, rtol=1e-12, atol=1e-12 * dh)
     np.testing.assert_allclose(y[up][::50], expected, rtol=1e-12, atol=1e-12 * dh)
     assert r.y(np.array([0.0, 0.5 * span, span])).tolist() == pytest.approx([0.0, seabed, dh], rel=1e-14)
     assert r.slope(0.5 * span) == 0.0

@@ -589,17 +589,18 @@ class SeabedCatenary(CableSolution):
     def y_of_s(self, s):
         """Height above A of the material point ``s`` (the seabed's height on it).
 
-        In a heap state a vertical part of unstretched length ``l`` with tension
-        ``w (l - u)`` at ``u`` from its foot reaches ``sigma + w (l sigma - sigma^2/2)/EA``
-        above the seabed (H.M. Irvine, "Cable Structures", MIT Press, 1981, the
-        elastic catenary at ``H = 0``)."""
+        In a heap state the part from B carries ``w u`` at ``u`` above its foot, so the
+        point ``sigma`` above the foot lies ``sigma + w sigma^2/(2 EA)`` above the seabed;
+        the part from A carries ``w (s_1 - s)`` and the point ``s`` lies
+        ``s + w (s_1 s - s^2/2)/EA`` below A (H.M. Irvine, "Cable Structures", MIT Press,
+        1981, the elastic catenary at ``H = 0``)."""
 
         def heap():
             s1, L_B, sigma = self._heap_parts(s)
             w, EA = self.w, self.EA
             a = np.minimum(s, s1)
             below_A = -(a + w * (s1 * a - 0.5 * a * a) / EA)
-            above = self._y_t + sigma + w * (self._l_B * sigma - 0.5 * sigma * sigma) / EA
+            above = self._y_t + sigma * (1.0 + 0.5 * w * sigma / EA)
             return _out(np.where(s <= s1, below_A, np.where(s <= s1 + L_B, self._y_t, above)))
 
         s = self._arc("s", s)
