@@ -374,7 +374,8 @@ class SeabedCatenary(CableSolution):
     def stretched_length(self):
         """Stretched length of the whole line (anchor part, grounded, suspended)."""
         # heap: the vertical parts span the heights exactly, the slack does not stretch
-        return self._pick(lambda: self.length_on_seabed + self.dh - 2.0 * self._y_t, self._taut_stretched_length)
+        heap = self.length_on_seabed + self.dh - 2.0 * self._y_t
+        return self._pick(lambda: heap, self._taut_stretched_length)
 
     def _taut_stretched_length(self):
         H, V1 = self._Hr, self._V1
@@ -548,7 +549,6 @@ class SeabedCatenary(CableSolution):
         ground = inverse_2x2(*jac)
         return np.where(np.asarray(touches)[..., None, None], ground, free)
 
-
     # -- the heap state (H = 0): vertical parts at A and B, slack spread on the seabed ----
     def _heap_parts(self, s):
         """``s`` broadcast, the anchor part's length ``s_1``, the grounded ``L_B``, the
@@ -632,7 +632,9 @@ class SeabedCatenary(CableSolution):
             x_b = np.broadcast_to(x, np.broadcast_shapes(np.shape(x), np.shape(self.span)))
             vertical = self.heap & ((x_b >= self.span) | ((x_b <= 0.0) & (self._V1 > 0)))
             if np.any(vertical):
-                raise InputError("x", "the line hangs vertically there (slack in a heap, H = 0): no finite slope")
+                raise InputError(
+                    "x", "the line hangs vertically there (slack in a heap, H = 0): no finite slope"
+                )
             return _out(0.0 * x_b)
 
         x = real("x", x)

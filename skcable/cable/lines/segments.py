@@ -418,7 +418,8 @@ class Line:
         st.dx = np.zeros_like(Vb)
         st.dy = Ls * (1.0 + 0.5 * (st.Tt + Vb) / self._EA[k:])
         if k == len(self._L) - 1:  # one piece hangs: Python floats, as `_state` keeps them
-            st.Vb, st.L_s, st.Tt, st.Tb, st.dx, st.dy = (float(v[0]) for v in (Vb, Ls, st.Tt, st.Tb, st.dx, st.dy))
+            pieces = (Vb, Ls, st.Tt, st.Tb, st.dx, st.dy)
+            st.Vb, st.L_s, st.Tt, st.Tb, st.dx, st.dy = (float(v[0]) for v in pieces)
         st.X, st.Z = span, Z  # the slack fills the span (an inequality, checked in residual())
         st.jac = (0.0, 0.0, 0.0, dZ)
         st.l_g = [*self._Lf[:k], a]
