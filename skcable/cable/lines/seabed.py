@@ -599,7 +599,7 @@ class SeabedCatenary(CableSolution):
             s1, L_B, sigma = self._heap_parts(s)
             w, EA = self.w, self.EA
             a = np.minimum(s, s1)
-            below_A = -(a + w * (s1 * a - 0.5 * a * a) / EA)
+            below_A = 0.0 - (a + w * (s1 * a - 0.5 * a * a) / EA)
             above = self._y_t + sigma * (1.0 + 0.5 * w * sigma / EA)
             return _out(np.where(s <= s1, below_A, np.where(s <= s1 + L_B, self._y_t, above)))
 
@@ -640,6 +640,28 @@ class SeabedCatenary(CableSolution):
         x = real("x", x)
         require("x", (x >= 0) & (x <= self.span), "must lie in [0, span]", x)
         return self._pick(heap, lambda: self._taut_slope(x))
+
+    def samples(self, n: int = 201) -> dict:
+        """One scene's profile at ``n`` equally spaced x (see `CableSolution.samples`).
+
+        In a heap state the points at ``x = 0`` and ``x = span`` are A and B (the
+        vertical parts project onto them), with the angle of the vertical tangent there
+        (``-pi/2`` leaving A downwards when the anchor is above the seabed, ``pi/2``
+        rising to B) and 0 on the seabed between."""
+        if not (self._any_heap and np.ndim(self.heap) == 0):
+            return super().samples(n)
+        x = np.linspace(0.0, float(self.span), _sample_count(n))
+        angle = np.zeros_like(x)
+        angle[-1] = 0.5 * np.pi
+        if self._V1 > 0:
+            angle[0] = -0.5 * np.pi
+        weight = np.full_like(x, float(self.w))
+        return {
+            "xy": np.column_stack([x, self.y(x)]),
+            "tension": np.asarray(self.T(x), dtype=float),
+            "angle": angle,
+            "load": np.column_stack([np.zeros_like(x), -weight]),
+        }
 
     def _heap_residuals(self):
         """Residuals of a heap state: the vertical parts span their heights, the
@@ -698,6 +720,12 @@ class SeabedCatenary(CableSolution):
         if np.ndim(self.heap) == 0:
             return text[:-1] + "; heap: H = 0, the slack lies on the seabed)"
         return text[:-1] + f"; heap at {int(np.count_nonzero(self.heap))} of {np.size(self.heap)} elements)"
+
+
+def _sample_count(n):
+    if isinstance(n, (bool, np.bool_)) or not isinstance(n, (int, np.integer)) or n < 2:
+        raise InputError("n", f"must be an integer >= 2, got {n!r}")
+    return int(n)
 
 
 def _heap_where(heap, value, taut):
