@@ -32,6 +32,14 @@ between two touchdowns is statically indeterminate, and refused.
 
 The fairlead stiffness :math:`\partial(H, V_B)/\partial(X, Z)` is the inverse
 of the Jacobian of the closure equations (implicit function theorem).
+
+A line longer than its L-shape, :math:`X \le L - l_A - l_B` with the vertical
+hanging lengths :math:`l = 2d/(1 + \sqrt{1 + 2 w d/EA})` over the heights
+:math:`d` of B and A above the seabed (the root of :math:`d = l + w l^2/(2EA)`),
+has no solution with :math:`H > 0`: its slack lies in a heap on the seabed,
+:math:`H = 0`, :math:`V_B = w l_B`, :math:`\partial V_B/\partial Z = w/(1 + w l_B/EA)`
+(MoorPy's slack profiles 4 and 5; the elastic catenary of H.M. Irvine,
+"Cable Structures", MIT Press, 1981, at :math:`H = 0`).
 """
 
 from __future__ import annotations
@@ -263,6 +271,17 @@ class SeabedCatenary(CableSolution):
     seabed (or from A, when nothing touches) to B. ``T_of_s``, ``x_of_s``,
     ``y_of_s`` map the unstretched arc length from A; ``y(x)``,
     ``T(x)``, ``slope(x)`` the abscissa (the grounded part lies on the seabed).
+
+    ``heap`` (bool, an array for array input) marks the state where the line is
+    longer than its L-shape and the slack lies in a heap on the seabed: ``H = H_A = 0``;
+    the part from B hangs vertically down to the seabed at ``x_touchdown = span``
+    over its unstretched length ``l_B`` (`hanging_length` of ``dh - seabed``),
+    ``V_B = T_B = w l_B``; with the anchor above the seabed the part from A hangs
+    likewise (``V_A = w l_A``, ``x_landing = 0``), else ``V_A = 0``; the rest,
+    ``length_on_seabed = L - l_A - l_B >= span``, carries no tension and does not
+    stretch (friction plays no part). Statics do not fix where that slack lies: the
+    maps draw it spread evenly along the seabed from the landing point to the
+    touchdown. ``suspended`` raises there (no catenary hangs).
     """
 
     def __init__(self, span, dh, w, EA, length, friction, seabed, H, V_t, L_B, V_1=0.0, y_t=0.0, heap=False):
@@ -816,14 +835,17 @@ def elastic_catenary(span, dh, w, EA, *, length, seabed=None, friction=0.0):
     SeabedCatenary
         With a ``seabed``: the same forces, maps and ``stiffness()``, plus
         ``H_A``, ``length_on_seabed``, ``x_touchdown``, ``length_to_seabed``,
-        ``x_landing``, ``T_of_s(s)``, ``suspended``.
+        ``x_landing``, ``T_of_s(s)``, ``suspended``, ``heap``. A line longer than
+        its L-shape (``span <= L - l_A - l_B``, `hanging_length`) has no solution
+        with ``H > 0``: its slack lies in a heap on the seabed, returned as such
+        (``heap`` True, ``H = 0``, see `SeabedCatenary`; MoorPy's slack profiles
+        4 and 5).
 
     Raises
     ------
     InputError
         A non-physical argument, named: a seabed above A, B on or below it,
-        friction without a seabed or where it is indeterminate, a line so long
-        that its slack lies in a heap on the seabed (H = 0).
+        friction without a seabed or where it is indeterminate.
     ConvergenceError
         Newton stalled; the error carries the residual history.
     """

@@ -567,13 +567,16 @@ class Line:
         Returns
         -------
         LineSolution
+            With ``seabed=0`` and a line longer than its L-shape, the heap state
+            (``heap`` True, ``H = 0``: the part from B hangs vertically, the slack lies
+            on the seabed; see `LineSolution`).
 
         Raises
         ------
         InputError
-            ``span``/``dh`` not finite or out of range; ``length`` when the line is so
-            long that its slack lies in a heap on the seabed (``H = 0``); ``attachments``
-            when a buoy would rest on the grounded part or the suspended line would dip
+            ``span``/``dh`` not finite or out of range; ``attachments`` when a buoy
+            between the ends meets a line whose slack lies in a heap on the seabed, when
+            a buoy would rest on the grounded part or the suspended line would dip
             to the seabed again (a second touchdown: solve it with `cable.solve_bvp`);
             ``seabed`` when the line would touch a seabed below the anchor; ``start``
             when it is neither a solution of this line nor a pair ``(H, V_B)`` of
