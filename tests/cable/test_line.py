@@ -618,3 +618,25 @@ def test_heap_with_a_buoy_is_refused():
     with pytest.raises(InputError) as err:  # the buoy would lift slack off the seabed
         line.solve(800.0, 150.0)
     assert err.value.argument == "attachments"
+
+
+@pytest.mark.parametrize("dh", [30.0, 150.0])  # the foot in the top chain; below the hanging clump
+def test_taut_line_tends_to_the_heap_at_the_boundary(dh):
+    line = _heap_line()
+    heap = line.solve(800.0, dh)
+    boundary = heap.length_on_seabed  # the span the slack just covers
+    at = line.solve(boundary, dh)
+    assert at.heap and at.V_B == pytest.approx(heap.V_B, rel=1e-14)
+    previous = np.inf
+    for eps in (1e-3, 1e-5, 1e-7):
+        r = line.solve(boundary * (1 + eps), dh)
+        assert not r.heap and r.H > 0 and r.residual() < 1e-11
+        gaps = [
+            r.H / heap.V_B,
+            abs(r.V_B - heap.V_B) / heap.V_B,
+            abs(r.length_on_seabed - heap.length_on_seabed) / line.length,
+        ]
+        # about linear in the span's excess over the boundary relative to the height
+        # (measured: 0.05-0.3 of eps·boundary/dh down to eps = 1e-8)
+        assert max(gaps) <= eps * boundary / dh and max(gaps) < previous
+        previous = max(gaps)

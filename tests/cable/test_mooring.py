@@ -446,6 +446,9 @@ def test_equilibrium_with_a_line_in_a_heap_matches_moorpy():
     assert [line.solution.heap for line in eq.lines] == [True, False, False]
     heap = eq.lines[0]
     assert heap.H == 0.0 and heap.V_B > 0 and heap.solution.x_touchdown == heap.span
+    points, tension = heap.profile(51)  # vertical under the fairlead, the slack on the seabed
+    np.testing.assert_allclose(points[-1], heap.fairlead, rtol=0, atol=1e-9 * heap.span)
+    assert np.all(points[:, 2] >= -200.0 - 1e-9) and tension[-1] == pytest.approx(heap.V_B, rel=1e-12)
     q = eq.position
     body = system.body
     R = cable.rotation_matrix(*q[3:])
