@@ -431,3 +431,53 @@ def test_line_models_with_and_without_start():
     reference = cable.line_3d(cold, anchor, fairlead)
     np.testing.assert_allclose(warm.force_on_fairlead, reference.force_on_fairlead, rtol=1e-12)
     np.testing.assert_allclose(warm.stiffness(), reference.stiffness(), rtol=1e-9)
+
+
+# -- a line whose slack lies in a heap on the seabed (H = 0) ------------------------------------
+HEAP_FORCE = np.array([4.0e7, 0.0, 0.0])  # N: the body pushed 133 m towards line 0's anchor
+
+
+def test_equilibrium_with_a_line_in_a_heap_matches_moorpy():
+    """Under 4e7 N of surge line 0 goes slack into a heap (MoorPy's profile 4): it gives only its
+    vertical force, the two others carry the load. The forces recomputed from the lines balance
+    to round-off; MoorPy's System agrees."""
+    system = EXAMPLE["system"]()
+    eq = system.equilibrium(force=HEAP_FORCE, moment=np.zeros(3))
+    assert [line.solution.heap for line in eq.lines] == [True, False, False]
+    heap = eq.lines[0]
+    assert heap.H == 0.0 and heap.V_B > 0 and heap.solution.x_touchdown == heap.span
+    points, tension = heap.profile(51)  # vertical under the fairlead, the slack on the seabed
+    np.testing.assert_allclose(points[-1], heap.fairlead, rtol=0, atol=1e-9 * heap.span)
+    assert np.all(points[:, 2] >= -200.0 - 1e-9) and tension[-1] == pytest.approx(heap.V_B, rel=1e-12)
+    q = eq.position
+    body = system.body
+    R = cable.rotation_matrix(*q[3:])
+    lines = [
+        cable.line_3d(m, a, q[:3] + R @ p)
+        for m, a, p in zip(system.lines, system.anchors, body.fairleads, strict=True)
+    ]
+    forces = np.array([line.force_on_fairlead for line in lines])
+    arms = np.array([line.fairlead for line in lines]) - q[:3]
+    g, rho = 9.81, 1025.0
+    weight, buoyancy = np.array([0, 0, -body.mass * g]), np.array([0, 0, rho * g * body.volume])
+    total_force = forces.sum(axis=0) + weight + buoyancy + HEAP_FORCE
+    total_force[2] -= rho * g * body.waterplane_area * q[2]
+    total_moment = (
+        np.cross(arms, forces).sum(axis=0)
+        + np.cross(R @ body.center_of_gravity, weight)
+        + np.cross(R @ body.metacentre, buoyancy)
+    )
+    scale = max(line.tension_at_fairlead for line in lines)
+    assert np.abs(total_force).max() < 1e-9 * scale
+    assert np.abs(total_moment).max() < 1e-9 * scale * 20.0
+    # the stiffness at the heap equilibrium: central differences (line 0 stays in its heap)
+    K = system.stiffness(q, lines_only=True)
+    numeric = _numeric_stiffness(_LinesOnly(system), q, lines_only=True)
+    np.testing.assert_allclose(K, numeric, rtol=1e-5, atol=2e-6 * np.abs(K).max())
+    if importlib.util.find_spec("moorpy") is None:
+        return
+    r6, tensions, K_moorpy, ms = EXAMPLE["moorpy_solve"](HEAP_FORCE, np.zeros(3))
+    assert ms.lineList[0].info["ProfileType"] == 4
+    np.testing.assert_allclose(eq.position[:3], r6[:3], atol=1e-5)
+    np.testing.assert_allclose(eq.position[3:], r6[3:], atol=1e-8)
+    np.testing.assert_allclose([line.tension_at_fairlead for line in eq.lines], tensions, rtol=1e-7)

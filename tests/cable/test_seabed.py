@@ -112,13 +112,16 @@ def test_random_scenes_against_moorpy_forces_length_stiffness():
     compared = heaps = 0
     for span, dh, w, EA, L, cb in zip(*_random_scenes(150, 7), strict=True):
         fAH, fAV, fBH, fBV, info = moorpy_catenary(span, dh, L, EA, w, CB=cb, Tol=1e-12, MaxIter=500)
-        try:
-            r = cable.elastic_catenary(span, dh, w, EA, length=L, seabed=0.0, friction=cb)
-        except InputError as err:  # refused as a heap: MoorPy's slack profile 4, H = 0
-            assert err.argument == "length" and info["ProfileType"] == 4 and fBH == 0.0
+        r = cable.elastic_catenary(span, dh, w, EA, length=L, seabed=0.0, friction=cb)
+        assert r.residual() < 1e-12
+        if r.heap:  # MoorPy's slack profile 4, H = 0; its K_HH is a regularising slack_kx
+            assert info["ProfileType"] == 4 and r.H == fBH == 0.0 and r.H_A == 0.0
+            assert r.V_B == pytest.approx(-fBV, rel=1e-12)
+            assert r.length_on_seabed == pytest.approx(info["LBot"], rel=1e-12)
+            assert r.stiffness()[1, 1] == pytest.approx(info["stiffnessB"][1][1], rel=1e-12)
             heaps += 1
             continue
-        assert r.residual() < 1e-12
+        assert info["ProfileType"] != 4
         if info["ProfileType"] < 0 or info.get("error", False):
             continue  # MoorPy flags its own failure
         compared += 1
@@ -239,7 +242,6 @@ def test_to_vtk(tmp_path):
         ({"seabed": 0.0, "friction": -0.1}, "friction"),
         ({"friction": 0.3}, "friction"),  # no seabed to rub on
         ({"seabed": -20.0, "friction": 0.3}, "friction"),  # touchdown between A and B: indeterminate
-        ({"seabed": 0.0, "length": 990.0}, "length"),  # longer than the L-shape: a heap
         ({"seabed": 200.0 - 400.0, "dh": -250.0}, "dh"),  # B below the seabed
         ({"seabed": 0.0, "dh": 0.0}, "dh"),  # B on the seabed
         ({"seabed": float("nan")}, "seabed"),
@@ -265,15 +267,11 @@ def test_extreme_magnitudes_converge_or_refuse():
     cb = rng.choice([0.0, 0.1, 1.0, 10.0], n)
     solved = 0
     for args in zip(span, dh, w, EA, L, cb, strict=True):
-        try:
-            r = cable.elastic_catenary(*args[:4], length=args[4], seabed=0.0, friction=args[5])
-        except InputError as err:
-            assert err.argument == "length"  # a heap on the seabed
-            continue
+        r = cable.elastic_catenary(*args[:4], length=args[4], seabed=0.0, friction=args[5])
         solved += r.length_on_seabed > 0
         assert r.residual() < 1e-10
         K = r.stiffness()
-        assert np.isfinite(K).all() and K[0, 0] > 0 and K[1, 1] > 0
+        assert np.isfinite(K).all() and (K[0, 0] > 0 or r.heap) and K[1, 1] > 0
     assert solved > 200  # grounded lines
 
 
@@ -421,3 +419,166 @@ def test_scalar_path_equals_the_array_path_over_every_regime():
         for name in names:
             assert getattr(s, name) == pytest.approx(getattr(r, name)[i], rel=1e-12, abs=1e-12 * s.T_B), name
         np.testing.assert_allclose(s.stiffness(), r.stiffness()[i], rtol=1e-10)
+
+
+# -- slack in a heap on the seabed (H = 0) ---------------------------------------------
+def _hanging(height, w, EA):
+    """Unstretched length hanging vertically over ``height``: the positive root of
+    ``w l^2/(2 EA) + l - height = 0`` by the textbook formula at 50 digits (mpmath: its
+    cancellation costs at most ~15 of them)."""
+    with mp.workdps(50):
+        c = mp.mpf(EA) / mp.mpf(w)
+        return float(c * (mp.sqrt(1 + 2 * mp.mpf(height) / c) - 1))
+
+
+# (span, dh, w, EA, length, seabed, friction): more line than the L-shape needs
+HEAPS = [
+    (400.0, 100.0, 1000.0, 1e9, 700.0, 0.0, 0.0),
+    (400.0, 100.0, 1000.0, 1e9, 700.0, 0.0, 1.0),  # friction plays no part
+    (800.0, 150.0, 1000.0, 5e8, 990.0, 0.0, 0.3),
+    (50.0, 300.0, 2000.0, 1e6, 900.0, 0.0, 0.0),  # soft: the hanging part stretches 30 %
+    (400.0, 100.0, 1000.0, 1e9, 700.0, -50.0, 0.0),  # anchor 50 m above the seabed
+    (300.0, 20.0, 500.0, 1e7, 800.0, -120.0, 0.0),
+]
+
+
+@pytest.mark.parametrize(("span", "dh", "w", "EA", "L", "seabed", "mu"), HEAPS)
+def test_heap_is_the_vertical_hanging_line(span, dh, w, EA, L, seabed, mu):
+    r = cable.elastic_catenary(span, dh, w, EA, length=L, seabed=seabed, friction=mu)
+    l_A, l_B = _hanging(-seabed, w, EA), _hanging(dh - seabed, w, EA)
+    assert r.heap is True and r.H == 0.0 and r.H_A == 0.0
+    assert r.V_B == pytest.approx(w * l_B, rel=1e-14) and r.T_B == r.V_B
+    assert r.V_A == pytest.approx(w * l_A, rel=1e-14, abs=1e-300)  # upward reaction: A holds its part
+    assert r.length_on_seabed == pytest.approx(L - l_A - l_B, rel=1e-14)
+    assert r.length_to_seabed == pytest.approx(l_A, rel=1e-14, abs=1e-300)
+    assert r.x_touchdown == span and r.x_landing == 0.0
+    assert r.stretched_length == pytest.approx(-seabed + r.length_on_seabed + dh - seabed, rel=1e-14)
+    assert r.residual() < 1e-14
+    # the maps: vertical parts at x = 0 and span, the slack spread on the seabed
+    s = np.linspace(0.0, L, 2001)
+    x, y, T = r.x_of_s(s), r.y_of_s(s), r.T_of_s(s)
+    on = (s > l_A) & (s < L - l_B)
+    assert np.all(y[on] == seabed) and np.all(T[on] == 0.0)
+    np.testing.assert_allclose(np.diff(x[on]), span / r.length_on_seabed * (s[1] - s[0]), rtol=1e-9)
+    assert x[-1] == span and y[-1] == pytest.approx(dh, rel=1e-14)
+    assert T[-1] == pytest.approx(r.V_B, rel=1e-14)
+    assert x[0] == 0.0 and y[0] == 0.0 and T[0] == pytest.approx(r.V_A, rel=1e-14, abs=1e-300)
+    # the tension of a vertical part is the weight below it, its height the stretched length below
+    up = s >= L - l_B
+    sigma = s[up] - (L - l_B)
+    np.testing.assert_allclose(T[up], w * sigma, rtol=1e-12, atol=1e-12 * r.V_B)
+    with mp.workdps(30):  # height of the point sigma: ∫ (1 + T(u)/EA) du from the foot, T = w u
+        expected = [float(mp.quad(lambda u: 1 + w * u / EA, [0, sg])) + seabed for sg in sigma[::50]]
+    below = s <= l_A  # the part from A: T = w (l_A - u) at u below A
+    with mp.workdps(30):
+        expected_A = [-float(mp.quad(lambda u: 1 + w * (l_A - u) / EA, [0, sg])) for sg in s[below][::20]]
+    np.testing.assert_allclose(y[below][::20], expected_A, rtol=1e-12, atol=1e-12 * dh)
+    np.testing.assert_allclose(y[up][::50], expected, rtol=1e-12, atol=1e-12 * dh)
+    assert r.y(np.array([0.0, 0.5 * span, span])).tolist() == pytest.approx([0.0, seabed, dh], rel=1e-14)
+    assert r.slope(0.5 * span) == 0.0
+    with pytest.raises(InputError) as err:  # vertical at B: no finite slope
+        r.slope(span)
+    assert err.value.argument == "x"
+    assert "heap" in repr(r)
+    with pytest.raises(InputError):
+        r.suspended  # noqa: B018 - no catenary hangs
+
+
+def test_heap_matches_moorpy_profiles_4_and_5():
+    """MoorPy's slack profiles: 4 (anchor on the seabed), 5 (anchor above it, CB = -height)."""
+    moorpy_catenary = _moorpy_catenary()
+    for span, dh, w, EA, L, seabed, mu in HEAPS:
+        cb = mu if seabed == 0.0 else seabed
+        fAH, fAV, fBH, fBV, info = moorpy_catenary(span, dh, L, EA, w, CB=cb, Tol=1e-12)
+        r = cable.elastic_catenary(span, dh, w, EA, length=L, seabed=seabed, friction=mu)
+        assert info["ProfileType"] == (4 if seabed == 0.0 else 5)
+        assert r.H == -fBH == 0.0 and r.H_A == fAH == 0.0
+        # MoorPy writes l = sqrt(2 h EA/w + (EA/w)^2) - EA/w, which cancels: 1e-9
+        assert r.V_B == pytest.approx(-fBV, rel=1e-9)
+        assert r.V_A == pytest.approx(-fAV, rel=1e-9, abs=1e-9 * r.V_B)
+        assert r.length_on_seabed == pytest.approx(info["LBot"], rel=1e-9)
+        # MoorPy's K_HH is a regularising constant (slack_kx); the statics give 0
+        K = r.stiffness()
+        assert K[0, 0] == K[0, 1] == K[1, 0] == 0.0
+        assert K[1, 1] == pytest.approx(info["stiffnessB"][1][1], rel=1e-9)
+
+
+def test_heap_stiffness_matches_central_differences():
+    for span, dh, w, EA, L, seabed, mu in HEAPS:
+        r = cable.elastic_catenary(span, dh, w, EA, length=L, seabed=seabed, friction=mu)
+        K = r.stiffness()
+        for j, h in enumerate((1e-3 * span, 1e-4 * dh)):
+            d = np.array([h, 0.0]) if j == 0 else np.array([0.0, h])
+            kwargs = {"length": L, "seabed": seabed, "friction": mu}
+            plus = cable.elastic_catenary(span + d[0], dh + d[1], w, EA, **kwargs)
+            minus = cable.elastic_catenary(span - d[0], dh - d[1], w, EA, **kwargs)
+            assert plus.heap and minus.heap
+            numeric = [(plus.H - minus.H) / (2 * h), (plus.V_B - minus.V_B) / (2 * h)]
+            np.testing.assert_allclose(K[:, j], numeric, rtol=1e-7, atol=1e-7 * K[1, 1])
+
+
+@pytest.mark.parametrize("seabed", [0.0, -40.0])
+def test_taut_line_tends_to_the_heap_at_the_boundary(seabed):
+    w, EA, L, dh, mu = 1000.0, 5e8, 850.0, 150.0, (0.5 if seabed == 0.0 else 0.0)
+    boundary = L - _hanging(dh - seabed, w, EA) - _hanging(-seabed, w, EA)  # span of the L-shape
+    heap = cable.elastic_catenary(boundary, dh, w, EA, length=L, seabed=seabed, friction=mu)
+    assert heap.heap
+    previous = np.inf
+    for eps in (1e-3, 1e-5, 1e-7, 1e-9):
+        r = cable.elastic_catenary(boundary * (1 + eps), dh, w, EA, length=L, seabed=seabed, friction=mu)
+        assert not r.heap and r.residual() < 1e-12
+        # the gap closes about linearly in eps (measured: <= 1.2 eps); 3 eps leaves a margin
+        gaps = [
+            r.H / heap.V_B,
+            abs(r.V_B - heap.V_B) / heap.V_B,
+            abs(r.V_A - heap.V_A) / heap.V_B,
+            abs(r.length_on_seabed - heap.length_on_seabed) / L,
+        ]
+        assert max(gaps) <= 3 * eps and max(gaps) < previous
+        previous = max(gaps)
+
+
+def test_heap_array_equals_scalar():
+    span = np.array([400.0, 400.0, 300.0, 800.0, 50.0, 400.0])
+    L = np.array([700.0, 450.0, 800.0, 850.0, 900.0, 700.0])
+    seabed = np.array([0.0, 0.0, -120.0, 0.0, 0.0, -50.0])
+    dh, w, EA = np.array([100.0, 100.0, 20.0, 150.0, 300.0, 100.0]), 1000.0, 5e8
+    r = cable.elastic_catenary(span, dh, w, EA, length=L, seabed=seabed)
+    assert r.heap.tolist() == [True, False, True, False, True, True]
+    s = 0.37 * L
+    K = r.stiffness()
+    for i in range(span.size):
+        one = cable.elastic_catenary(span[i], dh[i], w, EA, length=L[i], seabed=seabed[i])
+        assert one.heap == r.heap[i]
+        for name in ("H", "V_A", "V_B", "H_A", "T_A", "T_B", "length_on_seabed", "x_touchdown", "x_landing"):
+            assert getattr(r, name)[i] == pytest.approx(getattr(one, name), rel=1e-12, abs=1e-9), name
+        assert r.x_of_s(s)[i] == pytest.approx(one.x_of_s(s[i]), rel=1e-12)
+        assert r.y_of_s(s)[i] == pytest.approx(one.y_of_s(s[i]), rel=1e-12, abs=1e-12)
+        assert r.T_of_s(s)[i] == pytest.approx(one.T_of_s(s[i]), rel=1e-12, abs=1e-9)
+        np.testing.assert_allclose(K[i], one.stiffness(), rtol=1e-12, atol=1e-12 * np.abs(K[i]).max())
+    assert r.residual() < 1e-12
+    assert "heap at 4 of 6" in repr(r)
+
+
+def test_heap_inputs_still_refused():
+    with pytest.raises(InputError) as err:  # B below the seabed, however long the line
+        cable.elastic_catenary(400.0, -60.0, 1000.0, 1e9, length=900.0, seabed=-50.0)
+    assert err.value.argument == "dh"
+    with pytest.raises(InputError) as err:
+        cable.elastic_catenary(400.0, 100.0, 1000.0, 1e9, length=900.0, seabed=0.0, friction=-1.0)
+    assert err.value.argument == "friction"
+    with pytest.raises(InputError) as err:  # friction where a taut line touches down between A and B
+        cable.elastic_catenary(800.0, 150.0, 1000.0, 5e8, length=850.0, seabed=-20.0, friction=0.3)
+    assert err.value.argument == "friction"
+
+
+def test_heap_samples_and_vtk(tmp_path):
+    meshio = pytest.importorskip("meshio")
+    r = cable.elastic_catenary(400.0, 100.0, 1000.0, 1e9, length=700.0, seabed=-30.0)
+    samples = r.samples(5)
+    # A, the seabed, B; vertical tangents at the ends; tensions those of the supports
+    np.testing.assert_allclose(samples["xy"][:, 1], [0.0, -30.0, -30.0, -30.0, 100.0], rtol=1e-14)
+    np.testing.assert_array_equal(samples["angle"], [-np.pi / 2, 0.0, 0.0, 0.0, np.pi / 2])
+    np.testing.assert_allclose(samples["tension"], [r.T_A, 0.0, 0.0, 0.0, r.T_B], rtol=1e-14)
+    mesh = meshio.read(r.to_vtk(tmp_path / "heap.vtu", n=11))
+    assert mesh.points.shape == (11, 3) and np.all(mesh.points[1:-1, 1] == -30.0)

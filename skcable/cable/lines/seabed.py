@@ -32,12 +32,21 @@ between two touchdowns is statically indeterminate, and refused.
 
 The fairlead stiffness :math:`\partial(H, V_B)/\partial(X, Z)` is the inverse
 of the Jacobian of the closure equations (implicit function theorem).
+
+A line longer than its L-shape, :math:`X \le L - l_A - l_B` with the vertical
+hanging lengths :math:`l = 2d/(1 + \sqrt{1 + 2 w d/EA})` over the heights
+:math:`d` of B and A above the seabed (the root of :math:`d = l + w l^2/(2EA)`),
+has no solution with :math:`H > 0`: its slack lies in a heap on the seabed,
+:math:`H = 0`, :math:`V_B = w l_B`, :math:`\partial V_B/\partial Z = w/(1 + w l_B/EA)`
+(MoorPy's slack profiles 4 and 5; the elastic catenary of H.M. Irvine,
+"Cable Structures", MIT Press, 1981, at :math:`H = 0`).
 """
 
 from __future__ import annotations
 
 import math
 from functools import cached_property
+from itertools import zip_longest
 
 import numpy as np
 
@@ -47,7 +56,7 @@ from skcable.cable._elastic import ElasticCatenary, elastic_stiffness, inverse_2
 from skcable.cable._elastic import elastic_catenary as free_elastic_catenary
 from skcable.cable._roots import find_root
 from skcable.cable._special import asinh_diff, largest_abs
-from skcable.cable.solution import CableSolution, checked_closed_form
+from skcable.cable.solution import CableSolution, checked_closed_form, matrix_2x2
 from skcable.errors import ConvergenceError, InputError
 
 __all__ = [
@@ -262,28 +271,70 @@ class SeabedCatenary(CableSolution):
     seabed (or from A, when nothing touches) to B. ``T_of_s``, ``x_of_s``,
     ``y_of_s`` map the unstretched arc length from A; ``y(x)``,
     ``T(x)``, ``slope(x)`` the abscissa (the grounded part lies on the seabed).
+
+    ``heap`` (bool, an array for array input) marks the state where the line is
+    longer than its L-shape and the slack lies in a heap on the seabed: ``H = H_A = 0``;
+    the part from B hangs vertically down to the seabed at ``x_touchdown = span``
+    over its unstretched length ``l_B`` (`hanging_length` of ``dh - seabed``),
+    ``V_B = T_B = w l_B``; with the anchor above the seabed the part from A hangs
+    likewise (``V_A = w l_A``, ``x_landing = 0``), else ``V_A = 0``; the rest,
+    ``length_on_seabed = L - l_A - l_B >= span``, carries no tension and does not
+    stretch (friction plays no part). Statics do not fix where that slack lies: the
+    maps draw it spread evenly along the seabed from the landing point to the
+    touchdown. ``suspended`` raises there (no catenary hangs).
     """
 
-    def __init__(self, span, dh, w, EA, length, friction, seabed, H, V_t, L_B, V_1=0.0, y_t=0.0):
+    def __init__(self, span, dh, w, EA, length, friction, seabed, H, V_t, L_B, V_1=0.0, y_t=0.0, heap=False):
         self.span, self.dh, self.w, self.EA, self.length = span, dh, w, EA, length
         self.friction, self.seabed = friction, seabed
         self.H, self.length_on_seabed = H, L_B
         self.constraint = ("length", length)
         self._xp = namespace(span, dh, w, EA, length, friction, H, V_t, L_B, V_1, y_t)
+        self.heap = heap
+        """Whether the slack lies in a heap on the seabed (``H = 0``), per element."""
+        self._any_heap = bool(np.any(heap))
+        # the regular formulae run on every element; at a heap element they get a stand-in
+        # H (1 N) and span (1 m) that keep them finite, and every result is replaced there
+        self._Hr = _heap_where(heap, 1.0, H)
         self._mu_w = friction * w
         self._V1, self._y_t = V_1, y_t
         self.length_to_seabed = V_1 / w
         """Unstretched length hanging from A down to the seabed (0 unless the anchor is above it)."""
-        self.suspended = ElasticCatenary(
-            span - self.x_touchdown,
+        self._l_B = length - L_B - self.length_to_seabed
+        self._hanging = ElasticCatenary(
+            _heap_where(heap, 1.0, span - self.x_touchdown),
             dh - y_t,
             w,
             EA,
-            length - L_B - self.length_to_seabed,
-            H,
+            self._l_B,
+            self._Hr,
             V_t,
-            ("length", length - L_B - self.length_to_seabed),
+            ("length", self._l_B),
         )
+
+    @property
+    def suspended(self):
+        """The `ElasticCatenary` of the part rising from the seabed (or from A) to B.
+
+        Raises `InputError` (``length``) in a heap state: the part from B then hangs
+        vertically (``H = 0``) and is no catenary; use the maps of this solution."""
+        if self._any_heap:
+            raise InputError(
+                "length",
+                "leaves the slack in a heap on the seabed (H = 0): the part from B hangs vertically, "
+                "no suspended catenary; use x_of_s, y_of_s, T_of_s of the solution",
+            )
+        return self._hanging
+
+    def _pick(self, heap_value, regular):
+        """``regular()`` where the line is taut, ``heap_value()`` at heap elements."""
+        if not self._any_heap:
+            return regular()
+        if np.ndim(self.heap) == 0:
+            return heap_value()
+        with np.errstate(all="ignore"):  # each branch is finite where it is taken
+            taut, heap = regular(), heap_value()
+        return _out(np.where(self.heap, heap, taut))
 
     @cached_property
     def H_A(self):
@@ -296,34 +347,39 @@ class SeabedCatenary(CableSolution):
 
     # -- the part hanging from an anchor above the seabed (empty otherwise) -----------
     def _left_x(self, s):
-        return self.H * s / self.EA + self.H / self.w * asinh_diff(
-            (self.w * s - self._V1) / self.H, -self._V1 / self.H
-        )
+        H = self._Hr
+        return H * s / self.EA + H / self.w * asinh_diff((self.w * s - self._V1) / H, -self._V1 / H)
 
     def _left_y(self, s):
         tv, tv_a = self.w * s - self._V1, -self._V1
-        rise = (tv - tv_a) * (tv + tv_a) / (np.hypot(self.H, tv) + np.hypot(self.H, tv_a))
+        rise = (tv - tv_a) * (tv + tv_a) / (np.hypot(self._Hr, tv) + np.hypot(self._Hr, tv_a))
         return s * (0.5 * self.w * s - self._V1) / self.EA + rise / self.w
 
     @cached_property
     def x_landing(self):
-        """Abscissa where the line from an anchor above the seabed lands on it (0 otherwise)."""
-        return _out(self._left_x(self.length_to_seabed))
+        """Abscissa where the line from an anchor above the seabed lands on it (0 otherwise;
+        0 in a heap state: the part from A hangs vertically)."""
+        return self._pick(lambda: 0.0 * self.span, lambda: _out(self._left_x(self.length_to_seabed)))
 
     @cached_property
     def x_touchdown(self):
-        """Abscissa where the line leaves the seabed towards B (the grounded line stretched)."""
-        ell = _tensioned(self.H, self.length_on_seabed, self._mu_w)
-        grounded = self.length_on_seabed + (self.H * ell - 0.5 * self._mu_w * ell * ell) / self.EA
-        return _out(self.x_landing + grounded)
+        """Abscissa where the line leaves the seabed towards B (the grounded line stretched;
+        ``span`` in a heap state)."""
+
+        def taut():
+            ell = _tensioned(self.H, self.length_on_seabed, self._mu_w)
+            grounded = self.length_on_seabed + (self.H * ell - 0.5 * self._mu_w * ell * ell) / self.EA
+            return _out(self.x_landing + grounded)
+
+        return self._pick(lambda: self.span + 0.0 * self.H, taut)
 
     @property
     def V_A(self):
-        return self.suspended.V_A + self._V1
+        return self._hanging.V_A + self._V1
 
     @property
     def V_B(self):
-        return self.suspended.V_B
+        return self._hanging.V_B
 
     @cached_property
     def T_A(self):
@@ -331,35 +387,40 @@ class SeabedCatenary(CableSolution):
 
     @property
     def T_B(self):
-        return self.suspended.T_B
+        return self._pick(lambda: self.V_B, lambda: self._hanging.T_B)
 
     @cached_property
     def stretched_length(self):
         """Stretched length of the whole line (anchor part, grounded, suspended)."""
-        H, V1 = self.H, self._V1
+        # heap: the vertical parts span the heights exactly, the slack does not stretch
+        heap = self.length_on_seabed + self.dh - 2.0 * self._y_t
+        return self._pick(lambda: heap, self._taut_stretched_length)
+
+    def _taut_stretched_length(self):
+        H, V1 = self._Hr, self._V1
 
         def primitive(tv):  # ∫ sqrt(H² + tv²) d(tv)
             return 0.5 * (tv * np.hypot(H, tv) + H * H * np.arcsinh(tv / H))
 
         left = self.length_to_seabed + (primitive(0.0) - primitive(-V1)) / (self.w * self.EA)
         grounded = self.x_touchdown - self.x_landing
-        return _out(left + grounded + self.suspended.stretched_length)
+        return _out(left + grounded + self._hanging.stretched_length)
 
     @property
     def x_vertex(self):
-        return self.x_touchdown + self.suspended.x_vertex
+        return self._pick(lambda: self.span + 0.0 * self.H, lambda: self.x_touchdown + self._hanging.x_vertex)
 
     @property
     def y_vertex(self):
-        return self._y_t + self.suspended.y_vertex
+        return self._pick(lambda: self._y_t + 0.0 * self.H, lambda: self._y_t + self._hanging.y_vertex)
 
     @property
     def x_low(self):
-        return self.x_touchdown + self.suspended.x_low
+        return self._pick(lambda: self.span + 0.0 * self.H, lambda: self.x_touchdown + self._hanging.x_low)
 
     @property
     def y_low(self):
-        return self._y_t + self.suspended.y_low
+        return self._pick(lambda: self._y_t + 0.0 * self.H, lambda: self._y_t + self._hanging.y_low)
 
     # -- along the line ---------------------------------------------------------------
     def _grounded_tension(self, s):
@@ -367,33 +428,33 @@ class SeabedCatenary(CableSolution):
         a = self.length_on_seabed - self._ell
         return self.H_A + self._mu_w * np.maximum(s - a, 0.0)
 
-    def T_of_s(self, s):
+    def _taut_T_of_s(self, s):
         """Tension (N) at unstretched arc length ``s`` from A, in [0, length]."""
         s = self._arc("s", s)
         s1, L_B = self.length_to_seabed, self.length_on_seabed
-        tv = self.w * np.maximum(s - s1 - L_B, 0.0) - self.suspended.V_A
+        tv = self.w * np.maximum(s - s1 - L_B, 0.0) - self._hanging.V_A
         hang = np.where((s <= s1) & (s1 > 0), np.hypot(self.H, self.w * s - self._V1), np.hypot(self.H, tv))
         ground = self._grounded_tension(np.clip(s - s1, 0.0, L_B))
         # nothing grounded (L_B = 0): the point s1 belongs to the hanging line, whose
         # tension there carries the anchor's vertical pull
         return _out(np.where((s >= s1) & (s <= s1 + L_B) & (L_B > 0), ground, hang))
 
-    def x_of_s(self, s):
+    def _taut_x_of_s(self, s):
         """Abscissa of the material point ``s`` (unstretched arc length from A)."""
         s = self._arc("s", s)
         s1, L_B, ell = self.length_to_seabed, self.length_on_seabed, self._ell
         on = np.clip(s - s1, 0.0, L_B)
         d = np.maximum(on - (L_B - ell), 0.0)
         ground = self.x_landing + on + (self.H_A * d + 0.5 * self._mu_w * d * d) / self.EA
-        hang = self.x_touchdown + self.suspended.x_of_s(np.maximum(s - s1 - L_B, 0.0))
+        hang = self.x_touchdown + self._hanging.x_of_s(np.maximum(s - s1 - L_B, 0.0))
         left = self._left_x(np.minimum(s, s1))
         return _out(np.where(s <= s1, left, np.where(s <= s1 + L_B, ground, hang)))
 
-    def y_of_s(self, s):
+    def _taut_y_of_s(self, s):
         """Height above A of the material point ``s`` (the seabed's height on it)."""
         s = self._arc("s", s)
         s1, L_B = self.length_to_seabed, self.length_on_seabed
-        hang = self._y_t + self.suspended.y_of_s(np.maximum(s - s1 - L_B, 0.0))
+        hang = self._y_t + self._hanging.y_of_s(np.maximum(s - s1 - L_B, 0.0))
         left = self._left_y(np.minimum(s, s1))
         return _out(np.where(s <= s1, left, np.where(s <= s1 + L_B, self._y_t, hang)))
 
@@ -407,7 +468,7 @@ class SeabedCatenary(CableSolution):
         require("x", (x >= 0) & (x <= self.span), "must lie in [0, span]", x)
         x_t = self.x_touchdown
         grounded = x <= x_t
-        return x, grounded, np.clip(x - x_t, 0.0, self.suspended.span)
+        return x, grounded, np.clip(x - x_t, 0.0, self._hanging.span)
 
     def _left_s_of_x(self, x):
         """Material point on the anchor part at ``x < x_landing`` (NaN elsewhere)."""
@@ -429,7 +490,7 @@ class SeabedCatenary(CableSolution):
             out[inside] = root
         return out
 
-    def s_of_x(self, x):
+    def _taut_s_of_x(self, x):
         """Material point at abscissa ``x`` in [0, span]."""
         x, grounded, xs = self._split(x)
         s1, L_B, ell = self.length_to_seabed, self.length_on_seabed, self._ell
@@ -441,7 +502,7 @@ class SeabedCatenary(CableSolution):
         d = 2.0 * c / (b + np.sqrt(b * b + 2.0 * self._mu_w * c / self.EA))
         ground = s1 + np.minimum(np.where(on <= a, on, a + d), L_B)
         left = self._left_s_of_x(x)
-        hang = s1 + L_B + self.suspended.s_of_x(xs)
+        hang = s1 + L_B + self._hanging.s_of_x(xs)
         return _out(np.where(x < self.x_landing, left, np.where(grounded, ground, hang)))
 
     def y(self, x):
@@ -449,11 +510,11 @@ class SeabedCatenary(CableSolution):
         s = self.s_of_x(x)
         return self.y_of_s(s)
 
-    def slope(self, x):
+    def _taut_slope(self, x):
         """dy/dx at ``x`` (0 on the seabed)."""
         s = np.asarray(self.s_of_x(x))
         s1, L_B = self.length_to_seabed, self.length_on_seabed
-        tv_right = self.w * np.maximum(s - s1 - L_B, 0.0) - self.suspended.V_A
+        tv_right = self.w * np.maximum(s - s1 - L_B, 0.0) - self._hanging.V_A
         tv = np.where(s <= s1, self.w * s - self._V1, np.where(s <= s1 + L_B, 0.0, tv_right))
         return _out(tv / self.H)
 
@@ -465,10 +526,10 @@ class SeabedCatenary(CableSolution):
         return self.w + 0.0 * slope
 
     # -- checks and stiffness -----------------------------------------------------------
-    def _residuals(self):
+    def _taut__residuals(self):
         xp = self._xp
         chord = xp.hypot(self.span, self.dh)
-        hang = self.suspended
+        hang = self._hanging
         L_s = hang.length
         yield (self.x_touchdown + hang.x_of_s(L_s) - self.span) / chord
         stretch, shape = hang._y_terms(L_s)
@@ -492,14 +553,14 @@ class SeabedCatenary(CableSolution):
         for T, H, V in ((self.T_A, self.H_A, self.V_A), (self.T_B, self.H, self.V_B)):
             yield (T - xp.hypot(H, V)) / xp.maximum(T, self.H)
 
-    def stiffness(self):
+    def _taut_stiffness(self):
         """Fairlead stiffness ``∂(H, V_B)/∂(span, dh)`` with A fixed, shape ``(*shape, 2, 2)``.
 
         Rows ``(H, V_B)``, columns ``(span, dh)``: the inverse of the Jacobian of the
         closure equations in ``(H, V_B)``, grounded or free, friction included.
         """
         touches = (self.length_on_seabed > 0) | (self._V1 > 0)
-        free = elastic_stiffness(self.suspended)
+        free = elastic_stiffness(self._hanging)
         depth = -self._y_t
         jac = grounded_closure(
             self.span, self.dh, self.w, self.EA, self.length, self._mu_w, self.H, self.V_B, depth
@@ -507,10 +568,208 @@ class SeabedCatenary(CableSolution):
         ground = inverse_2x2(*jac)
         return np.where(np.asarray(touches)[..., None, None], ground, free)
 
+    # -- the heap state (H = 0): vertical parts at A and B, slack spread on the seabed ----
+    def _heap_parts(self, s):
+        """``s`` broadcast, the anchor part's length ``s_1``, the grounded ``L_B``, the
+        arc length ``sigma`` above the seabed on B's vertical part."""
+        s1, L_B = self.length_to_seabed, self.length_on_seabed
+        return s1, L_B, np.maximum(s - s1 - L_B, 0.0)
+
+    def T_of_s(self, s):
+        """Tension (N) at unstretched arc length ``s`` from A, in [0, length].
+
+        In a heap state each vertical part carries the weight below it down to the
+        seabed (``w (s_1 - s)`` from A, ``w sigma`` at ``sigma`` above the seabed on
+        the part from B); the slack on the seabed carries none."""
+
+        def heap():
+            s1, L_B, sigma = self._heap_parts(s)
+            return _out(np.where(s <= s1, self.w * (s1 - s), np.where(s <= s1 + L_B, 0.0, self.w * sigma)))
+
+        s = self._arc("s", s)
+        return self._pick(heap, lambda: self._taut_T_of_s(s))
+
+    def x_of_s(self, s):
+        """Abscissa of the material point ``s`` (unstretched arc length from A).
+
+        In a heap state the vertical parts lie at ``x = 0`` and ``x = span``; the
+        shape of the slack on the seabed is not determined by statics (it carries no
+        tension): it is drawn spread evenly from ``x_landing = 0`` to
+        ``x_touchdown = span``, ``x`` linear in ``s``."""
+
+        def heap():
+            s1, L_B, _ = self._heap_parts(s)
+            spread = np.clip(s - s1, 0.0, L_B) / L_B * self.span
+            return _out(spread + 0.0 * s)
+
+        s = self._arc("s", s)
+        return self._pick(heap, lambda: self._taut_x_of_s(s))
+
+    def y_of_s(self, s):
+        """Height above A of the material point ``s`` (the seabed's height on it).
+
+        In a heap state the part from B carries ``w u`` at ``u`` above its foot, so the
+        point ``sigma`` above the foot lies ``sigma + w sigma^2/(2 EA)`` above the seabed;
+        the part from A carries ``w (s_1 - s)`` and the point ``s`` lies
+        ``s + w (s_1 s - s^2/2)/EA`` below A (H.M. Irvine, "Cable Structures", MIT Press,
+        1981, the elastic catenary at ``H = 0``)."""
+
+        def heap():
+            s1, L_B, sigma = self._heap_parts(s)
+            w, EA = self.w, self.EA
+            a = np.minimum(s, s1)
+            below_A = 0.0 - (a + w * (s1 * a - 0.5 * a * a) / EA)
+            above = self._y_t + sigma * (1.0 + 0.5 * w * sigma / EA)
+            return _out(np.where(s <= s1, below_A, np.where(s <= s1 + L_B, self._y_t, above)))
+
+        s = self._arc("s", s)
+        return self._pick(heap, lambda: self._taut_y_of_s(s))
+
+    def s_of_x(self, x):
+        """Material point at abscissa ``x`` in [0, span].
+
+        In a heap state ``x = 0`` is A, ``x = span`` is B (the vertical parts
+        project to the ends) and the points between map to the slack spread evenly
+        on the seabed (see `x_of_s`)."""
+
+        def heap():
+            s1, L_B = self.length_to_seabed, self.length_on_seabed
+            spread = s1 + x / self.span * L_B
+            return _out(np.where(x <= 0.0, 0.0, np.where(x >= self.span, self.length, spread)))
+
+        x = real("x", x)
+        require("x", (x >= 0) & (x <= self.span), "must lie in [0, span]", x)
+        return self._pick(heap, lambda: self._taut_s_of_x(x))
+
+    def slope(self, x):
+        """dy/dx at ``x`` (0 on the seabed).
+
+        In a heap state the line is vertical at ``x = span`` (and at ``x = 0`` with
+        the anchor above the seabed): no finite slope there, `InputError` (``x``)."""
+
+        def heap():
+            x_b = np.broadcast_to(x, np.broadcast_shapes(np.shape(x), np.shape(self.span)))
+            vertical = self.heap & ((x_b >= self.span) | ((x_b <= 0.0) & (self._V1 > 0)))
+            if np.any(vertical):
+                raise InputError(
+                    "x", "the line hangs vertically there (slack in a heap, H = 0): no finite slope"
+                )
+            return _out(0.0 * x_b)
+
+        x = real("x", x)
+        require("x", (x >= 0) & (x <= self.span), "must lie in [0, span]", x)
+        return self._pick(heap, lambda: self._taut_slope(x))
+
+    def samples(self, n: int = 201) -> dict:
+        """One scene's profile at ``n`` equally spaced x (see `CableSolution.samples`).
+
+        In a heap state the points at ``x = 0`` and ``x = span`` are A and B (the
+        vertical parts project onto them), with the angle of the vertical tangent there
+        (``-pi/2`` leaving A downwards when the anchor is above the seabed, ``pi/2``
+        rising to B) and 0 on the seabed between."""
+        if not (self._any_heap and np.ndim(self.heap) == 0):
+            return super().samples(n)
+        x = np.linspace(0.0, float(self.span), _sample_count(n))
+        angle = np.zeros_like(x)
+        angle[-1] = 0.5 * np.pi
+        if self._V1 > 0:
+            angle[0] = -0.5 * np.pi
+        weight = np.full_like(x, float(self.w))
+        return {
+            "xy": np.column_stack([x, self.y(x)]),
+            "tension": np.asarray(self.T(x), dtype=float),
+            "angle": angle,
+            "load": np.column_stack([np.zeros_like(x), -weight]),
+        }
+
+    def _heap_residuals(self):
+        """Residuals of a heap state: the vertical parts span their heights, the
+        supports and the seabed carry the weight, the slack covers the span."""
+        w, EA, y_t = self.w, self.EA, self._y_t
+        chord = self._xp.hypot(self.span, self.dh)
+        l_A, l_B, L_B = self.length_to_seabed, self._l_B, self.length_on_seabed
+        yield (l_B + w * l_B * l_B / (2.0 * EA) - (self.dh - y_t)) / chord
+        yield (l_A + w * l_A * l_A / (2.0 * EA) + y_t) / chord
+        weight = w * self.length
+        yield (self.V_A + self.V_B + w * L_B - weight) / weight
+        yield self._xp.minimum(L_B - self.span, 0.0) / self.span
+        yield (self.T_A - self.V_A) / weight + (self.T_B - self.V_B) / weight + self.H / weight
+
+    def _residuals(self):
+        if not self._any_heap:
+            yield from self._taut__residuals()
+            return
+        if np.ndim(self.heap) == 0:
+            yield from self._heap_residuals()
+            return
+        with np.errstate(all="ignore"):
+            taut, heap = list(self._taut__residuals()), list(self._heap_residuals())
+        for t, h in zip_longest(taut, heap, fillvalue=0.0):
+            yield np.where(self.heap, h, t)
+
+    def stiffness(self):
+        """Fairlead stiffness ``∂(H, V_B)/∂(span, dh)`` with A fixed, shape ``(*shape, 2, 2)``.
+
+        Rows ``(H, V_B)``, columns ``(span, dh)``: the inverse of the Jacobian of the
+        closure equations in ``(H, V_B)``, grounded or free, friction included.
+
+        In a heap state (``H = 0``) ``V_B = w l_B`` with ``dh - seabed = l_B + w l_B^2/(2EA)``,
+        so ``∂V_B/∂dh = w/(1 + w l_B/EA)`` and the other three entries are 0. This is
+        the heap side's stiffness, one-sided at the boundary: the line becomes taut
+        again (``H > 0``) only when the span exceeds the slack's length on the seabed.
+        """
+
+        def heap():
+            k22 = self.w / (1.0 + self.w * self._l_B / self.EA)
+            zero = 0.0 * k22
+            return matrix_2x2(zero, zero, zero, k22)
+
+        if not self._any_heap:
+            return self._taut_stiffness()
+        if np.ndim(self.heap) == 0:
+            return heap()
+        with np.errstate(all="ignore"):
+            taut = self._taut_stiffness()
+        return np.where(np.asarray(self.heap)[..., None, None], heap(), taut)
+
+    def __repr__(self):
+        text = super().__repr__()
+        if not self._any_heap:
+            return text
+        if np.ndim(self.heap) == 0:
+            return text[:-1] + "; heap: H = 0, the slack lies on the seabed)"
+        return text[:-1] + f"; heap at {int(np.count_nonzero(self.heap))} of {np.size(self.heap)} elements)"
+
+
+def _sample_count(n):
+    if isinstance(n, (bool, np.bool_)) or not isinstance(n, (int, np.integer)) or n < 2:
+        raise InputError("n", f"must be an integer >= 2, got {n!r}")
+    return int(n)
+
+
+def _heap_where(heap, value, taut):
+    """``value`` at heap elements, ``taut`` elsewhere (floats stay floats)."""
+    if np.ndim(heap) == 0:
+        return value if heap else taut
+    return np.where(heap, value, taut)
+
 
 def _out(value):
     """A 0-d result as a Python float (scalar in, scalar out)."""
     return float(value) if np.ndim(value) == 0 else value
+
+
+def hanging_length(height, w, EA):
+    r"""Unstretched length ``l`` of a line hanging vertically (``H = 0``) from a support
+    ``height`` above the seabed down to it, its tension ``w u`` at ``u`` above the seabed.
+
+    Its stretched length :math:`l + w l^2/(2 EA)` equals the height (H.M. Irvine,
+    "Cable Structures", MIT Press, 1981, the elastic catenary at ``H = 0``); the root
+    written without cancellation, :math:`l = 2 d/(1 + \sqrt{1 + 2 w d/EA})`, ``d`` the
+    height (m), ``w`` (N/m), ``EA`` (N). 0 at ``height = 0``.
+    """
+    xp = namespace(height, w, EA)
+    return 2.0 * height / (1.0 + xp.sqrt(1.0 + 2.0 * w * height / EA))
 
 
 def _lifted(span, dh, w, EA, L):
@@ -576,14 +835,17 @@ def elastic_catenary(span, dh, w, EA, *, length, seabed=None, friction=0.0):
     SeabedCatenary
         With a ``seabed``: the same forces, maps and ``stiffness()``, plus
         ``H_A``, ``length_on_seabed``, ``x_touchdown``, ``length_to_seabed``,
-        ``x_landing``, ``T_of_s(s)``, ``suspended``.
+        ``x_landing``, ``T_of_s(s)``, ``suspended``, ``heap``. A line longer than
+        its L-shape (``span <= L - l_A - l_B``, `hanging_length`) has no solution
+        with ``H > 0``: its slack lies in a heap on the seabed, returned as such
+        (``heap`` True, ``H = 0``, see `SeabedCatenary`; MoorPy's slack profiles
+        4 and 5).
 
     Raises
     ------
     InputError
         A non-physical argument, named: a seabed above A, B on or below it,
-        friction without a seabed or where it is indeterminate, a line so long
-        that its slack lies in a heap on the seabed (H = 0).
+        friction without a seabed or where it is indeterminate.
     ConvergenceError
         Newton stalled; the error carries the residual history.
     """
@@ -610,6 +872,7 @@ def elastic_catenary(span, dh, w, EA, *, length, seabed=None, friction=0.0):
     H, V_t, L_B, V_1 = np.zeros(shape), np.zeros(shape), np.zeros(shape), np.zeros(shape)
     guess = np.array(np.broadcast_to(np.where(H_lift > 0, np.minimum(H_lift, w * L0), w * L0), shape))
     depth = np.zeros(shape)
+    dips = np.zeros(shape, dtype=bool)
     history = []
     if not contact.all():
         hanging = np.asarray(~contact)
@@ -619,46 +882,47 @@ def elastic_catenary(span, dh, w, EA, *, length, seabed=None, friction=0.0):
         free = free_elastic_catenary(*args[:4], length=args[4])
         H[hanging], V_t[hanging] = free.H, free.V_A
         # anchor above the seabed and the free line below it: a touchdown between A and B
-        dips = np.zeros(shape, dtype=bool)
         dips[hanging] = np.asarray(free.y_low) < np.broadcast_to(seabed, shape)[hanging]
         if dips.any():
+            contact = contact | dips
+            depth[dips] = -np.broadcast_to(seabed, shape)[dips]
+            guess[dips] = H[dips]
+    heap = np.zeros(shape, dtype=bool)
+    if contact.any():
+        # H -> 0: A and B hold the vertical parts l = V_0/w (`hanging_length`), the rest
+        # lies at X_0 = L - l_A - l_B; a shorter span leaves the slack in a heap (H = 0)
+        l_A, l_B = hanging_length(depth, w, EA), hanging_length(dh + depth, w, EA)
+        heap = contact & np.broadcast_to(span <= L0 - l_A - l_B, shape)
+        if dips.any():  # a taut line between two touchdowns: friction indeterminate
             require(
                 "friction",
-                ~dips | (np.broadcast_to(friction, shape) == 0),
+                ~(dips & ~heap) | (np.broadcast_to(friction, shape) == 0),
                 "must be 0 where the line touches down between A and B (anchor above the seabed): "
                 "the static friction there depends on the history of the motion",
                 friction,
             )
-            contact = contact | dips
-            depth[dips] = -np.broadcast_to(seabed, shape)[dips]
-            guess[dips] = H[dips]
-    if contact.any():
-        # H -> 0: A and B hold the vertical parts V_0 (Z = V/w + V^2/(2 EA w)), the rest lies
-        # at X_0 = L - V_0,A/w - V_0,B/w; a shorter span leaves line in a heap (H = 0)
-        def v_0(height):
-            return 2.0 * w * height / (1.0 + np.sqrt(1.0 + 2.0 * w * height / EA))
-
-        heap = contact & np.broadcast_to(span <= L0 - (v_0(dh + depth) + v_0(depth)) / w, shape)
-        if heap.any():
-            raise InputError(
-                "length",
-                "leaves slack line lying in a heap on the seabed (span <= length - hanging length, "
-                "H = 0): give a shorter line or a longer span",
-            )
-        args = [np.broadcast_to(v, shape)[contact] for v in (span, dh, w, EA, L0, friction * w, guess, depth)]
+        if heap.any():  # the heap state: H = 0, vertical parts at A and B, the slack between
+            l_A, l_B = np.broadcast_to(l_A, shape), np.broadcast_to(l_B, shape)
+            H[heap], V_t[heap] = 0.0, 0.0
+            V_1[heap] = (np.broadcast_to(w, shape) * l_A)[heap]
+            L_B[heap] = (np.broadcast_to(L0, shape) - l_A - l_B)[heap]
+    taut = contact & ~heap
+    if taut.any():
+        args = [np.broadcast_to(v, shape)[taut] for v in (span, dh, w, EA, L0, friction * w, guess, depth)]
         if shape == ():  # one scene: the same Newton on Python floats
             args = [float(v[0]) for v in args]
             Hc, Vc, history = _solve_grounded_scalar(*args)
         else:
             Hc, Vc, history = _solve_grounded(*args)
         V1 = anchor_part(Hc, args[2], args[3], args[7])[0]
-        H[contact], V_t[contact], V_1[contact] = Hc, 0.0, V1
-        L_B[contact] = np.maximum(args[4] - V1 / args[2] - Vc / args[2], 0.0)
+        H[taut], V_t[taut], V_1[taut] = Hc, 0.0, V1
+        L_B[taut] = np.maximum(args[4] - V1 / args[2] - Vc / args[2], 0.0)
     y_t = np.where(contact, np.broadcast_to(seabed, shape), 0.0)
     if shape == ():
         H, V_t, L_B, V_1, y_t = (float(v) for v in (H, V_t, L_B, V_1, y_t))
+        heap = bool(heap)
     with float_range("length", "a result"):
-        solution = SeabedCatenary(span, dh, w, EA, L0, friction, seabed, H, V_t, L_B, V_1, y_t)
+        solution = SeabedCatenary(span, dh, w, EA, L0, friction, seabed, H, V_t, L_B, V_1, y_t, heap)
         return checked_closed_form(solution, "length", history)
 
 
@@ -669,10 +933,18 @@ def _seabed_catenary_scalar(span, dh, w, EA, L0, seabed, friction):
     contact = seabed == 0 and not lifted
     guess = min(H_lift, w * L0) if H_lift > 0 else w * L0
     H, V_t, L_B, V_1, depth, history = 0.0, 0.0, 0.0, 0.0, 0.0, []
+    dips = heap = False
     if not contact:
         free = free_elastic_catenary(span, dh, w, EA, length=L0)
         H, V_t = free.H, free.V_A
         if free.y_low < seabed:  # anchor above the seabed, the free line below it: a touchdown
+            contact, depth, guess, dips = True, -seabed, H, True
+    if contact:
+        # H -> 0: A and B hold the vertical parts l = V_0/w (`hanging_length`), the rest
+        # lies at X_0 = L - l_A - l_B; a shorter span leaves the slack in a heap (H = 0)
+        l_A, l_B = hanging_length(depth, w, EA), hanging_length(dh + depth, w, EA)
+        heap = span <= L0 - l_A - l_B
+        if dips and not heap:  # a taut line between two touchdowns: friction indeterminate
             require(
                 "friction",
                 friction == 0,
@@ -680,25 +952,15 @@ def _seabed_catenary_scalar(span, dh, w, EA, L0, seabed, friction):
                 "the static friction there depends on the history of the motion",
                 friction,
             )
-            contact, depth, guess = True, -seabed, H
-    if contact:
-        # H -> 0: A and B hold the vertical parts V_0 (Z = V/w + V^2/(2 EA w)), the rest lies
-        # at X_0 = L - V_0,A/w - V_0,B/w; a shorter span leaves line in a heap (H = 0)
-        def v_0(height):
-            return 2.0 * w * height / (1.0 + math.sqrt(1.0 + 2.0 * w * height / EA))
-
-        if span <= L0 - (v_0(dh + depth) + v_0(depth)) / w:
-            raise InputError(
-                "length",
-                "leaves slack line lying in a heap on the seabed (span <= length - hanging length, "
-                "H = 0): give a shorter line or a longer span",
-            )
+    if heap:  # the heap state: H = 0, vertical parts at A and B, the slack between
+        H, V_t, V_1, L_B = 0.0, 0.0, w * l_A, L0 - l_A - l_B
+    elif contact:
         H, Vc, history = _solve_grounded_scalar(span, dh, w, EA, L0, friction * w, guess, depth)
         V_1 = anchor_part(H, w, EA, depth)[0]
         V_t, L_B = 0.0, max(L0 - V_1 / w - Vc / w, 0.0)
     y_t = seabed if contact else 0.0
     with float_range("length", "a result"):
-        solution = SeabedCatenary(span, dh, w, EA, L0, friction, seabed, H, V_t, L_B, V_1, y_t)
+        solution = SeabedCatenary(span, dh, w, EA, L0, friction, seabed, H, V_t, L_B, V_1, y_t, heap)
         return checked_closed_form(solution, "length", history)
 
 

@@ -134,7 +134,7 @@ class _State:
 
     __slots__ = (
         "H", "V", "k", "a", "V_top", "V_bot", "V_bot0", "Vb", "L_s", "Tt", "Tb", "dx", "dy", "X", "Z", "jac",
-        "l_g", "T_g", "m_g", "R", "stretch", "contact", "H_A",
+        "l_g", "T_g", "m_g", "R", "stretch", "contact", "H_A", "heap",
     )  # fmt: skip
 
 
@@ -211,6 +211,7 @@ class Line:
         c = P[1:n] + self._w[1:] * self._L[1:]
         self._Q_top = np.append(np.cumsum(c[::-1])[::-1], 0.0)
         self._contact = seabed is not None and seabed == 0.0
+        self._buoyed = bool((P[1:n] < 0).any())  # buoys between the ends
 
     @property
     def length(self):
@@ -238,7 +239,7 @@ class Line:
         (the tension at each piece's lower end depends on the piece above it)."""
         L, w, EA, mu = self._L, self._w, self._EA, self.friction
         st = _State()
-        st.H, st.V = H, V
+        st.H, st.V, st.heap = H, V, False
         n = len(L)
         if n == 1:  # one segment: Python floats throughout
             V_top = V_bot = None  # not needed here; LineSolution forms them
@@ -340,6 +341,96 @@ class Line:
         st.X, st.Z, st.jac = X, Z, (jxh, jxv, jzh, jzv)
         return st
 
+    # -- the heap state: H = 0, the part from B hangs vertically, the slack lies on the seabed --
+    def _vertical(self, V):
+        """The part hanging vertically (``H = 0``) from B with tension ``V`` just below B:
+        ``(Z, dZ/dV, k, a, V_top, V_bot)``, or None when it would lift the anchor.
+
+        Walking down from B, the tension falls by ``w_i`` per unit length and by the
+        clump weight ``P_j`` at a joint; the part reaches the seabed where it falls to 0,
+        inside segment ``k`` (``a`` above its lower end) or at joint ``k`` (``a = 0``, the
+        clump there partly carried by the seabed). A piece with end tensions
+        ``V_bot <= V_top = V_bot + w L`` is ``L (1 + (V_top + V_bot)/(2 EA))`` tall."""
+        V_top = V - self._Q_top
+        V_bot = V_top - self._wL
+        if V_bot[0] >= 0.0:
+            return None  # the whole line would hang from B: the anchor lifted, no heap
+        up = np.flatnonzero(V_top > 0)
+        if up.size == 0:
+            return 0.0, 0.0, len(self._L) - 1, self._Lf[-1], V_top, V_bot  # nothing hangs
+        k = int(up[0])
+        Vb = V_bot[k:].copy()
+        Ls = self._L[k:].copy()
+        dVb = np.ones_like(Vb)
+        a = 0.0
+        if Vb[0] < 0:  # the foot inside segment k, a above its lower end
+            a = -float(Vb[0]) / self._wf[k]
+            Vb[0], dVb[0], Ls[0] = 0.0, 0.0, Ls[0] - a
+        Vt, EA, w = V_top[k:], self._EA[k:], self._w[k:]
+        Z = float(np.sum(Ls * (1.0 + 0.5 * (Vt + Vb) / EA)))
+        dZ = float(np.sum((1.0 + Vt / EA) / w - dVb * (1.0 + Vb / EA) / w))
+        return Z, dZ, k, a, V_top, V_bot
+
+    def _heap(self, span, dh):
+        """The heap state at ``(span, dh)`` (a `_State` with ``H = 0``), or None when the
+        line is taut there (``H > 0``): the grounded length is shorter than the span."""
+        if not self._contact:
+            return None
+        # necessary: the slack covers the span, and the vertical part is at least dh
+        # stretched by the whole weight (a cheap test before the root search)
+        EA_min, W = min(self._EAf), self._weight_segments + max(self._abs_joint_forces, 0.0)
+        if self._length - dh / (1.0 + W / EA_min) < span:
+            return None
+        V_all = float(self._Q_top[0] + self._wL[0])  # V at which the anchor would lift
+        top = self._vertical(V_all * (1.0 - 1e-15))
+        if top is None or top[0] <= dh:
+            return None
+
+        def height(V):
+            return self._vertical(V)[0] - dh
+
+        if height(0.0) >= 0:  # buoys hold the line up even with no pull at B: no heap state
+            return None
+        V, _ = find_root(height, 0.0, V_all * (1.0 - 1e-15), what="Line.solve, heap", xtol=1e-15 * V_all)
+        for _ in range(3):  # Newton polish on the piecewise quadratic Z(V)
+            Z, dZ = self._vertical(V)[:2]
+            if dZ > 0:
+                V = V - (Z - dh) / dZ
+        Z, dZ, k, a, V_top, V_bot = self._vertical(V)
+        grounded = float(self._s0[k]) + a
+        if grounded < span:
+            return None  # taut: H > 0
+        buoys = np.flatnonzero(self.joint_forces[1:-1] < 0) + 1
+        if buoys.size:
+            raise InputError(
+                "attachments",
+                f"a buoy at joint {int(buoys[0])} in a line whose slack lies in a heap on the seabed "
+                "(H = 0): it would lift slack off the seabed, which this closed form does not represent "
+                "(solve it with cable.solve_bvp)",
+            )
+        st = _State()
+        st.H, st.V, st.k, st.a, st.contact, st.heap = 0.0, V, k, a, True, True
+        st.V_top, st.V_bot, st.V_bot0 = V_top, V_bot, float(V_bot[0])
+        Vb, Ls = V_bot[k:].copy(), self._L[k:].copy()
+        if a > 0:
+            Vb[0], Ls[0] = 0.0, Ls[0] - a
+        st.Vb, st.L_s, st.Tt, st.Tb = Vb, Ls, V_top[k:].copy(), Vb.copy()
+        st.dx = np.zeros_like(Vb)
+        st.dy = Ls * (1.0 + 0.5 * (st.Tt + Vb) / self._EA[k:])
+        if k == len(self._L) - 1:  # one piece hangs: Python floats, as `_state` keeps them
+            pieces = (Vb, Ls, st.Tt, st.Tb, st.dx, st.dy)
+            st.Vb, st.L_s, st.Tt, st.Tb, st.dx, st.dy = (float(v[0]) for v in pieces)
+        st.X, st.Z = span, Z  # the slack fills the span (an inequality, checked in residual())
+        st.jac = (0.0, 0.0, 0.0, dZ)
+        st.l_g = [*self._Lf[:k], a]
+        st.T_g = [0.0] * (k + 1)
+        st.stretch = [0.0] * (k + 1)
+        st.R = [0.0, *self._Pf[1 : k + 1]]
+        if k > 0 and a == 0.0:  # a clump at the foot, partly carried by the seabed
+            st.R[k] = self._Pf[k] - max(float(V_bot[k]), 0.0)
+        st.H_A = 0.0
+        return st
+
     def _trial_state(self, H, V):
         """`_state` at a Newton iterate, None where it is no state: ``H <= 0``, the whole line
         on the seabed, or forces so small that a product of them underflows to a division
@@ -437,11 +528,12 @@ class Line:
 
         H_lo = 1e-10 * W
         if x_of_h(H_lo) >= 0:
-            if self._contact:
+            if self._contact:  # buoys: a heap state raises in `_heap`, else none of this form
+                self._heap(span, dh)
                 raise InputError(
-                    "length",
-                    "leaves slack line lying in a heap on the seabed (the grounded run exceeds the "
-                    "span at H -> 0): give a shorter line or a longer span",
+                    "attachments",
+                    "leave slack line on the seabed with H -> 0 that is no heap state of this closed "
+                    "form (buoys lift it): solve it with cable.solve_bvp",
                 )
             raise ConvergenceError("Line.solve: the run exceeds the span at H -> 0")
         H_hi = W
@@ -475,13 +567,16 @@ class Line:
         Returns
         -------
         LineSolution
+            With ``seabed=0`` and a line longer than its L-shape, the heap state
+            (``heap`` True, ``H = 0``: the part from B hangs vertically, the slack lies
+            on the seabed; see `LineSolution`).
 
         Raises
         ------
         InputError
-            ``span``/``dh`` not finite or out of range; ``length`` when the line is so
-            long that its slack lies in a heap on the seabed (``H = 0``); ``attachments``
-            when a buoy would rest on the grounded part or the suspended line would dip
+            ``span``/``dh`` not finite or out of range; ``attachments`` when a buoy
+            between the ends meets a line whose slack lies in a heap on the seabed, when
+            a buoy would rest on the grounded part or the suspended line would dip
             to the seabed again (a second touchdown: solve it with `cable.solve_bvp`);
             ``seabed`` when the line would touch a seabed below the anchor; ``start``
             when it is neither a solution of this line nor a pair ``(H, V_B)`` of
@@ -498,7 +593,12 @@ class Line:
         st, norm, history = None, np.inf, []
         if start is not None:  # Newton from the previous solution (its closed form known)
             H0, V0, state = self._start(start)
-            st, norm, history = self._newton(span, dh, H0, V0, chord, 40, state)
+            if H0 > 0:  # a heap state (H = 0) is no start for Newton
+                st, norm, history = self._newton(span, dh, H0, V0, chord, 40, state)
+        if not norm < 1e-11 and not self._buoyed:  # the slack in a heap on the seabed (H = 0)?
+            heap = self._heap(span, dh)
+            if heap is not None:
+                st, norm = heap, 0.0
         if not norm < 1e-11:  # Newton from the equivalent uniform line
             guess = self._guess(span, dh)
             if guess is not None:
@@ -557,6 +657,13 @@ class LineSolution:
         Downward point force at each joint (N).
     seabed_reaction : float
         Total upward force of the seabed on the line (N).
+    heap : bool
+        Whether the slack lies in a heap on the seabed (``H = 0``, MoorPy's profile 4):
+        the part from B hangs vertically down to the seabed at ``x_touchdown = span``
+        (its tension at a height is the weight below it down to the seabed, clump
+        weights included), the rest lies on the seabed without tension or stretch.
+        The shape of that slack is not determined by statics: the maps draw it spread
+        evenly from A to the touchdown (``x_of_s`` linear in ``s`` there).
     """
 
     def __init__(self, line, span, dh, state):
@@ -574,10 +681,13 @@ class LineSolution:
         self.T_B = math.hypot(st.H, st.V)
         self.T_A = math.hypot(self.H_A, V_A0)
         self.joint_forces = P.copy()
+        self.heap = bool(st.heap)
         if contact:  # the grounded pieces, still Python floats from the closed form
             self.length_on_seabed = float(sum(st.l_g))
             self.seabed_reaction = float(line._w[: k + 1] @ np.array(st.l_g) + sum(st.R[1:]))
             self.x_touchdown = float(sum(l + e for l, e in zip(st.l_g, st.stretch, strict=True)))
+            if st.heap:
+                self.x_touchdown = float(span)
         else:
             self.length_on_seabed = self.seabed_reaction = self.x_touchdown = 0.0
         if len(line._L) == 1:  # A, then B at the end of the one suspended piece
@@ -608,9 +718,11 @@ class LineSolution:
         # per-segment arrays: start of each segment along s, and of each suspended piece
         self._s0 = line._s0
         # grounded pieces: x at their lower ends, stretched lengths
+        # heap: the slack spread evenly from A to the touchdown (its shape is not determined)
+        self._spread = self.span / float(st.l_g.sum()) if st.heap else 1.0
         if st.contact:
             g_str = st.l_g + stretch
-            x_g0 = np.concatenate([[0.0], np.cumsum(g_str)[:-1]])
+            x_g0 = np.concatenate([[0.0], np.cumsum(g_str * self._spread)[:-1]])
         else:
             g_str, x_g0 = line._no_ground, line._no_ground
         self._x_g0 = x_g0
@@ -629,6 +741,13 @@ class LineSolution:
         if st.contact and st.a > 0:  # joint k lies on the seabed, the piece starts at the touchdown
             self.x_joints[k] = x_g0[k]
 
+    def __repr__(self):
+        note = "; heap: H = 0, the slack lies on the seabed" if self.heap else ""
+        return (
+            f"LineSolution(span={self.span:g}, dh={self.dh:g}: H={self.H:.9g}, V_A={self.V_A:.9g}, "
+            f"V_B={self.V_B:.9g}, length_on_seabed={self.length_on_seabed:.9g}{note})"
+        )
+
     @staticmethod
     def _grounded_stretch(T_u, m, l, EA):
         """``∫ max(T_u - m d, 0) dd / EA`` over ``d`` in ``[0, l]``."""
@@ -643,6 +762,8 @@ class LineSolution:
         st, line = self._st, self.line
         chord = math.hypot(self.span, self.dh)
         closure = max(abs(st.X - self.span), abs(st.Z - self.dh)) / chord
+        if st.heap:  # the slack covers the span
+            closure = max(closure, max(self.span - self.length_on_seabed, 0.0) / chord)
         scale = abs(self.V_A) + abs(self.V_B) + line._weight_segments + line._abs_joint_forces
         statics = abs(self.V_A + self.V_B + self.seabed_reaction - line._weight) / scale
         geometry = max(abs(self.x_joints[-1] - self.span) / chord, abs(self.y_joints[-1] - self.dh) / chord)
@@ -724,6 +845,9 @@ class LineSolution:
         sig = np.maximum(s - self._s_p0[piece], 0.0)
         Vb = st.Vb[piece]
         V = Vb + w * sig
+        if st.heap:  # vertical: x = span, the piece's tension rising linearly from Vb
+            y = self._y_p0[piece] + sig * (1.0 + (Vb + 0.5 * w * sig) / EA)
+            return self._x_p0[piece] + 0.0 * sig, y, V
         T, Tb = np.hypot(H, V), np.hypot(H, Vb)
         x = self._x_p0[piece] + H * sig / EA + H / w * asinh_diff(V / H, Vb / H)
         y = self._y_p0[piece] + sig * (Vb + 0.5 * w * sig) / EA + (V - Vb) * (V + Vb) / ((T + Tb) * w)
@@ -737,8 +861,8 @@ class LineSolution:
         d = np.maximum(up - s, 0.0)
         T_u, m, EA = st.T_g[i], st.m_g[i], self.line._EA[i]
         T = np.maximum(T_u - m * d, 0.0)
-        x_up = self._x_g0[i] + self._g_str[i]
-        back = d + self._grounded_stretch(T_u, m, d, EA)
+        x_up = self._x_g0[i] + self._g_str[i] * self._spread
+        back = d * self._spread + self._grounded_stretch(T_u, m, d, EA)
         return x_up - back, T
 
     def _maps(self, s):
@@ -782,7 +906,14 @@ class LineSolution:
 
         Rows ``(H, V_B)``, columns ``(span, dh)``: the inverse of the closure's Jacobian
         ``∂(X, Z)/∂(H, V)`` (implicit function theorem), friction and clump regimes included.
+
+        In a heap state (``H = 0``) only ``∂V_B/∂dh = 1/(dZ/dV)`` is not zero, ``Z(V)`` the
+        height of the vertical part (``w/(1 + w l_B/EA)`` for one segment hanging ``l_B``):
+        the heap side's stiffness, one-sided at the boundary (the line becomes taut again
+        only when the span exceeds the slack's length on the seabed).
         """
+        if self._st.heap:
+            return np.array([[0.0, 0.0], [0.0, 1.0 / self._st.jac[3]]])
         j11, j12, j21, j22 = self._st.jac
         det = j11 * j22 - j12 * j21
         K = (j22 / det, -j12 / det, -j21 / det, j11 / det) if det != 0.0 else (math.inf,)
@@ -803,6 +934,8 @@ class LineSolution:
         ws, EAs, Ls = line._w[k:], line._EA[k:], st.L_s
 
         def prim(v):  # ∫ sqrt(H² + v²) dv
+            if st.heap:
+                return 0.5 * v * np.abs(v)
             return 0.5 * (v * np.hypot(H, v) + H * H * np.arcsinh(v / H))
 
         T_up[k:] = np.hypot(H, Vt)
