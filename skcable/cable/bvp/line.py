@@ -649,6 +649,12 @@ def _guess(problem: LineProblem, shape=False):
         level = min(level, dh - 1e-3 * abs(span))
         try:
             grounded = elastic_catenary(span, dh, w, EA, length=L, seabed=level)
+            if np.any(grounded.heap):  # H = 0: the arc form has no tension to solve for
+                raise InputError(
+                    "length",
+                    "leaves slack line lying in a heap on the seabed (H = 0): elastic_catenary(seabed=...) "
+                    "and cable.Line return that state",
+                )
             x, y, T = grounded.x_of_s(s_dof), grounded.y_of_s(s_dof), grounded.T_of_s(s_t)
             form = (float(grounded.H), w, L - float(grounded.V_B) / w, True)
         except (InputError, ConvergenceError):
