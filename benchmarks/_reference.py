@@ -30,3 +30,21 @@ def catenary_H(span, dh, w, length, digits=40):
     r = mp.sqrt(length**2 - dh**2) / span
     z = mp.findroot(lambda z: mp.log(mp.sinh(z) / z / r), (mp.mpf("1e-12"), mp.mpf(60)), solver="anderson")
     return float(w * span / (2 * z))
+
+
+def jonkman_grounded(span, dh, w, EA, L, cb):
+    """Jonkman's closure of a line grounded from the anchor on a flat seabed with friction
+    ``cb`` (J.M. Jonkman, NREL, 2007), in mpmath: ``f(H, V) -> [X - span, Z - dh]`` with
+    ``V`` the vertical force at the fairlead (the reference's max() form of the friction term)."""
+    span, dh, w, EA, L, cb = (mp.mpf(repr(float(v))) for v in (span, dh, w, EA, L, cb))
+
+    def f(H, V):
+        L_B = L - V / w
+        X = L_B + H / w * mp.asinh(V / H) + H * L / EA
+        if cb > 0:
+            d = L_B - H / (cb * w)
+            X += cb * w / (2 * EA) * (-(L_B**2) + d * max(d, 0))
+        Z = H / w * (mp.sqrt(1 + (V / H) ** 2) - 1) + V**2 / (2 * EA * w)
+        return [X - span, Z - dh]
+
+    return f

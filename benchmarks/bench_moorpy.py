@@ -21,11 +21,16 @@ from __future__ import annotations
 import argparse
 import contextlib
 import io
+import sys
 import time
 import warnings
+from pathlib import Path
 
 import mpmath as mp
 import numpy as np
+
+sys.path.insert(0, str(Path(__file__).parent))
+from _reference import jonkman_grounded  # noqa: E402
 
 from skcable import cable
 from skcable.errors import ConvergenceError, InputError
@@ -46,17 +51,7 @@ def scenes(n: int, seed: int):
 def mp_solution(span, dh, w, EA, L, cb, H0, V0):
     """(H, V_B) of Jonkman's closure equations at 40 digits (the reference's max() form)."""
     mp.mp.dps = 40
-    span, dh, w, EA, L, cb = (mp.mpf(float(v)) for v in (span, dh, w, EA, L, cb))
-
-    def f(H, V):
-        L_B = L - V / w
-        X = L_B + H / w * mp.asinh(V / H) + H * L / EA
-        if cb > 0:
-            d = L_B - H / (cb * w)
-            X += cb * w / (2 * EA) * (-(L_B**2) + d * max(d, 0))
-        Z = H / w * (mp.sqrt(1 + (V / H) ** 2) - 1) + V**2 / (2 * EA * w)
-        return [X - span, Z - dh]
-
+    f = jonkman_grounded(span, dh, w, EA, L, cb)
     H, V = mp.findroot(f, (mp.mpf(H0), mp.mpf(V0)), tol=mp.mpf(10) ** -30)
     return float(H), float(V)
 

@@ -44,7 +44,10 @@ from pathlib import Path
 import mpmath as mp
 import numpy as np
 
-from skcable import cable
+sys.path.insert(0, str(Path(__file__).parent))
+from _reference import jonkman_grounded  # noqa: E402
+
+from skcable import cable  # noqa: E402
 
 ROOT = Path(__file__).resolve().parents[1]
 SPAN, W = 100.0, 1.0
@@ -70,14 +73,7 @@ def exact(dh, L, EA, cb, starts):
     mp.mp.dps = 40
     span, dh, w, EA, L, cb = (mp.mpf(repr(float(v))) for v in (SPAN, dh, W, EA, L, cb))
 
-    def grounded(H, V):
-        L_B = L - V / w
-        X = L_B + H / w * mp.asinh(V / H) + H * L / EA
-        if cb > 0:
-            d = L_B - H / (cb * w)
-            X += cb * w / (2 * EA) * (-(L_B**2) + d * max(d, 0))
-        Z = H / w * (mp.sqrt(1 + (V / H) ** 2) - 1) + V**2 / (2 * EA * w)
-        return [X - span, Z - dh]
+    grounded = jonkman_grounded(span, dh, w, EA, L, cb)
 
     def lifted(H, V):  # Irvine, V the vertical force at B; the anchor pulls down by wL - V
         tva, tvb = V - w * L, V
