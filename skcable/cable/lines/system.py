@@ -42,6 +42,7 @@ from skcable._checks import positive, real, scalar
 from skcable.cable.lines.body import PointBody, RigidBody
 from skcable.cable.lines.line3d import Line3D, line_3d, point, solve_in_space, takes_start
 from skcable.errors import ConvergenceError, InputError
+from skcable.fe import newton
 
 __all__ = ["MooringEquilibrium", "MooringSystem"]
 
@@ -255,46 +256,51 @@ class MooringSystem:
             g[3:] /= arm
             return float(np.linalg.norm(g))
 
-        G, K, lines = self._state(q, external, start=warm_lines)
-        history = [scaled(G, lines)]
-        for _ in range(max_iter):
-            if history[-1] <= tol:
-                return MooringEquilibrium(self, q, external, G, K, lines, history)
-            jac = K @ self.body.rate_map(q)  # -∂G/∂q
+        def assemble(position, start):
+            """(net load G, stiffness K, lines, position); the lines start from ``start``."""
+            return (*self._state(position, external, start=start), position)
+
+        def norm(state):
+            return scaled(state[0], state[2])
+
+        def increment(state):
+            G, K, lines, position = state
+            jac = K @ self.body.rate_map(position)  # -∂G/∂q
             singular = np.linalg.svd(jac / units[:, None] / units[None, :], compute_uv=False)
-            dq = np.full(self.n_dof, np.nan)
-            if singular[-1] > 1e-11 * singular[0]:
-                dq = np.linalg.solve(jac, G)
-            if not np.isfinite(dq).all():
+            if not singular[-1] > 1e-11 * singular[0]:
                 raise ConvergenceError(
                     "mooring equilibrium: the stiffness is singular (a direction neither the lines nor the "
                     "hydrostatics restrain: add waterplane_area, a metacentre or lines)",
-                    history,
+                    [norm(state)],
                 )
-            dq *= min(1.0, float(np.min(step_cap / np.maximum(np.abs(dq), 1e-300))))
-            alpha, accepted = 1.0, False
-            while alpha > 1e-6:
-                trial = q + alpha * dq
-                try:
-                    G_t, K_t, lines_t = self._state(trial, external, start=lines)
-                except (InputError, ConvergenceError):  # a line cannot reach the trial position
-                    alpha *= 0.5
-                    continue
-                r_t = scaled(G_t, lines_t)
-                if r_t < (1.0 - 1e-4 * alpha) * history[-1] or r_t <= tol:
-                    q, G, K, lines, accepted = trial, G_t, K_t, lines_t, True
-                    history.append(r_t)
-                    break
-                alpha *= 0.5
-            if not accepted:
-                raise ConvergenceError(
-                    "mooring equilibrium: the line search found no descent (the residual stalls: the "
-                    "loads may exceed what the mooring can hold, or the start is too far)",
-                    history,
-                )
-        if history[-1] <= tol:
-            return MooringEquilibrium(self, q, external, G, K, lines, history)
-        raise ConvergenceError(f"mooring equilibrium: not converged in {max_iter} iterations", history)
+            accepted["lines"] = lines  # Newton steps from this state: the trials start from its lines
+            dq = np.linalg.solve(jac, G)
+            return dq * min(1.0, float(np.min(step_cap / np.maximum(np.abs(dq), 1e-300))))
+
+        accepted = {"lines": warm_lines}
+        try:
+            result = newton(
+                lambda position: assemble(position, accepted["lines"]),
+                q,
+                norm=norm,
+                increment=increment,
+                tol=tol,
+                max_iter=max_iter,
+                max_halvings=20,
+                stagnation_window=max_iter,  # no stagnation rule: a capped step may gain slowly
+                name="mooring equilibrium",
+                rejects=(InputError, ConvergenceError),  # a line that cannot reach a trial position
+            )
+        except ConvergenceError as err:
+            if "no descent" not in str(err):
+                raise
+            raise ConvergenceError(
+                "mooring equilibrium: the line search found no descent (the residual stalls: the loads "
+                "may exceed what the mooring can hold, or the start is too far)",
+                err.history,
+            ) from None
+        G, K, lines, _ = result.state
+        return MooringEquilibrium(self, result.x, external, G, K, lines, result.history)
 
 
 class MooringEquilibrium:
