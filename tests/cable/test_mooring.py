@@ -163,6 +163,10 @@ def test_spread_mooring_at_rest_is_symmetric():
     tensions = [line.tension_at_fairlead for line in rest.lines]
     np.testing.assert_allclose(tensions, tensions[0], rtol=1e-10)
     K = rest.stiffness(lines_only=True)
+    # from the lines kept at equilibrium = the lines solved again at that position
+    np.testing.assert_allclose(
+        K, rest.system.stiffness(rest.position, lines_only=True), rtol=1e-12, atol=1e-12 * np.abs(K).max()
+    )
     # three-fold symmetry: isotropic in the horizontal plane, equal roll and pitch, no surge-yaw coupling
     assert K[0, 0] == pytest.approx(K[1, 1], rel=1e-9) and abs(K[0, 1]) < 1e-9 * K[0, 0]
     assert K[3, 3] == pytest.approx(K[4, 4], rel=1e-9)

@@ -348,8 +348,10 @@ class MooringEquilibrium:
         """Stiffness of the mooring system at equilibrium, ``-∂G/∂(x, rotation vector)``
         (N/m, N/rad, N m/rad), shape (n_dof, n_dof); ``lines_only`` leaves out the
         body's hydrostatics (see `MooringSystem.stiffness`)."""
-        if lines_only:
-            return self.system.stiffness(self.position, lines_only=True)
+        if lines_only:  # from the lines at equilibrium, no new line solve
+            body, q = self.system.body, self.position
+            stiffnesses = np.array([line.stiffness() for line in self.lines])
+            return body.add_lines(body.arms(q), self.fairlead_forces, stiffnesses)[1]
         return self._K.copy()
 
     def tensions(self) -> pd.DataFrame:
