@@ -1073,6 +1073,19 @@ def solve_line_bvp(
         tension = solution.tension(np.clip(problem.tbasis.doflocs[0], 0.0, L))
         return np.concatenate([xy[:, 0], xy[:, 1], tension])
 
+    def rerun(problem, solution):
+        """The line on ``problem``'s mesh from ``solution`` interpolated onto it; else from the
+        closed-form start (`_guess`): on a nearly L-shaped line the bend at the touchdown has the
+        radius H/w, a thousandth of the length, and the interpolated bend of a coarser or
+        differently graded mesh can start Newton farther off than the closed form does."""
+        try:
+            return run(problem, restart(solution, problem))
+        except ConvergenceError as failed:
+            try:
+                return run(problem, _guess(problem))
+            except ConvergenceError:
+                raise failed from None
+
     def build(n, fitted=(), slack_end=0.0, mu=friction, nodes_at=None):
         return LineProblem(
             span, dh, segs, loads, bed, mu, n, fitted=fitted, slack_end=slack_end, nodes_at=nodes_at
@@ -1103,13 +1116,13 @@ def solve_line_bvp(
             for _ in range(GRADE_PASSES):
                 graded, capped = _graded_nodes(solution, n)
                 problem = build(n, fitted + ([s0] if s0 > 0 else []), s0, mu_now, graded)
-                solution = run(problem, restart(solution, problem))
+                solution = rerun(problem, solution)
                 compressed = np.min(solution._fields()[2]) < -1e3 * rtol * problem.load_scale
                 if not (capped or compressed):
                     break
         elif start is not None:
             problem = build(n, [s0] if s0 > 0 else [], s0)
-            solution = run(problem, restart(solution, problem))
+            solution = rerun(problem, solution)
         if start is None and friction > 0:
             # Jonkman's slack stretch [0, s0] of a grounded line whose friction takes the whole
             # pull: estimated from the frictionless line, or where friction fully mobilised
@@ -1117,7 +1130,7 @@ def solve_line_bvp(
             if problem.anchor_on_seabed:
                 s0 = solution._slack_estimate(friction)
             problem = build(n, [s0] if s0 > 0 else [], s0, friction, graded)
-            solution = run(problem, restart(solution, problem))
+            solution = rerun(problem, solution)
             if s0 == 0 and problem.anchor_on_seabed:
                 s0 = solution._tension_zero(1e3 * rtol * problem.load_scale)
         slack_tol = rtol * problem.load_scale
@@ -1145,7 +1158,7 @@ def solve_line_bvp(
             if not move:
                 break
             problem = build(n, fitted + ([s0] if s0 > 0 else []), s0, friction, graded)
-            solution = run(problem, restart(solution, problem))
+            solution = rerun(problem, solution)
         if s0 > 0:
             g, _ = solution._slack_tension()
             if not abs(g) <= slack_tol:
@@ -1166,7 +1179,21 @@ def solve_line_bvp(
             sizes.append(sizes[-1] // 2)
         solution = None
         for size in reversed(sizes):
-            solution = solve_level(size, solution)
+            try:
+                solution = solve_level(size, solution)
+            except ConvergenceError:
+                # a coarse mesh that cannot resolve a tight bend (a nearly L-shaped line, the
+                # bend's radius H/w a thousandth of the length) stalls, or its solution starts
+                # the finer mesh too far off: this level from scratch, else the next one
+                if size == n:
+                    if solution is None:
+                        raise
+                    solution = solve_level(size)
+                else:
+                    try:
+                        solution = solve_level(size)
+                    except ConvergenceError:
+                        solution = None
     else:
         solution = solve_level(n)
     problem = solution._problem
