@@ -161,7 +161,9 @@ def _graded_nodes(solution, n_elements, refinement=REFINEMENT):
     inside = old[:-1, None] + fraction[None, :] * h_old[:, None]  # (ne, cells)
     theta = np.unwrap(solution.angle(inside.ravel()).reshape(inside.shape), axis=1)
     turning = np.abs(np.gradient(theta, axis=1)) / (h_old[:, None] / cells)
-    rho = (1.0 + L * turning).ravel()
+    cosine = np.log(np.maximum(np.abs(np.cos(theta)), 1e-12))
+    stretching = np.abs(np.gradient(cosine, axis=1)) / (h_old[:, None] / cells)
+    rho = (1.0 + L * (turning + stretching)).ravel()
     ds = np.repeat(h_old / cells, cells)
     h_old = np.repeat(h_old, cells)
     s = np.concatenate([[0.0], np.cumsum(ds)])
@@ -238,7 +240,8 @@ def _guess_nodes(problem, n_elements):
     m = 0.5 * (s[1:] + s[:-1])
     v = w * (m - s_v)
     turning = np.where(grounded & (v < 0), 0.0, (w / H) / (1.0 + (v / H) ** 2))  # dθ/ds
-    monitor = 1.0 + L * turning
+    stretching = turning * np.abs(v) / H  # |d ln cos θ/ds| = |tan θ| dθ/ds
+    monitor = 1.0 + L * (turning + stretching)
     rate = _smoothed(s, n_elements * monitor / np.sum(monitor * np.diff(s)), n_elements)
     mass = np.concatenate([[0.0], np.cumsum(rate * np.diff(s))])
     return _equidistributed(problem, s, mass, n_elements)
