@@ -163,7 +163,7 @@ def _graded_nodes(solution, n_elements, refinement=REFINEMENT):
     turning = np.abs(np.gradient(theta, axis=1)) / (h_old[:, None] / cells)
     cosine = np.log(np.maximum(np.abs(np.cos(theta)), 1e-12))
     stretching = np.abs(np.gradient(cosine, axis=1)) / (h_old[:, None] / cells)
-    rho = (1.0 + L * (turning + stretching)).ravel()
+    rho = (1.0 + L * np.maximum(turning, stretching)).ravel()
     ds = np.repeat(h_old / cells, cells)
     h_old = np.repeat(h_old, cells)
     s = np.concatenate([[0.0], np.cumsum(ds)])
@@ -240,8 +240,7 @@ def _guess_nodes(problem, n_elements):
     m = 0.5 * (s[1:] + s[:-1])
     v = w * (m - s_v)
     turning = np.where(grounded & (v < 0), 0.0, (w / H) / (1.0 + (v / H) ** 2))  # dθ/ds
-    stretching = turning * np.abs(v) / H  # |d ln cos θ/ds| = |tan θ| dθ/ds
-    monitor = 1.0 + L * (turning + stretching)
+    monitor = 1.0 + L * turning
     rate = _smoothed(s, n_elements * monitor / np.sum(monitor * np.diff(s)), n_elements)
     mass = np.concatenate([[0.0], np.cumsum(rate * np.diff(s))])
     return _equidistributed(problem, s, mass, n_elements)
