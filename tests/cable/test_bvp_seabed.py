@@ -410,3 +410,48 @@ def test_a_fine_mesh_finds_its_contact_set_by_nested_solves():
     assert b.H == pytest.approx(ref.H, rel=1e-10)  # measured 1e-12
     assert b.V_B == pytest.approx(ref.V_B, rel=1e-10)
     _contact_is_exact(b)
+
+
+# Scenes of benchmarks/seabed_stability.py that raised ConvergenceError before the monitor's tail
+# term and the fallback starts: nearly L-shaped lines (slack 0.999, the bend at the touchdown of
+# radius H/w = 0.5 mm and 6 mm on 100 m and 200 m of line), and μ = 5 on a nearly level slack line
+# (friction takes the whole pull 3 cm from the touchdown).
+NEAR_L_SCENES = [
+    (0.05, 0.999, 0.0, 1e3),  # H/w = 0.54 mm: x = (H/w) asinh(σ w/H) past the touchdown
+    (1.0, 0.999, 0.5, 1e7),  # H/w = 6.2 mm, friction takes the whole pull: slack stretch
+    (0.05, 0.9, 5.0, 1e3),  # H/w = 0.15 m, a 3 cm friction zone
+]
+
+
+@pytest.mark.parametrize("ratio, slack, mu, ea_over_weight", NEAR_L_SCENES)
+def test_nearly_L_shaped_lines_converge_to_jonkman_at_h4(ratio, slack, mu, ea_over_weight):
+    span, dh, length, ea = _stability_scene(ratio, slack, mu, ea_over_weight)
+    ref = cable.elastic_catenary(span, dh, 1.0, ea, length=length, seabed=0.0, friction=mu)
+    values, errors = {}, {}
+    for n in (80, 160):
+        b = solve_line_bvp(span, dh, [(length, 1.0, ea)], seabed=0.0, friction=mu, n_elements=n)
+        values[n] = np.array([b.H, b.V_B, b.length_on_seabed])
+        errors[n] = np.abs(
+            values[n] / np.array([ref.H, ref.V_B, length]) - [1, 1, ref.length_on_seabed / length]
+        )
+        if ref.H_A == 0.0:
+            assert abs(b.H_A) <= RTOL * length
+        # complementarity to the solver's tolerance: the switch min(λ, c g) of a node on a tiny
+        # element (c ∝ its length) can leave the first node past the touchdown flagged in
+        # contact 4 µm above the seabed with λ = 1.7e-9 N (1.7e-11 of the weight) at 80 elements
+        scale = b._problem.load_scale
+        assert b.gap.min() >= -1e-12 * b.length
+        assert b.normal_force.min() >= -10 * RTOL * scale
+        on_bed = np.abs(b.gap) <= 1e-12 * b.length
+        assert np.all(on_bed[b.in_contact] | (b.normal_force[b.in_contact] <= 10 * RTOL * scale))
+        assert np.all(np.abs(b.normal_force[~b.in_contact]) <= 10 * RTOL * scale)
+        assert max(abs(v) for v in _statics(b)) < 1e-12
+    # measured 4.5-4.9 (H), 3.8-7.2 (V_B, grounded length); H converged like h (3e-4 of H at
+    # 80 elements on the first scene) with the turning-only monitor
+    rate = np.log2(errors[80] / errors[160])
+    assert np.all(rate > 3.5)
+    scale = np.array([ref.H, ref.V_B, length])
+    assert np.all(errors[160] <= np.abs(values[160] - values[80]) / scale / (2**3.5 - 1))
+    # the fairlead force to the benchmark's tolerance: measured 1.7e-11 to 1.1e-10 of |T_B|
+    force_error = np.hypot(values[160][0] - ref.H, values[160][1] - ref.V_B) / np.hypot(ref.H, ref.V_B)
+    assert force_error < 1e-9
