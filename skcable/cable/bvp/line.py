@@ -1139,8 +1139,19 @@ def solve_line_bvp(
             # everywhere leaves the line near the anchor in compression
             if problem.anchor_on_seabed:
                 s0 = solution._slack_estimate(friction)
+            frictionless = solution
             problem = build(n, [s0] if s0 > 0 else [], s0, friction, graded)
-            solution = rerun(problem, solution)
+            try:
+                solution = rerun(problem, frictionless)
+            except ConvergenceError as failed:
+                # μ = 5 on a nearly L-shaped line: friction takes the whole pull H/(μw) (0.1 mm to
+                # 2 mm) before the touchdown; with a node at the touchdown too the solve converges
+                fitted = edges_of(frictionless)
+                problem = build(n, fitted + ([s0] if s0 > 0 else []), s0, friction, graded)
+                try:
+                    solution = rerun(problem, frictionless)
+                except ConvergenceError:
+                    raise failed from None
             if s0 == 0 and problem.anchor_on_seabed:
                 s0 = solution._tension_zero(1e3 * rtol * problem.load_scale)
         slack_tol = rtol * problem.load_scale
