@@ -109,6 +109,8 @@ GRADE_PASSES = 10
 REFINEMENT = 4.0
 #: growth of the element size per length away from small elements (neighbours differ by 1.5 at most)
 GROWTH = 0.5
+#: the monitor's tail term only on lines whose cos θ (= H/T on a catenary) varies more than tenfold
+TAIL_RATIO = float(np.log(10.0))
 #: updates of the end of the slack stretch at most (secant on the tension there)
 SLACK_PASSES = 12
 
@@ -171,8 +173,10 @@ def _graded_nodes(solution, n_elements, refinement=REFINEMENT):
     turning = np.abs(np.gradient(theta, axis=1)) / (h_old[:, None] / cells)
     cosine = np.log(np.maximum(np.abs(np.cos(theta)), 1e-12))
     stretching = np.abs(np.gradient(cosine, axis=1)) / (h_old[:, None] / cells)
-    rho = (1.0 + L * np.maximum(turning, stretching)).ravel()
     ds = np.repeat(h_old / cells, cells)
+    if np.sum(stretching.ravel() * ds) <= TAIL_RATIO:  # cos θ = H/T varies less than tenfold
+        stretching = 0.0
+    rho = (1.0 + L * np.maximum(turning, stretching)).ravel()
     h_old = np.repeat(h_old, cells)
     s = np.concatenate([[0.0], np.cumsum(ds)])
     s[-1] = L
