@@ -155,7 +155,9 @@ def _graded_nodes(solution, n_elements, refinement=REFINEMENT):
     arc length past the touchdown) while ``|dθ/ds| = r/σ²`` falls fast; ``cos θ = r/σ`` there,
     so the second term is ``1/σ``, a geometric grading that interpolates the logarithm (the
     horizontal closure that sets H) instead of leaving its P2 error at ``r`` times a constant
-    (H converged like h, 3e-4 of H at 80 elements, before it). The bound keeps each solve's
+    (H converged like h, 3e-4 of H at 80 elements, before it). The term is used only on a line
+    whose ``cos θ`` varies more than tenfold (``ln`` of the ratio above ``TAIL_RATIO``): taut
+    and ordinary lines keep the turning monitor. The bound keeps each solve's
     start (the previous solution interpolated) within a node or two of its contact set. Each
     stretch between joints and point loads gets its share (at least one element) of the
     ``n_elements``.
