@@ -124,6 +124,21 @@ def test_sloped_closed_form_matches_moorpy():
         assert r.residual() < 1e-12
 
 
+def test_sloped_closed_form_on_a_steep_downslope_and_its_heap():
+    # a 45° downslope, slack lines: the flat start of the rotated frame is a heap, the slope
+    # still pulls the line taut (found by the review's fuzzing); MoorPy's catenary(alpha=) agrees
+    catenary = pytest.importorskip("moorpy.Catenary").catenary
+    for length in (145.0, 150.0, 170.0):
+        r = sloped_seabed_catenary(100.0, -50.0, 10.0, 1e8, length=length, seabed_slope=-1.0)
+        fAH, fAV, fBH, fBV, info = catenary(100.0, -50.0, length, 1e8, 10.0, CB=0.0, alpha=-45.0, Tol=1e-12)
+        assert r.H == pytest.approx(abs(fBH), rel=1e-10) and r.V_B == pytest.approx(abs(fBV), rel=1e-10)
+        assert r.length_on_seabed == pytest.approx(info["LBot"], rel=1e-10)
+    # more line than the L-shape along a level "slope": the heap elastic_catenary returns, refused here
+    assert cable.elastic_catenary(500.0, 100.0, 1000.0, 1e9, length=700.0, seabed=0.0).heap
+    with pytest.raises(InputError, match="length.*heap"):
+        sloped_seabed_catenary(500.0, 100.0, 1000.0, 1e9, length=700.0, seabed_slope=0.0)
+
+
 @pytest.mark.parametrize("slope, mu", [(0.05, 0.0), (-0.05, 0.1)])
 def test_bvp_on_a_slope_matches_the_sloped_closed_form(slope, mu):
     r = sloped_seabed_catenary(SPAN, DH, W, EA, length=L, seabed_slope=slope, friction=mu)

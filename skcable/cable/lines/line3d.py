@@ -12,7 +12,8 @@ fairlead and on the anchor are
 
 (``V_A`` is the upward reaction at A: the line pulls the anchor down by it). The
 difference :math:`(H - H_A)\,\mathbf e` is the friction the seabed carries, and
-:math:`\mathbf F_a + \mathbf F_b + (0, 0, -w L) + \text{seabed reactions} = 0`.
+:math:`\mathbf F_a + \mathbf F_b = (0, 0, -W) + \mathbf R`: the forces the line
+exerts on its ends balance its weight ``W`` less what the seabed carries, ``R``.
 
 The 3x3 fairlead stiffness in global axes, :math:`K = -\partial\mathbf F_b/\partial\mathbf b`
 with the anchor fixed, follows from the 2x2 stiffness

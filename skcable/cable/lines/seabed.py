@@ -969,7 +969,8 @@ class SlopedSeabedCatenary:
 
     ``H`` is the horizontal tension of the suspended part (the fairlead's),
     ``V_B`` the vertical force at B, ``H_A, V_A`` the anchor's reaction
-    (the grounded line pulls along the slope: ``V_A = H_A tan α``; with the
+    (the grounded line pulls A along the slope, up it for α > 0: the upward
+    reaction is ``V_A = -H_A tan α``; with the
     line lifted off A they are the free line's), ``T_A, T_B`` the end
     tensions, ``length_on_seabed`` the unstretched grounded length
     (0 when the line leaves A above the slope), ``x_touchdown, y_touchdown``
@@ -1122,7 +1123,9 @@ def sloped_seabed_catenary(span, dh, w, EA, *, length, seabed_slope, friction=0.
         H0, L_B0 = flat.H * cos, flat.length_on_seabed
     except (InputError, ConvergenceError):
         H0, L_B0 = free.H, 0.5 * L
-    scale = np.array([max(H0, 1e-12 * w * L), L])
+    if not H0 > 1e-6 * w * L:  # the flat line lies in a heap: the slope may still pull it taut
+        H0, L_B0 = w * L, 0.5 * L
+    scale = np.array([H0, L])
     history = []
 
     def f(u):
@@ -1133,12 +1136,31 @@ def sloped_seabed_catenary(span, dh, w, EA, *, length, seabed_slope, friction=0.
         history.append(float(np.max(np.abs(r)) / chord))
         return r / chord
 
-    sol = root(
-        f, np.array([H0, min(max(L_B0, 0.0), 0.999 * L)]) / scale, method="hybr", options={"xtol": 1e-15}
-    )
-    H, L_B = sol.x * scale
-    if not (H > 0 and 0 <= L_B < L) or np.max(np.abs(f(sol.x))) > 1e-12:
+    def solved(start):
+        sol = root(f, start / scale, method="hybr", options={"xtol": 1e-15})
+        H, L_B = sol.x * scale
+        if H > 0 and 0 <= L_B < L and np.max(np.abs(f(sol.x))) <= 1e-12:
+            return H, L_B
+        return None
+
+    # the closure has one root (H > 0, 0 <= L_B < L); hybr from the flat line's start finds it
+    # mostly, and from a few others where the slope bends the line away from that start
+    starts = [(H0, min(max(L_B0, 0.0), 0.999 * L))]
+    starts += [(H0 * a, b * L) for a in (1.0, 0.1, 10.0, 0.01) for b in (0.05, 0.5, 0.9, 0.99)]
+    for start in starts:
+        found = solved(np.array(start))
+        if found is not None:
+            break
+    else:
+        height = dh - m * span  # B above the slope, vertically
+        if L >= span / cos + float(hanging_length(height, w, EA)):
+            raise InputError(
+                "length",
+                "leaves slack line lying in a heap on the sloped seabed (H -> 0): give a shorter "
+                "line or a longer span",
+            )
         raise ConvergenceError("sloped_seabed_catenary: the closure equations did not converge", history)
+    H, L_B = found
     k = w * (sin + mu * cos)
     if k > 0 and H / cos - k * L_B < 0 and mu < m:
         raise InputError(

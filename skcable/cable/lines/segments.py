@@ -392,10 +392,12 @@ class Line:
         if height(0.0) >= 0:  # buoys hold the line up even with no pull at B: no heap state
             return None
         V, _ = find_root(height, 0.0, V_all * (1.0 - 1e-15), what="Line.solve, heap", xtol=1e-15 * V_all)
-        for _ in range(3):  # Newton polish on the piecewise quadratic Z(V)
+        for _ in range(3):  # Newton polish on the piecewise quadratic Z(V), kept in the bracket
             Z, dZ = self._vertical(V)[:2]
-            if dZ > 0:
-                V = V - (Z - dh) / dZ
+            polished = V - (Z - dh) / dZ if dZ > 0 else V
+            if not 0.0 <= polished < V_all * (1.0 - 1e-15) or self._vertical(polished) is None:
+                break
+            V = polished
         Z, dZ, k, a, V_top, V_bot = self._vertical(V)
         grounded = float(self._s0[k]) + a
         if grounded < span:
@@ -406,7 +408,7 @@ class Line:
                 "attachments",
                 f"a buoy at joint {int(buoys[0])} in a line whose slack lies in a heap on the seabed "
                 "(H = 0): it would lift slack off the seabed, which this closed form does not represent "
-                "(solve it with cable.solve_bvp)",
+                "(solve it with cable.solve_line_bvp)",
             )
         st = _State()
         st.H, st.V, st.k, st.a, st.contact, st.heap = 0.0, V, k, a, True, True
@@ -533,7 +535,7 @@ class Line:
                 raise InputError(
                     "attachments",
                     "leave slack line on the seabed with H -> 0 that is no heap state of this closed "
-                    "form (buoys lift it): solve it with cable.solve_bvp",
+                    "form (buoys lift it): solve it with cable.solve_line_bvp",
                 )
             raise ConvergenceError("Line.solve: the run exceeds the span at H -> 0")
         H_hi = W
@@ -577,7 +579,7 @@ class Line:
             ``span``/``dh`` not finite or out of range; ``attachments`` when a buoy
             between the ends meets a line whose slack lies in a heap on the seabed, when
             a buoy would rest on the grounded part or the suspended line would dip
-            to the seabed again (a second touchdown: solve it with `cable.solve_bvp`);
+            to the seabed again (a second touchdown: solve it with `cable.solve_line_bvp`);
             ``seabed`` when the line would touch a seabed below the anchor; ``start``
             when it is neither a solution of this line nor a pair ``(H, V_B)`` of
             finite numbers with ``H > 0``. An elastic line always reaches B by
@@ -780,7 +782,7 @@ class LineSolution:
                 raise InputError(
                     "attachments",
                     f"a buoy at joint {int(buoyed[0])} lies on the grounded part and would lift it: a second "
-                    "touchdown that this closed form does not represent (solve it with cable.solve_bvp)",
+                    "touchdown that this closed form does not represent (solve it with cable.solve_line_bvp)",
                 )
         if line.seabed is not None:
             y_min = self._lowest_suspended()
@@ -792,7 +794,7 @@ class LineSolution:
                     argument,
                     f"the suspended line dips to {y_min:.6g} m, below the seabed at {floor:.6g} m: a "
                     "touchdown between A and B that this closed form does not represent (solve it with "
-                    "cable.solve_bvp, or elastic_catenary for one segment)",
+                    "cable.solve_line_bvp, or elastic_catenary for one segment)",
                 )
         residual = self.residual()
         if not residual < 1e-9:
