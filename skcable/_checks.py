@@ -31,8 +31,19 @@ def _not_real(name: str, value, detail: str = "") -> InputError:
     return InputError(name, f"must be a real number or an array of them, got {shown}{detail}")
 
 
+def _holds_bool(value) -> bool:
+    """A bool inside a (nested) list or tuple: numpy would read it as 0 or 1."""
+    if isinstance(value, (bool, np.bool_)):
+        return True
+    return isinstance(value, (list, tuple)) and any(_holds_bool(item) for item in value)
+
+
 def _as_float_array(name: str, value) -> np.ndarray:
-    if value is None or isinstance(value, _NOT_REAL):
+    if (
+        value is None
+        or isinstance(value, _NOT_REAL)
+        or (isinstance(value, (list, tuple)) and _holds_bool(value))
+    ):
         raise _not_real(name, value)
     try:
         raw = np.asarray(value)

@@ -237,16 +237,22 @@ class Conductor:
     def ice_load(self, thickness, *, density: float = ICE_DENSITY, g: float = STANDARD_GRAVITY):
         """Weight per unit length (N/m) of radial ice ``thickness`` b (m, >= 0, any shape):
         ``density · g · π b (d + b)``, ``density`` in kg/m³ (> 0)."""
-        b = nonnegative("ice", thickness)
-        density = _positive_scalar("ice_density", density)
-        g = _positive_scalar("g", g)
-        return density * g * np.pi * b * (self.diameter + b)
+        return self._ice_load(thickness, density, g, names=("thickness", "density"))
 
     def wind_load(self, pressure, *, ice=0.0):
         """Transverse load per unit length (N/m) of wind ``pressure`` (Pa, >= 0) on the diameter
         iced with radial thickness ``ice`` (m, >= 0): ``pressure · (d + 2 ice)``; broadcast."""
-        p = nonnegative("wind_pressure", pressure)
-        b = nonnegative("ice", ice)
+        return self._wind_load(pressure, ice, names=("pressure", "ice"))
+
+    def _ice_load(self, thickness, density, g, *, names=("ice", "ice_density")):
+        b = nonnegative(names[0], thickness)
+        density = _positive_scalar(names[1], density)
+        g = _positive_scalar("g", g)
+        return density * g * np.pi * b * (self.diameter + b)
+
+    def _wind_load(self, pressure, ice, *, names=("wind_pressure", "ice")):
+        p = nonnegative(names[0], pressure)
+        b = nonnegative(names[1], ice)
         return p * (self.diameter + 2.0 * b)
 
     def _reference(self, span, dh, H0, sag0, length, model):
@@ -306,8 +312,8 @@ class Conductor:
             ``H, H_plane, sag, T_max, length, blowout, L0`` over the states.
         """
         H0, sag0 = self._reference(span, dh, H0, sag0, length, model)
-        w = self.w + self.ice_load(ice, density=ice_density, g=g)
-        wind = self.wind_load(wind_pressure, ice=ice)
+        w = self.w + self._ice_load(ice, ice_density, g)
+        wind = self._wind_load(wind_pressure, ice)
         return change_of_state(
             span, dh, EA=self.EA, alpha=self.alpha, w0=self.w, t0=t0, H0=H0, sag0=sag0,
             w=w, t=real("t", t), wind=wind, model=model,
@@ -347,8 +353,8 @@ class Conductor:
                 )
             ice, pressure = scalar("load_cases", value[0]), scalar("load_cases", value[1])
             nonnegative("load_cases", np.array([ice, pressure]))  # ice thickness and pressure >= 0
-            w = float(self.w + self.ice_load(ice, density=ice_density, g=g))
-            loads[case] = (w, float(self.wind_load(pressure, ice=ice)))
+            w = float(self.w + self._ice_load(ice, ice_density, g))
+            loads[case] = (w, float(self._wind_load(pressure, ice)))
         H0, sag0 = self._reference(span, dh, H0, sag0, length, model)
         table = sag_tension_table(
             span, dh, EA=self.EA, alpha=self.alpha, w0=self.w, t0=t0, H0=H0, sag0=sag0,

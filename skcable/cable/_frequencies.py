@@ -64,6 +64,8 @@ def irvine_frequencies(span, w, EA, H, *, n_modes=6, g=9.81):
     d = w * span**2 / (8 * H)
     L_e = span * (1 + 8 * (d / span) ** 2)
     lambda2 = (w * span / H) ** 2 * span * EA / (H * L_e)
+    if not (np.isfinite(c) and c > 0 and np.isfinite(lambda2) and lambda2 > 0):
+        raise InputError("H", "gives the wave speed or Irvine's λ² outside the range of a float")
     n = np.arange(1, n_modes + 1)
     out = n * c / (2 * span)
     anti = n * c / span
@@ -231,10 +233,12 @@ def natural_frequencies(span, dh, w, EA, *, H=None, sag=None, n_modes=6, g=9.81)
     x = np.concatenate([[0.0], x_all[order], [span]])
 
     results = {}
-    for plane, K in (("in", K_in), ("out", K_out)):
+    for plane, K in (("in", K_in), ("out", K_out)):  # in-plane, out-of-plane
+        if not (np.all(np.isfinite(K)) and np.all(np.isfinite(M))):
+            raise InputError("H", f"gives the {plane}-plane stiffness or mass outside the range of a float")
         omega2, phi = eigh(K, M, subset_by_index=[0, n_modes - 1])
-        if not (np.all(np.isfinite(omega2)) and np.all(omega2 > 0)):
-            raise ConvergenceError(f"natural_frequencies: {plane}-of-plane eigenvalues not finite and > 0")
+        if omega2.shape != (n_modes,) or not (np.all(np.isfinite(omega2)) and np.all(omega2 > 0)):
+            raise ConvergenceError(f"natural_frequencies: {plane}-plane eigenvalues not finite and > 0")
         shapes = np.zeros((n_modes, x.size))
         shapes[:, 1:-1] = phi.T
         results[plane] = (np.sqrt(omega2) / (2 * np.pi), shapes)

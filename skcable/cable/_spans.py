@@ -71,6 +71,8 @@ _CLOSURE = 1e-13  # relative closure tolerance of elastic_catenary's Newton
 
 def _spans(spans) -> np.ndarray:
     spans = np.atleast_1d(positive("spans", spans))
+    if spans.size == 0:
+        raise InputError("spans", "give at least one span")
     if spans.ndim != 1:
         raise InputError("spans", f"must be a 1-D sequence of span lengths, got shape {spans.shape}")
     return spans

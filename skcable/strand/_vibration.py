@@ -274,7 +274,7 @@ def strand_bending_frequencies(
 
     if not isinstance(section, Section):
         raise InputError("section", f"must be a Section (strand.section()), got {section!r:.80}")
-    if isinstance(axis, (bool, np.bool_)) or axis not in (0, 1):
+    if isinstance(axis, (bool, np.bool_)) or not isinstance(axis, (int, np.integer)) or axis not in (0, 1):
         raise InputError("axis", f"must be 0 (principal axis 1) or 1 (principal axis 2), got {axis!r}")
     EI_stick, EI_slip = float(section.EI_stick[axis]), float(section.EI_slip[axis])
     kw = dict(ends=ends, n_modes=n_modes, n_elements=n_elements)

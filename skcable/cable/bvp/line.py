@@ -952,6 +952,15 @@ class LineBVPSolution:
         )
 
 
+def _whole(name, value, low, high):
+    """``value`` an integer (not a bool, not a float) in ``[low, high]``, else InputError."""
+    if isinstance(value, (bool, np.bool_)) or not isinstance(value, (int, np.integer)):
+        raise InputError(name, f"must be a whole number (an int), got {value!r}")
+    if value < low or (high is not None and value > high):
+        raise InputError(name, f"must lie in [{low}, {high if high is not None else '∞'}], got {value!r}")
+    return int(value)
+
+
 def solve_line_bvp(
     span,
     dh,
@@ -1039,18 +1048,24 @@ def solve_line_bvp(
         require("dh", dh > ends[1], "must put B above the seabed", dh)
     L = sum(seg.length for seg in segs)
     loads = []
-    for item in point_loads:
+    try:
+        items = list(point_loads)
+    except TypeError:
+        raise InputError("point_loads", f"must be a sequence of (s, P) pairs, got {point_loads!r}") from None
+    for item in items:
         try:
             s, P = item
         except (TypeError, ValueError) as exc:
             raise InputError("point_loads", f"each is (s, P), got {item!r}") from exc
         s, P = real("point_loads", s), real("point_loads", P)
+        if np.ndim(s) or np.ndim(P):
+            raise InputError("point_loads", f"each is (s, P) with two numbers, got {item!r}")
         require("point_loads", 0.0 < s < L, "s must lie strictly inside the line (0, length)", s)
         loads.append((float(s), float(P)))
-    require("fit_touchdown", fit_touchdown in range(0, 11), "must be a whole number from 0 to 10", -1)
+    _whole("n_elements", n_elements, 1, None)
+    _whole("fit_touchdown", fit_touchdown, 0, 10)
+    _whole("max_iter", max_iter, 1, None)
     rtol = positive("rtol", rtol)
-    max_iter = positive("max_iter", max_iter)
-    require("max_iter", max_iter == int(max_iter), "must be a whole number", max_iter)
     name = "solve_line_bvp"
 
     def run(problem, z0):

@@ -160,11 +160,10 @@ class Line:
     """
 
     def __init__(self, segments, attachments=(), *, seabed=None, friction=0.0):
-        try:
-            segments = list(segments)
-            attachments = list(attachments)
-        except TypeError:
-            raise InputError("segments", "must be sequences of Segment and of attachments") from None
+        for name, value in (("segments", segments), ("attachments", attachments)):
+            if isinstance(value, (Segment, ClumpWeight, Buoy)) or not hasattr(value, "__iter__"):
+                raise InputError(name, f"must be a sequence (a list) of them, got {value!r}")
+        segments, attachments = list(segments), list(attachments)
         if not segments or not all(isinstance(s, Segment) for s in segments):
             raise InputError("segments", "must be a non-empty sequence of cable.Segment")
         n = len(segments)
