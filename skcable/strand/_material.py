@@ -134,8 +134,9 @@ class Material:
         and the FE model do not need it, a conductor's weight does
         (`skcable.cable.Conductor.from_strand` raises InputError naming it).
     alpha : float or None
-        Coefficient of linear thermal expansion (1/K), >= 0; None (the default)
-        when unknown (a conductor's thermal strain needs it, as ``density``).
+        Coefficient of linear thermal expansion (1/K), finite (composite cores of
+        high-temperature conductors have it near 0, some slightly below); None (the
+        default) when unknown (a conductor's thermal strain needs it, as ``density``).
     """
 
     E_e: float
@@ -171,7 +172,7 @@ class Material:
         if self.density is not None:
             values["density"] = _scalar("density", self.density, lower=0.0, strict=True)
         if self.alpha is not None:
-            values["alpha"] = _scalar("alpha", self.alpha, lower=0.0)
+            values["alpha"] = _scalar("alpha", self.alpha)  # carbon-fibre cores: about 0, or below
         for key, value in values.items():  # plain floats (np.float32 etc. are not kept)
             object.__setattr__(self, key, value)
         # B.1 slope E_e and B.3 value at eps_y1 give c and d; B.2 and B.4 a and b

@@ -123,12 +123,13 @@ def test_acsr_capacity_curve_ruptures_at_its_aluminium_wires():
 
 def test_material_density_and_alpha_are_checked():
     base = dict(E_e=2e11, E_p=1e9, eps_y=0.004, eps_y1=0.003, eps_y2=0.005, eps_rupture=0.05)
-    for argument, value in (("density", -1.0), ("density", 0.0), ("density", "7800"), ("alpha", -1e-6),
+    for argument, value in (("density", -1.0), ("density", 0.0), ("density", "7800"), ("alpha", "1e-6"),
                             ("alpha", float("nan"))):  # fmt: skip
         with pytest.raises(InputError) as err:
             strand.Material(**base, **{argument: value})
         assert err.value.argument == argument
     assert strand.Material(**base).density is None  # unknown by default
+    assert strand.Material(**base, alpha=-0.5e-6).alpha == -0.5e-6  # a carbon-fibre core's
 
 
 def test_layer_and_core_materials_are_checked():
