@@ -113,6 +113,21 @@ def scalar(name: str, value) -> float:
     return value
 
 
+def whole(name: str, value, low: int | None = None, high: int | None = None) -> int:
+    """``value`` as an int, raising unless it is an integer (not a bool, not a float such as
+    2.0) within ``[low, high]`` (either bound optional)."""
+    if isinstance(value, (bool, np.bool_)) or not isinstance(value, (int, np.integer)):
+        raise InputError(name, f"must be an integer, got {value!r}")
+    if (low is not None and value < low) or (high is not None and value > high):
+        bounds = (
+            f"in [{low}, {high}]"
+            if low is not None and high is not None
+            else (f">= {low}" if low is not None else f"<= {high}")
+        )
+        raise InputError(name, f"must be an integer {bounds}, got {value!r}")
+    return int(value)
+
+
 def require(name: str, ok, reason: str, value) -> None:
     """Raise ``InputError(name, reason)`` where the boolean ``ok`` is False."""
     if ok is True or (not isinstance(ok, np.ndarray) and ok):

@@ -39,7 +39,7 @@ from scipy.linalg import eigh
 from scipy.optimize import brentq
 from skfem import Basis, BilinearForm, ElementLineP2, LinearForm, MeshLine
 
-from skcable._checks import exactly_one, positive, real, scalar
+from skcable._checks import exactly_one, positive, real, scalar, whole
 from skcable.cable._catenary import catenary
 from skcable.errors import ConvergenceError, InputError
 
@@ -59,7 +59,7 @@ def irvine_frequencies(span, w, EA, H, *, n_modes=6, g=9.81):
     EA = _scalar_positive("EA", EA)
     H = _scalar_positive("H", H)
     g = _scalar_positive("g", g)
-    n_modes = _count(n_modes)
+    n_modes = whole("n_modes", n_modes, 1)
     c = np.sqrt(H * g / w)
     d = w * span**2 / (8 * H)
     L_e = span * (1 + 8 * (d / span) ** 2)
@@ -139,14 +139,6 @@ def _scalar_positive(name, value):
     return positive(name, value)
 
 
-def _count(n_modes):
-    if isinstance(n_modes, (bool, np.bool_)) or not isinstance(n_modes, (int, np.integer)):
-        raise InputError("n_modes", f"must be a positive integer, got {n_modes!r}")
-    if n_modes < 1:
-        raise InputError("n_modes", f"must be >= 1, got {n_modes}")
-    return int(n_modes)
-
-
 @BilinearForm
 def _stiff(u, v, p):
     return u.grad[0] * v.grad[0]
@@ -204,7 +196,7 @@ def natural_frequencies(span, dh, w, EA, *, H=None, sag=None, n_modes=6, g=9.81)
     w = _scalar_positive("w", w)
     EA = _scalar_positive("EA", EA)
     g = _scalar_positive("g", g)
-    n_modes = _count(n_modes)
+    n_modes = whole("n_modes", n_modes, 1)
     if n_modes > 60:
         raise InputError("n_modes", f"must be <= 60, got {n_modes}")
     name, value = exactly_one(H=H, sag=sag)

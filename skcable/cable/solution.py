@@ -18,7 +18,7 @@ from functools import cached_property
 
 import numpy as np
 
-from skcable._checks import require
+from skcable._checks import whole
 from skcable._xp import namespace
 from skcable.cable._special import largest_abs
 from skcable.errors import ConvergenceError, InputError
@@ -103,7 +103,7 @@ class CableSolution:
         above the horizontal) and ``load`` (n, 2): the distributed load in N
         per metre of unstretched cable, y up (concentrated loads not included).
         """
-        x = np.linspace(0.0, float(self.span), _count("n", n, 2))
+        x = np.linspace(0.0, float(self.span), whole("n", n, 2))
         slope = np.asarray(self.slope(x), dtype=float)
         weight = np.broadcast_to(self.weight_per_length(x, slope), x.shape)
         return {
@@ -125,16 +125,9 @@ class CableSolution:
 
     def points(self, n: int = 101) -> np.ndarray:
         """Profile sampled at ``n`` equally spaced x: array ``(*shape, n, 2)``."""
-        x = np.multiply.outer(np.linspace(0.0, 1.0, _count("n", n, 2)), self.span)  # (n, *shape)
+        x = np.multiply.outer(np.linspace(0.0, 1.0, whole("n", n, 2)), self.span)  # (n, *shape)
         xy = np.stack([x, np.broadcast_to(self.y(x), x.shape)], axis=-1)
         return np.moveaxis(xy, 0, -2)
-
-
-def _count(name: str, n, least: int) -> int:
-    if isinstance(n, (bool, np.bool_)) or not isinstance(n, (int, np.integer)):
-        raise InputError(name, f"must be an integer, got {n!r}")
-    require(name, n >= least, f"must be at least {least}", n)
-    return int(n)
 
 
 #: The shown attributes a closed form's residual does not evaluate (a finite

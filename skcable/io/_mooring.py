@@ -17,6 +17,7 @@ from pathlib import Path
 import meshio
 import numpy as np
 
+from skcable._checks import whole
 from skcable.errors import InputError
 from skcable.io._atomic import atomic_path, writable_file
 
@@ -38,15 +39,9 @@ def _body_box(result) -> np.ndarray:
     return x0 + corners @ R.T
 
 
-def _checked_n(n) -> int:
-    if isinstance(n, bool) or not isinstance(n, (int, np.integer)) or n < 2:
-        raise InputError("n", f"must be an integer >= 2, got {n!r}")
-    return int(n)
-
-
 def _polylines(lines, n):
     """Points, tension, segment cells and line numbers of lines with ``profile(n)``."""
-    n = _checked_n(n)
+    n = whole("n", n, 2)
     profiles = [line.profile(n) for line in lines]
     if not profiles:
         raise InputError("lines", "holds no line")

@@ -39,7 +39,7 @@ from scipy.linalg import eigh
 from skfem import Basis, BilinearForm, ElementLineHermite, MeshLine
 from skfem.helpers import dd, ddot
 
-from skcable._checks import nonnegative, positive, scalar
+from skcable._checks import nonnegative, positive, scalar, whole
 from skcable.errors import ConvergenceError, InputError
 
 __all__ = [
@@ -55,14 +55,6 @@ _ENDS = ("clamped", "pinned")
 
 def _scalar(name, value, check=positive):
     return check(name, scalar(name, value))
-
-
-def _count(n_modes, top=40):
-    if isinstance(n_modes, (bool, np.bool_)) or not isinstance(n_modes, (int, np.integer)):
-        raise InputError("n_modes", f"must be a positive integer, got {n_modes!r}")
-    if not 1 <= n_modes <= top:
-        raise InputError("n_modes", f"must lie in [1, {top}], got {n_modes}")
-    return int(n_modes)
 
 
 def pinned_beam_frequencies(EI, N, length, mass_per_length, *, n_modes=6):
@@ -91,7 +83,7 @@ def pinned_beam_frequencies(EI, N, length, mass_per_length, *, n_modes=6):
     """
     EI, length, m = _scalar("EI", EI), _scalar("length", length), _scalar("mass_per_length", mass_per_length)
     N = _scalar("N", N, nonnegative)
-    n = np.arange(1, _count(n_modes) + 1)
+    n = np.arange(1, whole("n_modes", n_modes, 1, 40) + 1)
     k = n * np.pi / length
     return k**2 * np.sqrt(EI / m) * np.sqrt(1.0 + N / (k**2 * EI)) / (2.0 * np.pi)
 
@@ -175,7 +167,7 @@ def beam_frequencies(EI, N, length, mass_per_length, *, ends="clamped", n_modes=
     N = _scalar("N", N, nonnegative)
     if not isinstance(ends, str) or ends not in _ENDS:
         raise InputError("ends", f"must be one of {_ENDS}, got {ends!r}")
-    n_modes = _count(n_modes)
+    n_modes = whole("n_modes", n_modes, 1, 40)
     if n_elements is None:
         n_elements = max(96, 16 * n_modes)
     if isinstance(n_elements, (bool, np.bool_)) or not isinstance(n_elements, (int, np.integer)):

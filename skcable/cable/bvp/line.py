@@ -88,7 +88,7 @@ import scipy.sparse as sp
 from scipy.optimize import brentq
 from skfem import Basis, ElementLineP1DG, ElementLineP2, MeshLine
 
-from skcable._checks import nonnegative, positive, real, require
+from skcable._checks import nonnegative, positive, real, require, whole
 from skcable.cable._elastic import elastic_catenary as free_catenary
 from skcable.cable.bvp.arc import _AX, _AY, _STRAINS, _T
 from skcable.cable.bvp.assembly import LineAssembly
@@ -952,15 +952,6 @@ class LineBVPSolution:
         )
 
 
-def _whole(name, value, low, high):
-    """``value`` an integer (not a bool, not a float) in ``[low, high]``, else InputError."""
-    if isinstance(value, (bool, np.bool_)) or not isinstance(value, (int, np.integer)):
-        raise InputError(name, f"must be a whole number (an int), got {value!r}")
-    if value < low or (high is not None and value > high):
-        raise InputError(name, f"must lie in [{low}, {high if high is not None else '∞'}], got {value!r}")
-    return int(value)
-
-
 def solve_line_bvp(
     span,
     dh,
@@ -1062,9 +1053,9 @@ def solve_line_bvp(
             raise InputError("point_loads", f"each is (s, P) with two numbers, got {item!r}")
         require("point_loads", 0.0 < s < L, "s must lie strictly inside the line (0, length)", s)
         loads.append((float(s), float(P)))
-    _whole("n_elements", n_elements, 1, None)
-    _whole("fit_touchdown", fit_touchdown, 0, 10)
-    _whole("max_iter", max_iter, 1, None)
+    whole("n_elements", n_elements, 1)
+    whole("fit_touchdown", fit_touchdown, 0, 10)
+    whole("max_iter", max_iter, 1)
     rtol = positive("rtol", rtol)
     name = "solve_line_bvp"
 

@@ -48,7 +48,7 @@ from functools import cached_property, lru_cache
 
 import numpy as np
 
-from skcable._checks import real
+from skcable._checks import real, whole
 from skcable.errors import InputError
 
 __all__ = ["Line3D", "line_3d", "point", "takes_start"]
@@ -142,9 +142,8 @@ class Line3D:
         Returns ``(points, tension)``: points (n, 3) in global axes (m) and the
         tension there (N), from the model's ``x_of_s, y_of_s, T_of_s``.
         """
-        if isinstance(n, bool) or not isinstance(n, (int, np.integer)) or n < 2:
-            raise InputError("n", f"must be an integer >= 2, got {n!r}")
-        s = np.linspace(0.0, float(self.solution.length), int(n))
+        n = whole("n", n, 2)
+        s = np.linspace(0.0, float(self.solution.length), n)
         points = self.to_global(self.solution.x_of_s(s), self.solution.y_of_s(s))
         tension = np.asarray(self.solution.T_of_s(s), dtype=float)
         if not (np.isfinite(points).all() and np.isfinite(tension).all()):

@@ -50,7 +50,7 @@ from itertools import zip_longest
 
 import numpy as np
 
-from skcable._checks import broadcast, float_range, nonnegative, positive, real, require
+from skcable._checks import broadcast, float_range, nonnegative, positive, real, require, whole
 from skcable._xp import namespace, scalar_math
 from skcable.cable._elastic import ElasticCatenary, elastic_stiffness, inverse_2x2
 from skcable.cable._elastic import elastic_catenary as free_elastic_catenary
@@ -669,7 +669,7 @@ class SeabedCatenary(CableSolution):
         rising to B) and 0 on the seabed between."""
         if not (self._any_heap and np.ndim(self.heap) == 0):
             return super().samples(n)
-        x = np.linspace(0.0, float(self.span), _sample_count(n))
+        x = np.linspace(0.0, float(self.span), whole("n", n, 2))
         angle = np.zeros_like(x)
         angle[-1] = 0.5 * np.pi
         if self._V1 > 0:
@@ -739,12 +739,6 @@ class SeabedCatenary(CableSolution):
         if np.ndim(self.heap) == 0:
             return text[:-1] + "; heap: H = 0, the slack lies on the seabed)"
         return text[:-1] + f"; heap at {int(np.count_nonzero(self.heap))} of {np.size(self.heap)} elements)"
-
-
-def _sample_count(n):
-    if isinstance(n, (bool, np.bool_)) or not isinstance(n, (int, np.integer)) or n < 2:
-        raise InputError("n", f"must be an integer >= 2, got {n!r}")
-    return int(n)
 
 
 def _heap_where(heap, value, taut):

@@ -47,7 +47,7 @@ from functools import cached_property
 
 import numpy as np
 
-from skcable._checks import nonnegative, positive, real, require, scalar
+from skcable._checks import nonnegative, positive, real, require, scalar, whole
 from skcable._xp import scalar_math
 from skcable.cable._roots import find_root
 from skcable.cable._special import asinh_diff
@@ -893,8 +893,7 @@ class LineSolution:
     def profile(self, n=200):
         """``(x, y)`` arrays of ``n`` points evenly spaced in unstretched arc length, plus the joints
         and the touchdown, sorted along the line (the grounded part on the seabed)."""
-        if isinstance(n, (bool, np.bool_)) or not isinstance(n, (int, np.integer)) or n < 2:
-            raise InputError("n", f"must be an integer >= 2, got {n!r}")
+        n = whole("n", n, 2)
         self._expand()
         st = self._st
         s = np.concatenate([np.linspace(0.0, self.length, max(n, 2)), self._s0, [self._s0[st.k] + st.a]])
