@@ -3,13 +3,19 @@
 Bad input raises `InputError` (a `ValueError`) naming the
 argument and the reason; a solver that does not converge raises
 `ConvergenceError` carrying its iteration history.
+
+Warnings say what is suspicious but not wrong: `PlausibilityWarning` for data
+that a unit slip would explain (an EA in MN, a strain beyond any wire's),
+`SlowConvergenceWarning` for a Newton that converges at a linear rate where its
+tangent promises a quadratic one (a term's tangent is likely wrong), and
+`CacheWarning` for a cached study result computed by other code.
 """
 
 from __future__ import annotations
 
 from collections.abc import Sequence
 
-__all__ = ["InputError", "ConvergenceError"]
+__all__ = ["InputError", "ConvergenceError", "PlausibilityWarning", "SlowConvergenceWarning", "CacheWarning"]
 
 
 class InputError(ValueError):
@@ -40,3 +46,26 @@ class ConvergenceError(RuntimeError):
         tail = ", ".join(f"{h:.3e}" for h in self.history[-8:])
         more = f" (last {min(8, len(self.history))} of {len(self.history)}: {tail})" if self.history else ""
         super().__init__(message + more)
+
+
+class PlausibilityWarning(UserWarning):
+    """Data that solve but are unlikely to be meant (a unit slip, say).
+
+    Attributes
+    ----------
+    argument : str
+        Name of the suspicious argument, as spelled in the public API.
+    """
+
+    def __init__(self, argument: str, reason: str):
+        self.argument = argument
+        super().__init__(f"{argument}: {reason}")
+
+
+class SlowConvergenceWarning(RuntimeWarning):
+    """A Newton iteration converged at a linear rate where its tangent should give a quadratic
+    one: a term's tangent is probably not the derivative of its residual."""
+
+
+class CacheWarning(UserWarning):
+    """A cached result was computed by other code (another source fingerprint) and is recomputed."""

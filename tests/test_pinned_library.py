@@ -1,0 +1,36 @@
+"""Every domain's numbers pinned from the code before the one-library restructuring.
+
+``python tests/pinned_library.py`` recorded them (its commit is in the JSON file) on ordinary
+scenes; the library must reproduce each array to 1e-12 of its largest entry (bit-for-bit where
+no operation order changed).
+"""
+
+import json
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from tests.pinned_library import CASES
+
+#: eigenvalues come from iterative or threaded eigensolvers whose results move by 1e-12 to 1e-10
+#: with the BLAS thread count: pinned to 1e-9 (the frequencies' own accuracy is checked elsewhere)
+TOLERANCE = {("conductor", "natural_frequencies"): 1e-9, ("strand", "strand_frequencies"): 1e-9}
+PINNED = json.loads((Path(__file__).parent / "data" / "pinned_library.json").read_text())
+
+
+@pytest.mark.parametrize("group", sorted(CASES))
+def test_library_numbers_are_unchanged(group):
+    expected = PINNED["groups"][group]
+    computed = CASES[group]()
+    assert sorted(computed) == sorted(expected)
+    for case, values in expected.items():
+        assert sorted(computed[case]) == sorted(values), case
+        for key, pinned in values.items():
+            want = np.array(pinned["values"], dtype=float).reshape(pinned["shape"])
+            got = np.asarray(computed[case][key], dtype=float)
+            assert got.shape == want.shape, (case, key)
+            scale = float(np.max(np.abs(want), initial=0.0)) or 1.0
+            np.testing.assert_allclose(
+                got, want, rtol=0, atol=TOLERANCE.get((group, case), 1e-12) * scale, err_msg=f"{case}.{key}"
+            )
