@@ -197,6 +197,7 @@ class StrandModel:
         self._other_terms = [(i, t) for i, t in enumerate(self._bound) if not isinstance(t, SectionTerm)]
         self._system = LinearSystem(self.assembly.banded(self.free))
         self._groups = self._equation_groups()
+        self._group_index = self._index_groups()
         self._metric = None  # the elastic tangent of the straight strand, in the solver's storage
         self.layout = self._layout()
         self._init = dict(
@@ -255,6 +256,10 @@ class StrandModel:
             raise InputError("supports", "fix a dof twice (both ends on one node?)")
         self.fixed, self.fixed_values = fixed, values
         self.free = np.setdiff1d(np.arange(self.assembly.N), np.append(fixed, self.pull))
+        self._reaction_dofs = {
+            end: {dof: self.supports.index(end, dof, self.bases, offsets) for dof in given}
+            for end, given in (("left", self.supports.left), ("right", self.supports.right))
+        }
 
     def _equation_groups(self):
         """Dofs of equations of one kind: per field, the values, and the slopes of v and w.
@@ -273,6 +278,18 @@ class StrandModel:
                 dofs = offset + dofs
                 groups.append((dofs, dofs[free[dofs]], name == "phi" or k == 1))
         return groups
+
+    def _index_groups(self):
+        """The groups of `_equation_groups` as flat index arrays for ``np.maximum.reduceat``."""
+        groups = self._groups
+        self._has_free = np.array([free.size > 0 for _, free, _ in groups])
+        order = np.concatenate([dofs for dofs, _, _ in groups])
+        starts = np.cumsum([0] + [len(dofs) for dofs, _, _ in groups[:-1]])
+        with_free = [free for _, free, _ in groups if free.size]
+        free_order = np.concatenate(with_free)
+        free_starts = np.cumsum([0] + [len(f) for f in with_free[:-1]])
+        moment = np.array([is_moment for _, _, is_moment in groups])
+        return order, starts, free_order, free_starts, moment, np.where(moment, self.length, 1.0)
 
     def _layout(self) -> StrandLayout:
         w = self.strand.wires()
@@ -481,17 +498,12 @@ class StrandModel:
     def _norm(self, a, tol: float) -> float:
         """The largest residual of each group of equations over its force scale, or over its
         round-off floor divided by the tolerance where that is larger (module docstring)."""
-        R, size = a["R"], a["size"]
-        scales = [float(np.max(size[dofs], initial=0.0)) for dofs, _, _ in self._groups]
-        forces = max(
-            (s for s, (_, _, moment) in zip(scales, self._groups, strict=True) if not moment), default=0.0
-        )
-        floor = ROUND_OFF * forces / tol
-        worst = [
-            np.max(np.abs(R[free])) / max(s, floor * (self.length if moment else 1.0), 1e-300)
-            for s, (_, free, moment) in zip(scales, self._groups, strict=True)
-            if free.size
-        ]
+        order, starts, free_order, free_starts, moment, length = self._group_index
+        scales = np.maximum.reduceat(a["size"][order], starts)
+        forces = float(np.max(np.where(moment, 0.0, scales)))
+        floor = ROUND_OFF * forces / tol * length  # the moment groups' floor times the length
+        residual = np.maximum.reduceat(np.abs(a["R"][free_order]), free_starts)
+        worst = residual / np.maximum(np.maximum(scales[self._has_free], floor[self._has_free]), 1e-300)
         return float(np.max(worst, initial=0.0)) if np.isfinite(forces) else float("nan")  # NaN stays NaN
 
     def _solver(self, first, options: NewtonOptions) -> str:
@@ -732,11 +744,7 @@ class StrandModel:
 
     def _reactions(self, R) -> dict:
         """The support reactions: ``{"left": {dof: force}, "right": {...}}`` (N, N·m)."""
-        offsets = {name: int(self.offsets[i]) for i, name in enumerate(FIELDS)}
-        return {
-            end: {dof: float(R[self.supports.index(end, dof, self.bases, offsets)]) for dof in values}
-            for end, values in (("left", self.supports.left), ("right", self.supports.right))
-        }
+        return {end: {dof: float(R[i]) for dof, i in at.items()} for end, at in self._reaction_dofs.items()}
 
     def capacity_curve(self, max_strain=None, n_steps=None, **kwargs):
         """Force–strain curve up to rupture (see [`capacity_curve`][skcable.strand.capacity_curve])."""
