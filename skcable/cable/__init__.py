@@ -58,8 +58,15 @@ from skcable.cable.lines import (
     sloped_seabed_catenary,
 )
 from skcable.cable.solution import CableSolution
+from skcable.cable.terms import Buoyancy, CableForce, CableState, CableTerm, CurrentDrag, WindDrag
 
 __all__ = [
+    "Buoyancy",
+    "CableForce",
+    "CableState",
+    "CableTerm",
+    "CurrentDrag",
+    "WindDrag",
     "ArcSolution",
     "BVPSegment",
     "LineBVPSolution",
