@@ -143,7 +143,8 @@ ROOT = Path(__file__).resolve().parents[2] / "skcable"
 
 
 def _import_graph():
-    """Every skcable module and the skcable modules it imports (function-level imports included)."""
+    """Every skcable module and the skcable modules it imports (function-level imports included,
+    ``if TYPE_CHECKING:`` blocks and lazy names served by `skcable._lazy` not)."""
     modules = {}
     for path in ROOT.rglob("*.py"):
         parts = path.relative_to(ROOT.parent).with_suffix("").parts
@@ -152,7 +153,11 @@ def _import_graph():
     for name, path in modules.items():
         package = name if path.name == "__init__.py" else name.rpartition(".")[0]
         found = set()
-        for node in ast.walk(ast.parse(path.read_text())):
+        tree = ast.parse(path.read_text())
+        for node in ast.walk(tree):  # what static tools alone see is not imported
+            if isinstance(node, ast.If) and getattr(node.test, "id", "") == "TYPE_CHECKING":
+                node.body = []
+        for node in ast.walk(tree):
             if isinstance(node, ast.Import):
                 found.update(alias.name for alias in node.names)
             elif isinstance(node, ast.ImportFrom):
