@@ -15,6 +15,7 @@ import pytest
 
 import skcable
 from skcable import cable, cli, strand
+from skcable.cli import _args
 from skcable.errors import ConvergenceError
 
 ROOT = Path(skcable.__file__).resolve().parents[1]
@@ -104,8 +105,11 @@ def test_readable_table(capsys):
     status, out, _ = main(capsys, "catenary", "--span", "200", "--w", "1", "--sag", "20")
     assert status == 0
     rows = dict(map(str.strip, line.split(" = ")) for line in out.strip().splitlines())
-    assert float(rows["H"]) == float(f"{cable.catenary(200, 0, 1, sag=20).H:.10g}")
-    assert round(float(rows["H"]), 4) == 253.2649  # Goicolea 2012, ex. 5
+    values = {name: shown.split(" ", 1) for name, shown in rows.items()}
+    assert float(values["H"][0]) == float(f"{cable.catenary(200, 0, 1, sag=20).H:.10g}")
+    assert round(float(values["H"][0]), 4) == 253.2649  # Goicolea 2012, ex. 5
+    units = {name: value[1] for name, value in values.items() if len(value) == 2}
+    assert units["H"] == units["T_A"] == units["V_B"] == "N" and units["length"] == units["sag"] == "m"
 
 
 def test_strand_section_json_is_the_api(capsys):
@@ -247,12 +251,12 @@ def _options(parser):
 
 
 def test_every_flag_has_help_with_its_default_and_units():
-    options = list(_options(cli._parser()))
+    options = list(_options(cli.parser()))
     assert len(options) > 40
     for where, action in options:
         flag = f"{where}{action.option_strings[-1]}"
         assert action.help and ("(default:" in action.help or "(required)" in action.help), flag
-        if action.type is cli._finite:  # a quantity: its unit in brackets
+        if action.type is _args.finite:  # a quantity: its unit in brackets
             assert "[" in action.help and "]" in action.help, flag
 
 
@@ -431,7 +435,8 @@ def test_frequencies_json_and_vtk_are_the_api(tmp_path, capsys):
     assert (got["H"], got["lambda2"], got["L_e"]) == (api.H, api.lambda2, api.L_e)
     assert got["irvine_in_plane"] == api.irvine["in_plane"].tolist()
     assert got["vtk"] == str(path)
-    np.testing.assert_array_equal(meshio.read(path).point_data["in_plane_2"][:, 1], api.modes_in_plane[1])
+    shape = meshio.read(path).point_data["in_plane_2_m_per_sqrt_kg"]
+    np.testing.assert_array_equal(shape[:, 1], api.modes_in_plane[1])
 
 
 @pytest.mark.parametrize(

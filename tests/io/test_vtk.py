@@ -43,8 +43,8 @@ def test_cable_profile_round_trip(tmp_path, solve):
     np.testing.assert_allclose(grid.points, mesh.points)
     x, y = mesh.points[:, 0], mesh.points[:, 1]
     np.testing.assert_allclose([x[0], y[0], x[-1], y[-1]], [0, 0, 800, -20], atol=1e-9)
-    T, angle, load = (mesh.point_data[k] for k in ("tension", "angle", "load"))
-    np.testing.assert_allclose(grid.point_data["tension"], T)
+    T, angle, load = (mesh.point_data[k] for k in ("tension_N", "angle_rad", "load_N_per_m"))
+    np.testing.assert_allclose(grid.point_data["tension_N"], T)
     # statics: the horizontal component of the tension is H everywhere (no horizontal load);
     # the arc form's P1 tension and P2 slope meet it to the discretisation error (h^2)
     rtol = 1e-4 if isinstance(sol, cable.ArcSolution) else 1e-6
@@ -60,10 +60,10 @@ def test_funicular_round_trip(tmp_path):
     sol = cable.funicular((20, 2), [5, 6, 6, 5], [(5, -75), (10, -100), (5, -75)])
     mesh = meshio.read(sol.to_vtk(tmp_path / "f.vtu"))
     np.testing.assert_allclose(mesh.points[:, :2], sol.nodes)
-    np.testing.assert_allclose(mesh.cell_data["tension"][0], sol.T)
-    np.testing.assert_allclose(mesh.cell_data["tension"][0][0], 233.04, atol=0.005)  # seed 000 ex. 1
+    np.testing.assert_allclose(mesh.cell_data["tension_N"][0], sol.T)
+    np.testing.assert_allclose(mesh.cell_data["tension_N"][0][0], 233.04, atol=0.005)  # notes "Cables", ex. 1
     vertical = cable.funicular_vertical(10, -1, [(1, 50), (3, 30), (7, 40)], through=(3, -5))
-    loads = meshio.read(write(funicular_mesh(vertical), tmp_path / "v.vtu")).point_data["load"]
+    loads = meshio.read(write(funicular_mesh(vertical), tmp_path / "v.vtu")).point_data["load_N"]
     np.testing.assert_allclose(loads[:, 1], [0, -50, -30, -40, 0])
 
 
