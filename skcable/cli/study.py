@@ -19,12 +19,8 @@ def _check(args):
 
     try:  # the study file's own mistakes are named by the file and its key, not by a flag
         spec = study.load_study(args.path)
-        if args.out is None:
-            table = study.check_output("output", spec["output"])
-            if table.exists() and not args.force:
-                raise Usage(
-                    f"{args.path}: output {str(table)!r} exists: give --force to overwrite it, or --out"
-                )
+        if args.out is None:  # a rerun rewrites its own table (its cache makes that cheap)
+            study.check_output("output", spec["output"])
         if args.cache is None and spec["cache"] is not None:
             writable_dir("cache", spec["cache"])  # a study file's folders are created as needed
     except InputError as exc:
@@ -97,5 +93,10 @@ def register(sub, command) -> None:
     st.add_argument(
         "--cache", metavar="DIR", help="folder of finished cases (default: the study file's cache, if any)"
     )
-    st.add_argument("--force", action="store_true", help="overwrite an existing table (default: refuse)")
+    st.add_argument(
+        "--force",
+        action="store_true",
+        help="overwrite an existing --out table (default: refuse; the study file's own output is "
+        "rewritten by a rerun)",
+    )
     st.add_argument("--no-progress", action="store_true", help="no progress bar on stderr (default: shown)")

@@ -22,6 +22,7 @@ from __future__ import annotations
 import numpy as np
 from skfem import Basis, ElementLineHermite, ElementLineP2, MeshLine
 
+from skcable import _plausible
 from skcable._checks import nonnegative, positive
 from skcable.errors import ConvergenceError, InputError
 from skcable.fe import StrainAssembly, minimize, newton
@@ -397,6 +398,7 @@ class StrandModel:
         strain = float(strain)
         if not np.isfinite(strain):
             raise InputError("strain", f"must be finite, got {strain!r}")
+        _plausible.strand_strain("strain", strain, [m.eps_rupture for m in self.strand.materials])
         state = self.initial_state() if state is None else tuple(state)
         result = self._newton(guess, strain, state, tol, max_iter)
         settled, seen, assemblies, shifted = True, [state], result.assemblies, result.shifted
