@@ -406,25 +406,28 @@ def test_change_of_state_single_state_by_sag(capsys):
     assert f"{api.H:.10g}" in out and f"{api.sag:.10g}" in out
 
 
+_FREQUENCIES = (
+    "frequencies",
+    "--span",
+    "250",
+    "--dh",
+    "12",
+    "--EA",
+    "2e7",
+    "--w",
+    "12",
+    "--sag",
+    "6",
+    "--n-modes",
+    "3",
+)
+
+
 def test_frequencies_json_and_vtk_are_the_api(tmp_path, capsys):
     import meshio
 
     path = tmp_path / "modes.vtu"
-    args = (
-        "frequencies",
-        "--span",
-        "250",
-        "--dh",
-        "12",
-        "--EA",
-        "2e7",
-        "--w",
-        "12",
-        "--sag",
-        "6",
-        "--n-modes",
-        "3",
-    )
+    args = _FREQUENCIES
     status, out, err = main(capsys, *args, "--g", "9.8", "--vtk", path, "--json")
     assert status == cli.EXIT_OK, err
     got = json.loads(out)
@@ -620,21 +623,7 @@ def test_change_of_state_prints_a_table_per_state_with_units(capsys):
 
 
 def test_frequencies_print_labelled_by_mode_and_plane(capsys):
-    args = (
-        "frequencies",
-        "--span",
-        "250",
-        "--dh",
-        "12",
-        "--EA",
-        "2e7",
-        "--w",
-        "12",
-        "--sag",
-        "6",
-        "--n-modes",
-        "3",
-    )
+    args = _FREQUENCIES
     status, out, _ = main(capsys, *args)
     assert status == cli.EXIT_OK
     api = cable.natural_frequencies(250.0, 12.0, 12.0, 2e7, sag=6.0, n_modes=3)
