@@ -11,11 +11,12 @@ friction); ``change-of-state`` and ``frequencies`` a conductor's span;
 runs a study file. Every command takes ``--json`` where it prints numbers;
 without it, results print with their units, arrays as labelled columns.
 
-One module per command group (`demo`, `examples`, `cables`, `strand`, `line`,
-`state`, `frequencies`, `study`), each importing the library inside its
-functions, so that ``skcable --help`` imports no model; shared: `_args`
-(parsing, one-line errors, flag names), `_output` (tables, JSON, output paths),
-`_status` (exit statuses), `_main` (the parser and `main`).
+One private module per command group (``_demo``, ``_examples``, ``_cables``,
+``_strand``, ``_line``, ``_state``, ``_frequencies``, ``_study``, each with
+``register(subparsers, command)``), each importing the library inside its
+functions, so that ``skcable --help`` imports no model; shared: ``_args``
+(parsing, one-line errors, flag names), ``_output`` (tables, JSON, output
+paths), ``_status`` (exit statuses), ``_main`` (the parser and `main`).
 
 Errors are one line on stderr naming the flag, never a traceback; the exit
 status says what happened (`EXIT_STATUS`, also in ``skcable --help``).

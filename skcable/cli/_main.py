@@ -9,7 +9,7 @@ import os
 import sys
 import warnings
 
-from skcable.cli import cables, demo, examples, frequencies, line, state, strand, study
+from skcable.cli import _cables, _demo, _examples, _frequencies, _line, _state, _strand, _study
 from skcable.cli._args import Parser, given_numbers, input_message, warning_message
 from skcable.cli._status import (
     EXIT_ERROR,
@@ -23,7 +23,7 @@ from skcable.cli._status import (
 __all__ = ["main", "parser"]
 
 #: The command modules, in the order of ``skcable --help``; each has ``register(sub, command)``.
-COMMANDS = (demo, examples, cables, strand, line, state, frequencies, study)
+COMMANDS = (_demo, _examples, _cables, _strand, _line, _state, _frequencies, _study)
 
 
 class _Version(argparse.Action):
@@ -45,8 +45,8 @@ def _epilog() -> str:
     )
     sources = (
         "SI units (m, N, Pa) unless a flag says otherwise; results print their units. Sources of the "
-        f"worked examples and of the strand model: {examples.NOTES}; {examples.GOICOLEA}; "
-        f"{examples.PINO_VIDAL}."
+        f"worked examples and of the strand model: {_examples.NOTES}; {_examples.GOICOLEA}; "
+        f"{_examples.PINO_VIDAL}."
     )
     debug = "SKCABLE_DEBUG=1 shows the traceback of an unexpected error."
     return f"exit status:\n{statuses}\n\n{textwrap.fill(sources, 80)}\n{debug}"

@@ -3,7 +3,7 @@ broken wire (Pino Vidal 2021, §4.3), written as CSV, VTK for ParaView and PNG f
 
 from __future__ import annotations
 
-from skcable.cli.strand import curve_files, mesh_flags
+from skcable.cli._strand import curve_files, mesh_flags
 
 __all__ = ["register"]
 
@@ -14,7 +14,7 @@ def _run(args) -> int:
     from skcable import strand
     from skcable.cli._output import output_dir
     from skcable.cli._status import EXIT_OK
-    from skcable.cli.strand import run_curve, stopped, summary, write_staged
+    from skcable.cli._strand import run_curve, stopped, summary, write_staged
     from skcable.errors import ConvergenceError
 
     out = output_dir("--out", args.out, args.force, curve_files(_LABELS.values()))

@@ -5,7 +5,7 @@ from __future__ import annotations
 
 from skcable.cli._args import finite, whole
 from skcable.cli._output import print_json, quantities, table
-from skcable.cli.state import listed, span_flags
+from skcable.cli._state import listed, span_flags
 
 __all__ = ["register"]
 

@@ -5,8 +5,8 @@ free (Jonkman 2007)."""
 from __future__ import annotations
 
 from skcable.cli._args import finite
+from skcable.cli._cables import output_flags, vtk_path
 from skcable.cli._output import print_json, quantities, table
-from skcable.cli.cables import output_flags, vtk_path
 
 __all__ = ["register"]
 
