@@ -14,7 +14,7 @@ message: the refusal):
   weight alone would stretch it a hundredfold (EA typed in MN, say; test lines as stretchy
   as rubber, ``EA`` about ``w L``, stay quiet).
 
-Scalar floats take a fast path (a comparison of floats); arrays one ``np.any``.
+Floats (NumPy scalars too) take a fast path, a comparison of floats; arrays one ``np.any``.
 """
 
 from __future__ import annotations
@@ -45,7 +45,7 @@ MAX_ALPHA = 1e-4
 
 def _largest(value) -> float:
     """The largest element (a float as it is); NaN is refused by the callers' own checks."""
-    if type(value) is float:
+    if isinstance(value, float):
         return value
     return float(np.max(value))
 
@@ -59,7 +59,7 @@ def stiffness(EA, w, length, argument: str = "EA") -> None:
     stretch it a hundredfold, which no material does (rubber-like test lines, stretched by
     their length, stay quiet). The message names ``EA`` alone, so that the solves inside a
     change of state, say, repeat the same line (shown once)."""
-    if type(EA) is float and type(w) is float and type(length) is float:
+    if isinstance(EA, float) and isinstance(w, float) and isinstance(length, float):
         if EA >= MIN_STIFFNESS * w * length:
             return
         least = EA
@@ -112,7 +112,7 @@ def strand_strain(argument: str, strain, rupture) -> None:
     """Warn if an imposed strain exceeds 5 % and 1.5 times the largest rupture strain of the
     strand's wires (``rupture``: one value or several): no wire survives it."""
     limit = max(MAX_STRAIN, 1.5 * _largest(np.asarray(rupture, dtype=float)))
-    largest = _largest(np.abs(strain)) if type(strain) is not float else abs(strain)
+    largest = _largest(np.abs(strain)) if not isinstance(strain, float) else abs(strain)
     if largest > limit:
         _warn(
             argument,
