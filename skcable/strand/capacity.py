@@ -329,26 +329,37 @@ class CapacityCurve:
         )
         return path
 
-    def step_mesh(self, step: int, *, wires: bool = False, scale: float = 1.0, radial_scale: float = 1.0):
+    def step_mesh(
+        self, step: int, *, wires: bool = False, scale: float = 1.0, radial_scale: float = 1.0, fields=None
+    ):
         """The strand (or, with ``wires``, its wires) at one step as a meshio mesh
-        ([`strand_mesh`][skcable.io.strand_mesh], [`wire_mesh`][skcable.io.wire_mesh])."""
+        ([`strand_mesh`][skcable.io.strand_mesh], [`wire_mesh`][skcable.io.wire_mesh]);
+        ``fields(step) -> (point_data, cell_data)`` adds the user's arrays to the axis."""
         from skcable.io import strand_mesh, wire_mesh
 
         if not -len(self.steps) <= step < len(self.steps):
             raise InputError("step", f"must index one of the {len(self.steps)} steps, got {step!r}")
         result = self.steps[step]
-        return wire_mesh(result, scale=scale, radial_scale=radial_scale) if wires else strand_mesh(result)
+        if wires:
+            return wire_mesh(result, scale=scale, radial_scale=radial_scale)
+        point_data, cell_data = (None, None) if fields is None else fields(result)
+        return strand_mesh(result, point_data=point_data, cell_data=cell_data)
 
-    def to_vtk(self, path, *, wires: bool = False, scale: float = 1.0, radial_scale: float = 1.0):
+    def to_vtk(
+        self, path, *, wires: bool = False, scale: float = 1.0, radial_scale: float = 1.0, fields=None
+    ):
         """Write every step as a ParaView time series ``path`` (``.pvd`` + one ``.vtu`` per step,
-        time = imposed axial strain). With ``wires``, also ``<stem>_wires.pvd``. Returns the paths."""
+        time = imposed axial strain), the terms' outputs included. With ``wires``, also
+        ``<stem>_wires.pvd``; ``fields(step) -> (point_data, cell_data)`` adds the user's arrays
+        (dicts of name to values at the nodes or quadrature points / per element, or None) to
+        every step. Returns the paths."""
         from pathlib import Path
 
         from skcable.io import write_series
 
         path = Path(path)
         times = [s.strain for s in self.steps]
-        out = [write_series((self.step_mesh(i) for i in range(len(self.steps))), times, path)]
+        out = [write_series((self.step_mesh(i, fields=fields) for i in range(len(self.steps))), times, path)]
         if wires:
             meshes = (
                 self.step_mesh(i, wires=True, scale=scale, radial_scale=radial_scale)
