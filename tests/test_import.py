@@ -57,6 +57,14 @@ def test_the_probe_sees_a_heavy_module():  # the subprocess check can fail
     assert loaded_after("from skcable import strand; strand.StrandModel")["skfem"] is True
 
 
+def test_closed_forms_and_mooring_lines_run_without_scikit_fem():
+    """A seabed line's closed form solves with skcable.fe's Newton: that loads no FE machinery."""
+    scene = "cable.elastic_catenary(800.0, 150.0, 1000.0, 5e8, length=850.0, seabed=0.0, friction=0.5)"
+    line = "cable.Line([cable.Segment(300.0, 1000.0, 5e8)], seabed=0.0).solve(280.0, 150.0)"
+    loaded = loaded_after(f"from skcable import cable; {scene}; {line}")
+    assert not loaded["skfem"] and not loaded["pandas"]
+
+
 @pytest.mark.parametrize("package", PACKAGES)
 def test_every_public_name_resolves_and_is_listed(package):
     module = importlib.import_module(package)

@@ -117,7 +117,9 @@ _MOVED = {
     )
 }
 
-__getattr__, __dir__ = attach(__name__, submodules=("bvp", "lines", "solution", "terms"), names=_NAMES, moved=_MOVED)
+__getattr__, __dir__ = attach(
+    __name__, submodules=("bvp", "lines", "solution", "terms"), names=_NAMES, moved=_MOVED
+)
 
 __all__ = [
     "Buoyancy",
