@@ -141,7 +141,7 @@ def bvp_cases():
         "bvp_ice": dict(_forces(a), y=a.y(xs)),
         "bvp_deck": dict(_forces(b), y=b.y(np.linspace(0, 800, 7))),
         "bvp_point_p3": dict(_forces(c), y=c.y(xs)),
-        "bvp_arc_wind": dict(H=d.H, H_B=d.H_B, V_A=d.V_A, V_B=d.V_B, length=d.length),
+        "bvp_arc_wind": dict(H_A=d.H_A, H_B=d.H_B, V_A=d.V_A, V_B=d.V_B, length=d.length),
         "bvp_arc_tmax": dict(H=e.H, V_A=e.V_A, V_B=e.V_B, length=e.length),
         "bvp_low": dict(_forces(f)),
     }
