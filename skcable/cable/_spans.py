@@ -57,8 +57,15 @@ from __future__ import annotations
 
 import numpy as np
 
-from skcable._checks import broadcast, nonnegative, positive, real, scalar
-from skcable.cable._state import _reference_length, _thermal_factor, change_of_state, thermal_catenary
+from skcable._checks import broadcast, nonnegative, real, scalar
+from skcable.cable._state import (
+    _reference_length,
+    _renamed,
+    _thermal_factor,
+    change_of_state,
+    normal,
+    thermal_catenary,
+)
 from skcable.errors import ConvergenceError, InputError
 from skcable.fe import newton
 
@@ -70,7 +77,7 @@ _CLOSURE = 1e-13  # relative closure tolerance of elastic_catenary's Newton
 
 
 def _spans(spans) -> np.ndarray:
-    spans = np.atleast_1d(positive("spans", spans))
+    spans = np.atleast_1d(normal("spans", spans))
     if spans.size == 0:
         raise InputError("spans", "give at least one span")
     if spans.ndim != 1:
@@ -155,29 +162,42 @@ class TensionSection:
 
 
 class _Section:
-    """The equations of one state: spans, strings, unstressed lengths."""
+    """The equations of one state: spans, strings, unstressed lengths.
+
+    The unknowns are ``u = delta / scale`` with ``scale = min(lam, 1)``: a string shorter
+    than 1 m swings by its sine ``s = delta / lam`` (a subnormal length, whose ``delta``
+    underflows, still balances), a longer one by ``delta`` (a huge length does not overflow
+    a column of the Jacobian).
+    """
 
     def __init__(self, spans, dh, L0, EA, w, alpha, t, t0, lam, weight):
         self.spans, self.dh, self.L0, self.EA, self.w = spans, dh, L0, EA, w
         self.alpha, self.t, self.t0 = alpha, t, t0
         self.lam, self.weight = lam, weight
         self.free = lam > 0
+        self.scale = np.where(self.free, np.minimum(lam, 1.0), 1.0)  # of the unknowns (m)
+        # s = u * to_sine: exactly u below 1 m
+        self.to_sine = 1.0 / np.where(self.free & (lam >= 1.0), lam, 1.0)
 
-    def geometry(self, delta):
-        """Clamp rise, d(rise)/d(delta), and each span's (span, dh) for string swings ``delta``."""
-        lam = np.where(self.free, self.lam, 1.0)
-        delta = np.where(self.free, delta, 0.0)
-        root = np.sqrt((lam - delta) * (lam + delta))  # lam cos(phi)
-        rise = np.where(self.free, delta**2 / (lam + root), 0.0)
-        slope = np.where(self.free, delta / np.where(root > 0, root, 1.0), 0.0)
+    def sines(self, u):
+        """``sin phi`` and ``cos phi`` of every string (0 and 1 for a fixed one)."""
+        s = np.where(self.free, u * self.to_sine, 0.0)
+        return s, np.sqrt((1.0 - s) * (1.0 + s))
+
+    def geometry(self, u):
+        """Clamp rise, d(rise)/d(delta), and each span's (span, dh) for the unknowns ``u``."""
+        s, c = self.sines(u)
+        delta = np.where(self.free, u * self.scale, 0.0)
+        rise = self.lam * s * s / (1.0 + c)  # lam (1 - cos phi)
+        slope = s / np.where(c > 0, c, 1.0)
         dx = np.concatenate([[0.0], delta, [0.0]])
         dz = np.concatenate([[0.0], rise, [0.0]])
         span = self.spans + dx[1:] - dx[:-1]
         dh = self.dh + dz[1:] - dz[:-1]
         return rise, slope, span, dh
 
-    def curves(self, delta):
-        _, _, span, dh = self.geometry(delta)
+    def curves(self, u):
+        _, _, span, dh = self.geometry(u)
         if np.any(span <= 0):
             raise InputError("insulator_length", "a string swings so far that a span vanishes")
         # the vectorised Newton of elastic_catenary probes backtracking steps whose closure
@@ -187,18 +207,16 @@ class _Section:
                 span, dh, self.w, self.EA, length=self.L0, alpha=self.alpha, t=self.t, t0=self.t0
             )
 
-    def residual(self, delta):
+    def residual(self, u):
         """Moment balance of every string (N), the spans' solution, and the balance's
-        Jacobian in ``delta`` (strings × strings, rows and columns of fixed strings unused)."""
-        sol = self.curves(delta)
+        Jacobian in ``u`` (strings × strings, rows and columns of fixed strings unused)."""
+        sol = self.curves(u)
         H, V_A, V_B = sol.H, sol.V_A, sol.V_B
-        lam = np.where(self.free, self.lam, 1.0)
-        s = np.where(self.free, delta / lam, 0.0)
-        c = np.sqrt((1.0 - s) * (1.0 + s))
+        s, c = self.sines(u)
         dH = H[1:] - H[:-1]
         load = V_B[:-1] + V_A[1:] + 0.5 * self.weight
         R = dH * c - load * s
-        _, slope, _, _ = self.geometry(delta)
+        _, slope, _, _ = self.geometry(u)
         K = sol.curve.stiffness()  # (n, 2, 2): rows (H, V_B), columns (span, dh)
         n = H.size
         slope_all = np.concatenate([[0.0], slope, [0.0]])
@@ -212,8 +230,9 @@ class _Section:
         dVBd[i, i + 1], dVBd[i, i] = d_right[:, 1], d_left[:, 1]
         dVAd = -dVBd  # V_A + V_B = w L0, fixed
         J = c[:, None] * (dHd[1:] - dHd[:-1]) - s[:, None] * (dVBd[:-1] + dVAd[1:])
-        J = J[:, 1:-1]  # the interior clamps: the strings
-        J[np.diag_indices(n - 1)] += (-dH * s / c - load) / lam
+        # the interior clamps (the strings): d delta / du = scale, ds / du = to_sine
+        J = J[:, 1:-1] * self.scale
+        J[np.diag_indices(n - 1)] += (-dH * s / c - load) * self.to_sine
         return R, sol, J
 
 
@@ -253,7 +272,7 @@ def _solve_state(eqs: _Section, delta0):
         increment=increment,
         tol=_TOL,
         max_iter=_MAX_ITER,
-        admissible=lambda delta: bool(np.all(np.abs(delta[free]) < eqs.lam[free])),
+        admissible=lambda u: bool(np.all(np.abs(u[free] * eqs.to_sine[free]) < 1.0)),
         max_halvings=39,
         stagnation_window=_MAX_ITER,  # no stagnation rule: the floor below decides
         name="tension_section",
@@ -322,10 +341,10 @@ def tension_section(
     if np.ndim(dh) not in (0, 1) or np.size(dh) not in (1, n):
         raise InputError("dh", f"must be one number or one per span ({n}), got shape {np.shape(dh)}")
     dh = np.broadcast_to(np.asarray(dh, dtype=float), (n,)).copy()
-    EA = positive("EA", scalar("EA", EA))
+    EA = normal("EA", scalar("EA", EA))
     alpha, t0 = scalar("alpha", alpha), scalar("t0", t0)
-    w0 = positive("w0", scalar("w0", w0))
-    H0 = positive("H0", scalar("H0", H0))
+    w0 = normal("w0", scalar("w0", w0))
+    H0 = normal("H0", scalar("H0", H0))
     strings = {}
     for name, value in (("insulator_length", insulator_length), ("insulator_weight", insulator_weight)):
         value = nonnegative(name, value)
@@ -335,30 +354,32 @@ def tension_section(
             )
         strings[name] = np.broadcast_to(np.asarray(value, dtype=float), (n - 1,)).copy()
     lam, weight = strings["insulator_length"], strings["insulator_weight"]
-    w, t = positive("w", w), real("t", t)
+    w, t = normal("w", w), real("t", t)
     shape = broadcast(w=w, t=t)
     w_all, t_all = (np.broadcast_to(v, shape).ravel() for v in (w, t))
     _thermal_factor(alpha, t_all, t0)  # raises naming t
 
     # span by span: the scalar path of change_of_state, so that one span's L0 is its L0
-    L0 = np.array([float(_reference_length(a, b, w0, EA, H0, None)) for a, b in zip(spans, dh, strict=True)])
+    with _renamed({"H": "H0", "w": "w0", "length": "H0", "span": "spans"}):
+        L0 = np.array(
+            [float(_reference_length(a, b, w0, EA, H0, None)) for a, b in zip(spans, dh, strict=True)]
+        )
 
     fields = ("H", "V_A", "V_B", "T_max", "sag", "span", "dh")
     out = {name: np.empty((w_all.size, n)) for name in fields}
     out |= {name: np.empty((w_all.size, n - 1)) for name in ("swing", "swing_angle", "clamp_rise")}
     iterations = np.empty(w_all.size, dtype=int)
     worst = 0.0
-    delta = np.zeros(n - 1)
+    u = np.zeros(n - 1)
     for j, (w_j, t_j) in enumerate(zip(w_all, t_all, strict=True)):
         eqs = _Section(spans, dh, L0, EA, float(w_j), alpha, float(t_j), t0, lam, weight)
-        delta, residual, sol, iterations[j] = _solve_state(eqs, delta)  # continuation from the last state
-        rise, _, span_j, dh_j = eqs.geometry(delta)
+        u, residual, sol, iterations[j] = _solve_state(eqs, u)  # continuation from the last state
+        rise, _, span_j, dh_j = eqs.geometry(u)
         worst = max(worst, residual)
         values = dict(
             H=sol.H, V_A=sol.V_A, V_B=sol.V_B, T_max=np.maximum(sol.T_A, sol.T_B), sag=sol.sag,
-            span=span_j, dh=dh_j, swing=delta,
-            swing_angle=np.arcsin(np.where(lam > 0, delta / np.where(lam > 0, lam, 1.0), 0.0)),
-            clamp_rise=rise,
+            span=span_j, dh=dh_j, swing=np.where(eqs.free, u * eqs.scale, 0.0),
+            swing_angle=np.arcsin(eqs.sines(u)[0]), clamp_rise=rise,
         )  # fmt: skip
         for name, value in values.items():
             if not np.all(np.isfinite(value)):

@@ -42,7 +42,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from skcable._checks import broadcast, nonnegative, positive, real, require, scalar
+from skcable._checks import TINY, broadcast, nonnegative, positive, real, require, scalar
 from skcable.cable._catenary import catenary
 from skcable.cable._elastic import elastic_catenary
 from skcable.cable._roots import find_root
@@ -126,18 +126,79 @@ def thermal_catenary(span, dh, w, EA, *, length, alpha, t, t0=0.0):
     return ThermalCatenary(curve, w, EA, length, k)
 
 
-def _thermal_factor(alpha, t, t0):
-    k = 1.0 + alpha * (t - t0)
-    require("t", k > 0, "gives a thermal factor 1 + alpha (t - t0) <= 0", k)
-    return k
+def normal(name, value):
+    """``positive(name, value)``, refusing also a subnormal number (below the smallest normal
+    float, 2.2e-308): a load, stiffness or length there has lost its relative precision."""
+    value = positive(name, value)
+    require(
+        name, np.asarray(value) >= TINY, f"must be at least the smallest normal float ({TINY:.3g})", value
+    )
+    return value
+
+
+#: |alpha| from this (1/K) is no expansion coefficient: a thermal strain out of range blames it.
+_ALPHA_PLAUSIBLE = 1.0
+
+
+def _thermal_factor(alpha, t, t0, *, name="t"):
+    """``k = 1 + alpha (t - t0)``, refused unless the thermal strain lies in (-1, 1).
+
+    A linear thermal strain of 100 % is beyond any material; the bound also keeps
+    ``w/k``, ``EA k`` and ``L0 k`` in the float range. The refusal names ``alpha`` when it
+    is no expansion coefficient (``|alpha| >= 1`` 1/K, or a strain that overflows at a
+    finite ``t - t0``), else the temperature (``name``).
+    """
+    with np.errstate(over="ignore", invalid="ignore"):
+        dt = np.subtract(t, t0)
+        strain = alpha * dt
+    ok = np.isfinite(strain) & (np.abs(strain) < 1.0)
+    if np.all(ok):
+        k = 1.0 + strain
+        return float(k) if np.ndim(k) == 0 else k
+    overflow = not np.all(np.isfinite(strain))
+    if not np.all(np.isfinite(dt)):
+        blame = name
+    else:
+        blame = "alpha" if overflow or abs(alpha) >= _ALPHA_PLAUSIBLE else name
+    bad = np.flatnonzero(~np.atleast_1d(ok))[0]
+    value = float(np.ravel(np.broadcast_to(strain, np.shape(ok)))[bad])
+    raise InputError(
+        blame,
+        f"gives a thermal strain alpha (t - t0) = {value:.3g} (a thermal factor 1 + alpha (t - t0) "
+        f"= {1 + value:.3g}) outside (-1, 1): beyond any material's thermal expansion",
+    )
 
 
 def _plane(span, dh, w, wind):
-    """Resultant load and the span, height difference in its plane."""
+    """Resultant load and the span, height difference in its plane.
+
+    ``span_p² = span² + dh² - dh_p² = span² + (dh wind / q)²``, formed without squaring
+    the span (no overflow for any float span).
+    """
     q = np.hypot(w, wind)
-    dh_p = dh * w / q
-    span_p = np.sqrt(span**2 + dh**2 - dh_p**2)
+    dh_p = dh * (w / q)
+    span_p = np.hypot(span, dh * (wind / q))
     return q, span_p, dh_p
+
+
+class _renamed:  # noqa: N801 - used like a function: ``with _renamed({...}):``
+    """Context re-raising an inner `InputError` under the public name of the argument at fault
+    (the inner solvers name their own arguments: ``H``, ``sag``, ``length``, ``w``)."""
+
+    __slots__ = ("names",)
+
+    def __init__(self, names):
+        self.names = names
+
+    def __enter__(self):
+        return self
+
+    def __exit__(self, kind, exc, traceback):
+        if kind is None or not issubclass(kind, InputError) or exc.argument not in self.names:
+            return False
+        name = self.names[exc.argument]
+        reason = str(exc).split(": ", 1)[-1]
+        raise InputError(name, f"(as {exc.argument} of the solved state) {reason}") from exc
 
 
 def _reference_length(span, dh, w0, EA, H0, sag0):
@@ -159,7 +220,13 @@ def _reference_length(span, dh, w0, EA, H0, sag0):
     # the inextensible length: the elastic cable of that unstressed length
     # sags more; one of 4 T_max/EA less sags less (widened if not)
     hi = guess.length
-    stretch = 4.0 * np.maximum(guess.T_A, guess.T_B) / EA
+    with np.errstate(over="ignore"):
+        stretch = 4.0 * np.maximum(guess.T_A, guess.T_B) / EA
+    if not np.all(np.isfinite(stretch) & (stretch < 1e300)):
+        name = "H0" if H0 is not None else "sag0"
+        raise InputError(
+            name, f"strains the reference state by T/EA = {np.max(stretch) / 4:.3g}: beyond any float"
+        )
     args = np.broadcast_arrays(span, dh, w0, EA, target)
     lo = hi / (1.0 + stretch)
     for _ in range(8):
@@ -256,22 +323,22 @@ def change_of_state(
     if not isinstance(model, str) or model not in _MODELS:
         raise InputError("model", f"must be one of {_MODELS}, got {model!r}")
     span, dh = scalar("span", span), scalar("dh", dh)
-    positive("span", span)
+    normal("span", span)
     EA = scalar("EA", EA)
-    positive("EA", EA)
+    normal("EA", EA)
     alpha, t0 = scalar("alpha", alpha), scalar("t0", t0)
     w0 = scalar("w0", w0)
-    positive("w0", w0)
+    normal("w0", w0)
     if (H0 is None) == (sag0 is None):
         got = "both" if H0 is not None else "neither"
         raise InputError("H0", f"give exactly one of H0, sag0 for the reference state; got {got}")
     if H0 is not None:
         H0 = scalar("H0", H0)
-        positive("H0", H0)
+        normal("H0", H0)
     else:
         sag0 = scalar("sag0", sag0)
-        positive("sag0", sag0)
-    w, t, wind = positive("w", w), real("t", t), nonnegative("wind", wind)
+        normal("sag0", sag0)
+    w, t, wind = normal("w", w), real("t", t), nonnegative("wind", wind)
     shape = broadcast(w=w, t=t, wind=wind)
     w, t, wind = (np.array(np.broadcast_to(v, shape), dtype=float) for v in (w, t, wind))
     k = _thermal_factor(alpha, t, t0)
@@ -279,10 +346,13 @@ def change_of_state(
     chord = np.hypot(span, dh)
     cos0 = span / chord
     if model == "catenary":
-        L0 = _reference_length(span, dh, w0, EA, H0, sag0)
-        ref = elastic_catenary(span, dh, w0, EA, length=L0)
+        ref_name = "H0" if sag0 is None else "sag0"
+        with _renamed({"H": "H0", "sag": "sag0", "w": "w0", "length": ref_name}):
+            L0 = _reference_length(span, dh, w0, EA, H0, sag0)
+            ref = elastic_catenary(span, dh, w0, EA, length=L0)
         H0_out, sag0_out = ref.H, ref.sag
-        sol = elastic_catenary(span_p, dh_p, q / k, EA * k, length=L0 * k)
+        with _renamed({"H": "w", "length": ref_name}):
+            sol = elastic_catenary(span_p, dh_p, q / k, EA * k, length=L0 * k)
         H_plane, sag = sol.H, sol.sag
         T_max, length = np.maximum(sol.T_A, sol.T_B), sol.stretched_length
         for name, value in (("H", H_plane), ("sag", sag)):  # the solver's residual is checked inside
@@ -346,10 +416,11 @@ def sag_tension_table(
         raise InputError("load_cases", f"each value must be a pair (w, wind) of numbers ({exc})") from None
     if loads.shape != (len(names), 2):
         raise InputError("load_cases", "each value must be a pair (w, wind)")
-    res = change_of_state(
-        span, dh, EA=EA, alpha=alpha, w0=w0, t0=t0, H0=H0, sag0=sag0,
-        w=loads[:, :1], t=temps[None, :], wind=loads[:, 1:], model=model,
-    )  # fmt: skip
+    with _renamed({"t": "temperatures", "w": "load_cases", "wind": "load_cases"}):
+        res = change_of_state(
+            span, dh, EA=EA, alpha=alpha, w0=w0, t0=t0, H0=H0, sag0=sag0,
+            w=loads[:, :1], t=temps[None, :], wind=loads[:, 1:], model=model,
+        )  # fmt: skip
     index = pd.MultiIndex.from_product([names, temps], names=["case", "t"])
     data = {
         "w": np.repeat(loads[:, 0], temps.size),

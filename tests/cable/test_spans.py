@@ -90,6 +90,7 @@ def test_jacobian_equals_central_differences():
             for e in np.eye(3)
         ]
     )
+    numeric *= np.minimum(eqs.lam, 1.0)  # the Jacobian is in delta / min(lam, 1)
     np.testing.assert_allclose(J, numeric, rtol=2e-6, atol=1e-6 * np.abs(J).max())
 
 
@@ -204,3 +205,59 @@ def test_a_very_stiff_taut_conductor_converges_to_its_round_off():
     assert 0 < section.moment_residual < 1e-8
     load = section.V_B[:-1] + section.V_A[1:] + 150.0
     np.testing.assert_allclose(np.tan(section.swing_angle), np.diff(section.H) / load, rtol=1e-6)
+
+
+# --- issue 26, D7 and D8 -----------------------------------------------------------------------
+
+
+@pytest.mark.parametrize("length", [1e-300, 5e-324])
+def test_a_vanishing_string_is_a_fixed_clamp(length):
+    """Once a LinAlgError (the Jacobian divided by the string's length): a string of 1e-300 m or
+    a subnormal one holds its clamp as a string of length 0 does (independent spans)."""
+    kw = dict(**CONDUCTOR, w=15.0, t=80.0, insulator_weight=600.0)
+    short = cable.tension_section([100.0, 200.0, 300.0], **kw, insulator_length=length)
+    fixed = cable.tension_section([100.0, 200.0, 300.0], **kw, insulator_length=0.0)
+    alone = [cable.change_of_state(a, 0.0, **CONDUCTOR, w=15.0, t=80.0).H for a in (100.0, 200.0, 300.0)]
+    np.testing.assert_allclose(short.H, fixed.H, rtol=1e-12)
+    np.testing.assert_allclose(fixed.H, alone, rtol=1e-12)
+
+
+def test_a_huge_string_equalises_the_tensions():
+    section = cable.tension_section(
+        [100.0, 200.0], **CONDUCTOR, w=15.0, t=20.0, insulator_length=1e308, insulator_weight=600.0
+    )
+    assert section.H[1] == pytest.approx(section.H[0], rel=1e-9)
+
+
+def test_string_weights_one_per_string():
+    kw = dict(**CONDUCTOR, w=15.0, t=60.0, insulator_length=2.5)
+    spans = [250.0, 450.0, 300.0]
+    same = cable.tension_section(spans, **kw, insulator_weight=[600.0, 600.0])
+    scalar = cable.tension_section(spans, **kw, insulator_weight=600.0)
+    np.testing.assert_array_equal(same.H, scalar.H)
+    heavy = cable.tension_section(spans, **kw, insulator_weight=[600.0, 5000.0])
+    load = heavy.V_B[:-1] + heavy.V_A[1:] + 0.5 * np.array([600.0, 5000.0])  # the weights as given
+    np.testing.assert_allclose(np.tan(heavy.swing_angle), np.diff(heavy.H) / load, rtol=1e-8)
+    for bad in ([600.0], [600.0, 600.0, 600.0], [[600.0, 600.0]], [600.0, -1.0], [600.0, "x"]):
+        with pytest.raises(InputError) as info:
+            cable.tension_section(spans, **kw, insulator_weight=bad)
+        assert info.value.argument == "insulator_weight"
+
+
+@pytest.mark.parametrize(
+    "change, name",
+    [
+        (dict(alpha=1e308), "alpha"),  # once blamed w
+        (dict(t=1e308), "t"),
+        (dict(w0=1e-310), "w0"),
+        (dict(EA=1e-310), "EA"),
+        (dict(H0=1e-300), "H0"),  # once named H
+        (dict(spans=[1e-310, 100.0]), "spans"),
+    ],
+)
+def test_extreme_inputs_name_their_argument(change, name):
+    args = dict(spans=[100.0, 200.0], **CONDUCTOR, w=15.0, t=20.0, **STRINGS) | change
+    spans = args.pop("spans")
+    with pytest.raises(InputError) as info:
+        cable.tension_section(spans, **args)
+    assert info.value.argument == name, info.value
