@@ -51,9 +51,10 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from skcable._checks import nonnegative, positive, real, scalar
+from skcable._checks import broadcast, nonnegative, positive, real, scalar
 from skcable.cable._elastic import elastic_catenary
 from skcable.cable._state import change_of_state, sag_tension_table
+from skcable.cable.conductors._inputs import normal
 from skcable.errors import InputError
 
 __all__ = ["Conductor", "STANDARD_GRAVITY", "ICE_DENSITY"]
@@ -264,10 +265,10 @@ class Conductor:
             raise InputError("length", "give exactly one of H0, sag0, length for the reference state")
         if model != "catenary":
             raise InputError("length", f"a reference length needs model='catenary', got {model!r}")
-        length = _positive_scalar("length", length)
-        span, dh = _positive_scalar("span", span), scalar("dh", dh)
-        H0 = float(elastic_catenary(span, dh, self.w, self.EA, length=length).H)
-        return H0, None
+        length, span, dh = normal("length", length), normal("span", span), real("dh", dh)
+        broadcast(span=span, dh=dh, length=length)
+        H0 = elastic_catenary(span, dh, self.w, self.EA, length=length).H
+        return (float(H0) if np.ndim(H0) == 0 else H0), None
 
     # --- sag and tension ----------------------------------------------------------------
     def change_of_state(
@@ -290,14 +291,17 @@ class Conductor:
 
         Parameters
         ----------
-        span, dh : float
-            Horizontal distance between the supports (m, > 0) and height of B above A (m).
+        span, dh : float or array_like
+            Horizontal distance between the supports (m, > 0) and height of B above A (m);
+            arrays for a line of spans (every result then has the spans' shape followed by
+            the states').
         t0 : float
             Reference temperature (°C or K, as ``t``): the bare conductor, no wind.
-        H0, sag0, length : float
-            Exactly one: the reference state's horizontal tension (N), sag (m), or the
-            unstressed length at ``t0`` (m, ``model="catenary"`` only) — e.g. the ``L0`` of
-            the intact conductor, for the same conductor after wires broke.
+        H0, sag0, length : float or array_like
+            Exactly one (one number, or one per span): the reference state's horizontal
+            tension (N), sag (m), or the unstressed length at ``t0`` (m, ``model="catenary"``
+            only) — e.g. the ``L0`` of the intact conductor, for the same conductor after wires
+            broke.
         t, ice, wind_pressure : float or array_like
             The states: temperature, radial ice thickness (m, >= 0), wind pressure (Pa, >= 0)
             on the iced diameter; broadcast together.

@@ -58,14 +58,9 @@ from __future__ import annotations
 import numpy as np
 
 from skcable._checks import broadcast, nonnegative, real, scalar
-from skcable.cable._state import (
-    _reference_length,
-    _renamed,
-    _thermal_factor,
-    change_of_state,
-    normal,
-    thermal_catenary,
-)
+from skcable.cable._state import change_of_state, thermal_catenary
+from skcable.cable.conductors._inputs import normal, renamed, thermal_factor
+from skcable.cable.conductors._reference import reference_length
 from skcable.errors import ConvergenceError, InputError
 from skcable.fe import newton
 
@@ -357,12 +352,12 @@ def tension_section(
     w, t = normal("w", w), real("t", t)
     shape = broadcast(w=w, t=t)
     w_all, t_all = (np.broadcast_to(v, shape).ravel() for v in (w, t))
-    _thermal_factor(alpha, t_all, t0)  # raises naming t
+    thermal_factor(alpha, t_all, t0)  # raises naming t
 
     # span by span: the scalar path of change_of_state, so that one span's L0 is its L0
-    with _renamed({"H": "H0", "w": "w0", "length": "H0", "span": "spans"}):
+    with renamed({"H": "H0", "w": "w0", "length": "H0", "span": "spans"}):
         L0 = np.array(
-            [float(_reference_length(a, b, w0, EA, H0, None)) for a, b in zip(spans, dh, strict=True)]
+            [float(reference_length(a, b, w0, EA, H0, None)) for a, b in zip(spans, dh, strict=True)]
         )
 
     fields = ("H", "V_A", "V_B", "T_max", "sag", "span", "dh")
