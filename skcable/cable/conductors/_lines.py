@@ -29,7 +29,7 @@ from skcable.cable.conductors._parabola import parabola_states
 from skcable.cable.conductors._reference import reference_length
 from skcable.errors import ConvergenceError, InputError
 
-__all__ = ["line_change_of_state"]
+__all__ = ["line_change_of_state", "reference_state"]
 
 
 def _robust(span, dh, w, EA, L, bad, names):
@@ -61,8 +61,9 @@ def _solve(span, dh, w, EA, L, start, names):
     return _checked(span, dh, w, EA, L, H, m, names)
 
 
-def _reference(span, dh, w0, EA, value, name):
-    """``L0, m0, H0, sag0`` of the reference state per span (flat arrays)."""
+def reference_state(span, dh, w0, EA, value, name):
+    """``L0, m0, H0, sag0`` of the reference state per span (flat arrays): ``value`` is the
+    horizontal tension (``name="H0"``) or the sag (``"sag0"``) of each span."""
     if name == "sag0":
         with renamed({"H": "sag0", "sag": "sag0", "w": "w0", "length": "sag0"}):
             L0 = np.asarray(reference_length(span, dh, w0, EA, None, value), dtype=float)
@@ -107,7 +108,7 @@ def line_change_of_state(span, dh, EA, alpha, w0, t0, ref, w, t, wind, k, model)
         )  # fmt: skip
         L0, H0_out, sag0_out = (np.broadcast_to(v, (spans.size, 1))[:, 0] for v in (L0, H0_out, sag0_out))
     else:
-        L0, _, H0_out, sag0_out = _reference(spans, dhs, w0, EA, value, name)
+        L0, _, H0_out, sag0_out = reference_state(spans, dhs, w0, EA, value, name)
         shape2 = span_p.shape
         L = (L0[:, None] * kf[None, :]).ravel()
         wk = np.broadcast_to(q / kf[None, :], shape2).ravel()
