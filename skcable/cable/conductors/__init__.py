@@ -1,1 +1,26 @@
-"""Overhead line conductors (issue 24): whole lines at array speed, ratings, fatigue, catalogue."""
+"""Overhead line conductors beyond one span (issue 24): whole lines at array speed, conductor
+temperature from current and weather (linerate), the damaged-conductor chain (residual strength,
+Poffenberger–Swart, fatigue) and a conductor catalogue.
+
+The public names load their modules on first use (``linerate`` only with the rating).
+"""
+
+from importlib import import_module
+
+_NAMES = {
+    "ThermalRating": "_rating",
+    "sag_at_current": "_rating",
+    "clearance_ampacity": "_rating",
+}
+
+__all__ = sorted(_NAMES)
+
+
+def __getattr__(name):
+    if name in _NAMES:
+        return getattr(import_module(f"{__name__}.{_NAMES[name]}"), name)
+    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
+
+
+def __dir__():
+    return sorted(set(globals()) | set(__all__))
