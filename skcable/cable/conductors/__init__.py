@@ -11,6 +11,16 @@ _NAMES = {
     "ThermalRating": "_rating",
     "sag_at_current": "_rating",
     "clearance_ampacity": "_rating",
+    "poffenberger_swart": "_fatigue",
+    "ClampStress": "_fatigue",
+    "clamp_stress": "_fatigue",
+    "WohlerCurve": "_fatigue",
+    "miner_damage": "_fatigue",
+    "fatigue_life": "_fatigue",
+    "layer_rrts": "_strength",
+    "wire_strengths": "_strength",
+    "ResidualStrength": "_strength",
+    "residual_strength": "_strength",
 }
 
 __all__ = sorted(_NAMES)
