@@ -234,6 +234,29 @@ class Conductor:
             rupture_force=rupture_force,
         )
 
+    @classmethod
+    def from_catalogue(cls, name: str, *, g: float = STANDARD_GRAVITY):
+        """The conductor of a catalogue size (ASTM B232 ACSR, B231 AAC, B399 AAAC; see
+        `skcable.cable.conductors.catalogue`): the published mass (``w = mass · g``), outer
+        diameter and rated strength (``rts``), with ``EA`` and ``alpha`` of its strand
+        (``strand.preset(name)``, built from the stranding; `Conductor.from_strand`).
+
+        Raises
+        ------
+        InputError
+            ``name`` not in the catalogue (``'name'``, with the nearest names suggested).
+        """
+        from skcable.strand import preset
+        from skcable.strand._catalogue import entry
+
+        item = entry(name)
+        g = _positive_scalar("g", g)
+        base = cls.from_strand(preset(item.name), g=g)
+        return cls(
+            EA=base.EA, w=item.mass * g, alpha=base.alpha, diameter=item.diameter, rts=item.rts,
+            name=item.name, strand=base.strand, rupture_force=base.rupture_force,
+        )  # fmt: skip
+
     # --- loads ------------------------------------------------------------------------
     def ice_load(self, thickness, *, density: float = ICE_DENSITY, g: float = STANDARD_GRAVITY):
         """Weight per unit length (N/m) of radial ice ``thickness`` b (m, >= 0, any shape):
@@ -313,15 +336,19 @@ class Conductor:
         Returns
         -------
         ChangeOfState
-            ``H, H_plane, sag, T_max, length, blowout, L0`` over the states.
+            ``H, H_plane, sag, T_max, length, blowout, L0`` over the states; with ``rts``
+            known, ``T_max_pct_rts`` (``T_max`` in % of the rated strength).
         """
         H0, sag0 = self._reference(span, dh, H0, sag0, length, model)
         w = self.w + self._ice_load(ice, ice_density, g)
         wind = self._wind_load(wind_pressure, ice)
-        return change_of_state(
+        result = change_of_state(
             span, dh, EA=self.EA, alpha=self.alpha, w0=self.w, t0=t0, H0=H0, sag0=sag0,
             w=w, t=real("t", t), wind=wind, model=model,
         )  # fmt: skip
+        if self.rts is not None:
+            result.T_max_pct_rts = 100.0 * np.asarray(result.T_max) / self.rts
+        return result
 
     def sag_tension_table(
         self,
@@ -344,7 +371,8 @@ class Conductor:
         and wind pressure (Pa) on the iced diameter; default ``{"bare": (0.0, 0.0)}``. The
         reference state and the other arguments are those of `Conductor.change_of_state`.
         The columns are those of `skcable.cable.sag_tension_table` (``w`` and ``wind`` the
-        loads per length these give) and, when ``rts`` is known, ``T_max_per_rts``.
+        loads per length these give) and, when ``rts`` is known, ``T_max_per_rts`` and
+        ``T_max_pct_rts`` (the same in % RTS).
         """
         cases = {"bare": (0.0, 0.0)} if load_cases is None else load_cases
         if not isinstance(cases, dict) or not cases:
@@ -366,4 +394,5 @@ class Conductor:
         )  # fmt: skip
         if self.rts is not None:
             table["T_max_per_rts"] = table["T_max"] / self.rts
+            table["T_max_pct_rts"] = 100.0 * table["T_max"] / self.rts
         return table

@@ -441,11 +441,24 @@ def preset(name: str) -> Strand:
     strand's ``material`` is aluminium, ``core_material`` and the first layer's steel (the wire
     laws of Pino Vidal (2021), Table B.1, with the densities and expansion coefficients of
     IEC 61089:1991).
+
+    Every size of the conductor catalogue (ACSR of ASTM B232, AAC of B231, AAAC of B399:
+    ``"acsr-partridge"``, ``"aac-arbutus"``, ``"aaac-greeley"`` ...; see
+    `skcable.cable.conductors.catalogue`), built from its stranding. An unknown name is refused
+    with the nearest known names.
     """
     if isinstance(name, str) and name in _ACSR:
         return _acsr(name)
     if not isinstance(name, str) or name not in _TABLE_3_1:
-        known = ", ".join([*_TABLE_3_1, *_ACSR])
-        raise InputError("name", f"unknown strand {name!r}; known: {known}")
+        from skcable.strand._catalogue import ENTRIES, catalogue_strand
+
+        if isinstance(name, str) and name.lower() in ENTRIES:
+            return catalogue_strand(name)
+        import difflib
+
+        known = [*_TABLE_3_1, *_ACSR, *ENTRIES]
+        near = difflib.get_close_matches(str(name).lower(), known, n=4, cutoff=0.5)
+        hint = f"nearest: {', '.join(near)}" if near else f"known: {', '.join(known)}"
+        raise InputError("name", f"unknown strand {name!r}; {hint}")
     d, mat, _nominal, alpha = _TABLE_3_1[name]
     return Strand(d, (Layer(6, d, lay_angle=radians(alpha)),), material(mat), name=name)

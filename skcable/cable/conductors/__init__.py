@@ -21,6 +21,7 @@ _NAMES = {
     "wire_strengths": "_strength",
     "ResidualStrength": "_strength",
     "residual_strength": "_strength",
+    "catalogue": "_catalogue",
 }
 
 __all__ = sorted(_NAMES)
