@@ -22,6 +22,12 @@ _NAMES = {
     "ResidualStrength": "_strength",
     "residual_strength": "_strength",
     "catalogue": "_catalogue",
+    "ComponentCurve": "_stress_strain",
+    "StressStrainModel": "_stress_strain",
+    "History": "_stress_strain",
+    "CreepLaw": "_stress_strain",
+    "aa_coefficients": "_stress_strain",
+    "level_span_states": "_stress_strain",
 }
 
 __all__ = sorted(_NAMES)
