@@ -1,4 +1,6 @@
-"""From broken wires to fatigue life: ACSR Drake with 0 to 4 broken outer wires.
+"""Broken wires to fatigue life (ACSR Drake)
+
+ACSR Drake with 0 to 4 broken outer wires, from the section to the fatigue life.
 
 A 400 m level span of ACSR Drake (795 kcmil 26/7, ASTM B232 rated strength 140.1 kN) strung at
 28 kN (20 % RTS) at 15 °C. Outer aluminium wires break (adjacent, at the top of the section);
@@ -106,7 +108,7 @@ def figure(frame, path):
 
 
 def main(argv=None):
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser = argparse.ArgumentParser(description="Broken wires to fatigue life (ACSR Drake)")
     parser.add_argument("--out", default="results/damaged_conductor_fatigue", help="output folder")
     args = parser.parse_args(argv)
     out = Path(args.out)

@@ -23,13 +23,14 @@ The 6201-T81 alloy wire (AAAC) takes the 1350 wire's law with the alloy's densit
 from __future__ import annotations
 
 import difflib
-from dataclasses import dataclass, replace
+from dataclasses import dataclass
 
 from skcable.errors import InputError
 
-__all__ = ["CatalogueEntry", "ENTRIES", "entry", "catalogue_strand"]
+__all__ = ["CatalogueEntry", "ENTRIES", "entry", "layer_counts", "aluminium_layers", "LAY_RATIO", "INCH"]
 
-_IN = 25.4e-3  # m
+INCH = 25.4e-3  # m
+_IN = INCH
 _LB_PER_KFT = 0.45359237 / 304.8  # kg/m
 _LBF = 4.4482216152605  # N
 
@@ -125,7 +126,8 @@ ENTRIES = {
     )
 }
 
-_LAY_RATIO = {"steel": 19.0, "inner": 13.0, "outer": 11.0}
+#: Lay ratios (lay length / layer diameter) of the catalogue strands, inside the standards' ranges.
+LAY_RATIO = {"steel": 19.0, "inner": 13.0, "outer": 11.0}
 
 
 def entry(name: str) -> CatalogueEntry:
@@ -143,7 +145,7 @@ def entry(name: str) -> CatalogueEntry:
     raise InputError("name", f"no conductor {name!r} in the catalogue{hint}")
 
 
-def _layer_counts(total: int) -> list[int]:
+def layer_counts(total: int) -> list[int]:
     """Wires per helical layer of a concentric stranding of ``total`` wires (1 + 6 + 12 + ...)."""
     counts, left, k = [], total - 1, 6
     while left > 0:
@@ -153,11 +155,11 @@ def _layer_counts(total: int) -> list[int]:
     return counts
 
 
-def _aluminium_layers(n: int, steel: int) -> list[int]:
+def aluminium_layers(n: int, steel: int) -> list[int]:
     """Aluminium wires per layer over a steel core of ``steel`` wires: the layers of a full
     concentric count, less those the steel takes (26 over 7: 10 and 16; 45: 9, 15, 21)."""
     if steel == 0:
-        return _layer_counts(n)
+        return layer_counts(n)
     if n == 6:
         return [6]
     first = {26: 10, 45: 9, 54: 12}.get(n)
@@ -169,31 +171,3 @@ def _aluminium_layers(n: int, steel: int) -> list[int]:
         left -= k
         k += 6
     return counts
-
-
-def catalogue_strand(name: str):
-    """The `Strand` of a catalogue entry (module text: layers, lay ratios, materials)."""
-    from skcable.strand._geometry import Layer, Strand
-    from skcable.strand._material import material
-
-    e = entry(name)
-    steel_m, al_m = material("steel"), material("aluminium")
-    if e.kind == "AAAC":
-        al_m = replace(al_m, density=2690.0, name="aluminium 6201-T81 (1350 law)")
-    n_st, d_st = e.steel[0], e.steel[1] * _IN
-    n_al, d_al = e.aluminium[0], e.aluminium[1] * _IN
-    if n_st:
-        specs = [(c, d_st, steel_m) for c in _layer_counts(n_st)] + [
-            (c, d_al, al_m) for c in _aluminium_layers(n_al, n_st)
-        ]
-        core_d, core_m = d_st, steel_m
-    else:
-        specs = [(c, d_al, al_m) for c in _layer_counts(n_al)]
-        core_d, core_m = d_al, al_m
-    layers, outside = [], core_d
-    for k, (count, d, m) in enumerate(specs):
-        outside = outside + 2 * d
-        kind = "steel" if m is steel_m else ("outer" if k == len(specs) - 1 else "inner")
-        direction = 1 if (len(specs) - 1 - k) % 2 == 0 else -1
-        layers.append(Layer(count, d, lay_length=_LAY_RATIO[kind] * outside, direction=direction, material=m))
-    return Strand(core_d, tuple(layers), al_m, name=e.name, core_material=core_m)

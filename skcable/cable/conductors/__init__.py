@@ -1,43 +1,48 @@
-"""Overhead line conductors beyond one span (issue 24): whole lines at array speed, conductor
-temperature from current and weather (linerate), the damaged-conductor chain (residual strength,
-Poffenberger–Swart, fatigue) and a conductor catalogue.
-
-The public names load their modules on first use (``linerate`` only with the rating).
+"""Overhead line conductors beyond one span (issue 24): whole lines at array speed (the line path
+of `skcable.cable.change_of_state`), conductor temperature from current and weather (linerate,
+imported only when a rating is made), the damaged-conductor chain (residual strength,
+Poffenberger–Swart, fatigue), a conductor catalogue and stress–strain conductor models.
 """
 
-from importlib import import_module
+from skcable.cable.conductors._catalogue import catalogue
+from skcable.cable.conductors._fatigue import (
+    ClampStress,
+    WohlerCurve,
+    clamp_stress,
+    fatigue_life,
+    miner_damage,
+    poffenberger_swart,
+)
+from skcable.cable.conductors._rating import ThermalRating, clearance_ampacity, sag_at_current
+from skcable.cable.conductors._strength import ResidualStrength, layer_rrts, residual_strength, wire_strengths
+from skcable.cable.conductors._stress_strain import (
+    ComponentCurve,
+    CreepLaw,
+    History,
+    StressStrainModel,
+    aa_coefficients,
+    level_span_states,
+)
 
-_NAMES = {
-    "ThermalRating": "_rating",
-    "sag_at_current": "_rating",
-    "clearance_ampacity": "_rating",
-    "poffenberger_swart": "_fatigue",
-    "ClampStress": "_fatigue",
-    "clamp_stress": "_fatigue",
-    "WohlerCurve": "_fatigue",
-    "miner_damage": "_fatigue",
-    "fatigue_life": "_fatigue",
-    "layer_rrts": "_strength",
-    "wire_strengths": "_strength",
-    "ResidualStrength": "_strength",
-    "residual_strength": "_strength",
-    "catalogue": "_catalogue",
-    "ComponentCurve": "_stress_strain",
-    "StressStrainModel": "_stress_strain",
-    "History": "_stress_strain",
-    "CreepLaw": "_stress_strain",
-    "aa_coefficients": "_stress_strain",
-    "level_span_states": "_stress_strain",
-}
-
-__all__ = sorted(_NAMES)
-
-
-def __getattr__(name):
-    if name in _NAMES:
-        return getattr(import_module(f"{__name__}.{_NAMES[name]}"), name)
-    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
-
-
-def __dir__():
-    return sorted(set(globals()) | set(__all__))
+__all__ = [
+    "ClampStress",
+    "ComponentCurve",
+    "CreepLaw",
+    "History",
+    "ResidualStrength",
+    "StressStrainModel",
+    "ThermalRating",
+    "WohlerCurve",
+    "aa_coefficients",
+    "catalogue",
+    "clamp_stress",
+    "clearance_ampacity",
+    "fatigue_life",
+    "layer_rrts",
+    "level_span_states",
+    "miner_damage",
+    "poffenberger_swart",
+    "residual_strength",
+    "sag_at_current",
+    "wire_strengths",
+]
