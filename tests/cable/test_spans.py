@@ -95,13 +95,10 @@ def test_jacobian_equals_central_differences():
     np.testing.assert_allclose(J, numeric, rtol=2e-6, atol=1e-6 * np.abs(J).max())
 
 
-def _independent(spans, dh, EA, alpha, w0, t0, H0, w, t, lam, W):
-    """The same section written afresh: unknowns the swing angles, each span Irvine's
-    elastic catenary of length k L0, weight w/k, stiffness EA k (k = 1 + alpha (t - t0)),
-    L0 from the reference tension by brentq, the balance by fsolve."""
-    spans, dh = np.asarray(spans), np.asarray(dh)
+def _reference_lengths(spans, dh, w0, EA, H0):
+    """Each span's unstressed length at H0: brentq on the elastic catenary's H, span by span."""
 
-    def reference_length(a, h):
+    def one(a, h):
         chord = np.hypot(a, h)
         return brentq(
             lambda L: cable.elastic_catenary(a, h, w0, EA, length=L).H - H0,
@@ -111,8 +108,15 @@ def _independent(spans, dh, EA, alpha, w0, t0, H0, w, t, lam, W):
             rtol=1e-15,
         )
 
-    L0 = [reference_length(a, h) for a, h in zip(spans, dh, strict=True)]
-    L0 = np.array(L0)
+    return np.array([one(a, h) for a, h in zip(spans, dh, strict=True)])
+
+
+def _independent(spans, dh, EA, alpha, w0, t0, H0, w, t, lam, W):
+    """The same section written afresh: unknowns the swing angles, each span Irvine's
+    elastic catenary of length k L0, weight w/k, stiffness EA k (k = 1 + alpha (t - t0)),
+    L0 from the reference tension by brentq, the balance by fsolve."""
+    spans, dh = np.asarray(spans), np.asarray(dh)
+    L0 = _reference_lengths(spans, dh, w0, EA, H0)
     k = 1 + alpha * (t - t0)
 
     def spans_of(phi):
@@ -271,18 +275,7 @@ def _independent_line(spans, dh, EA, alpha, w0, t0, H0, w, t, lam, W):
     """`_independent` for long sections: the spans as one vectorised elastic catenary, and
     fsolve told that the balance's Jacobian is banded (its finite differences then cost three
     evaluations)."""
-
-    def reference_length(a, h):
-        chord = np.hypot(a, h)
-        return brentq(
-            lambda L: cable.elastic_catenary(a, h, w0, EA, length=L).H - H0,
-            chord * 0.999,
-            chord * 1.05,
-            xtol=1e-14,
-            rtol=1e-15,
-        )
-
-    L0 = np.array([reference_length(a, h) for a, h in zip(spans, dh, strict=True)])
+    L0 = _reference_lengths(spans, dh, w0, EA, H0)
     k = 1 + alpha * (t - t0)
 
     def spans_of(phi):
