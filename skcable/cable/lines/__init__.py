@@ -3,10 +3,12 @@
 Conventions as in :mod:`skcable.cable`: anchor A at (0, 0), fairlead B at
 (span, dh), y up, weights per unstretched length act downward.
 
-One concern per module:
+One concern per module (the two packages split further, see their docstrings):
 
-- `seabed`: one elastic line on a flat or sloped seabed, in closed form;
-- `segments`: `Line`, a multi-segment line with clump weights and buoys;
+- `seabed`: one elastic line on a flat or sloped seabed, in closed form (closure,
+  regimes free/grounded/heap, the dispatcher, the solution, the sloped seabed);
+- `segments`: `Line`, a multi-segment line with clump weights and buoys (parts, the
+  line's read-only arrays, closure, heap state, line, solution);
 - `line3d`: a line between two points in 3-D, in its vertical plane;
 - `body`: point and rigid bodies (6 dofs) with their own loads;
 - `system`: `MooringSystem`, a body moored by several lines: equilibrium, stiffness.
