@@ -624,3 +624,21 @@ def test_unstable_equilibrium_is_flagged_and_warned():
     with pytest.warns(PlausibilityWarning, match="unstable"):
         eq = system.equilibrium(force=force, moment=moment, start=root.x, max_iter=1)
     assert not eq.stable and eq.eigenvalues[0] < 0 and "UNSTABLE" in repr(eq)
+
+
+# -- D7: untyped escapes -------------------------------------------------------------------
+def test_a_missing_line_model_is_named():
+    for model in (None, 3.0, "chain"):
+        with pytest.raises(InputError) as err:
+            cable.line_3d(model, (0.0, 0.0, -200.0), (500.0, 0.0, -10.0))
+        assert err.value.argument == "model"
+
+
+def test_lines_must_be_a_list_of_models():
+    chain = cable.Line([cable.Segment(850.0, 1000.0, 5e8)], seabed=0.0)
+    anchors = [[800.0, 0.0, -200.0]]
+    for lines in (5, None, chain, "chain", {0: chain}, 2.5):
+        with pytest.raises(InputError) as err:
+            cable.MooringSystem(cable.PointBody(volume=100.0), lines, anchors)
+        assert err.value.argument == "lines"
+    assert len(cable.MooringSystem(cable.PointBody(volume=100.0), (chain,), anchors).lines) == 1

@@ -33,6 +33,7 @@ tension) makes :math:`K` unsymmetric where the line forces have a net moment.
 from __future__ import annotations
 
 import math
+from collections.abc import Iterable, Mapping
 
 import numpy as np
 
@@ -43,6 +44,18 @@ from skcable.cable.lines.line3d import Line3D, line_3d, point, solve_in_space, t
 from skcable.errors import InputError
 
 __all__ = ["MooringEquilibrium", "MooringSystem"]
+
+
+def _line_list(lines) -> list:
+    """``lines`` as a list of line models: a sequence of them (a list, a tuple), not one model,
+    a string, a mapping or a scalar; else `InputError` naming ``lines``."""
+    if callable(getattr(lines, "solve", None)):
+        raise InputError("lines", "is one line model: give a list of them, one per anchor (e.g. [line] * 3)")
+    if isinstance(lines, (str, bytes, Mapping)) or not isinstance(lines, Iterable):
+        raise InputError(
+            "lines", f"must be a list of line models, one per anchor, got {type(lines).__name__}"
+        )
+    return list(lines)
 
 
 class MooringSystem:
@@ -82,7 +95,7 @@ class MooringSystem:
     def __init__(self, body, lines, anchors, *, depth=None):
         if not isinstance(body, (RigidBody, PointBody)):
             raise InputError("body", f"must be a RigidBody or a PointBody, got {type(body).__name__}")
-        lines = list(lines)
+        lines = _line_list(lines)
         for i, model in enumerate(lines):
             if not callable(getattr(model, "solve", None)):
                 raise InputError("lines", f"line {i} ({type(model).__name__}) has no solve(span, dh) method")
