@@ -41,7 +41,7 @@ def test_single_line_force_is_the_2d_solution_rotated():
     weight_left = flat.w * (flat.length - flat.length_on_seabed)
     total = line.force_on_fairlead + line.force_on_anchor + friction + [0.0, 0.0, weight_left]
     assert np.abs(total).max() < 1e-9 * flat.H
-    points, tension = line.profile(51)
+    points, tension = line.profile_with_tension(51)
     np.testing.assert_allclose(points[[0, -1]], [anchor, fairlead], atol=1e-6)
     assert tension[-1] == pytest.approx(line.tension_at_fairlead, rel=1e-12)
 
@@ -451,7 +451,7 @@ def test_equilibrium_with_a_line_in_a_heap_matches_moorpy():
     assert [line.solution.heap for line in eq.lines] == [True, False, False]
     heap = eq.lines[0]
     assert heap.H == 0.0 and heap.V_B > 0 and heap.solution.x_touchdown == heap.span
-    points, tension = heap.profile(51)  # vertical under the fairlead, the slack on the seabed
+    points, tension = heap.profile_with_tension(51)  # vertical under the fairlead, the slack on the seabed
     np.testing.assert_allclose(points[-1], heap.fairlead, rtol=0, atol=1e-9 * heap.span)
     assert np.all(points[:, 2] >= -200.0 - 1e-9) and tension[-1] == pytest.approx(heap.V_B, rel=1e-12)
     q = eq.position

@@ -147,12 +147,18 @@ class Line3D:
         x, y = np.asarray(x, dtype=float), np.asarray(y, dtype=float)
         return self.anchor + np.multiply.outer(x, self.direction) + np.multiply.outer(y, [0.0, 0.0, 1.0])
 
-    def profile(self, n: int = 101):
-        """The line at ``n`` material points equally spaced in unstretched arc length.
+    def profile(self, n: int = 101) -> np.ndarray:
+        """The line at ``n`` material points equally spaced in unstretched arc length: positions
+        ``(n, 3)`` in global axes (m), from the model's ``x_of_s, y_of_s``."""
+        return self.profile_with_tension(n)[0]
 
-        Returns ``(points, tension)``: points (n, 3) in global axes (m) and the
-        tension there (N), from the model's ``x_of_s, y_of_s, T_of_s``.
-        """
+    def T_of_s(self, s):
+        """Tension (N) at unstretched arc length ``s`` from the anchor (the model's ``T_of_s``)."""
+        return self.solution.T_of_s(s)
+
+    def profile_with_tension(self, n: int = 101) -> tuple[np.ndarray, np.ndarray]:
+        """``(points, tension)``: `profile` ``(n, 3)`` (m) and the tension there ``(n,)`` (N), from the
+        model's ``x_of_s, y_of_s, T_of_s`` (what ``profile`` returned before 0.2)."""
         n = whole("n", n, 2)
         s = np.linspace(0.0, float(self.solution.length), n)
         points = self.to_global(self.solution.x_of_s(s), self.solution.y_of_s(s))

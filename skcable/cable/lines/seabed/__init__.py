@@ -13,14 +13,17 @@ Press, 1981). One concern per module:
   L-shape, ``H = 0``);
 - `solve`: `elastic_catenary`, which picks each element's regime and solves it;
 - `solution`: `SeabedCatenary`, the solution in every regime (maps, checks, stiffness);
-- `sloped`: `sloped_seabed_catenary` and `SlopedSeabedCatenary`, the line on a sloped seabed.
+- the sloped seabed: `slope_closure` (its closure and Jacobian), `sloped`
+  (`sloped_seabed_catenary`) and `sloped_solution` (`SlopedSeabedCatenary`).
 
 Data flow: ``solve`` → (``free`` | ``heap`` | ``grounded`` → ``closure``) → ``solution``;
-``sloped`` starts from ``solve`` in the slope's frame.
+``sloped`` starts from ``solve`` in the slope's frame → ``slope_closure`` →
+``sloped_solution``.
 """
 
 from skcable.cable.lines.seabed.closure import anchor_part, grounded_closure, hanging_length
-from skcable.cable.lines.seabed.sloped import SlopedSeabedCatenary, sloped_seabed_catenary
+from skcable.cable.lines.seabed.sloped import sloped_seabed_catenary
+from skcable.cable.lines.seabed.sloped_solution import SlopedSeabedCatenary
 from skcable.cable.lines.seabed.solution import SeabedCatenary
 from skcable.cable.lines.seabed.solve import elastic_catenary
 

@@ -15,82 +15,12 @@ import numpy as np
 from skcable._checks import nonnegative, positive, real, require
 from skcable.cable._elastic import elastic_catenary as free_elastic_catenary
 from skcable.cable.lines.seabed.closure import hanging_length
+from skcable.cable.lines.seabed.slope_closure import sloped_closure
+from skcable.cable.lines.seabed.sloped_solution import SlopedSeabedCatenary
 from skcable.cable.lines.seabed.solve import elastic_catenary
 from skcable.errors import ConvergenceError, InputError
 
 __all__ = ["SlopedSeabedCatenary", "sloped_seabed_catenary"]
-
-
-class SlopedSeabedCatenary:
-    """Solution of `sloped_seabed_catenary` (one scene, scalar attributes).
-
-    ``H`` is the horizontal tension of the suspended part (the fairlead's),
-    ``V_B`` the vertical force at B, ``H_A, V_A`` the anchor's reaction
-    (the grounded line pulls A along the slope, up it for α > 0: the upward
-    reaction is ``V_A = -H_A tan α``; with the
-    line lifted off A they are the free line's), ``T_A, T_B`` the end
-    tensions, ``length_on_seabed`` the unstretched grounded length
-    (0 when the line leaves A above the slope), ``x_touchdown, y_touchdown``
-    where it leaves the seabed, ``history`` the closure residuals of the
-    Newton (``hybr``) solve.
-    """
-
-    def __init__(self, span, dh, w, EA, length, slope, friction, H, L_B, history):
-        self.span, self.dh, self.w, self.EA, self.length = span, dh, w, EA, length
-        self.seabed_slope, self.friction = slope, friction
-        self.H, self.length_on_seabed, self.history = H, L_B, list(history)
-        cos = 1.0 / np.hypot(1.0, slope)
-        sin = slope * cos
-        self._cos, self._sin = cos, sin
-        k = w * (sin + friction * cos)  # tension gradient along the grounded line
-        T_td = H / cos
-        ell = min(L_B, T_td / k) if k > 0 else L_B
-        self.T_touchdown = T_td
-        self.T_A = max(T_td - k * L_B, 0.0)
-        grounded = L_B + (T_td * ell - 0.5 * k * ell * ell) / EA
-        self.x_touchdown, self.y_touchdown = grounded * cos, grounded * sin
-        self.V_touchdown = H * slope
-        self.V_B = self.V_touchdown + w * (length - L_B)
-        self.H_A = self.T_A * cos
-        self.V_A = -self.T_A * sin  # upward reaction: the grounded line pulls A up the slope
-        self.T_B = float(np.hypot(H, self.V_B))
-
-    def closure(self):
-        """``(X - span, Z - dh)`` (m) of the grounded solution: what the solve drove to zero."""
-        if self.length_on_seabed == 0.0:
-            return 0.0, 0.0  # the free line: `elastic_catenary` checked its own residual
-        return _sloped_closure(
-            self.span,
-            self.dh,
-            self.w,
-            self.EA,
-            self.length,
-            self.seabed_slope,
-            self.friction,
-            self.H,
-            self.length_on_seabed,
-        )
-
-    def residual(self):
-        """Largest closure residual over the chord."""
-        fx, fz = self.closure()
-        return float(max(abs(fx), abs(fz)) / np.hypot(self.span, self.dh))
-
-
-def _sloped_closure(span, dh, w, EA, L, m, mu, H, L_B):
-    """Closure residuals of the line grounded on the slope ``y = m x`` over ``L_B`` from A."""
-    cos = 1.0 / np.hypot(1.0, m)
-    sin = m * cos
-    k = w * (sin + mu * cos)
-    T_td = H / cos
-    ell = min(L_B, T_td / k) if k > 0 else L_B
-    grounded = L_B + (T_td * ell - 0.5 * k * ell * ell) / EA
-    L_s = L - L_B
-    V_t = H * m
-    V_B = V_t + w * L_s
-    X = H * L_s / EA + H / w * (np.arcsinh(V_B / H) - np.arcsinh(V_t / H))
-    Z = (np.hypot(H, V_B) - np.hypot(H, V_t)) / w + (V_B * V_B - V_t * V_t) / (2.0 * EA * w)
-    return grounded * cos + X - span, grounded * sin + Z - dh
 
 
 def _scaled_closure(u, scene, scale, chord, history):
@@ -99,7 +29,7 @@ def _scaled_closure(u, scene, scale, chord, history):
     H, L_B = u * scale
     if not (H > 0 and 0 <= L_B < scene[4]):
         return np.array([1e3 * chord, 1e3 * chord])
-    r = np.array(_sloped_closure(*scene, H, L_B))
+    r = np.array(sloped_closure(*scene, H, L_B))
     history.append(float(np.max(np.abs(r)) / chord))
     return r / chord
 
@@ -187,10 +117,7 @@ def sloped_seabed_catenary(span, dh, w, EA, *, length, seabed_slope, friction=0.
     require("dh", dh > m * span, "must put B above the seabed (dh > span * seabed_slope)", dh)
     free = free_elastic_catenary(span, dh, w, EA, length=L)
     if -free.V_A / free.H >= m:  # the free line leaves A at or above the slope: no contact
-        result = SlopedSeabedCatenary(span, dh, w, EA, L, m, mu, free.H, 0.0, [0.0])
-        result.V_B, result.T_B, result.x_touchdown, result.y_touchdown = free.V_B, free.T_B, 0.0, 0.0
-        result.H_A, result.V_A, result.T_A = free.H, free.V_A, free.T_A
-        return result
+        return SlopedSeabedCatenary(span, dh, w, EA, L, m, mu, free.H, 0.0, [0.0], free=free)
     chord = float(np.hypot(span, dh))
     # start: the flat line of the same data in the frame of the slope
     cos = 1.0 / np.hypot(1.0, m)

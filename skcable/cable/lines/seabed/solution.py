@@ -34,6 +34,7 @@ from skcable.cable.lines.seabed import heap as heap_state
 from skcable.cable.lines.seabed.closure import grounded_closure, tensioned
 from skcable.cable.solution import CableSolution
 from skcable.errors import InputError
+from skcable.results import ProfileMixin
 
 __all__ = ["SeabedCatenary"]
 
@@ -67,7 +68,7 @@ def _catenary_y_terms(hang, s):
     return s * (0.5 * hang.w * s - hang.V_A) / hang.EA, rise / hang.w
 
 
-class SeabedCatenary(CableSolution):
+class SeabedCatenary(ProfileMixin, CableSolution):
     """Solution of `elastic_catenary` with a ``seabed``.
 
     ``H`` is the horizontal tension of the suspended part (the fairlead's),
@@ -186,6 +187,12 @@ class SeabedCatenary(CableSolution):
         ell = tensioned(self.H, self.length_on_seabed, self._mu_w)
         grounded = self.length_on_seabed + (self.H * ell - 0.5 * self._mu_w * ell * ell) / self.EA
         return _out(self.x_landing + grounded)
+
+    @property
+    def H_B(self):
+        """Horizontal tension at B (N): ``H``, the suspended part's (the result protocol,
+        `skcable.results`)."""
+        return self.H
 
     @property
     def V_A(self):
@@ -509,8 +516,17 @@ class SeabedCatenary(CableSolution):
             taut = self._taut_stiffness()
         return np.where(np.asarray(self.heap)[..., None, None], heap, taut)
 
+    def xy(self, s):
+        """Positions ``(..., 2)`` (m) of the material points at unstretched arc length ``s`` from A."""
+        return np.stack(np.broadcast_arrays(self.x_of_s(s), self.y_of_s(s)), axis=-1)
+
     def __repr__(self):
-        text = super().__repr__()
+        if np.ndim(self.H) != 0:
+            text = super().__repr__()
+        else:
+            shown = ("H", "H_A", "V_A", "V_B", "T_A", "T_B", "length", "length_on_seabed", "x_touchdown")
+            numbers = ", ".join(f"{name}={float(getattr(self, name)):.9g}" for name in shown)
+            text = f"SeabedCatenary(span={self.span:g}, dh={self.dh:g}, w={self.w:g}: {numbers})"
         if not self._any_heap:
             return text
         if np.ndim(self.heap) == 0:

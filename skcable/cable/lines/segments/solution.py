@@ -26,6 +26,7 @@ import numpy as np
 from skcable._checks import real, require, whole
 from skcable.cable._special import asinh_diff
 from skcable.errors import ConvergenceError, InputError
+from skcable.results import ProfileMixin
 
 __all__ = ["LineSolution"]
 
@@ -40,7 +41,7 @@ def _primitive(v, H, heap):
     return 0.5 * (v * np.hypot(H, v) + H * H * np.arcsinh(v / H))
 
 
-class LineSolution:
+class LineSolution(ProfileMixin):
     """Equilibrium of a `Line` between A = (0, 0) and B = (span, dh).
 
     Attributes
@@ -151,6 +152,11 @@ class LineSolution:
             self.x_joints[k] = x_g0[k]
 
     @property
+    def H_B(self):
+        """Horizontal tension at B (N): ``H``, the suspended part's."""
+        return self.H
+
+    @property
     def state(self):
         """The closed form at the solution (`ClosureState`, read it only)."""
         return self._st
@@ -158,8 +164,9 @@ class LineSolution:
     def __repr__(self):
         note = "; heap: H = 0, the slack lies on the seabed" if self.heap else ""
         return (
-            f"LineSolution(span={self.span:g}, dh={self.dh:g}: H={self.H:.9g}, V_A={self.V_A:.9g}, "
-            f"V_B={self.V_B:.9g}, length_on_seabed={self.length_on_seabed:.9g}{note})"
+            f"LineSolution(span={self.span:g}, dh={self.dh:g}: H={self.H:.9g}, H_A={self.H_A:.9g}, "
+            f"V_A={self.V_A:.9g}, V_B={self.V_B:.9g}, T_A={self.T_A:.9g}, T_B={self.T_B:.9g}, "
+            f"length={self.length:.9g}, length_on_seabed={self.length_on_seabed:.9g}{note})"
         )
 
     @staticmethod
@@ -266,11 +273,11 @@ class LineSolution:
         V = Vb + w * sig
         if st.heap:  # vertical: x = span, the piece's tension rising linearly from Vb
             y = self._y_p0[piece] + sig * (1.0 + (Vb + 0.5 * w * sig) / EA)
-            return self._x_p0[piece] + 0.0 * sig, y, V
+            return self._x_p0[piece] + 0.0 * sig, y, V, V
         T, Tb = np.hypot(H, V), np.hypot(H, Vb)
         x = self._x_p0[piece] + H * sig / EA + H / w * asinh_diff(V / H, Vb / H)
         y = self._y_p0[piece] + sig * (Vb + 0.5 * w * sig) / EA + (V - Vb) * (V + Vb) / ((T + Tb) * w)
-        return x, y, T
+        return x, y, T, V
 
     def _grounded(self, s, seg):
         st = self._st
@@ -285,16 +292,19 @@ class LineSolution:
         return x_up - back, T
 
     def _maps(self, s):
+        """``x, y, T`` at the checked arc lengths ``s``, and the tangent's angle above the horizontal."""
         s = self._arc(s)
         self._expand()
         grounded, seg, piece = self._locate(s)
-        x, y, T = self._suspended(s, piece)
+        x, y, T, V = self._suspended(s, piece)
+        angle = np.arctan2(V, self._st.H)  # pi/2 on a heap state's vertical part
         if self._st.contact:
             xg, Tg = self._grounded(s, seg)
             x = np.where(grounded, xg, x)
             y = np.where(grounded, 0.0, y)
             T = np.where(grounded, Tg, T)
-        return x, y, T
+            angle = np.where(grounded, 0.0, angle)
+        return x, y, T, angle
 
     def x_of_s(self, s):
         """Abscissa (m) of the material point at unstretched arc length ``s`` from A."""
@@ -308,16 +318,44 @@ class LineSolution:
         """Tension (N) at unstretched arc length ``s`` from A; at a joint, that of the segment above it."""
         return _out(self._maps(s)[2])
 
-    def profile(self, n=200):
-        """``(x, y)`` arrays of ``n`` points evenly spaced in unstretched arc length, plus the joints
-        and the touchdown, sorted along the line (the grounded part on the seabed)."""
+    def xy(self, s):
+        """Positions ``(..., 2)`` (m) of the material points at unstretched arc length ``s`` from A."""
+        x, y = self._maps(s)[:2]
+        return np.stack(np.broadcast_arrays(x, y), axis=-1)
+
+    def outline(self, n=200):
+        """Positions ``(m, 2)`` (m) of ``n`` points evenly spaced in unstretched arc length, plus the
+        joints and the touchdown, sorted along the line (the grounded part on the seabed): the
+        points to draw it with its corners (``profile(n)`` has exactly ``n``)."""
         n = whole("n", n, 2)
         self._expand()
         st = self._st
         s = np.concatenate([np.linspace(0.0, self.length, max(n, 2)), self._s0, [self._s0[st.k] + st.a]])
         s = np.unique(np.clip(s, 0.0, self.length))
-        x, y, _ = self._maps(s)
-        return x, y
+        x, y = self._maps(s)[:2]
+        return np.column_stack([x, y])
+
+    def samples(self, n: int = 201) -> dict:
+        """``n`` points evenly spaced in unstretched arc length, the input of `to_vtk`: ``xy`` (n, 2)
+        m, ``tension`` (N), ``angle`` (rad above the horizontal), ``load`` (n, 2) N/m (the segments'
+        weight; the point forces at the joints are not included)."""
+        s = np.linspace(0.0, self.length, whole("n", n, 2))
+        x, y, T, angle = self._maps(s)
+        arrays = self.line.arrays
+        w = arrays.w[np.clip(np.searchsorted(arrays.s_joint, s, side="right") - 1, 0, arrays.n - 1)]
+        load = np.column_stack([np.zeros_like(s), -w])
+        return {
+            "xy": np.column_stack([x, y]),
+            "tension": np.asarray(T, dtype=float),
+            "angle": angle,
+            "load": load,
+        }
+
+    def to_vtk(self, path, n: int = 201):
+        """Write the profile as a VTK polyline (see `skcable.io.cable_mesh`); returns the path."""
+        from skcable.io import cable_mesh, write
+
+        return write(cable_mesh(self, n), path)
 
     def stiffness(self):
         """Fairlead stiffness ``∂(H, V_B)/∂(span, dh)`` with A fixed, shape ``(2, 2)``.
