@@ -108,6 +108,71 @@ def asinh_diff(p, q):
     return np.arcsinh(np.where(same, (p - q) * (p + q) / den, p * rq - q * rp))
 
 
+def asinh_step_parts(q, d, p, rq, rp):
+    r"""``(S, A)``: ``A = asinh(q + d) - asinh(q)`` and ``S = sinh(A)``, from ``q``, the step
+    ``d >= 0`` formed directly (``wL/H``, never a difference of rounded ratios), ``p = q + d``
+    and ``rq = sqrt(1 + q²)``, ``rp = sqrt(1 + p²)`` (the caller's, often ``T/H`` at the ends).
+
+    With :math:`\alpha = \operatorname{asinh} p`, :math:`\beta = \operatorname{asinh} q`,
+    :math:`\sinh(\alpha - \beta) = p r_q - q r_p`, rationalised where p and q share a sign
+    (the only case where it cancels) to :math:`d\,(p + q)/(p r_q + q r_p)`: every operation
+    is then free of cancellation, and the result keeps its digits however small ``d`` is
+    against ``|q|`` (a taut, steep line: ``d`` ~ 1e-12, ``|q|`` ~ 1). The difference of the
+    rounded ratios, `asinh_diff`, loses ``|q|/d`` ulps there.
+    """
+    xp = namespace(q, d, p)
+    if xp is not np:
+        S = d * (p + q) / (p * rq + q * rp) if p * q > 0 else p * rq - q * rp
+        return S, xp.arcsinh(S)
+    same = p * q > 0
+    with np.errstate(invalid="ignore", divide="ignore"):
+        S = np.where(same, d * (p + q) / np.where(same, p * rq + q * rp, 1.0), p * rq - q * rp)
+    return S, np.arcsinh(S)
+
+
+def asinh_step(q, d):
+    """``asinh(q + d) - asinh(q)`` from ``q`` and the step ``d >= 0`` formed directly
+    (see `asinh_step_parts`): the arc of a catenary between two points of vertical
+    tension components ``q·H`` and ``(q + d)·H`` is ``(H/w)·asinh_step(q, d)`` with
+    ``d = w·s/H``, ``s`` the unstretched length between them.
+
+    This is the primitive of every closure of a hanging line (Irvine's elastic
+    catenary, the suspended part of a line on the seabed, each piece of a multi-segment
+    line): pass ``d = w s / H`` computed from the weight and the length, never
+    ``V_top/H - V_bot/H``.
+
+    >>> import math
+    >>> q, d = -1.15, 1.5e-12
+    >>> abs(asinh_step(q, d) / (d / math.sqrt(1 + q * q)) - 1) < 1e-11
+    True
+    """
+    xp = namespace(q, d)
+    p = q + d
+    return asinh_step_parts(q, d, p, xp.hypot(1.0, q), xp.hypot(1.0, p))[1]
+
+
+def _exp_asinh(v, rv):
+    """``v + sqrt(1 + v²) = exp(asinh v)`` without cancellation (``rv = sqrt(1 + v²)``)."""
+    if not isinstance(v, np.ndarray) and not isinstance(rv, np.ndarray):
+        return v + rv if v >= 0 else 1.0 / (rv - v)
+    with np.errstate(divide="ignore"):
+        return np.where(v >= 0, v + rv, 1.0 / (rv - v))
+
+
+def asinh_step_log(q, d, p, rq, rp):
+    r"""``asinh(q + d) - asinh(q)`` by another formula than `asinh_step_parts`, for the
+    residual checks (which must not share the solve's round-off).
+
+    With :math:`e_v = v + \sqrt{1 + v^2} = e^{\operatorname{asinh} v}`:
+    :math:`\alpha - \beta = \log(e_p/e_q) = \operatorname{log1p}\big(d\,(e_p + e_q)/((r_p +
+    r_q)\,e_q)\big)`, since :math:`e_p - e_q = d\,(e_p + e_q)/(r_p + r_q)`; each factor is a
+    sum of positive terms (``e_v`` for negative ``v`` as ``1/(r_v - v)``).
+    """
+    xp = namespace(q, d, p)
+    e_p, e_q = _exp_asinh(p, rp), _exp_asinh(q, rq)
+    return xp.log1p(d * (e_p + e_q) / ((rp + rq) * e_q))
+
+
 def log_cosh(x):
     """``log(cosh(x))`` for any real x, without overflow (absolute error ~1e-16)."""
     xp = namespace(x)
