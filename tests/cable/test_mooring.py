@@ -343,7 +343,9 @@ def test_cli_line_free_and_vtk(capsys, tmp_path):
     assert status == 0 and err == ""
     values = json.loads(out)
     ref = cable.elastic_catenary(380.0, 60.0, 200.0, 1e8, length=400.0)  # Irvine's, no seabed
-    assert values["H"] == ref.H and values["H_A"] == ref.H and values["V_A"] == ref.V_A
+    # two solvers, each to its own round-off (the Line's closure to ~1e-15, Irvine's to ~1e-12)
+    assert values["H"] == pytest.approx(ref.H, rel=1e-11) and values["H_A"] == values["H"]
+    assert values["V_A"] == pytest.approx(ref.V_A, rel=1e-11)
     assert values["length_on_seabed"] == 0.0
     mesh = meshio.read(tmp_path / "line.vtu")
     assert mesh.point_data["tension"][-1] == pytest.approx(ref.T_B, rel=1e-12)

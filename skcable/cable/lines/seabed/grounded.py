@@ -5,9 +5,9 @@ loads analysis of an offshore floating wind turbine", NREL, 2007).
 
 The iteration starts from the frictionless inextensible touchdown line (a monotone
 equation in ``h = H/w``, bracketed) and runs Newton's method with the closure's analytic
-Jacobian, backtracking so that ``H > 0``, ``0 < V_B <= w L`` and the residual falls;
-one more step is taken once the residual is below ``1e-13`` of the chord, into the
-round-off floor. One scene runs on Python floats, arrays elementwise with NumPy.
+Jacobian (`skcable._newton2.solve2`), backtracking so that ``H > 0``, ``0 < V_B <= w L``
+and the residual falls, until the residual reaches its round-off floor (a few ulps of
+the lengths that enter it). One scene runs on Python floats, arrays elementwise with NumPy.
 """
 
 from __future__ import annotations
@@ -16,15 +16,14 @@ import math
 
 import numpy as np
 
+from skcable._newton2 import solve2
 from skcable._xp import namespace
 from skcable.cable._roots import find_root
-from skcable.cable._special import largest_abs
 from skcable.cable.lines.seabed.closure import anchor_part, grounded_closure
-from skcable.errors import ConvergenceError
 
 __all__ = ["solve_grounded", "solve_grounded_scalar"]
 
-_TOL = 1e-13
+_EPS = float(np.finfo(float).eps)
 
 
 def _touchdown_run(h, span, dh, L1):
@@ -83,76 +82,49 @@ def inextensible_guess_scalar(span, dh, w, EA, L, H0):
     return w * h, min(V * w, cap)
 
 
+def _scaled(H, V, span, dh, w, EA, L, mu_w, depth, chord, floor):
+    """The grounded closure over the chord at ``(H, V)``, its Jacobian and round-off ``floor``
+    (the closure of `skcable._newton2.solve2`). Outside the domain ``H > 0``, ``V > 0``,
+    ``L_B >= 0`` the residuals are NaN (arrays) or ``ValueError`` is raised (floats): the line
+    search halves the step."""
+    if not isinstance(H, np.ndarray):
+        if not (H > 0 and V > 0 and V <= w * (L - anchor_part(H, w, EA, depth)[3])):
+            raise ValueError("outside the grounded closure's domain")
+        f_x, f_z, j_xh, j_xv, j_zh, j_zv = grounded_closure(span, dh, w, EA, L, mu_w, H, V, depth)
+        return f_x / chord, f_z / chord, j_xh / chord, j_xv / chord, j_zh / chord, j_zv / chord, floor
+    with np.errstate(invalid="ignore", divide="ignore"):
+        s1 = anchor_part(np.where(H > 0, H, 1.0), w, EA, depth)[3]
+        valid = (H > 0) & (V > 0) & (V <= w * (L - s1))
+        terms = grounded_closure(span, dh, w, EA, L, mu_w, np.where(valid, H, 1.0), V, depth)
+    f_x, f_z = (np.where(valid, t / chord, np.nan) for t in terms[:2])
+    return (f_x, f_z, *(t / chord for t in terms[2:]), floor)
+
+
+def _solve(span, dh, w, EA, L, mu_w, H, V, depth):
+    """`skcable._newton2.solve2` on the grounded closure from ``(H, V)``, to its round-off:
+    a few ulps of the lengths that enter it, over the chord."""
+    xp = namespace(span, H)
+    V = xp.minimum(V, w * (L - anchor_part(H, w, EA, depth)[3]))  # the start inside the domain: L_B >= 0
+    chord = xp.hypot(span, dh)
+    floor = 4.0 * _EPS * (L + span + xp.abs(dh) + depth) / chord
+    args = (span, dh, w, EA, L, mu_w, depth, chord, floor)
+    result = solve2(_scaled, H, V, args, max_iter=80, halvings=40, what="elastic_catenary (seabed)")
+    return result.x, result.y, result.history
+
+
 def solve_grounded_scalar(span, dh, w, EA, L, mu_w, H0, depth):
     """`solve_grounded` of one scene, on Python floats (the same iteration)."""
     _, _, x1, s1, _ = anchor_part(H0, w, EA, depth)
     H, V = inextensible_guess_scalar(span - x1, dh + depth, w, EA, L - s1, H0)
-    chord = math.hypot(span, dh)
-    f_x, f_z, j_xh, j_xv, j_zh, j_zv = grounded_closure(span, dh, w, EA, L, mu_w, H, V, depth)
-    norm = max(abs(f_x), abs(f_z)) / chord
-    history = [norm]
-    polish = 0
-    for _ in range(80):
-        if norm < _TOL:
-            polish += 1  # one more step into the round-off floor
-            if polish > 1:
-                return H, V, history
-        det = j_xh * j_zv - j_xv * j_zh
-        if not (det != 0.0 and math.isfinite(det)):
-            break
-        d_h = -(f_x * j_zv - f_z * j_xv) / det
-        d_v = -(j_xh * f_z - j_zh * f_x) / det
-        step = 1.0
-        for _ in range(40):  # backtrack: H > 0, 0 < V <= wL, residual reduced
-            H_new, V_new = H + step * d_h, V + step * d_v
-            s1 = anchor_part(H_new if H_new > 0 else 1.0, w, EA, depth)[3]
-            valid = H_new > 0 and V_new > 0 and V_new <= w * (L - s1)
-            H_try, V_try = (H_new, V_new) if valid else (H, V)
-            f_x, f_z, j_xh, j_xv, j_zh, j_zv = grounded_closure(span, dh, w, EA, L, mu_w, H_try, V_try, depth)
-            new = max(abs(f_x), abs(f_z)) / chord
-            if valid and new < norm * (1.0 - 1e-4 * step) + 4 * _TOL:
-                break
-            step = 0.5 * step
-        H, V, norm = H_try, V_try, new
-        history.append(norm)
-    raise ConvergenceError("elastic_catenary (seabed): Newton did not converge", history)
+    return _solve(span, dh, w, EA, L, mu_w, H, V, depth)
 
 
 def solve_grounded(span, dh, w, EA, L, mu_w, H0, depth):
-    """Newton with backtracking on the grounded closure, arrays of contact elements.
+    """Newton with backtracking on the grounded closure (`skcable._newton2.solve2`), arrays of
+    contact elements, each to its round-off.
 
     Returns ``(H, V_B, history)``: the fairlead forces (N) and the largest scaled
     residual at each iteration."""
     _, _, x1, s1, _ = anchor_part(H0, w, EA, depth)
     H, V = inextensible_guess(span - x1, dh + depth, w, EA, L - s1, H0)
-    chord = np.hypot(span, dh)
-    f_x, f_z, *jac = grounded_closure(span, dh, w, EA, L, mu_w, H, V, depth)
-    norm = np.maximum(np.abs(f_x), np.abs(f_z)) / chord
-    history = [largest_abs(norm)]
-    polish = 0
-    for _ in range(80):
-        if history[-1] < _TOL:
-            polish += 1  # one more step into the round-off floor
-            if polish > 1:
-                return H, V, history
-        j_xh, j_xv, j_zh, j_zv = jac
-        det = j_xh * j_zv - j_xv * j_zh
-        d_h = -(f_x * j_zv - f_z * j_xv) / det
-        d_v = -(j_xh * f_z - j_zh * f_x) / det
-        step = np.ones_like(H)
-        for _ in range(40):  # backtrack: H > 0, 0 < V <= wL, residual reduced
-            H_new, V_new = H + step * d_h, V + step * d_v
-            with np.errstate(invalid="ignore", divide="ignore"):
-                s1 = anchor_part(np.where(H_new > 0, H_new, 1.0), w, EA, depth)[3]
-            valid = (H_new > 0) & (V_new > 0) & (V_new <= w * (L - s1))
-            H_try = np.where(valid, H_new, H)
-            V_try = np.where(valid, V_new, V)
-            f_x, f_z, *jac = grounded_closure(span, dh, w, EA, L, mu_w, H_try, V_try, depth)
-            new = np.maximum(np.abs(f_x), np.abs(f_z)) / chord
-            ok = valid & (new < norm * (1.0 - 1e-4 * step) + 4 * _TOL)
-            if ok.all():
-                break
-            step = np.where(ok, step, 0.5 * step)
-        H, V, norm = H_try, V_try, new
-        history.append(largest_abs(norm))
-    raise ConvergenceError("elastic_catenary (seabed): Newton did not converge", history)
+    return _solve(span, dh, w, EA, L, mu_w, H, V, depth)

@@ -38,6 +38,8 @@ from __future__ import annotations
 
 import numpy as np
 
+from skcable.cable._special import asinh_step
+
 __all__ = ["sloped_closure", "sloped_jacobian", "slope_frame"]
 
 
@@ -58,8 +60,10 @@ def sloped_closure(span, dh, w, EA, L, m, mu, H, L_B):
     L_s = L - L_B
     V_t = H * m
     V_B = V_t + w * L_s
-    X = H * L_s / EA + H / w * (np.arcsinh(V_B / H) - np.arcsinh(V_t / H))
-    Z = (np.hypot(H, V_B) - np.hypot(H, V_t)) / w + (V_B * V_B - V_t * V_t) / (2.0 * EA * w)
+    # the suspended part from the step w L_s/H formed directly (D1 of issue 26), and
+    # (T_B - T_t)/w = L_s (V_B + V_t)/(T_B + T_t), (V_B² - V_t²)/(2 EA w) = L_s (V_B + V_t)/(2 EA)
+    X = H * L_s / EA + H / w * asinh_step(m, w * L_s / H)
+    Z = L_s * (V_B + V_t) / (np.hypot(H, V_B) + np.hypot(H, V_t)) + L_s * (V_B + V_t) / (2.0 * EA)
     return grounded * cos + X - span, grounded * sin + Z - dh
 
 
@@ -75,7 +79,7 @@ def sloped_jacobian(w, EA, L, m, mu, H, L_B):
     L_s = L - L_B
     V_B = H * m + w * L_s
     T_B = np.hypot(H, V_B)
-    X_H = G_H * cos + L_s / EA + (np.arcsinh(V_B / H) - np.arcsinh(m)) / w - L_s / T_B
+    X_H = G_H * cos + L_s / EA + asinh_step(m, w * L_s / H) / w - L_s / T_B
     X_L = G_L * cos - H / EA - H / T_B
     Z_H = G_H * sin + ((H + V_B * m) / T_B - 1.0 / cos) / w + L_s * m / EA
     Z_L = G_L * sin - V_B / T_B - V_B / EA

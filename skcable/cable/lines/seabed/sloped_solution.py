@@ -23,7 +23,7 @@ from __future__ import annotations
 import numpy as np
 
 from skcable._checks import real, require, whole
-from skcable.cable._special import asinh_diff
+from skcable.cable._special import asinh_step
 from skcable.cable.lines.seabed.slope_closure import slope_frame, sloped_closure, sloped_jacobian
 from skcable.errors import ConvergenceError
 from skcable.results import ProfileMixin
@@ -118,8 +118,8 @@ class SlopedSeabedCatenary(ProfileMixin):
         sigma = np.maximum(s - self.length_on_seabed, 0.0)
         V = V_t + w * sigma
         T, T_t = np.hypot(H, V), self.T_touchdown
-        x = self.x_touchdown + H * sigma / EA + H / w * asinh_diff(V / H, V_t / H)
-        y = self.y_touchdown + sigma * (V_t + 0.5 * w * sigma) / EA + (V - V_t) * (V + V_t) / ((T + T_t) * w)
+        x = self.x_touchdown + H * sigma / EA + H / w * asinh_step(V_t / H, w * sigma / H)
+        y = self.y_touchdown + sigma * (V_t + 0.5 * w * sigma) / EA + sigma * (V + V_t) / (T + T_t)
         return x, y, T, V
 
     def _maps(self, s):

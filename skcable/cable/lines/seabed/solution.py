@@ -29,7 +29,7 @@ from skcable._checks import real, require, whole
 from skcable._xp import namespace
 from skcable.cable._elastic import ElasticCatenary, elastic_stiffness, inverse_2x2
 from skcable.cable._roots import find_root
-from skcable.cable._special import asinh_diff
+from skcable.cable._special import asinh_step
 from skcable.cable.lines.seabed import heap as heap_state
 from skcable.cable.lines.seabed.closure import grounded_closure, tensioned
 from skcable.cable.solution import CableSolution
@@ -56,7 +56,7 @@ def _primitive(tv, H):
 
 def _left_run(s, x, H, V1, w, EA):
     """Abscissa of the point ``s`` on the part hanging from an anchor above the seabed, less ``x``."""
-    return H * s / EA + H / w * asinh_diff((w * s - V1) / H, -V1 / H) - x
+    return H * s / EA + H / w * asinh_step(-V1 / H, w * s / H) - x
 
 
 def _catenary_y_terms(hang, s):
@@ -161,12 +161,12 @@ class SeabedCatenary(ProfileMixin, CableSolution):
     # -- the part hanging from an anchor above the seabed (empty otherwise) -----------
     def _left_x(self, s):
         H = self._Hr
-        return H * s / self.EA + H / self.w * asinh_diff((self.w * s - self._V1) / H, -self._V1 / H)
+        return H * s / self.EA + H / self.w * asinh_step(-self._V1 / H, self.w * s / H)
 
     def _left_y(self, s):
         tv, tv_a = self.w * s - self._V1, -self._V1
-        rise = (tv - tv_a) * (tv + tv_a) / (np.hypot(self._Hr, tv) + np.hypot(self._Hr, tv_a))
-        return s * (0.5 * self.w * s - self._V1) / self.EA + rise / self.w
+        rise = s * (tv + tv_a) / (np.hypot(self._Hr, tv) + np.hypot(self._Hr, tv_a))  # w s formed directly
+        return s * (0.5 * self.w * s - self._V1) / self.EA + rise
 
     @cached_property
     def x_landing(self):

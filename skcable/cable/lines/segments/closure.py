@@ -31,9 +31,9 @@ from __future__ import annotations
 import numpy as np
 
 from skcable._xp import scalar_math
-from skcable.cable._special import asinh_diff
+from skcable.cable._special import asinh_step_parts
 
-__all__ = ["ClosureState", "closure_state"]
+__all__ = ["ClosureState", "closure_state", "piece_terms", "sine_step"]
 
 
 class ClosureState:
@@ -123,16 +123,50 @@ def _suspended(arrays, H, k, a, touchdown, V_top, V_bot, V_bot_k, V_top_k, st):
             Vb[0], dVb[0] = 0.0, 0.0
             Ls[0] -= a
     Tt, Tb = xp.hypot(H, Vt), xp.hypot(H, Vb)
-    ad = asinh_diff(Vt / H, Vb / H)
-    dx = H * Ls / EAs + H / ws * ad
-    dy = Ls * (Vt + Vb) / (2.0 * EAs) + (Vt - Vb) * (Vt + Vb) / ((Tt + Tb) * ws)
-    x_h = Ls / EAs + ad / ws - (Vt / Tt - Vb / Tb) / ws
-    x_v = H / ws * (1.0 / EAs + 1.0 / Tt) - dVb * H / ws * (1.0 / EAs + 1.0 / Tb)
-    y_h = H * (Tb - Tt) / (Tt * Tb * ws)
-    y_v = Vt * (1.0 / Tt + 1.0 / EAs) / ws - dVb * Vb * (1.0 / Tb + 1.0 / EAs) / ws
+    dx, dy, x_h, x_v, y_h, y_v = piece_terms(xp, H, Vt, Vb, Tt, Tb, Ls, ws, EAs, dVb)
     st.Vb, st.L_s, st.Tt, st.Tb, st.dx, st.dy = Vb, Ls, Tt, Tb, dx, dy
     if xp is np:
         return tuple(float(v.sum()) for v in (dx, dy, x_h, x_v, y_h, y_v))
+    return dx, dy, x_h, x_v, y_h, y_v
+
+
+def sine_step(xp, d, qt, qb, rt, rb):
+    r"""``V_t/T_t - V_b/T_b`` of a piece from the step ``d = w L/H`` formed directly, with
+    ``q = V/H``, ``r = T/H`` at its ends: :math:`d\,c/((r_t + r_b) r_t r_b)`, where
+    :math:`c = 1 + r_t r_b - q_t q_b`, written as
+    :math:`1 + (1 + q_t^2 + q_b^2)/(r_t r_b + q_t q_b)` where :math:`q_t q_b > 0` (no cancellation)."""
+    both = qt * qb
+    if xp is not np:
+        c = 1.0 + ((1.0 + qt * qt + qb * qb) / (rt * rb + both) if both > 0 else rt * rb - both)
+    else:
+        c = 1.0 + np.where(both > 0, (1.0 + qt * qt + qb * qb) / (rt * rb + np.abs(both)), rt * rb - both)
+    return d * c / ((rt + rb) * rt * rb)
+
+
+def piece_terms(xp, H, Vt, Vb, Tt, Tb, Ls, ws, EAs, dVb):
+    r"""Run, rise and their Jacobian in ``(H, V)`` of suspended pieces (`xp`: `math` or NumPy).
+
+    ``Vt, Vb`` (N) the vertical force at the top and the bottom, ``Tt, Tb`` the tensions,
+    ``Ls`` the hanging length (m), ``dVb = ∂V_b/∂V`` (1, or 0 at a tangent touchdown). The
+    step :math:`d = w L_s/H` enters formed directly, never as ``V_t/H - V_b/H``
+    (`skcable.cable._special.asinh_step_parts`; :math:`T_t - T_b = w L_s (V_t + V_b)/(T_t + T_b)`,
+    `sine_step`), so a taut, light line keeps its digits. Returns ``dx, dy, ∂dx/∂H, ∂dx/∂V,
+    ∂dy/∂H, ∂dy/∂V``."""
+    qt, qb, rt, rb = Vt / H, Vb / H, Tt / H, Tb / H
+    d = ws * Ls / H
+    ad = asinh_step_parts(qb, d, qt, rb, rt)[1]
+    sd = sine_step(xp, d, qt, qb, rt, rb)
+    rise = Ls * (Vt + Vb) / (Tt + Tb)  # (T_t - T_b)/w
+    dx = H * Ls / EAs + H / ws * ad
+    dy = Ls * (Vt + Vb) / (2.0 * EAs) + rise
+    x_h = Ls / EAs + (ad - sd) / ws
+    y_h = -H * rise / (Tt * Tb)  # H (T_b - T_t)/(T_t T_b w)
+    if xp is not np:
+        if dVb:
+            return dx, dy, x_h, y_h, y_h, sd / ws + Ls / EAs
+        return dx, dy, x_h, H / ws * (1.0 / EAs + 1.0 / Tt), y_h, Vt * (1.0 / Tt + 1.0 / EAs) / ws
+    x_v = np.where(dVb > 0, y_h, H / ws * (1.0 / EAs + 1.0 / Tt))
+    y_v = np.where(dVb > 0, sd / ws + Ls / EAs, Vt * (1.0 / Tt + 1.0 / EAs) / ws)
     return dx, dy, x_h, x_v, y_h, y_v
 
 

@@ -23,6 +23,7 @@ import math
 import numpy as np
 
 from skcable._checks import nonnegative, positive, real, require, scalar
+from skcable._newton2 import solve2
 from skcable.cable._roots import find_root
 from skcable.cable.lines.seabed import elastic_catenary
 from skcable.cable.lines.segments.arrays import line_arrays
@@ -34,13 +35,26 @@ from skcable.errors import ConvergenceError, InputError
 
 __all__ = ["Line"]
 
-_TOL = 1e-13
+_EPS = float(np.finfo(float).eps)
 
 
 def _height_left(V, line, H, dh):
     """``Z(H, V) - dh`` of ``line`` (m); ``-dh`` where the whole line would lie on the seabed."""
     st = line.state(H, V)
     return -dh if st is None else st.Z - dh
+
+
+def _scaled_closure(H, V, line, span, dh, chord, floor, state):
+    """The closure of ``line`` over the chord at ``(H, V)``, its Jacobian and round-off ``floor``,
+    then the `ClosureState` (the closure of `skcable._newton2.solve2`); ``state`` is reused at its
+    own ``(H, V)``. Outside the closed form's domain (``H <= 0``, the whole line on the seabed)
+    it raises ``ValueError``: the line search halves the step."""
+    st = state if (H == state.H and V == state.V) else line._trial_state(H, V)
+    if st is None:
+        raise ValueError("no state of the closed form here")
+    j11, j12, j21, j22 = st.jac
+    r1, r2 = (st.X - span) / chord, (st.Z - dh) / chord
+    return r1, r2, j11 / chord, j12 / chord, j21 / chord, j22 / chord, floor, st
 
 
 def _run_left(H, line, span, dh):
@@ -171,45 +185,23 @@ class Line:
         return float(ref.H), float(ref.V_B)
 
     def _newton(self, span, dh, H, V, chord, iterations, state=None):
-        """Newton's method with the analytic Jacobian and backtracking on ``max|residual|``.
+        """Newton's method with the analytic Jacobian and backtracking on ``max|residual|``
+        (`skcable._newton2.solve2` on Python floats), to the closure's round-off floor.
 
-        Works on Python floats: the 2x2 step by Cramer's rule (a singular or non-finite
-        step ends the iteration; the caller checks the residual reached). ``state``: the
-        closed form already evaluated at ``(H, V)`` (a previous solution's)."""
+        Returns ``(state, norm, history)``: the closed form at the last iterate, its largest
+        residual over the chord and the history (the caller checks the residual reached).
+        ``state``: the closed form already evaluated at ``(H, V)`` (a previous solution's)."""
         H, V = float(H), float(V)
         st = self._trial_state(H, V) if state is None else state
         if st is None:
             return None, np.inf, []
-        norm = max(abs(st.X - span), abs(st.Z - dh)) / chord
-        history = [norm]
-        for _ in range(iterations):
-            if norm < _TOL:
-                break
-            j11, j12, j21, j22 = st.jac
-            r1, r2 = st.X - span, st.Z - dh
-            det = j11 * j22 - j12 * j21
-            if not (det != 0.0 and math.isfinite(det)):
-                break
-            step_H = -(r1 * j22 - r2 * j12) / det
-            step_V = -(j11 * r2 - j21 * r1) / det
-            if not (math.isfinite(step_H) and math.isfinite(step_V)):
-                break
-            t = 1.0
-            for _ in range(30):
-                H_new, V_new = H + t * step_H, V + t * step_V
-                new = self._trial_state(H_new, V_new)
-                if new is not None:
-                    new_norm = max(abs(new.X - span), abs(new.Z - dh)) / chord
-                    if new_norm < norm:  # False for NaN
-                        break
-                t *= 0.5
-            else:
-                break
-            H, V, st, norm = H_new, V_new, new, new_norm
-            history.append(norm)
+        floor = 4.0 * _EPS * (self.arrays.total_length + span + abs(dh)) / chord
+        args = (self, span, dh, chord, floor, st)
+        result = solve2(_scaled_closure, H, V, args, max_iter=iterations, strict=False, what="Line.solve")
+        st = result.last[7]
         if st is state:  # no step from a previous solution's state: a state of its own
-            st = self.state(H, V)
-        return st, norm, history
+            st = self.state(result.x, result.y)
+        return st, result.history[-1], result.history
 
     def _bracketed(self, span, dh):
         """``(H, V)`` by nested bracketing: ``V(H)`` from the height, then ``H`` from the run."""
