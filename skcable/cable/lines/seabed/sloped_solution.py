@@ -24,6 +24,7 @@ import numpy as np
 
 from skcable._checks import real, require, whole
 from skcable.cable._special import asinh_step
+from skcable.cable.lines.arc_samples import arc_samples, write_profile
 from skcable.cable.lines.seabed.slope_closure import slope_frame, sloped_closure, sloped_jacobian
 from skcable.errors import ConvergenceError
 from skcable.results import ProfileMixin
@@ -150,20 +151,11 @@ class SlopedSeabedCatenary(ProfileMixin):
         """``n`` points evenly spaced in unstretched arc length, the input of `to_vtk`: ``xy``
         (n, 2) m, ``tension`` (N), ``angle`` (rad above the horizontal), ``load`` (n, 2) N/m."""
         s = np.linspace(0.0, self.length, whole("n", n, 2))
-        x, y, T, angle = self._maps(s)
-        load = np.column_stack([np.zeros_like(s), np.full_like(s, -self.w)])
-        return {
-            "xy": np.column_stack([x, y]),
-            "tension": np.asarray(T, dtype=float),
-            "angle": angle,
-            "load": load,
-        }
+        return arc_samples(*self._maps(s), self.w)
 
     def to_vtk(self, path, n: int = 201):
         """Write the profile as a VTK polyline (see `skcable.io.cable_mesh`); returns the path."""
-        from skcable.io import cable_mesh, write
-
-        return write(cable_mesh(self, n), path)
+        return write_profile(self, path, n)
 
     # -- stiffness ----------------------------------------------------------------------
     def stiffness(self):

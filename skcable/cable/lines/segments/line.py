@@ -44,17 +44,16 @@ def _height_left(V, line, H, dh):
     return -dh if st is None else st.Z - dh
 
 
-def _scaled_closure(H, V, line, span, dh, chord, floor, state):
-    """The closure of ``line`` over the chord at ``(H, V)``, its Jacobian and round-off ``floor``,
-    then the `ClosureState` (the closure of `skcable._newton2.solve2`); ``state`` is reused at its
-    own ``(H, V)``. Outside the closed form's domain (``H <= 0``, the whole line on the seabed)
-    it raises ``ValueError``: the line search halves the step."""
+def _closure(H, V, line, span, dh, floor, state):
+    """The closure ``(X - span, Z - dh)`` (m) of ``line`` at ``(H, V)``, its Jacobian and round-off
+    ``floor`` (m), then the `ClosureState` (the closure of `skcable._newton2.solve2`); ``state``
+    is reused at its own ``(H, V)``. Outside the closed form's domain (``H <= 0``, the whole
+    line on the seabed) it raises ``ValueError``: the line search halves the step."""
     st = state if (H == state.H and V == state.V) else line._trial_state(H, V)
     if st is None:
         raise ValueError("no state of the closed form here")
     j11, j12, j21, j22 = st.jac
-    r1, r2 = (st.X - span) / chord, (st.Z - dh) / chord
-    return r1, r2, j11 / chord, j12 / chord, j21 / chord, j22 / chord, floor, st
+    return st.X - span, st.Z - dh, j11, j12, j21, j22, floor, st
 
 
 def _run_left(H, line, span, dh):
@@ -195,13 +194,13 @@ class Line:
         st = self._trial_state(H, V) if state is None else state
         if st is None:
             return None, np.inf, []
-        floor = 4.0 * _EPS * (self.arrays.total_length + span + abs(dh)) / chord
-        args = (self, span, dh, chord, floor, st)
-        result = solve2(_scaled_closure, H, V, args, max_iter=iterations, strict=False, what="Line.solve")
+        floor = 4.0 * _EPS * (self.arrays.total_length + span + abs(dh))  # m
+        result = solve2(_closure, H, V, (self, span, dh, floor, st), max_iter=iterations, strict=False)
         st = result.last[7]
         if st is state:  # no step from a previous solution's state: a state of its own
             st = self.state(result.x, result.y)
-        return st, result.history[-1], result.history
+        history = [value / chord for value in result.history]
+        return st, history[-1], history
 
     def _bracketed(self, span, dh):
         """``(H, V)`` by nested bracketing: ``V(H)`` from the height, then ``H`` from the run."""

@@ -25,6 +25,7 @@ import numpy as np
 
 from skcable._checks import real, require, whole
 from skcable.cable._special import asinh_step_parts
+from skcable.cable.lines.arc_samples import arc_samples, write_profile
 from skcable.errors import ConvergenceError, InputError
 from skcable.results import ProfileMixin
 
@@ -355,22 +356,13 @@ class LineSolution(ProfileMixin):
         m, ``tension`` (N), ``angle`` (rad above the horizontal), ``load`` (n, 2) N/m (the segments'
         weight; the point forces at the joints are not included)."""
         s = np.linspace(0.0, self.length, whole("n", n, 2))
-        x, y, T, angle = self._maps(s)
         arrays = self.line.arrays
         w = arrays.w[np.clip(np.searchsorted(arrays.s_joint, s, side="right") - 1, 0, arrays.n - 1)]
-        load = np.column_stack([np.zeros_like(s), -w])
-        return {
-            "xy": np.column_stack([x, y]),
-            "tension": np.asarray(T, dtype=float),
-            "angle": angle,
-            "load": load,
-        }
+        return arc_samples(*self._maps(s), w)
 
     def to_vtk(self, path, n: int = 201):
         """Write the profile as a VTK polyline (see `skcable.io.cable_mesh`); returns the path."""
-        from skcable.io import cable_mesh, write
-
-        return write(cable_mesh(self, n), path)
+        return write_profile(self, path, n)
 
     def stiffness(self):
         """Fairlead stiffness ``∂(H, V_B)/∂(span, dh)`` with A fixed, shape ``(2, 2)``.
