@@ -33,7 +33,7 @@ from skcable._checks import broadcast, exactly_one, float_range, positive, real,
 from skcable._xp import namespace
 from skcable.cable._catenary import _finite_at, _lowest, _unit
 from skcable.cable._roots import find_root
-from skcable.cable._special import asinh_diff
+from skcable.cable._special import asinh_step
 from skcable.cable.solution import CableSolution, checked_closed_form, matrix_2x2
 from skcable.errors import InputError
 
@@ -71,7 +71,7 @@ def _excess_closed(a, slope, delta):
     xp = namespace(a, slope, delta)
     p_a, p_b = slope - delta, slope + delta
     rise = p_b * xp.hypot(1.0, p_b) - p_a * xp.hypot(1.0, p_a)
-    return 0.5 * a * (rise + asinh_diff(p_b, p_a)) - 2.0 * a * delta * xp.hypot(1.0, slope)
+    return 0.5 * a * (rise + asinh_step(p_a, 2.0 * delta)) - 2.0 * a * delta * xp.hypot(1.0, slope)
 
 
 def _excess_length(a, slope, delta):
