@@ -151,7 +151,8 @@ def _x_of_s_minus(s, x, H, V_A, w, EA):
 class ElasticCatenary(CableSolution):
     """Solution of `elastic_catenary`.
 
-    Attributes are those of `Catenary`, with
+    Attributes are those of `Catenary` (``H = H_A = H_B``, the horizontal tension being the
+    same all along), with
     ``length`` the unstretched length, plus ``EA``, ``stretched_length`` and
     the Lagrangian maps ``x_of_s(s)``, ``y_of_s(s)``, ``s_of_x(x)``. The
     lowest point ``x_low, y_low`` is that of the cable (a support when the
@@ -184,6 +185,17 @@ class ElasticCatenary(CableSolution):
 
     def _tv(self, s):
         return self.w * s - self.V_A
+
+    def xy(self, s):
+        """Positions ``(..., 2)`` (m) of the material points ``s`` (m of unstretched length from A)."""
+        return np.stack(np.broadcast_arrays(self.x_of_s(s), self.y_of_s(s)), axis=-1)
+
+    def T_of_s(self, s):
+        """Tension (N) at the material point ``s``: ``H sqrt(1 + (q + w s/H)²)``."""
+        s = real("s", s)
+        p_s = self._ratios[0] + self.w * s / self.H
+        with float_range("s", "T(s)"):
+            return _finite_at("s", self.H * namespace(p_s).hypot(1.0, p_s), "T(s)")
 
     def x_of_s(self, s):
         """Abscissa of the material point ``s`` (unstretched arc length from A)."""
