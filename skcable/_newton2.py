@@ -3,9 +3,9 @@ r"""Damped Newton's method for two unknowns, elementwise over scenes.
 Every closed form of the package that closes a cable on two unknowns (Irvine's elastic
 catenary, lines on a seabed, multi-segment lines, funicular polygons) solves
 :math:`f(x, y) = 0`, :math:`f = (f_1, f_2)`, with the analytic Jacobian, the 2 × 2 step by
-Cramer's rule and a backtracking line search on the merit :math:`\max(|f_1|, |f_2|)`
-(Dennis and Schnabel, *Numerical Methods for Unconstrained Optimization and Nonlinear
-Equations*, 1983, §6.3). `solve2` is that iteration, once, with two back ends:
+Cramer's rule and a backtracking line search (Dennis and Schnabel, *Numerical Methods for
+Unconstrained Optimization and Nonlinear Equations*, 1983, §6.3). `solve2` is that
+iteration, once, with two back ends:
 
 - **scalar**: Python floats throughout (NumPy ufuncs cost 0.2–1 µs each on a scalar), for
   the hot one-scene paths;
@@ -20,36 +20,38 @@ reduces, such as a polygon's segments, are welcome).
 
 The closure
 -----------
-``closure(x, y, *args)`` returns a tuple whose first seven items are::
+``closure(x, y, *args)`` returns a tuple whose first eight items are::
 
-    f1, f2, j11, j12, j21, j22, floor
+    f1, f2, j11, j12, j21, j22, size1, size2
 
-the two residuals (in one dimensionless scale: a length residual divided by the chord, a
-force residual by a force scale), their Jacobian ``j_ik = ∂f_i/∂(x, y)_k`` and ``floor``,
-the round-off of the residuals at ``(x, y)``: a few ulps of the largest term that enters
-them, in the same scale (what ``max(|f1|, |f2|)`` cannot be expected to fall below). More
-items may follow (the scalar back end hands the whole tuple back as `Newton2.last`; the
-array back end keeps the seven). A point outside the closure's domain (``H <= 0``, a
-segment gone slack) is signalled by a non-finite residual, or on the scalar back end by an
-``OverflowError``, ``ZeroDivisionError`` or ``ValueError``: the line search then halves
-the step.
+the two residuals in one unit (both in metres, say: the miss of the end point), their
+Jacobian ``j_ik = ∂f_i/∂(x, y)_k`` and the size of each residual's terms (``size_i > 0``:
+the sum of the magnitudes of what is added or subtracted to form ``f_i``, the operands of
+any difference inside included), so that a few ulps of ``size_i`` are the round-off of
+``f_i``. The line search asks a sufficient decrease of the merit :math:`\max(|f_1|, |f_2|)`;
+convergence is judged on each residual against its own size,
+:math:`\max_i |f_i|/\mathrm{size}_i` (the history records it). More items may follow
+(the scalar back end hands the whole tuple back as `Newton2.last`; the array back end keeps
+the eight). A point outside the closure's domain (``H <= 0``, a segment gone slack) is
+signalled by a non-finite residual, or on the scalar back end by an ``OverflowError``,
+``ZeroDivisionError`` or ``ValueError``: the line search then halves the step.
 
 Convergence is sized to that round-off, so that a scene converges alike in any unit
-system: an element has converged when ``max(|f1|, |f2|) <= floor``, or, within `STALL`
-times the floor, when a step no longer halves the merit (the quadratic rate has ended in
-the round-off) or no step along Newton's direction reduces it. An element that stops
-otherwise (no decrease above the round-off, a singular or non-finite step, ``max_iter``
-iterations) has not converged: `solve2` raises
-`skcable.errors.ConvergenceError` with the history of the merit, or with
-``strict=False`` returns the iterate and ``converged`` False there (for callers with a
-fallback).
+system: an element has converged when each residual is at most ``floor`` (by default
+`FLOOR`, 8 ulps) times its size, or, within `STALL` times that, when a step no longer halves
+the relative residual (the quadratic rate has ended in the round-off) or no step along
+Newton's direction reduces the merit. An element that stops otherwise (no decrease above
+the round-off, a singular or non-finite step, ``max_iter`` iterations) has not converged:
+`solve2` raises `skcable.errors.ConvergenceError` with that history, or with ``strict=False``
+returns the iterate and ``converged`` False there (for callers with a fallback). A caller
+with a coarser tolerance of its own passes it as ``floor`` (and sizes in its scale: a chord).
 
 Examples
 --------
 The unit circle meets the line ``x = y`` at ``(1/√2, 1/√2)``:
 
 >>> def closure(x, y):
-...     return x * x + y * y - 1.0, x - y, 2.0 * x, 2.0 * y, 1.0, -1.0, 4e-16 * (x * x + y * y + 1.0)
+...     return x * x + y * y - 1.0, x - y, 2.0 * x, 2.0 * y, 1.0, -1.0, x * x + y * y + 1.0, abs(x) + abs(y)
 >>> result = solve2(closure, 1.0, 0.0)
 >>> round(result.x, 15), result.converged
 (0.707106781186548, True)
@@ -64,8 +66,10 @@ import numpy as np
 
 from skcable.errors import ConvergenceError
 
-__all__ = ["Newton2", "STALL", "solve2"]
+__all__ = ["FLOOR", "Newton2", "STALL", "solve2"]
 
+#: Default convergence floor: residuals within 8 ulps of the size of their terms.
+FLOOR = 8.0 * 2.220446049250313e-16
 #: An element whose merit no step can reduce is converged while within this many floors.
 STALL = 8.0
 #: Sufficient decrease of the line search (Armijo's constant on the merit).
@@ -81,12 +85,12 @@ class Newton2(NamedTuple):
     x, y : float or ndarray
         The last iterate (the solution where ``converged``).
     history : list of float
-        The largest merit ``max(|f1|, |f2|)`` over the elements still iterating, at the
-        start and after every iteration.
+        The largest relative residual ``max(|f1|/size1, |f2|/size2)`` over the elements
+        still iterating, at the start and after every iteration.
     converged : bool or ndarray of bool
         Per element.
     last : tuple
-        The closure's value at ``(x, y)``: the whole tuple (scalar back end) or its seven
+        The closure's value at ``(x, y)``: the whole tuple (scalar back end) or its eight
         leading arrays (array back end), of the shape of ``x``.
     """
 
@@ -105,6 +109,7 @@ def solve2(
     *,
     max_iter: int = 60,
     halvings: int = 30,
+    floor: float = FLOOR,
     slack: float = 4.0,
     what: str = "Newton",
     strict: bool = True,
@@ -114,7 +119,7 @@ def solve2(
     Parameters
     ----------
     closure : callable
-        ``closure(x, y, *args) -> (f1, f2, j11, j12, j21, j22, floor, ...)``.
+        ``closure(x, y, *args) -> (f1, f2, j11, j12, j21, j22, size1, size2, ...)``.
     x, y : float or ndarray
         The start.
     args : tuple
@@ -124,10 +129,12 @@ def solve2(
         Largest number of Newton steps.
     halvings : int
         Largest number of step halvings of the line search.
+    floor : float
+        Converged where each residual is at most this times its size.
     slack : float
         The line search takes a step whose merit is below
-        ``merit·(1 - 1e-4·t) + slack·floor``: a sufficient decrease, or a change within the
-        round-off (0 asks for a strict decrease).
+        ``merit·(1 - 1e-4·t) + slack·floor·max(size1, size2)``: a sufficient decrease, or a
+        change within the round-off (0 asks for a strict decrease).
     what : str
         Names the iteration in the error message.
     strict : bool
@@ -138,22 +145,22 @@ def solve2(
     Newton2
     """
     if not (isinstance(x, np.ndarray) or isinstance(y, np.ndarray)):
-        return _scalar(closure, float(x), float(y), args, max_iter, halvings, slack, what, strict)
-    return _array(closure, x, y, args, max_iter, halvings, slack, what, strict)
+        return _scalar(closure, float(x), float(y), args, max_iter, halvings, floor, slack, what, strict)
+    return _array(closure, x, y, args, max_iter, halvings, floor, slack, what, strict)
 
 
-def _merit(f1, f2):
-    a, b = abs(f1), abs(f2)
+def _relative(f1, f2, s1, s2):
+    a, b = abs(f1) / s1, abs(f2) / s2
     return a if a > b else b
 
 
-def _scalar(closure, x, y, args, max_iter, halvings, slack, what, strict):
+def _scalar(closure, x, y, args, max_iter, halvings, floor, slack, what, strict):
     last = closure(x, y, *args)
-    f1, f2, j11, j12, j21, j22, floor = last[:7]
-    merit = _merit(f1, f2)
-    history = [merit]
+    f1, f2, j11, j12, j21, j22, s1, s2 = last[:8]
+    relative = _relative(f1, f2, s1, s2)
+    history = [relative]
     for _ in range(max_iter):
-        if merit <= floor:
+        if relative <= floor:
             return Newton2(x, y, history, True, last)
         det = j11 * j22 - j12 * j21
         if not (det != 0.0 and math.isfinite(det)):
@@ -161,28 +168,29 @@ def _scalar(closure, x, y, args, max_iter, halvings, slack, what, strict):
         dx, dy = (f2 * j12 - f1 * j22) / det, (f1 * j21 - f2 * j11) / det
         if not (math.isfinite(dx) and math.isfinite(dy)):
             break
-        t = 1.0
+        merit, accept, t = max(abs(f1), abs(f2)), slack * floor * max(s1, s2), 1.0
         for _ in range(halvings + 1):
             xn, yn = x + t * dx, y + t * dy
             try:
                 trial = closure(xn, yn, *args)
-                new = _merit(trial[0], trial[1])
-                if new < merit * (1.0 - _DECREASE * t) + slack * trial[6]:  # False for NaN
+                if max(abs(trial[0]), abs(trial[1])) < merit * (1.0 - _DECREASE * t) + accept:  # not NaN
                     break
             except _DOMAIN:
                 pass
             t *= 0.5
         else:  # no decrease along Newton's direction
-            if merit <= STALL * floor:
+            if relative <= STALL * floor:
                 return Newton2(x, y, history, True, last)
             break
-        x, y, last, stalled, merit = xn, yn, trial, new > 0.5 * merit, new
-        f1, f2, j11, j12, j21, j22, floor = last[:7]
-        history.append(merit)
-        if stalled and merit <= STALL * floor:
+        x, y, last = xn, yn, trial
+        f1, f2, j11, j12, j21, j22, s1, s2 = last[:8]
+        new = _relative(f1, f2, s1, s2)
+        stalled, relative = new > 0.5 * relative, new
+        history.append(relative)
+        if stalled and relative <= STALL * floor:
             return Newton2(x, y, history, True, last)
     else:
-        if merit <= floor:
+        if relative <= floor:
             return Newton2(x, y, history, True, last)
     if strict:
         raise ConvergenceError(f"{what}: Newton did not converge", history)
@@ -192,10 +200,10 @@ def _scalar(closure, x, y, args, max_iter, halvings, slack, what, strict):
 def _evaluate(closure, x, y, args):
     with np.errstate(all="ignore"):
         out = closure(x, y, *args)
-    return [np.broadcast_to(np.asarray(v, dtype=float), x.shape) for v in out[:7]]
+    return [np.broadcast_to(np.asarray(v, dtype=float), x.shape) for v in out[:8]]
 
 
-def _array(closure, x, y, args, max_iter, halvings, slack, what, strict):
+def _array(closure, x, y, args, max_iter, halvings, floor, slack, what, strict):
     shape = np.broadcast_shapes(np.shape(x), np.shape(y), *(np.shape(a) for a in args))
     x = np.array(np.broadcast_to(x, shape), dtype=float).ravel()
     y = np.array(np.broadcast_to(y, shape), dtype=float).ravel()
@@ -203,27 +211,31 @@ def _array(closure, x, y, args, max_iter, halvings, slack, what, strict):
     last = [v.copy() for v in _evaluate(closure, x, y, args)]
     converged = np.zeros(x.size, dtype=bool)
     active = np.arange(x.size)
-    merit = np.maximum(np.abs(last[0]), np.abs(last[1]))
-    history = [float(np.max(merit))]
+
+    def relative(at):
+        return np.maximum(np.abs(last[0][at]) / last[6][at], np.abs(last[1][at]) / last[7][at])
+
+    history = [float(np.max(relative(active)))]
     for iteration in range(max_iter + 1):
-        done = merit[active] <= last[6][active]
+        before = relative(active)
+        done = before <= floor
         converged[active[done]] = True
-        active = active[~done]
+        active, before = active[~done], before[~done]
         if active.size == 0 or iteration == max_iter:
             break
-        f1, f2, j11, j12, j21, j22 = (v[active] for v in last[:6])
+        f1, f2, j11, j12, j21, j22, s1, s2 = (v[active] for v in last)
         det = j11 * j22 - j12 * j21
         with np.errstate(all="ignore"):
             dx, dy = (f2 * j12 - f1 * j22) / det, (f1 * j21 - f2 * j11) / det
         stuck = ~(np.isfinite(dx) & np.isfinite(dy))
-        before = merit[active]
-        moved = _line_search(closure, x, y, args, active, dx, dy, merit, last, halvings, slack, stuck)
-        # stalled (the merit no longer halves) or no step: converged at the round-off, or stopped
-        stalled = ~moved | (merit[active] > 0.5 * before)
-        at_floor = stalled & (merit[active] <= STALL * last[6][active])
+        accept = slack * floor * np.maximum(s1, s2)
+        moved = _line_search(closure, (x, y, args, active, dx, dy, last), halvings, accept, stuck)
+        after = relative(active)
+        # stalled (no longer halving) or no step: converged at the round-off, or stopped
+        at_floor = (~moved | (after > 0.5 * before)) & (after <= STALL * floor)
         converged[active[at_floor]] = True
         active = active[moved & ~at_floor]
-        history.append(float(np.max(merit[active], initial=0.0)))
+        history.append(float(np.max(relative(active), initial=0.0)))
     if strict and not converged.all():
         bad = int(np.flatnonzero(~converged)[0])
         raise ConvergenceError(f"{what}: Newton did not converge at element {bad}", history)
@@ -231,8 +243,11 @@ def _array(closure, x, y, args, max_iter, halvings, slack, what, strict):
     return Newton2(x.reshape(shape), y.reshape(shape), history, converged.reshape(shape), tuple(out))
 
 
-def _line_search(closure, x, y, args, active, dx, dy, merit, last, halvings, slack, stuck):
-    """Backtracking from ``x, y`` at ``active`` (updated in place); True where a step was taken."""
+def _line_search(closure, state, halvings, accept, stuck):
+    """Backtracking from ``x, y`` at ``active`` (``state``, updated in place) on the merit
+    ``max(|f1|, |f2|)``; True where a step was taken."""
+    x, y, args, active, dx, dy, last = state
+    merit = np.maximum(np.abs(last[0][active]), np.abs(last[1][active]))
     moved = np.zeros(active.size, dtype=bool)
     pending = np.flatnonzero(~stuck)
     t = np.ones(active.size)
@@ -243,9 +258,9 @@ def _line_search(closure, x, y, args, active, dx, dy, merit, last, halvings, sla
         xn, yn = x[at] + t[pending] * dx[pending], y[at] + t[pending] * dy[pending]
         trial = _evaluate(closure, xn, yn, [a[at] if np.ndim(a) else a for a in args])
         new = np.maximum(np.abs(trial[0]), np.abs(trial[1]))
-        ok = new < merit[at] * (1.0 - _DECREASE * t[pending]) + slack * trial[6]  # False for NaN
+        ok = new < merit[pending] * (1.0 - _DECREASE * t[pending]) + accept[pending]  # False for NaN
         good = at[ok]
-        x[good], y[good], merit[good] = xn[ok], yn[ok], new[ok]
+        x[good], y[good] = xn[ok], yn[ok]
         for full, value in zip(last, trial, strict=True):
             full[good] = value[ok]
         moved[pending[ok]] = True

@@ -37,6 +37,7 @@ from skcable._checks import broadcast, exactly_one, float_range, positive, real,
 from skcable._xp import namespace
 from skcable.cable._roots import find_root
 from skcable.cable._special import (
+    asinh_step_parts,
     dsinhc,
     largest_abs,
     ldexp_sum,
@@ -71,7 +72,8 @@ class Catenary(CableSolution):
     z, m : float or ndarray
         Half-span over ``a``, and the hyperbolic angle at mid-span.
     H, V_A, V_B, T_A, T_B : float or ndarray
-        Horizontal tension, upward reactions and end tensions (N).
+        Horizontal tension (the same all along: ``H = H_A = H_B``), upward reactions and
+        end tensions (N).
     length, sag : float or ndarray
         Cable length and largest vertical chord-to-cable distance (m).
     x_low, y_low : float or ndarray
@@ -163,6 +165,33 @@ class Catenary(CableSolution):
 
     def weight_per_length(self, x, slope):
         return self.w + 0.0 * slope
+
+    def _arc(self, s):
+        """``(s, q, d, p, r_q, r_p)``: the hyperbolic sines at A (``q = sinh u_A``) and at
+        ``s`` (``p``), their step ``d = s/a`` formed directly, and ``r = cosh``."""
+        s = real("s", s)
+        require("s", (s >= 0) & (s <= self.length), "must lie in [0, length]", s)
+        xp = namespace(s, self.a)
+        q, d = -self.V_A / self.H, s / self.a
+        p = q + d
+        return s, q, d, p, xp.hypot(1.0, q), xp.hypot(1.0, p)
+
+    def xy(self, s):
+        r"""Positions ``(..., 2)`` (m) at unstretched arc length ``s`` (m) from A, in [0, length].
+
+        With :math:`q = \sinh u_A`, the arc from A to :math:`u` is :math:`a(\sinh u - q)`, so
+        :math:`\sinh u = q + s/a` and :math:`x = a(u - u_A)`, :math:`y = a(\cosh u - \cosh u_A)`
+        (Irvine, *Cable Structures*, 1981, §2.2, with EA infinite), taken through `asinh_step`
+        and rationalised as :math:`y = s\,(p + q)/(r_p + r_q)`: no cancellation for taut cables.
+        """
+        s, q, d, p, rq, rp = self._arc(s)
+        A = asinh_step_parts(q, d, p, rq, rp)[1]
+        with float_range("s", "xy(s)"):
+            return np.stack(np.broadcast_arrays(self.a * A, s * (p + q) / (rp + rq)), axis=-1)
+
+    def T_of_s(self, s):
+        """Tension (N) at unstretched arc length ``s`` (m) from A: ``H cosh u``."""
+        return self.H * self._arc(s)[5]
 
     @cached_property
     def k_G(self):

@@ -43,14 +43,15 @@ def _unit(size):
 _EPS = float(np.finfo(float).eps)
 
 
-def _closure(tx, ty, offsets, L, target, total, floor):
+def _closure(tx, ty, offsets, L, target, total):
     """Closure error ``(Σ L_j t_j/|t_j| - B)/Σ L_j`` of the first segment force ``(tx, ty)``,
-    its Jacobian ``Σ L_j (I - e_j e_jᵀ)/|t_j|`` (over ``Σ L_j``) and ``floor``, then the
-    segment forces, their norms and directions; NaN where a segment would go slack."""
+    its Jacobian ``Σ L_j (I - e_j e_jᵀ)/|t_j|`` (over ``Σ L_j``) and the sizes (1: relative to
+    the total length), then the segment forces, their norms and directions; NaN where a
+    segment would go slack."""
     forces = np.array([tx, ty]) - offsets
     norms = np.hypot(forces[:, 0], forces[:, 1])
     if not np.all(norms > 0):
-        return (math.nan,) * 7 + (forces, norms, forces)
+        return (math.nan,) * 6 + (1.0, 1.0, forces, norms, forces)
     units = forces / norms[:, None]
     error = (units.T @ L - target) / total
     jac = np.einsum("j,jab->ab", L / norms, np.eye(2) - units[:, :, None] * units[:, None, :]) / total
@@ -61,7 +62,8 @@ def _closure(tx, ty, offsets, L, target, total, floor):
         float(jac[0, 1]),
         float(jac[1, 0]),
         float(jac[1, 1]),
-        floor,
+        1.0,
+        1.0,
         forces,
         norms,
         units,
@@ -225,10 +227,9 @@ def funicular(B, lengths, loads, *, tol: float = 1e-13, max_iter: int = 100) -> 
     t1 = (scale, -0.5 * P[:, 1].sum() - 0.5 * P[:, 0].sum() + target[1] / total * scale)
     # the closure's round-off: a few ulps of the n + 1 terms it sums, relative to the total length
     floor = max(tol, 4.0 * _EPS * len(L))
-    result = solve2(
-        _closure, *t1, (offsets, L, target, total, floor), slack=0.0, what="funicular", max_iter=max_iter
-    )
-    forces, norms, units = result.last[7:]
+    args = (offsets, L, target, total)
+    result = solve2(_closure, *t1, args, floor=floor, slack=0.0, what="funicular", max_iter=max_iter)
+    forces, norms, units = result.last[8:]
     history = result.history
     nodes = np.vstack([np.zeros(2), np.cumsum(L[:, None] * units, axis=0)]) * length_unit
     nodes[-1] = B
