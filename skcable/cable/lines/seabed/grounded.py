@@ -23,8 +23,6 @@ from skcable.cable.lines.seabed.closure import anchor_part, grounded_closure
 
 __all__ = ["solve_grounded", "solve_grounded_scalar"]
 
-_EPS = float(np.finfo(float).eps)
-
 
 def _touchdown_run(h, span, dh, L1):
     """``X(h) - span`` of the frictionless inextensible touchdown line, ``h = H/w`` (m):
@@ -82,33 +80,32 @@ def inextensible_guess_scalar(span, dh, w, EA, L, H0):
     return w * h, min(V * w, cap)
 
 
-def _scaled(H, V, span, dh, w, EA, L, mu_w, depth, chord, floor):
-    """The grounded closure over the chord at ``(H, V)``, its Jacobian and round-off ``floor``
-    (the closure of `skcable._newton2.solve2`). Outside the domain ``H > 0``, ``V > 0``,
+def _closure(H, V, span, dh, w, EA, L, mu_w, depth, size_x, size_z):
+    """The grounded closure (m) at ``(H, V)``, its Jacobian and the sizes of its terms (the
+    closure of `skcable._newton2.solve2`). Outside the domain ``H > 0``, ``V > 0``,
     ``L_B >= 0`` the residuals are NaN (arrays) or ``ValueError`` is raised (floats): the line
     search halves the step."""
     if not isinstance(H, np.ndarray):
         if not (H > 0 and V > 0 and V <= w * (L - anchor_part(H, w, EA, depth)[3])):
             raise ValueError("outside the grounded closure's domain")
-        f_x, f_z, j_xh, j_xv, j_zh, j_zv = grounded_closure(span, dh, w, EA, L, mu_w, H, V, depth)
-        return f_x / chord, f_z / chord, j_xh / chord, j_xv / chord, j_zh / chord, j_zv / chord, floor
+        return (*grounded_closure(span, dh, w, EA, L, mu_w, H, V, depth), size_x, size_z)
     with np.errstate(invalid="ignore", divide="ignore"):
         s1 = anchor_part(np.where(H > 0, H, 1.0), w, EA, depth)[3]
         valid = (H > 0) & (V > 0) & (V <= w * (L - s1))
         terms = grounded_closure(span, dh, w, EA, L, mu_w, np.where(valid, H, 1.0), V, depth)
-    f_x, f_z = (np.where(valid, t / chord, np.nan) for t in terms[:2])
-    return (f_x, f_z, *(t / chord for t in terms[2:]), floor)
+    f_x, f_z = (np.where(valid, t, np.nan) for t in terms[:2])
+    return (f_x, f_z, *terms[2:], size_x, size_z)
 
 
 def _solve(span, dh, w, EA, L, mu_w, H, V, depth):
-    """`skcable._newton2.solve2` on the grounded closure from ``(H, V)``, to its round-off:
-    a few ulps of the lengths that enter it, over the chord."""
+    """`skcable._newton2.solve2` on the grounded closure from ``(H, V)``, to its round-off: a
+    few ulps of the lengths that enter each equation (the run and the grounded and hanging
+    lengths, at most the line's; the heights)."""
     xp = namespace(span, H)
     V = xp.minimum(V, w * (L - anchor_part(H, w, EA, depth)[3]))  # the start inside the domain: L_B >= 0
-    chord = xp.hypot(span, dh)
-    floor = 4.0 * _EPS * (L + span + xp.abs(dh) + depth) / chord
-    args = (span, dh, w, EA, L, mu_w, depth, chord, floor)
-    result = solve2(_scaled, H, V, args, max_iter=80, halvings=40, what="elastic_catenary (seabed)")
+    sizes = (L + span, L + xp.abs(dh) + depth)
+    args = (span, dh, w, EA, L, mu_w, depth, *sizes)
+    result = solve2(_closure, H, V, args, max_iter=80, halvings=40, what="elastic_catenary (seabed)")
     return result.x, result.y, result.history
 
 

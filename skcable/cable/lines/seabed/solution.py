@@ -34,7 +34,6 @@ from skcable.cable.lines.seabed import heap as heap_state
 from skcable.cable.lines.seabed.closure import grounded_closure, tensioned
 from skcable.cable.solution import CableSolution
 from skcable.errors import InputError
-from skcable.results import ProfileMixin
 
 __all__ = ["SeabedCatenary"]
 
@@ -68,7 +67,7 @@ def _catenary_y_terms(hang, s):
     return s * (0.5 * hang.w * s - hang.V_A) / hang.EA, rise / hang.w
 
 
-class SeabedCatenary(ProfileMixin, CableSolution):
+class SeabedCatenary(CableSolution):
     """Solution of `elastic_catenary` with a ``seabed``.
 
     ``H`` is the horizontal tension of the suspended part (the fairlead's),

@@ -35,8 +35,6 @@ from skcable.errors import ConvergenceError, InputError
 
 __all__ = ["Line"]
 
-_EPS = float(np.finfo(float).eps)
-
 
 def _height_left(V, line, H, dh):
     """``Z(H, V) - dh`` of ``line`` (m); ``-dh`` where the whole line would lie on the seabed."""
@@ -44,16 +42,17 @@ def _height_left(V, line, H, dh):
     return -dh if st is None else st.Z - dh
 
 
-def _closure(H, V, line, span, dh, floor, state):
-    """The closure ``(X - span, Z - dh)`` (m) of ``line`` at ``(H, V)``, its Jacobian and round-off
-    ``floor`` (m), then the `ClosureState` (the closure of `skcable._newton2.solve2`); ``state``
-    is reused at its own ``(H, V)``. Outside the closed form's domain (``H <= 0``, the whole
-    line on the seabed) it raises ``ValueError``: the line search halves the step."""
+def _closure(H, V, line, span, dh, sizes, state):
+    """The closure ``(X - span, Z - dh)`` (m) of ``line`` at ``(H, V)``, its Jacobian and the
+    ``sizes`` (m) of its terms, then the `ClosureState` (the closure of
+    `skcable._newton2.solve2`); ``state`` is reused at its own ``(H, V)``. Outside the closed
+    form's domain (``H <= 0``, the whole line on the seabed) it raises ``ValueError``: the line
+    search halves the step."""
     st = state if (H == state.H and V == state.V) else line._trial_state(H, V)
     if st is None:
         raise ValueError("no state of the closed form here")
     j11, j12, j21, j22 = st.jac
-    return st.X - span, st.Z - dh, j11, j12, j21, j22, floor, st
+    return st.X - span, st.Z - dh, j11, j12, j21, j22, sizes[0], sizes[1], st
 
 
 def _run_left(H, line, span, dh):
@@ -194,13 +193,15 @@ class Line:
         st = self._trial_state(H, V) if state is None else state
         if st is None:
             return None, np.inf, []
-        floor = 4.0 * _EPS * (self.arrays.total_length + span + abs(dh))  # m
-        result = solve2(_closure, H, V, (self, span, dh, floor, st), max_iter=iterations, strict=False)
-        st = result.last[7]
+        # the sizes of the closure's terms: its pieces' runs and rises are at most their
+        # stretched lengths, ~ the line's length
+        sizes = (self.arrays.total_length + span, self.arrays.total_length + abs(dh))
+        result = solve2(_closure, H, V, (self, span, dh, sizes, st), max_iter=iterations, strict=False)
+        st = result.last[8]
         if st is state:  # no step from a previous solution's state: a state of its own
             st = self.state(result.x, result.y)
-        history = [value / chord for value in result.history]
-        return st, history[-1], history
+        f1, f2 = result.last[:2]
+        return st, max(abs(f1), abs(f2)) / chord, result.history
 
     def _bracketed(self, span, dh):
         """``(H, V)`` by nested bracketing: ``V(H)`` from the height, then ``H`` from the run."""
