@@ -178,3 +178,21 @@ def test_taut_light_line_on_a_falling_slope_against_50_digits(w, light, EA_over_
     # backward error, the exact closure at the computed (H, L_B) within the data's round-off
     residual = closure(mp.mpf(sol.H), mp.mpf(sol.length_on_seabed))
     assert max(abs(float(f)) for f in residual) < 8 * np.finfo(float).eps * np.hypot(span, dh)
+
+
+@pytest.mark.parametrize("seed", range(3))
+def test_lifted_seabed_line_and_free_sloped_line_against_50_digits(seed):
+    """A taut, light line lifted off its anchor on a flat seabed (and one that leaves A above a
+    falling slope): the free elastic catenary path of `elastic_catenary(..., seabed=0)` and of
+    `sloped_seabed_catenary`."""
+    segments, span, dh = next(_taut_light_scenes(100 + seed, 1))
+    L = sum(s[0] for s in segments)
+    w, EA = segments[0][1], segments[0][2]
+    dh = abs(dh) + 0.05 * L  # B above A: the line rises from the anchor, lifted
+    span = float(np.sqrt((L * 1.004) ** 2 - dh * dh))
+    flat = cable.elastic_catenary(span, dh, w, EA, length=L, seabed=0.0)
+    sloped = cable.sloped_seabed_catenary(span, dh, w, EA, length=L, seabed_slope=-0.5)
+    assert flat.length_on_seabed == 0.0 and sloped.length_on_seabed == 0.0
+    H, V = _mp_free_line([(L, w, EA)], span, dh, flat.H, flat.V_B)
+    _close(flat, H, V)
+    _close(sloped, H, V)
