@@ -98,7 +98,7 @@ class _Newton:
     def increment(self, state) -> np.ndarray:
         G, _, lines, position = state
         jac = self.jacobian(state)
-        u, singular, vh = np.linalg.svd(jac / self.units[:, None] / self.units[None, :])
+        _, singular, vh = np.linalg.svd(jac / self.units[:, None] / self.units[None, :])
         self.lines = lines  # Newton steps from this state: the trials start from its lines
         if not singular[-1] > _SINGULAR * singular[0]:
             return self.slack_step(state, vh[singular <= _SINGULAR * singular[0]])
@@ -115,7 +115,7 @@ class _Newton:
     def slack_step(self, state, null) -> np.ndarray:
         """The step along the free directions ``null`` (rows, scaled dofs) to where the lines take
         the net force's component in them (module docstring); raises where there is none."""
-        G, _, lines, position = state
+        G, _, _, position = state
         r = G / self.units
         push = null.T @ (null @ r)
         if not np.linalg.norm(push) > 1e-12 * np.linalg.norm(r):  # no force along the free directions
@@ -126,14 +126,14 @@ class _Newton:
             )
         direction = push / np.linalg.norm(push)  # scaled dofs, |direction| = 1
         ray = direction / self.units
-        t = _ray_root(self, position, ray, direction, float(self.cap[0]))
+        t = _ray_root(self, position, ray, direction, float(self.cap[0]), self.norm(state))
         return t * ray
 
     def along(self, t, position, ray, direction) -> float:
         """``g(t)``: the scaled net load at ``position + t ray`` along ``direction`` (a trial that no
         line can reach counts as pulling back, -inf)."""
         try:
-            G, _, lines, _ = self.assemble(position + t * ray)
+            G = self.assemble(position + t * ray)[0]
         except (InputError, ConvergenceError):
             return -math.inf
         return float((G / self.units) @ direction) / max(self.body_scale, 1e-300)
@@ -156,9 +156,10 @@ class _Newton:
         )
 
 
-def _ray_root(solve, position, ray, direction, reach) -> float:
+def _ray_root(solve, position, ray, direction, reach, norm) -> float:
     """The distance ``t`` along ``ray`` where ``g(t)`` (`_Newton.along`) changes sign: doubled from
-    ``1e-3 reach`` until ``g < 0`` (at most ``2**20`` times that), then Brent's method."""
+    ``1e-3 reach`` until ``g < 0`` (at most ``2**20`` times that), then Brent's method; ``norm``
+    is the scaled residual at ``position`` (the history of the error, if there is no sign change)."""
     from scipy.optimize import brentq
 
     args = (position, ray, direction)
@@ -172,7 +173,7 @@ def _ray_root(solve, position, ray, direction, reach) -> float:
         raise ConvergenceError(
             "mooring equilibrium: the lines are slack and stay slack along the net force (nothing "
             "restrains the body in that direction: add lines, waterplane_area or a metacentre)",
-            [],
+            [norm],
         )
     return brentq(_along_capped, lo, t, args=(solve, *args), xtol=1e-9 * t, rtol=1e-12)
 
