@@ -13,6 +13,7 @@ from __future__ import annotations
 
 import numpy as np
 
+from skcable import _plausible
 from skcable._checks import broadcast, float_range, nonnegative, positive, real, require
 from skcable.cable._elastic import elastic_catenary as free_elastic_catenary
 from skcable.cable.lines.seabed.closure import anchor_part, hanging_length
@@ -91,6 +92,7 @@ def elastic_catenary(span, dh, w, EA, *, length, seabed=None, friction=0.0):
     seabed = real("seabed", seabed)
     friction = nonnegative("friction", friction)
     broadcast(span=span, dh=dh, w=w, EA=EA, length=L0, seabed=seabed, friction=friction)
+    _plausible.stiffness(EA, w, L0)
     require("seabed", np.asarray(seabed) <= 0, "must be at or below the anchor (A at height 0)", seabed)
     require("dh", np.asarray(dh) > seabed, "must put B above the seabed", dh)
     if all(isinstance(v, float) for v in (span, dh, w, EA, L0, seabed, friction)):

@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import numpy as np
 
+from skcable import _plausible
 from skcable._checks import positive, scalar
 from skcable.errors import InputError
 
@@ -35,6 +36,7 @@ class Segment:
         self.length = scalar("length", positive("length", length))
         self.w = scalar("w", positive("w", w))
         self.EA = scalar("EA", positive("EA", EA))
+        _plausible.stiffness(self.EA, self.w, self.length)
 
     def __repr__(self):
         return f"Segment(length={self.length!r}, w={self.w!r}, EA={self.EA!r})"
