@@ -34,7 +34,8 @@ import numpy as np
 from scipy.optimize import elementwise
 
 from skcable._checks import broadcast, exactly_one, float_range, positive, real, require
-from skcable._xp import namespace
+from skcable._xp import namespace, scalar_math
+from skcable.cable._hanging import z_of_length
 from skcable.cable._roots import find_root
 from skcable.cable._special import (
     asinh_step_parts,
@@ -47,7 +48,7 @@ from skcable.cable._special import (
     sinhc_m1,
     z_minus_tanh_over_cube,
 )
-from skcable.cable.solution import CableSolution, checked_closed_form, matrix_2x2
+from skcable.cable.solution import ACCEPT, CableSolution, checked_closed_form, matrix_2x2
 from skcable.errors import ConvergenceError, InputError
 
 __all__ = ["Catenary", "catenary"]
@@ -87,9 +88,14 @@ class Catenary(CableSolution):
     def __init__(self, span, dh, w, a, z, constraint: tuple[str, object]):
         self.span, self.dh, self.w, self.a, self.z = span, dh, w, a, z
         self._xp = xp = namespace(span, dh, w, a, z)
-        self._phi = sinhc_m1(z)
-        self.m = xp.arcsinh(dh / span / (1.0 + self._phi))
+        self._sinh_z = xp.sinh(z)
+        # sinh(z)/z needs no series: it is 1 + phi, free of cancellation (phi is, below)
+        self.m = xp.arcsinh(dh / span / (self._sinh_z / z))
         self.constraint = constraint
+
+    @cached_property
+    def _phi(self):
+        return sinhc_m1(self.z)  # sinh(z)/z - 1 by its series where that cancels
 
     # --- reactions and tensions ------------------------------------------
     @cached_property
@@ -115,7 +121,7 @@ class Catenary(CableSolution):
     # --- geometry ----------------------------------------------------------
     @cached_property
     def length(self):
-        return 2.0 * (self.a * self._xp.sinh(self.z)) * self._xp.cosh(self.m)
+        return 2.0 * (self.a * self._sinh_z) * self._xp.cosh(self.m)
 
     @cached_property
     def x_vertex(self):
@@ -228,13 +234,14 @@ class Catenary(CableSolution):
         return matrix_2x2(k_g, cross, cross, vv)
 
     def _residuals(self):
-        span, dh, a, z, m, xp = self.span, self.dh, self.a, self.z, self.m, self._xp
-        chord = xp.hypot(span, dh)
+        """Closure at B through the tensions (a catenary's ``T_B - T_A = w dh``, evaluated
+        from the cosh of the end angles, not from the sinh that placed B), vertical balance,
+        end tensions along their components, the constraint: each over what it sums."""
+        xp, T_A, T_B, V_A, V_B = self._xp, self.T_A, self.T_B, self.V_A, self.V_B
         weight = self.w * self.length
-        yield (2.0 * xp.sinh(m) * (a * xp.sinh(z)) - dh) / chord  # closure at B
-        # vertical equilibrium: V_A and V_B cancel for taut inclined cables
-        # (|V| ~ H·|dh|/span >> weight): scale by what cancels
-        yield (self.V_A + self.V_B - weight) / (xp.abs(self.V_A) + xp.abs(self.V_B) + weight)
+        yield (T_B - T_A - self.w * self.dh) / (T_A + T_B)
+        # V_A and V_B cancel for taut inclined cables (|V| ~ H·|dh|/span >> weight)
+        yield (V_A + V_B - weight) / (xp.abs(V_A) + xp.abs(V_B) + weight)
         yield from self._common_residuals(xp)
 
 
@@ -464,6 +471,69 @@ def _z_from_T_max(span, dh, w, T_max, branch):
     return 0.5 * xp.exp(-t), history
 
 
+_INF = math.inf
+
+
+def _length_on_floats(span, dh, w, length):
+    """`catenary` with ``length=`` on Python numbers: the same formulas and checks as the
+    general path (`skcable.cable._hanging`, `Catenary._residuals` written out on floats), or
+    None wherever the general path must decide (it then raises the right error)."""
+    if not (type(span) in (float, int) and type(dh) in (float, int)):
+        return None
+    if not (type(w) in (float, int) and type(length) in (float, int)):
+        return None
+    try:
+        span, dh, w, length = float(span), float(dh), float(w), float(length)
+    except OverflowError:  # an integer beyond the float range: the general path names it
+        return None
+    if not (0.0 < span < _INF and -_INF < dh < _INF and 0.0 < w < _INF and 0.0 < length < _INF):
+        return None
+    if not abs(dh) <= _STEEPEST * span:
+        return None
+    z = z_of_length(span, dh, length)
+    if z is None or not _Z_MIN <= z <= _Z_LIMIT:
+        return None
+    try:
+        a = span / (2.0 * z)
+        sinh_z = math.sinh(z)
+        m = math.asinh(dh / span / (sinh_z / z))
+        H = w * a
+        V_A, V_B = H * math.sinh(z - m), H * math.sinh(z + m)
+        T_A, T_B = H * math.cosh(m - z), H * math.cosh(m + z)
+        achieved = 2.0 * (a * sinh_z) * math.cosh(m)
+        weight = w * achieved
+        half = math.sinh(0.5 * (m - z))
+        x_vertex, y_vertex = a * (z - m), -2.0 * (a * half) * half
+        t_a, v_a, t_b, v_b = H / T_A, V_A / T_A, H / T_B, V_B / T_B
+        residual = max(
+            abs((T_B - T_A - w * dh) / (T_A + T_B)),
+            abs((V_A + V_B - weight) / (abs(V_A) + abs(V_B) + weight)),
+            abs(0.5 * ((1.0 - t_a) * (1.0 + t_a) - v_a * v_a)),
+            abs(0.5 * ((1.0 - t_b) * (1.0 + t_b) - v_b * v_b)),
+            abs((achieved - length) / length),
+        )
+    except (OverflowError, ZeroDivisionError):
+        return None
+    if not (residual <= ACCEPT and a < _INF and -_INF < x_vertex < _INF and -_INF < y_vertex < _INF):
+        return None  # NaN too
+    solution = Catenary.__new__(Catenary)
+    solution.__dict__ = {
+        "span": span, "dh": dh, "w": w, "a": a, "z": z, "_xp": scalar_math, "_sinh_z": sinh_z, "m": m,
+        "constraint": ("length", length), "H": H, "V_A": V_A, "V_B": V_B, "T_A": T_A, "T_B": T_B,
+        "length": achieved, "x_vertex": x_vertex, "y_vertex": y_vertex,
+    }  # fmt: skip
+    return solution
+
+
+def hanging(span, dh, w, length) -> Catenary:
+    """The catenary of ``length`` (float or array, > chord), unchecked: a start for the elastic
+    forms, which check what they return. Data out of the closed form's range raise as in
+    `catenary`."""
+    with float_range("length", "an intermediate value"):
+        z, _ = _z_from_length(span, dh, length)
+        return Catenary(span, dh, w, span / (2.0 * z), z, ("length", length))
+
+
 def catenary(span, dh, w, *, length=None, sag=None, H=None, low=None, T_max=None, branch="taut"):
     """Inextensible catenary from A = (0, 0) to B = (span, dh).
 
@@ -511,6 +581,10 @@ def catenary(span, dh, w, *, length=None, sag=None, H=None, low=None, T_max=None
     >>> round(float(c.H), 1), round(float(c.x_low), 2)
     (85819.2, 507.11)
     """
+    if length is not None and sag is None and H is None and low is None and T_max is None:
+        solution = _length_on_floats(span, dh, w, length)  # one scene of Python numbers
+        if solution is not None:
+            return solution
     span = positive("span", span)
     dh = real("dh", dh)
     w = positive("w", w)

@@ -10,6 +10,7 @@ is at most a factor 6 of the machine epsilon. They take floats or arrays
 
 from __future__ import annotations
 
+import math
 from math import factorial, log
 
 import numpy as np
@@ -74,6 +75,26 @@ def dsinhc(z):
         lambda z: z * horner(_DSINHC, z * z),
         lambda z: (z * xp.cosh(z) - xp.sinh(z)) / (z * z),
     )
+
+
+_S0, _S1, _S2, _S3, _S4, _S5, _S6, _S7, _S8 = _SINHC
+_D0, _D1, _D2, _D3, _D4, _D5, _D6, _D7, _D8 = _DSINHC
+
+
+def sinhc_pair(z: float) -> tuple[float, float]:
+    """`sinhc_m1` and `dsinhc` of one Python float ``z > 0``, by the same operations (the
+    same bits) unrolled: the hot scalar path of the catenary's length solve."""
+    if z < _SERIES_BELOW:
+        t = z * z
+        phi = (
+            ((((((_S0 * t + _S1) * t + _S2) * t + _S3) * t + _S4) * t + _S5) * t + _S6) * t + _S7
+        ) * t + _S8
+        dphi = (
+            ((((((_D0 * t + _D1) * t + _D2) * t + _D3) * t + _D4) * t + _D5) * t + _D6) * t + _D7
+        ) * t + _D8
+        return t * phi, z * dphi
+    s = math.sinh(z)
+    return s / z - 1.0, (z * math.cosh(z) - s) / (z * z)
 
 
 def z_minus_tanh(z):
