@@ -48,7 +48,7 @@ from skcable.cable._special import (
     sinhc_m1,
     z_minus_tanh_over_cube,
 )
-from skcable.cable.solution import ACCEPT, CableSolution, checked_closed_form, matrix_2x2
+from skcable.cable.solution import ACCEPT, ATTRIBUTE_OF, CableSolution, checked_closed_form, matrix_2x2
 from skcable.errors import ConvergenceError, InputError
 
 __all__ = ["Catenary", "catenary"]
@@ -90,8 +90,81 @@ class Catenary(CableSolution):
         self._xp = xp = namespace(span, dh, w, a, z)
         self._sinh_z = xp.sinh(z)
         # sinh(z)/z needs no series: it is 1 + phi, free of cancellation (phi is, below)
-        self.m = xp.arcsinh(dh / span / (self._sinh_z / z))
+        if (
+            xp is np
+            and np.ndim(z)
+            and np.shape(z) == np.broadcast_shapes(np.shape(dh), np.shape(span), np.shape(z))
+        ):
+            m = self._sinh_z / z  # dh / span / (sinh z / z), in place
+            np.arcsinh(np.divide(dh / span, m, out=m), out=m)
+            self.m = m
+        else:
+            self.m = xp.arcsinh(dh / span / (self._sinh_z / z))
         self.constraint = constraint
+
+    def _arrays(self):
+        """Fill the forces and the length of an array of scenes at once: the formulas of the
+        properties below, evaluated in place (the same bits, fewer temporaries: each new
+        array costs more than the arithmetic on it): the vectorised hot path."""
+        a, z, m = self.a, self.z, self.m
+        H = self.w * a
+        u = z - m  # -u_A
+        V_A, T_A = np.sinh(u), np.cosh(u)  # cosh is even: cosh(m - z)
+        V_A *= H
+        T_A *= H
+        np.add(z, m, out=u)
+        V_B, T_B = np.sinh(u), np.cosh(u)
+        V_B *= H
+        T_B *= H
+        length = a * self._sinh_z
+        length *= 2.0
+        length *= np.cosh(m, out=u)
+        self.__dict__.update(H=H, V_A=V_A, V_B=V_B, T_A=T_A, T_B=T_B, length=length)
+        return self
+
+    def finite_beyond_residual(self) -> bool:
+        """The length and the vertex are finite. The vertex need not be evaluated: ``|x_vertex|``
+        and ``|y_vertex|`` are below ``a cosh(u_A) = T_A/w`` (as ``|u| < cosh u`` and
+        ``2 sinh²(u/2) < cosh u``), finite when ``max T_A / min w`` is."""
+        if self._xp is not np:
+            return super().finite_beyond_residual()
+        bound = float(np.max(self.T_A)) / float(np.min(self.w))
+        return bool(np.isfinite(self.length).all()) and (bound < math.inf or super().finite_beyond_residual())
+
+    def residual(self) -> float:
+        """`CableSolution.residual`; on arrays the same terms, written in place into the rows
+        of one block (then one reduction)."""
+        if self._xp is not np or np.ndim(self.T_A) == 0:
+            return super().residual()
+        T_A, T_B, V_A, V_B, H, w = self.T_A, self.T_B, self.V_A, self.V_B, self.H, self.w
+        shape = np.broadcast_shapes(np.shape(T_A), np.shape(w), np.shape(self.dh))
+        rows, two = np.empty((5, *shape)), np.empty(shape)
+        closure, balance, ends, met = rows[0], rows[1], rows[2:4], rows[4]
+        np.subtract(T_B, T_A, out=closure)
+        closure -= w * self.dh
+        closure /= np.add(T_A, T_B, out=two)
+        np.multiply(w, self.length, out=two)  # the weight
+        np.add(V_A, V_B, out=balance)
+        balance -= two
+        two += np.abs(V_A)
+        two += np.abs(V_B)
+        balance /= two
+        for one, T, V in ((ends[0], T_A, V_A), (ends[1], T_B, V_B)):  # 0.5((1 - t)(1 + t) - v²)
+            np.divide(H, T, out=one)
+            np.subtract(1.0, one, out=two)
+            one += 1.0
+            one *= two
+            np.divide(V, T, out=two)
+            two *= two
+            one -= two
+            one *= 0.5
+        name, value = self.constraint  # the constraint met, as in `_common_residuals`
+        if name == "low":
+            met[...] = self._common_residuals(np)[2]
+        else:
+            np.subtract(getattr(self, ATTRIBUTE_OF[name]), value, out=met)
+            met /= value
+        return largest_abs(rows)
 
     @cached_property
     def _phi(self):
@@ -592,7 +665,10 @@ def catenary(span, dh, w, *, length=None, sag=None, H=None, low=None, T_max=None
     value = real(name, value) if name == "low" else positive(name, value)
     broadcast(span=span, dh=dh, w=w, **{name: value})
     xp = namespace(span, dh, w, value)
-    require("dh", xp.abs(dh) <= _STEEPEST * span, f"must satisfy |dh| <= {_STEEPEST:g}·span", dh)
+    steep = (
+        xp.abs(dh) / _STEEPEST <= span if not isinstance(dh, np.ndarray) else xp.abs(dh) <= _STEEPEST * span
+    )
+    require("dh", steep, f"must satisfy |dh| <= {_STEEPEST:g}·span", dh)
     history = []
     with float_range(name, "an intermediate value"):
         if name == "length":
@@ -600,7 +676,8 @@ def catenary(span, dh, w, *, length=None, sag=None, H=None, low=None, T_max=None
         elif name == "H":
             a = value / w
             require("H", a > 0, "is so small relative to w that H/w underflows", value)
-            z = 0.5 * span / a
+            z = span / a
+            z *= 0.5  # = 0.5 * span / a: halving is exact
         elif name == "sag":
             z, history = _z_from_sag(span, dh, value)
         elif name == "low":
@@ -615,8 +692,12 @@ def catenary(span, dh, w, *, length=None, sag=None, H=None, low=None, T_max=None
         value,
     )
     if name != "H":
-        a = span / (2.0 * z)
+        a = span / z
+        a *= 0.5  # = span / (2 z): halving is exact
     require(name, a < math.inf, "makes H/w overflow a float", value)
     value = np.asarray(value, dtype=float)[()]
     with float_range(name, "a result"):
-        return checked_closed_form(Catenary(span, dh, w, a, z, (name, value)), name, history)
+        solution = Catenary(span, dh, w, a, z, (name, value))
+        if solution._xp is np and np.ndim(z) and np.shape(z) == np.shape(solution.m):
+            solution._arrays()
+        return checked_closed_form(solution, name, history)

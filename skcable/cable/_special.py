@@ -40,8 +40,8 @@ def largest_abs(value) -> float:
     """``max(|value|)`` as a float, NaN if any element is NaN; cheap on scalars."""
     if not isinstance(value, np.ndarray):
         return abs(float(value))
-    value = np.abs(value)
-    return float("nan") if np.isnan(value).any() else float(value.max())
+    top, low = float(value.max()), float(value.min())  # two reductions, no |value| array
+    return top if top != top else low if low != low else max(top, -low)
 
 
 def piecewise(z, small, series, direct):
