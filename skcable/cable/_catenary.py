@@ -35,11 +35,13 @@ from scipy.optimize import elementwise
 
 from skcable._checks import broadcast, exactly_one, float_range, positive, real, require
 from skcable._xp import namespace, scalar_math
-from skcable.cable._hanging import z_of_length
+from skcable.cable._hanging import z_of_excess, z_of_length
 from skcable.cable._roots import find_root
 from skcable.cable._special import (
+    DSINHC_SERIES,
+    SINHC_SERIES,
     asinh_step_parts,
-    dsinhc,
+    horner,
     largest_abs,
     ldexp_sum,
     log_cosh,
@@ -391,43 +393,104 @@ def _z_from_length(span, dh, length):
         f"is so long relative to the span that span/(2a) exceeds {_Z_LIMIT:g} (cosh overflows a float)",
         length * unit,
     )
-    target = xp.log1p(rho)
-    # g(z) = log(sinh z / z) - target is convex and increasing: whatever the
-    # start, Newton's iterates lie right of the root after one step and then
-    # decrease monotonically to it. Start from the inverted Maclaurin series
-    # (error O(rho^4)) for small rho, from an upper bound otherwise.
-    z = piecewise(
-        rho,
-        rho < 0.1,
-        lambda r: xp.sqrt(r * (6.0 + r * (-1.8 + 0.8229 * r))),
-        lambda r: xp.log1p(r) + 2.0 * xp.log(xp.log1p(r) + 2.0) + 1.0,
-    )
-    history = []
-    for _ in range(100):
-        step = _newton_step(z, target, xp)
-        z = z - step
-        change = largest_abs(step / z)
-        history.append(change)
-        if change < 1e-8:  # quadratic convergence: the error is now ~1e-16
-            return z, history
-    raise ConvergenceError("catenary(length=...): Newton did not converge", history)
-
-
-def _newton_step(z, target, xp):
-    """g/g' for g(z) = log(sinh z / z) - target, g' = coth z - 1/z; above z = 20
-    in the form z - log(2z) + log1p(-e^{-2z}), which does not overflow."""
-
-    def small(z):
-        phi = sinhc_m1(z)
-        return (xp.log1p(phi) - target) * (1.0 + phi) / dsinhc(z)
-
-    def large(z):
-        return (z - xp.log(2.0 * z) + xp.log1p(-xp.exp(-2.0 * z)) - target) / (1.0 / xp.tanh(z) - 1.0 / z)
-
     if xp is not np:
-        return small(z) if z <= 20.0 else large(z)
+        z, history = z_of_excess(rho)
+        if z is None:
+            raise ConvergenceError("catenary(length=...): Halley's method did not converge", history)
+        return z, history
+    # g(z) = log(sinh z / z) - target is convex and increasing: Halley's method (Newton's far
+    # from the root) from the start of `skcable.cable._hanging.start`, elementwise
+    z = piecewise(rho, rho < 1.0, lambda r: np.sqrt(r * (6.0 + r * (-1.8 + 0.8229 * r))), _large_start)
+    return _z_iterate_arrays(z, np.log1p(rho))
+
+
+def _large_start(rho):
+    y = np.log1p(rho)
+    z = y + np.log(2.0 * (y + 1.0))
+    z = y + np.log(2.0 * z)
+    return y + np.log(2.0 * z)
+
+
+def _z_iterate_arrays(z, target):
+    """The iteration of `skcable.cable._hanging.z_of_excess` on arrays, each element stopping
+    on its own (the same test): later iterations run on the few elements left."""
+    z = np.array(z, dtype=float)
+    flat, targets = z.reshape(-1), np.broadcast_to(target, z.shape).reshape(-1)
+    active, history = None, []
+    for _ in range(100):
+        zs, ts = (flat, targets) if active is None else (flat[active], targets[active])
+        change = _step_arrays(zs, ts)
+        zs = zs - change
+        change /= zs
+        np.abs(change, out=change)
+        history.append(largest_abs(change))
+        if active is None:
+            flat[:] = zs
+            active = np.flatnonzero(~(change < 1e-7))  # NaN keeps iterating (and fails)
+        else:
+            flat[active] = zs
+            active = active[~(change < 1e-7)]
+        if active.size == 0:
+            return z, history
+    raise ConvergenceError("catenary(length=...): Halley's method did not converge", history)
+
+
+def _sinhc_pair_arrays(z):
+    """`sinhc_m1` and `dsinhc` on an array, each branch computed once on the whole array when
+    the elements fall on one side of ``z = 1`` (the usual case), else both, then chosen."""
+    low = z < 1.0
+    if not low.any():
+        s = np.sinh(z)
+        phi = s / z
+        phi -= 1.0
+        dphi = z * np.cosh(z)
+        dphi -= s
+        dphi /= z * z
+        return phi, dphi
+    t = z * z
+    phi, dphi = horner(SINHC_SERIES, t), horner(DSINHC_SERIES, t)
+    phi *= t
+    dphi *= z
+    if low.all():
+        return phi, dphi
+    with np.errstate(over="ignore", invalid="ignore"):
+        s = np.sinh(z)
+        direct_phi, direct_dphi = s / z - 1.0, (z * np.cosh(z) - s) / t
+    return np.where(low, phi, direct_phi), np.where(low, dphi, direct_dphi)
+
+
+def _step_arrays(z, target):
+    """`skcable.cable._hanging.step` on arrays."""
     big = z > 20.0
-    return np.where(big, large(np.where(big, z, 21.0)), small(np.where(big, 1.0, z)))
+    with np.errstate(over="ignore", invalid="ignore", divide="ignore"):
+        if big.any():
+            zb = np.where(big, z, 21.0)
+            first_b = 1.0 / np.tanh(zb) - 1.0 / zb
+            newton_b = (zb - np.log(2.0 * zb) + np.log1p(-np.exp(-2.0 * zb)) - target) / first_b
+            halley_b = _halley(newton_b, 1.0 / (zb * zb), first_b)
+            zs = np.where(big, 1.0, z)
+            return np.where(big, halley_b, _small_step(zs, target))
+        return _small_step(z, target)
+
+
+def _small_step(z, target):
+    phi, slope = _sinhc_pair_arrays(z)
+    one_phi = 1.0 + phi
+    newton = np.log1p(phi)
+    newton -= target
+    newton *= one_phi
+    newton /= slope
+    curvature = phi * (2.0 + phi)
+    curvature /= z * z
+    curvature /= one_phi
+    curvature /= one_phi
+    slope /= one_phi  # g'
+    return _halley(newton, curvature, slope)
+
+
+def _halley(newton, curvature, first):
+    correction = 0.5 * newton * curvature / first
+    return np.where(np.abs(correction) <= 0.5, newton / (1.0 - correction), newton)
 
 
 def _z_from_sag(span, dh, sag):

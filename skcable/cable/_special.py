@@ -17,10 +17,10 @@ import numpy as np
 
 from skcable._xp import namespace
 
-#: Maclaurin coefficients of (sinh z / z - 1) / z**2 in powers of z**2.
-_SINHC = tuple(1.0 / factorial(2 * k + 1) for k in range(9, 0, -1))
-#: Coefficients of d/dz(sinh z / z) / z in powers of z**2.
-_DSINHC = tuple(2.0 * k / factorial(2 * k + 1) for k in range(9, 0, -1))
+#: Maclaurin coefficients of (sinh z / z - 1) / z**2 in powers of z**2, highest first.
+SINHC_SERIES = _SINHC = tuple(1.0 / factorial(2 * k + 1) for k in range(9, 0, -1))
+#: Coefficients of d/dz(sinh z / z) / z in powers of z**2, highest first.
+DSINHC_SERIES = _DSINHC = tuple(2.0 * k / factorial(2 * k + 1) for k in range(9, 0, -1))
 _SERIES_BELOW = 1.0
 _LOG2 = log(2.0)
 
@@ -30,6 +30,12 @@ def horner(coefficients, t):
 
     ``numpy.polyval`` does the same with ten times the overhead on scalars.
     """
+    if isinstance(t, np.ndarray):  # in place: one array, not two per coefficient
+        result = np.full(t.shape, coefficients[0])
+        for c in coefficients[1:]:
+            result *= t
+            result += c
+        return result
     result = coefficients[0]
     for c in coefficients[1:]:
         result = result * t + c
