@@ -152,14 +152,14 @@ class Catenary(CableSolution):
         two += np.abs(V_B)
         balance /= two
         for one, T, V in ((ends[0], T_A, V_A), (ends[1], T_B, V_B)):  # 0.5((1 - t)(1 + t) - v²)
-            np.divide(H, T, out=one)
-            np.subtract(1.0, one, out=two)
-            one += 1.0
-            one *= two
-            np.divide(V, T, out=two)
-            two *= two
-            one -= two
-            one *= 0.5
+            np.divide(0.5, T, out=two)  # t = H/T, v = V/T through one reciprocal (halved)
+            np.multiply(V, two, out=one)
+            one *= one  # v²/4
+            two *= H  # t/2
+            np.square(two, out=two)
+            np.subtract(0.25, two, out=two)  # (1 - t²)/4
+            two -= one
+            np.multiply(two, 2.0, out=one)
         name, value = self.constraint  # the constraint met, as in `_common_residuals`
         if name == "low":
             met[...] = self._common_residuals(np)[2]
