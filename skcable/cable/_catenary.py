@@ -638,8 +638,6 @@ def _length_on_floats(span, dh, w, length):
         T_A, T_B = H * math.cosh(m - z), H * math.cosh(m + z)
         achieved = 2.0 * (a * sinh_z) * math.cosh(m)
         weight = w * achieved
-        half = math.sinh(0.5 * (m - z))
-        x_vertex, y_vertex = a * (z - m), -2.0 * (a * half) * half
         t_a, v_a, t_b, v_b = H / T_A, V_A / T_A, H / T_B, V_B / T_B
         residual = max(
             abs((T_B - T_A - w * dh) / (T_A + T_B)),
@@ -650,13 +648,14 @@ def _length_on_floats(span, dh, w, length):
         )
     except (OverflowError, ZeroDivisionError):
         return None
-    if not (residual <= ACCEPT and a < _INF and -_INF < x_vertex < _INF and -_INF < y_vertex < _INF):
+    # the vertex is below a cosh(u_A) = T_A/w (`Catenary.finite_beyond_residual`)
+    if not (residual <= ACCEPT and a < _INF and T_A / w < _INF):
         return None  # NaN too
     solution = Catenary.__new__(Catenary)
     solution.__dict__ = {
         "span": span, "dh": dh, "w": w, "a": a, "z": z, "_xp": scalar_math, "_sinh_z": sinh_z, "m": m,
         "constraint": ("length", length), "H": H, "V_A": V_A, "V_B": V_B, "T_A": T_A, "T_B": T_B,
-        "length": achieved, "x_vertex": x_vertex, "y_vertex": y_vertex,
+        "length": achieved,
     }  # fmt: skip
     return solution
 
