@@ -27,9 +27,10 @@ from skcable import _plausible
 from skcable._checks import broadcast, float_range, positive, real, require
 from skcable._newton2 import solve2
 from skcable._xp import namespace
-from skcable.cable._catenary import _finite_at, catenary
+from skcable.cable._catenary import _finite_at, hanging
+from skcable.cable._hanging import hanging_forces
 from skcable.cable._roots import find_root
-from skcable.cable._special import asinh_step, asinh_step_log, asinh_step_parts, sinhc_m1
+from skcable.cable._special import asinh_step, asinh_step_log, asinh_step_parts, sinhc_m1, sinhc_pair
 from skcable.cable.solution import CableSolution, checked_closed_form
 from skcable.errors import InputError
 
@@ -67,6 +68,36 @@ def _x_h_core(S, A, p, q, rr):
     out[below] = small(S[below], A[below], p[below], q[below], rr[below])
     out[~below] = large(S[~below], A[~below], p[~below], q[~below], rr[~below])
     return out
+
+
+def _closure_floats(span, dh, w, EA, L, H, V_A):
+    """`closure` on Python floats: the same formulas, written out."""
+    if not H > 0:
+        return _NAN8
+    q, d = -V_A / H, w * L / H
+    p = q + d
+    rq, rp = math.hypot(1.0, q), math.hypot(1.0, p)
+    S = d * (p + q) / (p * rq + q * rp) if p * q > 0 else p * rq - q * rp
+    A = math.asinh(S)
+    stretch, x_geo, compliance = H * L / EA, H / w * A, L / EA
+    rsum, rr = rp + rq, rp * rq
+    if A < 2.0:
+        p2, q2 = p * p, q * q
+        core = S * (p2 + q2 + p2 * q2) / ((rr + 1.0) * rr) - A * sinhc_pair(A)[0]
+    else:
+        core = A - S / rr
+    j_xv = d * (p + q) / (rsum * rr * w)
+    terms_y = L * (0.5 * w * L + abs(V_A)) / EA + L * (abs(p) + abs(q)) / rsum + abs(dh)
+    return (
+        stretch + x_geo - span,
+        L * (0.5 * w * L - V_A) / EA + L * (p + q) / rsum - dh,
+        compliance + core / w,
+        j_xv,
+        -j_xv,
+        -compliance - S / (rr * w),
+        stretch + x_geo + span,
+        terms_y,
+    )
 
 
 def closure(span, dh, w, EA, L, H, V_A):
@@ -109,7 +140,20 @@ def closure(span, dh, w, EA, L, H, V_A):
 
 def _closure_of(H, V_A, span, dh, w, EA, L):
     """`closure` in the argument order of `solve2`."""
+    if type(H) is float and type(V_A) is float:
+        return _closure_floats(span, dh, w, EA, L, H, V_A)
     return closure(span, dh, w, EA, L, H, V_A)
+
+
+def _inextensible(span, dh, w, length):
+    """``(H, V_A, T_A, T_B)`` of the inextensible catenary of ``length``, unchecked (a start:
+    the elastic solution is checked); Python floats where the data are, else arrays."""
+    if namespace(span, dh, w, length) is not np:
+        forces = hanging_forces(span, dh, w, length)
+        if forces is not None:
+            return forces
+    c = hanging(span, dh, w, length)  # arrays, or data the float path leaves to the checked one
+    return c.H, c.V_A, c.T_A, c.T_B
 
 
 def _initial_guess(span, dh, w, EA, L0):
@@ -117,13 +161,13 @@ def _initial_guess(span, dh, w, EA, L0):
     chord = xp.hypot(span, dh)
     # inextensible catenary of a length at least 1e-6 above the chord,
     # lengthened once by the mean strain it predicts
-    first = catenary(span, dh, w, length=xp.maximum(L0, chord * (1 + 1e-6)))
-    strain = 0.5 * (first.T_A + first.T_B) / EA
-    second = catenary(span, dh, w, length=xp.maximum(L0 * (1.0 + strain), chord * (1 + 1e-6)))
+    _, _, T_A, T_B = _inextensible(span, dh, w, xp.maximum(L0, chord * (1 + 1e-6)))
+    strain = 0.5 * (T_A + T_B) / EA
+    H_c, V_c, _, _ = _inextensible(span, dh, w, xp.maximum(L0 * (1.0 + strain), chord * (1 + 1e-6)))
     # a cable shorter than its chord is a stretched bar: H ≈ EA·(chord/L0 - 1)·span/chord
     bar = EA * (chord / L0 - 1.0) * span / chord
-    H = xp.maximum(second.H, bar)
-    return H, second.V_A * H / second.H
+    H = xp.maximum(H_c, bar)
+    return H, V_c * H / H_c
 
 
 def _solve(span, dh, w, EA, L0):
@@ -281,11 +325,13 @@ class ElasticCatenary(CableSolution):
 
     @cached_property
     def x_vertex(self):
-        return self.x_of_s(self._s_vertex)
+        """``x(V_A/w)``: ``H V_A/(w EA) + (H/w) asinh(V_A/H)`` (the vertical force vanishes there)."""
+        return self.H * self.V_A / (self.w * self.EA) + self.H / self.w * self._xp.arcsinh(self.V_A / self.H)
 
     @cached_property
     def y_vertex(self):
-        return self.y_of_s(self._s_vertex)
+        """``y(V_A/w)``: ``-(V_A/w) V_A (1/(2 EA) + 1/(H + T_A))``, no cancellation."""
+        return -(self.V_A / self.w) * (self.V_A * (0.5 / self.EA + 1.0 / (self.H + self.T_A)))
 
     @cached_property
     def x_low(self):

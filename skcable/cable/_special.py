@@ -10,16 +10,17 @@ is at most a factor 6 of the machine epsilon. They take floats or arrays
 
 from __future__ import annotations
 
+import math
 from math import factorial, log
 
 import numpy as np
 
 from skcable._xp import namespace
 
-#: Maclaurin coefficients of (sinh z / z - 1) / z**2 in powers of z**2.
-_SINHC = tuple(1.0 / factorial(2 * k + 1) for k in range(9, 0, -1))
-#: Coefficients of d/dz(sinh z / z) / z in powers of z**2.
-_DSINHC = tuple(2.0 * k / factorial(2 * k + 1) for k in range(9, 0, -1))
+#: Maclaurin coefficients of (sinh z / z - 1) / z**2 in powers of z**2, highest first.
+SINHC_SERIES = _SINHC = tuple(1.0 / factorial(2 * k + 1) for k in range(9, 0, -1))
+#: Coefficients of d/dz(sinh z / z) / z in powers of z**2, highest first.
+DSINHC_SERIES = _DSINHC = tuple(2.0 * k / factorial(2 * k + 1) for k in range(9, 0, -1))
 _SERIES_BELOW = 1.0
 _LOG2 = log(2.0)
 
@@ -29,6 +30,12 @@ def horner(coefficients, t):
 
     ``numpy.polyval`` does the same with ten times the overhead on scalars.
     """
+    if isinstance(t, np.ndarray):  # in place: one array, not two per coefficient
+        result = np.full(t.shape, coefficients[0])
+        for c in coefficients[1:]:
+            result *= t
+            result += c
+        return result
     result = coefficients[0]
     for c in coefficients[1:]:
         result = result * t + c
@@ -39,8 +46,8 @@ def largest_abs(value) -> float:
     """``max(|value|)`` as a float, NaN if any element is NaN; cheap on scalars."""
     if not isinstance(value, np.ndarray):
         return abs(float(value))
-    value = np.abs(value)
-    return float("nan") if np.isnan(value).any() else float(value.max())
+    top, low = float(value.max()), float(value.min())  # two reductions, no |value| array
+    return top if top != top else low if low != low else max(top, -low)
 
 
 def piecewise(z, small, series, direct):
@@ -74,6 +81,26 @@ def dsinhc(z):
         lambda z: z * horner(_DSINHC, z * z),
         lambda z: (z * xp.cosh(z) - xp.sinh(z)) / (z * z),
     )
+
+
+_S0, _S1, _S2, _S3, _S4, _S5, _S6, _S7, _S8 = _SINHC
+_D0, _D1, _D2, _D3, _D4, _D5, _D6, _D7, _D8 = _DSINHC
+
+
+def sinhc_pair(z: float) -> tuple[float, float]:
+    """`sinhc_m1` and `dsinhc` of one Python float ``z > 0``, by the same operations (the
+    same bits) unrolled: the hot scalar path of the catenary's length solve."""
+    if z < _SERIES_BELOW:
+        t = z * z
+        phi = (
+            ((((((_S0 * t + _S1) * t + _S2) * t + _S3) * t + _S4) * t + _S5) * t + _S6) * t + _S7
+        ) * t + _S8
+        dphi = (
+            ((((((_D0 * t + _D1) * t + _D2) * t + _D3) * t + _D4) * t + _D5) * t + _D6) * t + _D7
+        ) * t + _D8
+        return t * phi, z * dphi
+    s = math.sinh(z)
+    return s / z - 1.0, (z * math.cosh(z) - s) / (z * z)
 
 
 def z_minus_tanh(z):

@@ -33,7 +33,7 @@ __all__ = ["CableSolution", "checked", "matrix_2x2"]
 #: Largest relative residual a solver may hand back without raising.
 ACCEPT = 1e-9
 #: Which attribute of a solution each constraint keyword fixes.
-_ATTRIBUTE_OF = {"length": "length", "sag": "sag", "H": "H", "low": "y_low", "T_max": "T_max"}
+ATTRIBUTE_OF = {"length": "length", "sag": "sag", "H": "H", "low": "y_low", "T_max": "T_max"}
 _SHOWN = ("H", "V_A", "V_B", "T_A", "T_B", "length", "sag", "x_low", "y_low", "x_vertex", "y_vertex")
 #: The forces among them (an overflow there is blamed on the load unless a force is the constraint).
 _FORCES = frozenset(("H", "V_A", "V_B", "T_A", "T_B"))
@@ -87,6 +87,11 @@ class CableSolution(ProfileMixin):
         """Fairlead stiffness ``∂(H_B, V_B)/∂(span, dh)`` with A fixed (N/m), ``(*shape, 2, 2)``."""
         raise NotImplementedError
 
+    def finite_beyond_residual(self) -> bool:
+        """Whether the shown attributes the residual does not evaluate (the length and the
+        vertex of the closed forms) are finite floats (a subclass may bound them instead)."""
+        return all(_finite(getattr(self, name)) for name in _BEYOND_RESIDUAL)
+
     def residual(self) -> float:
         """Largest relative residual of equilibrium, closure and constraint.
 
@@ -103,13 +108,16 @@ class CableSolution(ProfileMixin):
         raise NotImplementedError
 
     def _common_residuals(self, xp):
-        """End tensions along the tangent, and the user's constraint met."""
-        H_B = self.H_B  # differs from H only under horizontal loads
-        out = [
-            (T - xp.hypot(H, V)) / T for T, H, V in ((self.T_A, self.H, self.V_A), (self.T_B, H_B, self.V_B))
-        ]
+        """End tensions along the tangent, and the user's constraint met.
+
+        ``T² = H² + V²`` as ``((1 - t)(1 + t) - v²)/2`` with ``t = H/T``, ``v = V/T``
+        (``≈ 1 - hypot(H, V)/T``, without a hypot: 3 ulps of it at most)."""
+        out = []
+        for T, H, V in ((self.T_A, self.H_A, self.V_A), (self.T_B, self.H_B, self.V_B)):
+            t, v = H / T, V / T
+            out.append(0.5 * ((1.0 - t) * (1.0 + t) - v * v))
         name, value = self.constraint
-        achieved = getattr(self, _ATTRIBUTE_OF[name])
+        achieved = getattr(self, ATTRIBUTE_OF[name])
         # the lowest point against the chord, or against itself when deeper
         scale = xp.hypot(self.span, self.dh) + xp.abs(value) if name == "low" else value
         out.append((achieved - value) / scale)
@@ -199,7 +207,7 @@ def checked_closed_form(solution: CableSolution, argument: str, history=(), load
     above `ACCEPT` `ConvergenceError`."""
     try:
         residual = solution.residual()
-        if residual <= ACCEPT and all(_finite(getattr(solution, name)) for name in _BEYOND_RESIDUAL):
+        if residual <= ACCEPT and solution.finite_beyond_residual():
             return solution
     except (OverflowError, ZeroDivisionError):
         pass
