@@ -122,7 +122,7 @@ def test_tables_and_files(case, tmp_path):
     mesh = meshio.read(path)
     assert mesh.points.shape == (21, 3)
     np.testing.assert_allclose(mesh.points[-1, :2], [span, dh], atol=1e-9 * span)
-    np.testing.assert_allclose(mesh.point_data["tension"][[0, -1]], [r.T_of_s(0.0), r.T_B], rtol=1e-12)
+    np.testing.assert_allclose(mesh.point_data["tension_N"][[0, -1]], [r.T_of_s(0.0), r.T_B], rtol=1e-12)
 
 
 def test_outline_keeps_the_joints_and_the_touchdown():

@@ -49,6 +49,8 @@ def lifted(span, dh, w, EA, L):
 
 def free_part(span, dh, w, EA, L, seabed):
     """The free line's ``(H, V_A)`` (N) and whether it dips below the ``seabed`` (a touchdown
-    between A and B: the anchor above the seabed), floats or arrays of the elements."""
+    between A and B), floats or arrays of the elements. Only an anchor above the seabed
+    (``seabed < 0``) has such a dip: with the anchor on it, `lifted` has judged the line free,
+    and a lowest point a rounding below A at lift-off (``V_A = 0``) is A itself."""
     free = free_elastic_catenary(span, dh, w, EA, length=L)
-    return free.H, free.V_A, free.y_low < seabed
+    return free.H, free.V_A, (free.y_low < seabed) & (seabed < 0)
