@@ -41,6 +41,7 @@ mode crosses the first antisymmetric one at :math:`\lambda^2 = 4\pi^2`.
 from __future__ import annotations
 
 import functools
+import math
 from typing import NamedTuple
 
 import numpy as np
@@ -75,10 +76,11 @@ def irvine_frequencies(span, w, EA, H, *, n_modes=6, g=9.81):
 def _irvine(span, w, EA, H, n_modes, g, given):
     """`irvine_frequencies` on checked arguments; ``given`` names the static state's
     argument (H, or the sag it came from) where a refusal blames it."""
-    c = np.sqrt(H) * np.sqrt(g) / np.sqrt(w)  # sqrt(H g / w) without overflowing H g / w
+    c = math.sqrt(H) * math.sqrt(g) / math.sqrt(w)  # sqrt(H g / w) without overflowing H g / w
     d_over_span = (w / H) * span / 8
-    L_e = span * (1 + 8 * d_over_span**2)
-    lambda2 = ((w / H) * span) ** 2 * (EA / H) * (span / L_e)
+    L_e = span * (1 + 8 * d_over_span * d_over_span)
+    ratio = (w / H) * span  # wL/H, squared by a product: a float's ** raises on overflow
+    lambda2 = ratio * ratio * (EA / H) * (span / L_e)
     if not (np.isfinite(c / span) and c / span >= TINY):
         raise InputError(
             farthest_from_one(**given, g=g, w=w, span=span),
@@ -289,7 +291,7 @@ def natural_frequencies(span, dh, w, EA, *, H=None, sag=None, n_modes=6, g=9.81)
     irvine = _irvine(span, w, EA, H, n_modes, g, given)
     mesh = _unit_mesh(max(120, 24 * n_modes))
     slope = real("slope", static.slope(np.clip(span * mesh.xi_quadrature, 0.0, span)))
-    ds_dx = np.sqrt(1.0 + slope**2)
+    ds_dx = np.hypot(1.0, slope)
     mass = mesh.mass_pattern.band(_mass.coo_data(mesh.basis, m=ds_dx).data)  # ∫ (ds/dx) φφ dξ
     b = _coupling.assemble(mesh.basis, slope=slope)[mesh.order]  # ∫ y' φ' dξ = ∫ y' φ' dx
     l_e = float(np.sum(ds_dx**3 * mesh.basis.dx))  # L_e / span
@@ -345,15 +347,16 @@ class _Scales(NamedTuple):
     def of(cls, span, w, EA, H, g, l_e, given):
         blame = {"span": span, "w": w, "EA": EA, "g": g, **given}
         extension = EA / H / l_e
-        lambda2 = ((w / H) * span) ** 2 * extension
-        frequency = np.sqrt(H) * np.sqrt(g) / np.sqrt(w) / span / (2 * np.pi)
+        ratio = (w / H) * span
+        lambda2 = ratio * ratio * extension
+        frequency = math.sqrt(H) * math.sqrt(g) / math.sqrt(w) / span / (2 * math.pi)
         scales = cls(
             extension,
             w / g * span,
             H / span,
             EA / (span * l_e),
             frequency,
-            np.sqrt(g) / (np.sqrt(w) * np.sqrt(span)),
+            math.sqrt(g) / (math.sqrt(w) * math.sqrt(span)),
             lambda2,
             blame,
             next(iter(given)),
@@ -391,10 +394,11 @@ class _Matrices:
         ):
             entries = np.abs(band[band != 0])
             factor = getattr(scale, field)
-            if not (np.isfinite(factor * entries.max()) and factor * entries.min() >= TINY):
+            if not (math.isfinite(factor * float(entries.max())) and factor * float(entries.min()) >= TINY):
                 raise InputError(scale.culprit(names), f"gives a {field} matrix outside the range of a float")
-        largest = scale.stiffness * np.abs(stiffness).max() + scale.coupling * np.abs(b).max() ** 2
-        if not np.isfinite(largest):
+        b_max = float(np.abs(b).max())
+        largest = scale.stiffness * float(np.abs(stiffness).max()) + scale.coupling * b_max * b_max
+        if not math.isfinite(largest):
             raise InputError(
                 scale.culprit(("EA", "span")), "gives an in-plane stiffness outside the range of a float"
             )

@@ -42,6 +42,7 @@ the frequency of a slipping strand at a given amplitude lies between them.
 from __future__ import annotations
 
 import functools
+import math
 from typing import NamedTuple
 
 import numpy as np
@@ -95,11 +96,14 @@ def pinned_beam_frequencies(EI, N, length, mass_per_length, *, n_modes=6):
     N = _scalar("N", N, nonnegative)
     n = np.arange(1, whole("n_modes", n_modes, 1, 40) + 1)
     k = n * np.pi / length
-    ratio = N / EI / k**2  # N/(k² EI), the string's share; the larger term is factored out
     f = np.empty(k.shape)
-    beam, string = ratio <= 1.0, ratio > 1.0
-    f[beam] = k[beam] ** 2 * (np.sqrt(EI) / np.sqrt(m)) * np.sqrt(1.0 + ratio[beam]) / (2.0 * np.pi)
-    f[string] = k[string] * (np.sqrt(N) / np.sqrt(m)) * np.sqrt(1.0 + 1.0 / ratio[string]) / (2.0 * np.pi)
+    with np.errstate(over="ignore", divide="ignore"):  # a factor beyond the float range: checked below
+        ratio = N / EI / k**2  # N/(k² EI), the string's share; the larger term is factored out
+        beam, string = ratio <= 1.0, ratio > 1.0
+        f[beam] = k[beam] ** 2 * (math.sqrt(EI) / math.sqrt(m)) * np.sqrt(1.0 + ratio[beam]) / (2.0 * np.pi)
+        f[string] = (
+            k[string] * (math.sqrt(N) / math.sqrt(m)) * np.sqrt(1.0 + 1.0 / ratio[string]) / (2.0 * np.pi)
+        )
     if not (np.all(np.isfinite(f)) and np.all(f >= TINY)):
         blame = {"EI": EI, "length": length, "mass_per_length": m} | ({"N": N} if N > 0 else {})
         raise InputError(farthest_from_one(**blame), "gives frequencies outside the range of a float")
@@ -228,7 +232,7 @@ def beam_frequencies(EI, N, length, mass_per_length, *, ends="clamped", n_modes=
 
     beam = _unit_beam(int(n_elements), ends)
     f, phi = _solve(beam, EI, N, length, m, n_modes)
-    mode_scale = 1.0 / (np.sqrt(m) * np.sqrt(length))  # the mass is m l times the unit one
+    mode_scale = 1.0 / (math.sqrt(m) * math.sqrt(length))  # the mass is m l times the unit one
     if not (np.isfinite(mode_scale) and mode_scale >= TINY):
         blame = farthest_from_one(length=length, mass_per_length=m)
         raise InputError(blame, "gives mode shapes outside the range of a float")
@@ -251,10 +255,10 @@ def _solve(beam, EI, N, length, m, n_modes):
     kappa = N / EI * length * length  # N l²/EI
     if kappa <= 1.0:  # the bending term leads: omega² = EI/(m l⁴) mu
         stiffness = beam.bending + kappa * beam.geometric
-        scale, blame = np.sqrt(EI) / np.sqrt(m) / length / length, {"EI": EI}
+        scale, blame = math.sqrt(EI) / math.sqrt(m) / length / length, {"EI": EI}
     else:  # the tension leads: omega² = N/(m l²) mu
         stiffness = beam.geometric + beam.bending / kappa
-        scale, blame = np.sqrt(N) / np.sqrt(m) / length, {"N": N}
+        scale, blame = math.sqrt(N) / math.sqrt(m) / length, {"N": N}
     mu, phi = lowest_modes(stiffness, beam.mass, n_modes, what="beam_frequencies")
     f = np.sqrt(mu) * scale / (2.0 * np.pi)
     if not (np.all(np.isfinite(f)) and np.all(f >= TINY)):
