@@ -42,9 +42,9 @@ import functools
 
 import numpy as np
 import scipy.sparse as sp
-from scipy.linalg import eigh, solve_banded
+from scipy.linalg import eigh
 from scipy.linalg.blas import dtbmv
-from scipy.linalg.lapack import dpbtrf, dpbtrs, dsbevx, dtbtrs
+from scipy.linalg.lapack import dgbcon, dgbtrf, dgbtrs, dpbtrf, dpbtrs, dsbevx, dtbtrs
 from scipy.sparse.linalg import ArpackError, ArpackNoConvergence, LinearOperator, eigsh
 
 from skcable.errors import ConvergenceError
@@ -141,7 +141,7 @@ def _solve(K, M, n_modes, c, b, what):
         if found is not None:
             lam, phi = found
             sigma = 0.5 * (lam[-2] + lam[-1])  # between the last wanted mode and the next
-            if _count_below(K, M, sigma, c, b) == n_modes and _check(K, M, c, b, lam, phi):
+            if _count_is(K, M, sigma, c, b, n_modes) and _check(K, M, c, b, lam, phi):
                 return lam[:n_modes], phi[:, :n_modes]
     try:
         lam, phi = _dense_modes(K, M, n_modes, c, b)
@@ -175,9 +175,8 @@ def _lanczos(K, M, k, c, b):
         return dtbmv(q, R, inverse(dtbmv(q, R, psi, trans=1)))
 
     n = K.shape[1]
-    start = np.random.default_rng(0).standard_normal(n)  # generic: every mode in it
     try:
-        mu, psi = eigsh(_Operator(op, n), k=k, which="LA", v0=start, tol=0)
+        mu, psi = eigsh(_Operator(op, n), k=k, which="LA", v0=_start(n), tol=0)
     except (ArpackNoConvergence, ArpackError):
         return None
     if not (np.all(np.isfinite(mu)) and np.all(mu > 0)):
@@ -204,6 +203,15 @@ class _Operator(LinearOperator):
         return self.function(x)
 
 
+@functools.lru_cache(maxsize=16)
+def _start(n):
+    """Lanczos' start vector: random, so that every mode is in it; seeded, so that a run
+    repeats the last."""
+    start = np.random.default_rng(0).standard_normal(n)
+    start.flags.writeable = False
+    return start
+
+
 def _band_matmat(ab, X):
     """``A @ X`` for ``A`` in upper band storage."""
     p = ab.shape[0] - 1
@@ -217,7 +225,13 @@ def _band_matmat(ab, X):
 
 def _norm(ab) -> float:
     """Largest absolute row sum (the infinity norm, a bound on the spectral radius)."""
-    return float(_band_matmat(np.abs(ab), np.ones((ab.shape[1], 1))).max())
+    p = ab.shape[0] - 1
+    magnitude = np.abs(ab)
+    rows = magnitude[p].copy()
+    for d in range(1, p + 1):
+        rows[:-d] += magnitude[p - d, d:]
+        rows[d:] += magnitude[p - d, d:]
+    return float(rows.max())
 
 
 def _minus(K, M, sigma):
@@ -229,36 +243,56 @@ def _minus(K, M, sigma):
     return A
 
 
-def _count_below(K, M, sigma, c, b):
-    """Eigenvalues of the pencil below ``sigma``, None where round-off could change the count.
+def _count_is(K, M, sigma, c, b, k) -> bool:
+    """Whether exactly ``k`` eigenvalues of the pencil lie below ``sigma``, beyond round-off.
 
     Sylvester: as ``M`` is positive definite, that count is the number of negative eigenvalues
-    of ``A = K - sigma M`` (+ ``c bb^T``). With the bordered matrix ``[[A, b], [b^T, -1/c]]``,
-    whose inertia is that of ``A`` and of ``-(1/c + b^T A^-1 b)`` and also that of ``-1/c`` and
-    of ``A + c bb^T``, the rank-one term removes one negative eigenvalue where
-    ``1/c + b^T A^-1 b < 0``.
+    of ``A = K - sigma M`` (+ ``c bb^T``). LAPACK ``dsbevx`` gives the ``k``-th to ``k+2``-th
+    eigenvalues of ``A`` (bisection on its tridiagonal form, backward stable); one of them
+    within ``64 n eps ||A||`` of 0 leaves the count to round-off, and the answer is no. With
+    the bordered matrix ``[[A, b], [b^T, -1/c]]``, whose inertia is that of ``A`` and of
+    ``-(1/c + b^T A^-1 b)``, and also that of ``-1/c`` and of ``A + c bb^T``, the rank-one term
+    removes one negative eigenvalue where ``1/c + b^T A^-1 b < 0``; that sign counts where it
+    exceeds its error bound (LU of the band and ``dgbcon``'s condition estimate).
     """
     A = _minus(K, M, sigma)
-    n, p = A.shape[1], A.shape[0] - 1
+    n = A.shape[1]
     norm = _norm(A)
-    resolution = 64 * n * _EPS * norm  # of an eigenvalue of A from dsbevx (backward stable)
-    reach = 1e-3 * norm
-    w, _, m, _, info = dsbevx(A.copy(), -2.0 * norm, reach, 1, 1, compute_v=0, range=1, abstol=resolution / 4)
+    resolution = 64 * n * _EPS * norm  # of an eigenvalue of A from dsbevx
+    low, top = max(k, 1), min(n, k + 2)
+    w, _, m, _, info = dsbevx(
+        A, 0.0, 0.0, low, top, compute_v=0, range=2, abstol=resolution / 4, overwrite_ab=0
+    )
     w = w[:m]
-    if info or np.any(np.abs(w) <= resolution):
-        return None
-    negative = int(np.count_nonzero(w < 0))
+    if info or m != top - low + 1 or np.any(np.abs(w) <= resolution):
+        return False
+    negative = low - 1 + int(np.count_nonzero(w < 0))  # w[0] is the low-th: low - 1 below it
     if b is None:
-        return negative
-    general = np.vstack([A, np.zeros((p, n))])
+        return negative == k
+    if negative not in (k, k + 1):
+        return False
+    return negative - _rank_one_drop(A, c, b, norm) == k
+
+
+def _rank_one_drop(A, c, b, norm) -> int:
+    """1 where ``1/c + b^T A^-1 b < 0`` (the rank-one term removes a negative eigenvalue), 0
+    where it is > 0, 2 (no count fits) where round-off could decide its sign."""
+    n, p = A.shape[1], A.shape[0] - 1
+    general = np.zeros((3 * p + 1, n))  # dgbtrf's storage: p rows for the fill-in, then the band
+    general[p : 2 * p + 1] = A
     for d in range(1, p + 1):
-        general[p + d, :-d] = A[p - d, d:]  # the lower triangle, mirrored
-    z = solve_banded((p, p), general, b)
+        general[2 * p + d, :-d] = A[p - d, d:]  # the lower triangle, mirrored
+    lu, pivots, info = dgbtrf(general, p, p)
+    if info:
+        return 2
+    z, info = dgbtrs(lu, p, p, b, pivots)
+    rcond, info_c = dgbcon(p, p, lu, pivots, norm, norm="I")
     s = 1.0 / c + b @ z
-    condition = norm / min(float(np.abs(w).min(initial=reach)), reach)
-    if not np.isfinite(s) or abs(s) <= 16 * n * _EPS * condition * (1.0 / c + np.abs(b) @ np.abs(z)):
-        return None
-    return negative - int(s < 0)
+    if info or info_c or not (np.isfinite(s) and rcond > 0):
+        return 2
+    if abs(s) <= 16 * n * _EPS / rcond * (1.0 / c + np.abs(b) @ np.abs(z)):
+        return 2
+    return int(s < 0)
 
 
 def _check(K, M, c, b, lam, phi) -> bool:
@@ -274,9 +308,13 @@ def _check(K, M, c, b, lam, phi) -> bool:
         norm_K += c * float(np.abs(b).sum() * np.abs(b).max())
     residual = np.abs(KX - MX * lam).max(axis=0)  # infinity norms: no squares to overflow
     size = 16 * n * _EPS * (norm_K + lam * _norm(M)) * np.abs(phi).max(axis=0)
-    gram = np.abs(phi.T @ MX - np.eye(phi.shape[1]))
-    scale = np.abs(phi).T @ _band_matmat(np.abs(M), np.abs(phi))  # |Φ|ᵀ|M||Φ| >= |ΦᵀMΦ|
-    return bool(np.all(residual <= size) and gram.max() <= 16 * n * _EPS * scale.max())
+    if not np.all(residual <= size):
+        return False
+    gram = float(np.abs(phi.T @ MX - np.eye(phi.shape[1])).max())
+    if gram <= 16 * n * _EPS:  # |Φ|ᵀ|M||Φ| >= |ΦᵀMΦ| = 1: within the bound below
+        return True
+    scale = np.abs(phi).T @ _band_matmat(np.abs(M), np.abs(phi))
+    return gram <= 16 * n * _EPS * float(scale.max())
 
 
 def dense(ab) -> np.ndarray:

@@ -63,13 +63,21 @@ def test_count_with_the_rank_one_term_is_the_dense_inertia():
     rng = np.random.default_rng(3)
     b = rng.standard_normal(200) * np.sin(np.linspace(0, 3, 200))
     dense = scipy.linalg.eigh(K.toarray() + 50.0 * np.outer(b, b), M.toarray(), eigvals_only=True)
+    plain = scipy.linalg.eigh(K.toarray(), M.toarray(), eigvals_only=True)
     Kb, Mb = _eigen.upper_band(K), _eigen.upper_band(M)
     for j in (0, 3, 9, 30):
         sigma = 0.5 * (dense[j] + dense[j + 1])
-        assert _eigen._count_below(Kb, Mb, sigma, 50.0, b) == j + 1
-        assert _eigen._count_below(Kb, Mb, sigma, 0.0, None) == np.count_nonzero(
-            scipy.linalg.eigh(K.toarray(), M.toarray(), eigvals_only=True) < sigma
-        )
+        assert [_eigen._count_is(Kb, Mb, sigma, 50.0, b, k) for k in (j, j + 1, j + 2)] == [
+            False,
+            True,
+            False,
+        ]
+        below = int(np.count_nonzero(plain < sigma))
+        assert [_eigen._count_is(Kb, Mb, sigma, 0.0, None, k) for k in (below - 1, below, below + 1)] == [
+            False,
+            True,
+            False,
+        ]
 
 
 def test_the_checks_refuse_a_wrong_pair():

@@ -96,18 +96,21 @@ def pinned_beam_frequencies(EI, N, length, mass_per_length, *, n_modes=6):
     N = _scalar("N", N, nonnegative)
     n = np.arange(1, whole("n_modes", n_modes, 1, 40) + 1)
     k = n * np.pi / length
-    f = np.empty(k.shape)
-    with np.errstate(over="ignore", divide="ignore"):  # a factor beyond the float range: checked below
-        ratio = N / EI / k**2  # N/(k² EI), the string's share; the larger term is factored out
-        beam, string = ratio <= 1.0, ratio > 1.0
-        f[beam] = k[beam] ** 2 * (math.sqrt(EI) / math.sqrt(m)) * np.sqrt(1.0 + ratio[beam]) / (2.0 * np.pi)
-        f[string] = (
-            k[string] * (math.sqrt(N) / math.sqrt(m)) * np.sqrt(1.0 + 1.0 / ratio[string]) / (2.0 * np.pi)
-        )
+    f = np.array([_pinned_mode(kn, EI, N, m) for kn in k.tolist()])
     if not (np.all(np.isfinite(f)) and np.all(f >= TINY)):
         blame = {"EI": EI, "length": length, "mass_per_length": m} | ({"N": N} if N > 0 else {})
         raise InputError(farthest_from_one(**blame), "gives frequencies outside the range of a float")
     return f
+
+
+def _pinned_mode(k, EI, N, m):
+    """(k/2π) sqrt((k² EI + N)/m) in Python floats (inf on overflow, no warning), its larger
+    term factored out: k² sqrt(EI/m) sqrt(1 + r) or k sqrt(N/m) sqrt(1 + 1/r), r = N/(k² EI)."""
+    kk = k * k
+    ratio = N / EI / kk if kk > 0.0 else math.inf  # the string's share
+    if ratio <= 1.0:
+        return kk * (math.sqrt(EI) / math.sqrt(m)) * math.sqrt(1.0 + ratio) / (2.0 * math.pi)
+    return k * (math.sqrt(N) / math.sqrt(m)) * math.sqrt(1.0 + 1.0 / ratio) / (2.0 * math.pi)
 
 
 class BeamFrequencies:
