@@ -161,6 +161,21 @@ class NaturalFrequencies:
         of ``x[1:-1]``), made dense on first access.
     """
 
+    f_in_plane: np.ndarray
+    f_out_of_plane: np.ndarray
+    in_plane_symmetric: np.ndarray
+    x: np.ndarray
+    y: np.ndarray
+    span: float
+    dh: float
+    modes_in_plane: np.ndarray
+    modes_out_of_plane: np.ndarray
+    H: float
+    sag: float
+    L_e: float
+    lambda2: float
+    irvine: dict
+
     def __init__(self, *, matrices=None, **values):
         self._matrices = matrices
         self.__dict__.update(values)
@@ -222,13 +237,13 @@ def _unit_mesh(n_elements: int) -> _UnitMesh:
     free = basis.complement_dofs(basis.get_dofs())
     order = free[np.argsort(basis.doflocs[0][free])]
     stiffness = _stiff.coo_data(basis)
-    pattern = BandPattern(*stiffness.indices, order, basis.N)
-    mass_indices = _mass.coo_data(basis, m=np.ones_like(basis.dx)).indices
+    rows, cols = stiffness.indices
+    mass_rows, mass_cols = _mass.coo_data(basis, m=np.ones_like(basis.dx)).indices
     mesh = _UnitMesh(
         basis,
         order,
-        pattern.band(stiffness.data),
-        BandPattern(*mass_indices, order, basis.N),
+        BandPattern(rows, cols, order, basis.N).band(stiffness.data),
+        BandPattern(mass_rows, mass_cols, order, basis.N),
         np.concatenate([[0.0], basis.doflocs[0][order], [1.0]]),
         basis.mapping.F(basis.X)[0],
     )

@@ -132,6 +132,16 @@ class BeamFrequencies:
         ``ends="pinned"``, a lower bound for clamped ends).
     """
 
+    f: np.ndarray
+    x: np.ndarray
+    modes: np.ndarray
+    EI: float
+    N: float
+    length: float
+    mass_per_length: float
+    ends: str
+    pinned_closed_form: np.ndarray
+
     def __init__(self, **values):
         self.__dict__.update(values)
 
@@ -166,6 +176,13 @@ class _UnitBeam(NamedTuple):
     xi: np.ndarray
 
 
+def _band(form, basis, free):
+    """The upper band of ``form`` assembled on ``basis``, on the DOFs ``free``."""
+    coo = form.coo_data(basis)
+    rows, cols = coo.indices
+    return BandPattern(rows, cols, free, basis.N).band(coo.data)
+
+
 @functools.lru_cache(maxsize=16)
 def _unit_beam(n_elements: int, ends: str) -> _UnitBeam:
     mesh = MeshLine(np.linspace(0.0, 1.0, n_elements + 1))
@@ -175,11 +192,8 @@ def _unit_beam(n_elements: int, ends: str) -> _UnitBeam:
     free = basis.complement_dofs(fixed)  # node by node: banded
     position = np.full(basis.N, -1)
     position[free] = np.arange(free.size)
-    bands = []
-    for form in (_bending, _geometric, _mass):
-        coo = form.coo_data(basis)
-        bands.append(BandPattern(*coo.indices, free, basis.N).band(coo.data))
-    beam = _UnitBeam(*bands, position[basis.nodal_dofs[0]], mesh.p[0].copy())
+    bending, geometric, mass = (_band(form, basis, free) for form in (_bending, _geometric, _mass))
+    beam = _UnitBeam(bending, geometric, mass, position[basis.nodal_dofs[0]], mesh.p[0].copy())
     for array in beam:
         array.flags.writeable = False
     return beam
@@ -288,6 +302,15 @@ class StrandFrequencies:
     axis : int
         Principal axis (0: axis 1, the stiffer; 1: axis 2).
     """
+
+    f_stick: np.ndarray
+    f_slip: np.ndarray
+    EI_stick: float
+    EI_slip: float
+    drop: np.ndarray
+    stick: BeamFrequencies
+    slip: BeamFrequencies
+    axis: int
 
     def __init__(self, **values):
         self.__dict__.update(values)
