@@ -48,6 +48,7 @@ import numpy as np
 from scipy.optimize import brentq
 from skfem import Basis, BilinearForm, ElementLineP2, LinearForm, MeshLine
 
+from skcable import _plausible
 from skcable._checks import TINY, exactly_one, positive, real, scalar, whole
 from skcable._eigen import BandPattern, dense, farthest_from_one, first_lobe_positive, lowest_modes
 from skcable.cable._catenary import catenary
@@ -326,6 +327,7 @@ def natural_frequencies(span, dh, w, EA, *, H=None, sag=None, n_modes=6, g=9.81)
     sym_part = np.linalg.norm(shapes + shapes[:, ::-1], axis=1)
     anti_part = np.linalg.norm(shapes - shapes[:, ::-1], axis=1)
     x = span * mesh.xi
+    _plausible.conductor(span, dh, EA=EA, w=w, sag=sag if name == "sag" else None)
     return NaturalFrequencies(
         f_in_plane=results["in"][0],
         f_out_of_plane=results["out"][0],

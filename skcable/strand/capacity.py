@@ -15,6 +15,7 @@ from functools import cached_property
 
 import numpy as np
 
+from skcable import _plausible
 from skcable._checks import positive
 from skcable.errors import ConvergenceError, InputError
 
@@ -425,6 +426,7 @@ def capacity_curve(
         raise InputError("n_steps", f"must be at least 4, got {n_steps!r}")
     if max_strain is not None:
         positive("max_strain", max_strain)
+        _plausible.strand_strain("max_strain", float(max_strain), [m.eps_rupture for m in materials])
     if not (
         isinstance(state_passes, (int, np.integer))
         and not isinstance(state_passes, bool)

@@ -48,11 +48,12 @@ from skcable.cable._loads import DeckLoad, DistributedLoad, PointLoad, SelfWeigh
 from skcable.cable.bvp.base import FiniteElementSolution
 from skcable.cable.bvp.elements import end_dofs
 from skcable.cable.bvp.probes import element_values, gradient_probes, minimum_near
+from skcable.cable.terms import CableState, CableTerm
 from skcable.errors import InputError
 from skcable.fe.assembly import Assembly
 from skcable.fe.linear import BorderedSolver
 
-__all__ = ["ArcProblem", "ArcSolution", "ArcState", "arc_guess", "arc_loads"]
+__all__ = ["ArcProblem", "ArcSolution", "ArcState", "arc_guess", "arc_loads", "term_loads"]
 
 #: generalized strains of the section law: x', y', x, y, T
 _STRAINS = (("x", 1), ("y", 1), ("x", 0), ("y", 0), ("T", 0))
@@ -69,6 +70,8 @@ def arc_loads(loads, x, dx, L0, span):
     out = [zero.copy() for _ in range(8)]
     h = 1e-7 * span
     for load in loads:
+        if isinstance(load, CableTerm):
+            continue  # `term_loads`
         if isinstance(load, SelfWeight):
             out[1] -= load.w * L0
             out[7] -= load.w
@@ -92,6 +95,35 @@ def arc_loads(loads, x, dx, L0, span):
         else:
             raise InputError("load", f"{type(load).__name__} is not supported by formulation='arc'")
     return out
+
+
+def term_loads(terms, X, Y, ax, ay, T, L0, sigma):
+    """The cable terms' load per unit σ, ``Q = L0 f`` (2, *P), and its derivatives by the
+    position ``r`` (2, 2, *P), by ``r' = dr/dσ`` (2, 2, *P), by the tension (2, *P) and by L0
+    (2, *P) (`skcable.cable.terms`): ``a = r'/L0``, ``s = σ L0``."""
+    a = np.array([ax, ay]) / L0
+    state = CableState(X, Y, sigma * L0, a, T)
+    Q, dQ_dr, dQ_da = np.zeros((2, *X.shape)), np.zeros((2, 2, *X.shape)), np.zeros((2, 2, *X.shape))
+    dQ_dT, dQ_dL = np.zeros((2, *X.shape)), np.zeros((2, *X.shape))
+    for term in terms:
+        out = term.forces(state)
+        f = np.asarray(out.f, dtype=float)
+        if f.shape != Q.shape or not np.all(np.isfinite(f)):
+            raise InputError(
+                "load", f"{term!r} returned forces of shape {f.shape} (not {Q.shape}) or non-finite ones"
+            )
+        Q += L0 * f
+        dQ_dL += f
+        if out.df_dr is not None:
+            dQ_dr += L0 * out.df_dr
+        if out.df_da is not None:
+            dQ_da += out.df_da
+            dQ_dL -= np.einsum("ij...,j...->i...", out.df_da, a)
+        if out.df_ds is not None:
+            dQ_dL += sigma * L0 * out.df_ds
+        if out.df_dT is not None:
+            dQ_dT += L0 * out.df_dT
+    return Q, dQ_dr, dQ_da, dQ_dT, dQ_dL
 
 
 @dataclass
@@ -132,6 +164,7 @@ class ArcProblem:
                 "degree", f"formulation='arc' uses degree 2 (P2 positions, P1 tension), got {degree!r}"
             )
         self.span, self.dh, self.EA, self.constraint, self.loads = span, dh, EA, constraint, loads
+        self.terms = [ld for ld in loads if isinstance(ld, CableTerm)]
         self.compliance = 0.0 if EA is None else 1.0 / EA
         n = positive("n_elements", n_elements)
         require("n_elements", n == int(n), "must be a whole number", n)
@@ -173,10 +206,18 @@ class ArcProblem:
         D[_X, _X], D[_X, _AX] = -dQx_dx, -dQx_dxp
         D[_Y, _X], D[_Y, _AX] = -dQy_dx, -dQy_dxp
         D[_T, _T] = -L0 * c
+        zero = np.zeros_like(n)
+        dS_dL0 = np.stack([zero, zero, -dQx_dL, -dQy_dL, -(1.0 + T * c)])
+        if self.terms:  # the cable terms (skcable.cable.terms): their loads and full tangent
+            Q, dQ_dr, dQ_da, dQ_dT, dQ_dL = term_loads(self.terms, X, g[_Y], ax, ay, T, L0, asmb.x)
+            S[_X : _Y + 1] -= Q
+            D[_X : _Y + 1, _X : _Y + 1] -= dQ_dr
+            D[_X : _Y + 1, _AX : _AY + 1] -= dQ_da
+            D[_X : _Y + 1, _T] -= dQ_dT
+            dS_dL0[_X : _Y + 1] -= dQ_dL
         R = asmb.vector(S)
         Ke = asmb.element_matrices(D)
-        zero = np.zeros_like(n)
-        dR_dL0 = asmb.vector(np.stack([zero, zero, -dQx_dL, -dQy_dL, -(1.0 + T * c)]))
+        dR_dL0 = asmb.vector(dS_dL0)
         gap, dg, dg_dL0 = self.constraint_terms(z, R, Ke, dR_dL0, g)
         force = np.abs(R[self._force_rows]) / self.load_scale
         stretch = np.abs(R[self._stretch_rows]) / self.length_scale
@@ -184,6 +225,35 @@ class ArcProblem:
         merit = max(float(np.max(force, initial=0.0)), float(np.max(stretch, initial=0.0)), constraint)
         descent = float(np.sqrt(np.sum(force * force) + np.sum(stretch * stretch) + constraint * constraint))
         return ArcState(R, Ke, dR_dL0, float(gap), dg, float(dg_dL0), merit, descent, asmb)
+
+    # --- one term alone (skcable.fe.check_tangent) ---------------------------------------------
+    def term_contribution(self, term, U, state=None):
+        """``(R, K)`` of the cable term ``term`` alone at ``U = [z, L0]`` (the Newton vector):
+        its residual (its load, negated) over the dofs and its tangent by them, L0 held."""
+        from skcable.fe.check import sparse_of
+
+        z, L0 = U[:-1], float(U[-1])
+        g = self.assembly.interpolate(z)
+        Q, dQ_dr, dQ_da, dQ_dT, _ = term_loads(
+            [term], g[_X], g[_Y], g[_AX], g[_AY], g[_T], L0, self.assembly.x
+        )
+        S = np.zeros((5, *g.shape[1:]))
+        S[_X : _Y + 1] = -Q
+        D = np.zeros((5, 5, *g.shape[1:]))
+        D[_X : _Y + 1, _X : _Y + 1] = -dQ_dr
+        D[_X : _Y + 1, _AX : _AY + 1] = -dQ_da
+        D[_X : _Y + 1, _T] = -dQ_dT
+        K = self.assembly.matrix(self.assembly.element_matrices(D))
+        return np.append(self.assembly.vector(S), 0.0), sparse_of(K, len(U))
+
+    def free_dofs(self):
+        """The dofs a solve moves, L0 left out (for `skcable.fe.check_tangent`)."""
+        return self.free
+
+    def tangent_check_state(self):
+        """The start of a solve, ``[z, L0]`` (for `skcable.fe.check_tangent`)."""
+        z, L0 = arc_guess(self)
+        return np.append(z, L0)
 
     def scaled(self, R, g):
         """Residual in consistent units: forces over the total load, stretch
@@ -257,11 +327,22 @@ class ArcProblem:
     length_scale = 1.0
     load_scale = 1.0
 
+    def straight_loads(self, L0):
+        """``(Qx, Qy)`` per unit σ on the straight chord of unstretched length L0, every load."""
+        sigma = self.assembly.x
+        x, y = sigma * self.span, sigma * self.dh
+        out = arc_loads(self.loads, x, np.full_like(x, self.span), L0, self.span)
+        Qx, Qy = out[0], out[1]
+        if self.terms:
+            zero = np.zeros_like(x)
+            Q = term_loads(self.terms, x, y, zero + self.span, zero + self.dh, zero, L0, sigma)[0]
+            Qx, Qy = Qx + Q[0], Qy + Q[1]
+        return Qx, Qy
+
     def total_load(self, L0):
         """Magnitude of the distributed load on a straight cable of length L0 (N)."""
-        x = self.assembly.x * self.span
-        out = arc_loads(self.loads, x, np.full_like(x, self.span), L0, self.span)
-        return float(np.sum(np.hypot(out[0], out[1]) * self.assembly.dx)) or 1.0
+        Qx, Qy = self.straight_loads(L0)
+        return float(np.sum(np.hypot(Qx, Qy) * self.assembly.dx)) or 1.0
 
     @property
     def constraint_scale(self):
@@ -281,8 +362,8 @@ def arc_guess(problem: ArcProblem):
     name, value = problem.constraint
     chord = float(np.hypot(span, dh))
     length = (value if value > chord else chord * (1 + 1e-6)) if name == "length" else chord
-    x, dx = problem.assembly.x * span, problem.assembly.dx
-    Q = arc_loads(problem.loads, x, np.full_like(x, span), length, span)
+    dx = problem.assembly.dx
+    Q = problem.straight_loads(length)
     mean = np.array([np.sum(Q[0] * dx), np.sum(Q[1] * dx)]) / length
     q = float(np.hypot(*mean))
     up = -mean / q
@@ -405,6 +486,10 @@ class ArcSolution(FiniteElementSolution):
         dx, dy = G @ xd, G @ yd
         xy = self.xy(sigma)
         loads = arc_loads(self._problem.loads, xy[:, 0], dx, self.L0, self.span)
+        if self._problem.terms:
+            tension = self._problem.tbasis.probes(sigma.reshape(1, -1)) @ T
+            Q = term_loads(self._problem.terms, xy[:, 0], xy[:, 1], dx, dy, tension, self.L0, sigma)[0]
+            loads = [loads[0] + Q[0], loads[1] + Q[1]]
         return {
             "xy": xy,
             "tension": self._problem.tbasis.probes(sigma.reshape(1, -1)) @ T,

@@ -23,6 +23,12 @@ class FiniteElementSolution(CableSolution):
         self.constraint = problem.constraint
         self._state = state
 
+    @property
+    def problem(self):
+        """The discrete problem this solution solved (mesh, bases, loads, assembly): what
+        `skcable.fe.check_tangent` checks a cable term on, ``check_tangent(term, sol.problem)``."""
+        return self._problem
+
     @cached_property
     def _sag(self):
         return self._problem.extremum(self.dofs, "sag")

@@ -39,6 +39,7 @@ from skcable.cable._parabola import parabola
 from skcable.cable.bvp.base import FiniteElementSolution
 from skcable.cable.bvp.elements import end_dofs, line_element
 from skcable.cable.bvp.probes import element_values, gradient_probes, minimum_near
+from skcable.cable.terms import CableState, CableTerm
 from skcable.errors import InputError
 from skcable.fe.assembly import Assembly
 from skcable.fe.linear import BorderedSolver
@@ -64,6 +65,38 @@ class GraphState:
     def K(self):
         """The global tangent ``∂R/∂y`` (CSR), for inspection; Newton uses the band of ``Ke``."""
         return self.assembly.matrix(element_matrices=self.Ke)
+
+
+def graph_term_loads(terms, x, y, slope, H, EA):
+    """The cable terms' downward load per horizontal length ``q = −f_y m`` and its derivatives
+    by y', H and y (`skcable.cable.terms`): ``m = ds/dx`` the unstretched length per horizontal
+    length, ``a = (1, y')/m``, ``T = H sqrt(1 + y'^2)``; a horizontal force is refused."""
+    m, dm_ds, dm_dH = unstretched_measure(slope, H, EA)
+    c = np.sqrt(1.0 + slope * slope)
+    a = np.array([np.ones_like(slope), slope]) / m
+    state = CableState(x, y, None, a, H * c)
+    da_ds = np.array([np.zeros_like(slope), np.ones_like(slope)]) / m - a * (dm_ds / m)
+    da_dH = -a * (dm_dH / m)
+    q, dq_ds, dq_dH, dq_dy = (np.zeros_like(slope) for _ in range(4))
+    for term in terms:
+        out = term.forces(state)
+        f = np.asarray(out.f, dtype=float)
+        if f.shape != (2, *slope.shape) or not np.all(np.isfinite(f)):
+            raise InputError("load", f"{term!r} returned forces of shape {f.shape} or non-finite ones")
+        if np.any(f[0] != 0.0):
+            raise InputError("load", f"{term!r} has a horizontal component: give formulation='arc'")
+        fy = f[1]
+        dfy_ds = np.zeros_like(slope) if out.df_da is None else np.sum(out.df_da[1] * da_ds, axis=0)
+        dfy_dH = np.zeros_like(slope) if out.df_da is None else np.sum(out.df_da[1] * da_dH, axis=0)
+        if out.df_dT is not None:  # T = H c: ∂T/∂y' = H y'/c, ∂T/∂H = c
+            dfy_ds = dfy_ds + out.df_dT[1] * H * slope / c
+            dfy_dH = dfy_dH + out.df_dT[1] * c
+        q = q - fy * m
+        dq_ds = dq_ds - (dfy_ds * m + fy * dm_ds)
+        dq_dH = dq_dH - (dfy_dH * m + fy * dm_dH)
+        if out.df_dr is not None:
+            dq_dy = dq_dy - out.df_dr[1, 1] * m
+    return q, dq_ds, dq_dH, dq_dy
 
 
 def _mesh_nodes(mesh, n_elements, span, at):
@@ -94,7 +127,11 @@ class GraphProblem:
         self.span, self.dh, self.EA, self.constraint = span, dh, EA, constraint
         self.chord_slope = dh / span  # the unknown is u = y - chord_slope * x, zero at both supports
         self.point_loads = [ld for ld in loads if isinstance(ld, PointLoad)]
-        self.distributed = [ld for ld in loads if not isinstance(ld, PointLoad)]
+        self.terms = [ld for ld in loads if isinstance(ld, CableTerm)]
+        for term in self.terms:
+            if term.uses_s:
+                raise InputError("load", f"{term!r} reads the arc length s: give formulation='arc'")
+        self.distributed = [ld for ld in loads if not isinstance(ld, (PointLoad, CableTerm))]
         for ld in self.distributed:
             if not hasattr(ld, "graph_terms"):
                 raise InputError("load", f"{ld!r} has no graph_terms(x, slope, H, EA) method")
@@ -118,14 +155,19 @@ class GraphProblem:
         self.point_vector = np.bincount(self.point_dofs, weights=self.point_values, minlength=N)
 
     # --- pieces ----------------------------------------------------------
-    def load_terms(self, slope, H):
-        """``q, dq/dy', dq/dH`` summed over the distributed loads at the quadrature points."""
+    def load_terms(self, slope, H, y=None):
+        """``q, dq/dy', dq/dH, dq/dy`` summed over the loads at the quadrature points (``dq/dy``
+        None without cable terms; ``y`` the height there, needed by them)."""
         q = np.zeros_like(slope)
         dq_ds, dq_dh = np.zeros_like(slope), np.zeros_like(slope)
         for load in self.distributed:
             a, b, c = load.graph_terms(self.x_quad, slope, H, self.EA)
             q, dq_ds, dq_dh = q + a, dq_ds + b, dq_dh + c
-        return q, dq_ds, dq_dh
+        if not self.terms:
+            return q, dq_ds, dq_dh, None
+        y = self.chord_slope * self.x_quad if y is None else y
+        a, b, c, d = graph_term_loads(self.terms, self.x_quad, y, slope, H, self.EA)
+        return q + a, dq_ds + b, dq_dh + c, d
 
     def strains(self, dofs):
         """``(u', u)`` at the quadrature points: (2, nq, ne)."""
@@ -162,9 +204,11 @@ class GraphProblem:
         asmb = self.assembly
         du, u = asmb.interpolate(dofs)
         slope = self.chord_slope + du
-        q, dq_ds, dq_dh = self.load_terms(slope, H)
+        q, dq_ds, dq_dh, dq_dy = self.load_terms(slope, H, self.chord_slope * self.x_quad + u)
         R = asmb.gather(asmb.local(0, H * slope) + asmb.local(1, q)) + self.point_vector
         Ke = H * self._stiffness + asmb.block(1, 0, dq_ds)
+        if dq_dy is not None:  # cable terms that depend on the height
+            Ke = Ke + asmb.block(1, 1, dq_dy)
         dR_dH = asmb.gather(asmb.local(0, slope) + asmb.local(1, dq_dh))
         name, value = self.constraint
         if name == "H":
@@ -196,6 +240,31 @@ class GraphProblem:
         descent = float(np.sqrt(np.sum(force * force) + constraint * constraint))
         return GraphState(R, Ke, dR_dH, float(g), dg_dy, float(dg_dH), merit, descent, asmb)
 
+    # --- one term alone (skcable.fe.check_tangent) ---------------------------------------------
+    def term_contribution(self, term, U, state=None):
+        """``(R, K)`` of the cable term ``term`` alone at ``U = [dofs, H]`` (the Newton vector):
+        its residual ``∫ q v`` over the dofs and its tangent by them, H held."""
+        from skcable.fe.check import sparse_of
+
+        dofs, H = U[:-1], float(U[-1])
+        asmb = self.assembly
+        du, u = asmb.interpolate(dofs)
+        slope = self.chord_slope + du
+        q, dq_ds, _, dq_dy = graph_term_loads(
+            [term], self.x_quad, self.chord_slope * self.x_quad + u, slope, H, self.EA
+        )
+        K = asmb.matrix(asmb.block(1, 0, dq_ds) + asmb.block(1, 1, dq_dy))
+        return np.append(asmb.gather(asmb.local(1, q)), 0.0), sparse_of(K, len(U))
+
+    def free_dofs(self):
+        """The dofs a solve moves, H left out (for `skcable.fe.check_tangent`)."""
+        return self.interior
+
+    def tangent_check_state(self):
+        """The start of a solve, ``[dofs, H]`` (for `skcable.fe.check_tangent`)."""
+        dofs, H = initial_guess(self)
+        return np.append(dofs, H)
+
     def increment(self, state: GraphState) -> np.ndarray:
         """Newton increment of (dofs, H): the bordered banded solve."""
         system, interior = self.solver.system, self.interior
@@ -220,7 +289,7 @@ class GraphProblem:
     def load_scale(self):
         """Total vertical load on the straight chord (N): scale of the residual."""
         slope = np.full_like(self.x_quad, self.dh / self.span)
-        q, _, _ = self.load_terms(slope, 0.0)
+        q = self.load_terms(slope, 0.0)[0]
         return float(np.sum(np.abs(q) * self.assembly.dx) + np.sum(np.abs(self.point_values))) or 1.0
 
     @cached_property
@@ -344,6 +413,8 @@ class BVPSolution(FiniteElementSolution):
     def weight_per_length(self, x, slope):
         problem = self._problem
         q = sum(ld.graph_terms(x, slope, self.H, self.EA)[0] for ld in problem.distributed)
+        if problem.terms:
+            q = q + graph_term_loads(problem.terms, x, self.y(x), slope, self.H, self.EA)[0]
         return q / unstretched_measure(slope, self.H, self.EA)[0]
 
     def _residuals(self):

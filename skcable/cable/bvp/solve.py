@@ -21,8 +21,11 @@ def _choose_formulation(formulation, loads):
         raise InputError("formulation", f"must be 'auto', 'graph' or 'arc', got {formulation!r}")
     if formulation != "auto":
         return formulation
+    from skcable.cable.terms import CableTerm
+
     horizontal = any(getattr(ld, "qx", None) is not None for ld in loads)
-    return "arc" if horizontal else "graph"
+    terms = [ld for ld in loads if isinstance(ld, CableTerm)]
+    return "arc" if horizontal or any(not t.vertical or t.uses_s for t in terms) else "graph"
 
 
 #: Newton stops, raising, when the merit has not halved in this many iterations: a damped

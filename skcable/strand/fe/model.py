@@ -37,6 +37,7 @@ import numpy as np
 import scipy.sparse as sp
 from skfem import Basis, ElementLineHermite, ElementLineP2, MeshLine
 
+from skcable import _plausible
 from skcable._checks import nonnegative, positive, whole
 from skcable.errors import ConvergenceError, InputError, SlowConvergenceWarning
 from skcable.fe import Assembly, LinearSystem, NewtonOptions, minimize, newton
@@ -661,6 +662,7 @@ class StrandModel:
         strain = float(strain)
         if not np.isfinite(strain):
             raise InputError("strain", f"must be finite, got {strain!r}")
+        _plausible.strand_strain("strain", strain, [m.eps_rupture for m in self.strand.materials])
         options = NewtonOptions.of(self.options if options is None else options, **newton_options)
         whole("passes", passes, 0)
         state = self.initial_state() if state is None else tuple(state)
