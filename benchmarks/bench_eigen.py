@@ -190,8 +190,10 @@ def measure(repeats, accuracy=True):
         call, hand, planes, ours = make()
         for label, limit in ((f"default ({default})", None), ("1", 1)):
             with threadpool_limits(limit):
-                (ours, vectors, values), ratios = timed([call, hand, functools.partial(hand, True)], repeats)
-            rows.append((name, label, ours, vectors, ratios[0], values, ratios[1]))
+                (t_call, t_vectors, t_values), ratios = timed(
+                    [call, hand, functools.partial(hand, True)], repeats
+                )
+            rows.append((name, label, t_call, t_vectors, ratios[0], t_values, ratios[1]))
         if accuracy:
             accurate.append((name, *deviations(planes, ours, p)))
     return rows, accurate

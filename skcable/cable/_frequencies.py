@@ -318,26 +318,26 @@ def natural_frequencies(span, dh, w, EA, *, H=None, sag=None, n_modes=6, g=9.81)
         mu, phi = lowest_modes(
             mesh.stiffness, mass, n_modes, rank_one=rank_one, what=f"natural_frequencies ({plane}-plane)"
         )
-        shapes = np.zeros((n_modes, mesh.xi.size))
-        shapes[:, 1:-1] = phi.T * scale.mode
-        results[plane] = (scale.frequencies(mu), first_lobe_positive(shapes))
+        unit = np.zeros((n_modes, mesh.xi.size))  # mass-normalised on the unit span
+        unit[:, 1:-1] = phi.T
+        results[plane] = (scale.frequencies(mu), first_lobe_positive(unit))
 
-    # symmetric about midspan: compare the symmetric and antisymmetric parts (x is symmetric)
-    shapes = results["in"][1]
-    sym_part = np.linalg.norm(shapes + shapes[:, ::-1], axis=1)
-    anti_part = np.linalg.norm(shapes - shapes[:, ::-1], axis=1)
+    # symmetric about midspan: compare the symmetric and antisymmetric parts (x is symmetric),
+    # on the unit shapes (the SI ones may be too large for their squares)
+    unit = results["in"][1]
+    symmetric = np.linalg.norm(unit + unit[:, ::-1], axis=1) > np.linalg.norm(unit - unit[:, ::-1], axis=1)
     x = span * mesh.xi
     _plausible.conductor(span, dh, EA=EA, w=w, sag=sag if name == "sag" else None)
     return NaturalFrequencies(
         f_in_plane=results["in"][0],
         f_out_of_plane=results["out"][0],
-        in_plane_symmetric=sym_part > anti_part,
+        in_plane_symmetric=symmetric,
         x=x,
         y=_static_profile(static, x, dh),
         span=span,
         dh=dh,
-        modes_in_plane=results["in"][1],
-        modes_out_of_plane=results["out"][1],
+        modes_in_plane=results["in"][1] * scale.mode,
+        modes_out_of_plane=results["out"][1] * scale.mode,
         H=H,
         sag=sag,
         L_e=span * l_e,
