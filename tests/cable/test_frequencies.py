@@ -226,6 +226,7 @@ def test_weight_and_stiffness_scaled_together_leave_the_frequencies(s):
     np.testing.assert_allclose(r.f_in_plane, ref.f_in_plane, rtol=1e-12)
     np.testing.assert_allclose(r.f_out_of_plane, ref.f_out_of_plane, rtol=1e-12)
     assert r.lambda2 == pytest.approx(ref.lambda2, rel=1e-12)
+    assert r.in_plane_symmetric.tolist() == ref.in_plane_symmetric.tolist()
     peak = np.abs(ref.modes_in_plane).max()
     np.testing.assert_allclose(r.modes_in_plane * np.sqrt(s), ref.modes_in_plane, rtol=0, atol=1e-9 * peak)
 
