@@ -36,8 +36,7 @@ def shoot(span, dh, length, EA, force, start):
 
 def end_forces(sol):
     """``F(0)`` and ``F(L)`` of a BVP solution: the tension vectors at A and B, towards B."""
-    H_B = getattr(sol, "H_B", sol.H)
-    return np.array([sol.H, -sol.V_A]), np.array([H_B, sol.V_B])
+    return np.array([sol.H_A, -sol.V_A]), np.array([sol.H_B, sol.V_B])
 
 
 SPAN, DH, LENGTH, W, EA = 300.0, 40.0, 340.0, 400.0, 5e7
@@ -59,7 +58,7 @@ def test_buoyancy_varying_with_depth_matches_shooting():
         sol = cable.solve_bvp(
             SPAN, DH, loads, length=LENGTH, EA=EA, n_elements=256, formulation=formulation, rtol=1e-12
         )
-        F0, FL = shoot(SPAN, DH, LENGTH, EA, force, [sol.H, -sol.V_A])
+        F0, FL = shoot(SPAN, DH, LENGTH, EA, force, [sol.H_A, -sol.V_A])
         A, B = end_forces(sol)
         scale = np.hypot(*F0)
         assert np.max(np.abs(A - F0)) < 1e-6 * scale and np.max(np.abs(B - FL)) < 1e-6 * scale, formulation
@@ -94,11 +93,11 @@ def test_current_drag_matches_shooting(profile):
         SPAN, DH, [cable.SelfWeight(W), drag], length=LENGTH, EA=EA, n_elements=256, rtol=1e-12
     )
     assert sol.formulation == "arc"  # a horizontal force: the arc form, chosen for the user
-    F0, FL = shoot(SPAN, DH, LENGTH, EA, force, [sol.H, -sol.V_A])
+    F0, FL = shoot(SPAN, DH, LENGTH, EA, force, [sol.H_A, -sol.V_A])
     A, B = end_forces(sol)
     scale = np.hypot(*F0)
     assert np.max(np.abs(A - F0)) < 1e-6 * scale and np.max(np.abs(B - FL)) < 1e-6 * scale
-    assert abs(sol.H_B - sol.H) > 1e-3 * sol.H  # the drag changed the horizontal tension along the cable
+    assert abs(sol.H_B - sol.H_A) > 1e-3 * sol.H_A  # the drag changed the horizontal tension along the cable
 
 
 def test_wind_drag_on_the_projected_length_matches_shooting():
@@ -113,7 +112,7 @@ def test_wind_drag_on_the_projected_length_matches_shooting():
     sol = cable.solve_bvp(
         span, dh, [cable.SelfWeight(20.0), wind], length=length, EA=1e7, n_elements=256, rtol=1e-12
     )
-    F0, FL = shoot(span, dh, length, 1e7, force, [sol.H, -sol.V_A])
+    F0, FL = shoot(span, dh, length, 1e7, force, [sol.H_A, -sol.V_A])
     A, B = end_forces(sol)
     scale = np.hypot(*F0)
     assert np.max(np.abs(A - F0)) < 1e-6 * scale and np.max(np.abs(B - FL)) < 1e-6 * scale
@@ -206,3 +205,81 @@ def test_check_tangent_checks_cable_terms_too(formulation):
             assert wrong == pytest.approx(2.0 / 3.0, rel=1e-3)
         else:  # the graph form adds the measure's own derivative, right as it is: off by less
             assert wrong > 1e-2
+
+
+# --- Newton options and a free end loaded by a force in solve_bvp -----------------------------------
+def test_solve_bvp_takes_newton_options_and_names_bad_ones():
+    seen = []
+    sol = cable.solve_bvp(
+        SPAN, DH, cable.SelfWeight(W), length=LENGTH, callback=lambda k, r, dx: seen.append((k, r))
+    )
+    assert [k for k, _ in seen] == list(range(1, sol.iterations + 1))
+    assert [r for _, r in seen] == sol.history[1:]
+    full = cable.solve_bvp(SPAN, DH, cable.SelfWeight(W), length=LENGTH, line_search=False, formulation="arc")
+    assert full.H == pytest.approx(sol.H, rel=1e-6)
+    loose = cable.solve_bvp(SPAN, DH, cable.SelfWeight(W), length=LENGTH, rtol=1e-14, atol=1e-3, max_iter=60)
+    assert np.max(np.abs(loose.problem.assemble(loose.dofs, loose.H).R[loose.problem.interior])) < 1e-3
+    for bad in (
+        dict(line_search="energy"),
+        dict(callback=3),
+        dict(atol=-1.0),
+        dict(n_elements=16.0),
+        dict(max_iter=2.5),
+    ):
+        with pytest.raises(InputError, match=next(iter(bad))):
+            cable.solve_bvp(SPAN, DH, cable.SelfWeight(W), length=LENGTH, **bad)
+
+    def boom(k, r, dx):
+        raise ValueError("enough")
+
+    with pytest.raises(InputError, match="callback.*iteration 1.*enough"):
+        cable.solve_bvp(SPAN, DH, cable.SelfWeight(W), length=LENGTH, callback=boom)
+
+
+def test_a_free_end_loaded_by_a_force_lands_where_the_elastic_catenary_says():
+    """A line of length L hanging from A, its free end B pulled by (Fx, Fy): H = Fx throughout,
+    the vertical tension at B is Fy, and B lies at Irvine's closed-form position."""
+    L, w, EA, Fx, Fy = 400.0, 50.0, 2e7, 6e3, 1.2e4
+    sol = cable.solve_bvp(
+        300.0, 100.0, cable.SelfWeight(w), length=L, EA=EA, end_force=(Fx, Fy), n_elements=128
+    )
+    assert sol.formulation == "arc"
+    Va = Fy - w * L  # the vertical tension at A (negative: the line leaves A downwards)
+    x = Fx / w * (np.arcsinh(Fy / Fx) - np.arcsinh(Va / Fx)) + Fx * L / EA
+    y = (np.hypot(Fx, Fy) - np.hypot(Fx, Va)) / w + (Fy * L - 0.5 * w * L * L) / EA
+    assert sol.span == pytest.approx(x, rel=1e-9) and sol.dh == pytest.approx(y, rel=1e-9)
+    assert sol.H == pytest.approx(Fx, rel=1e-9) and sol.V_A == pytest.approx(-Va, rel=1e-9)
+    assert (sol.H_B, sol.V_B) == (Fx, Fy)
+    with pytest.raises(InputError, match="end_force"):
+        cable.solve_bvp(300.0, 100.0, cable.SelfWeight(w), sag=20.0, end_force=(Fx, Fy))
+    with pytest.raises(InputError, match="end_force"):
+        cable.solve_bvp(300.0, 100.0, cable.SelfWeight(w), length=L, end_force=(Fx,))
+
+
+def test_cable_term_outputs_and_user_fields_reach_the_vtk_file(tmp_path):
+    import meshio
+
+    drag = cable.CurrentDrag(1.5, 0.1, cd_tangential=0.01, surface=50.0)
+    sol = cable.solve_bvp(SPAN, DH, [cable.SelfWeight(W), drag], length=LENGTH, EA=EA, n_elements=64)
+    path = sol.to_vtk(
+        tmp_path / "line.vtu", n=41, point_data={"depth_m": lambda samples: 50.0 - samples["xy"][:, 1]}
+    )
+    mesh = meshio.read(path)
+    force = mesh.point_data["CurrentDrag_force_N_per_m"]
+    assert force.shape == (41, 3) and np.all(force[:, 2] == 0)
+    # the drag written is the term's own force at the written points
+    samples = sol.samples(41)
+    np.testing.assert_allclose(
+        force[:, :2],
+        samples["outputs"]["CurrentDrag_force_N_per_m"],
+        rtol=0,
+        atol=1e-12 * np.abs(force).max(),
+    )
+    np.testing.assert_allclose(mesh.point_data["depth_m"], 50.0 - mesh.points[:, 1], rtol=1e-12)
+    graph = cable.solve_bvp(
+        SPAN, DH, [cable.SelfWeight(W), cable.Buoyancy(AREA, surface=60.0)], length=LENGTH
+    )
+    up = meshio.read(graph.to_vtk(tmp_path / "graph.vtu", n=11)).point_data["Buoyancy_force_N_per_m"]
+    np.testing.assert_allclose(up[:, 1], RHO * G * AREA, rtol=1e-12)
+    with pytest.raises(InputError, match="short"):
+        sol.to_vtk(tmp_path / "bad.vtu", n=41, point_data={"short": np.zeros(3)})

@@ -5,13 +5,15 @@ from __future__ import annotations
 from functools import cached_property
 
 from skcable.cable.solution import CableSolution
+from skcable.results import ProfileMixin
 
 __all__ = ["FiniteElementSolution"]
 
 
-class FiniteElementSolution(CableSolution):
+class FiniteElementSolution(ProfileMixin, CableSolution):
     """A finite-element cable solution: sag and lowest point by a search of
-    the discrete profile (``problem.extremum``), Newton's history."""
+    the discrete profile (``problem.extremum``), Newton's history, and the result protocol's
+    ``profile``, ``to_frame`` and ``tensions`` (`skcable.results`)."""
 
     def __init__(self, problem, dofs, history, state):
         self._problem = problem

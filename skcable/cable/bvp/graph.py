@@ -39,7 +39,7 @@ from skcable.cable._parabola import parabola
 from skcable.cable.bvp.base import FiniteElementSolution
 from skcable.cable.bvp.elements import end_dofs, line_element
 from skcable.cable.bvp.probes import element_values, gradient_probes, minimum_near
-from skcable.cable.terms import CableState, CableTerm
+from skcable.cable.terms import CableState, CableTerm, term_outputs
 from skcable.errors import InputError
 from skcable.fe.assembly import Assembly
 from skcable.fe.linear import BorderedSolver
@@ -125,6 +125,7 @@ class GraphProblem:
 
     def __init__(self, span, dh, loads, EA, constraint, mesh, n_elements, degree):
         self.span, self.dh, self.EA, self.constraint = span, dh, EA, constraint
+        self.loads, self.degree = list(loads), degree
         self.chord_slope = dh / span  # the unknown is u = y - chord_slope * x, zero at both supports
         self.point_loads = [ld for ld in loads if isinstance(ld, PointLoad)]
         self.terms = [ld for ld in loads if isinstance(ld, CableTerm)]
@@ -265,6 +266,13 @@ class GraphProblem:
         dofs, H = initial_guess(self)
         return np.append(dofs, H)
 
+    def absolute(self, state, rtol) -> float:
+        """The largest interior force residual (N) where the constraint meets ``rtol`` (``atol``'s
+        measure), else inf."""
+        if not abs(state.g) / self.constraint_scale < rtol:
+            return np.inf
+        return float(np.max(np.abs(state.R[self.interior]), initial=0.0))
+
     def increment(self, state: GraphState) -> np.ndarray:
         """Newton increment of (dofs, H): the bordered banded solve."""
         system, interior = self.solver.system, self.interior
@@ -358,9 +366,93 @@ class BVPSolution(FiniteElementSolution):
 
     formulation = "graph"
 
-    def __init__(self, problem: GraphProblem, dofs, H, history, state: GraphState | None = None):
+    def __init__(
+        self, problem: GraphProblem, dofs, H, history, state: GraphState | None = None, resolver=None
+    ):
         super().__init__(problem, dofs, history, problem.assemble(dofs, H) if state is None else state)
         self.H = float(H)
+        #: ``resolver(solution, span, dh)``: the problem solved again with B moved (for `stiffness`)
+        self.resolver = resolver
+
+    @property
+    def H_A(self):
+        """The horizontal tension (N), the same at both ends (the graph form takes vertical loads)."""
+        return self.H
+
+    @property
+    def H_B(self):
+        return self.H
+
+    @cached_property
+    def _arc_length(self):
+        """Unstretched arc length at the mesh nodes (m), and the quadrature of each element."""
+        problem = self._problem
+        slope = problem.chord_slope + problem.strains(self.dofs)[0]
+        f = unstretched_measure(slope, self.H, self.EA)[0]
+        per_element = np.sum(f * problem.assembly.dx, axis=0)
+        nodes = self.mesh.p[0]
+        order = np.argsort(nodes)
+        s = np.zeros(len(nodes))
+        s[order[1:]] = np.cumsum(per_element[np.argsort(self.mesh.p[0, self.mesh.t].mean(axis=0))])
+        return nodes[order], s[order]
+
+    def _x_of_s(self, s):
+        """The abscissa (m) at unstretched arc length ``s`` (m): a root of ``s(x) − s`` in the
+        element that holds it (scipy's bracketed elementwise root finder on the element's own
+        quadrature of the measure)."""
+        from scipy.optimize import elementwise
+
+        s = np.asarray(real("s", s), dtype=float)
+        x_nodes, s_nodes = self._arc_length
+        require(
+            "s",
+            (s >= 0) & (s <= s_nodes[-1] * (1 + 1e-15)),
+            f"must lie in [0, length = {s_nodes[-1]:g}] m",
+            s,
+        )
+        s = np.minimum(s, s_nodes[-1])
+        k = np.clip(np.searchsorted(s_nodes, s) - 1, 0, len(x_nodes) - 2)
+        a, b, s_a = x_nodes[k], x_nodes[k + 1], s_nodes[k]
+        points, weights = np.polynomial.legendre.leggauss(8)
+
+        def gap(x, a, s_a, s):  # s(x) − s, s(x) inside the element [a, x] by Gauss–Legendre
+            half = 0.5 * (x - a)
+            xq = a[..., None] + half[..., None] * (points + 1.0)
+            f = unstretched_measure(self.slope(xq), self.H, self.EA)[0]
+            return s_a + half * np.sum(f * weights, axis=-1) - s
+
+        root = elementwise.find_root(gap, (a, b), args=(a, s_a, s))
+        return np.where(s >= s_nodes[-1], x_nodes[-1], np.asarray(root.x))
+
+    def xy(self, s):
+        """Position (x, y) (m) at unstretched arc length ``s`` (m) from A: array ``(..., 2)``."""
+        x = self._x_of_s(s)
+        return np.stack([x, np.asarray(self.y(x))], axis=-1)
+
+    def T_of_s(self, s):
+        """Tension (N) at unstretched arc length ``s`` (m) from A."""
+        return self.T(self._x_of_s(s))
+
+    def stiffness(self, step: float = 1e-5):
+        """Fairlead stiffness ``∂(H_B, V_B)/∂(span, dh)`` (N/m), A fixed and the unstretched length
+        kept, by central differences of the same discrete problem re-solved from this solution at
+        ``span ± step·span`` and ``dh ± step·span`` (to rtol 1e-13), rows (H_B, V_B)."""
+        columns = []
+        for d_span, d_dh in ((1.0, 0.0), (0.0, 1.0)):
+            h = step * self.span
+            plus, minus = (
+                self._resolved(self.span + sign * h * d_span, self.dh + sign * h * d_dh) for sign in (1, -1)
+            )
+            columns.append([(plus.H - minus.H) / (2 * h), (plus.V_B - minus.V_B) / (2 * h)])
+        return np.array(columns).T
+
+    def _resolved(self, span, dh):
+        """This problem at B = (span, dh) with the unstretched length kept (`solve_bvp`'s resolver)."""
+        if self.resolver is None:
+            raise InputError(
+                "solution", "was not made by solve_bvp: it cannot be solved again for its stiffness"
+            )
+        return self.resolver(self, span, dh)
 
     @cached_property
     def V_A(self):
@@ -410,6 +502,23 @@ class BVPSolution(FiniteElementSolution):
         """Tension at ``x`` (N): ``H sqrt(1 + y'^2)``."""
         return self.H * np.sqrt(1.0 + self.slope(x) ** 2)
 
+    def samples(self, n: int = 201) -> dict:
+        """The profile at ``n`` equally spaced x (`CableSolution.samples`), with the cable terms'
+        outputs there (``"outputs"``: name -> (n,) or (n, 2))."""
+        out = super().samples(n)
+        problem = self._problem
+        out["outputs"] = {}
+        if problem.terms:
+            x, y = out["xy"][:, 0], out["xy"][:, 1]
+            slope = np.tan(out["angle"])
+            m = unstretched_measure(slope, self.H, self.EA)[0]
+            state = CableState(x, y, None, np.array([np.ones_like(x), slope]) / m, out["tension"])
+            out["outputs"] = {
+                name: np.moveaxis(v, 0, -1) if np.ndim(v) > 1 else v
+                for name, v in term_outputs(problem.terms, state).items()
+            }
+        return out
+
     def weight_per_length(self, x, slope):
         problem = self._problem
         q = sum(ld.graph_terms(x, slope, self.H, self.EA)[0] for ld in problem.distributed)
@@ -426,6 +535,6 @@ class BVPSolution(FiniteElementSolution):
     def __repr__(self):
         return (
             f"BVPSolution(span={self.span:g}, dh={self.dh:g}, {self.mesh.t.shape[1]} elements: "
-            f"H={self.H:.9g}, V_A={self.V_A:.9g}, V_B={self.V_B:.9g}, length={self.length:.9g}, "
-            f"iterations={self.iterations})"
+            f"H={self.H:.9g} (both ends), V_A={self.V_A:.9g}, V_B={self.V_B:.9g}, "
+            f"length={self.length:.9g}, iterations={self.iterations})"
         )
