@@ -614,14 +614,13 @@ def _length_on_floats(span, dh, w, length):
     """`catenary` with ``length=`` on Python numbers: the same formulas and checks as the
     general path (`skcable.cable._hanging`, `Catenary._residuals` written out on floats), or
     None wherever the general path must decide (it then raises the right error)."""
-    if not (type(span) in (float, int) and type(dh) in (float, int)):
-        return None
-    if not (type(w) in (float, int) and type(length) in (float, int)):
-        return None
-    try:
-        span, dh, w, length = float(span), float(dh), float(w), float(length)
-    except OverflowError:  # an integer beyond the float range: the general path names it
-        return None
+    if not (type(span) is float and type(dh) is float and type(w) is float and type(length) is float):
+        if not all(type(v) in (float, int) for v in (span, dh, w, length)):
+            return None
+        try:
+            span, dh, w, length = float(span), float(dh), float(w), float(length)
+        except OverflowError:  # an integer beyond the float range: the general path names it
+            return None
     if not (0.0 < span < _INF and -_INF < dh < _INF and 0.0 < w < _INF and 0.0 < length < _INF):
         return None
     if not abs(dh) <= _STEEPEST * span:
@@ -639,18 +638,18 @@ def _length_on_floats(span, dh, w, length):
         achieved = 2.0 * (a * sinh_z) * math.cosh(m)
         weight = w * achieved
         t_a, v_a, t_b, v_b = H / T_A, V_A / T_A, H / T_B, V_B / T_B
-        residual = max(
-            abs((T_B - T_A - w * dh) / (T_A + T_B)),
-            abs((V_A + V_B - weight) / (abs(V_A) + abs(V_B) + weight)),
-            abs(0.5 * ((1.0 - t_a) * (1.0 + t_a) - v_a * v_a)),
-            abs(0.5 * ((1.0 - t_b) * (1.0 + t_b) - v_b * v_b)),
-            abs((achieved - length) / length),
-        )
+        # `Catenary._residuals`, each within ACCEPT (a NaN fails every comparison)
+        closure = (T_B - T_A - w * dh) / (T_A + T_B)
+        balance = (V_A + V_B - weight) / (abs(V_A) + abs(V_B) + weight)
+        end_a = 0.5 * ((1.0 - t_a) * (1.0 + t_a) - v_a * v_a)
+        end_b = 0.5 * ((1.0 - t_b) * (1.0 + t_b) - v_b * v_b)
+        met = (achieved - length) / length
     except (OverflowError, ZeroDivisionError):
         return None
+    ok = -ACCEPT <= closure <= ACCEPT and -ACCEPT <= balance <= ACCEPT and -ACCEPT <= met <= ACCEPT
     # the vertex is below a cosh(u_A) = T_A/w (`Catenary.finite_beyond_residual`)
-    if not (residual <= ACCEPT and a < _INF and T_A / w < _INF):
-        return None  # NaN too
+    if not (ok and -ACCEPT <= end_a <= ACCEPT and -ACCEPT <= end_b <= ACCEPT and a < _INF and T_A / w < _INF):
+        return None
     solution = Catenary.__new__(Catenary)
     solution.__dict__ = {
         "span": span, "dh": dh, "w": w, "a": a, "z": z, "_xp": scalar_math, "_sinh_z": sinh_z, "m": m,
