@@ -365,7 +365,7 @@ def _z_from_length(span, dh, length):
     legs = xp.abs(dh)
     unit = _unit(xp.maximum(span, legs), xp)
     span, dh, legs, length = span / unit, dh / unit, legs / unit, length / unit  # exact
-    chord = xp.hypot(span, dh)
+    chord = xp.sqrt(span * span + dh * dh)  # both below 1 now: no overflow (and no hypot's cost)
     require("length", length > chord, "must exceed the chord sqrt(span**2 + dh**2)", length * unit)
     # r - 1 with r = sqrt(S^2 - dh^2)/span, free of cancellation for taut
     # cables: S^2 - chord^2 = (S - M)(S + M) - m^2 with M the longer leg, so
@@ -382,8 +382,9 @@ def _z_from_length(span, dh, length):
         return xp.sqrt((length - legs) / span) * xp.sqrt((length + legs) / span) - 1.0
 
     if xp is np:
+        short = length < 2.0 * chord
         with np.errstate(over="ignore", invalid="ignore"):
-            rho = np.where(length < 2.0 * chord, taut(length), slack(length))
+            rho = taut(length) if short.all() else np.where(short, taut(length), slack(length))
     else:
         rho = taut(length) if length < 2.0 * chord else slack(length)
     # sinh(z)/z = 1 + rho: z stays below _Z_LIMIT while rho stays below this
