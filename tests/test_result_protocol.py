@@ -121,7 +121,7 @@ def test_vtk_round_trip(factory, tmp_path):
     points = mesh.points
     assert points.shape == (33, 3)
     np.testing.assert_allclose(points[[0, -1], :2], [(0.0, 0.0), (SPAN, r.dh)], atol=1e-12 * LENGTH)
-    tension = mesh.point_data["tension"]
+    tension = mesh.point_data["tension_N"]
     np.testing.assert_allclose(tension[[0, -1]], [r.T_A, r.T_B], rtol=1e-12)
     assert np.all(tension > 0) and np.all(np.diff(points[:, 0]) > 0)
 
