@@ -38,6 +38,8 @@ ROOT = Path(__file__).resolve().parents[1]
 PAGE = ROOT / "docs" / "speed_targets.md"
 sys.path.insert(0, str(ROOT / "benchmarks"))
 
+from bench_closed_forms import timed as per_call  # noqa: E402  (median of 5 batches)
+
 from skcable import cable  # noqa: E402
 
 SPAN, DH, W, EA, L0 = 800.0, -20.0, 20.0, 1e12, 801.409
@@ -50,18 +52,6 @@ def best(fn, repeats):
         fn()
         times.append(time.perf_counter() - start)
     return min(times)
-
-
-def per_call(fn, number):
-    """Seconds a call: the median of 5 batches of ``number`` calls."""
-    fn()
-    batches = []
-    for _ in range(5):
-        start = time.perf_counter()
-        for _ in range(number):
-            fn()
-        batches.append((time.perf_counter() - start) / number)
-    return statistics.median(batches)
 
 
 def paired(own, peer, number, rounds):
