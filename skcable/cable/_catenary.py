@@ -32,7 +32,7 @@ from functools import cached_property
 
 import numpy as np
 
-from skcable._checks import broadcast, exactly_one, float_range, positive, real, require
+from skcable._checks import broadcast, exactly_one, float_range, positive, real, require, within
 from skcable._xp import namespace, scalar_math
 from skcable.cable._hanging import z_of_excess, z_of_length
 from skcable.cable._roots import find_root
@@ -610,6 +610,9 @@ def _z_from_T_max(span, dh, w, T_max, branch):
 
 
 _INF = math.inf
+_MAX_FLOAT = float(np.finfo(float).max)
+#: The least positive float (a subnormal): H/w above it has not underflowed to zero.
+TINY_POSITIVE = 5e-324
 
 
 def _length_on_floats(span, dh, w, length):
@@ -738,7 +741,7 @@ def catenary(span, dh, w, *, length=None, sag=None, H=None, low=None, T_max=None
             z, history = _z_from_length(span, dh, value)
         elif name == "H":
             a = value / w
-            require("H", a > 0, "is so small relative to w that H/w underflows", value)
+            within("H", a, TINY_POSITIVE, math.inf, "is so small relative to w that H/w underflows", value)
             z = span / a
             z *= 0.5  # = 0.5 * span / a: halving is exact
         elif name == "sag":
@@ -747,17 +750,20 @@ def catenary(span, dh, w, *, length=None, sag=None, H=None, low=None, T_max=None
             z, history = _z_from_low(span, dh, value)
         else:
             z, history = _z_from_T_max(span, dh, w, value, branch)
-    require(name, z >= _Z_MIN, "makes the cable so taut that span·w/(2H) underflows (below 1e-300)", value)
-    require(
-        name,
-        z <= _Z_LIMIT,
-        f"makes the cable so slack that span·w/(2H) exceeds {_Z_LIMIT:g} (cosh overflows a float)",
-        value,
-    )
+    if not (isinstance(z, np.ndarray) and z.size and _Z_MIN <= z.min() and z.max() <= _Z_LIMIT):
+        require(
+            name, z >= _Z_MIN, "makes the cable so taut that span·w/(2H) underflows (below 1e-300)", value
+        )
+        require(
+            name,
+            z <= _Z_LIMIT,
+            f"makes the cable so slack that span·w/(2H) exceeds {_Z_LIMIT:g} (cosh overflows a float)",
+            value,
+        )
     if name != "H":
         a = span / z
         a *= 0.5  # = span / (2 z): halving is exact
-    require(name, a < math.inf, "makes H/w overflow a float", value)
+    within(name, a, -math.inf, _MAX_FLOAT, "makes H/w overflow a float", value)
     value = np.asarray(value, dtype=float)[()]
     with float_range(name, "a result"):
         solution = Catenary(span, dh, w, a, z, (name, value))
