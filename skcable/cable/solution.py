@@ -46,7 +46,7 @@ def matrix_2x2(k11, k12, k21, k22):
     )
 
 
-class CableSolution(ProfileMixin):
+class CableSolution:
     """Base of the suspended-cable solutions (`skcable.results.CableResult`).
 
     Subclasses define ``H, V_A, V_B, T_A, T_B, length, sag, x_low, y_low``,
@@ -64,6 +64,12 @@ class CableSolution(ProfileMixin):
 
     span: np.ndarray
     dh: np.ndarray
+
+    # `ProfileMixin`'s methods, not its class as a base: subclasses that also list the mixin
+    # (the finite-element solutions) keep a consistent method order
+    profile = ProfileMixin.profile
+    to_frame = ProfileMixin.to_frame
+    tensions = ProfileMixin.tensions
 
     @cached_property
     def H_A(self):
@@ -112,8 +118,12 @@ class CableSolution(ProfileMixin):
 
         ``T² = H² + V²`` as ``((1 - t)(1 + t) - v²)/2`` with ``t = H/T``, ``v = V/T``
         (``≈ 1 - hypot(H, V)/T``, without a hypot: 3 ulps of it at most)."""
+        H_A = getattr(self, "H_A", None)
+        H_A = self.H if H_A is None else H_A
+        H_B = getattr(self, "H_B", None)  # differ from H only under horizontal loads
+        H_B = H_A if H_B is None else H_B
         out = []
-        for T, H, V in ((self.T_A, self.H_A, self.V_A), (self.T_B, self.H_B, self.V_B)):
+        for T, H, V in ((self.T_A, H_A, self.V_A), (self.T_B, H_B, self.V_B)):
             t, v = H / T, V / T
             out.append(0.5 * ((1.0 - t) * (1.0 + t) - v * v))
         name, value = self.constraint
