@@ -1,0 +1,293 @@
+"""Where a study's cases are computed: in this process, on Dask, or serially until Dask pays.
+
+An executor maps `skcable.study.tasks.evaluate` over a batch of ``(key, case)`` pairs and
+hands each result to a ``finish(key, result)`` callback as it ends:
+
+- `Serial` computes them one after the other in this process;
+- `Dask` computes them on a ``dask.distributed`` cluster: a running scheduler's, or a local
+  cluster started on first use (single-threaded worker processes; worker threads where the
+  program cannot start worker processes, see `skcable.study.spawn`);
+- `Auto` computes serially and moves the rest of the study to a local cluster of processes
+  once the cases left are predicted to take longer serially than on the cluster, start-up
+  included (`dask_pays`). A small study never starts a cluster, so it is never slower
+  than the serial run.
+
+The figures behind `CLUSTER_COST` and `EFFICIENCY` come from ``benchmarks/bench_study.py``
+(docs/studies.md).
+"""
+
+from __future__ import annotations
+
+import math
+import os
+import secrets
+import statistics
+import sys
+
+from skcable.errors import InputError
+from skcable.study import tasks
+from skcable.study._warn import warn
+from skcable.study.spawn import main_problem
+
+__all__ = [
+    "CLUSTER_COST",
+    "EFFICIENCY",
+    "Auto",
+    "Dask",
+    "Serial",
+    "WorkerWarning",
+    "check_scheduler",
+    "dask_available",
+    "dask_pays",
+    "usable_cores",
+]
+
+#: Seconds a local cluster of 2 worker processes takes to start, take its first cases
+#: (the workers import skcable) and stop, taken at the high end of what was measured.
+CLUSTER_COST = 6.0
+#: The fraction of ideal speed-up a local cluster reaches on the cases themselves.
+EFFICIENCY = 0.75
+
+
+class WorkerWarning(RuntimeWarning):
+    """Worker processes cannot start from this program; the study runs serially or on threads."""
+
+
+def dask_available() -> bool:
+    """Whether ``distributed`` (the optional extra ``skcable[cluster]``) is installed.
+
+    Returns
+    -------
+    bool
+    """
+    try:
+        import distributed  # noqa: F401
+    except ImportError:
+        return False
+    return True
+
+
+def usable_cores() -> int:
+    """The CPU cores this process may run on (its affinity where the system tells it).
+
+    Returns
+    -------
+    int
+        >= 1.
+    """
+    try:
+        return max(1, len(os.sched_getaffinity(0)))
+    except (AttributeError, OSError):
+        return max(1, os.cpu_count() or 1)
+
+
+def check_scheduler(scheduler) -> None:
+    """Refuse an address no Dask scheduler can have, before any computing.
+
+    Parameters
+    ----------
+    scheduler : str
+        An address such as ``tcp://host:8786``.
+
+    Raises
+    ------
+    InputError
+        ``scheduler``: not a string, an unknown scheme, or no ``host:port``.
+    """
+    from distributed.comm import parse_address
+    from distributed.comm.addressing import parse_host_port
+    from distributed.comm.registry import get_backend
+
+    if not isinstance(scheduler, str) or not scheduler.strip():
+        raise InputError("scheduler", f"must be an address such as tcp://host:8786, got {scheduler!r}")
+    try:
+        scheme, location = parse_address(scheduler)
+        get_backend(scheme)
+        if scheme in ("tcp", "tls", "ws", "wss"):
+            parse_host_port(location)
+    except (ValueError, TypeError) as exc:
+        raise InputError("scheduler", f"{scheduler!r} is not a scheduler address: {exc}") from None
+
+
+def dask_pays(case_time: float, left: int, n_workers: int) -> bool:
+    """Whether a local cluster would finish the cases left sooner than this process.
+
+    With ``t`` s a case, ``n`` cases left and ``W`` workers (at most the usable cores),
+    serially they take ``n t``; on a new cluster ``CLUSTER_COST + ceil(n / W) t / EFFICIENCY``.
+
+    Parameters
+    ----------
+    case_time : float
+        Seconds a case takes (s).
+    left : int
+        Cases left.
+    n_workers : int
+        Workers of the cluster.
+
+    Returns
+    -------
+    bool
+        True when the cluster's prediction is the shorter.
+
+    Examples
+    --------
+    >>> dask_pays(0.2, 14, 2), dask_pays(0.2, 500, 2), dask_pays(60.0, 1, 2)
+    (False, True, False)
+    """
+    workers = min(n_workers, usable_cores())
+    if workers < 2 or left < 2:
+        return False
+    on_cluster = CLUSTER_COST + math.ceil(left / workers) * case_time / EFFICIENCY
+    return on_cluster < left * case_time
+
+
+class Serial:
+    """Computes the cases one after the other in this process."""
+
+    def map(self, model, todo, finish) -> None:
+        """Compute ``todo`` (``(key, case)`` pairs), calling ``finish(key, result)`` after each."""
+        for key, case in todo:
+            finish(key, tasks.evaluate(model, case))
+
+    def close(self) -> None:
+        """Nothing to release."""
+
+
+class Dask:
+    """Computes the cases on a Dask cluster, connected or started on first use.
+
+    Parameters
+    ----------
+    scheduler : str, optional
+        Address of a running scheduler; default: a local cluster.
+    n_workers : int
+        Workers of the local cluster (single-threaded).
+    progress : bool
+        Print the dashboard's address (stderr) on connecting.
+    """
+
+    def __init__(self, scheduler: str | None = None, n_workers: int = 2, progress: bool = False):
+        self.scheduler, self.n_workers, self.progress = scheduler, n_workers, progress
+        self.client = self.cluster = None
+
+    def map(self, model, todo, finish) -> None:
+        """Compute ``todo`` on the cluster; ``finish(key, result)`` as each case ends.
+
+        A case whose task is lost (a worker died, the model could not be sent) is recorded
+        as failed with the error, like a case that raised.
+        """
+        from distributed import as_completed
+
+        client = self.connect()
+        futures = {
+            client.submit(
+                tasks.evaluate, model, case, key=f"skcable-{key}-{secrets.token_hex(4)}", pure=False
+            ): key
+            for key, case in todo
+        }
+        for future in as_completed(futures):
+            try:
+                result = future.result()
+            except Exception as exc:  # noqa: BLE001 - a worker died or the task could not be sent
+                result = tasks.failure(tasks.first_line(exc))
+            finish(futures[future], result)
+
+    def connect(self):
+        """The ``distributed.Client`` (connecting, or starting the local cluster, once)."""
+        if self.client is not None:
+            return self.client
+        from distributed import Client
+
+        if self.scheduler is None:
+            self.cluster = self._local_cluster()
+            self.client = Client(self.cluster)
+        else:
+            try:
+                self.client = Client(self.scheduler)
+            except (OSError, TimeoutError) as exc:
+                raise InputError(
+                    "scheduler", f"no dask scheduler answers at {self.scheduler!r}: {exc}"
+                ) from None
+        if self.progress:
+            print(f"dask dashboard: {self.client.dashboard_link}", file=sys.stderr)
+        return self.client
+
+    def _local_cluster(self):
+        import dask
+        from distributed import LocalCluster
+
+        problem = main_problem(dask.config.get("distributed.worker.multiprocessing-method"))
+        if problem is not None:
+            warn(
+                f"skcable.study runs on {self.n_workers} worker threads, not processes: {problem}",
+                WorkerWarning,
+            )
+        return LocalCluster(
+            n_workers=self.n_workers,
+            threads_per_worker=1,
+            processes=problem is None,
+            dashboard_address=":0",
+        )
+
+    def close(self) -> None:
+        """Close the client and the local cluster, if any."""
+        if self.client is not None:
+            self.client.close()
+        if self.cluster is not None:
+            self.cluster.close()
+
+
+class Auto:
+    """Computes serially, and moves the rest to a local cluster of processes when that pays.
+
+    After each case (from the second on) `dask_pays` is asked with the median time of the
+    cases computed so far (the first left out: it carries the imports). Where worker
+    processes cannot start (`skcable.study.spawn.main_problem`) the study stays serial,
+    with one `WorkerWarning` saying what to add.
+
+    Parameters
+    ----------
+    n_workers : int
+        Workers of the local cluster, if one is started.
+    progress : bool
+        Print the dashboard's address when a cluster starts.
+    """
+
+    def __init__(self, n_workers: int = 2, progress: bool = False):
+        self.n_workers, self.progress = n_workers, progress
+        self.times: list[float] = []
+        self.dask: Dask | None = None
+        self.stay_serial = not dask_available()
+
+    def map(self, model, todo, finish) -> None:
+        """Compute ``todo``, serially until `dask_pays`, then on the cluster."""
+        todo = list(todo)
+        while todo and self.dask is None:
+            key, case = todo.pop(0)
+            result = tasks.evaluate(model, case)
+            self.times.append(result["time_s"])
+            finish(key, result)
+            if todo and self._switch(len(todo)):
+                self.dask = Dask(None, self.n_workers, self.progress)
+        if todo:
+            self.dask.map(model, todo, finish)
+
+    def _switch(self, left: int) -> bool:
+        if (
+            self.stay_serial
+            or len(self.times) < 2
+            or not dask_pays(statistics.median(self.times[1:]), left, self.n_workers)
+        ):
+            return False
+        import dask
+
+        problem = main_problem(dask.config.get("distributed.worker.multiprocessing-method"))
+        if problem is not None:
+            self.stay_serial = True
+            warn(f"skcable.study runs serially: {problem}", WorkerWarning)
+        return problem is None
+
+    def close(self) -> None:
+        """Close the cluster, if one was started."""
+        if self.dask is not None:
+            self.dask.close()

@@ -1,0 +1,65 @@
+"""executor="auto": a small study never starts a cluster (never slower than serial); a long one
+moves to worker processes once they pay, with the same table."""
+
+import os
+
+import pandas as pd
+import pytest
+
+from skcable import study
+from skcable.study import executors
+
+CASES = study.grid(span=[100.0 + 10 * i for i in range(16)], sag=[5.0], w=[2.0])
+
+
+def pid_model(span, w, sag):
+    return study.cable_solve(span, w, sag=sag) | {"pid": os.getpid()}
+
+
+@pytest.fixture
+def no_cluster(monkeypatch):
+    def refuse(*args, **kwargs):
+        raise AssertionError("a cluster was started")
+
+    monkeypatch.setattr(executors, "Dask", refuse)
+
+
+def test_a_small_study_never_starts_a_cluster(no_cluster, calls):
+    table = study.run(study.cable_solve, CASES, progress=False)  # executor="auto"
+    assert len(calls) == 16 and (table.status == "ok").all()
+
+
+def test_auto_stays_serial_without_two_cores_or_without_dask(no_cluster, monkeypatch):
+    monkeypatch.setattr(executors, "CLUSTER_COST", 0.0)  # a cluster would pay...
+    monkeypatch.setattr(executors, "usable_cores", lambda: 1)  # ...but one core cannot run two workers
+    study.run(study.cable_solve, CASES, progress=False)
+    monkeypatch.setattr(executors, "usable_cores", lambda: 2)
+    monkeypatch.setattr(executors, "dask_available", lambda: False)
+    study.run(study.cable_solve, CASES, progress=False)
+    study.run(study.cable_solve, CASES, n_workers=1, progress=False)
+
+
+def test_dask_pays_only_when_the_cluster_would_finish_first(monkeypatch):
+    monkeypatch.setattr(executors, "usable_cores", lambda: 2)
+    cost, efficiency = executors.CLUSTER_COST, executors.EFFICIENCY
+    # 1 s a case on 2 workers: serially n s, on the cluster cost + ceil(n/2)/efficiency s
+    for n in (2, 5, 10, 20, 40, 80):
+        cluster = cost + -(-n // 2) / efficiency
+        assert executors.dask_pays(1.0, n, 2) is (cluster < n)
+    assert not executors.dask_pays(1e6, 1, 2)  # one case left: nothing to share
+    assert not executors.dask_pays(1e6, 100, 1)
+    assert executors.dask_pays(0.2, 200, 2) and not executors.dask_pays(0.2, 16, 2)
+    monkeypatch.setattr(executors, "usable_cores", lambda: 1)
+    assert not executors.dask_pays(1e6, 100, 8)  # more workers than cores: one core does not share
+
+
+def test_a_long_study_moves_to_worker_processes_with_the_same_table(monkeypatch):
+    monkeypatch.setattr(executors, "CLUSTER_COST", 0.0)  # as if every case were long
+    monkeypatch.setattr(executors, "usable_cores", lambda: 2)
+    cases = CASES[:6]
+    auto = study.run(pid_model, cases, n_workers=2, progress=False)
+    serial = study.run(pid_model, cases, executor="serial", progress=False)
+    assert auto.pid[:2].tolist() == [os.getpid()] * 2  # two cases timed here...
+    assert os.getpid() not in auto.pid[2:].tolist()  # ...the rest on the workers
+    columns = ["time_s", "pid"]
+    pd.testing.assert_frame_equal(auto.drop(columns=columns), serial.drop(columns=columns))
