@@ -114,7 +114,8 @@ def run(
     -------
     StudyTable
         One row per case, in the cases' order; ``attrs["from_cache"]`` counts the cases read
-        from the cache.
+        from the cache, ``attrs["executor"]`` says where the others ran (``"serial"``,
+        ``"serial, then dask, a local cluster of 2 worker processes"``, ...).
 
     Raises
     ------
@@ -145,7 +146,9 @@ def run(
         results, from_cache = _compute(model, unique, chosen, folder, progress)
     finally:
         chosen.close()
-    return make_table(cases, keys, results, model=model_name(model), from_cache=from_cache)
+    table = make_table(cases, keys, results, model=model_name(model), from_cache=from_cache)
+    table.attrs["executor"] = chosen.description
+    return table
 
 
 def _compute(model, unique: dict, executor, folder, progress: bool) -> tuple[dict, int]:

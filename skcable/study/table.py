@@ -32,8 +32,8 @@ class StudyTable(pd.DataFrame):
     Attributes
     ----------
     attrs : dict
-        ``model`` (the model's name) and ``from_cache`` (cases read from the cache) after
-        `skcable.study.run`.
+        ``model`` (the model's name), ``from_cache`` (cases read from the cache) and
+        ``executor`` (where the others ran) after `skcable.study.run`.
     """
 
     @property

@@ -26,7 +26,7 @@ def no_cluster(monkeypatch):
 
 def test_a_small_study_never_starts_a_cluster(no_cluster, calls):
     table = study.run(study.cable_solve, CASES, progress=False)  # executor="auto"
-    assert len(calls) == 16 and (table.status == "ok").all()
+    assert len(calls) == 16 and (table.status == "ok").all() and table.attrs["executor"] == "serial"
 
 
 def test_auto_stays_serial_without_two_cores_or_without_dask(no_cluster, monkeypatch):
@@ -48,7 +48,7 @@ def test_dask_pays_only_when_the_cluster_would_finish_first(monkeypatch):
         assert executors.dask_pays(1.0, n, 2) is (cluster < n)
     assert not executors.dask_pays(1e6, 1, 2)  # one case left: nothing to share
     assert not executors.dask_pays(1e6, 100, 1)
-    assert executors.dask_pays(0.2, 200, 2) and not executors.dask_pays(0.2, 16, 2)
+    assert executors.dask_pays(0.2, 1000, 2) and not executors.dask_pays(0.2, 16, 2)
     monkeypatch.setattr(executors, "usable_cores", lambda: 1)
     assert not executors.dask_pays(1e6, 100, 8)  # more workers than cores: one core does not share
 
@@ -61,5 +61,6 @@ def test_a_long_study_moves_to_worker_processes_with_the_same_table(monkeypatch)
     serial = study.run(pid_model, cases, executor="serial", progress=False)
     assert auto.pid[:2].tolist() == [os.getpid()] * 2  # two cases timed here...
     assert os.getpid() not in auto.pid[2:].tolist()  # ...the rest on the workers
+    assert auto.attrs["executor"] == "serial, then dask, a local cluster of 2 worker processes"
     columns = ["time_s", "pid"]
     pd.testing.assert_frame_equal(auto.drop(columns=columns), serial.drop(columns=columns))
