@@ -46,6 +46,8 @@ class StrandLayout:
     wire_eps_rupture, wire_eps_y1 : ndarray (n_wires,) or None
         The same per wire, from each wire's own material (None: ``eps_rupture`` and
         ``eps_y1`` for every wire).
+    element : str
+        The element of u and φ ("P2" or "P3").
     """
 
     nodes: np.ndarray
@@ -63,6 +65,7 @@ class StrandLayout:
     eps_y1: float
     wire_eps_rupture: np.ndarray | None = None
     wire_eps_y1: np.ndarray | None = None
+    element: str = "P2"
 
     def _per_wire(self, attribute: str):
         """The limit strain ``attribute`` ("eps_rupture" or "eps_y1") per wire when the wires
@@ -137,6 +140,15 @@ class StepResult:
         The tangent was not positive definite on the way to this state and the solver shifted
         it ([`minimize`][skcable.fe.newton.minimize]): the equilibrium path has a fold (a
         snap under the imposed strain) between the previous step and this one.
+    outputs : dict of str to (str, ndarray)
+        The terms' named results (`skcable.fe.terms`): ``name -> (kind, values)`` with kind
+        ``"point_data"`` (values at the quadrature points (n_elements, n_quad) or at the nodes
+        (n_nodes,)) or ``"cell_data"`` (one value per element); the writers put them in every
+        VTK file.
+    reactions : dict
+        Support reactions ``{"left": {dof: value}, "right": {dof: value}}`` (N for u, v, w;
+        N·m for φ and the slopes), the fixed dofs' residual rows; the imposed strain's at x = L
+        is ``force``.
     """
 
     strain: float
@@ -161,6 +173,8 @@ class StepResult:
     settled: bool = True
     assemblies: int = 0
     shifted: bool = False
+    outputs: dict = field(default_factory=dict)
+    reactions: dict = field(default_factory=dict)
 
     @property
     def slip_fraction(self) -> float:
@@ -206,6 +220,7 @@ class CapacityCurve:
     n_steps: int = 0
     failure: str | None = None
     cutbacks: int = 0
+    options: object = None
 
     @property
     def snaps(self) -> list:
@@ -344,7 +359,7 @@ class CapacityCurve:
     @cached_property
     def reference(self):
         """The undamaged strand's curve with the same settings (for D_r)."""
-        return capacity_curve(self.model.twin(), n_steps=self.n_steps)
+        return capacity_curve(self.model.twin(), n_steps=self.n_steps, options=self.options)
 
     @property
     def D_r(self) -> float:
@@ -362,6 +377,8 @@ def capacity_curve(
     state_passes: int = 6,
     on_failure: str = "raise",
     callback=None,
+    options=None,
+    **newton_options,
 ) -> CapacityCurve:
     """Pull ``model`` step by step until a wire breaks (or ``max_strain``).
 
@@ -376,10 +393,16 @@ def capacity_curve(
     ``on_failure="stop"`` returns the converged part with ``failure`` set.
     ``callback(step, done)``, if given, is called after every converged step
     with its `StepResult` and the fraction of the strain schedule done
-    (for progress bars).
+    (for progress bars). Newton options for every step: ``options`` (a
+    `skcable.fe.NewtonOptions`, default the model's) and any of its fields as keywords
+    (``tol``, ``atol``, ``max_iter``, ``line_search``; the per-iteration ``callback`` of
+    Newton is ``NewtonOptions.callback``, not this one).
     """
+    from skcable.fe import NewtonOptions
+
     if on_failure not in ("raise", "stop"):
         raise InputError("on_failure", f"must be 'raise' or 'stop', got {on_failure!r}")
+    solve_options = NewtonOptions.of(model.options if options is None else options, **newton_options)
     materials = model.strand.materials
     layout = model.layout
     if n_steps is None:
@@ -425,7 +448,7 @@ def capacity_curve(
             while True:
                 try:
                     guess = None if U is None else _extrapolate(U, previous, eps, target)
-                    result = model.solve(target, guess, state, passes=state_passes)
+                    result = model.solve(target, guess, state, passes=state_passes, options=solve_options)
                     break
                 except ConvergenceError as exc:
                     last = exc
@@ -472,7 +495,9 @@ def capacity_curve(
                 # (the force of the curve stays the interpolated one; they differ by its error)
                 guess = None if previous[0] is None else previous[0] + t * (U - previous[0])
                 try:
-                    steps[-1] = model.solve(strains[-1], guess, steps[-2].state if len(steps) > 1 else None)
+                    steps[-1] = model.solve(
+                        strains[-1], guess, steps[-2].state if len(steps) > 1 else None, options=solve_options
+                    )
                 except ConvergenceError:
                     pass  # keep the step beyond rupture: the curve itself ends at the rupture strain
             if callback is not None:
@@ -492,6 +517,7 @@ def capacity_curve(
         n_steps,
         failure,
         cutbacks,
+        solve_options,
     )
 
 

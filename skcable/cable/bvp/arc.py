@@ -26,7 +26,7 @@ user's load callable, by central differences).
 
 The forms (`skcable.cable.bvp.forms`) are a *section law* in the
 generalized strains ``(x', y', x, y, T)``: `ArcProblem` assembles them
-with `LineAssembly` (basis values and patterns once) and
+with `skcable.fe.Assembly` (basis values and patterns once) and
 solves the bordered banded system of `skcable.cable.bvp.bordered`.
 
 Support reactions come from the residual rows at the supports:
@@ -45,12 +45,12 @@ from skfem import Basis, ElementLineP1DG, ElementLineP2, MeshLine
 from skcable._checks import positive, real, require
 from skcable.cable._catenary import catenary
 from skcable.cable._loads import DeckLoad, DistributedLoad, PointLoad, SelfWeight
-from skcable.cable.bvp.assembly import LineAssembly
 from skcable.cable.bvp.base import FiniteElementSolution
-from skcable.cable.bvp.bordered import BorderedSolver
 from skcable.cable.bvp.elements import end_dofs
 from skcable.cable.bvp.probes import element_values, gradient_probes, minimum_near
 from skcable.errors import InputError
+from skcable.fe.assembly import Assembly
+from skcable.fe.linear import BorderedSolver
 
 __all__ = ["ArcProblem", "ArcSolution", "ArcState", "arc_guess", "arc_loads"]
 
@@ -106,7 +106,7 @@ class ArcState:
     dg_dL0: float
     merit: float  # max-norm of the scaled residual: the convergence test and line-search merit
     descent: float  # 2-norm of the scaled residual
-    assembly: LineAssembly | None = None
+    assembly: Assembly | None = None
 
     @cached_property
     def J(self):
@@ -143,7 +143,7 @@ class ArcProblem:
         self.end_a, self.end_b, inner = end_dofs(self.basis)
         self.free = np.concatenate([inner, N + inner, 2 * N + np.arange(M)])
         self.fixed_length = constraint[0] == "length"
-        self.assembly = LineAssembly({"x": self.basis, "y": self.basis, "T": self.tbasis}, _STRAINS)
+        self.assembly = Assembly({"x": self.basis, "y": self.basis, "T": self.tbasis}, _STRAINS)
         self.solver = BorderedSolver(self.assembly.banded(self.free))
         self._force_rows = self.free[self.free < 2 * N]
         self._stretch_rows = self.free[self.free >= 2 * N]

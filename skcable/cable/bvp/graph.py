@@ -36,12 +36,12 @@ from skcable._checks import positive, real, require
 from skcable.cable._catenary import catenary
 from skcable.cable._loads import PointLoad, unstretched_measure
 from skcable.cable._parabola import parabola
-from skcable.cable.bvp.assembly import LineAssembly
 from skcable.cable.bvp.base import FiniteElementSolution
-from skcable.cable.bvp.bordered import BorderedSolver
 from skcable.cable.bvp.elements import end_dofs, line_element
 from skcable.cable.bvp.probes import element_values, gradient_probes, minimum_near
 from skcable.errors import InputError
+from skcable.fe.assembly import Assembly
+from skcable.fe.linear import BorderedSolver
 
 __all__ = ["BVPSolution", "GraphProblem", "GraphState", "initial_guess"]
 
@@ -58,7 +58,7 @@ class GraphState:
     dg_dH: float
     merit: float  # max-norm of the scaled residual: the convergence test
     descent: float  # 2-norm of the scaled residual: the line-search merit
-    assembly: LineAssembly
+    assembly: Assembly
 
     @cached_property
     def K(self):
@@ -107,7 +107,7 @@ class GraphProblem:
         basis = self.basis = Basis(self.mesh, element, intorder=2 * element.maxdeg + 2)
         N = basis.N
         # strains: y' (order 1) and y (order 0); basis values and element products once
-        self.assembly = LineAssembly({"u": basis}, [("u", 1), ("u", 0)])
+        self.assembly = Assembly({"u": basis}, [("u", 1), ("u", 0)])
         self.x_quad = self.assembly.x  # (nq, ne), as every quadrature array here
         self._stiffness = self.assembly.block(0, 0)  # ∫ φ_i' φ_j' dx
         self.end_a, self.end_b, self.interior = end_dofs(basis)
