@@ -9,9 +9,8 @@ Studies:
   lengths, to see ``auto`` move to worker processes where they pay.
 
 Each study runs ``--repeat`` times on each way, the ways interleaved (each first in turn); the
-medians are printed
-with their ratio to the serial run, and the tables are checked identical (every column but
-``time_s``). The ways:
+medians are printed with their ratio to the serial run, and the tables are checked identical
+(every column but ``time_s``). The ways:
 
 - ``serial``: ``executor="serial"``;
 - ``auto``: the default, serial until a cluster pays (`skcable.study.executors.dask_pays`);

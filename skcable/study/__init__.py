@@ -3,7 +3,7 @@
 A study is a list of cases (dicts of keyword arguments) and a model function that turns
 one case into a dict of scalar outputs. `run` maps the function over the cases and
 collects one row per case into a `StudyTable` (a pandas DataFrame that prints as a short
-summary)::
+summary):
 
     case parameters | outputs | status ("ok" / "failed") | error | time_s | key
 

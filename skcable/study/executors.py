@@ -18,6 +18,7 @@ The figures behind `CLUSTER_COST` and `EFFICIENCY` come from ``benchmarks/bench_
 
 from __future__ import annotations
 
+import importlib.util
 import math
 import os
 import secrets
@@ -39,6 +40,7 @@ __all__ = [
     "check_scheduler",
     "dask_available",
     "dask_pays",
+    "start_method",
     "usable_cores",
 ]
 
@@ -56,15 +58,14 @@ class WorkerWarning(RuntimeWarning):
 def dask_available() -> bool:
     """Whether ``distributed`` (the optional extra ``skcable[cluster]``) is installed.
 
+    Looks for it without importing it (an import takes about a second, which a serial study
+    need not pay).
+
     Returns
     -------
     bool
     """
-    try:
-        import distributed  # noqa: F401
-    except ImportError:
-        return False
-    return True
+    return importlib.util.find_spec("distributed") is not None
 
 
 def usable_cores() -> int:
@@ -79,6 +80,20 @@ def usable_cores() -> int:
         return max(1, len(os.sched_getaffinity(0)))
     except (AttributeError, OSError):
         return max(1, os.cpu_count() or 1)
+
+
+def start_method() -> str:
+    """How a local cluster starts its worker processes (``distributed.worker.multiprocessing-method``).
+
+    Returns
+    -------
+    str
+        ``"spawn"`` (Dask's default), ``"forkserver"`` or ``"fork"``.
+    """
+    import dask
+    import distributed  # noqa: F401 - registers its configuration
+
+    return str(dask.config.get("distributed.worker.multiprocessing-method"))
 
 
 def check_scheduler(scheduler) -> None:
@@ -219,10 +234,9 @@ class Dask:
         return self.client
 
     def _local_cluster(self):
-        import dask
         from distributed import LocalCluster
 
-        problem = main_problem(dask.config.get("distributed.worker.multiprocessing-method"))
+        problem = main_problem(start_method())
         if problem is not None:
             warn(
                 f"skcable.study runs on {self.n_workers} worker threads, not processes: {problem}",
@@ -274,16 +288,29 @@ class Auto:
 
     def map(self, model, todo, finish) -> None:
         """Compute ``todo``, serially until `dask_pays`, then on the cluster."""
-        todo = list(todo)
-        while todo and self.dask is None:
-            key, case = todo.pop(0)
+        todo, done = list(todo), 0
+        while done < len(todo) and self.dask is None:
+            key, case = todo[done]
             result = tasks.evaluate(model, case)
+            done += 1
             self.times.append(result["time_s"])
             finish(key, result)
-            if todo and self._switch(len(todo)):
-                self.dask = Dask(None, self.n_workers, self.progress)
-        if todo:
-            self.dask.map(model, todo, finish)
+            if done < len(todo) and self._switch(len(todo) - done):
+                self.dask = self._start()
+        if done < len(todo):
+            self.dask.map(model, todo[done:], finish)
+
+    def _start(self) -> Dask | None:
+        """A started local cluster, or None (warned) if it cannot start: the study goes on serially."""
+        cluster = Dask(None, self.n_workers, self.progress)
+        try:
+            cluster.connect()
+        except Exception as exc:  # noqa: BLE001 - the cluster was this executor's idea, not the user's
+            cluster.close()
+            self.stay_serial = True
+            warn(f"skcable.study runs serially: a local Dask cluster did not start ({exc})", WorkerWarning)
+            return None
+        return cluster
 
     def _switch(self, left: int) -> bool:
         if (
@@ -292,9 +319,7 @@ class Auto:
             or not dask_pays(statistics.median(self.times[1:]), left, self.n_workers)
         ):
             return False
-        import dask
-
-        problem = main_problem(dask.config.get("distributed.worker.multiprocessing-method"))
+        problem = main_problem(start_method())
         if problem is not None:
             self.stay_serial = True
             warn(f"skcable.study runs serially: {problem}", WorkerWarning)

@@ -4,7 +4,7 @@ A study file holds ``model`` (a name of `skcable.study.tasks.MODELS`), ``[grid]`
 parameter's values) or ``[sample]`` (``n``, ``seed`` and each parameter's ``[low, high]``),
 ``[fixed]`` (parameters common to every case), ``output`` (the table, ``.csv`` or
 ``.parquet``; default ``<file stem>.csv``) and ``cache`` (a folder); paths are relative to
-the working directory. Anything else is refused, never ignored::
+the working directory. Anything else is refused, never ignored:
 
     model = "strand_capacity"
     output = "results/pino_vidal_2021_tables_4_1_4_2.csv"

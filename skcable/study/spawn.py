@@ -39,14 +39,14 @@ def _stack(thread_id: int | None = None):
         frame = frame.f_back
 
 
-def _module_line(namespace: dict) -> int | None:
-    """The line the module code of ``namespace`` is running (main thread), or None."""
+def _module_frame(namespace: dict):
+    """The frame running the module code of ``namespace`` (main thread first), or None."""
     threads = [None] if threading.current_thread() is threading.main_thread() else []
     threads.append(threading.main_thread().ident)
     for thread in threads:
         for frame in _stack(thread):
             if frame.f_code.co_name == "<module>" and frame.f_globals is namespace:
-                return frame.f_lineno
+                return frame
     return None
 
 
@@ -97,15 +97,19 @@ def guarded(source: str, line: int) -> bool:
 
 
 def _unguarded_line(main, path: str) -> int | None:
-    line = _module_line(vars(main))
-    if line is None:
+    frame = _module_frame(vars(main))
+    if frame is None:
         return None  # the module code has finished (a callback): nothing to tell
     try:
         with open(path, encoding="utf-8") as handle:
             source = handle.read()
-    except (OSError, UnicodeDecodeError):
-        return None  # a zip application, an unreadable file: the workers' own check decides
-    return None if guarded(source, line) else line
+        code = compile(source, path, "exec", dont_inherit=True)
+        same = code.co_code == frame.f_code.co_code and list(code.co_lines()) == list(frame.f_code.co_lines())
+    except (OSError, UnicodeDecodeError, SyntaxError, ValueError):
+        return None  # a zip application, an unreadable file: the backstop decides
+    if not same:
+        return None  # the file was edited since it started: its lines say nothing
+    return None if guarded(source, frame.f_lineno) else frame.f_lineno
 
 
 def main_problem(method: str = "spawn") -> str | None:

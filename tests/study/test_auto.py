@@ -64,3 +64,33 @@ def test_a_long_study_moves_to_worker_processes_with_the_same_table(monkeypatch)
     assert auto.attrs["executor"] == "serial, then dask, a local cluster of 2 worker processes"
     columns = ["time_s", "pid"]
     pd.testing.assert_frame_equal(auto.drop(columns=columns), serial.drop(columns=columns))
+
+
+def test_a_cluster_that_does_not_start_leaves_the_study_serial(monkeypatch, calls):
+    def broken(self):
+        raise OSError("no free port")
+
+    monkeypatch.setattr(executors, "CLUSTER_COST", 0.0)
+    monkeypatch.setattr(executors, "usable_cores", lambda: 2)
+    monkeypatch.setattr(executors.Dask, "connect", broken)
+    with pytest.warns(
+        study.WorkerWarning, match=r"runs serially: a local Dask cluster did not start \(no free"
+    ):
+        table = study.run(study.cable_solve, CASES, progress=False)
+    assert len(calls) == 16 and table.attrs["executor"] == "serial"
+    assert (
+        table.H.tolist() == study.run(study.cable_solve, CASES, executor="serial", progress=False).H.tolist()
+    )
+
+
+def test_a_small_study_imports_no_dask():
+    import subprocess
+    import sys
+
+    code = (
+        "import sys; from skcable import study; "
+        "study.run(study.cable_solve, [dict(span=100.0, w=1.0, sag=5.0)], progress=False); "
+        "print(sorted(m for m in ('dask', 'distributed') if m in sys.modules))"
+    )
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=60, check=True)
+    assert out.stdout.strip() == "[]"

@@ -163,3 +163,29 @@ def test_main_problem_of_this_test_run_is_none():
 
 def test_the_package_pickles_as_a_module():
     assert pickle.loads(pickle.dumps(study)) is study
+
+
+EDITED = """\"\"\"A script that edits its own docstring while it runs.\"\"\"
+from pathlib import Path
+from skcable.study import spawn
+
+if __name__ == "__main__":
+    print(spawn.main_problem())
+    path = Path(__file__)
+    path.write_text(path.read_text().replace("A script", {new!r}, 1))
+print(spawn.main_problem())
+"""
+
+
+def test_a_script_edited_while_it_runs_is_not_misjudged(tmp_path):
+    """Once its lines on disk have moved, they are no longer those running and the guard cannot
+    be judged from them (a guarded benchmark edited during its run was once told it was
+    unguarded); an edit that moves no line leaves the judgement as it was."""
+    moved, control = tmp_path / "moved.py", tmp_path / "control.py"
+    moved.write_text(EDITED.format(new="A\nscript"))  # one more line: every line moves down
+    control.write_text(EDITED.format(new="A Script"))  # the same lines
+    out = subprocess.run([sys.executable, str(moved)], capture_output=True, text=True, env=ENV, timeout=60)
+    assert out.stdout.splitlines() == ["None", "None"], out.stderr
+    out = subprocess.run([sys.executable, str(control)], capture_output=True, text=True, env=ENV, timeout=60)
+    first, last = out.stdout.splitlines()
+    assert first == "None" and last.startswith(f"{control} runs the study at line 9 outside"), out.stderr

@@ -33,20 +33,6 @@ def direct_H(case):
     return cable.catenary(case["span"], 0.0, case["w"], sag=case["sag"]).H
 
 
-@pytest.fixture
-def calls(monkeypatch):
-    """The cases computed (not read from a cache) during the test."""
-    computed = []
-    evaluate = study.tasks.evaluate
-
-    def counting(model, case):
-        computed.append(case)
-        return evaluate(model, case)
-
-    monkeypatch.setattr(study.tasks, "evaluate", counting)
-    return computed
-
-
 def test_grid_and_sample():
     assert len(CASES) == 6 and CASES[1] == {"span": 100.0, "sag": 30.0, "w": 12.0}
     cases = study.sample(5, seed=3, fixed={"w": 1.0}, span=(100, 200))
