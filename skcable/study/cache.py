@@ -132,7 +132,17 @@ class Cache:
         self.locks.reclaim_all()
 
     def entry_path(self, key: str) -> Path:
-        """The entry file of ``key``."""
+        """The entry file of ``key``: ``<folder>/<key>.json``.
+
+        Parameters
+        ----------
+        key : str
+            A case's key.
+
+        Returns
+        -------
+        Path
+        """
         return self.folder / f"{key}.json"
 
     def read(self, key: str, case: dict) -> dict | None:

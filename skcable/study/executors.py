@@ -40,15 +40,18 @@ __all__ = [
     "check_scheduler",
     "dask_available",
     "dask_pays",
+    "free_cores",
     "start_method",
     "usable_cores",
 ]
 
 #: Seconds a local cluster of 2 worker processes takes to start, take its first cases
-#: (the workers import skcable) and stop, taken at the high end of what was measured.
-CLUSTER_COST = 8.0
-#: The fraction of ideal speed-up a local cluster reaches on the cases themselves.
-EFFICIENCY = 0.65
+#: (the workers import skcable) and stop: 7 to 15 s measured on 2 shared cores, 3 to 7 s
+#: on a lighter load (benchmarks/bench_study.py).
+CLUSTER_COST = 10.0
+#: The fraction of the ideal speed-up a local cluster reaches on the cases themselves
+#: (0.28 to 0.63 measured on 2 shared cores).
+EFFICIENCY = 0.6
 
 
 class WorkerWarning(RuntimeWarning):
@@ -96,6 +99,26 @@ def start_method() -> str:
     return str(dask.config.get("distributed.worker.multiprocessing-method"))
 
 
+def free_cores() -> int:
+    """The usable cores that other work leaves free, this process's own included.
+
+    The 1-minute load average counts the runnable processes, this one among them (it is
+    computing a case when asked): ``usable_cores() - (load - 1)``, rounded, between 1 and the
+    usable cores. Where the system has no load average, the usable cores.
+
+    Returns
+    -------
+    int
+        >= 1.
+    """
+    cores = usable_cores()
+    try:
+        load = os.getloadavg()[0]
+    except (AttributeError, OSError):
+        return cores
+    return max(1, min(cores, math.floor(cores - max(0.0, load - 1.0) + 0.5)))
+
+
 def check_scheduler(scheduler) -> None:
     """Refuse an address no Dask scheduler can have, before any computing.
 
@@ -124,11 +147,11 @@ def check_scheduler(scheduler) -> None:
         raise InputError("scheduler", f"{scheduler!r} is not a scheduler address: {exc}") from None
 
 
-def dask_pays(case_time: float, left: int, n_workers: int) -> bool:
-    """Whether a local cluster would finish the cases left sooner than this process.
+def dask_pays(case_time: float, left: int, workers: int) -> bool:
+    """Whether a new local cluster would finish the cases left sooner than this process.
 
-    With ``t`` s a case, ``n`` cases left and ``W`` workers (at most the usable cores),
-    serially they take ``n t``; on a new cluster ``CLUSTER_COST + ceil(n / W) t / EFFICIENCY``.
+    With ``t`` s a case, ``n`` cases left and ``W`` workers able to run at once, serially the
+    cases take ``n t``; on a new cluster ``CLUSTER_COST + ceil(n / W) t / EFFICIENCY``.
 
     Parameters
     ----------
@@ -136,8 +159,9 @@ def dask_pays(case_time: float, left: int, n_workers: int) -> bool:
         Seconds a case takes (s).
     left : int
         Cases left.
-    n_workers : int
-        Workers of the cluster.
+    workers : int
+        Workers that can run at once (`Auto` gives the cluster's workers, at most
+        `free_cores`).
 
     Returns
     -------
@@ -146,10 +170,9 @@ def dask_pays(case_time: float, left: int, n_workers: int) -> bool:
 
     Examples
     --------
-    >>> dask_pays(0.2, 14, 2), dask_pays(0.2, 500, 2), dask_pays(60.0, 1, 2)
+    >>> dask_pays(0.2, 14, 2), dask_pays(0.2, 1000, 2), dask_pays(60.0, 1, 2)
     (False, True, False)
     """
-    workers = min(n_workers, usable_cores())
     if workers < 2 or left < 2:
         return False
     on_cluster = CLUSTER_COST + math.ceil(left / workers) * case_time / EFFICIENCY
@@ -163,7 +186,18 @@ class Serial:
     description = "serial"
 
     def map(self, model, todo, finish) -> None:
-        """Compute ``todo`` (``(key, case)`` pairs), calling ``finish(key, result)`` after each."""
+        """Compute a batch of cases, handing each result on as it ends.
+
+        Parameters
+        ----------
+        model : callable
+            The model function.
+        todo : list of (str, dict)
+            ``(key, case)`` pairs.
+        finish : callable
+            Called as ``finish(key, result)`` after each case, with the record of
+            `skcable.study.tasks.evaluate`.
+        """
         for key, case in todo:
             finish(key, tasks.evaluate(model, case))
 
@@ -192,10 +226,15 @@ class Dask:
         self.description = f"dask, {where}"
 
     def map(self, model, todo, finish) -> None:
-        """Compute ``todo`` on the cluster; ``finish(key, result)`` as each case ends.
+        """Compute a batch of cases on the cluster, handing each result on as it ends.
 
         A case whose task is lost (a worker died, the model could not be sent) is recorded
         as failed with the error, like a case that raised.
+
+        Parameters
+        ----------
+        model, todo, finish
+            As for `Serial.map`.
         """
         from distributed import as_completed
 
@@ -214,7 +253,17 @@ class Dask:
             finish(futures[future], result)
 
     def connect(self):
-        """The ``distributed.Client`` (connecting, or starting the local cluster, once)."""
+        """The client of the cluster, connected (or the local cluster started) on the first call.
+
+        Returns
+        -------
+        distributed.Client
+
+        Raises
+        ------
+        InputError
+            ``scheduler``: no scheduler answers at the address.
+        """
         if self.client is not None:
             return self.client
         from distributed import Client
@@ -263,7 +312,9 @@ class Auto:
     """Computes serially, and moves the rest to a local cluster of processes when that pays.
 
     After each case (from the second on) `dask_pays` is asked with the median time of the
-    cases computed so far (the first left out: it carries the imports). Where worker
+    cases computed so far (the first left out: it carries the imports) and the cluster's
+    workers, at most the cores other work leaves free (`free_cores`): on a busy machine the
+    workers would only take turns with the others. Where worker
     processes cannot start (`skcable.study.spawn.main_problem`) the study stays serial,
     with one `WorkerWarning` saying what to add.
 
@@ -287,7 +338,13 @@ class Auto:
         return "serial" if self.dask is None else f"serial, then {self.dask.description}"
 
     def map(self, model, todo, finish) -> None:
-        """Compute ``todo``, serially until `dask_pays`, then on the cluster."""
+        """Compute a batch of cases, serially until `dask_pays`, then on a local cluster.
+
+        Parameters
+        ----------
+        model, todo, finish
+            As for `Serial.map`.
+        """
         todo, done = list(todo), 0
         while done < len(todo) and self.dask is None:
             key, case = todo[done]
@@ -316,7 +373,7 @@ class Auto:
         if (
             self.stay_serial
             or len(self.times) < 2
-            or not dask_pays(statistics.median(self.times[1:]), left, self.n_workers)
+            or not dask_pays(statistics.median(self.times[1:]), left, min(self.n_workers, free_cores()))
         ):
             return False
         problem = main_problem(start_method())

@@ -7,7 +7,7 @@ The fingerprint is the SHA-256 of
 - every file of the installed ``skcable`` package (its relative path and its bytes;
   ``__pycache__`` and hidden files left out), so that any edit of the numerics, however
   small, changes it while the version number stays;
-- the versions of Python, NumPy, SciPy and scikit-fem, whose numerics skcable's rest on;
+- the versions of Python, NumPy, SciPy and scikit-fem, whose numerics skcable rests on;
 - for a model function defined outside skcable (a user's), the source text of that
   function, when Python can read it (`inspect.getsource`). A change in a helper it
   calls from another module is not seen: bump such a model's name, or clear the cache.

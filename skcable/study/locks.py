@@ -124,7 +124,17 @@ class CaseLocks:
         self._heart: threading.Thread | None = None
 
     def path(self, key: str) -> Path:
-        """The lock file of ``key``."""
+        """The lock file of ``key``: ``<folder>/<key>.lock``.
+
+        Parameters
+        ----------
+        key : str
+            A case's key.
+
+        Returns
+        -------
+        Path
+        """
         return self.folder / f"{key}.lock"
 
     def acquire(self, key: str) -> bool:
@@ -193,7 +203,13 @@ class CaseLocks:
         return owner.get("host") == _HOST and not pid_alive(owner.get("pid"))
 
     def release(self, key: str) -> None:
-        """Remove this run's lock on ``key`` (a lock another run took over is left alone)."""
+        """Remove this run's lock on ``key`` (a lock another run took over is left alone).
+
+        Parameters
+        ----------
+        key : str
+            A case's key.
+        """
         token = self.held.pop(key, None)
         if token is None:
             return

@@ -31,31 +31,42 @@ def test_a_small_study_never_starts_a_cluster(no_cluster, calls):
 
 def test_auto_stays_serial_without_two_cores_or_without_dask(no_cluster, monkeypatch):
     monkeypatch.setattr(executors, "CLUSTER_COST", 0.0)  # a cluster would pay...
-    monkeypatch.setattr(executors, "usable_cores", lambda: 1)  # ...but one core cannot run two workers
+    monkeypatch.setattr(executors, "free_cores", lambda: 1)  # ...but one free core cannot run two workers
     study.run(study.cable_solve, CASES, progress=False)
-    monkeypatch.setattr(executors, "usable_cores", lambda: 2)
+    monkeypatch.setattr(executors, "free_cores", lambda: 2)
     monkeypatch.setattr(executors, "dask_available", lambda: False)
     study.run(study.cable_solve, CASES, progress=False)
     study.run(study.cable_solve, CASES, n_workers=1, progress=False)
 
 
-def test_dask_pays_only_when_the_cluster_would_finish_first(monkeypatch):
-    monkeypatch.setattr(executors, "usable_cores", lambda: 2)
+def test_dask_pays_only_when_the_cluster_would_finish_first():
     cost, efficiency = executors.CLUSTER_COST, executors.EFFICIENCY
     # 1 s a case on 2 workers: serially n s, on the cluster cost + ceil(n/2)/efficiency s
-    for n in (2, 5, 10, 20, 40, 80):
+    for n in (2, 5, 10, 20, 40, 80, 160, 320):
         cluster = cost + -(-n // 2) / efficiency
         assert executors.dask_pays(1.0, n, 2) is (cluster < n)
     assert not executors.dask_pays(1e6, 1, 2)  # one case left: nothing to share
-    assert not executors.dask_pays(1e6, 100, 1)
+    assert not executors.dask_pays(1e6, 100, 1)  # one worker: nothing gained
     assert executors.dask_pays(0.2, 1000, 2) and not executors.dask_pays(0.2, 16, 2)
-    monkeypatch.setattr(executors, "usable_cores", lambda: 1)
-    assert not executors.dask_pays(1e6, 100, 8)  # more workers than cores: one core does not share
+
+
+@pytest.mark.parametrize("load, free", [(0.0, 2), (1.0, 2), (1.4, 2), (1.6, 1), (2.0, 1), (9.0, 1)])
+def test_free_cores_leave_out_the_other_work(monkeypatch, load, free):
+    monkeypatch.setattr(executors, "usable_cores", lambda: 2)
+    monkeypatch.setattr(executors.os, "getloadavg", lambda: (load, load, load))
+    assert executors.free_cores() == free
+
+
+def test_auto_on_a_busy_machine_stays_serial(no_cluster, monkeypatch):
+    monkeypatch.setattr(executors, "CLUSTER_COST", 0.0)
+    monkeypatch.setattr(executors, "usable_cores", lambda: 2)
+    monkeypatch.setattr(executors.os, "getloadavg", lambda: (6.0, 6.0, 6.0))  # others hold both cores
+    assert study.run(study.cable_solve, CASES, progress=False).attrs["executor"] == "serial"
 
 
 def test_a_long_study_moves_to_worker_processes_with_the_same_table(monkeypatch):
     monkeypatch.setattr(executors, "CLUSTER_COST", 0.0)  # as if every case were long
-    monkeypatch.setattr(executors, "usable_cores", lambda: 2)
+    monkeypatch.setattr(executors, "free_cores", lambda: 2)
     cases = CASES[:6]
     auto = study.run(pid_model, cases, n_workers=2, progress=False)
     serial = study.run(pid_model, cases, executor="serial", progress=False)
@@ -71,7 +82,7 @@ def test_a_cluster_that_does_not_start_leaves_the_study_serial(monkeypatch, call
         raise OSError("no free port")
 
     monkeypatch.setattr(executors, "CLUSTER_COST", 0.0)
-    monkeypatch.setattr(executors, "usable_cores", lambda: 2)
+    monkeypatch.setattr(executors, "free_cores", lambda: 2)
     monkeypatch.setattr(executors.Dask, "connect", broken)
     with pytest.warns(
         study.WorkerWarning, match=r"runs serially: a local Dask cluster did not start \(no free"

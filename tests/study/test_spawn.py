@@ -36,6 +36,7 @@ locks = sorted(p.name for p in Path(sys.argv[1]).glob("*.lock"))
 print(json.dumps({{"pids": sorted(set(table.pid.tolist())), "me": os.getpid(), "locks": locks,
                   "H": table.H.tolist(), "status": table.status.tolist()}}))
 """
+PAYS = "study.executors.CLUSTER_COST = 0.0; study.executors.free_cores = lambda: 2  # a cluster would pay"
 EXPECTED_H = [cable.catenary(s, 0.0, 10.0, sag=5.0).H for s in (100.0, 200.0, 300.0, 400.0)]
 
 
@@ -72,7 +73,7 @@ def test_unguarded_script_on_dask_runs_on_threads_and_says_what_to_add(tmp_path)
 
 def test_unguarded_script_stays_serial_where_auto_would_start_processes(tmp_path):
     script = tmp_path / "snippet.py"
-    script.write_text(program(setup="study.executors.CLUSTER_COST = 0.0  # a cluster would pay"))
+    script.write_text(program(setup=PAYS))
     report, warned = run_program([str(script)], tmp_path)
     assert report["pids"] == [report["me"]]
     assert len(warned) == 1 and "runs serially" in warned[0] and f"`{GUARD}`" in warned[0]
@@ -92,8 +93,7 @@ def test_standard_input_on_dask_runs_on_threads_and_says_what_to_add(tmp_path):
 
 
 def test_standard_input_on_auto_runs(tmp_path):
-    setup = "study.executors.CLUSTER_COST = 0.0"
-    report, warned = run_program(["-"], tmp_path, stdin=program(setup=setup))
+    report, warned = run_program(["-"], tmp_path, stdin=program(setup=PAYS))
     assert report["pids"] == [report["me"]] and len(warned) == 1 and "runs serially" in warned[0]
 
 
