@@ -46,11 +46,12 @@ __all__ = [
 ]
 
 #: Seconds a local cluster of 2 worker processes takes to start, take its first cases
-#: (the workers import skcable) and stop: 7 to 15 s measured on 2 shared cores, 3 to 7 s
-#: on a lighter load (benchmarks/bench_study.py).
+#: (the workers import skcable) and stop: 4 to 15 s measured by benchmarks/bench_study.py
+#: on 2 cores shared with other work.
 CLUSTER_COST = 10.0
-#: The fraction of the ideal speed-up a local cluster reaches on the cases themselves
-#: (0.28 to 0.63 measured on 2 shared cores).
+#: The fraction of the ideal speed-up a local cluster reaches on the cases themselves, on
+#: cores left free: 0.54 to 0.63 measured at a moderate load (down to 0.22 on a busy
+#: machine, where `free_cores` keeps a study serial).
 EFFICIENCY = 0.6
 
 
