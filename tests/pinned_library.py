@@ -141,7 +141,7 @@ def bvp_cases():
         "bvp_ice": dict(_forces(a), y=a.y(xs)),
         "bvp_deck": dict(_forces(b), y=b.y(np.linspace(0, 800, 7))),
         "bvp_point_p3": dict(_forces(c), y=c.y(xs)),
-        "bvp_arc_wind": dict(H=d.H, H_B=d.H_B, V_A=d.V_A, V_B=d.V_B, length=d.length),
+        "bvp_arc_wind": dict(H_A=d.H_A, H_B=d.H_B, V_A=d.V_A, V_B=d.V_B, length=d.length),
         "bvp_arc_tmax": dict(H=e.H, V_A=e.V_A, V_B=e.V_B, length=e.length),
         "bvp_low": dict(_forces(f)),
     }
@@ -192,7 +192,7 @@ def strand_cases():
     fr = strand.strand_bending_frequencies(sec, N=1e3, length=1.0, mass_per_length=0.45)
     a = strand.analyse(s)
     model = strand.StrandModel(
-        s, 1.0, n_elements=24, terms=[strand.ElasticFoundation(2e4), strand.DistributedLoad(qy=5.0)]
+        s, 1.0, n_elements=24, terms=[strand.ElasticFoundation(2e4), strand.TransverseLoad(qy=5.0)]
     )
     # solved to 1e-12 (the default 1e-9 is the accuracy of a step, not the pin's): the numbers are
     # the model's equations, whatever the stopping rule

@@ -31,7 +31,6 @@ import math
 from functools import cached_property
 
 import numpy as np
-from scipy.optimize import elementwise
 
 from skcable._checks import broadcast, exactly_one, float_range, positive, real, require
 from skcable._xp import namespace
@@ -395,6 +394,8 @@ def _log_tau(t, s):
 
 
 def _z_from_T_max(span, dh, w, T_max, branch):
+    from scipy.optimize import elementwise  # imported here: `import skcable.cable` stays light
+
     if branch not in ("taut", "slack"):
         raise InputError("branch", f"must be 'taut' or 'slack', got {branch!r}")
     xp = namespace(span, dh, w, T_max)

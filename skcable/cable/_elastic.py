@@ -22,6 +22,7 @@ from functools import cached_property
 
 import numpy as np
 
+from skcable import _plausible
 from skcable._checks import broadcast, float_range, positive, real, require
 from skcable._xp import namespace
 from skcable.cable._catenary import _finite_at, catenary
@@ -313,6 +314,7 @@ def elastic_catenary(span, dh, w, EA, *, length):
         H, V_A, history = _solve(span, dh, w, EA, L0)
     except (OverflowError, ZeroDivisionError) as exc:
         raise InputError("EA", f"the closure equations overflow for these data ({exc})") from exc
+    _plausible.stiffness(EA, w, L0)
     with float_range("length", "a result"):
         solution = ElasticCatenary(span, dh, w, EA, L0, H, V_A, ("length", L0))
         return checked_closed_form(solution, "length", history)

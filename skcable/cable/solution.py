@@ -73,10 +73,11 @@ class CableSolution:
 
     def _common_residuals(self, xp):
         """End tensions along the tangent, and the user's constraint met."""
-        H_B = getattr(self, "H_B", self.H)  # differs from H only under horizontal loads
-        out = [
-            (T - xp.hypot(H, V)) / T for T, H, V in ((self.T_A, self.H, self.V_A), (self.T_B, H_B, self.V_B))
-        ]
+        H_A = getattr(self, "H_A", None)
+        H_A = self.H if H_A is None else H_A
+        H_B = getattr(self, "H_B", None)  # differ from H only under horizontal loads
+        H_B = H_A if H_B is None else H_B
+        out = [(T - xp.hypot(H, V)) / T for T, H, V in ((self.T_A, H_A, self.V_A), (self.T_B, H_B, self.V_B))]
         name, value = self.constraint
         achieved = getattr(self, _ATTRIBUTE_OF[name])
         # the lowest point against the chord, or against itself when deeper
@@ -117,11 +118,12 @@ class CableSolution:
         """Downward distributed load per unit unstretched cable length (N/m) at ``x``."""
         raise NotImplementedError
 
-    def to_vtk(self, path, n: int = 201):
-        """Write the profile as a VTK polyline (see `skcable.io.cable_mesh`); returns the path."""
+    def to_vtk(self, path, n: int = 201, *, point_data=None):
+        """Write the profile as a VTK polyline (see `skcable.io.cable_mesh`, which also takes the
+        user's ``point_data``); returns the path."""
         from skcable.io import cable_mesh, write
 
-        return write(cable_mesh(self, n), path)
+        return write(cable_mesh(self, n, point_data=point_data), path)
 
     def points(self, n: int = 101) -> np.ndarray:
         """Profile sampled at ``n`` equally spaced x: array ``(*shape, n, 2)``."""

@@ -23,10 +23,19 @@ import numpy as np
 
 from skcable.errors import InputError
 
-__all__ = ["STEPS", "check_tangent"]
+__all__ = ["STEPS", "check_tangent", "sparse_of"]
 
 #: the finite-difference steps tried, relative to the size of the state
 STEPS = 10.0 ** -np.arange(4, 11)
+
+
+def sparse_of(K, n: int):
+    """The sparse matrix ``K`` padded with zero rows and columns to ``n × n`` (a model whose Newton
+    vector carries global unknowns after its dofs)."""
+    import scipy.sparse as sp
+
+    K = sp.coo_matrix(K)
+    return sp.csr_matrix((K.data, (K.row, K.col)), shape=(n, n))
 
 
 def check_tangent(term, model, U=None, *, state=None, directions: int = 6, seed: int = 0) -> float:

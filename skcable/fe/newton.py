@@ -51,7 +51,7 @@ import numpy as np
 from skcable._checks import nonnegative, positive, whole
 from skcable.errors import ConvergenceError, InputError
 
-__all__ = ["LINE_SEARCHES", "NewtonOptions", "NewtonResult", "minimize", "newton"]
+__all__ = ["LINE_SEARCHES", "NewtonOptions", "NewtonResult", "linear_tail", "minimize", "newton"]
 
 #: ``line_search`` values: on (Armijo on the residual's merit), off (full steps), or on the energy
 LINE_SEARCHES = ("residual", "none", "energy", "auto")
@@ -166,9 +166,8 @@ class NewtonResult:
 
         Newton with a consistent tangent converges quadratically once the residual is small:
         ``r_{k+1} ≤ C r_k²``, so successive ratios ``r_{k+1}/r_k`` fall fast. A wrong tangent
-        gives a constant ratio instead. Returned: the ratios of the full steps taken below a
-        residual of 1e-2, when there are at least three, each in [0.02, 0.95] and within a factor
-        4 of one another, none of them limited by the round-off floor (1e3·tol below).
+        gives a constant ratio instead (`linear_tail`), here over the full steps taken below a
+        residual of 1e-2, none of them limited by the round-off floor (1e3·tol below).
         """
         r, t = self.history, self.steps
         ratios = [
@@ -176,10 +175,16 @@ class NewtonResult:
             for k in range(len(r) - 1)
             if t[k] == 1.0 and 0 < r[k] < 1e-2 and r[k + 1] > 1e-3 * tol
         ]
-        tail = ratios[-3:]
-        if len(tail) < 3 or not all(0.02 <= q <= 0.95 for q in tail) or max(tail) > 4 * min(tail):
-            return None
-        return tail
+        return linear_tail(ratios)
+
+
+def linear_tail(ratios) -> list[float] | None:
+    """The last three contraction ratios ``r_{k+1}/r_k`` if they show linear convergence (each in
+    [0.02, 0.95], within a factor 4 of one another), else None."""
+    tail = list(ratios)[-3:]
+    if len(tail) < 3 or not all(0.02 <= q <= 0.95 for q in tail) or max(tail) > 4 * min(tail):
+        return None
+    return tail
 
 
 def _callback(callback, iteration, current, step):
@@ -213,6 +218,7 @@ def newton(
     absolute: Callable[[Any], float] | None = None,
     line_search: bool = True,
     callback: Callable | None = None,
+    nonmonotone: int = 0,
 ) -> NewtonResult:
     """Solve ``R(x) = 0`` from ``x0``; see the module docstring.
 
@@ -247,6 +253,12 @@ def newton(
         inadmissible or rejected trial is halved).
     callback : callable, optional
         ``callback(iteration, residual_norm, step_norm)`` after every accepted step.
+    nonmonotone : int
+        0: a trial must lower ``merit`` below the current one. ``m > 0``: below the largest of
+        the last ``m`` (the non-monotone rule of L. Grippo, F. Lampariello, S. Lucidi, "A
+        nonmonotone line search technique for Newton's method", SIAM J. Numer. Anal., 1986),
+        which lets a semismooth Newton step through the transients of an active set that is
+        still being identified (its residual rises and falls) while keeping it from running off.
 
     Raises
     ------
@@ -264,17 +276,17 @@ def newton(
     def stop(message):
         if floor is not None and history[-1] <= floor(state):
             return NewtonResult(x, state, history, assemblies, at_floor=True, steps=steps)
-        raise ConvergenceError(f"{name}: {message}", history)
+        raise ConvergenceError(f"{name}: {message}", history, last=x)
 
     update = (lambda x, dx, t: x + t * dx) if update is None else update
     x = np.array(x0, dtype=float)
     state = assemble(x) if state is None else state
     assemblies = 1
-    history, steps = [norm(state)], []
+    history, steps, merits = [norm(state)], [], []
     for _ in range(max_iter + 1):
         current = history[-1]
         if not np.isfinite(current):
-            raise ConvergenceError(f"{name}: the residual is not finite", history)
+            raise ConvergenceError(f"{name}: the residual is not finite", history, last=x)
         if converged(state, current):
             return NewtonResult(x, state, history, assemblies, steps=steps)
         if len(history) > max_iter:
@@ -288,7 +300,8 @@ def newton(
                 f"in {stagnation_window} iterations)"
             )
         dx = increment(state)
-        base, t = merit(state), 1.0
+        merits.append(merit(state))
+        base, t = max(merits[-nonmonotone:]) if nonmonotone else merits[-1], 1.0
         for _ in range(max_halvings + 1):
             trial_x = update(x, dx, t)
             if admissible is None or admissible(trial_x):
@@ -364,14 +377,14 @@ def minimize(
     for _ in range(max_iter + 1):
         current, Pi = history[-1], energies[-1]
         if not (np.isfinite(current) and np.isfinite(Pi)):
-            raise ConvergenceError(f"{name}: the residual or the energy is not finite", history)
+            raise ConvergenceError(f"{name}: the residual or the energy is not finite", history, last=x)
         if converged(state, current):
             return NewtonResult(x, state, history, assemblies, shifted, steps=steps)
         if len(history) > max_iter:
             break
         if len(history) > window and current > factor * history[-1 - window]:
             if abs(Pi - energies[-1 - window]) <= noise * abs(Pi):
-                raise ConvergenceError(f"{name}: neither the residual nor the energy moves", history)
+                raise ConvergenceError(f"{name}: neither the residual nor the energy moves", history, last=x)
             if mu == 0.0:
                 mu, shifted = mu0, True
         while True:
@@ -382,7 +395,9 @@ def minimize(
                 mu, shifted = (mu0 if mu == 0.0 else 2.0 * mu), True
                 if mu > mu_max:
                     raise ConvergenceError(
-                        f"{name}: the tangent needs a shift above {mu_max:g} to be positive definite", history
+                        f"{name}: the tangent needs a shift above {mu_max:g} to be positive definite",
+                        history,
+                        last=x,
                     ) from None
         R = gradient(state)
         slope = float(R @ d)
@@ -413,4 +428,4 @@ def minimize(
             history.append(current)
             energies.append(Pi)
             steps.append(0.0)
-    raise ConvergenceError(f"{name}: no convergence to {tol:g} in {max_iter} iterations", history)
+    raise ConvergenceError(f"{name}: no convergence to {tol:g} in {max_iter} iterations", history, last=x)

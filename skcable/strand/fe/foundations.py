@@ -131,10 +131,11 @@ class TensionlessFoundation(Term):
 
     def contribute(self, U, step):
         gap = self._gap(U)
-        inside = gap < 0
-        pressure = np.where(inside, -self.k * gap, 0.0)
+        pressure = np.where(gap < 0, -self.k * gap, 0.0)
         R = self._fa.vector(-self.sign * pressure[None])
-        K = self._fa.matrix((self.k * inside)[None, None].astype(float))
+        # the generalized derivative takes the bed's branch at the kink (gap = 0): a strand that
+        # starts on the bed's surface meets its stiffness at the first step
+        K = self._fa.matrix((self.k * (gap <= 0))[None, None].astype(float))
         return R, K, {"point_data": {"reaction": pressure, "gap": gap}}
 
     def energy(self, U, step):
@@ -189,8 +190,8 @@ class RigidCylinder(Term):
 
     def contribute(self, U, step):
         n, dist, gap = self._kinematics(U)
-        inside = gap < 0
-        force = np.where(inside, self.k * gap, 0.0)  # k min(g, 0)
+        inside = gap <= 0  # the generalized derivative takes the contact branch at the kink
+        force = np.where(gap < 0, self.k * gap, 0.0)  # k min(g, 0)
         R = self._fa.vector(force * n)
         ratio = np.where(inside, gap / np.where(dist > 0, dist, 1.0), 0.0)
         D = np.empty((2, 2, *gap.shape))

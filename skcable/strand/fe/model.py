@@ -37,10 +37,12 @@ import numpy as np
 import scipy.sparse as sp
 from skfem import Basis, ElementLineHermite, ElementLineP2, MeshLine
 
+from skcable import _plausible
 from skcable._checks import nonnegative, positive, whole
 from skcable.errors import ConvergenceError, InputError, SlowConvergenceWarning
 from skcable.fe import Assembly, LinearSystem, NewtonOptions, minimize, newton
 from skcable.fe.elements import ElementLinePpExact
+from skcable.fe.newton import linear_tail
 from skcable.strand.capacity import StepResult, StrandLayout, capacity_curve
 from skcable.strand.fe.slip import SlipLaw, slip_law
 from skcable.strand.fe.supports import StrandSupports
@@ -62,6 +64,8 @@ ROUND_OFF = 100 * np.finfo(float).eps
 #: a term whose tangent errs by more than this (`skcable.fe.check_tangent`) is named when Newton
 #: converges linearly
 TANGENT_ERROR = 1e-6
+#: the merits a semismooth step is measured against (`skcable.fe.newton` ``nonmonotone``)
+NONMONOTONE = 10
 
 
 def default_physics(slip="none", mu: float = 0.5, damage_load: str = "eccentricity") -> list:
@@ -194,6 +198,7 @@ class StrandModel:
         self._other_terms = [(i, t) for i, t in enumerate(self._bound) if not isinstance(t, SectionTerm)]
         self._system = LinearSystem(self.assembly.banded(self.free))
         self._groups = self._equation_groups()
+        self._group_index = self._index_groups()
         self._metric = None  # the elastic tangent of the straight strand, in the solver's storage
         self.layout = self._layout()
         self._init = dict(
@@ -252,6 +257,10 @@ class StrandModel:
             raise InputError("supports", "fix a dof twice (both ends on one node?)")
         self.fixed, self.fixed_values = fixed, values
         self.free = np.setdiff1d(np.arange(self.assembly.N), np.append(fixed, self.pull))
+        self._reaction_dofs = {
+            end: {dof: self.supports.index(end, dof, self.bases, offsets) for dof in given}
+            for end, given in (("left", self.supports.left), ("right", self.supports.right))
+        }
 
     def _equation_groups(self):
         """Dofs of equations of one kind: per field, the values, and the slopes of v and w.
@@ -270,6 +279,18 @@ class StrandModel:
                 dofs = offset + dofs
                 groups.append((dofs, dofs[free[dofs]], name == "phi" or k == 1))
         return groups
+
+    def _index_groups(self):
+        """The groups of `_equation_groups` as flat index arrays for ``np.maximum.reduceat``."""
+        groups = self._groups
+        self._has_free = np.array([free.size > 0 for _, free, _ in groups])
+        order = np.concatenate([dofs for dofs, _, _ in groups])
+        starts = np.cumsum([0] + [len(dofs) for dofs, _, _ in groups[:-1]])
+        with_free = [free for _, free, _ in groups if free.size]
+        free_order = np.concatenate(with_free)
+        free_starts = np.cumsum([0] + [len(f) for f in with_free[:-1]])
+        moment = np.array([is_moment for _, _, is_moment in groups])
+        return order, starts, free_order, free_starts, moment, np.where(moment, self.length, 1.0)
 
     def _layout(self) -> StrandLayout:
         w = self.strand.wires()
@@ -478,17 +499,12 @@ class StrandModel:
     def _norm(self, a, tol: float) -> float:
         """The largest residual of each group of equations over its force scale, or over its
         round-off floor divided by the tolerance where that is larger (module docstring)."""
-        R, size = a["R"], a["size"]
-        scales = [float(np.max(size[dofs], initial=0.0)) for dofs, _, _ in self._groups]
-        forces = max(
-            (s for s, (_, _, moment) in zip(scales, self._groups, strict=True) if not moment), default=0.0
-        )
-        floor = ROUND_OFF * forces / tol
-        worst = [
-            np.max(np.abs(R[free])) / max(s, floor * (self.length if moment else 1.0), 1e-300)
-            for s, (_, free, moment) in zip(scales, self._groups, strict=True)
-            if free.size
-        ]
+        order, starts, free_order, free_starts, moment, length = self._group_index
+        scales = np.maximum.reduceat(a["size"][order], starts)
+        forces = float(np.max(np.where(moment, 0.0, scales)))
+        floor = ROUND_OFF * forces / tol * length  # the moment groups' floor times the length
+        residual = np.maximum.reduceat(np.abs(a["R"][free_order]), free_starts)
+        worst = residual / np.maximum(np.maximum(scales[self._has_free], floor[self._has_free]), 1e-300)
         return float(np.max(worst, initial=0.0)) if np.isfinite(forces) else float("nan")  # NaN stays NaN
 
     def _solver(self, first, options: NewtonOptions) -> str:
@@ -509,7 +525,6 @@ class StrandModel:
 
     def _newton(self, U, strain, state, options: NewtonOptions):
         U = self.uniform(strain) if U is None else self._prescribed(np.array(U, dtype=float), strain)
-        free = self.free
         name = f"StrandModel: Newton at strain {strain:.6g}"
 
         def assemble(x):
@@ -517,47 +532,102 @@ class StrandModel:
 
         first = assemble(U)
         kind = self._solver(first, options)
+        try:
+            return self._run(kind, assemble, U, first, options, name, strain, state)
+        except ConvergenceError as exc:
+            # a solve that crawled linearly to its iteration limit: name the terms whose tangent is off
+            h = exc.history
+            crawled = len(h) > 3 and linear_tail(np.divide(h[1:], h[:-1])) is not None
+            linear = kind != "semismooth" and exc.last is not None and crawled
+            suspects = self._suspects(exc.last, state) if linear else []
+            if not suspects:
+                raise
+            raise ConvergenceError(
+                f"{exc.args[0]}; tangents off by check_tangent: {', '.join(suspects)}", exc.history, exc.last
+            ) from None
+
+    def _run(self, kind, assemble, U, first, options, name, strain, state):
         common = dict(
             norm=lambda a: self._norm(a, options.tol), tol=options.tol, atol=options.atol,
-            name=name, state=first,
-            absolute=lambda a: float(np.max(np.abs(a["R"][free]), initial=0.0)), callback=options.callback,
+            name=name, state=first, callback=options.callback,
+            absolute=lambda a: float(np.max(np.abs(a["R"][self.free]), initial=0.0)),
         )  # fmt: skip
         if kind == "minimize":  # every term has a potential: minimise it, shifted at folds
-            free_R = np.zeros(self.assembly.N)
-
-            def gradient(a):
-                free_R[free] = a["R"][free]
-                return free_R
-
-            result = minimize(
-                assemble, U, energy=lambda a: a["energy"], gradient=gradient, solve=self._increment_positive,
-                max_iter=max(options.max_iter, 40), mu_max=options.mu_max, **common,
+            result = self._minimize(assemble, U, options, common)
+        elif kind == "newton":
+            result = newton(
+                assemble, U, increment=self._increment, max_iter=options.max_iter, merit=self._merit,
+                line_search=options.line_search != "none", max_halvings=options.max_halvings,
+                stagnation_window=options.stagnation_window, **common,
             )  # fmt: skip
         else:
-            semismooth = kind == "semismooth"
-            result = newton(
-                assemble, U, increment=self._increment, max_iter=options.max_iter * (2 if semismooth else 1),
-                merit=lambda a: float(np.sqrt(np.sum(a["R"][free] ** 2))),  # smooth, for the line search
-                line_search=options.line_search != "none", max_halvings=options.max_halvings,
-                stagnation_window=options.stagnation_window * (2 if semismooth else 1), **common,
-            )  # fmt: skip
+            result = self._semismooth(assemble, U, first, options, common)
         if kind != "semismooth":
             self._warn_if_linear(result, options.tol, state, strain)
         return result
 
-    def _warn_if_linear(self, result, tol, state, strain):
-        ratios = result.linear_rate(tol)
-        if ratios is None:
-            return
+    def _merit(self, a) -> float:
+        """The residual's 2-norm over the free dofs: the smooth line-search merit."""
+        return float(np.sqrt(np.sum(a["R"][self.free] ** 2)))
+
+    def _minimize(self, assemble, U, options, common, **settings):
+        free, free_R = self.free, np.zeros(self.assembly.N)
+
+        def gradient(a):
+            free_R[free] = a["R"][free]
+            return free_R
+
+        settings = {"max_iter": max(options.max_iter, 40), "mu_max": options.mu_max} | settings
+        return minimize(
+            assemble, U, energy=lambda a: a["energy"], gradient=gradient, solve=self._increment_positive,
+            **settings, **common,
+        )  # fmt: skip
+
+    def _semismooth(self, assemble, U, first, options, common):
+        """Newton for a model with non-smooth terms (contact, tensionless supports).
+
+        First a semismooth Newton: full steps on the generalized derivative, which identify the
+        active set while the residual rises and falls, under a non-monotone line search
+        (`NONMONOTONE`) and no stagnation rule before twice the iteration limit. Where that does
+        not converge and every term has a potential (a convex penalty, a bed), the energy is
+        minimised instead: Armijo's rule on the energy takes the fraction of a first step that
+        would push the strand deep into a bed (40 halvings), and the tangent's shift may grow to
+        1e6 times the elastic one. Both failing, the first failure is raised."""
+        try:
+            return newton(
+                assemble, U, increment=self._increment, max_iter=2 * options.max_iter, merit=self._merit,
+                line_search=options.line_search != "none", max_halvings=options.max_halvings,
+                stagnation_window=2 * options.max_iter, nonmonotone=NONMONOTONE, **common,
+            )  # fmt: skip
+        except ConvergenceError as failed:
+            potential = all(t.symmetric and t.potential is not False for t in self._bound)
+            if first["energy"] is None or not potential:
+                raise
+            try:
+                return self._minimize(
+                    assemble, U, options, common, halvings=40, mu_max=max(options.mu_max, 1e6),
+                    max_iter=max(4 * options.max_iter, 100),
+                )  # fmt: skip
+            except ConvergenceError:
+                raise failed from None
+
+    def _suspects(self, U, state) -> list[str]:
+        """The terms whose tangent `skcable.fe.check_tangent` finds off at ``U``, worst first."""
         from skcable.fe.check import check_tangent
 
         errors = []
         for i, t in enumerate(self._bound):
             try:
-                errors.append((check_tangent(t, self, result.x, state=state[i]), t))
+                errors.append((check_tangent(t, self, U, state=state[i]), t))
             except (ConvergenceError, InputError, np.linalg.LinAlgError):
                 continue
-        suspects = [f"{t!r} ({e:.1e})" for e, t in sorted(errors, key=lambda p: -p[0]) if e > TANGENT_ERROR]
+        return [f"{t!r} ({e:.1e})" for e, t in sorted(errors, key=lambda p: -p[0]) if e > TANGENT_ERROR]
+
+    def _warn_if_linear(self, result, tol, state, strain):
+        ratios = result.linear_rate(tol)
+        if ratios is None:
+            return
+        suspects = self._suspects(result.x, state)
         if not suspects:  # every tangent is right: a nearly singular tangent (a fold) converges linearly
             return
         warnings.warn(
@@ -592,6 +662,7 @@ class StrandModel:
         strain = float(strain)
         if not np.isfinite(strain):
             raise InputError("strain", f"must be finite, got {strain!r}")
+        _plausible.strand_strain("strain", strain, [m.eps_rupture for m in self.strand.materials])
         options = NewtonOptions.of(self.options if options is None else options, **newton_options)
         whole("passes", passes, 0)
         state = self.initial_state() if state is None else tuple(state)
@@ -675,11 +746,7 @@ class StrandModel:
 
     def _reactions(self, R) -> dict:
         """The support reactions: ``{"left": {dof: force}, "right": {...}}`` (N, N·m)."""
-        offsets = {name: int(self.offsets[i]) for i, name in enumerate(FIELDS)}
-        return {
-            end: {dof: float(R[self.supports.index(end, dof, self.bases, offsets)]) for dof in values}
-            for end, values in (("left", self.supports.left), ("right", self.supports.right))
-        }
+        return {end: {dof: float(R[i]) for dof, i in at.items()} for end, at in self._reaction_dofs.items()}
 
     def capacity_curve(self, max_strain=None, n_steps=None, **kwargs):
         """Force–strain curve up to rupture (see [`capacity_curve`][skcable.strand.capacity_curve])."""

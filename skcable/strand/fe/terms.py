@@ -112,15 +112,15 @@ class SectionTerm(Term):
 class FieldAssembly:
     """`skcable.fe.Assembly` over some of a model's fields, mapped into the model's dof vector:
     the fast way for a nonlinear term to integrate ``∫ Σ S_a B_a`` and ``∫ Bᵀ D B`` over the
-    strains it needs (a foundation on v, a contact on u and v), on the model's own bases.
+    strains it needs (a foundation on v, a contact on u and v), on the model's own bases. Arrays
+    at the quadrature points have the model's layout (n_elements, n_quad).
 
     Parameters
     ----------
     model : StrandModel
+        The model whose fields and dofs it maps.
     strains : sequence of (str, int)
         (field, derivative order 0, 1 or 2) over ``u``, ``v``, ``w``, ``phi``.
-
-    Arrays at the quadrature points have the model's layout (n_elements, n_quad).
     """
 
     def __init__(self, model, strains):
