@@ -182,7 +182,7 @@ def run(repeat: int) -> str:
     # the body's equilibrium; "cold": the same lines behind a model without start= (the
     # line-model protocol before warm starts), each line solved from its own start
     cold_system = cable.MooringSystem(system.body, [_ColdModel(m) for m in system.lines], system.anchors)
-    n_solves = 3 * _count_calls(system, "_state", lambda: system.equilibrium(force=force, moment=moment))
+    n_solves = 3 * _count_calls(system, "evaluate", lambda: system.equilibrium(force=force, moment=moment))
     body = ms.bodyList[0]
 
     def moorpy_system():
