@@ -13,6 +13,9 @@ Examples
 'f=[0.45, 0.9] Hz'
 >>> quantity("sag", range(20), "m")
 'sag=0..19 m'
+>>> from types import SimpleNamespace
+>>> attributes(SimpleNamespace(H=2.0, sag=0.5), {"H": "N", "sag": "m"})
+'H=2 N, sag=0.5 m'
 >>> counted((3, 2), "state")
 '3×2 states'
 """
@@ -21,7 +24,7 @@ from __future__ import annotations
 
 import numpy as np
 
-__all__ = ["LISTED", "counted", "quantity"]
+__all__ = ["LISTED", "attributes", "counted", "quantity"]
 
 #: Longest array printed value by value (a longer one prints as its range).
 LISTED = 8
@@ -53,6 +56,11 @@ def quantity(name: str, value, unit: str = "", digits: int = 6) -> str:
     else:
         text = f"{values.min():.{digits}g}..{values.max():.{digits}g}"
     return f"{name}={text} {unit}" if unit else f"{name}={text}"
+
+
+def attributes(result, units: dict) -> str:
+    """`quantity` of each attribute of ``result`` named in ``units`` (name -> unit), joined by commas."""
+    return ", ".join(quantity(name, getattr(result, name), unit) for name, unit in units.items())
 
 
 def counted(shape, noun: str) -> str:

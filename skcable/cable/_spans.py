@@ -58,7 +58,7 @@ from __future__ import annotations
 import numpy as np
 
 from skcable._checks import broadcast, nonnegative, real, scalar
-from skcable._show import counted, quantity
+from skcable._show import attributes, counted
 from skcable.cable._state import change_of_state, thermal_catenary
 from skcable.cable.conductors._inputs import normal, renamed, thermal_factor
 from skcable.cable.conductors._lines import reference_state
@@ -156,17 +156,9 @@ class TensionSection:
     def __repr__(self):
         states = np.shape(self.H)[:-1]
         where = f"{counted(np.shape(self.L0), 'span')}, {counted(states, 'state')}"
-        shown = ", ".join(
-            quantity(name, getattr(self, name), unit)
-            for name, unit in (
-                ("t", "°C"),
-                ("w", "N/m"),
-                ("H", "N"),
-                ("sag", "m"),
-                ("swing", "m"),
-                ("ruling_span", "m"),
-                ("H_ruling", "N"),
-            )
+        shown = attributes(
+            self,
+            {"t": "°C", "w": "N/m", "H": "N", "sag": "m", "swing": "m", "ruling_span": "m", "H_ruling": "N"},
         )
         return f"TensionSection({where}: {shown})"
 

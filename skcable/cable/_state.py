@@ -44,7 +44,7 @@ import numpy as np
 
 from skcable import _plausible
 from skcable._checks import broadcast, nonnegative, positive, real, scalar
-from skcable._show import counted, quantity
+from skcable._show import attributes, counted, quantity
 from skcable.cable._elastic import elastic_catenary
 from skcable.cable.conductors._inputs import load_plane, normal, renamed, thermal_factor
 from skcable.cable.conductors._parabola import parabola_states
@@ -90,19 +90,19 @@ class ThermalCatenary:
         return self.curve.residual()
 
     def __repr__(self):
-        shown = ", ".join(
-            quantity(name, getattr(self, name), unit)
-            for name, unit in (
-                ("k", ""),
-                ("H", "N"),
-                ("V_A", "N"),
-                ("V_B", "N"),
-                ("T_A", "N"),
-                ("T_B", "N"),
-                ("sag", "m"),
-                ("length", "m"),
-                ("stretched_length", "m"),
-            )
+        shown = attributes(
+            self,
+            {
+                "k": "",
+                "H": "N",
+                "V_A": "N",
+                "V_B": "N",
+                "T_A": "N",
+                "T_B": "N",
+                "sag": "m",
+                "length": "m",
+                "stretched_length": "m",
+            },
         )
         where = f"{counted(np.shape(self.H), 'scene')}: " if np.ndim(self.H) else ""
         return f"ThermalCatenary({where}{shown})"

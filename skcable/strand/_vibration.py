@@ -51,7 +51,7 @@ from skfem.helpers import dd, ddot
 
 from skcable._checks import TINY, nonnegative, positive, scalar, whole
 from skcable._eigen import BandPattern, farthest_from_one, first_lobe_positive, lowest_modes
-from skcable._show import counted, quantity
+from skcable._show import attributes, counted
 from skcable.errors import InputError
 
 __all__ = [
@@ -147,15 +147,8 @@ class BeamFrequencies:
         self.__dict__.update(values)
 
     def __repr__(self):
-        shown = ", ".join(
-            quantity(name, getattr(self, name), unit)
-            for name, unit in (
-                ("f", "Hz"),
-                ("EI", "N·m²"),
-                ("N", "N"),
-                ("length", "m"),
-                ("mass_per_length", "kg/m"),
-            )
+        shown = attributes(
+            self, {"f": "Hz", "EI": "N·m²", "N": "N", "length": "m", "mass_per_length": "kg/m"}
         )
         return f"BeamFrequencies({self.ends}, {counted([len(self.f)], 'mode')}: {shown})"
 
@@ -327,15 +320,8 @@ class StrandFrequencies:
         self.__dict__.update(values)
 
     def __repr__(self):
-        shown = ", ".join(
-            quantity(name, getattr(self, name), unit)
-            for name, unit in (
-                ("f_stick", "Hz"),
-                ("f_slip", "Hz"),
-                ("drop", ""),
-                ("EI_stick", "N·m²"),
-                ("EI_slip", "N·m²"),
-            )
+        shown = attributes(
+            self, {"f_stick": "Hz", "f_slip": "Hz", "drop": "", "EI_stick": "N·m²", "EI_slip": "N·m²"}
         )
         modes = counted([len(self.f_stick)], "mode")
         return f"StrandFrequencies(principal axis {self.axis + 1}, {modes}: {shown})"
