@@ -41,6 +41,12 @@ def namespace(*values):
     return scalar_math
 
 
+def power_of_two_near(size, xp=scalar_math):
+    """A power of two within a factor two of ``size`` (> 0, float or array): dividing by it
+    is exact and brings ``size`` to order one. ``xp`` is the back end (`namespace`)."""
+    return xp.ldexp(0.5, xp.frexp(size)[1])
+
+
 #: The back ends by the name a pickle stores (a module does not pickle).
 _BACKENDS = {"numpy": np, "math": scalar_math}
 

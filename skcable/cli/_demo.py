@@ -93,8 +93,8 @@ def _run(args) -> int:
     for line in _the_point(curves):
         print(line)
     print(
-        f"open {out / 'stick-slip.pvd'} in ParaView (Warp By Vector on 'displacement'); figures: {out}/*.png "
-        f"({_STIFFNESS}: the secant stiffness beside the force)"
+        f"open {out / 'stick-slip.pvd'} in ParaView (Warp By Vector on 'transverse_displacement_m'); "
+        f"figures: {out}/*.png ({_STIFFNESS}: the secant stiffness beside the force)"
     )
     problem = "; ".join(filter(None, [stopped(curves, out), *problems]))
     if problem:

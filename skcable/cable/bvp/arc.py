@@ -585,5 +585,6 @@ class ArcSolution(FiniteElementSolution):
         return (
             f"ArcSolution(span={self.span:g}, dh={self.dh:g}, {self.mesh.t.shape[1]} elements: "
             f"H_A={self.H_A:.9g}, V_A={self.V_A:.9g}, H_B={self.H_B:.9g}, V_B={self.V_B:.9g}, "
-            f"length={self.length:.9g}, iterations={self.iterations})"
+            f"T_A={self.T_A:.9g}, T_B={self.T_B:.9g}, length={self.length:.9g} (N, m), "
+            f"iterations={self.iterations})"
         )
