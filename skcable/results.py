@@ -72,32 +72,15 @@ class CableResult(Protocol):
     def to_vtk(self, path, n: int = 201) -> Path: ...
 
 
-class _Sampled(Protocol):
-    """What `ProfileMixin` needs of the class it is mixed into."""
-
-    @property
-    def H_A(self) -> float: ...
-    @property
-    def H_B(self) -> float: ...
-    @property
-    def T_A(self) -> float: ...
-    @property
-    def T_B(self) -> float: ...
-    @property
-    def length(self) -> float: ...
-
-    def xy(self, s) -> np.ndarray: ...
-    def T_of_s(self, s) -> np.ndarray: ...
-
-
 class ProfileMixin:
-    """``profile``, ``to_frame`` and a one-row ``tensions`` from a class's ``xy`` and ``T_of_s``."""
+    """``profile``, ``to_frame`` and a one-row ``tensions`` of a `CableResult`, from its ``xy`` and
+    ``T_of_s`` (the class it is mixed into)."""
 
-    def profile(self: _Sampled, n: int = 201) -> np.ndarray:
+    def profile(self: CableResult, n: int = 201) -> np.ndarray:
         """Positions ``(n, 2)`` (m) at ``n`` points evenly spaced in unstretched arc length."""
         return np.asarray(self.xy(np.linspace(0.0, float(self.length), whole("n", n, 2))), dtype=float)
 
-    def to_frame(self: _Sampled, n: int = 201) -> pd.DataFrame:
+    def to_frame(self: CableResult, n: int = 201) -> pd.DataFrame:
         """``n`` profile samples evenly spaced in unstretched arc length: columns ``s`` (m),
         ``x``, ``y`` (m) and ``T`` (N)."""
         import pandas as pd
@@ -108,7 +91,7 @@ class ProfileMixin:
             {"s": s, "x": xy[:, 0], "y": xy[:, 1], "T": np.asarray(self.T_of_s(s), dtype=float)}
         )
 
-    def tensions(self: _Sampled) -> pd.DataFrame:
+    def tensions(self: CableResult) -> pd.DataFrame:
         """One row (a uniform cable): ``segment, length, T_lower, T_upper, H_lower, H_upper`` (SI),
         the tensions and horizontal tensions at its ends towards A and B."""
         import pandas as pd
