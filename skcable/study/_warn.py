@@ -5,6 +5,7 @@ from __future__ import annotations
 import sys
 import warnings
 from pathlib import Path
+from types import FrameType
 
 __all__ = ["warn"]
 
@@ -13,7 +14,8 @@ _HERE = Path(__file__).resolve().parent
 
 def warn(message: str, category: type[Warning]) -> None:
     """`warnings.warn` with the stack level of the first caller outside ``skcable/study``."""
-    frame, level = sys._getframe(1), 2  # level 2: warn's caller
+    frame: FrameType | None = sys._getframe(1)
+    level = 2  # warn's caller
     while frame is not None and Path(frame.f_code.co_filename).resolve().parent == _HERE:
         frame, level = frame.f_back, level + 1
     warnings.warn(message, category, stacklevel=level)

@@ -164,6 +164,7 @@ class Cache:
             counts the others in one more warning).
         """
         path = self.entry_path(key)
+        problem: str | None
         try:
             raw = path.read_bytes()
         except FileNotFoundError:

@@ -24,11 +24,15 @@ import os
 import secrets
 import statistics
 import sys
+from typing import TYPE_CHECKING
 
 from skcable.errors import InputError
 from skcable.study import tasks
 from skcable.study._warn import warn
 from skcable.study.spawn import main_problem
+
+if TYPE_CHECKING:  # pragma: no cover - distributed is imported where a cluster starts
+    from distributed import Client, LocalCluster
 
 __all__ = [
     "CLUSTER_COST",
@@ -221,7 +225,8 @@ class Dask:
 
     def __init__(self, scheduler: str | None = None, n_workers: int = 2, progress: bool = False):
         self.scheduler, self.n_workers, self.progress = scheduler, n_workers, progress
-        self.client = self.cluster = None
+        self.client: Client | None = None
+        self.cluster: LocalCluster | None = None
         where = f"the scheduler at {scheduler}" if scheduler is not None else "a local cluster"
         #: Where the cases ran (a study table's ``attrs["executor"]``).
         self.description = f"dask, {where}"
@@ -356,6 +361,7 @@ class Auto:
             if done < len(todo) and self._switch(len(todo) - done):
                 self.dask = self._start()
         if done < len(todo):
+            assert self.dask is not None  # the serial loop stopped on a started cluster
             self.dask.map(model, todo[done:], finish)
 
     def _start(self) -> Dask | None:

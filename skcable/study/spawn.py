@@ -41,7 +41,7 @@ def _stack(thread_id: int | None = None):
 
 def _module_frame(namespace: dict):
     """The frame running the module code of ``namespace`` (main thread first), or None."""
-    threads = [None] if threading.current_thread() is threading.main_thread() else []
+    threads: list[int | None] = [None] if threading.current_thread() is threading.main_thread() else []
     threads.append(threading.main_thread().ident)
     for thread in threads:
         for frame in _stack(thread):
@@ -89,7 +89,9 @@ def guarded(source: str, line: int) -> bool:
     except (SyntaxError, ValueError):
         return False
     for node in ast.walk(tree):
-        kind = _is_guard(node.test) if isinstance(node, ast.If) else None
+        if not isinstance(node, ast.If):
+            continue
+        kind = _is_guard(node.test)
         branch = node.body if kind == "==" else node.orelse if kind == "!=" else []
         if branch and branch[0].lineno <= line <= (branch[-1].end_lineno or branch[-1].lineno):
             return True
