@@ -140,7 +140,7 @@ def secant_stiffness(curves, labels=None, ax=None, *, at: float | None = None):
     for curve, label in zip(curves, _labels(curves, labels), strict=True):
         label = label or _describe(curve)
         eps, EA = curve.strain[1:], curve.model.EA
-        reached = at is not None and 0 < at <= eps[-1]
+        reached = at is not None and eps.size > 0 and 0 < at <= eps[-1]
         if reached:
             label += f": {curve.secant(at) / EA:.3f} at ε = {at:g}"
         (line,) = ax.plot(eps, [curve.secant(e) / EA for e in eps], label=label)
