@@ -29,6 +29,7 @@ import numpy as np
 
 from skcable._checks import positive, real, require, scalar, whole
 from skcable._newton2 import solve2
+from skcable._show import counted, quantity
 from skcable._xp import power_of_two_near
 from skcable.cable.solution import ACCEPT
 from skcable.errors import ConvergenceError, InputError
@@ -111,6 +112,17 @@ class Funicular:
     loads: np.ndarray
     lengths: np.ndarray
     history: list
+
+    def __repr__(self) -> str:
+        shown = ", ".join(
+            (
+                quantity("T", self.T, "N"),
+                quantity("angles", self.angles, "rad"),
+                quantity("lengths", self.lengths, "m"),
+                quantity("B", self.nodes[-1], "m"),
+            )
+        )
+        return f"Funicular({counted([len(self.T)], 'segment')}: {shown})"
 
     def to_vtk(self, path):
         """Write the polygon as VTK (see `skcable.io.funicular_mesh`); returns the path."""
@@ -265,6 +277,18 @@ class FunicularVertical:
     nodes: np.ndarray
     loads: np.ndarray
     constraint: tuple = ("H", None)
+
+    def __repr__(self) -> str:
+        shown = ", ".join(
+            (
+                quantity("H", self.H, "N"),
+                quantity("V_A", self.V_A, "N"),
+                quantity("V_B", self.V_B, "N"),
+                quantity("T", self.T, "N"),
+                quantity("B", self.nodes[-1], "m"),
+            )
+        )
+        return f"FunicularVertical({counted([len(self.T)], 'segment')}: {shown})"
 
     def to_vtk(self, path):
         """Write the polygon as VTK (see `skcable.io.funicular_mesh`); returns the path."""

@@ -60,6 +60,7 @@ from typing import Any
 import numpy as np
 
 from skcable._checks import broadcast, nonnegative, real, scalar
+from skcable._show import attributes, counted
 from skcable.cable._state import change_of_state, thermal_catenary
 from skcable.cable.conductors._inputs import normal, renamed, thermal_factor
 from skcable.cable.conductors._lines import reference_state
@@ -176,7 +177,13 @@ class TensionSection:
         return self.sag_ruling / self.sag - 1.0
 
     def __repr__(self):
-        return f"TensionSection(n_spans={np.shape(self.H)[-1]}, shape={np.shape(self.H)[:-1]})"
+        states = np.shape(self.H)[:-1]
+        where = f"{counted(np.shape(self.L0), 'span')}, {counted(states, 'state')}"
+        shown = attributes(
+            self,
+            {"t": "°C", "w": "N/m", "H": "N", "sag": "m", "swing": "m", "ruling_span": "m", "H_ruling": "N"},
+        )
+        return f"TensionSection({where}: {shown})"
 
 
 class _Section:

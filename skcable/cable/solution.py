@@ -24,7 +24,8 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 
 from skcable._checks import whole
-from skcable._xp import namespace
+from skcable._show import counted, quantity
+from skcable._xp import PicklesBackend, namespace
 from skcable.cable._special import largest_abs
 from skcable.errors import ConvergenceError, InputError
 from skcable.results import ProfileMixin
@@ -47,7 +48,7 @@ def matrix_2x2(k11, k12, k21, k22):
     )
 
 
-class CableSolution:
+class CableSolution(PicklesBackend):
     """Base of the suspended-cable solutions (`skcable.results.CableResult`).
 
     Subclasses define ``H, V_A, V_B, T_A, T_B, length, sag, x_low, y_low``,
@@ -152,8 +153,12 @@ class CableSolution:
 
     def __repr__(self):
         name = type(self).__name__
-        if np.ndim(self.H) != 0:
-            return f"{name}(shape={np.shape(self.H)}, constraint={self.constraint[0]!r})"
+        if np.ndim(self.H) != 0:  # every scene's numbers, or their ranges (`skcable._show`)
+            shown = ", ".join(
+                quantity(k, getattr(self, k)) for k in _shown(self) if k in _FORCES | {"length", "sag"}
+            )
+            scenes = counted(np.shape(self.H), "scene")
+            return f"{name}({scenes}, constraint {self.constraint[0]!r}: {shown})"
         # instance attributes (H, V_A, length of the elastic forms) as well as the class's
         shown = ", ".join(f"{k}={float(getattr(self, k)):.9g}" for k in _shown(self))
         return f"{name}(span={self.span:g}, dh={self.dh:g}, w={self.w:g}: {shown})"

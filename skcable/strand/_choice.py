@@ -24,6 +24,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from skcable._checks import positive
+from skcable._show import counted, quantity
 from skcable.errors import InputError
 
 __all__ = ["Analysis", "ClosedFormCurve", "analyse", "axial_force"]
@@ -58,6 +59,23 @@ class ClosedFormCurve:
     def slip_fraction(self) -> np.ndarray:
         return np.zeros_like(self.strain)
 
+    def __repr__(self) -> str:
+        name = getattr(self.strand, "name", "") or "strand"
+        return f"ClosedFormCurve({name!r}, {counted([len(self.strain)], 'point')}: {key_numbers(self)})"
+
+
+def key_numbers(curve) -> str:
+    """The end of a capacity curve (closed form or FE), its K_Leq and toughness, as ``name=value unit``."""
+    last = "rupture" if curve.ruptured else "last"
+    return ", ".join(
+        (
+            quantity(f"{last}_strain", curve.strain[-1]),
+            quantity(f"{last}_force", curve.force[-1], "N"),
+            quantity("K_Leq", curve.K_Leq, "N"),
+            quantity("toughness", curve.toughness, "N"),
+        )
+    )
+
 
 def first_wire_strain(strand, attribute: str) -> float:
     """The strand strain at which the first intact wire reaches its material's limit strain
@@ -90,6 +108,9 @@ class Analysis:
     reason: str
     curve: object
     stick: object = None
+
+    def __repr__(self) -> str:
+        return f"Analysis({self.model}: {key_numbers(self.curve)}; {self.reason})"
 
 
 def analyse(

@@ -18,6 +18,7 @@ import numpy as np
 
 from skcable import _plausible
 from skcable._checks import positive
+from skcable._show import counted, quantity
 from skcable.errors import ConvergenceError, InputError
 from skcable.fe.continuation import StepControl
 
@@ -190,11 +191,15 @@ class StepResult:
     def __repr__(self) -> str:
         peak = float(np.max(np.abs(self.curvature))) if self.curvature.size else 0.0
         top = float(np.max(self.wire_strain)) if self.wire_strain.size else 0.0
-        return (
-            f"StepResult(strain={self.strain:.6g}, force={self.force:.6g} N, slip_fraction="
-            f"{self.slip_fraction:.3f}, peak_curvature={peak:.4g} 1/m, max_wire_strain={top:.4g}, "
-            f"iterations={self.iterations})"
+        shown = (
+            quantity("strain", self.strain),
+            quantity("force", self.force, "N"),
+            quantity("slip_fraction", self.slip_fraction),
+            quantity("peak_curvature", peak, "1/m"),
+            quantity("max_wire_strain", top),
+            quantity("iterations", self.iterations),
         )
+        return f"StepResult({', '.join(shown)})"
 
 
 @dataclass(repr=False)
@@ -236,15 +241,22 @@ class CapacityCurve:
         return [float(s.strain) for s in self.steps if s.shifted]
 
     def __repr__(self) -> str:
-        end = "ruptured" if self.ruptured else f"stopped: {self.failure}" if self.failure else "not ruptured"
+        last = "rupture" if self.ruptured else "last"
+        shown = [quantity(f"{last}_strain", self.strain[-1]), quantity(f"{last}_force", self.force[-1], "N")]
         try:
-            k = f"{self.K_Leq:.6g} N"
+            shown.append(quantity("K_Leq", self.K_Leq, "N"))
         except (ZeroDivisionError, FloatingPointError, IndexError):
-            k = "n/a"
+            shown.append("K_Leq=n/a")
+        shown += [
+            quantity("toughness", self.toughness, "N"),
+            quantity("max_slip_fraction", np.max(self.slip_fraction)),
+            quantity("cutbacks", self.cutbacks),
+            quantity("snaps", len(self.snaps)),
+        ]
+        end = "ruptured" if self.ruptured else f"stopped: {self.failure}" if self.failure else "not ruptured"
+        slip = getattr(getattr(self.model, "layout", None), "slip", "?")
         return (
-            f"CapacityCurve({len(self.steps)} steps to strain {self.strain[-1]:.6g}, force "
-            f"{self.force[-1]:.6g} N, K_Leq={k}, max slip fraction {np.max(self.slip_fraction):.3f}, "
-            f"{end}, cutbacks={self.cutbacks}, snaps={len(self.snaps)})"
+            f"CapacityCurve(slip {slip!r}, {counted([len(self.steps)], 'step')}, {end}: {', '.join(shown)})"
         )
 
     @cached_property

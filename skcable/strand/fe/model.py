@@ -217,13 +217,14 @@ class StrandModel:
         )
 
     def __reduce__(self):
-        """Pickled as the data it was built from (the bases and tables are rebuilt)."""
+        """Pickled as the data it was built from (the bases and tables are rebuilt; the name of
+        the built-in physics kept)."""
         a = self._init
         kwargs = dict(
             mesh=a["mesh"], grading=a["grading"], physics=a["physics"], terms=a["terms"],
-            supports=a["supports"], element=a["element"], options=a["options"],
+            supports=a["supports"], element=a["element"], options=a["options"], mu=a["mu"],
         )  # fmt: skip
-        return (_rebuild, (type(self), a["strand"], a["length"], kwargs))
+        return (_rebuild, (type(self), a["strand"], a["length"], kwargs), {"damage_load": self.damage_load})
 
     # --- set-up --------------------------------------------------------------
     def _mesh(self, n_elements, mesh, grading):
