@@ -20,13 +20,10 @@ on a seabed of any shape with Coulomb friction. One concern per module:
 Data flow one way: ``inputs → driver → (mesh, start, problem ⇄ contact) → iterate → solution``.
 """
 
-from skcable.cable.bvp.line.contact import seabed_of as _seabed  # noqa: F401 - the name of earlier releases
 from skcable.cable.bvp.line.driver import LineBVPSolver
 from skcable.cable.bvp.line.inputs import BVPSegment
-from skcable.cable.bvp.line.inputs import segments_of as _segments  # noqa: F401 - as _seabed
 from skcable.cable.bvp.line.model import solve_line_bvp
 from skcable.cable.bvp.line.problem import LineProblem, LineState
 from skcable.cable.bvp.line.solution import LineBVPSolution
-from skcable.cable.bvp.line.start import closed_form_start as _guess  # noqa: F401 - as _seabed
 
 __all__ = ["BVPSegment", "LineBVPSolution", "LineBVPSolver", "LineProblem", "LineState", "solve_line_bvp"]

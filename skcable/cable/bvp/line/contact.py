@@ -147,6 +147,9 @@ class ContactRows:
         The share of each node's weight beyond the slack stretch (1 where it slides).
     external_y : ndarray
         The external vertical load at each node's y row (N).
+    switch : ndarray or None
+        ``c_i`` of the active-set test ``λ > c g`` where it differs from ``stiffness`` (the rows
+        themselves, ``c g = 0`` or ``λ = 0``, have the same Newton step for any ``c > 0``).
     """
 
     nodes: np.ndarray
@@ -156,6 +159,7 @@ class ContactRows:
     mu: np.ndarray
     sliding_share: np.ndarray
     external_y: np.ndarray
+    switch: np.ndarray | None = None
 
     def terms(self, z, R0) -> ContactTerms:
         """Per contact node: slope, curvature, gap, multiplier λ, active flag."""
@@ -166,7 +170,7 @@ class ContactRows:
         Rx, Ry = R0[i], R0[N + i]
         norm2 = 1.0 + bp * bp
         lam = (Ry - bp * Rx) / norm2
-        active = lam > self.stiffness * gap
+        active = lam > (self.stiffness if self.switch is None else self.switch) * gap
         return ContactTerms(bp, bpp, gap, lam, active, Rx, Ry)
 
     def rows(self, F, terms: ContactTerms) -> None:

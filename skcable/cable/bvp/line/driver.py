@@ -11,7 +11,11 @@ each solve (`skcable.cable.bvp.line.iterate.solve_on`) starts from the last stag
    (the next level starts from scratch); the finest level's failure is final.
 2. **First solve** (`LineBVPSolver.first`): frictionless, on a mesh graded by the closed-form
    start's angle (`skcable.cable.bvp.line.mesh.start_nodes`), from that start
-   (`skcable.cable.bvp.line.start.closed_form_start`).
+   (`skcable.cable.bvp.line.start.closed_form_start`, the uniform line), else from the
+   segment-wise closed form (`skcable.cable.bvp.line.start.segmented_start`), else from the
+   first start with the contact nodes switching by the line's tension (`LineBVPSolver.switched`:
+   a taut line's residual forces at its start can exceed the switch of a line bent by its
+   weight).
 3. **Passes of grading** (`LineBVPSolver.graded`): the mesh graded by the last solution's angle
    (`skcable.cable.bvp.line.mesh.graded_nodes`), again while the elements of the bends could
    shrink no more than ``REFINEMENT`` times at one pass (the start then puts the touchdown a
@@ -26,16 +30,18 @@ each solve (`skcable.cable.bvp.line.iterate.solve_on`) starts from the last stag
    balance gives (``LineBVPSolution.s_touchdown``, ``s_landing``), ``fit_touchdown`` passes
    while it moves more than 1e-9 of the length; and the end of the slack stretch moved
    (`skcable.cable.bvp.line.slack.next_slack_end`) until the tension past it is zero to ``rtol``
-   of the total load, `SLACK_PASSES` more at most.
+   of the total load, `SLACK_PASSES` more at most, then `SLACK_PASSES` secant steps at most
+   (`LineBVPSolver.secant_slack`); with friction, graded and fitted once more where the mesh is
+   too coarse for the line with friction (`LineBVPSolver.regraded`).
 6. **Checks** (`LineBVPSolver.checked`): the friction that holds a slack stretch on a slope is
    at most μN, every number finite, the discrete line not in compression.
 
 **Retries.** Every solve on a new mesh starts from the last solution interpolated onto it, else
 from the closed-form start (on a nearly L-shaped line the bend at the touchdown has the radius
 H/w, a thousandth of the length, and the interpolated bend of a coarser or differently graded
-mesh can start Newton farther off than the closed form does). Each retry is an alternative
-passed to `skcable.cable.bvp.line.iterate.first_success`, which raises the first alternative's
-error when every one fails.
+mesh can start Newton farther off than the closed form does), else from the segment-wise one.
+Each retry is an alternative passed to `skcable.cable.bvp.line.iterate.first_success`, which
+raises the first alternative's error when every one fails.
 """
 
 from __future__ import annotations
@@ -61,7 +67,14 @@ from skcable.cable.bvp.line.slack import (
     tension_zero,
 )
 from skcable.cable.bvp.line.solution import LineBVPSolution
-from skcable.cable.bvp.line.start import closed_form_start, start_form
+from skcable.cable.bvp.line.start import (
+    closed_form_start,
+    on_dofs,
+    segmented_solution,
+    segmented_start,
+    slack_end_of,
+    start_form,
+)
 from skcable.errors import ConvergenceError, InputError
 
 __all__ = ["GRADE_PASSES", "LineBVPSolver"]
@@ -111,17 +124,34 @@ class LineBVPSolver:
         tension = solution.tension(np.clip(problem.tbasis.doflocs[0], 0.0, self.length))
         return np.concatenate([xy[:, 0], xy[:, 1], tension])
 
+    def switched(self, problem, z0) -> LineBVPSolution:
+        """One solve of ``problem`` from ``z0`` with its contact nodes switching by the line's
+        tension (`LineProblem.with_tension_switch`); a `ConvergenceError` without contact."""
+        other = problem.with_tension_switch(z0)
+        if other is None:
+            raise ConvergenceError("solve_line_bvp: no contact rows to switch by tension", [])
+        return self.run(other, z0)
+
+    def from_segments(self, problem) -> LineBVPSolution:
+        """The line of ``problem`` from the segment-wise closed-form start (`segmented_start`);
+        a `ConvergenceError` where there is none."""
+        z0 = segmented_start(problem)
+        if z0 is None:
+            raise ConvergenceError("solve_line_bvp: no segment-wise closed form of this line", [])
+        return self.run(problem, z0)
+
     def rerun(self, problem, solution) -> LineBVPSolution:
         """The line on ``problem``'s mesh from ``solution`` interpolated onto it, else from the
-        closed-form start."""
+        closed-form start, else from the segment-wise one."""
         return first_success(
             lambda: self.run(problem, self.restart(solution, problem)),
             lambda: self.run(problem, closed_form_start(problem)),
+            lambda: self.from_segments(problem),
         )
 
     def edges(self, solution):
         """The touchdown and the landing to put nodes at (none without fitting or contact)."""
-        if not (self.scene.fit_touchdown and solution.touches_beyond_anchor()):
+        if not (self.scene.fit_touchdown and solution.s_touchdown > 0):
             return []
         return [solution.s_touchdown] + ([solution.s_landing] if solution.s_landing > 0 else [])
 
@@ -132,7 +162,49 @@ class LineBVPSolver:
 
     # --- the stages ---------------------------------------------------------------------------
     def solve(self) -> LineBVPSolution:
-        """The line on the scene's mesh: one level, or nested levels (module docstring)."""
+        """The line on the scene's mesh: one level, or nested levels (module docstring, 1); a
+        failure where the slack stretch ends at a clump weight on the seabed refused
+        (`clump_at_slack_end`)."""
+        try:
+            return self.levels()
+        except ConvergenceError:
+            clump = self.clump_at_slack_end()
+            if clump is None:
+                raise
+            raise InputError(
+                "point_loads",
+                f"the slack stretch near the anchor ends at the point load at s = {clump:.6g} m, which "
+                "rests on the seabed with its friction only partly mobilised: this BVP does not model "
+                "that state (cable.Line solves it in closed form)",
+            ) from None
+
+    def clump_at_slack_end(self):
+        """The arc length (m) of the downward point load where the segment-wise closed form's
+        slack stretch ends, or None (no friction, no such load, or no closed form).
+
+        A clump weight resting on the seabed near the anchor can end the slack stretch itself:
+        the tension jumps there by the friction the clump mobilises, only partly (the share of
+        ``μN`` that the pull needs). The BVP's slack stretch ends at a node where the friction is
+        fully mobilised beyond it (`skcable.cable.bvp.line.slack`): the tension past its end has
+        no zero then (negative for every end before the clump, positive after it), and the solve
+        fails. `skcable.cable.Line` (Jonkman's grounded pieces, applied piece by piece) gives
+        that state.
+        """
+        sc = self.scene
+        loads = [s for s, P in sc.point_loads if P > 0]
+        if not (sc.friction > 0 and sc.seabed is not None and loads):
+            return None
+        line = segmented_solution(self.problem(COARSE), sc.friction)
+        if line is None:
+            return None
+        step = 1e-9 * self.length
+        for s in loads:
+            if line.T_of_s(s - step) <= 0.0 < line.T_of_s(s + step):
+                return float(s)
+        return None
+
+    def levels(self) -> LineBVPSolution:
+        """One level, or nested levels (module docstring, 1), checked."""
         n, bed = self.scene.n_elements, self.scene.seabed
         if n > 2 * COARSE and bed is not None:
             probe = self.problem(n, mu=0.0)
@@ -175,15 +247,38 @@ class LineBVPSolver:
             solution = self.rerun(self.problem(n, _with(s0), s0), solution)
         if start is None and self.scene.friction > 0:
             solution, s0, fitted = self.with_friction(n, solution, graded)
+            solution = self.fitted(n, solution, s0, fitted, graded)
+            return self.regraded(n, solution)
+        return self.fitted(n, solution, s0, fitted, graded)
+
+    def regraded(self, n, solution) -> LineBVPSolution:
+        """The line with friction graded again and fitted again, where its mesh (graded by the
+        frictionless line) is too coarse for it: where its own grading asks for elements more
+        than ``REFINEMENT`` times smaller somewhere (a heavy chain whose friction holds a light
+        rope: the bend at the touchdown tightened from 0.4 m to 6 cm of radius)."""
+        if not (self.scene.fit_touchdown and graded_nodes(solution, n, self.fixed)[1]):
+            return solution
+        s0, fitted, mu = solution.problem.slack_end, self.edges(solution), self.scene.friction
+        solution, graded = self.graded(n, solution, fitted, s0, mu)
         return self.fitted(n, solution, s0, fitted, graded)
 
     def first(self, n) -> LineBVPSolution:
         """The frictionless line from the closed-form start, on a mesh graded by it when the
-        touchdown is fitted."""
+        touchdown is fitted; from the segment-wise closed form where that fails, or where it
+        leaves the discrete line in compression (a spurious branch: a clump weight at the bottom
+        of a U-shaped line under a uniform start) and the segment-wise start does not."""
         problem = self.problem(n, mu=0.0)
         if self.scene.fit_touchdown:
             problem = self.problem(n, mu=0.0, nodes_at=start_nodes(start_form(problem), self.fixed, n))
-        return self.run(problem, closed_form_start(problem))
+        solution = first_success(
+            lambda: self.run(problem, closed_form_start(problem)),
+            lambda: self.from_segments(problem),
+            lambda: self.switched(problem, closed_form_start(problem)),
+        )
+        if self.compressed(solution):
+            other = first_success(lambda: self.from_segments(problem), lambda: solution)
+            solution = solution if self.compressed(other) else other
+        return solution
 
     def graded(self, n, solution, fitted, s0, mu):
         """Passes of grading by the last solution's angle (module docstring, 3): the solution and
@@ -209,7 +304,16 @@ class LineBVPSolver:
             edges = self.edges(frictionless)
             return self.rerun(self.problem(n, _with(s0, edges), s0, friction, graded), frictionless), edges
 
-        solution, fitted = first_success(plain, at_touchdown)
+        def closed_form():  # the friction's own closed form, its slack stretch, where it has one
+            line = segmented_solution(frictionless.problem, friction)
+            if line is None:
+                raise ConvergenceError("solve_line_bvp: no segment-wise closed form of this line", [])
+            end = slack_end_of(line, self.length) if anchored else 0.0
+            problem = self.problem(n, _with(end, self.edges(frictionless)), end, friction, graded)
+            return self.run(problem, on_dofs(problem, line)), self.edges(frictionless), end
+
+        solution, fitted, *end = first_success(plain, at_touchdown, closed_form)
+        s0 = end[0] if end else s0
         if s0 == 0 and anchored:
             s0 = tension_zero(solution, 1e3 * self.scene.rtol * solution.problem.load_scale)
         return solution, s0, fitted
@@ -228,7 +332,9 @@ class LineBVPSolver:
                 break
             problem = self.problem(n, _with(s0, fitted), s0, self.scene.friction, graded)
             solution = self.rerun(problem, solution)
-        if s0 > 0:
+        if s0 > 0 and not abs(slack_tension(solution)[0]) <= slack_tol:
+            solution = self.secant_slack(n, solution, fitted, graded, slack_tol)
+        if solution.problem.slack_end > 0:
             g, _ = slack_tension(solution)
             if not abs(g) <= slack_tol:
                 raise ConvergenceError(
@@ -236,6 +342,36 @@ class LineBVPSolver:
                     f"(tension {g:.3g} N there after {len(tried)} updates)",
                     solution.history,
                 )
+        return solution
+
+    def secant_slack(self, n, solution, fitted, graded, tol) -> LineBVPSolution:
+        """More passes on the end of the slack stretch, each a secant step on the last two (end,
+        tension past it) pairs, bracketed as in `next_slack_end`, with the touchdown fitted
+        until it settles as well (`SLACK_PASSES` plus ``fit_touchdown`` at most).
+
+        The Newton step of the first passes takes the tension's growth with the end from the
+        friction alone, ``μ w``; where the end moves the whole line (a compliant rope at the
+        anchor under a heavy chain: H grew from 850 N to 1480 N while the end moved 2.5 m) the
+        tension past it falls by a constant factor per pass instead, and the secant restores
+        the superlinear convergence. Where the stretch vanishes (the secant passes the anchor),
+        the touchdown is fitted anew for the line without it."""
+        pairs = []
+        for _ in range(SLACK_PASSES + self.scene.fit_touchdown):
+            fitted, moved, _ = self.moved_edges(solution, fitted, True)
+            s0, step = solution.problem.slack_end, False
+            if s0 > 0:
+                g, slope = slack_tension(solution)
+                if abs(g) > tol:
+                    pairs.append((s0, g))
+                    if len(pairs) > 1:
+                        (s1, g1), (s2, g2) = pairs[-2:]
+                        secant = (g2 - g1) / (s2 - s1) if s2 != s1 else 0.0
+                        slope = secant if secant > 0 else slope
+                    s0, step = next_slack_end(pairs, slope, solution.s_touchdown), True
+            if not (step or moved):
+                break
+            problem = self.problem(n, _with(s0, fitted), s0, self.scene.friction, graded)
+            solution = self.rerun(problem, solution)
         return solution
 
     def moved_edges(self, solution, fitted, look):

@@ -12,7 +12,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from skcable._checks import nonnegative, positive, real, require, whole
+from skcable._checks import nonnegative, positive, real, require, scalar, whole
 from skcable.cable.bvp.line.contact import Seabed, seabed_of
 from skcable.errors import InputError
 
@@ -144,7 +144,7 @@ def scene(
     whole("n_elements", n_elements, 1)
     whole("fit_touchdown", fit_touchdown, 0, 10)
     whole("max_iter", max_iter, 1)
-    rtol = positive("rtol", rtol)
+    rtol = scalar("rtol", positive("rtol", rtol))
     return Scene(
         span, dh, segs, loads, bed, friction, int(n_elements), int(fit_touchdown), rtol, int(max_iter)
     )

@@ -69,6 +69,7 @@ def _damped(problem, z0, rtol, max_iter):
         max_iter=max_iter,
         stagnation_window=8,
         name="solve_line_bvp",
+        floor=problem.merit_floor,
     )
     return result.x, result.state, list(result.history)
 

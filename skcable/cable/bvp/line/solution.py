@@ -67,7 +67,6 @@ class LineBVPSolution:
 
     def __init__(self, problem: LineProblem, z, history, state: LineState):
         self.problem, self.dofs, self.state = problem, z, state
-        self._problem = problem  # the name of earlier releases
         self.span, self.dh, self.length = problem.span, problem.dh, problem.L
         self.mesh, self.basis = problem.mesh, problem.basis
         self.history = [float(h) for h in history]
@@ -167,8 +166,9 @@ class LineBVPSolution:
         order = np.argsort(self.mesh.p[0, self.mesh.t].mean(axis=0))
         return np.concatenate([[0.0], np.cumsum(self.problem.element_weight[order])])
 
-    def _transition(self, balance, near):
-        """Root of ``balance(s)`` between the mesh nodes around ``near`` (a contact node)."""
+    def _transition(self, balance, near, required=True):
+        """Root of ``balance(s)`` between the mesh nodes around ``near`` (a contact node); None
+        where it changes sign nowhere there and the root is not ``required``."""
         s_nodes = self.mesh.p[0]
         h = np.max(np.diff(s_nodes))
         grid = s_nodes[(s_nodes >= near - 2 * h) & (s_nodes <= near + 2 * h)]
@@ -177,6 +177,8 @@ class LineBVPSolution:
         if zero.size:
             return float(grid[zero[0]])
         change = np.flatnonzero(np.sign(values[:-1]) != np.sign(values[1:]))
+        if not change.size and not required:
+            return None
         if not change.size:
             raise ConvergenceError(
                 "solve_line_bvp: no sign change of the vertical balance near the contact edge", self.history
@@ -192,15 +194,21 @@ class LineBVPSolution:
     @cached_property
     def _touchdown(self):
         """(s, x) of the last touchdown: ``V_B - (W - W(s)) = H b'(x(s))`` (the suspended part's
-        vertical balance, the line leaving the seabed tangentially)."""
-        if not self.in_contact[self.contact_s > 0].any():
+        vertical balance, the line leaving the seabed tangentially). Where only the anchor's node
+        presses on the seabed, the touchdown may lie before the first node: it is sought there
+        (0 where the balance has no root near the anchor)."""
+        anchor_only = self.anchor_on_seabed and self.in_contact.size and self.in_contact[0]
+        if not (self.touches_beyond_anchor() or anchor_only):
             return 0.0, 0.0
         total = self.weight_before(self.length)
 
         def balance(s):
             return self.V_B - (total - self.weight_before(s)) - self.H * self.seabed_slope_at(s)
 
-        s_td = self._transition(balance, self.contact_s[self.in_contact][-1])
+        if self.touches_beyond_anchor():
+            s_td = self._transition(balance, self.contact_s[self.in_contact][-1])
+        else:
+            s_td = self._transition(balance, 0.0, required=False) or 0.0
         return s_td, float(self.xy(np.array(s_td))[0])
 
     @cached_property
