@@ -1,6 +1,7 @@
-"""A floating platform on a three-line spread mooring, pushed off station by a steady force.
+"""A spread mooring pushed off station
 
-Three chain lines, 120 degrees apart, run from anchors on a flat seabed 200 m
+A floating platform on a three-line spread mooring, pushed off station by a
+steady force. Three chain lines, 120 degrees apart, run from anchors on a flat seabed 200 m
 deep, 800 m from the platform's centre, to fairleads 20 m from it and 14 m below
 the waterline. The platform is a rigid body with its own weight, buoyancy at
 the metacentre and a waterplane: the hydrostatics hold it in heave, roll and

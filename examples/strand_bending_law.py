@@ -1,8 +1,9 @@
-"""Stick/slip bending law of damaged 1x7 strands: Pino Vidal (2021) Figs. 3.9-3.18, Tables 3.5-3.7.
+"""Bending law of damaged 1x7 strands
 
-Writes M-kappa and EI-kappa families (several friction coefficients, several
-axial strains, both principal axes) as PNG files and prints Pino Vidal (2021) Tables
-3.5-3.7 beside skcable's values.
+The stick/slip bending law of damaged 1x7 strands, after S. Pino Vidal (2021),
+Figs. 3.9-3.18 and Tables 3.5-3.7. Writes M-kappa and EI-kappa families (several
+friction coefficients, several axial strains, both principal axes) as PNG files and
+prints Pino Vidal (2021) Tables 3.5-3.7 beside skcable's values.
 
 Run:  python examples/strand_bending_law.py [--out results/strand_bending]
 """

@@ -1,9 +1,17 @@
-"""The worked examples of the sources, published values beside skcable's.
+"""The sources' worked examples
 
-The lecture notes "Cables": examples 1-4; J.M. Goicolea, "Cálculo de cables" (UPM, 2012):
-examples 4, 5 and 7. Units as in the sources (kN, m; kg for Goicolea).
-Run: ``python examples/worked_examples.py``.
+The worked examples of the sources, published values beside skcable's. The lecture notes
+"Cables": examples 1-4; J.M. Goicolea, "Cálculo de cables" (UPM, 2012): examples 4, 5
+and 7. Units as in the sources (kN, m; kg for Goicolea). The figure shows, for each row,
+the largest relative difference between a published value and skcable's beside half a
+unit of the last digit the source prints: a difference below that mark is the source's
+rounding.
+
+Run: ``python examples/worked_examples.py [--out results/worked_examples]``.
 """
+
+import argparse
+from pathlib import Path
 
 import numpy as np
 
@@ -32,6 +40,48 @@ def rows():
     yield "001 ex.7 a/x, k_G [Q/L]", "20.00832744 12021.99", f"{c7.a:.8f} {k7:.5f}"
 
 
+def agreement(table):
+    """Per row: the largest relative difference, and half a unit of the last printed digit."""
+    out = []
+    for label, published, ours in table:
+        pub, our = np.array(published.split(), float), np.array(ours.split(), float)
+        digits = [len(p.split(".")[1]) if "." in p else 0 for p in published.split()]
+        rounding = 0.5 * 10.0 ** -np.array(digits, float) / np.abs(pub)
+        out.append((label, float(np.max(np.abs(our / pub - 1))), float(np.max(rounding))))
+    return out
+
+
+def figure(table):
+    import matplotlib.pyplot as plt
+
+    rows_ = agreement(table)
+    fig, ax = plt.subplots(figsize=(9, 5), layout="constrained")
+    y = np.arange(len(rows_))
+    floor = 1e-9  # left edge of the axis
+    ax.barh(y, [max(d, floor) for _, d, _ in rows_], color="C0", label="|skcable / published - 1|, largest")
+    for yi, (_, d, _) in zip(y, rows_, strict=True):
+        if d == 0.0:
+            ax.text(1.5 * floor, yi, "equal in every printed digit", va="center", fontsize="small")
+    ax.plot([r for *_, r in rows_], y, "|", color="C3", ms=14, mew=2, label="half a unit of the last digit")
+    ax.set(yticks=y, yticklabels=[label for label, *_ in rows_], xscale="log", xlabel="relative difference")
+    ax.set_xlim(left=floor)
+    ax.invert_yaxis()
+    ax.set_title("skcable against the sources' worked examples")
+    ax.legend(loc="lower right", fontsize="small")
+    return fig
+
+
 if __name__ == "__main__":
-    for label, published, ours in rows():
+    parser = argparse.ArgumentParser(description=(__doc__ or "").strip().split("\n")[0])
+    parser.add_argument("--out", type=Path, default=Path("results/worked_examples"))
+    out = parser.parse_args().out
+    table = list(rows())
+    for label, published, ours in table:
         print(f"{label:38s} published: {published:30s} skcable: {ours}")
+    import matplotlib.pyplot as plt
+
+    fig = figure(table)
+    out.mkdir(parents=True, exist_ok=True)
+    fig.savefig(out / "agreement.png", dpi=120)
+    plt.close(fig)
+    print("wrote", out / "agreement.png")

@@ -13,6 +13,8 @@ import numpy as np
 
 from skcable.errors import InputError
 
+_INF = float("inf")
+
 #: Smallest positive normal float: below it a result has lost relative precision.
 TINY = float(np.finfo(float).tiny)
 
@@ -76,6 +78,8 @@ def real(name: str, value) -> np.ndarray | float:
             raise InputError(name, f"must be finite, got {value!r}")
         return value
     arr = _as_float_array(name, value)
+    if arr.size and -_INF < arr.min() and arr.max() < _INF:  # two reductions; NaN fails them
+        return float(arr) if arr.ndim == 0 else arr
     bad = ~np.isfinite(arr)
     if bad.any():
         raise InputError(name, f"must be finite, got {_first_bad(arr, bad)}")
@@ -89,10 +93,25 @@ def positive(name: str, value) -> np.ndarray | float:
         if not arr > 0:
             raise InputError(name, f"must be > 0, got {arr!r}")
         return arr
+    if arr.size and arr.min() > 0:  # finite already: one reduction
+        return arr
     bad = ~(arr > 0)
     if bad.any():
         raise InputError(name, f"must be > 0, got {_first_bad(arr, bad)}")
     return arr
+
+
+def within(name: str, value, low: float, high: float, reason: str, shown=None) -> None:
+    """Raise ``InputError(name, reason)`` unless every element of the float or float array
+    ``value`` lies in ``[low, high]`` (``shown``, default ``value``, is what the message
+    quotes); two reductions on arrays, the elementwise test only to name the first bad one."""
+    if not isinstance(value, np.ndarray):
+        if not low <= value <= high:
+            require(name, False, reason, value if shown is None else shown)
+        return
+    if value.size and low <= value.min() and value.max() <= high:
+        return
+    require(name, (value >= low) & (value <= high), reason, value if shown is None else shown)
 
 
 def nonnegative(name: str, value) -> np.ndarray | float:

@@ -39,10 +39,13 @@ class ConvergenceError(RuntimeError):
     ----------
     history : list of float
         The residual (or step) norm after every iteration, first to last.
+    last : object or None
+        The solver's last iterate, where it has one (what the failed solve reached).
     """
 
-    def __init__(self, message: str, history: Sequence[float] = ()):
+    def __init__(self, message: str, history: Sequence[float] = (), last=None):
         self.history = [float(h) for h in history]
+        self.last = last
         tail = ", ".join(f"{h:.3e}" for h in self.history[-8:])
         more = f" (last {min(8, len(self.history))} of {len(self.history)}: {tail})" if self.history else ""
         super().__init__(message + more)

@@ -15,6 +15,7 @@ import pytest
 
 import skcable
 from skcable import cable, cli, strand
+from skcable.cli import _args
 from skcable.errors import ConvergenceError
 
 ROOT = Path(skcable.__file__).resolve().parents[1]
@@ -104,8 +105,11 @@ def test_readable_table(capsys):
     status, out, _ = main(capsys, "catenary", "--span", "200", "--w", "1", "--sag", "20")
     assert status == 0
     rows = dict(map(str.strip, line.split(" = ")) for line in out.strip().splitlines())
-    assert float(rows["H"]) == float(f"{cable.catenary(200, 0, 1, sag=20).H:.10g}")
-    assert round(float(rows["H"]), 4) == 253.2649  # Goicolea 2012, ex. 5
+    values = {name: shown.split(" ", 1) for name, shown in rows.items()}
+    assert float(values["H"][0]) == float(f"{cable.catenary(200, 0, 1, sag=20).H:.10g}")
+    assert round(float(values["H"][0]), 4) == 253.2649  # Goicolea 2012, ex. 5
+    units = {name: value[1] for name, value in values.items() if len(value) == 2}
+    assert units["H"] == units["T_A"] == units["V_B"] == "N" and units["length"] == units["sag"] == "m"
 
 
 def test_strand_section_json_is_the_api(capsys):
@@ -247,12 +251,12 @@ def _options(parser):
 
 
 def test_every_flag_has_help_with_its_default_and_units():
-    options = list(_options(cli._parser()))
+    options = list(_options(cli.parser()))
     assert len(options) > 40
     for where, action in options:
         flag = f"{where}{action.option_strings[-1]}"
         assert action.help and ("(default:" in action.help or "(required)" in action.help), flag
-        if action.type is cli._finite:  # a quantity: its unit in brackets
+        if action.type is _args.finite:  # a quantity: its unit in brackets
             assert "[" in action.help and "]" in action.help, flag
 
 
@@ -402,25 +406,28 @@ def test_change_of_state_single_state_by_sag(capsys):
     assert f"{api.H:.10g}" in out and f"{api.sag:.10g}" in out
 
 
+_FREQUENCIES = (
+    "frequencies",
+    "--span",
+    "250",
+    "--dh",
+    "12",
+    "--EA",
+    "2e7",
+    "--w",
+    "12",
+    "--sag",
+    "6",
+    "--n-modes",
+    "3",
+)
+
+
 def test_frequencies_json_and_vtk_are_the_api(tmp_path, capsys):
     import meshio
 
     path = tmp_path / "modes.vtu"
-    args = (
-        "frequencies",
-        "--span",
-        "250",
-        "--dh",
-        "12",
-        "--EA",
-        "2e7",
-        "--w",
-        "12",
-        "--sag",
-        "6",
-        "--n-modes",
-        "3",
-    )
+    args = _FREQUENCIES
     status, out, err = main(capsys, *args, "--g", "9.8", "--vtk", path, "--json")
     assert status == cli.EXIT_OK, err
     got = json.loads(out)
@@ -431,7 +438,8 @@ def test_frequencies_json_and_vtk_are_the_api(tmp_path, capsys):
     assert (got["H"], got["lambda2"], got["L_e"]) == (api.H, api.lambda2, api.L_e)
     assert got["irvine_in_plane"] == api.irvine["in_plane"].tolist()
     assert got["vtk"] == str(path)
-    np.testing.assert_array_equal(meshio.read(path).point_data["in_plane_2"][:, 1], api.modes_in_plane[1])
+    shape = meshio.read(path).point_data["in_plane_2_m_per_sqrt_kg"]
+    np.testing.assert_array_equal(shape[:, 1], api.modes_in_plane[1])
 
 
 @pytest.mark.parametrize(
@@ -461,3 +469,184 @@ def test_state_and_frequency_bad_flags_exit_2(capsys, args, flag):
     status, out, err = main(capsys, *args)
     assert status == cli.EXIT_USAGE and out == ""
     assert err.count("\n") == 1 and flag in err and "Traceback" not in err
+
+
+# --- output paths: no parent created, unwritable named as given, no overwrite without --force ---
+_CATENARY = ("catenary", "--span", "9", "--w", "1", "--sag", "1")
+_CAPACITY = ("strand", "capacity", "--length", "0.3", "--n-elements", "8", "--n-steps", "4", "--no-progress")
+
+
+@pytest.mark.parametrize(
+    "args, flag",
+    [
+        ((*_CATENARY, "--vtk", "{missing}/c.vtu"), "--vtk"),
+        (
+            (
+                "frequencies",
+                "--span",
+                "250",
+                "--EA",
+                "2e7",
+                "--w",
+                "12",
+                "--sag",
+                "6",
+                "--vtk",
+                "{missing}/m.vtu",
+            ),
+            "--vtk",
+        ),
+        ((*_CAPACITY, "--out", "{missing}/out"), "--out"),
+        (("demo", "--out", "{missing}/results"), "--out"),
+        (("study", "run", "{study}", "--serial", "--out", "{missing}/t.csv"), "--out"),
+    ],
+)
+def test_a_missing_parent_folder_is_refused_and_never_created(
+    tmp_path, capsys, no_computing, study_file, args, flag
+):
+    missing = tmp_path / "no" / "such"
+    args = [a.format(missing=missing, study=study_file) for a in args]
+    status, out, err = main(capsys, *args)
+    assert status == cli.EXIT_USAGE and out == "", err
+    given = next(a for a in args if str(missing) in a)
+    assert err.count("\n") == 1 and err.startswith(f"skcable: error: {flag}: ") and repr(given) in err
+    assert not (tmp_path / "no").exists()
+
+
+def test_an_unwritable_folder_exits_2_naming_the_path_given(tmp_path, capsys):
+    target = "/proc/c.vtu"  # a folder no one, root included, can create a file in
+    status, out, err = main(capsys, *_CATENARY, "--vtk", target)
+    assert status == cli.EXIT_USAGE and out == ""
+    assert err.count("\n") == 1 and repr(target) in err and ".tmp" not in err and "probe" not in err
+    if os.geteuid() != 0:  # a read-only folder stops everyone else
+        folder = tmp_path / "ro"
+        folder.mkdir(mode=0o555)
+        status, _, err = main(capsys, *_CATENARY, "--vtk", folder / "c.vtu")
+        assert status == cli.EXIT_USAGE and repr(str(folder / "c.vtu")) in err
+
+
+def test_vtk_is_not_overwritten_without_force(tmp_path, capsys):
+    path = tmp_path / "c.vtu"
+    path.write_text("earlier")
+    status, out, err = main(capsys, *_CATENARY, "--vtk", path)
+    assert status == cli.EXIT_USAGE and out == "" and "--force" in err and repr(str(path)) in err
+    assert path.read_text() == "earlier"
+    status, out, err = main(capsys, *_CATENARY, "--vtk", path, "--force", "--json")
+    assert status == cli.EXIT_OK and json.loads(out)["vtk"] == str(path)
+    assert path.stat().st_size > 1000 and [p.name for p in tmp_path.iterdir()] == ["c.vtu"]
+
+
+def test_strand_capacity_out_is_not_overwritten_without_force(tmp_path, capsys):
+    out_dir = tmp_path / "r"
+    status, out, err = main(capsys, *_CAPACITY, "--out", out_dir, "--json")
+    assert status == cli.EXIT_OK, err
+    before = {p.name: p.stat().st_mtime_ns for p in out_dir.iterdir()}
+    assert "capacity.png" in before
+    status, out, err = main(capsys, *_CAPACITY, "--out", out_dir, "--json")
+    assert status == cli.EXIT_USAGE and out == "" and "--force" in err and "would overwrite" in err
+    assert {p.name: p.stat().st_mtime_ns for p in out_dir.iterdir()} == before  # refused before computing
+    status, out, err = main(capsys, *_CAPACITY, "--out", out_dir, "--force", "--json")
+    assert status == cli.EXIT_OK, err
+    assert set(before) <= {p.name for p in out_dir.iterdir()}
+    assert all(out_dir.joinpath(n).stat().st_mtime_ns >= t for n, t in before.items())
+
+
+# --- flags: the one the user typed, unknown ones named with the nearest --------------------------
+@pytest.mark.parametrize(
+    "args, message",
+    [
+        (
+            ("catenary", "--spam", "800", "--w", "1", "--sag", "2"),
+            "catenary: unknown flag --spam; did you mean --span?",
+        ),
+        (
+            ("catenary", "--span", "800", "--w", "1", "--len", "900"),
+            "unknown flag --len; did you mean --length?",
+        ),
+        (("frequencies", "--span", "9", "--EA", "1", "--w", "1", "--sgg", "1"), "did you mean --sag?"),
+        (
+            ("strand", "capacity", "--dmage", "1"),
+            "strand capacity: unknown flag --dmage; did you mean --damage?",
+        ),
+        (("--verison",), "unknown flag --verison; did you mean --version?"),
+        (("catenary", "--span=800", "--zzz=1"), "unknown flag --zzz (see skcable catenary --help)"),
+    ],
+)
+def test_unknown_flag_is_named_with_the_nearest(capsys, args, message):
+    status, out, err = main(capsys, *args)
+    assert status == cli.EXIT_USAGE and out == ""
+    assert err.count("\n") == 1 and message in err and "required" not in err
+
+
+def test_negative_numbers_are_values_not_flags(capsys):
+    status, out, _ = main(
+        capsys, "catenary", "--span", "800", "--dh", "-20", "--w", "20", "--low", "-30", "--json"
+    )
+    assert status == cli.EXIT_OK and json.loads(out)["H"] == pytest.approx(85819.2, abs=0.05)
+
+
+# --- results with units and labelled columns -------------------------------------------------
+def test_change_of_state_prints_a_table_per_state_with_units(capsys):
+    status, out, _ = main(
+        capsys,
+        "change-of-state",
+        *_STATE,
+        "--H0",
+        "2e4",
+        "--w",
+        "15",
+        "25",
+        "--t",
+        "-20",
+        "60",
+        "--wind",
+        "0",
+        "8",
+    )
+    assert status == cli.EXIT_OK
+    api = cable.change_of_state(
+        300.0, -10.0, EA=3e7, alpha=2.3e-5, w0=15.0, t0=15.0, H0=2e4,
+        w=np.array([15.0, 25.0]), t=np.array([-20.0, 60.0]), wind=np.array([0.0, 8.0]),
+    )  # fmt: skip
+    blocks = out.split("\n\n")
+    assert (
+        len(blocks) == 3 and blocks[0].startswith("reference state") and f"L0 = {api.L0:.10g} m" in blocks[0]
+    )
+    for i, block in enumerate(blocks[1:]):
+        assert block.startswith(f"state {i + 1} of 2: w = {[15, 25][i]} N/m, t = {[-20, 60][i]} °C")
+        rows = {line.split(" = ")[0].strip(): line.split(" = ")[1].split() for line in block.splitlines()[1:]}
+        assert float(rows["H"][0]) == float(f"{api.H[i]:.10g}") and rows["H"][1] == "N"
+        assert float(rows["sag"][0]) == float(f"{api.sag[i]:.10g}") and rows["sag"][1] == "m"
+        assert rows["blowout"][1] == "rad" and float(rows["blowout"][0]) == pytest.approx(
+            np.arctan2([0, 8][i], [15, 25][i])
+        )
+
+
+def test_frequencies_print_labelled_by_mode_and_plane(capsys):
+    args = _FREQUENCIES
+    status, out, _ = main(capsys, *args)
+    assert status == cli.EXIT_OK
+    api = cable.natural_frequencies(250.0, 12.0, 12.0, 2e7, sag=6.0, n_modes=3)
+    lines = out.splitlines()
+    header = lines[0].split("  ")
+    assert [h.strip() for h in header if h.strip()] == [
+        "mode", "in-plane f [Hz]", "in-plane shape", "Irvine in-plane [Hz]", "out-of-plane f [Hz]",
+        "Irvine out-of-plane [Hz]",
+    ]  # fmt: skip
+    for k in range(3):
+        cells = lines[1 + k].split()
+        assert int(cells[0]) == k + 1
+        assert float(cells[1]) == float(f"{api.f_in_plane[k]:.10g}")
+        assert cells[2] == ("symmetric" if api.in_plane_symmetric[k] else "antisymmetric")
+        assert float(cells[4]) == float(f"{api.f_out_of_plane[k]:.10g}")
+    assert f"L_e = {api.L_e:.10g} m" in out and "H = " in out
+
+
+def test_help_imports_no_model():
+    heavy = ("numpy", "scipy", "pandas", "skfem", "meshio", "matplotlib")
+    code = (
+        "import sys; from skcable.cli import parser; parser().format_help(); "
+        f"print(sorted(m for m in {heavy!r} if m in sys.modules))"
+    )
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, env=ENV, check=True)
+    assert out.stdout.strip() == "[]"

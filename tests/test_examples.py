@@ -1,5 +1,6 @@
 """Every example runs as a script; the numbers they print agree with independent values."""
 
+import ast
 import runpy
 import sys
 from pathlib import Path
@@ -12,14 +13,29 @@ EXAMPLES = sorted((ROOT / "examples").glob("*.py"))
 
 @pytest.mark.parametrize("script", EXAMPLES, ids=[p.stem for p in EXAMPLES])
 def test_example_runs_as_a_script(script, tmp_path, monkeypatch, capsys):
+    """Every example prints its numbers and writes a figure (the gallery shows its PNG files)
+    into ``--out``, leaving no matplotlib figure open (the gallery would show it twice)."""
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    plt.close("all")
     monkeypatch.setattr(sys, "argv", [str(script), "--out", str(tmp_path)])
     monkeypatch.setenv("MPLBACKEND", "Agg")
-    if script.stem == "worked_examples":
-        monkeypatch.setattr(sys, "argv", [str(script)])
     runpy.run_path(str(script), run_name="__main__")
     assert capsys.readouterr().out.strip()
-    if script.stem != "worked_examples":
-        assert any(tmp_path.iterdir()), "the example wrote nothing"
+    pngs = list(tmp_path.rglob("*.png"))
+    assert pngs and all(p.stat().st_size > 10_000 for p in pngs), "the example drew no figure"
+    assert plt.get_fignums() == [], "the example left figures open"
+
+
+def test_example_docstrings_open_with_a_short_title():
+    """The first line of an example's docstring is its title in the gallery: short enough to
+    show whole under the thumbnail, with no full stop."""
+    for script in EXAMPLES:
+        title = (ast.get_docstring(ast.parse(script.read_text(encoding="utf-8"))) or "").split("\n")[0]
+        assert title and len(title) <= 45 and not title.endswith("."), (script.stem, title)
 
 
 def test_seed_examples_script_prints_the_published_values():

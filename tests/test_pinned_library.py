@@ -14,8 +14,17 @@ import pytest
 from tests.pinned_library import CASES
 
 #: eigenvalues come from iterative or threaded eigensolvers whose results move by 1e-12 to 1e-10
-#: with the BLAS thread count: pinned to 1e-9 (the frequencies' own accuracy is checked elsewhere)
-TOLERANCE = {("conductor", "natural_frequencies"): 1e-9, ("strand", "strand_frequencies"): 1e-9}
+#: with the BLAS thread count: pinned to 1e-9 (the frequencies' own accuracy is checked elsewhere);
+#: ``analyse`` runs capacity curves at the default Newton tolerance (1e-9 of each equation's
+#: force scale), whose K_Leq is accurate to about 1e-9: pinned to 1e-8
+TOLERANCE = {
+    ("conductor", "natural_frequencies"): 1e-9,
+    ("strand", "strand_frequencies"): 1e-9,
+    ("strand", "analyse"): 1e-8,
+}
+#: a result that is zero up to round-off is compared at the round-off of the force it is part of:
+#: with friction taking the whole pull, the anchor's H_A is round-off of the fairlead's H
+SCALE_OF = {("bvp", "line_bvp_friction", "H_A"): "H"}
 PINNED = json.loads((Path(__file__).parent / "data" / "pinned_library.json").read_text())
 
 
@@ -30,7 +39,8 @@ def test_library_numbers_are_unchanged(group):
             want = np.array(pinned["values"], dtype=float).reshape(pinned["shape"])
             got = np.asarray(computed[case][key], dtype=float)
             assert got.shape == want.shape, (case, key)
-            scale = float(np.max(np.abs(want), initial=0.0)) or 1.0
+            of = values[SCALE_OF.get((group, case, key), key)]["values"]
+            scale = float(np.max(np.abs(of), initial=0.0)) or 1.0
             np.testing.assert_allclose(
                 got, want, rtol=0, atol=TOLERANCE.get((group, case), 1e-12) * scale, err_msg=f"{case}.{key}"
             )

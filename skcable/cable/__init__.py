@@ -6,77 +6,139 @@ horizontal tension; V_A, V_B are the upward support reactions. SI units by
 default (m, N, N/m); any consistent system works.
 """
 
-from skcable.cable._catenary import Catenary, catenary
-from skcable.cable._choice import solve
-from skcable.cable._conductor import Conductor
-from skcable.cable._elastic import ElasticCatenary
-from skcable.cable._frequencies import NaturalFrequencies, irvine_frequencies, natural_frequencies
-from skcable.cable._funicular import Funicular, FunicularVertical, funicular, funicular_vertical
-from skcable.cable._loads import DeckLoad, DistributedLoad, PointLoad, SelfWeight
-from skcable.cable._parabola import Parabola, parabola
-from skcable.cable._spans import TensionSection, ruling_span, tension_section
-from skcable.cable._state import (
-    ChangeOfState,
-    ThermalCatenary,
-    change_of_state,
-    sag_tension_table,
-    thermal_catenary,
+from __future__ import annotations
+
+from typing import TYPE_CHECKING
+
+from skcable._lazy import attach
+
+if TYPE_CHECKING:  # what static tools see; at run time, `attach` below serves them
+    from skcable.cable._catenary import Catenary, catenary
+    from skcable.cable._choice import solve
+    from skcable.cable._conductor import Conductor
+    from skcable.cable._elastic import ElasticCatenary
+    from skcable.cable._frequencies import NaturalFrequencies, irvine_frequencies, natural_frequencies
+    from skcable.cable._funicular import Funicular, FunicularVertical, funicular, funicular_vertical
+    from skcable.cable._loads import DeckLoad, DistributedLoad, PointLoad, SelfWeight
+    from skcable.cable._parabola import Parabola, parabola
+    from skcable.cable._spans import TensionSection, ruling_span, tension_section
+    from skcable.cable._state import (
+        ChangeOfState,
+        ThermalCatenary,
+        change_of_state,
+        sag_tension_table,
+        thermal_catenary,
+    )
+    from skcable.cable._stiffness import fairlead_stiffness, geometric_stiffness, geometric_stiffness_series
+    from skcable.cable._supports import SlidingLoad, anchor_block_weight, ring_on_rod, sliding_load
+    from skcable.cable._surfaces import capstan, membrane_tension, smooth_surface_reaction, sphere_parallel
+    from skcable.cable.bvp import (
+        ArcSolution,
+        BVPSegment,
+        BVPSolution,
+        LineBVPSolution,
+        solve_bvp,
+        solve_line_bvp,
+    )
+    from skcable.cable.lines import (
+        Buoy,
+        ClumpWeight,
+        Line,
+        Line3D,
+        LineSolution,
+        MooringEquilibrium,
+        MooringSystem,
+        PointBody,
+        RigidBody,
+        SeabedCatenary,
+        Segment,
+        SlopedSeabedCatenary,
+        elastic_catenary,
+        line_3d,
+        rotation_matrix,
+        sloped_seabed_catenary,
+    )
+    from skcable.cable.solution import CableSolution
+    from skcable.cable.terms import Buoyancy, CableForce, CableState, CableTerm, CurrentDrag, WindDrag
+
+#: Where each public name lives (imported on first use, PEP 562).
+_NAMES = {
+    "._catenary": ("Catenary", "catenary"),
+    "._choice": ("solve",),
+    "._conductor": ("Conductor",),
+    "._elastic": ("ElasticCatenary",),
+    "._frequencies": ("NaturalFrequencies", "irvine_frequencies", "natural_frequencies"),
+    "._funicular": ("Funicular", "FunicularVertical", "funicular", "funicular_vertical"),
+    "._loads": ("DeckLoad", "DistributedLoad", "PointLoad", "SelfWeight"),
+    "._parabola": ("Parabola", "parabola"),
+    "._spans": ("TensionSection", "ruling_span", "tension_section"),
+    "._state": (
+        "ChangeOfState",
+        "ThermalCatenary",
+        "change_of_state",
+        "sag_tension_table",
+        "thermal_catenary",
+    ),
+    "._stiffness": ("fairlead_stiffness", "geometric_stiffness", "geometric_stiffness_series"),
+    "._supports": ("SlidingLoad", "anchor_block_weight", "ring_on_rod", "sliding_load"),
+    "._surfaces": ("capstan", "membrane_tension", "smooth_surface_reaction", "sphere_parallel"),
+    ".bvp": ("ArcSolution", "BVPSegment", "BVPSolution", "LineBVPSolution", "solve_bvp", "solve_line_bvp"),
+    ".lines": (
+        "Buoy",
+        "ClumpWeight",
+        "Line",
+        "Line3D",
+        "LineSolution",
+        "MooringEquilibrium",
+        "MooringSystem",
+        "PointBody",
+        "RigidBody",
+        "SeabedCatenary",
+        "Segment",
+        "SlopedSeabedCatenary",
+        "elastic_catenary",
+        "line_3d",
+        "rotation_matrix",
+        "sloped_seabed_catenary",
+    ),
+    ".solution": ("CableSolution",),
+    ".terms": ("Buoyancy", "CableForce", "CableState", "CableTerm", "CurrentDrag", "WindDrag"),
+}
+#: The weak forms, for extending the BVPs, live in `skcable.cable.bvp.forms`.
+_MOVED = {
+    name: f"skcable.cable.bvp.forms.{name}"
+    for name in (
+        "arc_constitutive",
+        "arc_equilibrium_x",
+        "arc_equilibrium_y",
+        "graph_dH",
+        "graph_residual",
+        "graph_tangent",
+    )
+}
+
+__getattr__, __dir__ = attach(
+    __name__, submodules=("bvp", "lines", "solution", "terms"), names=_NAMES, moved=_MOVED
 )
-from skcable.cable._stiffness import fairlead_stiffness, geometric_stiffness, geometric_stiffness_series
-from skcable.cable._supports import SlidingLoad, anchor_block_weight, ring_on_rod, sliding_load
-from skcable.cable._surfaces import capstan, membrane_tension, smooth_surface_reaction, sphere_parallel
-from skcable.cable.bvp import (
-    ArcSolution,
-    BVPSegment,
-    BVPSolution,
-    LineBVPSolution,
-    arc_constitutive,
-    arc_equilibrium_x,
-    arc_equilibrium_y,
-    graph_dH,
-    graph_residual,
-    graph_tangent,
-    solve_bvp,
-    solve_line_bvp,
-)
-from skcable.cable.lines import (
-    Buoy,
-    ClumpWeight,
-    Line,
-    Line3D,
-    LineSolution,
-    MooringEquilibrium,
-    MooringSystem,
-    PointBody,
-    RigidBody,
-    SeabedCatenary,
-    Segment,
-    SlopedSeabedCatenary,
-    elastic_catenary,
-    line_3d,
-    rotation_matrix,
-    sloped_seabed_catenary,
-)
-from skcable.cable.solution import CableSolution
 
 __all__ = [
+    "Buoyancy",
+    "CableForce",
+    "CableState",
+    "CableTerm",
+    "CurrentDrag",
+    "WindDrag",
     "ArcSolution",
     "BVPSegment",
     "LineBVPSolution",
     "SlopedSeabedCatenary",
     "sloped_seabed_catenary",
     "solve_line_bvp",
-    "arc_constitutive",
-    "arc_equilibrium_x",
-    "arc_equilibrium_y",
     "BVPSolution",
     "DeckLoad",
     "DistributedLoad",
     "PointLoad",
     "SelfWeight",
-    "graph_dH",
-    "graph_residual",
-    "graph_tangent",
     "solve_bvp",
     "CableSolution",
     "ChangeOfState",

@@ -31,13 +31,16 @@ import math
 from functools import cached_property
 
 import numpy as np
-from scipy.optimize import elementwise
 
-from skcable._checks import broadcast, exactly_one, float_range, positive, real, require
-from skcable._xp import namespace
+from skcable._checks import broadcast, exactly_one, float_range, positive, real, require, within
+from skcable._xp import namespace, scalar_math
+from skcable.cable._hanging import z_of_excess, z_of_length
 from skcable.cable._roots import find_root
 from skcable.cable._special import (
-    dsinhc,
+    DSINHC_SERIES,
+    SINHC_SERIES,
+    asinh_step_parts,
+    horner,
     largest_abs,
     ldexp_sum,
     log_cosh,
@@ -46,7 +49,7 @@ from skcable.cable._special import (
     sinhc_m1,
     z_minus_tanh_over_cube,
 )
-from skcable.cable.solution import CableSolution, checked_closed_form, matrix_2x2
+from skcable.cable.solution import ACCEPT, ATTRIBUTE_OF, CableSolution, checked_closed_form, matrix_2x2
 from skcable.errors import ConvergenceError, InputError
 
 __all__ = ["Catenary", "catenary"]
@@ -71,7 +74,8 @@ class Catenary(CableSolution):
     z, m : float or ndarray
         Half-span over ``a``, and the hyperbolic angle at mid-span.
     H, V_A, V_B, T_A, T_B : float or ndarray
-        Horizontal tension, upward reactions and end tensions (N).
+        Horizontal tension (the same all along: ``H = H_A = H_B``), upward reactions and
+        end tensions (N).
     length, sag : float or ndarray
         Cable length and largest vertical chord-to-cable distance (m).
     x_low, y_low : float or ndarray
@@ -85,9 +89,87 @@ class Catenary(CableSolution):
     def __init__(self, span, dh, w, a, z, constraint: tuple[str, object]):
         self.span, self.dh, self.w, self.a, self.z = span, dh, w, a, z
         self._xp = xp = namespace(span, dh, w, a, z)
-        self._phi = sinhc_m1(z)
-        self.m = xp.arcsinh(dh / span / (1.0 + self._phi))
+        self._sinh_z = xp.sinh(z)
+        # sinh(z)/z needs no series: it is 1 + phi, free of cancellation (phi is, below)
+        if (
+            xp is np
+            and np.ndim(z)
+            and np.shape(z) == np.broadcast_shapes(np.shape(dh), np.shape(span), np.shape(z))
+        ):
+            m = self._sinh_z / z  # dh / span / (sinh z / z), in place
+            np.arcsinh(np.divide(dh / span, m, out=m), out=m)
+            self.m = m
+        else:
+            self.m = xp.arcsinh(dh / span / (self._sinh_z / z))
         self.constraint = constraint
+
+    def _arrays(self):
+        """Fill the forces and the length of an array of scenes at once: the formulas of the
+        properties below, evaluated in place (the same bits, fewer temporaries: each new
+        array costs more than the arithmetic on it): the vectorised hot path."""
+        a, z, m = self.a, self.z, self.m
+        H = self.w * a
+        u = z - m  # -u_A
+        V_A, T_A = np.sinh(u), np.cosh(u)  # cosh is even: cosh(m - z)
+        V_A *= H
+        T_A *= H
+        np.add(z, m, out=u)
+        V_B, T_B = np.sinh(u), np.cosh(u)
+        V_B *= H
+        T_B *= H
+        length = a * self._sinh_z
+        length *= 2.0
+        length *= np.cosh(m, out=u)
+        self.__dict__.update(H=H, V_A=V_A, V_B=V_B, T_A=T_A, T_B=T_B, length=length)
+        return self
+
+    def finite_beyond_residual(self) -> bool:
+        """The length and the vertex are finite. The vertex need not be evaluated: ``|x_vertex|``
+        and ``|y_vertex|`` are below ``a cosh(u_A) = T_A/w`` (as ``|u| < cosh u`` and
+        ``2 sinh²(u/2) < cosh u``), finite when ``max T_A / min w`` is."""
+        if self._xp is not np:
+            return super().finite_beyond_residual()
+        bound = float(np.max(self.T_A)) / float(np.min(self.w))
+        return bool(np.isfinite(self.length).all()) and (bound < math.inf or super().finite_beyond_residual())
+
+    def residual(self) -> float:
+        """`CableSolution.residual`; on arrays the same terms, written in place into the rows
+        of one block (then one reduction)."""
+        if self._xp is not np or np.ndim(self.T_A) == 0:
+            return super().residual()
+        T_A, T_B, V_A, V_B, H, w = self.T_A, self.T_B, self.V_A, self.V_B, self.H, self.w
+        shape = np.broadcast_shapes(np.shape(T_A), np.shape(w), np.shape(self.dh))
+        rows, two = np.empty((5, *shape)), np.empty(shape)
+        closure, balance, ends, met = rows[0], rows[1], rows[2:4], rows[4]
+        np.subtract(T_B, T_A, out=closure)
+        closure -= w * self.dh
+        closure /= np.add(T_A, T_B, out=two)
+        np.multiply(w, self.length, out=two)  # the weight
+        np.add(V_A, V_B, out=balance)
+        balance -= two
+        two += np.abs(V_A)
+        two += np.abs(V_B)
+        balance /= two
+        for one, T, V in ((ends[0], T_A, V_A), (ends[1], T_B, V_B)):  # 0.5((1 - t)(1 + t) - v²)
+            np.divide(0.5, T, out=two)  # t = H/T, v = V/T through one reciprocal (halved)
+            np.multiply(V, two, out=one)
+            one *= one  # v²/4
+            two *= H  # t/2
+            np.square(two, out=two)
+            np.subtract(0.25, two, out=two)  # (1 - t²)/4
+            two -= one
+            np.multiply(two, 2.0, out=one)
+        name, value = self.constraint  # the constraint met, as in `_common_residuals`
+        if name == "low":
+            met[...] = self._common_residuals(np)[2]
+        else:
+            np.subtract(getattr(self, ATTRIBUTE_OF[name]), value, out=met)
+            met /= value
+        return largest_abs(rows)
+
+    @cached_property
+    def _phi(self):
+        return sinhc_m1(self.z)  # sinh(z)/z - 1 by its series where that cancels
 
     # --- reactions and tensions ------------------------------------------
     @cached_property
@@ -113,7 +195,7 @@ class Catenary(CableSolution):
     # --- geometry ----------------------------------------------------------
     @cached_property
     def length(self):
-        return 2.0 * (self.a * self._xp.sinh(self.z)) * self._xp.cosh(self.m)
+        return 2.0 * (self.a * self._sinh_z) * self._xp.cosh(self.m)
 
     @cached_property
     def x_vertex(self):
@@ -164,6 +246,33 @@ class Catenary(CableSolution):
     def weight_per_length(self, x, slope):
         return self.w + 0.0 * slope
 
+    def _arc(self, s):
+        """``(s, q, d, p, r_q, r_p)``: the hyperbolic sines at A (``q = sinh u_A``) and at
+        ``s`` (``p``), their step ``d = s/a`` formed directly, and ``r = cosh``."""
+        s = real("s", s)
+        require("s", (s >= 0) & (s <= self.length), "must lie in [0, length]", s)
+        xp = namespace(s, self.a)
+        q, d = -self.V_A / self.H, s / self.a
+        p = q + d
+        return s, q, d, p, xp.hypot(1.0, q), xp.hypot(1.0, p)
+
+    def xy(self, s):
+        r"""Positions ``(..., 2)`` (m) at unstretched arc length ``s`` (m) from A, in [0, length].
+
+        With :math:`q = \sinh u_A`, the arc from A to :math:`u` is :math:`a(\sinh u - q)`, so
+        :math:`\sinh u = q + s/a` and :math:`x = a(u - u_A)`, :math:`y = a(\cosh u - \cosh u_A)`
+        (Irvine, *Cable Structures*, 1981, §2.2, with EA infinite), taken through `asinh_step`
+        and rationalised as :math:`y = s\,(p + q)/(r_p + r_q)`: no cancellation for taut cables.
+        """
+        s, q, d, p, rq, rp = self._arc(s)
+        A = asinh_step_parts(q, d, p, rq, rp)[1]
+        with float_range("s", "xy(s)"):
+            return np.stack(np.broadcast_arrays(self.a * A, s * (p + q) / (rp + rq)), axis=-1)
+
+    def T_of_s(self, s):
+        """Tension (N) at unstretched arc length ``s`` (m) from A: ``H cosh u``."""
+        return self.H * self._arc(s)[5]
+
     @cached_property
     def k_G(self):
         r"""Geometric stiffness ``dH/d(span)`` at constant length and ``dh`` (N/m).
@@ -199,13 +308,14 @@ class Catenary(CableSolution):
         return matrix_2x2(k_g, cross, cross, vv)
 
     def _residuals(self):
-        span, dh, a, z, m, xp = self.span, self.dh, self.a, self.z, self.m, self._xp
-        chord = xp.hypot(span, dh)
+        """Closure at B through the tensions (a catenary's ``T_B - T_A = w dh``, evaluated
+        from the cosh of the end angles, not from the sinh that placed B), vertical balance,
+        end tensions along their components, the constraint: each over what it sums."""
+        xp, T_A, T_B, V_A, V_B = self._xp, self.T_A, self.T_B, self.V_A, self.V_B
         weight = self.w * self.length
-        yield (2.0 * xp.sinh(m) * (a * xp.sinh(z)) - dh) / chord  # closure at B
-        # vertical equilibrium: V_A and V_B cancel for taut inclined cables
-        # (|V| ~ H·|dh|/span >> weight): scale by what cancels
-        yield (self.V_A + self.V_B - weight) / (xp.abs(self.V_A) + xp.abs(self.V_B) + weight)
+        yield (T_B - T_A - self.w * self.dh) / (T_A + T_B)
+        # V_A and V_B cancel for taut inclined cables (|V| ~ H·|dh|/span >> weight)
+        yield (V_A + V_B - weight) / (xp.abs(V_A) + xp.abs(V_B) + weight)
         yield from self._common_residuals(xp)
 
 
@@ -254,7 +364,7 @@ def _z_from_length(span, dh, length):
     legs = xp.abs(dh)
     unit = _unit(xp.maximum(span, legs), xp)
     span, dh, legs, length = span / unit, dh / unit, legs / unit, length / unit  # exact
-    chord = xp.hypot(span, dh)
+    chord = xp.sqrt(span * span + dh * dh)  # both below 1 now: no overflow (and no hypot's cost)
     require("length", length > chord, "must exceed the chord sqrt(span**2 + dh**2)", length * unit)
     # r - 1 with r = sqrt(S^2 - dh^2)/span, free of cancellation for taut
     # cables: S^2 - chord^2 = (S - M)(S + M) - m^2 with M the longer leg, so
@@ -271,8 +381,9 @@ def _z_from_length(span, dh, length):
         return xp.sqrt((length - legs) / span) * xp.sqrt((length + legs) / span) - 1.0
 
     if xp is np:
+        short = length < 2.0 * chord
         with np.errstate(over="ignore", invalid="ignore"):
-            rho = np.where(length < 2.0 * chord, taut(length), slack(length))
+            rho = taut(length) if short.all() else np.where(short, taut(length), slack(length))
     else:
         rho = taut(length) if length < 2.0 * chord else slack(length)
     # sinh(z)/z = 1 + rho: z stays below _Z_LIMIT while rho stays below this
@@ -282,43 +393,104 @@ def _z_from_length(span, dh, length):
         f"is so long relative to the span that span/(2a) exceeds {_Z_LIMIT:g} (cosh overflows a float)",
         length * unit,
     )
-    target = xp.log1p(rho)
-    # g(z) = log(sinh z / z) - target is convex and increasing: whatever the
-    # start, Newton's iterates lie right of the root after one step and then
-    # decrease monotonically to it. Start from the inverted Maclaurin series
-    # (error O(rho^4)) for small rho, from an upper bound otherwise.
-    z = piecewise(
-        rho,
-        rho < 0.1,
-        lambda r: xp.sqrt(r * (6.0 + r * (-1.8 + 0.8229 * r))),
-        lambda r: xp.log1p(r) + 2.0 * xp.log(xp.log1p(r) + 2.0) + 1.0,
-    )
-    history = []
-    for _ in range(100):
-        step = _newton_step(z, target, xp)
-        z = z - step
-        change = largest_abs(step / z)
-        history.append(change)
-        if change < 1e-8:  # quadratic convergence: the error is now ~1e-16
-            return z, history
-    raise ConvergenceError("catenary(length=...): Newton did not converge", history)
-
-
-def _newton_step(z, target, xp):
-    """g/g' for g(z) = log(sinh z / z) - target, g' = coth z - 1/z; above z = 20
-    in the form z - log(2z) + log1p(-e^{-2z}), which does not overflow."""
-
-    def small(z):
-        phi = sinhc_m1(z)
-        return (xp.log1p(phi) - target) * (1.0 + phi) / dsinhc(z)
-
-    def large(z):
-        return (z - xp.log(2.0 * z) + xp.log1p(-xp.exp(-2.0 * z)) - target) / (1.0 / xp.tanh(z) - 1.0 / z)
-
     if xp is not np:
-        return small(z) if z <= 20.0 else large(z)
+        z, history = z_of_excess(rho)
+        if z is None:
+            raise ConvergenceError("catenary(length=...): Halley's method did not converge", history)
+        return z, history
+    # g(z) = log(sinh z / z) - target is convex and increasing: Halley's method (Newton's far
+    # from the root) from the start of `skcable.cable._hanging.start`, elementwise
+    z = piecewise(rho, rho < 1.0, lambda r: np.sqrt(r * (6.0 + r * (-1.8 + 0.8229 * r))), _large_start)
+    return _z_iterate_arrays(z, np.log1p(rho))
+
+
+def _large_start(rho):
+    y = np.log1p(rho)
+    z = y + np.log(2.0 * (y + 1.0))
+    z = y + np.log(2.0 * z)
+    return y + np.log(2.0 * z)
+
+
+def _z_iterate_arrays(z, target):
+    """The iteration of `skcable.cable._hanging.z_of_excess` on arrays, each element stopping
+    on its own (the same test): later iterations run on the few elements left."""
+    z = np.array(z, dtype=float)
+    flat, targets = z.reshape(-1), np.broadcast_to(target, z.shape).reshape(-1)
+    active, history = None, []
+    for _ in range(100):
+        zs, ts = (flat, targets) if active is None else (flat[active], targets[active])
+        change = _step_arrays(zs, ts)
+        zs = zs - change
+        change /= zs
+        np.abs(change, out=change)
+        history.append(largest_abs(change))
+        if active is None:
+            flat[:] = zs
+            active = np.flatnonzero(~(change < 1e-7))  # NaN keeps iterating (and fails)
+        else:
+            flat[active] = zs
+            active = active[~(change < 1e-7)]
+        if active.size == 0:
+            return z, history
+    raise ConvergenceError("catenary(length=...): Halley's method did not converge", history)
+
+
+def _sinhc_pair_arrays(z):
+    """`sinhc_m1` and `dsinhc` on an array, each branch computed once on the whole array when
+    the elements fall on one side of ``z = 1`` (the usual case), else both, then chosen."""
+    low = z < 1.0
+    if not low.any():
+        s = np.sinh(z)
+        phi = s / z
+        phi -= 1.0
+        dphi = z * np.cosh(z)
+        dphi -= s
+        dphi /= z * z
+        return phi, dphi
+    t = z * z
+    phi, dphi = horner(SINHC_SERIES, t), horner(DSINHC_SERIES, t)
+    phi *= t
+    dphi *= z
+    if low.all():
+        return phi, dphi
+    with np.errstate(over="ignore", invalid="ignore"):
+        s = np.sinh(z)
+        direct_phi, direct_dphi = s / z - 1.0, (z * np.cosh(z) - s) / t
+    return np.where(low, phi, direct_phi), np.where(low, dphi, direct_dphi)
+
+
+def _step_arrays(z, target):
+    """`skcable.cable._hanging.step` on arrays."""
     big = z > 20.0
-    return np.where(big, large(np.where(big, z, 21.0)), small(np.where(big, 1.0, z)))
+    with np.errstate(over="ignore", invalid="ignore", divide="ignore"):
+        if big.any():
+            zb = np.where(big, z, 21.0)
+            first_b = 1.0 / np.tanh(zb) - 1.0 / zb
+            newton_b = (zb - np.log(2.0 * zb) + np.log1p(-np.exp(-2.0 * zb)) - target) / first_b
+            halley_b = _halley(newton_b, 1.0 / (zb * zb), first_b)
+            zs = np.where(big, 1.0, z)
+            return np.where(big, halley_b, _small_step(zs, target))
+        return _small_step(z, target)
+
+
+def _small_step(z, target):
+    phi, slope = _sinhc_pair_arrays(z)
+    one_phi = 1.0 + phi
+    newton = np.log1p(phi)
+    newton -= target
+    newton *= one_phi
+    newton /= slope
+    curvature = phi * (2.0 + phi)
+    curvature /= z * z
+    curvature /= one_phi
+    curvature /= one_phi
+    slope /= one_phi  # g'
+    return _halley(newton, curvature, slope)
+
+
+def _halley(newton, curvature, first):
+    correction = 0.5 * newton * curvature / first
+    return np.where(np.abs(correction) <= 0.5, newton / (1.0 - correction), newton)
 
 
 def _z_from_sag(span, dh, sag):
@@ -395,6 +567,8 @@ def _log_tau(t, s):
 
 
 def _z_from_T_max(span, dh, w, T_max, branch):
+    from scipy.optimize import elementwise  # imported here: `import skcable.cable` stays light
+
     if branch not in ("taut", "slack"):
         raise InputError("branch", f"must be 'taut' or 'slack', got {branch!r}")
     xp = namespace(span, dh, w, T_max)
@@ -433,6 +607,70 @@ def _z_from_T_max(span, dh, w, T_max, branch):
         xtol=_LOG_XTOL,
     )
     return 0.5 * xp.exp(-t), history
+
+
+_INF = math.inf
+_MAX_FLOAT = float(np.finfo(float).max)
+#: The least positive float (a subnormal): H/w above it has not underflowed to zero.
+TINY_POSITIVE = 5e-324
+
+
+def _length_on_floats(span, dh, w, length):
+    """`catenary` with ``length=`` on Python numbers: the same formulas and checks as the
+    general path (`skcable.cable._hanging`, `Catenary._residuals` written out on floats), or
+    None wherever the general path must decide (it then raises the right error)."""
+    if not (type(span) is float and type(dh) is float and type(w) is float and type(length) is float):
+        if not all(type(v) in (float, int) for v in (span, dh, w, length)):
+            return None
+        try:
+            span, dh, w, length = float(span), float(dh), float(w), float(length)
+        except OverflowError:  # an integer beyond the float range: the general path names it
+            return None
+    if not (0.0 < span < _INF and -_INF < dh < _INF and 0.0 < w < _INF and 0.0 < length < _INF):
+        return None
+    if not abs(dh) <= _STEEPEST * span:
+        return None
+    z = z_of_length(span, dh, length)
+    if z is None or not _Z_MIN <= z <= _Z_LIMIT:
+        return None
+    try:
+        a = span / (2.0 * z)
+        sinh_z = math.sinh(z)
+        m = math.asinh(dh / span / (sinh_z / z))
+        H = w * a
+        V_A, V_B = H * math.sinh(z - m), H * math.sinh(z + m)
+        T_A, T_B = H * math.cosh(m - z), H * math.cosh(m + z)
+        achieved = 2.0 * (a * sinh_z) * math.cosh(m)
+        weight = w * achieved
+        t_a, v_a, t_b, v_b = H / T_A, V_A / T_A, H / T_B, V_B / T_B
+        # `Catenary._residuals`, each within ACCEPT (a NaN fails every comparison)
+        closure = (T_B - T_A - w * dh) / (T_A + T_B)
+        balance = (V_A + V_B - weight) / (abs(V_A) + abs(V_B) + weight)
+        end_a = 0.5 * ((1.0 - t_a) * (1.0 + t_a) - v_a * v_a)
+        end_b = 0.5 * ((1.0 - t_b) * (1.0 + t_b) - v_b * v_b)
+        met = (achieved - length) / length
+    except (OverflowError, ZeroDivisionError):
+        return None
+    ok = -ACCEPT <= closure <= ACCEPT and -ACCEPT <= balance <= ACCEPT and -ACCEPT <= met <= ACCEPT
+    # the vertex is below a cosh(u_A) = T_A/w (`Catenary.finite_beyond_residual`)
+    if not (ok and -ACCEPT <= end_a <= ACCEPT and -ACCEPT <= end_b <= ACCEPT and a < _INF and T_A / w < _INF):
+        return None
+    solution = Catenary.__new__(Catenary)
+    solution.__dict__ = {
+        "span": span, "dh": dh, "w": w, "a": a, "z": z, "_xp": scalar_math, "_sinh_z": sinh_z, "m": m,
+        "constraint": ("length", length), "H": H, "V_A": V_A, "V_B": V_B, "T_A": T_A, "T_B": T_B,
+        "length": achieved,
+    }  # fmt: skip
+    return solution
+
+
+def hanging(span, dh, w, length) -> Catenary:
+    """The catenary of ``length`` (float or array, > chord), unchecked: a start for the elastic
+    forms, which check what they return. Data out of the closed form's range raise as in
+    `catenary`."""
+    with float_range("length", "an intermediate value"):
+        z, _ = _z_from_length(span, dh, length)
+        return Catenary(span, dh, w, span / (2.0 * z), z, ("length", length))
 
 
 def catenary(span, dh, w, *, length=None, sag=None, H=None, low=None, T_max=None, branch="taut"):
@@ -482,6 +720,10 @@ def catenary(span, dh, w, *, length=None, sag=None, H=None, low=None, T_max=None
     >>> round(float(c.H), 1), round(float(c.x_low), 2)
     (85819.2, 507.11)
     """
+    if length is not None and sag is None and H is None and low is None and T_max is None:
+        solution = _length_on_floats(span, dh, w, length)  # one scene of Python numbers
+        if solution is not None:
+            return solution
     span = positive("span", span)
     dh = real("dh", dh)
     w = positive("w", w)
@@ -489,31 +731,42 @@ def catenary(span, dh, w, *, length=None, sag=None, H=None, low=None, T_max=None
     value = real(name, value) if name == "low" else positive(name, value)
     broadcast(span=span, dh=dh, w=w, **{name: value})
     xp = namespace(span, dh, w, value)
-    require("dh", xp.abs(dh) <= _STEEPEST * span, f"must satisfy |dh| <= {_STEEPEST:g}·span", dh)
+    steep = (
+        xp.abs(dh) / _STEEPEST <= span if not isinstance(dh, np.ndarray) else xp.abs(dh) <= _STEEPEST * span
+    )
+    require("dh", steep, f"must satisfy |dh| <= {_STEEPEST:g}·span", dh)
     history = []
     with float_range(name, "an intermediate value"):
         if name == "length":
             z, history = _z_from_length(span, dh, value)
         elif name == "H":
             a = value / w
-            require("H", a > 0, "is so small relative to w that H/w underflows", value)
-            z = 0.5 * span / a
+            within("H", a, TINY_POSITIVE, math.inf, "is so small relative to w that H/w underflows", value)
+            z = span / a
+            z *= 0.5  # = 0.5 * span / a: halving is exact
         elif name == "sag":
             z, history = _z_from_sag(span, dh, value)
         elif name == "low":
             z, history = _z_from_low(span, dh, value)
         else:
             z, history = _z_from_T_max(span, dh, w, value, branch)
-    require(name, z >= _Z_MIN, "makes the cable so taut that span·w/(2H) underflows (below 1e-300)", value)
-    require(
-        name,
-        z <= _Z_LIMIT,
-        f"makes the cable so slack that span·w/(2H) exceeds {_Z_LIMIT:g} (cosh overflows a float)",
-        value,
-    )
+    if not (isinstance(z, np.ndarray) and z.size and _Z_MIN <= z.min() and z.max() <= _Z_LIMIT):
+        require(
+            name, z >= _Z_MIN, "makes the cable so taut that span·w/(2H) underflows (below 1e-300)", value
+        )
+        require(
+            name,
+            z <= _Z_LIMIT,
+            f"makes the cable so slack that span·w/(2H) exceeds {_Z_LIMIT:g} (cosh overflows a float)",
+            value,
+        )
     if name != "H":
-        a = span / (2.0 * z)
-    require(name, a < math.inf, "makes H/w overflow a float", value)
+        a = span / z
+        a *= 0.5  # = span / (2 z): halving is exact
+    within(name, a, -math.inf, _MAX_FLOAT, "makes H/w overflow a float", value)
     value = np.asarray(value, dtype=float)[()]
     with float_range(name, "a result"):
-        return checked_closed_form(Catenary(span, dh, w, a, z, (name, value)), name, history)
+        solution = Catenary(span, dh, w, a, z, (name, value))
+        if solution._xp is np and np.ndim(z) and np.shape(z) == np.shape(solution.m):
+            solution._arrays()
+        return checked_closed_form(solution, name, history)

@@ -18,50 +18,142 @@ for the mean stretch.
 
 from __future__ import annotations
 
+import math
 from functools import cached_property
 
 import numpy as np
 
+from skcable import _plausible
 from skcable._checks import broadcast, float_range, positive, real, require
+from skcable._newton2 import solve2
 from skcable._xp import namespace
-from skcable.cable._catenary import _finite_at, catenary
+from skcable.cable._catenary import _finite_at, hanging
+from skcable.cable._hanging import hanging_forces
 from skcable.cable._roots import find_root
-from skcable.cable._special import asinh_diff, largest_abs
+from skcable.cable._special import asinh_step, asinh_step_log, asinh_step_parts, sinhc_m1, sinhc_pair
 from skcable.cable.solution import ACCEPT, CableSolution, checked_closed_form
-from skcable.errors import ConvergenceError, InputError
+from skcable.errors import InputError
 
 __all__ = ["ElasticCatenary", "elastic_catenary"]
 
-_TOL = 1e-13
+_NAN8 = (math.nan,) * 8
 
 
-def _closure(span, dh, w, EA, L0, H, V_A):
-    """Residuals of the end conditions and their Jacobian w.r.t. (H, V_A)."""
-    xp = namespace(H, V_A, span, EA)
-    tv_a, tv_b = -V_A, w * L0 - V_A
-    t_a, t_b = xp.hypot(H, tv_a), xp.hypot(H, tv_b)
-    arc = asinh_diff(tv_b / H, tv_a / H)
-    rise = (tv_b - tv_a) * (tv_b + tv_a) / (t_b + t_a)  # T_B - T_A
-    f_x = H * L0 / EA + H / w * arc - span
-    f_y = L0 * (0.5 * w * L0 - V_A) / EA + rise / w - dh
-    j_xh = L0 / EA + (arc - tv_b / t_b + tv_a / t_a) / w
-    j_xv = H / w * (1.0 / t_a - 1.0 / t_b)
-    j_yh = H / w * (1.0 / t_b - 1.0 / t_a)
-    j_yv = -L0 / EA + (tv_a / t_a - tv_b / t_b) / w
-    return f_x, f_y, j_xh, j_xv, j_yh, j_yv
+def ratios(H, V_A, w, L):
+    r"""``(q, d, p, r_q, r_p)``: the vertical tension components at A and B over ``H``,
+    :math:`q = -V_A/H`, :math:`p = q + d`, their step :math:`d = wL/H` formed directly (never
+    as :math:`p - q`), and :math:`r = \sqrt{1 + (\cdot)^2}` (``T_A/H``, ``T_B/H``)."""
+    xp = namespace(H, V_A, w, L)
+    q, d = -V_A / H, w * L / H
+    p = q + d
+    return q, d, p, xp.hypot(1.0, q), xp.hypot(1.0, p)
 
 
-def _round_off(span, dh, w, EA, L0, H, V_A, chord):
-    """Round-off floor of the closure residual: a few ulps of its terms over the chord
-    (a strongly stretched line has terms far larger than the span)."""
-    xp = namespace(H, V_A, span, EA)
-    tv_a, tv_b = -V_A, w * L0 - V_A
-    arc = asinh_diff(tv_b / H, tv_a / H)
-    # the operands of the differences that cancel: w L0/2 - V_A and tv_b + tv_a
-    rise = (tv_b - tv_a) * (xp.abs(tv_b) + xp.abs(tv_a)) / (xp.hypot(H, tv_b) + xp.hypot(H, tv_a))
-    terms_x = H * L0 / EA + H / w * xp.abs(arc) + span
-    terms_y = L0 * (0.5 * w * L0 + xp.abs(V_A)) / EA + rise / w + xp.abs(dh)
-    return 16.0 * 2.220446049250313e-16 * xp.maximum(terms_x, terms_y) / chord
+def _x_h_core(S, A, p, q, rr):
+    r""":math:`A - \sinh A/(r_p r_q)`, the geometric part of :math:`w\,\partial X/\partial H`, without
+    cancellation: below ``A = 2`` as :math:`S(p^2 + q^2 + p^2q^2)/((r_pr_q + 1)r_pr_q) - (\sinh A - A)`
+    (:math:`r_pr_q - 1` rationalised), above it directly (the loss is at most 4 ulps at ``A = 2``)."""
+
+    def small(S, A, p, q, rr):
+        p2, q2 = p * p, q * q
+        return S * (p2 + q2 + p2 * q2) / ((rr + 1.0) * rr) - A * sinhc_m1(A)
+
+    def large(S, A, p, q, rr):
+        return A - S / rr
+
+    if not isinstance(A, np.ndarray):
+        return small(S, A, p, q, rr) if A < 2.0 else large(S, A, p, q, rr)
+    out = np.empty(np.shape(A))
+    below = A < 2.0
+    out[below] = small(S[below], A[below], p[below], q[below], rr[below])
+    out[~below] = large(S[~below], A[~below], p[~below], q[~below], rr[~below])
+    return out
+
+
+def _closure_floats(span, dh, w, EA, L, H, V_A):
+    """`closure` on Python floats: the same formulas, written out."""
+    if not H > 0:
+        return _NAN8
+    q, d = -V_A / H, w * L / H
+    p = q + d
+    rq, rp = math.hypot(1.0, q), math.hypot(1.0, p)
+    S = d * (p + q) / (p * rq + q * rp) if p * q > 0 else p * rq - q * rp
+    A = math.asinh(S)
+    stretch, x_geo, compliance = H * L / EA, H / w * A, L / EA
+    rsum, rr = rp + rq, rp * rq
+    if A < 2.0:
+        p2, q2 = p * p, q * q
+        core = S * (p2 + q2 + p2 * q2) / ((rr + 1.0) * rr) - A * sinhc_pair(A)[0]
+    else:
+        core = A - S / rr
+    j_xv = d * (p + q) / (rsum * rr * w)
+    terms_y = L * (0.5 * w * L + abs(V_A)) / EA + L * (abs(p) + abs(q)) / rsum + abs(dh)
+    return (
+        stretch + x_geo - span,
+        L * (0.5 * w * L - V_A) / EA + L * (p + q) / rsum - dh,
+        compliance + core / w,
+        j_xv,
+        -j_xv,
+        -compliance - S / (rr * w),
+        stretch + x_geo + span,
+        terms_y,
+    )
+
+
+def closure(span, dh, w, EA, L, H, V_A):
+    r"""Irvine's closure :math:`X(H, V_A) - \mathrm{span}`, :math:`Y(H, V_A) - dh` (m), its Jacobian
+    in ``(H, V_A)`` (m/N) and the sizes of the two residuals' terms (m), whose few ulps are their
+    round-off.
+
+    In the ratios of `ratios`, with :math:`A = \operatorname{asinh} p - \operatorname{asinh} q`
+    from `asinh_step_parts` (d formed directly, so that taut steep lines keep their digits) and
+    :math:`S = \sinh A`:
+
+    .. math::
+        X = \frac{HL}{EA} + \frac{H}{w} A, \qquad
+        Y = \frac{L (wL/2 - V_A)}{EA} + L\,\frac{p + q}{r_p + r_q},
+
+    (:math:`(T_B - T_A)/w` rationalised), and
+    :math:`\partial X/\partial H = L/EA + (A - S/(r_pr_q))/w`,
+    :math:`\partial X/\partial V_A = -\partial Y/\partial H = d\,(p + q)/((r_p + r_q) r_p r_q w)`,
+    :math:`\partial Y/\partial V_A = -L/EA - S/(r_p r_q w)`. ``H <= 0`` gives NaN.
+    """
+    xp = namespace(span, dh, w, EA, L, H, V_A)
+    if xp is np:
+        H = np.where(H > 0, H, np.nan)
+    elif not H > 0:
+        return _NAN8
+    q, d, p, rq, rp = ratios(H, V_A, w, L)
+    S, A = asinh_step_parts(q, d, p, rq, rp)
+    stretch, x_geo, compliance = H * L / EA, H / w * A, L / EA
+    s_y = L * (0.5 * w * L - V_A) / EA
+    rsum, rr = rp + rq, rp * rq
+    rise = L * (p + q) / rsum  # (T_B - T_A)/w
+    j_xv = d * (p + q) / (rsum * rr * w)
+    j_xh = compliance + _x_h_core(S, A, p, q, rr) / w
+    j_yv = -compliance - S / (rr * w)
+    # the terms summed, and the operands of the differences w L/2 - V_A and p + q
+    terms_x = stretch + x_geo + span
+    terms_y = L * (0.5 * w * L + xp.abs(V_A)) / EA + L * (xp.abs(p) + xp.abs(q)) / rsum + xp.abs(dh)
+    return stretch + x_geo - span, s_y + rise - dh, j_xh, j_xv, -j_xv, j_yv, terms_x, terms_y
+
+
+def _closure_of(H, V_A, span, dh, w, EA, L):
+    """`closure` in the argument order of `solve2`."""
+    if type(H) is float and type(V_A) is float:
+        return _closure_floats(span, dh, w, EA, L, H, V_A)
+    return closure(span, dh, w, EA, L, H, V_A)
+
+
+def _inextensible(span, dh, w, length):
+    """``(H, V_A, T_A, T_B)`` of the inextensible catenary of ``length``, unchecked (a start:
+    the elastic solution is checked); Python floats where the data are, else arrays."""
+    if namespace(span, dh, w, length) is not np:
+        forces = hanging_forces(span, dh, w, length)
+        if forces is not None:
+            return forces
+    c = hanging(span, dh, w, length)  # arrays, or data the float path leaves to the checked one
+    return c.H, c.V_A, c.T_A, c.T_B
 
 
 def _initial_guess(span, dh, w, EA, L0):
@@ -69,50 +161,19 @@ def _initial_guess(span, dh, w, EA, L0):
     chord = xp.hypot(span, dh)
     # inextensible catenary of a length at least 1e-6 above the chord,
     # lengthened once by the mean strain it predicts
-    first = catenary(span, dh, w, length=xp.maximum(L0, chord * (1 + 1e-6)))
-    strain = 0.5 * (first.T_A + first.T_B) / EA
-    second = catenary(span, dh, w, length=xp.maximum(L0 * (1.0 + strain), chord * (1 + 1e-6)))
+    _, _, T_A, T_B = _inextensible(span, dh, w, xp.maximum(L0, chord * (1 + 1e-6)))
+    strain = 0.5 * (T_A + T_B) / EA
+    H_c, V_c, _, _ = _inextensible(span, dh, w, xp.maximum(L0 * (1.0 + strain), chord * (1 + 1e-6)))
     # a cable shorter than its chord is a stretched bar: H ≈ EA·(chord/L0 - 1)·span/chord
     bar = EA * (chord / L0 - 1.0) * span / chord
-    H = xp.maximum(second.H, bar)
-    return H, second.V_A * H / second.H
+    H = xp.maximum(H_c, bar)
+    return H, V_c * H / H_c
 
 
 def _solve(span, dh, w, EA, L0):
     H, V_A = _initial_guess(span, dh, w, EA, L0)
-    xp = namespace(H, V_A)
-    chord = xp.hypot(span, dh)
-    f_x, f_y, *jac = _closure(span, dh, w, EA, L0, H, V_A)
-    norm = xp.maximum(xp.abs(f_x), xp.abs(f_y)) / chord
-    history = [largest_abs(norm)]
-    for _ in range(60):
-        if history[-1] < _TOL:
-            return H, V_A, history
-        # stalled above _TOL: accept if at the round-off of the closure's terms
-        stalled = len(history) > 2 and history[-1] > 0.25 * history[-2]
-        if stalled:
-            floor = _round_off(span, dh, w, EA, L0, H, V_A, chord)
-            if np.all(norm <= floor) and history[-1] <= ACCEPT:  # residual() checks it again
-                return H, V_A, history
-        j_xh, j_xv, j_yh, j_yv = jac
-        det = j_xh * j_yv - j_xv * j_yh
-        d_h = -(f_x * j_yv - f_y * j_xv) / det
-        d_v = -(j_xh * f_y - j_yh * f_x) / det
-        step = 1.0 + 0.0 * norm
-        for _ in range(30):  # backtrack: keep H > 0 and reduce the residual
-            H_new = H + step * d_h
-            H_safe = xp.maximum(H_new, 1e-300)
-            # a trial step may overflow (H near 0): its non-finite residual fails `ok`
-            with np.errstate(over="ignore", invalid="ignore"):
-                f_x, f_y, *jac = _closure(span, dh, w, EA, L0, H_safe, V_A + step * d_v)
-                new = xp.maximum(xp.abs(f_x), xp.abs(f_y)) / chord
-            ok = (H_new > 0) & (new < norm * (1.0 - 1e-4 * step) + 4 * _TOL)
-            if np.all(ok):
-                break
-            step = step * np.where(ok, 1.0, 0.5) if xp is np else step * 0.5
-        H, V_A, norm = H_new, V_A + step * d_v, new
-        history.append(largest_abs(norm))
-    raise ConvergenceError("elastic_catenary: Newton did not converge", history)
+    result = solve2(_closure_of, H, V_A, (span, dh, w, EA, L0), what="elastic_catenary")
+    return result.x, result.y, result.history
 
 
 def inverse_2x2(j11, j12, j21, j22):
@@ -124,18 +185,19 @@ def inverse_2x2(j11, j12, j21, j22):
 def elastic_stiffness(s):
     """``∂(H, V_B)/∂(span, dh)`` of a free `ElasticCatenary`: the closure's Jacobian
     in ``(H, V_A)`` inverted (implicit function theorem), ``V_B = wL - V_A``."""
-    _, _, j_xh, j_xv, j_yh, j_yv = _closure(s.span, s.dh, s.w, s.EA, s.length, s.H, s.V_A)
+    _, _, j_xh, j_xv, j_yh, j_yv, _, _ = closure(s.span, s.dh, s.w, s.EA, s.length, s.H, s.V_A)
     return inverse_2x2(j_xh, j_xv, j_yh, j_yv) * np.array([[1.0], [-1.0]])
 
 
 def _x_of_s_minus(s, x, H, V_A, w, EA):
-    return H * s / EA + H / w * asinh_diff((w * s - V_A) / H, -V_A / H) - x
+    return H * s / EA + H / w * asinh_step(-V_A / H, w * s / H) - x
 
 
 class ElasticCatenary(CableSolution):
     """Solution of `elastic_catenary`.
 
-    Attributes are those of `Catenary`, with
+    Attributes are those of `Catenary` (``H = H_A = H_B``, the horizontal tension being the
+    same all along), with
     ``length`` the unstretched length, plus ``EA``, ``stretched_length`` and
     the Lagrangian maps ``x_of_s(s)``, ``y_of_s(s)``, ``s_of_x(x)``. The
     lowest point ``x_low, y_low`` is that of the cable (a support when the
@@ -155,28 +217,45 @@ class ElasticCatenary(CableSolution):
         return self.w * self.length - self.V_A
 
     @cached_property
+    def _ratios(self):
+        return ratios(self.H, self.V_A, self.w, self.length)
+
+    @cached_property
     def T_A(self):
-        return self._xp.hypot(self.H, self.V_A)
+        return self.H * self._ratios[3]
 
     @cached_property
     def T_B(self):
-        return self._xp.hypot(self.H, self.V_B)
+        return self.H * self._ratios[4]
 
     def _tv(self, s):
         return self.w * s - self.V_A
+
+    def xy(self, s):
+        """Positions ``(..., 2)`` (m) of the material points ``s`` (m of unstretched length from A)."""
+        return np.stack(np.broadcast_arrays(self.x_of_s(s), self.y_of_s(s)), axis=-1)
+
+    def T_of_s(self, s):
+        """Tension (N) at the material point ``s``: ``H sqrt(1 + (q + w s/H)²)``."""
+        s = real("s", s)
+        p_s = self._ratios[0] + self.w * s / self.H
+        with float_range("s", "T(s)"):
+            return _finite_at("s", self.H * namespace(p_s).hypot(1.0, p_s), "T(s)")
 
     def x_of_s(self, s):
         """Abscissa of the material point ``s`` (unstretched arc length from A)."""
         s = real("s", s)
         with float_range("s", "x(s)"):
-            x = self.H * s / self.EA + self.H / self.w * asinh_diff(self._tv(s) / self.H, -self.V_A / self.H)
+            x = self.H * s / self.EA + self.H / self.w * asinh_step(self._ratios[0], self.w * s / self.H)
         return _finite_at("s", x, "x(s)")
 
     def _y_terms(self, s):
-        tv, tv_a = self._tv(s), -self.V_A
-        xp = namespace(s, tv)
-        rise = (tv - tv_a) * (tv + tv_a) / (xp.hypot(self.H, tv) + self.T_A)
-        return s * (0.5 * self.w * s - self.V_A) / self.EA, rise / self.w  # stretch, inextensible
+        """The stretch and the inextensible part of ``y(s)``: ``(T(s) - T_A)/w`` as
+        ``s (p_s + q)/(r_s + r_q)`` with ``p_s = q + w s/H`` (the step formed directly)."""
+        q, rq = self._ratios[0], self._ratios[3]
+        p_s = q + self.w * s / self.H
+        shape = s * (p_s + q) / (namespace(p_s).hypot(1.0, p_s) + rq)
+        return s * (0.5 * self.w * s - self.V_A) / self.EA, shape
 
     def y_of_s(self, s):
         """Height above A of the material point ``s``."""
@@ -192,10 +271,11 @@ class ElasticCatenary(CableSolution):
         x_end = self.x_of_s(self.length)
         x = namespace(x, x_end).minimum(x, x_end)  # x(length) = span up to rounding
         # the parameters go in as arguments: the vectorised search passes them
-        # compressed to the elements still iterating
+        # compressed to the elements still iterating. The array back end may round x(length)
+        # otherwise: the bracket reaches 1e-9 beyond B, and the root is kept in [0, length]
         args = (x, self.H, self.V_A, self.w, self.EA)
-        s, _ = find_root(_x_of_s_minus, 0.0, self.length, args, what="s_of_x")
-        return s
+        s, _ = find_root(_x_of_s_minus, 0.0, self.length * (1.0 + 1e-9), args, what="s_of_x")
+        return namespace(s, self.length).minimum(s, self.length)
 
     def y(self, x):
         """Height of the cable above A at abscissa ``x`` (m)."""
@@ -223,13 +303,21 @@ class ElasticCatenary(CableSolution):
 
     @cached_property
     def stretched_length(self):
-        """Length of the loaded cable, ``L0 + ∫ T/EA ds``."""
+        r"""Length of the loaded cable, ``L0 + ∫ T/EA ds`` (Irvine 1981, §2.2).
+
+        :math:`\int_0^{L_0} T\,ds = \frac{H^2}{2w}\,(p r_p - q r_q + A)`, taken as
+        :math:`\frac{HL_0}{2}\,(K + A/d)` with :math:`K = (p r_p - q r_q)/d`, which is
+        :math:`r_p + q (p + q)/(r_p + r_q)` where p and q share a sign (no cancellation).
+        """
         xp = self._xp
-
-        def primitive(tv):  # ∫ sqrt(H² + tv²) d(tv)
-            return 0.5 * (tv * xp.hypot(self.H, tv) + self.H**2 * xp.arcsinh(tv / self.H))
-
-        return self.length + (primitive(self.V_B) - primitive(-self.V_A)) / (self.w * self.EA)
+        q, d, p, rq, rp = self._ratios
+        A = asinh_step_parts(q, d, p, rq, rp)[1]
+        same = p * q > 0
+        with np.errstate(invalid="ignore", divide="ignore"):
+            rationalised = rp + q * (p + q) / (rp + rq)
+            direct = (p * rp - q * rq) / d
+        K = xp.where(same, rationalised, direct) if xp is np else (rationalised if same else direct)
+        return self.length + 0.5 * self.H * self.length / self.EA * (K + A / d)
 
     @cached_property
     def _s_vertex(self):
@@ -237,11 +325,13 @@ class ElasticCatenary(CableSolution):
 
     @cached_property
     def x_vertex(self):
-        return self.x_of_s(self._s_vertex)
+        """``x(V_A/w)``: ``H V_A/(w EA) + (H/w) asinh(V_A/H)`` (the vertical force vanishes there)."""
+        return self.H * self.V_A / (self.w * self.EA) + self.H / self.w * self._xp.arcsinh(self.V_A / self.H)
 
     @cached_property
     def y_vertex(self):
-        return self.y_of_s(self._s_vertex)
+        """``y(V_A/w)``: ``-(V_A/w) V_A (1/(2 EA) + 1/(H + T_A))``, no cancellation."""
+        return -(self.V_A / self.w) * (self.V_A * (0.5 / self.EA + 1.0 / (self.H + self.T_A)))
 
     @cached_property
     def x_low(self):
@@ -263,15 +353,65 @@ class ElasticCatenary(CableSolution):
         return self.dh * self.x_of_s(s_star) / self.span - self.y_of_s(s_star)
 
     def _residuals(self):
+        """The closure evaluated by other formulas than the solve's (`asinh_step_log` for
+        the arc, ``(H/w)(p + q) tanh(A/2)`` for ``(T_B - T_A)/w``), so that neither can hide
+        the other's round-off, each over the size of its terms (its round-off); the end
+        tensions; the vertical balance; the length."""
         xp = self._xp
-        chord = xp.hypot(self.span, self.dh)
-        yield (self.x_of_s(self.length) - self.span) / chord  # both terms of x(s) are positive
-        stretch, shape = self._y_terms(self.length)
-        yield (stretch + shape - self.dh) / (chord + xp.abs(stretch) + xp.abs(shape))
+        q, d, p, rq, rp = self._ratios
+        A = asinh_step_log(q, d, p, rq, rp)
+        stretch, shape = self.H * self.length / self.EA, self.H / self.w * A
+        yield (stretch + shape - self.span) / (stretch + shape + self.span)  # terms all positive
+        L, w, V_A = self.length, self.w, self.V_A
+        half = self.H / w * xp.tanh(0.5 * A)
+        y_stretch, y_shape = L * (0.5 * w * L - V_A) / self.EA, half * (p + q)
+        operands = L * (0.5 * w * L + xp.abs(V_A)) / self.EA + half * (xp.abs(p) + xp.abs(q))
+        yield (y_stretch + y_shape - self.dh) / (operands + xp.abs(self.dh))
         weight = self.w * self.length
         # V_B is w·L - V_A: the sum cancels to round-off of the reactions
         yield (self.V_A + self.V_B - weight) / (xp.abs(self.V_A) + xp.abs(self.V_B) + weight)
         yield from self._common_residuals(xp)
+
+
+def _checked_floats(e) -> bool:
+    """`ElasticCatenary._residuals` (and the finiteness of the vertex) written out on the floats
+    of one scene, each term within `ACCEPT`; the values it computes are kept on ``e``. False
+    where the general check must decide (it then raises the right error)."""
+    H, V_A, w, L, EA = e.H, e.V_A, e.w, e.length, e.EA
+    try:
+        q, d = -V_A / H, w * L / H
+        p = q + d
+        rq, rp = math.hypot(1.0, q), math.hypot(1.0, p)
+        e_p = p + rp if p >= 0 else 1.0 / (rp - p)  # exp(asinh p), as in `asinh_step_log`
+        e_q = q + rq if q >= 0 else 1.0 / (rq - q)
+        A = math.log1p(d * (e_p + e_q) / ((rp + rq) * e_q))
+        stretch, shape = H * L / EA, H / w * A
+        half = H / w * math.tanh(0.5 * A)
+        y_stretch, operands = L * (0.5 * w * L - V_A) / EA, L * (0.5 * w * L + abs(V_A)) / EA
+        V_B, weight, T_A, T_B = w * L - V_A, w * L, H * rq, H * rp
+        t_a, v_a, t_b, v_b = H / T_A, V_A / T_A, H / T_B, V_B / T_B
+        terms = (
+            (stretch + shape - e.span) / (stretch + shape + e.span),
+            (y_stretch + half * (p + q) - e.dh) / (operands + half * (abs(p) + abs(q)) + abs(e.dh)),
+            (V_A + V_B - weight) / (abs(V_A) + abs(V_B) + weight),
+            0.5 * ((1.0 - t_a) * (1.0 + t_a) - v_a * v_a),
+            0.5 * ((1.0 - t_b) * (1.0 + t_b) - v_b * v_b),
+        )
+        x_vertex = H * V_A / (w * EA) + H / w * math.asinh(V_A / H)
+        y_vertex = -(V_A / w) * (V_A * (0.5 / EA + 1.0 / (H + T_A)))
+    except (OverflowError, ZeroDivisionError, ValueError):
+        return False
+    if not (
+        all(-ACCEPT <= t <= ACCEPT for t in terms) and -_INF < x_vertex < _INF and -_INF < y_vertex < _INF
+    ):
+        return False  # NaN too
+    e.__dict__.update(
+        _ratios=(q, d, p, rq, rp), V_B=V_B, T_A=T_A, T_B=T_B, x_vertex=x_vertex, y_vertex=y_vertex
+    )
+    return True
+
+
+_INF = math.inf
 
 
 def elastic_catenary(span, dh, w, EA, *, length):
@@ -313,6 +453,9 @@ def elastic_catenary(span, dh, w, EA, *, length):
         H, V_A, history = _solve(span, dh, w, EA, L0)
     except (OverflowError, ZeroDivisionError) as exc:
         raise InputError("EA", f"the closure equations overflow for these data ({exc})") from exc
+    _plausible.stiffness(EA, w, L0)
     with float_range("length", "a result"):
         solution = ElasticCatenary(span, dh, w, EA, L0, H, V_A, ("length", L0))
+        if type(H) is float and type(V_A) is float and _checked_floats(solution):
+            return solution
         return checked_closed_form(solution, "length", history)

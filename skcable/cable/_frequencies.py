@@ -39,6 +39,7 @@ from scipy.linalg import eigh
 from scipy.optimize import brentq
 from skfem import Basis, BilinearForm, ElementLineP2, LinearForm, MeshLine
 
+from skcable import _plausible
 from skcable._checks import exactly_one, positive, real, scalar, whole
 from skcable.cable._catenary import catenary
 from skcable.errors import ConvergenceError, InputError
@@ -241,6 +242,7 @@ def natural_frequencies(span, dh, w, EA, *, H=None, sag=None, n_modes=6, g=9.81)
     sym_part = np.linalg.norm(shapes + shapes[:, mirror], axis=1)
     anti_part = np.linalg.norm(shapes - shapes[:, mirror], axis=1)
     lambda2 = (w * span / H) ** 2 * span * EA / (H * L_e)
+    _plausible.conductor(span, dh, EA=EA, w=w, sag=sag if name == "sag" else None)
     return NaturalFrequencies(
         f_in_plane=results["in"][0],
         f_out_of_plane=results["out"][0],

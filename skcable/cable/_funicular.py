@@ -27,7 +27,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from skcable._checks import positive, real, require, scalar
+from skcable._checks import positive, real, require, scalar, whole
+from skcable._newton2 import solve2
 from skcable.cable.solution import ACCEPT
 from skcable.errors import ConvergenceError, InputError
 
@@ -37,6 +38,36 @@ __all__ = ["Funicular", "FunicularVertical", "funicular", "funicular_vertical"]
 def _unit(size):
     """A power of two near ``size`` (> 0): dividing by it is exact."""
     return math.ldexp(0.5, math.frexp(float(size))[1])
+
+
+_EPS = float(np.finfo(float).eps)
+
+
+def _closure(tx, ty, offsets, L, target, total):
+    """Closure error ``(Σ L_j t_j/|t_j| - B)/Σ L_j`` of the first segment force ``(tx, ty)``,
+    its Jacobian ``Σ L_j (I - e_j e_jᵀ)/|t_j|`` (over ``Σ L_j``) and the sizes (1: relative to
+    the total length), then the segment forces, their norms and directions; NaN where a
+    segment would go slack."""
+    forces = np.array([tx, ty]) - offsets
+    norms = np.hypot(forces[:, 0], forces[:, 1])
+    if not np.all(norms > 0):
+        return (math.nan,) * 6 + (1.0, 1.0, forces, norms, forces)
+    units = forces / norms[:, None]
+    error = (units.T @ L - target) / total
+    jac = np.einsum("j,jab->ab", L / norms, np.eye(2) - units[:, :, None] * units[:, None, :]) / total
+    return (
+        float(error[0]),
+        float(error[1]),
+        float(jac[0, 0]),
+        float(jac[0, 1]),
+        float(jac[1, 0]),
+        float(jac[1, 1]),
+        1.0,
+        1.0,
+        forces,
+        norms,
+        units,
+    )
 
 
 def _finite(name, what, *arrays):
@@ -173,8 +204,7 @@ def funicular(B, lengths, loads, *, tol: float = 1e-13, max_iter: int = 100) -> 
         )
     tol = scalar("tol", tol)
     require("tol", tol > 0, "must be > 0", tol)
-    if isinstance(max_iter, (bool, np.bool_)) or not isinstance(max_iter, (int, np.integer)) or max_iter < 1:
-        raise InputError("max_iter", f"must be a positive integer, got {max_iter!r}")
+    max_iter = whole("max_iter", max_iter, 1)
     largest = np.abs(loads).max(initial=0.0)
     if not largest > 0:
         raise InputError(
@@ -194,42 +224,13 @@ def funicular(B, lengths, loads, *, tol: float = 1e-13, max_iter: int = 100) -> 
 
     # start: a parabola-like guess, H from the total load, V sharing the weight
     scale = np.abs(P).sum()
-    t1 = np.array([scale, -0.5 * P[:, 1].sum() - 0.5 * P[:, 0].sum() + target[1] / total * scale])
-    history = []
-
-    def closure(t1):
-        forces = t1 - offsets
-        norms = np.hypot(forces[:, 0], forces[:, 1])
-        units = forces / norms[:, None]
-        return forces, norms, units, units.T @ L - target
-
-    with np.errstate(divide="ignore", invalid="ignore"):
-        forces, norms, units, error = closure(t1)
-        for _ in range(max_iter):
-            history.append(float(np.abs(error).max() / total))
-            if history[-1] < tol:
-                break
-            jac = np.einsum("j,jab->ab", L / norms, np.eye(2) - units[:, :, None] * units[:, None, :])
-            try:
-                step = -np.linalg.solve(jac, error)
-            except np.linalg.LinAlgError as exc:
-                raise ConvergenceError(f"funicular: singular Jacobian ({exc})", history) from exc
-            alpha = 1.0
-            for _ in range(40):  # backtracking on the closure error
-                trial = closure(t1 + alpha * step)
-                if np.all(trial[1] > 0) and np.abs(trial[3]).max() < np.abs(error).max() * (1 - 1e-4 * alpha):
-                    break
-                alpha *= 0.5
-            else:  # no step along Newton's direction reduces the closure error: stop now
-                raise ConvergenceError(
-                    "funicular: line search found no decrease of the closure error", history
-                )
-            t1 = t1 + alpha * step
-            forces, norms, units, error = trial
-        else:
-            raise ConvergenceError("funicular: Newton did not converge", history)
-    if not (np.all(np.isfinite(forces)) and np.all(norms > 0)):
-        raise ConvergenceError("funicular: Newton stopped on a slack or undefined segment", history)
+    t1 = (scale, -0.5 * P[:, 1].sum() - 0.5 * P[:, 0].sum() + target[1] / total * scale)
+    # the closure's round-off: a few ulps of the n + 1 terms it sums, relative to the total length
+    floor = max(tol, 4.0 * _EPS * len(L))
+    args = (offsets, L, target, total)
+    result = solve2(_closure, *t1, args, floor=floor, slack=0.0, what="funicular", max_iter=max_iter)
+    forces, norms, units = result.last[8:]
+    history = result.history
     nodes = np.vstack([np.zeros(2), np.cumsum(L[:, None] * units, axis=0)]) * length_unit
     nodes[-1] = B
     forces = forces * force_unit

@@ -33,7 +33,7 @@ from skcable._checks import broadcast, exactly_one, float_range, positive, real,
 from skcable._xp import namespace
 from skcable.cable._catenary import _finite_at, _lowest, _unit
 from skcable.cable._roots import find_root
-from skcable.cable._special import asinh_diff
+from skcable.cable._special import asinh_step
 from skcable.cable.solution import CableSolution, checked_closed_form, matrix_2x2
 from skcable.errors import InputError
 
@@ -71,7 +71,7 @@ def _excess_closed(a, slope, delta):
     xp = namespace(a, slope, delta)
     p_a, p_b = slope - delta, slope + delta
     rise = p_b * xp.hypot(1.0, p_b) - p_a * xp.hypot(1.0, p_a)
-    return 0.5 * a * (rise + asinh_diff(p_b, p_a)) - 2.0 * a * delta * xp.hypot(1.0, slope)
+    return 0.5 * a * (rise + asinh_step(p_a, 2.0 * delta)) - 2.0 * a * delta * xp.hypot(1.0, slope)
 
 
 def _excess_length(a, slope, delta):
@@ -132,7 +132,7 @@ def length_derivatives(a, slope, delta, length):
 class Parabola(CableSolution):
     """Solution of `parabola`; every attribute broadcasts.
 
-    Attributes are those of `Catenary` (``H, V_A, V_B,
+    Attributes are those of `Catenary` (``H = H_A = H_B``, the same all along, ``V_A, V_B,
     T_A, T_B, length, sag``, the lowest point ``x_low, y_low`` in [0, span],
     the vertex ``x_vertex, y_vertex``, which may lie outside the span);
     ``a = H/w`` and the end slopes ``p_A``, ``p_B``.
@@ -213,6 +213,29 @@ class Parabola(CableSolution):
     def weight_per_length(self, x, slope):
         return self.w / np.hypot(1.0, slope)  # w per horizontal metre
 
+    def s_of_x(self, x):
+        """Arc length (m) from A to the abscissa ``x`` (`arc_length`)."""
+        return arc_length(real("x", x), self.a, self.p_A)
+
+    def x_of_s(self, s):
+        """Abscissa (m) of the point at arc length ``s`` (m) from A, in [0, length] (a root of
+        the increasing `s_of_x`)."""
+        s = real("s", s)
+        require("s", (s >= 0) & (s <= self.length), "must lie in [0, length]", s)
+        s = namespace(s).minimum(s, self.s_of_x(self.span))  # the length up to rounding
+        args = (s, self.a, self.p_A)
+        x, _ = find_root(_arc_length_minus, 0.0, self.span * (1.0 + 1e-9), args, what="x_of_s")
+        return namespace(x).minimum(x, self.span)
+
+    def xy(self, s):
+        """Positions ``(..., 2)`` (m) at arc length ``s`` (m) from A."""
+        x = self.x_of_s(s)
+        return np.stack(np.broadcast_arrays(x, self.y(x)), axis=-1)
+
+    def T_of_s(self, s):
+        """Tension (N) at arc length ``s`` (m) from A."""
+        return self.T(self.x_of_s(s))
+
     @cached_property
     def k_G(self):
         """Geometric stiffness ``dH/d(span)`` at constant length and ``dh`` (N/m).
@@ -251,6 +274,28 @@ class Parabola(CableSolution):
         # vertical equilibrium: V_A and V_B cancel for taut inclined cables
         yield (self.V_A + self.V_B - load) / (xp.abs(self.V_A) + xp.abs(self.V_B) + load)
         yield from self._common_residuals(xp)
+
+
+def arc_length(x, a, p_A):
+    r"""Arc length (m) of the parabola ``y' = p_A + x/a`` from 0 to ``x``:
+    :math:`\frac{a}{2}\big[p\sqrt{1 + p^2} + \operatorname{asinh} p\big]_{p_A}^{p}`,
+    ``p = p_A + x/a``, with the step ``d = x/a`` formed directly (`asinh_step`, and
+    :math:`p r - p_A r_A = d\,(r + p_A (p + p_A)/(r + r_A))` where the slopes share a sign)."""
+    xp = namespace(x, a, p_A)
+    d = x / a
+    p_a = p_A + 0.0 * d
+    p = p_a + d
+    r, r_a = xp.hypot(1.0, p), xp.hypot(1.0, p_a)
+    same = p * p_a > 0
+    with np.errstate(invalid="ignore", divide="ignore"):
+        rationalised = d * (r + p_a * (p + p_a) / (r + r_a))
+        direct = p * r - p_a * r_a
+    rise = xp.where(same, rationalised, direct) if xp is np else (rationalised if same else direct)
+    return 0.5 * a * (rise + asinh_step(p_a, d))
+
+
+def _arc_length_minus(x, s, a, p_A):
+    return arc_length(x, a, p_A) - s
 
 
 def _a_from_length(span, dh, length):

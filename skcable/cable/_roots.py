@@ -10,7 +10,6 @@ raises instead of returning an unconverged root.
 from __future__ import annotations
 
 import numpy as np
-from scipy.optimize import brentq, elementwise
 
 from skcable.errors import ConvergenceError
 
@@ -36,6 +35,8 @@ def find_root(f, lo, hi, args=(), *, what: str = "root", xtol: float | None = No
     if shape == ():
         return _scalar_root(f, float(lo), float(hi), args, what, history, xtol)
 
+    from scipy.optimize import elementwise  # imported here: `import skcable.cable` stays light
+
     def record(res):
         history.append(float(np.max(np.abs(res.f_x))))
 
@@ -54,6 +55,7 @@ def find_root(f, lo, hi, args=(), *, what: str = "root", xtol: float | None = No
 
 def _scalar_root(f, lo, hi, args, what, history, xtol=None):
     """Brent's method to a few ulps of the bracket's scale (or to ``xtol``)."""
+    from scipy.optimize import brentq  # imported here: `import skcable.cable` stays light
 
     def g(x, *a):
         value = float(f(x, *a))

@@ -10,16 +10,17 @@ is at most a factor 6 of the machine epsilon. They take floats or arrays
 
 from __future__ import annotations
 
+import math
 from math import factorial, log
 
 import numpy as np
 
 from skcable._xp import namespace
 
-#: Maclaurin coefficients of (sinh z / z - 1) / z**2 in powers of z**2.
-_SINHC = tuple(1.0 / factorial(2 * k + 1) for k in range(9, 0, -1))
-#: Coefficients of d/dz(sinh z / z) / z in powers of z**2.
-_DSINHC = tuple(2.0 * k / factorial(2 * k + 1) for k in range(9, 0, -1))
+#: Maclaurin coefficients of (sinh z / z - 1) / z**2 in powers of z**2, highest first.
+SINHC_SERIES = _SINHC = tuple(1.0 / factorial(2 * k + 1) for k in range(9, 0, -1))
+#: Coefficients of d/dz(sinh z / z) / z in powers of z**2, highest first.
+DSINHC_SERIES = _DSINHC = tuple(2.0 * k / factorial(2 * k + 1) for k in range(9, 0, -1))
 _SERIES_BELOW = 1.0
 _LOG2 = log(2.0)
 
@@ -29,6 +30,12 @@ def horner(coefficients, t):
 
     ``numpy.polyval`` does the same with ten times the overhead on scalars.
     """
+    if isinstance(t, np.ndarray):  # in place: one array, not two per coefficient
+        result = np.full(t.shape, coefficients[0])
+        for c in coefficients[1:]:
+            result *= t
+            result += c
+        return result
     result = coefficients[0]
     for c in coefficients[1:]:
         result = result * t + c
@@ -39,8 +46,8 @@ def largest_abs(value) -> float:
     """``max(|value|)`` as a float, NaN if any element is NaN; cheap on scalars."""
     if not isinstance(value, np.ndarray):
         return abs(float(value))
-    value = np.abs(value)
-    return float("nan") if np.isnan(value).any() else float(value.max())
+    top, low = float(value.max()), float(value.min())  # two reductions, no |value| array
+    return top if top != top else low if low != low else max(top, -low)
 
 
 def piecewise(z, small, series, direct):
@@ -76,6 +83,26 @@ def dsinhc(z):
     )
 
 
+_S0, _S1, _S2, _S3, _S4, _S5, _S6, _S7, _S8 = _SINHC
+_D0, _D1, _D2, _D3, _D4, _D5, _D6, _D7, _D8 = _DSINHC
+
+
+def sinhc_pair(z: float) -> tuple[float, float]:
+    """`sinhc_m1` and `dsinhc` of one Python float ``z > 0``, by the same operations (the
+    same bits) unrolled: the hot scalar path of the catenary's length solve."""
+    if z < _SERIES_BELOW:
+        t = z * z
+        phi = (
+            ((((((_S0 * t + _S1) * t + _S2) * t + _S3) * t + _S4) * t + _S5) * t + _S6) * t + _S7
+        ) * t + _S8
+        dphi = (
+            ((((((_D0 * t + _D1) * t + _D2) * t + _D3) * t + _D4) * t + _D5) * t + _D6) * t + _D7
+        ) * t + _D8
+        return t * phi, z * dphi
+    s = math.sinh(z)
+    return s / z - 1.0, (z * math.cosh(z) - s) / (z * z)
+
+
 def z_minus_tanh(z):
     """``z - tanh(z)`` without cancellation: ``z**2 * dsinhc(z) / cosh(z)``."""
     return z * z * dsinhc(z) / namespace(z).cosh(z)
@@ -106,6 +133,71 @@ def asinh_diff(p, q):
         return xp.arcsinh((p - q) * (p + q) / (p * rq + q * rp) if same else p * rq - q * rp)
     den = np.where(same, p * rq + q * rp, 1.0)
     return np.arcsinh(np.where(same, (p - q) * (p + q) / den, p * rq - q * rp))
+
+
+def asinh_step_parts(q, d, p, rq, rp):
+    r"""``(S, A)``: ``A = asinh(q + d) - asinh(q)`` and ``S = sinh(A)``, from ``q``, the step
+    ``d >= 0`` formed directly (``wL/H``, never a difference of rounded ratios), ``p = q + d``
+    and ``rq = sqrt(1 + q²)``, ``rp = sqrt(1 + p²)`` (the caller's, often ``T/H`` at the ends).
+
+    With :math:`\alpha = \operatorname{asinh} p`, :math:`\beta = \operatorname{asinh} q`,
+    :math:`\sinh(\alpha - \beta) = p r_q - q r_p`, rationalised where p and q share a sign
+    (the only case where it cancels) to :math:`d\,(p + q)/(p r_q + q r_p)`: every operation
+    is then free of cancellation, and the result keeps its digits however small ``d`` is
+    against ``|q|`` (a taut, steep line: ``d`` ~ 1e-12, ``|q|`` ~ 1). The difference of the
+    rounded ratios, `asinh_diff`, loses ``|q|/d`` ulps there.
+    """
+    xp = namespace(q, d, p)
+    if xp is not np:
+        S = d * (p + q) / (p * rq + q * rp) if p * q > 0 else p * rq - q * rp
+        return S, xp.arcsinh(S)
+    same = p * q > 0
+    with np.errstate(invalid="ignore", divide="ignore"):
+        S = np.where(same, d * (p + q) / np.where(same, p * rq + q * rp, 1.0), p * rq - q * rp)
+    return S, np.arcsinh(S)
+
+
+def asinh_step(q, d):
+    """``asinh(q + d) - asinh(q)`` from ``q`` and the step ``d >= 0`` formed directly
+    (see `asinh_step_parts`): the arc of a catenary between two points of vertical
+    tension components ``q·H`` and ``(q + d)·H`` is ``(H/w)·asinh_step(q, d)`` with
+    ``d = w·s/H``, ``s`` the unstretched length between them.
+
+    This is the primitive of every closure of a hanging line (Irvine's elastic
+    catenary, the suspended part of a line on the seabed, each piece of a multi-segment
+    line): pass ``d = w s / H`` computed from the weight and the length, never
+    ``V_top/H - V_bot/H``.
+
+    >>> import math
+    >>> q, d = -1.15, 1.5e-12
+    >>> abs(asinh_step(q, d) / (d / math.sqrt(1 + q * q)) - 1) < 1e-11
+    True
+    """
+    xp = namespace(q, d)
+    p = q + d
+    return asinh_step_parts(q, d, p, xp.hypot(1.0, q), xp.hypot(1.0, p))[1]
+
+
+def _exp_asinh(v, rv):
+    """``v + sqrt(1 + v²) = exp(asinh v)`` without cancellation (``rv = sqrt(1 + v²)``)."""
+    if not isinstance(v, np.ndarray) and not isinstance(rv, np.ndarray):
+        return v + rv if v >= 0 else 1.0 / (rv - v)
+    with np.errstate(divide="ignore"):
+        return np.where(v >= 0, v + rv, 1.0 / (rv - v))
+
+
+def asinh_step_log(q, d, p, rq, rp):
+    r"""``asinh(q + d) - asinh(q)`` by another formula than `asinh_step_parts`, for the
+    residual checks (which must not share the solve's round-off).
+
+    With :math:`e_v = v + \sqrt{1 + v^2} = e^{\operatorname{asinh} v}`:
+    :math:`\alpha - \beta = \log(e_p/e_q) = \operatorname{log1p}\big(d\,(e_p + e_q)/((r_p +
+    r_q)\,e_q)\big)`, since :math:`e_p - e_q = d\,(e_p + e_q)/(r_p + r_q)`; each factor is a
+    sum of positive terms (``e_v`` for negative ``v`` as ``1/(r_v - v)``).
+    """
+    xp = namespace(q, d, p)
+    e_p, e_q = _exp_asinh(p, rp), _exp_asinh(q, rq)
+    return xp.log1p(d * (e_p + e_q) / ((rp + rq) * e_q))
 
 
 def log_cosh(x):

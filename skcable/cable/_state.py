@@ -42,6 +42,7 @@ from __future__ import annotations
 
 import numpy as np
 
+from skcable import _plausible
 from skcable._checks import broadcast, nonnegative, positive, real, require, scalar
 from skcable.cable._catenary import catenary
 from skcable.cable._elastic import elastic_catenary
@@ -128,7 +129,12 @@ def thermal_catenary(span, dh, w, EA, *, length, alpha, t, t0=0.0):
 
 def _thermal_factor(alpha, t, t0):
     k = 1.0 + alpha * (t - t0)
-    require("t", k > 0, "gives a thermal factor 1 + alpha (t - t0) <= 0", k)
+    require(
+        _plausible.thermal_argument(alpha, t, t0) if np.any(k <= 0) else "t",
+        k > 0,
+        "gives a thermal factor 1 + alpha (t - t0) <= 0",
+        k,
+    )
     return k
 
 
@@ -318,6 +324,7 @@ def change_of_state(
     out.update(w=w, t=t, wind=wind)
     if shape == ():
         out = {key: float(value) for key, value in out.items()}
+    _plausible.conductor(span, dh, EA=EA, w=max(w0, float(np.max(w))), sag=sag0, alpha=alpha, t=t, t0=t0)
     return ChangeOfState(**out, L0=float(L0), H0=float(H0_out), sag0=float(sag0_out), model=model)
 
 

@@ -19,7 +19,7 @@ from skcable._checks import broadcast, float_range, positive, real, require, sca
 from skcable._xp import namespace
 from skcable.cable._catenary import Catenary, catenary
 from skcable.cable._roots import find_root
-from skcable.cable._special import asinh_diff, log_cosh
+from skcable.cable._special import asinh_step, log_cosh
 from skcable.cable.solution import ACCEPT
 from skcable.errors import ConvergenceError, InputError
 
@@ -83,7 +83,8 @@ def ring_on_rod(dh, w, length, mu) -> Catenary:
     )
     with float_range("dh, w, length, mu", "the slip limit"), np.errstate(over="ignore", invalid="ignore"):
         a = gap / (2.0 * denominator)
-        span = a * asinh_diff(sinh_b, sinh_b - length / a)
+        step = length / a
+        span = a * asinh_step(sinh_b - step, step)  # the step formed directly
     require(
         "dh, w, length, mu",
         (span > 0) & (span < math.inf),

@@ -8,11 +8,15 @@ consistent unit system works (SI by default: m, N, N/m).
 Every solver broadcasts over its arguments: a solution holds scalars for
 scalar input, arrays for array input, and its methods broadcast ``x``
 against that shape.
+
+Every solution satisfies `skcable.results.CableResult`: end forces named by end (``H_A``,
+``V_A``, ``H_B``, ``V_B``, ``T_A``, ``T_B``), ``xy(s)`` and ``T_of_s(s)`` at unstretched arc
+length ``s`` from A, ``profile(n)``, ``stiffness()``, ``tensions()``, ``to_frame()``,
+``to_vtk(path)``; ``y(x)``, ``T(x)`` and ``slope(x)`` take the abscissa ``x`` along the span.
 """
 
 from __future__ import annotations
 
-import functools
 import math
 from functools import cached_property
 
@@ -22,13 +26,14 @@ from skcable._checks import whole
 from skcable._xp import namespace
 from skcable.cable._special import largest_abs
 from skcable.errors import ConvergenceError, InputError
+from skcable.results import ProfileMixin
 
 __all__ = ["CableSolution", "checked", "matrix_2x2"]
 
 #: Largest relative residual a solver may hand back without raising.
 ACCEPT = 1e-9
 #: Which attribute of a solution each constraint keyword fixes.
-_ATTRIBUTE_OF = {"length": "length", "sag": "sag", "H": "H", "low": "y_low", "T_max": "T_max"}
+ATTRIBUTE_OF = {"length": "length", "sag": "sag", "H": "H", "low": "y_low", "T_max": "T_max"}
 _SHOWN = ("H", "V_A", "V_B", "T_A", "T_B", "length", "sag", "x_low", "y_low", "x_vertex", "y_vertex")
 #: The forces among them (an overflow there is blamed on the load unless a force is the constraint).
 _FORCES = frozenset(("H", "V_A", "V_B", "T_A", "T_B"))
@@ -42,10 +47,14 @@ def matrix_2x2(k11, k12, k21, k22):
 
 
 class CableSolution:
-    """Base of the suspended-cable solutions.
+    """Base of the suspended-cable solutions (`skcable.results.CableResult`).
 
-    Subclasses define ``H, V_A, V_B, T_A, T_B, length, sag, x_low, y_low``
-    and the methods ``y(x)``, ``T(x)``, ``slope(x)`` and ``_residuals()``.
+    Subclasses define ``H, V_A, V_B, T_A, T_B, length, sag, x_low, y_low``,
+    the methods ``y(x)``, ``T(x)``, ``slope(x)`` (``x`` in m along the span),
+    ``xy(s)``, ``T_of_s(s)`` (``s`` in m of unstretched arc length from A),
+    ``stiffness()`` and ``_residuals()``. ``H_A`` and ``H_B`` are ``H`` unless a
+    subclass says otherwise: under vertical loads the horizontal tension is
+    the same all along the cable.
     ``x_low, y_low`` is the lowest point *of the cable*, in ``[0, span]``: a
     support when the profile rises or falls all along the span. The closed
     forms also define ``x_vertex, y_vertex``, the vertex (horizontal tangent)
@@ -55,6 +64,39 @@ class CableSolution:
 
     span: np.ndarray
     dh: np.ndarray
+
+    # `ProfileMixin`'s methods, not its class as a base: subclasses that also list the mixin
+    # (the finite-element solutions) keep a consistent method order
+    profile = ProfileMixin.profile
+    to_frame = ProfileMixin.to_frame
+    tensions = ProfileMixin.tensions
+
+    @cached_property
+    def H_A(self):
+        """Horizontal tension at A (N): ``H``, the same all along under vertical loads."""
+        return self.H
+
+    @cached_property
+    def H_B(self):
+        """Horizontal tension at B (N): ``H``, the same all along under vertical loads."""
+        return self.H
+
+    def xy(self, s):  # pragma: no cover - abstract
+        """Positions ``(..., 2)`` (m) at unstretched arc length ``s`` (m) from A."""
+        raise NotImplementedError
+
+    def T_of_s(self, s):  # pragma: no cover - abstract
+        """Tension (N) at unstretched arc length ``s`` (m) from A."""
+        raise NotImplementedError
+
+    def stiffness(self):  # pragma: no cover - abstract
+        """Fairlead stiffness ``∂(H_B, V_B)/∂(span, dh)`` with A fixed (N/m), ``(*shape, 2, 2)``."""
+        raise NotImplementedError
+
+    def finite_beyond_residual(self) -> bool:
+        """Whether the shown attributes the residual does not evaluate (the length and the
+        vertex of the closed forms) are finite floats (a subclass may bound them instead)."""
+        return all(_finite(getattr(self, name)) for name in _BEYOND_RESIDUAL)
 
     def residual(self) -> float:
         """Largest relative residual of equilibrium, closure and constraint.
@@ -72,13 +114,20 @@ class CableSolution:
         raise NotImplementedError
 
     def _common_residuals(self, xp):
-        """End tensions along the tangent, and the user's constraint met."""
-        H_B = getattr(self, "H_B", self.H)  # differs from H only under horizontal loads
-        out = [
-            (T - xp.hypot(H, V)) / T for T, H, V in ((self.T_A, self.H, self.V_A), (self.T_B, H_B, self.V_B))
-        ]
+        """End tensions along the tangent, and the user's constraint met.
+
+        ``T² = H² + V²`` as ``((1 - t)(1 + t) - v²)/2`` with ``t = H/T``, ``v = V/T``
+        (``≈ 1 - hypot(H, V)/T``, without a hypot: 3 ulps of it at most)."""
+        H_A = getattr(self, "H_A", None)
+        H_A = self.H if H_A is None else H_A
+        H_B = getattr(self, "H_B", None)  # differ from H only under horizontal loads
+        H_B = H_A if H_B is None else H_B
+        out = []
+        for T, H, V in ((self.T_A, H_A, self.V_A), (self.T_B, H_B, self.V_B)):
+            t, v = H / T, V / T
+            out.append(0.5 * ((1.0 - t) * (1.0 + t) - v * v))
         name, value = self.constraint
-        achieved = getattr(self, _ATTRIBUTE_OF[name])
+        achieved = getattr(self, ATTRIBUTE_OF[name])
         # the lowest point against the chord, or against itself when deeper
         scale = xp.hypot(self.span, self.dh) + xp.abs(value) if name == "low" else value
         out.append((achieved - value) / scale)
@@ -88,7 +137,8 @@ class CableSolution:
         name = type(self).__name__
         if np.ndim(self.H) != 0:
             return f"{name}(shape={np.shape(self.H)}, constraint={self.constraint[0]!r})"
-        shown = ", ".join(f"{k}={float(getattr(self, k)):.9g}" for k in _shown(type(self)))
+        # instance attributes (H, V_A, length of the elastic forms) as well as the class's
+        shown = ", ".join(f"{k}={float(getattr(self, k)):.9g}" for k in _shown(self))
         return f"{name}(span={self.span:g}, dh={self.dh:g}, w={self.w:g}: {shown})"
 
     @cached_property
@@ -167,7 +217,7 @@ def checked_closed_form(solution: CableSolution, argument: str, history=(), load
     above `ACCEPT` `ConvergenceError`."""
     try:
         residual = solution.residual()
-        if residual <= ACCEPT and all(_finite(getattr(solution, name)) for name in _BEYOND_RESIDUAL):
+        if residual <= ACCEPT and solution.finite_beyond_residual():
             return solution
     except (OverflowError, ZeroDivisionError):
         pass
@@ -175,9 +225,11 @@ def checked_closed_form(solution: CableSolution, argument: str, history=(), load
     return checked(solution, history)
 
 
-@functools.cache
-def _shown(cls) -> tuple[str, ...]:
-    return tuple(name for name in _SHOWN if hasattr(cls, name))
+def _shown(solution) -> tuple[str, ...]:
+    """The `_SHOWN` names a solution has: its class's, and its instance attributes (the
+    elastic forms store ``H``, ``V_A`` and ``length`` on the instance)."""
+    cls, own = type(solution), vars(solution)
+    return tuple(name for name in _SHOWN if name in own or hasattr(cls, name))
 
 
 def checked(solution: CableSolution, history=()) -> CableSolution:

@@ -1,12 +1,51 @@
 """Finite-element machinery shared by cables and strands; it knows no physics.
 
-- `skcable.fe.assembly`: section laws assembled by ``einsum`` on scikit-fem's basis
-  values, fixed sparsity patterns, banded LAPACK solves;
-- `skcable.fe.newton`: one Newton–Raphson with line search, a stagnation stop and a
-  result carrying its history.
+- `skcable.fe.assembly`: one assembly of section laws on scikit-fem's basis values (elements
+  last, batched products, a sparsity pattern computed once);
+- `skcable.fe.linear`: banded LAPACK solves, a sparse solve where a term breaks the band, the
+  bordered solve of one global unknown;
+- `skcable.fe.newton`: one Newton–Raphson with line search, a stagnation stop and a result
+  carrying its history; `NewtonOptions`, the user's settings of it;
+- `skcable.fe.terms`: the term protocol every model's physics follows;
+- `skcable.fe.check`: a term's tangent against central differences.
+
+The assembly, the linear systems and the check load on first use (PEP 562): a closed-form solver
+that runs `newton` does not load scikit-fem. `newton` itself is imported at once: the function
+has its module's name, and a submodule imported later must not take its place.
 """
 
-from skcable.fe.assembly import BandedSystem, StrainAssembly
-from skcable.fe.newton import NewtonResult, minimize, newton
+from __future__ import annotations
 
-__all__ = ["BandedSystem", "NewtonResult", "StrainAssembly", "minimize", "newton"]
+from typing import TYPE_CHECKING
+
+from skcable._lazy import attach
+from skcable.fe.newton import NewtonOptions, NewtonResult, minimize, newton
+
+if TYPE_CHECKING:  # what static tools see; at run time, `attach` below serves them
+    from skcable.fe.assembly import Assembly, StrainAssembly
+    from skcable.fe.check import check_tangent
+    from skcable.fe.linear import BandedSystem, BorderedSolver, LinearSystem, SparseSystem
+
+_NAMES = {
+    ".assembly": ("Assembly", "StrainAssembly"),
+    ".check": ("check_tangent",),
+    ".linear": ("BandedSystem", "BorderedSolver", "LinearSystem", "SparseSystem"),
+}
+
+__getattr__, __dir__ = attach(
+    __name__, submodules=("assembly", "check", "elements", "linear", "probes", "terms"), names=_NAMES
+)
+
+__all__ = [
+    "Assembly",
+    "BandedSystem",
+    "BorderedSolver",
+    "LinearSystem",
+    "NewtonOptions",
+    "NewtonResult",
+    "SparseSystem",
+    "StrainAssembly",
+    "check_tangent",
+    "minimize",
+    "newton",
+]

@@ -6,21 +6,27 @@ The problem gives callables, the solver is generic (as in FElupe's
 - ``assemble(x) -> state``: residual, tangent and whatever else the problem
   wants to keep, at the iterate ``x``;
 - ``norm(state) -> float``: the convergence measure (dimensionless, e.g. the
-  largest residual entry over a force scale); converged when ``< tol``;
+  largest residual entry over a force scale); converged when ``< tol``, or when
+  ``absolute(state) < atol`` (an absolute measure, e.g. in N) if both are given;
 - ``increment(state) -> dx``: the Newton increment (the problem solves its own
   linear system, bordered or banded as it needs).
 
 Each increment is damped by backtracking on ``merit`` (``norm`` unless given):
 a trial ``x + t·dx`` is accepted when ``merit`` falls by the Armijo factor
 ``1 − 10⁻⁴ t`` (or the trial has converged), halving ``t`` up to
-``max_halvings`` times. The iteration stops at once, with a
-`ConvergenceError` carrying the history, when no step
-length gives descent or when the residual *stagnates*: ``norm`` has not fallen
-below ``stagnation_factor`` times its value ``stagnation_window`` iterations
-earlier, or two iterations earlier once it is below 1e-12, the round-off floor of a
-residual relative to its force scale (a converging Newton gains far more than that per iteration; one
-that crawls is either at the round-off floor of a near-singular tangent or
-off the path, and more iterations only cost assemblies).
+``max_halvings`` times; ``line_search=False`` takes every full step (a plain, or
+semismooth, Newton). The iteration stops at once, with a `ConvergenceError`
+carrying the history, when no step length gives descent or when the residual
+*stagnates*: ``norm`` has not fallen below ``stagnation_factor`` times its value
+``stagnation_window`` iterations earlier, or two iterations earlier once it is below
+1e-12, the round-off floor of a residual relative to its force scale (a converging
+Newton gains far more than that per iteration; one that crawls is either at the
+round-off floor of a near-singular tangent or off the path, and more iterations only
+cost assemblies).
+
+``callback(iteration, residual_norm, step_norm)`` is called after every accepted
+step (``step_norm`` the largest entry of the step taken); an exception it raises
+stops the solve as an `InputError` naming ``callback`` and the iteration.
 
 Two options serve problems whose residual is itself the output of an inner
 solve (a catenary's closure inside a tension section, say): ``rejects`` lists
@@ -29,19 +35,95 @@ like an inadmissible one (the step is halved); ``floor(state)`` is the
 round-off floor of ``norm`` that the inner solves put on it, and a Newton that
 stops (no descent, stagnation) with ``norm <= floor`` returns its iterate with
 ``NewtonResult.at_floor`` set instead of raising.
+
+`NewtonOptions` gathers the user's settings (tolerances, iterations, line search,
+callback, the shift limit of `minimize`) for the models that run these solvers.
 """
 
 from __future__ import annotations
 
 from collections.abc import Callable
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, fields, replace
 from typing import Any
 
 import numpy as np
 
-from skcable.errors import ConvergenceError
+from skcable._checks import nonnegative, positive, whole
+from skcable.errors import ConvergenceError, InputError
 
-__all__ = ["NewtonResult", "minimize", "newton"]
+__all__ = ["LINE_SEARCHES", "NewtonOptions", "NewtonResult", "linear_tail", "minimize", "newton"]
+
+#: ``line_search`` values: on (Armijo on the residual's merit), off (full steps), or on the energy
+LINE_SEARCHES = ("residual", "none", "energy", "auto")
+
+
+@dataclass(frozen=True)
+class NewtonOptions:
+    """A user's settings of a model's Newton solves.
+
+    Parameters
+    ----------
+    tol : float
+        Relative tolerance: converged when every residual entry is below ``tol`` times the
+        force scale of its equations (the model's loads and reactions there).
+    atol : float
+        Absolute tolerance (in the residual's units, N for forces), 0 for none: converged
+        also when every residual entry is below ``atol``.
+    max_iter : int
+        Newton iterations at most per solve.
+    line_search : {"auto", "residual", "energy", "none"} or bool
+        ``"residual"`` (or True): backtracking on the residual norm; ``"energy"``: Armijo on
+        the model's energy (it must have one); ``"none"`` (or False): full Newton steps;
+        ``"auto"``: the energy where every term has a potential, the residual otherwise.
+    callback : callable, optional
+        ``callback(iteration, residual_norm, step_norm)`` after every accepted step.
+    max_halvings : int
+        Halvings of a step in the line search at most.
+    stagnation_window : int
+        Iterations over which the residual must at least halve (else the solve stops).
+    mu_max : float
+        Largest shift of a tangent that is not positive definite (energy minimisation).
+    """
+
+    tol: float = 1e-9
+    atol: float = 0.0
+    max_iter: int = 25
+    line_search: str | bool = "auto"
+    callback: Callable | None = None
+    max_halvings: int = 12
+    stagnation_window: int = 4
+    mu_max: float = 1.0
+
+    def __post_init__(self):
+        positive("tol", self.tol)
+        nonnegative("atol", self.atol)
+        whole("max_iter", self.max_iter, 1)
+        whole("max_halvings", self.max_halvings, 0, 60)
+        whole("stagnation_window", self.stagnation_window, 1)
+        positive("mu_max", self.mu_max)
+        search = self.line_search
+        if isinstance(search, bool):
+            object.__setattr__(self, "line_search", "residual" if search else "none")
+        elif search not in LINE_SEARCHES:
+            raise InputError("line_search", f"must be one of {LINE_SEARCHES} or a bool, got {search!r}")
+        if self.callback is not None and not callable(self.callback):
+            raise InputError(
+                "callback", f"must be callable(iteration, residual_norm, step_norm), got {self.callback!r}"
+            )
+
+    @classmethod
+    def of(cls, options=None, **given) -> NewtonOptions:
+        """Options from a `NewtonOptions` (or None) updated by the keywords given (None skipped);
+        an unknown keyword is an `InputError` naming it."""
+        base = cls() if options is None else options
+        if not isinstance(base, cls):
+            raise InputError("options", f"must be a NewtonOptions, got {options!r}")
+        names = {f.name for f in fields(cls)}
+        for key in given:
+            if key not in names:
+                raise InputError(key, f"is not a Newton option (options are {sorted(names)})")
+        changes = {k: v for k, v in given.items() if v is not None}
+        return replace(base, **changes) if changes else base
 
 
 @dataclass
@@ -63,6 +145,8 @@ class NewtonResult:
     at_floor : bool
         [`newton`][skcable.fe.newton.newton] with ``floor`` only: it stopped above ``tol``
         at the round-off floor ``floor(state)`` of the residual.
+    steps : list of float
+        Step length ``t`` of every accepted iteration (1 is a full Newton step).
     """
 
     x: np.ndarray
@@ -71,10 +155,45 @@ class NewtonResult:
     assemblies: int = 0
     shifted: bool = False
     at_floor: bool = False
+    steps: list = field(default_factory=list)
 
     @property
     def iterations(self) -> int:
         return len(self.history) - 1
+
+    def linear_rate(self, tol: float) -> list[float] | None:
+        """The contraction ratios of the last full steps if this converged *linearly*, else None.
+
+        Newton with a consistent tangent converges quadratically once the residual is small:
+        ``r_{k+1} ≤ C r_k²``, so successive ratios ``r_{k+1}/r_k`` fall fast. A wrong tangent
+        gives a constant ratio instead (`linear_tail`), here over the full steps taken below a
+        residual of 1e-2, none of them limited by the round-off floor (1e3·tol below).
+        """
+        r, t = self.history, self.steps
+        ratios = [
+            r[k + 1] / r[k]
+            for k in range(len(r) - 1)
+            if t[k] == 1.0 and 0 < r[k] < 1e-2 and r[k + 1] > 1e-3 * tol
+        ]
+        return linear_tail(ratios)
+
+
+def linear_tail(ratios) -> list[float] | None:
+    """The last three contraction ratios ``r_{k+1}/r_k`` if they show linear convergence (each in
+    [0.02, 0.95], within a factor 4 of one another), else None."""
+    tail = list(ratios)[-3:]
+    if len(tail) < 3 or not all(0.02 <= q <= 0.95 for q in tail) or max(tail) > 4 * min(tail):
+        return None
+    return tail
+
+
+def _callback(callback, iteration, current, step):
+    if callback is None:
+        return
+    try:
+        callback(iteration, current, step)
+    except Exception as exc:  # a user's callback: stop, and say where
+        raise InputError("callback", f"raised {type(exc).__name__} at iteration {iteration}: {exc}") from exc
 
 
 def newton(
@@ -95,6 +214,11 @@ def newton(
     state=None,
     rejects: tuple[type[Exception], ...] = (),
     floor: Callable[[Any], float] | None = None,
+    atol: float = 0.0,
+    absolute: Callable[[Any], float] | None = None,
+    line_search: bool = True,
+    callback: Callable | None = None,
+    nonmonotone: int = 0,
 ) -> NewtonResult:
     """Solve ``R(x) = 0`` from ``x0``; see the module docstring.
 
@@ -122,31 +246,49 @@ def newton(
         Raised by ``assemble`` at a trial iterate: the trial is rejected (the step halved).
     floor : callable, optional
         ``floor(state)``: the round-off floor of ``norm``; a stop at or below it returns.
+    atol, absolute : float, callable, optional
+        Converged also when ``absolute(state) < atol``.
+    line_search : bool
+        Backtrack on ``merit`` (True) or take every full step (False; only a step to an
+        inadmissible or rejected trial is halved).
+    callback : callable, optional
+        ``callback(iteration, residual_norm, step_norm)`` after every accepted step.
+    nonmonotone : int
+        0: a trial must lower ``merit`` below the current one. ``m > 0``: below the largest of
+        the last ``m`` (the non-monotone rule of L. Grippo, F. Lampariello, S. Lucidi, "A
+        nonmonotone line search technique for Newton's method", SIAM J. Numer. Anal., 1986),
+        which lets a semismooth Newton step through the transients of an active set that is
+        still being identified (its residual rises and falls) while keeping it from running off.
 
     Raises
     ------
     ConvergenceError
         No descent, stagnation, or ``max_iter`` reached (above ``floor``, when given);
         ``history`` holds ``norm`` per iteration.
+    InputError
+        ``callback`` raised (the iteration is named).
     """
     merit = norm if merit is None else merit
 
+    def converged(s, value):
+        return value < tol or (atol > 0 and absolute is not None and absolute(s) < atol)
+
     def stop(message):
         if floor is not None and history[-1] <= floor(state):
-            return NewtonResult(x, state, history, assemblies, at_floor=True)
-        raise ConvergenceError(f"{name}: {message}", history)
+            return NewtonResult(x, state, history, assemblies, at_floor=True, steps=steps)
+        raise ConvergenceError(f"{name}: {message}", history, last=x)
 
     update = (lambda x, dx, t: x + t * dx) if update is None else update
     x = np.array(x0, dtype=float)
     state = assemble(x) if state is None else state
     assemblies = 1
-    history = [norm(state)]
+    history, steps, merits = [norm(state)], [], []
     for _ in range(max_iter + 1):
         current = history[-1]
         if not np.isfinite(current):
-            raise ConvergenceError(f"{name}: the residual is not finite", history)
-        if current < tol:
-            return NewtonResult(x, state, history, assemblies)
+            raise ConvergenceError(f"{name}: the residual is not finite", history, last=x)
+        if converged(state, current):
+            return NewtonResult(x, state, history, assemblies, steps=steps)
         if len(history) > max_iter:
             break
         back = len(history) - 1 - stagnation_window
@@ -158,7 +300,8 @@ def newton(
                 f"in {stagnation_window} iterations)"
             )
         dx = increment(state)
-        base, t = merit(state), 1.0
+        merits.append(merit(state))
+        base, t = max(merits[-nonmonotone:]) if nonmonotone else merits[-1], 1.0
         for _ in range(max_halvings + 1):
             trial_x = update(x, dx, t)
             if admissible is None or admissible(trial_x):
@@ -167,13 +310,17 @@ def newton(
                 except rejects:
                     trial = None
                 assemblies += 1
-                if trial is not None and (merit(trial) < (1.0 - 1e-4 * t) * base or norm(trial) < tol):
+                if trial is not None and (
+                    not line_search or merit(trial) < (1.0 - 1e-4 * t) * base or converged(trial, norm(trial))
+                ):
                     break
             t *= 0.5
         else:
             return stop("line search found no descent along the Newton step")
         x, state = trial_x, trial
         history.append(norm(state))
+        steps.append(t)
+        _callback(callback, len(history) - 1, history[-1], float(np.max(np.abs(t * dx), initial=0.0)))
     return stop(f"no convergence to {tol:g} in {max_iter} iterations")
 
 
@@ -195,41 +342,49 @@ def minimize(
     noise: float = 1e-12,
     name: str = "minimize",
     state=None,
+    atol: float = 0.0,
+    absolute: Callable[[Any], float] | None = None,
+    callback: Callable | None = None,
 ) -> NewtonResult:
     r"""Newton for a problem with a potential Π (residual R = ∇Π, tangent K = ∇²Π), shifted where
     K is not positive definite: a Newton that passes the folds of a softening law.
 
-    Per iteration: converged when ``norm < tol``; the increment ``d = −(K + μ K₀)⁻¹ R`` by a
-    Cholesky factorisation (``solve(state, μ)``, which raises ``numpy.linalg.LinAlgError`` when
-    the shifted tangent is not positive definite), with μ = 0 (plain Newton) unless the
-    factorisation fails or the residual stagnates (less than ``factor`` in ``window``
-    iterations): then μ starts at ``mu0`` and doubles until the factorisation succeeds, K₀ being
-    the problem's own positive-definite metric (for a strand: its elastic tangent). d is then a
-    descent direction of Π, and a step t = 1, ½, … is accepted by Armijo's rule on the energy,
-    ``Π(x + t d) ≤ Π(x) + 10⁻⁴ t R·d``, or, where the energy change is at its round-off
-    (``noise``·|Π|), by the residual falling. After an accepted step μ shrinks fourfold (to 0
-    below ``mu0``); after a failed line search it grows tenfold. Gives up (ConvergenceError with
-    the history) when μ exceeds ``mu_max``, when neither the residual nor the energy moves over
-    ``window`` iterations, or after ``max_iter`` iterations. ``NewtonResult.shifted`` tells
-    whether the shift was needed: the path passed a point where the tangent was not positive
-    definite (a fold of the equilibrium path under the imposed data).
+    Per iteration: converged when ``norm < tol`` (or ``absolute < atol``); the increment
+    ``d = −(K + μ K₀)⁻¹ R`` by a Cholesky factorisation (``solve(state, μ)``, which raises
+    ``numpy.linalg.LinAlgError`` when the shifted tangent is not positive definite), with μ = 0
+    (plain Newton) unless the factorisation fails or the residual stagnates (less than
+    ``factor`` in ``window`` iterations): then μ starts at ``mu0`` and doubles until the
+    factorisation succeeds, K₀ being the problem's own positive-definite metric (for a strand:
+    its elastic tangent). d is then a descent direction of Π, and a step t = 1, ½, … is accepted
+    by Armijo's rule on the energy, ``Π(x + t d) ≤ Π(x) + 10⁻⁴ t R·d``, or, where the energy
+    change is at its round-off (``noise``·|Π|), by the residual falling. After an accepted step
+    μ shrinks fourfold (to 0 below ``mu0``); after a failed line search it grows tenfold. Gives
+    up (ConvergenceError with the history) when μ exceeds ``mu_max``, when neither the residual
+    nor the energy moves over ``window`` iterations, or after ``max_iter`` iterations.
+    ``NewtonResult.shifted`` tells whether the shift was needed: the path passed a point where
+    the tangent was not positive definite (a fold of the equilibrium path under the imposed
+    data). ``callback`` as in `newton`.
     """
+
+    def converged(s, value):
+        return value < tol or (atol > 0 and absolute is not None and absolute(s) < atol)
+
     x = np.array(x0, dtype=float)
     state = assemble(x) if state is None else state
     assemblies = 1
-    history, energies = [norm(state)], [energy(state)]
+    history, energies, steps = [norm(state)], [energy(state)], []
     mu, shifted = 0.0, False
     for _ in range(max_iter + 1):
         current, Pi = history[-1], energies[-1]
         if not (np.isfinite(current) and np.isfinite(Pi)):
-            raise ConvergenceError(f"{name}: the residual or the energy is not finite", history)
-        if current < tol:
-            return NewtonResult(x, state, history, assemblies, shifted)
+            raise ConvergenceError(f"{name}: the residual or the energy is not finite", history, last=x)
+        if converged(state, current):
+            return NewtonResult(x, state, history, assemblies, shifted, steps=steps)
         if len(history) > max_iter:
             break
         if len(history) > window and current > factor * history[-1 - window]:
             if abs(Pi - energies[-1 - window]) <= noise * abs(Pi):
-                raise ConvergenceError(f"{name}: neither the residual nor the energy moves", history)
+                raise ConvergenceError(f"{name}: neither the residual nor the energy moves", history, last=x)
             if mu == 0.0:
                 mu, shifted = mu0, True
         while True:
@@ -240,7 +395,9 @@ def minimize(
                 mu, shifted = (mu0 if mu == 0.0 else 2.0 * mu), True
                 if mu > mu_max:
                     raise ConvergenceError(
-                        f"{name}: the tangent needs a shift above {mu_max:g} to be positive definite", history
+                        f"{name}: the tangent needs a shift above {mu_max:g} to be positive definite",
+                        history,
+                        last=x,
                     ) from None
         R = gradient(state)
         slope = float(R @ d)
@@ -252,7 +409,7 @@ def minimize(
             drop = energy(trial) - Pi
             n_t = norm(trial)
             if (
-                n_t < tol
+                converged(trial, n_t)
                 or drop <= 1e-4 * t * slope
                 or (abs(drop) <= noise * abs(Pi) and n_t < (1 - 1e-4 * t) * current)
             ):
@@ -263,9 +420,12 @@ def minimize(
             x, state = trial_x, trial
             history.append(n_t)
             energies.append(energy(state))
+            steps.append(t if mu == 0.0 else 0.0)  # a shifted step is no Newton step
             mu = 0.0 if mu <= mu0 else mu / 4.0
+            _callback(callback, len(history) - 1, history[-1], float(np.max(np.abs(t * d), initial=0.0)))
         else:
             mu, shifted = (mu0 if mu == 0.0 else 10.0 * mu), True
             history.append(current)
             energies.append(Pi)
-    raise ConvergenceError(f"{name}: no convergence to {tol:g} in {max_iter} iterations", history)
+            steps.append(0.0)
+    raise ConvergenceError(f"{name}: no convergence to {tol:g} in {max_iter} iterations", history, last=x)

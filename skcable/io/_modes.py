@@ -5,7 +5,8 @@ the span, as the other cable meshes of `skcable.io`); every mode is a point
 data *vector*: an in-plane mode moves the points along y, an out-of-plane
 mode along z. In ParaView, Warp By Vector on one of them (with a scale
 factor: the shapes are mass-normalised, ``φᵀMφ = 1``, in m/√kg) shows the
-mode, and animating the scale factor between ±s animates it.
+mode, and animating the scale factor between ±s animates it. The arrays carry
+their unit in their names (``in_plane_1_m_per_sqrt_kg``).
 
 This module reads a result (`skcable.cable.NaturalFrequencies` or any object
 with the same attributes) and imports no model.
@@ -14,16 +15,21 @@ with the same attributes) and imports no model.
 from __future__ import annotations
 
 from pathlib import Path
+from typing import TYPE_CHECKING
 
-import meshio
 import numpy as np
 
 from skcable.errors import InputError
 from skcable.io._atomic import atomic_path, writable_file
 
+if TYPE_CHECKING:
+    import meshio
+
 __all__ = ["mode_shape_mesh", "write_mode_shapes"]
 
 _SUFFIXES = (".vtu", ".vtk")
+#: The unit of the mass-normalised shapes (φᵀMφ = 1), at the end of every array's name.
+UNIT = "_m_per_sqrt_kg"
 
 
 def mode_shape_mesh(result) -> meshio.Mesh:
@@ -39,9 +45,9 @@ def mode_shape_mesh(result) -> meshio.Mesh:
     -------
     meshio.Mesh
         Points ``(x, y, 0)``; line cells joining them in order. Point data
-        ``in_plane_<k>`` = ``(0, φ_k, 0)`` and ``out_of_plane_<k>`` =
-        ``(0, 0, φ_k)`` for k = 1..n_modes, mode k of each family being the
-        k-th frequency of ``f_in_plane``, ``f_out_of_plane`` (not stored:
+        ``in_plane_<k>_m_per_sqrt_kg`` = ``(0, φ_k, 0)`` and
+        ``out_of_plane_<k>_m_per_sqrt_kg`` = ``(0, 0, φ_k)`` for k = 1..n_modes,
+        mode k of each family being the k-th frequency of ``f_in_plane``, ``f_out_of_plane`` (not stored:
         meshio writes no field data to VTU/VTK files).
 
     Raises
@@ -50,6 +56,8 @@ def mode_shape_mesh(result) -> meshio.Mesh:
         ``result`` lacks one of those attributes, or their shapes disagree, or
         a value is not finite.
     """
+    import meshio
+
     try:
         x, y = np.asarray(result.x, dtype=float), np.asarray(result.y, dtype=float)
         fields = {
@@ -69,7 +77,7 @@ def mode_shape_mesh(result) -> meshio.Mesh:
         for k, shape in enumerate(shapes, start=1):
             vector = np.zeros((x.size, 3))
             vector[:, component] = shape
-            point_data[f"{name}_{k}"] = vector
+            point_data[f"{name}_{k}{UNIT}"] = vector
     for name, value in [("points", points), *point_data.items()]:
         if not np.all(np.isfinite(value)):
             raise InputError("result", f"{name} holds a value that is not finite")
@@ -80,10 +88,14 @@ def write_mode_shapes(result, path) -> Path:
     """Write `mode_shape_mesh` of ``result`` to ``path`` (``.vtu`` or ``.vtk``), atomically.
 
     The file appears whole or not at all (`skcable.io._atomic.atomic_path`);
-    returns the path.
+    returns the path. The path is checked before the mesh is built: a missing parent
+    folder is refused (never created), as is one that takes no new file, with
+    ``InputError("path", ...)`` naming the path as given.
     """
-    path = writable_file("path", path, _SUFFIXES)
+    import meshio
+
+    path = writable_file("path", path, _SUFFIXES, create_parents=False)
     mesh = mode_shape_mesh(result)
-    with atomic_path(path) as temp:
+    with atomic_path(path, create_parents=False) as temp:
         meshio.write(temp, mesh)
     return path

@@ -4,8 +4,9 @@ Global axes, z up, metres. Cells: each line as a polyline (``line`` cells), the
 seabed patch (one ``quad`` at z = -depth, under the anchors and the body, when the
 result has a ``depth``) and the body (a ``hexahedron``: the box of its fairleads in
 body axes, turned and moved with it; a ``vertex`` for a point body). Point data:
-``tension`` (N, zero off the lines); cell data: ``part`` (0 line, 1 seabed, 2 body)
-and ``line`` (the line's number, -1 off the lines). Reads only the result's
+``tension_N`` (zero off the lines); cell data: ``part`` (0 line, 1 seabed, 2 body)
+and ``line`` (the line's number, -1 off the lines). Files are written atomically; a
+missing parent folder is refused, never created. Reads only the result's
 ``lines`` (``profile(n)``), ``anchors``, ``fairleads``, ``offset``, ``rotation``,
 ``depth`` and ``position``.
 """
@@ -13,16 +14,20 @@ and ``line`` (the line's number, -1 off the lines). Reads only the result's
 from __future__ import annotations
 
 from pathlib import Path
+from typing import TYPE_CHECKING
 
-import meshio
 import numpy as np
 
 from skcable._checks import whole
 from skcable.errors import InputError
 from skcable.io._atomic import atomic_path, writable_file
 
+if TYPE_CHECKING:
+    import meshio
+
 __all__ = ["lines_mesh", "mooring_mesh", "write_lines", "write_mooring"]
 
+_SUFFIXES = (".vtu", ".vtk")
 # VTK's hexahedron: the bottom face counter-clockwise, then the top face
 _BOX = np.array([[0, 0, 0], [1, 0, 0], [1, 1, 0], [0, 1, 0], [0, 0, 1], [1, 0, 1], [1, 1, 1], [0, 1, 1]])
 
@@ -61,21 +66,26 @@ def _polylines(lines, n):
 
 def lines_mesh(lines, n: int = 101) -> meshio.Mesh:
     """Lines in 3-D (e.g. `skcable.cable.Line3D`, anything with ``profile(n)`` giving
-    ``(points (m, 3), tension (m,))``) as polylines: point data ``tension`` (N), cell data
+    ``(points (m, 3), tension (m,))``) as polylines: point data ``tension_N``, cell data
     ``line`` (the line's number)."""
+    import meshio
+
     points, tension, segments, line_id = _polylines(lines, n)
     if not (np.isfinite(points[0]).all() and np.isfinite(tension[0]).all()):
         raise InputError("lines", "hold non-finite coordinates or tensions")
     return meshio.Mesh(
-        points[0], [("line", segments)], point_data={"tension": tension[0]}, cell_data={"line": [line_id]}
+        points[0], [("line", segments)], point_data={"tension_N": tension[0]}, cell_data={"line": [line_id]}
     )
 
 
 def write_lines(lines, path, n: int = 101) -> Path:
-    """Write `lines_mesh` of ``lines`` to ``path`` (``.vtu`` or ``.vtk``), atomically."""
-    path = writable_file("path", path, (".vtu", ".vtk"))
+    """Write `lines_mesh` of ``lines`` to ``path`` (``.vtu`` or ``.vtk``), atomically (see
+    `write_mooring`)."""
+    import meshio
+
+    path = writable_file("path", path, _SUFFIXES, create_parents=False)
     mesh = lines_mesh(lines, n)
-    with atomic_path(path) as temp:
+    with atomic_path(path, create_parents=False) as temp:
         meshio.write(temp, mesh)
     return path
 
@@ -90,6 +100,8 @@ def mooring_mesh(result, n: int = 101) -> meshio.Mesh:
     n : int
         Points per line, >= 2.
     """
+    import meshio
+
     points, tension, segments, line_id = _polylines(result.lines, n)
     count = len(points[0])
     points, tension = list(points), list(tension)
@@ -124,16 +136,20 @@ def mooring_mesh(result, n: int = 101) -> meshio.Mesh:
     return meshio.Mesh(
         points,
         cells,
-        point_data={"tension": np.concatenate(tension)},
+        point_data={"tension_N": np.concatenate(tension)},
         cell_data={"part": part, "line": line_id},
     )
 
 
 def write_mooring(result, path, n: int = 101) -> Path:
     """Write `mooring_mesh` of ``result`` to ``path`` (``.vtu`` or ``.vtk``), atomically: the
-    file appears whole or not at all. The path is checked before the mesh is built."""
-    path = writable_file("path", path, (".vtu", ".vtk"))
+    file appears whole or not at all. The path is checked before the mesh is built: a
+    missing parent folder is refused (never created), as is one that takes no new file, with
+    ``InputError("path", ...)`` naming the path as given."""
+    import meshio
+
+    path = writable_file("path", path, _SUFFIXES, create_parents=False)
     mesh = mooring_mesh(result, n)
-    with atomic_path(path) as temp:
+    with atomic_path(path, create_parents=False) as temp:
         meshio.write(temp, mesh)
     return path

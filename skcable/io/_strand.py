@@ -41,7 +41,31 @@ def _element_mean(layout, values):
     return np.sum(values * dx, axis=-1) / np.sum(dx, axis=-1)
 
 
-def strand_mesh(step) -> meshio.Mesh:
+def _outputs(step, point_data, cell_data):
+    """The step's term outputs and the user's extra fields, sorted into point and cell data."""
+    layout = step.layout
+    n_nodes, (ne, nq) = len(layout.nodes), layout.x.shape
+    given = [(name, kind, np.asarray(values, dtype=float)) for name, (kind, values) in step.outputs.items()]
+    given += [(name, "point_data", np.asarray(v, dtype=float)) for name, v in (point_data or {}).items()]
+    given += [(name, "cell_data", np.asarray(v, dtype=float)) for name, v in (cell_data or {}).items()]
+    points, cells = {}, {}
+    for name, kind, values in given:
+        if kind == "point_data" and values.shape == (ne, nq):
+            points[name] = _to_nodes(layout, values)  # quadrature values, projected onto P1
+        elif kind == "point_data" and values.shape[:1] == (n_nodes,):
+            points[name] = values
+        elif kind == "cell_data" and values.shape[:1] == (ne,):
+            cells[name] = [values]
+        else:
+            raise InputError(
+                name,
+                f"{kind} of shape {values.shape}: give (n_elements, n_quad) = ({ne}, {nq}) or ({n_nodes},) "
+                f"point data, ({ne},) cell data",
+            )
+    return points, cells
+
+
+def strand_mesh(step, *, point_data=None, cell_data=None) -> meshio.Mesh:
     """The strand axis at one load step: nodes of the mesh, undeformed.
 
     Point data (at the nodes; quadrature values by L² projection onto P1):
@@ -52,6 +76,10 @@ def strand_mesh(step) -> meshio.Mesh:
     ``slip_1``, ``slip_2`` (fraction of the element in slip about each
     principal axis), ``slipping`` (1 if any), ``EI_in_use`` (tangent bending
     stiffness about y and z, N·m²), ``element_size`` (m).
+
+    The terms' outputs (``step.outputs``: a contact pressure, a gap, a foundation's reaction)
+    are added under their names, and so are the user's ``point_data`` (arrays at the nodes, or
+    at the quadrature points (n_elements, n_quad)) and ``cell_data`` (one value per element).
     """
     layout, at = step.layout, step.nodal
     nodes = layout.nodes
@@ -62,6 +90,7 @@ def strand_mesh(step) -> meshio.Mesh:
     points = np.column_stack([nodes, np.zeros_like(nodes), np.zeros_like(nodes)])
     slipping = np.asarray(step.slipping, dtype=float).mean(axis=2)  # (2, ne)
     zero = np.zeros_like(nodes)
+    extra_points, extra_cells = _outputs(step, point_data, cell_data)
     point_data = {
         "displacement": displacement,
         "twist": at["phi"],
@@ -79,7 +108,12 @@ def strand_mesh(step) -> meshio.Mesh:
         "EI_in_use": [np.column_stack([_element_mean(layout, e) for e in step.EI_in_use])],
         "element_size": [np.diff(nodes[layout.elements], axis=0)[0]],
     }
-    return meshio.Mesh(points, [("line", layout.elements.T)], point_data=point_data, cell_data=cell_data)
+    return meshio.Mesh(
+        points,
+        [("line", layout.elements.T)],
+        point_data=point_data | extra_points,
+        cell_data=cell_data | extra_cells,
+    )
 
 
 def wire_mesh(step, *, scale: float = 1.0, radial_scale: float = 1.0) -> meshio.Mesh:

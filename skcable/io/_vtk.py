@@ -5,17 +5,27 @@ the plane z = 0 with y up; a strand's axis is x, its transverse
 displacements are along y and z. Load-stepped results are written as a
 ParaView collection (``.pvd``) of ``.vtu`` files, one per step, that
 ParaView opens as one time series.
+
+Every array carries its unit in its name (``tension_N``, ``angle_rad``,
+``load_N_per_m``); a unit vector has none (``tangent``). Every file is written
+atomically (`skcable.io._atomic`): it appears whole or not at all, a missing
+parent folder is refused (never created), and a path that cannot be written is
+refused with ``InputError("path", ...)`` naming the path as given.
 """
 
 from __future__ import annotations
 
 import xml.etree.ElementTree as ET
 from pathlib import Path
+from typing import TYPE_CHECKING
 
-import meshio
 import numpy as np
 
 from skcable.errors import InputError
+from skcable.io._atomic import atomic_path, writable_file
+
+if TYPE_CHECKING:
+    import meshio
 
 __all__ = ["cable_mesh", "funicular_mesh", "write", "write_series"]
 
@@ -30,11 +40,13 @@ def _polyline(points_2d) -> tuple[np.ndarray, list]:
 def cable_mesh(solution, n: int = 201) -> meshio.Mesh:
     """Profile of a suspended-cable solution as a polyline of ``n`` points.
 
-    Point data: ``tension`` (N), ``tangent`` (unit vector toward B),
-    ``angle`` (rad above the horizontal), ``load`` (N per metre of
+    Point data: ``tension_N``, ``tangent`` (unit vector toward B),
+    ``angle_rad`` (above the horizontal), ``load_N_per_m`` (per metre of
     unstretched cable, y up: a weight has a negative y component). Reads
     only ``solution.samples(n)`` (and ``H``, to refuse an array of scenes).
     """
+    import meshio
+
     if np.ndim(solution.H) != 0:
         raise InputError("solution", "write one scene at a time: this solution holds an array of scenes")
     if int(n) < 2:
@@ -44,10 +56,10 @@ def cable_mesh(solution, n: int = 201) -> meshio.Mesh:
     angle = samples["angle"]
     zero = np.zeros_like(angle)
     point_data = {
-        "tension": samples["tension"],
+        "tension_N": samples["tension"],
         "tangent": np.column_stack([np.cos(angle), np.sin(angle), zero]),
-        "angle": angle,
-        "load": np.column_stack([samples["load"], zero]),
+        "angle_rad": angle,
+        "load_N_per_m": np.column_stack([samples["load"], zero]),
     }
     return meshio.Mesh(points, cells, point_data=point_data)
 
@@ -55,11 +67,13 @@ def cable_mesh(solution, n: int = 201) -> meshio.Mesh:
 def funicular_mesh(solution) -> meshio.Mesh:
     """Funicular polygon: the joints as points, the segments as cells.
 
-    Cell data ``tension`` (N); point data ``load`` (N, the joint loads; zero
-    at the supports). Reads ``nodes``, ``T`` and ``loads``: load vectors when
+    Cell data ``tension_N``; point data ``load_N`` (the joint loads; zero at
+    the supports). Reads ``nodes``, ``T`` and ``loads``: load vectors when
     the solution also has segment ``forces`` (`funicular`),
     ``(x, P downward)`` pairs otherwise (`funicular_vertical`).
     """
+    import meshio
+
     points, cells = _polyline(solution.nodes)
     loads = np.zeros((len(points), 3))
     joint = np.asarray(solution.loads, dtype=float)
@@ -68,29 +82,50 @@ def funicular_mesh(solution) -> meshio.Mesh:
     else:  # funicular_vertical(): (x, P downward) pairs
         loads[1:-1, 1] = -joint[:, 1]
     return meshio.Mesh(
-        points, cells, point_data={"load": loads}, cell_data={"tension": [np.asarray(solution.T)]}
+        points, cells, point_data={"load_N": loads}, cell_data={"tension_N": [np.asarray(solution.T)]}
     )
 
 
+def _suffixes() -> tuple[str, ...]:
+    import meshio
+
+    return tuple(meshio.extension_to_filetypes)
+
+
 def write(mesh: meshio.Mesh, path) -> Path:
-    """Write one mesh (format from the suffix: ``.vtu``, ``.vtk``, ...); returns the path."""
-    path = Path(path)
-    path.parent.mkdir(parents=True, exist_ok=True)
-    meshio.write(path, mesh)
+    """Write one mesh (format from the suffix: ``.vtu``, ``.vtk``, ...), atomically; returns
+    the path.
+
+    Raises
+    ------
+    InputError
+        ``path``: not a path, a folder, an unknown suffix, a missing parent folder (never
+        created) or one that takes no new file, named as given.
+    """
+    import meshio
+
+    path = writable_file("path", path, _suffixes(), create_parents=False)
+    with atomic_path(path, create_parents=False) as temp:
+        meshio.write(temp, mesh)
     return path
 
 
 def write_series(meshes, times, path) -> Path:
-    """Write ``meshes`` as ``<stem>_NNNN.vtu`` beside a ParaView collection ``path`` (``.pvd``)."""
-    path = Path(path)
-    if path.suffix != ".pvd":
-        raise InputError("path", f"a time series is written as a .pvd collection, got {path.name!r}")
-    path.parent.mkdir(parents=True, exist_ok=True)
+    """Write ``meshes`` as ``<stem>_NNNN.vtu`` beside a ParaView collection ``path`` (``.pvd``).
+
+    Each file is written atomically and the collection last, so that it never lists a step
+    that is not on disk; the path is checked as by `write`.
+    """
+    import meshio
+
+    path = writable_file("path", path, (".pvd",), create_parents=False)
     root = ET.Element("VTKFile", type="Collection", version="0.1")
     collection = ET.SubElement(root, "Collection")
     for i, (mesh, time) in enumerate(zip(meshes, times, strict=True)):
         name = f"{path.stem}_{i:04d}.vtu"
-        meshio.write(path.parent / name, mesh)
+        with atomic_path(path.parent / name, create_parents=False) as temp:
+            meshio.write(temp, mesh)
         ET.SubElement(collection, "DataSet", timestep=repr(float(time)), part="0", file=name)
-    ET.ElementTree(root).write(path, xml_declaration=True, encoding="utf-8")
+    with atomic_path(path, create_parents=False) as temp:
+        ET.ElementTree(root).write(temp, xml_declaration=True, encoding="utf-8")
     return path

@@ -3,40 +3,118 @@ wire materials and the stick/slip bending law (Pino Vidal 2021, chapters 2-3,
 annexes A and B). SI units: m, N, Pa.
 """
 
-from skcable.strand._bending import BendingLaw, critical_curvature
-from skcable.strand._choice import Analysis, ClosedFormCurve, analyse, axial_force
-from skcable.strand._geometry import Layer, Strand, Wires, preset
-from skcable.strand._material import Material, material
-from skcable.strand._section import Section
-from skcable.strand._vibration import (
-    BeamFrequencies,
-    StrandFrequencies,
-    beam_frequencies,
-    pinned_beam_frequencies,
-    strand_bending_frequencies,
-)
-from skcable.strand.capacity import CapacityCurve, StepResult, StrandLayout, capacity_curve
-from skcable.strand.fe import (
-    AnnexE,
-    AxisSlip,
-    DistributedLoad,
-    ElasticFoundation,
-    ElementSlip,
-    FieldTerm,
-    HelicalWires,
-    NodalSpring,
-    SectionTerm,
-    SinusoidalDamageLoads,
-    SlipLaw,
-    Step,
-    Stick,
-    StrandModel,
-    Term,
-    WireBending,
-    default_physics,
-)
+from __future__ import annotations
+
+from typing import TYPE_CHECKING
+
+from skcable._lazy import attach
+
+if TYPE_CHECKING:  # what static tools see; at run time, `attach` below serves them
+    from skcable.strand._bending import BendingLaw, critical_curvature
+    from skcable.strand._choice import Analysis, ClosedFormCurve, analyse, axial_force
+    from skcable.strand._geometry import Layer, Strand, Wires, preset
+    from skcable.strand._material import Material, material
+    from skcable.strand._section import Section
+    from skcable.strand._vibration import (
+        BeamFrequencies,
+        StrandFrequencies,
+        beam_frequencies,
+        pinned_beam_frequencies,
+        strand_bending_frequencies,
+    )
+    from skcable.strand.capacity import CapacityCurve, StepResult, StrandLayout, capacity_curve
+    from skcable.strand.fe import (
+        DOFS,
+        END_CONDITIONS,
+        FIELDS,
+        STRAINS,
+        AnnexE,
+        AxisSlip,
+        DistributedLoad,
+        ElasticFoundation,
+        ElementSlip,
+        FieldAssembly,
+        FieldTerm,
+        FollowerForce,
+        HelicalWires,
+        NodalSpring,
+        PointForce,
+        PointMoment,
+        RigidCylinder,
+        SectionTerm,
+        SinusoidalDamageLoads,
+        SlipLaw,
+        Step,
+        Stick,
+        StrandModel,
+        StrandSupports,
+        TensionlessFoundation,
+        Term,
+        WireBending,
+        default_physics,
+    )
+
+#: Where each public name lives (imported on first use, PEP 562).
+_NAMES = {
+    "._bending": ("BendingLaw", "critical_curvature"),
+    "._choice": ("Analysis", "ClosedFormCurve", "analyse", "axial_force"),
+    "._geometry": ("Layer", "Strand", "Wires", "preset"),
+    "._material": ("Material", "material"),
+    "._section": ("Section",),
+    "._vibration": (
+        "BeamFrequencies",
+        "StrandFrequencies",
+        "beam_frequencies",
+        "pinned_beam_frequencies",
+        "strand_bending_frequencies",
+    ),
+    ".capacity": ("CapacityCurve", "StepResult", "StrandLayout", "capacity_curve"),
+    ".fe": (
+        "DOFS",
+        "END_CONDITIONS",
+        "FIELDS",
+        "STRAINS",
+        "AnnexE",
+        "AxisSlip",
+        "DistributedLoad",
+        "ElasticFoundation",
+        "ElementSlip",
+        "FieldAssembly",
+        "FieldTerm",
+        "FollowerForce",
+        "HelicalWires",
+        "NodalSpring",
+        "PointForce",
+        "PointMoment",
+        "RigidCylinder",
+        "SectionTerm",
+        "SinusoidalDamageLoads",
+        "SlipLaw",
+        "Step",
+        "Stick",
+        "StrandModel",
+        "StrandSupports",
+        "TensionlessFoundation",
+        "Term",
+        "WireBending",
+        "default_physics",
+    ),
+}
+
+__getattr__, __dir__ = attach(__name__, submodules=("fe", "capacity"), names=_NAMES)
 
 __all__ = [
+    "DOFS",
+    "END_CONDITIONS",
+    "FIELDS",
+    "STRAINS",
+    "FieldAssembly",
+    "FollowerForce",
+    "PointForce",
+    "PointMoment",
+    "RigidCylinder",
+    "StrandSupports",
+    "TensionlessFoundation",
     "AnnexE",
     "AxisSlip",
     "DistributedLoad",

@@ -15,6 +15,7 @@ from functools import cached_property
 
 import numpy as np
 
+from skcable import _plausible
 from skcable._checks import positive
 from skcable.errors import ConvergenceError, InputError
 
@@ -46,6 +47,8 @@ class StrandLayout:
     wire_eps_rupture, wire_eps_y1 : ndarray (n_wires,) or None
         The same per wire, from each wire's own material (None: ``eps_rupture`` and
         ``eps_y1`` for every wire).
+    element : str
+        The element of u and φ ("P2" or "P3").
     """
 
     nodes: np.ndarray
@@ -63,6 +66,7 @@ class StrandLayout:
     eps_y1: float
     wire_eps_rupture: np.ndarray | None = None
     wire_eps_y1: np.ndarray | None = None
+    element: str = "P2"
 
     def _per_wire(self, attribute: str):
         """The limit strain ``attribute`` ("eps_rupture" or "eps_y1") per wire when the wires
@@ -137,6 +141,15 @@ class StepResult:
         The tangent was not positive definite on the way to this state and the solver shifted
         it ([`minimize`][skcable.fe.newton.minimize]): the equilibrium path has a fold (a
         snap under the imposed strain) between the previous step and this one.
+    outputs : dict of str to (str, ndarray)
+        The terms' named results (`skcable.fe.terms`): ``name -> (kind, values)`` with kind
+        ``"point_data"`` (values at the quadrature points (n_elements, n_quad) or at the nodes
+        (n_nodes,)) or ``"cell_data"`` (one value per element); the writers put them in every
+        VTK file.
+    reactions : dict
+        Support reactions ``{"left": {dof: value}, "right": {dof: value}}`` (N for u, v, w;
+        N·m for φ and the slopes), the fixed dofs' residual rows; the imposed strain's at x = L
+        is ``force``.
     """
 
     strain: float
@@ -161,6 +174,8 @@ class StepResult:
     settled: bool = True
     assemblies: int = 0
     shifted: bool = False
+    outputs: dict = field(default_factory=dict)
+    reactions: dict = field(default_factory=dict)
 
     @property
     def slip_fraction(self) -> float:
@@ -206,6 +221,7 @@ class CapacityCurve:
     n_steps: int = 0
     failure: str | None = None
     cutbacks: int = 0
+    options: object = None
 
     @property
     def snaps(self) -> list:
@@ -313,26 +329,37 @@ class CapacityCurve:
         )
         return path
 
-    def step_mesh(self, step: int, *, wires: bool = False, scale: float = 1.0, radial_scale: float = 1.0):
+    def step_mesh(
+        self, step: int, *, wires: bool = False, scale: float = 1.0, radial_scale: float = 1.0, fields=None
+    ):
         """The strand (or, with ``wires``, its wires) at one step as a meshio mesh
-        ([`strand_mesh`][skcable.io.strand_mesh], [`wire_mesh`][skcable.io.wire_mesh])."""
+        ([`strand_mesh`][skcable.io.strand_mesh], [`wire_mesh`][skcable.io.wire_mesh]);
+        ``fields(step) -> (point_data, cell_data)`` adds the user's arrays to the axis."""
         from skcable.io import strand_mesh, wire_mesh
 
         if not -len(self.steps) <= step < len(self.steps):
             raise InputError("step", f"must index one of the {len(self.steps)} steps, got {step!r}")
         result = self.steps[step]
-        return wire_mesh(result, scale=scale, radial_scale=radial_scale) if wires else strand_mesh(result)
+        if wires:
+            return wire_mesh(result, scale=scale, radial_scale=radial_scale)
+        point_data, cell_data = (None, None) if fields is None else fields(result)
+        return strand_mesh(result, point_data=point_data, cell_data=cell_data)
 
-    def to_vtk(self, path, *, wires: bool = False, scale: float = 1.0, radial_scale: float = 1.0):
+    def to_vtk(
+        self, path, *, wires: bool = False, scale: float = 1.0, radial_scale: float = 1.0, fields=None
+    ):
         """Write every step as a ParaView time series ``path`` (``.pvd`` + one ``.vtu`` per step,
-        time = imposed axial strain). With ``wires``, also ``<stem>_wires.pvd``. Returns the paths."""
+        time = imposed axial strain), the terms' outputs included. With ``wires``, also
+        ``<stem>_wires.pvd``; ``fields(step) -> (point_data, cell_data)`` adds the user's arrays
+        (dicts of name to values at the nodes or quadrature points / per element, or None) to
+        every step. Returns the paths."""
         from pathlib import Path
 
         from skcable.io import write_series
 
         path = Path(path)
         times = [s.strain for s in self.steps]
-        out = [write_series((self.step_mesh(i) for i in range(len(self.steps))), times, path)]
+        out = [write_series((self.step_mesh(i, fields=fields) for i in range(len(self.steps))), times, path)]
         if wires:
             meshes = (
                 self.step_mesh(i, wires=True, scale=scale, radial_scale=radial_scale)
@@ -344,7 +371,7 @@ class CapacityCurve:
     @cached_property
     def reference(self):
         """The undamaged strand's curve with the same settings (for D_r)."""
-        return capacity_curve(self.model.twin(), n_steps=self.n_steps)
+        return capacity_curve(self.model.twin(), n_steps=self.n_steps, options=self.options)
 
     @property
     def D_r(self) -> float:
@@ -362,6 +389,8 @@ def capacity_curve(
     state_passes: int = 6,
     on_failure: str = "raise",
     callback=None,
+    options=None,
+    **newton_options,
 ) -> CapacityCurve:
     """Pull ``model`` step by step until a wire breaks (or ``max_strain``).
 
@@ -376,10 +405,16 @@ def capacity_curve(
     ``on_failure="stop"`` returns the converged part with ``failure`` set.
     ``callback(step, done)``, if given, is called after every converged step
     with its `StepResult` and the fraction of the strain schedule done
-    (for progress bars).
+    (for progress bars). Newton options for every step: ``options`` (a
+    `skcable.fe.NewtonOptions`, default the model's) and any of its fields as keywords
+    (``tol``, ``atol``, ``max_iter``, ``line_search``; the per-iteration ``callback`` of
+    Newton is ``NewtonOptions.callback``, not this one).
     """
+    from skcable.fe import NewtonOptions
+
     if on_failure not in ("raise", "stop"):
         raise InputError("on_failure", f"must be 'raise' or 'stop', got {on_failure!r}")
+    solve_options = NewtonOptions.of(model.options if options is None else options, **newton_options)
     materials = model.strand.materials
     layout = model.layout
     if n_steps is None:
@@ -391,6 +426,7 @@ def capacity_curve(
         raise InputError("n_steps", f"must be at least 4, got {n_steps!r}")
     if max_strain is not None:
         positive("max_strain", max_strain)
+        _plausible.strand_strain("max_strain", float(max_strain), [m.eps_rupture for m in materials])
     if not (
         isinstance(state_passes, (int, np.integer))
         and not isinstance(state_passes, bool)
@@ -425,7 +461,7 @@ def capacity_curve(
             while True:
                 try:
                     guess = None if U is None else _extrapolate(U, previous, eps, target)
-                    result = model.solve(target, guess, state, passes=state_passes)
+                    result = model.solve(target, guess, state, passes=state_passes, options=solve_options)
                     break
                 except ConvergenceError as exc:
                     last = exc
@@ -472,7 +508,9 @@ def capacity_curve(
                 # (the force of the curve stays the interpolated one; they differ by its error)
                 guess = None if previous[0] is None else previous[0] + t * (U - previous[0])
                 try:
-                    steps[-1] = model.solve(strains[-1], guess, steps[-2].state if len(steps) > 1 else None)
+                    steps[-1] = model.solve(
+                        strains[-1], guess, steps[-2].state if len(steps) > 1 else None, options=solve_options
+                    )
                 except ConvergenceError:
                     pass  # keep the step beyond rupture: the curve itself ends at the rupture strain
             if callback is not None:
@@ -492,6 +530,7 @@ def capacity_curve(
         n_steps,
         failure,
         cutbacks,
+        solve_options,
     )
 
 

@@ -6,6 +6,7 @@ from scipy.integrate import solve_ivp
 from scipy.optimize import brentq
 
 from skcable import cable
+from skcable.cable.bvp import forms
 from skcable.cable.bvp.graph import GraphProblem as _GraphProblem
 from skcable.errors import ConvergenceError, InputError
 
@@ -189,10 +190,10 @@ def _graph_reference(problem, dofs, H):
     slope = problem.chord_slope + u.grad[0]
     terms = [ld.graph_terms(x, slope, H, problem.EA) for ld in problem.distributed]
     q, dq_ds, dq_dh = (sum(t[k] for t in terms) for k in range(3))
-    R = asm(cable.graph_residual, basis, u=u, s=problem.chord_slope, H=H, q=q)
+    R = asm(forms.graph_residual, basis, u=u, s=problem.chord_slope, H=H, q=q)
     np.add.at(R, problem.point_dofs, problem.point_values)
-    K = asm(cable.graph_tangent, basis, H=H, dq_dslope=dq_ds)
-    dR_dH = asm(cable.graph_dH, basis, u=u, s=problem.chord_slope, dq_dH=dq_dh)
+    K = asm(forms.graph_tangent, basis, H=H, dq_dslope=dq_ds)
+    dR_dH = asm(forms.graph_dH, basis, u=u, s=problem.chord_slope, dq_dH=dq_dh)
     dg_dy = asm(graph_length_gradient, basis, df_ds=unstretched_measure(slope, H, problem.EA)[1])
     return R, K, dR_dH, dg_dy
 

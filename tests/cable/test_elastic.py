@@ -5,7 +5,8 @@ import pytest
 from scipy.integrate import solve_ivp
 
 from skcable import cable
-from skcable.errors import InputError
+from skcable.cable import ElasticCatenary
+from skcable.errors import InputError, PlausibilityWarning
 
 
 def test_tends_to_inextensible_catenary():
@@ -84,7 +85,8 @@ def test_strongly_stretched_line_stops_at_the_round_off_of_its_terms():
     import mpmath as mp
 
     span, dh, w, EA, L = 1800.988193505437, 16.54946719505425, 932.2190796045037, 100.4200470840098, 1809.31
-    e = cable.elastic_catenary(span, dh, w, EA, length=L)
+    with pytest.warns(PlausibilityWarning, match="EA"):  # no material stretches so
+        e = cable.elastic_catenary(span, dh, w, EA, length=L)
     mp.mp.dps = 40
     span_, dh_, w_, EA_, L_ = (mp.mpf(v) for v in (span, dh, w, EA, L))
 
@@ -97,3 +99,121 @@ def test_strongly_stretched_line_stops_at_the_round_off_of_its_terms():
     H, VA = mp.findroot(closure, (mp.mpf(e.H), mp.mpf(e.V_A)), tol=mp.mpf(10) ** -30)
     assert e.H == pytest.approx(float(H), rel=1e-10)
     assert e.V_A == pytest.approx(float(VA), rel=1e-10, abs=1e-10 * float(H))
+
+
+# -- issue 26, D1 and D2: an independent 50-digit oracle ---------------------------------------
+def irvine_root(span, dh, w, EA, L, dps=50):
+    """``(H, V_A)`` of Irvine's closure at ``dps`` digits, independently of skcable: a damped
+    Newton in mpmath from the inextensible catenary (or the stretched bar)."""
+    import mpmath as mp
+
+    with mp.workdps(dps):
+        span, dh, w, EA, L = (mp.mpf(v) for v in (span, dh, w, EA, L))
+        chord = mp.sqrt(span**2 + dh**2)
+
+        def closure(H, V):
+            VB = w * L - V
+            X = H * L / EA + H / w * (mp.asinh(VB / H) - mp.asinh(-V / H))
+            Y = L * (w * L / 2 - V) / EA + (mp.sqrt(H**2 + VB**2) - mp.sqrt(H**2 + V**2)) / w
+            return X - span, Y - dh
+
+        def jacobian(H, V):
+            VB = w * L - V
+            TA, TB = mp.sqrt(H**2 + V**2), mp.sqrt(H**2 + VB**2)
+            arc = mp.asinh(VB / H) - mp.asinh(-V / H)
+            j_xv = H / w * (1 / TA - 1 / TB)
+            return L / EA + (arc - VB / TB - V / TA) / w, j_xv, -j_xv, -L / EA - (V / TA + VB / TB) / w
+
+        longer = max(L, chord * (1 + mp.mpf("1e-3")))
+        r = mp.sqrt(longer**2 - dh**2) / span
+        z = mp.findroot(
+            lambda z: mp.log(mp.sinh(z) / z / r), (mp.mpf("1e-20"), mp.mpf(800)), solver="anderson"
+        )
+        H_cat = w * span / (2 * z)
+        H = max(H_cat, EA * (chord / L - 1) * span / chord)
+        V = (w * longer - w * dh / mp.tanh(z)) / 2 * H / H_cat
+        for _ in range(500):
+            f = closure(H, V)
+            merit = max(abs(f[0]), abs(f[1])) / chord
+            if merit < mp.mpf(10) ** (8 - dps):
+                return H, V
+            a, b, c, d = jacobian(H, V)
+            det = a * d - b * c
+            dH, dV = -(f[0] * d - f[1] * b) / det, -(a * f[1] - c * f[0]) / det
+            t = mp.mpf(1)
+            while not (H + t * dH > 0 and max(map(abs, closure(H + t * dH, V + t * dV))) / chord < merit):
+                t /= 2
+            H, V = H + t * dH, V + t * dV
+        raise AssertionError("the oracle did not converge")
+
+
+def irvine_bound(span, dh, w, EA, L, H, V):
+    """Relative error in H that one ulp of each term of the two closure equations allows at the
+    root (J⁻¹ applied to the terms' round-off), in mpmath: the floor of any float solver."""
+    import mpmath as mp
+
+    with mp.workdps(30):
+        span, dh, w, EA, L, H, V = (mp.mpf(v) for v in (span, dh, w, EA, L, H, V))
+        VB = w * L - V
+        TA, TB = mp.sqrt(H**2 + V**2), mp.sqrt(H**2 + VB**2)
+        arc = mp.asinh(VB / H) - mp.asinh(-V / H)
+        a, b = L / EA + (arc - VB / TB - V / TA) / w, H / w * (1 / TA - 1 / TB)
+        c, d = -b, -L / EA - (V / TA + VB / TB) / w
+        terms_x = H * L / EA + H / w * arc + span
+        terms_y = L * (w * L / 2 + abs(V)) / EA + abs(TB - TA) / w + abs(dh) + L
+        return float((abs(d) * terms_x + abs(b) * terms_y) * mp.mpf(2) ** -52 / abs(a * d - b * c) / H)
+
+
+def assert_root(solution, args, factor=32.0):
+    """H within 1e-12 of the 50-digit root, or within ``factor`` times the floor where the
+    scene allows no better (its H is that ill-conditioned)."""
+    H, V = irvine_root(*args)
+    tol = max(1e-12, factor * irvine_bound(*args, H, V))
+    assert abs(solution.H / float(H) - 1) <= tol, (solution.H, float(H), tol)
+    T = max(solution.T_A, solution.T_B)
+    assert abs(solution.V_A - float(V)) <= tol * T, (solution.V_A, float(V))
+
+
+def test_taut_steep_line_keeps_its_digits():
+    # D1: wL/H ~ 1.6e-12 against V_A/H ~ 1.15: the arc asinh(V_B/H) - asinh(-V_A/H) of the
+    # rounded ratios cancelled, H came out 5.66173e10 against 5.66673e10, and residual() agreed
+    args = (
+        0.2332264670872486,
+        -0.26928872264561327,
+        0.2670976622234697,
+        1037758168845.9086,
+        0.3288194802156623,
+    )
+    e = cable.elastic_catenary(*args[:4], length=args[4])
+    H, V = irvine_root(*args)
+    assert abs(e.H / float(H) - 1) <= 1e-12 and abs(e.V_A / float(V) - 1) <= 1e-12
+    # the residual, evaluated by another formula, sees the old answer
+    wrong = ElasticCatenary(*args, 5.66173e10, e.V_A * 5.66173e10 / e.H, ("length", args[4]))
+    assert wrong.residual() > 1e-6
+    assert e.residual() < 1e-14
+
+
+def test_steel_wire_converges_in_any_unit_system():
+    # D2: a 2.34 m steel wire at 0.68 % strain stalled at 1.33e-13 against a tighter bound
+    span, dh, w, EA, L = (
+        2.1958015558525883,
+        -0.8647353183964065,
+        8.075179402033653,
+        18565645.32965864,
+        2.344012229866921,
+    )
+    e = cable.elastic_catenary(span, dh, w, EA, length=L)
+    assert_root(e, (span, dh, w, EA, L))
+    for k_length, k_force in [(10.0, 1.0), (1000.0, 1.0), (1.0, 10.0), (1.0, 1000.0), (1000.0, 1e-3)]:
+        args = (span * k_length, dh * k_length, w * k_force / k_length, EA * k_force, L * k_length)
+        scaled = cable.elastic_catenary(*args[:4], length=args[4])
+        assert_root(scaled, args)
+        assert scaled.H / k_force == pytest.approx(e.H, rel=1e-12)
+
+
+def test_nearly_vertical_line_closes_its_horizontal_equation_at_its_own_round_off():
+    # span 1e-20 m under dh = 30 m: X is 1e21 times smaller than Y, and a test of both against
+    # the chord left H wrong by 9e-11
+    e = cable.elastic_catenary(1e-20, 30.0, 2.0, 1e6, length=120.0)
+    assert_root(e, (1e-20, 30.0, 2.0, 1e6, 120.0))
+    assert abs(e.H / float(irvine_root(1e-20, 30.0, 2.0, 1e6, 120.0)[0]) - 1) < 1e-14

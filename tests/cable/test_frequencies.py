@@ -164,8 +164,8 @@ def test_mode_shapes_round_trip_through_vtk(tmp_path, suffix):
     np.testing.assert_array_equal(mesh.points[:, 1], res.y)
     np.testing.assert_array_equal(mesh.points[:, 2], 0.0)
     for k in range(3):
-        in_plane = mesh.point_data[f"in_plane_{k + 1}"]
-        out_of_plane = mesh.point_data[f"out_of_plane_{k + 1}"]
+        in_plane = mesh.point_data[f"in_plane_{k + 1}_m_per_sqrt_kg"]
+        out_of_plane = mesh.point_data[f"out_of_plane_{k + 1}_m_per_sqrt_kg"]
         np.testing.assert_array_equal(in_plane[:, 1], res.modes_in_plane[k])
         np.testing.assert_array_equal(out_of_plane[:, 2], res.modes_out_of_plane[k])
         np.testing.assert_array_equal(in_plane[:, [0, 2]], 0.0)

@@ -255,7 +255,7 @@ def test_vtk_of_lines_seabed_and_body(tmp_path):
     mesh = meshio.read(path)
     kinds = {block.type: len(block.data) for block in mesh.cells}
     assert kinds == {"line": 3 * 40, "quad": 1, "hexahedron": 1}
-    tension = mesh.point_data["tension"]
+    tension = mesh.point_data["tension_N"]
     for i, line in enumerate(pushed.lines):  # the last point of each line is its fairlead
         assert mesh.points[41 * i + 40] == pytest.approx(line.fairlead, abs=1e-6)
         assert tension[41 * i + 40] == pytest.approx(line.tension_at_fairlead, rel=1e-12)
@@ -345,7 +345,7 @@ def test_cli_line_free_and_vtk(capsys, tmp_path):
     assert values["H"] == ref.H and values["H_A"] == ref.H and values["V_A"] == ref.V_A
     assert values["length_on_seabed"] == 0.0
     mesh = meshio.read(tmp_path / "line.vtu")
-    assert mesh.point_data["tension"][-1] == pytest.approx(ref.T_B, rel=1e-12)
+    assert mesh.point_data["tension_N"][-1] == pytest.approx(ref.T_B, rel=1e-12)
     assert [p.name for p in tmp_path.iterdir()] == ["line.vtu"]
 
 

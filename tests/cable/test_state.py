@@ -197,7 +197,8 @@ KW = dict(EA=3e7, alpha=2e-5, w0=15.0, t0=15.0, w=15.0, t=20.0)
         (dict(H0=2e4, w=[15.0, -1.0]), "w"),
         (dict(H0=2e4, wind=-1.0), "wind"),
         (dict(H0=2e4, t=[1.0, 2.0], w=[1.0, 2.0, 3.0]), "t"),
-        (dict(H0=2e4, alpha=0.1, t=-100.0), "t"),
+        (dict(H0=2e4, alpha=0.1, t=-100.0), "alpha"),  # beyond any material's alpha, not t (issue 25)
+        (dict(H0=2e4, alpha=2.3e-5, t=-1e5), "t"),  # below absolute zero
         (dict(H0=2e4, w0=0.0), "w0"),
         (dict(H0=2e4, t0="15"), "t0"),
         (dict(H0=2e8, model="parabola"), "H0"),  # strain 6.7: beyond a small-strain equation

@@ -1,12 +1,13 @@
-"""The einsum assembly against scikit-fem's forms, and the banded solve against a sparse one."""
+"""The one assembly against scikit-fem's forms, and the banded and sparse solves against scipy's."""
 
 import numpy as np
 import pytest
+import scipy.sparse as sp
 import scipy.sparse.linalg as spla
 from skfem import Basis, BilinearForm, ElementLineHermite, ElementLineP2, LinearForm, MeshLine, asm, bmat
 
 from skcable.errors import ConvergenceError, InputError
-from skcable.fe import StrainAssembly, minimize, newton
+from skcable.fe import Assembly, LinearSystem, SparseSystem, StrainAssembly, minimize, newton
 
 STRAINS = (("u", 1), ("v", 0), ("v", 1), ("v", 2), ("phi", 1))
 
@@ -20,15 +21,15 @@ def setup():
     mesh = MeshLine(np.sort(np.r_[0.0, np.random.default_rng(0).uniform(0, 2, 9), 2.0]))
     ub = Basis(mesh, ElementLineP2(), intorder=6)
     bases = {"u": ub, "v": ub.with_element(ElementLineHermite()), "phi": ub}
-    return StrainAssembly(bases, STRAINS), bases
+    return Assembly(bases, STRAINS), bases
 
 
 def test_vector_and_matrix_equal_scikit_fem_forms(setup):
     asmb, bases = setup
     rng = np.random.default_rng(1)
-    ne, nq = asmb.dx.shape
-    S = rng.standard_normal((len(STRAINS), ne, nq))
-    D = rng.standard_normal((len(STRAINS), len(STRAINS), ne, nq))
+    nq, ne = asmb.dx.shape  # elements last
+    S = rng.standard_normal((len(STRAINS), nq, ne))
+    D = rng.standard_normal((len(STRAINS), len(STRAINS), nq, ne))
     names = list(bases)
     vec, blocks = [], []
     for test in names:
@@ -37,7 +38,7 @@ def test_vector_and_matrix_equal_scikit_fem_forms(setup):
             asm(
                 LinearForm(lambda v, w, r=rows: sum(w[f"S{a}"] * _d(v, o) for a, o in r)),
                 bases[test],
-                **{f"S{a}": S[a] for a in range(len(STRAINS))},
+                **{f"S{a}": S[a].T for a in range(len(STRAINS))},
             )
         )
         row = []
@@ -48,29 +49,50 @@ def test_vector_and_matrix_equal_scikit_fem_forms(setup):
             def form(u, v, w, r=rows, c=cols):
                 return sum(w[f"D{a}{b}"] * _d(u, ob) * _d(v, oa) for a, oa in r for b, ob in c)
 
-            kw = {f"D{a}{b}": D[a, b] for a in range(len(STRAINS)) for b in range(len(STRAINS))}
+            kw = {f"D{a}{b}": D[a, b].T for a in range(len(STRAINS)) for b in range(len(STRAINS))}
             row.append(asm(form, bases[trial], bases[test], **kw))
         blocks.append(row)
     R = np.concatenate(vec)
     K = bmat(blocks).toarray()
     scale_R, scale_K = np.max(np.abs(R)), np.max(np.abs(K))
     np.testing.assert_allclose(asmb.vector(S), R, rtol=0, atol=1e-12 * scale_R)
-    np.testing.assert_allclose(asmb.matrix(D).toarray(), K, rtol=0, atol=1e-12 * scale_K)
+    np.testing.assert_allclose(asmb.matrix(D=D).toarray(), K, rtol=0, atol=1e-12 * scale_K)
+    # the one-pair fast path equals the full tangent of that pair alone
+    pair = np.zeros_like(D)
+    pair[2, 1] = D[2, 1]
+    np.testing.assert_allclose(
+        asmb.block(2, 1, D[2, 1]), asmb.element_matrices(pair), rtol=0, atol=1e-12 * scale_K
+    )
     U = rng.standard_normal(asmb.N)
     parts = np.split(U, asmb.offsets[1:-1])
     fields = {n: bases[n].interpolate(p) for n, p in zip(names, parts, strict=True)}
-    g = np.array([_d(fields[f], o) for f, o in STRAINS])
-    np.testing.assert_allclose(asmb.interpolate(U), g, rtol=0, atol=1e-12 * np.max(np.abs(g)))
+    g = np.array([_d(fields[f], o) for f, o in STRAINS])  # scikit-fem's (ne, nq)
+    np.testing.assert_allclose(
+        asmb.interpolate(U), g.transpose(0, 2, 1), rtol=0, atol=1e-12 * np.max(np.abs(g))
+    )
+
+
+def test_the_deprecated_strain_assembly_keeps_its_shapes(setup):
+    asmb, bases = setup
+    with pytest.warns(DeprecationWarning, match="Assembly"):
+        old = StrainAssembly(bases, STRAINS)
+    rng = np.random.default_rng(7)
+    U = rng.standard_normal(asmb.N)
+    D = rng.standard_normal((len(STRAINS), len(STRAINS), *asmb.dx.shape))
+    np.testing.assert_array_equal(old.interpolate(U), asmb.interpolate(U).transpose(0, 2, 1))
+    np.testing.assert_allclose(
+        old.matrix(D.transpose(0, 1, 3, 2)).toarray(), asmb.matrix(D=D).toarray(), rtol=1e-13, atol=1e-13
+    )
 
 
 def _positive_system(asmb, seed):
     """A symmetric positive-definite section tangent, its banded free block, a right-hand side and
     the sparse solution to compare with."""
     rng = np.random.default_rng(seed)
-    ne, nq = asmb.dx.shape
-    A = rng.standard_normal((len(STRAINS), len(STRAINS), ne, nq))
-    D = np.einsum("abeq,cbeq->aceq", A, A) + 0.1 * np.eye(len(STRAINS))[:, :, None, None]
-    K = asmb.matrix(D)
+    nq, ne = asmb.dx.shape
+    A = rng.standard_normal((len(STRAINS), len(STRAINS), nq, ne))
+    D = np.einsum("abqe,cbqe->acqe", A, A) + 0.1 * np.eye(len(STRAINS))[:, :, None, None]
+    K = asmb.matrix(D=D)
     free = np.setdiff1d(np.arange(asmb.N), [0, 3, asmb.N - 1])
     system = asmb.banded(free)
     ab = system.add_elements(system.band(), asmb.element_matrices(D))
@@ -90,6 +112,36 @@ def test_banded_solve_equals_sparse_solve(setup):
     )
 
 
+def test_a_coupling_beyond_the_band_moves_the_solve_to_sparse(setup):
+    """A tie between the two ends (a multi-point constraint) breaks the band: the system moves to
+    SuperLU and solves the same equations, and its Cholesky-like solve still tells definiteness."""
+    asmb, _ = setup
+    K, free, system, ab, b, _ = _positive_system(asmb, 3)
+    a, z = free[0], free[-1]
+    tie = sp.coo_matrix(([1e3, -1e3, -1e3, 1e3], ([a, a, z, z], [a, z, a, z])), shape=K.shape).tocsr()
+    expected = spla.spsolve((K + tie)[free][:, free].tocsc(), b)
+    linear = LinearSystem(system)
+    assert linear.accept([tie]) and not linear.is_banded
+    acc = linear.add_sparse(linear.add_elements(linear.band(), _element_matrices(asmb, 3)), tie)
+    np.testing.assert_allclose(linear.solve(acc, b), expected, rtol=1e-9, atol=1e-12 * np.abs(expected).max())
+    np.testing.assert_allclose(
+        linear.solve_positive(acc, b), expected, rtol=1e-9, atol=1e-12 * np.abs(expected).max()
+    )
+    negative = linear.add_sparse(linear.band(), -(K + tie))
+    with pytest.raises(np.linalg.LinAlgError):
+        linear.solve_positive(negative, b)
+    assert isinstance(linear.current, SparseSystem)
+
+
+def _element_matrices(asmb, seed):
+    rng = np.random.default_rng(seed)
+    nq, ne = asmb.dx.shape
+    A = rng.standard_normal((len(STRAINS), len(STRAINS), nq, ne))
+    return asmb.element_matrices(
+        np.einsum("abqe,cbqe->acqe", A, A) + 0.1 * np.eye(len(STRAINS))[:, :, None, None]
+    )
+
+
 def test_singular_banded_system_raises(setup):
     asmb, _ = setup
     free = np.arange(asmb.N)
@@ -101,9 +153,9 @@ def test_singular_banded_system_raises(setup):
 def test_unknown_field_or_order_is_refused(setup):
     _, bases = setup
     with pytest.raises(InputError, match="strains"):
-        StrainAssembly(bases, [("q", 1)])
+        Assembly(bases, [("q", 1)])
     with pytest.raises(InputError, match="order"):
-        StrainAssembly(bases, [("u", 3)])
+        Assembly(bases, [("u", 3)])
 
 
 def test_newton_converges_quadratically_and_stops_on_stagnation():

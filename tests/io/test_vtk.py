@@ -43,8 +43,8 @@ def test_cable_profile_round_trip(tmp_path, solve):
     np.testing.assert_allclose(grid.points, mesh.points)
     x, y = mesh.points[:, 0], mesh.points[:, 1]
     np.testing.assert_allclose([x[0], y[0], x[-1], y[-1]], [0, 0, 800, -20], atol=1e-9)
-    T, angle, load = (mesh.point_data[k] for k in ("tension", "angle", "load"))
-    np.testing.assert_allclose(grid.point_data["tension"], T)
+    T, angle, load = (mesh.point_data[k] for k in ("tension_N", "angle_rad", "load_N_per_m"))
+    np.testing.assert_allclose(grid.point_data["tension_N"], T)
     # statics: the horizontal component of the tension is H everywhere (no horizontal load);
     # the arc form's P1 tension and P2 slope meet it to the discretisation error (h^2)
     rtol = 1e-4 if isinstance(sol, cable.ArcSolution) else 1e-6
@@ -60,10 +60,10 @@ def test_funicular_round_trip(tmp_path):
     sol = cable.funicular((20, 2), [5, 6, 6, 5], [(5, -75), (10, -100), (5, -75)])
     mesh = meshio.read(sol.to_vtk(tmp_path / "f.vtu"))
     np.testing.assert_allclose(mesh.points[:, :2], sol.nodes)
-    np.testing.assert_allclose(mesh.cell_data["tension"][0], sol.T)
-    np.testing.assert_allclose(mesh.cell_data["tension"][0][0], 233.04, atol=0.005)  # seed 000 ex. 1
+    np.testing.assert_allclose(mesh.cell_data["tension_N"][0], sol.T)
+    np.testing.assert_allclose(mesh.cell_data["tension_N"][0][0], 233.04, atol=0.005)  # notes "Cables", ex. 1
     vertical = cable.funicular_vertical(10, -1, [(1, 50), (3, 30), (7, 40)], through=(3, -5))
-    loads = meshio.read(write(funicular_mesh(vertical), tmp_path / "v.vtu")).point_data["load"]
+    loads = meshio.read(write(funicular_mesh(vertical), tmp_path / "v.vtu")).point_data["load_N"]
     np.testing.assert_allclose(loads[:, 1], [0, -50, -30, -40, 0])
 
 
@@ -143,7 +143,8 @@ ROOT = Path(__file__).resolve().parents[2] / "skcable"
 
 
 def _import_graph():
-    """Every skcable module and the skcable modules it imports (function-level imports included)."""
+    """Every skcable module and the skcable modules it imports (function-level imports included,
+    ``if TYPE_CHECKING:`` blocks and lazy names served by `skcable._lazy` not)."""
     modules = {}
     for path in ROOT.rglob("*.py"):
         parts = path.relative_to(ROOT.parent).with_suffix("").parts
@@ -152,7 +153,11 @@ def _import_graph():
     for name, path in modules.items():
         package = name if path.name == "__init__.py" else name.rpartition(".")[0]
         found = set()
-        for node in ast.walk(ast.parse(path.read_text())):
+        tree = ast.parse(path.read_text())
+        for node in ast.walk(tree):  # what static tools alone see is not imported
+            if isinstance(node, ast.If) and getattr(node.test, "id", "") == "TYPE_CHECKING":
+                node.body = []
+        for node in ast.walk(tree):
             if isinstance(node, ast.Import):
                 found.update(alias.name for alias in node.names)
             elif isinstance(node, ast.ImportFrom):
@@ -191,3 +196,97 @@ def test_no_import_circle_in_the_package():
 
     circles = [name for name in graph if reaches(name, name)]  # the whole package
     assert not circles, f"modules on an import circle: {circles}"
+
+
+# --- writers: atomic, no parent created, the user's path in every refusal ---------------------
+def _polygon():
+    return funicular_mesh(cable.funicular((20, 2), [5, 6, 6, 5], [(5, -75), (10, -100), (5, -75)]))
+
+
+def _line():
+    return cable.line_3d(cable.Line([cable.Segment(400.0, 200.0, 1e8)]), (0, 0, 0), (380.0, 0, 60.0))
+
+
+def _moored():
+    line = cable.Line([cable.Segment(850.0, 2456.82, 1.2326e9)], seabed=0.0)
+    angles = np.radians([0.0, 120.0, 240.0])
+    anchors = np.column_stack([800 * np.cos(angles), 800 * np.sin(angles), np.full(3, -200.0)])
+    fairleads = np.column_stack([20 * np.cos(angles), 20 * np.sin(angles), np.full(3, -14.0)])
+    body = cable.RigidBody(fairleads, waterplane_area=600.0)
+    return cable.MooringSystem(body, [line] * 3, anchors).equilibrium()
+
+
+def _writers():
+    """Each writer of skcable.io with a valid result, and a suffix of its format."""
+    from skcable.io import write_lines, write_mode_shapes, write_mooring
+
+    sol = cable.catenary(800, -20, 20, low=-30)
+    modes = cable.natural_frequencies(100.0, 0.0, 10.0, 5e7, sag=3.0, n_modes=2)
+    return {
+        "write": (lambda p: write(_polygon(), p), ".vtu"),
+        "to_vtk": (lambda p: sol.to_vtk(p), ".vtk"),
+        "write_series": (lambda p: write_series([_polygon(), _polygon()], [0.0, 1.0], p), ".pvd"),
+        "write_mode_shapes": (lambda p: write_mode_shapes(modes, p), ".vtu"),
+        "write_lines": (lambda p: write_lines([_line()], p), ".vtu"),
+        "write_mooring": (lambda p: write_mooring(_moored(), p), ".vtu"),
+    }
+
+
+@pytest.mark.parametrize(
+    "writer", ["write", "to_vtk", "write_series", "write_mode_shapes", "write_lines", "write_mooring"]
+)
+def test_writer_refuses_a_missing_parent_and_never_creates_it(tmp_path, writer):
+    call, suffix = _writers()[writer]
+    path = tmp_path / "no" / "such" / f"out{suffix}"
+    with pytest.raises(InputError) as info:
+        call(path)
+    assert info.value.argument == "path" and repr(str(path)) in str(info.value)
+    assert not (tmp_path / "no").exists()
+    with pytest.raises(InputError) as info:  # a folder that takes no new file, root included
+        call(f"/proc/out{suffix}")
+    assert info.value.argument == "path" and f"'/proc/out{suffix}'" in str(info.value)
+    assert ".tmp" not in str(info.value)
+    written = call(tmp_path / f"out{suffix}")  # and where it can write, it does, leaving no temporary
+    assert Path(written).is_file() and not list(tmp_path.glob(".*"))
+
+
+def test_write_mode_shapes_none_is_a_path_error():  # issue 26, D7: a TypeError escaped
+    from skcable.io import write_mode_shapes
+
+    res = cable.natural_frequencies(100.0, 0.0, 10.0, 5e7, sag=3.0, n_modes=2)
+    for path in (None, 3.0, ["m.vtu"]):
+        with pytest.raises(InputError) as info:
+            write_mode_shapes(res, path)
+        assert info.value.argument == "path"
+
+
+def test_a_failed_write_leaves_the_earlier_file(tmp_path, monkeypatch):
+    path = tmp_path / "c.vtu"
+    path.write_text("earlier")
+
+    def breaks(target, mesh, *args, **kwargs):
+        Path(target).write_text("half")
+        raise OSError(28, "No space left on device")
+
+    monkeypatch.setattr(meshio, "write", breaks)
+    with pytest.raises(OSError) as info:
+        cable.catenary(800, -20, 20, low=-30).to_vtk(path)
+    assert repr(str(path)) in str(info.value) and ".tmp" not in str(info.value)  # the user's path
+    assert path.read_text() == "earlier" and [p.name for p in tmp_path.iterdir()] == ["c.vtu"]
+
+
+def test_array_names_carry_their_units(tmp_path):
+    from skcable.io import cable_mesh, lines_mesh, mode_shape_mesh, mooring_mesh
+
+    unit = ("_N", "_rad", "_N_per_m", "_m_per_sqrt_kg")
+    meshes = [
+        cable_mesh(cable.catenary(800, -20, 20, low=-30)),
+        _polygon(),
+        mode_shape_mesh(cable.natural_frequencies(100.0, 0.0, 10.0, 5e7, sag=3.0, n_modes=2)),
+        lines_mesh([_line()]),
+        mooring_mesh(_moored()),
+    ]
+    unitless = {"tangent", "part", "line"}  # a unit vector, a part number, a line number
+    for mesh in meshes:
+        for name in [*mesh.point_data, *mesh.cell_data]:
+            assert name in unitless or name.endswith(unit), name

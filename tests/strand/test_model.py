@@ -5,7 +5,7 @@ import pytest
 
 from skcable import strand
 from skcable.errors import ConvergenceError, InputError
-from skcable.strand.fe.terms import critical_curvature_table
+from skcable.strand.fe.wires import critical_curvature_table
 
 STRAIGHT = strand.Strand(3e-3, (strand.Layer(6, 3e-3, lay_angle=1e-9),), strand.material("steel"))
 

@@ -26,7 +26,7 @@ user's load callable, by central differences).
 
 The forms (`skcable.cable.bvp.forms`) are a *section law* in the
 generalized strains ``(x', y', x, y, T)``: `ArcProblem` assembles them
-with `LineAssembly` (basis values and patterns once) and
+with `skcable.fe.Assembly` (basis values and patterns once) and
 solves the bordered banded system of `skcable.cable.bvp.bordered`.
 
 Support reactions come from the residual rows at the supports:
@@ -45,14 +45,15 @@ from skfem import Basis, ElementLineP1DG, ElementLineP2, MeshLine
 from skcable._checks import positive, real, require
 from skcable.cable._catenary import catenary
 from skcable.cable._loads import DeckLoad, DistributedLoad, PointLoad, SelfWeight
-from skcable.cable.bvp.assembly import LineAssembly
 from skcable.cable.bvp.base import FiniteElementSolution
-from skcable.cable.bvp.bordered import BorderedSolver
 from skcable.cable.bvp.elements import end_dofs
 from skcable.cable.bvp.probes import element_values, gradient_probes, minimum_near
-from skcable.errors import InputError
+from skcable.cable.terms import CableState, CableTerm
+from skcable.errors import ConvergenceError, InputError
+from skcable.fe.assembly import Assembly
+from skcable.fe.linear import BorderedSolver
 
-__all__ = ["ArcProblem", "ArcSolution", "ArcState", "arc_guess", "arc_loads"]
+__all__ = ["ArcProblem", "ArcSolution", "ArcState", "arc_guess", "arc_loads", "term_loads"]
 
 #: generalized strains of the section law: x', y', x, y, T
 _STRAINS = (("x", 1), ("y", 1), ("x", 0), ("y", 0), ("T", 0))
@@ -69,6 +70,8 @@ def arc_loads(loads, x, dx, L0, span):
     out = [zero.copy() for _ in range(8)]
     h = 1e-7 * span
     for load in loads:
+        if isinstance(load, CableTerm):
+            continue  # `term_loads`
         if isinstance(load, SelfWeight):
             out[1] -= load.w * L0
             out[7] -= load.w
@@ -94,6 +97,35 @@ def arc_loads(loads, x, dx, L0, span):
     return out
 
 
+def term_loads(terms, X, Y, ax, ay, T, L0, sigma):
+    """The cable terms' load per unit σ, ``Q = L0 f`` (2, *P), and its derivatives by the
+    position ``r`` (2, 2, *P), by ``r' = dr/dσ`` (2, 2, *P), by the tension (2, *P) and by L0
+    (2, *P) (`skcable.cable.terms`): ``a = r'/L0``, ``s = σ L0``."""
+    a = np.array([ax, ay]) / L0
+    state = CableState(X, Y, sigma * L0, a, T)
+    Q, dQ_dr, dQ_da = np.zeros((2, *X.shape)), np.zeros((2, 2, *X.shape)), np.zeros((2, 2, *X.shape))
+    dQ_dT, dQ_dL = np.zeros((2, *X.shape)), np.zeros((2, *X.shape))
+    for term in terms:
+        out = term.forces(state)
+        f = np.asarray(out.f, dtype=float)
+        if f.shape != Q.shape or not np.all(np.isfinite(f)):
+            raise InputError(
+                "load", f"{term!r} returned forces of shape {f.shape} (not {Q.shape}) or non-finite ones"
+            )
+        Q += L0 * f
+        dQ_dL += f
+        if out.df_dr is not None:
+            dQ_dr += L0 * out.df_dr
+        if out.df_da is not None:
+            dQ_da += out.df_da
+            dQ_dL -= np.einsum("ij...,j...->i...", out.df_da, a)
+        if out.df_ds is not None:
+            dQ_dL += sigma * L0 * out.df_ds
+        if out.df_dT is not None:
+            dQ_dT += L0 * out.df_dT
+    return Q, dQ_dr, dQ_da, dQ_dT, dQ_dL
+
+
 @dataclass
 class ArcState:
     """Everything assembled at one iterate; vectors over all dofs ``[x, y, T]``."""
@@ -106,7 +138,7 @@ class ArcState:
     dg_dL0: float
     merit: float  # max-norm of the scaled residual: the convergence test and line-search merit
     descent: float  # 2-norm of the scaled residual
-    assembly: LineAssembly | None = None
+    assembly: Assembly | None = None
 
     @cached_property
     def J(self):
@@ -124,7 +156,7 @@ class ArcProblem:
     show why not, see the module docstring).
     """
 
-    def __init__(self, span, dh, loads, EA, constraint, n_elements, degree, tension=None):
+    def __init__(self, span, dh, loads, EA, constraint, n_elements, degree, tension=None, end_force=None):
         if any(isinstance(ld, PointLoad) for ld in loads):
             raise InputError("load", "point loads at fixed x need formulation='graph'")
         if degree != 2:
@@ -132,6 +164,11 @@ class ArcProblem:
                 "degree", f"formulation='arc' uses degree 2 (P2 positions, P1 tension), got {degree!r}"
             )
         self.span, self.dh, self.EA, self.constraint, self.loads = span, dh, EA, constraint, loads
+        self.terms = [ld for ld in loads if isinstance(ld, CableTerm)]
+        #: a load has a horizontal component: H_A and H_B differ
+        self.horizontal = any(getattr(ld, "qx", None) is not None for ld in loads) or any(
+            not t.vertical for t in self.terms
+        )
         self.compliance = 0.0 if EA is None else 1.0 / EA
         n = positive("n_elements", n_elements)
         require("n_elements", n == int(n), "must be a whole number", n)
@@ -141,9 +178,13 @@ class ArcProblem:
         N, M = self.basis.N, self.tbasis.N
         self.N, self.M = N, M
         self.end_a, self.end_b, inner = end_dofs(self.basis)
+        #: a force (N, y up) on a free end B, or None (B fixed at (span, dh))
+        self.end_force = None if end_force is None else np.asarray(end_force, dtype=float)
+        if self.end_force is not None:
+            inner = np.sort(np.append(inner, self.end_b))
         self.free = np.concatenate([inner, N + inner, 2 * N + np.arange(M)])
         self.fixed_length = constraint[0] == "length"
-        self.assembly = LineAssembly({"x": self.basis, "y": self.basis, "T": self.tbasis}, _STRAINS)
+        self.assembly = Assembly({"x": self.basis, "y": self.basis, "T": self.tbasis}, _STRAINS)
         self.solver = BorderedSolver(self.assembly.banded(self.free))
         self._force_rows = self.free[self.free < 2 * N]
         self._stretch_rows = self.free[self.free >= 2 * N]
@@ -173,10 +214,21 @@ class ArcProblem:
         D[_X, _X], D[_X, _AX] = -dQx_dx, -dQx_dxp
         D[_Y, _X], D[_Y, _AX] = -dQy_dx, -dQy_dxp
         D[_T, _T] = -L0 * c
-        R = asmb.vector(S)
-        Ke = asmb.element_matrices(D)
         zero = np.zeros_like(n)
-        dR_dL0 = asmb.vector(np.stack([zero, zero, -dQx_dL, -dQy_dL, -(1.0 + T * c)]))
+        dS_dL0 = np.stack([zero, zero, -dQx_dL, -dQy_dL, -(1.0 + T * c)])
+        if self.terms:  # the cable terms (skcable.cable.terms): their loads and full tangent
+            Q, dQ_dr, dQ_da, dQ_dT, dQ_dL = term_loads(self.terms, X, g[_Y], ax, ay, T, L0, asmb.x)
+            S[_X : _Y + 1] -= Q
+            D[_X : _Y + 1, _X : _Y + 1] -= dQ_dr
+            D[_X : _Y + 1, _AX : _AY + 1] -= dQ_da
+            D[_X : _Y + 1, _T] -= dQ_dT
+            dS_dL0[_X : _Y + 1] -= dQ_dL
+        R = asmb.vector(S)
+        if self.end_force is not None:  # the force on the free end B: external, a dead load
+            R[self.end_b] -= self.end_force[0]
+            R[self.N + self.end_b] -= self.end_force[1]
+        Ke = asmb.element_matrices(D)
+        dR_dL0 = asmb.vector(dS_dL0)
         gap, dg, dg_dL0 = self.constraint_terms(z, R, Ke, dR_dL0, g)
         force = np.abs(R[self._force_rows]) / self.load_scale
         stretch = np.abs(R[self._stretch_rows]) / self.length_scale
@@ -184,6 +236,45 @@ class ArcProblem:
         merit = max(float(np.max(force, initial=0.0)), float(np.max(stretch, initial=0.0)), constraint)
         descent = float(np.sqrt(np.sum(force * force) + np.sum(stretch * stretch) + constraint * constraint))
         return ArcState(R, Ke, dR_dL0, float(gap), dg, float(dg_dL0), merit, descent, asmb)
+
+    # --- one term alone (skcable.fe.check_tangent) ---------------------------------------------
+    def term_contribution(self, term, U, state=None):
+        """``(R, K)`` of the cable term ``term`` alone at ``U = [z, L0]`` (the Newton vector):
+        its residual (its load, negated) over the dofs and its tangent by them, L0 held."""
+        from skcable.fe.check import sparse_of
+
+        z, L0 = U[:-1], float(U[-1])
+        g = self.assembly.interpolate(z)
+        Q, dQ_dr, dQ_da, dQ_dT, _ = term_loads(
+            [term], g[_X], g[_Y], g[_AX], g[_AY], g[_T], L0, self.assembly.x
+        )
+        S = np.zeros((5, *g.shape[1:]))
+        S[_X : _Y + 1] = -Q
+        D = np.zeros((5, 5, *g.shape[1:]))
+        D[_X : _Y + 1, _X : _Y + 1] = -dQ_dr
+        D[_X : _Y + 1, _AX : _AY + 1] = -dQ_da
+        D[_X : _Y + 1, _T] = -dQ_dT
+        K = self.assembly.matrix(self.assembly.element_matrices(D))
+        return np.append(self.assembly.vector(S), 0.0), sparse_of(K, len(U))
+
+    def free_dofs(self):
+        """The dofs a solve moves, L0 left out (for `skcable.fe.check_tangent`)."""
+        return self.free
+
+    def tangent_check_state(self):
+        """The start of a solve, ``[z, L0]`` (for `skcable.fe.check_tangent`)."""
+        z, L0 = arc_guess(self)
+        return np.append(z, L0)
+
+    def absolute(self, state, rtol) -> float:
+        """The largest force residual (N) where the stretch and constraint rows meet ``rtol``
+        (``atol``'s measure), else inf."""
+        if state.R is None:
+            return np.inf
+        stretch = np.max(np.abs(state.R[self._stretch_rows]), initial=0.0) / self.length_scale
+        if not (stretch < rtol and abs(state.g) / self.constraint_scale < rtol):
+            return np.inf
+        return float(np.max(np.abs(state.R[self._force_rows]), initial=0.0))
 
     def scaled(self, R, g):
         """Residual in consistent units: forces over the total load, stretch
@@ -214,6 +305,8 @@ class ArcProblem:
     # --- constraint -------------------------------------------------------------
     def reactions(self, R):
         N = self.N
+        if self.end_force is not None:  # B is free: what acts there is the given force
+            return -R[self.end_a], R[N + self.end_a], self.end_force[0], self.end_force[1]
         return -R[self.end_a], R[N + self.end_a], R[self.end_b], R[N + self.end_b]  # H_A, V_A, H_B, V_B
 
     def constraint_terms(self, z, R, Ke, dR_dL0, strains):
@@ -257,11 +350,22 @@ class ArcProblem:
     length_scale = 1.0
     load_scale = 1.0
 
+    def straight_loads(self, L0):
+        """``(Qx, Qy)`` per unit σ on the straight chord of unstretched length L0, every load."""
+        sigma = self.assembly.x
+        x, y = sigma * self.span, sigma * self.dh
+        out = arc_loads(self.loads, x, np.full_like(x, self.span), L0, self.span)
+        Qx, Qy = out[0], out[1]
+        if self.terms:
+            zero = np.zeros_like(x)
+            Q = term_loads(self.terms, x, y, zero + self.span, zero + self.dh, zero, L0, sigma)[0]
+            Qx, Qy = Qx + Q[0], Qy + Q[1]
+        return Qx, Qy
+
     def total_load(self, L0):
         """Magnitude of the distributed load on a straight cable of length L0 (N)."""
-        x = self.assembly.x * self.span
-        out = arc_loads(self.loads, x, np.full_like(x, self.span), L0, self.span)
-        return float(np.sum(np.hypot(out[0], out[1]) * self.assembly.dx)) or 1.0
+        Qx, Qy = self.straight_loads(L0)
+        return float(np.sum(np.hypot(Qx, Qy) * self.assembly.dx)) or 1.0
 
     @property
     def constraint_scale(self):
@@ -281,8 +385,8 @@ def arc_guess(problem: ArcProblem):
     name, value = problem.constraint
     chord = float(np.hypot(span, dh))
     length = (value if value > chord else chord * (1 + 1e-6)) if name == "length" else chord
-    x, dx = problem.assembly.x * span, problem.assembly.dx
-    Q = arc_loads(problem.loads, x, np.full_like(x, span), length, span)
+    dx = problem.assembly.dx
+    Q = problem.straight_loads(length)
     mean = np.array([np.sum(Q[0] * dx), np.sum(Q[1] * dx)]) / length
     q = float(np.hypot(*mean))
     up = -mean / q
@@ -315,17 +419,20 @@ def arc_guess(problem: ArcProblem):
         value if name == "length" else guess.length / (1 + 0.5 * (guess.T_A + guess.T_B) * problem.compliance)
     )
     problem.length_scale = float(L_guess)
-    problem.load_scale = problem.total_load(L_guess)
+    problem.load_scale = problem.total_load(L_guess) + (
+        0.0 if problem.end_force is None else float(np.hypot(*problem.end_force))
+    )
     return np.concatenate([xs, ys, T]), float(L_guess)
 
 
 class ArcSolution(FiniteElementSolution):
-    """Solution of `solve_bvp` with ``formulation="arc"``.
+    """Solution of `solve_bvp` with ``formulation="arc"`` (the result protocol of
+    `skcable.results`).
 
-    Attributes as `BVPSolution`; ``H`` is the
-    horizontal reaction at A (constant along the cable unless horizontal
-    loads act), ``H_B`` the one at B; ``xy(sigma)`` gives the position at
-    the normalised unstretched arc length σ ∈ [0, 1].
+    ``H_A``, ``H_B`` are the horizontal tensions at A and B (N): equal unless horizontal loads
+    act. ``H`` is kept where they are equal (vertical loads); under horizontal loads it is A's,
+    with a `DeprecationWarning` (use ``H_A`` or ``H_B``). ``xy(s)`` and ``T_of_s(s)`` take the
+    unstretched arc length ``s`` (m) from A, ``s ∈ [0, length]``.
     """
 
     formulation = "arc"
@@ -333,11 +440,28 @@ class ArcSolution(FiniteElementSolution):
     def __init__(self, problem: ArcProblem, z, L0, history, state: ArcState | None = None):
         super().__init__(problem, z, history, problem.assemble(z, L0) if state is None else state)
         self.L0 = float(L0)
-        self.H, self.V_A, self.H_B, self.V_B = (float(v) for v in problem.reactions(self._state.R))
+        self.H_A, self.V_A, self.H_B, self.V_B = (float(v) for v in problem.reactions(self._state.R))
+        if problem.end_force is not None:  # B went where the force took it
+            xd, yd, _ = problem.fields(z)
+            self.span, self.dh = float(xd[problem.end_b]), float(yd[problem.end_b])
+
+    @property
+    def H(self):
+        """The horizontal tension where it is the same at both ends; A's otherwise (deprecated)."""
+        if self._problem.horizontal:
+            import warnings
+
+            warnings.warn(
+                "ArcSolution.H: under horizontal loads the horizontal tension differs between the ends; "
+                "H is A's (H_A): use H_A or H_B",
+                DeprecationWarning,
+                stacklevel=2,
+            )
+        return self.H_A
 
     @property
     def T_A(self):
-        return float(np.hypot(self.H, self.V_A))
+        return float(np.hypot(self.H_A, self.V_A))
 
     @property
     def T_B(self):
@@ -354,15 +478,45 @@ class ArcSolution(FiniteElementSolution):
 
     @property
     def x_low(self):
-        return float(self.xy(self._low[0])[0])
+        return float(self._at_sigma(self._low[0])[0])
 
-    def xy(self, sigma):
-        """Position (x, y) at σ ∈ [0, 1], array ``(..., 2)``."""
-        sigma = np.asarray(real("sigma", sigma), dtype=float)
-        require("sigma", (sigma >= 0) & (sigma <= 1), "must lie in [0, 1]", sigma)
-        probes = self.basis.probes(sigma.reshape(1, -1))
+    def _sigma(self, s):
+        s = np.asarray(real("s", s), dtype=float)
+        require("s", (s >= 0) & (s <= self.L0 * (1 + 1e-15)), f"must lie in [0, length = {self.L0:g}] m", s)
+        return np.minimum(s / self.L0, 1.0)
+
+    def _at_sigma(self, sigma):
+        probes = self.basis.probes(np.reshape(sigma, (1, -1)))
         xd, yd, _ = self._problem.fields(self.dofs)
-        return np.stack([probes @ xd, probes @ yd], axis=-1).reshape(*sigma.shape, 2)
+        return np.stack([probes @ xd, probes @ yd], axis=-1).reshape(*np.shape(sigma), 2)
+
+    def xy(self, s):
+        """Position (x, y) (m) at the unstretched arc length ``s`` (m) from A: array ``(..., 2)``."""
+        return self._at_sigma(self._sigma(s))
+
+    def T_of_s(self, s):
+        """Tension (N) at the unstretched arc length ``s`` (m) from A."""
+        sigma = self._sigma(s)
+        T = self._problem.fields(self.dofs)[2]
+        return (self._problem.tbasis.probes(np.reshape(sigma, (1, -1))) @ T).reshape(np.shape(sigma))[()]
+
+    def stiffness(self):
+        """Fairlead stiffness ``∂(H_B, V_B)/∂(span, dh)`` (N/m), A fixed and the unstretched length
+        kept: the discrete solution's own derivative (implicit function theorem on the converged
+        tangent: ``dz = −K_ff⁻¹ K_fB dB``, ``dR_B = K_Bf dz + K_BB dB``), rows (H_B, V_B)."""
+        problem = self._problem
+        if problem.end_force is not None:
+            raise InputError("end_force", "B is free (loaded by a force): its position has no stiffness here")
+        import scipy.sparse.linalg as spla
+
+        J = self._state.J.tocsc()
+        free, B = problem.free, np.array([problem.end_b, problem.N + problem.end_b])
+        K_fB = J[free][:, B].toarray()
+        dz = -spla.splu(J[free][:, free].tocsc()).solve(K_fB)
+        K = J[B][:, free] @ dz + J[B][:, B].toarray()
+        if not np.all(np.isfinite(K)):
+            raise ConvergenceError("ArcSolution.stiffness: the tangent is singular here", self.history)
+        return np.asarray(K, dtype=float)
 
     def _sigma_of_x(self, x):
         x = np.asarray(real("x", x), dtype=float)
@@ -370,9 +524,7 @@ class ArcSolution(FiniteElementSolution):
         xd = self._problem.fields(self.dofs)[0]
         nodal = xd[self.basis.nodal_dofs[0]]
         if np.any(np.diff(nodal) <= 0):
-            raise InputError(
-                "x", "the cable is not a graph y(x) here (x(σ) is not increasing): use xy(sigma)"
-            )
+            raise InputError("x", "the cable is not a graph y(x) here (x(s) is not increasing): use xy(s)")
         probe = self.basis.probes
 
         def f(s):
@@ -383,7 +535,7 @@ class ArcSolution(FiniteElementSolution):
 
     def y(self, x):
         s = self._sigma_of_x(x)
-        return self.xy(s)[..., 1][()]
+        return self._at_sigma(s)[..., 1][()]
 
     def slope(self, x):
         s = np.atleast_1d(self._sigma_of_x(x))
@@ -403,8 +555,12 @@ class ArcSolution(FiniteElementSolution):
         xd, yd, T = self._problem.fields(self.dofs)
         G = gradient_probes(self.basis, sigma.reshape(1, -1))
         dx, dy = G @ xd, G @ yd
-        xy = self.xy(sigma)
+        xy = self._at_sigma(sigma)
         loads = arc_loads(self._problem.loads, xy[:, 0], dx, self.L0, self.span)
+        if self._problem.terms:
+            tension = self._problem.tbasis.probes(sigma.reshape(1, -1)) @ T
+            Q = term_loads(self._problem.terms, xy[:, 0], xy[:, 1], dx, dy, tension, self.L0, sigma)[0]
+            loads = [loads[0] + Q[0], loads[1] + Q[1]]
         return {
             "xy": xy,
             "tension": self._problem.tbasis.probes(sigma.reshape(1, -1)) @ T,
@@ -420,6 +576,6 @@ class ArcSolution(FiniteElementSolution):
     def __repr__(self):
         return (
             f"ArcSolution(span={self.span:g}, dh={self.dh:g}, {self.mesh.t.shape[1]} elements: "
-            f"H={self.H:.9g}, V_A={self.V_A:.9g}, V_B={self.V_B:.9g}, length={self.length:.9g}, "
-            f"iterations={self.iterations})"
+            f"H_A={self.H_A:.9g}, V_A={self.V_A:.9g}, H_B={self.H_B:.9g}, V_B={self.V_B:.9g}, "
+            f"length={self.length:.9g}, iterations={self.iterations})"
         )

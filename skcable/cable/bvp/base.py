@@ -5,13 +5,15 @@ from __future__ import annotations
 from functools import cached_property
 
 from skcable.cable.solution import CableSolution
+from skcable.results import ProfileMixin
 
 __all__ = ["FiniteElementSolution"]
 
 
-class FiniteElementSolution(CableSolution):
+class FiniteElementSolution(ProfileMixin, CableSolution):
     """A finite-element cable solution: sag and lowest point by a search of
-    the discrete profile (``problem.extremum``), Newton's history."""
+    the discrete profile (``problem.extremum``), Newton's history, and the result protocol's
+    ``profile``, ``to_frame`` and ``tensions`` (`skcable.results`)."""
 
     def __init__(self, problem, dofs, history, state):
         self._problem = problem
@@ -22,6 +24,12 @@ class FiniteElementSolution(CableSolution):
         self.iterations = len(self.history) - 1
         self.constraint = problem.constraint
         self._state = state
+
+    @property
+    def problem(self):
+        """The discrete problem this solution solved (mesh, bases, loads, assembly): what
+        `skcable.fe.check_tangent` checks a cable term on, ``check_tangent(term, sol.problem)``."""
+        return self._problem
 
     @cached_property
     def _sag(self):

@@ -36,12 +36,13 @@ from skcable._checks import positive, real, require
 from skcable.cable._catenary import catenary
 from skcable.cable._loads import PointLoad, unstretched_measure
 from skcable.cable._parabola import parabola
-from skcable.cable.bvp.assembly import LineAssembly
 from skcable.cable.bvp.base import FiniteElementSolution
-from skcable.cable.bvp.bordered import BorderedSolver
 from skcable.cable.bvp.elements import end_dofs, line_element
 from skcable.cable.bvp.probes import element_values, gradient_probes, minimum_near
+from skcable.cable.terms import CableState, CableTerm
 from skcable.errors import InputError
+from skcable.fe.assembly import Assembly
+from skcable.fe.linear import BorderedSolver
 
 __all__ = ["BVPSolution", "GraphProblem", "GraphState", "initial_guess"]
 
@@ -58,12 +59,44 @@ class GraphState:
     dg_dH: float
     merit: float  # max-norm of the scaled residual: the convergence test
     descent: float  # 2-norm of the scaled residual: the line-search merit
-    assembly: LineAssembly
+    assembly: Assembly
 
     @cached_property
     def K(self):
         """The global tangent ``∂R/∂y`` (CSR), for inspection; Newton uses the band of ``Ke``."""
         return self.assembly.matrix(element_matrices=self.Ke)
+
+
+def graph_term_loads(terms, x, y, slope, H, EA):
+    """The cable terms' downward load per horizontal length ``q = −f_y m`` and its derivatives
+    by y', H and y (`skcable.cable.terms`): ``m = ds/dx`` the unstretched length per horizontal
+    length, ``a = (1, y')/m``, ``T = H sqrt(1 + y'^2)``; a horizontal force is refused."""
+    m, dm_ds, dm_dH = unstretched_measure(slope, H, EA)
+    c = np.sqrt(1.0 + slope * slope)
+    a = np.array([np.ones_like(slope), slope]) / m
+    state = CableState(x, y, None, a, H * c)
+    da_ds = np.array([np.zeros_like(slope), np.ones_like(slope)]) / m - a * (dm_ds / m)
+    da_dH = -a * (dm_dH / m)
+    q, dq_ds, dq_dH, dq_dy = (np.zeros_like(slope) for _ in range(4))
+    for term in terms:
+        out = term.forces(state)
+        f = np.asarray(out.f, dtype=float)
+        if f.shape != (2, *slope.shape) or not np.all(np.isfinite(f)):
+            raise InputError("load", f"{term!r} returned forces of shape {f.shape} or non-finite ones")
+        if np.any(f[0] != 0.0):
+            raise InputError("load", f"{term!r} has a horizontal component: give formulation='arc'")
+        fy = f[1]
+        dfy_ds = np.zeros_like(slope) if out.df_da is None else np.sum(out.df_da[1] * da_ds, axis=0)
+        dfy_dH = np.zeros_like(slope) if out.df_da is None else np.sum(out.df_da[1] * da_dH, axis=0)
+        if out.df_dT is not None:  # T = H c: ∂T/∂y' = H y'/c, ∂T/∂H = c
+            dfy_ds = dfy_ds + out.df_dT[1] * H * slope / c
+            dfy_dH = dfy_dH + out.df_dT[1] * c
+        q = q - fy * m
+        dq_ds = dq_ds - (dfy_ds * m + fy * dm_ds)
+        dq_dH = dq_dH - (dfy_dH * m + fy * dm_dH)
+        if out.df_dr is not None:
+            dq_dy = dq_dy - out.df_dr[1, 1] * m
+    return q, dq_ds, dq_dH, dq_dy
 
 
 def _mesh_nodes(mesh, n_elements, span, at):
@@ -92,9 +125,14 @@ class GraphProblem:
 
     def __init__(self, span, dh, loads, EA, constraint, mesh, n_elements, degree):
         self.span, self.dh, self.EA, self.constraint = span, dh, EA, constraint
+        self.loads, self.degree = list(loads), degree
         self.chord_slope = dh / span  # the unknown is u = y - chord_slope * x, zero at both supports
         self.point_loads = [ld for ld in loads if isinstance(ld, PointLoad)]
-        self.distributed = [ld for ld in loads if not isinstance(ld, PointLoad)]
+        self.terms = [ld for ld in loads if isinstance(ld, CableTerm)]
+        for term in self.terms:
+            if term.uses_s:
+                raise InputError("load", f"{term!r} reads the arc length s: give formulation='arc'")
+        self.distributed = [ld for ld in loads if not isinstance(ld, (PointLoad, CableTerm))]
         for ld in self.distributed:
             if not hasattr(ld, "graph_terms"):
                 raise InputError("load", f"{ld!r} has no graph_terms(x, slope, H, EA) method")
@@ -107,7 +145,7 @@ class GraphProblem:
         basis = self.basis = Basis(self.mesh, element, intorder=2 * element.maxdeg + 2)
         N = basis.N
         # strains: y' (order 1) and y (order 0); basis values and element products once
-        self.assembly = LineAssembly({"u": basis}, [("u", 1), ("u", 0)])
+        self.assembly = Assembly({"u": basis}, [("u", 1), ("u", 0)])
         self.x_quad = self.assembly.x  # (nq, ne), as every quadrature array here
         self._stiffness = self.assembly.block(0, 0)  # ∫ φ_i' φ_j' dx
         self.end_a, self.end_b, self.interior = end_dofs(basis)
@@ -118,14 +156,19 @@ class GraphProblem:
         self.point_vector = np.bincount(self.point_dofs, weights=self.point_values, minlength=N)
 
     # --- pieces ----------------------------------------------------------
-    def load_terms(self, slope, H):
-        """``q, dq/dy', dq/dH`` summed over the distributed loads at the quadrature points."""
+    def load_terms(self, slope, H, y=None):
+        """``q, dq/dy', dq/dH, dq/dy`` summed over the loads at the quadrature points (``dq/dy``
+        None without cable terms; ``y`` the height there, needed by them)."""
         q = np.zeros_like(slope)
         dq_ds, dq_dh = np.zeros_like(slope), np.zeros_like(slope)
         for load in self.distributed:
             a, b, c = load.graph_terms(self.x_quad, slope, H, self.EA)
             q, dq_ds, dq_dh = q + a, dq_ds + b, dq_dh + c
-        return q, dq_ds, dq_dh
+        if not self.terms:
+            return q, dq_ds, dq_dh, None
+        y = self.chord_slope * self.x_quad if y is None else y
+        a, b, c, d = graph_term_loads(self.terms, self.x_quad, y, slope, H, self.EA)
+        return q + a, dq_ds + b, dq_dh + c, d
 
     def strains(self, dofs):
         """``(u', u)`` at the quadrature points: (2, nq, ne)."""
@@ -162,9 +205,11 @@ class GraphProblem:
         asmb = self.assembly
         du, u = asmb.interpolate(dofs)
         slope = self.chord_slope + du
-        q, dq_ds, dq_dh = self.load_terms(slope, H)
+        q, dq_ds, dq_dh, dq_dy = self.load_terms(slope, H, self.chord_slope * self.x_quad + u)
         R = asmb.gather(asmb.local(0, H * slope) + asmb.local(1, q)) + self.point_vector
         Ke = H * self._stiffness + asmb.block(1, 0, dq_ds)
+        if dq_dy is not None:  # cable terms that depend on the height
+            Ke = Ke + asmb.block(1, 1, dq_dy)
         dR_dH = asmb.gather(asmb.local(0, slope) + asmb.local(1, dq_dh))
         name, value = self.constraint
         if name == "H":
@@ -196,6 +241,38 @@ class GraphProblem:
         descent = float(np.sqrt(np.sum(force * force) + constraint * constraint))
         return GraphState(R, Ke, dR_dH, float(g), dg_dy, float(dg_dH), merit, descent, asmb)
 
+    # --- one term alone (skcable.fe.check_tangent) ---------------------------------------------
+    def term_contribution(self, term, U, state=None):
+        """``(R, K)`` of the cable term ``term`` alone at ``U = [dofs, H]`` (the Newton vector):
+        its residual ``∫ q v`` over the dofs and its tangent by them, H held."""
+        from skcable.fe.check import sparse_of
+
+        dofs, H = U[:-1], float(U[-1])
+        asmb = self.assembly
+        du, u = asmb.interpolate(dofs)
+        slope = self.chord_slope + du
+        q, dq_ds, _, dq_dy = graph_term_loads(
+            [term], self.x_quad, self.chord_slope * self.x_quad + u, slope, H, self.EA
+        )
+        K = asmb.matrix(asmb.block(1, 0, dq_ds) + asmb.block(1, 1, dq_dy))
+        return np.append(asmb.gather(asmb.local(1, q)), 0.0), sparse_of(K, len(U))
+
+    def free_dofs(self):
+        """The dofs a solve moves, H left out (for `skcable.fe.check_tangent`)."""
+        return self.interior
+
+    def tangent_check_state(self):
+        """The start of a solve, ``[dofs, H]`` (for `skcable.fe.check_tangent`)."""
+        dofs, H = initial_guess(self)
+        return np.append(dofs, H)
+
+    def absolute(self, state, rtol) -> float:
+        """The largest interior force residual (N) where the constraint meets ``rtol`` (``atol``'s
+        measure), else inf."""
+        if not abs(state.g) / self.constraint_scale < rtol:
+            return np.inf
+        return float(np.max(np.abs(state.R[self.interior]), initial=0.0))
+
     def increment(self, state: GraphState) -> np.ndarray:
         """Newton increment of (dofs, H): the bordered banded solve."""
         system, interior = self.solver.system, self.interior
@@ -220,7 +297,7 @@ class GraphProblem:
     def load_scale(self):
         """Total vertical load on the straight chord (N): scale of the residual."""
         slope = np.full_like(self.x_quad, self.dh / self.span)
-        q, _, _ = self.load_terms(slope, 0.0)
+        q = self.load_terms(slope, 0.0)[0]
         return float(np.sum(np.abs(q) * self.assembly.dx) + np.sum(np.abs(self.point_values))) or 1.0
 
     @cached_property
@@ -293,6 +370,85 @@ class BVPSolution(FiniteElementSolution):
         super().__init__(problem, dofs, history, problem.assemble(dofs, H) if state is None else state)
         self.H = float(H)
 
+    @property
+    def H_A(self):
+        """The horizontal tension (N), the same at both ends (the graph form takes vertical loads)."""
+        return self.H
+
+    @property
+    def H_B(self):
+        return self.H
+
+    @cached_property
+    def _arc_length(self):
+        """Unstretched arc length at the mesh nodes (m), and the quadrature of each element."""
+        problem = self._problem
+        slope = problem.chord_slope + problem.strains(self.dofs)[0]
+        f = unstretched_measure(slope, self.H, self.EA)[0]
+        per_element = np.sum(f * problem.assembly.dx, axis=0)
+        nodes = self.mesh.p[0]
+        order = np.argsort(nodes)
+        s = np.zeros(len(nodes))
+        s[order[1:]] = np.cumsum(per_element[np.argsort(self.mesh.p[0, self.mesh.t].mean(axis=0))])
+        return nodes[order], s[order]
+
+    def _x_of_s(self, s):
+        """The abscissa (m) at unstretched arc length ``s`` (m): a root of ``s(x) − s`` in the
+        element that holds it (scipy's bracketed elementwise root finder on the element's own
+        quadrature of the measure)."""
+        from scipy.optimize import elementwise
+
+        s = np.asarray(real("s", s), dtype=float)
+        x_nodes, s_nodes = self._arc_length
+        require(
+            "s",
+            (s >= 0) & (s <= s_nodes[-1] * (1 + 1e-15)),
+            f"must lie in [0, length = {s_nodes[-1]:g}] m",
+            s,
+        )
+        s = np.minimum(s, s_nodes[-1])
+        k = np.clip(np.searchsorted(s_nodes, s) - 1, 0, len(x_nodes) - 2)
+        a, b, s_a = x_nodes[k], x_nodes[k + 1], s_nodes[k]
+        points, weights = np.polynomial.legendre.leggauss(8)
+
+        def gap(x, a, s_a, s):  # s(x) − s, s(x) inside the element [a, x] by Gauss–Legendre
+            half = 0.5 * (x - a)
+            xq = a[..., None] + half[..., None] * (points + 1.0)
+            f = unstretched_measure(self.slope(xq), self.H, self.EA)[0]
+            return s_a + half * np.sum(f * weights, axis=-1) - s
+
+        root = elementwise.find_root(gap, (a, b), args=(a, s_a, s))
+        return np.where(s >= s_nodes[-1], x_nodes[-1], np.asarray(root.x))
+
+    def xy(self, s):
+        """Position (x, y) (m) at unstretched arc length ``s`` (m) from A: array ``(..., 2)``."""
+        x = self._x_of_s(s)
+        return np.stack([x, np.asarray(self.y(x))], axis=-1)
+
+    def T_of_s(self, s):
+        """Tension (N) at unstretched arc length ``s`` (m) from A."""
+        return self.T(self._x_of_s(s))
+
+    def stiffness(self, step: float = 1e-5):
+        """Fairlead stiffness ``∂(H_B, V_B)/∂(span, dh)`` (N/m), A fixed and the unstretched length
+        kept, by central differences of the same discrete problem re-solved from this solution at
+        ``span ± step·span`` and ``dh ± step·span`` (to rtol 1e-13), rows (H_B, V_B)."""
+        columns = []
+        for d_span, d_dh in ((1.0, 0.0), (0.0, 1.0)):
+            h = step * self.span
+            plus, minus = (
+                self._resolved(self.span + sign * h * d_span, self.dh + sign * h * d_dh) for sign in (1, -1)
+            )
+            columns.append([(plus.H - minus.H) / (2 * h), (plus.V_B - minus.V_B) / (2 * h)])
+        return np.array(columns).T
+
+    def _resolved(self, span, dh):
+        """This problem at B = (span, dh) with the unstretched length kept (nodes scaled with the
+        span, started from this solution)."""
+        from skcable.cable.bvp.solve import resolve
+
+        return resolve(self, span, dh)
+
     @cached_property
     def V_A(self):
         return float(self._state.R[self._problem.end_a])
@@ -344,6 +500,8 @@ class BVPSolution(FiniteElementSolution):
     def weight_per_length(self, x, slope):
         problem = self._problem
         q = sum(ld.graph_terms(x, slope, self.H, self.EA)[0] for ld in problem.distributed)
+        if problem.terms:
+            q = q + graph_term_loads(problem.terms, x, self.y(x), slope, self.H, self.EA)[0]
         return q / unstretched_measure(slope, self.H, self.EA)[0]
 
     def _residuals(self):
@@ -355,6 +513,6 @@ class BVPSolution(FiniteElementSolution):
     def __repr__(self):
         return (
             f"BVPSolution(span={self.span:g}, dh={self.dh:g}, {self.mesh.t.shape[1]} elements: "
-            f"H={self.H:.9g}, V_A={self.V_A:.9g}, V_B={self.V_B:.9g}, length={self.length:.9g}, "
-            f"iterations={self.iterations})"
+            f"H={self.H:.9g} (both ends), V_A={self.V_A:.9g}, V_B={self.V_B:.9g}, "
+            f"length={self.length:.9g}, iterations={self.iterations})"
         )

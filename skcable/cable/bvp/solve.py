@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from skcable._checks import exactly_one, positive, real, require
+from skcable._checks import exactly_one, nonnegative, positive, real, require, scalar, whole
 from skcable.cable._loads import SelfWeight
 from skcable.cable.bvp.arc import ArcProblem, ArcSolution, arc_guess
 from skcable.cable.bvp.graph import BVPSolution, GraphProblem, initial_guess
@@ -21,8 +21,11 @@ def _choose_formulation(formulation, loads):
         raise InputError("formulation", f"must be 'auto', 'graph' or 'arc', got {formulation!r}")
     if formulation != "auto":
         return formulation
+    from skcable.cable.terms import CableTerm
+
     horizontal = any(getattr(ld, "qx", None) is not None for ld in loads)
-    return "arc" if horizontal else "graph"
+    terms = [ld for ld in loads if isinstance(ld, CableTerm)]
+    return "arc" if horizontal or any(not t.vertical or t.uses_s for t in terms) else "graph"
 
 
 #: Newton stops, raising, when the merit has not halved in this many iterations: a damped
@@ -30,7 +33,7 @@ def _choose_formulation(formulation, loads):
 STAGNATION_WINDOW = 8
 
 
-def _newton(problem, dofs, value, *, rtol, max_iter, merit, name):
+def _newton(problem, dofs, value, *, rtol, max_iter, merit, name, atol=0.0, line_search=True, callback=None):
     """`skcable.fe.newton` on ``x = [dofs, value]`` (value: H or L0, kept > 0)."""
     size = len(dofs)
     visited = []  # merit of every state an increment was taken from: the history so far
@@ -51,6 +54,10 @@ def _newton(problem, dofs, value, *, rtol, max_iter, merit, name):
             admissible=lambda x: x[size] > 0,
             stagnation_window=STAGNATION_WINDOW,
             name=name,
+            atol=atol,
+            absolute=lambda state: problem.absolute(state, rtol),
+            line_search=line_search,
+            callback=callback,
         )
     except ConvergenceError as exc:
         if exc.history:
@@ -94,17 +101,21 @@ def solve_bvp(
     formulation: str = "auto",
     seabed=None,
     friction: float = 0.0,
+    atol: float = 0.0,
+    line_search=True,
+    callback=None,
+    end_force=None,
 ):
-    """Suspended cable under any vertical loads, solved by finite elements.
+    """Suspended cable under any loads, solved by finite elements.
 
     Parameters
     ----------
     span, dh : float
         B = (span, dh) relative to A = (0, 0) (m).
     load : load or list of loads
-        `SelfWeight`, `DeckLoad`, `DistributedLoad`,
-        `PointLoad`, or any object with ``graph_terms``. Point loads at
-        the same x add up.
+        `SelfWeight`, `DeckLoad`, `DistributedLoad`, `PointLoad`, a cable term
+        (`skcable.cable.terms`: `Buoyancy`, `WindDrag`, `CurrentDrag` or an analyst's own
+        `CableTerm`), or any object with ``graph_terms``. Point loads at the same x add up.
     length, sag, H, low, T_max : float
         Exactly one constraint, as in `catenary`; with
         ``EA``, ``length`` is the unstretched length. ``T_max`` is the larger
@@ -122,8 +133,21 @@ def solve_bvp(
         solution's `residual` is below ``rtol`` plus round-off (1e-9).
     max_iter : int
         Newton iterations at most; Newton also stops, raising, when the
-        residual stagnates (less than halved in 4 iterations) or no step
+        residual stagnates (less than halved in 8 iterations) or no step
         length along the Newton direction reduces it.
+    atol : float
+        Also converged when every force residual is below ``atol`` (N) and the constraint
+        and stretch rows meet ``rtol``; 0 for none.
+    line_search : bool or {"residual", "none"}
+        Backtracking on the residual norm (default), or full Newton steps.
+    callback : callable, optional
+        ``callback(iteration, residual_norm, step_norm)`` after every Newton step; an
+        exception it raises stops the solve as an `InputError` naming it.
+    end_force : (float, float), optional
+        A force (N, y up) on a free end B instead of B's position: ``(span, dh)`` is then
+        B's starting position only, the constraint must be ``length`` and the arc form is
+        used; the solution's ``span``, ``dh`` are where B came to rest, ``H_B``, ``V_B`` the
+        force.
     formulation : {"auto", "graph", "arc"}
         ``"graph"``: y(x) with H a global unknown (any degree, point loads);
         ``"arc"``: position and tension along the unstretched arc length
@@ -161,12 +185,17 @@ def solve_bvp(
     value = real(name, value) if name == "low" else positive(name, value)
     if name == "low":
         require("low", value < min(0.0, dh), "must lie below both supports, low < min(0, dh)", value)
-    rtol = positive("rtol", rtol)
-    max_iter = positive("max_iter", max_iter)
-    require("max_iter", max_iter == int(max_iter), "must be a whole number", max_iter)
+    rtol = float(positive("rtol", scalar("rtol", rtol)))
+    max_iter = whole("max_iter", max_iter, 1)
+    whole("n_elements", n_elements, 1)
+    settings = dict(atol=float(nonnegative("atol", scalar("atol", atol))), callback=_callback(callback))
+    settings["line_search"] = _line_search(line_search)
+    if end_force is not None:
+        end_force = _end_force(end_force, name, formulation)
+        formulation = "arc"
     formulation = _choose_formulation(formulation, loads)
     if formulation == "arc":
-        problem = ArcProblem(span, dh, loads, EA, (name, value), n_elements, degree)
+        problem = ArcProblem(span, dh, loads, EA, (name, value), n_elements, degree, end_force=end_force)
         z, L0 = arc_guess(problem)
         if problem.fixed_length:
             L0 = float(value)
@@ -178,6 +207,7 @@ def solve_bvp(
             max_iter=int(max_iter),
             merit=lambda state: state.merit,
             name="solve_bvp(formulation='arc')",
+            **settings,
         )
         size = len(z)
         solution = ArcSolution(problem, result.x[:size], result.x[size], result.history, result.state)
@@ -192,10 +222,60 @@ def solve_bvp(
         max_iter=int(max_iter),
         merit=lambda state: state.descent,
         name="solve_bvp",
+        **settings,
     )
     size = len(dofs)
     solution = BVPSolution(problem, result.x[:size], result.x[size], result.history, result.state)
     return _checked(solution, rtol)
+
+
+def resolve(solution, span, dh):
+    """``solution``'s graph-form problem solved again with B at ``(span, dh)`` and the same
+    unstretched length (nodes scaled with the span), to rtol 1e-13: the re-solves of
+    `BVPSolution.stiffness`."""
+    problem = solution.problem
+    nodes = np.sort(problem.mesh.p[0]) * (span / problem.span)
+    nodes[-1] = span
+    return solve_bvp(
+        span,
+        dh,
+        problem.loads,
+        length=solution.length,
+        EA=problem.EA,
+        mesh=nodes,
+        degree=problem.degree,
+        rtol=1e-13,
+        formulation="graph",
+    )
+
+
+def _line_search(value) -> bool:
+    if value in (True, "residual"):
+        return True
+    if value in (False, "none"):
+        return False
+    raise InputError(
+        "line_search", f"must be True/'residual' or False/'none' (a cable BVP has no energy), got {value!r}"
+    )
+
+
+def _callback(value):
+    if value is not None and not callable(value):
+        raise InputError("callback", f"must be callable(iteration, residual_norm, step_norm), got {value!r}")
+    return value
+
+
+def _end_force(value, constraint, formulation):
+    force = np.asarray(real("end_force", value), dtype=float)
+    if force.shape != (2,):
+        raise InputError("end_force", f"must be (Fx, Fy) in N, got {value!r}")
+    if constraint != "length":
+        raise InputError(
+            "end_force", "a free end is given with the cable's length: give length=, not " + constraint
+        )
+    if formulation == "graph":
+        raise InputError("formulation", "a free end loaded by a force is solved in the arc form")
+    return force
 
 
 def _on_seabed(span, dh, load, given):

@@ -50,6 +50,7 @@ from itertools import zip_longest
 
 import numpy as np
 
+from skcable import _plausible
 from skcable._checks import broadcast, float_range, nonnegative, positive, real, require, whole
 from skcable._xp import namespace, scalar_math
 from skcable.cable._elastic import ElasticCatenary, elastic_stiffness, inverse_2x2
@@ -855,6 +856,7 @@ def elastic_catenary(span, dh, w, EA, *, length, seabed=None, friction=0.0):
     seabed = real("seabed", seabed)
     friction = nonnegative("friction", friction)
     broadcast(span=span, dh=dh, w=w, EA=EA, length=L0, seabed=seabed, friction=friction)
+    _plausible.stiffness(EA, w, L0)
     require("seabed", np.asarray(seabed) <= 0, "must be at or below the anchor (A at height 0)", seabed)
     require("dh", np.asarray(dh) > seabed, "must put B above the seabed", dh)
     if all(isinstance(v, float) for v in (span, dh, w, EA, L0, seabed, friction)):

@@ -47,6 +47,7 @@ from functools import cached_property
 
 import numpy as np
 
+from skcable import _plausible
 from skcable._checks import nonnegative, positive, real, require, scalar, whole
 from skcable._xp import scalar_math
 from skcable.cable._roots import find_root
@@ -79,6 +80,7 @@ class Segment:
         self.length = scalar("length", positive("length", length))
         self.w = scalar("w", positive("w", w))
         self.EA = scalar("EA", positive("EA", EA))
+        _plausible.stiffness(self.EA, self.w, self.length)
 
     def __repr__(self):
         return f"Segment(length={self.length!r}, w={self.w!r}, EA={self.EA!r})"

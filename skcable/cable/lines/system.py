@@ -34,15 +34,18 @@ tension) makes :math:`K` unsymmetric where the line forces have a net moment.
 from __future__ import annotations
 
 import math
+from typing import TYPE_CHECKING
 
 import numpy as np
-import pandas as pd
 
 from skcable._checks import positive, real, scalar
 from skcable.cable.lines.body import PointBody, RigidBody
 from skcable.cable.lines.line3d import Line3D, line_3d, point, solve_in_space, takes_start
 from skcable.errors import ConvergenceError, InputError
 from skcable.fe import newton
+
+if TYPE_CHECKING:
+    import pandas as pd
 
 __all__ = ["MooringEquilibrium", "MooringSystem"]
 
@@ -357,6 +360,8 @@ class MooringEquilibrium:
     def tensions(self) -> pd.DataFrame:
         """Tension table: each line's per-segment table (its model's ``tensions()``) with
         the line's number in front, plus its fairlead and anchor forces (N)."""
+        import pandas as pd  # imported here: `import skcable.cable` stays light
+
         frames = []
         for i, line in enumerate(self.lines):
             table = line.tensions().copy()

@@ -1,45 +1,49 @@
-"""The strand finite element: slip laws, terms and the model (mesh + bases + terms)."""
+"""The strand finite element: the term protocol, slip laws, the built-in physics, ready terms
+(foundations, contact, loads anywhere), supports and the model (mesh + bases + supports + terms).
+"""
 
 from skcable.strand.fe.annex_e import AnnexE, annex_e_forces, annex_e_section
-from skcable.strand.fe.model import DAMAGE_LOADS, StrandModel, default_physics
+from skcable.strand.fe.foundations import ElasticFoundation, NodalSpring, RigidCylinder, TensionlessFoundation
+from skcable.strand.fe.loads import DistributedLoad, FollowerForce, PointForce, PointMoment
+from skcable.strand.fe.model import DAMAGE_LOADS, ELEMENTS, StrandModel, default_physics
 from skcable.strand.fe.slip import AxisSlip, ElementSlip, SlipLaw, Stick, slip_law
-from skcable.strand.fe.terms import (
-    FIELDS,
-    STRAINS,
-    DistributedLoad,
-    ElasticFoundation,
-    FieldTerm,
-    HelicalWires,
-    NodalSpring,
-    SectionTerm,
-    SinusoidalDamageLoads,
-    Step,
-    Term,
-    WireBending,
-)
+from skcable.strand.fe.supports import DOFS, END_CONDITIONS, StrandSupports
+from skcable.strand.fe.terms import FIELDS, STRAINS, FieldAssembly, FieldTerm, SectionTerm, Step, Term
+from skcable.strand.fe.wires import HelicalWires, SinusoidalDamageLoads, WireBending, critical_curvature_table
 
 __all__ = [
     "AnnexE",
-    "annex_e_forces",
-    "annex_e_section",
-    "DAMAGE_LOADS",
-    "FIELDS",
-    "STRAINS",
     "AxisSlip",
+    "DAMAGE_LOADS",
+    "DOFS",
     "DistributedLoad",
+    "ELEMENTS",
+    "END_CONDITIONS",
     "ElasticFoundation",
     "ElementSlip",
+    "FIELDS",
+    "FieldAssembly",
     "FieldTerm",
+    "FollowerForce",
     "HelicalWires",
     "NodalSpring",
+    "PointForce",
+    "PointMoment",
+    "RigidCylinder",
+    "STRAINS",
     "SectionTerm",
     "SinusoidalDamageLoads",
     "SlipLaw",
     "Step",
     "Stick",
     "StrandModel",
+    "StrandSupports",
+    "TensionlessFoundation",
     "Term",
     "WireBending",
+    "annex_e_forces",
+    "annex_e_section",
+    "critical_curvature_table",
     "default_physics",
     "slip_law",
 ]

@@ -374,6 +374,10 @@ class AnnexE(SectionTerm):
     kinematics of the same displacement field (for rupture, the elastic limit and slip maps).
     """
 
+    #: the annex's section law has no potential and its tangent is not symmetric
+    symmetric = False
+    potential = False
+
     def __init__(self, slip="none", mu: float = 0.5, *, turning: bool = True):
         from skcable.strand.fe.slip import slip_law
 
@@ -384,7 +388,7 @@ class AnnexE(SectionTerm):
         return f"AnnexE(slip={self.slip!r}, turning={self.turning})"
 
     def setup(self, model):
-        from skcable.strand.fe.terms import HelicalWires
+        from skcable.strand.fe.wires import HelicalWires
 
         super().setup(model)
         self._matrices = {

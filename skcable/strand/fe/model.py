@@ -1,49 +1,71 @@
-r"""The strand beam-cable finite element: a mesh, its scikit-fem bases and a list of terms.
+r"""The strand beam-cable finite element: a mesh, its scikit-fem bases, supports and a list of terms.
 
-The strand axis is x ∈ [0, L]; the fields are the displacements of the core
-centre line: axial u (P2), transverse v, w (``ElementLineHermite``: value and
-slope per node) and twist φ (P2), on bases that share one quadrature. The
-physics is a list of [terms][skcable.strand.Term]; by default the helical wire
-fibres with a slip law and the wires' own bending and torsion (and, for the
-thesis's reading of the damage, its sinusoidal loads). The strand is clamped
-at both ends and pulled at x = L: ``u(L) = ε L`` (Pino Vidal 2021, §4.1,
-"fixed – fixed sliding").
+The strand axis is x ∈ [0, L]; the fields are the displacements of the core centre line: axial
+u (P2, or P3 with ``element="P3"``), transverse v, w (``ElementLineHermite``: value and slope per
+node) and twist φ (as u), on bases that share one quadrature. The physics is a list of
+[terms][skcable.strand.Term]; by default the helical wire fibres with a slip law and the wires'
+own bending and torsion (and, for the thesis's reading of the damage, its sinusoidal loads). The
+ends are supports given as data (`skcable.strand.fe.supports`): clamped at both ends by default
+and pulled at x = L, ``u(L) = ε L`` (Pino Vidal 2021, §4.1, "fixed – fixed sliding"), or pinned,
+sliding, free, or any dof fixed at any value.
 
-Pipeline: strand → mesh and bases → terms → `skcable.fe.newton` per step
-→ [`StepResult`][skcable.strand.StepResult] → [`CapacityCurve`][skcable.strand.CapacityCurve]
-→ writers and plots.
+Pipeline: strand → mesh and bases → supports and terms → `skcable.fe.newton` (or
+`skcable.fe.minimize` when every term has a potential) per step →
+[`StepResult`][skcable.strand.StepResult] → [`CapacityCurve`][skcable.strand.CapacityCurve] →
+writers and plots.
 
-Source: S. Pino Vidal, "Rigidez a flexión en cables: análisis numérico",
-Universidad de Chile, 2021, chapter 4.
+**Convergence.** A solve has converged when, for every group of equations of one kind (the
+axial, transverse and torsional forces, and the bending moments on the slopes of v and w), the
+largest residual over the free dofs is below ``tol`` times that group's force scale: the
+largest force flowing through its equations, ``∫ Σ|S_a||B_a| dx`` of the section terms plus the
+magnitude of every other term's contribution (loads, springs, foundations), at free and fixed
+dofs alike (so the reactions count). A transverse load of a hundredth of a newton per metre is
+then converged as tightly as the axial pull beside it. No group is asked for less than the
+round-off of its sums, ``100 ε`` times the model's largest force scale (times the length, for
+moments): a group with (nearly) nothing acting on it, whose residual is round-off alone, cannot
+stall a solve. ``atol`` (N) adds an absolute criterion.
+
+Source: S. Pino Vidal, "Rigidez a flexión en cables: análisis numérico", Universidad de Chile,
+2021, chapter 4.
 """
 
 from __future__ import annotations
 
+import warnings
+
 import numpy as np
+import scipy.sparse as sp
 from skfem import Basis, ElementLineHermite, ElementLineP2, MeshLine
 
-from skcable._checks import nonnegative, positive
-from skcable.errors import ConvergenceError, InputError
-from skcable.fe import StrainAssembly, minimize, newton
+from skcable import _plausible
+from skcable._checks import nonnegative, positive, whole
+from skcable.errors import ConvergenceError, InputError, SlowConvergenceWarning
+from skcable.fe import Assembly, LinearSystem, NewtonOptions, minimize, newton
+from skcable.fe.elements import ElementLinePpExact
+from skcable.fe.newton import linear_tail
 from skcable.strand.capacity import StepResult, StrandLayout, capacity_curve
 from skcable.strand.fe.slip import SlipLaw, slip_law
-from skcable.strand.fe.terms import (
-    FIELDS,
-    STRAINS,
-    HelicalWires,
-    SectionTerm,
-    SinusoidalDamageLoads,
-    Step,
-    WireBending,
-    check_terms,
-)
+from skcable.strand.fe.supports import StrandSupports
+from skcable.strand.fe.terms import FIELDS, STRAINS, SectionTerm, Step, check_terms
+from skcable.strand.fe.wires import HelicalWires, SinusoidalDamageLoads, WireBending
 
-__all__ = ["StrandModel", "DAMAGE_LOADS", "default_physics"]
+__all__ = ["StrandModel", "DAMAGE_LOADS", "ELEMENTS", "default_physics"]
 
 #: how a broken wire loads the strand: the net section's helical eccentricity
 #: (mechanism (a)) or the thesis's reading, a prismatic section under the
 #: sinusoidal biaxial loads of Beltrán & De Vico (mechanism (b))
 DAMAGE_LOADS = ("eccentricity", "sinusoidal")
+#: the elements of u and φ (v and w are always cubic Hermite), with their quadrature order
+ELEMENTS = {"P2": 6, "P3": 8}
+#: the round-off floor of a residual entry, relative to the model's largest force scale: the sums
+#: over wires, points and elements that form it lose about this much (observed: 0.3 eps on an
+#: intact strand's transverse equations, whose exact residual is zero)
+ROUND_OFF = 100 * np.finfo(float).eps
+#: a term whose tangent errs by more than this (`skcable.fe.check_tangent`) is named when Newton
+#: converges linearly
+TANGENT_ERROR = 1e-6
+#: the merits a semismooth step is measured against (`skcable.fe.newton` ``nonmonotone``)
+NONMONOTONE = 10
 
 
 def default_physics(slip="none", mu: float = 0.5, damage_load: str = "eccentricity") -> list:
@@ -54,6 +76,15 @@ def default_physics(slip="none", mu: float = 0.5, damage_load: str = "eccentrici
     sinusoidal = damage_load == "sinusoidal"
     terms = [HelicalWires(slip, mu, helical=not sinusoidal), WireBending()]
     return terms + [SinusoidalDamageLoads()] if sinusoidal else terms
+
+
+def _bases(mesh: MeshLine, element: str) -> dict:
+    if element not in ELEMENTS:
+        raise InputError("element", f"must be one of {tuple(ELEMENTS)}, got {element!r}")
+    axial = ElementLineP2() if element == "P2" else ElementLinePpExact(3)
+    ub = Basis(mesh, axial, intorder=ELEMENTS[element])
+    vb = ub.with_element(ElementLineHermite())
+    return {"u": ub, "v": vb, "w": vb, "phi": ub}
 
 
 class StrandModel:
@@ -70,7 +101,7 @@ class StrandModel:
     mesh : MeshLine or array, optional
         Node abscissae from 0 to length (overrides ``n_elements``).
     grading : float in [0, 1)
-        Mesh grading toward both clamps (boundary layer ~ sqrt(EI/N)):
+        Mesh grading toward both ends (boundary layer ~ sqrt(EI/N)):
         ``x = L (s - g sin(2 pi s) / (2 pi))``, 0 uniform.
     slip : {"none", "axis", "element"} or SlipLaw
         Stick, Cardou's law per quadrature point and principal axis, the thesis's
@@ -85,13 +116,22 @@ class StrandModel:
         Vico 2015): a prismatic section under the biaxial sinusoidal loads of the
         broken wires ([`SinusoidalDamageLoads`][skcable.strand.SinusoidalDamageLoads]).
     terms : sequence of Term
-        Terms added to the built-in physics (foundations, loads, springs, an
+        Terms added to the built-in physics (foundations, loads, springs, contact, an
         analyst's own).
     physics : sequence of Term, optional
         Replaces the built-in physics (``slip``, ``mu`` and ``damage_load`` are then unused).
+    supports : pair of end conditions, optional
+        ``(left, right)``, each ``"clamped"``, ``"pinned"``, ``"sliding"``, ``"free"`` or a
+        dict ``{dof: value}`` over ``"u"``, ``"v"``, ``"w"``, ``"phi"``, ``"v'"``, ``"w'"``
+        (m, rad): `skcable.strand.fe.supports`. Default: both clamped. The imposed strain
+        always prescribes ``u(L) = ε L``.
     twist : {"clamped", "free"}
-        The twist at the pulled end x = L: clamped (the thesis's "fixed – fixed sliding",
-        default) or free to turn.
+        Shortcut: ``"free"`` frees the twist at x = L (of the default or the given supports).
+    element : {"P2", "P3"}
+        The element of u and φ (v and w are cubic Hermite).
+    options : NewtonOptions, optional
+        Default Newton settings of `solve` and `capacity_curve` (tolerances, iterations, line
+        search, callback); each call may override them.
 
     Attributes
     ----------
@@ -99,10 +139,13 @@ class StrandModel:
         Every term of the model (unbound, as given): the physics, then ``terms``.
     bases : dict of str to skfem.Basis
         ``u``, ``v``, ``w``, ``phi``.
-    assembly : skcable.fe.StrainAssembly
+    assembly : skcable.fe.Assembly
         Basis values, weights and sparsity pattern, computed once.
     x : ndarray (n_elements, n_quad)
-        Quadrature points (m).
+        Quadrature points (m), scikit-fem's layout: what the terms see.
+    fixed, fixed_values : ndarray
+        The dofs the supports fix and their values (the imposed strain's dof excluded);
+        ``pull`` is that dof, ``free`` the rest.
     """
 
     def __init__(
@@ -119,14 +162,17 @@ class StrandModel:
         terms=(),
         physics=None,
         twist: str = "clamped",
+        supports=None,
+        element: str = "P2",
+        options: NewtonOptions | None = None,
     ):
         self.strand, self.length = strand, float(positive("length", length))
-        if twist not in ("clamped", "free"):
-            raise InputError("twist", f"must be 'clamped' or 'free', got {twist!r}")
-        self.twist = twist
+        self.supports = StrandSupports.of(supports, twist)
+        self.twist = "free" if "phi" not in self.supports.right else "clamped"
         if not 0 <= grading < 1:
             raise InputError("grading", f"must lie in [0, 1), got {grading!r}")
         nonnegative("mu", mu)
+        self.options = NewtonOptions.of(options)
         if physics is None:
             physics = default_physics(slip, mu, damage_load)
             self.damage_load = damage_load
@@ -137,30 +183,46 @@ class StrandModel:
         self.slip = laws[0] if laws else slip_law("none", mu)
         if self.slip.name != "none" and len(strand.layers) != 1:
             raise InputError("slip", "slip models need a single helical layer (1x7-type strands)")
+        self.element = element
         self.mesh = self._mesh(n_elements, mesh, grading)
-        ub = Basis(self.mesh, ElementLineP2(), intorder=6)
-        vb = ub.with_element(ElementLineHermite())
-        self.bases = {"u": ub, "v": vb, "w": vb, "phi": ub}
-        self.assembly = StrainAssembly(self.bases, STRAINS)
+        self.bases = _bases(self.mesh, element)
+        self.assembly = Assembly(self.bases, STRAINS)
         self.offsets = self.assembly.offsets
-        self.x = np.asarray(ub.global_coordinates())[0]  # (ne, nq)
+        self.x = np.asarray(self.bases["u"].global_coordinates())[0]  # (ne, nq)
+        self._dx = self.bases["u"].dx
         self._boundary()
         self.EA = strand.section().EA
         self._bound = [t.bind(self) for t in self.terms]
         # (position in the model's term list, bound term): the states and outputs follow that list
         self._section_terms = [(i, t) for i, t in enumerate(self._bound) if isinstance(t, SectionTerm)]
         self._other_terms = [(i, t) for i, t in enumerate(self._bound) if not isinstance(t, SectionTerm)]
-        self._band = self.assembly.banded(self.free)
-        self._dx = self.bases["u"].dx
-        self._metric = None  # the elastic tangent of the straight strand, band storage (on first use)
+        self._system = LinearSystem(self.assembly.banded(self.free))
+        self._groups = self._equation_groups()
+        self._group_index = self._index_groups()
+        self._metric = None  # the elastic tangent of the straight strand, in the solver's storage
         self.layout = self._layout()
+        self._init = dict(
+            strand=strand, length=length, mesh=self.mesh.p[0].copy(), physics=self.terms[: len(physics)],
+            terms=self.terms[len(physics) :], supports=self.supports.describe(), element=element,
+            options=options, grading=grading, mu=mu, damage_load=damage_load,
+        )  # fmt: skip
 
     def __repr__(self) -> str:
         s = self.strand
         return (
             f"StrandModel({s!r}, length={self.length:g} m, {self.mesh.t.shape[1]} elements, "
-            f"{self.assembly.N} dofs, slip={self.slip!r}, terms=[{', '.join(map(repr, self.terms))}])"
+            f"{self.assembly.N} dofs, slip={self.slip!r}, supports={self.supports.describe()}, "
+            f"terms=[{', '.join(map(repr, self.terms))}])"
         )
+
+    def __reduce__(self):
+        """Pickled as the data it was built from (the bases and tables are rebuilt)."""
+        a = self._init
+        kwargs = dict(
+            mesh=a["mesh"], grading=a["grading"], physics=a["physics"], terms=a["terms"],
+            supports=a["supports"], element=a["element"], options=a["options"],
+        )  # fmt: skip
+        return (_rebuild, (type(self), a["strand"], a["length"], kwargs))
 
     # --- set-up --------------------------------------------------------------
     def _mesh(self, n_elements, mesh, grading):
@@ -175,14 +237,11 @@ class StrandModel:
                 raise InputError("mesh", "has a repeated node")
         else:
             lay = float(np.min(self.strand.lay_lengths))
-            if n_elements is None:
-                n = max(64, int(np.ceil(16 * self.length / lay)))
-            elif isinstance(n_elements, (int, np.integer)) and not isinstance(n_elements, bool):
-                n = int(n_elements)
-            else:
-                raise InputError("n_elements", f"must be a whole number, got {n_elements!r}")
-            if n < 2:
-                raise InputError("n_elements", f"must be at least 2, got {n_elements!r}")
+            n = (
+                max(64, int(np.ceil(16 * self.length / lay)))
+                if n_elements is None
+                else whole("n_elements", n_elements, 2)
+            )
             s = np.linspace(0.0, 1.0, n + 1)
             nodes = self.length * (s - grading * np.sin(2 * np.pi * s) / (2 * np.pi))
         L = self.length
@@ -191,15 +250,47 @@ class StrandModel:
         )
 
     def _boundary(self):
-        fixed = []
+        offsets = {name: int(self.offsets[i]) for i, name in enumerate(FIELDS)}
+        fixed, values = self.supports.dofs(self.bases, offsets)
+        self.pull = int(offsets["u"] + self.bases["u"].get_dofs("right").nodal["u"][0])
+        if np.any(np.diff(fixed) == 0):
+            raise InputError("supports", "fix a dof twice (both ends on one node?)")
+        self.fixed, self.fixed_values = fixed, values
+        self.free = np.setdiff1d(np.arange(self.assembly.N), np.append(fixed, self.pull))
+        self._reaction_dofs = {
+            end: {dof: self.supports.index(end, dof, self.bases, offsets) for dof in given}
+            for end, given in (("left", self.supports.left), ("right", self.supports.right))
+        }
+
+    def _equation_groups(self):
+        """Dofs of equations of one kind: per field, the values, and the slopes of v and w.
+
+        Returns a list of ``(all dofs, free dofs, is_moment)``."""
+        free = np.zeros(self.assembly.N, dtype=bool)
+        free[self.free] = True
+        groups = []
         for i, name in enumerate(FIELDS):
-            basis, offset = self.bases[name], self.offsets[i]
-            left, right = basis.get_dofs("left").all(), basis.get_dofs("right").all()
-            fixed += [offset + left] + ([] if name == "phi" and self.twist == "free" else [offset + right])
-            if name == "u":
-                self.pull = int(offset + right[0])
-        self.fixed = np.unique(np.concatenate(fixed))
-        self.free = np.setdiff1d(np.arange(self.assembly.N), self.fixed)
+            basis, offset = self.bases[name], int(self.offsets[i])
+            kinds = [np.arange(basis.N)]
+            if isinstance(basis.elem, ElementLineHermite):
+                slopes = basis.nodal_dofs[1]
+                kinds = [np.setdiff1d(np.arange(basis.N), slopes), slopes]
+            for k, dofs in enumerate(kinds):
+                dofs = offset + dofs
+                groups.append((dofs, dofs[free[dofs]], name == "phi" or k == 1))
+        return groups
+
+    def _index_groups(self):
+        """The groups of `_equation_groups` as flat index arrays for ``np.maximum.reduceat``."""
+        groups = self._groups
+        self._has_free = np.array([free.size > 0 for _, free, _ in groups])
+        order = np.concatenate([dofs for dofs, _, _ in groups])
+        starts = np.cumsum([0] + [len(dofs) for dofs, _, _ in groups[:-1]])
+        with_free = [free for _, free, _ in groups if free.size]
+        free_order = np.concatenate(with_free)
+        free_starts = np.cumsum([0] + [len(f) for f in with_free[:-1]])
+        moment = np.array([is_moment for _, _, is_moment in groups])
+        return order, starts, free_order, free_starts, moment, np.where(moment, self.length, 1.0)
 
     def _layout(self) -> StrandLayout:
         w = self.strand.wires()
@@ -210,7 +301,7 @@ class StrandModel:
             nodes=self.mesh.p[0].copy(),
             elements=self.mesh.t.copy(),
             x=self.x,
-            dx=self.bases["u"].dx,
+            dx=self._dx,
             wire_psi=w.psi,
             wire_rate=np.where(helical, w.direction * 2 * np.pi / lay_length, 0.0),
             wire_radius=w.radius,
@@ -222,16 +313,20 @@ class StrandModel:
             eps_y1=min(m.eps_y1 for m in self.strand.materials),
             wire_eps_rupture=self.strand.wire_materials().take("eps_rupture"),
             wire_eps_y1=self.strand.wire_materials().take("eps_y1"),
+            element=self.element,
         )
 
     def twin(self, strand=None) -> StrandModel:
-        """The same model (mesh, terms, settings) for another strand, every damage term left out:
-        by default the intact strand, the reference of the damage index D_r."""
+        """The same model (mesh, supports, terms, element, options) for another strand, every
+        damage term left out: by default the intact strand, the reference of the damage index D_r."""
         from dataclasses import replace
 
         strand = replace(self.strand, broken=frozenset()) if strand is None else strand
         kept = [t for t in self.terms if not t.damage]
-        return type(self)(strand, self.length, mesh=self.mesh, physics=kept, twist=self.twist)
+        return type(self)(
+            strand, self.length, mesh=self.mesh, physics=kept, supports=self.supports.describe(),
+            element=self.element, options=self.options,
+        )  # fmt: skip
 
     # --- fields ----------------------------------------------------------------
     def split(self, U):
@@ -245,12 +340,30 @@ class StrandModel:
 
     def generalized_strains(self, U):
         """g = (u′, v′, v″, w′, w″, φ′) at the quadrature points: (6, ne, nq)."""
-        return self.assembly.interpolate(U)
+        return np.ascontiguousarray(self.assembly.interpolate(U).transpose(0, 2, 1))
+
+    def section_vector(self, S):
+        """``∫ Σ_a S_a B_a dx`` (N,) from section forces S (6, ne, nq)."""
+        return self.assembly.vector(S.transpose(0, 2, 1))
+
+    def section_matrices(self, D):
+        """Element matrices ``∫ Bᵀ D B dx`` (n_local, n_local, ne) from D (6, 6, ne, nq)."""
+        return self.assembly.element_matrices(D.transpose(0, 1, 3, 2))
 
     def uniform(self, strain):
-        """Dof vector of the uniform axial strain ``u = strain·x`` (the straight start)."""
+        """Dof vector of the uniform axial strain ``u = strain·x`` (the straight start), with the
+        supports' prescribed values."""
         U = np.zeros(self.assembly.N)
-        U[: self.bases["u"].N] = strain * self.bases["u"].doflocs[0]
+        u = self.bases["u"]
+        if isinstance(u.elem, ElementLineP2):
+            U[: u.N] = strain * u.doflocs[0]
+        else:  # hierarchical: a linear function lives on the vertex dofs alone
+            U[u.nodal_dofs[0]] = strain * self.mesh.p[0]
+        return self._prescribed(U, strain)
+
+    def _prescribed(self, U, strain):
+        U[self.fixed] = self.fixed_values
+        U[self.pull] = strain * self.length + self.supports.left["u"]
         return U
 
     def initial_state(self):
@@ -273,18 +386,30 @@ class StrandModel:
                 out += t.loads(strain)
         return out
 
+    def bound(self, term):
+        """This model's bound copy of ``term`` (one of `terms`), or ``term`` bound afresh."""
+        for given, bound in zip(self.terms, self._bound, strict=True):
+            if given is term or bound is term:
+                return bound
+        return term.bind(self)
+
     # --- assembly ----------------------------------------------------------------
     def _assemble(self, U, state, strain):
-        """Residual, element matrices of the section terms, other tangents, and the terms' outputs."""
+        """Residual, element matrices of the section terms, other tangents, the terms' outputs,
+        and the size of what each equation sums (for the force scales)."""
         state = self.initial_state() if state is None else state
-        g = self.assembly.interpolate(U)
+        g = self.generalized_strains(U)
         S = D = None
         outputs = [None] * len(self._bound)
         for i, t in self._section_terms:
             St, Dt, outputs[i] = t.section(g, Step(strain, self.x, state[i]))
             S, D = (St, Dt.copy()) if S is None else (S + St, D + Dt)
-        R = self.assembly.vector(S) if S is not None else np.zeros(self.assembly.N)
-        Ke = self.assembly.element_matrices(D) if D is not None else None
+        if S is not None:
+            R = self.section_vector(S)
+            size = self.assembly.magnitude(S.transpose(0, 2, 1))
+        else:
+            R, size = np.zeros(self.assembly.N), np.zeros(self.assembly.N)
+        Ke = self.section_matrices(D) if D is not None else None
         densities = [outputs[i].get("energy") for i, _ in self._section_terms]
         energy = None if any(e is None for e in densities) else float(np.sum(sum(densities) * self._dx))
         extra = []
@@ -292,113 +417,256 @@ class StrandModel:
             step = Step(strain, self.x, state[i])
             Rt, Kt, outputs[i] = t.contribute(U, step)
             if Rt is not None:
+                if np.shape(Rt) != (self.assembly.N,):
+                    raise InputError(
+                        "terms",
+                        f"{t!r} returned a residual of shape {np.shape(Rt)}, not ({self.assembly.N},)",
+                    )
                 R = R + Rt
+                size = size + np.abs(Rt)
             if Kt is not None:
+                if getattr(Kt, "shape", None) != (self.assembly.N, self.assembly.N):
+                    raise InputError(
+                        "terms",
+                        f"{t!r} returned a tangent of shape {getattr(Kt, 'shape', None)}, "
+                        f"not ({self.assembly.N}, {self.assembly.N})",
+                    )
                 extra.append(Kt)
             if energy is not None:
-                e = t.energy(U, step)
+                e = t.energy(U, step) if t.potential is not False else None
                 energy = None if e is None else energy + e
-        return dict(R=R, Ke=Ke, extra=extra, outputs=outputs, g=g, S=S, D=D, energy=energy)
+        return dict(R=R, Ke=Ke, extra=extra, outputs=outputs, g=g, S=S, D=D, energy=energy, size=size)
 
     def assemble(self, U, state=None):
         """``(R, K, outputs)``: residual (N,), tangent (CSR, N × N) and the terms' outputs at ``U``
         (the imposed strain is read from U at the pulled end; ``state`` as from a solve)."""
-        a = self._assemble(U, state, U[self.pull] / self.length)
-        K = self.assembly.matrix(element_matrices=a["Ke"]) if a["Ke"] is not None else 0
+        a = self._assemble(U, state, (U[self.pull] - self.supports.left["u"]) / self.length)
+        return a["R"], self._global_tangent(a), a["outputs"]
+
+    def _global_tangent(self, a):
+        K = self.assembly.matrix(a["Ke"]) if a["Ke"] is not None else 0
         for Kt in a["extra"]:
             K = K + Kt
-        return a["R"], K, a["outputs"]
+        return K
 
-    def _band_of(self, a) -> np.ndarray:
-        """The free–free tangent of an assembly in band storage (section terms and the others)."""
-        ab = self._band.band()
+    def term_contribution(self, term, U, state=None):
+        """``(R, K)`` of one term alone at ``U`` (for `skcable.fe.check_tangent`): its residual
+        (N,) and its tangent (CSR, N × N); ``state`` the term's state (default: its initial one)."""
+        bound = self.bound(term)
+        strain = (U[self.pull] - self.supports.left["u"]) / self.length
+        step = Step(strain, self.x, bound.initial_state(self) if state is None else state)
+        if isinstance(bound, SectionTerm):
+            S, D, _ = bound.section(self.generalized_strains(U), step)
+            return self.section_vector(S), self.assembly.matrix(self.section_matrices(D))
+        R, K, _ = bound.contribute(U, step)
+        N = self.assembly.N
+        return (np.zeros(N) if R is None else R), (sp.csr_matrix((N, N)) if K is None else sp.csr_matrix(K))
+
+    def free_dofs(self):
+        """The dofs a solve moves (for `skcable.fe.check_tangent`)."""
+        return self.free
+
+    def _band_of(self, a):
+        """The free–free tangent of an assembly in the solver's storage (section terms and the others)."""
+        if self._system.accept(a["extra"]):
+            self._metric = None  # rebuilt in the new storage
+        system = self._system
+        ab = system.band()
         if a["Ke"] is not None:
-            self._band.add_elements(ab, a["Ke"])
+            system.add_elements(ab, a["Ke"])
         for Kt in a["extra"]:
-            self._band.add_sparse(ab, Kt)
+            system.add_sparse(ab, Kt)
         return ab
 
     def _increment(self, a):
         dU = np.zeros(self.assembly.N)
-        dU[self.free] = self._band.solve(self._band_of(a), -a["R"][self.free])
+        dU[self.free] = self._system.solve(self._band_of(a), -a["R"][self.free])
+        return dU
+
+    def _increment_positive(self, a, mu):
+        """``-(K + mu K0)⁻¹ R`` by a Cholesky-like factorisation (raises LinAlgError when not positive
+        definite); K0 is the tangent of the straight, unstrained strand (positive definite), built on
+        first use."""
+        ab = self._band_of(a)
+        if mu != 0.0 and self._metric is None:
+            straight = self._prescribed(np.zeros(self.assembly.N), 0.0)
+            self._metric = self._band_of(self._assemble(straight, self.initial_state(), 0.0))
+        dU = np.zeros(self.assembly.N)
+        dU[self.free] = self._system.solve_positive(ab, -a["R"][self.free], self._metric, mu)
         return dU
 
     # --- solution ----------------------------------------------------------------
-    def _increment_positive(self, a, mu):
-        """``-(K + mu K0)⁻¹ R`` by banded Cholesky (raises LinAlgError when not positive definite);
-        K0 is the tangent of the straight, unstrained strand (positive definite), built on first use."""
-        if mu != 0.0 and self._metric is None:
-            self._metric = self._band_of(self._assemble(np.zeros(self.assembly.N), self.initial_state(), 0.0))
-        dU = np.zeros(self.assembly.N)
-        dU[self.free] = self._band.solve_positive(self._band_of(a), -a["R"][self.free], self._metric, mu)
-        return dU
+    def _norm(self, a, tol: float) -> float:
+        """The largest residual of each group of equations over its force scale, or over its
+        round-off floor divided by the tolerance where that is larger (module docstring)."""
+        order, starts, free_order, free_starts, moment, length = self._group_index
+        scales = np.maximum.reduceat(a["size"][order], starts)
+        forces = float(np.max(np.where(moment, 0.0, scales)))
+        floor = ROUND_OFF * forces / tol * length  # the moment groups' floor times the length
+        residual = np.maximum.reduceat(np.abs(a["R"][free_order]), free_starts)
+        worst = residual / np.maximum(np.maximum(scales[self._has_free], floor[self._has_free]), 1e-300)
+        return float(np.max(worst, initial=0.0)) if np.isfinite(forces) else float("nan")  # NaN stays NaN
 
-    def _newton(self, U, strain, state, tol, max_iter):
-        U = self.uniform(strain) if U is None else np.array(U, dtype=float)
-        U[self.fixed] = 0.0
-        U[self.pull] = strain * self.length
-        scale = max(self.EA * max(abs(strain), 1e-6), 1.0)
-        free = self.free
+    def _solver(self, first, options: NewtonOptions) -> str:
+        """'minimize', 'newton' or 'semismooth', from the terms' declarations and the options."""
+        smooth = all(t.smooth for t in self._bound)
+        potential = first["energy"] is not None and all(
+            t.symmetric and t.potential is not False for t in self._bound
+        )
+        search = options.line_search
+        if search == "energy" and not potential:
+            lacking = [repr(t) for t in self._bound if not t.symmetric or t.potential is False] or ["a term"]
+            raise InputError(
+                "line_search", f"'energy' needs every term to have a potential; {', '.join(lacking)} has none"
+            )
+        if not smooth:
+            return "semismooth"
+        return "minimize" if potential and search in ("auto", "energy") else "newton"
+
+    def _newton(self, U, strain, state, options: NewtonOptions):
+        U = self.uniform(strain) if U is None else self._prescribed(np.array(U, dtype=float), strain)
         name = f"StrandModel: Newton at strain {strain:.6g}"
-
-        def norm(a):
-            return float(np.max(np.abs(a["R"][free]))) / scale
 
         def assemble(x):
             return self._assemble(x, state, strain)
 
         first = assemble(U)
-        if first["energy"] is not None:  # every term has a potential: minimise it, shifted at folds
-            free_R = np.zeros(self.assembly.N)
+        kind = self._solver(first, options)
+        try:
+            return self._run(kind, assemble, U, first, options, name, strain, state)
+        except ConvergenceError as exc:
+            # a solve that crawled linearly to its iteration limit: name the terms whose tangent is off
+            h = exc.history
+            crawled = len(h) > 3 and linear_tail(np.divide(h[1:], h[:-1])) is not None
+            linear = kind != "semismooth" and exc.last is not None and crawled
+            suspects = self._suspects(exc.last, state) if linear else []
+            if not suspects:
+                raise
+            raise ConvergenceError(
+                f"{exc.args[0]}; tangents off by check_tangent: {', '.join(suspects)}", exc.history, exc.last
+            ) from None
 
-            def gradient(a):
-                free_R[free] = a["R"][free]
-                return free_R
+    def _run(self, kind, assemble, U, first, options, name, strain, state):
+        common = dict(
+            norm=lambda a: self._norm(a, options.tol), tol=options.tol, atol=options.atol,
+            name=name, state=first, callback=options.callback,
+            absolute=lambda a: float(np.max(np.abs(a["R"][self.free]), initial=0.0)),
+        )  # fmt: skip
+        if kind == "minimize":  # every term has a potential: minimise it, shifted at folds
+            result = self._minimize(assemble, U, options, common)
+        elif kind == "newton":
+            result = newton(
+                assemble, U, increment=self._increment, max_iter=options.max_iter, merit=self._merit,
+                line_search=options.line_search != "none", max_halvings=options.max_halvings,
+                stagnation_window=options.stagnation_window, **common,
+            )  # fmt: skip
+        else:
+            result = self._semismooth(assemble, U, first, options, common)
+        if kind != "semismooth":
+            self._warn_if_linear(result, options.tol, state, strain)
+        return result
 
-            return minimize(
-                assemble,
-                U,
-                norm=norm,
-                energy=lambda a: a["energy"],
-                gradient=gradient,
-                solve=self._increment_positive,
-                tol=tol,
-                max_iter=max(max_iter, 40),
-                name=name,
-                state=first,
-            )
-        return newton(
-            assemble,
-            U,
-            norm=norm,
-            merit=lambda a: float(np.sqrt(np.sum(a["R"][free] ** 2))) / scale,  # smooth, for the line search
-            increment=self._increment,
-            tol=tol,
-            max_iter=max_iter,
-            name=name,
-            state=first,
+    def _merit(self, a) -> float:
+        """The residual's 2-norm over the free dofs: the smooth line-search merit."""
+        return float(np.sqrt(np.sum(a["R"][self.free] ** 2)))
+
+    def _minimize(self, assemble, U, options, common, **settings):
+        free, free_R = self.free, np.zeros(self.assembly.N)
+
+        def gradient(a):
+            free_R[free] = a["R"][free]
+            return free_R
+
+        settings = {"max_iter": max(options.max_iter, 40), "mu_max": options.mu_max} | settings
+        return minimize(
+            assemble, U, energy=lambda a: a["energy"], gradient=gradient, solve=self._increment_positive,
+            **settings, **common,
+        )  # fmt: skip
+
+    def _semismooth(self, assemble, U, first, options, common):
+        """Newton for a model with non-smooth terms (contact, tensionless supports).
+
+        First a semismooth Newton: full steps on the generalized derivative, which identify the
+        active set while the residual rises and falls, under a non-monotone line search
+        (`NONMONOTONE`) and no stagnation rule before twice the iteration limit. Where that does
+        not converge and every term has a potential (a convex penalty, a bed), the energy is
+        minimised instead: Armijo's rule on the energy takes the fraction of a first step that
+        would push the strand deep into a bed (40 halvings), and the tangent's shift may grow to
+        1e6 times the elastic one. Both failing, the first failure is raised."""
+        try:
+            return newton(
+                assemble, U, increment=self._increment, max_iter=2 * options.max_iter, merit=self._merit,
+                line_search=options.line_search != "none", max_halvings=options.max_halvings,
+                stagnation_window=2 * options.max_iter, nonmonotone=NONMONOTONE, **common,
+            )  # fmt: skip
+        except ConvergenceError as failed:
+            potential = all(t.symmetric and t.potential is not False for t in self._bound)
+            if first["energy"] is None or not potential:
+                raise
+            try:
+                return self._minimize(
+                    assemble, U, options, common, halvings=40, mu_max=max(options.mu_max, 1e6),
+                    max_iter=max(4 * options.max_iter, 100),
+                )  # fmt: skip
+            except ConvergenceError:
+                raise failed from None
+
+    def _suspects(self, U, state) -> list[str]:
+        """The terms whose tangent `skcable.fe.check_tangent` finds off at ``U``, worst first."""
+        from skcable.fe.check import check_tangent
+
+        errors = []
+        for i, t in enumerate(self._bound):
+            try:
+                errors.append((check_tangent(t, self, U, state=state[i]), t))
+            except (ConvergenceError, InputError, np.linalg.LinAlgError):
+                continue
+        return [f"{t!r} ({e:.1e})" for e, t in sorted(errors, key=lambda p: -p[0]) if e > TANGENT_ERROR]
+
+    def _warn_if_linear(self, result, tol, state, strain):
+        ratios = result.linear_rate(tol)
+        if ratios is None:
+            return
+        suspects = self._suspects(result.x, state)
+        if not suspects:  # every tangent is right: a nearly singular tangent (a fold) converges linearly
+            return
+        warnings.warn(
+            f"StrandModel: Newton at strain {strain:.6g} converged linearly (ratios "
+            f"{', '.join(f'{q:.2f}' for q in ratios)}) where the tangent should give quadratic "
+            f"convergence; tangents off by check_tangent: {', '.join(suspects)}",
+            SlowConvergenceWarning,
+            stacklevel=4,
         )
 
-    def solve(self, strain: float, guess=None, state=None, *, passes: int = 6, tol=1e-9, max_iter=25):
+    def solve(
+        self, strain: float, guess=None, state=None, *, passes: int = 6, options=None, **newton_options
+    ):
         """Equilibrium at the imposed axial strain ``u(L) = strain·L``: a
         [`StepResult`][skcable.strand.StepResult].
 
-        ``guess``: starting dofs (default: the uniform strain). ``state``: the terms'
-        states (default: all stick). Each state is frozen within a Newton solve and
-        updated from the converged solution, the step re-solved until the states settle
-        (``passes`` at most); a state that cycles, or whose re-solve fails, is left as it
-        was and the step is reported as not ``settled``.
+        ``guess``: starting dofs (default: the uniform strain). ``state``: the terms' states
+        (default: all stick). Each state is frozen within a Newton solve and updated from the
+        converged solution, the step re-solved until the states settle (``passes`` at most); a
+        state that cycles, or whose re-solve fails, is left as it was and the step is reported
+        as not ``settled``. Newton options: ``options`` (a `NewtonOptions`, default the model's)
+        and any of its fields as keywords (``tol``, ``atol``, ``max_iter``, ``line_search``,
+        ``callback``, ...).
 
         Raises
         ------
         ConvergenceError
             Newton did not converge (history attached).
+        InputError
+            A bad option, or a callback that raised (the iteration is named).
         """
         strain = float(strain)
         if not np.isfinite(strain):
             raise InputError("strain", f"must be finite, got {strain!r}")
+        _plausible.strand_strain("strain", strain, [m.eps_rupture for m in self.strand.materials])
+        options = NewtonOptions.of(self.options if options is None else options, **newton_options)
+        whole("passes", passes, 0)
         state = self.initial_state() if state is None else tuple(state)
-        result = self._newton(guess, strain, state, tol, max_iter)
+        result = self._newton(guess, strain, state, options)
         settled, seen, assemblies, shifted = True, [state], result.assemblies, result.shifted
         for _ in range(passes):
             outputs = result.state["outputs"]
@@ -409,7 +677,7 @@ class StrandModel:
                 settled = False
                 break
             try:
-                retry = self._newton(result.x, strain, new, tol, max_iter)
+                retry = self._newton(result.x, strain, new, options)
             except ConvergenceError:
                 settled = False
                 break
@@ -462,11 +730,31 @@ class StrandModel:
             settled=settled,
             assemblies=assemblies,
             shifted=shifted,
+            outputs=self._outputs(a),
+            reactions=self._reactions(a["R"]),
         )
+
+    def _outputs(self, a) -> dict:
+        """The terms' named point and cell data (`skcable.fe.terms`), names made unique."""
+        out = {}
+        for t, o in zip(self._bound, a["outputs"], strict=True):
+            for kind in ("point_data", "cell_data"):
+                for name, value in ((o or {}).get(kind) or {}).items():
+                    key = name if name not in out else f"{type(t).__name__}.{name}"
+                    out[key] = (kind, np.asarray(value, dtype=float))
+        return out
+
+    def _reactions(self, R) -> dict:
+        """The support reactions: ``{"left": {dof: force}, "right": {...}}`` (N, N·m)."""
+        return {end: {dof: float(R[i]) for dof, i in at.items()} for end, at in self._reaction_dofs.items()}
 
     def capacity_curve(self, max_strain=None, n_steps=None, **kwargs):
         """Force–strain curve up to rupture (see [`capacity_curve`][skcable.strand.capacity_curve])."""
         return capacity_curve(self, max_strain, n_steps, **kwargs)
+
+
+def _rebuild(cls, strand, length, kwargs):
+    return cls(strand, length, **kwargs)
 
 
 def _same(a, b) -> bool:

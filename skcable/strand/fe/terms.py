@@ -1,71 +1,55 @@
-r"""Terms: the physics of a strand model, each contributing to the residual and the tangent.
+r"""The strand's term protocol: what a term of a strand model sees and gives.
 
-A [`StrandModel`][skcable.strand.StrandModel] is a mesh, its bases and a list
-of terms. Every term follows one protocol: `Term.bind` (per-model set-up,
-done once), optional state between Newton solves, and a contribution to the
-residual ``R(U)`` and the tangent ``K = ∂R/∂U``. There are two kinds:
+A [`StrandModel`][skcable.strand.StrandModel] is a mesh, its bases, its supports and a list of
+terms (`skcable.fe.terms`: each declares ``symmetric``, ``potential`` and ``smooth``, and may add
+named outputs to the results). There are two kinds:
 
-**Section terms** (`SectionTerm`) see the generalized strains at the
-quadrature points,
+**Section terms** (`SectionTerm`) see the generalized strains at the quadrature points,
 
 .. math:: g = (u',\ v',\ v'',\ w',\ w'',\ \varphi'),
 
-and return section forces :math:`S_a(g, x)` (the virtual-work conjugates of
-:math:`g_a`) and their tangent :math:`D_{ab} = \partial S_a/\partial g_b`,
-6 × 6 per point. The model sums them and assembles
-:math:`\int B^T S\,dx` and :math:`\int B^T D B\,dx` once for all of them
-(`skcable.fe.StrainAssembly`).
+and return section forces :math:`S_a(g, x)` (the virtual-work conjugates of :math:`g_a`) and
+their tangent :math:`D_{ab} = \partial S_a/\partial g_b`, 6 × 6 per point. The model sums them
+and assembles :math:`\int B^T S\,dx` and :math:`\int B^T D B\,dx` once for all of them
+(`skcable.fe.Assembly`). A section term has a potential when it returns its energy per length
+as ``output["energy"]``.
 
-**Field terms** (`FieldTerm`) are scikit-fem forms on the named fields
-``u``, ``v``, ``w``, ``phi``: a ``BilinearForm`` per (test, trial) pair for the
-tangent, a ``LinearForm`` per field for an external load, and, for a
-nonlinear term, a ``LinearForm`` per field for its residual (its forms then
-see the current fields as ``w["u"]``, ``w["v"]``, ``w["w"]``, ``w["phi"]``).
-A linear term is assembled once and reused.
+**Other terms** give their residual ``R`` (N,) and tangent ``K = ∂R/∂U`` (sparse N × N) from the
+dof vector (`Term.contribute`): `FieldTerm` does it with scikit-fem forms on the named fields
+``u``, ``v``, ``w``, ``phi`` — a ``BilinearForm`` per (test, trial) pair for the tangent, a
+``LinearForm`` per field for an external load, and, for a nonlinear term, a ``LinearForm`` per
+field for its residual (its forms then see the current fields as ``w["u"]``, ``w["v"]``,
+``w["w"]``, ``w["phi"]``). A linear term is assembled once and reused; it has a potential only
+if its tangent is symmetric.
 
-Built-in physics: `HelicalWires` (the wire fibres: material and
-geometric stiffness with a slip law), `WireBending` (the wires' own
-bending and torsion) and `SinusoidalDamageLoads` (the thesis's reading
-of the damage). Ready terms for analysts: `ElasticFoundation`,
-`DistributedLoad`, `NodalSpring`. A term flagged ``damage = True``
-is left out of the intact reference twin used for the damage index D_r.
+Arrays at the quadrature points have scikit-fem's layout ``(n_elements, n_quad)`` (``model.x``,
+``Step.x``). A term's output dict may hold ``"point_data"`` and ``"cell_data"``, dicts of named
+arrays (at the quadrature points ``(n_elements, n_quad)`` or the nodes ``(n_nodes,)``; per
+element ``(n_elements,)``): they reach ``StepResult.outputs`` and every VTK file of the step.
 
-Source: S. Pino Vidal, "Rigidez a flexión en cables: análisis numérico",
-Universidad de Chile, 2021, chapters 3–4 (eqs. 4.1–4.8).
+The built-in physics (`skcable.strand.fe.wires`): `HelicalWires`, `WireBending`,
+`SinusoidalDamageLoads`; ready terms for analysts: foundations and springs
+(`skcable.strand.fe.foundations`), loads anywhere (`skcable.strand.fe.loads`). A term flagged
+``damage = True`` is left out of the intact reference twin used for the damage index D_r.
+
+Source: S. Pino Vidal, "Rigidez a flexión en cables: análisis numérico", Universidad de Chile,
+2021, chapters 3–4 (eqs. 4.1–4.8).
 """
 
 from __future__ import annotations
 
-import copy
 from dataclasses import dataclass
-from functools import lru_cache
 
 import numpy as np
 import scipy.sparse as sp
-from scipy.interpolate import PchipInterpolator
-from skfem import BilinearForm, LinearForm, asm
+from skfem import asm
 
-from skcable._checks import nonnegative, positive, real
+from skcable._checks import real
 from skcable.errors import InputError
-from skcable.fe.assembly import contract
-from skcable.strand._bending import critical_curvature
-from skcable.strand.fe.slip import slip_law
+from skcable.fe import terms as fe_terms
+from skcable.fe.assembly import Assembly
 
-__all__ = [
-    "Step",
-    "Term",
-    "SectionTerm",
-    "FieldTerm",
-    "HelicalWires",
-    "WireBending",
-    "SinusoidalDamageLoads",
-    "ElasticFoundation",
-    "DistributedLoad",
-    "NodalSpring",
-    "STRAINS",
-    "FIELDS",
-    "critical_curvature_table",
-]
+__all__ = ["FIELDS", "STRAINS", "FieldAssembly", "FieldTerm", "SectionTerm", "Step", "Term", "check_terms"]
 
 FIELDS = ("u", "v", "w", "phi")
 #: generalized strains: (field, derivative order)
@@ -91,29 +75,12 @@ class Step:
     state: object = None
 
 
-class Term:
-    """Base of every term. Subclasses implement `setup` (per-model data) and either
-    `SectionTerm.section` or `contribute`."""
+class Term(fe_terms.Term):
+    """Base of every term of a strand model: `skcable.fe.terms.Term`'s declarations and state,
+    and either `SectionTerm.section` or `contribute`."""
 
     #: dropped from the intact reference twin (D_r) when True
     damage: bool = False
-
-    def bind(self, model) -> Term:
-        """A copy of this term set up for ``model`` (the term itself stays unbound)."""
-        bound = copy.copy(self)
-        bound.setup(model)
-        return bound
-
-    def setup(self, model) -> None:
-        """Per-model work done once: tables at the quadrature points, constant matrices."""
-
-    def initial_state(self, model):
-        """State at the start of a curve; None for a stateless term."""
-        return None
-
-    def next_state(self, output: dict, state):
-        """State implied by a converged solve (``output`` is what the term returned)."""
-        return state
 
     def contribute(self, U: np.ndarray, step: Step):
         """``(R, K, output)``: residual (N,) or None, tangent (N, N) sparse or None, and a dict."""
@@ -125,9 +92,6 @@ class Term:
         give theirs per unit length as ``output["energy"]`` of `section`."""
         return None
 
-    def __repr__(self) -> str:
-        return f"{type(self).__name__}()"
-
 
 class SectionTerm(Term):
     """A term given by section forces and their 6 × 6 tangent at the quadrature points."""
@@ -137,225 +101,56 @@ class SectionTerm(Term):
         raise NotImplementedError
 
     def setup(self, model) -> None:
-        self._assembly = model.assembly
+        self._model = model
 
     def contribute(self, U, step):
-        S, D, output = self.section(self._assembly.interpolate(U), step)
-        return self._assembly.vector(S), self._assembly.matrix(D), output
+        m = self._model
+        S, D, output = self.section(m.generalized_strains(U), step)
+        return m.section_vector(S), m.assembly.matrix(m.section_matrices(D)), output
 
 
-# --- built-in physics ------------------------------------------------------------------------
-
-
-@lru_cache(maxsize=32)
-def critical_curvature_table(strand, mu: float):
-    """κ_m of both principal axes on a strain grid, and its PCHIP interpolant (built once per
-    strand and friction, one vectorised call of Cardou's law): ``(grid, table (2, n), spline, slope)``."""
-    section = strand.section()
-    grid = np.linspace(0.0, 0.999 * min(m.eps_rupture for m in strand.materials), 201)
-    table = critical_curvature(section, mu, grid)
-    spline = PchipInterpolator(grid, table, axis=1)
-    return grid, table, spline, spline.derivative()
-
-
-class HelicalWires(SectionTerm):
-    r"""Every wire a fibre on its helix: material and geometric stiffness, with a slip law.
-
-    A wire's axial strain, with y up and z out of the v-plane (Pino Vidal 2021, eq. 4.5),
-
-    .. math:: \varepsilon_j = \cos^2\alpha_j\left(\varepsilon_a - y_j\kappa_v - z_j\kappa_w\right)
-              + R_j\sin\alpha_j\cos\alpha_j\,d_j\,\varphi', \qquad
-              \varepsilon_a = u' + \tfrac12(v'^2 + w'^2),
-
-    with the lever (y_j, z_j) split into the net section's centroid c(x) (the
-    eccentricity, which never slips) and the offset from it, whose curvature the
-    slip law saturates. Section forces :math:`S = \sum_j s_j b_j` with
-    :math:`s_j = A_j\sigma(\varepsilon_j)/\cos\alpha_j`, :math:`b_j = \partial\varepsilon_j/\partial g`,
-    and the consistent tangent
-
-    .. math:: D = \sum_j \frac{A_j E_t(\varepsilon_j)}{\cos\alpha_j} b_j b_j^T
-              + N\,(e_{v'}e_{v'}^T + e_{w'}e_{w'}^T),
-              \qquad N = \sum_j s_j\,\partial\varepsilon_j/\partial\varepsilon_a,
-
-    the material stiffness K_L and the geometric stiffness K_G (eq. 4.1). Every wire
-    has its own material's σ and E_t (`Layer.material`: a steel core under aluminium
-    layers), evaluated per material group; the centroid c(x) is modulus-weighted,
-    :math:`\sum E_j A_j\cos^3\alpha_j (y_j, z_j) / \sum E_j A_j\cos^3\alpha_j`.
+class FieldAssembly:
+    """`skcable.fe.Assembly` over some of a model's fields, mapped into the model's dof vector:
+    the fast way for a nonlinear term to integrate ``∫ Σ S_a B_a`` and ``∫ Bᵀ D B`` over the
+    strains it needs (a foundation on v, a contact on u and v), on the model's own bases. Arrays
+    at the quadrature points have the model's layout (n_elements, n_quad).
 
     Parameters
     ----------
-    slip : str or SlipLaw
-        ``"none"``, ``"axis"``, ``"element"`` or a [`SlipLaw`][skcable.strand.SlipLaw].
-    mu : float
-        Friction coefficient when ``slip`` is a name.
-    helical : bool
-        Fibres on their helices (the eccentricity of a damaged section turns with
-        the lay: mechanism (a)); False: at their positions at x = 0 (a prismatic
-        section, the thesis's reading, used with `SinusoidalDamageLoads`).
+    model : StrandModel
+        The model whose fields and dofs it maps.
+    strains : sequence of (str, int)
+        (field, derivative order 0, 1 or 2) over ``u``, ``v``, ``w``, ``phi``.
     """
 
-    def __init__(self, slip="none", mu: float = 0.5, *, helical: bool = True):
-        self.slip = slip_law(slip, mu)
-        self.helical = bool(helical)
-
-    def __repr__(self) -> str:
-        return f"HelicalWires(slip={self.slip!r}, helical={self.helical})"
-
-    def setup(self, model) -> None:
-        super().setup(model)
-        s = model.strand
-        w = s.wires()
-        self.material = s.material
-        self.materials = s.wire_materials()
-        self.alive = w.intact
-        cos, sin = np.cos(w.lay_angle), np.sin(w.lay_angle)
-        helical = w.layer > 0
-        lay_length = np.ones_like(w.radius)
-        lay_length[helical] = s.lay_lengths[w.layer[helical] - 1]
-        rate = np.where(helical, w.direction * 2 * np.pi / lay_length, 0.0)
-        x = model.x
-        fibre_rate = rate if self.helical else 0.0 * rate
-        psi = w.psi[:, None, None] + fibre_rate[:, None, None] * x[None]
-        self.wire_y = w.radius[:, None, None] * np.sin(psi)
-        self.wire_z = w.radius[:, None, None] * np.cos(psi)
-        rotation = fibre_rate[helical][0] * x if helical.any() else 0 * x
-        modular = self.materials.take("E_e") / s.material.E_e  # exactly 1.0 with one material
-        weight = np.where(self.alive, w.area * cos**3 * modular, 0.0)[:, None, None]  # axial stiffness / E
-        self.centroid_y = np.sum(weight * self.wire_y, axis=0) / np.sum(weight)
-        self.centroid_z = np.sum(weight * self.wire_z, axis=0) / np.sum(weight)
-        self.c2 = (cos**2)[:, None, None]
-        self.sc = (w.radius * sin * cos * w.direction)[:, None, None]
-        self.area_weight = np.where(self.alive, w.area / cos, 0.0)[:, None, None]
-        section = s.section()
-        levers = [np.array([-t[1], t[0]]) for t in section.principal_axes]
-        lever_angle = np.array([np.arctan2(n[0], n[1]) for n in levers])
-        angle = lever_angle[:, None, None] + rotation[None]
-        # unit lever directions (y, z) of principal axes 1, 2: (axis, yz, ne, nq)
-        self.levers = np.array([np.sin(angle), np.cos(angle)]).transpose(1, 0, 2, 3)
-        self.kappa_grid, _, self._spline, self._slope = critical_curvature_table(s, self.slip.mu)
-        self._curvature = self._slope.derivative()
-        # the lever offsets from the centroid, and the centroid, per wire: fixed per model
-        self._y = self.wire_y - self.centroid_y[None]
-        self._z = self.wire_z - self.centroid_z[None]
-        self._alive3 = self.alive[:, None, None]
-
-    def kappa_m(self, axial_strain):
-        """Critical curvatures (2, ...) and their derivative with respect to the axial strain.
-
-        A monotone C¹ interpolant (PCHIP) of the tabulated law: a piecewise-linear one
-        has a derivative that jumps at every grid point, and Newton stalls on a kink.
-        """
-        eps = np.clip(axial_strain, 0.0, self.kappa_grid[-1])
-        return self._spline(eps), self._slope(eps) * (axial_strain > 0)
-
-    def initial_state(self, model):
-        return self.slip.initial_state((2, *model.x.shape))
-
-    def next_state(self, output, state):
-        return self.slip.next_state(output["curvature"], output["kappa_m"], state)
-
-    def _curved_slip(self, D, s, g, axial, levers, k_principal, k_m, dk_m, d_km, state):
-        """Stress times the second derivatives of the wire strains through the slip law:
-        ``Σ_j s_j ∂²ε_j/∂g²`` beyond the membrane part, for a law curved in κ or κ_m (and κ_m″)."""
-        second = self.slip.second_derivatives(k_principal, k_m, state)
-        if second is None and not np.any(d_km):
-            return
-        d2k_m = self._curvature(np.clip(axial, 0.0, self.kappa_grid[-1])) * (axial > 0)
-        # M_k = Σ_j s_j ∂ε_j/∂κ_c,k: minus the composite moment about axis k
-        rho = contract("kcen,cjen->kjen", levers, np.array([self._y, self._z]))
-        M = -contract("jen,kjen->ken", s * self.c2, rho)
-        zero = np.zeros_like(axial)
-        E = np.array([np.ones_like(axial), g[1], zero, g[3], zero, zero])  # ∂ε_a/∂g
-        coef_ee = M * d_km * d2k_m
-        if second is not None:
-            f_kk, f_km, f_mm = second
-            A = np.zeros((2, 6, *axial.shape))  # ∂κ_k/∂g
-            A[:, 2], A[:, 4] = levers[:, 0], levers[:, 1]
-            coef_ee = coef_ee + M * f_mm * dk_m**2
-            D += contract("ken,kaen,kben->aben", M * f_kk, A, A)
-            cross = contract("ken,kaen,ben->aben", M * f_km * dk_m, A, E)
-            D += cross + cross.transpose(1, 0, 2, 3)
-        D += contract("en,aen,ben->aben", coef_ee.sum(axis=0), E, E)
-
-    def section(self, g, step):
-        axial = g[0] + 0.5 * (g[1] ** 2 + g[3] ** 2)
-        kappa = np.array([g[2], g[4]])  # (v'', w'') components along y, z
-        levers = self.levers
-        k_principal = contract("kcen,cen->ken", levers, kappa)
-        k_m, dk_m = self.kappa_m(axial)
-        state = step.state
-        clamped, d_clamp, d_km = self.slip.composite(k_principal, k_m, state)
-        d_eps = d_km * dk_m
-        kappa_c = contract("kcen,ken->cen", levers, clamped)  # bending about the centroid seen by the wires
-        P = contract("kcen,ken,kden->cden", levers, d_clamp, levers)  # dκc/dκ (2x2)
-        q = contract("kcen,ken->cen", levers, d_eps)  # dκc/dε_a
-        cy, cz = self.centroid_y[None], self.centroid_z[None]
-        y, z, c2, sc = self._y, self._z, self.c2, self.sc
-        eccentric = cy * kappa[0][None] + cz * kappa[1][None]
-        strain = (
-            c2 * (axial[None] - eccentric - y * kappa_c[0][None] - z * kappa_c[1][None]) + sc * g[5][None]
+    def __init__(self, model, strains):
+        strains = tuple(strains)
+        names = [f for f in FIELDS if any(f == name for name, _ in strains)]
+        unknown = [name for name, _ in strains if name not in FIELDS]
+        if unknown:
+            raise InputError("strains", f"unknown field {unknown[0]!r}; fields are {FIELDS}")
+        self.assembly = Assembly({f: model.bases[f] for f in names}, strains)
+        self.index = np.concatenate(
+            [np.arange(model.offsets[FIELDS.index(f)], model.offsets[FIELDS.index(f) + 1]) for f in names]
         )
-        stress, tangent = self.materials.stress_and_tangent(strain)
-        stress, tangent = stress * self._alive3, tangent * self._alive3
-        energy = np.sum(self.area_weight * self.materials.energy(strain), axis=0)
-        d_axial = c2 * (1.0 - y * q[0][None] - z * q[1][None])  # ∂ε_j/∂ε_a
-        b = np.array(
-            [
-                d_axial,
-                d_axial * g[1][None],
-                -c2 * (cy + y * P[0, 0][None] + z * P[1, 0][None]),
-                d_axial * g[3][None],
-                -c2 * (cz + y * P[0, 1][None] + z * P[1, 1][None]),
-                np.broadcast_to(sc, strain.shape),
-            ]
-        )  # (6, nw, ne, nq)
-        s = self.area_weight * stress
-        k = self.area_weight * tangent
-        S = contract("jen,ajen->aen", s, b)
-        D = contract("ajen,jen,bjen->aben", b, k, b)
-        N = contract("jen,jen->en", s, d_axial)
-        D[1, 1] += N  # the geometric stiffness K_G
-        D[3, 3] += N
-        self._curved_slip(D, s, g, axial, levers, k_principal, k_m, dk_m, d_km, state)
-        output = dict(
-            strain=strain,
-            stress=stress,
-            curvature=k_principal,
-            kappa_m=k_m,
-            slipping=self.slip.slipping(k_principal, k_m, state),
-            axial=axial,
-            N=N,
-            energy=energy,
-        )
-        return S, D, output
+        self.N = int(model.assembly.N)
+        self.x = model.x
+        self.dx = np.asarray(model.bases["u"].dx)  # (ne, nq), shared by every field
 
+    def interpolate(self, U: np.ndarray) -> np.ndarray:
+        """The strains at the quadrature points: (n_strains, n_elements, n_quad)."""
+        return self.assembly.interpolate(U[self.index]).transpose(0, 2, 1)
 
-class WireBending(SectionTerm):
-    """The wires' own bending and torsion: ``EI_w = Σ E I_w cos α``, ``GJ_w = Σ G J_w cos α`` over
-    the intact wires (the core straight), on v″, w″ and φ′ (Pino Vidal 2021, eqs. 3.11–3.12);
-    E and G of each wire's own material."""
+    def vector(self, S: np.ndarray) -> np.ndarray:
+        """``∫ Σ_a S_a B_a dx`` in the model's dof vector (N,), from S (n_strains, ne, nq)."""
+        out = np.zeros(self.N)
+        out[self.index] = self.assembly.vector(S.transpose(0, 2, 1))
+        return out
 
-    def setup(self, model):
-        super().setup(model)
-        s, w = model.strand, model.strand.wires()
-        cos = np.cos(w.lay_angle)
-        materials = s.wire_materials()
-        E_ratio = materials.take("E_e") / s.material.E_e  # exactly 1.0 with one material
-        G_ratio = materials.take("G") / s.material.G
-        self.EI = s.material.E_e * float(np.sum(np.where(w.intact, w.inertia * cos * E_ratio, 0.0)))
-        self.GJ = s.material.G * float(np.sum(np.where(w.intact, 2 * w.inertia * cos * G_ratio, 0.0)))
-        ne, nq = model.x.shape
-        self._D = np.zeros((6, 6, ne, nq))
-        self._D[2, 2] = self._D[4, 4] = self.EI
-        self._D[5, 5] = self.GJ
-
-    def section(self, g, step):
-        S = np.zeros_like(g)
-        S[2], S[4], S[5] = self.EI * g[2], self.EI * g[4], self.GJ * g[5]
-        return S, self._D, {"energy": 0.5 * (S[2] * g[2] + S[4] * g[4] + S[5] * g[5])}
-
-
-# --- field terms -----------------------------------------------------------------------------
+    def matrix(self, D: np.ndarray) -> sp.csr_matrix:
+        """``∫ Bᵀ D B dx`` as a sparse (N, N) matrix of the model, from D (n_strains, n_strains, ne, nq)."""
+        K = self.assembly.matrix(self.assembly.element_matrices(D.transpose(0, 1, 3, 2))).tocoo()
+        return sp.csr_matrix((K.data, (self.index[K.row], self.index[K.col])), shape=(self.N, self.N))
 
 
 def _evaluate(model, value, name):
@@ -386,16 +181,34 @@ class FieldTerm(Term):
         ``w["w"]``, ``w["phi"]``; assembled at every iteration.
     damage : bool
         Leave the term out of the intact reference twin (D_r).
+    symmetric : bool, optional
+        Whether the tangent is symmetric; by default a linear term's assembled matrix is tested
+        (to its round-off) and a nonlinear term is taken as not symmetric. Only a linear term
+        with a symmetric tangent has a potential.
+    smooth : bool
+        False for a residual with kinks (contact, a tensionless support): semismooth Newton.
     **params
         Passed to the forms as ``w.<name>``: numbers, or callables of x evaluated
         once at the quadrature points.
     """
 
-    def __init__(self, tangent=None, load=None, residual=None, *, damage: bool = False, **params):
+    def __init__(
+        self,
+        tangent=None,
+        load=None,
+        residual=None,
+        *,
+        damage: bool = False,
+        symmetric: bool | None = None,
+        smooth: bool = True,
+        **params,
+    ):
         self.tangent = dict(tangent or {})
         self.load = dict(load or {})
         self.residual = dict(residual or {})
         self.damage = bool(damage)
+        self.smooth = bool(smooth)
+        self._declared_symmetric = None if symmetric is None else bool(symmetric)
         self.params = params
         for test, trial in self.tangent:
             for name in (test, trial):
@@ -413,6 +226,9 @@ class FieldTerm(Term):
         self._w = {k: _evaluate(model, v, k) for k, v in self.params.items()}
         self._K = None if self.residual else self._matrix(self._w)
         self._f = self._vector(self.load, self._w) if self.load else None
+        declared = self._declared_symmetric
+        self.symmetric = (_is_symmetric(self._K) if self.linear else False) if declared is None else declared
+        self.potential = self.linear and self.symmetric
 
     @property
     def linear(self) -> bool:
@@ -454,150 +270,19 @@ class FieldTerm(Term):
         return R, K, {}
 
     def energy(self, U, step):
-        if not self.linear:
+        if not self.potential:
             return None
         out = 0.5 * float(U @ (self._K @ U)) if self._K is not None else 0.0
         return out - float(self._f @ U) if self._f is not None else out
 
 
-@BilinearForm
-def _winkler_y(u, v, w):
-    return w.ky * u * v
-
-
-@BilinearForm
-def _winkler_z(u, v, w):
-    return w.kz * u * v
-
-
-@LinearForm
-def _load(v, w):
-    return w.q * v
-
-
-@LinearForm
-def _load_y(v, w):
-    return w.qy * v
-
-
-@LinearForm
-def _load_z(v, w):
-    return w.qz * v
-
-
-class ElasticFoundation(FieldTerm):
-    """A Winkler foundation under the strand: ``q = −k v`` and ``−k w`` (k in N/m per m of strand).
-
-    ``ElasticFoundation(k)`` acts in both transverse directions; ``ky``/``kz`` set each
-    (None: none in that direction). Constants or callables of x, >= 0.
-    """
-
-    def __init__(self, k=None, *, ky=None, kz=None):
-        if k is not None and (ky is not None or kz is not None):
-            raise InputError("k", "give k (both directions) or ky/kz, not both")
-        ky, kz = (k, k) if k is not None else (ky, kz)
-        if ky is None and kz is None:
-            raise InputError("k", "give the foundation modulus k (N/m per m), or ky and/or kz")
-        tangent = {
-            key: form
-            for key, form, value in ((("v", "v"), _winkler_y, ky), (("w", "w"), _winkler_z, kz))
-            if value is not None
-        }
-        params = {name: value for name, value in (("ky", ky), ("kz", kz)) if value is not None}
-        super().__init__(tangent=tangent, **params)
-
-    def setup(self, model):
-        super().setup(model)
-        for name, value in self._w.items():
-            nonnegative(name, value)
-
-
-class DistributedLoad(FieldTerm):
-    """A transverse load per unit length on the strand axis: ``qy`` along y (v), ``qz`` along z (w),
-    in N/m; constants or callables of x (m)."""
-
-    def __init__(self, qy=0.0, qz=0.0):
-        super().__init__(load={"v": _load_y, "w": _load_z}, qy=qy, qz=qz)
-
-
-class NodalSpring(Term):
-    """A linear spring of stiffness ``k`` on the value of ``field`` at the mesh node at ``x``:
-    N/m for u, v, w; N·m/rad for phi."""
-
-    def __init__(self, x: float, k: float, field: str = "v"):
-        if field not in FIELDS:
-            raise InputError("field", f"must be one of {FIELDS}, got {field!r}")
-        self.x, self.k, self.field = float(real("x", x)), float(positive("k", k)), field
-
-    def __repr__(self):
-        return f"NodalSpring(x={self.x:g}, k={self.k:g}, field={self.field!r})"
-
-    def setup(self, model):
-        nodes = model.mesh.p[0]
-        node = int(np.argmin(np.abs(nodes - self.x)))
-        if abs(nodes[node] - self.x) > 1e-9 * model.length:
-            raise InputError("x", f"must be a mesh node; the nearest is at {nodes[node]:.6g} m")
-        basis = model.bases[self.field]
-        dof = model.offsets[FIELDS.index(self.field)] + basis.nodal_dofs[0][node]
-        N = model.assembly.N
-        self._K = sp.csr_matrix(([self.k], ([dof], [dof])), shape=(N, N))
-
-    def contribute(self, U, step):
-        return self._K @ U, self._K, {}
-
-    def energy(self, U, step):
-        return 0.5 * float(U @ (self._K @ U))
-
-
-class SinusoidalDamageLoads(Term):
-    r"""The thesis's reading of the damage: the loads a broken wire's missing pressure leaves.
-
-    A helical wire of tension F presses on the core with :math:`F\sin^2\alpha/(R\cos\alpha)`
-    per unit strand length; intact wires balance, so each broken wire b leaves a resultant
-    pointing at it and turning with the lay (Beltrán & De Vico 2015; Pino Vidal 2021 §2.4):
-
-    .. math:: q_y + i\,q_z = \sum_b \frac{F_b\sin^2\alpha_b}{R_b\cos\alpha_b}
-              \left(\sin\psi_b(x) + i\cos\psi_b(x)\right),
-              \qquad F_b = A_b\,\sigma(\cos^2\alpha_b\,\varepsilon),
-
-    with ε the imposed strain of the step (a dead load within the step). Use with
-    ``HelicalWires(helical=False)``; a damage term (left out of the D_r twin).
-    """
-
-    damage = True
-
-    def setup(self, model):
-        s, w = model.strand, model.strand.wires()
-        self.material = s.material
-        self.broken = np.flatnonzero(~w.intact & (w.layer > 0))
-        self.materials = s.wire_materials().subset(self.broken)
-        helical = w.layer > 0
-        lay_length = np.ones_like(w.radius)
-        lay_length[helical] = s.lay_lengths[w.layer[helical] - 1]
-        rate = np.where(helical, w.direction * 2 * np.pi / lay_length, 0.0)
-        rows = []
-        for j in self.broken:
-            psi = w.psi[j] + rate[j] * model.x
-            alpha = w.lay_angle[j]
-            q = np.sin(alpha) ** 2 / (w.radius[j] * np.cos(alpha))
-            vec = np.zeros(model.assembly.N)
-            parts = model.split(vec)
-            parts["v"][:] = asm(_load, model.bases["v"], q=q * np.sin(psi))
-            parts["w"][:] = asm(_load, model.bases["w"], q=q * np.cos(psi))
-            rows.append(vec)
-        self.unit = np.array(rows).reshape(len(self.broken), model.assembly.N)  # per newton of wire force
-        self.area = w.area[self.broken]
-        self.cos = np.cos(w.lay_angle[self.broken])
-
-    def loads(self, strain: float) -> np.ndarray:
-        """The load vector (N) at the imposed axial strain."""
-        return (self.area * self.materials.stress(self.cos**2 * strain)) @ self.unit
-
-    def contribute(self, U, step):
-        return -self.loads(step.strain), None, {}
-
-    def energy(self, U, step):  # a dead load within the step
-        return -float(self.loads(step.strain) @ U)
+def _is_symmetric(K) -> bool:
+    """Whether a sparse matrix equals its transpose to the round-off of its assembly."""
+    if K is None:
+        return True
+    difference = abs(K - K.T)
+    size = abs(K).max() if K.nnz else 0.0
+    return difference.nnz == 0 or difference.max() <= 1e-12 * size
 
 
 def check_terms(terms) -> list:

@@ -1,0 +1,134 @@
+"""One set of checks over every result type of `skcable.results.CableResult`.
+
+Each entry of `FACTORIES` is a function ``(span, dh) -> result`` of one scene whose unstretched
+length is fixed (so that re-solving at a moved B gives the stiffness by central differences),
+under `W` newtons per metre of unstretched cable, or per horizontal metre for the parabola (a
+type under other loads extends `applied_load`). Every check compares the result with something
+that does not come from the same formula: the end tensions from their components, the ends of
+the profile from the scene's supports, the vertical balance from the load, the stiffness from
+re-solved scenes, the repr from the attributes, the VTK file from what meshio reads back.
+
+Other result types join by appending ``pytest.param(factory, id=...)`` to `FACTORIES`.
+"""
+
+from __future__ import annotations
+
+import math
+import re
+
+import meshio
+import numpy as np
+import pytest
+
+from skcable import cable
+from skcable.results import CableResult
+
+SPAN, DH, W = 100.0, 20.0, 20.0
+#: the unstretched length of every scene: 10 % over the chord
+LENGTH = 1.1 * math.hypot(SPAN, DH)
+
+FACTORIES = [
+    pytest.param(lambda span, dh: cable.catenary(span, dh, W, length=LENGTH), id="catenary"),
+    pytest.param(lambda span, dh: cable.parabola(span, dh, W, length=LENGTH), id="parabola"),
+    pytest.param(lambda span, dh: cable.elastic_catenary(span, dh, W, 2e5, length=LENGTH), id="elastic"),
+    pytest.param(
+        lambda span, dh: cable.elastic_catenary(span, -dh, W, 1e9, length=LENGTH), id="elastic-down"
+    ),
+]
+
+
+def applied_load(result) -> float:
+    """The total downward load of a factory's scene (N), from the scene, not the result."""
+    if isinstance(result, cable.Parabola):
+        return W * result.span
+    return W * result.length
+
+
+@pytest.fixture(params=FACTORIES)
+def factory(request):
+    return request.param
+
+
+def test_satisfies_the_protocol(factory):
+    result = factory(SPAN, DH)
+    assert isinstance(result, CableResult)
+    for name in ("H_A", "V_A", "H_B", "V_B", "T_A", "T_B", "length"):
+        assert isinstance(getattr(result, name), float) and math.isfinite(getattr(result, name)), name
+
+
+def test_end_tensions_are_their_components(factory):
+    r = factory(SPAN, DH)
+    assert r.T_A == pytest.approx(math.hypot(r.H_A, r.V_A), rel=1e-13)
+    assert r.T_B == pytest.approx(math.hypot(r.H_B, r.V_B), rel=1e-13)
+
+
+def test_profile_runs_from_A_to_B_in_unstretched_arc_length(factory):
+    r = factory(SPAN, DH)
+    B = (SPAN, r.dh)
+    np.testing.assert_allclose(r.xy(0.0), (0.0, 0.0), atol=1e-12 * LENGTH)
+    np.testing.assert_allclose(r.xy(r.length), B, rtol=0, atol=1e-12 * LENGTH)
+    assert r.T_of_s(0.0) == pytest.approx(r.T_A, rel=1e-12)
+    assert r.T_of_s(r.length) == pytest.approx(r.T_B, rel=1e-12)
+    profile = r.profile(401)
+    assert profile.shape == (401, 2)
+    np.testing.assert_allclose(profile[[0, -1]], [(0.0, 0.0), B], rtol=0, atol=1e-12 * LENGTH)
+    # s is arc length: the polyline through the points is as long as the cable (stretched, for
+    # an elastic one: its strain is T/EA, below 2e-3 here), less the chords' shortfall O(1/n²)
+    sides = np.hypot(*np.diff(profile, axis=0).T)
+    EA = getattr(r, "EA", math.inf)
+    assert np.sum(sides) == pytest.approx(r.length, rel=2e-5 + max(r.T_A, r.T_B) / EA)
+    assert np.allclose(sides, sides[0], rtol=1e-4 + 2 * max(r.T_A, r.T_B) / EA)
+
+
+def test_vertical_balance(factory):
+    r = factory(SPAN, DH)
+    assert r.V_A + r.V_B == pytest.approx(applied_load(r), rel=1e-12)
+
+
+def test_stiffness_against_central_differences_of_resolved_scenes(factory):
+    r = factory(SPAN, DH)
+    K = r.stiffness()
+    assert K.shape == (2, 2)
+    h = 1e-4 * SPAN
+    fd = np.empty((2, 2))
+    for column, (d_span, d_dh) in enumerate([(h, 0.0), (0.0, h)]):
+        plus, minus = factory(SPAN + d_span, DH + d_dh), factory(SPAN - d_span, DH - d_dh)
+        fd[0, column] = (plus.H_B - minus.H_B) / (2 * h)
+        fd[1, column] = (plus.V_B - minus.V_B) / (2 * h)
+    if r.dh < 0:  # the factory mirrors dh: d/d(dh) of the result is minus d/d(DH)
+        fd[:, 1] *= -1.0
+    np.testing.assert_allclose(K, fd, rtol=0, atol=1e-6 * np.abs(fd).max())
+
+
+def test_frames(factory):
+    r = factory(SPAN, DH)
+    frame = r.to_frame(11)
+    assert list(frame.columns) == ["s", "x", "y", "T"] and len(frame) == 11
+    np.testing.assert_allclose(frame["s"], np.linspace(0.0, r.length, 11))
+    np.testing.assert_allclose(frame[["x", "y"]].to_numpy(), r.profile(11))
+    np.testing.assert_allclose(frame["T"].iloc[[0, -1]], [r.T_A, r.T_B], rtol=1e-12)
+    tensions = r.tensions()
+    assert {"segment", "length", "T_lower", "T_upper", "H_lower", "H_upper"} <= set(tensions.columns)
+    assert tensions["length"].sum() == pytest.approx(r.length, rel=1e-12)
+    assert tensions["T_lower"].iloc[0] == pytest.approx(r.T_A, rel=1e-12)
+    assert tensions["T_upper"].iloc[-1] == pytest.approx(r.T_B, rel=1e-12)
+
+
+def test_vtk_round_trip(factory, tmp_path):
+    r = factory(SPAN, DH)
+    path = r.to_vtk(tmp_path / "cable.vtu", 33)
+    mesh = meshio.read(path)
+    points = mesh.points
+    assert points.shape == (33, 3)
+    np.testing.assert_allclose(points[[0, -1], :2], [(0.0, 0.0), (SPAN, r.dh)], atol=1e-12 * LENGTH)
+    tension = mesh.point_data["tension_N"]
+    np.testing.assert_allclose(tension[[0, -1]], [r.T_A, r.T_B], rtol=1e-12)
+    assert np.all(tension > 0) and np.all(np.diff(points[:, 0]) > 0)
+
+
+def test_repr_shows_the_key_numbers(factory):
+    r = factory(SPAN, DH)
+    shown = dict(re.findall(r"(\w+)=([-+0-9.e]+)", repr(r)))
+    for name in ("V_A", "V_B", "T_A", "T_B", "length"):
+        assert float(shown[name]) == pytest.approx(getattr(r, name), rel=1e-8), name
+    assert float(shown.get("H", shown.get("H_B", "nan"))) == pytest.approx(r.H_B, rel=1e-8)
