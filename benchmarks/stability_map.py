@@ -16,8 +16,9 @@ equations, or the inextensible catenary) and each run is classified:
 
 Methods: skcable closed form (catenary / elastic_catenary), skcable BVP graph form and arc
 form (P2, the mesh doubled from 64 elements until two meshes agree within 1e-10, at most 4096),
-skcable cable.solve(rtol=1e-9), MoorPy catenary(), pycatenary MooringLine, OpenSeesPy
-CatenaryCable.
+skcable line BVP (`solve_line_bvp`: the arc form on meshes graded by the line's turning, the
+mesh doubled alike), skcable cable.solve(rtol=1e-9), MoorPy catenary(), pycatenary
+MooringLine, OpenSeesPy CatenaryCable.
 
 Run:  python benchmarks/stability_map.py            (about 15 minutes)
       python benchmarks/stability_map.py --replot   (counts and chart again from the CSV)
@@ -66,6 +67,18 @@ def bvp_converged(dh, length, EA, formulation):
     raise RuntimeError(f"mesh not converged at 4096 elements (last H {previous:.12g})")
 
 
+def line_bvp_converged(dh, length, EA):
+    """`solve_line_bvp` (graded P2 arc form), the mesh doubled until two successive H agree
+    within 1e-10 (at most 4096 elements)."""
+    n, previous = 64, None
+    while n <= 4096:
+        sol = cable.solve_line_bvp(SPAN, dh, [(length, W, EA)], n_elements=n)
+        if previous is not None and abs(sol.H / previous - 1) < 1e-10:
+            return sol.H
+        previous, n = sol.H, 2 * n
+    raise RuntimeError(f"mesh not converged at 4096 elements (last H {previous:.12g})")
+
+
 def methods(elastic):
     closed = (
         (lambda dh, L, EA: cable.elastic_catenary(SPAN, dh, W, EA, length=L).H)
@@ -76,6 +89,7 @@ def methods(elastic):
         "skcable closed form": closed,
         "skcable BVP graph": lambda dh, L, EA: bvp_converged(dh, L, EA, "graph"),
         "skcable BVP arc": lambda dh, L, EA: bvp_converged(dh, L, EA, "arc"),
+        "skcable line BVP": line_bvp_converged,
         "skcable solve(rtol=1e-9)": lambda dh, L, EA: (
             cable.solve(SPAN, dh, cable.SelfWeight(W), length=L, EA=EA, rtol=1e-9).H
         ),

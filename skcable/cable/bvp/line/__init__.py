@@ -15,15 +15,24 @@ on a seabed of any shape with Coulomb friction. One concern per module:
 - `slack`: Jonkman's slack stretch near the anchor;
 - `driver`: the continuation `LineBVPSolver` — levels, gradings, friction, fitting, checks;
 - `solution`: `LineBVPSolution`, the end forces, contact and fields;
-- `model`: `solve_line_bvp`.
+- `stiffness`: the fairlead stiffness from the converged tangent (implicit function theorem);
+- `model`: `solve_line_bvp` and `LineBVP`, a line model for `line_3d` and `MooringSystem`.
 
 Data flow one way: ``inputs → driver → (mesh, start, problem ⇄ contact) → iterate → solution``.
 """
 
 from skcable.cable.bvp.line.driver import LineBVPSolver
 from skcable.cable.bvp.line.inputs import BVPSegment
-from skcable.cable.bvp.line.model import solve_line_bvp
+from skcable.cable.bvp.line.model import LineBVP, solve_line_bvp
 from skcable.cable.bvp.line.problem import LineProblem, LineState
 from skcable.cable.bvp.line.solution import LineBVPSolution
 
-__all__ = ["BVPSegment", "LineBVPSolution", "LineBVPSolver", "LineProblem", "LineState", "solve_line_bvp"]
+__all__ = [
+    "BVPSegment",
+    "LineBVP",
+    "LineBVPSolution",
+    "LineBVPSolver",
+    "LineProblem",
+    "LineState",
+    "solve_line_bvp",
+]

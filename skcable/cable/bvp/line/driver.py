@@ -46,6 +46,8 @@ raises the first alternative's error when every one fails.
 
 from __future__ import annotations
 
+from functools import partial
+
 import numpy as np
 
 from skcable.cable.bvp.line.inputs import Scene
@@ -177,6 +179,29 @@ class LineBVPSolver:
                 "rests on the seabed with its friction only partly mobilised: this BVP does not model "
                 "that state (cable.Line solves it in closed form)",
             ) from None
+
+    def solve_from(self, previous) -> LineBVPSolution:
+        """The line from ``previous``, a solution of the same line at another fairlead: moved to
+        this one on its mesh (`moved`), then graded and fitted as a level from it; from
+        scratch (`solve`) where that fails."""
+        try:
+            return self.checked(self.level(self.scene.n_elements, self.moved(previous)))
+        except ConvergenceError:
+            return self.solve()
+
+    def moved(self, previous) -> LineBVPSolution:
+        """``previous`` solved again at this scene's fairlead on its own mesh (its slack stretch
+        kept), from its shape moved to the new ends in proportion to the arc length:
+        ``x(s) + (span - span₀) s/L``, ``y(s) + (dh - dh₀) s/L``."""
+        sc, old = self.scene, previous.problem
+        nodes = np.sort(old.mesh.p[0])
+        problem = self.problem(nodes.size - 1, _with(old.slack_end), old.slack_end, sc.friction, nodes)
+        z0 = self.restart(previous, problem)
+        share = problem.basis.doflocs[0] / self.length
+        z0[: problem.N] += (sc.span - previous.span) * share
+        z0[problem.N : 2 * problem.N] += (sc.dh - previous.dh) * share
+        z0[problem.end_b], z0[problem.N + problem.end_b] = sc.span, sc.dh
+        return self.run(problem, z0)
 
     def clump_at_slack_end(self):
         """The arc length (m) of the downward point load where the segment-wise closed form's
@@ -437,4 +462,12 @@ class LineBVPSolver:
                 ),
                 solution.history,
             )
+        solution.slack_solver = partial(self.at_slack_end, solution) if s0 > 0 else None
         return solution
+
+    def at_slack_end(self, solution, s0) -> LineBVPSolution:
+        """``solution``'s line re-solved from it on its mesh with the slack stretch ending at
+        ``s0`` instead (its node moved there): for the stiffness along the slack end."""
+        nodes = np.sort(solution.problem.mesh.p[0])
+        problem = self.problem(nodes.size - 1, [s0], s0, self.scene.friction, nodes)
+        return self.rerun(problem, solution)

@@ -157,6 +157,17 @@ class LineProblem:
         #: ∫ ds / EA over the line (m/N)
         self.compliance = float(np.sum(self.compliance_q * self.assembly.dx))
 
+    def weight_at(self, s):
+        """The weight per unstretched length (N/m, downward) at arc lengths ``s`` (m): its
+        segment's (the upper one at a joint but the last), or the callable of s."""
+        s = np.atleast_1d(np.asarray(s, dtype=float))
+        owner = np.clip(np.searchsorted(self.joints, s, side="right") - 1, 0, len(self.segments) - 1)
+        out = np.empty_like(s)
+        for k, seg in enumerate(self.segments):
+            cols = owner == k
+            out[cols] = np.broadcast_to(seg.w(s[cols]), s[cols].shape) if callable(seg.w) else seg.w
+        return out
+
     # --- loads: the one place where external forces enter ---------------------------------
     def distributed_load(self, g):
         """The distributed load at the quadrature points: ``(f_x, f_y)`` (N per unstretched m) in
@@ -344,6 +355,20 @@ class LineProblem:
         if info != 0:
             raise ConvergenceError(f"banded solve: the tangent is singular (LAPACK dgbsv info = {info})", [])
         return x[order]
+
+    def end_sensitivity(self, state):
+        """``(K, dz)``: ``K = ∂(H_B, V_B)/∂(span, dh)`` (N/m, rows H_B, V_B) of the discrete line
+        at a converged ``state`` and ``dz = ∂z/∂(span, dh)`` (every dof, two columns), by the
+        implicit function theorem: with ``z_B`` the fairlead's two fixed dofs and ``J`` the
+        generalized Jacobian (its active set held), ``J_ff ∂z_f = -J_fB`` (one factorisation,
+        two right-hand sides, `solve_many`); ``(H_B, V_B)`` are the rows of ``R⁰`` at B (the
+        fairlead is no contact node: its rows are ``R⁰``'s), so ``K = J_Bf ∂z_f + J_BB``."""
+        J = self.jacobian(state)
+        ends = np.array([self.end_b, self.N + self.end_b])
+        dz = np.zeros((self.assembly.N, 2))
+        dz[ends, [0, 1]] = 1.0
+        dz[self.free] = self.solve_many(state, -(J[self.free][:, ends]).toarray())
+        return np.asarray(J[ends] @ dz), dz
 
     def reactions(self, R0):
         """``(H_A, V_A, H_B, V_B)`` (N) from the residual without contact at the supports."""

@@ -7,27 +7,33 @@ from functools import cached_property
 import numpy as np
 from scipy.optimize import brentq
 
-from skcable._checks import real, require
+from skcable._checks import real, require, whole
 from skcable.cable.bvp.line.contact import anchor_split
 from skcable.cable.bvp.line.problem import LineProblem, LineState
+from skcable.cable.bvp.line.stiffness import fairlead_stiffness
 from skcable.cable.bvp.probes import gradient_probes
 from skcable.errors import ConvergenceError
+from skcable.results import ProfileMixin
 
 __all__ = ["LineBVPSolution"]
 
 
-class LineBVPSolution:
-    """Solution of `solve_line_bvp`.
+class LineBVPSolution(ProfileMixin):
+    """Solution of `solve_line_bvp`; a `skcable.results.CableResult`.
 
     Attributes
     ----------
-    H, V_B : float
-        Horizontal and vertical force at the fairlead B (N), as in
-        `skcable.cable.elastic_catenary` (``H`` is the fairlead's, ``H_B``).
+    H_B, V_B : float
+        Horizontal and upward vertical reaction at the fairlead B (N).
+    H : float
+        ``H_B``: the horizontal tension of the suspended part, B's (as for the closed-form
+        lines on a seabed, `skcable.cable.elastic_catenary(seabed=)`): friction on the seabed
+        takes some of it before A, so ``H_A`` may be smaller.
     H_A, V_A : float
         Horizontal and upward vertical reaction at the anchor A (N).
     T_A, T_B : float
-        End tensions (N).
+        End tensions (N), ``hypot(H_A, V_A)`` and ``hypot(H_B, V_B)``: the support reactions,
+        more accurate than the tension field at the ends (`T_of_s`).
     length : float
         Unstretched length (m).
     contact_s, contact_xy : ndarray
@@ -64,6 +70,12 @@ class LineBVPSolution:
     state : LineState
         Residual and tangents at the solution.
     """
+
+    #: ``slack_solver(s0)``: the line re-solved with its slack stretch ending at ``s0`` (set by
+    #: the solver that made it; `stiffness` needs it where the line has a slack stretch)
+    slack_solver = None
+    #: the `LineBVP` model that solved it (None from `solve_line_bvp`)
+    model = None
 
     def __init__(self, problem: LineProblem, z, history, state: LineState):
         self.problem, self.dofs, self.state = problem, z, state
@@ -116,6 +128,13 @@ class LineBVPSolution:
     @property
     def T_B(self):
         return float(np.hypot(self.H, self.V_B))
+
+    @property
+    def EA(self):
+        """The smallest axial stiffness of the segments (N; inf where all are inextensible):
+        the line's largest strain is at most ``max(T_A, T_B)/EA``."""
+        stiff = [seg.EA for seg in self.problem.segments if seg.EA is not None]
+        return float(min(stiff)) if stiff else float("inf")
 
     @property
     def weight(self):
@@ -259,9 +278,81 @@ class LineBVPSolution:
         """Largest scaled residual (forces over the total load, stretch over the length)."""
         return self.state.merit
 
+    # --- the result protocol (skcable.results) ---------------------------------------------
+    def x_of_s(self, s):
+        """Abscissa (m) at unstretched arc length ``s`` (m) from A."""
+        return self.xy(s)[..., 0]
+
+    def y_of_s(self, s):
+        """Height above A (m) at unstretched arc length ``s`` (m) from A."""
+        return self.xy(s)[..., 1]
+
+    def T_of_s(self, s):
+        """The tension field (N) at unstretched arc length ``s`` (m): P1-DG, the value of the
+        element containing s, accurate to O(h²) at the nodes; the end tensions `T_A`, `T_B`
+        (the support reactions) are the accurate values at the ends."""
+        return self.tension(s)
+
+    def stiffness(self) -> np.ndarray:
+        """Fairlead stiffness ``∂(H_B, V_B)/∂(span, dh)`` (N/m), 2 × 2, rows (H_B, V_B), columns
+        (span, dh), the anchor fixed: from the converged tangent by the implicit function
+        theorem (`skcable.cable.bvp.line.stiffness`)."""
+        return fairlead_stiffness(self, self.slack_solver)
+
+    def tensions(self):
+        """One row per segment (pandas DataFrame): ``segment, length, T_lower, T_upper, H_lower,
+        H_upper`` (SI), the tension and horizontal tension at its ends towards A and B (the
+        support reactions at A and B, the tension field inside the segment at the joints), and
+        ``grounded_length``, its length on the seabed (m, between `s_landing` and
+        `s_touchdown`)."""
+        import pandas as pd
+
+        joints = self.problem.joints
+        inside = 1e-9 * np.diff(joints)
+        lower, upper = joints[:-1] + inside, joints[1:] - inside
+        T_l, T_u = np.atleast_1d(self.tension(lower)), np.atleast_1d(self.tension(upper))
+        H_l, H_u = T_l * np.cos(self.angle(lower)), T_u * np.cos(self.angle(upper))
+        T_l[0], H_l[0], T_u[-1], H_u[-1] = self.T_A, self.H_A, self.T_B, self.H_B
+        grounded = np.clip(
+            np.minimum(joints[1:], self.s_touchdown) - np.maximum(joints[:-1], self.s_landing), 0, None
+        )
+        return pd.DataFrame(
+            {
+                "segment": np.arange(joints.size - 1),
+                "length": np.diff(joints),
+                "T_lower": T_l,
+                "T_upper": T_u,
+                "H_lower": H_l,
+                "H_upper": H_u,
+                "grounded_length": grounded if self.in_contact.any() else np.zeros(joints.size - 1),
+            }
+        )
+
+    def samples(self, n: int = 201) -> dict:
+        """The line at ``n`` points evenly spaced in unstretched arc length (the input of
+        `to_vtk`): ``xy`` (n, 2) (m), ``tension`` (N, the field), ``angle`` (rad above the
+        horizontal) and ``load`` (n, 2), the distributed weight in N per metre of unstretched
+        line, y up (point loads and the seabed's forces not included)."""
+        s = np.linspace(0.0, self.length, whole("n", n, 2))
+        weight = np.asarray(self.problem.weight_at(s), dtype=float)
+        return {
+            "xy": self.xy(s),
+            "tension": np.asarray(self.tension(s), dtype=float),
+            "angle": self.angle(s),
+            "load": np.column_stack([np.zeros_like(s), -weight]),
+        }
+
+    def to_vtk(self, path, n: int = 201):
+        """Write the line as a VTK polyline (`skcable.io.cable_mesh`: tension, tangent, angle,
+        load as point data); returns the path."""
+        from skcable.io import cable_mesh, write
+
+        return write(cable_mesh(self, n), path)
+
     def __repr__(self):
         return (
             f"LineBVPSolution(span={self.span:g}, dh={self.dh:g}, {self.mesh.t.shape[1]} elements: "
-            f"H={self.H:.9g}, V_B={self.V_B:.9g}, H_A={self.H_A:.9g}, V_A={self.V_A:.9g}, "
+            f"H_B={self.H_B:.9g}, V_B={self.V_B:.9g}, H_A={self.H_A:.9g}, V_A={self.V_A:.9g}, "
+            f"T_A={self.T_A:.9g}, T_B={self.T_B:.9g}, length={self.length:.9g}, "
             f"{int(self.in_contact.sum())} nodes on the seabed, iterations={self.iterations})"
         )
