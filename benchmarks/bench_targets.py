@@ -135,9 +135,58 @@ def _verdict(ok, miss):
     return "met" if ok else f"**not met**: {miss}"
 
 
+def _vectorised_rows(n, r):
+    """The vectorised rows on a batch of ``n`` spans."""
+    from mechaphlowers.core.models.cable.span import CatenarySpan
+
+    rows = []
+    spans, params, lengths = _batch(n)
+    heights = np.full(n, DH)
+
+    def mecha(spans=spans, heights=heights, params=params):
+        span = CatenarySpan(
+            span_length=spans, elevation_difference=heights, parameter=params, linear_weight=W
+        )
+        return span.compute_L(), span.T_h()
+
+    def given_H(spans=spans, H=W * params):
+        return cable.catenary(spans, DH, W, H=H).length
+
+    def given_length(spans=spans, lengths=lengths):
+        return cable.catenary(spans, DH, W, length=lengths).H
+
+    t_h, t_m, ratio = paired(given_H, mecha, 1, r)
+    rows.append(
+        (
+            f"vectorised `catenary(H=)` with its check, {n:,} spans",
+            f"{t_h / n * 1e9:.0f} ns a span, {1 / ratio:.2f}× mechaphlowers' throughput "
+            f"({t_m / n * 1e9:.0f} ns)",
+            "≥ 1× mechaphlowers' throughput",
+            _verdict(
+                ratio <= 1.0,
+                f"{1 / ratio:.2f}×: the fixed cost of the argument checks and of the residual's "
+                "two dozen NumPy calls weighs on small batches",
+            ),
+        )
+    )
+    t_l = statistics.median(per_call(given_length, 1) for _ in range(r))
+    rows.append(
+        (
+            f"vectorised `catenary(length=)`, {n:,} spans",
+            f"{t_l / n * 1e9:.0f} ns a span",
+            "≤ 300 ns a span",
+            _verdict(
+                t_l / n <= 3e-7,
+                f"{t_l / n / 3e-7:.2f}× the target; {t_l / t_m:.1f}× mechaphlowers' forward "
+                "evaluation given H in the same process (the load of the machine slows both)",
+            ),
+        )
+    )
+    return rows
+
+
 def closed_form_rows(r, spans_n):
     """The closed-form targets of issue 21, ratios measured back to back."""
-    from mechaphlowers.core.models.cable.span import CatenarySpan
     from moorpy.Catenary import catenary as moorpy_catenary
 
     def moorpy():  # B below A: mirrored, as in benchmarks/_peers.py
@@ -169,48 +218,7 @@ def closed_form_rows(r, spans_n):
         )
     )
     for n in sorted({10_000, spans_n}):
-        spans, params, lengths = _batch(n)
-        heights = np.full(n, DH)
-
-        def mecha(spans=spans, heights=heights, params=params):
-            span = CatenarySpan(
-                span_length=spans, elevation_difference=heights, parameter=params, linear_weight=W
-            )
-            return span.compute_L(), span.T_h()
-
-        def given_H(spans=spans, H=W * params):
-            return cable.catenary(spans, DH, W, H=H).length
-
-        def given_length(spans=spans, lengths=lengths):
-            return cable.catenary(spans, DH, W, length=lengths).H
-
-        t_h, t_m, ratio = paired(given_H, mecha, 1, r)
-        rows.append(
-            (
-                f"vectorised `catenary(H=)` with its check, {n:,} spans",
-                f"{t_h / n * 1e9:.0f} ns a span, {1 / ratio:.2f}× mechaphlowers' throughput "
-                f"({t_m / n * 1e9:.0f} ns)",
-                "≥ 1× mechaphlowers' throughput",
-                _verdict(
-                    ratio <= 1.0,
-                    f"{1 / ratio:.2f}×: the fixed cost of the argument checks and of the residual's "
-                    "two dozen NumPy calls weighs on small batches",
-                ),
-            )
-        )
-        t_l = statistics.median(per_call(given_length, 1) for _ in range(r))
-        rows.append(
-            (
-                f"vectorised `catenary(length=)`, {n:,} spans",
-                f"{t_l / n * 1e9:.0f} ns a span",
-                "≤ 300 ns a span",
-                _verdict(
-                    t_l / n <= 3e-7,
-                    f"{t_l / n / 3e-7:.2f}× the target; {t_l / t_m:.1f}× mechaphlowers' forward "
-                    "evaluation given H in the same process (the load of the machine slows both)",
-                ),
-            )
-        )
+        rows.extend(_vectorised_rows(n, r))
     lines = [
         "## Closed forms",
         "",

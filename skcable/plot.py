@@ -167,7 +167,7 @@ def mooring_profiles(result, ax=None, *, n: int = 201, depth=None):
     depth = getattr(result, "depth", None) if depth is None else depth
     reach = 0.0
     for i, line in enumerate(lines):
-        xyz, _ = line.profile(n)
+        xyz = line.profile(n)
         r = (xyz[:, :2] - line.anchor[:2]) @ line.direction[:2]
         reach = max(reach, float(r.max()))
         ax.plot(

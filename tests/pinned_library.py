@@ -192,7 +192,7 @@ def strand_cases():
     fr = strand.strand_bending_frequencies(sec, N=1e3, length=1.0, mass_per_length=0.45)
     a = strand.analyse(s)
     model = strand.StrandModel(
-        s, 1.0, n_elements=24, terms=[strand.ElasticFoundation(2e4), strand.DistributedLoad(qy=5.0)]
+        s, 1.0, n_elements=24, terms=[strand.ElasticFoundation(2e4), strand.TransverseLoad(qy=5.0)]
     )
     # solved to 1e-12 (the default 1e-9 is the accuracy of a step, not the pin's): the numbers are
     # the model's equations, whatever the stopping rule

@@ -49,15 +49,19 @@ def test_sag_typed_in_mm():
 
 
 def test_alpha_typed_in_micro_per_kelvin():
-    warm = dict(STATE, alpha=23.0, t=[15.0, 16.0])  # k = 1 + 23 (t - t0) > 0: it solves
+    # alpha 23 (1e-6/K meant): a thermal strain of 23 per kelvin is refused, naming alpha (not t)
+    with pytest.raises(InputError) as info:
+        cable.change_of_state(300.0, 0.0, EA=3e7, **dict(STATE, alpha=23.0, t=[15.0, 16.0]))
+    assert info.value.argument == "alpha"
+    with pytest.raises(InputError) as info:  # colder than t0 as well
+        cable.change_of_state(300.0, 0.0, EA=3e7, **dict(STATE, alpha=23.0))
+    assert info.value.argument == "alpha"
+    # alpha in 1e-4/K, a strain of 0.1 over 40 K: it solves, and warns naming alpha
+    warm = dict(STATE, alpha=2.5e-3, t=[15.0, 55.0])
     with pytest.warns(PlausibilityWarning, match=r"^alpha: .*23e-6") as caught:
         cable.change_of_state(300.0, 0.0, EA=3e7, **warm)
     strain = float(re.search(r"up to ([-+.\de]+),", str(caught[0].message)).group(1))
-    assert strain == pytest.approx(23.0 * (16.0 - 15.0), rel=1e-2)
-    # colder than t0, the thermal factor is negative: refused, naming alpha (not t)
-    with pytest.raises(InputError) as info:
-        cable.change_of_state(300.0, 0.0, EA=3e7, **dict(STATE, alpha=23.0))
-    assert info.value.argument == "alpha"
+    assert strain == pytest.approx(2.5e-3 * (55.0 - 15.0), rel=1e-2)
 
 
 @pytest.mark.parametrize(

@@ -40,6 +40,23 @@ if TYPE_CHECKING:  # what static tools see; at run time, `attach` below serves t
         solve_bvp,
         solve_line_bvp,
     )
+    from skcable.cable.conductors import (
+        ClampStress,
+        ComponentCurve,
+        CreepLaw,
+        ResidualStrength,
+        StressStrainModel,
+        ThermalRating,
+        WohlerCurve,
+        clamp_stress,
+        clearance_ampacity,
+        fatigue_life,
+        level_span_states,
+        miner_damage,
+        poffenberger_swart,
+        residual_strength,
+        sag_at_current,
+    )
     from skcable.cable.lines import (
         Buoy,
         ClumpWeight,
@@ -101,6 +118,23 @@ _NAMES = {
         "rotation_matrix",
         "sloped_seabed_catenary",
     ),
+    ".conductors": (
+        "ClampStress",
+        "ComponentCurve",
+        "CreepLaw",
+        "ResidualStrength",
+        "StressStrainModel",
+        "ThermalRating",
+        "WohlerCurve",
+        "clamp_stress",
+        "clearance_ampacity",
+        "fatigue_life",
+        "level_span_states",
+        "miner_damage",
+        "poffenberger_swart",
+        "residual_strength",
+        "sag_at_current",
+    ),
     ".solution": ("CableSolution",),
     ".terms": ("Buoyancy", "CableForce", "CableState", "CableTerm", "CurrentDrag", "WindDrag"),
 }
@@ -118,10 +152,25 @@ _MOVED = {
 }
 
 __getattr__, __dir__ = attach(
-    __name__, submodules=("bvp", "lines", "solution", "terms"), names=_NAMES, moved=_MOVED
+    __name__, submodules=("bvp", "conductors", "lines", "solution", "terms"), names=_NAMES, moved=_MOVED
 )
 
 __all__ = [
+    "ClampStress",
+    "ComponentCurve",
+    "CreepLaw",
+    "ResidualStrength",
+    "StressStrainModel",
+    "ThermalRating",
+    "WohlerCurve",
+    "clamp_stress",
+    "clearance_ampacity",
+    "fatigue_life",
+    "level_span_states",
+    "miner_damage",
+    "poffenberger_swart",
+    "residual_strength",
+    "sag_at_current",
     "Buoyancy",
     "CableForce",
     "CableState",

@@ -51,9 +51,10 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from skcable._checks import nonnegative, positive, real, scalar
+from skcable._checks import broadcast, nonnegative, positive, real, scalar
 from skcable.cable._elastic import elastic_catenary
 from skcable.cable._state import change_of_state, sag_tension_table
+from skcable.cable.conductors._inputs import normal
 from skcable.errors import InputError
 
 __all__ = ["Conductor", "STANDARD_GRAVITY", "ICE_DENSITY"]
@@ -233,6 +234,29 @@ class Conductor:
             rupture_force=rupture_force,
         )
 
+    @classmethod
+    def from_catalogue(cls, name: str, *, g: float = STANDARD_GRAVITY):
+        """The conductor of a catalogue size (ASTM B232 ACSR, B231 AAC, B399 AAAC; see
+        `skcable.cable.conductors.catalogue`): the published mass (``w = mass · g``), outer
+        diameter and rated strength (``rts``), with ``EA`` and ``alpha`` of its strand
+        (``strand.preset(name)``, built from the stranding; `Conductor.from_strand`).
+
+        Raises
+        ------
+        InputError
+            ``name`` not in the catalogue (``'name'``, with the nearest names suggested).
+        """
+        from skcable.strand import preset
+        from skcable.strand._catalogue import entry
+
+        item = entry(name)
+        g = _positive_scalar("g", g)
+        base = cls.from_strand(preset(item.name), g=g)
+        return cls(
+            EA=base.EA, w=item.mass * g, alpha=base.alpha, diameter=item.diameter, rts=item.rts,
+            name=item.name, strand=base.strand, rupture_force=base.rupture_force,
+        )  # fmt: skip
+
     # --- loads ------------------------------------------------------------------------
     def ice_load(self, thickness, *, density: float = ICE_DENSITY, g: float = STANDARD_GRAVITY):
         """Weight per unit length (N/m) of radial ice ``thickness`` b (m, >= 0, any shape):
@@ -264,10 +288,10 @@ class Conductor:
             raise InputError("length", "give exactly one of H0, sag0, length for the reference state")
         if model != "catenary":
             raise InputError("length", f"a reference length needs model='catenary', got {model!r}")
-        length = _positive_scalar("length", length)
-        span, dh = _positive_scalar("span", span), scalar("dh", dh)
-        H0 = float(elastic_catenary(span, dh, self.w, self.EA, length=length).H)
-        return H0, None
+        length, span, dh = normal("length", length), normal("span", span), real("dh", dh)
+        broadcast(span=span, dh=dh, length=length)
+        H0 = elastic_catenary(span, dh, self.w, self.EA, length=length).H
+        return (float(H0) if np.ndim(H0) == 0 else H0), None
 
     # --- sag and tension ----------------------------------------------------------------
     def change_of_state(
@@ -290,14 +314,17 @@ class Conductor:
 
         Parameters
         ----------
-        span, dh : float
-            Horizontal distance between the supports (m, > 0) and height of B above A (m).
+        span, dh : float or array_like
+            Horizontal distance between the supports (m, > 0) and height of B above A (m);
+            arrays for a line of spans (every result then has the spans' shape followed by
+            the states').
         t0 : float
             Reference temperature (°C or K, as ``t``): the bare conductor, no wind.
-        H0, sag0, length : float
-            Exactly one: the reference state's horizontal tension (N), sag (m), or the
-            unstressed length at ``t0`` (m, ``model="catenary"`` only) — e.g. the ``L0`` of
-            the intact conductor, for the same conductor after wires broke.
+        H0, sag0, length : float or array_like
+            Exactly one (one number, or one per span): the reference state's horizontal
+            tension (N), sag (m), or the unstressed length at ``t0`` (m, ``model="catenary"``
+            only) — e.g. the ``L0`` of the intact conductor, for the same conductor after wires
+            broke.
         t, ice, wind_pressure : float or array_like
             The states: temperature, radial ice thickness (m, >= 0), wind pressure (Pa, >= 0)
             on the iced diameter; broadcast together.
@@ -309,15 +336,19 @@ class Conductor:
         Returns
         -------
         ChangeOfState
-            ``H, H_plane, sag, T_max, length, blowout, L0`` over the states.
+            ``H, H_plane, sag, T_max, length, blowout, L0`` over the states; with ``rts``
+            known, ``T_max_pct_rts`` (``T_max`` in % of the rated strength).
         """
         H0, sag0 = self._reference(span, dh, H0, sag0, length, model)
         w = self.w + self._ice_load(ice, ice_density, g)
         wind = self._wind_load(wind_pressure, ice)
-        return change_of_state(
+        result = change_of_state(
             span, dh, EA=self.EA, alpha=self.alpha, w0=self.w, t0=t0, H0=H0, sag0=sag0,
             w=w, t=real("t", t), wind=wind, model=model,
         )  # fmt: skip
+        if self.rts is not None:
+            result.T_max_pct_rts = 100.0 * np.asarray(result.T_max) / self.rts
+        return result
 
     def sag_tension_table(
         self,
@@ -340,7 +371,8 @@ class Conductor:
         and wind pressure (Pa) on the iced diameter; default ``{"bare": (0.0, 0.0)}``. The
         reference state and the other arguments are those of `Conductor.change_of_state`.
         The columns are those of `skcable.cable.sag_tension_table` (``w`` and ``wind`` the
-        loads per length these give) and, when ``rts`` is known, ``T_max_per_rts``.
+        loads per length these give) and, when ``rts`` is known, ``T_max_per_rts`` and
+        ``T_max_pct_rts`` (the same in % RTS).
         """
         cases = {"bare": (0.0, 0.0)} if load_cases is None else load_cases
         if not isinstance(cases, dict) or not cases:
@@ -362,4 +394,5 @@ class Conductor:
         )  # fmt: skip
         if self.rts is not None:
             table["T_max_per_rts"] = table["T_max"] / self.rts
+            table["T_max_pct_rts"] = 100.0 * table["T_max"] / self.rts
         return table

@@ -57,8 +57,10 @@ from __future__ import annotations
 
 import numpy as np
 
-from skcable._checks import broadcast, nonnegative, positive, real, scalar
-from skcable.cable._state import _reference_length, _thermal_factor, change_of_state, thermal_catenary
+from skcable._checks import broadcast, nonnegative, real, scalar
+from skcable.cable._state import change_of_state, thermal_catenary
+from skcable.cable.conductors._inputs import normal, renamed, thermal_factor
+from skcable.cable.conductors._lines import reference_state
 from skcable.errors import ConvergenceError, InputError
 from skcable.fe import newton
 
@@ -70,7 +72,7 @@ _CLOSURE = 1e-13  # relative closure tolerance of elastic_catenary's Newton
 
 
 def _spans(spans) -> np.ndarray:
-    spans = np.atleast_1d(positive("spans", spans))
+    spans = np.atleast_1d(normal("spans", spans))
     if spans.size == 0:
         raise InputError("spans", "give at least one span")
     if spans.ndim != 1:
@@ -155,29 +157,42 @@ class TensionSection:
 
 
 class _Section:
-    """The equations of one state: spans, strings, unstressed lengths."""
+    """The equations of one state: spans, strings, unstressed lengths.
+
+    The unknowns are ``u = delta / scale`` with ``scale = min(lam, 1)``: a string shorter
+    than 1 m swings by its sine ``s = delta / lam`` (a subnormal length, whose ``delta``
+    underflows, still balances), a longer one by ``delta`` (a huge length does not overflow
+    a column of the Jacobian).
+    """
 
     def __init__(self, spans, dh, L0, EA, w, alpha, t, t0, lam, weight):
         self.spans, self.dh, self.L0, self.EA, self.w = spans, dh, L0, EA, w
         self.alpha, self.t, self.t0 = alpha, t, t0
         self.lam, self.weight = lam, weight
         self.free = lam > 0
+        self.scale = np.where(self.free, np.minimum(lam, 1.0), 1.0)  # of the unknowns (m)
+        # s = u * to_sine: exactly u below 1 m
+        self.to_sine = 1.0 / np.where(self.free & (lam >= 1.0), lam, 1.0)
 
-    def geometry(self, delta):
-        """Clamp rise, d(rise)/d(delta), and each span's (span, dh) for string swings ``delta``."""
-        lam = np.where(self.free, self.lam, 1.0)
-        delta = np.where(self.free, delta, 0.0)
-        root = np.sqrt((lam - delta) * (lam + delta))  # lam cos(phi)
-        rise = np.where(self.free, delta**2 / (lam + root), 0.0)
-        slope = np.where(self.free, delta / np.where(root > 0, root, 1.0), 0.0)
+    def sines(self, u):
+        """``sin phi`` and ``cos phi`` of every string (0 and 1 for a fixed one)."""
+        s = np.where(self.free, u * self.to_sine, 0.0)
+        return s, np.sqrt((1.0 - s) * (1.0 + s))
+
+    def geometry(self, u):
+        """Clamp rise, d(rise)/d(delta), and each span's (span, dh) for the unknowns ``u``."""
+        s, c = self.sines(u)
+        delta = np.where(self.free, u * self.scale, 0.0)
+        rise = self.lam * s * s / (1.0 + c)  # lam (1 - cos phi)
+        slope = s / np.where(c > 0, c, 1.0)
         dx = np.concatenate([[0.0], delta, [0.0]])
         dz = np.concatenate([[0.0], rise, [0.0]])
         span = self.spans + dx[1:] - dx[:-1]
         dh = self.dh + dz[1:] - dz[:-1]
         return rise, slope, span, dh
 
-    def curves(self, delta):
-        _, _, span, dh = self.geometry(delta)
+    def curves(self, u):
+        _, _, span, dh = self.geometry(u)
         if np.any(span <= 0):
             raise InputError("insulator_length", "a string swings so far that a span vanishes")
         # the vectorised Newton of elastic_catenary probes backtracking steps whose closure
@@ -187,78 +202,112 @@ class _Section:
                 span, dh, self.w, self.EA, length=self.L0, alpha=self.alpha, t=self.t, t0=self.t0
             )
 
-    def residual(self, delta):
-        """Moment balance of every string (N), the spans' solution, and the balance's
-        Jacobian in ``delta`` (strings × strings, rows and columns of fixed strings unused)."""
-        sol = self.curves(delta)
+    def residual(self, u):
+        """Moment balance of every string (N), the spans' solution and stiffness, and the
+        balance's Jacobian in ``u``: its three diagonals ``(sub, diag, sup)`` (row ``j``
+        holds ``dR_j/du_{j-1}, dR_j/du_j, dR_j/du_{j+1}``; rows of fixed strings unused)."""
+        sol = self.curves(u)
         H, V_A, V_B = sol.H, sol.V_A, sol.V_B
-        lam = np.where(self.free, self.lam, 1.0)
-        s = np.where(self.free, delta / lam, 0.0)
-        c = np.sqrt((1.0 - s) * (1.0 + s))
+        s, c = self.sines(u)
         dH = H[1:] - H[:-1]
         load = V_B[:-1] + V_A[1:] + 0.5 * self.weight
         R = dH * c - load * s
-        _, slope, _, _ = self.geometry(delta)
+        _, slope, _, _ = self.geometry(u)
         K = sol.curve.stiffness()  # (n, 2, 2): rows (H, V_B), columns (span, dh)
-        n = H.size
         slope_all = np.concatenate([[0.0], slope, [0.0]])
-        # d(span_i)/d(delta_{i+1}) = 1, d(span_i)/d(delta_i) = -1; dh likewise with the slope
-        d_right = K[:, :, 0] + K[:, :, 1] * slope_all[1:, None]  # (n, 2): d(H, V_B)_i / d delta_{i+1}
-        d_left = -(K[:, :, 0] + K[:, :, 1] * slope_all[:-1, None])  # d(H, V_B)_i / d delta_i
-        dHd = np.zeros((n, n + 1))
-        dVBd = np.zeros((n, n + 1))
-        i = np.arange(n)
-        dHd[i, i + 1], dHd[i, i] = d_right[:, 0], d_left[:, 0]
-        dVBd[i, i + 1], dVBd[i, i] = d_right[:, 1], d_left[:, 1]
-        dVAd = -dVBd  # V_A + V_B = w L0, fixed
-        J = c[:, None] * (dHd[1:] - dHd[:-1]) - s[:, None] * (dVBd[:-1] + dVAd[1:])
-        J = J[:, 1:-1]  # the interior clamps: the strings
-        J[np.diag_indices(n - 1)] += (-dH * s / c - load) / lam
-        return R, sol, J
+        # span i moves with its right clamp (string i: span + delta) and its left one
+        # (string i - 1: span - delta), dh with the clamps' rise; V_A = w L0 - V_B
+        right = K[:, :, 0] + K[:, :, 1] * slope_all[1:, None]  # d(H, V_B)_i / d delta_i
+        left = -(K[:, :, 0] + K[:, :, 1] * slope_all[:-1, None])  # d(H, V_B)_i / d delta_{i-1}
+        diag = c * (left[1:, 0] - right[:-1, 0]) - s * (right[:-1, 1] - left[1:, 1])
+        sub = -(c * left[:-1, 0] + s * left[:-1, 1])  # row j: d/d delta_{j-1} (span j)
+        sup = c * right[1:, 0] + s * right[1:, 1]  # row j: d/d delta_{j+1} (span j + 1)
+        # in the unknowns u: d delta / du = scale, ds / du = to_sine
+        scale = self.scale
+        sub = sub * np.concatenate([[0.0], scale[:-1]])
+        sup = sup * np.concatenate([scale[1:], [0.0]])
+        diag = diag * scale + (-dH * s / c - load) * self.to_sine
+        return R, sol, (sub, diag, sup), K
 
 
-def _round_off(eqs: _Section, sol) -> float:
+def _round_off(sol, K) -> float:
     """Floor of the balance residual (relative to max H) set by the spans' own tolerance:
     each catenary closes to ``_CLOSURE`` of its chord, which moves its H and V_B by its
     stiffness times that (a stiff, taut cable amplifies it)."""
-    K = np.abs(sol.curve.stiffness()).sum(axis=(-2, -1))
+    K = np.abs(K).sum(axis=(-2, -1))
     chord = np.hypot(sol.span, sol.dh)
     return max(_TOL, _CLOSURE * float(np.max(K * chord)) / float(np.max(sol.H)))
 
 
-def _solve_state(eqs: _Section, delta0):
+def _free_band(diagonals, free):
+    """The tridiagonal matrix of the free strings (LAPACK's ``dl, d, du``): removing a fixed
+    string's row and column leaves its neighbours uncoupled."""
+    sub, diag, sup = diagonals
+    adjacent = np.diff(free) == 1
+    return np.where(adjacent, sub[free[1:]], 0.0), diag[free], np.where(adjacent, sup[free[:-1]], 0.0)
+
+
+def _banded_step(diagonals, R, free):
+    """``-J⁻¹ R`` over the free strings by LU of the tridiagonal J (LAPACK ``dgttrf``,
+    ``dgttrs``), O(n); its reciprocal condition number (``dgtcon``), O(n), refuses a
+    numerically singular J."""
+    from scipy.linalg import lapack
+
+    dl, d, du = _free_band(diagonals, free)
+    if d.size <= 2:  # LAPACK's tridiagonal wrappers want three rows: a 1x1 or 2x2 directly
+        J = np.diag(d) + np.diag(dl, -1) + np.diag(du, 1)
+        if not np.all(np.isfinite(J)) or np.linalg.cond(J) > 1e14:
+            return None
+        return np.linalg.solve(J, -R[free])
+    anorm = float(
+        np.max(np.abs(d) + np.abs(np.concatenate([dl, [0.0]])) + np.abs(np.concatenate([[0.0], du])))
+    )
+    dl_, d_, du_, du2, ipiv, info = lapack.dgttrf(dl, d, du)
+    if info != 0 or not np.isfinite(anorm):
+        return None
+    rcond, _ = lapack.dgtcon(dl_, d_, du_, du2, ipiv, anorm)
+    if not rcond > 1e-14:
+        return None
+    x, _ = lapack.dgttrs(dl_, d_, du_, du2, ipiv, -R[free][:, None])
+    return x[:, 0]
+
+
+def _solve_state(eqs: _Section, u0):
     """The swings of one state by `skcable.fe.newton`: a trial whose spans cannot be solved
-    is rejected, and a stop within four times the spans' round-off (`_round_off`) is kept."""
+    is rejected, and a stop within four times the spans' round-off (`_round_off`) is kept.
+    Each step is one banded solve (`_banded_step`): O(n) per iteration."""
     free = np.flatnonzero(eqs.free)
 
     def norm(state):
-        R, sol, _ = state
+        R, sol, _, _ = state
         return float(np.max(np.abs(R[free]), initial=0.0)) / float(np.max(sol.H))
 
     def increment(state):
-        R, _, J = state
-        step, J_free = np.zeros_like(R), J[np.ix_(free, free)]
-        with np.errstate(all="ignore"):
-            step[free] = -np.linalg.lstsq(J_free, R[free], rcond=None)[0]
-        if not np.all(np.isfinite(step)) or np.linalg.cond(J_free) > 1e14:
-            raise ConvergenceError(
-                "tension_section: singular Jacobian of the strings' balance", [norm(state)]
-            )
+        R, _, diagonals, _ = state
+        step = np.zeros_like(R)
+        if free.size:
+            with np.errstate(all="ignore"):
+                x = _banded_step(diagonals, R, free)
+            if x is None or not np.all(np.isfinite(x)):
+                raise ConvergenceError(
+                    "tension_section: singular Jacobian of the strings' balance", [norm(state)]
+                )
+            step[free] = x
         return step
 
     result = newton(
         eqs.residual,
-        np.where(eqs.free, delta0, 0.0),
+        np.where(eqs.free, u0, 0.0),
         norm=norm,
         increment=increment,
         tol=_TOL,
         max_iter=_MAX_ITER,
-        admissible=lambda delta: bool(np.all(np.abs(delta[free]) < eqs.lam[free])),
+        admissible=lambda u: bool(np.all(np.abs(u[free] * eqs.to_sine[free]) < 1.0)),
         max_halvings=39,
         stagnation_window=_MAX_ITER,  # no stagnation rule: the floor below decides
         name="tension_section",
         rejects=(ConvergenceError, InputError),
-        floor=lambda state: 4.0 * _round_off(eqs, state[1]),
+        floor=lambda state: 4.0 * _round_off(state[1], state[3]),
     )
     return result.x, result.history[-1], result.state[1], result.iterations
 
@@ -322,10 +371,10 @@ def tension_section(
     if np.ndim(dh) not in (0, 1) or np.size(dh) not in (1, n):
         raise InputError("dh", f"must be one number or one per span ({n}), got shape {np.shape(dh)}")
     dh = np.broadcast_to(np.asarray(dh, dtype=float), (n,)).copy()
-    EA = positive("EA", scalar("EA", EA))
+    EA = normal("EA", scalar("EA", EA))
     alpha, t0 = scalar("alpha", alpha), scalar("t0", t0)
-    w0 = positive("w0", scalar("w0", w0))
-    H0 = positive("H0", scalar("H0", H0))
+    w0 = normal("w0", scalar("w0", w0))
+    H0 = normal("H0", scalar("H0", H0))
     strings = {}
     for name, value in (("insulator_length", insulator_length), ("insulator_weight", insulator_weight)):
         value = nonnegative(name, value)
@@ -335,30 +384,30 @@ def tension_section(
             )
         strings[name] = np.broadcast_to(np.asarray(value, dtype=float), (n - 1,)).copy()
     lam, weight = strings["insulator_length"], strings["insulator_weight"]
-    w, t = positive("w", w), real("t", t)
+    w, t = normal("w", w), real("t", t)
     shape = broadcast(w=w, t=t)
     w_all, t_all = (np.broadcast_to(v, shape).ravel() for v in (w, t))
-    _thermal_factor(alpha, t_all, t0)  # raises naming t
+    thermal_factor(alpha, t_all, t0)  # raises naming t
 
-    # span by span: the scalar path of change_of_state, so that one span's L0 is its L0
-    L0 = np.array([float(_reference_length(a, b, w0, EA, H0, None)) for a, b in zip(spans, dh, strict=True)])
+    # every span's unstressed length at once (the line path of change_of_state, checked)
+    with renamed({"span": "spans"}):
+        L0, *_ = reference_state(spans, dh, w0, EA, np.full(n, H0), "H0")
 
     fields = ("H", "V_A", "V_B", "T_max", "sag", "span", "dh")
     out = {name: np.empty((w_all.size, n)) for name in fields}
     out |= {name: np.empty((w_all.size, n - 1)) for name in ("swing", "swing_angle", "clamp_rise")}
     iterations = np.empty(w_all.size, dtype=int)
     worst = 0.0
-    delta = np.zeros(n - 1)
+    u = np.zeros(n - 1)
     for j, (w_j, t_j) in enumerate(zip(w_all, t_all, strict=True)):
         eqs = _Section(spans, dh, L0, EA, float(w_j), alpha, float(t_j), t0, lam, weight)
-        delta, residual, sol, iterations[j] = _solve_state(eqs, delta)  # continuation from the last state
-        rise, _, span_j, dh_j = eqs.geometry(delta)
+        u, residual, sol, iterations[j] = _solve_state(eqs, u)  # continuation from the last state
+        rise, _, span_j, dh_j = eqs.geometry(u)
         worst = max(worst, residual)
         values = dict(
             H=sol.H, V_A=sol.V_A, V_B=sol.V_B, T_max=np.maximum(sol.T_A, sol.T_B), sag=sol.sag,
-            span=span_j, dh=dh_j, swing=delta,
-            swing_angle=np.arcsin(np.where(lam > 0, delta / np.where(lam > 0, lam, 1.0), 0.0)),
-            clamp_rise=rise,
+            span=span_j, dh=dh_j, swing=np.where(eqs.free, u * eqs.scale, 0.0),
+            swing_angle=np.arcsin(eqs.sines(u)[0]), clamp_rise=rise,
         )  # fmt: skip
         for name, value in values.items():
             if not np.all(np.isfinite(value)):
@@ -366,8 +415,9 @@ def tension_section(
             out[name][j] = value
 
     L_r = ruling_span(spans)
-    ruling = change_of_state(L_r, 0.0, EA=EA, alpha=alpha, w0=w0, t0=t0, H0=H0, w=w_all, t=t_all)
-    H_r, sag_r = np.atleast_1d(ruling.H), np.atleast_1d(ruling.sag)
+    # the line path of change_of_state (one span): its vectorised solve, checked
+    ruling = change_of_state([L_r], 0.0, EA=EA, alpha=alpha, w0=w0, t0=t0, H0=H0, w=w_all, t=t_all)
+    H_r, sag_r = ruling.H[0], ruling.sag[0]
     sag_ruling = sag_r[:, None] * (spans / L_r) ** 2
 
     def shaped(value):

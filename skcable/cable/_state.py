@@ -43,10 +43,11 @@ from __future__ import annotations
 import numpy as np
 
 from skcable import _plausible
-from skcable._checks import broadcast, nonnegative, positive, real, require, scalar
-from skcable.cable._catenary import catenary
+from skcable._checks import broadcast, nonnegative, positive, real, scalar
 from skcable.cable._elastic import elastic_catenary
-from skcable.cable._roots import find_root
+from skcable.cable.conductors._inputs import load_plane, normal, renamed, thermal_factor
+from skcable.cable.conductors._parabola import parabola_states
+from skcable.cable.conductors._reference import reference_length
 from skcable.errors import ConvergenceError, InputError
 
 __all__ = ["ThermalCatenary", "thermal_catenary", "ChangeOfState", "change_of_state", "sag_tension_table"]
@@ -122,72 +123,9 @@ def thermal_catenary(span, dh, w, EA, *, length, alpha, t, t0=0.0):
     length = positive("length", length)
     alpha, t, t0 = real("alpha", alpha), real("t", t), real("t0", t0)
     broadcast(span=span, dh=dh, w=w, EA=EA, length=length, alpha=alpha, t=t, t0=t0)
-    k = _thermal_factor(alpha, t, t0)
+    k = thermal_factor(alpha, t, t0)
     curve = elastic_catenary(span, dh, w / k, EA * k, length=length * k)
     return ThermalCatenary(curve, w, EA, length, k)
-
-
-def _thermal_factor(alpha, t, t0):
-    k = 1.0 + alpha * (t - t0)
-    require(
-        _plausible.thermal_argument(alpha, t, t0) if np.any(k <= 0) else "t",
-        k > 0,
-        "gives a thermal factor 1 + alpha (t - t0) <= 0",
-        k,
-    )
-    return k
-
-
-def _plane(span, dh, w, wind):
-    """Resultant load and the span, height difference in its plane."""
-    q = np.hypot(w, wind)
-    dh_p = dh * w / q
-    span_p = np.sqrt(span**2 + dh**2 - dh_p**2)
-    return q, span_p, dh_p
-
-
-def _reference_length(span, dh, w0, EA, H0, sag0):
-    """Unstressed length at t0 of the elastic catenary with H0 (or sag0)."""
-    if H0 is not None:
-        guess = catenary(span, dh, w0, H=H0)
-
-        def f(L0, *a):
-            return elastic_catenary(*a[:4], length=L0).H / a[4] - 1.0  # decreasing in L0
-
-        target = H0
-    else:
-        guess = catenary(span, dh, w0, sag=sag0)
-
-        def f(L0, *a):
-            return 1.0 - elastic_catenary(*a[:4], length=L0).sag / a[4]  # sag increases with L0
-
-        target = sag0
-    # the inextensible length: the elastic cable of that unstressed length
-    # sags more; one of 4 T_max/EA less sags less (widened if not)
-    hi = guess.length
-    stretch = 4.0 * np.maximum(guess.T_A, guess.T_B) / EA
-    args = np.broadcast_arrays(span, dh, w0, EA, target)
-    lo = hi / (1.0 + stretch)
-    for _ in range(8):
-        bad = np.asarray(f(lo, *args) < 0)
-        if not bad.any():
-            break
-        lo = np.where(bad, lo / (1.0 + stretch), lo)
-    L0, _ = find_root(f, lo, hi, tuple(args), what="change_of_state: reference length")
-    return L0
-
-
-def _cubic(b, d):
-    """The positive root of H^3 + b H^2 - d = 0 (d > 0): Newton from above."""
-    H = np.maximum(0.0, -b) + np.cbrt(d)
-    history = []
-    for _ in range(200):
-        step = (H**3 + b * H**2 - d) / (3 * H**2 + 2 * b * H)
-        H = H - step
-        history.append(float(np.max(np.abs(step / H))))
-        if history[-1] < 4e-16:
-            return H
-    raise ConvergenceError("change_of_state: Newton on the parabolic cubic did not converge", history)
 
 
 class ChangeOfState:
@@ -222,19 +160,25 @@ def change_of_state(
 ) -> ChangeOfState:
     """Sag and tension of a cable in other states at its unstressed length.
 
+    One span, or a whole line of spans at once: with ``span``, ``dh`` arrays (of one shape,
+    e.g. ``(n,)``) and states of shape ``(m,)``, every result has shape ``(n, m)`` (the spans'
+    shape followed by the states'), computed by one vectorised solve and residual-checked
+    element by element (`skcable.cable.conductors`, the line path).
+
     Parameters
     ----------
-    span, dh : float
-        Horizontal distance between the supports (> 0) and height of B above A.
+    span, dh : float or array_like
+        Horizontal distance between the supports (> 0) and height of B above A, of one span
+        or broadcast together over the spans of a line.
     EA : float
         Axial stiffness (> 0).
     alpha : float
         Coefficient of thermal expansion (1/K), finite.
     w0, t0 : float
         Reference state: weight per length (> 0, no wind) and temperature.
-    H0, sag0 : float
+    H0, sag0 : float or array_like
         Exactly one: the horizontal tension or the sag (vertical distance
-        chord–cable, largest) of the reference state.
+        chord–cable, largest) of the reference state; one number, or one per span.
     w, t, wind : float or array_like
         The states: vertical load per unstressed reference length including
         ice (> 0), temperature, transverse (horizontal, perpendicular to the
@@ -249,72 +193,54 @@ def change_of_state(
     Returns
     -------
     ChangeOfState
-        ``H, H_plane, sag, T_max, length, blowout, L0`` over the states.
+        ``H, H_plane, sag, T_max, length, blowout`` over the spans × states; ``L0``,
+        ``H0``, ``sag0`` per span (floats for one span).
 
     Raises
     ------
     InputError
         A non-physical argument, both or neither of ``H0``, ``sag0``, an
-        unknown model, a thermal factor ``1 + alpha (t - t0) <= 0``.
+        unknown model, a thermal strain ``alpha (t - t0)`` outside (-1, 1).
     ConvergenceError
         A solver stopped (with its history).
     """
     if not isinstance(model, str) or model not in _MODELS:
         raise InputError("model", f"must be one of {_MODELS}, got {model!r}")
-    span, dh = scalar("span", span), scalar("dh", dh)
-    positive("span", span)
-    EA = scalar("EA", EA)
-    positive("EA", EA)
+    span, dh = normal("span", span), real("dh", dh)
+    lead = broadcast(span=span, dh=dh)
+    EA = normal("EA", scalar("EA", EA))
     alpha, t0 = scalar("alpha", alpha), scalar("t0", t0)
-    w0 = scalar("w0", w0)
-    positive("w0", w0)
-    if (H0 is None) == (sag0 is None):
-        got = "both" if H0 is not None else "neither"
-        raise InputError("H0", f"give exactly one of H0, sag0 for the reference state; got {got}")
-    if H0 is not None:
-        H0 = scalar("H0", H0)
-        positive("H0", H0)
-    else:
-        sag0 = scalar("sag0", sag0)
-        positive("sag0", sag0)
-    w, t, wind = positive("w", w), real("t", t), nonnegative("wind", wind)
+    w0 = normal("w0", scalar("w0", w0))
+    H0, sag0 = _reference_input(H0, sag0, lead)
+    w, t, wind = normal("w", w), real("t", t), nonnegative("wind", wind)
     shape = broadcast(w=w, t=t, wind=wind)
     w, t, wind = (np.array(np.broadcast_to(v, shape), dtype=float) for v in (w, t, wind))
-    k = _thermal_factor(alpha, t, t0)
-    q, span_p, dh_p = _plane(span, dh, w, wind)
-    chord = np.hypot(span, dh)
-    cos0 = span / chord
+    k = thermal_factor(alpha, t, t0)
+    if lead:
+        from skcable.cable.conductors._lines import line_change_of_state
+
+        ref = (H0 if H0 is not None else sag0, "H0" if H0 is not None else "sag0")
+        out = line_change_of_state(span, dh, EA, alpha, w0, t0, ref, w, t, wind, k, model)
+        out.update(w=w, t=t, wind=wind, model=model)
+        return ChangeOfState(**out)
+    q, span_p, dh_p = load_plane(span, dh, w, wind)
     if model == "catenary":
-        L0 = _reference_length(span, dh, w0, EA, H0, sag0)
-        ref = elastic_catenary(span, dh, w0, EA, length=L0)
+        ref_name = "H0" if sag0 is None else "sag0"
+        with renamed({"H": "H0", "sag": "sag0", "w": "w0", "length": ref_name}):
+            L0 = reference_length(span, dh, w0, EA, H0, sag0)
+            ref = elastic_catenary(span, dh, w0, EA, length=L0)
         H0_out, sag0_out = ref.H, ref.sag
-        sol = elastic_catenary(span_p, dh_p, q / k, EA * k, length=L0 * k)
+        with renamed({"H": "w", "length": ref_name}):
+            sol = elastic_catenary(span_p, dh_p, q / k, EA * k, length=L0 * k)
         H_plane, sag = sol.H, sol.sag
         T_max, length = np.maximum(sol.T_A, sol.T_B), sol.stretched_length
         for name, value in (("H", H_plane), ("sag", sag)):  # the solver's residual is checked inside
             if not np.all(np.isfinite(value)):
                 raise ConvergenceError(f"change_of_state: non-finite {name}")
     else:
-        if H0 is None:
-            H0 = w0 * span**2 / (8.0 * sag0 * cos0)
-        H0_out, sag0_out = H0, w0 * span**2 / (8.0 * H0 * cos0)
-        cos = span_p / chord
-        excess0 = (w0 * span * cos0) ** 2 / (24.0 * H0**2)  # (S0 - c) / c
-        L0 = chord * (1.0 + excess0) - H0 * chord / (EA * cos0)
-        if not L0 > 0:
-            name = "H0" if sag0 is None else "sag0"
-            raise InputError(
-                name,
-                "the reference state stretches the cable by more than its length (H0/(EA cos psi) "
-                f"= {H0 / (EA * cos0):.3g}): the parabolic equation, a small-strain form, does not apply",
-            )
-        b = -H0 * cos / cos0 + EA * cos * (alpha * (t - t0)) + EA * cos * excess0
-        d = EA * cos * (q * span_p * cos) ** 2 / 24.0
-        H_plane = _cubic(b, d)
-        sag = q * span_p**2 / (8.0 * H_plane * cos)
-        tan = dh_p / span_p
-        T_max = np.hypot(H_plane, H_plane * np.abs(tan) + q * span_p / (2.0 * cos))
-        length = chord * (1.0 + (q * span_p * cos) ** 2 / (24.0 * H_plane**2))
+        L0, H0_out, sag0_out, H_plane, sag, T_max, length = parabola_states(
+            span, dh, EA, alpha, w0, t0, H0, sag0, t, q, span_p, dh_p
+        )
     H = H_plane * span / span_p
     blowout = np.arctan2(wind, w)
     out = dict(H=H, H_plane=H_plane, sag=sag, T_max=T_max, length=length, blowout=blowout)
@@ -328,6 +254,23 @@ def change_of_state(
     return ChangeOfState(**out, L0=float(L0), H0=float(H0_out), sag0=float(sag0_out), model=model)
 
 
+def _reference_input(H0, sag0, lead):
+    """Exactly one of ``H0``, ``sag0``: a normal positive number, or one per span."""
+    if (H0 is None) == (sag0 is None):
+        got = "both" if H0 is not None else "neither"
+        raise InputError("H0", f"give exactly one of H0, sag0 for the reference state; got {got}")
+    name, value = ("H0", H0) if H0 is not None else ("sag0", sag0)
+    value = normal(name, value if lead else scalar(name, value))
+    if lead and np.ndim(value):
+        try:
+            fits = np.broadcast_shapes(np.shape(value), lead) == lead
+        except ValueError:
+            fits = False
+        if not fits:
+            raise InputError(name, f"must be one number or one per span ({lead}), got {np.shape(value)}")
+    return (value, None) if name == "H0" else (None, value)
+
+
 def sag_tension_table(
     span, dh, *, EA, alpha, w0, t0, H0=None, sag0=None, temperatures, load_cases, model="catenary"
 ):
@@ -337,7 +280,9 @@ def sag_tension_table(
     including ice, transverse wind per length); ``temperatures`` is a
     sequence. The other arguments are those of `change_of_state`. The index
     is ``(case, t)``; the columns ``w, wind, H, sag, T_max, length,
-    blowout_deg``.
+    blowout_deg``. For a line (``span`` a 1-D array, ``dh`` and ``H0`` or ``sag0``
+    one number or one per span) the index is ``(span_no, case, t)`` and the columns
+    start with the span's ``span, dh``: one vectorised solve for the whole table.
     """
     import pandas as pd
 
@@ -353,18 +298,31 @@ def sag_tension_table(
         raise InputError("load_cases", f"each value must be a pair (w, wind) of numbers ({exc})") from None
     if loads.shape != (len(names), 2):
         raise InputError("load_cases", "each value must be a pair (w, wind)")
-    res = change_of_state(
-        span, dh, EA=EA, alpha=alpha, w0=w0, t0=t0, H0=H0, sag0=sag0,
-        w=loads[:, :1], t=temps[None, :], wind=loads[:, 1:], model=model,
-    )  # fmt: skip
-    index = pd.MultiIndex.from_product([names, temps], names=["case", "t"])
+    with renamed({"t": "temperatures", "w": "load_cases", "wind": "load_cases"}):
+        res = change_of_state(
+            span, dh, EA=EA, alpha=alpha, w0=w0, t0=t0, H0=H0, sag0=sag0,
+            w=loads[:, :1], t=temps[None, :], wind=loads[:, 1:], model=model,
+        )  # fmt: skip
+    n_states = len(names) * temps.size
     data = {
         "w": np.repeat(loads[:, 0], temps.size),
         "wind": np.repeat(loads[:, 1], temps.size),
-        "H": np.ravel(res.H),
-        "sag": np.ravel(res.sag),
-        "T_max": np.ravel(res.T_max),
-        "length": np.ravel(res.length),
-        "blowout_deg": np.degrees(np.ravel(res.blowout)),
+        "H": np.reshape(res.H, (-1, n_states)),
+        "sag": np.reshape(res.sag, (-1, n_states)),
+        "T_max": np.reshape(res.T_max, (-1, n_states)),
+        "length": np.reshape(res.length, (-1, n_states)),
+        "blowout_deg": np.degrees(np.reshape(res.blowout, (-1, n_states))),
     }
+    if np.ndim(res.L0) == 0:
+        index = pd.MultiIndex.from_product([names, temps], names=["case", "t"])
+        data = {key: np.ravel(value) for key, value in data.items()}
+    else:
+        if np.ndim(res.L0) != 1:
+            shape = np.shape(res.L0)
+            raise InputError("span", f"a table takes one span or a 1-D line of spans, got shape {shape}")
+        n = res.L0.size
+        index = pd.MultiIndex.from_product([range(n), names, temps], names=["span_no", "case", "t"])
+        spans, dhs = np.broadcast_arrays(np.asarray(span, dtype=float), np.asarray(dh, dtype=float))
+        line = {"span": np.repeat(np.ravel(spans), n_states), "dh": np.repeat(np.ravel(dhs), n_states)}
+        data = line | {key: np.ravel(np.broadcast_to(value, (n, n_states))) for key, value in data.items()}
     return pd.DataFrame(data, index=index)

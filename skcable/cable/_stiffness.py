@@ -116,7 +116,7 @@ def fairlead_stiffness(solution):
     InputError
         Another kind of solution, or a stiffness beyond the range of a float.
     """
-    if isinstance(solution, (Catenary, Parabola, ElasticCatenary, SeabedCatenary)):
+    if callable(getattr(solution, "stiffness", None)):  # any solution of the result protocol
         k = solution.stiffness()
     else:
         raise InputError(

@@ -167,11 +167,12 @@ class CableSolution:
         """Downward distributed load per unit unstretched cable length (N/m) at ``x``."""
         raise NotImplementedError
 
-    def to_vtk(self, path, n: int = 201):
-        """Write the profile as a VTK polyline (see `skcable.io.cable_mesh`); returns the path."""
+    def to_vtk(self, path, n: int = 201, *, point_data=None):
+        """Write the profile as a VTK polyline (see `skcable.io.cable_mesh`, which also takes the
+        user's ``point_data``); returns the path."""
         from skcable.io import cable_mesh, write
 
-        return write(cable_mesh(self, n), path)
+        return write(cable_mesh(self, n, point_data=point_data), path)
 
     def points(self, n: int = 101) -> np.ndarray:
         """Profile sampled at ``n`` equally spaced x: array ``(*shape, n, 2)``."""

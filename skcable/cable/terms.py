@@ -43,7 +43,7 @@ from skcable._checks import nonnegative, positive, real
 from skcable.errors import InputError
 from skcable.fe.terms import Term
 
-__all__ = ["Buoyancy", "CableForce", "CableState", "CableTerm", "CurrentDrag", "WindDrag"]
+__all__ = ["Buoyancy", "CableForce", "CableState", "CableTerm", "CurrentDrag", "WindDrag", "term_outputs"]
 
 
 @dataclass(frozen=True)
@@ -110,6 +110,20 @@ class CableTerm(Term):
     def forces(self, state: CableState) -> CableForce:
         """The force per unit unstretched length at ``state`` and its derivatives."""
         raise NotImplementedError
+
+    def outputs(self, state: CableState, force: CableForce) -> dict:
+        """Named point data for the results and the VTK files, at the points of ``state``:
+        by default the force itself, ``<Term>_force_N_per_m`` (2, *P)."""
+        return {f"{type(self).__name__}_force_N_per_m": np.asarray(force.f, dtype=float)}
+
+
+def term_outputs(terms, state: CableState) -> dict:
+    """Every term's `CableTerm.outputs` at ``state``, names made unique."""
+    out = {}
+    for term in terms:
+        for name, values in term.outputs(state, term.forces(state)).items():
+            out[name if name not in out else f"{name}_{len(out)}"] = values
+    return out
 
 
 def _profile(name: str, value):

@@ -47,7 +47,7 @@ def _body_box(result) -> np.ndarray:
 def _polylines(lines, n):
     """Points, tension, segment cells and line numbers of lines with ``profile(n)``."""
     n = whole("n", n, 2)
-    profiles = [line.profile(n) for line in lines]
+    profiles = [line.profile_with_tension(n) for line in lines]
     if not profiles:
         raise InputError("lines", "holds no line")
     sizes = [len(xyz) for xyz, _ in profiles]

@@ -37,17 +37,28 @@ def _polyline(points_2d) -> tuple[np.ndarray, list]:
     return points, [("line", segments)]
 
 
-def cable_mesh(solution, n: int = 201) -> meshio.Mesh:
+def _vector3(values) -> np.ndarray:
+    """Point data as VTK wants it: scalars as they are, 2-D vectors padded with z = 0."""
+    values = np.asarray(values, dtype=float)
+    if values.ndim == 2 and values.shape[1] == 2:
+        return np.column_stack([values, np.zeros(len(values))])
+    return values
+
+
+def cable_mesh(solution, n: int = 201, *, point_data=None) -> meshio.Mesh:
     """Profile of a suspended-cable solution as a polyline of ``n`` points.
 
     Point data: ``tension_N``, ``tangent`` (unit vector toward B),
     ``angle_rad`` (above the horizontal), ``load_N_per_m`` (per metre of
-    unstretched cable, y up: a weight has a negative y component). Reads
-    only ``solution.samples(n)`` (and ``H``, to refuse an array of scenes).
+    unstretched cable, y up: a weight has a negative y component), the cable terms'
+    outputs (``samples["outputs"]``: their forces, ``<Term>_force_N_per_m``, and what else
+    they name), and the user's ``point_data``: name -> values at the ``n`` points, or a
+    callable of the samples dict returning them. Reads only ``solution.samples(n)`` (and
+    ``T_A``, to refuse an array of scenes).
     """
     import meshio
 
-    if np.ndim(solution.H) != 0:
+    if np.ndim(solution.T_A) != 0:
         raise InputError("solution", "write one scene at a time: this solution holds an array of scenes")
     if int(n) < 2:
         raise InputError("n", f"must be at least 2, got {n!r}")
@@ -55,13 +66,23 @@ def cable_mesh(solution, n: int = 201) -> meshio.Mesh:
     points, cells = _polyline(samples["xy"])
     angle = samples["angle"]
     zero = np.zeros_like(angle)
-    point_data = {
+    data = {
         "tension_N": samples["tension"],
         "tangent": np.column_stack([np.cos(angle), np.sin(angle), zero]),
         "angle_rad": angle,
         "load_N_per_m": np.column_stack([samples["load"], zero]),
     }
-    return meshio.Mesh(points, cells, point_data=point_data)
+    extra = dict(samples.get("outputs", {}))
+    for name, values in (point_data or {}).items():
+        extra[name] = values(samples) if callable(values) else values
+    for name, values in extra.items():
+        values = _vector3(values)
+        if values.shape[:1] != (len(points),):
+            raise InputError(
+                name, f"point data of shape {values.shape}: give one value per point ({len(points)})"
+            )
+        data[name] = values
+    return meshio.Mesh(points, cells, point_data=data)
 
 
 def funicular_mesh(solution) -> meshio.Mesh:

@@ -50,6 +50,7 @@ if TYPE_CHECKING:  # what static tools see; at run time, `attach` below serves t
         StrandSupports,
         TensionlessFoundation,
         Term,
+        TransverseLoad,
         WireBending,
         default_physics,
     )
@@ -96,6 +97,7 @@ _NAMES = {
         "StrandSupports",
         "TensionlessFoundation",
         "Term",
+        "TransverseLoad",
         "WireBending",
         "default_physics",
     ),
@@ -104,6 +106,7 @@ _NAMES = {
 __getattr__, __dir__ = attach(__name__, submodules=("fe", "capacity"), names=_NAMES)
 
 __all__ = [
+    "TransverseLoad",
     "DOFS",
     "END_CONDITIONS",
     "FIELDS",

@@ -28,6 +28,7 @@ from math import pi, radians
 import numpy as np
 
 from skcable.errors import InputError
+from skcable.strand._catalogue import ENTRIES, INCH, LAY_RATIO, aluminium_layers, entry, layer_counts
 from skcable.strand._material import Material, WireMaterials, _integer, _name, _scalar, material
 
 __all__ = ["Layer", "Strand", "Wires", "preset"]
@@ -428,6 +429,31 @@ def _acsr(name: str) -> Strand:
     return Strand(steel_d, tuple(layers), aluminium, name=name, core_material=steel)
 
 
+def catalogue_strand(name: str) -> Strand:
+    """The `Strand` of a catalogue entry (module text: layers, lay ratios, materials)."""
+    e = entry(name)
+    steel_m, al_m = material("steel"), material("aluminium")
+    if e.kind == "AAAC":
+        al_m = replace(al_m, density=2690.0, name="aluminium 6201-T81 (1350 law)")
+    n_st, d_st = e.steel[0], e.steel[1] * INCH
+    n_al, d_al = e.aluminium[0], e.aluminium[1] * INCH
+    if n_st:
+        specs = [(c, d_st, steel_m) for c in layer_counts(n_st)] + [
+            (c, d_al, al_m) for c in aluminium_layers(n_al, n_st)
+        ]
+        core_d, core_m = d_st, steel_m
+    else:
+        specs = [(c, d_al, al_m) for c in layer_counts(n_al)]
+        core_d, core_m = d_al, al_m
+    layers, outside = [], core_d
+    for k, (count, d, m) in enumerate(specs):
+        outside = outside + 2 * d
+        kind = "steel" if m is steel_m else ("outer" if k == len(specs) - 1 else "inner")
+        direction = 1 if (len(specs) - 1 - k) % 2 == 0 else -1
+        layers.append(Layer(count, d, lay_length=LAY_RATIO[kind] * outside, direction=direction, material=m))
+    return Strand(core_d, tuple(layers), al_m, name=e.name, core_material=core_m)
+
+
 def preset(name: str) -> Strand:
     """A preset strand.
 
@@ -441,11 +467,22 @@ def preset(name: str) -> Strand:
     strand's ``material`` is aluminium, ``core_material`` and the first layer's steel (the wire
     laws of Pino Vidal (2021), Table B.1, with the densities and expansion coefficients of
     IEC 61089:1991).
+
+    Every size of the conductor catalogue (ACSR of ASTM B232, AAC of B231, AAAC of B399:
+    ``"acsr-partridge"``, ``"aac-arbutus"``, ``"aaac-greeley"`` ...; see
+    `skcable.cable.conductors.catalogue`), built from its stranding. An unknown name is refused
+    with the nearest known names.
     """
     if isinstance(name, str) and name in _ACSR:
         return _acsr(name)
     if not isinstance(name, str) or name not in _TABLE_3_1:
-        known = ", ".join([*_TABLE_3_1, *_ACSR])
-        raise InputError("name", f"unknown strand {name!r}; known: {known}")
+        if isinstance(name, str) and name.lower() in ENTRIES:
+            return catalogue_strand(name)
+        import difflib
+
+        known = [*_TABLE_3_1, *_ACSR, *ENTRIES]
+        near = difflib.get_close_matches(str(name).lower(), known, n=4, cutoff=0.5)
+        hint = f"nearest: {', '.join(near)}" if near else f"known: {', '.join(known)}"
+        raise InputError("name", f"unknown strand {name!r}; {hint}")
     d, mat, _nominal, alpha = _TABLE_3_1[name]
     return Strand(d, (Layer(6, d, lay_angle=radians(alpha)),), material(mat), name=name)

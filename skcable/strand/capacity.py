@@ -18,6 +18,7 @@ import numpy as np
 from skcable import _plausible
 from skcable._checks import positive
 from skcable.errors import ConvergenceError, InputError
+from skcable.fe.continuation import StepControl
 
 __all__ = ["CapacityCurve", "StepResult", "StrandLayout", "capacity_curve"]
 
@@ -400,7 +401,8 @@ def capacity_curve(
     most strained wire reaches eps_rupture, and its last step is solved there). A step
     that fails is halved; the cut increment is kept until two steps in a row converge
     at it (then it doubles), down to 1/64 of the schedule's step. The slip state is
-    frozen in each Newton solve and updated between solves (at most ``state_passes``).
+    frozen in each Newton solve and updated between solves (at most ``state_passes``); the
+    step lengths follow `skcable.fe.continuation.StepControl`.
     When a step still fails, ``on_failure="raise"`` (default) raises ConvergenceError;
     ``on_failure="stop"`` returns the converged part with ``failure`` set.
     ``callback(step, done)``, if given, is called after every converged step
@@ -448,15 +450,12 @@ def capacity_curve(
     )[1:]
     state = model.initial_state()
     strains, forces, fractions, steps, chatter = [0.0], [0.0], [0.0], [], []
-    U, eps, previous, cutbacks = None, 0.0, None, 0
+    U, eps, previous = None, 0.0, None
     ruptured, failure = False, None
-    limit, streak = np.inf, 0  # after a cutback the increment stays reduced (see below)
-    previous_goal = 0.0
-    for goal in schedule:
-        smallest = (goal - previous_goal) / 2**6  # at most six halvings of the schedule's increment
-        previous_goal = goal
+    control = StepControl(schedule)  # cut, hold, grow and lift the strain increments
+    for goal, smallest in control.goals():
         while eps < goal - 1e-15 and failure is None:
-            target = min(goal, eps + limit)
+            target = control.target(eps, goal)
             cut = False
             while True:
                 try:
@@ -464,30 +463,21 @@ def capacity_curve(
                     result = model.solve(target, guess, state, passes=state_passes, options=solve_options)
                     break
                 except ConvergenceError as exc:
-                    last = exc
-                    cutbacks += 1
-                    cut = True
-                    if 0.5 * (target - eps) < smallest * (1 - 1e-9):
+                    last, cut = exc, True
+                    target = control.cut(eps, target, smallest)
+                    if target is None:
                         failure = (
                             f"no convergence beyond strain {eps:.6g} (increment cut to 1/64 of the step)"
                         )
                         failure += _softening_note(model, steps[-1] if steps else None)
                         break
-                    target = eps + 0.5 * (target - eps)
             if failure is not None:
                 if on_failure == "raise":
                     raise ConvergenceError("capacity_curve: " + failure, last.history) from last
                 break
+            control.accept(eps, target, cut)
             previous, step = (U, eps), result
             U, state = step.dofs, step.state
-            # a cut increment is kept; it doubles after two steps in a row converge at it
-            streak = 0 if cut else streak + 1
-            if cut:
-                limit = target - eps
-            elif np.isfinite(limit) and streak >= 2:
-                limit, streak = 2.0 * limit, 0
-            if limit >= np.max(np.diff(schedule)):
-                limit = np.inf
             if not step.settled:
                 chatter.append(len(steps))
             eps = target
@@ -529,7 +519,7 @@ def capacity_curve(
         chatter,
         n_steps,
         failure,
-        cutbacks,
+        control.cutbacks,
         solve_options,
     )
 

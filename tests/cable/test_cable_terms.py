@@ -254,3 +254,32 @@ def test_a_free_end_loaded_by_a_force_lands_where_the_elastic_catenary_says():
         cable.solve_bvp(300.0, 100.0, cable.SelfWeight(w), sag=20.0, end_force=(Fx, Fy))
     with pytest.raises(InputError, match="end_force"):
         cable.solve_bvp(300.0, 100.0, cable.SelfWeight(w), length=L, end_force=(Fx,))
+
+
+def test_cable_term_outputs_and_user_fields_reach_the_vtk_file(tmp_path):
+    import meshio
+
+    drag = cable.CurrentDrag(1.5, 0.1, cd_tangential=0.01, surface=50.0)
+    sol = cable.solve_bvp(SPAN, DH, [cable.SelfWeight(W), drag], length=LENGTH, EA=EA, n_elements=64)
+    path = sol.to_vtk(
+        tmp_path / "line.vtu", n=41, point_data={"depth_m": lambda samples: 50.0 - samples["xy"][:, 1]}
+    )
+    mesh = meshio.read(path)
+    force = mesh.point_data["CurrentDrag_force_N_per_m"]
+    assert force.shape == (41, 3) and np.all(force[:, 2] == 0)
+    # the drag written is the term's own force at the written points
+    samples = sol.samples(41)
+    np.testing.assert_allclose(
+        force[:, :2],
+        samples["outputs"]["CurrentDrag_force_N_per_m"],
+        rtol=0,
+        atol=1e-12 * np.abs(force).max(),
+    )
+    np.testing.assert_allclose(mesh.point_data["depth_m"], 50.0 - mesh.points[:, 1], rtol=1e-12)
+    graph = cable.solve_bvp(
+        SPAN, DH, [cable.SelfWeight(W), cable.Buoyancy(AREA, surface=60.0)], length=LENGTH
+    )
+    up = meshio.read(graph.to_vtk(tmp_path / "graph.vtu", n=11)).point_data["Buoyancy_force_N_per_m"]
+    np.testing.assert_allclose(up[:, 1], RHO * G * AREA, rtol=1e-12)
+    with pytest.raises(InputError, match="short"):
+        sol.to_vtk(tmp_path / "bad.vtu", n=41, point_data={"short": np.zeros(3)})

@@ -267,7 +267,7 @@ def test_tension_along_the_line(line, span, dh):
         assert arc == pytest.approx(stretched, rel=1e-8)
     assert table["grounded_length"].sum() == pytest.approx(sol.length_on_seabed, rel=1e-14)
     # strain: dx/ds along the grounded part is 1 + T/EA (central differences)
-    px, py = sol.profile(50)
+    px, py = sol.outline(50).T
     floor = -np.inf if line.seabed is None else line.seabed
     assert px[0] == 0.0 and px[-1] == pytest.approx(span) and np.all(py >= floor - 1e-9 * span)
 

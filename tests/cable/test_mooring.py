@@ -10,6 +10,7 @@ and MoorPy's ``System`` on the same layout (an independent implementation).
 import importlib.util
 import json
 import runpy
+import warnings
 from pathlib import Path
 
 import meshio
@@ -18,7 +19,7 @@ import pytest
 from scipy.spatial.transform import Rotation
 
 from skcable import cable, cli
-from skcable.errors import ConvergenceError, InputError
+from skcable.errors import ConvergenceError, InputError, PlausibilityWarning
 
 ROOT = Path(__file__).resolve().parents[2]
 EXAMPLE = runpy.run_path(str(ROOT / "examples" / "spread_mooring.py"))
@@ -40,7 +41,7 @@ def test_single_line_force_is_the_2d_solution_rotated():
     weight_left = flat.w * (flat.length - flat.length_on_seabed)
     total = line.force_on_fairlead + line.force_on_anchor + friction + [0.0, 0.0, weight_left]
     assert np.abs(total).max() < 1e-9 * flat.H
-    points, tension = line.profile(51)
+    points, tension = line.profile_with_tension(51)
     np.testing.assert_allclose(points[[0, -1]], [anchor, fairlead], atol=1e-6)
     assert tension[-1] == pytest.approx(line.tension_at_fairlead, rel=1e-12)
 
@@ -342,7 +343,9 @@ def test_cli_line_free_and_vtk(capsys, tmp_path):
     assert status == 0 and err == ""
     values = json.loads(out)
     ref = cable.elastic_catenary(380.0, 60.0, 200.0, 1e8, length=400.0)  # Irvine's, no seabed
-    assert values["H"] == ref.H and values["H_A"] == ref.H and values["V_A"] == ref.V_A
+    # two solvers, each to its own round-off (the Line's closure to ~1e-15, Irvine's to ~1e-12)
+    assert values["H"] == pytest.approx(ref.H, rel=1e-11) and values["H_A"] == values["H"]
+    assert values["V_A"] == pytest.approx(ref.V_A, rel=1e-11)
     assert values["length_on_seabed"] == 0.0
     mesh = meshio.read(tmp_path / "line.vtu")
     assert mesh.point_data["tension_N"][-1] == pytest.approx(ref.T_B, rel=1e-12)
@@ -450,7 +453,7 @@ def test_equilibrium_with_a_line_in_a_heap_matches_moorpy():
     assert [line.solution.heap for line in eq.lines] == [True, False, False]
     heap = eq.lines[0]
     assert heap.H == 0.0 and heap.V_B > 0 and heap.solution.x_touchdown == heap.span
-    points, tension = heap.profile(51)  # vertical under the fairlead, the slack on the seabed
+    points, tension = heap.profile_with_tension(51)  # vertical under the fairlead, the slack on the seabed
     np.testing.assert_allclose(points[-1], heap.fairlead, rtol=0, atol=1e-9 * heap.span)
     assert np.all(points[:, 2] >= -200.0 - 1e-9) and tension[-1] == pytest.approx(heap.V_B, rel=1e-12)
     q = eq.position
@@ -485,3 +488,159 @@ def test_equilibrium_with_a_line_in_a_heap_matches_moorpy():
     np.testing.assert_allclose(eq.position[:3], r6[:3], atol=1e-5)
     np.testing.assert_allclose(eq.position[3:], r6[3:], atol=1e-8)
     np.testing.assert_allclose([line.tension_at_fairlead for line in eq.lines], tensions, rtol=1e-7)
+
+
+# -- D3: lines that start slack on the seabed ----------------------------------------------
+def slack_scene(seed):
+    """A point buoy held by 3-4 chains from anchors around it, each chain longer than its
+    L-shape at the buoy's start (its slack in a heap, H = 0: no horizontal stiffness
+    there), pushed by a horizontal force that some of them can hold."""
+    rng = np.random.default_rng(seed)
+    n = int(rng.integers(3, 5))
+    depth = float(rng.uniform(50.0, 300.0))
+    radius = float(rng.uniform(1.0, 4.0)) * depth
+    angles = np.radians(rng.uniform(0, 360) + np.arange(n) * 360 / n + rng.uniform(-15, 15, n))
+    anchors = np.column_stack([radius * np.cos(angles), radius * np.sin(angles), np.full(n, -depth)])
+    w, EA = float(rng.uniform(200.0, 2000.0)), float(rng.uniform(1e8, 1e9))
+    length = (radius + depth) * float(rng.uniform(1.02, 1.3))
+    chain = cable.Line([cable.Segment(length, w, EA)], seabed=0.0)
+    volume = 2.0 * w * depth * n / (1025.0 * 9.81)
+    buoy = cable.PointBody(volume=volume, waterplane_area=float(rng.uniform(20.0, 500.0)))
+    push, phi = float(rng.uniform(0.15, 1.5)) * w * depth, rng.uniform(0.0, 2.0 * np.pi)
+    force = np.array([push * np.cos(phi), push * np.sin(phi), 0.0])
+    return cable.MooringSystem(buoy, [chain] * n, anchors, depth=depth), force, (length, w, EA)
+
+
+def _recount(system, eq, force, chain):
+    """Net force on the buoy from the equilibrium's position, each chain re-solved by the
+    seabed closed form (`elastic_catenary`, not `Line`), the buoy's own loads written here."""
+    length, w, EA = chain
+    p = eq.position
+    total = np.array(force, dtype=float)
+    for anchor in system.anchors:
+        d = p - anchor
+        span = float(np.hypot(d[0], d[1]))
+        sol = cable.elastic_catenary(span, float(d[2]), w, EA, length=length, seabed=0.0)
+        total += [-sol.H * d[0] / span, -sol.H * d[1] / span, -sol.V_B]
+    body = system.body
+    total[2] += 1025.0 * 9.81 * (body.volume - body.waterplane_area * p[2])
+    return total
+
+
+@pytest.mark.parametrize("seed", range(12))
+def test_equilibrium_from_slack_lines(seed):
+    system, force, chain = slack_scene(seed)
+    start = system.solve_lines(np.zeros(3))
+    assert all(line.solution.heap for line in start)  # every chain slack at the start
+    assert np.abs(system.stiffness(np.zeros(3))[:2, :2]).max() == 0.0  # no horizontal stiffness there
+    eq = system.equilibrium(force=force)
+    assert eq.stable and any(line.H > 0 for line in eq.lines)
+    scale = max(np.abs(eq.fairlead_forces).max(), np.linalg.norm(force))
+    assert np.abs(_recount(system, eq, force, chain)).max() < 1e-8 * scale
+    # a start beyond the slack region converges to the same equilibrium
+    far = system.equilibrium(force=force, start=eq.position + [20.0, -10.0, 0.0])
+    np.testing.assert_allclose(far.position, eq.position, atol=1e-7 * system.depth)
+
+
+def test_slack_start_matches_moorpy():
+    moorpy = pytest.importorskip("moorpy")
+    for seed in range(4):
+        system, force, (length, w, EA) = slack_scene(seed)
+        eq = system.equilibrium(force=force)
+        ms = moorpy.System(depth=system.depth)
+        ms.setLineType(dnommm=100, material="chain", name="chain")
+        ms.lineTypes["chain"].update(w=w, EA=EA, m=w / 9.81, d_vol=0.0)
+        body = system.body
+        ms.addBody(0, np.zeros(6), v=body.volume, AWP=body.waterplane_area, f6Ext=np.r_[force, 0, 0, 0],
+                   DOFs=[0, 1, 2])  # fmt: skip
+        for i, anchor in enumerate(system.anchors):
+            ms.addPoint(1, anchor)
+            ms.addPoint(1, np.zeros(3))
+            ms.bodyList[0].attachPoint(2 * i + 2, np.zeros(3))
+            ms.addLine(length, "chain", pointA=2 * i + 1, pointB=2 * i + 2)
+        ms.initialize()
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore")  # MoorPy divides by the zero arm of its points
+            assert ms.solveEquilibrium(tol=1e-8, maxIter=500)
+        # MoorPy solves each line to 1e-4 m on its end point
+        np.testing.assert_allclose(eq.position, ms.bodyList[0].r6[:3], atol=1e-4)
+
+
+# -- D6: unstable (capsized) equilibria ------------------------------------------------------
+def _turned(angle):
+    """The example's platform and lines turned by ``angle`` about z (anchors, fairleads, loads)."""
+    c, s = np.cos(angle), np.sin(angle)
+    Rz = np.array([[c, -s, 0.0], [s, c, 0.0], [0.0, 0.0, 1.0]])
+    system = EXAMPLE["system"]()
+    body = system.body
+    turned = cable.RigidBody(
+        body.fairleads @ Rz.T,
+        mass=body.mass,
+        volume=body.volume,
+        center_of_gravity=body.center_of_gravity,
+        metacentre=body.metacentre,
+        waterplane_area=body.waterplane_area,
+    )
+    moored = cable.MooringSystem(turned, system.lines, system.anchors @ Rz.T, depth=system.depth)
+    return moored, Rz @ np.array(EXAMPLE["FORCE"]), Rz @ np.array(EXAMPLE["MOMENT"])
+
+
+def _upside_down_root(system, force, moment):
+    """The capsized root Newton reaches from a start heeled by 2.8 rad (no stability check)."""
+    from skcable.cable.lines.equilibrium import _Newton
+
+    solve = _Newton(system, np.concatenate([force, moment]), 1e-10, 60)
+    return solve.run(np.array([0.0, 0.0, 0.0, 2.8, 0.1, 0.0]))
+
+
+@pytest.mark.parametrize("angle", [0.0, 0.7, 2.0])
+def test_capsized_root_is_passed_over_for_the_stable_one(angle):
+    system, force, moment = _turned(angle)
+    root = _upside_down_root(system, force, moment)
+    R = system.body.rotation(root.x)
+    assert np.arccos(R[2, 2]) > 2.5  # capsized
+    K = root.state[1]
+    arm = np.abs(system.body.fairleads).max()
+    units = np.r_[np.ones(3), np.full(3, arm)]
+    Ks = K / units[:, None] / units[None, :]
+    assert np.linalg.eigvalsh(0.5 * (Ks + Ks.T))[0] < 0  # unstable, by the eigenvalues written here
+    eq = system.equilibrium(force=force, moment=moment, start=[0.0, 0.0, 0.0, 2.8, 0.1, 0.0])
+    assert eq.stable and eq.eigenvalues[0] > 0 and len(eq.unstable_found) >= 1
+    # the stable equilibrium of the scene as the default start finds it, turned
+    upright = EXAMPLE["system"]().equilibrium(force=EXAMPLE["FORCE"], moment=EXAMPLE["MOMENT"])
+    c, s = np.cos(angle), np.sin(angle)
+    Rz = np.array([[c, -s, 0.0], [s, c, 0.0], [0.0, 0.0, 1.0]])
+    np.testing.assert_allclose(eq.offset, Rz @ upright.offset, atol=1e-6)
+    assert eq.heel == pytest.approx(upright.heel, abs=1e-9)
+    np.testing.assert_allclose(
+        sorted(line.tension_at_fairlead for line in eq.lines),
+        sorted(line.tension_at_fairlead for line in upright.lines),
+        rtol=1e-8,
+    )
+
+
+def test_unstable_equilibrium_is_flagged_and_warned():
+    system, force, moment = _turned(0.0)
+    root = _upside_down_root(system, force, moment)
+    # from the capsized root itself, with no iteration left for a restart to leave it
+    with pytest.warns(PlausibilityWarning, match="unstable"):
+        eq = system.equilibrium(force=force, moment=moment, start=root.x, max_iter=1)
+    assert not eq.stable and eq.eigenvalues[0] < 0 and "UNSTABLE" in repr(eq)
+
+
+# -- D7: untyped escapes -------------------------------------------------------------------
+def test_a_missing_line_model_is_named():
+    for model in (None, 3.0, "chain"):
+        with pytest.raises(InputError) as err:
+            cable.line_3d(model, (0.0, 0.0, -200.0), (500.0, 0.0, -10.0))
+        assert err.value.argument == "model"
+
+
+def test_lines_must_be_a_list_of_models():
+    chain = cable.Line([cable.Segment(850.0, 1000.0, 5e8)], seabed=0.0)
+    anchors = [[800.0, 0.0, -200.0]]
+    for lines in (5, None, chain, "chain", {0: chain}, 2.5):
+        with pytest.raises(InputError) as err:
+            cable.MooringSystem(cable.PointBody(volume=100.0), lines, anchors)
+        assert err.value.argument == "lines"
+    assert len(cable.MooringSystem(cable.PointBody(volume=100.0), (chain,), anchors).lines) == 1

@@ -82,7 +82,8 @@ def test_jacobian_equals_central_differences():
     eqs = _Section(spans, np.array([0.0, 20, -10, 0]), L0, 3e7, 21.0, 2.3e-5, 55.0, 15.0,
                    np.array([2.5, 1.5, 3.0]), np.array([600.0, 300.0, 900.0]))  # fmt: skip
     delta = np.array([0.3, -0.2, 0.5])
-    _, _, J = eqs.residual(delta)
+    _, _, (sub, diag, sup), _ = eqs.residual(delta)
+    J = np.diag(diag) + np.diag(sub[1:], -1) + np.diag(sup[:-1], 1)
     step = 1e-6
     numeric = np.column_stack(
         [
@@ -90,16 +91,14 @@ def test_jacobian_equals_central_differences():
             for e in np.eye(3)
         ]
     )
+    numeric *= np.minimum(eqs.lam, 1.0)  # the Jacobian is in delta / min(lam, 1)
     np.testing.assert_allclose(J, numeric, rtol=2e-6, atol=1e-6 * np.abs(J).max())
 
 
-def _independent(spans, dh, EA, alpha, w0, t0, H0, w, t, lam, W):
-    """The same section written afresh: unknowns the swing angles, each span Irvine's
-    elastic catenary of length k L0, weight w/k, stiffness EA k (k = 1 + alpha (t - t0)),
-    L0 from the reference tension by brentq, the balance by fsolve."""
-    spans, dh = np.asarray(spans), np.asarray(dh)
+def _reference_lengths(spans, dh, w0, EA, H0):
+    """Each span's unstressed length at H0: brentq on the elastic catenary's H, span by span."""
 
-    def reference_length(a, h):
+    def one(a, h):
         chord = np.hypot(a, h)
         return brentq(
             lambda L: cable.elastic_catenary(a, h, w0, EA, length=L).H - H0,
@@ -109,8 +108,15 @@ def _independent(spans, dh, EA, alpha, w0, t0, H0, w, t, lam, W):
             rtol=1e-15,
         )
 
-    L0 = [reference_length(a, h) for a, h in zip(spans, dh, strict=True)]
-    L0 = np.array(L0)
+    return np.array([one(a, h) for a, h in zip(spans, dh, strict=True)])
+
+
+def _independent(spans, dh, EA, alpha, w0, t0, H0, w, t, lam, W):
+    """The same section written afresh: unknowns the swing angles, each span Irvine's
+    elastic catenary of length k L0, weight w/k, stiffness EA k (k = 1 + alpha (t - t0)),
+    L0 from the reference tension by brentq, the balance by fsolve."""
+    spans, dh = np.asarray(spans), np.asarray(dh)
+    L0 = _reference_lengths(spans, dh, w0, EA, H0)
     k = 1 + alpha * (t - t0)
 
     def spans_of(phi):
@@ -182,7 +188,10 @@ def test_one_span_is_the_change_of_state():
     section = cable.tension_section([300.0], 5.0, **CONDUCTOR, w=15.0, t=60.0, **STRINGS)
     alone = cable.change_of_state(300.0, 5.0, **CONDUCTOR, w=15.0, t=60.0)
     assert section.H.shape == (1,) and section.swing.shape == (0,)
-    assert section.H[0] == pytest.approx(alone.H, rel=1e-13)
+    # both paths sit within a few 1e-12 of the 40-digit H (16659.056581833374 N): the closure
+    # fixes L0 to ~1e-14, and H/EA = 7e-4 amplifies that by EA/H in H
+    assert section.H[0] == pytest.approx(alone.H, rel=1e-11)
+    assert section.H[0] == pytest.approx(16659.056581833374, rel=4e-12)
 
 
 def test_non_convergence_raises_with_its_history(monkeypatch):
@@ -204,3 +213,93 @@ def test_a_very_stiff_taut_conductor_converges_to_its_round_off():
     assert 0 < section.moment_residual < 1e-8
     load = section.V_B[:-1] + section.V_A[1:] + 150.0
     np.testing.assert_allclose(np.tan(section.swing_angle), np.diff(section.H) / load, rtol=1e-6)
+
+
+# --- issue 26, D7 and D8 -----------------------------------------------------------------------
+
+
+@pytest.mark.parametrize("length", [1e-300, 5e-324])
+def test_a_vanishing_string_is_a_fixed_clamp(length):
+    """Once a LinAlgError (the Jacobian divided by the string's length): a string of 1e-300 m or
+    a subnormal one holds its clamp as a string of length 0 does (independent spans)."""
+    kw = dict(**CONDUCTOR, w=15.0, t=80.0, insulator_weight=600.0)
+    short = cable.tension_section([100.0, 200.0, 300.0], **kw, insulator_length=length)
+    fixed = cable.tension_section([100.0, 200.0, 300.0], **kw, insulator_length=0.0)
+    alone = [cable.change_of_state(a, 0.0, **CONDUCTOR, w=15.0, t=80.0).H for a in (100.0, 200.0, 300.0)]
+    np.testing.assert_allclose(short.H, fixed.H, rtol=1e-12)
+    np.testing.assert_allclose(fixed.H, alone, rtol=1e-11)  # the one-span path: to its ~4e-12
+
+
+def test_a_huge_string_equalises_the_tensions():
+    section = cable.tension_section(
+        [100.0, 200.0], **CONDUCTOR, w=15.0, t=20.0, insulator_length=1e308, insulator_weight=600.0
+    )
+    assert section.H[1] == pytest.approx(section.H[0], rel=1e-9)
+
+
+def test_string_weights_one_per_string():
+    kw = dict(**CONDUCTOR, w=15.0, t=60.0, insulator_length=2.5)
+    spans = [250.0, 450.0, 300.0]
+    same = cable.tension_section(spans, **kw, insulator_weight=[600.0, 600.0])
+    scalar = cable.tension_section(spans, **kw, insulator_weight=600.0)
+    np.testing.assert_array_equal(same.H, scalar.H)
+    heavy = cable.tension_section(spans, **kw, insulator_weight=[600.0, 5000.0])
+    load = heavy.V_B[:-1] + heavy.V_A[1:] + 0.5 * np.array([600.0, 5000.0])  # the weights as given
+    np.testing.assert_allclose(np.tan(heavy.swing_angle), np.diff(heavy.H) / load, rtol=1e-8)
+    for bad in ([600.0], [600.0, 600.0, 600.0], [[600.0, 600.0]], [600.0, -1.0], [600.0, "x"]):
+        with pytest.raises(InputError) as info:
+            cable.tension_section(spans, **kw, insulator_weight=bad)
+        assert info.value.argument == "insulator_weight"
+
+
+@pytest.mark.parametrize(
+    "change, name",
+    [
+        (dict(alpha=1e308), "alpha"),  # once blamed w
+        (dict(t=1e308), "t"),
+        (dict(w0=1e-310), "w0"),
+        (dict(EA=1e-310), "EA"),
+        (dict(H0=1e-300), "H0"),  # once named H
+        (dict(spans=[1e-310, 100.0]), "spans"),
+    ],
+)
+def test_extreme_inputs_name_their_argument(change, name):
+    args = dict(spans=[100.0, 200.0], **CONDUCTOR, w=15.0, t=20.0, **STRINGS) | change
+    spans = args.pop("spans")
+    with pytest.raises(InputError) as info:
+        cable.tension_section(spans, **args)
+    assert info.value.argument == name, info.value
+
+
+def _independent_line(spans, dh, EA, alpha, w0, t0, H0, w, t, lam, W):
+    """`_independent` for long sections: the spans as one vectorised elastic catenary, and
+    fsolve told that the balance's Jacobian is banded (its finite differences then cost three
+    evaluations)."""
+    L0 = _reference_lengths(spans, dh, w0, EA, H0)
+    k = 1 + alpha * (t - t0)
+
+    def spans_of(phi):
+        x = np.concatenate([[0.0], lam * np.sin(phi), [0.0]])
+        z = np.concatenate([[0.0], lam * (1 - np.cos(phi)), [0.0]])
+        return cable.elastic_catenary(spans + np.diff(x), dh + np.diff(z), w / k, EA * k, length=k * L0)
+
+    def balance(phi):
+        c = spans_of(phi)
+        return (np.diff(c.H) - np.tan(phi) * (c.V_B[:-1] + c.V_A[1:] + W / 2)) / H0
+
+    phi = fsolve(balance, np.zeros(len(spans) - 1), xtol=1e-14, band=(1, 1))
+    return phi, spans_of(phi)
+
+
+@pytest.mark.parametrize("n", [5, 50, 500])
+def test_long_sections_against_an_independent_solution(n):
+    """The banded Newton on 5, 50 and 500 spans against fsolve on the swing angles."""
+    rng = np.random.default_rng(n)
+    spans, dh = rng.uniform(200.0, 500.0, n), rng.uniform(-20.0, 20.0, n)
+    kw = dict(EA=3.4e7, alpha=2.3e-5, w0=15.97, t0=15.0, H0=2.8e4, w=15.97, t=75.0)
+    section = cable.tension_section(spans, dh, **kw, insulator_length=3.0, insulator_weight=700.0)
+    phi, curves = _independent_line(spans, dh, **kw, lam=3.0, W=700.0)
+    np.testing.assert_allclose(section.swing_angle, phi, rtol=1e-7, atol=1e-12)
+    np.testing.assert_allclose(section.H, curves.H, rtol=1e-10)
+    np.testing.assert_allclose(section.sag, curves.sag, rtol=1e-10)
+    assert np.abs(section.swing_angle).max() > 1e-3

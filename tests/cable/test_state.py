@@ -7,7 +7,7 @@ import numpy as np
 import pytest
 
 from skcable import cable
-from skcable.errors import InputError
+from skcable.errors import InputError, PlausibilityWarning
 
 mp.mp.dps = 30
 
@@ -219,3 +219,52 @@ def test_bad_span_and_tables():
                                 load_cases={"x": (1.0,)})  # fmt: skip
     with pytest.raises(InputError, match="thermal"):
         cable.thermal_catenary(300.0, 0.0, 10.0, 1e7, length=301.0, alpha=0.1, t=-20.0, t0=0.0)
+
+
+# --- issue 26, D7 and D8: untyped escapes and refusals naming the wrong argument ---------------
+
+
+@pytest.mark.parametrize(
+    "span, dh, change, names",
+    [
+        (1e308, 0.0, dict(H0=2e4), ("span", "H0")),  # once an OverflowError (span**2)
+        (1e308, 0.0, dict(sag0=2e4), ("span", "sag0")),
+        (300.0, 1e308, dict(H0=2e4), ("dh",)),  # once an OverflowError (dh**2)
+        (1e-310, 0.0, dict(H0=2e4), ("span",)),  # subnormal: once blamed H
+        (300.0, 0.0, dict(H0=2e4, EA=1e-310), ("EA",)),  # once blamed length
+        (300.0, 0.0, dict(H0=2e4, w=1e-310), ("w",)),  # once a ConvergenceError with a NaN history
+        (300.0, 0.0, dict(H0=2e4, w0=1e-310), ("w0",)),  # once blamed H
+        (300.0, 0.0, dict(H0=1e-300), ("H0",)),  # once named H, not an argument of change_of_state
+        (300.0, 0.0, dict(sag0=1e-300), ("sag0",)),  # once named sag
+        (300.0, 0.0, dict(sag0=1e300), ("sag0",)),
+        (300.0, 0.0, dict(H0=2e4, alpha=1e308), ("alpha",)),  # once blamed w
+        (300.0, 0.0, dict(H0=2e4, t=1e308), ("t",)),  # once blamed EA
+    ],
+)
+def test_extreme_inputs_are_refused_by_their_public_name(span, dh, change, names):
+    kw = {**KW, **change}
+    with pytest.raises(InputError) as info:
+        cable.change_of_state(span, dh, **kw)
+    assert info.value.argument in names, info.value
+
+
+def test_sag_tension_table_names_its_temperatures_and_load_cases():
+    kw = dict(EA=3e7, alpha=2e-5, w0=15.0, t0=15.0, H0=2e4)
+    with pytest.raises(InputError) as info:  # once blamed EA
+        cable.sag_tension_table(300.0, 0.0, **kw, temperatures=[1e308, 15], load_cases={"b": (15.0, 0.0)})
+    assert info.value.argument == "temperatures"
+    with pytest.raises(InputError) as info:
+        cable.sag_tension_table(300.0, 0.0, **kw, temperatures=[15], load_cases={"b": (-1.0, 0.0)})
+    assert info.value.argument == "load_cases"
+
+
+def test_a_thermal_strain_within_range_still_solves():
+    # |alpha (t - t0)| just below 1 is refused by no check: an independent mpmath-free oracle is
+    # the elastic catenary of length k L0, weight w/k and stiffness EA k
+    with pytest.warns(PlausibilityWarning, match="alpha"):  # a strain of 0.8: it solves, and says so
+        r = cable.change_of_state(
+            300.0, 0.0, EA=3e7, alpha=2e-5, w0=15.0, t0=15.0, H0=2e4, w=15.0, t=15.0 + 4e4
+        )
+    k = 1 + 2e-5 * 4e4
+    e = cable.elastic_catenary(300.0, 0.0, 15.0 / k, 3e7 * k, length=r.L0 * k)
+    assert r.H == pytest.approx(e.H, rel=1e-13)

@@ -96,7 +96,7 @@ def test_tangent_agrees_with_finite_differences(slip, damage_load):
 
 def test_clamped_tensioned_beam_under_transverse_load():
     L, q, strain = 1.0, 1.0, 0.001
-    model = strand.StrandModel(STRAIGHT, L, n_elements=64, grading=0.0, terms=[strand.DistributedLoad(qy=q)])
+    model = strand.StrandModel(STRAIGHT, L, n_elements=64, grading=0.0, terms=[strand.TransverseLoad(qy=q)])
     U = model.solve(strain).dofs
     N, EI = STRAIGHT.section().EA * strain, STRAIGHT.section().EI_stick[0]
     k = np.sqrt(N / EI)

@@ -68,7 +68,7 @@ def test_tensioned_strand_under_a_transverse_load_matches_the_beam_equation(supp
     # is linear, the model is not)
     L, q, strain = 1.0, 0.01, 0.001
     model = strand.StrandModel(
-        STRAIGHT, L, n_elements=128, grading=0.0, supports=supports, terms=[strand.DistributedLoad(qy=q)]
+        STRAIGHT, L, n_elements=128, grading=0.0, supports=supports, terms=[strand.TransverseLoad(qy=q)]
     )
     step = model.solve(strain)
     exact = tensioned_beam(EA * strain, q, L, conditions, X)
@@ -107,7 +107,7 @@ def test_small_transverse_load_converges_as_tightly_as_the_axial_pull():
     every equation, allowed 2.5e-5 N there: a thousandth of the load on a node)."""
     s = strand.preset("steel-9.5")
     q, strain = -0.01, 0.003
-    model = strand.StrandModel(s, 1.0, n_elements=32, terms=[strand.DistributedLoad(qy=q)])
+    model = strand.StrandModel(s, 1.0, n_elements=32, terms=[strand.TransverseLoad(qy=q)])
     default = model.solve(strain)
     tight = model.solve(strain, tol=1e-14)
     v, v0 = default.nodal["v"], tight.nodal["v"]
@@ -200,7 +200,7 @@ def test_check_tangent_catches_a_wrong_tangent_and_passes_a_right_one():
 
 
 def test_a_wrong_tangent_converges_linearly_and_newton_names_it():
-    load = strand.DistributedLoad(qy=2e3)
+    load = strand.TransverseLoad(qy=2e3)
     model = strand.StrandModel(STRAIGHT, 1.0, n_elements=16, grading=0.0, terms=[load, Cubic(1e12, 3.0)])
     with pytest.warns(SlowConvergenceWarning, match=r"Cubic\(\) \(6\.7e-01\)"):
         model.solve(0.001, max_iter=200)
@@ -229,7 +229,7 @@ def test_an_unsymmetric_linear_term_is_no_potential_and_converges(coupling):
         return w.c * u * v
 
     term = strand.FieldTerm(tangent={("w", "v"): one_way}, c=coupling)
-    load = strand.DistributedLoad(qy=1.0)
+    load = strand.TransverseLoad(qy=1.0)
     model = strand.StrandModel(STRAIGHT, 1.0, n_elements=16, grading=0.0, terms=[load, term])
     assert not model.bound(term).symmetric and not model.bound(term).potential
     step = model.solve(0.001, tol=1e-12)
@@ -353,7 +353,7 @@ def test_a_tensionless_foundation_holds_only_where_the_strand_presses(k):
     def middle(x):
         return -q * ((x > L / 3) & (x < 2 * L / 3))
 
-    load = strand.DistributedLoad(qy=middle)
+    load = strand.TransverseLoad(qy=middle)
     bed = strand.TensionlessFoundation(k, surface=-2e-4)
     model = strand.StrandModel(STRAIGHT, L, n_elements=64, grading=0.0, terms=[load, bed])
     step = model.solve(strain)
@@ -428,7 +428,7 @@ def test_a_tie_between_distant_nodes_moves_the_solve_to_sparse():
         def energy(self, U, step):
             return 0.5 * float(U @ (self.K @ U))
 
-    load = strand.DistributedLoad(qy=lambda x: 100.0 * (x < 0.5))
+    load = strand.TransverseLoad(qy=lambda x: 100.0 * (x < 0.5))
     model = strand.StrandModel(STRAIGHT, 1.0, n_elements=16, grading=0.0, terms=[load, Tie()])
     step = model.solve(0.001, tol=1e-12)
     assert not model._system.is_banded

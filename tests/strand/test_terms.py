@@ -39,7 +39,7 @@ def test_analyst_foundation_term_matches_the_closed_form_and_the_ready_term():
     sec = STRAIGHT.section()
     x = np.array([0.03, 0.1, 0.25, 0.5])
     exact = _beam_on_foundation(sec.EI_stick[0], sec.EA * strain, k, q, L, x)
-    load = strand.DistributedLoad(qy=q)
+    load = strand.TransverseLoad(qy=q)
     for term in (my_foundation(k), strand.ElasticFoundation(ky=k)):
         model = strand.StrandModel(STRAIGHT, L, n_elements=64, grading=0.0, terms=[term, load])
         step = model.solve(strain)
@@ -100,7 +100,7 @@ def test_nodal_spring_acts_at_its_node_with_a_linear_response():
     """A spring k at mid-span under a transverse load: v_mid(k) = v0 / (1 + k G), so
     (1/v_mid − 1/v0)/k is the same for every k (G the mid-span flexibility)."""
     L, strain = 1.0, 0.001
-    load = strand.DistributedLoad(qy=1.0)
+    load = strand.TransverseLoad(qy=1.0)
     values = []
     for k in (None, 1e3, 4e3):
         terms = [load] if k is None else [load, strand.NodalSpring(0.5, k, "v")]

@@ -48,7 +48,7 @@ from skcable.cable._loads import DeckLoad, DistributedLoad, PointLoad, SelfWeigh
 from skcable.cable.bvp.base import FiniteElementSolution
 from skcable.cable.bvp.elements import end_dofs
 from skcable.cable.bvp.probes import element_values, gradient_probes, minimum_near
-from skcable.cable.terms import CableState, CableTerm
+from skcable.cable.terms import CableState, CableTerm, term_outputs
 from skcable.errors import ConvergenceError, InputError
 from skcable.fe.assembly import Assembly
 from skcable.fe.linear import BorderedSolver
@@ -557,15 +557,23 @@ class ArcSolution(FiniteElementSolution):
         dx, dy = G @ xd, G @ yd
         xy = self._at_sigma(sigma)
         loads = arc_loads(self._problem.loads, xy[:, 0], dx, self.L0, self.span)
+        outputs = {}
         if self._problem.terms:
             tension = self._problem.tbasis.probes(sigma.reshape(1, -1)) @ T
-            Q = term_loads(self._problem.terms, xy[:, 0], xy[:, 1], dx, dy, tension, self.L0, sigma)[0]
+            terms = self._problem.terms
+            Q = term_loads(terms, xy[:, 0], xy[:, 1], dx, dy, tension, self.L0, sigma)[0]
             loads = [loads[0] + Q[0], loads[1] + Q[1]]
+            state = CableState(xy[:, 0], xy[:, 1], sigma * self.L0, np.array([dx, dy]) / self.L0, tension)
+            outputs = {
+                name: np.moveaxis(v, 0, -1) if np.ndim(v) > 1 else v
+                for name, v in term_outputs(terms, state).items()
+            }
         return {
             "xy": xy,
             "tension": self._problem.tbasis.probes(sigma.reshape(1, -1)) @ T,
             "angle": np.arctan2(dy, dx),
             "load": np.column_stack([loads[0], loads[1]]) / self.L0,
+            "outputs": outputs,
         }
 
     def _residuals(self):

@@ -5,15 +5,14 @@ from __future__ import annotations
 from functools import cached_property
 
 from skcable.cable.solution import CableSolution
-from skcable.results import ProfileMixin
 
 __all__ = ["FiniteElementSolution"]
 
 
-class FiniteElementSolution(ProfileMixin, CableSolution):
+class FiniteElementSolution(CableSolution):
     """A finite-element cable solution: sag and lowest point by a search of
     the discrete profile (``problem.extremum``), Newton's history, and the result protocol's
-    ``profile``, ``to_frame`` and ``tensions`` (`skcable.results`)."""
+    ``profile``, ``to_frame`` and ``tensions`` (`skcable.results`, through `CableSolution`)."""
 
     def __init__(self, problem, dofs, history, state):
         self._problem = problem

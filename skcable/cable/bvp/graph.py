@@ -39,7 +39,7 @@ from skcable.cable._parabola import parabola
 from skcable.cable.bvp.base import FiniteElementSolution
 from skcable.cable.bvp.elements import end_dofs, line_element
 from skcable.cable.bvp.probes import element_values, gradient_probes, minimum_near
-from skcable.cable.terms import CableState, CableTerm
+from skcable.cable.terms import CableState, CableTerm, term_outputs
 from skcable.errors import InputError
 from skcable.fe.assembly import Assembly
 from skcable.fe.linear import BorderedSolver
@@ -366,9 +366,13 @@ class BVPSolution(FiniteElementSolution):
 
     formulation = "graph"
 
-    def __init__(self, problem: GraphProblem, dofs, H, history, state: GraphState | None = None):
+    def __init__(
+        self, problem: GraphProblem, dofs, H, history, state: GraphState | None = None, resolver=None
+    ):
         super().__init__(problem, dofs, history, problem.assemble(dofs, H) if state is None else state)
         self.H = float(H)
+        #: ``resolver(solution, span, dh)``: the problem solved again with B moved (for `stiffness`)
+        self.resolver = resolver
 
     @property
     def H_A(self):
@@ -443,11 +447,12 @@ class BVPSolution(FiniteElementSolution):
         return np.array(columns).T
 
     def _resolved(self, span, dh):
-        """This problem at B = (span, dh) with the unstretched length kept (nodes scaled with the
-        span, started from this solution)."""
-        from skcable.cable.bvp.solve import resolve
-
-        return resolve(self, span, dh)
+        """This problem at B = (span, dh) with the unstretched length kept (`solve_bvp`'s resolver)."""
+        if self.resolver is None:
+            raise InputError(
+                "solution", "was not made by solve_bvp: it cannot be solved again for its stiffness"
+            )
+        return self.resolver(self, span, dh)
 
     @cached_property
     def V_A(self):
@@ -496,6 +501,23 @@ class BVPSolution(FiniteElementSolution):
     def T(self, x):
         """Tension at ``x`` (N): ``H sqrt(1 + y'^2)``."""
         return self.H * np.sqrt(1.0 + self.slope(x) ** 2)
+
+    def samples(self, n: int = 201) -> dict:
+        """The profile at ``n`` equally spaced x (`CableSolution.samples`), with the cable terms'
+        outputs there (``"outputs"``: name -> (n,) or (n, 2))."""
+        out = super().samples(n)
+        problem = self._problem
+        out["outputs"] = {}
+        if problem.terms:
+            x, y = out["xy"][:, 0], out["xy"][:, 1]
+            slope = np.tan(out["angle"])
+            m = unstretched_measure(slope, self.H, self.EA)[0]
+            state = CableState(x, y, None, np.array([np.ones_like(x), slope]) / m, out["tension"])
+            out["outputs"] = {
+                name: np.moveaxis(v, 0, -1) if np.ndim(v) > 1 else v
+                for name, v in term_outputs(problem.terms, state).items()
+            }
+        return out
 
     def weight_per_length(self, x, slope):
         problem = self._problem

@@ -225,7 +225,7 @@ def solve_bvp(
         **settings,
     )
     size = len(dofs)
-    solution = BVPSolution(problem, result.x[:size], result.x[size], result.history, result.state)
+    solution = BVPSolution(problem, result.x[:size], result.x[size], result.history, result.state, resolve)
     return _checked(solution, rtol)
 
 

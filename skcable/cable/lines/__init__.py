@@ -3,13 +3,21 @@
 Conventions as in :mod:`skcable.cable`: anchor A at (0, 0), fairlead B at
 (span, dh), y up, weights per unstretched length act downward.
 
-One concern per module:
+One concern per module (the two packages split further, see their docstrings):
 
-- `seabed`: one elastic line on a flat or sloped seabed, in closed form;
-- `segments`: `Line`, a multi-segment line with clump weights and buoys;
+- `seabed`: one elastic line on a flat or sloped seabed, in closed form (closure,
+  regimes free/grounded/heap, the dispatcher, the solution, the sloped seabed);
+- `segments`: `Line`, a multi-segment line with clump weights and buoys (parts, the
+  line's read-only arrays, closure, heap state, line, solution);
+- `arc_samples`: a line's profile sampled along its arc length, for the VTK writer;
 - `line3d`: a line between two points in 3-D, in its vertical plane;
 - `body`: point and rigid bodies (6 dofs) with their own loads;
-- `system`: `MooringSystem`, a body moored by several lines: equilibrium, stiffness.
+- `system`: `MooringSystem`, a body moored by several lines: net force, stiffness;
+- `equilibrium`: its static equilibrium (Newton, a start from slack lines, the stable
+  branch) and `MooringEquilibrium`.
+
+Data flow: segments and seabed solutions (2-D) → ``line3d`` (in space) → ``system`` (on a
+``body``) → ``equilibrium`` → the writers and plots, which only read the results.
 """
 
 from skcable.cable.lines.body import PointBody, RigidBody, rotation_matrix

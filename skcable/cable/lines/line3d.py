@@ -51,7 +51,7 @@ import numpy as np
 from skcable._checks import real, whole
 from skcable.errors import InputError
 
-__all__ = ["Line3D", "line_3d", "point", "takes_start"]
+__all__ = ["Line3D", "line_3d", "line_model", "point", "takes_start"]
 
 
 def point(name: str, value) -> np.ndarray:
@@ -60,6 +60,17 @@ def point(name: str, value) -> np.ndarray:
     if np.shape(arr) != (3,):
         raise InputError(name, f"must be a point (x, y, z) of 3 numbers, got shape {np.shape(arr)}")
     return np.array(arr, dtype=float)
+
+
+def line_model(name: str, model):
+    """``model`` if it is a line model (it has a callable ``solve``), else `InputError` naming ``name``."""
+    if not callable(getattr(model, "solve", None)):
+        raise InputError(
+            name,
+            "must be a line model with a solve(span, dh) method (a cable.Line, say), got "
+            f"{type(model).__name__}",
+        )
+    return model
 
 
 def _finite(name: str, value) -> float:
@@ -136,12 +147,18 @@ class Line3D:
         x, y = np.asarray(x, dtype=float), np.asarray(y, dtype=float)
         return self.anchor + np.multiply.outer(x, self.direction) + np.multiply.outer(y, [0.0, 0.0, 1.0])
 
-    def profile(self, n: int = 101):
-        """The line at ``n`` material points equally spaced in unstretched arc length.
+    def profile(self, n: int = 101) -> np.ndarray:
+        """The line at ``n`` material points equally spaced in unstretched arc length: positions
+        ``(n, 3)`` in global axes (m), from the model's ``x_of_s, y_of_s``."""
+        return self.profile_with_tension(n)[0]
 
-        Returns ``(points, tension)``: points (n, 3) in global axes (m) and the
-        tension there (N), from the model's ``x_of_s, y_of_s, T_of_s``.
-        """
+    def T_of_s(self, s):
+        """Tension (N) at unstretched arc length ``s`` from the anchor (the model's ``T_of_s``)."""
+        return self.solution.T_of_s(s)
+
+    def profile_with_tension(self, n: int = 101) -> tuple[np.ndarray, np.ndarray]:
+        """``(points, tension)``: `profile` ``(n, 3)`` (m) and the tension there ``(n,)`` (N), from the
+        model's ``x_of_s, y_of_s, T_of_s`` (what ``profile`` returned before 0.2)."""
         n = whole("n", n, 2)
         s = np.linspace(0.0, float(self.solution.length), n)
         points = self.to_global(self.solution.x_of_s(s), self.solution.y_of_s(s))
@@ -211,13 +228,14 @@ def line_3d(model, anchor, fairlead, start=None) -> Line3D:
     Raises
     ------
     InputError
-        A point that is not 3 finite numbers, or a fairlead directly above or
-        below the anchor (``r = 0``: the line's plane, the horizontal direction
+        A ``model`` without a ``solve`` method; a point that is not 3 finite numbers, or
+        a fairlead directly above or below the anchor (``r = 0``: the line's plane, the horizontal direction
         and the transverse stiffness ``H/r`` are undefined); a ``start`` given to a
         model whose ``solve`` takes none; errors of the model.
     ConvergenceError
         The model's solver did not converge.
     """
+    line_model("model", model)
     a = point("anchor", anchor)
     b = point("fairlead", fairlead)
     r = math.hypot(float(b[0] - a[0]), float(b[1] - a[1]))

@@ -12,10 +12,9 @@ with :math:`\mathbf f_i` the force of line *i* on its fairlead, :math:`\mathbf r
 arm from the body's reference point (global axes), :math:`\mathbf G_\text{own}` the
 body's weight, buoyancy and heave restoring (`skcable.cable.lines.body`) and a
 constant external force and moment (global axes, moment about the reference
-point). Static equilibrium :math:`\mathbf G = 0` is found by Newton's method with
-the analytic Jacobian :math:`\partial\mathbf G/\partial\mathbf q = -K\,T` (``K`` the
-stiffness below, ``T`` the map of Euler-angle increments to rotation vectors) and
-backtracking on the scaled residual.
+point). Static equilibrium :math:`\mathbf G = 0` is found by
+`skcable.cable.lines.equilibrium` (Newton's method, a start from slack lines, the
+stable branch).
 
 The stiffness of the mooring system,
 :math:`K = -\partial\mathbf G/\partial(\mathbf x, \delta\boldsymbol\theta)`, is taken
@@ -34,20 +33,29 @@ tension) makes :math:`K` unsymmetric where the line forces have a net moment.
 from __future__ import annotations
 
 import math
-from typing import TYPE_CHECKING
+from collections.abc import Iterable, Mapping
 
 import numpy as np
 
 from skcable._checks import positive, real, scalar
 from skcable.cable.lines.body import PointBody, RigidBody
+from skcable.cable.lines.equilibrium import MooringEquilibrium, solve_equilibrium
 from skcable.cable.lines.line3d import Line3D, line_3d, point, solve_in_space, takes_start
-from skcable.errors import ConvergenceError, InputError
-from skcable.fe import newton
-
-if TYPE_CHECKING:
-    import pandas as pd
+from skcable.errors import InputError
 
 __all__ = ["MooringEquilibrium", "MooringSystem"]
+
+
+def _line_list(lines) -> list:
+    """``lines`` as a list of line models: a sequence of them (a list, a tuple), not one model,
+    a string, a mapping or a scalar; else `InputError` naming ``lines``."""
+    if callable(getattr(lines, "solve", None)):
+        raise InputError("lines", "is one line model: give a list of them, one per anchor (e.g. [line] * 3)")
+    if isinstance(lines, (str, bytes, Mapping)) or not isinstance(lines, Iterable):
+        raise InputError(
+            "lines", f"must be a list of line models, one per anchor, got {type(lines).__name__}"
+        )
+    return list(lines)
 
 
 class MooringSystem:
@@ -87,7 +95,7 @@ class MooringSystem:
     def __init__(self, body, lines, anchors, *, depth=None):
         if not isinstance(body, (RigidBody, PointBody)):
             raise InputError("body", f"must be a RigidBody or a PointBody, got {type(body).__name__}")
-        lines = list(lines)
+        lines = _line_list(lines)
         for i, model in enumerate(lines):
             if not callable(getattr(model, "solve", None)):
                 raise InputError("lines", f"line {i} ({type(model).__name__}) has no solve(span, dh) method")
@@ -161,9 +169,12 @@ class MooringSystem:
             solved.append(line)
         return solved
 
-    def _state(self, q, external, lines_only=False, start=None):
-        """Net force ``G(q)`` and stiffness ``K(q)`` and the solved lines (warm-started
-        from the lines ``start``, if given)."""
+    def evaluate(self, q, external, *, lines_only=False, start=None):
+        """Net force ``G(q)`` (N, N m), stiffness ``K(q)`` and the solved lines at the checked
+        position ``q`` (a float array of ``n_dof``) under the ``external`` load (``n_dof``
+        values), the lines warm-started from the lines ``start`` (a list of `Line3D`), if given.
+
+        ``lines_only``: ``G`` and ``K`` of the lines alone (no own loads, no external load)."""
         lines = self._solve_lines(q, start)
         forces = np.array([line.force_on_fairlead for line in lines])
         stiffnesses = np.array([line.stiffness() for line in lines])
@@ -176,7 +187,7 @@ class MooringSystem:
     def net_force(self, position, *, force=(0.0, 0.0, 0.0), moment=(0.0, 0.0, 0.0)) -> np.ndarray:
         """Net force (N) and moment (N m, about the reference point) on the body at ``position``:
         lines, own loads and the external ``force`` and ``moment``, global axes."""
-        return self._state(self._position("position", position), self._loads(force, moment))[0]
+        return self.evaluate(self._position("position", position), self._loads(force, moment))[0]
 
     def stiffness(self, position, *, lines_only=False) -> np.ndarray:
         """Stiffness ``-∂G/∂(x, rotation vector)`` at ``position`` (N/m, N, N m/rad), (n_dof, n_dof).
@@ -185,7 +196,7 @@ class MooringSystem:
         body's hydrostatic stiffness is added.
         """
         q = self._position("position", position)
-        return self._state(q, 0.0, lines_only=lines_only)[1]
+        return self.evaluate(q, 0.0, lines_only=lines_only)[1]
 
     def equilibrium(
         self,
@@ -217,18 +228,23 @@ class MooringSystem:
         Returns
         -------
         MooringEquilibrium
+            With ``stable`` and the stiffness ``eigenvalues``: an unstable equilibrium (a
+            negative eigenvalue) is passed over for a stable one where the restarts find it
+            (`skcable.cable.lines.equilibrium`), else returned with a `PlausibilityWarning`.
 
         Raises
         ------
         InputError
             Bad arguments, or a starting position where a line cannot be solved.
         ConvergenceError
-            No equilibrium within ``max_iter`` iterations, or a singular stiffness
-            (a direction the mooring and the hydrostatics do not restrain); carries
-            the history of the scaled residual.
+            No equilibrium within ``max_iter`` iterations, or slack lines that stay slack
+            along the net force (a direction the mooring and the hydrostatics do not
+            restrain); carries the history of the scaled residual.
 
         Notes
         -----
+        Lines that start slack on the seabed (the slack in a heap: no horizontal stiffness)
+        are first pulled taut along the net force (`skcable.cable.lines.equilibrium`).
         Each trial position solves every line warm-started from its solution at the
         last accepted position (models that take ``start=``, see `solve_lines`);
         a warm-started line has the cold solution to round-off, so the iterates are
@@ -245,141 +261,4 @@ class MooringSystem:
         tol = scalar("tol", positive("tol", tol))
         if isinstance(max_iter, bool) or not isinstance(max_iter, (int, np.integer)) or max_iter < 1:
             raise InputError("max_iter", f"must be an integer >= 1, got {max_iter!r}")
-        arm = max(1.0, float(np.abs(getattr(self.body, "fairleads", np.zeros(1))).max()))
-        body_scale = max(np.abs(self.body.weight[2]), self.body.buoyancy[2], np.linalg.norm(external[:3]))
-        reach = self.anchors[:, :2] - self.body.fairlead_positions(q, len(self.lines))[:, :2]
-        span_min = float(np.hypot(reach[:, 0], reach[:, 1]).min())
-        step_cap = np.concatenate([np.full(3, 0.25 * span_min), np.full(self.n_dof - 3, 0.2)])
-        # singular values in consistent units (rotations times the arm) tell a free direction
-        units = np.concatenate([np.ones(3), np.full(self.n_dof - 3, arm)])
-
-        def scaled(G, lines):
-            scale = max(body_scale, max(line.tension_at_fairlead for line in lines), 1e-300)
-            g = G / scale
-            g[3:] /= arm
-            return float(np.linalg.norm(g))
-
-        def assemble(position, start):
-            """(net load G, stiffness K, lines, position); the lines start from ``start``."""
-            return (*self._state(position, external, start=start), position)
-
-        def norm(state):
-            return scaled(state[0], state[2])
-
-        def increment(state):
-            G, K, lines, position = state
-            jac = K @ self.body.rate_map(position)  # -∂G/∂q
-            singular = np.linalg.svd(jac / units[:, None] / units[None, :], compute_uv=False)
-            if not singular[-1] > 1e-11 * singular[0]:
-                raise ConvergenceError(
-                    "mooring equilibrium: the stiffness is singular (a direction neither the lines nor the "
-                    "hydrostatics restrain: add waterplane_area, a metacentre or lines)",
-                    [norm(state)],
-                )
-            accepted["lines"] = lines  # Newton steps from this state: the trials start from its lines
-            dq = np.linalg.solve(jac, G)
-            return dq * min(1.0, float(np.min(step_cap / np.maximum(np.abs(dq), 1e-300))))
-
-        accepted = {"lines": warm_lines}
-        try:
-            result = newton(
-                lambda position: assemble(position, accepted["lines"]),
-                q,
-                norm=norm,
-                increment=increment,
-                tol=tol,
-                max_iter=max_iter,
-                max_halvings=20,
-                stagnation_window=max_iter,  # no stagnation rule: a capped step may gain slowly
-                name="mooring equilibrium",
-                rejects=(InputError, ConvergenceError),  # a line that cannot reach a trial position
-            )
-        except ConvergenceError as err:
-            if "no descent" not in str(err):
-                raise
-            raise ConvergenceError(
-                "mooring equilibrium: the line search found no descent (the residual stalls: the loads "
-                "may exceed what the mooring can hold, or the start is too far)",
-                err.history,
-            ) from None
-        G, K, lines, _ = result.state
-        return MooringEquilibrium(self, result.x, external, G, K, lines, result.history)
-
-
-class MooringEquilibrium:
-    """A moored body in static equilibrium (`MooringSystem.equilibrium`).
-
-    Attributes
-    ----------
-    system : MooringSystem
-    position : ndarray
-        ``(x, y, z, roll, pitch, yaw)`` (m, rad) of a rigid body, ``(x, y, z)`` of a point.
-    offset : ndarray, shape (3,)
-        Displacement of the reference point from the origin (m).
-    angles : ndarray, shape (3,)
-        Roll, pitch, yaw (rad); zeros for a point body.
-    heel : float
-        Angle between the body's z axis and the vertical (rad).
-    lines : list of Line3D
-        Each line at equilibrium.
-    fairlead_forces, anchor_forces : ndarray, shape (n, 3)
-        Force of each line on its fairlead and on its anchor (N), global axes.
-    residual : ndarray
-        Net force and moment left on the body (N, N m).
-    history : list of float
-        Scaled residual at each Newton iteration.
-    """
-
-    def __init__(self, system, q, external, G, K, lines, history):
-        self.system, self.position, self.external, self.residual = system, q, external, G
-        self._K, self.lines, self.history = K, lines, history
-        self.offset = q[:3].copy()
-        self.angles = q[3:].copy() if len(q) == 6 else np.zeros(3)
-        R = system.body.rotation(q)
-        self.heel = float(np.arccos(np.clip(R[2, 2], -1.0, 1.0)))
-        self.fairlead_forces = np.array([line.force_on_fairlead for line in lines])
-        self.anchor_forces = np.array([line.force_on_anchor for line in lines])
-        self.fairleads = np.array([line.fairlead for line in lines])
-        self.anchors = system.anchors
-        self.depth = system.depth
-        self.rotation = R
-        for name in ("position", "residual", "fairlead_forces", "anchor_forces"):
-            if not np.isfinite(getattr(self, name)).all():
-                raise ConvergenceError(f"mooring equilibrium: non-finite {name}", history)
-
-    def stiffness(self, *, lines_only: bool = False) -> np.ndarray:
-        """Stiffness of the mooring system at equilibrium, ``-∂G/∂(x, rotation vector)``
-        (N/m, N/rad, N m/rad), shape (n_dof, n_dof); ``lines_only`` leaves out the
-        body's hydrostatics (see `MooringSystem.stiffness`)."""
-        if lines_only:  # from the lines at equilibrium, no new line solve
-            body, q = self.system.body, self.position
-            stiffnesses = np.array([line.stiffness() for line in self.lines])
-            return body.add_lines(body.arms(q), self.fairlead_forces, stiffnesses)[1]
-        return self._K.copy()
-
-    def tensions(self) -> pd.DataFrame:
-        """Tension table: each line's per-segment table (its model's ``tensions()``) with
-        the line's number in front, plus its fairlead and anchor forces (N)."""
-        import pandas as pd  # imported here: `import skcable.cable` stays light
-
-        frames = []
-        for i, line in enumerate(self.lines):
-            table = line.tensions().copy()
-            table.insert(0, "line", i)
-            table["H"], table["V_B"], table["H_A"], table["V_A"] = line.H, line.V_B, line.H_A, line.V_A
-            table["T_fairlead"] = line.tension_at_fairlead
-            frames.append(table)
-        return pd.concat(frames, ignore_index=True)
-
-    def to_vtk(self, path, n: int = 101):
-        """Write the lines (tension as point data), the seabed patch and the body to a
-        ``.vtu``/``.vtk`` file, atomically (see `skcable.io.mooring_mesh`); returns the path."""
-        from skcable.io import write_mooring
-
-        return write_mooring(self, path, n)
-
-    def __repr__(self):
-        return (
-            f"MooringEquilibrium(offset={np.round(self.offset, 6).tolist()}, "
-            f"angles={np.round(self.angles, 9).tolist()}, iterations={len(self.history) - 1})"
-        )
+        return solve_equilibrium(self, q, external, warm_lines, tol, max_iter)

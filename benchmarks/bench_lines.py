@@ -1,0 +1,191 @@
+"""Whole lines at array speed: the change of state of 1000 spans × 10 temperatures, and tension
+sections of 5 to 5000 spans, measured in one process.
+
+- skcable's line path, ``change_of_state(spans, dh, ...)`` (exact elastic catenary, every element
+  residual-checked), beside mechaphlowers' change of state on the same grid (its catenary span
+  model for the reference length, then its vectorised parabolic cubic, ``approx_parameter``,
+  with its default cubic solver) and skcable's one-span path called span by span;
+- ``tension_section`` at 5, 50, 500 and 5000 spans (banded Newton), with the scaling exponent.
+
+Times are the minimum and the median of ``--repeats`` runs, the peers interleaved run by run
+(the machine may be shared: the minimum is the unloaded time, the median the typical one).
+
+Run:  python benchmarks/bench_lines.py [--repeats 21]   (mechaphlowers: pip install ".[bench]")
+      rewrites its section of docs/speed_targets.md (between the conductors markers)
+"""
+
+from __future__ import annotations
+
+import argparse
+import os
+import platform
+import sys
+import tempfile
+import time
+from pathlib import Path
+
+import numpy as np
+
+from skcable import cable
+
+ROOT = Path(__file__).resolve().parents[1]
+BEGIN, END = "<!-- conductors:begin -->", "<!-- conductors:end -->"
+
+#: ACSR Drake (the acsr-drake preset's EA, weight and alpha, rounded), a line of 1000 spans
+CONDUCTOR = dict(EA=3.4e7, alpha=1.9e-5, w0=15.97, t0=15.0)
+H0 = 28e3
+TEMPERATURES = np.linspace(-20.0, 90.0, 10)
+
+
+def line_grid(n=1000, seed=24):
+    rng = np.random.default_rng(seed)
+    spans = rng.uniform(150.0, 600.0, n)
+    return spans, rng.uniform(-0.1, 0.1, n) * spans
+
+
+def mechaphlowers_change_of_state(spans, dh, temperatures):
+    """mechaphlowers' change of state: L0 from its catenary span at H0 (mean-tension strain,
+    thermal strain from 0 °C as its deformation model), the parabolic cubic at each state."""
+    from mechaphlowers.core.models.balance.models.model_ducloux import approx_parameter
+    from mechaphlowers.core.models.cable.span import CatenarySpan
+
+    w0, EA, alpha, t0 = (CONDUCTOR[k] for k in ("w0", "EA", "alpha", "t0"))
+    n, m = spans.size, temperatures.size
+    span = CatenarySpan(
+        span_length=spans,
+        elevation_difference=dh,
+        parameter=np.full(n, H0 / w0),
+        linear_weight=np.float64(w0),
+    )
+    span.compute_values()
+    L0 = span.compute_L() / (1 + alpha * t0 + span.T_mean() / EA)
+    p = approx_parameter(
+        np.repeat(spans, m), np.repeat(dh, m), np.repeat(L0, m), np.ones(n * m), np.float64(1.0),
+        np.float64(w0), np.float64(EA), np.float64(alpha), np.tile(temperatures, n),
+    )  # fmt: skip
+    return (p * w0).reshape(n, m)
+
+
+def skcable_line(spans, dh, temperatures):
+    return cable.change_of_state(spans, dh, **CONDUCTOR, H0=H0, w=CONDUCTOR["w0"], t=temperatures).H
+
+
+def skcable_span_by_span(spans, dh, temperatures):
+    return np.array(
+        [
+            cable.change_of_state(float(a), float(h), **CONDUCTOR, H0=H0, w=CONDUCTOR["w0"], t=temperatures).H
+            for a, h in zip(spans, dh, strict=True)
+        ]
+    )
+
+
+def interleaved(functions, repeats):
+    """{name: (min, median)} of each function, run in turn ``repeats`` times."""
+    times = {name: [] for name in functions}
+    for _ in range(repeats):
+        for name, fn in functions.items():
+            start = time.perf_counter()
+            fn()
+            times[name].append(time.perf_counter() - start)
+    return {name: (min(t), float(np.median(t))) for name, t in times.items()}
+
+
+def section_scene(n, seed=5):
+    rng = np.random.default_rng(seed + n)
+    spans, dh = rng.uniform(200.0, 500.0, n), rng.uniform(-20.0, 20.0, n)
+    kw = dict(**CONDUCTOR, H0=H0, w=CONDUCTOR["w0"], t=75.0, insulator_length=3.0, insulator_weight=700.0)
+    return lambda: cable.tension_section(spans, dh, **kw)
+
+
+def measure(repeats):
+    rows = []
+    spans, dh = line_grid()
+    exact = skcable_line(spans, dh, TEMPERATURES)
+    start = time.perf_counter()
+    one = skcable_span_by_span(spans, dh, TEMPERATURES)
+    t_loop = time.perf_counter() - start
+    gap = float(np.max(np.abs(exact / one - 1)))
+    functions = {"skcable": lambda: skcable_line(spans, dh, TEMPERATURES)}
+    try:
+        mech = mechaphlowers_change_of_state(spans, dh, TEMPERATURES)
+        functions["mechaphlowers"] = lambda: mechaphlowers_change_of_state(spans, dh, TEMPERATURES)
+    except ImportError:
+        mech = None
+    t = interleaved(functions, repeats)
+    grid = f"{spans.size} spans × {TEMPERATURES.size} temperatures"
+    note = f"median {t['skcable'][1] * 1e3:.2f} ms; H within {gap:.1e} of the one-span path"
+    rows.append((f"change_of_state, line path, {grid}", f"{t['skcable'][0] * 1e3:.2f} ms", note))
+    rows.append((f"change_of_state, one span a call, {grid}", f"{t_loop:.2f} s",
+                 f"{t_loop / t['skcable'][0]:.0f}x the line path"))  # fmt: skip
+    if mech is not None:
+        err = float(np.max(np.abs(mech / exact - 1)))
+        ratio = t["skcable"][0] / t["mechaphlowers"][0]
+        rows.append((f"mechaphlowers change of state (parabolic cubic), {grid}",
+                     f"{t['mechaphlowers'][0] * 1e3:.2f} ms",
+                     f"median {t['mechaphlowers'][1] * 1e3:.2f} ms; {err:.1e} from the exact H, "
+                     f"{int(np.sum(mech <= 0))} H <= 0"))  # fmt: skip
+        rows.append(("time ratio skcable / mechaphlowers (minimum)", f"{ratio:.2f}", "target <= 1"))
+    sizes = (5, 50, 500, 5000)
+    t_sec = {
+        n: interleaved({"s": section_scene(n)}, max(3, repeats // (1 if n < 5000 else 4)))["s"] for n in sizes
+    }
+    for n in sizes:
+        target = {500: "target <= 50 ms", 5000: "target <= 0.5 s"}.get(n, "")
+        note = f"median {t_sec[n][1] * 1e3:.1f} ms; {t_sec[n][0] / n * 1e6:.0f} µs/span {target}"
+        rows.append((f"tension_section, {n} spans, one state", f"{t_sec[n][0] * 1e3:.1f} ms", note))
+    slope = np.log(t_sec[5000][0] / t_sec[500][0]) / np.log(10.0)
+    rows.append(("tension_section scaling exponent, 500 → 5000 spans", f"{slope:.2f}", "linear: <= 1"))
+    for lo, hi in ((50, 500), (500, 5000)):
+        extra = (t_sec[hi][0] - t_sec[lo][0]) / (hi - lo) * 1e6
+        rows.append(
+            (f"tension_section, cost of a span from {lo} to {hi} spans", f"{extra:.1f} µs", "linear: equal")
+        )
+    return rows
+
+
+def write_section(rows, repeats):
+    lines = [
+        BEGIN,
+        "## Whole lines (conductors)",
+        "",
+        f"Generated by `python benchmarks/bench_lines.py --repeats {repeats}` (minimum of the runs, the "
+        f"peers interleaved) on {platform.machine()}, {os.cpu_count()} cores, "
+        f"Python {platform.python_version()}, NumPy {np.__version__}.",
+        "",
+        "| measure | value | note |",
+        "|---|---|---|",
+        *(f"| {a} | {b} | {c} |" for a, b, c in rows),
+        END,
+    ]
+    path = ROOT / "docs" / "speed_targets.md"
+    text = path.read_text() if path.exists() else "# Speed targets\n"
+    block = "\n".join(lines)
+    if BEGIN in text and END in text:
+        head, rest = text.split(BEGIN, 1)
+        text = head + block + rest.split(END, 1)[1]
+    else:
+        text = text.rstrip("\n") + "\n\n" + block + "\n"
+    fd, temp = tempfile.mkstemp(dir=path.parent, prefix=".speed_targets.", suffix=".tmp")
+    with os.fdopen(fd, "w") as handle:  # written whole, then moved onto the page
+        handle.write(text)
+        handle.flush()
+        os.fsync(handle.fileno())
+    os.replace(temp, path)
+    return path
+
+
+def main(argv=None):
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--repeats", type=int, default=21, help="runs per measure (default: 21)")
+    parser.add_argument("--no-write", action="store_true", help="print only")
+    args = parser.parse_args(argv)
+    rows = measure(args.repeats)
+    for row in rows:
+        print(" | ".join(row))
+    if not args.no_write:
+        print("wrote", write_section(rows, args.repeats))
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

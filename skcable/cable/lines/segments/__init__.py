@@ -1,0 +1,23 @@
+"""Multi-segment mooring lines with clump weights and buoys, in closed form.
+
+One concern per module:
+
+- `parts`: `Segment`, `ClumpWeight`, `Buoy`;
+- `arrays`: `LineArrays`, the line's read-only per-segment and per-joint numbers;
+- `closure`: the closed form at given fairlead forces, its closure and Jacobian
+  (`ClosureState`);
+- `heap`: the heap state (``H = 0``, the slack on the seabed);
+- `line`: `Line` and its solve (warm start, uniform-line start, bracketing, Newton);
+- `solution`: `LineSolution`, the equilibrium mapped along the line, its checks,
+  stiffness and tension table.
+
+Data flow: ``parts`` → ``line`` (its ``arrays``) → ``closure`` / ``heap`` → ``solution``.
+"""
+
+from skcable.cable.lines.segments.arrays import LineArrays
+from skcable.cable.lines.segments.closure import ClosureState
+from skcable.cable.lines.segments.line import Line
+from skcable.cable.lines.segments.parts import Buoy, ClumpWeight, Segment
+from skcable.cable.lines.segments.solution import LineSolution
+
+__all__ = ["Buoy", "ClosureState", "ClumpWeight", "Line", "LineArrays", "LineSolution", "Segment"]
