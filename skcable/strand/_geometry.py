@@ -256,10 +256,10 @@ class Strand:
             rows = [*rows[:2], f"... ({len(rows) - 3} more layers)", rows[-1]]
         broken = sorted(self.broken)
         shown = ", ".join(map(str, broken[:6])) + (", ..." if len(broken) > 6 else "")
-        counts = ["1", *(str(layer.count) for layer in self.layers)]
-        if len(counts) > 5:
-            counts = [*counts[:3], "...", counts[-1]]
-        counts = f"{'+'.join(counts)} = {1 + sum(layer.count for layer in self.layers)}"
+        per_layer = ["1", *(str(layer.count) for layer in self.layers)]
+        if len(per_layer) > 5:
+            per_layer = [*per_layer[:3], "...", per_layer[-1]]
+        counts = f"{'+'.join(per_layer)} = {1 + sum(layer.count for layer in self.layers)}"
         return (
             f"Strand({self.name or 'strand'!r}: {counts} wires, diameter {m(self.diameter)}, "
             f"core {m(self.core_diameter)}; {'; '.join(rows)}; "
@@ -331,8 +331,9 @@ class Strand:
             )
             for key, value in values.items():
                 columns[key].extend(np.atleast_1d(value).tolist())
-        columns["material"] = self.wire_materials().index
-        return Wires(**{k: np.array(v) for k, v in columns.items()})
+        arrays = {k: np.array(v) for k, v in columns.items()}
+        arrays["material"] = np.array(self.wire_materials().index)
+        return Wires(**arrays)
 
     # --- damage -----------------------------------------------------------
     def damaged(self, n: int | None = None, *, wires=None) -> Strand:

@@ -19,9 +19,16 @@ which tends to the taut string :math:`\omega_n = (n\pi/\ell)\sqrt{N/m}` as
 by finite elements on scikit-fem: cubic Hermite elements
 (``skfem.ElementLineHermite``) with the weak form
 :math:`\int EI\,w''v'' + N\,w'v' = \omega^2\int m\,w v` (consistent mass),
-a generalized symmetric eigenproblem solved by `scipy.linalg.eigh`; with
+a generalized symmetric eigenproblem; with
 :math:`N = 0` its first root is :math:`\beta_1\ell = 4.7300407\ldots` of
-:math:`\cos\beta\ell\cosh\beta\ell = 1` (Rao 2007, §11.5).
+:math:`\cos\beta\ell\cosh\beta\ell = 1` (Rao 2007, §11.5). It is solved on the unit
+interval :math:`\xi = x/\ell` with the tension ratio :math:`\kappa = N\ell^2/EI`:
+:math:`\omega^2 = (EI/m\ell^4)\,\mu`, :math:`\mu` an eigenvalue of
+:math:`\int w''v''\,d\xi + \kappa\int w'v'\,d\xi` over :math:`\int wv\,d\xi`, where
+:math:`\kappa \le 1`, and :math:`\omega^2 = (N/m\ell^2)\,\mu` with
+:math:`\int w'v'\,d\xi + \kappa^{-1}\int w''v''\,d\xi` where :math:`\kappa > 1`, so that
+any magnitudes whose frequencies a float holds give them; by shift-invert Lanczos on the
+band, checked by residual, mass orthonormality and a Sturm count (`skcable._eigen`).
 
 The strand's stiffness is that of its stick/slip bending law
 (`Section.EI_stick`, `Section.EI_slip`; Pino Vidal 2021, §3.1; Cardou 2013):
@@ -34,13 +41,17 @@ the frequency of a slipping strand at a given amplitude lies between them.
 
 from __future__ import annotations
 
+import functools
+import math
+from typing import NamedTuple
+
 import numpy as np
-from scipy.linalg import eigh
 from skfem import Basis, BilinearForm, ElementLineHermite, MeshLine
 from skfem.helpers import dd, ddot
 
-from skcable._checks import nonnegative, positive, scalar, whole
-from skcable.errors import ConvergenceError, InputError
+from skcable._checks import TINY, nonnegative, positive, scalar, whole
+from skcable._eigen import BandPattern, farthest_from_one, first_lobe_positive, lowest_modes
+from skcable.errors import InputError
 
 __all__ = [
     "BeamFrequencies",
@@ -85,7 +96,21 @@ def pinned_beam_frequencies(EI, N, length, mass_per_length, *, n_modes=6):
     N = _scalar("N", N, nonnegative)
     n = np.arange(1, whole("n_modes", n_modes, 1, 40) + 1)
     k = n * np.pi / length
-    return k**2 * np.sqrt(EI / m) * np.sqrt(1.0 + N / (k**2 * EI)) / (2.0 * np.pi)
+    f = np.array([_pinned_mode(kn, EI, N, m) for kn in k.tolist()])
+    if not (np.all(np.isfinite(f)) and np.all(f >= TINY)):
+        blame = {"EI": EI, "length": length, "mass_per_length": m} | ({"N": N} if N > 0 else {})
+        raise InputError(farthest_from_one(**blame), "gives frequencies outside the range of a float")
+    return f
+
+
+def _pinned_mode(k, EI, N, m):
+    """(k/2π) sqrt((k² EI + N)/m) in Python floats (inf on overflow, no warning), its larger
+    term factored out: k² sqrt(EI/m) sqrt(1 + r) or k sqrt(N/m) sqrt(1 + 1/r), r = N/(k² EI)."""
+    kk = k * k
+    ratio = N / EI / kk if kk > 0.0 else math.inf  # the string's share
+    if ratio <= 1.0:
+        return kk * (math.sqrt(EI) / math.sqrt(m)) * math.sqrt(1.0 + ratio) / (2.0 * math.pi)
+    return k * (math.sqrt(N) / math.sqrt(m)) * math.sqrt(1.0 + 1.0 / ratio) / (2.0 * math.pi)
 
 
 class BeamFrequencies:
@@ -99,12 +124,23 @@ class BeamFrequencies:
         Node abscissae (m), ends included.
     modes : (n_modes, n_nodes) array
         Transverse displacement of each mode at the nodes, mass-normalised
-        (``φᵀMφ = 1`` with the consistent mass).
+        (``φᵀMφ = 1`` with the consistent mass), each signed so that its first
+        lobe from ``x = 0`` is positive.
     EI, N, length, mass_per_length, ends : as given.
     pinned_closed_form : (n_modes,) array
         `pinned_beam_frequencies` for the same data (the exact value for
         ``ends="pinned"``, a lower bound for clamped ends).
     """
+
+    f: np.ndarray
+    x: np.ndarray
+    modes: np.ndarray
+    EI: float
+    N: float
+    length: float
+    mass_per_length: float
+    ends: str
+    pinned_closed_form: np.ndarray
 
     def __init__(self, **values):
         self.__dict__.update(values)
@@ -126,6 +162,41 @@ def _geometric(u, v, p):
 @BilinearForm
 def _mass(u, v, p):
     return u * v
+
+
+class _UnitBeam(NamedTuple):
+    """Hermite elements on [0, 1] with the ends' DOFs fixed: the bands of the bending,
+    geometric and mass matrices on the free DOFs, where each node's displacement is in
+    them (-1 where fixed), and the nodes' ξ."""
+
+    bending: np.ndarray
+    geometric: np.ndarray
+    mass: np.ndarray
+    displacement: np.ndarray
+    xi: np.ndarray
+
+
+def _band(form, basis, free):
+    """The upper band of ``form`` assembled on ``basis``, on the DOFs ``free``."""
+    coo = form.coo_data(basis)
+    rows, cols = coo.indices
+    return BandPattern(rows, cols, free, basis.N).band(coo.data)
+
+
+@functools.lru_cache(maxsize=16)
+def _unit_beam(n_elements: int, ends: str) -> _UnitBeam:
+    mesh = MeshLine(np.linspace(0.0, 1.0, n_elements + 1))
+    basis = Basis(mesh, ElementLineHermite())
+    boundary = basis.get_dofs()  # the two end nodes
+    fixed = boundary.nodal["u"] if ends == "pinned" else boundary.all()
+    free = basis.complement_dofs(fixed)  # node by node: banded
+    position = np.full(basis.N, -1)
+    position[free] = np.arange(free.size)
+    bending, geometric, mass = (_band(form, basis, free) for form in (_bending, _geometric, _mass))
+    beam = _UnitBeam(bending, geometric, mass, position[basis.nodal_dofs[0]], mesh.p[0].copy())
+    for array in beam:
+        array.flags.writeable = False
+    return beam
 
 
 def beam_frequencies(EI, N, length, mass_per_length, *, ends="clamped", n_modes=6, n_elements=None):
@@ -159,9 +230,10 @@ def beam_frequencies(EI, N, length, mass_per_length, *, ends="clamped", n_modes=
     Raises
     ------
     InputError
-        A non-physical argument, named.
+        A non-physical argument, named; or magnitudes whose frequencies or mode
+        shapes a float cannot hold (the argument farthest from 1 is named).
     ConvergenceError
-        An eigenvalue came out not finite or not positive.
+        The eigenpairs failed their checks (`skcable._eigen`).
     """
     EI, length, m = _scalar("EI", EI), _scalar("length", length), _scalar("mass_per_length", mass_per_length)
     N = _scalar("N", N, nonnegative)
@@ -175,23 +247,17 @@ def beam_frequencies(EI, N, length, mass_per_length, *, ends="clamped", n_modes=
     if not 2 * n_modes <= n_elements <= 4000:
         raise InputError("n_elements", f"must lie in [2 n_modes = {2 * n_modes}, 4000], got {n_elements}")
 
-    mesh = MeshLine(np.linspace(0.0, length, int(n_elements) + 1))
-    basis = Basis(mesh, ElementLineHermite())
-    K = (EI * _bending.assemble(basis) + N * _geometric.assemble(basis)).toarray()
-    M = m * _mass.assemble(basis).toarray()
-    boundary = basis.get_dofs()  # the two end nodes
-    fixed = boundary.nodal["u"] if ends == "pinned" else boundary.all()
-    free = basis.complement_dofs(fixed)
-    omega2, phi = eigh(K[np.ix_(free, free)], M[np.ix_(free, free)], subset_by_index=[0, n_modes - 1])
-    if not (np.all(np.isfinite(omega2)) and np.all(omega2 > 0)):
-        raise ConvergenceError("beam_frequencies: eigenvalues not finite and > 0", list(omega2))
-    full = np.zeros((n_modes, basis.N))
-    full[:, free] = phi.T
-    displacement = basis.nodal_dofs[0]  # the 'u' DOF of every node, in node order
+    beam = _unit_beam(int(n_elements), ends)
+    f, phi = _solve(beam, EI, N, length, m, n_modes)
+    mode_scale = 1.0 / (math.sqrt(m) * math.sqrt(length))  # the mass is m l times the unit one
+    if not (np.isfinite(mode_scale) and mode_scale >= TINY):
+        blame = farthest_from_one(length=length, mass_per_length=m)
+        raise InputError(blame, "gives mode shapes outside the range of a float")
+    modes = np.where(beam.displacement >= 0, phi.T[:, beam.displacement], 0.0) * mode_scale
     return BeamFrequencies(
-        f=np.sqrt(omega2) / (2.0 * np.pi),
-        x=mesh.p[0].copy(),
-        modes=full[:, displacement],
+        f=f,
+        x=length * beam.xi,
+        modes=first_lobe_positive(modes),
         EI=EI,
         N=N,
         length=length,
@@ -199,6 +265,23 @@ def beam_frequencies(EI, N, length, mass_per_length, *, ends="clamped", n_modes=
         ends=ends,
         pinned_closed_form=pinned_beam_frequencies(EI, N, length, m, n_modes=n_modes),
     )
+
+
+def _solve(beam, EI, N, length, m, n_modes):
+    """Frequencies (Hz) and unit-mass-normalised eigenvectors of the dimensionless beam."""
+    kappa = N / EI * length * length  # N l²/EI
+    if kappa <= 1.0:  # the bending term leads: omega² = EI/(m l⁴) mu
+        stiffness = beam.bending + kappa * beam.geometric
+        scale, blame = math.sqrt(EI) / math.sqrt(m) / length / length, {"EI": EI}
+    else:  # the tension leads: omega² = N/(m l²) mu
+        stiffness = beam.geometric + beam.bending / kappa
+        scale, blame = math.sqrt(N) / math.sqrt(m) / length, {"N": N}
+    mu, phi = lowest_modes(stiffness, beam.mass, n_modes, what="beam_frequencies")
+    f = np.sqrt(mu) * scale / (2.0 * np.pi)
+    if not (np.all(np.isfinite(f)) and np.all(f >= TINY)):
+        blame |= {"length": length, "mass_per_length": m}
+        raise InputError(farthest_from_one(**blame), "gives frequencies outside the range of a float")
+    return f, phi
 
 
 class StrandFrequencies:
@@ -219,6 +302,15 @@ class StrandFrequencies:
     axis : int
         Principal axis (0: axis 1, the stiffer; 1: axis 2).
     """
+
+    f_stick: np.ndarray
+    f_slip: np.ndarray
+    EI_stick: float
+    EI_slip: float
+    drop: np.ndarray
+    stick: BeamFrequencies
+    slip: BeamFrequencies
+    axis: int
 
     def __init__(self, **values):
         self.__dict__.update(values)

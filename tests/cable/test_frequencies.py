@@ -3,6 +3,7 @@ the crossover at lambda^2 = 4 pi^2, mode counts, orthogonality, errors."""
 
 import numpy as np
 import pytest
+import scipy.linalg
 
 from skcable import cable
 from skcable.errors import InputError
@@ -59,7 +60,8 @@ def test_taut_string_limit():
     for n in range(1, 9):
         exact = np.sin(n * np.pi * r.x / L)
         for shape in (r.modes_in_plane[n - 1], r.modes_out_of_plane[n - 1]):
-            cos = abs(shape @ exact) / (np.linalg.norm(shape) * np.linalg.norm(exact))
+            # signed so that the first lobe from A is up, as sin(n pi x / L)
+            cos = (shape @ exact) / (np.linalg.norm(shape) * np.linalg.norm(exact))
             assert cos == pytest.approx(1.0, abs=1e-8)
 
 
@@ -187,3 +189,102 @@ def test_mode_shape_writer_refuses_bad_input(tmp_path):
     with pytest.raises(InputError, match="modes_in_plane"):
         mode_shape_mesh(res)
     assert list(tmp_path.iterdir()) == []
+
+
+# --- the lowest modes, all of them: a nearly double pair at the crossover ----------------
+def test_nearly_double_pair_at_the_crossover_is_found_whole():
+    # a level span whose first symmetric and antisymmetric in-plane modes coincide to 1e-9:
+    # EA by bisection on the sign of f_sym - f_anti; the frequencies are those of the dense
+    # scipy eigh of the same matrices (bisection on the whole spectrum: none skipped)
+    def gap(EA):
+        r = cable.natural_frequencies(L, 0.0, W, EA, H=H, n_modes=3)
+        sym = r.f_in_plane[r.in_plane_symmetric][0]
+        anti = r.f_in_plane[~r.in_plane_symmetric][0]
+        return sym / anti - 1.0
+
+    lo, hi = _EA_for(0.9 * 4 * np.pi**2), _EA_for(1.1 * 4 * np.pi**2)
+    assert gap(lo) < 0 < gap(hi)
+    for _ in range(40):
+        mid = 0.5 * (lo + hi)
+        lo, hi = (mid, hi) if gap(mid) < 0 else (lo, mid)
+    r = cable.natural_frequencies(L, 0.0, W, lo, H=H, n_modes=3)
+    assert abs(r.f_in_plane[1] / r.f_in_plane[0] - 1) < 1e-9
+    assert sorted(r.in_plane_symmetric[:2].tolist()) == [False, True]
+    for K, f in ((r.stiffness_in_plane, r.f_in_plane), (r.stiffness_out_of_plane, r.f_out_of_plane)):
+        omega2 = scipy.linalg.eigh(K, r.mass, subset_by_index=[0, 2], eigvals_only=True)
+        np.testing.assert_allclose(f, np.sqrt(omega2) / (2 * np.pi), rtol=1e-9)
+
+
+# --- magnitudes at the edges of the float range (issue 26, D7) ---------------------------
+@pytest.mark.parametrize("s", [1e-301, 1e-150, 1e150, 1e298])
+def test_weight_and_stiffness_scaled_together_leave_the_frequencies(s):
+    # w and EA times s at the same sag: H scales by s, EA/H and the wave speed sqrt(H g/w) do
+    # not, so neither do the frequencies; the mass-normalised shapes scale by 1/sqrt(s)
+    # (w = 1e-300 once escaped as LinAlgError)
+    ref = cable.natural_frequencies(300.0, 0.0, 10.0, 3e8, sag=6.0, n_modes=4)
+    r = cable.natural_frequencies(300.0, 0.0, 10.0 * s, 3e8 * s, sag=6.0, n_modes=4)
+    np.testing.assert_allclose(r.f_in_plane, ref.f_in_plane, rtol=1e-12)
+    np.testing.assert_allclose(r.f_out_of_plane, ref.f_out_of_plane, rtol=1e-12)
+    assert r.lambda2 == pytest.approx(ref.lambda2, rel=1e-12)
+    assert r.in_plane_symmetric.tolist() == ref.in_plane_symmetric.tolist()
+    peak = np.abs(ref.modes_in_plane).max()
+    np.testing.assert_allclose(r.modes_in_plane * np.sqrt(s), ref.modes_in_plane, rtol=0, atol=1e-9 * peak)
+
+
+@pytest.mark.parametrize("s", [1e-300, 1e-100, 1e100, 1e290])
+def test_lengths_and_stiffness_scaled_together_scale_the_frequencies(s):
+    # span, sag and EA times s: wL/H, L/L_e and EA/H, hence lambda^2, stay; c/L scales by
+    # 1/sqrt(s), and so do the frequencies
+    ref = cable.natural_frequencies(300.0, 0.0, 10.0, 3e8, sag=6.0, n_modes=4)
+    r = cable.natural_frequencies(300.0 * s, 0.0, 10.0, 3e8 * s, sag=6.0 * s, n_modes=4)
+    np.testing.assert_allclose(r.f_in_plane * np.sqrt(s), ref.f_in_plane, rtol=1e-12)
+    np.testing.assert_allclose(r.f_out_of_plane * np.sqrt(s), ref.f_out_of_plane, rtol=1e-12)
+
+
+def test_weight_1e_300_is_the_inextensible_cable_of_irvine():
+    # w = 1e-300 at sag/span = 1 %: H ~ 4e-297, lambda^2 ~ 1e303, the inextensible limit,
+    # where Irvine's first in-plane mode is antisymmetric (c/L) and his symmetric root is
+    # tan b = b (4.4934); the FE within his small-sag 1 %
+    w = 1e-300
+    r = cable.natural_frequencies(L, 0.0, w, 1e8, sag=1.0)
+    assert r.lambda2 > 1e300 and np.isfinite(r.lambda2)
+    in_plane, out_of_plane = _irvine_by_hand(r.lambda2, 6, w=w, H=r.H)
+    np.testing.assert_allclose(r.f_in_plane, in_plane, rtol=1e-2)
+    np.testing.assert_allclose(r.f_out_of_plane, out_of_plane, rtol=1e-2)
+    c = np.sqrt(r.H * 9.81 / w)
+    assert r.f_in_plane[0] == pytest.approx(c / L, rel=1e-2)
+    assert r.f_in_plane[1] == pytest.approx(4.493409457909064 * c / (np.pi * L), rel=1e-2)
+
+
+@pytest.mark.parametrize(
+    "kw, argument",
+    [
+        (dict(w=1e-310, sag=6.0), "w"),  # a denormal weight: lambda^2 beyond the float range
+        (dict(w=5e-324, sag=6.0), "w"),
+        (dict(g=1e-310, H=1e4), "g"),  # a denormal g: the mass matrix beyond the float range
+        (dict(EA=1e-310, H=1e4), "EA"),  # lambda^2 below the smallest normal float
+        (dict(H=1e300), "H"),
+    ],
+)
+def test_out_of_range_magnitudes_are_refused_by_name(kw, argument):
+    args = dict(span=300.0, dh=0.0, w=10.0, EA=3e7) | kw
+    with pytest.raises(InputError) as info:
+        cable.natural_frequencies(**args)
+    assert info.value.argument == argument
+
+
+def test_extreme_irvine_roots_without_overflow():
+    # the symmetric roots at the two limits: lambda^2 -> 0 gives (j - 1/2) pi (the taut
+    # string's odd modes), lambda^2 -> infinity tan b = b (4.4934, 7.7253)
+    import warnings
+
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        taut = cable.irvine_frequencies(100.0, 1e-3, 1e-200, 1e4, n_modes=2)
+        stiff = cable.irvine_frequencies(100.0, 10.0, 1e300, 1e4, n_modes=3)
+    c = np.sqrt(1e4 * 9.81 / 1e-3)
+    assert taut["in_plane"] == pytest.approx([c / 200, c / 100], rel=1e-12)
+    c = np.sqrt(1e4 * 9.81 / 10.0)
+    assert stiff["in_plane"] == pytest.approx(
+        [c / 100, 4.493409457909064 * c / (np.pi * 100), 2 * c / 100], rel=1e-12
+    )

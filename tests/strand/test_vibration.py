@@ -129,3 +129,71 @@ def test_strand_bad_section_and_axis():
         strand_bending_frequencies(1.0, 1.0, 1.0, 1.0)
     with pytest.raises(InputError, match="axis"):
         strand_bending_frequencies(strand.preset("steel-9.5").section(), 1.0, 1.0, 1.0, axis=2)
+
+
+def test_modes_are_signed_first_lobe_up():
+    # pinned: the modes are sin(n pi x / l) exactly, and come signed as they are
+    fe = beam_frequencies(2.0, 30.0, 1.3, 0.4, ends="pinned", n_modes=4)
+    for n in range(1, 5):
+        exact = np.sin(n * np.pi * fe.x / 1.3)
+        cos = fe.modes[n - 1] @ exact / (np.linalg.norm(fe.modes[n - 1]) * np.linalg.norm(exact))
+        assert cos == pytest.approx(1.0, abs=1e-8)
+
+
+# --- magnitudes at the edges of the float range (issue 26, D7) ---------------------------
+def test_tension_1e308_is_the_taut_string():
+    # N = 1e308 once escaped as ValueError; N l^2/EI ~ 2e306: the taut string n/(2l) sqrt(N/m)
+    section = strand.preset("steel-9.5").section()
+    r = strand_bending_frequencies(section, N=1e308, length=1.0, mass_per_length=0.45)
+    string = np.arange(1, 7) / 2.0 * np.sqrt(1e308) / np.sqrt(0.45)  # N/m itself overflows
+    for f in (r.f_stick, r.f_slip, r.drop):
+        assert np.all(np.isfinite(f))
+    # clamping stiffens; on 96 elements the boundary layer (width sqrt(EI/N)) is not resolved
+    # and adds 0.25 % (the exact clamped excess, 2 sqrt(EI/N)/l, is 1e-153)
+    assert np.all(r.f_stick > string) and np.all(r.f_stick < 1.003 * string)
+    pinned = beam_frequencies(float(section.EI_stick[0]), 1e308, 1.0, 0.45, ends="pinned")
+    np.testing.assert_allclose(pinned.f, string, rtol=1e-6)
+
+
+@pytest.mark.parametrize("m", [1e-310, 1e-300, 1e300])
+def test_frequencies_scale_as_one_over_root_mass(m):
+    # f = sqrt(mu) sqrt(N/m) / (2 pi l) with mu independent of m: a denormal mass included
+    section = strand.preset("steel-9.5").section()
+    ref = strand_bending_frequencies(section, 1e3, 1.0, 0.45, n_modes=3)
+    r = strand_bending_frequencies(section, 1e3, 1.0, m, n_modes=3)
+    np.testing.assert_allclose(r.f_stick * np.sqrt(m / 0.45), ref.f_stick, rtol=1e-12)
+    np.testing.assert_allclose(r.f_slip * np.sqrt(m / 0.45), ref.f_slip, rtol=1e-12)
+
+
+@pytest.mark.parametrize("EI", [1e-310, 1e-300, 1e300])
+def test_beam_frequencies_scale_as_root_stiffness(EI):
+    # N = 0: f = sqrt(mu) sqrt(EI/m) / (2 pi l^2), the clamped roots of cos bl cosh bl = 1
+    beta_l = np.array([4.730040744862704, 7.853204624095838, 10.99560783800167])
+    fe = beam_frequencies(EI, 0.0, 1.0, 1.0, n_modes=3)
+    np.testing.assert_allclose(fe.f, beta_l**2 * np.sqrt(EI) / (2 * np.pi), rtol=1e-6)
+    assert np.all(np.isfinite(fe.modes))
+
+
+def test_pinned_closed_form_at_the_float_limits():
+    n = np.arange(1, 4)
+    # N/(k^2 EI) = 1e318 / k^2 beyond a float: the string n/(2l) sqrt(N/m)
+    np.testing.assert_allclose(
+        pinned_beam_frequencies(1e-10, 1e308, 1.0, 1.0, n_modes=3), n / 2 * 1e154, rtol=1e-12
+    )
+    # k^2 = (n pi / 1e300)^2 underflows: the string again
+    f = pinned_beam_frequencies(1.0, 1e4, 1e300, 1.0, n_modes=3)
+    np.testing.assert_allclose(f, n / 2e300 * 100.0, rtol=1e-12)
+
+
+@pytest.mark.parametrize(
+    "kwargs, name",
+    [
+        (dict(length=1e-300), "length"),  # frequencies ~ 1e301 / l beyond a float
+        (dict(mass_per_length=1e-300, length=1e-150), "mass_per_length"),  # the farther from 1
+    ],
+)
+def test_frequencies_beyond_a_float_are_refused_by_name(kwargs, name):
+    args = dict(N=1e3, length=1.0, mass_per_length=0.45) | kwargs
+    with pytest.raises(InputError) as info:
+        strand_bending_frequencies(strand.preset("steel-9.5").section(), **args)
+    assert info.value.argument == name
