@@ -35,6 +35,13 @@ each solve (`skcable.cable.bvp.line.iterate.solve_on`) starts from the last stag
    too coarse for the line with friction (`LineBVPSolver.regraded`).
 6. **Checks** (`LineBVPSolver.checked`): the friction that holds a slack stretch on a slope is
    at most μN, every number finite, the discrete line not in compression.
+7. **Refusal** (`LineBVPSolver.solve`): a failure where the segment-wise closed form's slack
+   stretch ends at a clump weight on the seabed becomes ``InputError("point_loads")``
+   (`LineBVPSolver.clump_at_slack_end`).
+
+**A warm start** (`LineBVPSolver.solve_from`, `LineBVP.solve(start=)`): the previous solution,
+moved to the new fairlead on its own mesh (`LineBVPSolver.moved`), is the start of one level
+(stages 3 and 5, with friction from the start); from scratch where that fails.
 
 **Retries.** Every solve on a new mesh starts from the last solution interpolated onto it, else
 from the closed-form start (on a nearly L-shaped line the bend at the touchdown has the radius
@@ -317,31 +324,37 @@ class LineBVPSolver:
 
     def with_friction(self, n, frictionless, graded):
         """The line with friction from the frictionless one (module docstring, 4): the solution,
-        the end of the slack stretch and the points fitted."""
-        friction = self.scene.friction
+        the end of the slack stretch and the points fitted. Three alternatives, in turn
+        (`first_success`): from the frictionless line on its mesh, with a node at its
+        touchdown too, from the segment-wise closed form with friction."""
         anchored = frictionless.problem.anchor_on_seabed
-        s0 = slack_estimate(frictionless, friction) if anchored else 0.0
-
-        def plain():
-            return self.rerun(self.problem(n, _with(s0), s0, friction, graded), frictionless), []
-
-        def at_touchdown():
-            edges = self.edges(frictionless)
-            return self.rerun(self.problem(n, _with(s0, edges), s0, friction, graded), frictionless), edges
-
-        def closed_form():  # the friction's own closed form, its slack stretch, where it has one
-            line = segmented_solution(frictionless.problem, friction)
-            if line is None:
-                raise ConvergenceError("solve_line_bvp: no segment-wise closed form of this line", [])
-            end = slack_end_of(line, self.length) if anchored else 0.0
-            problem = self.problem(n, _with(end, self.edges(frictionless)), end, friction, graded)
-            return self.run(problem, on_dofs(problem, line)), self.edges(frictionless), end
-
-        solution, fitted, *end = first_success(plain, at_touchdown, closed_form)
-        s0 = end[0] if end else s0
+        s0 = slack_estimate(frictionless, self.scene.friction) if anchored else 0.0
+        solution, s0, fitted = first_success(
+            lambda: self.from_frictionless(n, frictionless, graded, s0, []),
+            lambda: self.from_frictionless(n, frictionless, graded, s0, self.edges(frictionless)),
+            lambda: self.from_closed_friction(n, frictionless, graded),
+        )
         if s0 == 0 and anchored:
             s0 = tension_zero(solution, 1e3 * self.scene.rtol * solution.problem.load_scale)
         return solution, s0, fitted
+
+    def from_frictionless(self, n, frictionless, graded, s0, fitted):
+        """``(solution, s0, fitted)``: the line with friction and a slack stretch ending at
+        ``s0`` from the frictionless line, nodes at ``fitted``."""
+        problem = self.problem(n, _with(s0, fitted), s0, self.scene.friction, graded)
+        return self.rerun(problem, frictionless), s0, fitted
+
+    def from_closed_friction(self, n, frictionless, graded):
+        """``(solution, s0, fitted)``: the line with friction from the segment-wise closed form
+        with friction and its slack stretch (`slack_end_of`), a node at the frictionless
+        touchdown; a `ConvergenceError` where there is no such closed form."""
+        line = segmented_solution(frictionless.problem, self.scene.friction)
+        if line is None:
+            raise ConvergenceError("solve_line_bvp: no segment-wise closed form of this line", [])
+        end = slack_end_of(line, self.length) if frictionless.problem.anchor_on_seabed else 0.0
+        fitted = self.edges(frictionless)
+        problem = self.problem(n, _with(end, fitted), end, self.scene.friction, graded)
+        return self.run(problem, on_dofs(problem, line)), end, fitted
 
     def fitted(self, n, solution, s0, fitted, graded) -> LineBVPSolution:
         """Nodes at the touchdown and landing, and the end of the slack stretch, moved until they
