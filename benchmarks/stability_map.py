@@ -17,8 +17,9 @@ equations, or the inextensible catenary) and each run is classified:
 Methods: skcable closed form (catenary / elastic_catenary), skcable BVP graph form and arc
 form (P2, the mesh doubled from 64 elements until two meshes agree within 1e-10, at most 4096),
 skcable line BVP (`solve_line_bvp`: the arc form on meshes graded by the line's turning, the
-mesh doubled alike), skcable cable.solve(rtol=1e-9), MoorPy catenary(), pycatenary
-MooringLine, OpenSeesPy CatenaryCable.
+mesh doubled alike, or until the change between meshes stops falling: the round-off regime),
+skcable cable.solve(rtol=1e-9), MoorPy catenary(), pycatenary MooringLine, OpenSeesPy
+CatenaryCable.
 
 Run:  python benchmarks/stability_map.py            (about 15 minutes)
       python benchmarks/stability_map.py --replot   (counts and chart again from the CSV)
@@ -68,14 +69,22 @@ def bvp_converged(dh, length, EA, formulation):
 
 
 def line_bvp_converged(dh, length, EA):
-    """`solve_line_bvp` (graded P2 arc form), the mesh doubled until two successive H agree
-    within 1e-10 (at most 4096 elements)."""
-    n, previous = 64, None
+    """`solve_line_bvp` (graded P2 arc form), the mesh doubled from 64 elements until two
+    successive H agree within 1e-10, or until their change stops falling (at most 4096): the
+    round-off of a nearly taut line's H grows with the mesh (the positions carry eps L each, H
+    amplifies the length by cond = S/(2(S - c)): n eps cond on n elements) and outgrows its
+    discretisation error; then the coarser of the last two meshes."""
+    n, previous, change = 64, None, np.inf
     while n <= 4096:
-        sol = cable.solve_line_bvp(SPAN, dh, [(length, W, EA)], n_elements=n)
-        if previous is not None and abs(sol.H / previous - 1) < 1e-10:
-            return sol.H
-        previous, n = sol.H, 2 * n
+        H = cable.solve_line_bvp(SPAN, dh, [(length, W, EA)], n_elements=n).H
+        if previous is not None:
+            now = abs(H / previous - 1)
+            if now < 1e-10:
+                return H
+            if now >= change:
+                return previous
+            change = now
+        previous, n = H, 2 * n
     raise RuntimeError(f"mesh not converged at 4096 elements (last H {previous:.12g})")
 
 
