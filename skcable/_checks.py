@@ -9,6 +9,8 @@ booleans and complex numbers are refused rather than converted.
 
 from __future__ import annotations
 
+from typing import overload
+
 import numpy as np
 
 from skcable.errors import InputError
@@ -66,6 +68,10 @@ def _as_float_array(name: str, value) -> np.ndarray:
     raise _not_real(name, value, f" (array of dtype {raw.dtype})")
 
 
+@overload
+def real(name: str, value: float) -> float: ...
+@overload
+def real(name: str, value: object) -> np.ndarray | float: ...
 def real(name: str, value) -> np.ndarray | float:
     """Return ``value`` as a float (scalar input) or float array, raising if
     it is not a finite real number (or array of them)."""
@@ -86,6 +92,10 @@ def real(name: str, value) -> np.ndarray | float:
     return float(arr) if arr.ndim == 0 else arr
 
 
+@overload
+def positive(name: str, value: float) -> float: ...
+@overload
+def positive(name: str, value: object) -> np.ndarray | float: ...
 def positive(name: str, value) -> np.ndarray | float:
     """Return ``value`` as float, raising unless it is finite and > 0."""
     arr = real(name, value)
@@ -114,6 +124,10 @@ def within(name: str, value, low: float, high: float, reason: str, shown=None) -
     require(name, (value >= low) & (value <= high), reason, value if shown is None else shown)
 
 
+@overload
+def nonnegative(name: str, value: float) -> float: ...
+@overload
+def nonnegative(name: str, value: object) -> np.ndarray | float: ...
 def nonnegative(name: str, value) -> np.ndarray | float:
     """Return ``value`` as float, raising unless it is finite and >= 0."""
     arr = real(name, value)

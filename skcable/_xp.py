@@ -39,3 +39,9 @@ def namespace(*values):
         if isinstance(value, np.ndarray):
             return np
     return scalar_math
+
+
+def power_of_two_near(size, xp=scalar_math):
+    """A power of two within a factor two of ``size`` (> 0, float or array): dividing by it
+    is exact and brings ``size`` to order one. ``xp`` is the back end (`namespace`)."""
+    return xp.ldexp(0.5, xp.frexp(size)[1])

@@ -130,7 +130,7 @@ def render_strand(
     wires = curve.step_mesh(step, wires=True, scale=scale)
     segments = wires.cells[0].data
     broken = wires.cell_data["broken"][0].astype(bool)
-    stress = wires.cell_data["wire_stress"][0] / 1e6
+    stress = wires.cell_data["wire_stress_MPa"][0]
     radius = float(np.min(curve.steps[step].layout.wire_size))
     plotter = pv.Plotter(off_screen=True, window_size=list(window))
     for chosen, style in (

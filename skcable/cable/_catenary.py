@@ -33,7 +33,7 @@ from functools import cached_property
 import numpy as np
 
 from skcable._checks import broadcast, exactly_one, float_range, positive, real, require, within
-from skcable._xp import namespace, scalar_math
+from skcable._xp import namespace, power_of_two_near, scalar_math
 from skcable.cable._hanging import z_of_excess, z_of_length
 from skcable.cable._roots import find_root
 from skcable.cable._special import (
@@ -214,7 +214,7 @@ class Catenary(CableSolution):
 
     @cached_property
     def y_low(self):
-        return _lowest(self.m - self.z, self.m + self.z, self.y_vertex, self.dh)
+        return lowest_point_y(self.m - self.z, self.m + self.z, self.y_vertex, self.dh)
 
     @cached_property
     def sag(self):
@@ -229,19 +229,19 @@ class Catenary(CableSolution):
         x = real("x", x)
         xp, half = namespace(x, self.a, self.m), 0.5 * x / self.a
         with float_range("x", "y(x)"):
-            return _finite_at("x", 2.0 * xp.sinh(self.m - self.z + half) * (self.a * xp.sinh(half)), "y(x)")
+            return finite_at("x", 2.0 * xp.sinh(self.m - self.z + half) * (self.a * xp.sinh(half)), "y(x)")
 
     def slope(self, x):
         """dy/dx at ``x``."""
         u, xp = self._u(x)
         with float_range("x", "slope(x)"):
-            return _finite_at("x", xp.sinh(u), "slope(x)")
+            return finite_at("x", xp.sinh(u), "slope(x)")
 
     def T(self, x):
         """Tension at ``x`` (N)."""
         u, xp = self._u(x)
         with float_range("x", "T(x)"):
-            return _finite_at("x", self.H * xp.cosh(u), "T(x)")
+            return finite_at("x", self.H * xp.cosh(u), "T(x)")
 
     def weight_per_length(self, x, slope):
         return self.w + 0.0 * slope
@@ -319,7 +319,7 @@ class Catenary(CableSolution):
         yield from self._common_residuals(xp)
 
 
-def _lowest(u_a, u_b, y_vertex, dh):
+def lowest_point_y(u_a, u_b, y_vertex, dh):
     """y of the cable's lowest point: A (0) when it rises from A (u_A >= 0), B
     (dh) when it falls to B (u_B <= 0), else the vertex. Shared with the parabola."""
     if not isinstance(y_vertex, np.ndarray) and not isinstance(dh, np.ndarray):
@@ -327,7 +327,7 @@ def _lowest(u_a, u_b, y_vertex, dh):
     return np.where(u_a >= 0, 0.0, np.where(u_b <= 0, dh, y_vertex))
 
 
-def _finite_at(name, value, what):
+def finite_at(name, value, what):
     if isinstance(value, np.ndarray):
         if not np.isfinite(value).all():
             raise InputError(name, f"is so far outside the span that {what} overflows a float")
@@ -353,16 +353,10 @@ def _sag_over_a(z, m, phi, a=1.0):
     )
 
 
-def _unit(length, xp):
-    """A power of two near ``length``: dividing lengths by it is exact and
-    brings them to order one."""
-    return xp.ldexp(0.5, xp.frexp(length)[1])
-
-
 def _z_from_length(span, dh, length):
     xp = namespace(span, dh, length)
     legs = xp.abs(dh)
-    unit = _unit(xp.maximum(span, legs), xp)
+    unit = power_of_two_near(xp.maximum(span, legs), xp)
     span, dh, legs, length = span / unit, dh / unit, legs / unit, length / unit  # exact
     chord = xp.sqrt(span * span + dh * dh)  # both below 1 now: no overflow (and no hypot's cost)
     require("length", length > chord, "must exceed the chord sqrt(span**2 + dh**2)", length * unit)

@@ -27,7 +27,7 @@ from skcable import _plausible
 from skcable._checks import broadcast, float_range, positive, real, require
 from skcable._newton2 import solve2
 from skcable._xp import namespace
-from skcable.cable._catenary import _finite_at, hanging
+from skcable.cable._catenary import finite_at, hanging
 from skcable.cable._hanging import hanging_forces
 from skcable.cable._roots import find_root
 from skcable.cable._special import asinh_step, asinh_step_log, asinh_step_parts, sinhc_m1, sinhc_pair
@@ -240,14 +240,14 @@ class ElasticCatenary(CableSolution):
         s = real("s", s)
         p_s = self._ratios[0] + self.w * s / self.H
         with float_range("s", "T(s)"):
-            return _finite_at("s", self.H * namespace(p_s).hypot(1.0, p_s), "T(s)")
+            return finite_at("s", self.H * namespace(p_s).hypot(1.0, p_s), "T(s)")
 
     def x_of_s(self, s):
         """Abscissa of the material point ``s`` (unstretched arc length from A)."""
         s = real("s", s)
         with float_range("s", "x(s)"):
             x = self.H * s / self.EA + self.H / self.w * asinh_step(self._ratios[0], self.w * s / self.H)
-        return _finite_at("s", x, "x(s)")
+        return finite_at("s", x, "x(s)")
 
     def _y_terms(self, s):
         """The stretch and the inextensible part of ``y(s)``: ``(T(s) - T_A)/w`` as
@@ -262,7 +262,7 @@ class ElasticCatenary(CableSolution):
         s = real("s", s)
         with float_range("s", "y(s)"):
             stretch, shape = self._y_terms(s)
-            return _finite_at("s", stretch + shape, "y(s)")
+            return finite_at("s", stretch + shape, "y(s)")
 
     def s_of_x(self, x):
         """Material point at abscissa ``x`` in [0, span] (x(s) is increasing)."""

@@ -55,6 +55,8 @@ section stays in its vertical plane.
 
 from __future__ import annotations
 
+from typing import Any
+
 import numpy as np
 
 from skcable._checks import broadcast, nonnegative, real, scalar
@@ -138,6 +140,27 @@ class TensionSection:
     iterations : (...) int
         Newton iterations per state.
     """
+
+    # set by ``__init__`` from its keywords (shapes above), with the states' ``w`` and ``t``
+    H: Any
+    V_A: Any
+    V_B: Any
+    T_max: Any
+    sag: Any
+    span: Any
+    dh: Any
+    swing: Any
+    swing_angle: Any
+    clamp_rise: Any
+    L0: np.ndarray
+    ruling_span: float
+    H_ruling: Any
+    sag_ruling_span: Any
+    sag_ruling: Any
+    moment_residual: float
+    iterations: Any
+    w: Any
+    t: Any
 
     def __init__(self, **values):
         self.__dict__.update(values)

@@ -40,6 +40,8 @@ which for a level span is the textbook
 
 from __future__ import annotations
 
+from typing import Any
+
 import numpy as np
 
 from skcable import _plausible
@@ -147,6 +149,22 @@ class ChangeOfState:
     H0, sag0 : the reference state's horizontal tension and sag (model's).
     w, t, wind, model : the states, as given.
     """
+
+    # set by ``__init__`` from its keywords: floats for one span and one state, else arrays
+    H: Any
+    H_plane: Any
+    sag: Any
+    T_max: Any
+    length: Any
+    blowout: Any
+    L0: Any
+    H0: Any
+    sag0: Any
+    w: Any
+    t: Any
+    wind: Any
+    model: str
+    T_max_pct_rts: Any  # set by `skcable.cable.Conductor.change_of_state` when the RTS is known
 
     def __init__(self, **values):
         self.__dict__.update(values)

@@ -19,6 +19,7 @@ from __future__ import annotations
 
 import math
 from functools import cached_property
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
@@ -62,8 +63,24 @@ class CableSolution:
     the span; the two coincide when the vertex lies between the supports.
     """
 
-    span: np.ndarray
-    dh: np.ndarray
+    # what each subclass defines, on the instance or as a property: a float for one scene, an
+    # array of the broadcast shape for many (annotations only: no class attribute, `_shown`)
+    span: Any
+    dh: Any
+    w: Any
+    H: Any
+    V_A: Any
+    V_B: Any
+    T_A: Any
+    T_B: Any
+    length: Any
+    constraint: tuple[str, Any]  # the keyword the user fixed and its value
+
+    if TYPE_CHECKING:  # every subclass defines them (the ``x`` functions of the class docstring)
+
+        def y(self, x) -> Any: ...
+        def slope(self, x) -> Any: ...
+        def T(self, x) -> Any: ...
 
     # `ProfileMixin`'s methods, not its class as a base: subclasses that also list the mixin
     # (the finite-element solutions) keep a consistent method order

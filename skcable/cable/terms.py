@@ -119,7 +119,7 @@ class CableTerm(Term):
 
 def term_outputs(terms, state: CableState) -> dict:
     """Every term's `CableTerm.outputs` at ``state``, names made unique."""
-    out = {}
+    out: dict[str, np.ndarray] = {}
     for term in terms:
         for name, values in term.outputs(state, term.forces(state)).items():
             out[name if name not in out else f"{name}_{len(out)}"] = values

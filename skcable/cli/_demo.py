@@ -36,7 +36,8 @@ def _run(args) -> int:
         d_r = f"{row['D_r']:7.4f}" if "D_r" in row else f"{'-':>7s}"
         print(f"{label:12s} {row['K_Leq_N'] / 1e6:11.4f} {strain:12.5f} {force / 1e3:11.2f} {d_r}")
     print(
-        f"open {out / 'stick-slip.pvd'} in ParaView (Warp By Vector on 'displacement'); figures: {out}/*.png"
+        f"open {out / 'stick-slip.pvd'} in ParaView (Warp By Vector on 'transverse_displacement_m'); "
+        f"figures: {out}/*.png"
     )
     problem = "; ".join(filter(None, [stopped(curves, out), *problems]))
     if problem:

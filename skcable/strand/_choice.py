@@ -43,7 +43,7 @@ class ClosedFormCurve:
     @property
     def K_Leq(self) -> float:
         """Secant stiffness at the strain where the core leaves the linear branch (N)."""
-        limit = _first_wire_strain(self.strand, "eps_y1")
+        limit = first_wire_strain(self.strand, "eps_y1")
         return float(axial_force(self.strand, limit) / limit)
 
     @property
@@ -59,7 +59,7 @@ class ClosedFormCurve:
         return np.zeros_like(self.strain)
 
 
-def _first_wire_strain(strand, attribute: str) -> float:
+def first_wire_strain(strand, attribute: str) -> float:
     """The strand strain at which the first intact wire reaches its material's limit strain
     ``attribute`` ("eps_y1" or "eps_rupture"): ``min_j limit_j / cos²α_j`` (the straight core,
     α = 0, when every wire has one material)."""
@@ -107,7 +107,7 @@ def analyse(
     if int(n_points) < 2:
         raise InputError("n_points", f"must be at least 2, got {n_points!r}")
     if not strand.broken:
-        top = _first_wire_strain(strand, "eps_rupture")  # one material: the straight core
+        top = first_wire_strain(strand, "eps_rupture")  # one material: the straight core
         strain = np.linspace(0.0, top, int(n_points))
         reason = "undamaged strand in tension: straight and untwisted, F = Σ A cos α σ(cos²α ε) (no FE)"
         return Analysis("closed form", reason, ClosedFormCurve(strand, strain, axial_force(strand, strain)))

@@ -536,5 +536,6 @@ class BVPSolution(FiniteElementSolution):
         return (
             f"BVPSolution(span={self.span:g}, dh={self.dh:g}, {self.mesh.t.shape[1]} elements: "
             f"H={self.H:.9g} (both ends), V_A={self.V_A:.9g}, V_B={self.V_B:.9g}, "
-            f"length={self.length:.9g}, iterations={self.iterations})"
+            f"T_A={self.T_A:.9g}, T_B={self.T_B:.9g}, length={self.length:.9g} (N, m), "
+            f"iterations={self.iterations})"
         )

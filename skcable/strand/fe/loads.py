@@ -82,6 +82,7 @@ class _PointTerm(Term):
     """A dead load vector ``f`` (N,) built once: residual ``−f``, energy ``−f·U``."""
 
     potential = True
+    _f: np.ndarray  # the load vector (N,), set by the subclass's ``setup``
 
     def contribute(self, U, step):
         return -self._f, None, {}

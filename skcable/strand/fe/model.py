@@ -32,6 +32,7 @@ Source: S. Pino Vidal, "Rigidez a flexión en cables: análisis numérico", Univ
 from __future__ import annotations
 
 import warnings
+from typing import Any
 
 import numpy as np
 import scipy.sparse as sp
@@ -400,7 +401,7 @@ class StrandModel:
         state = self.initial_state() if state is None else state
         g = self.generalized_strains(U)
         S = D = None
-        outputs = [None] * len(self._bound)
+        outputs: list[Any] = [None] * len(self._bound)  # each term's output dict, filled below
         for i, t in self._section_terms:
             St, Dt, outputs[i] = t.section(g, Step(strain, self.x, state[i]))
             S, D = (St, Dt.copy()) if S is None else (S + St, D + Dt)
