@@ -21,10 +21,7 @@ PACKAGE = Path(__file__).resolve().parents[1] / "skcable"
 MAX_LINES = 80
 
 #: ``"path::qualified name"`` -> the branch rewriting that file now.
-KNOWN = {
-    "skcable/cable/bvp/line.py::solve_line_bvp": "linebvp",
-    "skcable/cable/bvp/line.py::LineProblem.__init__": "linebvp",
-}
+KNOWN: dict[str, str] = {}
 
 _NOT_CODE = {
     tokenize.COMMENT,

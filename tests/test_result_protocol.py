@@ -21,6 +21,7 @@ import numpy as np
 import pytest
 
 from skcable import cable
+from skcable.cable.bvp import LineBVPSolution
 from skcable.results import CableResult
 
 SPAN, DH, W = 100.0, 20.0, 20.0
@@ -85,6 +86,20 @@ FACTORIES = [
         ),
         id="bvp-arc",
     ),
+    # the line BVP (branch linebvp): free, and touching a seabed below the anchor
+    pytest.param(
+        fe(lambda span, dh: cable.solve_line_bvp(span, dh, [(LENGTH, W, 2e5)], n_elements=256), 1e-5),
+        id="line-bvp",
+    ),
+    pytest.param(
+        fe(
+            lambda span, dh: cable.solve_line_bvp(
+                span, dh, [(LENGTH / 2, W, 2e5), (LENGTH / 2, W, 2e5)], seabed=-5.0, n_elements=256
+            ),
+            1e-5,
+        ),
+        id="line-bvp-seabed",
+    ),
 ]
 
 
@@ -92,6 +107,8 @@ def applied_load(result) -> float:
     """The total downward load of a factory's scene (N), from the scene, not the result."""
     if isinstance(result, cable.Parabola):
         return W * result.span
+    if isinstance(result, LineBVPSolution):  # the seabed carries part of the weight
+        return W * result.length - float(np.sum(result.contact_force[:, 1]))
     if isinstance(result, cable.SlopedSeabedCatenary):
         # the grounded part's balance: the seabed's vertical force is W L_B - (T_t - T_A) sin(alpha)
         sin = result.seabed_slope / math.hypot(1.0, result.seabed_slope)
@@ -152,7 +169,9 @@ def test_stiffness_against_central_differences_of_resolved_scenes(factory):
     r = factory(SPAN, DH)
     K = r.stiffness()
     assert K.shape == (2, 2)
-    h = 1e-4 * SPAN
+    # the truncation of central differences, h²/6 ∂³H, is 1e-6 of K at h = 1e-4 span on a line
+    # lying on the seabed, 1e-8 at 1e-5 (their round-off, eps H/h, 4e-12)
+    h = 1e-5 * SPAN
     fd = np.empty((2, 2))
     for column, (d_span, d_dh) in enumerate([(h, 0.0), (0.0, h)]):
         plus, minus = factory(SPAN + d_span, DH + d_dh), factory(SPAN - d_span, DH - d_dh)

@@ -15,7 +15,7 @@ One concern per module:
 - `arc`: the arc-length form, L0 global;
 - `solve`: `solve_bvp`, which checks the
   arguments, picks the formulation and runs `skcable.fe.newton`;
-- `line`: `solve_line_bvp`, a mooring line in the arc form (segments,
+- `line`: `solve_line_bvp` and the line model `LineBVP`, a mooring line in the arc form (segments,
   w(s), point loads) with unilateral seabed contact of any shape.
 """
 
@@ -29,13 +29,14 @@ from skcable.cable.bvp.forms import (
     graph_tangent,
 )
 from skcable.cable.bvp.graph import BVPSolution
-from skcable.cable.bvp.line import BVPSegment, LineBVPSolution, solve_line_bvp
+from skcable.cable.bvp.line import BVPSegment, LineBVP, LineBVPSolution, solve_line_bvp
 from skcable.cable.bvp.solve import solve_bvp
 
 __all__ = [
     "ArcSolution",
     "BVPSegment",
     "BVPSolution",
+    "LineBVP",
     "LineBVPSolution",
     "arc_constitutive",
     "arc_equilibrium_x",
