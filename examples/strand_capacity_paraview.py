@@ -15,7 +15,7 @@ without bending) and the fraction of the length in slip
 strain. The critical curvature κ_m, where the wires start to slip, grows with the
 axial strain (the friction grips harder as the wires' tension rises); where it
 passes the curvature the broken wires impose, the strand re-sticks and the slip
-fraction falls from about 90 % to a few per cent (``skcable.plot.restick``: the
+fraction falls from about 90 % to a few per cent (``CapacityCurve.restick``: the
 figure marks it, the script prints its strains). The second figure is the pyvista
 render of the wires at a third of the curve, not to scale: the length is drawn at
 1/20 and the displacements 10 times (``RENDER_SCALES``, printed on the picture),
@@ -89,7 +89,7 @@ def main(argv=None):
             f"force {curve.force[-1] / 1e3:.2f} kN, D_r = {curve.D_r:.4f}"
         )
     for label, curve in results.items():
-        cliff = plot.restick(curve)
+        cliff = curve.restick()
         print(
             f"{label:10s} F/(EA eps) at eps = 0.002: {curve.secant(0.002) / curve.model.EA:.3f}"
             + (

@@ -8,7 +8,6 @@ the axes (the strain is dimensionless, forces in kN for readability).
 from __future__ import annotations
 
 from pathlib import Path
-from typing import NamedTuple
 
 import numpy as np
 
@@ -16,14 +15,12 @@ from skcable._checks import positive
 from skcable.errors import InputError
 
 __all__ = [
-    "Restick",
     "cable_profile",
     "capacity_curves",
     "curvature_along",
     "moment_curvature",
     "mooring_profiles",
     "render_strand",
-    "restick",
     "secant_stiffness",
     "slip_fraction",
     "strand_caption",
@@ -86,47 +83,10 @@ def slip_fraction(curves, labels=None, ax=None):
     return ax
 
 
-class Restick(NamedTuple):
-    """Where a strand re-sticks (`restick`): the strains and slip fractions before and after
-    the steps over which its slip fraction falls."""
-
-    strain_before: float
-    strain_after: float
-    fraction_before: float
-    fraction_after: float
-
-
-def restick(curve, drop: float = 0.5, step: float = 0.1) -> Restick | None:
-    """Where a strand re-sticks: the run of load steps over which the fraction of the length
-    in slip falls by more than ``step`` per step, around its steepest fall, if it falls by more
-    than ``drop`` over that run (None otherwise: the strand never re-sticks).
-
-    Slip starts at the first step, where the critical curvature κ_m (which grows with the axial
-    strain: the wires' tension presses them together) is still below the curvature the broken
-    wires impose; the strand re-sticks where κ_m passes it (Pino Vidal 2021, ch. 3).
-    Reads ``curve.strain`` and ``curve.slip_fraction`` only.
-    """
-    fraction = np.asarray(curve.slip_fraction, dtype=float)
-    fall = -np.diff(fraction)
-    if not fall.size or not fall.max() > step:
-        return None
-    first = last = int(np.argmax(fall))
-    while first > 0 and fall[first - 1] > step:
-        first -= 1
-    while last + 1 < fall.size and fall[last + 1] > step:
-        last += 1
-    if not fraction[first] - fraction[last + 1] > drop:
-        return None
-    strain = curve.strain
-    return Restick(
-        float(strain[first]), float(strain[last + 1]), float(fraction[first]), float(fraction[last + 1])
-    )
-
-
 def secant_stiffness(curves, labels=None, ax=None, *, at: float | None = None):
     """Secant stiffness F/(EA ε) against the axial strain (log scale) of
     capacity curves, with the fraction of the length in slip (%, dashed, right axis) and the
-    strain where each slipping strand re-sticks (dotted, `restick`).
+    strain where each slipping strand re-sticks (dotted, `CapacityCurve.restick`).
 
     ``EA`` is each curve's model's (the damaged section's), so 1 is a straight strand that
     does not bend; the value is ``curve.secant(ε) / EA`` (eq. 4.30 over ``[0, ε]``, Pino Vidal
@@ -150,7 +110,7 @@ def secant_stiffness(curves, labels=None, ax=None, *, at: float | None = None):
         if np.max(curve.slip_fraction) > 0:
             twin = twin or ax.twinx()
             twin.plot(eps, 100 * curve.slip_fraction[1:], "--", color=colour, lw=1)
-        found = restick(curve)
+        found = curve.restick()
         if found is not None:
             ax.axvline(found.strain_after, color=colour, ls=":", lw=1)
             ax.annotate(

@@ -5,7 +5,6 @@ import matplotlib
 matplotlib.use("Agg")
 
 import re  # noqa: E402
-from types import SimpleNamespace  # noqa: E402
 
 import matplotlib.image as mpimg  # noqa: E402
 import matplotlib.pyplot as plt  # noqa: E402
@@ -16,6 +15,7 @@ from PIL import Image  # noqa: E402
 from skcable import cable, plot, strand  # noqa: E402
 from skcable.cli import main  # noqa: E402
 from skcable.errors import InputError  # noqa: E402
+from skcable.strand.capacity import restick  # noqa: E402
 
 
 @pytest.fixture(scope="module")
@@ -88,7 +88,7 @@ def test_secant_stiffness_marks_where_the_strand_resticks(pair):
     fall = -np.diff(fraction)
     steep = np.flatnonzero(fall > 0.1)  # the steps where the slip fraction falls steeply: one run here
     assert np.all(np.diff(steep) == 1)
-    found = plot.restick(curve)
+    found = curve.restick()
     assert found == (
         curve.strain[steep[0]],
         curve.strain[steep[-1] + 1],
@@ -101,7 +101,7 @@ def test_secant_stiffness_marks_where_the_strand_resticks(pair):
     (note,) = ax.texts
     assert f"{100 * found.fraction_before:.0f} % → {100 * found.fraction_after:.0f} %" in note.get_text()
     plt.close(ax.figure)
-    assert plot.restick(pair["stick"]) is None  # no slip, no re-stick
+    assert pair["stick"].restick() is None  # no slip, no re-stick
 
 
 @pytest.mark.parametrize(
@@ -116,7 +116,7 @@ def test_secant_stiffness_marks_where_the_strand_resticks(pair):
 )
 def test_restick_finds_the_cliff_of_the_slip_fraction(fraction, expected):
     strain = np.linspace(0.0, 0.06, len(fraction))
-    found = plot.restick(SimpleNamespace(strain=strain, slip_fraction=np.array(fraction, dtype=float)))
+    found = restick(strain, np.array(fraction, dtype=float))
     if expected is None:
         assert found is None
     else:

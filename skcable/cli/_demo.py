@@ -40,7 +40,6 @@ def _stiffness_figure(curves: dict, out, force: bool):
 
 def _the_point(curves: dict) -> list[str]:
     """What the figure shows, in words, with the curves' own numbers."""
-    from skcable import plot
 
     secants = [
         f"{label} {curve.secant(_AT) / curve.model.EA:.3f}"
@@ -50,7 +49,7 @@ def _the_point(curves: dict) -> list[str]:
     lines = [f"secant stiffness F/(EA ε) at ε = {_AT:g}: {', '.join(secants)} (slip softens the strand)"]
     slipping = curves["stick-slip"]
     first = 100 * float(slipping.slip_fraction[1])
-    cliff = plot.restick(slipping)
+    cliff = slipping.restick()
     if cliff is None:
         lines.append(f"stick-slip: {first:.0f} % of the length slips at the first step and never re-sticks")
     else:

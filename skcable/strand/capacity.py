@@ -12,7 +12,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field
 from functools import cached_property
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, NamedTuple
 
 import numpy as np
 
@@ -25,7 +25,43 @@ from skcable.fe.continuation import StepControl
 if TYPE_CHECKING:  # pragma: no cover
     from skcable.strand.fe.model import StrandModel
 
-__all__ = ["CapacityCurve", "StepResult", "StrandLayout", "capacity_curve"]
+__all__ = ["CapacityCurve", "Restick", "StepResult", "StrandLayout", "capacity_curve", "restick"]
+
+
+class Restick(NamedTuple):
+    """Where a strand re-sticks (`restick`, `CapacityCurve.restick`): the strains and slip
+    fractions before and after the steps over which its slip fraction falls."""
+
+    strain_before: float
+    strain_after: float
+    fraction_before: float
+    fraction_after: float
+
+
+def restick(strain, slip_fraction, drop: float = 0.5, step: float = 0.1) -> Restick | None:
+    """Where a strand re-sticks: the run of load steps over which the fraction of the length
+    in slip falls by more than ``step`` per step, around its steepest fall, if it falls by more
+    than ``drop`` over that run (None otherwise: the strand never re-sticks).
+
+    Slip starts at the first step, where the critical curvature κ_m (which grows with the axial
+    strain: the wires' tension presses them together) is still below the curvature the broken
+    wires impose; the strand re-sticks where κ_m passes it (Pino Vidal 2021, ch. 3).
+    ``strain`` and ``slip_fraction`` are a curve's steps (`CapacityCurve.restick` passes its own).
+    """
+    fraction = np.asarray(slip_fraction, dtype=float)
+    fall = -np.diff(fraction)
+    if not fall.size or not fall.max() > step:
+        return None
+    first = last = int(np.argmax(fall))
+    while first > 0 and fall[first - 1] > step:
+        first -= 1
+    while last + 1 < fall.size and fall[last + 1] > step:
+        last += 1
+    if not fraction[first] - fraction[last + 1] > drop:
+        return None
+    return Restick(
+        float(strain[first]), float(strain[last + 1]), float(fraction[first]), float(fraction[last + 1])
+    )
 
 
 @dataclass(frozen=True, eq=False)
@@ -290,6 +326,11 @@ class CapacityCurve:
         """Equivalent linear stiffness over [0, elastic_limit] (N), eq. 4.30: the secant there."""
         strain, force = self._elastic_end
         return force / strain
+
+    def restick(self, drop: float = 0.5, step: float = 0.1) -> Restick | None:
+        """Where the strand re-sticks along this curve (`restick` of its strains and slip
+        fractions), or None."""
+        return restick(self.strain, self.slip_fraction, drop, step)
 
     def secant(self, strain: float) -> float:
         """Secant stiffness ``F(ε)/ε`` (N) at a strain on the curve, linear between steps.
