@@ -6,10 +6,8 @@ One concern per module:
   scikit-fem forms (the reference the fast assembly is tested against);
 - `elements`: the line elements (and a scikit-fem
   workaround for hierarchical ones);
-- `probes`: values, slopes and minima of a field at
-  arbitrary points;
-- `bordered`: the Newton increment of a banded
-  tangent bordered by one global unknown;
+- `assembly`, `bordered`, `probes`: deprecated, moved to `skcable.fe` (`Assembly`,
+  `BorderedSolver`, `skcable.fe.probes`) and served there for one release;
 - `base`: what both solutions share;
 - `graph`: the graph form y(x), H global;
 - `arc`: the arc-length form, L0 global;

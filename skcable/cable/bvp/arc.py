@@ -27,7 +27,7 @@ user's load callable, by central differences).
 The forms (`skcable.cable.bvp.forms`) are a *section law* in the
 generalized strains ``(x', y', x, y, T)``: `ArcProblem` assembles them
 with `skcable.fe.Assembly` (basis values and patterns once) and
-solves the bordered banded system of `skcable.cable.bvp.bordered`.
+solves the bordered banded system of `skcable.fe.linear.BorderedSolver`.
 
 Support reactions come from the residual rows at the supports:
 ``H_A = -R_x(A)``, ``V_A = R_y(A)``, ``H_B = R_x(B)``, ``V_B = R_y(B)``.
@@ -47,11 +47,11 @@ from skcable.cable._catenary import catenary
 from skcable.cable._loads import DeckLoad, DistributedLoad, PointLoad, SelfWeight
 from skcable.cable.bvp.base import FiniteElementSolution
 from skcable.cable.bvp.elements import end_dofs
-from skcable.cable.bvp.probes import element_values, gradient_probes, minimum_near
 from skcable.cable.terms import CableState, CableTerm, term_outputs
 from skcable.errors import ConvergenceError, InputError
 from skcable.fe.assembly import Assembly
 from skcable.fe.linear import BorderedSolver
+from skcable.fe.probes import element_values, gradient_probes, minimum_near
 
 __all__ = ["ArcProblem", "ArcSolution", "ArcState", "arc_guess", "arc_loads", "term_loads"]
 

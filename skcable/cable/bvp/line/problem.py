@@ -31,11 +31,11 @@ import numpy as np
 from scipy.linalg import lapack
 from skfem import Basis, ElementLineP1DG, ElementLineP2, MeshLine
 
-from skcable.cable.bvp.assembly import LineAssembly
 from skcable.cable.bvp.elements import end_dofs
 from skcable.cable.bvp.line.contact import ContactRows, ContactTerms
 from skcable.cable.bvp.line.mesh import joints_of, line_nodes
 from skcable.errors import ConvergenceError, InputError
+from skcable.fe.assembly import Assembly
 
 __all__ = ["STRAINS", "LineProblem", "LineState"]
 
@@ -109,7 +109,7 @@ class LineProblem:
         self.tbasis = self.basis.with_element(ElementLineP1DG())
         N, M = self.basis.N, self.tbasis.N
         self.N, self.M = N, M
-        self.assembly = LineAssembly({"x": self.basis, "y": self.basis, "T": self.tbasis}, STRAINS)
+        self.assembly = Assembly({"x": self.basis, "y": self.basis, "T": self.tbasis}, STRAINS)
         self.end_a, self.end_b, inner = end_dofs(self.basis)
         self.free = np.concatenate([inner, N + inner, 2 * N + np.arange(M)])
         self.system = self.assembly.banded(self.free)

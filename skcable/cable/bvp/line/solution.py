@@ -11,8 +11,8 @@ from skcable._checks import real, require, whole
 from skcable.cable.bvp.line.contact import anchor_split
 from skcable.cable.bvp.line.problem import LineProblem, LineState
 from skcable.cable.bvp.line.stiffness import fairlead_stiffness
-from skcable.cable.bvp.probes import gradient_probes
 from skcable.errors import ConvergenceError
+from skcable.fe.probes import gradient_probes
 from skcable.results import ProfileMixin
 
 __all__ = ["LineBVPSolution"]
