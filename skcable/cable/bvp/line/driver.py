@@ -262,6 +262,7 @@ class LineBVPSolver:
                         solution = self.level(size)
                     except ConvergenceError:
                         solution = None
+        assert solution is not None, "the finest level returns or raises"
         return solution
 
     def level(self, n, start=None) -> LineBVPSolution:
@@ -361,7 +362,8 @@ class LineBVPSolver:
         settle (module docstring, 5)."""
         fit = self.scene.fit_touchdown
         slack_tol = self.scene.rtol * solution.problem.load_scale
-        edge_passes, tried = 0, []
+        edge_passes = 0
+        tried: list[tuple[float, float]] = []  # (end, tension past it) of the settled solves
         for _ in range(fit + SLACK_PASSES):
             fitted, edges_moved, settled = self.moved_edges(solution, fitted, edge_passes < fit or s0 > 0)
             edge_passes += edges_moved

@@ -32,6 +32,7 @@ def first_success(*attempts):
             return attempt()
         except ConvergenceError as failed:
             first = failed if first is None else first
+    assert first is not None, "first_success needs at least one attempt"
     raise first from None
 
 

@@ -277,6 +277,7 @@ class LineProblem:
 
     def contact_terms(self, z, R0):
         """Per contact node: slope, curvature, gap, multiplier λ, active flag, R⁰ rows."""
+        assert self.contact_rows is not None, "a line without a seabed has no contact terms"
         return self.contact_rows.terms(z, R0)
 
     def assemble(self, z):
@@ -288,7 +289,7 @@ class LineProblem:
         R0, Ke = out
         F = R0.copy()
         terms = None
-        if self.contact.size:
+        if self.contact_rows is not None:
             terms = self.contact_rows.terms(z, R0)
             self.contact_rows.rows(F, terms)
         return LineState(F, R0, Ke, terms, self.merit(F), z)
@@ -319,8 +320,9 @@ class LineProblem:
     def tangent(self, state):
         """The generalized Jacobian of ``F``: element matrices with the contact rows mixed in,
         and the terms they cannot carry (sparse, or None)."""
-        if not self.contact.size:
+        if self.contact_rows is None:
             return state.Ke, None
+        assert state.terms is not None, "a state of a line with contact carries its contact terms"
         return self.contact_rows.mixed(state.Ke, state.terms, self.basis.element_dofs, self.assembly.N)
 
     def jacobian(self, state):

@@ -2,7 +2,9 @@
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from functools import cached_property
+from typing import TYPE_CHECKING
 
 import numpy as np
 from scipy.optimize import brentq
@@ -14,6 +16,9 @@ from skcable.cable.bvp.line.stiffness import fairlead_stiffness
 from skcable.errors import ConvergenceError
 from skcable.fe.probes import gradient_probes
 from skcable.results import ProfileMixin
+
+if TYPE_CHECKING:  # pragma: no cover
+    from skcable.cable.bvp.line.model import LineBVP
 
 __all__ = ["LineBVPSolution"]
 
@@ -73,9 +78,9 @@ class LineBVPSolution(ProfileMixin):
 
     #: ``slack_solver(s0)``: the line re-solved with its slack stretch ending at ``s0`` (set by
     #: the solver that made it; `stiffness` needs it where the line has a slack stretch)
-    slack_solver = None
+    slack_solver: Callable[[float], LineBVPSolution] | None = None
     #: the `LineBVP` model that solved it (None from `solve_line_bvp`)
-    model = None
+    model: LineBVP | None = None
 
     def __init__(self, problem: LineProblem, z, history, state: LineState):
         self.problem, self.dofs, self.state = problem, z, state
@@ -103,6 +108,7 @@ class LineBVPSolution(ProfileMixin):
         """The seabed's forces per contact node (the anchor's node first, when A lies on the
         seabed, whose push the seabed takes from the anchor); the anchor's reaction."""
         problem = self.problem
+        assert problem.contact_rows is not None and self.state.terms is not None, "a line on a seabed"
         bp, gap, lam, active, mu, held = problem.contact_rows.forces(self.state.terms, order)
         if self.anchor_on_seabed:
             # the seabed under the anchor takes the anchor's downward push, friction included
