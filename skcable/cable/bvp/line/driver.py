@@ -120,12 +120,12 @@ class LineBVPSolver:
         mu = sc.friction if mu is None else mu
         return LineProblem(
             sc.span, sc.dh, sc.segments, sc.point_loads, sc.seabed, mu, n,
-            fitted=fitted, slack_end=slack_end, nodes_at=nodes_at,
+            fitted=fitted, slack_end=slack_end, nodes_at=nodes_at, terms=sc.terms,
         )  # fmt: skip
 
     def run(self, problem, z0) -> LineBVPSolution:
-        """One solve of ``problem`` from ``z0``."""
-        return solve_on(problem, z0, self.scene.rtol, self.scene.max_iter)
+        """One solve of ``problem`` from ``z0`` with the scene's Newton options."""
+        return solve_on(problem, z0, self.scene.options)
 
     def restart(self, solution, problem):
         """``solution`` interpolated onto ``problem``'s dofs."""
