@@ -194,6 +194,43 @@ def test_a_grounded_line_on_a_slope_in_a_current_matches_shooting():
     assert abs(line.s_touchdown - s_td) < 1e-6 * GLENGTH
 
 
+def test_a_line_its_buoyancy_floats_is_the_mirrored_elastic_catenary():
+    """A rope of 300 N/m whose upthrust (0.1 m², a uniform sea) is 1006 N/m: it floats up from the
+    anchor on the seabed, the catenary of 706 N/m hung from (0, 0) to (300, −50) turned over."""
+    upthrust = cable.Buoyancy(0.1, rho=RHO, g=G, surface=200.0)
+    line = cable.solve_line_bvp(300.0, 50.0, [(340.0, 300.0, 1e8)], seabed=0.0, terms=[upthrust])
+    mirror = cable.elastic_catenary(300.0, -50.0, RHO * G * 0.1 - 300.0, 1e8, length=340.0)
+    assert not line.in_contact.any()
+    # measured 1.4e-9 of H
+    for ours, theirs in (
+        (line.H_B, mirror.H),
+        (line.H_A, mirror.H),
+        (line.V_B, -mirror.V_B),
+        (line.V_A, -mirror.V_A),
+    ):
+        assert abs(ours - theirs) < 1e-7 * mirror.H
+
+
+class TaperedLoad(cable.CableTerm):
+    """A downward load ``100 + 0.5 s`` N/m along the unstretched arc length ``s`` from A."""
+
+    uses_s = True
+    vertical = True
+
+    def forces(self, state):
+        return cable.CableForce(np.array([np.zeros_like(state.s), -(100.0 + 0.5 * state.s)]))
+
+
+def test_a_term_reading_s_gets_the_arc_length_from_the_anchor():
+    """The same load as a weight that varies along the segment (a callable of s): the same
+    discrete line, to the last bit here."""
+    kw = dict(fit_touchdown=0, rtol=1e-13)
+    line = cable.solve_line_bvp(300.0, 50.0, [(340.0, 300.0, 1e8)], terms=[TaperedLoad()], **kw)
+    weight = cable.solve_line_bvp(300.0, 50.0, [(340.0, lambda s: 400.0 + 0.5 * s, 1e8)], **kw)
+    for name in ("H_B", "V_B", "H_A", "V_A"):
+        assert abs(getattr(line, name) - getattr(weight, name)) < 1e-12 * line.T_B
+
+
 # --- the tangent and the stiffness ---------------------------------------------------------------
 
 TERMS = {

@@ -206,7 +206,7 @@ def start_nodes(form, fixed, n_elements):
     )
     m = 0.5 * (s[1:] + s[:-1])
     v = w * (m - s_v)
-    turning = np.where(grounded & (v < 0), 0.0, (w / H) / (1.0 + (v / H) ** 2))  # dθ/ds
+    turning = np.where(grounded & (v < 0), 0.0, (abs(w) / H) / (1.0 + (v / H) ** 2))  # |dθ/ds|
     monitor = 1.0 + L * turning
     rate = smoothed(s, n_elements * monitor / np.sum(monitor * np.diff(s)), n_elements)
     mass = np.concatenate([[0.0], np.cumsum(rate * np.diff(s))])

@@ -134,8 +134,13 @@ class LineProblem:
         self.load_scale = float(
             np.sum(np.abs(self.w_q) * self.assembly.dx) + np.sum(np.abs(self.point_values))
         )
+        #: the mean downward load per unstretched length (N/m) the closed-form start hangs under:
+        #: the weight's, less the cable terms' vertical force on the chord (`chord_forces`)
+        self.start_weight = self.weight / self.L
         if self.terms:
-            self.load_scale += self.chord_load()
+            f = self.chord_forces()
+            self.load_scale += float(np.sum(np.hypot(f[0], f[1]) * self.assembly.dx))
+            self.start_weight = (self.weight - float(np.sum(f[1] * self.assembly.dx))) / self.L
         self.length_scale = self.L
         self.stiffness = self.load_scale / self.L  # c of the complementarity function (N/m)
         self.contact = inner if seabed is not None else np.zeros(0, dtype=int)
@@ -155,14 +160,14 @@ class LineProblem:
                 f"got {list(self.terms)!r} on a {'flat' if flat else 'shaped'} seabed",
             )
 
-    def chord_load(self) -> float:
-        """``∫ |f| ds`` (N) of the cable terms on the straight chord from A to B, unstretched and
-        slack (``T = 0``): their share of the force scale `load_scale`."""
+    def chord_forces(self) -> np.ndarray:
+        """The cable terms' force ``f`` (N/m, (2, nq, ne)) on the straight chord from A to B,
+        unstretched and slack (``T = 0``): their share of the force scale `load_scale` (``∫ |f|
+        ds``) and of the start's weight `start_weight`."""
         s = self.assembly.x
         share = s / self.L
         a = np.broadcast_to((np.array([self.span, self.dh]) / self.L)[:, None, None], (2, *s.shape))
-        f = term_load(self.terms, share * self.span, share * self.dh, s, a, np.zeros_like(s)).f
-        return float(np.sum(np.hypot(f[0], f[1]) * self.assembly.dx))
+        return term_load(self.terms, share * self.span, share * self.dh, s, a, np.zeros_like(s)).f
 
     def _properties(self):
         """Weight and compliance at the quadrature points (an element's segment by its midpoint);
