@@ -168,16 +168,6 @@ class Scene:
         """Unstretched length of the line (m)."""
         return sum(seg.length for seg in self.segments)
 
-    @property
-    def rtol(self) -> float:
-        """Newton's tolerance, relative to the total load (``options.tol``)."""
-        return self.options.tol
-
-    @property
-    def max_iter(self) -> int:
-        """Newton iterations at most per solve (``options.max_iter``)."""
-        return self.options.max_iter
-
 
 def scene(
     span,

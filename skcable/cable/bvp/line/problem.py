@@ -39,15 +39,14 @@ from skcable.cable.bvp.line.contact import ContactRows, ContactTerms
 from skcable.cable.bvp.line.loads import TermLoad, term_load
 from skcable.cable.bvp.line.mesh import joints_of, line_nodes
 from skcable.cable.bvp.line.start import closed_form_start
+from skcable.cable.bvp.section import STRAINS, tension_section
 from skcable.errors import ConvergenceError, InputError
 from skcable.fe.assembly import Assembly
 from skcable.fe.check import sparse_of
 
 __all__ = ["STRAINS", "LineProblem", "LineState"]
 
-#: the generalized strains (field, derivative order): x', y', x, y, T
-STRAINS = (("x", 1), ("y", 1), ("x", 0), ("y", 0), ("T", 0))
-AX, AY, X, Y, T_ = range(5)
+AX, AY, X, Y, T_ = range(5)  # the generalized strains of `STRAINS`: x', y', x, y, T
 EPS = float(np.finfo(float).eps)
 
 
@@ -303,21 +302,14 @@ class LineProblem:
         """``R⁰`` (no contact) and the element tangents, or None for a collapsed tangent."""
         asmb = self.assembly
         g = asmb.interpolate(z)
-        ax, ay, T = g[AX], g[AY], g[T_]
-        n = np.sqrt(ax * ax + ay * ay)
-        if not np.all(n > 0):
+        T = g[T_]
+        section = tension_section(g[AX], g[AY], T)
+        if section is None:
             return None
-        ex, ey = ax / n, ay / n
+        n, ex, ey, D = section  # T e, the stretch and their tangent (skcable.cable.bvp.section)
         c = self.compliance_q
         fx, fy, forces = self.distributed_load(g)
         S = np.stack([T * ex, T * ey, fx, fy, n - 1.0 - T * c])
-        D = np.zeros((5, 5, *n.shape))
-        Tn = T / n
-        D[AX, AX] = Tn * (1.0 - ex * ex)
-        D[AX, AY] = D[AY, AX] = -Tn * ex * ey
-        D[AY, AY] = Tn * (1.0 - ey * ey)
-        D[AX, T_] = D[T_, AX] = ex
-        D[AY, T_] = D[T_, AY] = ey
         D[T_, T_] = -c
         if forces is not None:
             self.add_term_tangent(D, forces)
