@@ -395,6 +395,23 @@ def test_the_callback_sees_every_iteration():
     assert len(calls) > line.iterations  # the continuation's earlier solves are seen too
 
 
+def test_solve_bvp_on_a_seabed_hands_its_newton_options_on():
+    calls = []
+    line = cable.solve_bvp(
+        GSPAN,
+        GDH,
+        cable.SelfWeight(GW),
+        length=GLENGTH,
+        EA=GEA,
+        seabed=0.0,
+        callback=lambda *a: calls.append(a),
+    )
+    assert [r for _, r, _ in calls[-line.iterations :]] == line.history[1:]
+    with pytest.raises(InputError) as info:
+        cable.solve_bvp(GSPAN, GDH, cable.SelfWeight(GW), length=GLENGTH, EA=GEA, seabed=0.0, atol=-1.0)
+    assert info.value.argument == "atol"
+
+
 def test_a_raising_callback_is_reraised_naming_the_iteration():
     def stop(k, r, step):
         if k == 2:
