@@ -132,7 +132,8 @@ def newton_options_of(options=None, **given) -> NewtonOptions:
     """The Newton options of a line BVP: ``options`` (a `skcable.fe.NewtonOptions`, `LINE_OPTIONS`
     by default) updated by the keywords ``given`` that are not None (``rtol`` is ``tol``'s name
     here, as in `skcable.cable.solve_bvp`); an unknown keyword is an `InputError` naming it, and
-    so is ``line_search="energy"`` (a line on a seabed with friction has no energy)."""
+    so is ``line_search="energy"`` (the line BVP minimises no energy: its Newton runs on the
+    residual, contact and friction rows included)."""
     rtol = given.pop("rtol", None)
     if rtol is not None:
         if given.get("tol") is not None:
@@ -143,7 +144,7 @@ def newton_options_of(options=None, **given) -> NewtonOptions:
     out = NewtonOptions.of(LINE_OPTIONS if options is None else options, **given)
     if out.line_search == "energy":
         raise InputError(
-            "line_search", "'energy' needs a potential; the line BVP has none: use 'residual' or 'none'"
+            "line_search", "'energy' needs a potential; the line BVP minimises none: use 'residual' or 'none'"
         )
     return out
 

@@ -4,7 +4,9 @@
   Irvine, "Cable Structures", MIT Press, 1981, ch. 2; an inextensible line starts from the
   inextensible catenary) or, where it dips below the seabed, Jonkman's grounded one on a flat
   seabed at the anchor's level (J.M. Jonkman, NREL, 2007), its positions lifted onto the
-  seabed. Exact for one uniform segment.
+  seabed. Exact for one uniform segment. With cable terms the mean weight is the weight less
+  the terms' vertical force on the chord (`LineProblem.start_weight`); a line they buoy up
+  (a negative mean weight) hangs upward, the mirror image of the line under the opposite load.
 - `segmented_start`: the multi-segment closed form `skcable.cable.Line` of the same segments,
   clump weights and buoys at the joints and flat seabed: the start of a line whose segments
   differ (a light rope under a heavy chain hangs far from the uniform line of their mean
