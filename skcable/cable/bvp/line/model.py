@@ -145,7 +145,10 @@ class LineBVP:
     segments, seabed, seabed_slope, friction, point_loads, n_elements, fit_touchdown, rtol, max_iter
         As for `solve_line_bvp`.
     terms, options, **newton_options
-        As for `solve_line_bvp`: the cable terms and the Newton options of every solve.
+        As for `solve_line_bvp`: the cable terms and the Newton options of every solve. The
+        terms act in the line's own vertical plane, x from the anchor towards the fairlead: in
+        `line_3d` or a `MooringSystem` a horizontal term (`CurrentDrag`, `WindDrag`) is along
+        each line's own span, not a current or a wind in global axes.
 
     Examples
     --------
