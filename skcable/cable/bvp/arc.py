@@ -53,6 +53,7 @@ from skcable.errors import ConvergenceError, InputError
 from skcable.fe.assembly import Assembly
 from skcable.fe.linear import BorderedSolver
 from skcable.fe.probes import element_values, gradient_probes, minimum_near
+from skcable.results import ProfileMixin
 
 __all__ = ["ArcProblem", "ArcSolution", "ArcState", "arc_guess", "arc_loads", "term_loads"]
 
@@ -545,6 +546,13 @@ class ArcSolution(FiniteElementSolution):
         s = np.atleast_1d(self._sigma_of_x(x))
         T = self._problem.fields(self.dofs)[2]
         return (self._problem.tbasis.probes(s.reshape(1, -1)) @ T).reshape(np.shape(x))[()]
+
+    def to_frame(self, n: int = 201):
+        """``n`` profile samples evenly spaced in unstretched arc length (pandas DataFrame):
+        columns ``s`` (m), ``x``, ``y`` (m) and ``T`` (N), then the cable terms' outputs
+        (``samples()["outputs"]``), a vector as ``<name>_x`` and ``<name>_y``."""
+        outputs = self.samples(n)["outputs"] if self._problem.terms else {}
+        return ProfileMixin.frame_with_outputs(self, n, outputs)
 
     def samples(self, n: int = 201) -> dict:
         """The profile at ``n`` equally spaced σ (unstretched arc length): see

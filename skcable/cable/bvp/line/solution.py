@@ -405,15 +405,8 @@ class LineBVPSolution(ProfileMixin):
         columns ``s`` (m), ``x``, ``y`` (m) and ``T`` (N) (`skcable.results.ProfileMixin`), then
         the cable terms' outputs (``samples()["outputs"]``), a vector as ``<name>_x`` and
         ``<name>_y``."""
-        frame = ProfileMixin.to_frame(self, n)
         outputs = self.samples(n)["outputs"] if self.problem.terms else {}
-        for name, values in outputs.items():
-            values = np.asarray(values, dtype=float)
-            if values.ndim == 2:
-                frame[f"{name}_x"], frame[f"{name}_y"] = values[:, 0], values[:, 1]
-            else:
-                frame[name] = values
-        return frame
+        return ProfileMixin.frame_with_outputs(self, n, outputs)
 
     def to_vtk(self, path, n: int = 201):
         """Write the line as a VTK polyline (`skcable.io.cable_mesh`: tension, tangent, angle,
