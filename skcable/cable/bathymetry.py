@@ -35,7 +35,12 @@ import numpy as np
 from skcable._checks import real
 from skcable.errors import InputError
 
-__all__ = ["Bathymetry", "DepthFunction", "Grid", "Plane", "Profile", "bathymetry_of"]
+__all__ = ["Bathymetry", "DepthFunction", "Grid", "OffGrid", "Plane", "Profile", "bathymetry_of"]
+
+
+class OffGrid(InputError):
+    """A point where a `Grid` has no height (an `skcable.InputError` naming ``seabed``): a solver
+    may reject a trial iterate for it and step back."""
 
 
 def _pair(name: str, value) -> np.ndarray:
@@ -231,7 +236,7 @@ class Grid(Bathymetry):
         out = ~((x >= self.x[0]) & (x <= self.x[-1]) & (y >= self.y[0]) & (y <= self.y[-1]))
         if np.any(out):
             k = np.argwhere(out)[0]
-            raise InputError(
+            raise OffGrid(
                 "seabed",
                 f"the point ({x[tuple(k)]:g}, {y[tuple(k)]:g}) lies off the grid "
                 f"[{self.x[0]:g}, {self.x[-1]:g}] x [{self.y[0]:g}, {self.y[-1]:g}] m",
