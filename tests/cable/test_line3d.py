@@ -349,7 +349,61 @@ def test_vtk_repr_and_pickle(tmp_path):
         drag_written[k], drag(np.array([0.3, 0.9, 0.0]), a, 0.1, 1.2, 0.008), rtol=1e-10
     )
     assert "force_on_fairlead=[" in repr(line) and "32 elements" in repr(line)
+    from skcable.io import lines_mesh
+
+    polyline = lines_mesh([line], n=21)  # the 3-D writer of the mooring lines reads it too
+    np.testing.assert_allclose(polyline.points, line.profile(21), rtol=1e-12)
+    table = line.tensions()
+    assert table["T_lower"].iloc[0] == line.T_A and table["T_upper"].iloc[-1] == line.T_B
     copy = pickle.loads(pickle.dumps(line))
     np.testing.assert_array_equal(copy.force_on_fairlead, line.force_on_fairlead)
     np.testing.assert_array_equal(copy.profile(11), line.profile(11))
     assert repr(copy) == repr(line)
+
+
+@pytest.mark.parametrize("kind", ["grid", "depth function"])
+def test_the_contact_rows_generalized_jacobian_is_exact(kind):
+    """On a curved seabed with friction and a current, the contact rows' Jacobian (row mixing,
+    ∇∇b, the sliding direction through the neighbours) against central differences of the
+    residual, the active set held."""
+
+    def height(x, y):
+        return -200 + 0.03 * x + 10 * np.sin(x / 150) * np.cos(y / 120)
+
+    def gradient(x, y):
+        return 0.03 + 10 / 150 * np.cos(x / 150) * np.cos(y / 120), -10 / 120 * np.sin(x / 150) * np.sin(
+            y / 120
+        )
+
+    bed = wavy_grid() if kind == "grid" else DepthFunction(height, gradient)
+    a = np.array([0.0, 0.0, float(bed.height(0.0, 0.0))])
+    segment = LineSegment(660.0, 1000.0, 5e8, 0.09, 2.4, 0.4)
+    line = solve_line_bvp_3d(
+        a, (600.0, 50.0, -20.0), [segment], seabed=bed, friction=0.15, current=(0.2, 0.6), n_elements=48
+    )
+    p, z = line.problem, line.dofs
+    state = p.assemble(z)
+    J = p.jacobian(state)
+    rng = np.random.default_rng(0)
+    for _ in range(4):
+        d = np.zeros(z.size)
+        d[p.free] = rng.standard_normal(p.free.size)
+        d /= np.abs(d).max()
+        errors = []
+        for h in (1e-5, 1e-6, 1e-7):
+            plus, minus = p.assemble(z + h * d), p.assemble(z - h * d)
+            assert np.array_equal(plus.terms.active, state.terms.active)
+            fd = ((plus.F - minus.F) / (2 * h))[p.free]
+            errors.append(np.linalg.norm((J @ d)[p.free] - fd) / np.linalg.norm(fd))
+        assert min(errors) < 1e-8, errors
+
+
+def test_the_line_model_pickles_and_solves_alike():
+    model = LineBVP3D(
+        [LineSegment(**CHAIN)], current=TabulatedCurrent([0, 400.0], [[1, 0.5], [0.2, 0.1]]), n_elements=24
+    )
+    copy = pickle.loads(pickle.dumps(model))
+    np.testing.assert_array_equal(copy.solve(A, B).force_on_fairlead, model.solve(A, B).force_on_fairlead)
+    assert repr(copy) == repr(model)
+    with pytest.raises(InputError, match="start"):
+        model.solve(A, B, start=copy.solve(A, B))

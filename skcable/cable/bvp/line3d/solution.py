@@ -137,6 +137,38 @@ class LineBVP3DSolution:
         """The line at ``n`` points evenly spaced in unstretched arc length: ``(n, 3)`` (m)."""
         return self.xyz(np.linspace(0.0, self.length, whole("n", n, 2)))
 
+    def profile_with_tension(self, n: int = 101):
+        """``(points (n, 3), tension (n,))`` at ``n`` points evenly spaced in unstretched arc
+        length (what `skcable.io.lines_mesh` reads)."""
+        s = np.linspace(0.0, self.length, whole("n", n, 2))
+        return self.xyz(s), np.asarray(self.T_of_s(s), dtype=float)
+
+    def tensions(self):
+        """One row per segment (pandas DataFrame): ``segment, length, T_lower, T_upper``
+        (N; the tension field just inside the segment at its ends, the support reactions at the
+        line's ends) and ``grounded_length`` (m, of its contact nodes' span on the seabed)."""
+        import pandas as pd
+
+        joints = self.problem.joints
+        inside = 1e-9 * np.diff(joints)
+        T_l = np.atleast_1d(self.T_of_s(joints[:-1] + inside))
+        T_u = np.atleast_1d(self.T_of_s(joints[1:] - inside))
+        T_l[0], T_u[-1] = self.T_A, self.T_B
+        grounded = np.zeros(joints.size - 1)
+        if self.in_contact.any():
+            on = self.contact_s[self.in_contact]
+            low, high = on.min(), on.max()
+            grounded = np.clip(np.minimum(joints[1:], high) - np.maximum(joints[:-1], low), 0.0, None)
+        return pd.DataFrame(
+            {
+                "segment": np.arange(joints.size - 1),
+                "length": np.diff(joints),
+                "T_lower": T_l,
+                "T_upper": T_u,
+                "grounded_length": grounded,
+            }
+        )
+
     def T_of_s(self, s):
         """The tension field (N) at unstretched arc lengths ``s`` (m): P1-DG, the value of the
         element containing ``s``; `T_A` and `T_B` (the supports' reactions) are the accurate
