@@ -9,6 +9,7 @@ One concern per module:
 - `assembly`, `bordered`, `probes`: deprecated, moved to `skcable.fe` (`Assembly`,
   `BorderedSolver`, `skcable.fe.probes`) and served there for one release;
 - `base`: what both solutions share;
+- `section`: the tension's part of the arc-length forms' section law (the arc form and the line);
 - `graph`: the graph form y(x), H global;
 - `arc`: the arc-length form, L0 global;
 - `solve`: `solve_bvp`, which checks the

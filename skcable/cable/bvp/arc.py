@@ -47,6 +47,7 @@ from skcable.cable._catenary import catenary
 from skcable.cable._loads import DeckLoad, DistributedLoad, PointLoad, SelfWeight
 from skcable.cable.bvp.base import FiniteElementSolution
 from skcable.cable.bvp.elements import end_dofs
+from skcable.cable.bvp.section import tension_section
 from skcable.cable.terms import CableState, CableTerm, term_outputs
 from skcable.errors import ConvergenceError, InputError
 from skcable.fe.assembly import Assembly
@@ -198,20 +199,13 @@ class ArcProblem:
         asmb = self.assembly
         g = asmb.interpolate(z)
         ax, ay, X, T = g[_AX], g[_AY], g[_X], g[_T]
-        n = np.sqrt(ax * ax + ay * ay)
-        if not np.all(n > 0):  # a collapsed tangent: reject this iterate
+        section = tension_section(ax, ay, T)
+        if section is None:  # a collapsed tangent: reject this iterate
             return _REJECTED
-        ex, ey = ax / n, ay / n
+        n, ex, ey, D = section  # T e, the stretch and their tangent (skcable.cable.bvp.section)
         Qx, Qy, dQx_dx, dQy_dx, dQx_dxp, dQy_dxp, dQx_dL, dQy_dL = arc_loads(self.loads, X, ax, L0, self.span)
         c = self.compliance
         S = np.stack([T * ex, T * ey, -Qx, -Qy, n - L0 * (1.0 + T * c)])
-        D = np.zeros((5, 5, *n.shape))
-        Tn = T / n
-        D[_AX, _AX] = Tn * (1.0 - ex * ex)
-        D[_AX, _AY] = D[_AY, _AX] = -Tn * ex * ey
-        D[_AY, _AY] = Tn * (1.0 - ey * ey)
-        D[_AX, _T] = D[_T, _AX] = ex
-        D[_AY, _T] = D[_T, _AY] = ey
         D[_X, _X], D[_X, _AX] = -dQx_dx, -dQx_dxp
         D[_Y, _X], D[_Y, _AX] = -dQy_dx, -dQy_dxp
         D[_T, _T] = -L0 * c
@@ -529,10 +523,12 @@ class ArcSolution(FiniteElementSolution):
             raise InputError("x", "the cable is not a graph y(x) here (x(s) is not increasing): use xy(s)")
         probe = self.basis.probes
 
-        def f(s):
-            return (probe(np.atleast_2d(s.ravel())) @ xd).reshape(s.shape) - x
+        def f(s, target):  # find_root passes the targets of the elements it still works on
+            return (probe(np.atleast_2d(s.ravel())) @ xd).reshape(s.shape) - target
 
-        res = elementwise.find_root(f, (np.zeros_like(x), np.ones_like(x)))
+        res = elementwise.find_root(f, (np.zeros_like(x), np.ones_like(x)), args=(x,))
+        if not np.all(res.success):
+            raise ConvergenceError(f"ArcSolution: no σ found where x(σ) = x ({res.status})", [])
         return np.asarray(res.x)
 
     def y(self, x):
