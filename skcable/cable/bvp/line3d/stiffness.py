@@ -21,6 +21,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from skcable.errors import ConvergenceError, InputError
+
 __all__ = ["KINDS", "FairleadStiffness", "fairlead_stiffness_3d"]
 
 #: the stiffnesses a line gives
@@ -55,8 +57,6 @@ class FairleadStiffness:
 
 def fairlead_stiffness_3d(solution, kind: str = "static") -> FairleadStiffness:
     """The fairlead stiffness of a `LineBVP3DSolution` (module docstring)."""
-    from skcable.errors import InputError
-
     if kind not in KINDS:
         raise InputError("kind", f"must be one of {KINDS}, got {kind!r}")
     problem, state = solution.problem, solution.state
@@ -64,7 +64,5 @@ def fairlead_stiffness_3d(solution, kind: str = "static") -> FairleadStiffness:
         state = problem.assemble(solution.dofs, dynamic=True)
     K_B, K_A, _ = problem.end_sensitivity(state)
     if not (np.all(np.isfinite(K_B)) and np.all(np.isfinite(K_A))):
-        from skcable.errors import ConvergenceError
-
         raise ConvergenceError("fairlead stiffness: non-finite sensitivities", solution.history)
     return FairleadStiffness(K_B, K_A, kind)
