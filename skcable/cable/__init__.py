@@ -161,7 +161,10 @@ _MOVED = {
 }
 
 __getattr__, __dir__ = attach(
-    __name__, submodules=("bvp", "conductors", "lines", "solution", "terms"), names=_NAMES, moved=_MOVED
+    __name__,
+    submodules=("axial", "bathymetry", "bvp", "conductors", "current", "lines", "solution", "terms"),
+    names=_NAMES,
+    moved=_MOVED,
 )
 
 __all__ = [
