@@ -31,7 +31,6 @@ import copy
 from dataclasses import dataclass, replace
 
 import numpy as np
-from scipy.linalg import lapack
 from skfem import Basis, ElementLineP1DG, ElementLineP2, MeshLine
 
 from skcable.cable.bvp.elements import end_dofs
@@ -40,7 +39,7 @@ from skcable.cable.bvp.line.loads import TermLoad, term_load
 from skcable.cable.bvp.line.mesh import joints_of, line_nodes
 from skcable.cable.bvp.line.start import closed_form_start
 from skcable.cable.bvp.section import STRAINS, tension_section
-from skcable.errors import ConvergenceError, InputError
+from skcable.errors import InputError
 from skcable.fe.assembly import Assembly
 from skcable.fe.check import sparse_of
 
@@ -445,14 +444,7 @@ class LineProblem:
         """``J⁻¹ rhs`` over the free dofs for several right-hand sides at once (``rhs`` (n_free,
         k), in ``free`` order): one banded LU factorisation (LAPACK ``dgbsv``) of the generalized
         Jacobian at ``state``."""
-        system = self.system
-        order = system.position[self.free]
-        b = np.empty((system.n, rhs.shape[1]))
-        b[order] = rhs
-        _, _, x, info = lapack.dgbsv(system.kl, system.ku, self._band(state), b)
-        if info != 0:
-            raise ConvergenceError(f"banded solve: the tangent is singular (LAPACK dgbsv info = {info})", [])
-        return x[order]
+        return self.system.solve(self._band(state), rhs)
 
     def end_sensitivity(self, state):
         """``(K, dz)``: ``K = ∂(H_B, V_B)/∂(span, dh)`` (N/m, rows H_B, V_B) of the discrete line

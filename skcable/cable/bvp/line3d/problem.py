@@ -32,7 +32,6 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 import numpy as np
-from scipy.linalg import lapack
 from skfem import Basis, ElementLineP1DG, ElementLineP2, MeshLine
 
 from skcable.cable.bvp.elements import end_dofs
@@ -40,7 +39,6 @@ from skcable.cable.bvp.line.mesh import joints_of, line_nodes
 from skcable.cable.bvp.line3d.contact import ContactRows3D, ContactTerms3D
 from skcable.cable.bvp.line3d.loads import SegmentDrag
 from skcable.cable.terms import CableState
-from skcable.errors import ConvergenceError
 from skcable.fe.assembly import Assembly
 from skcable.fe.probes import gradient_probes
 
@@ -321,14 +319,7 @@ class LineProblem3D:
 
     def solve_many(self, state, rhs):
         """``J⁻¹ rhs`` over the free dofs, several right-hand sides (n_free, k): one banded LU."""
-        system = self.system
-        order = system.position[self.free]
-        b = np.empty((system.n, rhs.shape[1]))
-        b[order] = rhs
-        _, _, x, info = lapack.dgbsv(system.kl, system.ku, self._band(state), b)
-        if info != 0:
-            raise ConvergenceError(f"banded solve: the tangent is singular (LAPACK dgbsv info = {info})", [])
-        return x[order]
+        return self.system.solve(self._band(state), rhs)
 
     def end_dofs(self, end) -> np.ndarray:
         """The three position dofs of the anchor (``"a"``) or the fairlead (``"b"``)."""
