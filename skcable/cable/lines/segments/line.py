@@ -116,6 +116,29 @@ class Line:
         """Whether the line may rest on a seabed through its anchor (``seabed=0``)."""
         self._buoyed = bool((P[1:n] < 0).any())  # buoys between the ends
 
+    def variant(self, *, reverse: bool = False, contact: bool = False) -> Line:
+        """This line as seen from one end, with or without a seabed through that end (cached).
+
+        ``reverse``: the line given from its other end (segments in reverse order, an
+        attachment at joint ``j`` moved to joint ``n - j``). ``contact``: a flat seabed through
+        the anchor (``seabed=0``) and this line's ``friction``; else no seabed (and no
+        friction). The solutions of a variant are those of the same physical line with its
+        ends named the other way round (`skcable.cable.lines.geometry` picks the variant
+        that suits a line's position over the seabed)."""
+        key = (bool(reverse), bool(contact))
+        cache = self.__dict__.setdefault("_variants", {})
+        if key not in cache:
+            segments, attachments = self.segments, self.attachments
+            if reverse:
+                n = len(segments)
+                segments = segments[::-1]
+                attachments = [type(a)(n - a.joint, abs(a.force)) for a in attachments]
+            if contact:
+                cache[key] = Line(segments, attachments, seabed=0.0, friction=self.friction)
+            else:
+                cache[key] = Line(segments, attachments)
+        return cache[key]
+
     @property
     def length(self):
         """Total unstretched length (m)."""

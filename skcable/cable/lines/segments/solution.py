@@ -234,6 +234,11 @@ class LineSolution(ProfileMixin):
         if not residual < 1e-9:
             raise ConvergenceError(f"Line.solve: residual {residual:.3e} after the solve", [residual])
 
+    def lowest_height(self) -> float:
+        """Lowest height (m, above A) of the line's suspended part: its joints and the vertices
+        inside segments (the grounded part, at the seabed, left out)."""
+        return float(self._lowest_suspended())
+
     def _lowest_suspended(self):
         """Lowest height of the suspended part: its joints and the vertices inside segments."""
         st = self._st
