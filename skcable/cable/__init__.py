@@ -68,6 +68,7 @@ if TYPE_CHECKING:  # what static tools see; at run time, `attach` below serves t
         MooringLine,
         MooringPoint,
         MooringSystem,
+        PlaneLine,
         PointBody,
         RigidBody,
         SeabedCatenary,
@@ -76,6 +77,7 @@ if TYPE_CHECKING:  # what static tools see; at run time, `attach` below serves t
         elastic_catenary,
         line_3d,
         line_between,
+        line_in_plane,
         rotation_matrix,
         sloped_seabed_catenary,
     )
@@ -115,6 +117,7 @@ _NAMES = {
         "MooringLine",
         "MooringPoint",
         "MooringSystem",
+        "PlaneLine",
         "PointBody",
         "RigidBody",
         "SeabedCatenary",
@@ -123,6 +126,7 @@ _NAMES = {
         "elastic_catenary",
         "line_3d",
         "line_between",
+        "line_in_plane",
         "rotation_matrix",
         "sloped_seabed_catenary",
     ),
@@ -249,4 +253,6 @@ __all__ = [
     "MooringLine",
     "MooringPoint",
     "line_between",
+    "line_in_plane",
+    "PlaneLine",
 ]

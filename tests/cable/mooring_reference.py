@@ -38,7 +38,7 @@ def free_line(span, dh, segments, start, loads=None):
         x, y, _ = _pieces(H, V, segments, loads)
         return x - span, y - dh
 
-    H, V = mp.findroot(f, tuple(mp.mpf(v) for v in start))
+    H, V = mp.findroot(f, tuple(mp.mpf(v) for v in start), solver="mdnewton")
     V_bottom = _pieces(H, V, segments, loads)[2]
     return float(H), float(-V_bottom + loads[0]), float(V + loads[-1])
 
@@ -54,7 +54,7 @@ def grounded_line(span, dh, w, EA, L, friction, start):
         Z = H / w * (mp.sqrt(1 + (V / H) ** 2) - 1) + V * V / (2 * EA * w)
         return X - span, Z - dh
 
-    H, V = mp.findroot(f, tuple(mp.mpf(v) for v in start))
+    H, V = mp.findroot(f, tuple(mp.mpf(v) for v in start), solver="mdnewton")
     L_B = L - V / w
     return float(H), float(V), float(max(H - mu * w * L_B, 0)), float(L_B)
 
@@ -72,7 +72,7 @@ def touchdown_line(span, dh, w, EA, L, depth, start):
         x2 = H * s2 / EA + H / w * mp.asinh(VB / H)
         return h1, h2, x1 + x2 + (L - s1 - s2) * (1 + H / EA) - span
 
-    H, V1, VB = mp.findroot(f, tuple(mp.mpf(v) for v in start))
+    H, V1, VB = mp.findroot(f, tuple(mp.mpf(v) for v in start), solver="mdnewton")
     return float(H), float(V1), float(VB)
 
 
@@ -140,3 +140,66 @@ def balance(eq, forces, external=None):
     for key, vector in (external or {}).items():
         out[key][: len(vector)] += vector
     return out
+
+
+def sloped_line(span, dh, w, EA, L, slope, friction, start):
+    """One segment from A on the plane seabed ``y = x tan α`` to B (Jonkman's line on a slope):
+    ``(H_A, V_A, H_B, V_B)`` from ``start = (H, L_B)``."""
+    span, dh, w, EA, L, m, mu = (mp.mpf(v) for v in (span, dh, w, EA, L, slope, friction))
+    cos = 1 / mp.sqrt(1 + m * m)
+    sin = m * cos
+    k = w * (sin + mu * cos)
+
+    def f(H, L_B):
+        Vt, Tt = H * m, H / cos
+        Ls = L - L_B
+        VB = Vt + w * Ls
+        ell = min(L_B, Tt / k) if k > 0 else L_B
+        ground = L_B + (Tt * ell - k * ell * ell / 2) / EA
+        X = ground * cos + H * Ls / EA + H / w * (mp.asinh(VB / H) - mp.asinh(Vt / H))
+        Z = ground * sin + (mp.hypot(H, VB) - mp.hypot(H, Vt)) / w + (VB * VB - Vt * Vt) / (2 * EA * w)
+        return X - span, Z - dh
+
+    H, L_B = mp.findroot(f, tuple(mp.mpf(v) for v in start), solver="mdnewton")
+    T_A = max(H / cos - k * L_B, 0)
+    return float(T_A * cos), float(-T_A * sin), float(H), float(H * m + w * (L - L_B))
+
+
+def grounded_multi(span, dh, segments, start):
+    """A frictionless line of segments (from A) resting on the seabed through A up to a tangent
+    touchdown inside one of its heavy segments, then suspended to B: ``(H, V_B, grounded)``."""
+    span, dh = mp.mpf(span), mp.mpf(dh)
+    segs = [tuple(mp.mpf(v) for v in s) for s in segments]
+
+    def parts(H, V):
+        tops, Vt = [], V
+        for L, w, _ in reversed(segs):
+            tops.append(Vt)
+            Vt = Vt - w * L
+        tops = tops[::-1]  # the vertical force at the top of each segment
+        k = next(i for i, v in enumerate(tops) if v > 0)  # the lowest segment that hangs (from A)
+        x = y = mp.mpf(0)
+        for i in range(k, len(segs)):
+            L, w, EA = segs[i]
+            Vt = tops[i]
+            Vb = max(Vt - w * L, mp.mpf(0)) if i == k else Vt - w * L
+            Ls = (Vt - Vb) / w
+            x += H * Ls / EA + H / w * (mp.asinh(Vt / H) - mp.asinh(Vb / H))
+            y += (Vt * Vt - Vb * Vb) / (2 * EA * w) + (mp.hypot(H, Vt) - mp.hypot(H, Vb)) / w
+        ground = (
+            sum(seg[0] for seg in segs[:k])
+            + segs[k][0]
+            - (tops[k] - max(tops[k] - segs[k][1] * segs[k][0], 0)) / segs[k][1]
+        )
+        stretch = (
+            sum(H * seg[0] / seg[2] for seg in segs[:k])
+            + H * (ground - sum(seg[0] for seg in segs[:k])) / segs[k][2]
+        )
+        return x + ground + stretch, y, ground
+
+    def f(H, V):
+        x, y, _ = parts(H, V)
+        return x - span, y - dh
+
+    H, V = mp.findroot(f, tuple(mp.mpf(v) for v in start), solver="mdnewton")
+    return float(H), float(V), float(parts(H, V)[2])

@@ -29,8 +29,10 @@ read the results.
 
 from skcable.cable.lines.between import LineBetween, line_between
 from skcable.cable.lines.body import PointBody, RigidBody, rotation_matrix
+from skcable.cable.lines.geometry import line_in_plane
 from skcable.cable.lines.line3d import Line3D, line_3d
 from skcable.cable.lines.network import MooringLine, MooringPoint
+from skcable.cable.lines.plane import PlaneLine
 from skcable.cable.lines.seabed import (
     SeabedCatenary,
     SlopedSeabedCatenary,
@@ -51,6 +53,7 @@ __all__ = [
     "MooringLine",
     "MooringPoint",
     "MooringSystem",
+    "PlaneLine",
     "PointBody",
     "RigidBody",
     "SeabedCatenary",
@@ -59,6 +62,7 @@ __all__ = [
     "elastic_catenary",
     "line_3d",
     "line_between",
+    "line_in_plane",
     "rotation_matrix",
     "sloped_seabed_catenary",
 ]

@@ -122,35 +122,57 @@ def _bvp_arguments(variant, seabed):
     return segments, loads, friction
 
 
-def solve_bvp_line(line, span, dh, seabed, reason):
-    """``line`` (segments from A) between A = (0, 0) and B = (span, dh) over a flat ``seabed``
-    (height relative to A, or None) by `skcable.cable.solve_line_bvp`, from the lower end; a
-    `skcable.cable.lines.geometry.PlaneLine` with ``model="bvp"`` and ``reason``."""
+def _options(seabed, seabed_slope, friction, loads) -> dict:
+    return dict(seabed=seabed, seabed_slope=seabed_slope, friction=friction, point_loads=loads)
+
+
+def _plane_seabed(low, slope, d_low, d_span=0.0):
+    """The BVP's seabed relative to the lower end after it moves up by ``d_low``: None, 0 (the
+    end on it, moving with it), a height or a plane ``b(x)`` with its slope."""
+    if low is None or low == 0.0 and slope == 0.0:
+        return low, None
+    if slope == 0.0:
+        return low - d_low, None
+    base = 0.0 if low == 0.0 else low - d_low
+    return (lambda x: base + slope * np.asarray(x)), (lambda x: slope + 0.0 * np.asarray(x))
+
+
+def solve_bvp_line(line, span, dh, seabed, reason, slope=0.0):
+    """``line`` (segments from A) between A = (0, 0) and B = (span, dh) over the seabed
+    ``y = seabed + x slope`` (relative to A, or None) by `skcable.cable.solve_line_bvp`, from the
+    end that rests on the seabed (else the lower); a
+    `skcable.cable.lines.plane.PlaneLine` with ``model="bvp"`` and ``reason``."""
     from skcable.cable.bvp import solve_line_bvp
 
-    reverse = dh < 0
-    height = abs(dh)
-    low = None if seabed is None else (seabed - dh if reverse else seabed)  # seabed relative to the lower end
-    if low is not None and -low <= on_seabed_tolerance(span, dh, seabed):
+    tol = on_seabed_tolerance(span, dh, 0.0 if seabed is None else seabed)
+    on_A = seabed is not None and -seabed <= tol
+    on_B = seabed is not None and dh - seabed - span * slope <= tol
+    reverse = (on_B and not on_A) or (not (on_A or on_B) and dh < 0)
+    height = -dh if reverse else dh
+    slope_o = -slope if reverse else slope
+    low = None if seabed is None else (seabed - dh + span * slope if reverse else seabed)
+    if low is not None and -low <= tol:
         low = 0.0
     variant = line.variant(reverse=reverse, contact=low == 0.0)
     if low is not None and low < 0 and line.friction > 0:
         raise InputError(
             "friction",
-            "the line touches down between its ends (its lower end above the seabed): static friction there "
+            "the line touches down between its ends (neither rests on the seabed): static friction there "
             "depends on the history of the motion; give the line friction=0",
         )
     segments, loads, friction = _bvp_arguments(variant, low)
-    options = dict(seabed=low, friction=friction, point_loads=loads)
 
     def forces(d_span, d_low, d_high):
-        bed = None if low is None else (0.0 if low == 0.0 else low - d_low)
-        end = height + d_high - d_low  # an anchor on the seabed moves with it (the seabed stays at 0)
-        r = solve_line_bvp(span + d_span, end, segments, **{**options, "seabed": bed})
+        bed, bed_slope = _plane_seabed(low, slope_o, d_low)
+        end = height + d_high - d_low  # an end on the seabed moves with it (the seabed stays at 0)
+        r = solve_line_bvp(span + d_span, end, segments, **_options(bed, bed_slope, friction, loads))
         P_A, P_B = variant.arrays.P_end
         return float(r.H_A), float(r.V_A) + P_A, float(r.H), float(r.V_B) + P_B
 
-    solution = BVPLineView(variant, solve_line_bvp(span, height, segments, **options), forces)
+    bed, bed_slope = _plane_seabed(low, slope_o, 0.0)
+    first = solve_line_bvp(span, height, segments, **_options(bed, bed_slope, friction, loads))
+    solution = BVPLineView(variant, first, forces)
+    key = ("bvp", reverse)
     return PlaneLine(
-        span, dh, seabed, solution, reverse, "bvp", reason, ("bvp", reverse), solution.jacobian, variant
+        span, dh, seabed, solution, reverse, "bvp", reason, key, solution.jacobian, variant, slope
     )

@@ -37,74 +37,23 @@ differentiated in closed form (`touchdown_jacobian`).
 
 from __future__ import annotations
 
-import numpy as np
-
 from skcable.cable.lines.bvp_model import solve_bvp_line
+from skcable.cable.lines.jacobians import free_jacobian, grounded_jacobian, touchdown_jacobian
 from skcable.cable.lines.lying import lying_line
-from skcable.cable.lines.plane import MODELS, PlaneLine, on_seabed_tolerance
-from skcable.cable.lines.seabed import anchor_part, elastic_catenary, grounded_closure
+from skcable.cable.lines.plane import MODELS, PlaneLine, on_seabed_tolerance, uniform
+from skcable.cable.lines.seabed import elastic_catenary
 from skcable.cable.lines.segments import Line
+from skcable.cable.lines.slope import solve_on_slope
 from skcable.errors import InputError
 
-__all__ = ["MODELS", "PlaneLine", "is_line", "on_seabed_tolerance", "solve_in_plane"]
-
-
-# -- the Jacobians of the closed forms (oriented: A the lower end) -----------------------------------
-def free_jacobian(k) -> np.ndarray:
-    """Nothing touches: ``H_A = H_B``, ``V_A = W - V_B``, a function of ``y_B - y_A``."""
-    (k_hh, k_hv), (k_vh, k_vv) = np.asarray(k, dtype=float).tolist()
-    return np.array(
-        [[k_hh, -k_hv, k_hv], [-k_vh, k_vv, -k_vv], [k_hh, -k_hv, k_hv], [k_vh, -k_vv, k_vv]], dtype=float
-    )
-
-
-def grounded_jacobian(k, friction, H_A) -> np.ndarray:
-    """Grounded at A: ``V_A`` constant, ``H_A = max(H - C_B (W - V_B - P_A), 0)``; A and the seabed
-    move together (the height columns opposite)."""
-    (k_hh, k_hv), (k_vh, k_vv) = np.asarray(k, dtype=float).tolist()
-    J = np.array([[0.0] * 3, [0.0] * 3, [k_hh, -k_hv, k_hv], [k_vh, -k_vv, k_vv]])
-    if H_A > 0:
-        J[0] = J[2] + friction * J[3]
-    return J
-
-
-def touchdown_jacobian(solution) -> np.ndarray:
-    r"""The touchdown between the ends of one uniform segment (`elastic_catenary`, ``seabed < 0``).
-
-    Its closure (`skcable.cable.lines.seabed.closure.grounded_closure`) at the lower end's
-    height ``d`` above the seabed adds the part hanging from A, whose height
-    :math:`u^2/(2EA) + u(1 + H/EA) = w d` (:math:`u = T_1 - H`) gives, at constant ``H``,
-    :math:`\partial u/\partial d = w/(1 + T_1/EA)`, :math:`\partial V_1/\partial d = T_1 u_d/V_1`
-    and, the grounded length shortened by :math:`V_1/w`,
-    :math:`\partial f_x/\partial d = (H - T_1)/(V_1 (1 + T_1/EA))`, :math:`\partial f_z/\partial d = -1`
-    (at constant ``dh``). Then ``∂(H, V_B)/∂d = -J⁻¹ ∂f/∂d``, ``V_A = V_1(H, d)``, ``H_A = H``;
-    in the heights, ``∂/∂y_B = ∂/∂dh`` and ``∂/∂y_A = ∂/∂d - ∂/∂dh``.
-    """
-    s = solution
-    H, V_B, w, EA, depth = float(s.H), float(s.V_B), float(s.w), float(s.EA), -float(s.seabed)
-    k = np.asarray(s.stiffness(), dtype=float)
-    if bool(s.heap):  # vertical parts at A and B: V = w l, dV/dheight = w / (1 + w l/EA)
-        l_A = float(s.length_to_seabed)
-        return np.array([[0.0] * 3, [0.0, w / (1.0 + w * l_A / EA), 0.0], [0.0] * 3, [0.0, 0.0, k[1, 1]]])
-    V1, T1, _, _, dV1_dH = anchor_part(H, w, EA, depth)
-    j = grounded_closure(s.span, s.dh, w, EA, s.length, 0.0, H, V_B, depth)[2:]
-    fx_d, fz_d = (H - T1) / (V1 * (1.0 + T1 / EA)), -1.0
-    det = j[0] * j[3] - j[1] * j[2]
-    dH_d = -(j[3] * fx_d - j[1] * fz_d) / det
-    dV_d = -(-j[2] * fx_d + j[0] * fz_d) / det
-    dV1_d = T1 * w / (V1 * (1.0 + T1 / EA))
-    row_H = [k[0, 0], dH_d - k[0, 1], k[0, 1]]
-    row_V = [k[1, 0], dV_d - k[1, 1], k[1, 1]]
-    row_VA = [dV1_dH * r for r in row_H]
-    row_VA[1] += dV1_d
-    return np.array([row_H, row_VA, row_H, row_V])
+__all__ = ["MODELS", "PlaneLine", "is_line", "line_in_plane", "on_seabed_tolerance", "solve_in_plane"]
 
 
 # -- the choice of the model ---------------------------------------------------------------------------
-def _check_ends(span, dh, seabed):
+def _check_ends(span, dh, seabed, slope):
     """``(gap_A, gap_B, tol)``: the ends' heights above the seabed (m) and the on-seabed tolerance."""
     tol = on_seabed_tolerance(span, dh, seabed)
-    gaps = (-seabed, dh - seabed)
+    gaps = (-seabed, dh - seabed - span * slope)
     for name, gap in zip(("A", "B"), gaps, strict=True):
         if gap < -tol:
             raise InputError(
@@ -125,7 +74,12 @@ def _line_solve(model_line, span, dh, start):
     return model_line.solve(span, dh) if start is None else model_line.solve(span, dh, start=start)
 
 
-def solve_in_plane(line, span, dh, *, seabed=None, start=None, bvp=None) -> PlaneLine:
+def _plane(scene, solution, reverse, model, reason, key, jacobian, variant) -> PlaneLine:
+    span, dh, seabed, slope = scene
+    return PlaneLine(span, dh, seabed, solution, reverse, model, reason, key, jacobian, variant, slope)
+
+
+def solve_in_plane(line, span, dh, *, seabed=None, seabed_slope=0.0, start=None, bvp=None) -> PlaneLine:
     """Solve ``line`` (a `skcable.cable.Line`) between its ends A = (0, 0) and B = (span, dh).
 
     Parameters
@@ -136,144 +90,158 @@ def solve_in_plane(line, span, dh, *, seabed=None, start=None, bvp=None) -> Plan
     span, dh : float
         B relative to A (m), ``span > 0`` (checked by the caller).
     seabed : float, optional
-        The flat seabed's height relative to A (m), at or below both ends; None: no seabed.
+        The seabed's height below A relative to A (m), at or below both ends; None: no seabed.
+    seabed_slope : float
+        ``tan α`` of a plane seabed, ``y = seabed + x tan α`` (0: flat; `skcable.cable.lines.slope`).
     start : PlaneLine, optional
         A previous solution of this line: a warm start where the same model applies.
     bvp : callable, optional
-        ``bvp(line, span, dh, seabed, reason)`` → `PlaneLine` for the scenes no closed form
-        takes (`skcable.cable.lines.bvp_model.solve_bvp_line` by default).
+        ``bvp(line, span, dh, seabed, reason, slope)`` → `PlaneLine` for the scenes no closed
+        form takes (`skcable.cable.lines.bvp_model.solve_bvp_line` by default).
 
     Returns
     -------
     PlaneLine
         With ``model`` and ``reason`` (module docstring).
     """
+    bvp = solve_bvp_line if bvp is None else bvp
     if seabed is None:
-        return _free(line, span, dh, None, start, "no seabed: the line hangs free")
-    gap_A, gap_B, tol = _check_ends(span, dh, seabed)
+        return _free(line, (span, dh, None, 0.0), start, "no seabed: the line hangs free")
+    slope = float(seabed_slope)
+    gap_A, gap_B, tol = _check_ends(span, dh, seabed, slope)
+    scene = (span, dh, seabed, slope)
+    if slope != 0.0:
+        return solve_on_slope(line, scene, gap_A <= tol, gap_B <= tol, start, bvp)
     reverse = dh < 0
     low, high = (gap_B, gap_A) if reverse else (gap_A, gap_B)
     if low <= tol and high <= tol:
-        variant = line.variant(reverse=reverse)
-        try:
-            solution = lying_line(variant, span)
-        except InputError as err:
-            return _bvp(bvp, line, span, dh, seabed, f"both ends on the seabed and {err.reason}")
-        return PlaneLine(
-            span,
-            dh,
-            seabed,
-            solution,
-            reverse,
-            "on the seabed",
-            "both ends on the seabed: the line lies on it",
-            ("on the seabed",),
-            solution.jacobian,
-            variant,
-        )
+        return _lying(line, scene, reverse, bvp)
     if low <= tol:
-        return _grounded(line, span, dh, seabed, reverse, start, bvp)
-    free = _free(line, span, dh, seabed, start, "the lower end above the seabed and the line clear of it")
-    floor = -low  # the seabed below the lower end, in the solution's axes
-    if free.solution.lowest_height() >= floor - tol:
+        return _grounded(line, scene, reverse, start, bvp)
+    free = _free(line, scene, start, "the lower end above the seabed and the line clear of it")
+    if free.solution.lowest_height() >= -low - tol:  # -low: the seabed in the solution's axes
         return free
-    return _touchdown(line, span, dh, seabed, reverse, low, bvp)
+    return _touchdown(line, scene, reverse, low, bvp)
 
 
-def _free(line, span, dh, seabed, start, reason) -> PlaneLine:
-    reverse = dh < 0
-    key = ("free", reverse)
+def _lying(line, scene, reverse, bvp) -> PlaneLine:
     variant = line.variant(reverse=reverse)
-    solution = _line_solve(variant, span, abs(dh), _warm(start, key))
-    return PlaneLine(
-        span,
-        dh,
-        seabed,
-        solution,
-        reverse,
-        "free",
-        reason,
-        key,
-        lambda: free_jacobian(solution.stiffness()),
-        variant,
+    try:
+        solution = lying_line(variant, scene[0])
+    except InputError as err:
+        return bvp(line, *scene[:3], f"both ends on the seabed and {err}", scene[3])
+    reason = "both ends on the seabed: the line lies on it"
+    return _plane(
+        scene, solution, reverse, "on the seabed", reason, ("on the seabed",), solution.jacobian, variant
     )
 
 
-def _grounded(line, span, dh, seabed, reverse, start, bvp) -> PlaneLine:
+def _free(line, scene, start, reason) -> PlaneLine:
+    reverse = scene[1] < 0
+    key = ("free", reverse)
+    variant = line.variant(reverse=reverse)
+    solution = _line_solve(variant, scene[0], abs(scene[1]), _warm(start, key))
+    return _plane(
+        scene, solution, reverse, "free", reason, key, lambda: free_jacobian(solution.stiffness()), variant
+    )
+
+
+def _grounded(line, scene, reverse, start, bvp) -> PlaneLine:
     key = ("grounded", reverse)
     variant = line.variant(reverse=reverse, contact=True)
     try:
-        solution = _line_solve(variant, span, abs(dh), _warm(start, key))
+        solution = _line_solve(variant, scene[0], abs(scene[1]), _warm(start, key))
     except InputError as err:
         if err.argument not in ("attachments", "segments"):
             raise
-        return _bvp(bvp, line, span, dh, seabed, f"the lower end on the seabed and {err.reason}")
+        return bvp(line, *scene[:3], f"the lower end on the seabed and {err}", scene[3])
     if not solution.state.contact:
         reason = "the lower end on the seabed and the line leaving it upwards: it hangs free"
-        return PlaneLine(
-            span,
-            dh,
-            seabed,
-            solution,
-            reverse,
-            "free",
-            reason,
-            key,
-            lambda: free_jacobian(solution.stiffness()),
-            variant,
-        )
+        jacobian = lambda: free_jacobian(solution.stiffness())  # noqa: E731
+        return _plane(scene, solution, reverse, "free", reason, key, jacobian, variant)
     reason = "the lower end on the seabed: the line rests on it up to a touchdown (Jonkman's closed form)"
     if solution.heap:
         reason = "the lower end on the seabed and the line longer than its L-shape: its slack lies in a heap"
     friction, H_A = variant.friction, solution.H_A
-    return PlaneLine(
-        span,
-        dh,
-        seabed,
-        solution,
-        reverse,
-        "grounded",
-        reason,
-        key,
-        lambda: grounded_jacobian(solution.stiffness(), friction, H_A),
-        variant,
-    )
+    jacobian = lambda: grounded_jacobian(solution.stiffness(), friction, H_A)  # noqa: E731
+    return _plane(scene, solution, reverse, "grounded", reason, key, jacobian, variant)
 
 
-def _touchdown(line, span, dh, seabed, reverse, depth, bvp) -> PlaneLine:
-    """The lower end ``depth`` above the seabed, the free line below it: a touchdown between the ends."""
-    variant = line.variant(reverse=reverse)
-    uniform = len(variant.segments) == 1 and not variant.attachments and variant.segments[0].w > 0
-    if not uniform:
-        reason = "the line touches down between its ends and is not one uniform segment (no closed form)"
-        return _bvp(bvp, line, span, dh, seabed, reason)
+def indeterminate_friction(line, depth):
+    """`InputError` naming ``friction``: a touchdown between suspended ends with friction."""
     if line.friction > 0:
         raise InputError(
             "friction",
-            f"the line touches down between its ends (both {depth:.6g} m and more above the seabed): static "
-            "friction there depends on the history of the motion; give the line friction=0",
+            f"the line touches down between its ends (the lower one {depth:.6g} m above the seabed): "
+            "static friction there depends on the history of the motion; give the line friction=0",
         )
+
+
+def _touchdown(line, scene, reverse, depth, bvp) -> PlaneLine:
+    """The lower end ``depth`` above the seabed, the free line below it: a touchdown between the ends."""
+    variant = line.variant(reverse=reverse)
+    if not uniform(variant):
+        reason = "the line touches down between its ends and is not one uniform segment (no closed form)"
+        return bvp(line, *scene[:3], reason, scene[3])
+    indeterminate_friction(line, depth)
     seg = variant.segments[0]
-    solution = elastic_catenary(span, abs(dh), seg.w, seg.EA, length=seg.length, seabed=-depth)
+    solution = elastic_catenary(scene[0], abs(scene[1]), seg.w, seg.EA, length=seg.length, seabed=-depth)
     reason = "the lower end above the seabed and the line reaching it: it hangs down, rests on it and rises"
-    return PlaneLine(
-        span,
-        dh,
-        seabed,
-        solution,
-        reverse,
-        "touchdown between the ends",
-        reason,
-        ("touchdown",),
-        lambda: touchdown_jacobian(solution),
-        variant,
+    jacobian = lambda: touchdown_jacobian(solution)  # noqa: E731
+    return _plane(
+        scene, solution, reverse, "touchdown between the ends", reason, ("touchdown",), jacobian, variant
     )
-
-
-def _bvp(bvp, line, span, dh, seabed, reason) -> PlaneLine:
-    return (solve_bvp_line if bvp is None else bvp)(line, span, dh, seabed, reason)
 
 
 def is_line(model) -> bool:
     """Whether ``model`` is a `skcable.cable.Line` (solved here) rather than another line model."""
     return isinstance(model, Line)
+
+
+def line_in_plane(line, span, dh, *, seabed=None, seabed_slope=0.0) -> PlaneLine:
+    """A `skcable.cable.Line` from A = (0, 0) to B = (span, dh), either end higher, over a seabed.
+
+    Parameters
+    ----------
+    line : Line
+        Segments from A to B (buoyant ones, ``w < 0``, too), attachments, ``friction``; its own
+        ``seabed`` is not used.
+    span, dh : float
+        B relative to A (m), ``span > 0``.
+    seabed : float, optional
+        The seabed's height below A, relative to A (m): ``0`` puts A on it, ``< 0`` above it;
+        B is on or above it too. None: no seabed.
+    seabed_slope : float
+        ``tan α`` of a plane seabed ``y = seabed + x tan α`` (0: flat).
+
+    Returns
+    -------
+    PlaneLine
+        End forces by end (``H_A, V_A, H_B, V_B, T_A, T_B``), ``model`` and ``reason`` (module
+        docstring), ``xy(s)``, ``T_of_s(s)``, ``profile(n)``, ``stiffness()`` (B moving, A fixed),
+        ``jacobian()`` and ``tensions()``.
+
+    Examples
+    --------
+    MoorPy's sloped mirror: one line seen from either end over a 10° slope.
+
+    >>> import math
+    >>> from skcable import cable
+    >>> line = cable.Line([cable.Segment(80.0, 100.0, 1e12)])
+    >>> up = cable.line_in_plane(line, 60.0, 40.0, seabed=0.0, seabed_slope=math.tan(math.radians(10)))
+    >>> hB = 40.0 - 60.0 * math.tan(math.radians(10))
+    >>> down = cable.line_in_plane(line, 60.0, -40.0, seabed=-hB, seabed_slope=-math.tan(math.radians(10)))
+    >>> up.model, round(up.H_B, 6) == round(down.H_A, 6), round(up.V_A, 6) == round(down.V_B, 6)
+    ('grounded (slope)', True, True)
+    """
+    from skcable._checks import positive, real, scalar
+
+    if not is_line(line):
+        raise InputError("line", f"must be a cable.Line, got {type(line).__name__}")
+    span = scalar("span", positive("span", span))
+    dh = scalar("dh", real("dh", dh))
+    seabed = None if seabed is None else scalar("seabed", real("seabed", seabed))
+    slope = scalar("seabed_slope", real("seabed_slope", seabed_slope))
+    if seabed is None and slope != 0.0:
+        raise InputError("seabed_slope", "applies to a seabed: give seabed= as well")
+    return solve_in_plane(line, span, dh, seabed=seabed, seabed_slope=slope)

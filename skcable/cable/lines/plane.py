@@ -13,11 +13,12 @@ import math
 import numpy as np
 
 from skcable.errors import ConvergenceError
+from skcable.results import ProfileMixin
 
-__all__ = ["MODELS", "ON_SEABED", "PlaneLine", "on_seabed_tolerance"]
+__all__ = ["MODELS", "ON_SEABED", "PlaneLine", "on_seabed_tolerance", "uniform"]
 
 #: The models a line between two ends may take.
-MODELS = ("free", "grounded", "touchdown between the ends", "on the seabed", "bvp")
+MODELS = ("free", "grounded", "grounded (slope)", "touchdown between the ends", "on the seabed", "bvp")
 #: An end within this fraction of the scene's size (span, heights, at least 1 m) lies on the seabed.
 ON_SEABED = 1e-9
 
@@ -27,13 +28,15 @@ def on_seabed_tolerance(span, dh, seabed) -> float:
     return ON_SEABED * max(1.0, abs(span), abs(dh), abs(seabed))
 
 
-class PlaneLine:
-    """A line solved between its ends A = (0, 0) and B = (span, dh) over a flat seabed.
+class PlaneLine(ProfileMixin):
+    """A line solved between its ends A = (0, 0) and B = (span, dh) over a seabed.
 
     Attributes
     ----------
     span, dh, seabed : float
-        B relative to A (m); the seabed's height relative to A (m, None without one).
+        B relative to A (m); the seabed's height below A relative to A (m, None without one).
+    seabed_slope : float
+        ``tan α`` of a plane seabed ``y = seabed + x tan α`` (0: flat).
     solution : object
         The 2-D solution of the variant solved, from the lower end (a `LineSolution`,
         `SeabedCatenary`, `LyingLine` or BVP view: the result protocol, `skcable.results`).
@@ -49,16 +52,11 @@ class PlaneLine:
         End forces by end (N): horizontal tension, upward reaction, tension.
     """
 
-    def __init__(self, span, dh, seabed, solution, reversed_, model, reason, key, jacobian, line):
-        self.span, self.dh, self.seabed = span, dh, seabed
+    def __init__(self, span, dh, seabed, solution, reversed_, model, reason, key, jacobian, line, slope=0.0):
+        self.span, self.dh, self.seabed, self.seabed_slope = span, dh, seabed, slope
         self.solution_line = line
-        self.solution, self.reversed, self.model, self.reason, self.key = (
-            solution,
-            reversed_,
-            model,
-            reason,
-            key,
-        )
+        self.solution, self.reversed, self.model, self.reason = solution, reversed_, model, reason
+        self.key = key
         self._jacobian = jacobian
         low = (float(solution.H_A), float(solution.V_A))
         high = (float(solution.H_B), float(solution.V_B))
@@ -81,6 +79,16 @@ class PlaneLine:
         if not np.isfinite(J).all():
             raise ConvergenceError(f"line between two ends: non-finite stiffness from the {self.model} model")
         return J
+
+    def stiffness(self) -> np.ndarray:
+        """``∂(H_B, V_B)/∂(span, dh)`` (N/m) with A and the seabed fixed, shape (2, 2): B's rows and
+        columns of `jacobian` (an end B on the seabed moves with it)."""
+        return self.jacobian()[2:][:, [0, 2]]
+
+    @property
+    def length_on_seabed(self) -> float:
+        """Unstretched length resting on the seabed (m)."""
+        return float(self.solution.length_on_seabed)
 
     def s_of_solution(self, s):
         """The unstretched arc length from A of the points ``s`` of the solution (from its lower end)."""
@@ -142,3 +150,8 @@ class PlaneLine:
             f"PlaneLine(span={self.span:g}, dh={self.dh:g}, model={self.model!r}: H_A={self.H_A:.9g}, "
             f"V_A={self.V_A:.9g}, H_B={self.H_B:.9g}, V_B={self.V_B:.9g})"
         )
+
+
+def uniform(variant) -> bool:
+    """Whether a line is one uniform heavy segment without attachments (the one-segment closed forms)."""
+    return len(variant.segments) == 1 and not variant.attachments and variant.segments[0].w > 0

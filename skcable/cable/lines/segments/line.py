@@ -114,7 +114,7 @@ class Line:
         """Downward point force at each joint (N), ``n + 1`` values (buoys negative)."""
         self.contact = seabed is not None and seabed == 0.0
         """Whether the line may rest on a seabed through its anchor (``seabed=0``)."""
-        self._buoyed = bool((P[1:n] < 0).any())  # buoys between the ends
+        self._buoyed = bool((P[1:n] < 0).any() or (self.arrays.w < 0).any())  # buoys, buoyant segments
 
     def variant(self, *, reverse: bool = False, contact: bool = False) -> Line:
         """This line as seen from one end, with or without a seabed through that end (cached).
@@ -175,7 +175,7 @@ class Line:
     def vertical_force(self, H, dh):
         """``V`` with ``Z(H, V) = dh`` (``Z`` increases with ``V``), by bracketing."""
         arrays = self.arrays
-        scale = float(arrays.w @ arrays.L + np.abs(self.joint_forces).sum())
+        scale = float(arrays.abs_segment_weight + arrays.abs_joint_forces)
         args = (self, H, dh)
         lo = -scale  # V < 0: the fairlead holds a buoyant line down
         while _height_left(lo, *args) > 0:
@@ -196,14 +196,19 @@ class Line:
         L = self.length
         arrays = self.arrays
         W = float(arrays.w @ arrays.L + self.joint_forces[1:-1].sum())
-        w = W / L if W > 0 else float(arrays.w @ arrays.L) / L
+        w = W / L if W != 0 else float(arrays.w @ arrays.L) / L
         EA = L / float(np.sum(arrays.L / arrays.EA))
         seabed = 0.0 if self.contact else None
+        sign = 1.0
+        if not w > 0:  # a buoyant line: the mirror image (y -> -y) of a heavy one, V_B -> -V_B
+            if self.contact or w == 0:
+                return None
+            w, dh, sign = -w, -dh, -1.0
         try:
             ref = elastic_catenary(span, dh, w, EA, length=L, seabed=seabed, friction=0.0)
         except (InputError, ConvergenceError):
             return None
-        return float(ref.H), float(ref.V_B)
+        return float(ref.H), sign * float(ref.V_B)
 
     def _newton(self, span, dh, H, V, chord, iterations, state=None):
         """Newton's method with the analytic Jacobian and backtracking on ``max|residual|``
@@ -228,7 +233,7 @@ class Line:
 
     def _bracketed(self, span, dh):
         """``(H, V)`` by nested bracketing: ``V(H)`` from the height, then ``H`` from the run."""
-        W = float(self.arrays.w @ self.arrays.L)
+        W = float(self.arrays.abs_segment_weight)
         args = (self, span, dh)
         H_lo = 1e-10 * W
         if _run_left(H_lo, *args) >= 0:

@@ -196,7 +196,7 @@ class LineSolution(ProfileMixin):
         closure = max(abs(st.X - self.span), abs(st.Z - self.dh)) / chord
         if st.heap:  # the slack covers the span
             closure = max(closure, max(self.span - self.length_on_seabed, 0.0) / chord)
-        scale = abs(self.V_A) + abs(self.V_B) + arrays.segment_weight + arrays.abs_joint_forces
+        scale = abs(self.V_A) + abs(self.V_B) + arrays.abs_segment_weight + arrays.abs_joint_forces
         statics = abs(self.V_A + self.V_B + self.seabed_reaction - arrays.total_weight) / scale
         geometry = max(abs(self.x_joints[-1] - self.span) / chord, abs(self.y_joints[-1] - self.dh) / chord)
         return float(max(closure, statics, geometry))
@@ -210,6 +210,12 @@ class LineSolution(ProfileMixin):
         values = (self.H, self.V_A, self.V_B, self.H_A, self.T_A, self.T_B, self.length_on_seabed)
         if not all(map(math.isfinite, values)) or not np.isfinite(self.x_joints).all():
             raise InputError("span", "gives a result outside the range of a float")
+        if st.contact and min(line.arrays.w_list[: st.k + 1]) < 0:
+            raise InputError(
+                "segments",
+                "a buoyant segment lies on the grounded part and would float up: a second touchdown that "
+                "this closed form does not represent (solve it with cable.solve_line_bvp)",
+            )
         if st.contact and st.k > 0:
             buoyed = np.flatnonzero(st.R[1:] < 0) + 1
             if buoyed.size:
