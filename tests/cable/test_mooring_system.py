@@ -34,7 +34,9 @@ def _check_balance(eq, props, external=None, rtol=1e-9):
     forces = _reference(eq, props)
     for line, F in zip(eq.lines, forces, strict=True):
         np.testing.assert_allclose(line.end_forces, F, rtol=1e-10, atol=1e-10 * np.abs(F).max())
-    scale = max(np.abs(F).max() for F in forces)
+    own = [abs(b.body.weight[2]) + b.body.buoyancy[2] for b in eq.bodies]
+    own += [np.abs(p.own_force).max() for p in eq.system.points]
+    scale = max(max(np.abs(F).max() for F in forces), *own)  # the equilibrium's force scale
     for key, net in balance(eq, forces, external).items():
         assert np.abs(net[:3]).max() < rtol * scale, (key, net)
         if key[0] == "body":

@@ -505,8 +505,8 @@ class MooringSystem:
         if self.n_dof == 0:
             raise InputError("points", "the system has no body and no free point: nothing to solve for")
         used = {p.index for h in handles for p in (h.a, h.b)}
-        for p in self.points:
-            if p.index not in used and p.kind != "body":
+        for p in self.points:  # an anchor left alone by a failure is no error
+            if p.index not in used and (p.kind == "free" or p.kind == "fixed" and not without):
                 raise InputError(
                     "points", f"point {p.index} ({p.kind}) has no line: connect it or leave it out"
                 )
@@ -589,6 +589,20 @@ class MooringSystem:
                 raise InputError("without", f"holds {h!r}, not a line of this system (from add_line)")
             out.add(h.index)
         return frozenset(out)
+
+    def failure(self, lines, **options):
+        """The equilibrium without ``lines`` (a line failure) beside the intact one, under the same
+        loads (``options``: those of `equilibrium`): a `skcable.cable.lines.failure.FailureCase`
+        with ``intact``, ``damaged``, ``redistribution()`` and ``offsets()``."""
+        from skcable.cable.lines.failure import failure_case
+
+        return failure_case(self, lines, **options)
+
+    def failure_cases(self, **options) -> list:
+        """Each line failing alone (`failure`), from one intact equilibrium."""
+        from skcable.cable.lines.failure import failure_cases
+
+        return failure_cases(self, **options)
 
     def __repr__(self):
         return (
