@@ -29,6 +29,7 @@ read the results.
 
 from skcable.cable.lines.between import LineBetween, line_between
 from skcable.cable.lines.body import PointBody, RigidBody, rotation_matrix
+from skcable.cable.lines.components import Component, component, components, register_component
 from skcable.cable.lines.geometry import line_in_plane
 from skcable.cable.lines.line3d import Line3D, line_3d
 from skcable.cable.lines.network import MooringLine, MooringPoint
@@ -45,6 +46,7 @@ from skcable.cable.lines.system import MooringEquilibrium, MooringSystem
 __all__ = [
     "Buoy",
     "ClumpWeight",
+    "Component",
     "Line",
     "Line3D",
     "LineBetween",
@@ -59,10 +61,13 @@ __all__ = [
     "SeabedCatenary",
     "Segment",
     "SlopedSeabedCatenary",
+    "component",
+    "components",
     "elastic_catenary",
     "line_3d",
     "line_between",
     "line_in_plane",
+    "register_component",
     "rotation_matrix",
     "sloped_seabed_catenary",
 ]

@@ -422,6 +422,26 @@ class MooringEquilibrium:
             frames.append(table)
         return pd.concat(frames, ignore_index=True)
 
+    def anchor_loads(self):
+        """Each anchor's horizontal and vertical load and uplift angle (`skcable.cable.lines.checks`)."""
+        from skcable.cable.lines.checks import anchor_loads
+
+        return anchor_loads(self)
+
+    def line_checks(self):
+        """Each line's end tensions, grounded length, touchdown and angle at its lower end
+        (`skcable.cable.lines.checks`)."""
+        from skcable.cable.lines.checks import line_checks
+
+        return line_checks(self)
+
+    def segment_checks(self, safety_factor):
+        """Each segment's largest tension against its MBL with ``safety_factor``
+        (`skcable.cable.lines.checks`)."""
+        from skcable.cable.lines.checks import segment_checks
+
+        return segment_checks(self, safety_factor)
+
     def to_vtk(self, path, n: int = 101):
         """Write the lines (tension as point data), the seabed patch and the bodies to a
         ``.vtu``/``.vtk`` file, atomically (see `skcable.io.mooring_mesh`); returns the path."""

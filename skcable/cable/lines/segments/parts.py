@@ -29,11 +29,15 @@ class Segment:
         floats), which rises where it hangs free.
     EA : float
         Axial stiffness (N), > 0.
+    mbl : float, optional
+        Minimum breaking load (N), > 0: the strength the line checks compare its largest
+        tension with (`skcable.cable.lines.checks`); from a component of the library
+        (`skcable.cable.lines.components`) or the maker's data.
     """
 
-    __slots__ = ("length", "w", "EA")
+    __slots__ = ("length", "w", "EA", "mbl")
 
-    def __init__(self, length, w, EA):
+    def __init__(self, length, w, EA, *, mbl=None):
         self.length = scalar("length", positive("length", length))
         self.w = scalar("w", real("w", w))
         if self.w == 0.0:
@@ -41,10 +45,12 @@ class Segment:
                 "w", "must not be 0: a weightless segment has no catenary (give its weight in water)"
             )
         self.EA = scalar("EA", positive("EA", EA))
+        self.mbl = None if mbl is None else scalar("mbl", positive("mbl", mbl))
         _plausible.stiffness(self.EA, abs(self.w), self.length)
 
     def __repr__(self):
-        return f"Segment(length={self.length!r}, w={self.w!r}, EA={self.EA!r})"
+        extra = "" if self.mbl is None else f", mbl={self.mbl!r}"
+        return f"Segment(length={self.length!r}, w={self.w!r}, EA={self.EA!r}{extra})"
 
 
 class ClumpWeight:
