@@ -30,6 +30,7 @@ read the results.
 from skcable.cable.lines.between import LineBetween, line_between
 from skcable.cable.lines.body import PointBody, RigidBody, rotation_matrix
 from skcable.cable.lines.components import Component, component, components, register_component
+from skcable.cable.lines.design import Design, design_line, design_pattern
 from skcable.cable.lines.geometry import line_in_plane
 from skcable.cable.lines.line3d import Line3D, line_3d
 from skcable.cable.lines.network import MooringLine, MooringPoint
@@ -47,6 +48,7 @@ __all__ = [
     "Buoy",
     "ClumpWeight",
     "Component",
+    "Design",
     "Line",
     "Line3D",
     "LineBetween",
@@ -63,6 +65,8 @@ __all__ = [
     "SlopedSeabedCatenary",
     "component",
     "components",
+    "design_line",
+    "design_pattern",
     "elastic_catenary",
     "line_3d",
     "line_between",

@@ -590,6 +590,28 @@ class MooringSystem:
             out.add(h.index)
         return frozenset(out)
 
+    def point_position(self, p, position=None) -> np.ndarray:
+        """The global position (m) of the point ``p`` with the dofs at ``position`` (default: the start)."""
+        p = self._point("point", p)
+        return self.layout.positions(self._position("position", position))[0][p.index].copy()
+
+    def replaced(self, *, models=None, positions=None) -> MooringSystem:
+        """A copy of this system with some lines' models and some points' positions replaced:
+        ``models`` maps line handles to line models, ``positions`` points to their new position (as
+        `add_point` takes it). The bodies are the same objects, at the same starts."""
+        models, positions = dict(models or {}), dict(positions or {})
+        other = MooringSystem(depth=self.depth, rho=self.rho, g=self.g)
+        for body, q in zip(self.bodies, self._body_positions, strict=True):
+            other._add_body(body, q)
+        for p in self.points:
+            where = positions.get(p, p.position)
+            other._new_point(where, p.fixed, p.mass, p.volume, p.force, p.body)
+        for h in self.mooring_lines:
+            model = models.get(h, h.model)
+            other._add_line(model, other.points[h.a.index], other.points[h.b.index], h.managed)
+        other.shortcut = self.shortcut
+        return other
+
     def failure(self, lines, **options):
         """The equilibrium without ``lines`` (a line failure) beside the intact one, under the same
         loads (``options``: those of `equilibrium`): a `skcable.cable.lines.failure.FailureCase`
