@@ -65,6 +65,7 @@ if TYPE_CHECKING:  # what static tools see; at run time, `attach` below serves t
         Line3D,
         LineBetween,
         LineSolution,
+        MoorDynModel,
         MooringEquilibrium,
         MooringLine,
         MooringPoint,
@@ -83,9 +84,11 @@ if TYPE_CHECKING:  # what static tools see; at run time, `attach` below serves t
         line_3d,
         line_between,
         line_in_plane,
+        read_moordyn,
         register_component,
         rotation_matrix,
         sloped_seabed_catenary,
+        write_moordyn,
     )
     from skcable.cable.solution import CableSolution
     from skcable.cable.terms import Buoyancy, CableForce, CableState, CableTerm, CurrentDrag, WindDrag
@@ -123,6 +126,7 @@ _NAMES = {
         "MooringEquilibrium",
         "MooringLine",
         "MooringPoint",
+        "MoorDynModel",
         "MooringSystem",
         "PlaneLine",
         "PointBody",
@@ -138,9 +142,11 @@ _NAMES = {
         "line_3d",
         "line_between",
         "line_in_plane",
+        "read_moordyn",
         "register_component",
         "rotation_matrix",
         "sloped_seabed_catenary",
+        "write_moordyn",
     ),
     ".conductors": (
         "ClampStress",
@@ -273,4 +279,7 @@ __all__ = [
     "register_component",
     "design_line",
     "design_pattern",
+    "read_moordyn",
+    "write_moordyn",
+    "MoorDynModel",
 ]

@@ -33,6 +33,7 @@ from skcable.cable.lines.components import Component, component, components, reg
 from skcable.cable.lines.design import Design, design_line, design_pattern
 from skcable.cable.lines.geometry import line_in_plane
 from skcable.cable.lines.line3d import Line3D, line_3d
+from skcable.cable.lines.moordyn import MoorDynModel, read_moordyn, write_moordyn
 from skcable.cable.lines.network import MooringLine, MooringPoint
 from skcable.cable.lines.plane import PlaneLine
 from skcable.cable.lines.seabed import (
@@ -56,6 +57,7 @@ __all__ = [
     "MooringEquilibrium",
     "MooringLine",
     "MooringPoint",
+    "MoorDynModel",
     "MooringSystem",
     "PlaneLine",
     "PointBody",
@@ -71,7 +73,9 @@ __all__ = [
     "line_3d",
     "line_between",
     "line_in_plane",
+    "read_moordyn",
     "register_component",
     "rotation_matrix",
     "sloped_seabed_catenary",
+    "write_moordyn",
 ]

@@ -110,7 +110,7 @@ class Component:
         """A `Segment` of this component: ``length`` (m) at the nominal ``diameter`` (m), its weight in
         water, EA and MBL from the formulas."""
         p = self.properties(diameter, rho=rho, g=g)
-        return Segment(length, p["w"], p["EA"], mbl=p["MBL"])
+        return Segment(length, p["w"], p["EA"], mbl=p["MBL"], diameter=p["volume_diameter"])
 
 
 def _chain_mbl(c):

@@ -144,7 +144,7 @@ def _clump_joint(line, joint):
 def _with_length(line, i, length) -> Line:
     segments = list(line.segments)
     s = segments[i]
-    segments[i] = Segment(length, s.w, s.EA, mbl=s.mbl)
+    segments[i] = Segment(length, s.w, s.EA, mbl=s.mbl, diameter=s.diameter)
     return Line(segments, line.attachments, seabed=line.seabed, friction=line.friction)
 
 

@@ -102,27 +102,32 @@ class _Newton:
         _, singular, vh = np.linalg.svd(jac / self.units[:, None] / self.units[None, :])
         self.lines = lines  # Newton steps from this state: the trials start from its lines
         if not singular[-1] > _SINGULAR * singular[0]:
-            return self.slack_step(state, vh[singular <= _SINGULAR * singular[0]])
+            return self.slack_step(state, vh[singular <= _SINGULAR * singular[0]], jac)
         dq = np.linalg.solve(jac, G)
+        return self.capped(dq)
+
+    def capped(self, dq) -> np.ndarray:
         return dq * min(1.0, float(np.min(self.cap / np.maximum(np.abs(dq), 1e-300))))
 
     def step_cap(self, position) -> np.ndarray:
         """A quarter of the shortest horizontal span of each body's or point's lines, 0.2 rad."""
         return self.system.step_cap(position, self.without)
 
-    def slack_step(self, state, null) -> np.ndarray:
+    def slack_step(self, state, null, jac) -> np.ndarray:
         """The step along the free directions ``null`` (rows, scaled dofs) to where the lines take
-        the net force's component in them (module docstring); raises where there is none."""
-        G, _, _, position = state
+        the net force's component in them (module docstring); with no force along them, the
+        least-squares Newton step in the other directions (the free ones stay as they are: the
+        equilibrium is checked for them at the end, `check_unique`)."""
+        G, _, lines, position = state
         r = G / self.units
         push = null.T @ (null @ r)
         if not np.linalg.norm(push) > 1e-12 * np.linalg.norm(r):  # no force along the free directions
-            raise ConvergenceError(
-                "mooring equilibrium: the stiffness is singular (a direction neither the lines nor the "
-                f"hydrostatics restrain: {_named(self.system, null)}; add waterplane_area, a metacentre or "
-                "lines)",
-                [self.norm(state)],
-            )
+            if not any(_slack(line) for line in lines):  # nothing will take them: not unique
+                raise ConvergenceError(
+                    _SINGULAR_MESSAGE.format(_named(self.system, null)), [self.norm(state)]
+                )
+            scaled = jac / self.units[:, None] / self.units[None, :]  # slack lines, pushed elsewhere
+            return self.capped(np.linalg.lstsq(scaled, r, rcond=_SINGULAR)[0] / self.units)
         direction = push / np.linalg.norm(push)  # scaled dofs, |direction| = 1
         ray = direction / self.units
         t = _ray_root(self, position, ray, direction, float(self.cap[0]), self.norm(state))
@@ -190,6 +195,28 @@ def _named(system, null) -> str:
     return ", ".join(system.layout.describe(int(k)) for k in lead[:6])
 
 
+_SINGULAR_MESSAGE = (
+    "mooring equilibrium: the stiffness is singular (a direction neither the lines nor the hydrostatics "
+    "restrain: {}; add waterplane_area, a metacentre or lines)"
+)
+
+
+def _slack(line) -> bool:
+    """Whether a solved line is slack: no horizontal tension (its slack in a heap, or lying slack)."""
+    plane = getattr(line, "plane", None)
+    return (plane.H_A == 0.0 and plane.H_B == 0.0) if plane is not None else line.H == 0.0
+
+
+def check_unique(solve, state, history):
+    """Raise `ConvergenceError` where the stiffness at the equilibrium ``state`` is singular: a
+    direction neither the lines nor the hydrostatics restrain (the equilibrium is not unique)."""
+    jac = solve.jacobian(state)
+    _, singular, vh = np.linalg.svd(jac / solve.units[:, None] / solve.units[None, :])
+    if not singular[-1] > _SINGULAR * singular[0]:
+        free = vh[singular <= _SINGULAR * singular[0]]
+        raise ConvergenceError(_SINGULAR_MESSAGE.format(_named(solve.system, free)), history)
+
+
 def solve_equilibrium(system, position, external, lines, tol, max_iter, without=frozenset()):
     """`skcable.cable.MooringSystem.equilibrium` on checked arguments: Newton from ``position``
     (the ``lines`` of an earlier equilibrium as warm starts, or None), the stable branch
@@ -206,6 +233,7 @@ def solve_equilibrium(system, position, external, lines, tol, max_iter, without=
             "may exceed what the mooring can hold, or the start is too far)",
             err.history,
         ) from None
+    check_unique(solve, result.state, result.history)
     eigenvalues = stiffness_eigenvalues(system, result.state[1])
     passed = []
     if not is_stable(eigenvalues):

@@ -590,6 +590,13 @@ class MooringSystem:
             out.add(h.index)
         return frozenset(out)
 
+    def start_position(self, body) -> np.ndarray:
+        """The dofs of ``body`` where it was added (`add_body`'s ``position``; zeros by default)."""
+        for b, q in zip(self.bodies, self._body_positions, strict=True):
+            if b is body:
+                return q.copy()
+        raise InputError("body", "is not in this system")
+
     def point_position(self, p, position=None) -> np.ndarray:
         """The global position (m) of the point ``p`` with the dofs at ``position`` (default: the start)."""
         p = self._point("point", p)

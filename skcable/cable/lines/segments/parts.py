@@ -33,11 +33,14 @@ class Segment:
         Minimum breaking load (N), > 0: the strength the line checks compare its largest
         tension with (`skcable.cable.lines.checks`); from a component of the library
         (`skcable.cable.lines.components`) or the maker's data.
+    diameter : float, optional
+        Volume-equivalent diameter (m), > 0: the diameter of the cylinder that displaces as much
+        water per length (MoorDyn's ``Diam``; written to MoorDyn files). The statics use ``w``.
     """
 
-    __slots__ = ("length", "w", "EA", "mbl")
+    __slots__ = ("length", "w", "EA", "mbl", "diameter")
 
-    def __init__(self, length, w, EA, *, mbl=None):
+    def __init__(self, length, w, EA, *, mbl=None, diameter=None):
         self.length = scalar("length", positive("length", length))
         self.w = scalar("w", real("w", w))
         if self.w == 0.0:
@@ -46,10 +49,12 @@ class Segment:
             )
         self.EA = scalar("EA", positive("EA", EA))
         self.mbl = None if mbl is None else scalar("mbl", positive("mbl", mbl))
+        self.diameter = None if diameter is None else scalar("diameter", positive("diameter", diameter))
         _plausible.stiffness(self.EA, abs(self.w), self.length)
 
     def __repr__(self):
         extra = "" if self.mbl is None else f", mbl={self.mbl!r}"
+        extra += "" if self.diameter is None else f", diameter={self.diameter!r}"
         return f"Segment(length={self.length!r}, w={self.w!r}, EA={self.EA!r}{extra})"
 
 
