@@ -170,7 +170,7 @@ _RODS = "---------------------- RODS ---\nID RodType\n(#) (name)\n1 Can Body1 0 
         (("1     chain       1        7", "1     steel       1        7"), "steel"),
         (("0.216   288.0", "0.216   heavy"), "Mass/m"),
     ],
-)  # fmt: skip
+)
 def test_unknown_keywords_are_refused_by_name(tmp_path, change, keyword):
     path = tmp_path / "bad.dat"
     path.write_text(FILE.replace(*change))

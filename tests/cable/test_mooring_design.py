@@ -29,9 +29,14 @@ def test_length_for_a_pretension_checked_by_a_forward_solve():
 
 @pytest.mark.parametrize(
     "target, value, vary",
-    [("horizontal_tension", 5e5, "length"), ("declination", 0.9, "length"), ("touchdown", 200.0, "length"),
-     ("layback", 400.0, "anchor_radius"), ("pretension", 9e5, "anchor_radius")],
-)  # fmt: skip
+    [
+        ("horizontal_tension", 5e5, "length"),
+        ("declination", 0.9, "length"),
+        ("touchdown", 200.0, "length"),
+        ("layback", 400.0, "anchor_radius"),
+        ("pretension", 9e5, "anchor_radius"),
+    ],
+)
 def test_each_target(target, value, vary):
     design = cable.design_line(CHAIN, ANCHOR, FAIRLEAD, target=target, value=value, vary=vary, depth=DEPTH)
     forward = cable.line_between(design.line, design.anchor, FAIRLEAD, depth=DEPTH)

@@ -84,19 +84,37 @@ class LineBetween:
     def block(self, i: int, j: int, J=None) -> np.ndarray:
         """``K_ij = -∂F_i/∂p_j`` (N/m), 3 × 3, for ends ``i, j`` in (0: a, 1: b)."""
         J = self.plane.jacobian() if J is None else J
-        e = self.direction[:2]
-        r = self.span
-        s, t = (1.0, -1.0)[i], (-1.0, 1.0)[j]
-        H = (self.plane.H_A, self.plane.H_B)[i]
-        dH_r, dV_r = J[2 * i, 0], J[2 * i + 1, 0]
-        dH_z, dV_z = J[2 * i, 1 + j], J[2 * i + 1, 1 + j]
-        ee = np.outer(e, e)
-        K = np.empty((3, 3))
-        K[:2, :2] = -s * t * (dH_r * ee + H / r * (np.eye(2) - ee))
-        K[:2, 2] = -s * dH_z * e
-        K[2, :2] = t * dV_r * e
-        K[2, 2] = dV_z
-        return K
+        ex, ey = float(self.direction[0]), float(self.direction[1])
+        st, s, t = (1.0 if i == j else -1.0), (1.0, -1.0)[i], (-1.0, 1.0)[j]
+        c = (self.plane.H_A, self.plane.H_B)[i] / self.span
+        row_H, row_V = J[2 * i].tolist(), J[2 * i + 1].tolist()
+        dH_r, dV_r, dH_z, dV_z = row_H[0], row_V[0], row_H[1 + j], row_V[1 + j]
+        exx, exy, eyy = ex * ex, ex * ey, ey * ey
+        return np.array(
+            [
+                [st * (dH_r * exx + c * (1.0 - exx)), st * (dH_r * exy - c * exy), -s * dH_z * ex],
+                [st * (dH_r * exy - c * exy), st * (dH_r * eyy + c * (1.0 - eyy)), -s * dH_z * ey],
+                [t * dV_r * ex, t * dV_r * ey, dV_z],
+            ]
+        )
+
+    def b_block(self) -> np.ndarray:
+        """``K_bb`` (N/m), 3 × 3: the block of an end b that moves with a fixed (`block`). Where the
+        solution runs from a, from its 2 × 2 stiffness directly (the fairlead stiffness of
+        `skcable.cable.line_3d`), else from the Jacobian."""
+        if self.plane.reversed:
+            return self.block(1, 1)
+        (k_hh, k_hv), (k_vh, k_vv) = np.asarray(self.plane.solution.stiffness(), dtype=float).tolist()
+        ex, ey = float(self.direction[0]), float(self.direction[1])
+        exx, exy, eyy = ex * ex, ex * ey, ey * ey
+        c = self.plane.H_B / self.span
+        return np.array(
+            [
+                [k_hh * exx + c * (1.0 - exx), k_hh * exy - c * exy, k_hv * ex],
+                [k_hh * exy - c * exy, k_hh * eyy + c * (1.0 - eyy), k_hv * ey],
+                [k_vh * ex, k_vh * ey, k_vv],
+            ]
+        )
 
     def stiffness(self) -> np.ndarray:
         """``K = -∂(F_a, F_b)/∂(a, b)`` (N/m), shape (6, 6): rows and columns ``(a_xyz, b_xyz)``, the

@@ -50,7 +50,7 @@ def anchor_loads(eq):
     for j in sorted(totals):
         F = totals[j]
         horizontal = math.hypot(F[0], F[1])
-        angle = math.atan2(F[2], horizontal)
+        angle = math.atan2(F[2], horizontal) + 0.0  # + 0.0: no -0
         row = {"point": j, "lines": counts[j], "Fx": F[0], "Fy": F[1], "Fz": F[2], "horizontal": horizontal}
         row.update(vertical=F[2], uplift_angle=angle, uplift_angle_deg=math.degrees(angle))
         rows.append(row)
@@ -60,7 +60,7 @@ def anchor_loads(eq):
 def _lower_angle(line, lower) -> float:
     """The line's angle above the horizontal at its lower end (rad): the direction of its pull there."""
     F = _end_forces(line)[lower]  # the line's force on its lower end points along the line
-    return math.atan2(F[2], math.hypot(F[0], F[1]))
+    return math.atan2(F[2], math.hypot(F[0], F[1])) + 0.0  # + 0.0: no -0
 
 
 def line_checks(eq):

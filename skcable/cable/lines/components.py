@@ -134,9 +134,14 @@ for _link, _mass, _EA, _kv in (("studless", 19.9, 0.854e8, 1.80), ("studlink", 2
     for _grade, _c in (("R3", 0.0223), ("R3S", 0.0249), ("R4", 0.0274)):
         _name = f"{_link} chain {_grade}"
         _LIBRARY[_name] = Component(
-            _name, _mass * _TE, _EA * _KN, _chain_mbl(_c), _kv, f"{_ORCAFLEX} ('Chain'); MBL: {_DNV}",
+            _name,
+            _mass * _TE,
+            _EA * _KN,
+            _chain_mbl(_c),
+            _kv,
+            f"{_ORCAFLEX} ('Chain'); MBL: {_DNV}",
             diameters=(0.0, 0.5),  # 44 - 0.08 d > 0 below 550 mm
-        )  # fmt: skip
+        )
 for _name, _mass, _EA, _mbl, _kv, _what in (
     ("six-strand wire rope, fibre core", 3.6109, 3.67e7, 584175.0, 0.82, "Wire rope"),
     ("six-strand wire rope, IWRC", 3.9897, 4.04e7, 633358.0, 0.80, "Wire rope"),

@@ -217,8 +217,9 @@ def _solve_bracketed(f, lo, hi, value, tol, what, samples):
     return float(x), (a, b)
 
 
-def design_line(line, anchor, fairlead, *, target, value, vary="length", depth=None, segment=None, joint=None,
-                bounds=None) -> Design:  # fmt: skip
+def design_line(
+    line, anchor, fairlead, *, target, value, vary="length", depth=None, segment=None, joint=None, bounds=None
+) -> Design:
     """The length, anchor radius or clump weight of one line that meets a target (module docstring).
 
     Parameters
@@ -303,8 +304,19 @@ def _bounds(bounds, vary, line, a, b, depth, i, j):
     return lo, hi
 
 
-def design_pattern(system, lines, *, target, value, vary="length", segment=None, joint=None, bounds=None,
-                   samples: int = 13, **equilibrium) -> Design:  # fmt: skip
+def design_pattern(
+    system,
+    lines,
+    *,
+    target,
+    value,
+    vary="length",
+    segment=None,
+    joint=None,
+    bounds=None,
+    samples: int = 13,
+    **equilibrium,
+) -> Design:
     """The same change to every line of a pattern of a `MooringSystem`, so that the first line's
     ``target`` meets ``value`` at the system's equilibrium (under the loads of ``equilibrium``,
     the keywords of `MooringSystem.equilibrium`).

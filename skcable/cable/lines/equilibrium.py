@@ -90,7 +90,16 @@ class _Newton:
         )
 
     def norm(self, state) -> float:
-        return float(np.linalg.norm(self.scaled(state[0], state[2])))
+        """The scaled residual's norm (remembered for the last states: the line search asks often)."""
+        key = id(state)
+        cache = self.__dict__.setdefault("_norms", {})
+        if key in cache and cache[key][0] is state:
+            return cache[key][1]
+        value = float(np.linalg.norm(self.scaled(state[0], state[2])))
+        if len(cache) > 8:
+            cache.clear()
+        cache[key] = (state, value)
+        return value
 
     def jacobian(self, state) -> np.ndarray:
         """``-∂G/∂q`` at ``state``."""
@@ -283,10 +292,12 @@ def _restarts(system, position, result, solve):
 class BodyState:
     """A body at equilibrium: ``body``, ``index``, ``position`` (its dofs: m, rad), ``offset`` (its
     reference point, m), ``angles`` (roll, pitch, yaw; zeros for a point body), ``rotation`` (body
-    to global axes) and ``heel`` (the angle of its z axis to the vertical, rad)."""
+    to global axes), ``heel`` (the angle of its z axis to the vertical, rad) and ``local_points``
+    (its points in body axes, m, (n, 3))."""
 
-    def __init__(self, index, body, q):
+    def __init__(self, index, body, q, local_points):
         self.index, self.body, self.position = index, body, q.copy()
+        self.local_points = np.asarray(local_points, dtype=float).reshape(-1, 3)
         self.offset = q[:3].copy()
         self.angles = q[3:].copy() if len(q) == 6 else np.zeros(3)
         self.rotation = R = body.rotation(q)
@@ -362,8 +373,10 @@ class MooringEquilibrium:
         self._K, self.lines, self.history, self.without = K, lines, history, without
         self.line_indices = [h.index for h in system.mooring_lines if h.index not in without]
         layout = system.layout
-        self.bodies = [BodyState(i, b, layout.body_q(q, i)) for i, b in enumerate(system.bodies)]
-        P = layout.positions(q)[0]
+        self.bodies = [
+            BodyState(i, b, layout.body_q(q, i), layout.local[i]) for i, b in enumerate(system.bodies)
+        ]
+        P = system.frame(q)[0]
         self.points = [PointState(p, P[p.index]) for p in system.points]
         self.depth = system.depth
         if len(self.bodies) == 1:
@@ -403,8 +416,8 @@ class MooringEquilibrium:
         ``K_bb - K_bp K_pp^{-1} K_pb``, shape ``(6 n, 6 n)`` for ``n`` rigid bodies."""
         if lines_only:
             system = self.system
-            arms = system.layout.positions(self.position)[1]
-            K = system.assemble(self.position, arms, self.handles, self.lines, 0.0, lines_only=True)[1]
+            _, R, arms = system.frame(self.position)
+            K = system.assemble(self.position, (R, arms), self.handles, self.lines, 0.0, lines_only=True)[1]
         else:
             K = self._K.copy()
         if not condensed:

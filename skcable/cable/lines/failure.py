@@ -53,9 +53,15 @@ class FailureCase:
         T_d = np.array([0.0 if k in lost else after[k] for k in rows])
         ratio = np.divide(T_d, T_i, out=np.zeros_like(T_d), where=T_i > 0)
         return pd.DataFrame(
-            {"line": rows, "failed": [k in lost for k in rows], "T_intact": T_i, "T_damaged": T_d,
-             "change": T_d - T_i, "ratio": ratio}
-        )  # fmt: skip
+            {
+                "line": rows,
+                "failed": [k in lost for k in rows],
+                "T_intact": T_i,
+                "T_damaged": T_d,
+                "change": T_d - T_i,
+                "ratio": ratio,
+            }
+        )
 
     def offsets(self):
         """One row per body: ``body``, its reference point intact ``x, y, z`` and damaged

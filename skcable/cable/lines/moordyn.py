@@ -46,18 +46,63 @@ __all__ = ["MoorDynModel", "read_moordyn", "write_moordyn"]
 OPTIONS = frozenset(
     s.lower()
     for s in (
-        "writeLog", "dtM", "CFL", "tScheme", "g", "rho", "rhoW", "WtrDpth", "depth", "kBot", "cBot",
-        "dtIC", "TmaxIC", "CdScaleIC", "threshIC", "WaveKin", "dtWave", "waveKin_rampT", "Currents",
-        "UnifyCurrentGrid", "WriteUnits", "FrictionCoefficient", "FricDamp", "StatDynFricScale", "dtOut",
-        "SeafloorFile", "ICgenDynamic", "disableOutput", "disableOutTime", "WaterKin", "MU_KT", "MU_KA",
-        "MC", "CV", "inertialF", "inertialF_rampT", "OutSwitch", "Echo", "WtrDnsty", "gravity",
-        "kb", "cb", "ICDfac", "ICthresh", "ICTmax",  # the v1 names, still written by MoorPy
+        "writeLog",
+        "dtM",
+        "CFL",
+        "tScheme",
+        "g",
+        "rho",
+        "rhoW",
+        "WtrDpth",
+        "depth",
+        "kBot",
+        "cBot",
+        "dtIC",
+        "TmaxIC",
+        "CdScaleIC",
+        "threshIC",
+        "WaveKin",
+        "dtWave",
+        "waveKin_rampT",
+        "Currents",
+        "UnifyCurrentGrid",
+        "WriteUnits",
+        "FrictionCoefficient",
+        "FricDamp",
+        "StatDynFricScale",
+        "dtOut",
+        "SeafloorFile",
+        "ICgenDynamic",
+        "disableOutput",
+        "disableOutTime",
+        "WaterKin",
+        "MU_KT",
+        "MU_KA",
+        "MC",
+        "CV",
+        "inertialF",
+        "inertialF_rampT",
+        "OutSwitch",
+        "Echo",
+        "WtrDnsty",
+        "gravity",
+        "kb",
+        "cb",
+        "ICDfac",
+        "ICthresh",
+        "ICTmax",  # the v1 names, still written by MoorPy
     )
-)  # fmt: skip
+)
 SECTIONS = ("LINE TYPES", "BODIES", "POINTS", "LINES", "OPTIONS", "OUTPUTS")
 UNSUPPORTED = ("ROD TYPES", "RODS", "FAILURE", "CONTROL", "EXTERNAL LOADS")
-V1 = ("LINE DICTIONARY", "NODE PROPERTIES", "POINT PROPERTIES", "CONNECTION PROPERTIES", "LINE PROPERTIES",
-      "SOLVER OPTIONS")  # fmt: skip
+V1 = (
+    "LINE DICTIONARY",
+    "NODE PROPERTIES",
+    "POINT PROPERTIES",
+    "CONNECTION PROPERTIES",
+    "LINE PROPERTIES",
+    "SOLVER OPTIONS",
+)
 FIXED, FREE, HELD = ("fixed", "anchor"), ("free", "point", "connect"), ("coupled", "vessel")
 
 
@@ -382,8 +427,19 @@ class _Writer:
             ids[id(body)] = len(self.body_rows) + 1
             cg = "|".join(_fmt(v) for v in body.center_of_gravity)
             pose = [*q[:3], *np.degrees(q[3:])]
-            self.body_rows.append([str(ids[id(body)]), "free", *map(_fmt, pose), _fmt(body.mass), cg, "0",
-                                   _fmt(body.volume), "0", "0"])  # fmt: skip
+            self.body_rows.append(
+                [
+                    str(ids[id(body)]),
+                    "free",
+                    *map(_fmt, pose),
+                    _fmt(body.mass),
+                    cg,
+                    "0",
+                    _fmt(body.volume),
+                    "0",
+                    "0",
+                ]
+            )
         return ids
 
     def point_row(self, kind, xyz, mass, volume):
@@ -428,8 +484,17 @@ class _Writer:
             segs = self.model.segments[k] if k < len(self.model.segments) else self.num_segs
             for i, segment in enumerate(line.segments):
                 name = self.type_name(segment, hint)
-                self.line_rows.append([str(len(self.line_rows) + 1), name, str(joints[i]), str(joints[i + 1]),
-                                       _fmt(segment.length), str(segs), "-"])  # fmt: skip
+                self.line_rows.append(
+                    [
+                        str(len(self.line_rows) + 1),
+                        name,
+                        str(joints[i]),
+                        str(joints[i + 1]),
+                        _fmt(segment.length),
+                        str(segs),
+                        "-",
+                    ]
+                )
             for joint, end in ((0, handle.a), (len(line.segments), handle.b)):
                 P = float(line.joint_forces[joint])
                 if P:
@@ -444,10 +509,14 @@ class _Writer:
                 row[5], row[6] = _fmt(float(row[5]) + mass), _fmt(float(row[6]) + volume)
 
 
-_TYPE_COLUMNS = ("TypeName Diam Mass/m EA BA/-zeta EI Cd Ca CdAx CaAx",
-                 "(name) (m) (kg/m) (N) (N-s/-) (N-m^2) (-) (-) (-) (-)")  # fmt: skip
-_BODY_COLUMNS = ("ID Attachment X0 Y0 Z0 r0 p0 y0 Mass CG* I* Volume CdA* Ca*",
-                 "(#) (word) (m) (m) (m) (deg) (deg) (deg) (kg) (m) (kg-m^2) (m^3) (m^2) (-)")  # fmt: skip
+_TYPE_COLUMNS = (
+    "TypeName Diam Mass/m EA BA/-zeta EI Cd Ca CdAx CaAx",
+    "(name) (m) (kg/m) (N) (N-s/-) (N-m^2) (-) (-) (-) (-)",
+)
+_BODY_COLUMNS = (
+    "ID Attachment X0 Y0 Z0 r0 p0 y0 Mass CG* I* Volume CdA* Ca*",
+    "(#) (word) (m) (m) (m) (deg) (deg) (deg) (kg) (m) (kg-m^2) (m^3) (m^2) (-)",
+)
 _POINT_COLUMNS = ("ID Attachment X Y Z Mass Volume CdA Ca", "(#) (word/ID) (m) (m) (m) (kg) (m^3) (m^2) (-)")
 _LINE_COLUMNS = (
     "ID LineType AttachA AttachB UnstrLen NumSegs LineOutputs",

@@ -11,11 +11,9 @@ A system (`skcable.cable.MooringSystem`) holds bodies, points and lines:
 - a **line** connects any two points, in any order.
 
 The unknowns ``q`` are the dofs of every body (6 of a `RigidBody`: position and roll, pitch,
-yaw; 3 of a `PointBody`), then three of every free point. `Layout` maps them: the global
-position of every point and, for a body's point at arm :math:`\mathbf r` (global axes, from
-the reference point), the map of the body's translation and small rotation vector to the
-point's displacement, :math:`\delta\mathbf p = \delta\mathbf x - [\mathbf r]_\times\delta\boldsymbol\theta`
-(its transpose takes a force to a force and a moment).
+yaw; 3 of a `PointBody`), then three of every free point. `Layout` maps them: where each body's
+and free point's dofs start, the bodies' points in body axes, the fixed points; the positions at
+``q`` are formed by `skcable.cable.lines.assembly.Assembler` (vectorised over the bodies).
 """
 
 from __future__ import annotations
@@ -23,7 +21,7 @@ from __future__ import annotations
 import numpy as np
 
 from skcable._checks import nonnegative, positive, scalar
-from skcable.cable.lines.body import PointBody, RigidBody, skew
+from skcable.cable.lines.body import PointBody, RigidBody
 from skcable.cable.lines.line3d import point
 from skcable.errors import InputError
 
@@ -128,20 +126,6 @@ class Layout:
         s = self.body_start[i]
         return q[s : s + self.bodies[i].n_dof]
 
-    def positions(self, q) -> tuple[np.ndarray, list]:
-        """Global positions of every point (n, 3) at ``q``, and each body's arms (global, (m_i, 3))."""
-        P = self.fixed_positions.copy()
-        arms = []
-        for i, body in enumerate(self.bodies):
-            qb = self.body_q(q, i)
-            arm = self.local[i] @ body.rotation(qb).T if isinstance(body, RigidBody) else 0.0 * self.local[i]
-            arms.append(arm)
-            if self.body_points[i]:
-                P[self.body_points[i]] = qb[:3] + arm
-        if self.free.size:
-            P[self.free] = q[self.free_starts[:, None] + np.arange(3)]
-        return P, arms
-
     def initial(self, body_positions) -> np.ndarray:
         """The dof vector of the bodies at ``body_positions`` and the free points where given."""
         q = np.zeros(self.n_dof)
@@ -158,19 +142,6 @@ class Layout:
             s = self.body_start[i]
             M[s : s + body.n_dof, s : s + body.n_dof] = body.rate_map(self.body_q(q, i))
         return M
-
-    def point_map(self, j, arm_of) -> tuple[int, np.ndarray] | None:
-        """``(first dof, T)``: the dofs that move point ``j`` and ``T`` (3 × k) with ``δp = T δq``;
-        None for a fixed point. ``arm_of(j)``: the arm (global) of a body's point."""
-        p = self.points[j]
-        if p.kind == "fixed":
-            return None
-        if p.kind == "free":
-            return self.point_start[j], np.eye(3)
-        i = self.body_of[id(p.body)]
-        if isinstance(p.body, PointBody):
-            return self.body_start[i], np.eye(3)
-        return self.body_start[i], np.hstack([np.eye(3), -skew(arm_of(j))])
 
     def rotation_dofs(self) -> np.ndarray:
         """Indices of the rotation dofs (roll, pitch, yaw of each rigid body)."""

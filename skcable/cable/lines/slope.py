@@ -62,8 +62,19 @@ def _free_clear(line, scene, start, tol):
     if clearance(solution, floor, m) < -tol:
         return None
     reason = "neither end on the sloped seabed and the line clear of it"
-    return PlaneLine(span, dh, seabed, solution, reverse, "free", reason, ("free", reverse),
-                     lambda: free_jacobian(solution.stiffness()), variant, slope)  # fmt: skip
+    return PlaneLine(
+        span,
+        dh,
+        seabed,
+        solution,
+        reverse,
+        "free",
+        reason,
+        ("free", reverse),
+        lambda: free_jacobian(solution.stiffness()),
+        variant,
+        slope,
+    )
 
 
 def solve_on_slope(line, scene, on_A, on_B, start, bvp) -> PlaneLine:
@@ -97,8 +108,30 @@ def solve_on_slope(line, scene, on_A, on_B, start, bvp) -> PlaneLine:
     )
     if solution.free is not None:
         reason = "an end on the sloped seabed and the line leaving it upwards: it hangs free"
-        return PlaneLine(span, dh, seabed, solution, reverse, "free", reason, ("slope",),
-                         lambda: free_jacobian(solution.stiffness()), variant, slope)  # fmt: skip
+        return PlaneLine(
+            span,
+            dh,
+            seabed,
+            solution,
+            reverse,
+            "free",
+            reason,
+            ("slope",),
+            lambda: free_jacobian(solution.stiffness()),
+            variant,
+            slope,
+        )
     reason = "an end on the sloped seabed: the line rests on the slope up to a touchdown (closed form)"
-    return PlaneLine(span, dh, seabed, solution, reverse, "grounded (slope)", reason, ("slope",),
-                     lambda: sloped_jacobian(solution, solution.stiffness()), variant, slope)  # fmt: skip
+    return PlaneLine(
+        span,
+        dh,
+        seabed,
+        solution,
+        reverse,
+        "grounded (slope)",
+        reason,
+        ("slope",),
+        lambda: sloped_jacobian(solution, solution.stiffness()),
+        variant,
+        slope,
+    )

@@ -40,8 +40,9 @@ from collections.abc import Iterable, Mapping
 import numpy as np
 
 from skcable._checks import positive, real, scalar
+from skcable.cable.lines.assembly import Assembler
 from skcable.cable.lines.between import LineBetween, solve_between
-from skcable.cable.lines.body import PointBody, RigidBody
+from skcable.cable.lines.body import PointBody, RigidBody, skew
 from skcable.cable.lines.equilibrium import MooringEquilibrium, solve_equilibrium
 from skcable.cable.lines.geometry import is_line, on_seabed_tolerance
 from skcable.cable.lines.line3d import Line3D, line_3d, line_model, point, solve_in_space, takes_start
@@ -276,7 +277,22 @@ class MooringSystem:
         """The dofs of the bodies and the free points (`skcable.cable.lines.network.Layout`)."""
         if self._layout is None:
             self._layout = Layout(self.bodies, self.points)
+            self._assembler = Assembler(self.bodies, self.points, self._layout)
         return self._layout
+
+    def frame(self, q) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        """``(P, R, arms)`` at the dofs ``q``: every point's global position ``(n, 3)`` (m), the
+        bodies' rotation matrices ``(n_bodies, 3, 3)`` and the arms (global axes) of the bodies'
+        points."""
+        layout = self.layout
+        xyz, R = self._assembler.frames(q)
+        arms = self._assembler.body_arms(R)
+        P = layout.fixed_positions.copy()
+        if len(arms):
+            P[self._assembler.body_point_index] = xyz[self._assembler.body_point_owner] + arms
+        if layout.free.size:
+            P[layout.free] = q[layout.free_starts[:, None] + np.arange(3)]
+        return P, R, arms
 
     @property
     def n_dof(self) -> int:
@@ -301,9 +317,9 @@ class MooringSystem:
         layout = self.layout
         if isinstance(key, MooringPoint) and self._point(name, key).kind == "free":
             return layout.point_start[key.index], None
-        for i, b in enumerate(self.bodies):
-            if b is key:
-                return layout.body_start[i], b
+        i = layout.body_of.get(id(key))
+        if i is not None and self.bodies[i] is key:
+            return layout.body_start[i], key
         raise InputError(name, f"takes bodies and free points of this system as keys, got {key!r}")
 
     def _loads(self, force, moment):
@@ -382,7 +398,7 @@ class MooringSystem:
         and `skcable.cable.LineBetween` (`skcable.cable.Line`) objects."""
         q = self._position("position", position)
         handles = self._active(without)
-        return self._solve_at(self.layout.positions(q)[0], handles, self._checked_start(start, handles))
+        return self._solve_at(self.frame(q)[0], handles, self._checked_start(start, handles))
 
     def evaluate(self, q, external, *, lines_only=False, start=None, without=()):
         """Net load ``G(q)`` (N, N m), stiffness ``K(q)`` and the solved lines at the checked dofs
@@ -391,44 +407,22 @@ class MooringSystem:
 
         ``lines_only``: ``G`` and ``K`` of the lines alone (no own loads, no external load)."""
         handles = self._active(without)
-        P, arms = self.layout.positions(q)
+        P, R, arms = self.frame(q)
         lines = self._solve_at(P, handles, start)
-        G, K = self.assemble(q, arms, handles, lines, external, lines_only)
+        G, K = self.assemble(q, (R, arms), handles, lines, external, lines_only)
         return G, K, lines
 
-    def assemble(self, q, arms, handles, lines, external, lines_only=False):
-        """``(G, K)`` from the solved ``lines`` of ``handles`` at ``q`` (module docstring)."""
-        layout = self.layout
-        n = layout.n_dof
-        G, K = np.zeros(n), np.zeros((n, n))
-        ends = [([], [], []) for _ in self.bodies]
-        cross = []
+    def assemble(self, q, frame, handles, lines, external, lines_only=False):
+        """``(G, K)`` from the solved ``lines`` of ``handles`` at ``q``, ``frame`` the bodies' rotation
+        matrices and their points' arms there (`frame`; module docstring)."""
+        R, arms = frame
+        ends, cross = [], []
         for handle, line in zip(handles, lines, strict=True):
             if handle.managed:
-                _managed_ends(handle, line, ends, cross, G, K, layout)
+                _managed_ends(handle, line, ends, cross, self._assembler, arms)
             elif handle.b.kind != "fixed":
-                _add_end(handle.b, line.force_on_fairlead, line.stiffness(), ends, G, K, layout)
-        if not lines_only:
-            for p in self.points:
-                if p.kind != "fixed" and np.any(p.own_force):
-                    _add_end(p, p.own_force, np.zeros((3, 3)), ends, G, K, layout)
-        for i, body in enumerate(self.bodies):
-            s, m = layout.body_start[i], body.n_dof
-            rows, forces, stiffnesses = ends[i]
-            if rows:
-                Gb, Kb = body.add_lines(arms[i][rows], np.array(forces), np.array(stiffnesses))
-            else:
-                Gb, Kb = np.zeros(m), np.zeros((m, m))
-            if not lines_only:
-                qb = q[s : s + m]
-                Gb, Kb = Gb + body.own_force(qb), Kb + body.own_stiffness(qb)
-            G[s : s + m] += Gb
-            K[s : s + m, s : s + m] += Kb
-        for (a, b), K_ab, K_ba in cross:
-            _add_cross(layout, arms, a, b, K_ab, K_ba, K)
-        if not lines_only:
-            G = G + external
-        return G, K
+                ends.append((handle.b.index, line.force_on_fairlead, line.stiffness()))
+        return self._assembler.assemble(q, R, arms, ends, cross, external, lines_only)
 
     def net_force(self, position, *, force=(0.0, 0.0, 0.0), moment=(0.0, 0.0, 0.0)) -> np.ndarray:
         """Net load on the dofs at ``position``: lines, own loads and the external ``force`` and
@@ -459,33 +453,29 @@ class MooringSystem:
         """The largest Newton step of each dof: a quarter of the shortest horizontal span of the lines
         of its body or point (m), 0.2 rad."""
         layout = self.layout
-        P = layout.positions(q)[0]
-        groups = list(zip(layout.body_start, self.bodies, strict=True))
-        groups += [(s, self.points[j]) for j, s in layout.point_start.items()]
-        cap = np.full(layout.n_dof, 0.2)
+        P = self.frame(q)[0]
         handles = self._active(without)
-        spans = {id(h): float(np.hypot(*(P[h.b.index] - P[h.a.index])[:2])) for h in handles}
-        largest = max(spans.values(), default=1.0)
-        for s, owner in groups:
-            mine = [spans[id(h)] for h in handles if _touches(h, owner)]
-            cap[s : s + 3] = 0.25 * (min(mine) if mine else largest)
+        a = np.array([h.a.index for h in handles], dtype=int)
+        b = np.array([h.b.index for h in handles], dtype=int)
+        spans = np.hypot(*(P[b] - P[a])[:, :2].T) if len(handles) else np.ones(1)
+        starts = self._assembler.group_start  # each point's body or free point: its first dof (-1: fixed)
+        shortest = np.full(layout.n_dof, np.inf)
+        for ends in (a, b):
+            moving = starts[ends] >= 0
+            np.minimum.at(shortest, starts[ends][moving], spans[moving])
+        cap = np.full(layout.n_dof, 0.2)
+        for s in np.unique(starts[starts >= 0]):
+            cap[s : s + 3] = 0.25 * (shortest[s] if np.isfinite(shortest[s]) else spans.max())
         return cap
 
     def force_scale(self, external) -> float:
         """A force scale of the loads other than the lines' (N): weights, buoyancies, point loads,
         external forces."""
-        layout = self.layout
-        scale = 0.0
-        for i, body in enumerate(self.bodies):
-            s = layout.body_start[i]
-            scale = max(
-                scale, abs(body.weight[2]), body.buoyancy[2], float(np.linalg.norm(external[s : s + 3]))
-            )
-        for p in self.points:
-            scale = max(scale, float(np.abs(p.own_force).max()))
-        for s in layout.point_start.values():
-            scale = max(scale, float(np.linalg.norm(external[s : s + 3])))
-        return scale
+        self.layout  # noqa: B018 - builds the assembler
+        assembler = self._assembler
+        starts = np.unique(assembler.group_start[assembler.group_start >= 0])
+        pushed = float(np.linalg.norm(external[starts[:, None] + np.arange(3)], axis=1).max(initial=0.0))
+        return max(assembler.own_scale, pushed)
 
     @staticmethod
     def tension_scale(lines) -> float:
@@ -510,8 +500,9 @@ class MooringSystem:
                 raise InputError(
                     "points", f"point {p.index} ({p.kind}) has no line: connect it or leave it out"
                 )
-        for i, body in enumerate(self.bodies):
-            if not any(_touches(h, body) for h in handles):
+        held = {int(self._assembler.owner[j]) for j in used if self.points[j].kind == "body"}
+        for i in range(len(self.bodies)):
+            if i not in held:
                 raise InputError("bodies", f"body {i} has no line: connect a line to one of its points")
 
     def equilibrium(
@@ -600,7 +591,7 @@ class MooringSystem:
     def point_position(self, p, position=None) -> np.ndarray:
         """The global position (m) of the point ``p`` with the dofs at ``position`` (default: the start)."""
         p = self._point("point", p)
-        return self.layout.positions(self._position("position", position))[0][p.index].copy()
+        return self.frame(self._position("position", position))[0][p.index].copy()
 
     def replaced(self, *, models=None, positions=None) -> MooringSystem:
         """A copy of this system with some lines' models and some points' positions replaced:
@@ -640,47 +631,30 @@ class MooringSystem:
         )
 
 
-def _touches(handle, owner) -> bool:
-    """Whether the line ``handle`` has an end at the point or on the body ``owner``."""
-    return any(p is owner or (p.body is owner and owner is not None) for p in (handle.a, handle.b))
-
-
-def _add_end(p, force, stiffness, ends, G, K, layout):
-    """A force and its 3x3 stiffness at the moving point ``p``: into its body's list, or its dofs."""
-    if p.kind == "body":
-        i = layout.body_of[id(p.body)]
-        rows, forces, stiffnesses = ends[i]
-        rows.append(layout.body_points[i].index(p.index))
-        forces.append(force)
-        stiffnesses.append(stiffness)
-        return
-    s = layout.point_start[p.index]
-    G[s : s + 3] += force
-    K[s : s + 3, s : s + 3] += stiffness
-
-
-def _managed_ends(handle, line, ends, cross, G, K, layout):
+def _managed_ends(handle, line, ends, cross, assembler, arms):
     """The ends of a `skcable.cable.Line` line that move, and their coupling where both do."""
     moving = (handle.a.kind != "fixed", handle.b.kind != "fixed")
     if not any(moving):
         return
+    if not moving[0]:  # the common case: an anchor and a moving fairlead
+        ends.append((handle.b.index, line.end_forces[1], line.b_block()))
+        return
     J = line.plane.jacobian()
     for i, p in enumerate((handle.a, handle.b)):
         if moving[i]:
-            _add_end(p, line.end_forces[i], line.block(i, i, J), ends, G, K, layout)
+            ends.append((p.index, line.end_forces[i], line.block(i, i, J)))
     if all(moving):
-        cross.append(((handle.a, handle.b), line.block(0, 1, J), line.block(1, 0, J)))
+        (sa, Ta), (sb, Tb) = (_point_map(assembler, arms, p) for p in (handle.a, handle.b))
+        cross.append((sa, Ta, sb, Tb, line.block(0, 1, J), line.block(1, 0, J)))
 
 
-def _add_cross(layout, arms, a, b, K_ab, K_ba, K):
-    """``T_a^T K_ab T_b`` and ``T_b^T K_ba T_a``: two moving ends of one line."""
-
-    def arm_of(j):
-        p = layout.points[j]
-        i = layout.body_of[id(p.body)]
-        return arms[i][layout.body_points[i].index(j)]
-
-    (sa, Ta), (sb, Tb) = layout.point_map(a.index, arm_of), layout.point_map(b.index, arm_of)
-    ka, kb = Ta.shape[1], Tb.shape[1]
-    K[sa : sa + ka, sb : sb + kb] += Ta.T @ K_ab @ Tb
-    K[sb : sb + kb, sa : sa + ka] += Tb.T @ K_ba @ Ta
+def _point_map(assembler, arms, p):
+    """``(first dof, T)`` with ``δp = T δq`` for a moving point ``p`` (module docstring)."""
+    if p.kind == "free":
+        return int(assembler.free_start[p.index]), np.eye(3)
+    i = int(assembler.owner[p.index])
+    start = int(assembler.start[i])
+    if not assembler.rigid[i]:
+        return start, np.eye(3)
+    r = arms[assembler.row[p.index]]
+    return start, np.hstack([np.eye(3), -skew(r)])
