@@ -29,6 +29,7 @@ found the unstable one is returned with ``stable=False`` and a `PlausibilityWarn
 
 from __future__ import annotations
 
+import functools
 import math
 import warnings
 
@@ -226,11 +227,27 @@ def check_unique(solve, state, history):
         raise ConvergenceError(_SINGULAR_MESSAGE.format(_named(solve.system, free)), history)
 
 
+@functools.lru_cache(maxsize=1)
+def _threads():
+    from threadpoolctl import ThreadpoolController
+
+    return ThreadpoolController()
+
+
 def solve_equilibrium(system, position, external, lines, tol, max_iter, without=frozenset()):
     """`skcable.cable.MooringSystem.equilibrium` on checked arguments: Newton from ``position``
     (the ``lines`` of an earlier equilibrium as warm starts, or None), the stable branch
     preferred (module docstring), ``without`` the lines of those indices. Returns a
-    `MooringEquilibrium`."""
+    `MooringEquilibrium`.
+
+    The small dense solves (a few dozen dofs) run on one BLAS thread (threadpoolctl): more threads
+    only add their start-up and, on a shared machine, their contention (an SVD of order 96 took
+    80 ms on two contending threads against 1 ms on one)."""
+    with _threads().limit(limits=1, user_api="blas"):
+        return _solve_equilibrium(system, position, external, lines, tol, max_iter, without)
+
+
+def _solve_equilibrium(system, position, external, lines, tol, max_iter, without):
     solve = _Newton(system, external, tol, max_iter, without)
     try:
         result = solve.run(position, lines)
@@ -267,7 +284,7 @@ def solve_equilibrium(system, position, external, lines, tol, max_iter, without=
             f"heel {max(b.heel for b in eq.bodies) if eq.bodies else 0.0:.3g} rad) and no stable one was "
             "found from the restarts: check the bodies' metacentres, centres of gravity and the start"
         )
-        warnings.warn(PlausibilityWarning("start", reason), stacklevel=3)
+        warnings.warn(PlausibilityWarning("start", reason), stacklevel=4)
     return eq
 
 

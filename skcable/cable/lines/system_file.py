@@ -1,6 +1,6 @@
 """A mooring system described in a TOML file: line types, bodies, points, lines and loads.
 
-The file (TOML, read with the standard library's ``tomllib``)::
+The file (TOML, read with the standard library's ``tomllib``, ``tomli`` before Python 3.11)::
 
     depth = 200.0                      # m; rho (kg/m^3) and g (m/s^2) too, optional
 
@@ -180,13 +180,16 @@ def _points(system, data, out):
 
 def read_system(path) -> SystemFile:
     """Read a mooring system from a TOML file (module docstring); returns a `SystemFile`."""
-    import tomllib
+    try:
+        import tomllib
+    except ModuleNotFoundError:  # Python 3.10: the same parser as a package
+        import tomli as tomllib
 
     from skcable.cable.lines.system import MooringSystem
 
     try:
         data = tomllib.loads(Path(path).read_text(encoding="utf-8"))
-    except tomllib.TOMLDecodeError as err:
+    except (tomllib.TOMLDecodeError, UnicodeDecodeError) as err:
         raise InputError("path", f"{path}: not a TOML file: {err}") from None
     _keys("the file", data, _TOP)
     system = MooringSystem(depth=data.get("depth"), rho=data.get("rho", 1025.0), g=data.get("g", 9.81))
