@@ -168,18 +168,17 @@ class LineBetween:
 
 def solve_between(line, a, b, depth, start=None, bvp=None) -> LineBetween:
     """`line_between` on checked float 3-vectors (the horizontal distance checked here)."""
-    dx, dy = float(b[0] - a[0]), float(b[1] - a[1])
+    (ax, ay, az), (bx, by, bz) = a.tolist(), b.tolist()
+    dx, dy, dz = bx - ax, by - ay, bz - az
     r = math.hypot(dx, dy)
-    if not r > 1e-9 * max(1.0, float(np.abs(b - a).max())):
+    if not r > 1e-9 * max(1.0, abs(dx), abs(dy), abs(dz)):
         raise InputError(
             "b",
             f"lies on the vertical of a (horizontal distance {r:.3g} m): the line's vertical plane is "
             "undefined",
         )
-    seabed = None if depth is None else -depth - float(a[2])
-    plane = solve_in_plane(
-        line, r, float(b[2] - a[2]), seabed=seabed, start=None if start is None else start.plane, bvp=bvp
-    )
+    seabed = None if depth is None else -depth - az
+    plane = solve_in_plane(line, r, dz, seabed=seabed, start=None if start is None else start.plane, bvp=bvp)
     return LineBetween(line, a, b, plane, r, np.array([dx / r, dy / r, 0.0]))
 
 

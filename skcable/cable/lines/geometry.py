@@ -53,14 +53,13 @@ __all__ = ["MODELS", "PlaneLine", "is_line", "line_in_plane", "on_seabed_toleran
 def _check_ends(span, dh, seabed, slope):
     """``(gap_A, gap_B, tol)``: the ends' heights above the seabed (m) and the on-seabed tolerance."""
     tol = on_seabed_tolerance(span, dh, seabed)
-    gaps = (-seabed, dh - seabed - span * slope)
-    for name, gap in zip(("A", "B"), gaps, strict=True):
-        if gap < -tol:
-            raise InputError(
-                "seabed",
-                f"end {name} lies {-gap:.6g} m below the seabed: both ends must be on or above it",
-            )
-    return max(gaps[0], 0.0), max(gaps[1], 0.0), tol
+    gap_A, gap_B = -seabed, dh - seabed - span * slope
+    if gap_A < -tol or gap_B < -tol:
+        name, gap = ("A", gap_A) if gap_A < -tol else ("B", gap_B)
+        raise InputError(
+            "seabed", f"end {name} lies {-gap:.6g} m below the seabed: both ends must be on or above it"
+        )
+    return max(gap_A, 0.0), max(gap_B, 0.0), tol
 
 
 def _warm(previous, key):
@@ -71,7 +70,8 @@ def _warm(previous, key):
 
 
 def _line_solve(model_line, span, dh, start):
-    return model_line.solve(span, dh) if start is None else model_line.solve(span, dh, start=start)
+    """``model_line.solve`` on span and dh the callers checked (`solve_between`, `line_in_plane`)."""
+    return model_line.solve_checked(float(span), float(dh), start)
 
 
 def _plane(scene, solution, reverse, model, reason, key, jacobian, variant) -> PlaneLine:

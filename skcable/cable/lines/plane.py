@@ -61,9 +61,8 @@ class PlaneLine(ProfileMixin):
         low = (float(solution.H_A), float(solution.V_A))
         high = (float(solution.H_B), float(solution.V_B))
         (self.H_A, self.V_A), (self.H_B, self.V_B) = (high, low) if reversed_ else (low, high)
-        for name in ("H_A", "V_A", "H_B", "V_B"):
-            if not math.isfinite(getattr(self, name)):
-                raise ConvergenceError(f"line between two ends: non-finite {name} from the {model} model")
+        if not all(map(math.isfinite, (*low, *high))):
+            raise ConvergenceError(f"line between two ends: non-finite end forces from the {model} model")
         self.T_A, self.T_B = math.hypot(self.H_A, self.V_A), math.hypot(self.H_B, self.V_B)
 
     @property

@@ -296,6 +296,11 @@ class Line:
         """
         span = scalar("span", positive("span", span))
         dh = scalar("dh", real("dh", dh))
+        return self.solve_checked(span, dh, start)
+
+    def solve_checked(self, span: float, dh: float, start=None):
+        """`solve` for a caller that has checked ``span`` and ``dh`` (finite floats, ``span > 0``):
+        a system's line solved at every Newton iterate of its equilibrium."""
         if self.seabed is not None:
             require("dh", dh > self.seabed, "must put B above the seabed", dh)
         chord = math.hypot(span, dh)
