@@ -27,7 +27,7 @@ user's load callable, by central differences).
 The forms (`skcable.cable.bvp.forms`) are a *section law* in the
 generalized strains ``(x', y', x, y, T)``: `ArcProblem` assembles them
 with `skcable.fe.Assembly` (basis values and patterns once) and
-solves the bordered banded system of `skcable.cable.bvp.bordered`.
+solves the bordered banded system of `skcable.fe.linear.BorderedSolver`.
 
 Support reactions come from the residual rows at the supports:
 ``H_A = -R_x(A)``, ``V_A = R_y(A)``, ``H_B = R_x(B)``, ``V_B = R_y(B)``.
@@ -47,11 +47,12 @@ from skcable.cable._catenary import catenary
 from skcable.cable._loads import DeckLoad, DistributedLoad, PointLoad, SelfWeight
 from skcable.cable.bvp.base import FiniteElementSolution
 from skcable.cable.bvp.elements import end_dofs
-from skcable.cable.bvp.probes import element_values, gradient_probes, minimum_near
+from skcable.cable.bvp.section import tension_section
 from skcable.cable.terms import CableState, CableTerm, term_outputs
 from skcable.errors import ConvergenceError, InputError
 from skcable.fe.assembly import Assembly
 from skcable.fe.linear import BorderedSolver
+from skcable.fe.probes import element_values, gradient_probes, minimum_near
 
 __all__ = ["ArcProblem", "ArcSolution", "ArcState", "arc_guess", "arc_loads", "term_loads"]
 
@@ -143,6 +144,7 @@ class ArcState:
     @cached_property
     def J(self):
         """The global Jacobian wrt ``[x, y, T]`` (CSR), for inspection; Newton uses the band."""
+        assert self.assembly is not None, "a rejected state has no Jacobian"
         return self.assembly.matrix(element_matrices=self.Ke)
 
 
@@ -197,20 +199,13 @@ class ArcProblem:
         asmb = self.assembly
         g = asmb.interpolate(z)
         ax, ay, X, T = g[_AX], g[_AY], g[_X], g[_T]
-        n = np.sqrt(ax * ax + ay * ay)
-        if not np.all(n > 0):  # a collapsed tangent: reject this iterate
+        section = tension_section(ax, ay, T)
+        if section is None:  # a collapsed tangent: reject this iterate
             return _REJECTED
-        ex, ey = ax / n, ay / n
+        n, ex, ey, D = section  # T e, the stretch and their tangent (skcable.cable.bvp.section)
         Qx, Qy, dQx_dx, dQy_dx, dQx_dxp, dQy_dxp, dQx_dL, dQy_dL = arc_loads(self.loads, X, ax, L0, self.span)
         c = self.compliance
         S = np.stack([T * ex, T * ey, -Qx, -Qy, n - L0 * (1.0 + T * c)])
-        D = np.zeros((5, 5, *n.shape))
-        Tn = T / n
-        D[_AX, _AX] = Tn * (1.0 - ex * ex)
-        D[_AX, _AY] = D[_AY, _AX] = -Tn * ex * ey
-        D[_AY, _AY] = Tn * (1.0 - ey * ey)
-        D[_AX, _T] = D[_T, _AX] = ex
-        D[_AY, _T] = D[_T, _AY] = ey
         D[_X, _X], D[_X, _AX] = -dQx_dx, -dQx_dxp
         D[_Y, _X], D[_Y, _AX] = -dQy_dx, -dQy_dxp
         D[_T, _T] = -L0 * c
@@ -290,13 +285,14 @@ class ArcProblem:
     def increment(self, state: ArcState) -> np.ndarray:
         """Newton increment of (z, L0): the bordered banded solve."""
         system, free = self.solver.system, self.free
-        ab = system.add_elements(system.band(), state.Ke)
+        R, Ke, dR_dL0, dg = state.R, state.Ke, state.dR_dL0, state.dg
+        assert R is not None and Ke is not None, "a rejected state has no increment"
+        ab = system.add_elements(system.band(), Ke)
         if self.fixed_length:
-            d_z, d_L = self.solver.solve(ab, state.R[free], gap=0.0)
+            d_z, d_L = self.solver.solve(ab, R[free], gap=0.0)
         else:
-            d_z, d_L = self.solver.solve(
-                ab, state.R[free], state.dR_dL0[free], state.dg[free], state.dg_dL0, state.g
-            )
+            assert dR_dL0 is not None and dg is not None, "an assembly of free length has its borders"
+            d_z, d_L = self.solver.solve(ab, R[free], dR_dL0[free], dg[free], state.dg_dL0, state.g)
         step = np.zeros(2 * self.N + self.M + 1)
         step[free] = d_z
         step[-1] = d_L
@@ -527,10 +523,12 @@ class ArcSolution(FiniteElementSolution):
             raise InputError("x", "the cable is not a graph y(x) here (x(s) is not increasing): use xy(s)")
         probe = self.basis.probes
 
-        def f(s):
-            return (probe(np.atleast_2d(s.ravel())) @ xd).reshape(s.shape) - x
+        def f(s, target):  # find_root passes the targets of the elements it still works on
+            return (probe(np.atleast_2d(s.ravel())) @ xd).reshape(s.shape) - target
 
-        res = elementwise.find_root(f, (np.zeros_like(x), np.ones_like(x)))
+        res = elementwise.find_root(f, (np.zeros_like(x), np.ones_like(x)), args=(x,))
+        if not np.all(res.success):
+            raise ConvergenceError(f"ArcSolution: no σ found where x(σ) = x ({res.status})", [])
         return np.asarray(res.x)
 
     def y(self, x):
@@ -585,5 +583,6 @@ class ArcSolution(FiniteElementSolution):
         return (
             f"ArcSolution(span={self.span:g}, dh={self.dh:g}, {self.mesh.t.shape[1]} elements: "
             f"H_A={self.H_A:.9g}, V_A={self.V_A:.9g}, H_B={self.H_B:.9g}, V_B={self.V_B:.9g}, "
-            f"length={self.length:.9g}, iterations={self.iterations})"
+            f"T_A={self.T_A:.9g}, T_B={self.T_B:.9g}, length={self.length:.9g} (N, m), "
+            f"iterations={self.iterations})"
         )

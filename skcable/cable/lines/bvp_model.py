@@ -20,13 +20,16 @@ with the reason no closed form holds.
 from __future__ import annotations
 
 import math
+from dataclasses import dataclass
+from functools import partial
 
 import numpy as np
 
+from skcable.cable.lines.jacobians import of_own
 from skcable.cable.lines.plane import PlaneLine, on_seabed_tolerance
 from skcable.errors import InputError
 
-__all__ = ["BVPLineView", "solve_bvp_line"]
+__all__ = ["BVPLineView", "Resolver", "SeabedPlane", "SeabedSlope", "solve_bvp_line"]
 
 #: Central-difference step of the BVP line's stiffness, relative to the chord.
 STEP = 1e-4
@@ -126,6 +129,27 @@ def _options(seabed, seabed_slope, friction, loads) -> dict:
     return dict(seabed=seabed, seabed_slope=seabed_slope, friction=friction, point_loads=loads)
 
 
+@dataclass(frozen=True)
+class SeabedPlane:
+    """The BVP's seabed ``y = base + slope x`` (m, relative to the lower end), a picklable callable."""
+
+    base: float
+    slope: float
+
+    def __call__(self, x):
+        return self.base + self.slope * np.asarray(x)
+
+
+@dataclass(frozen=True)
+class SeabedSlope:
+    """The slope ``dy/dx`` of a `SeabedPlane`, a picklable callable."""
+
+    slope: float
+
+    def __call__(self, x):
+        return self.slope + 0.0 * np.asarray(x)
+
+
 def _plane_seabed(low, slope, d_low, d_span=0.0):
     """The BVP's seabed relative to the lower end after it moves up by ``d_low``: None, 0 (the
     end on it, moving with it), a height or a plane ``b(x)`` with its slope."""
@@ -134,7 +158,36 @@ def _plane_seabed(low, slope, d_low, d_span=0.0):
     if slope == 0.0:
         return low - d_low, None
     base = 0.0 if low == 0.0 else low - d_low
-    return (lambda x: base + slope * np.asarray(x)), (lambda x: slope + 0.0 * np.asarray(x))
+    return SeabedPlane(base, slope), SeabedSlope(slope)
+
+
+@dataclass(frozen=True)
+class Resolver:
+    """The line (as seen from its lower end) re-solved by `skcable.cable.solve_line_bvp` with its
+    span and its ends' heights moved (m): `solve` gives the solution, a call ``(H_A, V_A, H_B, V_B)``
+    (N, the end attachments added)."""
+
+    span: float
+    height: float
+    low: float | None
+    slope: float
+    segments: list
+    loads: list
+    friction: float
+    P_end: tuple
+
+    def solve(self, d_span=0.0, d_low=0.0, d_high=0.0):
+        from skcable.cable.bvp import solve_line_bvp
+
+        bed, bed_slope = _plane_seabed(self.low, self.slope, d_low)
+        end = self.height + d_high - d_low  # an end on the seabed moves with it (the seabed stays at 0)
+        options = _options(bed, bed_slope, self.friction, self.loads)
+        return solve_line_bvp(self.span + d_span, end, self.segments, **options)
+
+    def __call__(self, d_span, d_low, d_high):
+        r = self.solve(d_span, d_low, d_high)
+        P_A, P_B = self.P_end
+        return float(r.H_A), float(r.V_A) + P_A, float(r.H), float(r.V_B) + P_B
 
 
 def solve_bvp_line(line, span, dh, seabed, reason, slope=0.0):
@@ -142,8 +195,6 @@ def solve_bvp_line(line, span, dh, seabed, reason, slope=0.0):
     ``y = seabed + x slope`` (relative to A, or None) by `skcable.cable.solve_line_bvp`, from the
     end that rests on the seabed (else the lower); a
     `skcable.cable.lines.plane.PlaneLine` with ``model="bvp"`` and ``reason``."""
-    from skcable.cable.bvp import solve_line_bvp
-
     tol = on_seabed_tolerance(span, dh, 0.0 if seabed is None else seabed)
     on_A = seabed is not None and -seabed <= tol
     on_B = seabed is not None and dh - seabed - span * slope <= tol
@@ -162,17 +213,11 @@ def solve_bvp_line(line, span, dh, seabed, reason, slope=0.0):
         )
     segments, loads, friction = _bvp_arguments(variant, low)
 
-    def forces(d_span, d_low, d_high):
-        bed, bed_slope = _plane_seabed(low, slope_o, d_low)
-        end = height + d_high - d_low  # an end on the seabed moves with it (the seabed stays at 0)
-        r = solve_line_bvp(span + d_span, end, segments, **_options(bed, bed_slope, friction, loads))
-        P_A, P_B = variant.arrays.P_end
-        return float(r.H_A), float(r.V_A) + P_A, float(r.H), float(r.V_B) + P_B
-
-    bed, bed_slope = _plane_seabed(low, slope_o, 0.0)
-    first = solve_line_bvp(span, height, segments, **_options(bed, bed_slope, friction, loads))
-    solution = BVPLineView(variant, first, forces)
+    P_end = tuple(float(p) for p in variant.arrays.P_end)
+    resolver = Resolver(float(span), float(height), low, float(slope_o), segments, loads, friction, P_end)
+    first = resolver.solve()
+    solution = BVPLineView(variant, first, resolver)
     key = ("bvp", reverse)
     return PlaneLine(
-        span, dh, seabed, solution, reverse, "bvp", reason, key, solution.jacobian, variant, slope
+        span, dh, seabed, solution, reverse, "bvp", reason, key, partial(of_own, solution), variant, slope
     )

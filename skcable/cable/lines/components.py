@@ -41,7 +41,7 @@ from skcable._checks import positive, scalar
 from skcable.cable.lines.segments import Segment
 from skcable.errors import InputError
 
-__all__ = ["Component", "component", "components", "register_component"]
+__all__ = ["ChainMBL", "Component", "MBLPerD2", "component", "components", "register_component"]
 
 _KN = 1.0e3  # N
 _TE = 1.0e3  # kg
@@ -113,18 +113,26 @@ class Component:
         return Segment(length, p["w"], p["EA"], mbl=p["MBL"], diameter=p["volume_diameter"])
 
 
-def _chain_mbl(c):
-    """DNV-OS-E302's breaking load of chain, ``c d² (44 - 0.08 d)`` kN (d in mm), as a function of d (m)."""
+@dataclass(frozen=True)
+class ChainMBL:
+    """DNV-OS-E302's breaking load of chain, ``c d² (44 - 0.08 d)`` kN with d in mm, called with
+    ``d`` in m (N); ``c`` is the grade's factor (a picklable `Component.mbl`)."""
 
-    def mbl(d):
+    c: float
+
+    def __call__(self, d):
         mm = 1000.0 * d
-        return c * mm * mm * (44.0 - 0.08 * mm) * _KN
-
-    return mbl
+        return self.c * mm * mm * (44.0 - 0.08 * mm) * _KN
 
 
-def _per_d2(c_kN):
-    return lambda d: c_kN * d * d * _KN
+@dataclass(frozen=True)
+class MBLPerD2:
+    """A breaking load ``c d²`` kN with d in m, called with ``d`` in m (N) (a picklable `Component.mbl`)."""
+
+    c: float
+
+    def __call__(self, d):
+        return self.c * d * d * _KN
 
 
 _ORCAFLEX = "Orcina Ltd., OrcaFlex Manual (line type wizard)"
@@ -137,7 +145,7 @@ for _link, _mass, _EA, _kv in (("studless", 19.9, 0.854e8, 1.80), ("studlink", 2
             _name,
             _mass * _TE,
             _EA * _KN,
-            _chain_mbl(_c),
+            ChainMBL(_c),
             _kv,
             f"{_ORCAFLEX} ('Chain'); MBL: {_DNV}",
             diameters=(0.0, 0.5),  # 44 - 0.08 d > 0 below 550 mm
@@ -148,7 +156,9 @@ for _name, _mass, _EA, _mbl, _kv, _what in (
     ("polyester rope", 0.7978, 1.09e6, 170466.0, 0.86, "Rope"),
     ("nylon rope", 0.6476, 1.18e5, 139357.0, 0.85, "Rope; the MBL wet"),
 ):
-    _LIBRARY[_name] = Component(_name, _mass * _TE, _EA * _KN, _per_d2(_mbl), _kv, f"{_ORCAFLEX} ('{_what}')")
+    _LIBRARY[_name] = Component(
+        _name, _mass * _TE, _EA * _KN, MBLPerD2(_mbl), _kv, f"{_ORCAFLEX} ('{_what}')"
+    )
 
 
 def components() -> dict:

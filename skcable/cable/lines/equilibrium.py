@@ -35,6 +35,7 @@ import warnings
 
 import numpy as np
 
+from skcable._show import counted, quantity
 from skcable.errors import ConvergenceError, InputError, PlausibilityWarning
 from skcable.fe import newton
 
@@ -510,13 +511,28 @@ class MooringEquilibrium:
     def __repr__(self):
         note = "" if self.stable else ", UNSTABLE"
         if self.system.shortcut:
-            where = f"offset={np.round(self.offset, 6).tolist()}, angles={np.round(self.angles, 9).tolist()}"
-        else:
-            where = f"{len(self.bodies)} bodies, {len(self.points)} points, {len(self.lines)} lines"
-        return (
-            f"MooringEquilibrium({where}, iterations={len(self.history) - 1}, "
-            f"min_eigenvalue={self.eigenvalues[0]:.6g}{note})"
+            shown = ", ".join(
+                (
+                    quantity("offset", self.offset, "m"),
+                    quantity("angles", self.angles, "rad"),
+                    quantity("heel", self.heel, "rad"),
+                    quantity("T_fairlead", [line.tension_at_fairlead for line in self.lines], "N"),
+                    quantity("min_eigenvalue", self.eigenvalues[0], "N/m"),
+                    quantity("iterations", len(self.history) - 1),
+                )
+            )
+            return f"MooringEquilibrium({counted([len(self.lines)], 'line')}: {shown}{note})"
+        ends = [np.linalg.norm(_end_forces(line), axis=1).max() for line in self.lines]
+        shown = ", ".join(
+            (
+                quantity("T_max", ends, "N"),
+                quantity("min_eigenvalue", self.eigenvalues[0], "N/m"),
+                quantity("iterations", len(self.history) - 1),
+            )
         )
+        bodies = "1 body" if len(self.bodies) == 1 else f"{len(self.bodies)} bodies"
+        counts = f"{bodies}, {counted([len(self.points)], 'point')}, {counted([len(self.lines)], 'line')}"
+        return f"MooringEquilibrium({counts}: {shown}{note})"
 
 
 def _end_forces(line) -> np.ndarray:

@@ -37,8 +37,10 @@ differentiated in closed form (`touchdown_jacobian`).
 
 from __future__ import annotations
 
+from functools import partial
+
 from skcable.cable.lines.bvp_model import solve_bvp_line
-from skcable.cable.lines.jacobians import free_jacobian, grounded_jacobian, touchdown_jacobian
+from skcable.cable.lines.jacobians import of_free, of_grounded, of_own, touchdown_jacobian
 from skcable.cable.lines.lying import lying_line
 from skcable.cable.lines.plane import MODELS, PlaneLine, on_seabed_tolerance, uniform
 from skcable.cable.lines.seabed import elastic_catenary
@@ -132,7 +134,14 @@ def _lying(line, scene, reverse, bvp) -> PlaneLine:
         return bvp(line, *scene[:3], f"both ends on the seabed and {err}", scene[3])
     reason = "both ends on the seabed: the line lies on it"
     return _plane(
-        scene, solution, reverse, "on the seabed", reason, ("on the seabed",), solution.jacobian, variant
+        scene,
+        solution,
+        reverse,
+        "on the seabed",
+        reason,
+        ("on the seabed",),
+        partial(of_own, solution),
+        variant,
     )
 
 
@@ -141,9 +150,7 @@ def _free(line, scene, start, reason) -> PlaneLine:
     key = ("free", reverse)
     variant = line.variant(reverse=reverse)
     solution = _line_solve(variant, scene[0], abs(scene[1]), _warm(start, key))
-    return _plane(
-        scene, solution, reverse, "free", reason, key, lambda: free_jacobian(solution.stiffness()), variant
-    )
+    return _plane(scene, solution, reverse, "free", reason, key, partial(of_free, solution), variant)
 
 
 def _grounded(line, scene, reverse, start, bvp) -> PlaneLine:
@@ -157,13 +164,13 @@ def _grounded(line, scene, reverse, start, bvp) -> PlaneLine:
         return bvp(line, *scene[:3], f"the lower end on the seabed and {err}", scene[3])
     if not solution.state.contact:
         reason = "the lower end on the seabed and the line leaving it upwards: it hangs free"
-        jacobian = lambda: free_jacobian(solution.stiffness())  # noqa: E731
+        jacobian = partial(of_free, solution)  # noqa: E731
         return _plane(scene, solution, reverse, "free", reason, key, jacobian, variant)
     reason = "the lower end on the seabed: the line rests on it up to a touchdown (Jonkman's closed form)"
     if solution.heap:
         reason = "the lower end on the seabed and the line longer than its L-shape: its slack lies in a heap"
     friction, H_A = variant.friction, solution.H_A
-    jacobian = lambda: grounded_jacobian(solution.stiffness(), friction, H_A)  # noqa: E731
+    jacobian = partial(of_grounded, solution, friction, H_A)
     return _plane(scene, solution, reverse, "grounded", reason, key, jacobian, variant)
 
 
@@ -187,7 +194,7 @@ def _touchdown(line, scene, reverse, depth, bvp) -> PlaneLine:
     seg = variant.segments[0]
     solution = elastic_catenary(scene[0], abs(scene[1]), seg.w, seg.EA, length=seg.length, seabed=-depth)
     reason = "the lower end above the seabed and the line reaching it: it hangs down, rests on it and rises"
-    jacobian = lambda: touchdown_jacobian(solution)  # noqa: E731
+    jacobian = partial(touchdown_jacobian, solution)
     return _plane(
         scene, solution, reverse, "touchdown between the ends", reason, ("touchdown",), jacobian, variant
     )

@@ -14,7 +14,16 @@ import numpy as np
 
 from skcable.cable.lines.seabed import anchor_part, grounded_closure
 
-__all__ = ["free_jacobian", "grounded_jacobian", "sloped_jacobian", "touchdown_jacobian"]
+__all__ = [
+    "free_jacobian",
+    "grounded_jacobian",
+    "of_free",
+    "of_grounded",
+    "of_own",
+    "of_sloped",
+    "sloped_jacobian",
+    "touchdown_jacobian",
+]
 
 
 def free_jacobian(k) -> np.ndarray:
@@ -80,3 +89,24 @@ def sloped_jacobian(solution, k2) -> np.ndarray:
     if solution.T_A > 0:
         dT = rows_B[0] / cos + k / solution.w * (rows_B[1] - m * rows_B[0])
     return np.vstack([cos * dT, -sin * dT, rows_B])
+
+
+# -- the Jacobian of a solution, deferred: ``functools.partial(of_..., solution)`` pickles -------------
+def of_free(solution) -> np.ndarray:
+    """`free_jacobian` of ``solution``'s stiffness."""
+    return free_jacobian(solution.stiffness())
+
+
+def of_grounded(solution, friction, H_A) -> np.ndarray:
+    """`grounded_jacobian` of ``solution``'s stiffness."""
+    return grounded_jacobian(solution.stiffness(), friction, H_A)
+
+
+def of_sloped(solution) -> np.ndarray:
+    """`sloped_jacobian` of ``solution`` and its stiffness."""
+    return sloped_jacobian(solution, solution.stiffness())
+
+
+def of_own(solution) -> np.ndarray:
+    """The Jacobian ``solution.jacobian()`` gives itself (a line lying on the seabed, a BVP line)."""
+    return solution.jacobian()

@@ -21,9 +21,11 @@ the seabed (`skcable.cable.lines.geometry`).
 
 from __future__ import annotations
 
+from functools import partial
+
 import numpy as np
 
-from skcable.cable.lines.jacobians import free_jacobian, sloped_jacobian
+from skcable.cable.lines.jacobians import of_free, of_sloped
 from skcable.cable.lines.plane import PlaneLine, on_seabed_tolerance, uniform
 from skcable.cable.lines.seabed import sloped_seabed_catenary
 from skcable.errors import InputError
@@ -71,7 +73,7 @@ def _free_clear(line, scene, start, tol):
         "free",
         reason,
         ("free", reverse),
-        lambda: free_jacobian(solution.stiffness()),
+        partial(of_free, solution),
         variant,
         slope,
     )
@@ -117,7 +119,7 @@ def solve_on_slope(line, scene, on_A, on_B, start, bvp) -> PlaneLine:
             "free",
             reason,
             ("slope",),
-            lambda: free_jacobian(solution.stiffness()),
+            partial(of_free, solution),
             variant,
             slope,
         )
@@ -131,7 +133,7 @@ def solve_on_slope(line, scene, on_A, on_B, start, bvp) -> PlaneLine:
         "grounded (slope)",
         reason,
         ("slope",),
-        lambda: sloped_jacobian(solution, solution.stiffness()),
+        partial(of_sloped, solution),
         variant,
         slope,
     )

@@ -1,0 +1,132 @@
+"""One solve of one discrete line: semismooth Newton, its full-step fallback, and the polish.
+
+`solve_on(problem, z0, options)` runs `skcable.fe.newton` (damped by backtracking on the max-norm
+merit, unless ``options.line_search`` is ``"none"``) from ``z0`` with the user's Newton options
+(`skcable.fe.NewtonOptions`: ``tol``, ``atol``, ``max_iter``, ``max_halvings``,
+``stagnation_window``, ``callback``). The max-norm merit of a semismooth system can refuse every
+damped step where full steps identify the active set and converge: then `full_steps` is tried
+from the same start before the first failure is raised. Past ``tol``, full Newton steps go on
+while the merit still falls tenfold (`POLISH` at most): quadratic convergence takes the solution
+to its round-off floor for one or two more assemblies. ``callback(iteration, residual_norm,
+step_norm)`` sees every step of the three, numbered from 1 in each solve (the fallback starts
+again from the start); an exception it raises stops the solve as an `skcable.InputError` naming
+``callback`` and the iteration.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from skcable.cable.bvp.line.solution import LineBVPSolution
+from skcable.errors import ConvergenceError, InputError
+from skcable.fe import NewtonOptions, newton
+
+__all__ = ["POLISH", "first_success", "full_steps", "report", "solve_on"]
+
+#: Newton steps past rtol at most, while the merit falls tenfold
+POLISH = 2
+
+
+def first_success(*attempts):
+    """The result of the first of ``attempts`` (callables) that does not raise
+    `ConvergenceError`; when every one does, the first one's error (the later ones only try to
+    rescue it). Any other exception passes at once."""
+    first = None
+    for attempt in attempts:
+        try:
+            return attempt()
+        except ConvergenceError as failed:
+            first = failed if first is None else first
+    assert first is not None, "first_success needs at least one attempt"
+    raise first from None
+
+
+def report(callback, iteration: int, merit: float, step) -> None:
+    """``callback(iteration, merit, max |step|)``, if given; what it raises becomes an
+    `InputError` naming ``callback`` and the iteration (as `skcable.fe.newton` does)."""
+    if callback is None:
+        return
+    try:
+        callback(iteration, merit, float(np.max(np.abs(step), initial=0.0)))
+    except Exception as exc:  # a user's callback: stop, and say where
+        raise InputError("callback", f"raised {type(exc).__name__} at iteration {iteration}: {exc}") from exc
+
+
+def converged(problem, state, options: NewtonOptions) -> bool:
+    """Whether ``state`` meets ``options.tol`` (the merit) or ``options.atol`` (the force rows, N,
+    with the stretch rows within ``tol``)."""
+    return state.merit < options.tol or (
+        options.atol > 0 and problem.absolute(state, options.tol) < options.atol
+    )
+
+
+def full_steps(problem, z0, options: NewtonOptions):
+    """Semismooth Newton with full steps (halved only where the tangent collapses): (z, state,
+    history) once converged (`converged`), None if it is not within ``options.max_iter`` steps
+    or the merit grows a thousandfold."""
+    state = problem.assemble(z0)
+    z, history = z0, [state.merit]
+    for _ in range(options.max_iter):
+        if converged(problem, state, options):
+            return z, state, history
+        if not state.merit < 1e3 * history[0]:
+            return None
+        dz, t = problem.increment(state), 1.0
+        for _ in range(options.max_halvings):
+            trial = problem.assemble(z + t * dz)
+            if np.isfinite(trial.merit):
+                break
+            t *= 0.5
+        else:
+            return None
+        z, state = z + t * dz, trial
+        history.append(state.merit)
+        report(options.callback, len(history) - 1, state.merit, t * dz)
+    return (z, state, history) if converged(problem, state, options) else None
+
+
+def _damped(problem, z0, options: NewtonOptions):
+    result = newton(
+        problem.assemble,
+        z0,
+        norm=lambda state: state.merit,
+        increment=problem.increment,
+        tol=options.tol,
+        max_iter=options.max_iter,
+        max_halvings=options.max_halvings,
+        stagnation_window=options.stagnation_window,
+        name="solve_line_bvp",
+        floor=problem.merit_floor,
+        atol=options.atol,
+        absolute=lambda state: problem.absolute(state, options.tol),
+        line_search=options.line_search != "none",
+        callback=options.callback,
+    )
+    return result.x, result.state, list(result.history)
+
+
+def _undamped(problem, z0, options: NewtonOptions):
+    out = full_steps(problem, z0, options)
+    if out is None:
+        raise ConvergenceError("solve_line_bvp: full semismooth steps did not converge", [])
+    return out
+
+
+def solve_on(problem, z0, options: NewtonOptions) -> LineBVPSolution:
+    """The line of ``problem`` from the iterate ``z0``: damped Newton, else full steps (the
+    damped one's error raised when both fail; no fallback where the Newton takes full steps
+    already, ``line_search="none"``), then the polish."""
+    attempts = [lambda: _damped(problem, z0, options)]
+    if options.line_search != "none":
+        attempts.append(lambda: _undamped(problem, z0, options))
+    z, state, history = first_success(*attempts)
+    for _ in range(POLISH):
+        step = problem.increment(state)
+        trial_z = z + step
+        trial = problem.assemble(trial_z)
+        if not trial.merit < 0.1 * state.merit:
+            break
+        z, state = trial_z, trial
+        history.append(state.merit)
+        report(options.callback, len(history) - 1, state.merit, step)
+    return LineBVPSolution(problem, z, history, state)
