@@ -115,7 +115,7 @@ def mooring(point=False):
 
 
 def network():
-    """MoorPy's basicU: a U line between two anchors, two buoyant free points (a system built point by point)."""
+    """MoorPy's basicU: a U line between two anchors, two buoyant free points (built point by point)."""
     system = cable.MooringSystem(depth=100.0)
     ends = [
         system.add_point([-200.0, 0.0, -100.0], fixed=True),
@@ -123,7 +123,7 @@ def network():
         system.add_point([100.0, 0.0, -40.0], volume=50.0),
         system.add_point([200.0, 0.0, -100.0], fixed=True),
     ]
-    for L, a, b in zip((120.0, 250.0, 120.0), ends, ends[1:]):
+    for L, a, b in zip((120.0, 250.0, 120.0), ends[:-1], ends[1:], strict=True):
         system.add_line(cable.Line([cable.Segment(L, 2456.82, 1.2326e9)]), a, b)
     return system
 

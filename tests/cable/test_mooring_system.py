@@ -14,6 +14,7 @@ from scipy.spatial.transform import Rotation
 from skcable import cable
 from skcable.errors import ConvergenceError, InputError
 from tests.cable.mooring_reference import balance, reference_forces
+from tests.test_repr import check_repr
 
 W, EA = 2456.82, 1.2326e9  # studless chain of 120 mm (MoorPy's chain type): N/m in water, N
 
@@ -384,3 +385,24 @@ def test_other_bad_parts_are_named():
     with pytest.raises(InputError) as err:
         system.equilibrium()
     assert err.value.argument == "points"
+
+
+def test_reprs_read_back():
+    """The system's equilibrium, its bodies and points print their key numbers with units, read
+    back by the parser of tests/test_repr.py and compared with the attributes."""
+    system, turbines, props = two_turbines()
+    eq = system.equilibrium(force={turbines[0]: LOADS[0]})
+    spec = {
+        "T_max": ("N", lambda e: [np.linalg.norm(line.end_forces, axis=1).max() for line in e.lines]),
+        "min_eigenvalue": ("N/m", lambda e: np.min(e.eigenvalues)),
+        "iterations": ("", lambda e: len(e.history) - 1),
+    }
+    assert check_repr(eq, spec).startswith("MooringEquilibrium(2 bodies, 10 points, 5 lines: ")
+    body = {"offset": ("m", lambda b: b.offset), "angles": ("rad", lambda b: b.angles)}
+    body["heel"] = ("rad", lambda b: b.heel)
+    assert check_repr(eq.bodies[1], body).startswith("BodyState(body 1: ")
+    u = basic_u()[0].equilibrium()
+    free = u.points[1]
+    assert check_repr(free, {"position": ("m", lambda p: p.position)}) == (
+        f"PointState(free point 1: position=[{', '.join(f'{v:.6g}' for v in free.position)}] m)"
+    )

@@ -92,10 +92,11 @@ class Assembler:
             self.row[idx] = np.arange(rows, rows + len(idx))
             rows += len(idx)
         self.body_point_index = np.concatenate(
-            [np.asarray(idx, dtype=int) for idx in layout.body_points] or [[]]
+            [np.asarray(idx, dtype=int) for idx in layout.body_points] or [np.zeros(0, dtype=int)]
         ).astype(int)
         self.body_point_owner = np.concatenate(
-            [np.full(len(idx), i, dtype=int) for i, idx in enumerate(layout.body_points)] or [[]]
+            [np.full(len(idx), i, dtype=int) for i, idx in enumerate(layout.body_points)]
+            or [np.zeros(0, dtype=int)]
         ).astype(int)
         self.body_point_local = np.concatenate([layout.local[i] for i in range(nb)] or [np.zeros((0, 3))])
         self.free_own = [

@@ -22,16 +22,10 @@ import math
 import numpy as np
 
 from skcable._checks import positive, scalar
+from skcable.cable.lines.network import end_forces
 from skcable.errors import InputError
 
 __all__ = ["anchor_loads", "line_checks", "segment_checks"]
-
-
-def _end_forces(line) -> np.ndarray:
-    ends = getattr(line, "end_forces", None)
-    return np.asarray(
-        ends if ends is not None else [line.force_on_anchor, line.force_on_fairlead], dtype=float
-    )
 
 
 def anchor_loads(eq):
@@ -40,9 +34,10 @@ def anchor_loads(eq):
     uplift), ``uplift_angle`` (rad) and ``uplift_angle_deg``, a `pandas.DataFrame`."""
     import pandas as pd
 
-    totals, counts = {}, {}
+    totals: dict = {}
+    counts: dict = {}
     for handle, line in zip(eq.handles, eq.lines, strict=True):
-        for end, force in zip((handle.a, handle.b), _end_forces(line), strict=True):
+        for end, force in zip((handle.a, handle.b), end_forces(line), strict=True):
             if end.kind == "fixed":
                 totals[end.index] = totals.get(end.index, 0.0) + force
                 counts[end.index] = counts.get(end.index, 0) + 1
@@ -59,7 +54,7 @@ def anchor_loads(eq):
 
 def _lower_angle(line, lower) -> float:
     """The line's angle above the horizontal at its lower end (rad): the direction of its pull there."""
-    F = _end_forces(line)[lower]  # the line's force on its lower end points along the line
+    F = end_forces(line)[lower]  # the line's force on its lower end points along the line
     return math.atan2(F[2], math.hypot(F[0], F[1])) + 0.0  # + 0.0: no -0
 
 
@@ -72,7 +67,7 @@ def line_checks(eq):
 
     rows = []
     for k, line in zip(eq.line_indices, eq.lines, strict=True):
-        F = _end_forces(line)
+        F = end_forces(line)
         plane = getattr(line, "plane", None)
         lower = (1 if plane.reversed else 0) if plane is not None else 0
         solution = line.solution

@@ -36,6 +36,7 @@ import warnings
 import numpy as np
 
 from skcable._show import counted, quantity
+from skcable.cable.lines.network import end_forces
 from skcable.errors import ConvergenceError, InputError, PlausibilityWarning
 from skcable.fe import newton
 
@@ -141,7 +142,8 @@ class _Newton:
             return self.capped(np.linalg.lstsq(scaled, r, rcond=_SINGULAR)[0] / self.units)
         direction = push / np.linalg.norm(push)  # scaled dofs, |direction| = 1
         ray = direction / self.units
-        t = _ray_root(self, position, ray, direction, float(self.cap[0]), self.norm(state))
+        cap = self.step_cap(position) if self.cap is None else self.cap
+        t = _ray_root(self, position, ray, direction, float(cap[0]), self.norm(state))
         return t * ray
 
     def along(self, t, position, ray, direction) -> float:
@@ -322,8 +324,14 @@ class BodyState:
         self.heel = float(np.arccos(np.clip(R[2, 2], -1.0, 1.0)))
 
     def __repr__(self):
-        offset, angles = np.round(self.offset, 6).tolist(), np.round(self.angles, 9).tolist()
-        return f"BodyState({self.index}, offset={offset}, angles={angles})"
+        shown = ", ".join(
+            (
+                quantity("offset", self.offset, "m"),
+                quantity("angles", self.angles, "rad"),
+                quantity("heel", self.heel, "rad"),
+            )
+        )
+        return f"BodyState(body {self.index}: {shown})"
 
 
 class PointState:
@@ -333,7 +341,7 @@ class PointState:
         self.point, self.index, self.kind, self.position = point, point.index, point.kind, position.copy()
 
     def __repr__(self):
-        return f"PointState({self.index}, {self.kind}, position={np.round(self.position, 6).tolist()})"
+        return f"PointState({self.kind} point {self.index}: {quantity('position', self.position, 'm')})"
 
 
 class MooringEquilibrium:
@@ -416,7 +424,7 @@ class MooringEquilibrium:
         for name in ("position", "residual", "eigenvalues"):
             if not np.isfinite(getattr(self, name)).all():
                 raise ConvergenceError(f"mooring equilibrium: non-finite {name}", history)
-        if not all(np.isfinite(_end_forces(line)).all() for line in lines):
+        if not all(np.isfinite(end_forces(line)).all() for line in lines):
             raise ConvergenceError("mooring equilibrium: non-finite line forces", history)
 
     @property
@@ -471,7 +479,7 @@ class MooringEquilibrium:
                 table["H"], table["V_B"], table["H_A"], table["V_A"] = line.H, line.V_B, line.H_A, line.V_A
                 table["T_fairlead"] = line.tension_at_fairlead
             else:
-                F = _end_forces(line)
+                F = end_forces(line)
                 table["H_a"], table["V_a"] = float(np.hypot(*F[0, :2])), float(-F[0, 2])
                 table["H_b"], table["V_b"] = float(np.hypot(*F[1, :2])), float(-F[1, 2])
                 table["T_a"], table["T_b"] = np.linalg.norm(F, axis=1)
@@ -522,7 +530,7 @@ class MooringEquilibrium:
                 )
             )
             return f"MooringEquilibrium({counted([len(self.lines)], 'line')}: {shown}{note})"
-        ends = [np.linalg.norm(_end_forces(line), axis=1).max() for line in self.lines]
+        ends = [np.linalg.norm(end_forces(line), axis=1).max() for line in self.lines]
         shown = ", ".join(
             (
                 quantity("T_max", ends, "N"),
@@ -533,9 +541,3 @@ class MooringEquilibrium:
         bodies = "1 body" if len(self.bodies) == 1 else f"{len(self.bodies)} bodies"
         counts = f"{bodies}, {counted([len(self.points)], 'point')}, {counted([len(self.lines)], 'line')}"
         return f"MooringEquilibrium({counts}: {shown}{note})"
-
-
-def _end_forces(line) -> np.ndarray:
-    """The forces (2, 3) of a solved line on its ends a and b (N)."""
-    ends = getattr(line, "end_forces", None)
-    return ends if ends is not None else np.array([line.force_on_anchor, line.force_on_fairlead])

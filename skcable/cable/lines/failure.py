@@ -13,6 +13,7 @@ from collections.abc import Iterable
 
 import numpy as np
 
+from skcable.cable.lines.network import end_forces
 from skcable.errors import InputError
 
 __all__ = ["FailureCase", "failure_case", "failure_cases"]
@@ -22,8 +23,7 @@ def _largest_tensions(eq) -> dict:
     """``{line index: the largest of its end tensions (N)}`` of an equilibrium."""
     out = {}
     for k, line in zip(eq.line_indices, eq.lines, strict=True):
-        ends = getattr(line, "end_forces", None)
-        out[k] = float(np.linalg.norm(ends, axis=1).max())
+        out[k] = float(np.linalg.norm(end_forces(line), axis=1).max())
     return out
 
 

@@ -33,12 +33,16 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass, field
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 import numpy as np
 
 from skcable.cable.lines.body import PointBody, RigidBody
 from skcable.cable.lines.segments import Line, Segment
 from skcable.errors import InputError
+
+if TYPE_CHECKING:
+    from skcable.cable.lines.system import MooringSystem
 
 __all__ = ["MoorDynModel", "read_moordyn", "write_moordyn"]
 
@@ -129,7 +133,7 @@ class MoorDynModel:
         The free text at the top.
     """
 
-    system: object
+    system: MooringSystem
     line_types: dict = field(default_factory=dict)
     line_type_of: list = field(default_factory=list)
     segments: list = field(default_factory=list)
@@ -170,7 +174,9 @@ def _rows(text: str) -> dict:
     """``{section: [(line number, tokens)]}``, the front matter under ``""``: the table rows after
     their two header lines, comments cut; unknown and unsupported sections refused by name. The
     OUTPUTS section ends at the next header line or ``END``, and the file with it."""
-    sections, current, skip, order = {"": []}, "", 0, []
+    sections: dict[str, list] = {"": []}
+    current, skip = "", 0
+    order: list[str] = []
     for number, raw in enumerate(text.splitlines(), start=1):
         name = _section_name(raw)
         if current == "OUTPUTS" and (name is not None or raw.strip().upper() == "END"):
@@ -414,7 +420,7 @@ class _Writer:
         return self.types[key]
 
     def bodies(self):
-        ids = {}
+        ids: dict[int, object] = {}
         for body in self.system.bodies:
             if body.waterplane_area > 0 or isinstance(body, RigidBody) and np.any(body.metacentre != 0):
                 raise InputError(

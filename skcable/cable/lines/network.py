@@ -25,7 +25,7 @@ from skcable.cable.lines.body import PointBody, RigidBody
 from skcable.cable.lines.line3d import point
 from skcable.errors import InputError
 
-__all__ = ["Layout", "MooringLine", "MooringPoint"]
+__all__ = ["Layout", "MooringLine", "MooringPoint", "end_forces"]
 
 
 class MooringPoint:
@@ -83,10 +83,13 @@ class MooringLine:
         Its ends, in the order of the model's segments.
     managed : bool
         Whether the system picks the line's model over the seabed (a `skcable.cable.Line`).
+    warm : bool
+        Whether its model takes the previous solution as its start (``solve(..., start=)``).
     """
 
-    def __init__(self, index, model, a, b, managed):
+    def __init__(self, index, model, a, b, managed, warm=True):
         self.index, self.model, self.a, self.b, self.managed = index, model, a, b, managed
+        self.warm = warm
 
     def __repr__(self):
         model = type(self.model).__name__
@@ -167,3 +170,12 @@ def check_body(body):
     if not isinstance(body, (RigidBody, PointBody)):
         raise InputError("body", f"must be a RigidBody or a PointBody, got {type(body).__name__}")
     return body
+
+
+def end_forces(line) -> np.ndarray:
+    """The forces (2, 3) of a solved line on its ends a and b (N, global axes): its
+    ``end_forces``, or a one-body shortcut's line's ``force_on_anchor`` and ``force_on_fairlead``."""
+    ends = getattr(line, "end_forces", None)
+    return np.asarray(
+        ends if ends is not None else [line.force_on_anchor, line.force_on_fairlead], dtype=float
+    )

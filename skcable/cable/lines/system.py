@@ -36,6 +36,7 @@ from __future__ import annotations
 
 import math
 from collections.abc import Iterable, Mapping
+from typing import Any
 
 import numpy as np
 
@@ -227,8 +228,7 @@ class MooringSystem:
         return p
 
     def _add_line(self, model, a, b, managed):
-        handle = MooringLine(len(self.mooring_lines), model, a, b, managed)
-        handle.warm = takes_start(model) if not managed else True
+        handle = MooringLine(len(self.mooring_lines), model, a, b, managed, managed or takes_start(model))
         self.mooring_lines.append(handle)
         self._layout = None
         return handle
@@ -363,11 +363,13 @@ class MooringSystem:
         """Every line of ``handles`` solved with its ends at ``P`` (n, 3); ``start`` their previous
         solutions or None."""
         start = [None] * len(handles) if start is None else start
-        solved, latest = [], {}
+        solved: list = []
+        latest: dict = {}
         depth = self.depth
         for handle, previous in zip(handles, start, strict=True):
             a, b = P[handle.a.index], P[handle.b.index]
             model = handle.model
+            line: Any
             if handle.managed:
                 line = solve_between(model, a, b, depth, previous or latest.get(id(model)))
             else:
@@ -416,7 +418,8 @@ class MooringSystem:
         """``(G, K)`` from the solved ``lines`` of ``handles`` at ``q``, ``frame`` the bodies' rotation
         matrices and their points' arms there (`frame`; module docstring)."""
         R, arms = frame
-        ends, cross = [], []
+        ends: list = []
+        cross: list = []
         for handle, line in zip(handles, lines, strict=True):
             if handle.managed:
                 _managed_ends(handle, line, ends, cross, self._assembler, arms)

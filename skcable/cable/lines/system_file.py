@@ -39,6 +39,7 @@ defined is refused by name (`InputError` naming the key or the name).
 
 from __future__ import annotations
 
+import sys
 from dataclasses import dataclass, field
 from pathlib import Path
 
@@ -100,9 +101,9 @@ def _named(where, items, kind):
 
 
 def _types(data) -> dict:
-    from skcable.cable.lines.components import component
+    from skcable.cable.lines.library import component
 
-    out = {}
+    out: dict[str, tuple] = {}
     for name, spec in data.get("types", {}).items():
         _keys(f"types.{name}", spec, _TYPE)
         if "component" in spec:
@@ -132,7 +133,7 @@ def _line(types, where, spec):
     from skcable.cable.lines.segments import Buoy, ClumpWeight, Line
 
     segments = [_segment(types, f"{where}.segments", s) for s in spec["segments"]]
-    attachments = [
+    attachments: list[ClumpWeight | Buoy] = [
         ClumpWeight(
             _keys(f"{where}.clumps", c, {"joint", "weight"}, ("joint", "weight"))["joint"], c["weight"]
         )
@@ -152,6 +153,7 @@ def _bodies(system, data, out):
     for name, spec in _named("bodies", data.get("bodies", []), "body").items():
         _keys(f"bodies.{name}", spec, _BODY)
         own = {k: spec[k] for k in ("mass", "volume", "waterplane_area") if k in spec}
+        body: PointBody | RigidBody
         if spec.get("kind", "rigid") == "point":
             body = PointBody(**own)
         elif spec.get("kind", "rigid") == "rigid":
@@ -180,9 +182,9 @@ def _points(system, data, out):
 
 def read_system(path) -> SystemFile:
     """Read a mooring system from a TOML file (module docstring); returns a `SystemFile`."""
-    try:
+    if sys.version_info >= (3, 11):
         import tomllib
-    except ModuleNotFoundError:  # Python 3.10: the same parser as a package
+    else:  # Python 3.10: the same parser as a package
         import tomli as tomllib
 
     from skcable.cable.lines.system import MooringSystem

@@ -128,7 +128,7 @@ class Line:
         key = (bool(reverse), bool(contact))
         cache = self.__dict__.setdefault("_variants", {})
         if key not in cache:
-            segments, attachments = self.segments, self.attachments
+            segments, attachments = list(self.segments), list(self.attachments)
             if reverse:
                 n = len(segments)
                 segments = segments[::-1]
@@ -316,7 +316,7 @@ class Line:
         if not norm < 1e-11:  # Newton from the equivalent uniform line
             guess = self._guess(span, dh)
             if guess is not None:
-                st, norm, more = self._newton(span, dh, *guess, chord, 40)
+                st, norm, more = self._newton(span, dh, guess[0], guess[1], chord, 40)
                 history = [*history, *more]
         if not norm < 1e-11:  # nested bracketing, then Newton polish
             H, V, hist = self._bracketed(span, dh)

@@ -32,7 +32,7 @@ class Segment:
     mbl : float, optional
         Minimum breaking load (N), > 0: the strength the line checks compare its largest
         tension with (`skcable.cable.lines.checks`); from a component of the library
-        (`skcable.cable.lines.components`) or the maker's data.
+        (`skcable.cable.lines.library`) or the maker's data.
     diameter : float, optional
         Volume-equivalent diameter (m), > 0: the diameter of the cylinder that displaces as much
         water per length (MoorDyn's ``Diam``; written to MoorDyn files). The statics use ``w``.

@@ -380,7 +380,8 @@ class LineSolution(ProfileMixin):
         s = np.linspace(0.0, self.length, whole("n", n, 2))
         arrays = self.line.arrays
         w = arrays.w[np.clip(np.searchsorted(arrays.s_joint, s, side="right") - 1, 0, arrays.n - 1)]
-        return arc_samples(*self._maps(s), w)
+        x, y, T, angle = self._maps(s)
+        return arc_samples(x, y, T, angle, w)
 
     def to_vtk(self, path, n: int = 201):
         """Write the profile as a VTK polyline (see `skcable.io.cable_mesh`); returns the path."""
