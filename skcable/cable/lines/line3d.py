@@ -250,6 +250,12 @@ def line_3d(model, anchor, fairlead, start=None) -> Line3D:
             f"lies on the vertical of the anchor (horizontal distance {r:.3g} m): the line's vertical "
             "plane is undefined; give a fairlead offset horizontally from the anchor",
         )
+    from skcable.cable.lines.segments import Line
+
+    if isinstance(model, Line):  # the model it needs, reported (`skcable.cable.lines.in_sea`)
+        from skcable.cable.lines.in_sea import solve_line_in_sea
+
+        return solve_line_in_sea(model, a, b, r, start, solve_in_space)  # type: ignore[return-value]
     if start is not None and not takes_start(model):
         raise InputError("start", f"the line model {type(model).__name__}.solve takes no start= argument")
     return solve_in_space(model, a, b, r, start)
