@@ -33,6 +33,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
+from functools import cached_property
 
 import numpy as np
 
@@ -81,15 +82,18 @@ class LineInSea:
         The closed form's 2-D solution in the plane of the ends (``Line3D.solution``), or the
         BVP's.
     model : ModelChoice
+        Which model ran, why, and its estimated error (the BVP's estimate, a second solve on
+        half the elements, is computed when first asked for).
     force_on_anchor, force_on_fairlead : ndarray (3,)
         The line's forces on its ends (N), global axes.
     tension_at_anchor, tension_at_fairlead : float
         Their magnitudes (N).
     """
 
-    def __init__(self, line, anchor, fairlead, result, model, end_loads=(0.0, 0.0)):
+    def __init__(self, line, anchor, fairlead, result, name, reason, error=None, end_loads=(0.0, 0.0)):
         self.line, self.anchor, self.fairlead = line, anchor, fairlead
-        self.result, self.model = result, model
+        self.result, self.name, self.reason, self._error = result, name, reason, error
+        self.end_loads = end_loads
         self.solution = getattr(result, "solution", result)
         solution = result
         self.force_on_anchor = np.array(solution.force_on_anchor, dtype=float)
@@ -104,16 +108,22 @@ class LineInSea:
     def __getattr__(self, name):
         # the closed form's other attributes (`Line3D`: ``H``, ``V_B``, ``direction``, ...), as
         # ``line_3d`` gave them before it returned a LineInSea for a Line
-        if name.startswith("_") or name in ("result", "solution", "model", "line"):
+        if name.startswith("_") or name in ("result", "solution", "name", "line"):
             raise AttributeError(name)
-        if self.model.name != "3-D line BVP" and hasattr(self.result, name):
+        if self.name != "3-D line BVP" and hasattr(self.result, name):
             return getattr(self.result, name)
-        raise AttributeError(f"{type(self).__name__} of the {self.model.name} has no attribute {name!r}")
+        raise AttributeError(f"{type(self).__name__} of the {self.name} has no attribute {name!r}")
+
+    @cached_property
+    def model(self) -> ModelChoice:
+        """Which model ran, why, and its estimated error (`ModelChoice`)."""
+        error = self._error if self._error is not None else _bvp_error(self)
+        return ModelChoice(self.name, self.reason, max(float(error), 1e-15))
 
     @property
     def bvp(self) -> bool:
         """Whether the 3-D line BVP solved the line."""
-        return self.model.name == "3-D line BVP"
+        return self.name == "3-D line BVP"
 
     @property
     def end_forces(self) -> np.ndarray:
@@ -156,7 +166,7 @@ class LineInSea:
     def __repr__(self):
         Fb = self.force_on_fairlead
         return (
-            f"LineInSea(model={self.model.name!r}, force_on_fairlead=[{Fb[0]:.6g}, {Fb[1]:.6g}, "
+            f"LineInSea(model={self.name!r}, force_on_fairlead=[{Fb[0]:.6g}, {Fb[1]:.6g}, "
             f"{Fb[2]:.6g}] N, tension_at_fairlead={self.tension_at_fairlead:.6g} N)"
         )
 
@@ -191,42 +201,53 @@ def _closed_form(line, anchor, fairlead, span, start, solve_in_space):
     else:
         name, error = "closed form", float(sol.residual())
         reason = "no current, a flat seabed (or none), constant EA: the elastic catenary is exact"
-    return LineInSea(line, anchor, fairlead, solved, ModelChoice(name, reason, max(error, 1e-15)))
+    return LineInSea(line, anchor, fairlead, solved, name, reason, error)
 
 
 def bvp_model(line, n_elements: int = BVP_ELEMENTS, anchor_z: float = 0.0):
-    """The `skcable.cable.bvp.line3d.LineBVP3D` of ``line`` (its seabed placed at the anchor's
-    height ``anchor_z`` where it is a float), and its end attachments ``(P_0, P_n)`` (N)."""
+    """The `skcable.cable.bvp.line3d.LineBVP3D` of ``line`` on ``n_elements`` (its seabed placed at
+    the anchor's height ``anchor_z`` where it is a float), and its end attachments ``(P_0, P_n)``
+    (N); cached on the line (a warm start needs the same model)."""
     from skcable.cable.bvp.line3d import LineBVP3D, LineSegment
 
+    cache = line.__dict__.setdefault("_bvp_models", {})
+    key = (int(n_elements), None if line.seabed is None else float(anchor_z))
+    if key in cache:
+        return cache[key]
     segments = [
         LineSegment(s.length, s.w, s.law, s.diameter, s.cd_normal, s.cd_tangential) for s in line.segments
     ]
     n = len(segments)
     inner = [(a.joint, a.force) for a in line.attachments if 0 < a.joint < n]
-    seabed = line.bathymetry if line.bathymetry is not None else None
+    seabed = line.bathymetry
     if seabed is None and line.seabed is not None:
         seabed = anchor_z + line.seabed
     model = LineBVP3D(
         segments, attachments=inner, seabed=seabed, friction=line.friction, current=line.current,
         rho_water=line.rho_water, n_elements=n_elements,
     )  # fmt: skip
-    return model, (float(line.joint_forces[0]), float(line.joint_forces[n]))
+    cache[key] = model, (float(line.joint_forces[0]), float(line.joint_forces[n]))
+    return cache[key]
 
 
-def _by_bvp(line, anchor, fairlead, reason):
-    model, ends = bvp_model(line, BVP_ELEMENTS, float(anchor[2]))
-    fine = model.solve(anchor, fairlead)
-    coarse_model, _ = bvp_model(line, BVP_ELEMENTS // 2, float(anchor[2]))
-    coarse = coarse_model.solve(anchor, fairlead)
+def _bvp_error(solved: LineInSea) -> float:
+    """The BVP's error estimate (module docstring): the line on half the elements, against it."""
+    coarse_model, _ = bvp_model(solved.line, BVP_ELEMENTS // 2, float(solved.anchor[2]))
+    fine = solved.result
+    coarse = coarse_model.solve(solved.anchor, solved.fairlead)
     diff = np.vstack(
         [fine.force_on_anchor - coarse.force_on_anchor, fine.force_on_fairlead - coarse.force_on_fairlead]
     )
-    size = max(fine.T_A, fine.T_B)
-    error = float(np.abs(diff).max()) / size
-    return LineInSea(
-        line, anchor, fairlead, fine, ModelChoice("3-D line BVP", reason, max(error, 1e-15)), ends
-    )
+    return float(np.abs(diff).max()) / max(fine.T_A, fine.T_B)
+
+
+def _by_bvp(line, anchor, fairlead, reason, start=None):
+    model, ends = bvp_model(line, BVP_ELEMENTS, float(anchor[2]))
+    previous = start.result if isinstance(start, LineInSea) and start.bvp else None
+    if previous is not None and previous.model is not model:
+        previous = None
+    fine = model.solve(anchor, fairlead, start=previous)
+    return LineInSea(line, anchor, fairlead, fine, "3-D line BVP", reason, None, ends)
 
 
 def solve_line_in_sea(line, anchor, fairlead, span: float, start, solve_in_space) -> LineInSea:
@@ -240,12 +261,15 @@ def solve_line_in_sea(line, anchor, fairlead, span: float, start, solve_in_space
     if need is not None and need[0] == "seabed" and line.current is None and line.bathymetry.flat is not None:
         need = None  # a flat Bathymetry: the closed forms, placed at the anchor
     if need is None:
-        if isinstance(start, LineInSea):
-            start = start.result if not start.bvp else None
-        solved = _closed_form(line, anchor, fairlead, span, start, solve_in_space)
+        plain = start.result if isinstance(start, LineInSea) and not start.bvp else start
+        solved = _closed_form(
+            line, anchor, fairlead, span, None if isinstance(plain, LineInSea) else plain, solve_in_space
+        )
         if solved is not None:
             return solved
-        return _by_bvp(line, anchor, fairlead, "a nonlinear axial law on a line that rests on the seabed")
+        return _by_bvp(
+            line, anchor, fairlead, "a nonlinear axial law on a line that rests on the seabed", start
+        )
     if not math.isfinite(span):
         raise InputError("fairlead", "must be finite")
-    return _by_bvp(line, anchor, fairlead, need[1])
+    return _by_bvp(line, anchor, fairlead, need[1], start)
