@@ -260,3 +260,27 @@ def test_lines_in_the_sea_pickle():
     again = pickle.loads(pickle.dumps(solved))
     np.testing.assert_array_equal(again.force_on_fairlead, solved.force_on_fairlead)
     assert again.model == solved.model
+
+
+# -- a mooring system of lines in a current -----------------------------------------------------
+def test_a_mooring_system_takes_lines_in_a_current():
+    """A subsurface buoy on three lines in a current: at the system's equilibrium the lines, each
+    solved again here by line_3d at the buoy's position, balance its net buoyancy; the current
+    moves it from where it rests in still water."""
+    seg = cable.Segment(230.0, 150.0, 2e8, diameter=0.08, cd_normal=1.2, cd_tangential=0.01)
+    line = cable.Line([seg], current=(0.8, 0.2))
+    angles = np.radians([0.0, 120.0, 240.0])
+    anchors = np.column_stack([150.0 * np.cos(angles), 150.0 * np.sin(angles), np.full(3, -300.0)])
+    buoy = cable.PointBody(mass=2e4, volume=80.0)
+    system = cable.MooringSystem(buoy, [line] * 3, anchors, depth=300.0)
+    eq = system.equilibrium(start=(0.0, 0.0, -120.0))
+    position = np.asarray(eq.position, dtype=float)
+    lines = [cable.line_3d(line, a, position) for a in anchors]
+    assert all(solved.model.name == "3-D line BVP" for solved in lines)
+    net = sum(solved.force_on_fairlead for solved in lines) + buoy.own_force(position)
+    lift = float(buoy.buoyancy[2] + buoy.weight[2])
+    np.testing.assert_allclose(net, 0.0, atol=1e-6 * lift)
+    still = cable.MooringSystem(buoy, [cable.Line([seg])] * 3, anchors, depth=300.0).equilibrium(
+        start=(0.0, 0.0, -120.0)
+    )
+    assert np.linalg.norm(position - np.asarray(still.position, dtype=float)) > 1e-3

@@ -184,7 +184,7 @@ def _relative_seabed(line, anchor):
 
 def _closed_form(line, anchor, fairlead, span, start, solve_in_space):
     """`LineInSea` by the closed form (module docstring), or None where a nonlinear law rests on
-    the seabed; ``solve_in_space`` is `skcable.cable.lines.line3d.solve_in_space`."""
+    the seabed; ``solve_in_space`` is `skcable.cable.lines.line3d.solve_in_plane_of_ends`."""
     from skcable.cable.lines.segments.law import GroundedLaw
 
     plain = line.variant_with_seabed(_relative_seabed(line, anchor))
@@ -254,7 +254,7 @@ def solve_line_in_sea(line, anchor, fairlead, span: float, start, solve_in_space
     """``line`` between the checked float 3-vectors ``anchor`` and ``fairlead`` at the horizontal
     distance ``span > 0`` by the model it needs (module docstring); ``start`` a previous
     solution (a `LineInSea` or a `skcable.cable.lines.line3d.Line3D`) for a warm start of the
-    closed form, or None; ``solve_in_space``: `skcable.cable.lines.line3d.solve_in_space`, which
+    closed form, or None; ``solve_in_space``: `skcable.cable.lines.line3d.solve_in_plane_of_ends`, which
     solves a line model in the plane of its ends (`skcable.cable.line_3d` passes it: this
     module is below it)."""
     need = line.in_space

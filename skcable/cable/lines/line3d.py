@@ -51,7 +51,15 @@ import numpy as np
 from skcable._checks import real, whole
 from skcable.errors import InputError
 
-__all__ = ["Line3D", "line_3d", "line_model", "point", "takes_start"]
+__all__ = [
+    "Line3D",
+    "line_3d",
+    "line_model",
+    "point",
+    "solve_in_plane_of_ends",
+    "solve_in_space",
+    "takes_start",
+]
 
 
 def point(name: str, value) -> np.ndarray:
@@ -263,7 +271,7 @@ def line_3d(model, anchor, fairlead, start=None) -> Line3D:
     if isinstance(model, Line):  # the model it needs, reported (`skcable.cable.lines.in_sea`)
         from skcable.cable.lines.in_sea import solve_line_in_sea
 
-        return solve_line_in_sea(model, a, b, r, start, solve_in_space)  # type: ignore[return-value]
+        return solve_line_in_sea(model, a, b, r, start, solve_in_plane_of_ends)  # type: ignore[return-value]
     if start is not None and not takes_start(model):
         raise InputError("start", f"the line model {type(model).__name__}.solve takes no start= argument")
     return solve_in_space(model, a, b, r, start)
@@ -281,7 +289,13 @@ def solve_in_space(model, anchor, fairlead, span, start=None) -> Line3D:
     if getattr(model, "in_space", None) is not None or getattr(model, "nonlinear", False):
         from skcable.cable.lines.in_sea import solve_line_in_sea
 
-        return solve_line_in_sea(model, anchor, fairlead, span, start, solve_in_space)  # type: ignore[return-value]
+        return solve_line_in_sea(model, anchor, fairlead, span, start, solve_in_plane_of_ends)  # type: ignore[return-value]
+    return solve_in_plane_of_ends(model, anchor, fairlead, span, start)
+
+
+def solve_in_plane_of_ends(model, anchor, fairlead, span, start=None) -> Line3D:
+    """`solve_in_space` by the line model's own ``solve(span, dh)`` in the vertical plane of the
+    ends, whatever the model."""
     dh = float(fairlead[2] - anchor[2])
     if start is None:
         solution = model.solve(span, dh)
