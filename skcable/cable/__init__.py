@@ -91,9 +91,9 @@ if TYPE_CHECKING:  # what static tools see; at run time, `attach` below serves t
         sloped_seabed_catenary,
         write_moordyn,
     )
-    from skcable.cable.solution import CableSolution
     from skcable.cable.lines.in_sea import LineInSea, ModelChoice
     from skcable.cable.lines.segments.law import LawLineSolution
+    from skcable.cable.solution import CableSolution
     from skcable.cable.terms import Buoyancy, CableForce, CableState, CableTerm, CurrentDrag, WindDrag
 
 #: Where each public name lives (imported on first use, PEP 562).
