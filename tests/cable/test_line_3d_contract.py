@@ -52,6 +52,21 @@ def test_a_current_that_drags_nothing_is_refused():
     assert err.value.argument == "current"
 
 
+def test_the_plane_paths_refuse_a_line_in_the_sea_by_name():
+    """A line in a current, on a bathymetry or with a nonlinear law is never solved in a plane
+    without what makes it so (add_line and line_between solve a Line in the plane of its ends)."""
+    law = axial.StrainTable([0.0, 0.01, 0.03], [0.0, 1e6, 2.5e6])
+    drag = dict(diameter=0.1, cd_normal=1.2)
+    for line, name in (
+        (cable.Line([cable.Segment(100.0, 50.0, 1e8, **drag)], current=(0.5, 0.0)), "current"),
+        (cable.Line([cable.Segment(100.0, 50.0, 1e8)], seabed=Plane(-50.0, (0.1, 0.0))), "seabed"),
+        (cable.Line([cable.Segment(100.0, 50.0, law)]), "EA"),
+    ):
+        with pytest.raises(InputError) as err:
+            cable.line_between(line, (0.0, 0.0, -50.0), (80.0, 0.0, -10.0))
+        assert err.value.argument == name
+
+
 def test_the_plane_solve_of_a_line_in_a_current_points_to_line_3d():
     line = cable.Line([cable.Segment(100.0, 50.0, 1e8, diameter=0.1, cd_normal=1.2)], current=(0.5, 0.0))
     with pytest.raises(InputError, match="line_3d") as err:

@@ -147,7 +147,16 @@ class Line:
         the anchor (``seabed=0``) and this line's ``friction``; else no seabed (and no
         friction). The solutions of a variant are those of the same physical line with its
         ends named the other way round (`skcable.cable.lines.geometry` picks the variant
-        that suits a line's position over the seabed)."""
+        that suits a line's position over the seabed). A line in a current, on a `Bathymetry` or
+        with a nonlinear axial law has none (`InputError` naming ``current``, ``seabed`` or
+        ``EA``): it is solved in space (`skcable.cable.line_3d`)."""
+        if self.in_space is not None or self.nonlinear:  # no variant of the plane closed forms
+            name, reason = self.in_space or ("EA", "a nonlinear axial law")
+            raise InputError(
+                name,
+                f"{reason}: this line is solved by cable.line_3d (and in MooringSystem(body, lines, "
+                "anchors)), not in the vertical plane of its ends",
+            )
         key = (bool(reverse), bool(contact))
         cache = self.__dict__.setdefault("_variants", {})
         if key not in cache:
@@ -185,9 +194,11 @@ class Line:
         return self.arrays.total_weight
 
     def __repr__(self):
+        seabed = self.seabed if self.bathymetry is None else self.bathymetry
+        extra = "" if self.current is None else f", current={self.current!r}, rho_water={self.rho_water!r}"
         return (
             f"Line(segments={list(self.segments)!r}, attachments={list(self.attachments)!r}, "
-            f"seabed={self.seabed!r}, friction={self.friction!r})"
+            f"seabed={seabed!r}, friction={self.friction!r}{extra})"
         )
 
     def _trial_state(self, H, V):
