@@ -299,3 +299,17 @@ def test_a_mooring_system_takes_lines_in_a_current():
         start=(0.0, 0.0, -120.0)
     )
     assert np.linalg.norm(position - np.asarray(still.position, dtype=float)) > 1e-3
+
+
+def test_the_segment_checks_of_a_system_read_the_lines_in_the_sea():
+    """The MBL checks of a system see the segments of its lines in a current (none skipped)."""
+    seg = cable.Segment(230.0, 150.0, 2e8, mbl=4e6, diameter=0.08, cd_normal=1.2)
+    angles = np.radians([0.0, 120.0, 240.0])
+    anchors = np.column_stack([150.0 * np.cos(angles), 150.0 * np.sin(angles), np.full(3, -300.0)])
+    buoy = cable.PointBody(mass=2e4, volume=80.0)
+    line = cable.Line([seg], current=(0.8, 0.2))
+    eq = cable.MooringSystem(buoy, [line] * 3, anchors, depth=300.0).equilibrium(start=(0.0, 0.0, -120.0))
+    table = eq.segment_checks(1.67)
+    assert len(table) == 3
+    T_max = [max(solved.tension_at_anchor, solved.tension_at_fairlead) for solved in eq.lines]
+    np.testing.assert_allclose(table["T_max"], T_max, rtol=1e-9)
