@@ -160,7 +160,7 @@ def test_a_current_or_a_shaped_seabed_takes_the_bvp_and_says_why():
     assert in_current.force_on_fairlead[1] > 0  # the cross current pulls the fairlead along +y
     assert in_current.equilibrium_residual <= in_current.solution.residual_bound
     assert in_current.profile(7).shape == (7, 3)
-    bed = Plane(-200.0, (0.05, 0.0))
+    bed = Plane(-200.0, (0.05, 0.02))  # a slope across the line too: no closed form
     on_slope = cable.line_3d(cable.Line([seg], seabed=bed, friction=0.2), (0, 0, -200.0), (450.0, 0, -20.0))
     assert on_slope.model.name == "3-D line BVP" and "seabed" in on_slope.model.reason
     # a flat Bathymetry is the flat closed form, placed at the anchor
@@ -170,6 +170,25 @@ def test_a_current_or_a_shaped_seabed_takes_the_bvp_and_says_why():
     ref = cable.line_3d(cable.Line([seg], seabed=0.0, friction=0.2), (0, 0, -200.0), (450.0, 0, -20.0))
     assert flat.model.name == "closed form"
     np.testing.assert_allclose(flat.force_on_fairlead, ref.force_on_fairlead, rtol=1e-14)
+
+
+def test_a_line_on_a_plane_sloping_along_it_is_the_sloped_closed_form():
+    """Jonkman's line on a slope (the closed form line_3d takes) against the 3-D BVP of the same
+    line on the same plane, turned to an azimuth of 30°."""
+    from skcable.cable.bvp.line3d import LineSegment, solve_line_bvp_3d
+
+    c, s = np.cos(np.radians(30.0)), np.sin(np.radians(30.0))
+    bed = Plane(-200.0, (0.04 * c, 0.04 * s))
+    line = cable.Line([cable.Segment(480.0, 600.0, 4e8)], seabed=bed, friction=0.3)
+    a, b = np.array([0.0, 0.0, -200.0]), np.array([430.0 * c, 430.0 * s, -20.0])
+    closed = cable.line_3d(line, a, b)
+    assert closed.model.name == "closed form (slope)" and closed.model.error < 1e-12
+    bvp = solve_line_bvp_3d(a, b, [LineSegment(480.0, 600.0, 4e8)], seabed=bed, friction=0.3, n_elements=256)
+    scale = bvp.T_B
+    assert closed.solution.length_on_seabed > 50.0  # the line rests on the slope
+    np.testing.assert_allclose(closed.force_on_fairlead, bvp.force_on_fairlead, atol=1e-9 * scale)
+    np.testing.assert_allclose(closed.force_on_anchor, bvp.force_on_anchor, atol=1e-9 * scale)
+    assert closed.profile(11).shape == (11, 3)
 
 
 def test_the_bvp_of_a_line_in_still_water_is_its_closed_form():

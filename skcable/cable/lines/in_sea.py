@@ -8,6 +8,10 @@ r"""A `skcable.cable.Line` in the sea between an anchor and a fairlead: the mode
   closed form: H.M. Irvine, "Cable Structures", MIT Press, 1981; J.M. Jonkman, "Dynamics
   modeling and loads analysis of an offshore floating wind turbine", NREL, 2007). Error: the
   closure's relative residual (round-off);
+- **closed form on a plane slope**: no current, one uniform heavy segment of constant ``EA``
+  without attachments, its anchor on a `skcable.cable.bathymetry.Plane` that slopes along the
+  line only (Jonkman's grounded line on a slope: `skcable.cable.sloped_seabed_catenary`).
+  Error: the closure's relative residual;
 - **closed form with the laws' elongation integrals**: the same with nonlinear axial laws
   ``ε(T)`` (`skcable.cable.lines.segments.law`), hanging clear of the seabed. Error: the
   closure's residual (the Gauss quadrature of a smooth law is exact to round-off);
@@ -26,7 +30,8 @@ anchor as in `skcable.cable.Line`.
 for the BVP the largest ``|d(T t)/ds + q|`` at its quadrature points
 (`skcable.cable.bvp.line3d.solution`); for a closed form, which meets the equilibrium equations
 exactly along the line, the balance of the forces on the whole line,
-``|F_a + F_b + W e_z − R| / L`` (N/m; ``R`` the seabed's force), to round-off.
+``|F_a + F_b + W e_z − R| / L`` (N/m; ``R`` the seabed's force), to round-off; on a slope, where
+``R`` is the closure's own, the closure's relative residual times the weight per length.
 """
 
 from __future__ import annotations
@@ -40,7 +45,7 @@ import numpy as np
 from skcable._checks import whole
 from skcable.errors import InputError
 
-__all__ = ["BVP_ELEMENTS", "LineInSea", "ModelChoice", "solve_line_in_sea"]
+__all__ = ["BVP_ELEMENTS", "LineInSea", "ModelChoice", "SlopeModel", "SlopeSolution", "solve_line_in_sea"]
 
 #: elements of the 3-D line BVP of a line in the sea (the error estimate solves on half as many)
 BVP_ELEMENTS = 96
@@ -53,7 +58,8 @@ class ModelChoice:
     Attributes
     ----------
     name : str
-        ``"closed form"``, ``"closed form (axial laws)"`` or ``"3-D line BVP"``.
+        ``"closed form"``, ``"closed form (slope)"``, ``"closed form (axial laws)"`` or
+        ``"3-D line BVP"``.
     reason : str
         Why (module docstring).
     error : float
@@ -158,6 +164,8 @@ class LineInSea:
         if self.bvp:
             return float(self.result.equilibrium_residual)
         sol = self.solution
+        if isinstance(sol, SlopeSolution):
+            return sol.residual() * self.line.weight / self.line.length
         seabed = float(getattr(sol, "seabed_reaction", 0.0))
         friction = (sol.H - sol.H_A) * self.result.direction
         total = self.end_forces.sum(axis=0) + np.array([*friction[:2], self.line.weight - seabed])
@@ -180,6 +188,71 @@ def _relative_seabed(line, anchor):
     if rel > 1e-9 * max(1.0, abs(float(anchor[2]))):
         raise InputError("seabed", f"must be at or below the anchor, got {rel:g} m above it")
     return 0.0 if abs(rel) <= 1e-9 * max(1.0, abs(float(anchor[2]))) else rel
+
+
+class SlopeModel:
+    """A one-segment `Line` on a plane slope along it, as a line model: ``solve(span, dh)`` is
+    `skcable.cable.sloped_seabed_catenary` (``seabed_slope`` the slope along the line, -)."""
+
+    def __init__(self, line, seabed_slope: float):
+        self.line, self.seabed_slope = line, float(seabed_slope)
+
+    def solve(self, span, dh):
+        from skcable.cable.lines.seabed import sloped_seabed_catenary
+
+        seg = self.line.segments[0]
+        solved = sloped_seabed_catenary(
+            span, dh, seg.w, seg.EA, length=seg.length, seabed_slope=self.seabed_slope,
+            friction=self.line.friction,
+        )  # fmt: skip
+        return SlopeSolution(solved)
+
+
+class SlopeSolution:
+    """A `SlopedSeabedCatenary` with the 2-D solution's ``x_of_s``, ``y_of_s`` of a line model."""
+
+    def __init__(self, solved):
+        self.solved = solved
+        for name in ("H", "H_A", "V_A", "V_B", "length", "length_on_seabed", "x_touchdown"):
+            setattr(self, name, getattr(solved, name))
+
+    def x_of_s(self, s):
+        return self.solved.xy(s)[..., 0]
+
+    def y_of_s(self, s):
+        return self.solved.xy(s)[..., 1]
+
+    def T_of_s(self, s):
+        return self.solved.T_of_s(s)
+
+    def stiffness(self):
+        return self.solved.stiffness()
+
+    def tensions(self):
+        return self.solved.tensions()
+
+    def residual(self) -> float:
+        return float(self.solved.residual())
+
+
+def _along_slope(line, anchor, fairlead, span):
+    """The slope (-) of the line's `Plane` along it where the closed form on a slope holds
+    (module docstring), else None."""
+    from skcable.cable.bathymetry import Plane
+
+    bed, segs = line.bathymetry, line.segments
+    if not (isinstance(bed, Plane) and line.current is None and len(segs) == 1 and not line.attachments):
+        return None
+    if segs[0].nonlinear or not segs[0].w > 0:
+        return None
+    e = (np.asarray(fairlead[:2]) - np.asarray(anchor[:2])) / span
+    grad = np.asarray(bed.slope, dtype=float)
+    along = float(grad @ e)
+    across = grad - along * e
+    on_bed = abs(float(anchor[2]) - float(bed.height(anchor[0], anchor[1]))) <= 1e-9 * line.length
+    if not on_bed or float(np.abs(across).max()) > 1e-12 * (1.0 + abs(along)):
+        return None
+    return along
 
 
 def _closed_form(line, anchor, fairlead, span, start, solve_in_space):
@@ -260,6 +333,13 @@ def solve_line_in_sea(line, anchor, fairlead, span: float, start, solve_in_space
     need = line.in_space
     if need is not None and need[0] == "seabed" and line.current is None and line.bathymetry.flat is not None:
         need = None  # a flat Bathymetry: the closed forms, placed at the anchor
+    slope = None if need is None else _along_slope(line, anchor, fairlead, span)
+    if slope is not None:
+        solved = solve_in_space(SlopeModel(line, slope), anchor, fairlead, span)
+        reason = "no current, one uniform segment anchored on a plane sloping along the line"
+        return LineInSea(
+            line, anchor, fairlead, solved, "closed form (slope)", reason, solved.solution.residual()
+        )
     if need is None:
         plain = start.result if isinstance(start, LineInSea) and not start.bvp else start
         solved = _closed_form(
