@@ -332,3 +332,19 @@ def test_the_segment_checks_of_a_system_read_the_lines_in_the_sea():
     assert len(table) == 3
     T_max = [max(solved.tension_at_anchor, solved.tension_at_fairlead) for solved in eq.lines]
     np.testing.assert_allclose(table["T_max"], T_max, rtol=1e-9)
+
+
+def test_the_stiffness_of_a_line_in_a_current_is_its_central_differences():
+    seg = cable.Segment(500.0, 600.0, 4e8, diameter=0.1, cd_normal=1.2, cd_tangential=0.008)
+    line = cable.Line([seg], current=(0.3, 0.7))
+    a, b = np.array([0.0, 0.0, -200.0]), np.array([400.0, 50.0, -20.0])
+    K = cable.line_3d(line, a, b).stiffness()
+    h = 1e-3
+    columns = []
+    for k in range(3):
+        step = np.zeros(3)
+        step[k] = h
+        up = cable.line_3d(line, a, b + step).force_on_fairlead
+        down = cable.line_3d(line, a, b - step).force_on_fairlead
+        columns.append(-(up - down) / (2 * h))
+    np.testing.assert_allclose(K, np.array(columns).T, atol=1e-6 * np.abs(K).max())
