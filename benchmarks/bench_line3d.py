@@ -13,7 +13,8 @@ seabed):
 4. for scale, the plane `solve_line_bvp` of the chain without current at 200 elements (one
    process, the same machine: the ratio is what a quiet machine reproduces);
 5. `cable.line_3d` of a `cable.Line` in a current: the model chosen (the 3-D BVP on
-   `BVP_ELEMENTS` elements) and its error estimate (the same on half as many), as a user calls it;
+   `BVP_ELEMENTS` elements), as a user calls it (its error estimate, a second solve on half as
+   many elements when first asked for, is printed but not timed);
 6. `cable.line_3d` of a chain-polyester `cable.Line` in still water: the closed form with the
    rope's nonlinear law integrated exactly;
 7. twelve lines of a spread mooring in a current, each by `cable.line_3d`: one evaluation of the
@@ -114,8 +115,8 @@ def scenes():
         "2-D solve_line_bvp, no current, 200 elements": lambda: solve_line_bvp(
             400.0, 180.0, [(500.0, 600.0, 4e8)], n_elements=200
         ),
-        "cable.line_3d, Line in a current (BVP + error estimate)": lambda: cable.line_3d(
-            sea_line(), ANCHOR, FAIRLEAD
+        "cable.line_3d, Line in a current (BVP; its error estimate, asked after, untimed)": lambda: (
+            cable.line_3d(sea_line(), ANCHOR, FAIRLEAD)
         ),
         "cable.line_3d, chain-polyester Line, closed form with its law": lambda: cable.line_3d(
             polyester(), ANCHOR, FAIRLEAD + [200.0, 0.0, 0.0]
