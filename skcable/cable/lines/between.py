@@ -31,6 +31,7 @@ nothing ``K = [[K_bb, -K_bb], [-K_bb, K_bb]]``.
 from __future__ import annotations
 
 import math
+from functools import cached_property
 
 import numpy as np
 
@@ -70,7 +71,16 @@ class LineBetween:
         ex, ey = float(direction[0]), float(direction[1])
         H_a, V_a, H_b, V_b = plane.H_A, plane.V_A, plane.H_B, plane.V_B
         self.end_forces = np.array([[H_a * ex, H_a * ey, -V_a], [-H_b * ex, -H_b * ey, -V_b]])
-        self.tension_a, self.tension_b = plane.T_A, plane.T_B
+
+    @cached_property
+    def tension_a(self) -> float:
+        """The tension at a (N): the norm of the end force (as the checks and tables give it)."""
+        return float(np.linalg.norm(self.end_forces[0]))
+
+    @cached_property
+    def tension_b(self) -> float:
+        """The tension at b (N): the norm of the end force."""
+        return float(np.linalg.norm(self.end_forces[1]))
 
     @property
     def solution(self):
@@ -79,7 +89,9 @@ class LineBetween:
 
     @property
     def max_end_tension(self) -> float:
-        return max(self.tension_a, self.tension_b)
+        """The larger of the end tensions (N), from the solution in the plane (``hypot(H, V)``: the
+        same to round-off as ``tension_a``, ``tension_b``)."""
+        return max(self.plane.T_A, self.plane.T_B)
 
     def block(self, i: int, j: int, J=None) -> np.ndarray:
         """``K_ij = -∂F_i/∂p_j`` (N/m), 3 × 3, for ends ``i, j`` in (0: a, 1: b)."""
@@ -102,19 +114,23 @@ class LineBetween:
         """``K_bb`` (N/m), 3 × 3: the block of an end b that moves with a fixed (`block`). Where the
         solution runs from a, from its 2 × 2 stiffness directly (the fairlead stiffness of
         `skcable.cable.line_3d`), else from the Jacobian."""
-        if self.plane.reversed:
-            return self.block(1, 1)
-        (k_hh, k_hv), (k_vh, k_vv) = np.asarray(self.plane.solution.stiffness(), dtype=float).tolist()
+        return np.array(self.b_values()[3:]).reshape(3, 3)
+
+    def b_values(self) -> list:
+        """The force on b (3) and `b_block` (3 × 3, by rows), flat: 12 floats (N, N/m)."""
         ex, ey = float(self.direction[0]), float(self.direction[1])
+        force = [-self.plane.H_B * ex, -self.plane.H_B * ey, -self.plane.V_B]
+        if self.plane.reversed:
+            return [*force, *self.block(1, 1).ravel().tolist()]
+        (k_hh, k_hv), (k_vh, k_vv) = np.asarray(self.plane.solution.stiffness(), dtype=float).tolist()
         exx, exy, eyy = ex * ex, ex * ey, ey * ey
         c = self.plane.H_B / self.span
-        return np.array(
-            [
-                [k_hh * exx + c * (1.0 - exx), k_hh * exy - c * exy, k_hv * ex],
-                [k_hh * exy - c * exy, k_hh * eyy + c * (1.0 - eyy), k_hv * ey],
-                [k_vh * ex, k_vh * ey, k_vv],
-            ]
-        )
+        return [
+            *force,
+            *(k_hh * exx + c * (1.0 - exx), k_hh * exy - c * exy, k_hv * ex),
+            *(k_hh * exy - c * exy, k_hh * eyy + c * (1.0 - eyy), k_hv * ey),
+            *(k_vh * ex, k_vh * ey, k_vv),
+        ]
 
     def stiffness(self) -> np.ndarray:
         """``K = -∂(F_a, F_b)/∂(a, b)`` (N/m), shape (6, 6): rows and columns ``(a_xyz, b_xyz)``, the

@@ -288,8 +288,9 @@ class MooringSystem:
         xyz, R = self._assembler.frames(q)
         arms = self._assembler.body_arms(R)
         P = layout.fixed_positions.copy()
-        if len(arms):
-            P[self._assembler.body_point_index] = xyz[self._assembler.body_point_owner] + arms
+        index = self._assembler.body_point_index
+        if len(index):
+            P[index] = xyz[self._assembler.body_point_owner] + arms[: len(index)]
         if layout.free.size:
             P[layout.free] = q[layout.free_starts[:, None] + np.arange(3)]
         return P, R, arms
@@ -418,14 +419,18 @@ class MooringSystem:
         """``(G, K)`` from the solved ``lines`` of ``handles`` at ``q``, ``frame`` the bodies' rotation
         matrices and their points' arms there (`frame`; module docstring)."""
         R, arms = frame
-        ends: list = []
+        index: list = []
+        values: list = []  # per moving end: its force (3) and its stiffness (3 x 3), flat
         cross: list = []
         for handle, line in zip(handles, lines, strict=True):
             if handle.managed:
-                _managed_ends(handle, line, ends, cross, self._assembler, arms)
+                _managed_ends(handle, line, index, values, cross, self._assembler, arms)
             elif handle.b.kind != "fixed":
-                ends.append((handle.b.index, line.force_on_fairlead, line.stiffness()))
-        return self._assembler.assemble(q, R, arms, ends, cross, external, lines_only)
+                index.append(handle.b.index)
+                values.append([*line.force_on_fairlead.tolist(), *line.stiffness().ravel().tolist()])
+        ends = np.array(values, dtype=float).reshape(-1, 12)
+        forces, stiffness = ends[:, :3], ends[:, 3:].reshape(-1, 3, 3)
+        return self._assembler.assemble(q, R, arms, index, forces, stiffness, cross, external, lines_only)
 
     def net_force(self, position, *, force=(0.0, 0.0, 0.0), moment=(0.0, 0.0, 0.0)) -> np.ndarray:
         """Net load on the dofs at ``position``: lines, own loads and the external ``force`` and
@@ -634,18 +639,21 @@ class MooringSystem:
         )
 
 
-def _managed_ends(handle, line, ends, cross, assembler, arms):
-    """The ends of a `skcable.cable.Line` line that move, and their coupling where both do."""
+def _managed_ends(handle, line, index, values, cross, assembler, arms):
+    """The ends of a `skcable.cable.Line` line that move (their points into ``index``, their force and
+    stiffness, flat, into ``values``), and their coupling where both do."""
     moving = (handle.a.kind != "fixed", handle.b.kind != "fixed")
     if not any(moving):
         return
     if not moving[0]:  # the common case: an anchor and a moving fairlead
-        ends.append((handle.b.index, line.end_forces[1], line.b_block()))
+        index.append(handle.b.index)
+        values.append(line.b_values())
         return
     J = line.plane.jacobian()
     for i, p in enumerate((handle.a, handle.b)):
         if moving[i]:
-            ends.append((p.index, line.end_forces[i], line.block(i, i, J)))
+            index.append(p.index)
+            values.append([*line.end_forces[i].tolist(), *line.block(i, i, J).ravel().tolist()])
     if all(moving):
         (sa, Ta), (sb, Tb) = (_point_map(assembler, arms, p) for p in (handle.a, handle.b))
         cross.append((sa, Ta, sb, Tb, line.block(0, 1, J), line.block(1, 0, J)))
