@@ -66,11 +66,21 @@ class LineBetween:
 
     def __init__(self, line, a, b, plane, span, direction):
         self.line, self.a, self.b, self.plane = line, a, b, plane
-        self.span, self.dh, self.direction = span, float(b[2] - a[2]), direction
+        self.span, self.dh = span, float(b[2] - a[2])
+        self._e = (float(direction[0]), float(direction[1]))
         self.model, self.reason = plane.model, plane.reason
-        ex, ey = float(direction[0]), float(direction[1])
+
+    @cached_property
+    def direction(self) -> np.ndarray:
+        """The unit horizontal vector ``e`` from a towards b."""
+        return np.array([*self._e, 0.0])
+
+    @cached_property
+    def end_forces(self) -> np.ndarray:
+        """The line's forces on a and on b (N), global axes, (2, 3)."""
+        (ex, ey), plane = self._e, self.plane
         H_a, V_a, H_b, V_b = plane.H_A, plane.V_A, plane.H_B, plane.V_B
-        self.end_forces = np.array([[H_a * ex, H_a * ey, -V_a], [-H_b * ex, -H_b * ey, -V_b]])
+        return np.array([[H_a * ex, H_a * ey, -V_a], [-H_b * ex, -H_b * ey, -V_b]])
 
     @cached_property
     def tension_a(self) -> float:
@@ -96,7 +106,7 @@ class LineBetween:
     def block(self, i: int, j: int, J=None) -> np.ndarray:
         """``K_ij = -∂F_i/∂p_j`` (N/m), 3 × 3, for ends ``i, j`` in (0: a, 1: b)."""
         J = self.plane.jacobian() if J is None else J
-        ex, ey = float(self.direction[0]), float(self.direction[1])
+        ex, ey = self._e
         st, s, t = (1.0 if i == j else -1.0), (1.0, -1.0)[i], (-1.0, 1.0)[j]
         c = (self.plane.H_A, self.plane.H_B)[i] / self.span
         row_H, row_V = J[2 * i].tolist(), J[2 * i + 1].tolist()
@@ -118,7 +128,7 @@ class LineBetween:
 
     def b_values(self) -> list:
         """The force on b (3) and `b_block` (3 × 3, by rows), flat: 12 floats (N, N/m)."""
-        ex, ey = float(self.direction[0]), float(self.direction[1])
+        ex, ey = self._e
         force = [-self.plane.H_B * ex, -self.plane.H_B * ey, -self.plane.V_B]
         if self.plane.reversed:
             return [*force, *self.block(1, 1).ravel().tolist()]
@@ -195,7 +205,7 @@ def solve_between(line, a, b, depth, start=None, bvp=None) -> LineBetween:
         )
     seabed = None if depth is None else -depth - az
     plane = solve_in_plane(line, r, dz, seabed=seabed, start=None if start is None else start.plane, bvp=bvp)
-    return LineBetween(line, a, b, plane, r, np.array([dx / r, dy / r, 0.0]))
+    return LineBetween(line, a, b, plane, r, (dx / r, dy / r))
 
 
 def line_between(line, a, b, *, depth=None, start=None) -> LineBetween:

@@ -489,10 +489,7 @@ class MooringSystem:
     def tension_scale(lines) -> float:
         """The largest tension at a moving end of the lines (N)."""
         return max(
-            (
-                line.max_end_tension if isinstance(line, LineBetween) else line.tension_at_fairlead
-                for line in lines
-            ),
+            [line.max_end_tension if type(line) is LineBetween else line.tension_at_fairlead for line in lines],
             default=0.0,
         )
 
