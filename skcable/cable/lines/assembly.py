@@ -139,6 +139,8 @@ class Assembler:
         self.group_start = np.where(self.kind == 1, self.free_start, -1)
         on_body = self.kind == 2
         self.group_start[on_body] = self.start[self.owner[on_body]]
+        self.groups = np.unique(self.group_start[self.group_start >= 0])  # the bodies and points held
+        self.group_xyz = self.groups[:, None] + np.arange(3)  # their translation dofs
         scales = [abs(b.weight[2]) for b in bodies] + [b.buoyancy[2] for b in bodies]
         scales += [float(np.abs(p.own_force).max()) for p in points]
         self.own_scale = max(scales, default=0.0)

@@ -450,12 +450,14 @@ class MooringSystem:
         """Consistent units of the dofs: 1 for translations, a body's largest arm (at least 1 m) for
         its rotations."""
         layout = self.layout
-        units = np.ones(layout.n_dof)
-        for i, body in enumerate(self.bodies):
-            if body.n_dof == 6:
-                arm = max(1.0, float(np.abs(layout.local[i]).max())) if len(layout.local[i]) else 1.0
-                units[layout.body_start[i] + 3 : layout.body_start[i] + 6] = arm
-        return units
+        if layout.units is None:  # once per layout
+            units = np.ones(layout.n_dof)
+            for i, body in enumerate(self.bodies):
+                if body.n_dof == 6:
+                    arm = max(1.0, float(np.abs(layout.local[i]).max())) if len(layout.local[i]) else 1.0
+                    units[layout.body_start[i] + 3 : layout.body_start[i] + 6] = arm
+            layout.units = units
+        return layout.units.copy()
 
     def step_cap(self, q, without=()) -> np.ndarray:
         """The largest Newton step of each dof: a quarter of the shortest horizontal span of the lines
@@ -463,16 +465,15 @@ class MooringSystem:
         layout = self.layout
         P = self.frame(q)[0]
         handles = self._active(without)
-        a = np.array([h.a.index for h in handles], dtype=int)
-        b = np.array([h.b.index for h in handles], dtype=int)
-        spans = np.hypot(*(P[b] - P[a])[:, :2].T) if len(handles) else np.ones(1)
+        ends = np.array([[h.a.index, h.b.index] for h in handles], dtype=int).reshape(-1, 2)
+        spans = np.hypot(*(P[ends[:, 1]] - P[ends[:, 0]])[:, :2].T) if len(handles) else np.ones(1)
         starts = self._assembler.group_start  # each point's body or free point: its first dof (-1: fixed)
         shortest = np.full(layout.n_dof, np.inf)
-        for ends in (a, b):
-            moving = starts[ends] >= 0
-            np.minimum.at(shortest, starts[ends][moving], spans[moving])
+        at = starts[ends]  # (lines, 2): the first dof of each end's body or point
+        moving = at >= 0
+        np.minimum.at(shortest, at[moving], np.broadcast_to(spans[:, None], at.shape)[moving])
         cap = np.full(layout.n_dof, 0.2)
-        for s in np.unique(starts[starts >= 0]):
+        for s in self._assembler.groups:
             cap[s : s + 3] = 0.25 * (shortest[s] if np.isfinite(shortest[s]) else spans.max())
         return cap
 
@@ -481,8 +482,7 @@ class MooringSystem:
         external forces."""
         self.layout  # noqa: B018 - builds the assembler
         assembler = self._assembler
-        starts = np.unique(assembler.group_start[assembler.group_start >= 0])
-        pushed = float(np.linalg.norm(external[starts[:, None] + np.arange(3)], axis=1).max(initial=0.0))
+        pushed = float(np.linalg.norm(external[assembler.group_xyz], axis=1).max(initial=0.0))
         return max(assembler.own_scale, pushed)
 
     @staticmethod
