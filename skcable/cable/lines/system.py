@@ -488,10 +488,10 @@ class MooringSystem:
     @staticmethod
     def tension_scale(lines) -> float:
         """The largest tension at a moving end of the lines (N)."""
-        return max(
-            [line.max_end_tension if type(line) is LineBetween else line.tension_at_fairlead for line in lines],
-            default=0.0,
-        )
+        tensions = [
+            line.max_end_tension if type(line) is LineBetween else line.tension_at_fairlead for line in lines
+        ]
+        return max(tensions, default=0.0)
 
     def check(self, without=()):
         """Refuse a system that cannot be solved, naming the part: no body or free point, a free
