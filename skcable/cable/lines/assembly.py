@@ -188,6 +188,8 @@ class Assembler:
                 "rows": rows,
                 "onehot": onehot,
                 "extra": self.own_forces if own else np.zeros((0, 3)),
+                "extra_K": np.zeros((len(self.own_forces) if own else 0, 3, 3)),
+                "all_on_body": bool(on_body[: len(index)].all()),
                 "one": len(self.start) == 1 and self.rigid[0] and self.n == 6 and not len(dofs),
             }
         return self._plans[key]
@@ -203,8 +205,10 @@ class Assembler:
             dofs = plan["dofs"]
             np.add.at(G, dofs, forces[free])
             np.add.at(K, (dofs[:, :, None], dofs[:, None, :]), stiffness[free])
-        on_body = plan["on_body"]
-        Gb, Kb = self._body_ends(plan, forces[on_body], stiffness[on_body], arms)
+        if not plan["all_on_body"]:
+            on_body = plan["on_body"]
+            forces, stiffness = forces[on_body], stiffness[on_body]
+        Gb, Kb = self._body_ends(plan, forces, stiffness, arms)
         if not lines_only and len(self.start):  # heave restoring
             Gb[:, 2] -= self.heave * q[self.start + 2]
             Kb[:, 2, 2] += self.heave
@@ -232,7 +236,7 @@ class Assembler:
         extra = plan["extra"]
         if len(extra):
             F = np.concatenate([F, extra])
-            Kp = np.concatenate([Kp, np.zeros((len(extra), 3, 3))])
+            Kp = np.concatenate([Kp, plan["extra_K"]])
         m = len(F)
         if not m:
             return np.zeros((nb, 6)), np.zeros((nb, 6, 6))
