@@ -148,6 +148,7 @@ class MooringSystem:
         self.rho, self.g = scalar("rho", positive("rho", rho)), scalar("g", positive("g", g))
         self.bodies, self.points, self.mooring_lines = [], [], []
         self._body_positions, self._layout, self.shortcut = [], None, False
+        self._cold = None  # the lines last solved with no start: (layout, dofs, lines' indices, lines)
         if body is None and lines is None and anchors is None:
             return
         body, lines, anchors = _shortcut_parts(body, lines, anchors)
@@ -411,9 +412,21 @@ class MooringSystem:
         ``lines_only``: ``G`` and ``K`` of the lines alone (no own loads, no external load)."""
         handles = self._active(without)
         P, R, arms = self.frame(q)
-        lines = self._solve_at(P, handles, start)
+        lines = self._solve_at(P, handles, self._remembered(q, handles) if start is None else start)
+        if start is None:
+            self._cold = (self._layout, q.copy(), [h.index for h in handles], lines)
         G, K = self.assemble(q, (R, arms), handles, lines, external, lines_only)
         return G, K, lines
+
+    def _remembered(self, q, handles):
+        """The lines last solved without a start, if that was at these very dofs ``q`` with these
+        lines (an equilibrium from rest, run again): their warm starts (Newton from a line's own
+        solution stops at once: the same solution). MoorPy's lines, likewise, start each solve
+        from their last forces (``HF0``, ``VF0``). None otherwise."""
+        cold = self._cold
+        if cold is None or cold[0] is not self._layout or not np.array_equal(cold[1], q):
+            return None
+        return cold[3] if cold[2] == [h.index for h in handles] else None
 
     def assemble(self, q, frame, handles, lines, external, lines_only=False):
         """``(G, K)`` from the solved ``lines`` of ``handles`` at ``q``, ``frame`` the bodies' rotation
