@@ -148,7 +148,7 @@ class MooringSystem:
         self.rho, self.g = scalar("rho", positive("rho", rho)), scalar("g", positive("g", g))
         self.bodies, self.points, self.mooring_lines = [], [], []
         self._body_positions, self._layout, self.shortcut = [], None, False
-        self._cold = None  # the lines last solved with no start: (layout, dofs, lines' indices, lines)
+        self._cold = None  # the lines last solved with no start: (layout, dofs, (line, model) pairs, lines)
         if body is None and lines is None and anchors is None:
             return
         body, lines, anchors = _shortcut_parts(body, lines, anchors)
@@ -414,7 +414,7 @@ class MooringSystem:
         P, R, arms = self.frame(q)
         lines = self._solve_at(P, handles, self._remembered(q, handles) if start is None else start)
         if start is None:
-            self._cold = (self._layout, q.copy(), [h.index for h in handles], lines)
+            self._cold = (self._layout, q.copy(), [(h, h.model) for h in handles], lines)
         G, K = self.assemble(q, (R, arms), handles, lines, external, lines_only)
         return G, K, lines
 
@@ -426,7 +426,10 @@ class MooringSystem:
         cold = self._cold
         if cold is None or cold[0] is not self._layout or not np.array_equal(cold[1], q):
             return None
-        return cold[3] if cold[2] == [h.index for h in handles] else None
+        same = len(cold[2]) == len(handles) and all(
+            h is g and h.model is m for (g, m), h in zip(cold[2], handles, strict=True)
+        )
+        return cold[3] if same else None
 
     def assemble(self, q, frame, handles, lines, external, lines_only=False):
         """``(G, K)`` from the solved ``lines`` of ``handles`` at ``q``, ``frame`` the bodies' rotation
