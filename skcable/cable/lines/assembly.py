@@ -3,17 +3,21 @@ r"""The net load and stiffness of a mooring system, vectorised over its bodies a
 `skcable.cable.lines.system` states the sums; here they are formed with NumPy over all the
 bodies at once (their rotation matrices, own loads and hydrostatic stiffness) and over all the
 line ends at once: an end on a body at arm :math:`\mathbf r` with force :math:`\mathbf f` and 3 × 3
-stiffness :math:`K` gives the body
+stiffness :math:`K` gives the body, with :math:`T = [I, -[\mathbf r]_\times]` (3 × 6),
 
-.. math:: \begin{pmatrix}\mathbf f\\ \mathbf r\times\mathbf f\end{pmatrix}, \qquad
-    \begin{pmatrix} K & -K[\mathbf r]_\times \\ [\mathbf r]_\times K &
+.. math:: T^T\mathbf f = \begin{pmatrix}\mathbf f\\ \mathbf r\times\mathbf f\end{pmatrix}, \qquad
+    T^T K T - \begin{pmatrix} 0 & 0 \\ 0 & [\mathbf f]_\times[\mathbf r]_\times\end{pmatrix}
+    = \begin{pmatrix} K & -K[\mathbf r]_\times \\ [\mathbf r]_\times K &
     -[\mathbf f]_\times[\mathbf r]_\times - [\mathbf r]_\times K[\mathbf r]_\times\end{pmatrix},
 
-summed per body (``np.add.at``); an end at a free point adds ``f`` and ``K`` to its three dofs.
-The own loads of a body, as `skcable.cable.lines.body`: weight at :math:`R\mathbf r_G`, buoyancy at
-:math:`R\mathbf r_M`, heave restoring; their stiffness
-:math:`K_{\theta\theta} = -[\mathbf W]_\times[R\mathbf r_G]_\times - [\mathbf B]_\times[R\mathbf r_M]_\times`,
-:math:`K_{zz} = \rho g A_{WP}`. A point body is a body whose arms and angles are zero.
+summed per body (one product with a 0/1 matrix of the ends' bodies); an end at a free point adds
+``f`` and ``K`` to its three dofs (``np.add.at``). The own loads of a body, as
+`skcable.cable.lines.body`, are ends of no stiffness: its weight :math:`\mathbf W` at
+:math:`R\mathbf r_G` and its buoyancy :math:`\mathbf B` at :math:`R\mathbf r_M` (their arms
+formed with the points', `Assembler.body_arms`), whose geometric terms are the hydrostatic
+:math:`K_{\theta\theta} = -[\mathbf W]_\times[R\mathbf r_G]_\times - [\mathbf B]_\times[R\mathbf r_M]_\times`;
+then the heave restoring, :math:`-\rho g A_{WP} z` and :math:`K_{zz} = \rho g A_{WP}`. A point
+body is a body whose arms and angles are zero.
 """
 
 from __future__ import annotations

@@ -284,7 +284,7 @@ class MooringSystem:
     def frame(self, q) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
         """``(P, R, arms)`` at the dofs ``q``: every point's global position ``(n, 3)`` (m), the
         bodies' rotation matrices ``(n_bodies, 3, 3)`` and the arms (global axes) of the bodies'
-        points."""
+        points, then of each body's centre of gravity and metacentre (`Assembler.body_arms`)."""
         layout = self.layout
         xyz, R = self._assembler.frames(q)
         arms = self._assembler.body_arms(R)
