@@ -95,6 +95,20 @@ def sloping_seabed(x):
     return -0.02 * x
 
 
+def line_in_sea(current):
+    """`cable.line_3d` of a chain-polyester line (the closed form with the rope's law), or of a chain
+    in a current (the 3-D BVP), its model report formed."""
+    if current:
+        seg = cable.Segment(500.0, 600.0, 4e8, diameter=0.1, cd_normal=1.2)
+        solved = cable.line_3d(cable.Line([seg], current=(0.0, 0.8)), (0, 0, -200.0), (400.0, 0, -20.0))
+    else:
+        rope = cable.axial.StrainTable([0.0, 0.01, 0.03], [0.0, 1e6, 2.5e6])
+        segs = [cable.Segment(100.0, 1500.0, 1e9), cable.Segment(500.0, 50.0, rope)]
+        solved = cable.line_3d(cable.Line(segs), (0, 0, -200.0), (550.0, 0, -20.0))
+    assert solved.model.error >= 0.0
+    return solved
+
+
 def line():
     segments = [cable.Segment(300.0, 1000.0, 5e8), cable.Segment(250.0, 400.0, 2e8)]
     return cable.Line([*segments, cable.Segment(300.0, 1000.0, 5e8)], [cable.ClumpWeight(1, 2e4)], seabed=0.0)
@@ -287,6 +301,8 @@ RESULTS = [
         lambda: cable.line_3d(line(), [800.0, 0.0, -150.0], [0.0, 0.0, 0.0]),
         lambda r: r.stiffness(),
     ),
+    ("line in the sea, a rope's law", lambda: line_in_sea(False), lambda r: (r.stiffness(), r.profile(5))),
+    ("line in the sea, a current", lambda: line_in_sea(True), lambda r: (r.stiffness(), r.profile(5))),
     ("mooring equilibrium", lambda: mooring().equilibrium(force=(2e6, 0.0, 0.0)), lambda r: r.stiffness()),
     ("mooring network equilibrium", lambda: network().equilibrium(), lambda r: r.stiffness()),
     (

@@ -91,6 +91,8 @@ if TYPE_CHECKING:  # what static tools see; at run time, `attach` below serves t
         sloped_seabed_catenary,
         write_moordyn,
     )
+    from skcable.cable.lines.in_sea import LineInSea, ModelChoice
+    from skcable.cable.lines.segments.law import LawLineSolution
     from skcable.cable.solution import CableSolution
     from skcable.cable.terms import Buoyancy, CableForce, CableState, CableTerm, CurrentDrag, WindDrag
 
@@ -175,6 +177,8 @@ _NAMES = {
         "sag_at_current",
     ),
     ".solution": ("CableSolution",),
+    ".lines.in_sea": ("LineInSea", "ModelChoice"),
+    ".lines.segments.law": ("LawLineSolution",),
     ".terms": ("Buoyancy", "CableForce", "CableState", "CableTerm", "CurrentDrag", "WindDrag"),
 }
 #: The weak forms, for extending the BVPs, live in `skcable.cable.bvp.forms`.
@@ -295,4 +299,7 @@ __all__ = [
     "read_moordyn",
     "write_moordyn",
     "MoorDynModel",
+    "LineInSea",
+    "ModelChoice",
+    "LawLineSolution",
 ]

@@ -88,7 +88,7 @@ def _segments_of(line):
     if plane is not None:
         segments = plane.solution_line.segments
         return segments[::-1] if plane.reversed else segments
-    return getattr(line.model, "segments", ())
+    return getattr(getattr(line, "line", None) or line.model, "segments", ())  # a LineInSea: its Line
 
 
 def segment_checks(eq, safety_factor):

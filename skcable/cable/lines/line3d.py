@@ -51,7 +51,15 @@ import numpy as np
 from skcable._checks import real, whole
 from skcable.errors import InputError
 
-__all__ = ["Line3D", "line_3d", "line_model", "point", "takes_start"]
+__all__ = [
+    "Line3D",
+    "line_3d",
+    "line_model",
+    "point",
+    "solve_in_plane_of_ends",
+    "solve_in_space",
+    "takes_start",
+]
 
 
 def point(name: str, value) -> np.ndarray:
@@ -214,12 +222,15 @@ def line_3d(model, anchor, fairlead, start=None) -> Line3D:
 
     Parameters
     ----------
-    model : object
-        A line model: ``model.solve(span, dh)`` returns the 2-D solution (see the
-        module docstring for the attributes it must have).
+    model : Line or object
+        A `skcable.cable.Line`: solved by the model it needs, chosen per line and reported
+        (`skcable.cable.lines.in_sea`: the closed form, the closed form with its axial laws'
+        elongation integrals, or the 3-D line BVP in a current or on a shaped seabed). Or any
+        line model: ``model.solve(span, dh)`` returns the 2-D solution (see the module
+        docstring for the attributes it must have).
     anchor, fairlead : array_like, shape (3,)
         End points (m), z up. The fairlead must not lie on the anchor's vertical.
-    start : Line3D or 2-D solution, optional
+    start : LineInSea, Line3D or 2-D solution, optional
         A previous solution of the same model (typically at a nearby fairlead),
         passed on as ``model.solve(span, dh, start=...)``: a warm start for Newton's
         method (see `skcable.cable.Line.solve`); the model must accept it
@@ -227,8 +238,13 @@ def line_3d(model, anchor, fairlead, start=None) -> Line3D:
 
     Returns
     -------
-    Line3D
-        Forces on both ends in global axes and the 3x3 fairlead ``stiffness()``.
+    LineInSea or Line3D
+        For a `skcable.cable.Line` a `skcable.cable.LineInSea`: the end forces, ``profile(n)``
+        ``(n, 3)`` over the unstretched arc length, ``T_of_s(s)``, the 3x3 fairlead
+        ``stiffness()``, ``model`` (which model ran, why, its estimated error) and
+        ``equilibrium_residual`` (and, from the closed forms, the `Line3D` attributes). For
+        another line model a `Line3D`: forces on both ends in global axes and the 3x3 fairlead
+        ``stiffness()``.
 
     Raises
     ------
@@ -250,6 +266,12 @@ def line_3d(model, anchor, fairlead, start=None) -> Line3D:
             f"lies on the vertical of the anchor (horizontal distance {r:.3g} m): the line's vertical "
             "plane is undefined; give a fairlead offset horizontally from the anchor",
         )
+    from skcable.cable.lines.segments import Line
+
+    if isinstance(model, Line):  # the model it needs, reported (`skcable.cable.lines.in_sea`)
+        from skcable.cable.lines.in_sea import solve_line_in_sea
+
+        return solve_line_in_sea(model, a, b, r, start, solve_in_plane_of_ends)  # type: ignore[return-value]
     if start is not None and not takes_start(model):
         raise InputError("start", f"the line model {type(model).__name__}.solve takes no start= argument")
     return solve_in_space(model, a, b, r, start)
@@ -259,8 +281,21 @@ def solve_in_space(model, anchor, fairlead, span, start=None) -> Line3D:
     """`line_3d` on checked arguments: float 3-vectors ``anchor`` and ``fairlead`` at the
     horizontal distance ``span > 0``, and a ``start`` the model takes (or None).
 
-    For callers that checked them once (`skcable.cable.MooringSystem` in its Newton loop).
+    For callers that checked them once (`skcable.cable.MooringSystem` in its Newton loop). A
+    `skcable.cable.Line` in a current, over a shaped seabed or with a nonlinear axial law is solved
+    by the model it needs (`skcable.cable.lines.in_sea`: a `LineInSea`, with the force on the
+    fairlead and the 3 × 3 ``stiffness()`` of a `Line3D`).
     """
+    if getattr(model, "in_space", None) is not None or getattr(model, "nonlinear", False):
+        from skcable.cable.lines.in_sea import solve_line_in_sea
+
+        return solve_line_in_sea(model, anchor, fairlead, span, start, solve_in_plane_of_ends)  # type: ignore[return-value]
+    return solve_in_plane_of_ends(model, anchor, fairlead, span, start)
+
+
+def solve_in_plane_of_ends(model, anchor, fairlead, span, start=None) -> Line3D:
+    """`solve_in_space` by the line model's own ``solve(span, dh)`` in the vertical plane of the
+    ends, whatever the model."""
     dh = float(fairlead[2] - anchor[2])
     if start is None:
         solution = model.solve(span, dh)

@@ -80,11 +80,12 @@ def _frozen(array) -> np.ndarray:
 
 
 def line_arrays(segments, P) -> LineArrays:
-    """`LineArrays` of ``segments`` (each with ``length, w, EA``) and joint forces ``P`` (n + 1)."""
+    """`LineArrays` of ``segments`` (each with ``length, w`` and ``nominal_EA`` or ``EA``) and joint
+    forces ``P`` (n + 1)."""
     n = len(segments)
     L = np.array([s.length for s in segments])
     w = np.array([s.w for s in segments])
-    EA = np.array([s.EA for s in segments])
+    EA = np.array([getattr(s, "nominal_EA", s.EA) for s in segments])
     wL = w * L
     P = np.array(P, dtype=float)
     c = P[1:n] + w[1:] * L[1:]
@@ -96,7 +97,7 @@ def line_arrays(segments, P) -> LineArrays:
         wL=_frozen(wL),
         L_list=tuple(float(s.length) for s in segments),
         w_list=tuple(float(s.w) for s in segments),
-        EA_list=tuple(float(s.EA) for s in segments),
+        EA_list=tuple(EA.tolist()),
         wL_list=tuple(wL.tolist()),
         P=_frozen(P),
         P_list=tuple(P.tolist()),

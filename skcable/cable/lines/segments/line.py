@@ -25,10 +25,13 @@ import numpy as np
 from skcable._checks import nonnegative, positive, real, require, scalar
 from skcable._newton2 import solve2
 from skcable.cable._roots import find_root
+from skcable.cable.bathymetry import Bathymetry
+from skcable.cable.current import current_of
 from skcable.cable.lines.seabed import elastic_catenary
 from skcable.cable.lines.segments.arrays import line_arrays
 from skcable.cable.lines.segments.closure import closure_state
 from skcable.cable.lines.segments.heap import heap_state
+from skcable.cable.lines.segments.law import LawLineSolution, solve_law_line
 from skcable.cable.lines.segments.parts import Buoy, ClumpWeight, Segment
 from skcable.cable.lines.segments.solution import LineSolution
 from skcable.errors import ConvergenceError, InputError
@@ -73,16 +76,27 @@ class Line:
         joint 0 is the anchor A, joint ``n = len(segments)`` the fairlead B. A force
         at an end joint is carried by the support there (it enters ``V_A`` or ``V_B``).
         Several attachments at one joint add up.
-    seabed : float, optional
+    seabed : float or Bathymetry, optional
         Height of a flat seabed relative to A (m), ``<= 0``, as in `elastic_catenary`.
         With ``seabed=0`` the line may rest on it from A up to a touchdown; with
         ``seabed < 0`` the line must stay clear of it (a touchdown between A and B
-        raises).
+        raises). Or a shaped seabed in global coordinates (`skcable.cable.bathymetry`:
+        `Plane`, `DepthFunction`, `Grid`; m, z up), which only `skcable.cable.line_3d` solves
+        (by the 3-D line BVP; a flat `Plane` through the anchor by the closed form).
     friction : float, optional
         Coulomb coefficient ``C_B >= 0`` of the grounded part (only with ``seabed``).
+    current : (Ux, Uy), callable or Current, optional
+        The current (m/s; `skcable.cable.current.current_of`): a constant horizontal vector,
+        a callable ``z -> (Ux, Uy)`` of the height ``z`` (m, the surface at 0) or a `Current`.
+        It drags the segments with a ``diameter`` and drag coefficients; a line in a current
+        is solved in space by `skcable.cable.line_3d` (the 3-D line BVP).
+    rho_water : float, optional
+        Density of the water (kg/m³), > 0, for the current's drag.
     """
 
-    def __init__(self, segments, attachments=(), *, seabed=None, friction=0.0):
+    def __init__(
+        self, segments, attachments=(), *, seabed=None, friction=0.0, current=None, rho_water=1025.0
+    ):
         for name, value in (("segments", segments), ("attachments", attachments)):
             if isinstance(value, (Segment, ClumpWeight, Buoy)) or not hasattr(value, "__iter__"):
                 raise InputError(name, f"must be a sequence (a list) of them, got {value!r}")
@@ -97,13 +111,22 @@ class Line:
             if att.joint > n:
                 raise InputError("joint", f"{att!r}: joint must lie in [0, {n}] for {n} segments")
             P[att.joint] += att.force
+        self.bathymetry = None
+        """The shaped seabed (a `skcable.cable.bathymetry.Bathymetry`, global coordinates), or None."""
         if seabed is None:
             friction = 0.0 if friction is None else friction
             if real("friction", friction) != 0.0:
                 raise InputError("friction", "applies to a line on the seabed: give seabed= as well")
+        elif isinstance(seabed, Bathymetry):
+            self.bathymetry, seabed = seabed, None
         else:
             seabed = scalar("seabed", seabed)
             require("seabed", seabed <= 0, "must be at or below the anchor (A at height 0)", seabed)
+        self.current = current_of(current)
+        """The current (a `skcable.cable.current.Current`), or None."""
+        if self.current is not None and not any(seg.drags for seg in segments):
+            raise InputError("current", "drags no segment: give the segments a diameter and cd_normal")
+        self.rho_water = scalar("rho_water", positive("rho_water", rho_water))
         self.friction = scalar("friction", nonnegative("friction", friction))
         self.seabed = seabed
         self.segments = tuple(segments)
@@ -124,7 +147,16 @@ class Line:
         the anchor (``seabed=0``) and this line's ``friction``; else no seabed (and no
         friction). The solutions of a variant are those of the same physical line with its
         ends named the other way round (`skcable.cable.lines.geometry` picks the variant
-        that suits a line's position over the seabed)."""
+        that suits a line's position over the seabed). A line in a current, on a `Bathymetry` or
+        with a nonlinear axial law has none (`InputError` naming ``current``, ``seabed`` or
+        ``EA``): it is solved in space (`skcable.cable.line_3d`)."""
+        if self.in_space is not None or self.nonlinear:  # no variant of the plane closed forms
+            name, reason = self.in_space or ("EA", "a nonlinear axial law")
+            raise InputError(
+                name,
+                f"{reason}: this line is solved by cable.line_3d (and in MooringSystem(body, lines, "
+                "anchors)), not in the vertical plane of its ends",
+            )
         key = (bool(reverse), bool(contact))
         cache = self.__dict__.setdefault("_variants", {})
         if key not in cache:
@@ -139,6 +171,18 @@ class Line:
                 cache[key] = Line(segments, attachments)
         return cache[key]
 
+    def variant_with_seabed(self, seabed) -> Line:
+        """This line in still water over the flat ``seabed`` (m relative to A, or None), this
+        line's ``friction`` (none without a seabed): itself where that is what it is (cached)."""
+        if self.current is None and self.bathymetry is None and seabed == self.seabed:
+            return self
+        cache = self.__dict__.setdefault("_variants", {})
+        key = ("seabed", seabed)
+        if key not in cache:
+            friction = 0.0 if seabed is None else self.friction
+            cache[key] = Line(list(self.segments), list(self.attachments), seabed=seabed, friction=friction)
+        return cache[key]
+
     @property
     def length(self):
         """Total unstretched length (m)."""
@@ -150,9 +194,11 @@ class Line:
         return self.arrays.total_weight
 
     def __repr__(self):
+        seabed = self.seabed if self.bathymetry is None else self.bathymetry
+        extra = "" if self.current is None else f", current={self.current!r}, rho_water={self.rho_water!r}"
         return (
             f"Line(segments={list(self.segments)!r}, attachments={list(self.attachments)!r}, "
-            f"seabed={self.seabed!r}, friction={self.friction!r})"
+            f"seabed={seabed!r}, friction={self.friction!r}{extra})"
         )
 
     def _trial_state(self, H, V):
@@ -301,8 +347,14 @@ class Line:
     def solve_checked(self, span: float, dh: float, start=None):
         """`solve` for a caller that has checked ``span`` and ``dh`` (finite floats, ``span > 0``):
         a system's line solved at every Newton iterate of its equilibrium."""
+        if self.in_space is not None:
+            raise InputError(
+                self.in_space[0], f"{self.in_space[1]}: solve the line in space with cable.line_3d"
+            )
         if self.seabed is not None:
             require("dh", dh > self.seabed, "must put B above the seabed", dh)
+        if self.nonlinear:
+            return self._solve_law(span, dh, start)
         chord = math.hypot(span, dh)
         st, norm, history = None, np.inf, []
         if start is not None:  # Newton from the previous solution (its closed form known)
@@ -327,6 +379,38 @@ class Line:
         solution = LineSolution(self, span, dh, st)
         solution.validate()
         return solution
+
+    @property
+    def nonlinear(self) -> bool:
+        """Whether a segment has a nonlinear axial law (`skcable.cable.lines.segments.law`)."""
+        return any(seg.nonlinear for seg in self.segments)
+
+    @property
+    def in_space(self) -> tuple[str, str] | None:
+        """``(argument, reason)`` where only the 3-D line BVP solves this line (a current, a shaped
+        seabed), else None: `skcable.cable.line_3d` reports the reason with the model it ran."""
+        if self.current is not None:
+            return "current", "a current drags the line out of the closed forms' vertical plane"
+        if self.bathymetry is not None and self.bathymetry.flat is None:
+            return "seabed", "a shaped seabed (not flat) has no closed form of a line on it"
+        if self.bathymetry is not None:
+            return "seabed", "a flat Bathymetry is given in global coordinates, which only line_3d places"
+        return None
+
+    def _solve_law(self, span, dh, start):
+        """The closed form with the laws' exact elongation integrals (`solve_law_line`)."""
+        pair: tuple | None
+        if isinstance(start, LawLineSolution):
+            if start.line is not self:
+                raise InputError("start", "is a solution of another line: give one of this line or (H, V_B)")
+            pair = (start.H, start.V)
+        elif start is not None:
+            H0, V0, _ = self._start(start)
+            pair = (H0, V0)
+        else:
+            guess = self._guess(span, dh)
+            pair = None if guess is None else (guess[0], guess[1] - self.arrays.P_end[1])
+        return solve_law_line(self, span, dh, pair)
 
     def _start(self, start):
         """``(H, V, state)`` of a warm start: fairlead forces (``V`` below the fairlead's

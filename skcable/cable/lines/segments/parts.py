@@ -10,7 +10,8 @@ from __future__ import annotations
 import numpy as np
 
 from skcable import _plausible
-from skcable._checks import positive, real, scalar
+from skcable._checks import nonnegative, positive, real, scalar
+from skcable.cable.axial import ConstantEA, StrainLaw
 from skcable.errors import InputError
 
 __all__ = ["Buoy", "ClumpWeight", "Segment", "joint_index"]
@@ -27,34 +28,81 @@ class Segment:
         Weight in water per unstretched length (N/m), not zero: negative for a segment
         lighter than water (a buoyancy section of a lazy-wave line, a synthetic rope that
         floats), which rises where it hangs free.
-    EA : float
-        Axial stiffness (N), > 0.
+    EA : float or StrainLaw
+        Axial stiffness (N), > 0, or an axial strain law ``ε(T)`` (`skcable.cable.axial`:
+        `ConstantEA`, `StrainTable`, `StrainFunction`, `StaticDynamicRope`). A law that is not
+        ``ε = T/EA`` is integrated exactly along the line's closed form
+        (`skcable.cable.lines.segments.law`) or taken at the 3-D BVP's quadrature points.
     mbl : float, optional
         Minimum breaking load (N), > 0: the strength the line checks compare its largest
         tension with (`skcable.cable.lines.checks`); from a component of the library
         (`skcable.cable.lines.library`) or the maker's data.
     diameter : float, optional
         Volume-equivalent diameter (m), > 0: the diameter of the cylinder that displaces as much
-        water per length (MoorDyn's ``Diam``; written to MoorDyn files). The statics use ``w``.
+        water per length (MoorDyn's ``Diam``; written to MoorDyn files), and the hydrodynamic
+        diameter of the current's drag. The statics use ``w``.
+    cd_normal, cd_tangential : float, optional
+        Drag coefficients normal to and along the line (-), >= 0 (Morison's
+        ``½ ρ C_d d |v_n| v_n``); a positive one needs ``diameter``. Used when the line is in
+        a current (`skcable.cable.Line`'s ``current``).
+
+    Attributes
+    ----------
+    EA : float or StrainLaw
+        As given: the stiffness (N) of a constant law (a `ConstantEA` or a `StaticDynamicRope`
+        given as a law: its static ``EA``), else the nonlinear law.
+    law : StrainLaw
+        The axial law.
+    nominal_EA : float
+        The stiffness (N): ``EA`` of a constant law; of a nonlinear one its secant ``T/ε(T)`` at
+        the segment's own weight ``|w| L``, for starts and scales only (never for a result).
     """
 
-    __slots__ = ("length", "w", "EA", "mbl", "diameter")
+    __slots__ = ("length", "w", "EA", "mbl", "diameter", "cd_normal", "cd_tangential", "law", "nominal_EA")
 
-    def __init__(self, length, w, EA, *, mbl=None, diameter=None):
+    def __init__(self, length, w, EA, *, mbl=None, diameter=None, cd_normal=0.0, cd_tangential=0.0):
         self.length = scalar("length", positive("length", length))
         self.w = scalar("w", real("w", w))
         if self.w == 0.0:
             raise InputError(
                 "w", "must not be 0: a weightless segment has no catenary (give its weight in water)"
             )
-        self.EA = scalar("EA", positive("EA", EA))
+        law: StrainLaw
+        if isinstance(EA, StrainLaw):
+            law = EA
+            if EA.kind == "constant":
+                EA = float(EA.EA)  # type: ignore[attr-defined]
+                self.nominal_EA = EA
+            else:
+                self.nominal_EA = float(law.secant_EA(np.array(abs(self.w) * self.length)))
+        else:
+            EA = scalar("EA", positive("EA", EA))
+            law = ConstantEA(EA)
+            self.nominal_EA = EA
+        self.EA, self.law = EA, law
         self.mbl = None if mbl is None else scalar("mbl", positive("mbl", mbl))
         self.diameter = None if diameter is None else scalar("diameter", positive("diameter", diameter))
-        _plausible.stiffness(self.EA, abs(self.w), self.length)
+        self.cd_normal = scalar("cd_normal", nonnegative("cd_normal", cd_normal))
+        self.cd_tangential = scalar("cd_tangential", nonnegative("cd_tangential", cd_tangential))
+        if self.diameter is None and (self.cd_normal > 0 or self.cd_tangential > 0):
+            raise InputError("diameter", "a segment with drag coefficients needs its diameter (m)")
+        _plausible.stiffness(self.nominal_EA, abs(self.w), self.length)
+
+    @property
+    def nonlinear(self) -> bool:
+        """Whether the axial law is not ``ε = T/EA``."""
+        return self.law.kind != "constant"
+
+    @property
+    def drags(self) -> bool:
+        """Whether a current drags this segment (a diameter and a drag coefficient > 0)."""
+        return self.diameter is not None and (self.cd_normal > 0 or self.cd_tangential > 0)
 
     def __repr__(self):
         extra = "" if self.mbl is None else f", mbl={self.mbl!r}"
         extra += "" if self.diameter is None else f", diameter={self.diameter!r}"
+        extra += "" if self.cd_normal == 0.0 else f", cd_normal={self.cd_normal!r}"
+        extra += "" if self.cd_tangential == 0.0 else f", cd_tangential={self.cd_tangential!r}"
         return f"Segment(length={self.length!r}, w={self.w!r}, EA={self.EA!r}{extra})"
 
 
