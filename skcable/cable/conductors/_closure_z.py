@@ -23,7 +23,7 @@ vertical tension :math:`m = (T_{v,A} + T_{v,B})/2 = H\sinh\mu\cosh z`.
 `solve_z` starts from the parabolic change of state (the cubic of CIGRE TB 324, "Sag-tension
 calculation methods for overhead lines", 2007, written in :math:`\zeta = z + \varepsilon/2`:
 :math:`\zeta^3 - 6\frac{L - C}{C\cos^2\psi}\zeta - \frac{3\varepsilon}{\cos^2\psi} = 0`,
-from an upper bound by two steps of Halley's method), takes two Newton steps on :math:`g`
+guessed within a few per cent and refined by one Newton step), takes two Newton steps on :math:`g`
 formed directly (enough to bring the parabola's 1e-3 to about 1e-12), then Newton steps on
 :math:`g` formed without cancellation — :math:`q - 1 = (\varepsilon(\cosh z - 1) +
 2(\sinh z - z))/(\varepsilon + 2z)` with :math:`\sinh z - z` by its Maclaurin series below
@@ -93,15 +93,18 @@ def _sinh_minus_z(z, t, out):
 class _Rows:
     """The per-element constants and the scratch rows of one solve (views of one block)."""
 
-    def __init__(self, a, h, w, EA, L, block=None):
+    def __init__(self, a, h, w, EA, L, block=None, chord=None):
         block = np.empty((ROWS, a.size)) if block is None else block
         (self.C, self.LmC, self.eps, self.E, self.a2, self.h2, self.s, self.c, self.D, self.q,
          self.x, self.g, self.dq, self.t, self.smz) = block  # fmt: skip
         self.a, self.h, self.w, self.EA, self.L = a, h, w, EA, L
         np.multiply(a, a, out=self.a2)
         np.multiply(h, h, out=self.h2)
-        np.add(self.a2, self.h2, out=self.C)
-        np.sqrt(self.C, out=self.C)
+        if chord is None:
+            np.add(self.a2, self.h2, out=self.C)
+            np.sqrt(self.C, out=self.C)
+        else:
+            np.copyto(self.C, chord)
         np.subtract(L, self.C, out=self.LmC)
         np.multiply(w, L, out=self.eps)
         self.eps /= EA
@@ -110,51 +113,53 @@ class _Rows:
 
 
 def _start(r):
-    """``z`` of the parabolic cubic (module text), within about 1e-3 of the root of g."""
-    P, Q, zeta, t = r.s, r.c, r.q, r.t
+    """``z`` of the parabolic cubic (module text), within about 1e-3 of the root of g.
+
+    With ``c = (-Q)^(1/3)`` and ``x = -P/c²`` the root is ``zeta = c f(x)``, ``f³ - x f - 1 = 0``,
+    guessed as ``sqrt(x + 1/sqrt(1 + x))`` for ``x >= 0`` (within 1.6 %) and
+    ``1/(y + (1 + y/3)^-2)``, ``y = -x``, below (within 7.1 %), then one Newton step.
+    """
+    P, Qn, zeta, t, x, u, v = r.s, r.c, r.q, r.t, r.x, r.g, r.dq
     np.divide(r.C, r.a2, out=t)  # 1 / (C cos²psi), cos psi = a / C
     np.multiply(r.LmC, t, out=P)
     P *= -6.0
-    np.multiply(t, r.C, out=Q)
-    Q *= r.eps
-    Q *= -3.0
-    np.negative(P, out=zeta)
-    np.maximum(zeta, 0.0, out=zeta)
-    np.sqrt(zeta, out=zeta)
-    np.negative(Q, out=t)
-    np.cbrt(t, out=t)
-    zeta += t  # sqrt(max(-P, 0)) + cbrt(-Q) bounds the root from above
-    with np.errstate(divide="ignore"):
-        np.maximum(P, 0.0, out=t)
-        np.divide(Q, t, out=t)
-    np.negative(t, out=t)  # -Q/P where P > 0 (a bound too), inf elsewhere
-    np.minimum(zeta, t, out=zeta)
-    for _ in range(2):  # Halley's method: 2 f f' / (2 f'² - f f''), cubic convergence
-        _halley_cubic(zeta, P, Q, r.g, r.dq, r.x, t)
+    np.multiply(t, r.C, out=Qn)
+    Qn *= r.eps
+    Qn *= 3.0  # -Q
+    np.cbrt(Qn, out=zeta)
+    np.multiply(zeta, zeta, out=t)
+    np.divide(P, t, out=x)
+    np.negative(x, out=x)
+    np.maximum(x, 0.0, out=u)
+    np.add(u, 1.0, out=v)
+    np.sqrt(v, out=v)
+    np.divide(1.0, v, out=v)
+    v += u
+    np.sqrt(v, out=v)  # f where x >= 0 (1 elsewhere)
+    if P.max() > 0.0:  # taut: x < 0 somewhere
+        np.negative(x, out=u)
+        np.maximum(u, 0.0, out=u)
+        np.multiply(u, 1.0 / 3.0, out=t)
+        t += 1.0
+        t *= t
+        np.divide(1.0, t, out=t)
+        t += u
+        np.divide(1.0, t, out=t)  # f where x < 0 (1 elsewhere)
+        v *= t
+    zeta *= v
+    np.multiply(zeta, zeta, out=t)  # one Newton step on zeta³ + P zeta + Q
+    np.add(t, P, out=u)
+    u *= zeta
+    u -= Qn
+    t *= 3.0
+    t += P
+    u /= t
+    zeta -= u
     z = np.multiply(r.eps, -0.5)
     z += zeta
     zeta *= 0.5
     np.maximum(z, zeta, out=z)  # a very taut elastic span: keep z > 0
     return z
-
-
-def _halley_cubic(zeta, P, Q, f, d1, den, t):
-    """One step of Halley's method on ``zeta³ + P zeta + Q = 0``, in place."""
-    np.multiply(zeta, zeta, out=t)
-    np.add(t, P, out=f)
-    f *= zeta
-    f += Q
-    np.multiply(t, 3.0, out=d1)
-    d1 += P
-    np.multiply(d1, d1, out=den)
-    den += den
-    np.multiply(f, zeta, out=t)
-    t *= 6.0
-    den -= t
-    f *= d1
-    f += f
-    f /= den
-    zeta -= f
 
 
 def _direct_step(r, z):
@@ -176,12 +181,11 @@ def _direct_step(r, z):
     g += r.h2
     np.multiply(x, x, out=t)
     g -= t  # g (halved below, with its derivative)
-    np.multiply(r.eps, s, out=dq)
-    dq += c
-    dq += c
-    dq -= q
-    dq -= q
-    dq /= D  # q'
+    np.subtract(c, q, out=dq)
+    dq += dq
+    np.multiply(r.eps, s, out=t)
+    dq += t
+    dq /= D  # q' = (eps sinh z + 2 cosh z - 2 q) / D
     dq *= q
     dq *= r.a2
     np.multiply(s, s, out=t)
@@ -267,15 +271,16 @@ def _precise(r, z):
     return step, ok
 
 
-def solve_z(a, h, w, EA, L, H, m, block=None):
+def solve_z(a, h, w, EA, L, H, m, block=None, chord=None):
     """The horizontal tension ``H`` and the mean vertical tension ``m`` of the spans, written
     into the given arrays (all flat float arrays of one size, ``a > 0``, ``L > 0``): the root
     of g (module text). Returns ``converged``, False where the Newton steps did not settle
-    (``H`` is NaN there). ``block``: `ROWS` rows of scratch of that size, or None.
+    (``H`` is NaN there). ``block``: `ROWS` rows of scratch of that size, or None;
+    ``chord``: ``sqrt(a² + h²)`` if the caller has it (broadcast to the elements).
 
     Unchecked: the caller checks every element by an independent closure residual.
     """
-    r = _Rows(a, h, w, np.broadcast_to(EA, a.shape), L, block)
+    r = _Rows(a, h, w, np.broadcast_to(EA, a.shape), L, block, chord)
     with np.errstate(all="ignore"):
         z = _start(r)
         z = _direct_step(r, z)
@@ -301,43 +306,77 @@ def solve_z(a, h, w, EA, L, H, m, block=None):
     return ok
 
 
-def _length_pieces(a, h, w, EA, H, L):
-    """``(s, c, N, sinh mu)`` of the closure at horizontal tension H and unstressed length L:
-    ``z = a/(2p) - eps/2``, ``N = eps cosh z + 2 sinh z``, ``sinh mu = h/(p N)``."""
-    eps = w * L / EA
-    z = 0.5 * (a * w / H - eps)
+def _length_pieces(zi, hw, w_EA, L):
+    """``(eps, sinh z, cosh z, sinh mu)`` at the unstressed length ``L``: ``eps = wL/EA``,
+    ``z = a/(2p) - eps/2`` (``zi = a/(2p)``), ``sinh mu = h/(p N)`` (``hw = h/p``),
+    ``N = eps cosh z + 2 sinh z``."""
+    eps = w_EA * L
+    z = eps * -0.5
+    z += zi
     s, c = np.sinh(z), np.cosh(z)
-    N = eps * c + 2.0 * s
-    return eps, s, c, N, h * w / (H * N)
+    N = eps * c
+    N += s
+    N += s
+    return eps, s, c, np.divide(hw, N, out=N)
 
 
 def length_z(a, h, w, EA, H):
-    r"""``(L, m, converged)`` of spans of horizontal tension ``H`` (arrays, broadcast): the
-    closure (module text) solved for the unstressed length.
+    r"""``(L, m, converged)`` of spans of horizontal tension ``H`` (float arrays of one shape;
+    ``w``, ``EA`` floats or arrays that broadcast): the closure (module text) solved for the
+    unstressed length.
 
     Given :math:`p = H/w`, :math:`z = a/(2p) - \varepsilon/2` and :math:`\sinh\mu =
     h/(p(\varepsilon\cosh z + 2\sinh z))` follow from :math:`L`; the third equation
     :math:`G(L) = 2p\sinh z\cosh\mu - L = 0` is solved by Newton's method from the
-    inextensible catenary of that H shortened by its mean strain (about 1e-6 from the root),
-    with the exact derivative :math:`G' = (H/EA)(\varepsilon\sinh^2 z\sinh^2\mu/(N\cosh\mu) -
-    \cosh z\cosh\mu) - 1`. Unchecked (the caller checks by `closure_residual`).
+    inextensible catenary of that H shortened by its mean strain (about 1e-5 from the root),
+    with :math:`G' \approx -1 - (H/EA)\cosh z\cosh\mu` (the term left out is
+    :math:`\varepsilon\sinh^2 z\tanh^2\mu/N` times that, below 1e-9 of it for a cable
+    material: the convergence stays quadratic to round-off). Unchecked (the caller checks by
+    `closure_residual`).
     """
-    a, h, w, EA, H = np.broadcast_arrays(*(np.asarray(v, dtype=float) for v in (a, h, w, EA, H)))
     with np.errstate(all="ignore"):
-        p = H / w
-        S = np.hypot(h, 2.0 * p * np.sinh(0.5 * a / p))  # the inextensible length
-        T_mean = np.sqrt(H * H + (0.5 * w * S) ** 2 + (H * h / a) ** 2)
-        L = S / (1.0 + T_mean / EA)
+        zi = a * (0.5 * w)
+        zi /= H  # a / (2p)
+        two_p = np.multiply(H, 2.0 / w)
+        hw = h * w
+        hw /= H  # h / p
+        H_EA = H / EA
+        w_EA = w / EA
+        S = np.sinh(zi)
+        S *= two_p
+        S *= S
+        r = h * h
+        S += r
+        np.sqrt(S, out=S)  # the inextensible length
+        np.divide(h, a, out=r)
+        r *= r
+        r += 1.0
+        r *= H * H
+        T = S * (0.5 * w)
+        T *= T
+        T += r
+        np.sqrt(T, out=T)  # its mean tension, about
+        T /= EA
+        T += 1.0
+        L = np.divide(S, T, out=S)
         for _ in range(_MAX_PRECISE):
-            eps, s, c, N, sm = _length_pieces(a, h, w, EA, H, L)
-            cm = np.sqrt(1.0 + sm * sm)
-            G = 2.0 * p * s * cm - L
-            dG = H / EA * (eps * s * s * sm * sm / (N * cm) - c * cm) - 1.0
-            step = G / dG
-            L = L - step
-            ok = np.abs(step) <= STEP_TOL * L
-            if ok.all():
+            eps, s, c, sm = _length_pieces(zi, hw, w_EA, L)
+            sm *= sm
+            sm += 1.0
+            np.sqrt(sm, out=sm)  # cosh mu
+            G = two_p * s
+            G *= sm
+            G -= L
+            sm *= c
+            sm *= H_EA
+            sm += 1.0
+            G /= sm  # -step
+            L += G
+            G /= L
+            if -STEP_TOL <= G.min() and G.max() <= STEP_TOL:
                 break
-        _, _, c, _, sm = _length_pieces(a, h, w, EA, H, L)
-        m = H * sm * c
-    return L, m, ok
+        ok = np.abs(G) <= STEP_TOL
+        _, _, c, sm = _length_pieces(zi, hw, w_EA, L)
+        sm *= c
+        sm *= H
+    return L, sm, ok

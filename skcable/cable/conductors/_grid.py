@@ -43,12 +43,10 @@ def _ratio_of_ends(tv_a, tv_b, P_a, P_b, H2, out):
     ends have opposite signs, ``P_B/P_A`` where both rise, ``P_A/P_B`` where both fall."""
     np.multiply(P_a, P_b, out=out)
     out /= H2
-    rises = tv_a >= 0.0
-    if rises.any():
-        np.divide(P_b, P_a, out=out, where=rises)
-    falls = tv_b < 0.0
-    if falls.any():
-        np.divide(P_a, P_b, out=out, where=falls)
+    for ends, over, under in ((tv_a >= 0.0, P_b, P_a), (tv_b < 0.0, P_a, P_b)):
+        if ends.any():  # the few spans whose vertex lies beyond an end: by index
+            at = np.flatnonzero(ends)
+            out[at] = over[at] / under[at]
     return out
 
 

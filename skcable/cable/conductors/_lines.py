@@ -80,29 +80,37 @@ def reference_state(span, dh, w0, EA, value, name):
             ref = elastic_catenary(span[bad], dh[bad], w0, EA, length=L0[bad])
         m0[bad] = 0.5 * w0 * L0[bad] - ref.V_A
         closure_terms(H0, m0, w0, EA, L0, span, dh, rows)
-    return L0, m0, H0, sag_into(H0, w0, EA, span, dh, rows, np.empty(span.size))
+    sag0 = sag_into(H0, w0, EA, span, dh, rows, np.empty(span.size))
+    if not np.isfinite(sag0).all():
+        raise ConvergenceError("change_of_state: non-finite sag0 for these data")
+    return L0, m0, H0, sag0
 
 
 def _pass(spans, dhs, L0, states, out, names):
-    """The states of the spans ``spans`` (a pass: ``spans.size × m`` elements) into ``out``,
-    rows ``H, H_plane, sag, T_max, length`` of shape ``(spans.size, m)``."""
+    """The states of the spans ``spans`` (a pass of ``m × spans.size`` elements, laid out
+    state by state) into ``out``, rows ``H, H_plane, sag, T_max, length`` of shape
+    ``(m, spans.size)``."""
     q, w_k, EA_k, k, dh_scale, wind_scale = states
     n, m = spans.size, k.size
-    with scratch(_INPUTS + max(_closure_z.ROWS, _grid.ROWS), n * m) as block:
+    with scratch(_INPUTS + len(_RESULTS) + max(_closure_z.ROWS, _grid.ROWS), m * n) as block:
         a, h, w, EA, L, mm = block[:_INPUTS]
-        grid = (n, m)
-        np.multiply(dhs[:, None], dh_scale[None, :], out=h.reshape(grid))  # dh in the load's plane
+        H, H_plane, sag, T_max, length = block[_INPUTS : _INPUTS + len(_RESULTS)]
+        work = block[_INPUTS + len(_RESULTS) :]
+        grid = (m, n)
+        np.multiply(dh_scale[:, None], dhs[None, :], out=h.reshape(grid))  # dh in the load's plane
         if wind_scale is None:
-            np.copyto(a.reshape(grid), spans[:, None])
+            np.copyto(a.reshape(grid), spans[None, :])
         else:  # span_p² = span² + (dh wind/q)², without squaring the span
-            np.multiply(dhs[:, None], wind_scale[None, :], out=a.reshape(grid))
-            np.hypot(a.reshape(grid), spans[:, None], out=a.reshape(grid))
-        np.copyto(w.reshape(grid), w_k[None, :])
-        np.copyto(EA.reshape(grid), EA_k[None, :])
-        np.multiply(L0[:, None], k[None, :], out=L.reshape(grid))
-        H_plane, sag, T_max, length = (row.reshape(-1) for row in out[1:])
-        ok = _closure_z.solve_z(a, h, w, EA, L, H_plane, mm, block[_INPUTS:])
-        rows = block[_INPUTS : _INPUTS + _grid.ROWS]
+            np.multiply(wind_scale[:, None], dhs[None, :], out=a.reshape(grid))
+            np.hypot(a.reshape(grid), spans[None, :], out=a.reshape(grid))
+        np.copyto(w.reshape(grid), w_k[:, None])
+        np.copyto(EA.reshape(grid), EA_k[:, None])
+        np.multiply(k[:, None], L0[None, :], out=L.reshape(grid))
+        chord = np.sqrt(spans * spans + dhs * dhs)  # the plane turns about the chord
+        ok = _closure_z.solve_z(
+            a, h, w, EA, L, H_plane, mm, work, chord=np.broadcast_to(chord, grid).reshape(-1)
+        )
+        rows = work[: _grid.ROWS]
         with np.errstate(all="ignore"):
             ok &= closure_check(H_plane, mm, w, EA, L, a, h, rows)
         if not ok.all():
@@ -111,24 +119,36 @@ def _pass(spans, dhs, L0, states, out, names):
         length_into(H_plane, w, EA, L, rows, out=length)
         sag_into(H_plane, w, EA, a, h, rows, out=sag)
         if wind_scale is None:
-            np.copyto(out[0], out[1])
-        else:
-            np.multiply(out[1], spans[:, None], out=out[0])
-            out[0] /= a.reshape(grid)  # H along the span from H in the plane
+            np.copyto(H, H_plane)
+        else:  # H along the span from H in the plane
+            np.multiply(H_plane.reshape(grid), spans[None, :], out=H.reshape(grid))
+            H /= a
+        for row, result in zip(out, (H, H_plane, sag, T_max, length), strict=True):
+            np.copyto(row, result.reshape(grid))
 
 
 def catenary_states(spans, dhs, L0, EA, w, wind, k, names):
     """The exact states of a line (flat arrays: ``n`` spans, ``m`` states): a dict of the
-    results `_RESULTS`, each of shape ``(n, m)``."""
+    results `_RESULTS`, each an ``(n, m)`` view (state-major in memory, as solved)."""
     q = np.hypot(w, wind)
     windy = bool(np.any(wind))
     states = (q, q / k, EA * k, k, w / q, wind / q if windy else None)
-    out = np.empty((len(_RESULTS), spans.size, k.size))
+    out = np.empty((len(_RESULTS), k.size, spans.size))
     step = max(1, CHUNK // k.size)
     for lo in range(0, spans.size, step):
         part = slice(lo, lo + step)
-        _pass(spans[part], dhs[part], L0[part], states, out[:, part], names)
-    return dict(zip(_RESULTS, out, strict=True))
+        _pass(spans[part], dhs[part], L0[part], states, out[:, :, part], names)
+    results = dict(zip(_RESULTS, out.transpose(0, 2, 1), strict=True))
+    if not np.isfinite(out).all():  # one pass over the block; the name only on failure
+        _finite(results)
+    return results
+
+
+def _finite(results):
+    """Raise `ConvergenceError` naming the first result that is not finite everywhere."""
+    for key, result in results.items():
+        if not np.isfinite(result).all():
+            raise ConvergenceError(f"change_of_state: non-finite {key} for these data")
 
 
 def line_change_of_state(span, dh, EA, alpha, w0, t0, ref, w, t, wind, k, model):
@@ -151,14 +171,13 @@ def line_change_of_state(span, dh, EA, alpha, w0, t0, ref, w, t, wind, k, model)
         L0, H0_out, sag0_out = (np.broadcast_to(v, (spans.size, 1))[:, 0] for v in (L0, H0_out, sag0_out))
         H = H_plane * spans[:, None] / span_p
         out = dict(H=H, H_plane=H_plane, sag=sag, T_max=T_max, length=length)
+        _finite(out)
     else:
         L0, _, H0_out, sag0_out = reference_state(spans, dhs, w0, EA, value, name)
         out = catenary_states(spans, dhs, L0, EA, wf, windf, kf, {"H": "w", "length": name})
-    out["blowout"] = np.broadcast_to(np.arctan2(windf, wf), (spans.size, kf.size))
-    for key, result in out.items():
-        if not np.isfinite(result).all():
-            raise ConvergenceError(f"change_of_state: non-finite {key} for these data")
-    out = {key: np.ascontiguousarray(result).reshape(*lead, *shape) for key, result in out.items()}
+    blowout = np.arctan2(windf, wf)  # finite: w >= the smallest normal float, wind finite
+    out["blowout"] = np.broadcast_to(blowout, (spans.size, kf.size)).copy()
+    out = {key: result.reshape(*lead, *shape) for key, result in out.items()}
     for key, result in (("L0", L0), ("H0", H0_out), ("sag0", sag0_out)):
         out[key] = np.asarray(result, dtype=float).reshape(lead)
     return out

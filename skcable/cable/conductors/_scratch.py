@@ -31,10 +31,8 @@ def scratch(rows: int, size: int) -> Iterator[np.ndarray]:
     if pool is None:
         pool = _POOL.blocks = []
     need = rows * size
-    fits = [block for block in pool if block.size >= need]
-    block = min(fits, key=len) if fits else np.empty(need)
-    if fits:
-        pool.remove(block)
+    fits = [i for i, block in enumerate(pool) if block.size >= need]
+    block = pool.pop(min(fits, key=lambda i: pool[i].size)) if fits else np.empty(need)
     try:
         yield block[:need].reshape(rows, size)
     finally:
