@@ -29,12 +29,14 @@ from __future__ import annotations
 
 import math
 from functools import cached_property
+from math import asinh, cosh, sinh
 
 import numpy as np
 
 from skcable._checks import broadcast, exactly_one, float_range, positive, real, require, within
 from skcable._xp import namespace, power_of_two_near, scalar_math
-from skcable.cable._hanging import z_of_excess, z_of_length
+from skcable.cable._hanging import RHO_LIMIT as _RHO_LIMIT
+from skcable.cable._hanging import excess, z_of_excess
 from skcable.cable._roots import find_root
 from skcable.cable._special import (
     DSINHC_SERIES,
@@ -85,6 +87,8 @@ class Catenary(CableSolution):
         Vertex of the catenary (horizontal tangent, m); it may lie outside
         the span, where it is not a point of the cable.
     """
+
+    _xp = scalar_math  # the float path's back end; ``__init__`` sets the instance's own
 
     def __init__(self, span, dh, w, a, z, constraint: tuple[str, object]):
         self.span, self.dh, self.w, self.a, self.z = span, dh, w, a, z
@@ -607,6 +611,7 @@ _INF = math.inf
 _MAX_FLOAT = float(np.finfo(float).max)
 #: The least positive float (a subnormal): H/w above it has not underflowed to zero.
 TINY_POSITIVE = 5e-324
+_new = object.__new__
 
 
 def _length_on_floats(span, dh, w, length):
@@ -624,17 +629,20 @@ def _length_on_floats(span, dh, w, length):
         return None
     if not abs(dh) <= _STEEPEST * span:
         return None
-    z = z_of_length(span, dh, length)
+    rho = excess(span, dh, length)  # `z_of_length`, inlined
+    if rho is None or not rho < _RHO_LIMIT:
+        return None
+    z = z_of_excess(rho)[0]
     if z is None or not _Z_MIN <= z <= _Z_LIMIT:
         return None
     try:
         a = span / (2.0 * z)
-        sinh_z = math.sinh(z)
-        m = math.asinh(dh / span / (sinh_z / z))
+        sinh_z = sinh(z)
+        m = asinh(dh / span / (sinh_z / z))
         H = w * a
-        V_A, V_B = H * math.sinh(z - m), H * math.sinh(z + m)
-        T_A, T_B = H * math.cosh(m - z), H * math.cosh(m + z)
-        achieved = 2.0 * (a * sinh_z) * math.cosh(m)
+        V_A, V_B = H * sinh(z - m), H * sinh(z + m)
+        T_A, T_B = H * cosh(m - z), H * cosh(m + z)
+        achieved = 2.0 * (a * sinh_z) * cosh(m)
         weight = w * achieved
         t_a, v_a, t_b, v_b = H / T_A, V_A / T_A, H / T_B, V_B / T_B
         # `Catenary._residuals`, each within ACCEPT (a NaN fails every comparison)
@@ -649,9 +657,9 @@ def _length_on_floats(span, dh, w, length):
     # the vertex is below a cosh(u_A) = T_A/w (`Catenary.finite_beyond_residual`)
     if not (ok and -ACCEPT <= end_a <= ACCEPT and -ACCEPT <= end_b <= ACCEPT and a < _INF and T_A / w < _INF):
         return None
-    solution = Catenary.__new__(Catenary)
+    solution = _new(Catenary)  # `_xp` is the class's: `scalar_math`
     solution.__dict__ = {
-        "span": span, "dh": dh, "w": w, "a": a, "z": z, "_xp": scalar_math, "_sinh_z": sinh_z, "m": m,
+        "span": span, "dh": dh, "w": w, "a": a, "z": z, "_sinh_z": sinh_z, "m": m,
         "constraint": ("length", length), "H": H, "V_A": V_A, "V_B": V_B, "T_A": T_A, "T_B": T_B,
         "length": achieved,
     }  # fmt: skip
