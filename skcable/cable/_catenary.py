@@ -110,22 +110,32 @@ class Catenary(CableSolution):
     def _arrays(self):
         """Fill the forces and the length of an array of scenes at once: the formulas of the
         properties below, evaluated in place (the same bits, fewer temporaries: each new
-        array costs more than the arithmetic on it): the vectorised hot path."""
+        array costs more than the arithmetic on it): the vectorised hot path. The ends' forces
+        are the rows of two blocks, ``(V_A, V_B)`` and ``(T_A, T_B)``: each function is called
+        once for both ends (and so is each term of `residual`)."""
         a, z, m = self.a, self.z, self.m
         H = self.w * a
-        u = z - m  # -u_A
-        V_A, T_A = np.sinh(u), np.cosh(u)  # cosh is even: cosh(m - z)
-        V_A *= H
-        T_A *= H
-        np.add(z, m, out=u)
-        V_B, T_B = np.sinh(u), np.cosh(u)
-        V_B *= H
-        T_B *= H
+        u = np.empty((2, *m.shape))
+        np.subtract(z, m, out=u[0])  # -u_A
+        np.add(z, m, out=u[1])  # u_B
+        V, T = np.sinh(u), np.cosh(u)  # cosh is even: cosh(m - z)
+        V *= H
+        T *= H
         length = a * self._sinh_z
         length *= 2.0
-        length *= np.cosh(m, out=u)
-        self.__dict__.update(H=H, V_A=V_A, V_B=V_B, T_A=T_A, T_B=T_B, length=length)
+        length *= np.cosh(m, out=u[0])
+        self.__dict__.update(H=H, V_A=V[0], V_B=V[1], T_A=T[0], T_B=T[1], length=length, _ends=(V, T))
         return self
+
+    def _end_blocks(self, shape):
+        """``(V, T)``: the blocks of shape ``(2, *shape)`` of the ends' forces (`_arrays`'), or
+        new ones filled from the attributes."""
+        ends = self.__dict__.get("_ends")
+        if ends is not None and ends[0].shape[1:] == shape:
+            return ends
+        V, T = np.empty((2, *shape)), np.empty((2, *shape))
+        V[0], V[1], T[0], T[1] = self.V_A, self.V_B, self.T_A, self.T_B
+        return V, T
 
     def finite_beyond_residual(self) -> bool:
         """The length and the vertex are finite. The vertex need not be evaluated: ``|x_vertex|``
@@ -133,36 +143,51 @@ class Catenary(CableSolution):
         ``2 sinh²(u/2) < cosh u``), finite when ``max T_A / min w`` is."""
         if self._xp is not np:
             return super().finite_beyond_residual()
-        bound = float(np.max(self.T_A)) / float(np.min(self.w))
-        return bool(np.isfinite(self.length).all()) and (bound < math.inf or super().finite_beyond_residual())
+        w = self.w
+        bound = float(self.T_A.max()) / (w if isinstance(w, float) else float(np.min(w)))
+        return float(np.max(self.length)) < math.inf and (
+            bound < math.inf or super().finite_beyond_residual()
+        )
 
     def residual(self) -> float:
         """`CableSolution.residual`; on arrays the same terms, written in place into the rows
         of one block (then one reduction)."""
         if self._xp is not np or np.ndim(self.T_A) == 0:
             return super().residual()
-        T_A, T_B, V_A, V_B, H, w = self.T_A, self.T_B, self.V_A, self.V_B, self.H, self.w
-        shape = np.broadcast_shapes(np.shape(T_A), np.shape(w), np.shape(self.dh))
-        rows, two = np.empty((5, *shape)), np.empty(shape)
+        T_A, w = self.T_A, self.w
+        dh = self.dh
+        if isinstance(w, float) and isinstance(dh, float):
+            shape = T_A.shape
+        else:
+            shape = np.broadcast_shapes(T_A.shape, np.shape(w), np.shape(dh))
+        V, T = self._end_blocks(shape)
+        return self._residual_rows(np.empty((7, *shape)), V, T)
+
+    def _residual_rows(self, block, V, T):
+        """`residual` written into the first five rows of ``block`` (the last two are scratch),
+        with the ends' forces in the blocks ``V`` and ``T``."""
+        H, w = self.H, self.w
+        rows, two, pair = block[:5], block[5], block[5:]
         closure, balance, ends, met = rows[0], rows[1], rows[2:4], rows[4]
-        np.subtract(T_B, T_A, out=closure)
+        np.subtract(T[1], T[0], out=closure)
         closure -= w * self.dh
-        closure /= np.add(T_A, T_B, out=two)
+        closure /= np.add(T[0], T[1], out=two)
         np.multiply(w, self.length, out=two)  # the weight
-        np.add(V_A, V_B, out=balance)
+        np.add(V[0], V[1], out=balance)
         balance -= two
-        two += np.abs(V_A)
-        two += np.abs(V_B)
+        np.abs(V, out=ends)  # the rows of the ends, not yet written, as scratch
+        two += ends[0]
+        two += ends[1]
         balance /= two
-        for one, T, V in ((ends[0], T_A, V_A), (ends[1], T_B, V_B)):  # 0.5((1 - t)(1 + t) - v²)
-            np.divide(0.5, T, out=two)  # t = H/T, v = V/T through one reciprocal (halved)
-            np.multiply(V, two, out=one)
-            one *= one  # v²/4
-            two *= H  # t/2
-            np.square(two, out=two)
-            np.subtract(0.25, two, out=two)  # (1 - t²)/4
-            two -= one
-            np.multiply(two, 2.0, out=one)
+        # each end: 0.5((1 - t)(1 + t) - v²), t = H/T, v = V/T through one reciprocal (halved)
+        np.divide(0.5, T, out=pair)
+        np.multiply(V, pair, out=ends)
+        ends *= ends  # v²/4
+        pair *= H  # t/2
+        np.square(pair, out=pair)
+        np.subtract(0.25, pair, out=pair)  # (1 - t²)/4
+        pair -= ends
+        np.multiply(pair, 2.0, out=ends)
         name, value = self.constraint  # the constraint met, as in `_common_residuals`
         if name == "low":
             met[...] = self._common_residuals(np)[2]
@@ -666,6 +691,54 @@ def _length_on_floats(span, dh, w, length):
     return solution
 
 
+def _bounded(value, low, high):
+    """``value`` (a Python float or a float64 array of ``shape``) lies in ``(low, high)``: two
+    reductions on an array (a NaN fails them)."""
+    if isinstance(value, float):
+        return low < value < high
+    return low < value.min() and value.max() < high
+
+
+def _H_on_arrays(span, dh, w, H):
+    """`catenary(span, dh, w, H=H)` for float64 arrays ``span`` and ``H`` of one shape (``dh``
+    and ``w`` Python floats or float64 arrays of that shape), or None where any check of the
+    general path would fail or the data are of another kind: the general path then gives the
+    same solution, or raises naming the argument. The same checks, fused: two reductions an
+    argument, the two bounds of ``H/w`` at once, the steepness of a scalar ``dh`` against the
+    shortest span, no broadcasting (one shape)."""
+    shape = span.shape
+    if not (span.dtype == H.dtype == np.float64 and H.shape == shape and span.size):
+        return None
+    for value in (dh, w):
+        if not (
+            isinstance(value, float)
+            or (type(value) is np.ndarray and value.dtype == np.float64 and value.shape == shape)
+        ):
+            return None
+    if not (
+        _bounded(span, 0.0, _INF)
+        and _bounded(H, 0.0, _INF)
+        and _bounded(w, 0.0, _INF)
+        and _bounded(dh, -_INF, _INF)
+    ):
+        return None
+    if isinstance(dh, float):
+        if not abs(dh) / _STEEPEST <= span.min():  # `catenary`'s test, for the shortest span
+            return None
+    elif not (np.abs(dh) <= _STEEPEST * span).all():
+        return None
+    a = H / w
+    if not (TINY_POSITIVE <= a.min() and a.max() <= _MAX_FLOAT):
+        return None
+    z = span / a
+    z *= 0.5  # = 0.5 * span / a: halving is exact
+    if not (_Z_MIN <= z.min() and z.max() <= _Z_LIMIT):
+        return None
+    with float_range("H", "a result"):
+        solution = Catenary(span, dh, w, a, z, ("H", H[()]))._arrays()
+        return checked_closed_form(solution, "H", [])
+
+
 def hanging(span, dh, w, length) -> Catenary:
     """The catenary of ``length`` (float or array, > chord), unchecked: a start for the elastic
     forms, which check what they return. Data out of the closed form's range raise as in
@@ -724,6 +797,15 @@ def catenary(span, dh, w, *, length=None, sag=None, H=None, low=None, T_max=None
     """
     if length is not None and sag is None and H is None and low is None and T_max is None:
         solution = _length_on_floats(span, dh, w, length)  # one scene of Python numbers
+        if solution is not None:
+            return solution
+    elif (
+        H is not None
+        and type(span) is np.ndarray
+        and type(H) is np.ndarray
+        and length is sag is low is T_max is None
+    ):
+        solution = _H_on_arrays(span, dh, w, H)  # arrays of one shape
         if solution is not None:
             return solution
     span = positive("span", span)
