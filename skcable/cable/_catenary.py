@@ -30,6 +30,7 @@ from __future__ import annotations
 import math
 from functools import cached_property
 from math import asinh, cosh, sinh
+from typing import Any
 
 import numpy as np
 
@@ -88,7 +89,7 @@ class Catenary(CableSolution):
         the span, where it is not a point of the cable.
     """
 
-    _xp = scalar_math  # the float path's back end; ``__init__`` sets the instance's own
+    _xp: Any = scalar_math  # the float path's back end; ``__init__`` sets the instance's own
 
     def __init__(self, span, dh, w, a, z, constraint: tuple[str, object]):
         self.span, self.dh, self.w, self.a, self.z = span, dh, w, a, z
@@ -100,12 +101,23 @@ class Catenary(CableSolution):
             and np.ndim(z)
             and np.shape(z) == np.broadcast_shapes(np.shape(dh), np.shape(span), np.shape(z))
         ):
-            m = self._sinh_z / z  # dh / span / (sinh z / z), in place
-            np.arcsinh(np.divide(dh / span, m, out=m), out=m)
-            self.m = m
+            self.m = _m_in_place(span, dh, z, self._sinh_z)
         else:
             self.m = xp.arcsinh(dh / span / (self._sinh_z / z))
         self.constraint = constraint
+
+    @classmethod
+    def _of_one_shape(cls, span, dh, w, a, z, constraint: tuple[str, object]) -> Catenary:
+        """`Catenary` of arrays ``a`` and ``z`` of one shape that ``span``, ``dh`` and ``w`` (floats
+        or arrays) broadcast to, with its forces and length filled (`_arrays`): ``__init__``
+        without its tests of the kind and shape of the data."""
+        solution = _new(cls)
+        sinh_z = np.sinh(z)
+        solution.__dict__.update(
+            span=span, dh=dh, w=w, a=a, z=z, _xp=np, _sinh_z=sinh_z, m=_m_in_place(span, dh, z, sinh_z),
+            constraint=constraint,
+        )  # fmt: skip
+        return solution._arrays()
 
     def _arrays(self):
         """Fill the forces and the length of an array of scenes at once: the formulas of the
@@ -179,15 +191,15 @@ class Catenary(CableSolution):
         two += ends[0]
         two += ends[1]
         balance /= two
-        # each end: 0.5((1 - t)(1 + t) - v²), t = H/T, v = V/T through one reciprocal (halved)
-        np.divide(0.5, T, out=pair)
+        # each end: (1 - t² - v²)/2, t = H/T, v = V/T through one reciprocal scaled by √½ (its
+        # rounding, 1e-16 relative, moves the term by 1e-16: the round-off the term measures)
+        np.divide(_SQRT_HALF, T, out=pair)
         np.multiply(V, pair, out=ends)
-        ends *= ends  # v²/4
-        pair *= H  # t/2
-        np.square(pair, out=pair)
-        np.subtract(0.25, pair, out=pair)  # (1 - t²)/4
-        pair -= ends
-        np.multiply(pair, 2.0, out=ends)
+        ends *= ends  # v²/2
+        pair *= H
+        np.square(pair, out=pair)  # t²/2
+        np.subtract(0.5, pair, out=pair)
+        np.subtract(pair, ends, out=ends)
         name, value = self.constraint  # the constraint met, as in `_common_residuals`
         if name == "low":
             met[...] = self._common_residuals(np)[2]
@@ -346,6 +358,14 @@ class Catenary(CableSolution):
         # V_A and V_B cancel for taut inclined cables (|V| ~ H·|dh|/span >> weight)
         yield (V_A + V_B - weight) / (xp.abs(V_A) + xp.abs(V_B) + weight)
         yield from self._common_residuals(xp)
+
+
+def _m_in_place(span, dh, z, sinh_z):
+    """The angle at mid-span, ``asinh(dh / span / (sinh z / z))``, for an array ``z`` of the
+    shape the data broadcast to: each step in place in the array of ``sinh z / z``."""
+    m = sinh_z / z
+    np.arcsinh(np.divide(dh / span, m, out=m), out=m)
+    return m
 
 
 def lowest_point_y(u_a, u_b, y_vertex, dh):
@@ -637,6 +657,7 @@ _MAX_FLOAT = float(np.finfo(float).max)
 #: The least positive float (a subnormal): H/w above it has not underflowed to zero.
 TINY_POSITIVE = 5e-324
 _new = object.__new__
+_SQRT_HALF = math.sqrt(0.5)
 
 
 def _length_on_floats(span, dh, w, length):
@@ -735,8 +756,7 @@ def _H_on_arrays(span, dh, w, H):
     if not (_Z_MIN <= z.min() and z.max() <= _Z_LIMIT):
         return None
     with float_range("H", "a result"):
-        solution = Catenary(span, dh, w, a, z, ("H", H[()]))._arrays()
-        return checked_closed_form(solution, "H", [])
+        return checked_closed_form(Catenary._of_one_shape(span, dh, w, a, z, ("H", H[()])), "H", [])
 
 
 def hanging(span, dh, w, length) -> Catenary:
