@@ -156,8 +156,9 @@ class Catenary(CableSolution):
         if self._xp is not np:
             return super().finite_beyond_residual()
         w = self.w
-        bound = float(self.T_A.max()) / (w if isinstance(w, float) else float(np.min(w)))
-        return float(np.max(self.length)) < math.inf and (
+        bound = float(_MAX(self.T_A, axis=None)) / (w if isinstance(w, float) else float(np.min(w)))
+        # the length is positive: finite where its largest is (a NaN makes that NaN)
+        return float(_MAX(self.length, axis=None)) < math.inf and (
             bound < math.inf or super().finite_beyond_residual()
         )
 
@@ -658,6 +659,7 @@ _MAX_FLOAT = float(np.finfo(float).max)
 TINY_POSITIVE = 5e-324
 _new = object.__new__
 _SQRT_HALF = math.sqrt(0.5)
+_MIN, _MAX = np.minimum.reduce, np.maximum.reduce
 
 
 def _length_on_floats(span, dh, w, length):
@@ -712,49 +714,55 @@ def _length_on_floats(span, dh, w, length):
     return solution
 
 
-def _bounded(value, low, high):
-    """``value`` (a Python float or a float64 array of ``shape``) lies in ``(low, high)``: two
-    reductions on an array (a NaN fails them)."""
+def _range(value):
+    """``(min, max)`` of a Python float or a float64 array: two reductions on an array (a NaN
+    makes them NaN, which fails every bound)."""
     if isinstance(value, float):
-        return low < value < high
-    return low < value.min() and value.max() < high
+        return value, value
+    return _MIN(value, axis=None), _MAX(value, axis=None)  # the ufuncs' reductions, unwrapped
+
+
+def _floats_of_shape(shape, *values):
+    """Each of ``values`` is a Python float or a float64 array of ``shape``."""
+    return all(
+        isinstance(v, float) or (type(v) is np.ndarray and v.dtype == np.float64 and v.shape == shape)
+        for v in values
+    )
 
 
 def _H_on_arrays(span, dh, w, H):
     """`catenary(span, dh, w, H=H)` for float64 arrays ``span`` and ``H`` of one shape (``dh``
     and ``w`` Python floats or float64 arrays of that shape), or None where any check of the
     general path would fail or the data are of another kind: the general path then gives the
-    same solution, or raises naming the argument. The same checks, fused: two reductions an
-    argument, the two bounds of ``H/w`` at once, the steepness of a scalar ``dh`` against the
-    shortest span, no broadcasting (one shape)."""
+    same solution, or raises naming the argument.
+
+    The same checks, fused: two reductions an argument, none on ``H/w`` when ``w`` is a float
+    and none on ``z``. Correctly rounded division and halving are monotone, so that
+    ``fl(H_min/w)`` and ``fl(H_max/w)`` are the extremes of ``a = H/w``, and
+    ``z = fl(fl(span/a)/2)`` lies between ``fl(fl(span_min/a_max)/2)`` and
+    ``fl(fl(span_max/a_min)/2)``: the bounds of ``z`` are tested on these (where they are too
+    wide, the general path tests every element)."""
     shape = span.shape
-    if not (span.dtype == H.dtype == np.float64 and H.shape == shape and span.size):
+    if not (span.dtype == H.dtype == np.float64 and span.size and _floats_of_shape(shape, H, dh, w)):
         return None
-    for value in (dh, w):
-        if not (
-            isinstance(value, float)
-            or (type(value) is np.ndarray and value.dtype == np.float64 and value.shape == shape)
-        ):
-            return None
-    if not (
-        _bounded(span, 0.0, _INF)
-        and _bounded(H, 0.0, _INF)
-        and _bounded(w, 0.0, _INF)
-        and _bounded(dh, -_INF, _INF)
-    ):
+    (span_lo, span_hi), (H_lo, H_hi), (w_lo, w_hi), (dh_lo, dh_hi) = map(_range, (span, H, w, dh))
+    if not (0.0 < span_lo and span_hi < _INF and 0.0 < H_lo and H_hi < _INF and 0.0 < w_lo and w_hi < _INF):
+        return None
+    if not -_INF < dh_lo <= dh_hi < _INF:
         return None
     if isinstance(dh, float):
-        if not abs(dh) / _STEEPEST <= span.min():  # `catenary`'s test, for the shortest span
+        if not abs(dh) / _STEEPEST <= span_lo:  # `catenary`'s test, for the shortest span
             return None
     elif not (np.abs(dh) <= _STEEPEST * span).all():
         return None
     a = H / w
-    if not (TINY_POSITIVE <= a.min() and a.max() <= _MAX_FLOAT):
+    a_lo, a_hi = (H_lo / w, H_hi / w) if isinstance(w, float) else _range(a)
+    if not (TINY_POSITIVE <= a_lo and a_hi <= _MAX_FLOAT):
+        return None
+    if not (_Z_MIN <= span_lo / a_hi * 0.5 and span_hi / a_lo * 0.5 <= _Z_LIMIT):
         return None
     z = span / a
     z *= 0.5  # = 0.5 * span / a: halving is exact
-    if not (_Z_MIN <= z.min() and z.max() <= _Z_LIMIT):
-        return None
     with float_range("H", "a result"):
         return checked_closed_form(Catenary._of_one_shape(span, dh, w, a, z, ("H", H[()])), "H", [])
 

@@ -46,7 +46,8 @@ def largest_abs(value) -> float:
     """``max(|value|)`` as a float, NaN if any element is NaN; cheap on scalars."""
     if not isinstance(value, np.ndarray):
         return abs(float(value))
-    top, low = float(value.max()), float(value.min())  # two reductions, no |value| array
+    # two reductions (the ufuncs', without ndarray.max's wrapper), no |value| array
+    top, low = float(np.maximum.reduce(value, axis=None)), float(np.minimum.reduce(value, axis=None))
     return top if top != top else low if low != low else max(top, -low)
 
 

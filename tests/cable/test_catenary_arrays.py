@@ -95,3 +95,14 @@ def test_refusals_name_the_argument(span, dh, w, H, argument):
     with pytest.raises(InputError) as info:
         cable.catenary(span, dh, w, H=H)
     assert info.value.argument == argument
+
+
+def test_data_whose_fused_bounds_are_too_wide_still_solve():
+    """z = 0.5 and 500 in one call: the bound of z from the extremes of span and H/w exceeds
+    709, so every element is tested (the general path), and each is solved."""
+    spans, w, H = np.array([1000.0, 1.0]), 2.0, np.array([2000.0, 0.002])
+    c = cable.catenary(spans, -0.5, w, H=H)
+    assert c.z == pytest.approx([0.5, 500.0], rel=1e-15)
+    for i in range(2):
+        ref = _mp_catenary(spans[i], -0.5, w, H[i])
+        assert [float(getattr(c, n)[i]) for n in NAMES] == pytest.approx(ref, rel=1e-13, abs=1e-12)
