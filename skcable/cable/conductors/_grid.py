@@ -38,6 +38,16 @@ CHECK_ULPS = 64.0
 ROWS = 10
 
 
+def _tension_and_p(tv, H_sq, T, p):
+    """The tension ``T = sqrt(T_v² + H²)`` and ``p = |T_v| + T`` of an end (or a point) into
+    ``T`` and ``p``, from its vertical tension ``tv`` and ``H_sq = H²``, in place."""
+    np.multiply(tv, tv, out=T)
+    T += H_sq
+    np.sqrt(T, out=T)
+    np.abs(tv, out=p)
+    p += T
+
+
 def _ratio_of_ends(tv_a, tv_b, P_a, P_b, H2, out):
     """``p_B/p_A`` into ``out`` from ``P = T + |T_v|``: ``P_A P_B/H²`` where the slopes at the
     ends have opposite signs, ``P_B/P_A`` where both rise, ``P_A/P_B`` where both fall."""
@@ -62,16 +72,8 @@ def closure_terms(H, m, w, EA, L, a, h, rows):
         np.subtract(m, v, out=tv_a)
         np.add(m, v, out=tv_b)
         np.multiply(H, H, out=v)
-        np.multiply(tv_a, tv_a, out=T_A)
-        T_A += v
-        np.sqrt(T_A, out=T_A)
-        np.multiply(tv_b, tv_b, out=T_B)
-        T_B += v
-        np.sqrt(T_B, out=T_B)
-        np.abs(tv_a, out=res)
-        res += T_A
-        np.abs(tv_b, out=terms)
-        terms += T_B
+        _tension_and_p(tv_a, v, T_A, res)
+        _tension_and_p(tv_b, v, T_B, terms)
         _ratio_of_ends(tv_a, tv_b, res, terms, v, out=arc)
         arc += 1.0
         arc *= u
@@ -144,13 +146,9 @@ def sag_into(H, w, EA, a, h, rows, out):
         np.subtract(tv_s, tv_a, out=s)
         s /= w
         np.multiply(H, H, out=u)
-        np.multiply(tv_s, tv_s, out=T_s)
-        T_s += u
-        np.sqrt(T_s, out=T_s)
+        _tension_and_p(tv_s, u, T_s, v)
         np.abs(tv_a, out=P_a)
         P_a += T_A
-        np.abs(tv_s, out=v)
-        v += T_s
         _ratio_of_ends(tv_a, tv_s, P_a, v, u, out=out)  # p_s / p_A
         out += 1.0
         out *= s
