@@ -831,7 +831,10 @@ def catenary(span, dh, w, *, length=None, sag=None, H=None, low=None, T_max=None
         H is not None
         and type(span) is np.ndarray
         and type(H) is np.ndarray
-        and length is sag is low is T_max is None
+        and length is None
+        and sag is None
+        and low is None
+        and T_max is None
     ):
         solution = _H_on_arrays(span, dh, w, H)  # arrays of one shape
         if solution is not None:
