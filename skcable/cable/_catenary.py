@@ -29,12 +29,15 @@ from __future__ import annotations
 
 import math
 from functools import cached_property
+from math import asinh, cosh, sinh
+from typing import Any
 
 import numpy as np
 
 from skcable._checks import broadcast, exactly_one, float_range, positive, real, require, within
 from skcable._xp import namespace, power_of_two_near, scalar_math
-from skcable.cable._hanging import z_of_excess, z_of_length
+from skcable.cable._hanging import RHO_LIMIT as _RHO_LIMIT
+from skcable.cable._hanging import excess, z_of_excess
 from skcable.cable._roots import find_root
 from skcable.cable._special import (
     DSINHC_SERIES,
@@ -86,6 +89,8 @@ class Catenary(CableSolution):
         the span, where it is not a point of the cable.
     """
 
+    _xp: Any = scalar_math  # the float path's back end; ``__init__`` sets the instance's own
+
     def __init__(self, span, dh, w, a, z, constraint: tuple[str, object]):
         self.span, self.dh, self.w, self.a, self.z = span, dh, w, a, z
         self._xp = xp = namespace(span, dh, w, a, z)
@@ -96,32 +101,53 @@ class Catenary(CableSolution):
             and np.ndim(z)
             and np.shape(z) == np.broadcast_shapes(np.shape(dh), np.shape(span), np.shape(z))
         ):
-            m = self._sinh_z / z  # dh / span / (sinh z / z), in place
-            np.arcsinh(np.divide(dh / span, m, out=m), out=m)
-            self.m = m
+            self.m = _m_in_place(span, dh, z, self._sinh_z)
         else:
             self.m = xp.arcsinh(dh / span / (self._sinh_z / z))
         self.constraint = constraint
 
+    @classmethod
+    def _of_one_shape(cls, span, dh, w, a, z, constraint: tuple[str, object]) -> Catenary:
+        """`Catenary` of arrays ``a`` and ``z`` of one shape that ``span``, ``dh`` and ``w`` (floats
+        or arrays) broadcast to, with its forces and length filled (`_arrays`): ``__init__``
+        without its tests of the kind and shape of the data."""
+        solution = _new(cls)
+        sinh_z = np.sinh(z)
+        solution.__dict__.update(
+            span=span, dh=dh, w=w, a=a, z=z, _xp=np, _sinh_z=sinh_z, m=_m_in_place(span, dh, z, sinh_z),
+            constraint=constraint,
+        )  # fmt: skip
+        return solution._arrays()
+
     def _arrays(self):
         """Fill the forces and the length of an array of scenes at once: the formulas of the
         properties below, evaluated in place (the same bits, fewer temporaries: each new
-        array costs more than the arithmetic on it): the vectorised hot path."""
+        array costs more than the arithmetic on it): the vectorised hot path. The ends' forces
+        are the rows of two blocks, ``(V_A, V_B)`` and ``(T_A, T_B)``: each function is called
+        once for both ends (and so is each term of `residual`)."""
         a, z, m = self.a, self.z, self.m
         H = self.w * a
-        u = z - m  # -u_A
-        V_A, T_A = np.sinh(u), np.cosh(u)  # cosh is even: cosh(m - z)
-        V_A *= H
-        T_A *= H
-        np.add(z, m, out=u)
-        V_B, T_B = np.sinh(u), np.cosh(u)
-        V_B *= H
-        T_B *= H
+        u = np.empty((2, *m.shape))
+        np.subtract(z, m, out=u[0])  # -u_A
+        np.add(z, m, out=u[1])  # u_B
+        V, T = np.sinh(u), np.cosh(u)  # cosh is even: cosh(m - z)
+        V *= H
+        T *= H
         length = a * self._sinh_z
         length *= 2.0
-        length *= np.cosh(m, out=u)
-        self.__dict__.update(H=H, V_A=V_A, V_B=V_B, T_A=T_A, T_B=T_B, length=length)
+        length *= np.cosh(m, out=u[0])
+        self.__dict__.update(H=H, V_A=V[0], V_B=V[1], T_A=T[0], T_B=T[1], length=length, _ends=(V, T))
         return self
+
+    def _end_blocks(self, shape):
+        """``(V, T)``: the blocks of shape ``(2, *shape)`` of the ends' forces (`_arrays`'), or
+        new ones filled from the attributes."""
+        ends = self.__dict__.get("_ends")
+        if ends is not None and ends[0].shape[1:] == shape:
+            return ends
+        V, T = np.empty((2, *shape)), np.empty((2, *shape))
+        V[0], V[1], T[0], T[1] = self.V_A, self.V_B, self.T_A, self.T_B
+        return V, T
 
     def finite_beyond_residual(self) -> bool:
         """The length and the vertex are finite. The vertex need not be evaluated: ``|x_vertex|``
@@ -129,36 +155,52 @@ class Catenary(CableSolution):
         ``2 sinh²(u/2) < cosh u``), finite when ``max T_A / min w`` is."""
         if self._xp is not np:
             return super().finite_beyond_residual()
-        bound = float(np.max(self.T_A)) / float(np.min(self.w))
-        return bool(np.isfinite(self.length).all()) and (bound < math.inf or super().finite_beyond_residual())
+        w = self.w
+        bound = float(_MAX(self.T_A, axis=None)) / (w if isinstance(w, float) else float(np.min(w)))
+        # the length is positive: finite where its largest is (a NaN makes that NaN)
+        return float(_MAX(self.length, axis=None)) < math.inf and (
+            bound < math.inf or super().finite_beyond_residual()
+        )
 
     def residual(self) -> float:
         """`CableSolution.residual`; on arrays the same terms, written in place into the rows
         of one block (then one reduction)."""
         if self._xp is not np or np.ndim(self.T_A) == 0:
             return super().residual()
-        T_A, T_B, V_A, V_B, H, w = self.T_A, self.T_B, self.V_A, self.V_B, self.H, self.w
-        shape = np.broadcast_shapes(np.shape(T_A), np.shape(w), np.shape(self.dh))
-        rows, two = np.empty((5, *shape)), np.empty(shape)
+        T_A, w = self.T_A, self.w
+        dh = self.dh
+        if isinstance(w, float) and isinstance(dh, float):
+            shape = T_A.shape
+        else:
+            shape = np.broadcast_shapes(T_A.shape, np.shape(w), np.shape(dh))
+        V, T = self._end_blocks(shape)
+        return self._residual_rows(np.empty((7, *shape)), V, T)
+
+    def _residual_rows(self, block, V, T):
+        """`residual` written into the first five rows of ``block`` (the last two are scratch),
+        with the ends' forces in the blocks ``V`` and ``T``."""
+        H, w = self.H, self.w
+        rows, two, pair = block[:5], block[5], block[5:]
         closure, balance, ends, met = rows[0], rows[1], rows[2:4], rows[4]
-        np.subtract(T_B, T_A, out=closure)
+        np.subtract(T[1], T[0], out=closure)
         closure -= w * self.dh
-        closure /= np.add(T_A, T_B, out=two)
+        closure /= np.add(T[0], T[1], out=two)
         np.multiply(w, self.length, out=two)  # the weight
-        np.add(V_A, V_B, out=balance)
+        np.add(V[0], V[1], out=balance)
         balance -= two
-        two += np.abs(V_A)
-        two += np.abs(V_B)
+        np.abs(V, out=ends)  # the rows of the ends, not yet written, as scratch
+        two += ends[0]
+        two += ends[1]
         balance /= two
-        for one, T, V in ((ends[0], T_A, V_A), (ends[1], T_B, V_B)):  # 0.5((1 - t)(1 + t) - v²)
-            np.divide(0.5, T, out=two)  # t = H/T, v = V/T through one reciprocal (halved)
-            np.multiply(V, two, out=one)
-            one *= one  # v²/4
-            two *= H  # t/2
-            np.square(two, out=two)
-            np.subtract(0.25, two, out=two)  # (1 - t²)/4
-            two -= one
-            np.multiply(two, 2.0, out=one)
+        # each end: (1 - t² - v²)/2, t = H/T, v = V/T through one reciprocal scaled by √½ (its
+        # rounding, 1e-16 relative, moves the term by 1e-16: the round-off the term measures)
+        np.divide(_SQRT_HALF, T, out=pair)
+        np.multiply(V, pair, out=ends)
+        ends *= ends  # v²/2
+        pair *= H
+        np.square(pair, out=pair)  # t²/2
+        np.subtract(0.5, pair, out=pair)
+        np.subtract(pair, ends, out=ends)
         name, value = self.constraint  # the constraint met, as in `_common_residuals`
         if name == "low":
             met[...] = self._common_residuals(np)[2]
@@ -317,6 +359,14 @@ class Catenary(CableSolution):
         # V_A and V_B cancel for taut inclined cables (|V| ~ H·|dh|/span >> weight)
         yield (V_A + V_B - weight) / (xp.abs(V_A) + xp.abs(V_B) + weight)
         yield from self._common_residuals(xp)
+
+
+def _m_in_place(span, dh, z, sinh_z):
+    """The angle at mid-span, ``asinh(dh / span / (sinh z / z))``, for an array ``z`` of the
+    shape the data broadcast to: each step in place in the array of ``sinh z / z``."""
+    m = sinh_z / z
+    np.arcsinh(np.divide(dh / span, m, out=m), out=m)
+    return m
 
 
 def lowest_point_y(u_a, u_b, y_vertex, dh):
@@ -607,6 +657,9 @@ _INF = math.inf
 _MAX_FLOAT = float(np.finfo(float).max)
 #: The least positive float (a subnormal): H/w above it has not underflowed to zero.
 TINY_POSITIVE = 5e-324
+_new = object.__new__
+_SQRT_HALF = math.sqrt(0.5)
+_MIN, _MAX = np.minimum.reduce, np.maximum.reduce
 
 
 def _length_on_floats(span, dh, w, length):
@@ -624,17 +677,20 @@ def _length_on_floats(span, dh, w, length):
         return None
     if not abs(dh) <= _STEEPEST * span:
         return None
-    z = z_of_length(span, dh, length)
+    rho = excess(span, dh, length)  # `z_of_length`, inlined
+    if rho is None or not rho < _RHO_LIMIT:
+        return None
+    z = z_of_excess(rho)[0]
     if z is None or not _Z_MIN <= z <= _Z_LIMIT:
         return None
     try:
         a = span / (2.0 * z)
-        sinh_z = math.sinh(z)
-        m = math.asinh(dh / span / (sinh_z / z))
+        sinh_z = sinh(z)
+        m = asinh(dh / span / (sinh_z / z))
         H = w * a
-        V_A, V_B = H * math.sinh(z - m), H * math.sinh(z + m)
-        T_A, T_B = H * math.cosh(m - z), H * math.cosh(m + z)
-        achieved = 2.0 * (a * sinh_z) * math.cosh(m)
+        V_A, V_B = H * sinh(z - m), H * sinh(z + m)
+        T_A, T_B = H * cosh(m - z), H * cosh(m + z)
+        achieved = 2.0 * (a * sinh_z) * cosh(m)
         weight = w * achieved
         t_a, v_a, t_b, v_b = H / T_A, V_A / T_A, H / T_B, V_B / T_B
         # `Catenary._residuals`, each within ACCEPT (a NaN fails every comparison)
@@ -649,13 +705,66 @@ def _length_on_floats(span, dh, w, length):
     # the vertex is below a cosh(u_A) = T_A/w (`Catenary.finite_beyond_residual`)
     if not (ok and -ACCEPT <= end_a <= ACCEPT and -ACCEPT <= end_b <= ACCEPT and a < _INF and T_A / w < _INF):
         return None
-    solution = Catenary.__new__(Catenary)
+    solution = _new(Catenary)  # `_xp` is the class's: `scalar_math`
     solution.__dict__ = {
-        "span": span, "dh": dh, "w": w, "a": a, "z": z, "_xp": scalar_math, "_sinh_z": sinh_z, "m": m,
+        "span": span, "dh": dh, "w": w, "a": a, "z": z, "_sinh_z": sinh_z, "m": m,
         "constraint": ("length", length), "H": H, "V_A": V_A, "V_B": V_B, "T_A": T_A, "T_B": T_B,
         "length": achieved,
     }  # fmt: skip
     return solution
+
+
+def _range(value):
+    """``(min, max)`` of a Python float or a float64 array: two reductions on an array (a NaN
+    makes them NaN, which fails every bound)."""
+    if isinstance(value, float):
+        return value, value
+    return _MIN(value, axis=None), _MAX(value, axis=None)  # the ufuncs' reductions, unwrapped
+
+
+def _floats_of_shape(shape, *values):
+    """Each of ``values`` is a Python float or a float64 array of ``shape``."""
+    return all(
+        isinstance(v, float) or (type(v) is np.ndarray and v.dtype == np.float64 and v.shape == shape)
+        for v in values
+    )
+
+
+def _H_on_arrays(span, dh, w, H):
+    """`catenary(span, dh, w, H=H)` for float64 arrays ``span`` and ``H`` of one shape (``dh``
+    and ``w`` Python floats or float64 arrays of that shape), or None where any check of the
+    general path would fail or the data are of another kind: the general path then gives the
+    same solution, or raises naming the argument.
+
+    The same checks, fused: two reductions an argument, none on ``H/w`` when ``w`` is a float
+    and none on ``z``. Correctly rounded division and halving are monotone, so that
+    ``fl(H_min/w)`` and ``fl(H_max/w)`` are the extremes of ``a = H/w``, and
+    ``z = fl(fl(span/a)/2)`` lies between ``fl(fl(span_min/a_max)/2)`` and
+    ``fl(fl(span_max/a_min)/2)``: the bounds of ``z`` are tested on these (where they are too
+    wide, the general path tests every element)."""
+    shape = span.shape
+    if not (span.dtype == H.dtype == np.float64 and span.size and _floats_of_shape(shape, H, dh, w)):
+        return None
+    (span_lo, span_hi), (H_lo, H_hi), (w_lo, w_hi), (dh_lo, dh_hi) = map(_range, (span, H, w, dh))
+    if not (0.0 < span_lo and span_hi < _INF and 0.0 < H_lo and H_hi < _INF and 0.0 < w_lo and w_hi < _INF):
+        return None
+    if not -_INF < dh_lo <= dh_hi < _INF:
+        return None
+    if isinstance(dh, float):
+        if not abs(dh) / _STEEPEST <= span_lo:  # `catenary`'s test, for the shortest span
+            return None
+    elif not (np.abs(dh) <= _STEEPEST * span).all():
+        return None
+    a = H / w
+    a_lo, a_hi = (H_lo / w, H_hi / w) if isinstance(w, float) else _range(a)
+    if not (TINY_POSITIVE <= a_lo and a_hi <= _MAX_FLOAT):
+        return None
+    if not (_Z_MIN <= span_lo / a_hi * 0.5 and span_hi / a_lo * 0.5 <= _Z_LIMIT):
+        return None
+    z = span / a
+    z *= 0.5  # = 0.5 * span / a: halving is exact
+    with float_range("H", "a result"):
+        return checked_closed_form(Catenary._of_one_shape(span, dh, w, a, z, ("H", H[()])), "H", [])
 
 
 def hanging(span, dh, w, length) -> Catenary:
@@ -716,6 +825,18 @@ def catenary(span, dh, w, *, length=None, sag=None, H=None, low=None, T_max=None
     """
     if length is not None and sag is None and H is None and low is None and T_max is None:
         solution = _length_on_floats(span, dh, w, length)  # one scene of Python numbers
+        if solution is not None:
+            return solution
+    elif (
+        H is not None
+        and type(span) is np.ndarray
+        and type(H) is np.ndarray
+        and length is None
+        and sag is None
+        and low is None
+        and T_max is None
+    ):
+        solution = _H_on_arrays(span, dh, w, H)  # arrays of one shape
         if solution is not None:
             return solution
     span = positive("span", span)

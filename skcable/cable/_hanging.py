@@ -17,36 +17,39 @@ that names the argument).
 from __future__ import annotations
 
 import math
+from math import log1p, sqrt
 
 from skcable.cable._special import sinhc_pair
 
-__all__ = ["hanging_forces", "start", "step", "z_of_excess", "z_of_length"]
+__all__ = ["RHO_LIMIT", "excess", "hanging_forces", "start", "step", "z_of_excess", "z_of_length"]
 
 #: sinh(z)/z at the largest z evaluated (cosh overflows beyond).
-_RHO_LIMIT = math.sinh(709.0) / 709.0
+RHO_LIMIT = math.sinh(709.0) / 709.0
 
 
-def _excess(span, dh, length):
+def excess(span, dh, length):
     """``rho = sqrt(S² - dh²)/span - 1`` free of cancellation (lengths brought to order one by
     a power of two), or None when the length does not exceed the chord."""
     legs = abs(dh)
-    unit = math.ldexp(0.5, math.frexp(span if span > legs else legs)[1])
-    span, dh, legs, length = span / unit, dh / unit, legs / unit, length / unit  # exact
-    chord = math.sqrt(span * span + dh * dh)  # both below 1: as the array path
+    top = span if span > legs else legs
+    if not (1e-100 < top and length < 1e100 and top < 1e100):  # else every square is normal and
+        unit = math.ldexp(0.5, math.frexp(top)[1])  # the scaling, exact, changes no bit
+        span, dh, legs, length = span / unit, dh / unit, legs / unit, length / unit
+    chord = sqrt(span * span + dh * dh)
     if not length > chord:
         return None
     if length < 2.0 * chord:
         longer, shorter = (span, legs) if span >= legs else (legs, span)
         excess_sq = (length - longer) * (length + longer) - shorter * shorter
-        return excess_sq / span / (math.sqrt((length - legs) * (length + legs)) + span)
-    return math.sqrt((length - legs) / span) * math.sqrt((length + legs) / span) - 1.0
+        return excess_sq / span / (sqrt((length - legs) * (length + legs)) + span)
+    return sqrt((length - legs) / span) * sqrt((length + legs) / span) - 1.0
 
 
 def z_of_length(span: float, dh: float, length: float) -> float | None:
     """``z = span/(2a)`` of the catenary of unstretched ``length`` from A = (0, 0) to
     B = (span, dh) (m), or None outside the closed form's range."""
-    rho = _excess(span, dh, length)
-    if rho is None or not rho < _RHO_LIMIT:
+    rho = excess(span, dh, length)
+    if rho is None or not rho < RHO_LIMIT:
         return None
     return z_of_excess(rho)[0]
 
@@ -90,10 +93,21 @@ def step(z: float, target: float) -> float:
 
 def z_of_excess(rho: float) -> tuple[float | None, list]:
     """The root of ``sinh(z)/z = 1 + rho`` (``0 < rho < sinh(709)/709``) and the history of
-    the relative steps, or None (with the history) if the iteration does not settle."""
-    target, z, history = math.log1p(rho), start(rho), []
+    the relative steps, or None (with the history) if the iteration does not settle.
+
+    `start` and `step` (the same operations), inlined where the closed forms spend their
+    time: ``rho < 1`` and ``z`` in [1e-150, 1]."""
+    target, history = log1p(rho), []
+    z = sqrt(rho * (6.0 + rho * (-1.8 + 0.8229 * rho))) if rho < 1.0 else start(rho)
     for _ in range(100):
-        change = step(z, target)
+        if 1e-150 <= z < 1.0:
+            phi, slope = sinhc_pair(z)
+            newton = (log1p(phi) - target) * (1.0 + phi) / slope
+            curvature = phi * (2.0 + phi) / (z * z) / (1.0 + phi) / (1.0 + phi)
+            correction = 0.5 * newton * curvature / (slope / (1.0 + phi))
+            change = newton / (1.0 - correction) if abs(correction) <= 0.5 else newton
+        else:
+            change = step(z, target)
         z = z - change
         history.append(abs(change / z))
         if history[-1] < 1e-7:  # cubic convergence: the error is now below 1e-20

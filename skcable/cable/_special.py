@@ -46,7 +46,8 @@ def largest_abs(value) -> float:
     """``max(|value|)`` as a float, NaN if any element is NaN; cheap on scalars."""
     if not isinstance(value, np.ndarray):
         return abs(float(value))
-    top, low = float(value.max()), float(value.min())  # two reductions, no |value| array
+    # two reductions (the ufuncs', without ndarray.max's wrapper), no |value| array
+    top, low = float(np.maximum.reduce(value, axis=None)), float(np.minimum.reduce(value, axis=None))
     return top if top != top else low if low != low else max(top, -low)
 
 
@@ -88,16 +89,26 @@ _D0, _D1, _D2, _D3, _D4, _D5, _D6, _D7, _D8 = _DSINHC
 
 
 def sinhc_pair(z: float) -> tuple[float, float]:
-    """`sinhc_m1` and `dsinhc` of one Python float ``z > 0``, by the same operations (the
-    same bits) unrolled: the hot scalar path of the catenary's length solve."""
+    """`sinhc_m1` and `dsinhc` of one Python float ``z > 0``, by the same series unrolled: the
+    hot scalar path of the catenary's length solve. Below ``z² = 0.01`` five terms of each
+    series, below 0.1 seven, reach what nine do (the first term left out is below 1e-18 of the
+    sum there): the result differs from the nine-term evaluation by an ulp at most
+    (checked on 2·10⁵ random z in (1e-10, 1.2): 3 differed, by one ulp of ``dsinhc``)."""
     if z < _SERIES_BELOW:
         t = z * z
-        phi = (
-            ((((((_S0 * t + _S1) * t + _S2) * t + _S3) * t + _S4) * t + _S5) * t + _S6) * t + _S7
-        ) * t + _S8
-        dphi = (
-            ((((((_D0 * t + _D1) * t + _D2) * t + _D3) * t + _D4) * t + _D5) * t + _D6) * t + _D7
-        ) * t + _D8
+        if t < 0.01:
+            phi = (((_S4 * t + _S5) * t + _S6) * t + _S7) * t + _S8
+            dphi = (((_D4 * t + _D5) * t + _D6) * t + _D7) * t + _D8
+        elif t < 0.1:
+            phi = (((((_S2 * t + _S3) * t + _S4) * t + _S5) * t + _S6) * t + _S7) * t + _S8
+            dphi = (((((_D2 * t + _D3) * t + _D4) * t + _D5) * t + _D6) * t + _D7) * t + _D8
+        else:
+            phi = (
+                ((((((_S0 * t + _S1) * t + _S2) * t + _S3) * t + _S4) * t + _S5) * t + _S6) * t + _S7
+            ) * t + _S8
+            dphi = (
+                ((((((_D0 * t + _D1) * t + _D2) * t + _D3) * t + _D4) * t + _D5) * t + _D6) * t + _D7
+            ) * t + _D8
         return t * phi, z * dphi
     s = math.sinh(z)
     return s / z - 1.0, (z * math.cosh(z) - s) / (z * z)

@@ -6,10 +6,28 @@ from __future__ import annotations
 
 import numpy as np
 
-from skcable.cable.conductors._grid import parabolic_cubic
-from skcable.errors import InputError
+from skcable.errors import ConvergenceError, InputError
 
-__all__ = ["parabola_states"]
+__all__ = ["parabola_states", "parabolic_cubic"]
+
+
+def parabolic_cubic(b, d, rtol=4e-16):
+    """The positive root of ``H³ + b H² - d = 0`` (``d > 0``), elementwise: Newton from above.
+
+    Both ``max(0, -b) + d^(1/3)`` and, for ``b > 0``, ``(d/b)^(1/2)`` bound the root from
+    above, and the cubic is convex there: Newton from the smaller one decreases to the root.
+    """
+    H = np.maximum(0.0, -b) + np.cbrt(d)
+    with np.errstate(divide="ignore"):
+        H = np.where(b > 0, np.minimum(H, np.sqrt(d / np.where(b > 0, b, 1.0))), H)
+    history = []
+    for _ in range(200):
+        step = (H**3 + b * H**2 - d) / (3 * H**2 + 2 * b * H)
+        H = H - step
+        history.append(float(np.max(np.abs(step / H))))
+        if history[-1] < rtol:
+            return H
+    raise ConvergenceError("parabolic change of state: Newton on the cubic did not converge", history)
 
 
 def parabola_states(span, dh, EA, alpha, w0, t0, H0, sag0, t, q, span_p, dh_p):

@@ -1,0 +1,43 @@
+"""Scratch rows for the vectorised line path, reused from call to call.
+
+On arrays of 1e4 floats a new NumPy array costs more than the arithmetic on it: each 80 kB
+temporary is served by the C allocator from memory it returned to the system at the last
+free, and every one of its 20 pages is then faulted in anew (about 1.5 µs a page here, 30 µs
+an array, against 1.5 µs for an addition over it). The line path therefore works in place in
+the rows of one block taken from a small per-thread pool and given back at the end: blocks
+up to `KEEP` floats stay allocated between calls, so that their pages stay mapped.
+"""
+
+from __future__ import annotations
+
+import threading
+from collections.abc import Iterator
+from contextlib import contextmanager
+
+import numpy as np
+
+__all__ = ["scratch", "KEEP"]
+
+#: Floats kept per thread between calls (8 MiB); larger blocks are freed after use.
+KEEP = 1 << 20
+_POOL = threading.local()
+
+
+@contextmanager
+def scratch(rows: int, size: int) -> Iterator[np.ndarray]:
+    """A ``(rows, size)`` float block of uninitialised scratch memory for the duration of the
+    ``with`` block (taken from this thread's pool when one there is large enough)."""
+    pool = getattr(_POOL, "blocks", None)
+    if pool is None:
+        pool = _POOL.blocks = []
+    need = rows * size
+    fits = [i for i, block in enumerate(pool) if block.size >= need]
+    block = pool.pop(min(fits, key=lambda i: pool[i].size)) if fits else np.empty(need)
+    try:
+        yield block[:need].reshape(rows, size)
+    finally:
+        if block.size <= KEEP:
+            pool.append(block)
+            pool.sort(key=len, reverse=True)
+            while sum(b.size for b in pool) > KEEP:
+                pool.pop()  # the smallest go first
