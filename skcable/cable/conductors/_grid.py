@@ -75,10 +75,15 @@ def _norm(f_x, f_y, chord):
 
 
 def _floor(H, m, w, EA, L, span, dh, parts, chord):
-    """A few ulps of the closure's terms over the chord: the residual no Newton goes below."""
+    """A few ulps of the closure's terms over the chord: the residual no Newton goes below.
+
+    The terms are those `_closure` adds (:math:`f_y` as :math:`L m (1/EA + 2/(T_A + T_B))`, not
+    the plain difference :math:`(T_B - T_A)/w` of the check, whose operands are larger by
+    :math:`(T_A + T_B)/(wL)`: sized by those, the floor stopped taut spans ~100 ulps short of
+    their root)."""
     T_A, T_B, _, _, arc = parts
     terms_x = H * L / EA + H / w * np.abs(arc) + span
-    terms_y = L * np.abs(m) / EA + (T_A + T_B) / w + np.abs(dh)
+    terms_y = L * np.abs(m) * (1.0 / EA + 2.0 / (T_A + T_B)) + np.abs(dh)
     return (8.0 * _EPS) * np.maximum(terms_x, terms_y) / chord
 
 
