@@ -1,7 +1,7 @@
 """Speed and accuracy of skcable's closed forms against the peers, one process.
 
 Case of issue #2: span 800 m, dh -20 m, w 20 kN/m, EA 1e12 kN, unstretched
-length 801.409 m. Each solver is timed over repeated calls (best of 5
+length 801.409 m. Each solver is timed over repeated calls (median of 5
 batches, per call) and its H compared with a 40-digit mpmath solution of
 Irvine's equations. Peers that are not installed are reported as such. mechaphlowers' span
 model takes the catenary parameter H/w as input (its length solve lives in
@@ -17,6 +17,7 @@ from __future__ import annotations
 
 import argparse
 import csv
+import statistics
 import sys
 import time
 from pathlib import Path
@@ -51,14 +52,15 @@ def reference_H() -> tuple[float, float]:
 
 
 def timed(fn, number: int) -> float:
+    """Seconds a call: the median of 5 batches of ``number`` calls (the machine may be shared)."""
     fn()
-    best = float("inf")
+    batches = []
     for _ in range(5):
         start = time.perf_counter()
         for _ in range(number):
             fn()
-        best = min(best, (time.perf_counter() - start) / number)
-    return best
+        batches.append((time.perf_counter() - start) / number)
+    return statistics.median(batches)
 
 
 def peers():

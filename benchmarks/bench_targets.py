@@ -38,6 +38,8 @@ ROOT = Path(__file__).resolve().parents[1]
 PAGE = ROOT / "docs" / "speed_targets.md"
 sys.path.insert(0, str(ROOT / "benchmarks"))
 
+from bench_closed_forms import timed as per_call  # noqa: E402  (median of 5 batches)
+
 from skcable import cable  # noqa: E402
 
 SPAN, DH, W, EA, L0 = 800.0, -20.0, 20.0, 1e12, 801.409
@@ -50,18 +52,6 @@ def best(fn, repeats):
         fn()
         times.append(time.perf_counter() - start)
     return min(times)
-
-
-def per_call(fn, number):
-    """Seconds a call: the median of 5 batches of ``number`` calls."""
-    fn()
-    batches = []
-    for _ in range(5):
-        start = time.perf_counter()
-        for _ in range(number):
-            fn()
-        batches.append((time.perf_counter() - start) / number)
-    return statistics.median(batches)
 
 
 def paired(own, peer, number, rounds):
@@ -94,7 +84,13 @@ def strand_rows(r):
     if t_os is not None:
         ratio = t_stick / t_os
         rows.append(("OpenSeesPy fibre beams, same curve, 64 elements", f"{t_os:.3f} s", ""))
-        rows.append(("time ratio skcable / OpenSeesPy at equal accuracy", f"{ratio:.2f}", "target <= 0.2"))
+        rows.append(
+            (
+                "time ratio skcable / OpenSeesPy at equal accuracy",
+                f"{ratio:.2f}",
+                "target <= 0.15 (goal 0.10)",
+            )
+        )
     rows.append(
         ("element slip rule, 32 elements", f"{t_element:.3f} s", f"{t_element / t_stick:.2f}x stick (<= 1.5)")
     )
@@ -123,6 +119,14 @@ def strand_rows(r):
     rows.append(
         ("10k-element catenary, BVP graph form (P2, 1e-10)", f"{t_bvp * 1e3:.1f} ms", "target <= 25 ms")
     )
+    ours, plain = linear_solve_times(ref, r)
+    rows.append(
+        (
+            "its Newton step's linear solve (bordered banded LU) / plain scipy.linalg.solve_banded",
+            f"{ours * 1e3:.2f} / {plain * 1e3:.2f} ms = {ours / plain:.2f}",
+            "target <= 1.3",
+        )
+    )
     lines = [
         "## Strand FE and cable BVP",
         "",
@@ -145,9 +149,58 @@ def _verdict(ok, miss):
     return "met" if ok else f"**not met**: {miss}"
 
 
+def _vectorised_rows(n, r):
+    """The vectorised rows on a batch of ``n`` spans."""
+    from mechaphlowers.core.models.cable.span import CatenarySpan
+
+    rows = []
+    spans, params, lengths = _batch(n)
+    heights = np.full(n, DH)
+
+    def mecha(spans=spans, heights=heights, params=params):
+        span = CatenarySpan(
+            span_length=spans, elevation_difference=heights, parameter=params, linear_weight=W
+        )
+        return span.compute_L(), span.T_h()
+
+    def given_H(spans=spans, H=W * params):
+        return cable.catenary(spans, DH, W, H=H).length
+
+    def given_length(spans=spans, lengths=lengths):
+        return cable.catenary(spans, DH, W, length=lengths).H
+
+    t_h, t_m, ratio = paired(given_H, mecha, 1, r)
+    rows.append(
+        (
+            f"vectorised `catenary(H=)` with its check, {n:,} spans",
+            f"{t_h / n * 1e9:.0f} ns a span, {1 / ratio:.2f}× mechaphlowers' throughput "
+            f"({t_m / n * 1e9:.0f} ns)",
+            "≥ 1× mechaphlowers' throughput",
+            _verdict(
+                ratio <= 1.0,
+                f"{1 / ratio:.2f}×: the fixed cost of the argument checks and of the residual's "
+                "two dozen NumPy calls weighs on small batches",
+            ),
+        )
+    )
+    t_l = statistics.median(per_call(given_length, 1) for _ in range(r))
+    rows.append(
+        (
+            f"vectorised `catenary(length=)`, {n:,} spans",
+            f"{t_l / n * 1e9:.0f} ns a span",
+            "≤ 300 ns a span",
+            _verdict(
+                t_l / n <= 3e-7,
+                f"{t_l / n / 3e-7:.2f}× the target; {t_l / t_m:.1f}× mechaphlowers' forward "
+                "evaluation given H in the same process (the load of the machine slows both)",
+            ),
+        )
+    )
+    return rows
+
+
 def closed_form_rows(r, spans_n):
     """The closed-form targets of issue 21, ratios measured back to back."""
-    from mechaphlowers.core.models.cable.span import CatenarySpan
     from moorpy.Catenary import catenary as moorpy_catenary
 
     def moorpy():  # B below A: mirrored, as in benchmarks/_peers.py
@@ -156,7 +209,11 @@ def closed_form_rows(r, spans_n):
     rows = []
     t_cat, t_mp, ratio = paired(lambda: cable.catenary(SPAN, DH, W, length=L0).H, moorpy, 2000, r)
     ok = t_cat <= 5e-6 and ratio <= 0.02
-    miss = f"{t_cat * 1e6:.2f} µs, {ratio:.3f}× MoorPy ({t_mp * 1e6:.0f} µs a call here)"
+    # the two targets agree where MoorPy takes 250 µs a call: a loaded machine slows both
+    miss = (
+        f"ratio {'met' if ratio <= 0.02 else 'missed'}; {t_cat / 5e-6:.2f}× the absolute target "
+        f"with MoorPy at {t_mp * 1e6:.0f} µs a call here (the two targets agree at 250 µs)"
+    )
     rows.append(
         (
             "scalar `catenary(length=)`",
@@ -175,45 +232,7 @@ def closed_form_rows(r, spans_n):
         )
     )
     for n in sorted({10_000, spans_n}):
-        spans, params, lengths = _batch(n)
-        heights = np.full(n, DH)
-
-        def mecha(spans=spans, heights=heights, params=params):
-            span = CatenarySpan(
-                span_length=spans, elevation_difference=heights, parameter=params, linear_weight=W
-            )
-            return span.compute_L(), span.T_h()
-
-        def given_H(spans=spans, H=W * params):
-            return cable.catenary(spans, DH, W, H=H).length
-
-        def given_length(spans=spans, lengths=lengths):
-            return cable.catenary(spans, DH, W, length=lengths).H
-
-        t_h, t_m, ratio = paired(given_H, mecha, 1, r)
-        rows.append(
-            (
-                f"vectorised `catenary(H=)` with its check, {n:,} spans",
-                f"{t_h / n * 1e9:.0f} ns a span, {1 / ratio:.2f}× mechaphlowers' throughput "
-                f"({t_m / n * 1e9:.0f} ns)",
-                "≥ 1× mechaphlowers' throughput",
-                _verdict(
-                    ratio <= 1.0,
-                    f"{1 / ratio:.2f}×: the check (five residual terms) costs more than it saves",
-                ),
-            )
-        )
-        t_l = statistics.median(per_call(given_length, 1) for _ in range(r))
-        rows.append(
-            (
-                f"vectorised `catenary(length=)`, {n:,} spans",
-                f"{t_l / n * 1e9:.0f} ns a span",
-                "≤ 300 ns a span",
-                _verdict(
-                    t_l / n <= 3e-7, f"{t_l / n * 1e9:.0f} ns (a shared machine: compare MoorPy's µs above)"
-                ),
-            )
-        )
+        rows.extend(_vectorised_rows(n, r))
     lines = [
         "## Closed forms",
         "",
@@ -228,6 +247,34 @@ def closed_form_rows(r, spans_n):
         *(f"| {a} | {b} | {c} | {d} |" for a, b, c, d in rows),
     ]
     return lines
+
+
+def linear_solve_times(ref, r):
+    """``(skcable, scipy)`` s: the bordered banded solve of the 10k-element catenary's Newton step
+    (one LU, two right-hand sides, the Schur complement) and ``scipy.linalg.solve_banded`` of the
+    same band with the one right-hand side; each on a fresh copy of the band (LAPACK overwrites
+    it), minimum of ``20 r`` runs."""
+    from scipy.linalg import solve_banded
+
+    sol = cable.solve_bvp(800.0, -20.0, cable.SelfWeight(20.0), n_elements=10_000, length=ref.length)
+    problem = sol.problem
+    state = problem.assemble(sol.dofs, sol.H)
+    system, interior = problem.solver.system, problem.interior
+    band = system.add_elements(system.band(), state.Ke)
+    kl, ku = system.kl, system.ku
+    compact = band[kl:]  # solve_banded's (l + u + 1, n) layout: dgbsv's rows below the fill-in
+    rhs = -state.R[interior]
+    rhs_banded = np.empty(system.n)
+    rhs_banded[system.position[interior]] = rhs
+
+    def ours():
+        problem.solver.solve(band.copy(), state.R[interior], state.dR_dH[interior], state.dg_dy[interior],
+                             state.dg_dH, state.g)  # fmt: skip
+
+    def plain():
+        solve_banded((kl, ku), compact.copy(), rhs_banded, overwrite_ab=True, check_finite=False)
+
+    return best(ours, 20 * r), best(plain, 20 * r)
 
 
 def write_section(name, lines, page=PAGE):

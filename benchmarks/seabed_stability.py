@@ -12,7 +12,8 @@ modeling and loads analysis of an offshore floating wind turbine", NREL, 2007):
 
 Methods: skcable's closed form (`elastic_catenary(seabed=0)`), its multi-segment `Line` with
 one segment, its arc-length BVP with unilateral contact (`solve_line_bvp`, the mesh doubled
-from 80 elements until two meshes agree within 1e-10, at most 1280), MoorPy's `catenary()`.
+from 80 elements until two meshes agree within 1e-10, at most 1280, or until their change stops
+falling: the round-off regime of a taut line), MoorPy's `catenary()`.
 
 Each run's fairlead forces (H, V_B) are compared with a 40-digit mpmath solution of
 Jonkman's equations (grounded) or Irvine's (lifted off the anchor), and classified:
@@ -111,13 +112,20 @@ def skcable_line(dh, L, EA, cb):
 
 def skcable_bvp(dh, L, EA, cb):
     """The arc-length BVP with unilateral contact, the mesh doubled from 80 elements until two
-    meshes agree within 1e-10 (at most 1280)."""
-    before = None
+    meshes agree within 1e-10 (at most 1280), or until their change stops falling: a taut line's
+    round-off grows with the mesh (n eps times the condition number of H) and outgrows its
+    discretisation error; then the coarser of the last two meshes."""
+    before, change = None, np.inf
     for n in (80, 160, 320, 640, 1280):
         r = cable.solve_line_bvp(SPAN, dh, [(L, W, EA)], seabed=0.0, friction=cb, n_elements=n)
         now = np.array([r.H, r.V_B])
-        if before is not None and np.hypot(*(now - before)) <= 1e-10 * np.hypot(*now):
-            return float(r.H), float(r.V_B)
+        if before is not None:
+            moved = np.hypot(*(now - before)) / np.hypot(*now)
+            if moved <= 1e-10:
+                return float(r.H), float(r.V_B)
+            if moved >= change:
+                return float(before[0]), float(before[1])
+            change = moved
         before = now
     raise RuntimeError("no mesh agreement within 1e-10 by 1280 elements")
 

@@ -16,6 +16,8 @@ equations, or the inextensible catenary) and each run is classified:
 
 Methods: skcable closed form (catenary / elastic_catenary), skcable BVP graph form and arc
 form (P2, the mesh doubled from 64 elements until two meshes agree within 1e-10, at most 4096),
+skcable line BVP (`solve_line_bvp`: the arc form on meshes graded by the line's turning, the
+mesh doubled alike, or until the change between meshes stops falling: the round-off regime),
 skcable cable.solve(rtol=1e-9), MoorPy catenary(), pycatenary MooringLine, OpenSeesPy
 CatenaryCable.
 
@@ -66,6 +68,26 @@ def bvp_converged(dh, length, EA, formulation):
     raise RuntimeError(f"mesh not converged at 4096 elements (last H {previous:.12g})")
 
 
+def line_bvp_converged(dh, length, EA):
+    """`solve_line_bvp` (graded P2 arc form), the mesh doubled from 64 elements until two
+    successive H agree within 1e-10, or until their change stops falling (at most 4096): the
+    round-off of a nearly taut line's H grows with the mesh (the positions carry eps L each, H
+    amplifies the length by cond = S/(2(S - c)): n eps cond on n elements) and outgrows its
+    discretisation error; then the coarser of the last two meshes."""
+    n, previous, change = 64, None, np.inf
+    while n <= 4096:
+        H = cable.solve_line_bvp(SPAN, dh, [(length, W, EA)], n_elements=n).H
+        if previous is not None:
+            now = abs(H / previous - 1)
+            if now < 1e-10:
+                return H
+            if now >= change:
+                return previous
+            change = now
+        previous, n = H, 2 * n
+    raise RuntimeError(f"mesh not converged at 4096 elements (last H {previous:.12g})")
+
+
 def methods(elastic):
     closed = (
         (lambda dh, L, EA: cable.elastic_catenary(SPAN, dh, W, EA, length=L).H)
@@ -76,6 +98,7 @@ def methods(elastic):
         "skcable closed form": closed,
         "skcable BVP graph": lambda dh, L, EA: bvp_converged(dh, L, EA, "graph"),
         "skcable BVP arc": lambda dh, L, EA: bvp_converged(dh, L, EA, "arc"),
+        "skcable line BVP": line_bvp_converged,
         "skcable solve(rtol=1e-9)": lambda dh, L, EA: (
             cable.solve(SPAN, dh, cable.SelfWeight(W), length=L, EA=EA, rtol=1e-9).H
         ),

@@ -10,14 +10,16 @@ and of the wires on the deformed axis, and PNG figures.
 The force curves of the two models lie on top of each other: what slip changes
 is the stiffness at small strain. The first figure shows, beside the force, the
 secant stiffness ``F / (EA ε)`` (``EA`` of the damaged section: 1 is a strand
-without bending) and the fraction of the length in slip. Slipping wires soften
-the strand at small strain. The critical curvature κ_m, where the wires start to
-slip, grows with the axial strain (the friction grips harder as the wires' tension
-rises); where it passes the curvature the broken wires impose, the strand
-re-sticks and the slip fraction falls from about 90 % to a few per cent (the
-script prints that strain). The second figure is the pyvista render of the wires
-at a third of the curve, not to scale: the length is drawn at 1/20 and the
-displacements 10 times (``RENDER_SCALES``), coloured by wire stress.
+without bending) and the fraction of the length in slip
+(``skcable.plot.secant_stiffness``). Slipping wires soften the strand at small
+strain. The critical curvature κ_m, where the wires start to slip, grows with the
+axial strain (the friction grips harder as the wires' tension rises); where it
+passes the curvature the broken wires impose, the strand re-sticks and the slip
+fraction falls from about 90 % to a few per cent (``CapacityCurve.restick``: the
+figure marks it, the script prints its strains). The second figure is the pyvista
+render of the wires at a third of the curve, not to scale: the length is drawn at
+1/20 and the displacements 10 times (``RENDER_SCALES``, printed on the picture),
+coloured by wire stress.
 
 Run:  python examples/strand_capacity_paraview.py [--out results/strand_capacity]
 Then open ``stick-slip.pvd`` (and ``stick-slip_wires.pvd``) in ParaView,
@@ -33,7 +35,6 @@ import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
-import numpy as np  # noqa: E402
 
 from skcable import plot, strand  # noqa: E402
 
@@ -48,38 +49,12 @@ def curves(length: float = 1.0):
     }
 
 
-def restick_strain(curve) -> float | None:
-    """The first strain where less than half the length slips after more than half did, or None."""
-    slipped = curve.slip_fraction > 0.5
-    if not slipped.any():
-        return None
-    after = np.flatnonzero(~slipped[np.argmax(slipped) :])
-    return float(curve.strain[np.argmax(slipped) + after[0]]) if after.size else None
-
-
 def capacity_figure(results):
-    """Force, secant stiffness F/(EA ε) and slip fraction against the axial strain."""
-    fig, (ax_f, ax_k, ax_s) = plt.subplots(1, 3, figsize=(13, 4), layout="constrained")
+    """Force beside the secant stiffness F/(EA ε), with the slip fraction and where the strand
+    re-sticks (`skcable.plot.secant_stiffness`)."""
+    fig, (ax_f, ax_k) = plt.subplots(1, 2, figsize=(12, 4.2), layout="constrained")
     plot.capacity_curves(results.values(), list(results), ax=ax_f)
-    for label, curve in results.items():
-        EA = curve.model.EA
-        eps, force = curve.strain[1:], curve.force[1:]
-        ax_k.plot(eps, force / (EA * eps), label=label)
-        at = restick_strain(curve)
-        if at is not None:
-            ax_k.axvline(at, color="0.5", ls=":", lw=1)
-            ax_s.axvline(at, color="0.5", ls=":", lw=1)
-            ax_s.annotate(f"re-sticks at ε = {at:.3f}", (at, 50), xytext=(4, 0), textcoords="offset points")
-    ax_k.set(
-        xscale="log",
-        xlabel="axial strain [-]",
-        ylabel="secant stiffness F / (EA ε) [-]",
-        title="slip softens the strand at small strain",
-    )
-    ax_k.grid(alpha=0.3, which="both")
-    ax_k.legend()
-    plot.slip_fraction(results.values(), list(results), ax=ax_s)
-    ax_s.set_title("length in slip (dotted: the strand re-sticks)")
+    plot.secant_stiffness(results.values(), list(results), ax=ax_k, at=0.002)
     return fig
 
 
@@ -114,11 +89,14 @@ def main(argv=None):
             f"force {curve.force[-1] / 1e3:.2f} kN, D_r = {curve.D_r:.4f}"
         )
     for label, curve in results.items():
-        EA = curve.model.EA
-        at = restick_strain(curve)
+        cliff = curve.restick()
         print(
-            f"{label:10s} F/(EA eps) at eps = 0.002: {curve.secant(0.002) / EA:.3f}"
-            + (f"; re-sticks at strain {at:.4f}" if at is not None else "")
+            f"{label:10s} F/(EA eps) at eps = 0.002: {curve.secant(0.002) / curve.model.EA:.3f}"
+            + (
+                f"; re-sticks between strain {cliff.strain_before:.4f} and {cliff.strain_after:.4f}"
+                if cliff
+                else ""
+            )
         )
     for path in export(results, args.out):
         print("wrote", path)

@@ -9,9 +9,13 @@ booleans and complex numbers are refused rather than converted.
 
 from __future__ import annotations
 
+from typing import overload
+
 import numpy as np
 
 from skcable.errors import InputError
+
+_INF = float("inf")
 
 #: Smallest positive normal float: below it a result has lost relative precision.
 TINY = float(np.finfo(float).tiny)
@@ -64,6 +68,10 @@ def _as_float_array(name: str, value) -> np.ndarray:
     raise _not_real(name, value, f" (array of dtype {raw.dtype})")
 
 
+@overload
+def real(name: str, value: float) -> float: ...
+@overload
+def real(name: str, value: object) -> np.ndarray | float: ...
 def real(name: str, value) -> np.ndarray | float:
     """Return ``value`` as a float (scalar input) or float array, raising if
     it is not a finite real number (or array of them)."""
@@ -76,12 +84,18 @@ def real(name: str, value) -> np.ndarray | float:
             raise InputError(name, f"must be finite, got {value!r}")
         return value
     arr = _as_float_array(name, value)
+    if arr.size and -_INF < arr.min() and arr.max() < _INF:  # two reductions; NaN fails them
+        return float(arr) if arr.ndim == 0 else arr
     bad = ~np.isfinite(arr)
     if bad.any():
         raise InputError(name, f"must be finite, got {_first_bad(arr, bad)}")
     return float(arr) if arr.ndim == 0 else arr
 
 
+@overload
+def positive(name: str, value: float) -> float: ...
+@overload
+def positive(name: str, value: object) -> np.ndarray | float: ...
 def positive(name: str, value) -> np.ndarray | float:
     """Return ``value`` as float, raising unless it is finite and > 0."""
     arr = real(name, value)
@@ -89,12 +103,31 @@ def positive(name: str, value) -> np.ndarray | float:
         if not arr > 0:
             raise InputError(name, f"must be > 0, got {arr!r}")
         return arr
+    if arr.size and arr.min() > 0:  # finite already: one reduction
+        return arr
     bad = ~(arr > 0)
     if bad.any():
         raise InputError(name, f"must be > 0, got {_first_bad(arr, bad)}")
     return arr
 
 
+def within(name: str, value, low: float, high: float, reason: str, shown=None) -> None:
+    """Raise ``InputError(name, reason)`` unless every element of the float or float array
+    ``value`` lies in ``[low, high]`` (``shown``, default ``value``, is what the message
+    quotes); two reductions on arrays, the elementwise test only to name the first bad one."""
+    if not isinstance(value, np.ndarray):
+        if not low <= value <= high:
+            require(name, False, reason, value if shown is None else shown)
+        return
+    if value.size and low <= value.min() and value.max() <= high:
+        return
+    require(name, (value >= low) & (value <= high), reason, value if shown is None else shown)
+
+
+@overload
+def nonnegative(name: str, value: float) -> float: ...
+@overload
+def nonnegative(name: str, value: object) -> np.ndarray | float: ...
 def nonnegative(name: str, value) -> np.ndarray | float:
     """Return ``value`` as float, raising unless it is finite and >= 0."""
     arr = real(name, value)

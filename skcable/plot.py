@@ -11,6 +11,7 @@ from pathlib import Path
 
 import numpy as np
 
+from skcable._checks import positive
 from skcable.errors import InputError
 
 __all__ = [
@@ -20,7 +21,9 @@ __all__ = [
     "moment_curvature",
     "mooring_profiles",
     "render_strand",
+    "secant_stiffness",
     "slip_fraction",
+    "strand_caption",
 ]
 
 
@@ -80,6 +83,60 @@ def slip_fraction(curves, labels=None, ax=None):
     return ax
 
 
+def secant_stiffness(curves, labels=None, ax=None, *, at: float | None = None):
+    """Secant stiffness F/(EA ε) against the axial strain (log scale) of
+    capacity curves, with the fraction of the length in slip (%, dashed, right axis) and the
+    strain where each slipping strand re-sticks (dotted, `CapacityCurve.restick`).
+
+    ``EA`` is each curve's model's (the damaged section's), so 1 is a straight strand that
+    does not bend; the value is ``curve.secant(ε) / EA`` (eq. 4.30 over ``[0, ε]``, Pino Vidal
+    2021). Slipping wires soften the strand at small strain, where the stick and stick–slip
+    force curves lie on top of each other. ``at``: a strain at which the value of every curve
+    that reaches it is marked and printed in the legend.
+    """
+    curves = list(curves)
+    ax = _axes(ax)
+    twin = None
+    for curve, label in zip(curves, _labels(curves, labels), strict=True):
+        label = label or _describe(curve)
+        eps, EA = curve.strain[1:], curve.model.EA
+        reached = at is not None and eps.size > 0 and 0 < at <= eps[-1]
+        if reached:
+            label += f": {curve.secant(at) / EA:.3f} at ε = {at:g}"
+        (line,) = ax.plot(eps, [curve.secant(e) / EA for e in eps], label=label)
+        colour = line.get_color()
+        if reached:
+            ax.plot(at, curve.secant(at) / EA, "o", color=colour)
+        if np.max(curve.slip_fraction) > 0:
+            twin = twin or ax.twinx()
+            twin.plot(eps, 100 * curve.slip_fraction[1:], "--", color=colour, lw=1)
+        found = curve.restick()
+        if found is not None:
+            ax.axvline(found.strain_after, color=colour, ls=":", lw=1)
+            ax.annotate(
+                f"re-sticks: slip {100 * found.fraction_before:.0f} % → {100 * found.fraction_after:.0f} %"
+                f"\nat ε = {found.strain_before:.4f}–{found.strain_after:.4f}",
+                (found.strain_after, 0.05),
+                xycoords=("data", "axes fraction"),
+                xytext=(-4, 0),
+                textcoords="offset points",
+                ha="right",
+                fontsize="small",
+                color=colour,
+            )
+    if twin is not None:
+        twin.set(ylabel="length in slip [%] (dashed)", ylim=(-2, 102))
+    ax.set(
+        xscale="log",
+        xlabel="axial strain [-]",
+        ylabel="secant stiffness F / (EA ε) [-]",
+        title="slip softens the strand at small strain",
+    )
+    ax.grid(alpha=0.3, which="both")
+    ax.legend(loc="lower left", fontsize="small")
+    return ax
+
+
 def curvature_along(curve, step: int = -1, ax=None):
     """Principal curvatures (1/m) along the strand at one step, with ±κ_m."""
     ax = _axes(ax)
@@ -112,25 +169,41 @@ def _describe(curve) -> str:
     return names.get(model.slip.name, f"stick–slip ({model.slip!r})")
 
 
+def strand_caption(scale: float, xscale: float, strain: float) -> str:
+    """The caption `render_strand` prints on its picture: the scales it drew at, the strain."""
+    if scale == 1.0 and xscale == 1.0:
+        scales = "true scale"
+    else:
+        scales = f"not to scale: length x {xscale:g}, displacements x {scale:g}"
+    return f"{scales}; axial strain {strain:.4g}; colour: wire stress [MPa], broken wires grey"
+
+
 def render_strand(
     curve, path, *, step: int = -1, scale: float = 10.0, xscale: float = 0.05, window=(1600, 600)
 ) -> Path:
     """Off-screen pyvista picture of the wires on the deformed axis, coloured by
-    wire stress, broken wires grey; returns the PNG path.
+    wire stress, broken wires grey; written atomically as a PNG, returns its path.
 
-    ``scale`` magnifies the displacements, ``xscale`` shortens the axis so
-    that a metre-long strand of a few millimetres fits one picture.
+    ``scale`` magnifies the displacements, ``xscale`` shortens the axis so that a
+    metre-long strand of a few millimetres fits one picture: both are printed on the
+    picture (`strand_caption`; ``scale = xscale = 1`` is true scale) and kept in the PNG's
+    ``Description`` text.
     """
+    import matplotlib.image
     import pyvista as pv
     from vtkmodules.vtkCommonCore import vtkLogger
 
+    from skcable.io._atomic import atomic_path
+
+    positive("scale", scale)
+    positive("xscale", xscale)
     # without a display VTK tries X first and warns before falling back to off-screen
     vtkLogger.SetStderrVerbosity(vtkLogger.VERBOSITY_ERROR)
 
     wires = curve.step_mesh(step, wires=True, scale=scale)
     segments = wires.cells[0].data
     broken = wires.cell_data["broken"][0].astype(bool)
-    stress = wires.cell_data["wire_stress"][0] / 1e6
+    stress = wires.cell_data["wire_stress_MPa"][0]
     radius = float(np.min(curve.steps[step].layout.wire_size))
     plotter = pv.Plotter(off_screen=True, window_size=list(window))
     for chosen, style in (
@@ -143,15 +216,18 @@ def render_strand(
         tubes = pv.PolyData(wires.points * [xscale, 1.0, 1.0], lines=lines)
         tubes.cell_data["wire stress [MPa]"] = stress[chosen]
         plotter.add_mesh(tubes.tube(radius=radius), **style)
+    caption = strand_caption(scale, xscale, curve.steps[step].strain)
+    plotter.add_text(caption, position="upper_left", font_size=10, color="black", name="caption")
     plotter.view_xy()
     plotter.camera.elevation = 20
     plotter.enable_parallel_projection()
     plotter.reset_camera(bounds=None)
     plotter.camera.zoom(1.6)
-    path = Path(path)
-    path.parent.mkdir(parents=True, exist_ok=True)
-    plotter.screenshot(str(path))
+    image = plotter.screenshot(None, return_img=True)
     plotter.close()
+    path = Path(path)
+    with atomic_path(path) as temp:
+        matplotlib.image.imsave(temp, image, format="png", metadata={"Description": caption})
     return path
 
 

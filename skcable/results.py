@@ -73,13 +73,14 @@ class CableResult(Protocol):
 
 
 class ProfileMixin:
-    """``profile``, ``to_frame`` and a one-row ``tensions`` from a class's ``xy`` and ``T_of_s``."""
+    """``profile``, ``to_frame`` and a one-row ``tensions`` of a `CableResult`, from its ``xy`` and
+    ``T_of_s`` (the class it is mixed into)."""
 
-    def profile(self, n: int = 201) -> np.ndarray:
+    def profile(self: CableResult, n: int = 201) -> np.ndarray:
         """Positions ``(n, 2)`` (m) at ``n`` points evenly spaced in unstretched arc length."""
         return np.asarray(self.xy(np.linspace(0.0, float(self.length), whole("n", n, 2))), dtype=float)
 
-    def to_frame(self, n: int = 201) -> pd.DataFrame:
+    def to_frame(self: CableResult, n: int = 201) -> pd.DataFrame:
         """``n`` profile samples evenly spaced in unstretched arc length: columns ``s`` (m),
         ``x``, ``y`` (m) and ``T`` (N)."""
         import pandas as pd
@@ -90,7 +91,7 @@ class ProfileMixin:
             {"s": s, "x": xy[:, 0], "y": xy[:, 1], "T": np.asarray(self.T_of_s(s), dtype=float)}
         )
 
-    def tensions(self) -> pd.DataFrame:
+    def tensions(self: CableResult) -> pd.DataFrame:
         """One row (a uniform cable): ``segment, length, T_lower, T_upper, H_lower, H_upper`` (SI),
         the tensions and horizontal tensions at its ends towards A and B."""
         import pandas as pd

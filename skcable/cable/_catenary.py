@@ -32,8 +32,8 @@ from functools import cached_property
 
 import numpy as np
 
-from skcable._checks import broadcast, exactly_one, float_range, positive, real, require
-from skcable._xp import namespace, scalar_math
+from skcable._checks import broadcast, exactly_one, float_range, positive, real, require, within
+from skcable._xp import namespace, power_of_two_near, scalar_math
 from skcable.cable._hanging import z_of_excess, z_of_length
 from skcable.cable._roots import find_root
 from skcable.cable._special import (
@@ -214,7 +214,7 @@ class Catenary(CableSolution):
 
     @cached_property
     def y_low(self):
-        return _lowest(self.m - self.z, self.m + self.z, self.y_vertex, self.dh)
+        return lowest_point_y(self.m - self.z, self.m + self.z, self.y_vertex, self.dh)
 
     @cached_property
     def sag(self):
@@ -229,19 +229,19 @@ class Catenary(CableSolution):
         x = real("x", x)
         xp, half = namespace(x, self.a, self.m), 0.5 * x / self.a
         with float_range("x", "y(x)"):
-            return _finite_at("x", 2.0 * xp.sinh(self.m - self.z + half) * (self.a * xp.sinh(half)), "y(x)")
+            return finite_at("x", 2.0 * xp.sinh(self.m - self.z + half) * (self.a * xp.sinh(half)), "y(x)")
 
     def slope(self, x):
         """dy/dx at ``x``."""
         u, xp = self._u(x)
         with float_range("x", "slope(x)"):
-            return _finite_at("x", xp.sinh(u), "slope(x)")
+            return finite_at("x", xp.sinh(u), "slope(x)")
 
     def T(self, x):
         """Tension at ``x`` (N)."""
         u, xp = self._u(x)
         with float_range("x", "T(x)"):
-            return _finite_at("x", self.H * xp.cosh(u), "T(x)")
+            return finite_at("x", self.H * xp.cosh(u), "T(x)")
 
     def weight_per_length(self, x, slope):
         return self.w + 0.0 * slope
@@ -319,7 +319,7 @@ class Catenary(CableSolution):
         yield from self._common_residuals(xp)
 
 
-def _lowest(u_a, u_b, y_vertex, dh):
+def lowest_point_y(u_a, u_b, y_vertex, dh):
     """y of the cable's lowest point: A (0) when it rises from A (u_A >= 0), B
     (dh) when it falls to B (u_B <= 0), else the vertex. Shared with the parabola."""
     if not isinstance(y_vertex, np.ndarray) and not isinstance(dh, np.ndarray):
@@ -327,7 +327,7 @@ def _lowest(u_a, u_b, y_vertex, dh):
     return np.where(u_a >= 0, 0.0, np.where(u_b <= 0, dh, y_vertex))
 
 
-def _finite_at(name, value, what):
+def finite_at(name, value, what):
     if isinstance(value, np.ndarray):
         if not np.isfinite(value).all():
             raise InputError(name, f"is so far outside the span that {what} overflows a float")
@@ -353,18 +353,12 @@ def _sag_over_a(z, m, phi, a=1.0):
     )
 
 
-def _unit(length, xp):
-    """A power of two near ``length``: dividing lengths by it is exact and
-    brings them to order one."""
-    return xp.ldexp(0.5, xp.frexp(length)[1])
-
-
 def _z_from_length(span, dh, length):
     xp = namespace(span, dh, length)
     legs = xp.abs(dh)
-    unit = _unit(xp.maximum(span, legs), xp)
+    unit = power_of_two_near(xp.maximum(span, legs), xp)
     span, dh, legs, length = span / unit, dh / unit, legs / unit, length / unit  # exact
-    chord = xp.hypot(span, dh)
+    chord = xp.sqrt(span * span + dh * dh)  # both below 1 now: no overflow (and no hypot's cost)
     require("length", length > chord, "must exceed the chord sqrt(span**2 + dh**2)", length * unit)
     # r - 1 with r = sqrt(S^2 - dh^2)/span, free of cancellation for taut
     # cables: S^2 - chord^2 = (S - M)(S + M) - m^2 with M the longer leg, so
@@ -381,8 +375,9 @@ def _z_from_length(span, dh, length):
         return xp.sqrt((length - legs) / span) * xp.sqrt((length + legs) / span) - 1.0
 
     if xp is np:
+        short = length < 2.0 * chord
         with np.errstate(over="ignore", invalid="ignore"):
-            rho = np.where(length < 2.0 * chord, taut(length), slack(length))
+            rho = taut(length) if short.all() else np.where(short, taut(length), slack(length))
     else:
         rho = taut(length) if length < 2.0 * chord else slack(length)
     # sinh(z)/z = 1 + rho: z stays below _Z_LIMIT while rho stays below this
@@ -609,20 +604,22 @@ def _z_from_T_max(span, dh, w, T_max, branch):
 
 
 _INF = math.inf
+_MAX_FLOAT = float(np.finfo(float).max)
+#: The least positive float (a subnormal): H/w above it has not underflowed to zero.
+TINY_POSITIVE = 5e-324
 
 
 def _length_on_floats(span, dh, w, length):
     """`catenary` with ``length=`` on Python numbers: the same formulas and checks as the
     general path (`skcable.cable._hanging`, `Catenary._residuals` written out on floats), or
     None wherever the general path must decide (it then raises the right error)."""
-    if not (type(span) in (float, int) and type(dh) in (float, int)):
-        return None
-    if not (type(w) in (float, int) and type(length) in (float, int)):
-        return None
-    try:
-        span, dh, w, length = float(span), float(dh), float(w), float(length)
-    except OverflowError:  # an integer beyond the float range: the general path names it
-        return None
+    if not (type(span) is float and type(dh) is float and type(w) is float and type(length) is float):
+        if not all(type(v) in (float, int) for v in (span, dh, w, length)):
+            return None
+        try:
+            span, dh, w, length = float(span), float(dh), float(w), float(length)
+        except OverflowError:  # an integer beyond the float range: the general path names it
+            return None
     if not (0.0 < span < _INF and -_INF < dh < _INF and 0.0 < w < _INF and 0.0 < length < _INF):
         return None
     if not abs(dh) <= _STEEPEST * span:
@@ -640,18 +637,18 @@ def _length_on_floats(span, dh, w, length):
         achieved = 2.0 * (a * sinh_z) * math.cosh(m)
         weight = w * achieved
         t_a, v_a, t_b, v_b = H / T_A, V_A / T_A, H / T_B, V_B / T_B
-        residual = max(
-            abs((T_B - T_A - w * dh) / (T_A + T_B)),
-            abs((V_A + V_B - weight) / (abs(V_A) + abs(V_B) + weight)),
-            abs(0.5 * ((1.0 - t_a) * (1.0 + t_a) - v_a * v_a)),
-            abs(0.5 * ((1.0 - t_b) * (1.0 + t_b) - v_b * v_b)),
-            abs((achieved - length) / length),
-        )
+        # `Catenary._residuals`, each within ACCEPT (a NaN fails every comparison)
+        closure = (T_B - T_A - w * dh) / (T_A + T_B)
+        balance = (V_A + V_B - weight) / (abs(V_A) + abs(V_B) + weight)
+        end_a = 0.5 * ((1.0 - t_a) * (1.0 + t_a) - v_a * v_a)
+        end_b = 0.5 * ((1.0 - t_b) * (1.0 + t_b) - v_b * v_b)
+        met = (achieved - length) / length
     except (OverflowError, ZeroDivisionError):
         return None
+    ok = -ACCEPT <= closure <= ACCEPT and -ACCEPT <= balance <= ACCEPT and -ACCEPT <= met <= ACCEPT
     # the vertex is below a cosh(u_A) = T_A/w (`Catenary.finite_beyond_residual`)
-    if not (residual <= ACCEPT and a < _INF and T_A / w < _INF):
-        return None  # NaN too
+    if not (ok and -ACCEPT <= end_a <= ACCEPT and -ACCEPT <= end_b <= ACCEPT and a < _INF and T_A / w < _INF):
+        return None
     solution = Catenary.__new__(Catenary)
     solution.__dict__ = {
         "span": span, "dh": dh, "w": w, "a": a, "z": z, "_xp": scalar_math, "_sinh_z": sinh_z, "m": m,
@@ -738,7 +735,7 @@ def catenary(span, dh, w, *, length=None, sag=None, H=None, low=None, T_max=None
             z, history = _z_from_length(span, dh, value)
         elif name == "H":
             a = value / w
-            require("H", a > 0, "is so small relative to w that H/w underflows", value)
+            within("H", a, TINY_POSITIVE, math.inf, "is so small relative to w that H/w underflows", value)
             z = span / a
             z *= 0.5  # = 0.5 * span / a: halving is exact
         elif name == "sag":
@@ -747,17 +744,20 @@ def catenary(span, dh, w, *, length=None, sag=None, H=None, low=None, T_max=None
             z, history = _z_from_low(span, dh, value)
         else:
             z, history = _z_from_T_max(span, dh, w, value, branch)
-    require(name, z >= _Z_MIN, "makes the cable so taut that span·w/(2H) underflows (below 1e-300)", value)
-    require(
-        name,
-        z <= _Z_LIMIT,
-        f"makes the cable so slack that span·w/(2H) exceeds {_Z_LIMIT:g} (cosh overflows a float)",
-        value,
-    )
+    if not (isinstance(z, np.ndarray) and z.size and _Z_MIN <= z.min() and z.max() <= _Z_LIMIT):
+        require(
+            name, z >= _Z_MIN, "makes the cable so taut that span·w/(2H) underflows (below 1e-300)", value
+        )
+        require(
+            name,
+            z <= _Z_LIMIT,
+            f"makes the cable so slack that span·w/(2H) exceeds {_Z_LIMIT:g} (cosh overflows a float)",
+            value,
+        )
     if name != "H":
         a = span / z
         a *= 0.5  # = span / (2 z): halving is exact
-    require(name, a < math.inf, "makes H/w overflow a float", value)
+    within(name, a, -math.inf, _MAX_FLOAT, "makes H/w overflow a float", value)
     value = np.asarray(value, dtype=float)[()]
     with float_range(name, "a result"):
         solution = Catenary(span, dh, w, a, z, (name, value))

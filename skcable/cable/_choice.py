@@ -147,7 +147,7 @@ def solve(
                 "loads",
                 f"must be load objects (SelfWeight, DeckLoad, PointLoad, ...), got {type(load).__name__}",
             )
-    tried = []
+    tried: list[tuple[str, float]] = []  # the cheaper models rejected, with their estimates
     if all(type(ld) in (SelfWeight, DeckLoad) for ld in loads):
         deck = sum(float(ld.w) for ld in loads if isinstance(ld, DeckLoad))
         weight = sum(float(ld.w) for ld in loads if isinstance(ld, SelfWeight))

@@ -185,7 +185,7 @@ class Conductor:
             ``strand`` is not a strand, or one of its materials has no ``density`` or
             ``alpha``; ``damage`` not a valid pattern (named as in `Strand.damaged`).
         """
-        from skcable.strand._choice import _first_wire_strain, axial_force
+        from skcable.strand._choice import axial_force, first_wire_strain
 
         if not all(
             callable(getattr(strand, k, None)) for k in ("section", "wires", "wire_materials", "damaged")
@@ -220,7 +220,7 @@ class Conductor:
         weight = g * float(np.sum(materials.take("density") * wires.area / cos))
         stiffness = np.where(wires.intact, materials.take("E_e") * wires.area * cos**3, 0.0)
         alpha = float(stiffness @ materials.take("alpha") / np.sum(stiffness))
-        first = _first_wire_strain(strand, "eps_rupture")
+        first = first_wire_strain(strand, "eps_rupture")
         rupture_force = float(axial_force(strand, first))
         label = strand.name if name is None else name
         return cls(

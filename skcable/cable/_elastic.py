@@ -27,11 +27,11 @@ from skcable import _plausible
 from skcable._checks import broadcast, float_range, positive, real, require
 from skcable._newton2 import solve2
 from skcable._xp import namespace
-from skcable.cable._catenary import _finite_at, hanging
+from skcable.cable._catenary import finite_at, hanging
 from skcable.cable._hanging import hanging_forces
 from skcable.cable._roots import find_root
 from skcable.cable._special import asinh_step, asinh_step_log, asinh_step_parts, sinhc_m1, sinhc_pair
-from skcable.cable.solution import CableSolution, checked_closed_form
+from skcable.cable.solution import ACCEPT, CableSolution, checked_closed_form
 from skcable.errors import InputError
 
 __all__ = ["ElasticCatenary", "elastic_catenary"]
@@ -240,14 +240,14 @@ class ElasticCatenary(CableSolution):
         s = real("s", s)
         p_s = self._ratios[0] + self.w * s / self.H
         with float_range("s", "T(s)"):
-            return _finite_at("s", self.H * namespace(p_s).hypot(1.0, p_s), "T(s)")
+            return finite_at("s", self.H * namespace(p_s).hypot(1.0, p_s), "T(s)")
 
     def x_of_s(self, s):
         """Abscissa of the material point ``s`` (unstretched arc length from A)."""
         s = real("s", s)
         with float_range("s", "x(s)"):
             x = self.H * s / self.EA + self.H / self.w * asinh_step(self._ratios[0], self.w * s / self.H)
-        return _finite_at("s", x, "x(s)")
+        return finite_at("s", x, "x(s)")
 
     def _y_terms(self, s):
         """The stretch and the inextensible part of ``y(s)``: ``(T(s) - T_A)/w`` as
@@ -262,7 +262,7 @@ class ElasticCatenary(CableSolution):
         s = real("s", s)
         with float_range("s", "y(s)"):
             stretch, shape = self._y_terms(s)
-            return _finite_at("s", stretch + shape, "y(s)")
+            return finite_at("s", stretch + shape, "y(s)")
 
     def s_of_x(self, x):
         """Material point at abscissa ``x`` in [0, span] (x(s) is increasing)."""
@@ -373,6 +373,47 @@ class ElasticCatenary(CableSolution):
         yield from self._common_residuals(xp)
 
 
+def _checked_floats(e) -> bool:
+    """`ElasticCatenary._residuals` (and the finiteness of the vertex) written out on the floats
+    of one scene, each term within `ACCEPT`; the values it computes are kept on ``e``. False
+    where the general check must decide (it then raises the right error)."""
+    H, V_A, w, L, EA = e.H, e.V_A, e.w, e.length, e.EA
+    try:
+        q, d = -V_A / H, w * L / H
+        p = q + d
+        rq, rp = math.hypot(1.0, q), math.hypot(1.0, p)
+        e_p = p + rp if p >= 0 else 1.0 / (rp - p)  # exp(asinh p), as in `asinh_step_log`
+        e_q = q + rq if q >= 0 else 1.0 / (rq - q)
+        A = math.log1p(d * (e_p + e_q) / ((rp + rq) * e_q))
+        stretch, shape = H * L / EA, H / w * A
+        half = H / w * math.tanh(0.5 * A)
+        y_stretch, operands = L * (0.5 * w * L - V_A) / EA, L * (0.5 * w * L + abs(V_A)) / EA
+        V_B, weight, T_A, T_B = w * L - V_A, w * L, H * rq, H * rp
+        t_a, v_a, t_b, v_b = H / T_A, V_A / T_A, H / T_B, V_B / T_B
+        terms = (
+            (stretch + shape - e.span) / (stretch + shape + e.span),
+            (y_stretch + half * (p + q) - e.dh) / (operands + half * (abs(p) + abs(q)) + abs(e.dh)),
+            (V_A + V_B - weight) / (abs(V_A) + abs(V_B) + weight),
+            0.5 * ((1.0 - t_a) * (1.0 + t_a) - v_a * v_a),
+            0.5 * ((1.0 - t_b) * (1.0 + t_b) - v_b * v_b),
+        )
+        x_vertex = H * V_A / (w * EA) + H / w * math.asinh(V_A / H)
+        y_vertex = -(V_A / w) * (V_A * (0.5 / EA + 1.0 / (H + T_A)))
+    except (OverflowError, ZeroDivisionError, ValueError):
+        return False
+    if not (
+        all(-ACCEPT <= t <= ACCEPT for t in terms) and -_INF < x_vertex < _INF and -_INF < y_vertex < _INF
+    ):
+        return False  # NaN too
+    e.__dict__.update(
+        _ratios=(q, d, p, rq, rp), V_B=V_B, T_A=T_A, T_B=T_B, x_vertex=x_vertex, y_vertex=y_vertex
+    )
+    return True
+
+
+_INF = math.inf
+
+
 def elastic_catenary(span, dh, w, EA, *, length):
     """Elastic (Irvine) catenary from A = (0, 0) to B = (span, dh).
 
@@ -415,4 +456,6 @@ def elastic_catenary(span, dh, w, EA, *, length):
     _plausible.stiffness(EA, w, L0)
     with float_range("length", "a result"):
         solution = ElasticCatenary(span, dh, w, EA, L0, H, V_A, ("length", L0))
+        if type(H) is float and type(V_A) is float and _checked_floats(solution):
+            return solution
         return checked_closed_form(solution, "length", history)

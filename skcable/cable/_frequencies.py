@@ -51,6 +51,7 @@ from skfem import Basis, BilinearForm, ElementLineP2, LinearForm, MeshLine
 from skcable import _plausible
 from skcable._checks import TINY, exactly_one, positive, real, scalar, whole
 from skcable._eigen import BandPattern, dense, farthest_from_one, first_lobe_positive, lowest_modes
+from skcable._show import attributes, counted
 from skcable.cable._catenary import catenary
 from skcable.cable.conductors._inputs import blame_extreme
 from skcable.errors import ConvergenceError, InputError
@@ -195,10 +196,10 @@ class NaturalFrequencies:
         return self.stiffness_out_of_plane + self._matrices.coupling()
 
     def __repr__(self):
-        return (
-            f"NaturalFrequencies(n_modes={len(self.f_in_plane)}, lambda2={self.lambda2:.4g}, "
-            f"f_in_plane={np.round(self.f_in_plane, 6).tolist()})"
+        shown = attributes(
+            self, {"f_in_plane": "Hz", "f_out_of_plane": "Hz", "H": "N", "sag": "m", "lambda2": ""}
         )
+        return f"NaturalFrequencies({counted([len(self.f_in_plane)], 'mode')}: {shown})"
 
 
 def _scalar_positive(name, value):

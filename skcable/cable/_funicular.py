@@ -29,15 +29,12 @@ import numpy as np
 
 from skcable._checks import positive, real, require, scalar, whole
 from skcable._newton2 import solve2
+from skcable._show import counted, quantity
+from skcable._xp import power_of_two_near
 from skcable.cable.solution import ACCEPT
 from skcable.errors import ConvergenceError, InputError
 
 __all__ = ["Funicular", "FunicularVertical", "funicular", "funicular_vertical"]
-
-
-def _unit(size):
-    """A power of two near ``size`` (> 0): dividing by it is exact."""
-    return math.ldexp(0.5, math.frexp(float(size))[1])
 
 
 _EPS = float(np.finfo(float).eps)
@@ -116,6 +113,17 @@ class Funicular:
     lengths: np.ndarray
     history: list
 
+    def __repr__(self) -> str:
+        shown = ", ".join(
+            (
+                quantity("T", self.T, "N"),
+                quantity("angles", self.angles, "rad"),
+                quantity("lengths", self.lengths, "m"),
+                quantity("B", self.nodes[-1], "m"),
+            )
+        )
+        return f"Funicular({counted([len(self.T)], 'segment')}: {shown})"
+
     def to_vtk(self, path):
         """Write the polygon as VTK (see `skcable.io.funicular_mesh`); returns the path."""
         from skcable.io import funicular_mesh, write
@@ -127,7 +135,8 @@ class Funicular:
         largest tension plus the loads, whose running sums the forces carry),
         segment lengths and directions against the forces (relative to the
         total length, the size of the node coordinates)."""
-        F, L = _unit(self.T.max()), _unit(self.lengths.max())  # exact rescaling: no overflow below
+        # exact rescaling: no overflow below
+        F, L = power_of_two_near(self.T.max()), power_of_two_near(self.lengths.max())
         forces, loads, T = self.forces / F, self.loads / F, self.T / F
         nodes, lengths = self.nodes / L, self.lengths / L
         force_scale = T.max() + np.abs(loads).sum()
@@ -211,7 +220,7 @@ def funicular(B, lengths, loads, *, tol: float = 1e-13, max_iter: int = 100) -> 
             "loads", "give at least one non-zero load: an unloaded weightless cable has no shape"
         )
     # homogeneous problem: solve in units where the loads and lengths are of order one
-    force_unit, length_unit = _unit(largest), _unit(lengths.max())
+    force_unit, length_unit = power_of_two_near(largest), power_of_two_near(lengths.max())
     P, L, target = loads / force_unit, lengths / length_unit, B / length_unit
     total, reach = L.sum(), float(np.hypot(*target))
     if not total > reach:
@@ -269,6 +278,18 @@ class FunicularVertical:
     loads: np.ndarray
     constraint: tuple = ("H", None)
 
+    def __repr__(self) -> str:
+        shown = ", ".join(
+            (
+                quantity("H", self.H, "N"),
+                quantity("V_A", self.V_A, "N"),
+                quantity("V_B", self.V_B, "N"),
+                quantity("T", self.T, "N"),
+                quantity("B", self.nodes[-1], "m"),
+            )
+        )
+        return f"FunicularVertical({counted([len(self.T)], 'segment')}: {shown})"
+
     def to_vtk(self, path):
         """Write the polygon as VTK (see `skcable.io.funicular_mesh`); returns the path."""
         from skcable.io import funicular_mesh, write
@@ -286,7 +307,7 @@ class FunicularVertical:
         asked to pass through.
         """
         # exact rescaling by powers of two, so that nothing below overflows
-        F, L = _unit(self.T.max()), _unit(np.abs(self.nodes).max())
+        F, L = power_of_two_near(self.T.max()), power_of_two_near(np.abs(self.nodes).max())
         H, V_A, V_B, T = self.H / F, self.V_A / F, self.V_B / F, self.T / F
         nodes, x, P = self.nodes / L, self.loads[:, 0] / L, self.loads[:, 1] / F
         span, dh = nodes[-1]
@@ -364,9 +385,9 @@ def funicular_vertical(span, dh, loads, *, through=None, H=None) -> FunicularVer
     require("loads", (x > 0) & (x < span), "load abscissae must lie strictly inside (0, span)", x)
     require("dh", abs(dh) <= 1e150 * span, "must satisfy |dh| <= 1e150·span", dh)
     # homogeneous problem: lengths and forces divided by powers of two near their sizes
-    length_unit = _unit(max(span, abs(dh)))
+    length_unit = power_of_two_near(max(span, abs(dh)))
     largest = float(np.abs(P).max(initial=0.0))
-    force_unit = _unit(largest) if largest > 0 else 1.0
+    force_unit = power_of_two_near(largest) if largest > 0 else 1.0
     span_, dh_, x_, P_ = span / length_unit, dh / length_unit, x / length_unit, P / force_unit
     reaction_a = float((P_ * (span_ - x_)).sum() / span_)
 

@@ -32,7 +32,7 @@ def _excess(span, dh, length):
     legs = abs(dh)
     unit = math.ldexp(0.5, math.frexp(span if span > legs else legs)[1])
     span, dh, legs, length = span / unit, dh / unit, legs / unit, length / unit  # exact
-    chord = math.hypot(span, dh)
+    chord = math.sqrt(span * span + dh * dh)  # both below 1: as the array path
     if not length > chord:
         return None
     if length < 2.0 * chord:

@@ -30,8 +30,8 @@ from functools import cached_property
 import numpy as np
 
 from skcable._checks import broadcast, exactly_one, float_range, positive, real, require
-from skcable._xp import namespace
-from skcable.cable._catenary import _finite_at, _lowest, _unit
+from skcable._xp import namespace, power_of_two_near
+from skcable.cable._catenary import finite_at, lowest_point_y
 from skcable.cable._roots import find_root
 from skcable.cable._special import asinh_step
 from skcable.cable.solution import CableSolution, checked_closed_form, matrix_2x2
@@ -191,24 +191,24 @@ class Parabola(CableSolution):
 
     @cached_property
     def y_low(self):
-        return _lowest(self.p_A, self.p_B, self.y_vertex, self.dh)
+        return lowest_point_y(self.p_A, self.p_B, self.y_vertex, self.dh)
 
     def slope(self, x):
         """dy/dx at ``x``."""
         with float_range("x", "slope(x)"):
-            return _finite_at("x", self.p_A + real("x", x) / self.a, "slope(x)")
+            return finite_at("x", self.p_A + real("x", x) / self.a, "slope(x)")
 
     def y(self, x):
         """Height of the cable above A at abscissa ``x`` (m)."""
         x = real("x", x)
         with float_range("x", "y(x)"):
-            return _finite_at("x", x * (self.p_A + 0.5 * x / self.a), "y(x)")
+            return finite_at("x", x * (self.p_A + 0.5 * x / self.a), "y(x)")
 
     def T(self, x):
         """Tension at ``x`` (N)."""
         slope = self.slope(x)
         with float_range("x", "T(x)"):
-            return _finite_at("x", self.H * namespace(slope).hypot(1.0, slope), "T(x)")
+            return finite_at("x", self.H * namespace(slope).hypot(1.0, slope), "T(x)")
 
     def weight_per_length(self, x, slope):
         return self.w / np.hypot(1.0, slope)  # w per horizontal metre
@@ -300,7 +300,7 @@ def _arc_length_minus(x, s, a, p_A):
 
 def _a_from_length(span, dh, length):
     xp = namespace(span, dh, length)
-    unit = _unit(xp.maximum(span, xp.abs(dh)), xp)
+    unit = power_of_two_near(xp.maximum(span, xp.abs(dh)), xp)
     span, dh, length = span / unit, dh / unit, length / unit  # exact
     chord = xp.hypot(span, dh)
     require("length", length > chord, "must exceed the chord sqrt(span**2 + dh**2)", length * unit)
@@ -338,7 +338,7 @@ def _a_from_T_max(span, dh, tau, T_max):
         "T_max", tau > 0.5 * span, "must exceed w·span/2, the weight carried by one support at least", T_max
     )
     slope = xp.abs(dh / span)
-    unit = _unit(xp.maximum(span, tau), xp)
+    unit = power_of_two_near(xp.maximum(span, tau), xp)
     span, tau = span / unit, tau / unit  # exact
     root = xp.sqrt(4.0 * (1.0 + slope * slope) * tau * tau - span * span)
     return 2.0 * (tau - 0.5 * span) * (tau + 0.5 * span) / (span * slope + root) * unit

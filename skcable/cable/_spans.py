@@ -55,9 +55,12 @@ section stays in its vertical plane.
 
 from __future__ import annotations
 
+from typing import Any
+
 import numpy as np
 
 from skcable._checks import broadcast, nonnegative, real, scalar
+from skcable._show import attributes, counted
 from skcable.cable._state import change_of_state, thermal_catenary
 from skcable.cable.conductors._inputs import normal, renamed, thermal_factor
 from skcable.cable.conductors._lines import reference_state
@@ -139,6 +142,27 @@ class TensionSection:
         Newton iterations per state.
     """
 
+    # set by ``__init__`` from its keywords (shapes above), with the states' ``w`` and ``t``
+    H: Any
+    V_A: Any
+    V_B: Any
+    T_max: Any
+    sag: Any
+    span: Any
+    dh: Any
+    swing: Any
+    swing_angle: Any
+    clamp_rise: Any
+    L0: np.ndarray
+    ruling_span: float
+    H_ruling: Any
+    sag_ruling_span: Any
+    sag_ruling: Any
+    moment_residual: float
+    iterations: Any
+    w: Any
+    t: Any
+
     def __init__(self, **values):
         self.__dict__.update(values)
 
@@ -153,7 +177,13 @@ class TensionSection:
         return self.sag_ruling / self.sag - 1.0
 
     def __repr__(self):
-        return f"TensionSection(n_spans={np.shape(self.H)[-1]}, shape={np.shape(self.H)[:-1]})"
+        states = np.shape(self.H)[:-1]
+        where = f"{counted(np.shape(self.L0), 'span')}, {counted(states, 'state')}"
+        shown = attributes(
+            self,
+            {"t": "°C", "w": "N/m", "H": "N", "sag": "m", "swing": "m", "ruling_span": "m", "H_ruling": "N"},
+        )
+        return f"TensionSection({where}: {shown})"
 
 
 class _Section:

@@ -40,10 +40,13 @@ which for a level span is the textbook
 
 from __future__ import annotations
 
+from typing import Any
+
 import numpy as np
 
 from skcable import _plausible
 from skcable._checks import broadcast, nonnegative, positive, real, scalar
+from skcable._show import attributes, counted, quantity
 from skcable.cable._elastic import elastic_catenary
 from skcable.cable.conductors._inputs import blame_extreme, load_plane, normal, renamed, thermal_factor
 from skcable.cable.conductors._parabola import parabola_states
@@ -87,6 +90,24 @@ class ThermalCatenary:
     def residual(self):
         """Largest relative residual of the equivalent elastic catenary."""
         return self.curve.residual()
+
+    def __repr__(self):
+        shown = attributes(
+            self,
+            {
+                "k": "",
+                "H": "N",
+                "V_A": "N",
+                "V_B": "N",
+                "T_A": "N",
+                "T_B": "N",
+                "sag": "m",
+                "length": "m",
+                "stretched_length": "m",
+            },
+        )
+        where = f"{counted(np.shape(self.H), 'scene')}: " if np.ndim(self.H) else ""
+        return f"ThermalCatenary({where}{shown})"
 
 
 def thermal_catenary(span, dh, w, EA, *, length, alpha, t, t0=0.0):
@@ -148,11 +169,40 @@ class ChangeOfState:
     w, t, wind, model : the states, as given.
     """
 
+    # set by ``__init__`` from its keywords: floats for one span and one state, else arrays
+    H: Any
+    H_plane: Any
+    sag: Any
+    T_max: Any
+    length: Any
+    blowout: Any
+    L0: Any
+    H0: Any
+    sag0: Any
+    w: Any
+    t: Any
+    wind: Any
+    model: str
+    T_max_pct_rts: Any  # set by `skcable.cable.Conductor.change_of_state` when the RTS is known
+
     def __init__(self, **values):
         self.__dict__.update(values)
 
     def __repr__(self):
-        return f"ChangeOfState(model={self.model!r}, shape={np.shape(self.H)})"
+        spans = np.shape(self.L0)
+        where = (counted(spans, "span") + " × " if spans else "") + counted(
+            np.shape(self.H)[len(spans) :], "state"
+        )
+        shown = [quantity("t", self.t, "°C"), quantity("w", self.w, "N/m")]
+        if np.any(self.wind):
+            shown += [quantity("wind", self.wind, "N/m"), quantity("blowout", self.blowout, "rad")]
+        shown += [
+            quantity("H", self.H, "N"),
+            quantity("sag", self.sag, "m"),
+            quantity("T_max", self.T_max, "N"),
+            quantity("L0", self.L0, "m"),
+        ]
+        return f"ChangeOfState({self.model}, {where}: {', '.join(shown)})"
 
 
 def change_of_state(

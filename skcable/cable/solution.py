@@ -19,11 +19,13 @@ from __future__ import annotations
 
 import math
 from functools import cached_property
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
 from skcable._checks import whole
-from skcable._xp import namespace
+from skcable._show import counted, quantity
+from skcable._xp import PicklesBackend, namespace
 from skcable.cable._special import largest_abs
 from skcable.errors import ConvergenceError, InputError
 from skcable.results import ProfileMixin
@@ -46,7 +48,7 @@ def matrix_2x2(k11, k12, k21, k22):
     )
 
 
-class CableSolution(ProfileMixin):
+class CableSolution(PicklesBackend):
     """Base of the suspended-cable solutions (`skcable.results.CableResult`).
 
     Subclasses define ``H, V_A, V_B, T_A, T_B, length, sag, x_low, y_low``,
@@ -62,8 +64,30 @@ class CableSolution(ProfileMixin):
     the span; the two coincide when the vertex lies between the supports.
     """
 
-    span: np.ndarray
-    dh: np.ndarray
+    # what each subclass defines, on the instance or as a property: a float for one scene, an
+    # array of the broadcast shape for many (annotations only: no class attribute, `_shown`)
+    span: Any
+    dh: Any
+    w: Any
+    H: Any
+    V_A: Any
+    V_B: Any
+    T_A: Any
+    T_B: Any
+    length: Any
+    constraint: tuple[str, Any]  # the keyword the user fixed and its value
+
+    if TYPE_CHECKING:  # every subclass defines them (the ``x`` functions of the class docstring)
+
+        def y(self, x) -> Any: ...
+        def slope(self, x) -> Any: ...
+        def T(self, x) -> Any: ...
+
+    # `ProfileMixin`'s methods, not its class as a base: subclasses that also list the mixin
+    # (the finite-element solutions) keep a consistent method order
+    profile = ProfileMixin.profile
+    to_frame = ProfileMixin.to_frame
+    tensions = ProfileMixin.tensions
 
     @cached_property
     def H_A(self):
@@ -112,8 +136,12 @@ class CableSolution(ProfileMixin):
 
         ``T² = H² + V²`` as ``((1 - t)(1 + t) - v²)/2`` with ``t = H/T``, ``v = V/T``
         (``≈ 1 - hypot(H, V)/T``, without a hypot: 3 ulps of it at most)."""
+        H_A = getattr(self, "H_A", None)
+        H_A = self.H if H_A is None else H_A
+        H_B = getattr(self, "H_B", None)  # differ from H only under horizontal loads
+        H_B = H_A if H_B is None else H_B
         out = []
-        for T, H, V in ((self.T_A, self.H_A, self.V_A), (self.T_B, self.H_B, self.V_B)):
+        for T, H, V in ((self.T_A, H_A, self.V_A), (self.T_B, H_B, self.V_B)):
             t, v = H / T, V / T
             out.append(0.5 * ((1.0 - t) * (1.0 + t) - v * v))
         name, value = self.constraint
@@ -125,8 +153,12 @@ class CableSolution(ProfileMixin):
 
     def __repr__(self):
         name = type(self).__name__
-        if np.ndim(self.H) != 0:
-            return f"{name}(shape={np.shape(self.H)}, constraint={self.constraint[0]!r})"
+        if np.ndim(self.H) != 0:  # every scene's numbers, or their ranges (`skcable._show`)
+            shown = ", ".join(
+                quantity(k, getattr(self, k)) for k in _shown(self) if k in _FORCES | {"length", "sag"}
+            )
+            scenes = counted(np.shape(self.H), "scene")
+            return f"{name}({scenes}, constraint {self.constraint[0]!r}: {shown})"
         # instance attributes (H, V_A, length of the elastic forms) as well as the class's
         shown = ", ".join(f"{k}={float(getattr(self, k)):.9g}" for k in _shown(self))
         return f"{name}(span={self.span:g}, dh={self.dh:g}, w={self.w:g}: {shown})"

@@ -119,7 +119,7 @@ class CableTerm(Term):
 
 def term_outputs(terms, state: CableState) -> dict:
     """Every term's `CableTerm.outputs` at ``state``, names made unique."""
-    out = {}
+    out: dict[str, np.ndarray] = {}
     for term in terms:
         for name, values in term.outputs(state, term.forces(state)).items():
             out[name if name not in out else f"{name}_{len(out)}"] = values
@@ -128,18 +128,46 @@ def term_outputs(terms, state: CableState) -> dict:
 
 def _profile(name: str, value):
     """A speed or density given as a number or a callable of depth: ``(f(d), f'(d))`` callables;
-    the derivative of a callable by central differences (step 1e-6 m)."""
+    the derivative of a callable by central differences (step 1e-6 m). Both pickle (with the
+    user's callable, when it does)."""
     if callable(value):
-
-        def at(d):
-            out = np.asarray(value(d), dtype=float)
-            if not np.all(np.isfinite(out)):
-                raise InputError(name, "returned non-finite values")
-            return np.broadcast_to(out, np.shape(d))
-
-        return at, lambda d: (at(d + 1e-6) - at(d - 1e-6)) / 2e-6
+        at = _Checked(name, value)
+        return at, _Slope(at)
     constant = float(real(name, value))
-    return (lambda d: np.full(np.shape(d), constant)), (lambda d: np.zeros(np.shape(d)))
+    return _Constant(constant), _Constant(0.0)
+
+
+class _Constant:
+    """``f(d) = value`` at every depth."""
+
+    def __init__(self, value: float):
+        self.value = value
+
+    def __call__(self, d):
+        return np.full(np.shape(d), self.value)
+
+
+class _Checked:
+    """The user's ``f(d)``, refused (naming the argument) where it is not finite."""
+
+    def __init__(self, name: str, f):
+        self.name, self.f = name, f
+
+    def __call__(self, d):
+        out = np.asarray(self.f(d), dtype=float)
+        if not np.all(np.isfinite(out)):
+            raise InputError(self.name, "returned non-finite values")
+        return np.broadcast_to(out, np.shape(d))
+
+
+class _Slope:
+    """``f'(d)`` by central differences, step 1e-6 m."""
+
+    def __init__(self, f):
+        self.f = f
+
+    def __call__(self, d):
+        return (self.f(d + 1e-6) - self.f(d - 1e-6)) / 2e-6
 
 
 def _direction(value) -> np.ndarray:

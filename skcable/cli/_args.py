@@ -146,7 +146,7 @@ def warning_message(args, warning) -> str:
     text = " ".join(str(warning.message).split())
     argument = getattr(warning.message, "argument", None)
     name = flag(getattr(args, "active", None), argument) if argument else None
-    if name and text.startswith(f"{argument}: "):
+    if argument and name and text.startswith(f"{argument}: "):
         text = f"{name}: {text[len(argument) + 2 :]}"
     return text
 

@@ -4,6 +4,8 @@ free (Jonkman 2007)."""
 
 from __future__ import annotations
 
+from typing import Any
+
 from skcable.cli._args import finite
 from skcable.cli._cables import output_flags, vtk_path
 from skcable.cli._output import print_json, quantities, table
@@ -44,7 +46,9 @@ def _model(args):
             )
     w, EA = (v if len(v) == n else v * n for v in (args.w, args.EA))
     segments = [cable.Segment(*values) for values in zip(args.length, w, EA, strict=True)]
-    attachments = [cable.ClumpWeight(_joint("clump", j), f) for j, f in args.clump or ()]
+    attachments: list[cable.ClumpWeight | cable.Buoy] = [
+        cable.ClumpWeight(_joint("clump", j), f) for j, f in args.clump or ()
+    ]
     attachments += [cable.Buoy(_joint("buoy", j), f) for j, f in args.buoy or ()]
     return cable.Line(segments, attachments, seabed=args.seabed, friction=args.friction)
 
@@ -60,7 +64,7 @@ def _run(args) -> int:
     model = _model(args)
     sol = model.solve(args.span, args.dh)
     k = np.asarray(sol.stiffness(), dtype=float)
-    values = {name: float(getattr(sol, name)) for name, _ in _FIELDS}
+    values: dict[str, Any] = {name: float(getattr(sol, name)) for name, _ in _FIELDS}  # JSON's object
     values |= dict(zip((name for name, _ in _STIFFNESS), k.ravel().tolist(), strict=True))
     values["residual"] = sol.residual()
     frame = sol.tensions()

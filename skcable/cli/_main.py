@@ -81,7 +81,7 @@ def _no_handler(args) -> str:
     return "choose a command (skcable --help)"
 
 
-def _failure(args, exc: Exception) -> tuple[int, str | None]:
+def _failure(args, exc: BaseException) -> tuple[int, str | None]:
     """The exit status and message of an exception that is not skcable's own."""
     if isinstance(exc, KeyboardInterrupt):
         return EXIT_INTERRUPTED, "interrupted"

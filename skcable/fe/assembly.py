@@ -116,7 +116,8 @@ class Assembly:
         self.N = int(self.offsets[-1])
         self.dx = np.ascontiguousarray(first.dx.T)
         self.x = np.ascontiguousarray(np.asarray(first.global_coordinates())[0].T)
-        start, local = {}, []
+        start: dict[str, int] = {}
+        local: list[np.ndarray] = []
         for k, (name, basis) in enumerate(self.bases.items()):
             start[name] = sum(len(d) for d in local)
             local.append(basis.element_dofs + self.offsets[k])

@@ -282,7 +282,8 @@ def newton(
     x = np.array(x0, dtype=float)
     state = assemble(x) if state is None else state
     assemblies = 1
-    history, steps, merits = [norm(state)], [], []
+    history, merits = [norm(state)], []
+    steps: list[float] = []
     for _ in range(max_iter + 1):
         current = history[-1]
         if not np.isfinite(current):
@@ -372,7 +373,8 @@ def minimize(
     x = np.array(x0, dtype=float)
     state = assemble(x) if state is None else state
     assemblies = 1
-    history, energies, steps = [norm(state)], [energy(state)], []
+    history, energies = [norm(state)], [energy(state)]
+    steps: list[float] = []
     mu, shifted = 0.0, False
     for _ in range(max_iter + 1):
         current, Pi = history[-1], energies[-1]
@@ -387,37 +389,22 @@ def minimize(
                 raise ConvergenceError(f"{name}: neither the residual nor the energy moves", history, last=x)
             if mu == 0.0:
                 mu, shifted = mu0, True
-        while True:
-            try:
-                d = solve(state, mu)
-                break
-            except np.linalg.LinAlgError:
-                mu, shifted = (mu0 if mu == 0.0 else 2.0 * mu), True
-                if mu > mu_max:
-                    raise ConvergenceError(
-                        f"{name}: the tangent needs a shift above {mu_max:g} to be positive definite",
-                        history,
-                        last=x,
-                    ) from None
-        R = gradient(state)
-        slope = float(R @ d)
-        t, accepted = 1.0, False
-        for _ in range(halvings):
-            trial_x = x + t * d
-            trial = assemble(trial_x)
-            assemblies += 1
-            drop = energy(trial) - Pi
-            n_t = norm(trial)
-            if (
-                converged(trial, n_t)
-                or drop <= 1e-4 * t * slope
-                or (abs(drop) <= noise * abs(Pi) and n_t < (1 - 1e-4 * t) * current)
-            ):
-                accepted = True
-                break
-            t *= 0.5
-        if accepted:
-            x, state = trial_x, trial
+        try:
+            d, mu, more = _shifted_increment(solve, state, mu, mu0, mu_max)
+        except np.linalg.LinAlgError:
+            raise ConvergenceError(
+                f"{name}: the tangent needs a shift above {mu_max:g} to be positive definite",
+                history,
+                last=x,
+            ) from None
+        shifted = shifted or more
+        slope = float(gradient(state) @ d)
+        step, tried = _energy_step(
+            assemble, energy, norm, converged, x, d, Pi, current, slope, halvings, noise
+        )
+        assemblies += tried
+        if step is not None:
+            t, x, state, n_t = step
             history.append(n_t)
             energies.append(energy(state))
             steps.append(t if mu == 0.0 else 0.0)  # a shifted step is no Newton step
@@ -429,3 +416,36 @@ def minimize(
             energies.append(Pi)
             steps.append(0.0)
     raise ConvergenceError(f"{name}: no convergence to {tol:g} in {max_iter} iterations", history, last=x)
+
+
+def _shifted_increment(solve, state, mu: float, mu0: float, mu_max: float) -> tuple[np.ndarray, float, bool]:
+    """``(d, mu, shifted)``: `minimize`'s increment ``solve(state, mu)``, the shift μ doubled
+    (from ``mu0``) while the shifted tangent does not factorise; ``shifted`` if it had to grow.
+    Raises ``numpy.linalg.LinAlgError`` once μ would exceed ``mu_max``."""
+    shifted = False
+    while True:
+        try:
+            return solve(state, mu), mu, shifted
+        except np.linalg.LinAlgError:
+            mu, shifted = (mu0 if mu == 0.0 else 2.0 * mu), True
+            if mu > mu_max:
+                raise
+
+
+def _energy_step(assemble, energy, norm, converged, x, d, Pi, current, slope, halvings, noise):
+    """`minimize`'s line search along ``d``, t = 1, ½, … (its docstring): ``((t, x, state,
+    norm), assemblies)`` of the accepted trial, or ``(None, halvings)`` when none is."""
+    t = 1.0
+    for k in range(halvings):
+        trial_x = x + t * d
+        trial = assemble(trial_x)
+        drop = energy(trial) - Pi
+        n_t = norm(trial)
+        if (
+            converged(trial, n_t)
+            or drop <= 1e-4 * t * slope
+            or (abs(drop) <= noise * abs(Pi) and n_t < (1 - 1e-4 * t) * current)
+        ):
+            return (t, trial_x, trial, n_t), k + 1
+        t *= 0.5
+    return None, halvings

@@ -25,8 +25,11 @@ solves (frozen within one, updated from the converged solution by `Term.next_sta
 from __future__ import annotations
 
 import copy
+from typing import TypeVar
 
 __all__ = ["Term"]
+
+_T = TypeVar("_T", bound="Term")
 
 
 class Term:
@@ -47,7 +50,7 @@ class Term:
     potential: bool | None = None
     smooth: bool = True
 
-    def bind(self, model) -> Term:
+    def bind(self: _T, model) -> _T:
         """A copy of this term set up for ``model`` (the term itself stays unbound)."""
         bound = copy.copy(self)
         bound.setup(model)

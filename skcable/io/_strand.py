@@ -68,14 +68,15 @@ def _outputs(step, point_data, cell_data):
 def strand_mesh(step, *, point_data=None, cell_data=None) -> meshio.Mesh:
     """The strand axis at one load step: nodes of the mesh, undeformed.
 
-    Point data (at the nodes; quadrature values by L² projection onto P1):
-    ``displacement`` (u, v, w in m: apply *Warp By Vector*), ``twist`` (rad),
-    ``axial_strain`` (ε_a), ``axial_force`` (N), ``curvature_1``,
-    ``curvature_2`` (about the principal axes, 1/m), ``curvature`` (v″, w″),
-    ``moment`` (N·m, conjugate to v″ and w″). Cell data (per element):
-    ``slip_1``, ``slip_2`` (fraction of the element in slip about each
-    principal axis), ``slipping`` (1 if any), ``EI_in_use`` (tangent bending
-    stiffness about y and z, N·m²), ``element_size`` (m).
+    Point data (at the nodes; quadrature values by L² projection onto P1), each array named
+    with its unit: ``axial_displacement_m`` (u), ``transverse_displacement_m`` ((0, v, w): apply
+    *Warp By Vector* to see the bending, which is a hundredth of the stretch),
+    ``displacement_m`` ((u, v, w), to warp both), ``twist_rad``, ``axial_strain`` (ε_a),
+    ``axial_force_N``, ``curvature_1_per_m``, ``curvature_2_per_m`` (about the principal axes),
+    ``curvature_per_m`` ((0, v″, w″)), ``moment_N_m`` (conjugate to v″ and w″). Cell data (per
+    element): ``slip_1``, ``slip_2`` (fraction of the element in slip about each principal axis),
+    ``slipping`` (1 if any), ``EI_in_use_N_m2`` (tangent bending stiffness about y and z),
+    ``element_size_m``.
 
     The terms' outputs (``step.outputs``: a contact pressure, a gap, a foundation's reaction)
     are added under their names, and so are the user's ``point_data`` (arrays at the nodes, or
@@ -92,21 +93,23 @@ def strand_mesh(step, *, point_data=None, cell_data=None) -> meshio.Mesh:
     zero = np.zeros_like(nodes)
     extra_points, extra_cells = _outputs(step, point_data, cell_data)
     point_data = {
-        "displacement": displacement,
-        "twist": at["phi"],
+        "axial_displacement_m": at["u"],
+        "transverse_displacement_m": np.column_stack([zero, at["v"], at["w"]]),
+        "displacement_m": displacement,
+        "twist_rad": at["phi"],
         "axial_strain": projected[0],
-        "axial_force": projected[1],
-        "curvature_1": projected[2],
-        "curvature_2": projected[3],
-        "curvature": np.column_stack([zero, projected[4], projected[5]]),
-        "moment": np.column_stack([zero, projected[6], projected[7]]),
+        "axial_force_N": projected[1],
+        "curvature_1_per_m": projected[2],
+        "curvature_2_per_m": projected[3],
+        "curvature_per_m": np.column_stack([zero, projected[4], projected[5]]),
+        "moment_N_m": np.column_stack([zero, projected[6], projected[7]]),
     }
     cell_data = {
         "slip_1": [slipping[0]],
         "slip_2": [slipping[1]],
         "slipping": [np.any(step.slipping, axis=(0, 2)).astype(np.int32)],
-        "EI_in_use": [np.column_stack([_element_mean(layout, e) for e in step.EI_in_use])],
-        "element_size": [np.diff(nodes[layout.elements], axis=0)[0]],
+        "EI_in_use_N_m2": [np.column_stack([_element_mean(layout, e) for e in step.EI_in_use])],
+        "element_size_m": [np.diff(nodes[layout.elements], axis=0)[0]],
     }
     return meshio.Mesh(
         points,
@@ -122,11 +125,11 @@ def wire_mesh(step, *, scale: float = 1.0, radial_scale: float = 1.0) -> meshio.
     The axis displacement (times ``scale``) and the twist carry each wire; points
     at the mesh nodes. ``radial_scale`` multiplies the helix radii and the wires'
     own radii, so that a strand much longer than thick is more than a line in a
-    view (the axial coordinate is never scaled). Point data: ``radius``, the
-    wire's own radius (m, times ``radial_scale``): ParaView's *Tube* filter with
+    view (the axial coordinate is never scaled). Point data: ``radius_m``, the
+    wire's own radius (times ``radial_scale``): ParaView's *Tube* filter with
     "Vary Radius: By Absolute Scalar" draws the wires at their size. Cell data
     per segment: ``wire`` (index), ``layer``, ``broken`` (1 for a broken wire),
-    ``wire_strain`` and ``wire_stress`` (Pa), the element means.
+    ``wire_strain`` and ``wire_stress_MPa``, the element means.
     """
     scale = nonnegative("scale", scale)
     radial_scale = positive("radial_scale", radial_scale)
@@ -149,7 +152,7 @@ def wire_mesh(step, *, scale: float = 1.0, radial_scale: float = 1.0) -> meshio.
         "layer": [repeat(layout.wire_layer)],
         "broken": [repeat(layout.wire_broken.astype(np.int32))],
         "wire_strain": [_element_mean(layout, step.wire_strain).ravel()],
-        "wire_stress": [_element_mean(layout, step.wire_stress).ravel()],
+        "wire_stress_MPa": [1e-6 * _element_mean(layout, step.wire_stress).ravel()],
     }
-    point_data = {"radius": np.repeat(radial_scale * layout.wire_size, n_nodes)}
+    point_data = {"radius_m": np.repeat(radial_scale * layout.wire_size, n_nodes)}
     return meshio.Mesh(points, [("line", segments)], point_data=point_data, cell_data=cell_data)

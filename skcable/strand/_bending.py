@@ -66,8 +66,8 @@ from __future__ import annotations
 import numpy as np
 
 from skcable.errors import InputError
-from skcable.strand._material import _array, _axis, _is_real_scalar, _scalar
-from skcable.strand._section import Section, _deprecated
+from skcable.strand._arguments import float_array, is_real_number, principal_axis, real_number
+from skcable.strand._section import Section, deprecated_alias
 
 __all__ = ["BendingLaw", "critical_curvature"]
 
@@ -86,15 +86,15 @@ def _rupture(strand) -> float:
 def _strains(section: Section, axial_strain, *, scalar: bool) -> np.ndarray:
     top = _rupture(section.strand)
     if scalar:
-        if not _is_real_scalar(axial_strain):
+        if not is_real_number(axial_strain):
             raise InputError(
                 "axial_strain",
                 f"must be a single real number, got {axial_strain!r:.80}; for many strains at once "
                 "use critical_curvature(section, mu, axial_strain_array)",
             )
-        strain = np.array([_scalar("axial_strain", axial_strain)])
+        strain = np.array([real_number("axial_strain", axial_strain)])
     else:
-        strain = _array("axial_strain", axial_strain)
+        strain = float_array("axial_strain", axial_strain)
     bad = ~((strain >= 0) & (strain < top))
     if bad.any():
         index = tuple(int(i) for i in np.argwhere(bad)[0])
@@ -191,7 +191,7 @@ def critical_curvature(section, mu: float, axial_strain) -> np.ndarray:
         the documented constant ``2 ε_rupture / d_max`` (see `BendingLaw`).
     """
     section = _section(section)
-    mu = _scalar("mu", mu, lower=0.0)
+    mu = real_number("mu", mu, lower=0.0)
     return _law(section, mu, _strains(section, axial_strain, scalar=False))["kappa_m"]
 
 
@@ -228,7 +228,7 @@ class BendingLaw:
 
     def __init__(self, section, *, mu: float, axial_strain: float):
         self.section = _section(section)
-        self.mu = _scalar("mu", mu, lower=0.0)
+        self.mu = real_number("mu", mu, lower=0.0)
         self.axial_strain = float(_strains(section, axial_strain, scalar=True)[0])
         law = _law(section, self.mu, np.array([self.axial_strain]))
         self.EI_stick, self.EI_slip, self.M_rf, self.kappa_m = (
@@ -241,14 +241,14 @@ class BendingLaw:
         """Moments ``EI_stick κ_m`` at the stick/slip transition, principal axes 1, 2 (N·m)."""
         return self.EI_stick * self.kappa_m
 
-    EI_max = _deprecated("EI_max", "EI_stick")
-    EI_min = _deprecated("EI_min", "EI_slip")
+    EI_max = deprecated_alias("EI_max", "EI_stick")
+    EI_min = deprecated_alias("EI_min", "EI_slip")
 
     def theta(self, axis: int) -> np.ndarray:
         """Angular position θ (rad) of every wire about the core centre from the neutral axis,
         in [-π/2, π/2], positive on the side away from the net centroid (the module's
         conventions); ``axis`` is the int 0 (principal axis 1) or 1 (principal axis 2)."""
-        return _theta(self.section, _axis(axis))
+        return _theta(self.section, principal_axis(axis))
 
     @property
     def kappa_m_eq_3_16(self) -> np.ndarray:
@@ -270,8 +270,8 @@ class BendingLaw:
         """Bending moment (N·m) at curvature ``kappa`` (1/m, a number or an array of any
         shape) about a principal axis: ``axis`` is the int 0 (principal axis 1) or 1
         (principal axis 2)."""
-        axis = _axis(axis)
-        kappa = _array("kappa", kappa)
+        axis = principal_axis(axis)
+        kappa = float_array("kappa", kappa)
         k_m, ei_stick, ei_slip = self.kappa_m[axis], self.EI_stick[axis], self.EI_slip[axis]
         size = np.abs(kappa)
         out = np.copysign(
@@ -283,10 +283,10 @@ class BendingLaw:
         """``M/κ`` (``kind="secant"``) or ``dM/dκ`` (``"tangent"``) at ``kappa`` (N·m²)
         about a principal axis: ``axis`` is the int 0 (principal axis 1) or 1 (principal
         axis 2)."""
-        axis = _axis(axis)
+        axis = principal_axis(axis)
         if kind not in ("secant", "tangent"):
             raise InputError("kind", f"must be 'secant' or 'tangent', got {kind!r}")
-        kappa = _array("kappa", kappa)
+        kappa = float_array("kappa", kappa)
         size = np.abs(kappa)
         stick = size <= self.kappa_m[axis]
         if kind == "tangent":

@@ -24,6 +24,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from skcable._checks import positive
+from skcable._show import counted, quantity
 from skcable.errors import InputError
 
 __all__ = ["Analysis", "ClosedFormCurve", "analyse", "axial_force"]
@@ -43,7 +44,7 @@ class ClosedFormCurve:
     @property
     def K_Leq(self) -> float:
         """Secant stiffness at the strain where the core leaves the linear branch (N)."""
-        limit = _first_wire_strain(self.strand, "eps_y1")
+        limit = first_wire_strain(self.strand, "eps_y1")
         return float(axial_force(self.strand, limit) / limit)
 
     @property
@@ -58,8 +59,25 @@ class ClosedFormCurve:
     def slip_fraction(self) -> np.ndarray:
         return np.zeros_like(self.strain)
 
+    def __repr__(self) -> str:
+        name = getattr(self.strand, "name", "") or "strand"
+        return f"ClosedFormCurve({name!r}, {counted([len(self.strain)], 'point')}: {key_numbers(self)})"
 
-def _first_wire_strain(strand, attribute: str) -> float:
+
+def key_numbers(curve) -> str:
+    """The end of a capacity curve (closed form or FE), its K_Leq and toughness, as ``name=value unit``."""
+    last = "rupture" if curve.ruptured else "last"
+    return ", ".join(
+        (
+            quantity(f"{last}_strain", curve.strain[-1]),
+            quantity(f"{last}_force", curve.force[-1], "N"),
+            quantity("K_Leq", curve.K_Leq, "N"),
+            quantity("toughness", curve.toughness, "N"),
+        )
+    )
+
+
+def first_wire_strain(strand, attribute: str) -> float:
     """The strand strain at which the first intact wire reaches its material's limit strain
     ``attribute`` ("eps_y1" or "eps_rupture"): ``min_j limit_j / cos²α_j`` (the straight core,
     α = 0, when every wire has one material)."""
@@ -91,6 +109,9 @@ class Analysis:
     curve: object
     stick: object = None
 
+    def __repr__(self) -> str:
+        return f"Analysis({self.model}: {key_numbers(self.curve)}; {self.reason})"
+
 
 def analyse(
     strand, length: float = 1.0, *, mu: float = 0.5, n_points: int = 200, **model_options
@@ -107,7 +128,7 @@ def analyse(
     if int(n_points) < 2:
         raise InputError("n_points", f"must be at least 2, got {n_points!r}")
     if not strand.broken:
-        top = _first_wire_strain(strand, "eps_rupture")  # one material: the straight core
+        top = first_wire_strain(strand, "eps_rupture")  # one material: the straight core
         strain = np.linspace(0.0, top, int(n_points))
         reason = "undamaged strand in tension: straight and untwisted, F = Σ A cos α σ(cos²α ε) (no FE)"
         return Analysis("closed form", reason, ClosedFormCurve(strand, strain, axial_force(strand, strain)))

@@ -27,9 +27,11 @@ from math import pi, radians
 
 import numpy as np
 
+from skcable._checks import whole
 from skcable.errors import InputError
+from skcable.strand._arguments import name_text, real_number
 from skcable.strand._catalogue import ENTRIES, INCH, LAY_RATIO, aluminium_layers, entry, layer_counts
-from skcable.strand._material import Material, WireMaterials, _integer, _name, _scalar, material
+from skcable.strand._material import Material, WireMaterials, material
 
 __all__ = ["Layer", "Strand", "Wires", "preset"]
 
@@ -70,21 +72,22 @@ class Layer:
     material: Material | None = None
 
     def __post_init__(self):
-        count = _integer("count", self.count)
+        count = whole("count", self.count)
         if count < 1:
             raise InputError("count", f"must be a positive integer, got {count!r}")
         values = dict(
-            count=count, wire_diameter=_scalar("wire_diameter", self.wire_diameter, lower=0.0, strict=True)
+            count=count,
+            wire_diameter=real_number("wire_diameter", self.wire_diameter, lower=0.0, strict=True),
         )
         if (self.lay_angle is None) == (self.lay_length is None):
             raise InputError("lay_angle", "give exactly one of lay_angle and lay_length")
         if self.lay_angle is not None:
-            alpha = _scalar("lay_angle", self.lay_angle)
+            alpha = real_number("lay_angle", self.lay_angle)
             if not 0 < alpha < pi / 2:
                 raise InputError("lay_angle", f"must lie in (0, pi/2) rad, got {alpha!r}")
             values["lay_angle"] = alpha
         else:
-            values["lay_length"] = _scalar("lay_length", self.lay_length, lower=0.0, strict=True)
+            values["lay_length"] = real_number("lay_length", self.lay_length, lower=0.0, strict=True)
         if isinstance(self.direction, (bool, np.bool_)) or not isinstance(self.direction, (int, np.integer)):
             raise InputError(
                 "direction", f"must be the int +1 (right lay) or -1 (left lay), got {self.direction!r}"
@@ -92,7 +95,7 @@ class Layer:
         if self.direction not in (1, -1):
             raise InputError("direction", f"must be +1 (right lay) or -1 (left lay), got {self.direction!r}")
         values["direction"] = int(self.direction)
-        values["phase"] = _scalar("phase", self.phase)
+        values["phase"] = real_number("phase", self.phase)
         if self.material is not None and not isinstance(self.material, Material):
             raise InputError("material", f"must be a Material or None (the strand's), got {self.material!r}")
         for key, value in values.items():  # plain Python numbers
@@ -160,7 +163,7 @@ class Strand:
 
     def __post_init__(self):
         object.__setattr__(
-            self, "core_diameter", _scalar("core_diameter", self.core_diameter, lower=0.0, strict=True)
+            self, "core_diameter", real_number("core_diameter", self.core_diameter, lower=0.0, strict=True)
         )
         layers = self.layers
         if isinstance(layers, Layer) or not isinstance(layers, (tuple, list)):
@@ -176,7 +179,7 @@ class Strand:
                 "material", f"must be a Material (e.g. strand.material('steel')), got {self.material!r}"
             )
         object.__setattr__(self, "broken", frozenset(self._wire_set("broken", self.broken)))
-        _name(self.name)
+        name_text(self.name)
         if self.core_material is not None and not isinstance(self.core_material, Material):
             raise InputError(
                 "core_material", f"must be a Material or None (the strand's), got {self.core_material!r}"
@@ -221,7 +224,7 @@ class Strand:
                     argument, f"each wire must be a (layer, index) pair, got {item!r} (in {wires!r})"
                 )
             try:
-                layer, index = _integer(argument, item[0]), _integer(argument, item[1])
+                layer, index = whole(argument, item[0]), whole(argument, item[1])
             except InputError:
                 raise InputError(argument, f"layer and index must be integers, got {tuple(item)!r}") from None
             if not 1 <= layer <= len(self.layers):
@@ -360,7 +363,7 @@ class Strand:
                 raise InputError("wires", f"wire {again[0]!r} is already broken")
             return replace(self, broken=self.broken | frozenset(new))
         outer = self.layers[-1]
-        n = _integer("n", n)
+        n = whole("n", n)
         if not 0 <= n < outer.count:
             raise InputError("n", f"must be an integer in [0, {outer.count - 1}], got {n!r}")
         if self.broken:

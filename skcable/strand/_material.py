@@ -23,92 +23,14 @@ number).
 
 from __future__ import annotations
 
-import numbers
 from dataclasses import dataclass, field
 
 import numpy as np
 
 from skcable.errors import InputError
+from skcable.strand._arguments import float_array, name_text, real_number
 
 __all__ = ["Material", "material"]
-
-
-# --- argument checks of skcable.strand (scalars, integers, arrays) ------------------
-def _is_real_scalar(value) -> bool:
-    if isinstance(value, np.ndarray) and value.ndim == 0:
-        value = value[()]
-    return isinstance(value, numbers.Real) and not isinstance(value, (bool, np.bool_))
-
-
-def _scalar(name: str, value, *, lower: float | None = None, strict: bool = False) -> float:
-    """``value`` as a finite float, refusing booleans, strings, arrays and non-finite numbers.
-
-    With ``lower``, also refuse values below it (``strict``: at or below it).
-    """
-    if not _is_real_scalar(value):
-        if isinstance(value, (np.ndarray, list, tuple)):
-            raise InputError(name, f"must be a single real number, got an array of shape {np.shape(value)}")
-        raise InputError(name, f"must be a real number, got {value!r}")
-    out = float(value)
-    if out != out or out in (float("inf"), float("-inf")):
-        raise InputError(name, f"must be finite, got {out!r}")
-    if lower is not None and (out <= lower if strict else out < lower):
-        raise InputError(name, f"must be {'>' if strict else '>='} {lower:g}, got {out!r}")
-    return out
-
-
-def _integer(name: str, value) -> int:
-    """``value`` as an int, refusing booleans, floats (also 2.0) and anything else."""
-    if isinstance(value, np.ndarray) and value.ndim == 0:
-        value = value[()]
-    if not isinstance(value, numbers.Integral) or isinstance(value, (bool, np.bool_)):
-        raise InputError(name, f"must be an integer, got {value!r}")
-    return int(value)
-
-
-def _axis(value) -> int:
-    """A principal-axis index: the int 0 (principal axis 1) or 1 (principal axis 2)."""
-    if not (
-        isinstance(value, (int, np.integer)) and not isinstance(value, (bool, np.bool_))
-    ) or value not in (
-        0,
-        1,
-    ):
-        raise InputError(
-            "axis", f"must be the int 0 (principal axis 1) or 1 (principal axis 2), got {value!r}"
-        )
-    return int(value)
-
-
-def _array(name: str, value, *, finite: bool = True, empty: bool = False) -> np.ndarray:
-    """``value`` as a float ndarray (any shape), refusing strings, booleans, objects,
-    non-finite entries (unless ``finite=False``) and empty arrays (unless ``empty``)."""
-    if isinstance(value, (str, bytes, bool, np.bool_)) or value is None:
-        raise InputError(name, f"must be a real number or an array of them, got {value!r}")
-    try:
-        raw = np.asarray(value)
-    except ValueError as exc:  # ragged nested sequences
-        raise InputError(name, f"must be a real number or a regular array of them ({exc})") from None
-    if raw.dtype.kind not in "iuf":
-        raise InputError(
-            name, f"must be a real number or an array of them, got dtype {raw.dtype} ({value!r:.60})"
-        )
-    if raw.size == 0 and not empty:
-        raise InputError(name, "must not be empty")
-    arr = raw.astype(float, copy=False)
-    if finite:
-        bad = ~np.isfinite(arr)
-        if bad.any():
-            index = tuple(int(i) for i in np.argwhere(bad)[0])
-            where = f" at index {index}" if arr.ndim else ""
-            raise InputError(name, f"must be finite, got {arr[index]!r}{where}")
-    return arr
-
-
-def _name(value) -> str:
-    if not isinstance(value, str):
-        raise InputError("name", f"must be a str, got {value!r}")
-    return value
 
 
 @dataclass(frozen=True)
@@ -152,27 +74,27 @@ class Material:
     _cubic: tuple = field(init=False, repr=False, compare=False)
 
     def __post_init__(self):
-        E_e = _scalar("E_e", self.E_e, lower=0.0, strict=True)
-        E_p = _scalar("E_p", self.E_p)
+        E_e = real_number("E_e", self.E_e, lower=0.0, strict=True)
+        E_p = real_number("E_p", self.E_p)
         if not 0 <= E_p < E_e:
             raise InputError("E_p", f"must satisfy 0 <= E_p < E_e = {E_e!r}, got {E_p!r}")
         e1, ey, e2 = (
-            _scalar(n, getattr(self, n), lower=0.0, strict=True) for n in ("eps_y1", "eps_y", "eps_y2")
+            real_number(n, getattr(self, n), lower=0.0, strict=True) for n in ("eps_y1", "eps_y", "eps_y2")
         )
         if not e1 < ey < e2:
             raise InputError("eps_y", f"need eps_y1 < eps_y < eps_y2, got {e1!r}, {ey!r}, {e2!r}")
-        rupture = _scalar("eps_rupture", self.eps_rupture)
+        rupture = real_number("eps_rupture", self.eps_rupture)
         if not rupture > e2:
             raise InputError("eps_rupture", f"must exceed eps_y2 = {e2!r}, got {rupture!r}")
-        poisson = _scalar("poisson", self.poisson)
+        poisson = real_number("poisson", self.poisson)
         if not 0 <= poisson < 0.5:
             raise InputError("poisson", f"must lie in [0, 0.5), got {poisson!r}")
-        _name(self.name)
+        name_text(self.name)
         values = dict(E_e=E_e, E_p=E_p, eps_y=ey, eps_y1=e1, eps_y2=e2, eps_rupture=rupture, poisson=poisson)
         if self.density is not None:
-            values["density"] = _scalar("density", self.density, lower=0.0, strict=True)
+            values["density"] = real_number("density", self.density, lower=0.0, strict=True)
         if self.alpha is not None:
-            values["alpha"] = _scalar("alpha", self.alpha)  # carbon-fibre cores: about 0, or below
+            values["alpha"] = real_number("alpha", self.alpha)  # carbon-fibre cores: about 0, or below
         for key, value in values.items():  # plain floats (np.float32 etc. are not kept)
             object.__setattr__(self, key, value)
         # B.1 slope E_e and B.3 value at eps_y1 give c and d; B.2 and B.4 a and b
@@ -237,13 +159,13 @@ class Material:
         not refused: they give non-finite stresses (the finite-element model relies on this
         to report a diverged Newton iterate as a ConvergenceError, not as bad input).
         """
-        out, _ = self.stress_and_tangent(_array("strain", strain, finite=False, empty=True))
+        out, _ = self.stress_and_tangent(float_array("strain", strain, finite=False, empty=True))
         return out[()] if out.ndim == 0 else out
 
     def tangent(self, strain):
         """Tangent modulus dσ/dε (Pa) at ``strain``: element-wise, even in the strain
         (inputs as for `stress`)."""
-        _, out = self.stress_and_tangent(_array("strain", strain, finite=False, empty=True))
+        _, out = self.stress_and_tangent(float_array("strain", strain, finite=False, empty=True))
         return out[()] if out.ndim == 0 else out
 
     def stress_and_tangent(self, strain: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
@@ -298,7 +220,7 @@ class Material:
     def secant(self, strain):
         """Secant modulus σ/ε (Pa), ``E_e`` at zero strain: element-wise, even in the strain
         (inputs as for `stress`)."""
-        strain = _array("strain", strain, finite=False, empty=True)
+        strain = float_array("strain", strain, finite=False, empty=True)
         safe = np.where(strain == 0.0, 1.0, strain)
         out = np.where(strain == 0.0, self.E_e, self.stress(safe) / safe)
         return out[()] if out.ndim == 0 else out

@@ -60,7 +60,7 @@ from math import pi
 import numpy as np
 
 from skcable.errors import InputError
-from skcable.strand._material import _axis
+from skcable.strand._arguments import principal_axis
 
 __all__ = ["Section"]
 
@@ -70,7 +70,7 @@ __all__ = ["Section"]
 _DEGENERATE = 1e-12
 
 
-def _deprecated(old: str, new: str):
+def deprecated_alias(old: str, new: str):
     def getter(self):
         warnings.warn(
             f"{type(self).__name__}.{old} is deprecated: use {new} (the same values)",
@@ -205,7 +205,7 @@ class Section:
         ``axis`` is the int 0 for principal axis 1 or 1 for principal axis 2. The
         sign is that of the component along the axis direction turned by +90°.
         """
-        t = self.principal_axes[_axis(axis)]
+        t = self.principal_axes[principal_axis(axis)]
         normal = np.array([-t[1], t[0]])
         y_c, z_c = self.centroid
         return (self.wires.y - y_c) * normal[0] + (self.wires.z - z_c) * normal[1]
@@ -241,10 +241,10 @@ class Section:
         """``E_e I_slip`` about principal axes 1 and 2 (index 0, 1), N·m²."""
         return self.E * self.I_slip
 
-    I_max = _deprecated("I_max", "I_stick")
-    I_min = _deprecated("I_min", "I_slip")
-    EI_max = _deprecated("EI_max", "EI_stick")
-    EI_min = _deprecated("EI_min", "EI_slip")
+    I_max = deprecated_alias("I_max", "I_stick")
+    I_min = deprecated_alias("I_min", "I_slip")
+    EI_max = deprecated_alias("EI_max", "EI_stick")
+    EI_min = deprecated_alias("EI_min", "EI_slip")
 
     @property
     def axial_torsion_coupling(self) -> float:
@@ -285,8 +285,8 @@ class Section:
         self._require_intact()
         return self.E * self._own
 
-    EI_max_lanteigne = _deprecated("EI_max_lanteigne", "EI_stick_lanteigne")
-    EI_min_lanteigne = _deprecated("EI_min_lanteigne", "EI_slip_lanteigne")
+    EI_max_lanteigne = deprecated_alias("EI_max_lanteigne", "EI_stick_lanteigne")
+    EI_min_lanteigne = deprecated_alias("EI_min_lanteigne", "EI_slip_lanteigne")
 
     def __repr__(self):
         w = self.wires

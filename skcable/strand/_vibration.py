@@ -51,6 +51,7 @@ from skfem.helpers import dd, ddot
 
 from skcable._checks import TINY, nonnegative, positive, scalar, whole
 from skcable._eigen import BandPattern, farthest_from_one, first_lobe_positive, lowest_modes
+from skcable._show import attributes, counted
 from skcable.errors import InputError
 
 __all__ = [
@@ -146,7 +147,10 @@ class BeamFrequencies:
         self.__dict__.update(values)
 
     def __repr__(self):
-        return f"BeamFrequencies(ends={self.ends!r}, f={np.round(self.f, 6).tolist()})"
+        shown = attributes(
+            self, {"f": "Hz", "EI": "N·m²", "N": "N", "length": "m", "mass_per_length": "kg/m"}
+        )
+        return f"BeamFrequencies({self.ends}, {counted([len(self.f)], 'mode')}: {shown})"
 
 
 @BilinearForm
@@ -316,10 +320,11 @@ class StrandFrequencies:
         self.__dict__.update(values)
 
     def __repr__(self):
-        return (
-            f"StrandFrequencies(f_stick={np.round(self.f_stick, 4).tolist()}, "
-            f"f_slip={np.round(self.f_slip, 4).tolist()})"
+        shown = attributes(
+            self, {"f_stick": "Hz", "f_slip": "Hz", "drop": "", "EI_stick": "N·m²", "EI_slip": "N·m²"}
         )
+        modes = counted([len(self.f_stick)], "mode")
+        return f"StrandFrequencies(principal axis {self.axis + 1}, {modes}: {shown})"
 
 
 def strand_bending_frequencies(

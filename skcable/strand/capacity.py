@@ -12,15 +12,56 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field
 from functools import cached_property
+from typing import TYPE_CHECKING, NamedTuple
 
 import numpy as np
 
 from skcable import _plausible
 from skcable._checks import positive
+from skcable._show import counted, quantity
 from skcable.errors import ConvergenceError, InputError
 from skcable.fe.continuation import StepControl
 
-__all__ = ["CapacityCurve", "StepResult", "StrandLayout", "capacity_curve"]
+if TYPE_CHECKING:  # pragma: no cover
+    from skcable.strand.fe.model import StrandModel
+
+__all__ = ["CapacityCurve", "Restick", "StepResult", "StrandLayout", "capacity_curve", "restick"]
+
+
+class Restick(NamedTuple):
+    """Where a strand re-sticks (`restick`, `CapacityCurve.restick`): the strains and slip
+    fractions before and after the steps over which its slip fraction falls."""
+
+    strain_before: float
+    strain_after: float
+    fraction_before: float
+    fraction_after: float
+
+
+def restick(strain, slip_fraction, drop: float = 0.5, step: float = 0.1) -> Restick | None:
+    """Where a strand re-sticks: the run of load steps over which the fraction of the length
+    in slip falls by more than ``step`` per step, around its steepest fall, if it falls by more
+    than ``drop`` over that run (None otherwise: the strand never re-sticks).
+
+    Slip starts at the first step, where the critical curvature κ_m (which grows with the axial
+    strain: the wires' tension presses them together) is still below the curvature the broken
+    wires impose; the strand re-sticks where κ_m passes it (Pino Vidal 2021, ch. 3).
+    ``strain`` and ``slip_fraction`` are a curve's steps (`CapacityCurve.restick` passes its own).
+    """
+    fraction = np.asarray(slip_fraction, dtype=float)
+    fall = -np.diff(fraction)
+    if not fall.size or not fall.max() > step:
+        return None
+    first = last = int(np.argmax(fall))
+    while first > 0 and fall[first - 1] > step:
+        first -= 1
+    while last + 1 < fall.size and fall[last + 1] > step:
+        last += 1
+    if not fraction[first] - fraction[last + 1] > drop:
+        return None
+    return Restick(
+        float(strain[first]), float(strain[last + 1]), float(fraction[first]), float(fraction[last + 1])
+    )
 
 
 @dataclass(frozen=True, eq=False)
@@ -186,11 +227,15 @@ class StepResult:
     def __repr__(self) -> str:
         peak = float(np.max(np.abs(self.curvature))) if self.curvature.size else 0.0
         top = float(np.max(self.wire_strain)) if self.wire_strain.size else 0.0
-        return (
-            f"StepResult(strain={self.strain:.6g}, force={self.force:.6g} N, slip_fraction="
-            f"{self.slip_fraction:.3f}, peak_curvature={peak:.4g} 1/m, max_wire_strain={top:.4g}, "
-            f"iterations={self.iterations})"
+        shown = (
+            quantity("strain", self.strain),
+            quantity("force", self.force, "N"),
+            quantity("slip_fraction", self.slip_fraction),
+            quantity("peak_curvature", peak, "1/m"),
+            quantity("max_wire_strain", top),
+            quantity("iterations", self.iterations),
         )
+        return f"StepResult({', '.join(shown)})"
 
 
 @dataclass(repr=False)
@@ -212,7 +257,7 @@ class CapacityCurve:
         half the strain increment).
     """
 
-    model: object
+    model: StrandModel
     strain: np.ndarray
     force: np.ndarray
     slip_fraction: np.ndarray
@@ -232,15 +277,22 @@ class CapacityCurve:
         return [float(s.strain) for s in self.steps if s.shifted]
 
     def __repr__(self) -> str:
-        end = "ruptured" if self.ruptured else f"stopped: {self.failure}" if self.failure else "not ruptured"
+        last = "rupture" if self.ruptured else "last"
+        shown = [quantity(f"{last}_strain", self.strain[-1]), quantity(f"{last}_force", self.force[-1], "N")]
         try:
-            k = f"{self.K_Leq:.6g} N"
+            shown.append(quantity("K_Leq", self.K_Leq, "N"))
         except (ZeroDivisionError, FloatingPointError, IndexError):
-            k = "n/a"
+            shown.append("K_Leq=n/a")
+        shown += [
+            quantity("toughness", self.toughness, "N"),
+            quantity("max_slip_fraction", np.max(self.slip_fraction)),
+            quantity("cutbacks", self.cutbacks),
+            quantity("snaps", len(self.snaps)),
+        ]
+        end = "ruptured" if self.ruptured else f"stopped: {self.failure}" if self.failure else "not ruptured"
+        slip = getattr(getattr(self.model, "layout", None), "slip", "?")
         return (
-            f"CapacityCurve({len(self.steps)} steps to strain {self.strain[-1]:.6g}, force "
-            f"{self.force[-1]:.6g} N, K_Leq={k}, max slip fraction {np.max(self.slip_fraction):.3f}, "
-            f"{end}, cutbacks={self.cutbacks}, snaps={len(self.snaps)})"
+            f"CapacityCurve(slip {slip!r}, {counted([len(self.steps)], 'step')}, {end}: {', '.join(shown)})"
         )
 
     @cached_property
@@ -274,6 +326,11 @@ class CapacityCurve:
         """Equivalent linear stiffness over [0, elastic_limit] (N), eq. 4.30: the secant there."""
         strain, force = self._elastic_end
         return force / strain
+
+    def restick(self, drop: float = 0.5, step: float = 0.1) -> Restick | None:
+        """Where the strand re-sticks along this curve (`restick` of its strains and slip
+        fractions), or None."""
+        return restick(self.strain, self.slip_fraction, drop, step)
 
     def secant(self, strain: float) -> float:
         """Secant stiffness ``F(ε)/ε`` (N) at a strain on the curve, linear between steps.
@@ -417,8 +474,47 @@ def capacity_curve(
     if on_failure not in ("raise", "stop"):
         raise InputError("on_failure", f"must be 'raise' or 'stop', got {on_failure!r}")
     solve_options = NewtonOptions.of(model.options if options is None else options, **newton_options)
-    materials = model.strand.materials
-    layout = model.layout
+    n_steps, schedule = _schedule(model.strand.materials, max_strain, n_steps, state_passes)
+    path = _Path(model, state_passes, solve_options)
+    failure = None
+    control = StepControl(schedule)  # cut, hold, grow and lift the strain increments
+    for goal, smallest in control.goals():
+        while path.eps < goal - 1e-15 and failure is None:
+            step, target, cut, last = path.solve(control, goal, smallest)
+            if step is None:
+                failure = f"no convergence beyond strain {path.eps:.6g} (increment cut to 1/64 of the step)"
+                failure += _softening_note(model, path.steps[-1] if path.steps else None)
+                if on_failure == "raise":
+                    assert last is not None  # the solve that failed last
+                    raise ConvergenceError("capacity_curve: " + failure, last.history) from last
+                break
+            control.accept(path.eps, target, cut)
+            path.add(step, target)
+            if callback is not None:
+                callback(path.steps[-1], 1.0 if path.ruptured else path.eps / schedule[-1])
+            if path.ruptured:
+                break
+        if path.ruptured or failure:
+            break
+    return CapacityCurve(
+        model,
+        np.array(path.strains),
+        np.array(path.forces),
+        np.array(path.fractions),
+        path.steps,
+        path.ruptured,
+        path.chatter,
+        n_steps,
+        failure,
+        control.cutbacks,
+        solve_options,
+    )
+
+
+def _schedule(materials, max_strain, n_steps, state_passes) -> tuple[int, np.ndarray]:
+    """``n_steps`` checked (default 60) and the strain goals of `capacity_curve` after 0: half the
+    steps uniform up to twice the yield strain, half growing geometrically to ``max_strain``
+    (default 1.5 eps_rupture); ``max_strain`` and ``state_passes`` checked on the way."""
     if n_steps is None:
         n_steps = 60
     elif isinstance(n_steps, bool) or not isinstance(n_steps, (int, np.integer)):
@@ -448,80 +544,79 @@ def capacity_curve(
             ]
         )
     )[1:]
-    state = model.initial_state()
-    strains, forces, fractions, steps, chatter = [0.0], [0.0], [0.0], [], []
-    U, eps, previous = None, 0.0, None
-    ruptured, failure = False, None
-    control = StepControl(schedule)  # cut, hold, grow and lift the strain increments
-    for goal, smallest in control.goals():
-        while eps < goal - 1e-15 and failure is None:
-            target = control.target(eps, goal)
-            cut = False
-            while True:
-                try:
-                    guess = None if U is None else _extrapolate(U, previous, eps, target)
-                    result = model.solve(target, guess, state, passes=state_passes, options=solve_options)
-                    break
-                except ConvergenceError as exc:
-                    last, cut = exc, True
-                    target = control.cut(eps, target, smallest)
-                    if target is None:
-                        failure = (
-                            f"no convergence beyond strain {eps:.6g} (increment cut to 1/64 of the step)"
-                        )
-                        failure += _softening_note(model, steps[-1] if steps else None)
-                        break
-            if failure is not None:
-                if on_failure == "raise":
-                    raise ConvergenceError("capacity_curve: " + failure, last.history) from last
-                break
-            control.accept(eps, target, cut)
-            previous, step = (U, eps), result
-            U, state = step.dofs, step.state
-            if not step.settled:
-                chatter.append(len(steps))
-            eps = target
-            steps.append(step)
-            strains.append(step.strain)
-            forces.append(step.force)
-            fractions.append(step.slip_fraction)
-            peak, rupture = layout.peak(step.wire_strain, "eps_rupture")
-            if step.wire_strain.size and peak >= rupture:
-                # end the curve where the most strained wire (relative to its own material's
-                # rupture strain) reaches its rupture strain
-                before = layout.peak(steps[-2].wire_strain, "eps_rupture")[0] if len(steps) > 1 else 0.0
-                t = (rupture - before) / (peak - before)
-                strains[-1] = strains[-2] + t * (strains[-1] - strains[-2])
-                forces[-1] = forces[-2] + t * (forces[-1] - forces[-2])
-                ruptured = True
-                # one last state everywhere: the last step is the equilibrium at the rupture strain
-                # (the force of the curve stays the interpolated one; they differ by its error)
-                guess = None if previous[0] is None else previous[0] + t * (U - previous[0])
-                try:
-                    steps[-1] = model.solve(
-                        strains[-1], guess, steps[-2].state if len(steps) > 1 else None, options=solve_options
-                    )
-                except ConvergenceError:
-                    pass  # keep the step beyond rupture: the curve itself ends at the rupture strain
-            if callback is not None:
-                callback(steps[-1], 1.0 if ruptured else eps / schedule[-1])
-            if ruptured:
-                break
-        if ruptured or failure:
-            break
-    return CapacityCurve(
-        model,
-        np.array(strains),
-        np.array(forces),
-        np.array(fractions),
-        steps,
-        ruptured,
-        chatter,
-        n_steps,
-        failure,
-        control.cutbacks,
-        solve_options,
-    )
+    return n_steps, schedule
+
+
+class _Path:
+    """The converged steps of a capacity curve so far (the origin first in ``strains``,
+    ``forces`` and ``fractions``), the steps whose slip state did not settle, and where the
+    next step starts from: the last dofs ``U`` at strain ``eps``, the step before, the state."""
+
+    def __init__(self, model, passes: int, options):
+        self.model, self.passes, self.options = model, passes, options
+        self.layout = model.layout
+        self.state = model.initial_state()
+        self.strains, self.forces, self.fractions = [0.0], [0.0], [0.0]
+        self.steps: list[StepResult] = []
+        self.chatter: list[int] = []
+        self.U: np.ndarray | None = None
+        self.eps = 0.0
+        self.previous: tuple[np.ndarray | None, float] = (None, 0.0)  # read once U is set
+        self.ruptured = False
+
+    def solve(self, control: StepControl, goal: float, smallest: float):
+        """The next step towards ``goal``, its increment halved while the solve fails:
+        ``(step, target, cut, None)``, or ``(None, target, True, error)`` with the last solve's
+        `ConvergenceError` once the increment would fall below ``smallest``."""
+        target = control.target(self.eps, goal)
+        cut = False
+        while True:
+            try:
+                guess = None if self.U is None else _extrapolate(self.U, self.previous, self.eps, target)
+                step = self.model.solve(target, guess, self.state, passes=self.passes, options=self.options)
+                return step, target, cut, None
+            except ConvergenceError as exc:
+                cut = True
+                halved = control.cut(self.eps, target, smallest)
+                if halved is None:
+                    return None, target, cut, exc
+                target = halved
+
+    def add(self, step: StepResult, target: float) -> None:
+        """Keep a converged step at strain ``target``; end the curve at the rupture strain if a
+        wire reached it."""
+        self.previous = (self.U, self.eps)
+        self.U, self.state = step.dofs, step.state
+        if not step.settled:
+            self.chatter.append(len(self.steps))
+        self.eps = target
+        self.steps.append(step)
+        self.strains.append(step.strain)
+        self.forces.append(step.force)
+        self.fractions.append(step.slip_fraction)
+        peak, rupture = self.layout.peak(step.wire_strain, "eps_rupture")
+        if step.wire_strain.size and peak >= rupture:
+            self._end_at_rupture(peak, rupture, step.dofs)
+
+    def _end_at_rupture(self, peak: float, rupture: float, U: np.ndarray) -> None:
+        """End the curve where the most strained wire (relative to its own material's rupture
+        strain) reaches its rupture strain, and solve the last step there."""
+        steps, strains, forces = self.steps, self.strains, self.forces
+        before = self.layout.peak(steps[-2].wire_strain, "eps_rupture")[0] if len(steps) > 1 else 0.0
+        t = (rupture - before) / (peak - before)
+        strains[-1] = strains[-2] + t * (strains[-1] - strains[-2])
+        forces[-1] = forces[-2] + t * (forces[-1] - forces[-2])
+        self.ruptured = True
+        # one last state everywhere: the last step is the equilibrium at the rupture strain
+        # (the force of the curve stays the interpolated one; they differ by its error)
+        U_prev = self.previous[0]
+        guess = None if U_prev is None else U_prev + t * (U - U_prev)
+        try:
+            steps[-1] = self.model.solve(
+                strains[-1], guess, steps[-2].state if len(steps) > 1 else None, options=self.options
+            )
+        except ConvergenceError:
+            pass  # keep the step beyond rupture: the curve itself ends at the rupture strain
 
 
 def _softening_note(model, step) -> str:

@@ -22,7 +22,7 @@ RTOL = 1e-10
 
 def _contact_is_exact(b):
     """Complementarity at the nodes: no penetration beyond round-off, λ >= 0, λ·gap = 0."""
-    scale = b._problem.load_scale
+    scale = b.problem.load_scale
     assert b.gap.min() >= -1e-12 * b.length
     assert b.normal_force.min() >= -10 * RTOL * scale
     assert np.all(np.abs(b.gap[b.in_contact]) <= 1e-12 * b.length)
@@ -106,7 +106,7 @@ def test_friction_that_takes_the_whole_pull_leaves_a_slack_stretch_as_jonkman():
     assert np.all(np.log2(e40 / e160) / 2 > 3.5)  # measured 4.1 (H), 4.9 (V_B, grounded length)
     assert np.all(e160 < 1e-10)  # measured 3.5e-11 (H), 4.4e-13 (V_B), 1.8e-13 (grounded length / L)
     # s0 is found to a tension RTOL·W·L past it, which friction μW builds in RTOL·L/μ (measured 7e-9 m)
-    assert b._problem.slack_end == pytest.approx(s0, abs=RTOL * L / mu)
+    assert b.problem.slack_end == pytest.approx(s0, abs=RTOL * L / mu)
 
 
 def test_sloped_closed_form_matches_moorpy():
@@ -312,15 +312,18 @@ def test_bad_segments_are_named():
 def test_generalized_jacobian_agrees_with_central_differences():
     # a curved seabed (b'' != 0), friction, some nodes active and some not; the perturbation
     # keeps every node on its side of the switch λ = c·g, where F is smooth
-    from skcable.cable.bvp.line import LineProblem, _guess, _seabed, _segments
+    from skcable.cable.bvp.line.contact import seabed_of
+    from skcable.cable.bvp.line.inputs import segments_of
+    from skcable.cable.bvp.line.problem import LineProblem
+    from skcable.cable.bvp.line.start import closed_form_start
 
     def bed(x):
         return -2.0 + 1.5 * np.sin(x / 40.0)
 
     problem = LineProblem(
-        300.0, 60.0, _segments([(340.0, 500.0, 2e8)]), [], _seabed(bed, None, 300.0), 0.15, 12
+        300.0, 60.0, segments_of([(340.0, 500.0, 2e8)]), [], seabed_of(bed, None, 300.0), 0.15, 12
     )
-    z = _guess(problem)
+    z = closed_form_start(problem)
     rng = np.random.default_rng(5)
     z = z + 0.01 * rng.standard_normal(z.size)
     z[problem.N + problem.end_a], z[problem.N + problem.end_b] = 0.0, 60.0
@@ -454,7 +457,7 @@ def test_nearly_L_shaped_lines_converge_to_jonkman_at_h4(ratio, slack, mu, ea_ov
         # complementarity to the solver's tolerance: the switch min(λ, c g) of a node on a tiny
         # element (c ∝ its length) can leave the first node past the touchdown flagged in
         # contact 4 µm above the seabed with λ = 1.7e-9 N (1.7e-11 of the weight) at 80 elements
-        scale = b._problem.load_scale
+        scale = b.problem.load_scale
         assert b.gap.min() >= -1e-12 * b.length
         assert b.normal_force.min() >= -10 * RTOL * scale
         on_bed = np.abs(b.gap) <= 1e-12 * b.length

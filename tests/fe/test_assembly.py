@@ -265,3 +265,22 @@ def test_newton_rejects_failed_trials_and_stops_at_a_given_round_off_floor():
         noisy, np.array([0.0]), norm=floored, increment=lambda r: -r, tol=1e-14, floor=lambda r: 2e-9
     )
     assert result.at_floor and result.x[0] == 2.0
+
+
+@pytest.mark.parametrize(
+    ("old", "new"),
+    [
+        ("skcable.cable.bvp.assembly.LineAssembly", "skcable.fe.assembly.Assembly"),
+        ("skcable.cable.bvp.bordered.BorderedSolver", "skcable.fe.linear.BorderedSolver"),
+        ("skcable.cable.bvp.probes.gradient_probes", "skcable.fe.probes.gradient_probes"),
+        ("skcable.cable.bvp.probes.element_values", "skcable.fe.probes.element_values"),
+    ],
+)
+def test_the_names_that_moved_to_fe_are_served_with_a_warning_naming_the_new_one(old, new):
+    import importlib
+
+    module, _, name = old.rpartition(".")
+    home, _, new_name = new.rpartition(".")
+    with pytest.warns(DeprecationWarning, match=new.replace(".", r"\.")):
+        served = getattr(importlib.import_module(module), name)
+    assert served is getattr(importlib.import_module(home), new_name)

@@ -86,20 +86,30 @@ def test_strand_series_round_trip(tmp_path, curves):
     parts = model.split(step.dofs)
     np.testing.assert_allclose(mesh.points[:, 0], model.mesh.p[0])
     np.testing.assert_allclose(
-        mesh.point_data["displacement"][:, 0], parts["u"][model.bases["u"].nodal_dofs[0]]
+        mesh.point_data["displacement_m"][:, 0], parts["u"][model.bases["u"].nodal_dofs[0]]
     )
     np.testing.assert_allclose(
-        mesh.point_data["displacement"][:, 1], parts["v"][model.bases["v"].nodal_dofs[0]]
+        mesh.point_data["displacement_m"][:, 1], parts["v"][model.bases["v"].nodal_dofs[0]]
     )
-    np.testing.assert_allclose(grid.point_data["displacement"], mesh.point_data["displacement"])
+    np.testing.assert_allclose(grid.point_data["displacement_m"], mesh.point_data["displacement_m"])
     # the pulled end moves by strain * length
-    assert mesh.point_data["displacement"][np.argmax(model.mesh.p[0]), 0] == pytest.approx(step.strain * 0.3)
+    assert mesh.point_data["displacement_m"][np.argmax(model.mesh.p[0]), 0] == pytest.approx(
+        step.strain * 0.3
+    )
     # the axial force along the strand equals the reaction (equilibrium of any cut), to the projection
-    np.testing.assert_allclose(mesh.point_data["axial_force"], step.force, rtol=2e-2)
-    np.testing.assert_allclose(mesh.cell_data["element_size"][0].sum(), 0.3)
+    np.testing.assert_allclose(mesh.point_data["axial_force_N"], step.force, rtol=2e-2)
+    np.testing.assert_allclose(mesh.cell_data["element_size_m"][0].sum(), 0.3)
+    # axial and transverse displacement apart: u alone, and (0, v, w)
+    np.testing.assert_array_equal(
+        mesh.point_data["axial_displacement_m"], mesh.point_data["displacement_m"][:, 0]
+    )
+    transverse = mesh.point_data["transverse_displacement_m"]
+    assert np.all(transverse[:, 0] == 0) and np.array_equal(
+        transverse[:, 1:], mesh.point_data["displacement_m"][:, 1:]
+    )
     np.testing.assert_allclose(grid.cell_data["slip_1"], mesh.cell_data["slip_1"][0])
     assert np.all((mesh.cell_data["slip_1"][0] >= 0) & (mesh.cell_data["slip_1"][0] <= 1))
-    EI = mesh.cell_data["EI_in_use"][0]
+    EI = mesh.cell_data["EI_in_use_N_m2"][0]
     section = model.strand.section()
     assert np.all(EI > 0.9 * section.EI_slip.min()) and np.all(EI < 1.1 * section.EI_stick.max())
     w = meshio.read(tmp_path / f"s_wires_{len(curve.steps) - 1:04d}.vtu")
@@ -114,8 +124,8 @@ def test_intact_strand_fields_match_closed_form(tmp_path, curves):
     step = curve.steps[-1]
     mesh = curve.step_mesh(-1)
     EA = curve.model.strand.section().EA
-    np.testing.assert_allclose(mesh.point_data["axial_force"], EA * step.strain, rtol=1e-6)
-    assert np.max(np.abs(mesh.point_data["curvature"])) < 1e-9
+    np.testing.assert_allclose(mesh.point_data["axial_force_N"], EA * step.strain, rtol=1e-6)
+    assert np.max(np.abs(mesh.point_data["curvature_per_m"])) < 1e-9
     # undeformed wires (scale 0) lie on their helix: radius = core + wire radius = d for equal wires
     wires = curve.step_mesh(0, wires=True, scale=0.0)
     radius = np.hypot(wires.points[:, 1], wires.points[:, 2]).reshape(7, -1)

@@ -6,16 +6,14 @@ One concern per module:
   scikit-fem forms (the reference the fast assembly is tested against);
 - `elements`: the line elements (and a scikit-fem
   workaround for hierarchical ones);
-- `probes`: values, slopes and minima of a field at
-  arbitrary points;
-- `bordered`: the Newton increment of a banded
-  tangent bordered by one global unknown;
+- `assembly`, `bordered`, `probes`: deprecated, moved to `skcable.fe` (`Assembly`,
+  `BorderedSolver`, `skcable.fe.probes`) and served there for one release;
 - `base`: what both solutions share;
 - `graph`: the graph form y(x), H global;
 - `arc`: the arc-length form, L0 global;
 - `solve`: `solve_bvp`, which checks the
   arguments, picks the formulation and runs `skcable.fe.newton`;
-- `line`: `solve_line_bvp`, a mooring line in the arc form (segments,
+- `line`: `solve_line_bvp` and the line model `LineBVP`, a mooring line in the arc form (segments,
   w(s), point loads) with unilateral seabed contact of any shape.
 """
 
@@ -29,13 +27,14 @@ from skcable.cable.bvp.forms import (
     graph_tangent,
 )
 from skcable.cable.bvp.graph import BVPSolution
-from skcable.cable.bvp.line import BVPSegment, LineBVPSolution, solve_line_bvp
+from skcable.cable.bvp.line import BVPSegment, LineBVP, LineBVPSolution, solve_line_bvp
 from skcable.cable.bvp.solve import solve_bvp
 
 __all__ = [
     "ArcSolution",
     "BVPSegment",
     "BVPSolution",
+    "LineBVP",
     "LineBVPSolution",
     "arc_constitutive",
     "arc_equilibrium_x",

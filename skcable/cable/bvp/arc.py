@@ -27,7 +27,7 @@ user's load callable, by central differences).
 The forms (`skcable.cable.bvp.forms`) are a *section law* in the
 generalized strains ``(x', y', x, y, T)``: `ArcProblem` assembles them
 with `skcable.fe.Assembly` (basis values and patterns once) and
-solves the bordered banded system of `skcable.cable.bvp.bordered`.
+solves the bordered banded system of `skcable.fe.linear.BorderedSolver`.
 
 Support reactions come from the residual rows at the supports:
 ``H_A = -R_x(A)``, ``V_A = R_y(A)``, ``H_B = R_x(B)``, ``V_B = R_y(B)``.
@@ -47,11 +47,11 @@ from skcable.cable._catenary import catenary
 from skcable.cable._loads import DeckLoad, DistributedLoad, PointLoad, SelfWeight
 from skcable.cable.bvp.base import FiniteElementSolution
 from skcable.cable.bvp.elements import end_dofs
-from skcable.cable.bvp.probes import element_values, gradient_probes, minimum_near
 from skcable.cable.terms import CableState, CableTerm, term_outputs
 from skcable.errors import ConvergenceError, InputError
 from skcable.fe.assembly import Assembly
 from skcable.fe.linear import BorderedSolver
+from skcable.fe.probes import element_values, gradient_probes, minimum_near
 
 __all__ = ["ArcProblem", "ArcSolution", "ArcState", "arc_guess", "arc_loads", "term_loads"]
 
@@ -143,6 +143,7 @@ class ArcState:
     @cached_property
     def J(self):
         """The global Jacobian wrt ``[x, y, T]`` (CSR), for inspection; Newton uses the band."""
+        assert self.assembly is not None, "a rejected state has no Jacobian"
         return self.assembly.matrix(element_matrices=self.Ke)
 
 
@@ -290,13 +291,14 @@ class ArcProblem:
     def increment(self, state: ArcState) -> np.ndarray:
         """Newton increment of (z, L0): the bordered banded solve."""
         system, free = self.solver.system, self.free
-        ab = system.add_elements(system.band(), state.Ke)
+        R, Ke, dR_dL0, dg = state.R, state.Ke, state.dR_dL0, state.dg
+        assert R is not None and Ke is not None, "a rejected state has no increment"
+        ab = system.add_elements(system.band(), Ke)
         if self.fixed_length:
-            d_z, d_L = self.solver.solve(ab, state.R[free], gap=0.0)
+            d_z, d_L = self.solver.solve(ab, R[free], gap=0.0)
         else:
-            d_z, d_L = self.solver.solve(
-                ab, state.R[free], state.dR_dL0[free], state.dg[free], state.dg_dL0, state.g
-            )
+            assert dR_dL0 is not None and dg is not None, "an assembly of free length has its borders"
+            d_z, d_L = self.solver.solve(ab, R[free], dR_dL0[free], dg[free], state.dg_dL0, state.g)
         step = np.zeros(2 * self.N + self.M + 1)
         step[free] = d_z
         step[-1] = d_L
@@ -585,5 +587,6 @@ class ArcSolution(FiniteElementSolution):
         return (
             f"ArcSolution(span={self.span:g}, dh={self.dh:g}, {self.mesh.t.shape[1]} elements: "
             f"H_A={self.H_A:.9g}, V_A={self.V_A:.9g}, H_B={self.H_B:.9g}, V_B={self.V_B:.9g}, "
-            f"length={self.length:.9g}, iterations={self.iterations})"
+            f"T_A={self.T_A:.9g}, T_B={self.T_B:.9g}, length={self.length:.9g} (N, m), "
+            f"iterations={self.iterations})"
         )

@@ -1,9 +1,7 @@
-"""The cable BVPs' assembly is `skcable.fe.Assembly` (one assembly for strands and cables).
+"""Deprecated: the cable BVPs' assembly is `skcable.fe.assembly.Assembly` (one assembly for
+strands and cables). ``LineAssembly`` is served for one release with a `DeprecationWarning`."""
 
-``LineAssembly`` is its old name, kept for the line BVP's modules until they import
-`skcable.fe.Assembly` themselves.
-"""
+from skcable._lazy import attach
 
-from skcable.fe.assembly import Assembly as LineAssembly
-
-__all__ = ["LineAssembly"]
+__all__: list[str] = []
+__getattr__, __dir__ = attach(__name__, moved={"LineAssembly": "skcable.fe.assembly.Assembly"})

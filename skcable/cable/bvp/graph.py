@@ -19,7 +19,7 @@ x`` (zero at both supports, so that rounding scales with the sag), any degree
 1–6. `GraphProblem.assemble` evaluates the residual, the tangent (per
 element), ``∂R/∂H`` and the constraint row with basis values, element
 products and a band layout computed once per problem; the increment is the
-bordered banded solve of `skcable.cable.bvp.bordered`. Support
+bordered banded solve of `skcable.fe.linear.BorderedSolver`. Support
 reactions are the residual rows at the supports (``V_A = R_A``, ``V_B =
 R_B``), exact for the discrete solution.
 """
@@ -38,11 +38,11 @@ from skcable.cable._loads import PointLoad, unstretched_measure
 from skcable.cable._parabola import parabola
 from skcable.cable.bvp.base import FiniteElementSolution
 from skcable.cable.bvp.elements import end_dofs, line_element
-from skcable.cable.bvp.probes import element_values, gradient_probes, minimum_near
 from skcable.cable.terms import CableState, CableTerm, term_outputs
 from skcable.errors import InputError
 from skcable.fe.assembly import Assembly
 from skcable.fe.linear import BorderedSolver
+from skcable.fe.probes import element_values, gradient_probes, minimum_near
 
 __all__ = ["BVPSolution", "GraphProblem", "GraphState", "initial_guess"]
 
@@ -536,5 +536,6 @@ class BVPSolution(FiniteElementSolution):
         return (
             f"BVPSolution(span={self.span:g}, dh={self.dh:g}, {self.mesh.t.shape[1]} elements: "
             f"H={self.H:.9g} (both ends), V_A={self.V_A:.9g}, V_B={self.V_B:.9g}, "
-            f"length={self.length:.9g}, iterations={self.iterations})"
+            f"T_A={self.T_A:.9g}, T_B={self.T_B:.9g}, length={self.length:.9g} (N, m), "
+            f"iterations={self.iterations})"
         )

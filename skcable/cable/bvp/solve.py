@@ -196,30 +196,41 @@ def solve_bvp(
     formulation = _choose_formulation(formulation, loads)
     if formulation == "arc":
         problem = ArcProblem(span, dh, loads, EA, (name, value), n_elements, degree, end_force=end_force)
-        z, L0 = arc_guess(problem)
-        if problem.fixed_length:
-            L0 = float(value)
-        result = _newton(
-            problem,
-            z,
-            L0,
-            rtol=rtol,
-            max_iter=int(max_iter),
-            merit=lambda state: state.merit,
-            name="solve_bvp(formulation='arc')",
-            **settings,
-        )
-        size = len(z)
-        solution = ArcSolution(problem, result.x[:size], result.x[size], result.history, result.state)
-        return _checked(solution, rtol)
-    problem = GraphProblem(span, dh, loads, EA, (name, value), mesh, n_elements, degree)
+        return _solve_arc(problem, value, rtol, int(max_iter), settings)
+    graph = GraphProblem(span, dh, loads, EA, (name, value), mesh, n_elements, degree)
+    return _solve_graph(graph, rtol, int(max_iter), settings)
+
+
+def _solve_arc(problem: ArcProblem, value, rtol: float, max_iter: int, settings: dict) -> ArcSolution:
+    """The arc form's Newton run from `arc_guess` (the unstretched length ``value`` when it is
+    fixed) and its checked solution."""
+    z, L0 = arc_guess(problem)
+    if problem.fixed_length:
+        L0 = float(value)
+    result = _newton(
+        problem,
+        z,
+        L0,
+        rtol=rtol,
+        max_iter=max_iter,
+        merit=lambda state: state.merit,
+        name="solve_bvp(formulation='arc')",
+        **settings,
+    )
+    size = len(z)
+    solution = ArcSolution(problem, result.x[:size], result.x[size], result.history, result.state)
+    return _checked(solution, rtol)
+
+
+def _solve_graph(problem: GraphProblem, rtol: float, max_iter: int, settings: dict) -> BVPSolution:
+    """The graph form's Newton run from `initial_guess` and its checked solution."""
     dofs, H0 = initial_guess(problem)
     result = _newton(
         problem,
         dofs,
         H0,
         rtol=rtol,
-        max_iter=int(max_iter),
+        max_iter=max_iter,
         merit=lambda state: state.descent,
         name="solve_bvp",
         **settings,

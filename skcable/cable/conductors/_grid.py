@@ -30,6 +30,9 @@ round-off; its bound is a few ulps of the terms it adds.
 
 from __future__ import annotations
 
+from collections.abc import Callable
+from typing import Any
+
 import numpy as np
 
 from skcable.errors import ConvergenceError
@@ -38,6 +41,8 @@ __all__ = ["reference_lengths", "solve_spans", "closure_residual", "sag_of", "st
 
 _EPS = float(np.finfo(float).eps)
 _MAX_ITER = 50
+#: The closure's arguments ``H, m, w, EA, L, span, dh`` (arrays).
+_Closure = tuple[Any, Any, Any, Any, Any, Any, Any]
 _STEP_TOL = 1e-9  # relative Newton step after which the iterate is at round-off (quadratic rate)
 #: The check's bound: this many ulps of the closure's terms (the check's own round-off is a few).
 CHECK_ULPS = 64.0
@@ -87,7 +92,7 @@ def _floor(H, m, w, EA, L, span, dh, parts, chord):
     return (8.0 * _EPS) * np.maximum(terms_x, terms_y) / chord
 
 
-def _newton(unknowns, jacobian, args, chord, what):
+def _newton(unknowns, jacobian, args: Callable[[Any, Any], _Closure], chord, what):
     """Elementwise damped Newton on the closure in two unknowns.
 
     ``unknowns`` = (p, q) as arrays, ``jacobian(p, q, parts) -> (a, b, c, d)`` the matrix

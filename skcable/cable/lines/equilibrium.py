@@ -34,6 +34,7 @@ import warnings
 
 import numpy as np
 
+from skcable._show import counted, quantity
 from skcable.errors import ConvergenceError, InputError, PlausibilityWarning
 from skcable.fe import newton
 
@@ -325,8 +326,14 @@ class MooringEquilibrium:
 
     def __repr__(self):
         note = "" if self.stable else ", UNSTABLE"
-        return (
-            f"MooringEquilibrium(offset={np.round(self.offset, 6).tolist()}, "
-            f"angles={np.round(self.angles, 9).tolist()}, iterations={len(self.history) - 1}, "
-            f"min_eigenvalue={self.eigenvalues[0]:.6g}{note})"
+        shown = ", ".join(
+            (
+                quantity("offset", self.offset, "m"),
+                quantity("angles", self.angles, "rad"),
+                quantity("heel", self.heel, "rad"),
+                quantity("T_fairlead", [line.tension_at_fairlead for line in self.lines], "N"),
+                quantity("min_eigenvalue", self.eigenvalues[0], "N/m"),
+                quantity("iterations", len(self.history) - 1),
+            )
         )
+        return f"MooringEquilibrium({counted([len(self.lines)], 'line')}: {shown}{note})"

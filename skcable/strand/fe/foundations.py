@@ -16,14 +16,17 @@ from skcable.strand.fe.terms import FIELDS, FieldAssembly, FieldTerm, Term
 __all__ = ["ElasticFoundation", "NodalSpring", "RigidCylinder", "TensionlessFoundation"]
 
 
-@BilinearForm
-def _winkler_y(u, v, w):
+# the forms wrap functions of other names: a term holding them pickles (a decorated function's
+# name would find the form, not the function)
+def _winkler_y_form(u, v, w):
     return w.ky * u * v
 
 
-@BilinearForm
-def _winkler_z(u, v, w):
+def _winkler_z_form(u, v, w):
     return w.kz * u * v
+
+
+_winkler_y, _winkler_z = BilinearForm(_winkler_y_form), BilinearForm(_winkler_z_form)
 
 
 class ElasticFoundation(FieldTerm):

@@ -27,14 +27,17 @@ def unit_load(v, w):
     return w.q * v
 
 
-@LinearForm
-def _load_y(v, w):
+# the forms wrap functions of other names: a term holding them pickles (a decorated function's
+# name would find the form, not the function)
+def _load_y_form(v, w):
     return w.qy * v
 
 
-@LinearForm
-def _load_z(v, w):
+def _load_z_form(v, w):
     return w.qz * v
+
+
+_load_y, _load_z = LinearForm(_load_y_form), LinearForm(_load_z_form)
 
 
 class TransverseLoad(FieldTerm):
@@ -82,6 +85,7 @@ class _PointTerm(Term):
     """A dead load vector ``f`` (N,) built once: residual ``−f``, energy ``−f·U``."""
 
     potential = True
+    _f: np.ndarray  # the load vector (N,), set by the subclass's ``setup``
 
     def contribute(self, U, step):
         return -self._f, None, {}

@@ -32,6 +32,7 @@ Source: S. Pino Vidal, "Rigidez a flexión en cables: análisis numérico", Univ
 from __future__ import annotations
 
 import warnings
+from typing import Any
 
 import numpy as np
 import scipy.sparse as sp
@@ -216,13 +217,14 @@ class StrandModel:
         )
 
     def __reduce__(self):
-        """Pickled as the data it was built from (the bases and tables are rebuilt)."""
+        """Pickled as the data it was built from (the bases and tables are rebuilt; the name of
+        the built-in physics kept)."""
         a = self._init
         kwargs = dict(
             mesh=a["mesh"], grading=a["grading"], physics=a["physics"], terms=a["terms"],
-            supports=a["supports"], element=a["element"], options=a["options"],
+            supports=a["supports"], element=a["element"], options=a["options"], mu=a["mu"],
         )  # fmt: skip
-        return (_rebuild, (type(self), a["strand"], a["length"], kwargs))
+        return (_rebuild, (type(self), a["strand"], a["length"], kwargs), {"damage_load": self.damage_load})
 
     # --- set-up --------------------------------------------------------------
     def _mesh(self, n_elements, mesh, grading):
@@ -400,7 +402,7 @@ class StrandModel:
         state = self.initial_state() if state is None else state
         g = self.generalized_strains(U)
         S = D = None
-        outputs = [None] * len(self._bound)
+        outputs: list[Any] = [None] * len(self._bound)  # each term's output dict, filled below
         for i, t in self._section_terms:
             St, Dt, outputs[i] = t.section(g, Step(strain, self.x, state[i]))
             S, D = (St, Dt.copy()) if S is None else (S + St, D + Dt)

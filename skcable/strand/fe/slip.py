@@ -24,6 +24,7 @@ stateless smooth law needs nothing else.
 from __future__ import annotations
 
 from abc import ABC, abstractmethod
+from collections.abc import Callable
 
 import numpy as np
 
@@ -137,7 +138,7 @@ class ElementSlip(SlipLaw):
         return np.where(stick, kappa, 0.0), stick.astype(float), np.zeros_like(kappa)
 
 
-_BY_NAME = {"none": Stick, "axis": AxisSlip, "element": ElementSlip}
+_BY_NAME: dict[str, Callable[[float], SlipLaw]] = {"none": Stick, "axis": AxisSlip, "element": ElementSlip}
 
 
 def slip_law(slip, mu: float = 0.5) -> SlipLaw:

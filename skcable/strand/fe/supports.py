@@ -144,6 +144,6 @@ class StrandSupports:
                 index.append(offsets[field] + dofs.nodal[nodal])
                 value.append(np.full(len(dofs.nodal[nodal]), v))
         fixed = np.concatenate(index).astype(int)
-        values = np.concatenate(value)
+        prescribed = np.concatenate(value)
         order = np.argsort(fixed, kind="stable")
-        return fixed[order], values[order]
+        return fixed[order], prescribed[order]

@@ -1,0 +1,150 @@
+"""The scene of one line BVP, checked: segments, point loads, seabed, friction and solver options.
+
+`BVPSegment` is one segment; `scene` checks every argument of `solve_line_bvp` (each refusal an
+`skcable.InputError` naming the argument as the public API spells it) and returns a `Scene`,
+which the solver (`skcable.cable.bvp.line.driver`) takes as it is.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+from dataclasses import dataclass
+
+import numpy as np
+
+from skcable._checks import nonnegative, positive, real, require, scalar, whole
+from skcable.cable.bvp.line.contact import Seabed, seabed_of
+from skcable.errors import InputError
+
+__all__ = ["BVPSegment", "Scene", "point_loads_of", "scene", "segments_of"]
+
+
+@dataclass(frozen=True)
+class BVPSegment:
+    """One segment of a line for `solve_line_bvp`, listed from the anchor A.
+
+    Attributes
+    ----------
+    length : float
+        Unstretched length (m), > 0.
+    w : float or callable
+        Weight per unit unstretched length (N/m, downward; negative for a
+        buoyant segment), or a callable of the arc length ``s`` from A (m,
+        over the whole line) returning it: a weight that varies continuously.
+    EA : float or None
+        Axial stiffness (N), > 0; ``None`` for an inextensible segment.
+    """
+
+    length: float
+    w: float | Callable
+    EA: float | None = None
+
+    def __post_init__(self):
+        object.__setattr__(self, "length", positive("length", self.length))
+        if not callable(self.w):
+            object.__setattr__(self, "w", real("w", self.w))
+            if isinstance(self.w, np.ndarray):
+                raise InputError("w", "one number per segment (or a callable of s)")
+        if self.EA is not None:
+            object.__setattr__(self, "EA", positive("EA", self.EA))
+
+
+def segments_of(segments) -> list[BVPSegment]:
+    """The segments as a list of `BVPSegment` (``(length, w[, EA])`` tuples converted)."""
+    if isinstance(segments, BVPSegment):
+        segments = [segments]
+    try:
+        items = list(segments)
+    except TypeError as exc:
+        raise InputError("segments", "give a list of BVPSegment or (length, w, EA) tuples") from exc
+    if not items:
+        raise InputError("segments", "give at least one segment")
+    out = []
+    for item in items:
+        if isinstance(item, BVPSegment):
+            out.append(item)
+        elif isinstance(item, (tuple, list)) and len(item) in (2, 3):
+            out.append(BVPSegment(*item))
+        else:
+            raise InputError("segments", f"each segment is a BVPSegment or (length, w[, EA]), got {item!r}")
+    return out
+
+
+def point_loads_of(point_loads, length: float) -> list[tuple[float, float]]:
+    """The point loads as ``(s, P)`` float pairs, ``0 < s < length``."""
+    loads = []
+    try:
+        items = list(point_loads)
+    except TypeError:
+        raise InputError("point_loads", f"must be a sequence of (s, P) pairs, got {point_loads!r}") from None
+    for item in items:
+        try:
+            s, P = item
+        except (TypeError, ValueError) as exc:
+            raise InputError("point_loads", f"each is (s, P), got {item!r}") from exc
+        s, P = real("point_loads", s), real("point_loads", P)
+        if np.ndim(s) or np.ndim(P):
+            raise InputError("point_loads", f"each is (s, P) with two numbers, got {item!r}")
+        require("point_loads", 0.0 < s < length, "s must lie strictly inside the line (0, length)", s)
+        loads.append((float(s), float(P)))
+    return loads
+
+
+@dataclass(frozen=True)
+class Scene:
+    """A checked scene and the solver's options (the arguments of `solve_line_bvp`)."""
+
+    span: float
+    dh: float
+    segments: list
+    point_loads: list
+    seabed: Seabed | None
+    friction: float
+    n_elements: int
+    fit_touchdown: int
+    rtol: float
+    max_iter: int
+
+    @property
+    def length(self) -> float:
+        """Unstretched length of the line (m)."""
+        return sum(seg.length for seg in self.segments)
+
+
+def scene(
+    span,
+    dh,
+    segments,
+    *,
+    seabed,
+    seabed_slope,
+    friction,
+    point_loads,
+    n_elements,
+    fit_touchdown,
+    rtol,
+    max_iter,
+) -> Scene:
+    """Every argument of `solve_line_bvp` checked, in its order; a `Scene`."""
+    span, dh = positive("span", span), real("dh", dh)
+    if not isinstance(span, float) or not isinstance(dh, float):
+        raise InputError("span", "solve_line_bvp solves one scene: give scalar span and dh")
+    segs = segments_of(segments)
+    bed = seabed_of(seabed, seabed_slope, span)
+    friction = nonnegative("friction", friction)
+    if not isinstance(friction, float):
+        raise InputError("friction", "one coefficient for the whole line")
+    if friction > 0 and bed is None:
+        raise InputError("friction", "applies to a line on the seabed: give seabed= as well")
+    if bed is not None:
+        ends = bed(np.array([0.0, span]))
+        require("seabed", ends[0] <= 0.0, "must be at or below the anchor A = (0, 0)", ends[0])
+        require("dh", dh > ends[1], "must put B above the seabed", dh)
+    loads = point_loads_of(point_loads, sum(seg.length for seg in segs))
+    whole("n_elements", n_elements, 1)
+    whole("fit_touchdown", fit_touchdown, 0, 10)
+    whole("max_iter", max_iter, 1)
+    rtol = scalar("rtol", positive("rtol", rtol))
+    return Scene(
+        span, dh, segs, loads, bed, friction, int(n_elements), int(fit_touchdown), rtol, int(max_iter)
+    )

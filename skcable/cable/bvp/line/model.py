@@ -1,0 +1,206 @@
+"""The public entry points of the line BVP: `solve_line_bvp`, and `LineBVP`, a line model."""
+
+from __future__ import annotations
+
+from skcable._checks import nonnegative, positive, scalar, whole
+from skcable.cable.bvp.line.driver import LineBVPSolver
+from skcable.cable.bvp.line.inputs import point_loads_of, scene, segments_of
+from skcable.cable.bvp.line.solution import LineBVPSolution
+from skcable.errors import InputError
+
+__all__ = ["LineBVP", "solve_line_bvp"]
+
+
+def solve_line_bvp(
+    span,
+    dh,
+    segments,
+    *,
+    seabed=None,
+    seabed_slope=None,
+    friction: float = 0.0,
+    point_loads=(),
+    n_elements: int = 64,
+    fit_touchdown: int = 2,
+    rtol: float = 1e-10,
+    max_iter: int = 50,
+) -> LineBVPSolution:
+    """A mooring line from anchor A = (0, 0) to fairlead B = (span, dh), by finite elements,
+    optionally resting on a seabed of any shape (see `skcable.cable.bvp.line`).
+
+    Parameters
+    ----------
+    span, dh : float
+        Fairlead position relative to the anchor (m), ``span > 0``.
+    segments : list of BVPSegment or (length, w, EA) tuples
+        From A to B: unstretched length (m), weight per unstretched length
+        (N/m, or a callable of the arc length s from A) and axial stiffness
+        (N, None for inextensible). Joints are mesh nodes.
+    seabed : float or callable, optional
+        Seabed height ``b`` relative to A (m): a number (flat) or a callable
+        ``b(x)`` (array in, array out). A must lie on or above it, B above it.
+    seabed_slope : callable, optional
+        ``b'(x)``; central differences of ``b`` (step 1e-5 span) otherwise.
+    friction : float
+        Coulomb coefficient μ of the grounded line, fully mobilised towards
+        the anchor (Jonkman's model); needs a seabed.
+    point_loads : sequence of (s, P)
+        Downward force ``P`` (N; negative for a buoy) at arc length ``s``
+        from A (a mesh node is put there).
+    n_elements : int
+        Elements over the whole line, shared among segments by length (at
+        least one each).
+    fit_touchdown : int
+        Passes of touchdown fitting (and, when > 0, meshes graded by the
+        line's curvature: `skcable.cable.bvp.line.mesh`): after a solve that touches the seabed,
+        a mesh node is put at the touchdown (and the landing, for an anchor
+        above the seabed) the vertical balance gives
+        (`LineBVPSolution.s_touchdown`, ``s_landing``: the nearest inner node moves there
+        when it is closer than a quarter of an element, else a node is
+        inserted) and the line is solved again from the previous solution,
+        until the touchdown moves less than 1e-9 of the length. Nodal contact
+        otherwise misplaces the touchdown by up to half an element, an error
+        in H of order (that distance)² that jumps with the mesh; 0 turns it off.
+    rtol : float
+        Newton stops when every scaled residual (forces over the total load,
+        the stretch over the length, the complementarity rows over the total
+        load) is below ``rtol``.
+    max_iter : int
+        Newton iterations at most.
+
+    Returns
+    -------
+    LineBVPSolution
+
+    Raises
+    ------
+    InputError
+        Bad data, named; friction too weak to hold a slack stretch on a
+        sloping seabed.
+    ConvergenceError
+        Newton stalled (``history`` holds the merit per iteration); the end
+        of a slack stretch not found; the discrete line in compression (its
+        bends not resolved by the mesh).
+
+    Notes
+    -----
+    The continuation (levels, gradings, friction, touchdown fitting, the slack stretch and the
+    retries) is `skcable.cable.bvp.line.driver.LineBVPSolver`'s.
+    """
+    checked = scene(
+        span,
+        dh,
+        segments,
+        seabed=seabed,
+        seabed_slope=seabed_slope,
+        friction=friction,
+        point_loads=point_loads,
+        n_elements=n_elements,
+        fit_touchdown=fit_touchdown,
+        rtol=rtol,
+        max_iter=max_iter,
+    )
+    return LineBVPSolver(checked).solve()
+
+
+class LineBVP:
+    """A mooring line solved by `solve_line_bvp`, as a line model: everything but the fairlead's
+    position, checked once; ``solve(span, dh, start=None)`` gives a `LineBVPSolution`.
+
+    A line model is what `skcable.cable.line_3d` and `skcable.cable.MooringSystem` take (see
+    `skcable.cable.lines.line3d`): `skcable.cable.Line` in closed form, or this one where the
+    closed form does not hold (a shaped seabed, a weight that varies along the line, point loads
+    between joints, a line that lands twice).
+
+    Parameters
+    ----------
+    segments, seabed, seabed_slope, friction, point_loads, n_elements, fit_touchdown, rtol, max_iter
+        As for `solve_line_bvp`.
+
+    Examples
+    --------
+    >>> from skcable.cable.bvp import LineBVP
+    >>> chain = LineBVP([(850.0, 1000.0, 5e8)], seabed=0.0, friction=0.3)
+    >>> line = chain.solve(780.0, 186.0)
+    >>> round(line.H_B), round(line.V_B)  # cable.Line: 234402 N and 348843 N
+    (234402, 348843)
+    """
+
+    def __init__(
+        self,
+        segments,
+        *,
+        seabed=None,
+        seabed_slope=None,
+        friction: float = 0.0,
+        point_loads=(),
+        n_elements: int = 64,
+        fit_touchdown: int = 2,
+        rtol: float = 1e-10,
+        max_iter: int = 50,
+    ):
+        self.segments = segments_of(segments)
+        if seabed is None and seabed_slope is not None:
+            raise InputError("seabed_slope", "applies to a seabed: give seabed= as well")
+        if not (seabed is None or callable(seabed)):
+            seabed = scalar("seabed", seabed)
+        self.seabed, self.seabed_slope = seabed, seabed_slope
+        self.friction = scalar("friction", nonnegative("friction", friction))
+        if self.friction > 0 and seabed is None:
+            raise InputError("friction", "applies to a line on the seabed: give seabed= as well")
+        self.point_loads = point_loads_of(point_loads, self.length)
+        self.n_elements = whole("n_elements", n_elements, 1)
+        self.fit_touchdown = whole("fit_touchdown", fit_touchdown, 0, 10)
+        self.rtol = scalar("rtol", positive("rtol", rtol))
+        self.max_iter = whole("max_iter", max_iter, 1)
+
+    @property
+    def length(self) -> float:
+        """Unstretched length (m)."""
+        return float(sum(seg.length for seg in self.segments))
+
+    def solve(self, span, dh, start=None) -> LineBVPSolution:
+        """The line with its anchor at (0, 0) and its fairlead at ``(span, dh)`` (m).
+
+        Parameters
+        ----------
+        span, dh : float
+            The fairlead relative to the anchor (m).
+        start : LineBVPSolution, optional
+            A solution of this model at a nearby fairlead (a moored body's previous position):
+            the solve starts from it, moved to the new ends, on its mesh, and is graded and
+            fitted from there; from scratch where that fails.
+
+        Raises
+        ------
+        InputError
+            Bad ``span``/``dh``, the arguments of `solve_line_bvp` it refuses; ``start`` that is
+            no solution of this model.
+        ConvergenceError
+            As `solve_line_bvp`.
+        """
+        checked = scene(
+            span,
+            dh,
+            self.segments,
+            seabed=self.seabed,
+            seabed_slope=self.seabed_slope,
+            friction=self.friction,
+            point_loads=self.point_loads,
+            n_elements=self.n_elements,
+            fit_touchdown=self.fit_touchdown,
+            rtol=self.rtol,
+            max_iter=self.max_iter,
+        )
+        solver = LineBVPSolver(checked)
+        if start is not None and not (isinstance(start, LineBVPSolution) and start.model is self):
+            raise InputError("start", f"must be a solution of this LineBVP, got {type(start).__name__}")
+        solution = solver.solve() if start is None else solver.solve_from(start)
+        solution.model = self
+        return solution
+
+    def __repr__(self):
+        return (
+            f"LineBVP({len(self.segments)} segments, length={self.length:g}, seabed={self.seabed!r}, "
+            f"friction={self.friction:g}, n_elements={self.n_elements})"
+        )
