@@ -231,7 +231,7 @@ def _failure_lines(failures, limit) -> list[str]:
         detail = m["detail"].replace("\n", " ")
         detail = detail if len(detail) < 600 else detail[:600] + " ..."
         out.append(f"- **{m['kind']}** `{m['sub']}` (case {m['index']}): {detail}")
-        out.append(f"  ```\n  {m['repro']}\n  ```")
+        out.append(f"  ```sh\n  {m['repro']}\n  ```")
     if len(failures) > limit:
         out.append(
             f"- ... and {len(failures) - limit} more of this kind: rerun one with "

@@ -8,9 +8,9 @@ import mpmath
 import numpy as np
 from mpmath import mp, mpf
 
-from tests.fuzz.mp import DPS, allowed_error, condition
+from tests.fuzz.mp import DPS, EPS, allowed_error, condition
 
-__all__ = ["close", "compare_all", "fd_stiffness", "compare_matrix", "fmt"]
+__all__ = ["check_stiffness", "close", "compare_all", "fd_stiffness", "compare_matrix", "fmt"]
 
 
 def fmt(value) -> str:
@@ -89,3 +89,29 @@ def compare_matrix(name, got, want, rel=1e-8) -> str | None:
     return (
         f"{name}: oracle {want_f.tolist()}, skcable {got.tolist()} (off by {error / size:.3g} of the largest)"
     )
+
+
+def check_stiffness(name, got, oracle, p, base, rel=1e-7, outputs=("H", "V_B"), inputs=(0, 1)) -> str | None:
+    """``got`` against the central differences of the oracle's roots (`fd_stiffness`), each
+    entry allowed ``rel`` of the largest plus the round-off its own conditioning carries (the
+    `condition` of the entries, computed only when the first comparison fails: a taut line's
+    stiffness inherits the conditioning of its H, ~1/strain)."""
+    K = fd_stiffness(oracle, p, base, outputs, inputs)
+    problem = compare_matrix(name, got, K, rel)
+    if problem is None:
+        return None
+    keys = [(i, j) for i in range(len(outputs)) for j in range(len(inputs))]
+
+    def entries(q):
+        root = oracle(q, base)
+        Kq = fd_stiffness(oracle, q, root, outputs, inputs)
+        return {f"{i}{j}": Kq[i, j] for i, j in keys}
+
+    spread = condition(entries, p, [f"{i}{j}" for i, j in keys])
+    got = np.asarray(got, dtype=float)
+    size = max(abs(float(K[i, j])) for i, j in keys)
+    for i, j in keys:
+        allowed = 2.0**10 * EPS * spread[f"{i}{j}"] + rel * size
+        if not abs(got[i, j] - float(K[i, j])) <= allowed:
+            return f"{problem} [entry ({i}, {j}) allowed {allowed:.3g} with its conditioning]"
+    return None

@@ -237,6 +237,24 @@ TARGETS = (
 #: Edges that may change the scene's regime rather than invalidate the argument.
 MODERATE = ("0.0", "-1.0", "np.float32(1.5)", "[1.0, 2.0]", "np.array([1.0, 2.0])")
 
+#: Arguments whose domain holds 0: a subnormal or 1e-300 there is a zero, no outsized value.
+ZERO_OK = (
+    "dh",
+    "seabed",
+    "friction",
+    "seabed_slope",
+    "alpha",
+    "t",
+    "t0",
+    "wind",
+    "N",
+    "insulator_length",
+    "insulator_weight",
+    "weight",
+    "tol",
+)
+TINY_EDGES = ("5e-324", "-5e-324", "1e-300", "2.5e-308")
+
 #: Arguments for which None is a valid choice (another argument may then be the one missing).
 OPTIONAL = ("seabed", "H", "sag", "H0", "sag0", "start", "n_elements")
 
@@ -264,10 +282,16 @@ def edge(rng) -> Case:
     expr = template.format(**call)
     # "constraint": the library's name for "exactly one of" its keywords (H or sag, ...)
     extra = {"segments", "attachments", "joint", "weight", "buoyancy", "start", "position", "constraint"}
+    if label.startswith("change_of_state"):  # the signature's other keywords (H0 or sag0, model)
+        extra |= {"H0", "sag0", "model", "wind"}
     names = frozenset(args) | extra
     # the fields of a segment given as a tuple are the argument ``segments``
     wanted = (name, "segments") if label == "solve_line_bvp" and name in ("length", "w", "EA") else (name,)
-    moderate = value in MODERATE or (value == "None" and name in OPTIONAL)
+    moderate = (
+        value in MODERATE
+        or (value == "None" and name in OPTIONAL)
+        or (value in TINY_EDGES and name in ZERO_OK)
+    )
     return Case(
         f"edges/{label}",
         expr,

@@ -238,10 +238,11 @@ KNOWN = (
         "F9",
         26,
         "moorings",
-        "sloped_seabed_catenary names 'dh' where span = 1e308 is at fault (D8 in the sloped seabed)",
+        "sloped_seabed_catenary names 'dh' where span or seabed_slope = 1e308 is at fault (D8 in the sloped "
+        "seabed)",
         ("edges/sloped_seabed_catenary",),
         ("untyped",),
-        r"names 'dh' where 'span'",
+        r"names 'dh' where '(span|seabed_slope)'",
         probes=(
             lambda: _edge(
                 "edges/sloped_seabed_catenary",
@@ -255,9 +256,10 @@ KNOWN = (
         "F7",
         26,
         "linebvp",
-        "solve_line_bvp: a segment's EA given as a list escapes as ValueError; a subnormal EA names 'length'",
+        "solve_line_bvp: a segment's EA given as a list escapes as ValueError; a subnormal EA names "
+        "'length'; EA = inf is taken (the result holds EA = inf)",
         ("edges/solve_line_bvp",),
-        ("untyped",),
+        ("untyped", "non-finite"),
         probes=(
             lambda: _edge(
                 "edges/solve_line_bvp",

@@ -11,7 +11,7 @@ from __future__ import annotations
 import math
 
 from tests.fuzz.catenary import free_line, seabed_line
-from tests.fuzz.compare import close, compare_all, compare_matrix, fd_stiffness, fmt
+from tests.fuzz.compare import check_stiffness, close, compare_all, fmt
 from tests.fuzz.harness import Case
 from tests.fuzz.mp import EPS, condition
 from tests.fuzz.scenes import log_uniform, pick, slack_length
@@ -42,7 +42,7 @@ def _free_problems(result, p, K_rel=1e-7):
         result, want, oracle, p, ["H", "V_A", "V_B"], {"H": 0.0, "V_A": force, "V_B": force}
     )
     if not problems:
-        problem = compare_matrix("stiffness()", result.stiffness(), fd_stiffness(oracle, p, want), K_rel)
+        problem = check_stiffness("stiffness()", result.stiffness(), oracle, p, want, K_rel)
         problems += [problem] if problem else []
     return problems, want, oracle
 
@@ -187,8 +187,7 @@ def seabed_case(p) -> Case:
         if bool(result.heap) != (want["regime"] == "heap"):
             problems.append(f"heap: oracle {want['regime']}, skcable heap={result.heap}")
         if not problems:
-            K = fd_stiffness(oracle, p, want)
-            problem = compare_matrix(f"stiffness() ({want['regime']})", result.stiffness(), K, 1e-7)
+            problem = check_stiffness(f"stiffness() ({want['regime']})", result.stiffness(), oracle, p, want)
             problems += [problem] if problem else []
         return problems
 
