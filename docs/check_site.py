@@ -7,7 +7,8 @@ a page that needs a CDN fails here as it would offline. The check fails on
 
 - raw TeX or RST in the rendered text (``\\(``, ``\\[``, ``$$``, ``:math:``, ``.. math::``
   outside code), a formula KaTeX could not read (``.katex-error``) or left unrendered;
-- an image that did not load, a request that failed or answered 4xx/5xx;
+- an image that did not load, a request that failed or answered 4xx/5xx, image markdown or a
+  template's ``%s`` shown as text (mkdocs-gallery's list of several figures);
 - a link to a page or an anchor of the site that does not exist;
 - a gallery thumbnail that is mkdocs-gallery's placeholder (an example without a figure);
 
@@ -46,10 +47,10 @@ CHROMIUM_FLAGS = [
     "--disable-component-update",
     "--disable-sync",
 ]
-RAW = re.compile(r"\\\(|\\\)|\\\[|\\\]|\$\$|:math:|\.\. math::")
+RAW = re.compile(r"\\\(|\\\)|\\\[|\\\]|\$\$|:math:|\.\. math::|^\s*%s\s*$|!\[[^\]]*\]\(")
 
 # the text a reader sees: no code, no scripts, no rendered maths
-PAGE_STATE = """() => {
+PAGE_STATE = r"""() => {
   const body = document.body.cloneNode(true);
   body.querySelectorAll("pre, code, script, style, .katex, .md-search, .md-sidebar")
       .forEach(e => e.remove());
@@ -59,6 +60,8 @@ PAGE_STATE = """() => {
     mathErrors: [...document.querySelectorAll(".katex-error")].map(e => e.textContent.slice(0, 80)),
     unrendered: math.filter(e => !e.querySelector(".katex")).map(e => e.textContent.slice(0, 80)),
     math: math.length,
+    rawImages: [...document.querySelectorAll("pre, code")].map(e => e.textContent)
+      .filter(t => /!\[[^\]]*\]\([^)]*\)\{: \.mkd-glr/.test(t)).map(t => t.slice(0, 80)),
     images: [...document.images].map(
       i => ({src: i.currentSrc || i.src, ok: i.complete && i.naturalWidth > 0})),
     links: [...document.querySelectorAll("a[href]")].map(a => a.href),
@@ -152,7 +155,8 @@ def check_page(page, base: str, path: str) -> tuple[list[str], set[str], int]:
     where = "/" + path
     for line in state["text"].splitlines():
         if RAW.search(line):
-            problems.append(f"{where}: raw TeX/RST in the text: {line.strip()[:100]!r}")
+            problems.append(f"{where}: raw TeX/RST or template text: {line.strip()[:100]!r}")
+    problems += [f"{where}: image markdown shown as text: {t!r}" for t in state["rawImages"]]
     problems += [f"{where}: KaTeX could not read: {t!r}" for t in state["mathErrors"]]
     problems += [f"{where}: formula left unrendered: {t!r}" for t in state["unrendered"]]
     problems += [f"{where}: image did not load: {i['src']}" for i in state["images"] if not i["ok"]]

@@ -44,10 +44,12 @@ def png_files_scraper(block, script, **kwargs) -> str:
     for png, target in zip(new, script.run_vars.image_path_iterator, strict=False):
         shutil.copyfile(png, target)
         paths.append(Path(target))
-    if not paths:
-        return ""
-    titles = ", ".join(p.stem.replace("_", " ") for p in new)
-    return figure_md_or_html(paths, script, fig_titles=titles)
+    # one figure per call: mkdocs-gallery 0.10's list of several figures leaves its template's
+    # "%s" in the page and the images as text (docs/check_site.py catches it)
+    return "\n".join(
+        figure_md_or_html([path], script, fig_titles=png.stem.replace("_", " "))
+        for png, path in zip(new, paths, strict=False)
+    )
 
 
 conf = {

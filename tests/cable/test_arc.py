@@ -187,3 +187,15 @@ def test_fast_assembly_equals_scikit_fem_forms(EA):
     R, J, dR_dL0 = _arc_reference(problem, z, L0)
     for fast, reference in ((state.R, R), (state.J.toarray(), J.toarray()), (state.dR_dL0, dR_dL0)):
         np.testing.assert_allclose(fast, reference, rtol=0, atol=1e-12 * np.max(np.abs(reference)))
+
+
+def test_y_slope_and_T_take_arrays_and_agree_with_the_catenary():
+    """The arc form's y(x), slope(x) and T(x) on an array of x (each element's σ found by its own
+    root search) against the inextensible catenary of the same scene, to the discretisation."""
+    sol = cable.solve_bvp(300.0, 10.0, cable.SelfWeight(3.0), length=320.0, formulation="arc", n_elements=128)
+    exact = cable.catenary(300.0, 10.0, 3.0, length=320.0)
+    x = np.array([0.0, 37.5, 150.0, 261.0, 300.0])
+    np.testing.assert_allclose(sol.y(x), exact.y(x), rtol=0, atol=1e-6 * 320.0)
+    np.testing.assert_allclose(sol.slope(x), exact.slope(x), rtol=0, atol=1e-5)
+    np.testing.assert_allclose(sol.T(x), exact.T(x), rtol=1e-5)
+    assert sol.y(x).shape == x.shape and sol.y(x[[2]]).shape == (1,)

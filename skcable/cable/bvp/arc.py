@@ -529,10 +529,12 @@ class ArcSolution(FiniteElementSolution):
             raise InputError("x", "the cable is not a graph y(x) here (x(s) is not increasing): use xy(s)")
         probe = self.basis.probes
 
-        def f(s):
-            return (probe(np.atleast_2d(s.ravel())) @ xd).reshape(s.shape) - x
+        def f(s, target):  # find_root passes the targets of the elements it still works on
+            return (probe(np.atleast_2d(s.ravel())) @ xd).reshape(s.shape) - target
 
-        res = elementwise.find_root(f, (np.zeros_like(x), np.ones_like(x)))
+        res = elementwise.find_root(f, (np.zeros_like(x), np.ones_like(x)), args=(x,))
+        if not np.all(res.success):
+            raise ConvergenceError(f"ArcSolution: no σ found where x(σ) = x ({res.status})", [])
         return np.asarray(res.x)
 
     def y(self, x):
