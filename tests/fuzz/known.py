@@ -155,6 +155,31 @@ KNOWN = (
         ),
     ),
     Known(
+        "F10",
+        26,
+        "linebvp",
+        "solve_line_bvp refuses states it documents as outside its model (a slack stretch ending at a "
+        "grounded point load; 'the discrete line is in compression ... give more elements') that Line.solve "
+        "and the walk solve",
+        ("solve_line_bvp",),
+        ("spurious-refusal",),
+        r"does not model that state|in compression",
+        probes=(
+            lambda: multi.bvp_case(
+                [
+                    (16.219963098358175, 0.8246341092730316, 41468.326653641845),
+                    (57.236413980399746, 516.1222436728953, 9601662.282988938),
+                    (13.541357352275917, 5.458639243704395, 28992.11862769992),
+                ],
+                [],
+                0.0,
+                0.0,
+                32.95266515096135,
+                64.42683566852091,
+            ),
+        ),
+    ),
+    Known(
         "F1",
         26,
         "moorings",
@@ -275,7 +300,7 @@ def match(outcome: Outcome) -> Known | None:
     """The known defect that explains a failing ``outcome``, or None (a new defect)."""
     if not outcome.failed:
         return None
-    for known in KNOWN:
+    for known in sorted(KNOWN, key=lambda k: not k.pattern):  # the specific ones first
         if known.explains(outcome):
             return known
     return None
