@@ -113,7 +113,9 @@ class blame_extreme:  # noqa: N801 - used like a function: ``with blame_extreme(
         if name is None or name == exc.argument:
             return False
         value = np.ravel(np.asarray(self.values[name], dtype=float))
-        shown = value[np.argmax(np.abs(np.log10(np.where(value > 0, np.abs(value), 1.0))))]
+        magnitude = np.abs(value)
+        usable = np.isfinite(magnitude) & (magnitude > 0)
+        shown = value[np.argmax(np.where(usable, np.abs(np.log10(np.where(usable, magnitude, 1.0))), -1.0))]
         raise InputError(name, f"{shown:.3g} is beyond any physical magnitude ({exc})") from exc
 
 
