@@ -91,6 +91,18 @@ class ProfileMixin:
             {"s": s, "x": xy[:, 0], "y": xy[:, 1], "T": np.asarray(self.T_of_s(s), dtype=float)}
         )
 
+    def frame_with_outputs(self: CableResult, n: int, outputs: dict) -> pd.DataFrame:
+        """`to_frame` at ``n`` points, then ``outputs`` sampled at the same points (name -> (n,) or
+        (n, 2)), a vector as ``<name>_x`` and ``<name>_y`` columns."""
+        frame = ProfileMixin.to_frame(self, n)
+        for name, values in outputs.items():
+            values = np.asarray(values, dtype=float)
+            if values.ndim == 2:
+                frame[f"{name}_x"], frame[f"{name}_y"] = values[:, 0], values[:, 1]
+            else:
+                frame[name] = values
+        return frame
+
     def tensions(self: CableResult) -> pd.DataFrame:
         """One row (a uniform cable): ``segment, length, T_lower, T_upper, H_lower, H_upper`` (SI),
         the tensions and horizontal tensions at its ends towards A and B."""

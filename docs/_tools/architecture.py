@@ -32,10 +32,13 @@ COMPONENTS = {
     "skcable.fe": "finite-element machinery without physics: assembly, linear solves, Newton, "
     "terms, tangent checks, continuation",
     "skcable.cable": "suspended cables in closed form: funicular, parabola, catenary, elastic "
-    "catenary, stiffness, end conditions, surfaces, change of state, frequencies, cable terms",
+    "catenary, stiffness, end conditions, surfaces, change of state, frequencies, cable terms, "
+    "currents, axial laws, bathymetry",
     "skcable.cable.bvp": "suspended cables as boundary-value problems on scikit-fem",
     "skcable.cable.bvp.line": "the mooring line as a boundary-value problem (seabed contact, "
     "friction, slack)",
+    "skcable.cable.bvp.line3d": "a line in space as a boundary-value problem (current drag, "
+    "bathymetry, axial laws, 3 x 3 stiffness)",
     "skcable.cable.lines": "mooring lines in 3-D, moored bodies, mooring systems",
     "skcable.cable.lines.seabed": "one elastic line on a flat or sloped seabed, in closed form",
     "skcable.cable.lines.segments": "multi-segment lines with clump weights and buoys",

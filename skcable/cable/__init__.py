@@ -36,6 +36,7 @@ if TYPE_CHECKING:  # what static tools see; at run time, `attach` below serves t
         ArcSolution,
         BVPSegment,
         BVPSolution,
+        LineBVP,
         LineBVPSolution,
         solve_bvp,
         solve_line_bvp,
@@ -99,7 +100,15 @@ _NAMES = {
     "._stiffness": ("fairlead_stiffness", "geometric_stiffness", "geometric_stiffness_series"),
     "._supports": ("SlidingLoad", "anchor_block_weight", "ring_on_rod", "sliding_load"),
     "._surfaces": ("capstan", "membrane_tension", "smooth_surface_reaction", "sphere_parallel"),
-    ".bvp": ("ArcSolution", "BVPSegment", "BVPSolution", "LineBVPSolution", "solve_bvp", "solve_line_bvp"),
+    ".bvp": (
+        "ArcSolution",
+        "BVPSegment",
+        "BVPSolution",
+        "LineBVP",
+        "LineBVPSolution",
+        "solve_bvp",
+        "solve_line_bvp",
+    ),
     ".lines": (
         "Buoy",
         "ClumpWeight",
@@ -152,7 +161,10 @@ _MOVED = {
 }
 
 __getattr__, __dir__ = attach(
-    __name__, submodules=("bvp", "conductors", "lines", "solution", "terms"), names=_NAMES, moved=_MOVED
+    __name__,
+    submodules=("axial", "bathymetry", "bvp", "conductors", "current", "lines", "solution", "terms"),
+    names=_NAMES,
+    moved=_MOVED,
 )
 
 __all__ = [
@@ -179,6 +191,7 @@ __all__ = [
     "WindDrag",
     "ArcSolution",
     "BVPSegment",
+    "LineBVP",
     "LineBVPSolution",
     "SlopedSeabedCatenary",
     "sloped_seabed_catenary",

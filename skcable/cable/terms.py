@@ -1,12 +1,14 @@
 r"""Cable terms: loads that see the whole state of the cable, with their tangents.
 
-A cable term is a `skcable.fe.terms.Term` of a cable BVP (`solve_bvp`'s graph and arc forms).
-At the quadrature points it receives the cable's state (`CableState`): the position
-``r = (x, y)``, the unstretched arc length ``s`` from A, the tangent vector ``a = dr/ds`` (its
-length is the stretch ``1 + ε``, its direction the unit tangent ``t``) and the tension ``T``;
-it returns (`CableForce`) the force ``f`` it puts on the cable per unit *unstretched* length
-(N/m, y up: a weight has ``f_y < 0``) and its derivatives ``∂f/∂r``, ``∂f/∂a``, ``∂f/∂s`` and
-``∂f/∂T`` (None where they vanish). The solvers turn that into their own load and tangent:
+A cable term is a `skcable.fe.terms.Term` of a cable BVP (`solve_bvp`'s graph and arc forms,
+the 3-D line BVP `skcable.cable.bvp.line3d`). At the quadrature points it receives the cable's
+state (`CableState`): the position ``r`` (``(x, y)``, y up, for a plane cable; ``(x, y, z)``, z
+up, for a cable in space: the last coordinate is the vertical one), the unstretched arc length
+``s`` from A, the tangent vector ``a = dr/ds`` (its length is the stretch ``1 + ε``, its
+direction the unit tangent ``t``) and the tension ``T``; it returns (`CableForce`) the force
+``f`` it puts on the cable per unit *unstretched* length (N/m: a weight has a negative vertical
+component) and its derivatives ``∂f/∂r``, ``∂f/∂a``, ``∂f/∂s`` and ``∂f/∂T`` (None where they
+vanish). The plane solvers turn that into their own load and tangent:
 
 - the arc form (position and tension along ``σ = s/L0``) takes ``Q = L0 f`` per unit σ, with
   ``∂Q/∂r = L0 ∂f/∂r``, ``∂Q/∂r' = ∂f/∂a``, ``∂Q/∂T = L0 ∂f/∂T`` and
@@ -25,7 +27,11 @@ Ready terms:
   along the wind;
 - `CurrentDrag`: Morison's drag on the relative velocity split into its normal and tangential
   parts, ``½ ρ d |a| (C_n |v_n| v_n + C_t |v_t| v_t)`` (per unstretched length: the stretched
-  length ``|a| ds`` meets the flow), with a current ``U(d)`` that may vary with depth.
+  length ``|a| ds`` meets the flow), with a current that may vary with depth: a speed along a
+  direction, or a horizontal vector field ``U(z)`` in any direction (`skcable.cable.current`).
+
+Every term works in 2-D and in 3-D (`CableState.dim`); a plane cable's numbers are those of the
+plane terms before they were generalised, bit for bit.
 
 Sources: J.R. Morison, M.P. O'Brien, J.W. Johnson, S.A. Schaaf, "The force exerted by surface
 waves on piles", Petroleum Transactions AIME, 1950 (the drag term); J.M. Jonkman, "Dynamics
@@ -40,26 +46,43 @@ from dataclasses import dataclass
 import numpy as np
 
 from skcable._checks import nonnegative, positive, real
+from skcable.cable.current import Current, current_of
 from skcable.errors import InputError
 from skcable.fe.terms import Term
 
-__all__ = ["Buoyancy", "CableForce", "CableState", "CableTerm", "CurrentDrag", "WindDrag", "term_outputs"]
+__all__ = [
+    "Buoyancy",
+    "CableForce",
+    "CableState",
+    "CableTerm",
+    "CurrentDrag",
+    "WindDrag",
+    "morison",
+    "norm",
+    "term_outputs",
+]
 
 
 @dataclass(frozen=True)
 class CableState:
     """The cable at the quadrature points, as a term sees it (arrays of one shape ``P``).
 
+    A plane cable (the 2-D BVPs) has ``r = (x, y)``, y up; a cable in space (the 3-D line BVP,
+    `skcable.cable.bvp.line3d`) has ``r = (x, y, z)``, z up: the last coordinate is always the
+    vertical one (`height`), and ``a`` has one row per coordinate (`dim`).
+
     Attributes
     ----------
     x, y : ndarray P
-        Position (m), A at (0, 0), y up.
+        Position (m); in 2-D A at (0, 0) and y up, in 3-D y horizontal.
     s : ndarray P or None
         Unstretched arc length from A (m); None in the graph form.
-    a : ndarray (2, *P)
-        ``dr/ds``: the tangent, of length the stretch ``1 + T/EA``.
+    a : ndarray (dim, *P)
+        ``dr/ds``: the tangent, of length the stretch ``1 + ε``.
     T : ndarray P
         Tension (N).
+    z : ndarray P or None
+        Height (m, up) of a cable in space; None for a plane cable.
     """
 
     x: np.ndarray
@@ -67,28 +90,65 @@ class CableState:
     s: np.ndarray | None
     a: np.ndarray
     T: np.ndarray
+    z: np.ndarray | None = None
+
+    def __post_init__(self):
+        if np.shape(self.a)[:1] != ((2,) if self.z is None else (3,)):
+            raise InputError(
+                "a",
+                f"must have {2 if self.z is None else 3} rows, one per coordinate, got {np.shape(self.a)}",
+            )
+
+    @classmethod
+    def at(cls, r, s, a, T) -> CableState:
+        """The state from the position ``r`` (dim, *P) (2 or 3 rows, the last one vertical)."""
+        return cls(r[0], r[1], s, a, T) if len(r) == 2 else cls(r[0], r[1], s, a, T, z=r[2])
+
+    @property
+    def dim(self) -> int:
+        """2 for a plane cable, 3 for a cable in space."""
+        return 2 if self.z is None else 3
+
+    @property
+    def height(self) -> np.ndarray:
+        """The vertical coordinate (m, up): ``y`` in 2-D, ``z`` in 3-D."""
+        return self.y if self.z is None else self.z
+
+    @property
+    def position(self) -> np.ndarray:
+        """``r`` (dim, *P)."""
+        return np.array([self.x, self.y] if self.z is None else [self.x, self.y, self.z])
 
     @property
     def stretch(self) -> np.ndarray:
         """``|a|``, the stretched length per unstretched length."""
-        return np.hypot(self.a[0], self.a[1])
+        return norm(self.a)
 
     @property
     def tangent(self) -> np.ndarray:
-        """The unit tangent ``t = a/|a|`` (2, *P), towards B."""
+        """The unit tangent ``t = a/|a|`` (dim, *P), towards B."""
         return self.a / self.stretch
+
+
+def norm(v) -> np.ndarray:
+    """The length of vectors ``v`` (dim, *P): ``hypot`` in 2-D, the root of the sum of squares in
+    3-D."""
+    if len(v) == 2:
+        return np.hypot(v[0], v[1])
+    return np.sqrt(np.einsum("i...,i...->...", v, v))
 
 
 @dataclass(frozen=True)
 class CableForce:
-    """A term's force per unit unstretched length (N/m, y up) and its derivatives.
+    """A term's force per unit unstretched length (N/m, the last component vertical, up) and its
+    derivatives (``dim`` the state's: 2 or 3).
 
     Attributes
     ----------
-    f : ndarray (2, *P)
-    df_dr, df_da : ndarray (2, 2, *P) or None
+    f : ndarray (dim, *P)
+    df_dr, df_da : ndarray (dim, dim, *P) or None
         ``∂f_i/∂r_j`` (N/m²) and ``∂f_i/∂a_j`` (N/m); None: zero.
-    df_ds, df_dT : ndarray (2, *P) or None
+    df_ds, df_dT : ndarray (dim, *P) or None
         ``∂f_i/∂s`` (N/m²) and ``∂f_i/∂T`` (1/m); None: zero.
     """
 
@@ -113,7 +173,7 @@ class CableTerm(Term):
 
     def outputs(self, state: CableState, force: CableForce) -> dict:
         """Named point data for the results and the VTK files, at the points of ``state``:
-        by default the force itself, ``<Term>_force_N_per_m`` (2, *P)."""
+        by default the force itself, ``<Term>_force_N_per_m`` (dim, *P)."""
         return {f"{type(self).__name__}_force_N_per_m": np.asarray(force.f, dtype=float)}
 
 
@@ -170,19 +230,40 @@ class _Slope:
         return (self.f(d + 1e-6) - self.f(d - 1e-6)) / 2e-6
 
 
-def _direction(value) -> np.ndarray:
+def _direction(value) -> np.ndarray | None:
+    """A unit direction of 2 (plane) or 3 (space) components; None stays None (along x)."""
+    if value is None:
+        return None
     e = np.asarray(real("direction", value), dtype=float)
-    if e.shape != (2,) or not np.hypot(*e) > 0:
-        raise InputError("direction", f"must be a non-zero (x, y) vector, got {value!r}")
-    return e / np.hypot(*e)
+    if e.shape not in ((2,), (3,)) or not float(np.sqrt(np.sum(e * e))) > 0:
+        raise InputError("direction", f"must be a non-zero (x, y) or (x, y, z) vector, got {value!r}")
+    return e / (np.hypot(*e) if e.size == 2 else np.sqrt(np.sum(e * e)))
+
+
+def _along(e: np.ndarray | None, dim: int) -> np.ndarray:
+    """The term's direction for a state of ``dim`` coordinates: ``e``, or x where it is None;
+    a direction of the other dimension refused (never reinterpreted)."""
+    if e is None:
+        return np.eye(dim)[0]
+    if e.size != dim:
+        raise InputError(
+            "direction",
+            f"has {e.size} components for a {dim}-D cable: give (x, y{', z' if dim == 3 else ''})",
+        )
+    return e
+
+
+def _ones(shape) -> tuple[int, ...]:
+    return (1,) * len(shape)
 
 
 class Buoyancy(CableTerm):
     r"""The upthrust of the water a cable displaces, with a density that varies with depth.
 
-    Per unit unstretched length ``f_y = ρ(d) g A`` below the surface ``y = surface`` (the depth
-    ``d = surface − y``) and none above it, ``ρ(d) = rho + gradient·d`` (kg/m³; a stratified
-    sea: ``gradient`` in kg/m⁴). ``A`` (m²) is the displaced section per unstretched length.
+    Per unit unstretched length ``f_v = ρ(d) g A`` along the vertical (``y`` in 2-D, ``z`` in
+    3-D) below the surface ``surface`` (the depth ``d = surface − height``) and none above it,
+    ``ρ(d) = rho + gradient·d`` (kg/m³; a stratified sea: ``gradient`` in kg/m⁴). ``A`` (m²) is
+    the displaced section per unstretched length.
     """
 
     vertical = True
@@ -201,13 +282,14 @@ class Buoyancy(CableTerm):
         )
 
     def forces(self, state):
-        d = self.surface - state.y
+        d = self.surface - state.height
+        dim = state.dim
         wet = d > 0
         rho = self.rho + self.gradient * d
-        zero = np.zeros_like(d)
-        f = np.array([zero, np.where(wet, rho * self.g * self.area, 0.0)])
-        df_dr = np.zeros((2, 2, *d.shape))
-        df_dr[1, 1] = np.where(wet, -self.gradient * self.g * self.area, 0.0)  # ∂ρ/∂y = −gradient
+        f = np.zeros((dim, *d.shape))
+        f[-1] = np.where(wet, rho * self.g * self.area, 0.0)
+        df_dr = np.zeros((dim, dim, *d.shape))
+        df_dr[-1, -1] = np.where(wet, -self.gradient * self.g * self.area, 0.0)  # ∂ρ/∂height = −gradient
         return CableForce(f, df_dr=df_dr)
 
 
@@ -216,27 +298,33 @@ class WindDrag(CableTerm):
 
     .. math:: \mathbf f = \tfrac12\rho\,C_d\,d\,U^2\,|a \times e|\ \mathbf e,
 
-    ``|a × e| ds`` the cable's length projected on the line normal to the wind (overhead-line
+    ``|a × e| ds`` the cable's length projected on the plane normal to the wind (overhead-line
     practice: the wind pressure times the projected area). ``speed`` U (m/s) is a number or a
-    callable of the height y (a wind profile). The projection has a kink where the cable lies
-    along the wind (``smooth = False``).
+    callable of the height (``y`` in 2-D, ``z`` in 3-D: a wind profile). ``direction``: (x, y)
+    for a plane cable, (x, y, z) for one in space; None (default) along x. The projection has a
+    kink where the cable lies along the wind (``smooth = False``).
     """
 
     smooth = False
 
-    def __init__(
-        self, speed, diameter: float, *, cd: float = 1.0, rho_air: float = 1.225, direction=(1.0, 0.0)
-    ):
+    def __init__(self, speed, diameter: float, *, cd: float = 1.0, rho_air: float = 1.225, direction=None):
         self.diameter, self.cd = float(positive("diameter", diameter)), float(nonnegative("cd", cd))
         self.rho = float(positive("rho_air", rho_air))
-        self.e = _direction(direction)
+        self.direction = _direction(direction)
         self._U, self._dU = _profile("speed", speed)
+
+    @property
+    def e(self) -> np.ndarray:
+        """The wind's unit direction (along x in the plane where none was given)."""
+        return _along(self.direction, 2 if self.direction is None else self.direction.size)
 
     def __repr__(self):
         return f"WindDrag(diameter={self.diameter:g}, cd={self.cd:g}, direction={tuple(self.e)})"
 
     def forces(self, state):
-        e, a = self.e, state.a
+        if state.dim == 3:
+            return self._forces_3d(state)
+        e, a = _along(self.direction, 2), state.a
         cross = a[0] * e[1] - a[1] * e[0]
         U, dU = self._U(state.y), self._dU(state.y)
         k = 0.5 * self.rho * self.cd * self.diameter
@@ -250,6 +338,23 @@ class WindDrag(CableTerm):
         df_dr[:, 1] = e.reshape(2, *ones) * (2 * k * U * dU * np.abs(cross))  # U(y): ∂size/∂y
         return CableForce(f, df_dr=df_dr, df_da=df_da)
 
+    def _forces_3d(self, state):
+        """In space: ``|a × e| = |a − (a·e) e|`` (e of unit length), whose gradient in a is
+        ``(a − (a·e) e)/|a × e|`` (zero where the cable lies along the wind)."""
+        e, a = _along(self.direction, 3), state.a
+        shape = np.shape(state.T)
+        along = a - np.einsum("i...,i->...", a, e)[None] * e.reshape(3, *_ones(shape))
+        cross = norm(along)
+        U, dU = self._U(state.z), self._dU(state.z)
+        k = 0.5 * self.rho * self.cd * self.diameter
+        E = e.reshape(3, *_ones(shape))
+        f = E * (k * U * U * cross)
+        grad_a = k * U * U * along / np.where(cross > 0, cross, 1.0)
+        df_da = E[:, None] * grad_a[None]
+        df_dr = np.zeros((3, 3, *shape))
+        df_dr[:, 2] = E * (2 * k * U * dU * cross)
+        return CableForce(f, df_dr=df_dr, df_da=df_da)
+
 
 class CurrentDrag(CableTerm):
     r"""Morison's drag of a current on a cable, normal and tangential, per unit unstretched length:
@@ -258,10 +363,20 @@ class CurrentDrag(CableTerm):
               + C_t|\mathbf v_t|\mathbf v_t\right),\qquad
               \mathbf v_t = (\mathbf v\cdot\mathbf t)\,\mathbf t,\quad \mathbf v_n = \mathbf v - \mathbf v_t,
 
-    with ``v = U(d) e`` the current (the cable at rest), ``U`` (m/s) a number or a callable of the
-    depth ``d = surface − y`` (a sheared current) and ``e`` its direction in the plane of the
-    cable. ``|a|`` counts the stretched length that meets the flow. ``|w| w`` is continuously
-    differentiable: the tangent is exact and the term smooth.
+    with ``v`` the current's velocity (the cable at rest) and ``|a|`` the stretched length per
+    unstretched length that meets the flow (Morison et al. 1950; Jonkman 2007 for the normal and
+    tangential coefficients of mooring lines). The current ``speed`` is one of
+
+    - a number or a callable of the depth ``d = surface − height`` (a sheared current), along
+      ``direction``: (x, y) in the plane of a 2-D cable, (x, y, z) for a cable in space, None
+      (default) along x;
+    - a horizontal vector ``(Ux, Uy)`` (m/s) or a `skcable.cable.current.Current` (a callable
+      ``z -> (Ux, Uy)`` of the height, or a table over depth): any horizontal direction in 3-D
+      (``direction`` must then be None); on a 2-D cable (x horizontal, y up) its ``Uy`` is out of
+      the plane and must be zero.
+
+    ``|w| w`` is continuously differentiable: the tangent is exact and the term smooth (a
+    tabulated current's kinks aside).
     """
 
     def __init__(
@@ -272,7 +387,7 @@ class CurrentDrag(CableTerm):
         cd_normal: float = 1.2,
         cd_tangential: float = 0.0,
         rho: float = 1025.0,
-        direction=(1.0, 0.0),
+        direction=None,
         surface: float = 0.0,
     ):
         self.diameter = float(positive("diameter", diameter))
@@ -281,55 +396,92 @@ class CurrentDrag(CableTerm):
             float(nonnegative("cd_tangential", cd_tangential)),
         )
         self.rho, self.surface = float(positive("rho", rho)), float(real("surface", surface))
-        self.e = _direction(direction)
-        self._U, self._dU = _profile("speed", speed)
+        self.direction = _direction(direction)
+        self.current = None
+        if isinstance(speed, Current) or (not callable(speed) and np.shape(speed) == (2,)):
+            if direction is not None:
+                raise InputError(
+                    "direction", "a current given as a vector or a Current has its own direction"
+                )
+            self.current = current_of(speed)
+        else:
+            self._U, self._dU = _profile("speed", speed)
+
+    @property
+    def e(self) -> np.ndarray:
+        """The direction of a scalar current (along x in the plane where none was given)."""
+        return _along(self.direction, 2 if self.direction is None else self.direction.size)
 
     def __repr__(self):
+        if self.current is not None:
+            return (
+                f"CurrentDrag(diameter={self.diameter:g}, cd_normal={self.cn:g}, cd_tangential={self.ct:g}, "
+                f"current={self.current!r})"
+            )
         return (
             f"CurrentDrag(diameter={self.diameter:g}, cd_normal={self.cn:g}, cd_tangential={self.ct:g}, "
             f"direction={tuple(self.e)})"
         )
 
-    def forces(self, state):
-        a = state.a
-        n = state.stretch
-        t = a / n
-        d = self.surface - state.y
-        U, dU_dd = self._U(d), self._dU(d)
-        v = self.e.reshape(2, *([1] * np.ndim(U))) * U
-        c = np.sum(v * t, axis=0)
-        vt = c * t
-        vn = v - vt
-        I = np.eye(2).reshape(2, 2, *([1] * np.ndim(U)))
-        P = I - np.einsum("i...,j...->ij...", t, t)
-        # ∂v_t/∂a = (t vᵀP + c P)/|a|, ∂v_n/∂a = −∂v_t/∂a
-        dvt_da = (np.einsum("i...,k...,kj...->ij...", t, v, P) + c * P) / n
-        k = 0.5 * self.rho * self.diameter
-
-        def g(w):  # |w| w and its derivative |w| I + w wᵀ/|w|
-            size = np.hypot(w[0], w[1])
-            safe = np.where(size > 0, size, 1.0)
-            return size * w, size * I + np.einsum("i...,j...->ij...", w, w) / safe
-
-        gn, Gn = g(vn)
-        gt, Gt = g(vt)
-        force = self.cn * gn + self.ct * gt
-        f = k * n * force
-        df_da = k * (
-            np.einsum("i...,j...->ij...", force, t)
-            + n * np.einsum("ik...,kj...->ij...", self.ct * Gt - self.cn * Gn, dvt_da)
-        )
-        # through the current: ∂v/∂y = −U'(d) e; ∂v_t/∂v = t tᵀ, ∂v_n/∂v = P
-        dv_dy = -dU_dd * self.e.reshape(2, *([1] * np.ndim(U)))
-        tt = np.einsum("i...,j...->ij...", t, t)
-        df_dv = (
-            k
-            * n
-            * (
-                self.cn * np.einsum("ik...,kj...->ij...", Gn, P)
-                + self.ct * np.einsum("ik...,kj...->ij...", Gt, tt)
+    def velocity(self, state):
+        """The current ``v`` (dim, *P) (m/s) at ``state`` and its derivative by the height
+        ``dv/dh`` (dim, *P) (1/s)."""
+        dim, shape = state.dim, np.shape(state.T)
+        if self.current is None:
+            e = _along(self.direction, dim).reshape(dim, *_ones(shape))
+            d = self.surface - state.height
+            U, dU_dd = self._U(d), self._dU(d)
+            return e * U, -dU_dd * e
+        U, dU = self.current.velocity(state.height), self.current.gradient(state.height)
+        if dim == 3:
+            zero = np.zeros((1, *shape))
+            return np.concatenate([U, zero]), np.concatenate([dU, zero])
+        if np.any(U[1] != 0) or np.any(dU[1] != 0):
+            raise InputError(
+                "speed", "a 2-D cable lies in the (x, y-up) plane: its current's Uy must be zero"
             )
-        )
-        df_dr = np.zeros((2, 2, *np.shape(U)))
-        df_dr[:, 1] = np.einsum("ij...,j...->i...", df_dv, dv_dy)
-        return CableForce(f, df_dr=df_dr, df_da=df_da)
+        zero = np.zeros_like(U[0])
+        return np.array([U[0], zero]), np.array([dU[0], zero])
+
+    def forces(self, state):
+        v, dv_dh = self.velocity(state)
+        return morison(v, dv_dh, state.a, 0.5 * self.rho * self.diameter, self.cn, self.ct)
+
+
+def morison(v, dv_dh, a, k, cn, ct) -> CableForce:
+    """Morison's drag ``k |a| (C_n |v_n| v_n + C_t |v_t| v_t)`` (`CurrentDrag`) and its
+    derivatives by ``a`` and by the height (through ``dv/dh``), for ``v``, ``a`` (dim, *P).
+
+    ``∂v_t/∂a = (t vᵀP + c P)/|a|`` (``P = I − t tᵀ``, ``c = v·t``) and ``∂v_n/∂a = −∂v_t/∂a``;
+    ``d(|w| w)/dw = |w| I + w wᵀ/|w|``; through the current ``∂v_t/∂v = t tᵀ``, ``∂v_n/∂v = P``.
+    """
+    dim = len(a)
+    n = norm(a)
+    t = a / n
+    c = np.sum(v * t, axis=0)
+    vt = c * t
+    vn = v - vt
+    I = np.eye(dim).reshape(dim, dim, *([1] * np.ndim(c)))
+    P = I - np.einsum("i...,j...->ij...", t, t)
+    dvt_da = (np.einsum("i...,k...,kj...->ij...", t, v, P) + c * P) / n
+
+    def g(w):  # |w| w and its derivative |w| I + w wᵀ/|w|
+        size = norm(w)
+        safe = np.where(size > 0, size, 1.0)
+        return size * w, size * I + np.einsum("i...,j...->ij...", w, w) / safe
+
+    gn, Gn = g(vn)
+    gt, Gt = g(vt)
+    force = cn * gn + ct * gt
+    f = k * n * force
+    df_da = k * (
+        np.einsum("i...,j...->ij...", force, t)
+        + n * np.einsum("ik...,kj...->ij...", ct * Gt - cn * Gn, dvt_da)
+    )
+    tt = np.einsum("i...,j...->ij...", t, t)
+    df_dv = (
+        k * n * (cn * np.einsum("ik...,kj...->ij...", Gn, P) + ct * np.einsum("ik...,kj...->ij...", Gt, tt))
+    )
+    df_dr = np.zeros((dim, dim, *np.shape(c)))
+    df_dr[:, -1] = np.einsum("ij...,j...->i...", df_dv, dv_dh)
+    return CableForce(f, df_dr=df_dr, df_da=df_da)

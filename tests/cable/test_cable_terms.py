@@ -283,3 +283,26 @@ def test_cable_term_outputs_and_user_fields_reach_the_vtk_file(tmp_path):
     np.testing.assert_allclose(up[:, 1], RHO * G * AREA, rtol=1e-12)
     with pytest.raises(InputError, match="short"):
         sol.to_vtk(tmp_path / "bad.vtu", n=41, point_data={"short": np.zeros(3)})
+
+
+def test_the_arc_forms_frame_carries_the_term_outputs_at_its_points():
+    """`ArcSolution.to_frame`: the buoyancy column is ρ g A where the frame's own y lies below the
+    surface and 0 above it (the surface cuts the cable), the drag column as the samples give it."""
+    surface = 0.5 * DH
+    terms = [
+        cable.SelfWeight(W),
+        cable.Buoyancy(AREA, surface=surface),
+        cable.CurrentDrag(1.0, 0.1, surface=surface),
+    ]
+    sol = cable.solve_bvp(SPAN, DH, terms, length=LENGTH, EA=EA, n_elements=64)
+    assert sol.formulation == "arc"
+    frame = sol.to_frame(41)
+    wet = frame["y"].to_numpy() < surface
+    assert 0 < wet.sum() < 41
+    np.testing.assert_allclose(
+        frame["Buoyancy_force_N_per_m_y"], np.where(wet, RHO * G * AREA, 0.0), rtol=1e-12
+    )
+    np.testing.assert_array_equal(frame["Buoyancy_force_N_per_m_x"], 0.0)
+    drag = sol.samples(41)["outputs"]["CurrentDrag_force_N_per_m"]
+    np.testing.assert_array_equal(frame[["CurrentDrag_force_N_per_m_x", "CurrentDrag_force_N_per_m_y"]], drag)
+    np.testing.assert_allclose(frame["s"], np.linspace(0.0, LENGTH, 41), rtol=1e-15)

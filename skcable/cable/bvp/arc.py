@@ -47,11 +47,13 @@ from skcable.cable._catenary import catenary
 from skcable.cable._loads import DeckLoad, DistributedLoad, PointLoad, SelfWeight
 from skcable.cable.bvp.base import FiniteElementSolution
 from skcable.cable.bvp.elements import end_dofs
+from skcable.cable.bvp.section import tension_section
 from skcable.cable.terms import CableState, CableTerm, term_outputs
 from skcable.errors import ConvergenceError, InputError
 from skcable.fe.assembly import Assembly
 from skcable.fe.linear import BorderedSolver
 from skcable.fe.probes import element_values, gradient_probes, minimum_near
+from skcable.results import ProfileMixin
 
 __all__ = ["ArcProblem", "ArcSolution", "ArcState", "arc_guess", "arc_loads", "term_loads"]
 
@@ -198,20 +200,13 @@ class ArcProblem:
         asmb = self.assembly
         g = asmb.interpolate(z)
         ax, ay, X, T = g[_AX], g[_AY], g[_X], g[_T]
-        n = np.sqrt(ax * ax + ay * ay)
-        if not np.all(n > 0):  # a collapsed tangent: reject this iterate
+        section = tension_section(ax, ay, T)
+        if section is None:  # a collapsed tangent: reject this iterate
             return _REJECTED
-        ex, ey = ax / n, ay / n
+        n, ex, ey, D = section  # T e, the stretch and their tangent (skcable.cable.bvp.section)
         Qx, Qy, dQx_dx, dQy_dx, dQx_dxp, dQy_dxp, dQx_dL, dQy_dL = arc_loads(self.loads, X, ax, L0, self.span)
         c = self.compliance
         S = np.stack([T * ex, T * ey, -Qx, -Qy, n - L0 * (1.0 + T * c)])
-        D = np.zeros((5, 5, *n.shape))
-        Tn = T / n
-        D[_AX, _AX] = Tn * (1.0 - ex * ex)
-        D[_AX, _AY] = D[_AY, _AX] = -Tn * ex * ey
-        D[_AY, _AY] = Tn * (1.0 - ey * ey)
-        D[_AX, _T] = D[_T, _AX] = ex
-        D[_AY, _T] = D[_T, _AY] = ey
         D[_X, _X], D[_X, _AX] = -dQx_dx, -dQx_dxp
         D[_Y, _X], D[_Y, _AX] = -dQy_dx, -dQy_dxp
         D[_T, _T] = -L0 * c
@@ -551,6 +546,13 @@ class ArcSolution(FiniteElementSolution):
         s = np.atleast_1d(self._sigma_of_x(x))
         T = self._problem.fields(self.dofs)[2]
         return (self._problem.tbasis.probes(s.reshape(1, -1)) @ T).reshape(np.shape(x))[()]
+
+    def to_frame(self, n: int = 201):
+        """``n`` profile samples evenly spaced in unstretched arc length (pandas DataFrame):
+        columns ``s`` (m), ``x``, ``y`` (m) and ``T`` (N), then the cable terms' outputs
+        (``samples()["outputs"]``), a vector as ``<name>_x`` and ``<name>_y``."""
+        outputs = self.samples(n)["outputs"] if self._problem.terms else {}
+        return ProfileMixin.frame_with_outputs(self, n, outputs)
 
     def samples(self, n: int = 201) -> dict:
         """The profile at ``n`` equally spaced σ (unstretched arc length): see

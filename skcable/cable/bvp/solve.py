@@ -310,4 +310,7 @@ def _on_seabed(span, dh, load, given):
         n_elements=given["n_elements"],
         rtol=given["rtol"],
         max_iter=given["max_iter"],
+        atol=given["atol"],
+        line_search=given["line_search"],
+        callback=given["callback"],
     )

@@ -111,8 +111,21 @@ def seabed_of(seabed, seabed_slope, span) -> Seabed | None:
         raise InputError("seabed_slope", "a flat seabed (a number) has no slope to give")
     if isinstance(seabed, (np.ndarray, list, tuple)) and np.size(seabed) != 1:
         raise InputError("seabed", "a height (m) or a callable b(x); one scene at a time")
-    flat = real("seabed", seabed)
-    return Seabed(lambda x: np.full_like(x, flat), None, float(np.asarray(flat)), step)
+    flat = float(np.asarray(real("seabed", seabed)))
+    return Seabed(_Level(flat), None, flat, step)
+
+
+class _Level:
+    """The height ``b(x) = level`` of a flat seabed (m): a callable that pickles."""
+
+    def __init__(self, level: float):
+        self.level = level
+
+    def __call__(self, x):
+        return np.full_like(x, self.level)
+
+    def __repr__(self):
+        return f"flat seabed at {self.level:g} m"
 
 
 class ContactTerms(NamedTuple):

@@ -120,12 +120,12 @@ class LineBVPSolver:
         mu = sc.friction if mu is None else mu
         return LineProblem(
             sc.span, sc.dh, sc.segments, sc.point_loads, sc.seabed, mu, n,
-            fitted=fitted, slack_end=slack_end, nodes_at=nodes_at,
+            fitted=fitted, slack_end=slack_end, nodes_at=nodes_at, terms=sc.terms,
         )  # fmt: skip
 
     def run(self, problem, z0) -> LineBVPSolution:
-        """One solve of ``problem`` from ``z0``."""
-        return solve_on(problem, z0, self.scene.rtol, self.scene.max_iter)
+        """One solve of ``problem`` from ``z0`` with the scene's Newton options."""
+        return solve_on(problem, z0, self.scene.options)
 
     def restart(self, solution, problem):
         """``solution`` interpolated onto ``problem``'s dofs."""
@@ -166,7 +166,7 @@ class LineBVPSolver:
 
     def compressed(self, solution) -> bool:
         """Whether the discrete line is in compression beyond ``1e3 rtol`` of the total load."""
-        floor = -1e3 * self.scene.rtol * solution.problem.load_scale
+        floor = -1e3 * self.scene.options.tol * solution.problem.load_scale
         return bool(np.min(solution.fields()[2]) < floor)
 
     # --- the stages ---------------------------------------------------------------------------
@@ -262,6 +262,7 @@ class LineBVPSolver:
                         solution = self.level(size)
                     except ConvergenceError:
                         solution = None
+        assert solution is not None, "the finest level returns or raises"
         return solution
 
     def level(self, n, start=None) -> LineBVPSolution:
@@ -335,7 +336,7 @@ class LineBVPSolver:
             lambda: self.from_closed_friction(n, frictionless, graded),
         )
         if s0 == 0 and anchored:
-            s0 = tension_zero(solution, 1e3 * self.scene.rtol * solution.problem.load_scale)
+            s0 = tension_zero(solution, 1e3 * self.scene.options.tol * solution.problem.load_scale)
         return solution, s0, fitted
 
     def from_frictionless(self, n, frictionless, graded, s0, fitted):
@@ -360,8 +361,9 @@ class LineBVPSolver:
         """Nodes at the touchdown and landing, and the end of the slack stretch, moved until they
         settle (module docstring, 5)."""
         fit = self.scene.fit_touchdown
-        slack_tol = self.scene.rtol * solution.problem.load_scale
-        edge_passes, tried = 0, []
+        slack_tol = self.scene.options.tol * solution.problem.load_scale
+        edge_passes = 0
+        tried: list[tuple[float, float]] = []  # (end, tension past it) of the settled solves
         for _ in range(fit + SLACK_PASSES):
             fitted, edges_moved, settled = self.moved_edges(solution, fitted, edge_passes < fit or s0 > 0)
             edge_passes += edges_moved
@@ -446,7 +448,7 @@ class LineBVPSolver:
     def checked(self, solution) -> LineBVPSolution:
         """The solution, once its checks hold (module docstring, 6)."""
         problem, friction = solution.problem, self.scene.friction
-        slack_tol = self.scene.rtol * problem.load_scale
+        slack_tol = self.scene.options.tol * problem.load_scale
         s0 = problem.slack_end
         if s0 > 0:
             # the friction that holds the slack stretch (its tangential force) is at most μN
@@ -464,7 +466,7 @@ class LineBVPSolver:
         if not all(np.isfinite(values)) or not np.all(np.isfinite(solution.dofs)):
             raise ConvergenceError("solve_line_bvp: non-finite result", solution.history)
         T = solution.fields()[2]
-        if np.min(T) < -1e3 * self.scene.rtol * problem.load_scale:
+        if np.min(T) < -1e3 * self.scene.options.tol * problem.load_scale:
             raise ConvergenceError(
                 "solve_line_bvp: the discrete line is in compression "
                 f"(min T = {np.min(T):.3g} N, H = {solution.H:.3g} N): "

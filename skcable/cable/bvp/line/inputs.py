@@ -1,8 +1,11 @@
-"""The scene of one line BVP, checked: segments, point loads, seabed, friction and solver options.
+"""The scene of one line BVP, checked: segments, point loads, seabed, friction, cable terms and
+the Newton options.
 
 `BVPSegment` is one segment; `scene` checks every argument of `solve_line_bvp` (each refusal an
 `skcable.InputError` naming the argument as the public API spells it) and returns a `Scene`,
-which the solver (`skcable.cable.bvp.line.driver`) takes as it is.
+which the solver (`skcable.cable.bvp.line.driver`) takes as it is. `terms_of` checks the cable
+terms (`skcable.cable.terms`), `newton_options_of` the Newton options (`skcable.fe.NewtonOptions`,
+with the line BVP's own defaults, `LINE_OPTIONS`).
 """
 
 from __future__ import annotations
@@ -14,9 +17,24 @@ import numpy as np
 
 from skcable._checks import nonnegative, positive, real, require, scalar, whole
 from skcable.cable.bvp.line.contact import Seabed, seabed_of
+from skcable.cable.terms import CableTerm
 from skcable.errors import InputError
+from skcable.fe import NewtonOptions
 
-__all__ = ["BVPSegment", "Scene", "point_loads_of", "scene", "segments_of"]
+__all__ = [
+    "LINE_OPTIONS",
+    "BVPSegment",
+    "Scene",
+    "newton_options_of",
+    "point_loads_of",
+    "scene",
+    "segments_of",
+    "terms_of",
+]
+
+#: the line BVP's Newton defaults: ``tol`` 1e-10 of the total load, 50 iterations, backtracking on
+#: the residual's max-norm, and a damped start on a slack line may crawl for 8 iterations
+LINE_OPTIONS = NewtonOptions(tol=1e-10, max_iter=50, line_search="residual", stagnation_window=8)
 
 
 @dataclass(frozen=True)
@@ -90,6 +108,47 @@ def point_loads_of(point_loads, length: float) -> list[tuple[float, float]]:
     return loads
 
 
+def terms_of(terms) -> tuple[CableTerm, ...]:
+    """The cable terms as a tuple of `skcable.cable.terms.CableTerm` (one term or a sequence)."""
+    if isinstance(terms, CableTerm):
+        return (terms,)
+    try:
+        items = tuple(terms)
+    except TypeError:
+        raise InputError(
+            "terms", f"give a list of CableTerm (Buoyancy, CurrentDrag, ...), got {terms!r}"
+        ) from None
+    for term in items:
+        if not isinstance(term, CableTerm):
+            raise InputError(
+                "terms",
+                f"each is a CableTerm (skcable.cable.terms: Buoyancy, WindDrag, CurrentDrag or a subclass), "
+                f"got {term!r}",
+            )
+    return items
+
+
+def newton_options_of(options=None, **given) -> NewtonOptions:
+    """The Newton options of a line BVP: ``options`` (a `skcable.fe.NewtonOptions`, `LINE_OPTIONS`
+    by default) updated by the keywords ``given`` that are not None (``rtol`` is ``tol``'s name
+    here, as in `skcable.cable.solve_bvp`); an unknown keyword is an `InputError` naming it, and
+    so is ``line_search="energy"`` (the line BVP minimises no energy: its Newton runs on the
+    residual, contact and friction rows included)."""
+    rtol = given.pop("rtol", None)
+    if rtol is not None:
+        if given.get("tol") is not None:
+            raise InputError("rtol", "give rtol or tol (the same tolerance), not both")
+        given["tol"] = scalar("rtol", positive("rtol", rtol))
+    elif given.get("tol") is not None:
+        given["tol"] = scalar("tol", positive("tol", given["tol"]))
+    out = NewtonOptions.of(LINE_OPTIONS if options is None else options, **given)
+    if out.line_search == "energy":
+        raise InputError(
+            "line_search", "'energy' needs a potential; the line BVP minimises none: use 'residual' or 'none'"
+        )
+    return out
+
+
 @dataclass(frozen=True)
 class Scene:
     """A checked scene and the solver's options (the arguments of `solve_line_bvp`)."""
@@ -102,8 +161,8 @@ class Scene:
     friction: float
     n_elements: int
     fit_touchdown: int
-    rtol: float
-    max_iter: int
+    options: NewtonOptions = LINE_OPTIONS
+    terms: tuple = ()
 
     @property
     def length(self) -> float:
@@ -122,10 +181,11 @@ def scene(
     point_loads,
     n_elements,
     fit_touchdown,
-    rtol,
-    max_iter,
+    options=LINE_OPTIONS,
+    terms=(),
 ) -> Scene:
-    """Every argument of `solve_line_bvp` checked, in its order; a `Scene`."""
+    """Every argument of `solve_line_bvp` checked, in its order; a `Scene` (``options`` checked by
+    `newton_options_of` already)."""
     span, dh = positive("span", span), real("dh", dh)
     if not isinstance(span, float) or not isinstance(dh, float):
         raise InputError("span", "solve_line_bvp solves one scene: give scalar span and dh")
@@ -143,8 +203,5 @@ def scene(
     loads = point_loads_of(point_loads, sum(seg.length for seg in segs))
     whole("n_elements", n_elements, 1)
     whole("fit_touchdown", fit_touchdown, 0, 10)
-    whole("max_iter", max_iter, 1)
-    rtol = scalar("rtol", positive("rtol", rtol))
-    return Scene(
-        span, dh, segs, loads, bed, friction, int(n_elements), int(fit_touchdown), rtol, int(max_iter)
-    )
+    terms = terms_of(terms)
+    return Scene(span, dh, segs, loads, bed, friction, int(n_elements), int(fit_touchdown), options, terms)

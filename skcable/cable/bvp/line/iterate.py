@@ -1,11 +1,16 @@
 """One solve of one discrete line: semismooth Newton, its full-step fallback, and the polish.
 
-`solve_on(problem, z0, rtol, max_iter)` runs `skcable.fe.newton` (damped by backtracking on the
-max-norm merit) from ``z0``. The max-norm merit of a semismooth system can refuse every damped
-step where full steps identify the active set and converge: then `full_steps` is tried from the
-same start before the first failure is raised. Past ``rtol``, full Newton steps go on while the
-merit still falls tenfold (`POLISH` at most): quadratic convergence takes the solution to its
-round-off floor for one or two more assemblies.
+`solve_on(problem, z0, options)` runs `skcable.fe.newton` (damped by backtracking on the max-norm
+merit, unless ``options.line_search`` is ``"none"``) from ``z0`` with the user's Newton options
+(`skcable.fe.NewtonOptions`: ``tol``, ``atol``, ``max_iter``, ``max_halvings``,
+``stagnation_window``, ``callback``). The max-norm merit of a semismooth system can refuse every
+damped step where full steps identify the active set and converge: then `full_steps` is tried
+from the same start before the first failure is raised. Past ``tol``, full Newton steps go on
+while the merit still falls tenfold (`POLISH` at most): quadratic convergence takes the solution
+to its round-off floor for one or two more assemblies. ``callback(iteration, residual_norm,
+step_norm)`` sees every step of the three, numbered from 1 in each solve (the fallback starts
+again from the start); an exception it raises stops the solve as an `skcable.InputError` naming
+``callback`` and the iteration.
 """
 
 from __future__ import annotations
@@ -13,10 +18,10 @@ from __future__ import annotations
 import numpy as np
 
 from skcable.cable.bvp.line.solution import LineBVPSolution
-from skcable.errors import ConvergenceError
-from skcable.fe import newton
+from skcable.errors import ConvergenceError, InputError
+from skcable.fe import NewtonOptions, newton
 
-__all__ = ["POLISH", "first_success", "full_steps", "solve_on"]
+__all__ = ["POLISH", "first_success", "full_steps", "report", "solve_on"]
 
 #: Newton steps past rtol at most, while the merit falls tenfold
 POLISH = 2
@@ -32,22 +37,42 @@ def first_success(*attempts):
             return attempt()
         except ConvergenceError as failed:
             first = failed if first is None else first
+    assert first is not None, "first_success needs at least one attempt"
     raise first from None
 
 
-def full_steps(problem, z0, rtol, max_iter):
+def report(callback, iteration: int, merit: float, step) -> None:
+    """``callback(iteration, merit, max |step|)``, if given; what it raises becomes an
+    `InputError` naming ``callback`` and the iteration (as `skcable.fe.newton` does)."""
+    if callback is None:
+        return
+    try:
+        callback(iteration, merit, float(np.max(np.abs(step), initial=0.0)))
+    except Exception as exc:  # a user's callback: stop, and say where
+        raise InputError("callback", f"raised {type(exc).__name__} at iteration {iteration}: {exc}") from exc
+
+
+def converged(problem, state, options: NewtonOptions) -> bool:
+    """Whether ``state`` meets ``options.tol`` (the merit) or ``options.atol`` (the force rows, N,
+    with the stretch rows within ``tol``)."""
+    return state.merit < options.tol or (
+        options.atol > 0 and problem.absolute(state, options.tol) < options.atol
+    )
+
+
+def full_steps(problem, z0, options: NewtonOptions):
     """Semismooth Newton with full steps (halved only where the tangent collapses): (z, state,
-    history) once the merit is below ``rtol``, None if it is not within ``max_iter`` steps or
-    grows a thousandfold."""
+    history) once converged (`converged`), None if it is not within ``options.max_iter`` steps
+    or the merit grows a thousandfold."""
     state = problem.assemble(z0)
     z, history = z0, [state.merit]
-    for _ in range(max_iter):
-        if state.merit < rtol:
+    for _ in range(options.max_iter):
+        if converged(problem, state, options):
             return z, state, history
         if not state.merit < 1e3 * history[0]:
             return None
         dz, t = problem.increment(state), 1.0
-        for _ in range(12):
+        for _ in range(options.max_halvings):
             trial = problem.assemble(z + t * dz)
             if np.isfinite(trial.merit):
                 break
@@ -56,42 +81,52 @@ def full_steps(problem, z0, rtol, max_iter):
             return None
         z, state = z + t * dz, trial
         history.append(state.merit)
-    return (z, state, history) if state.merit < rtol else None
+        report(options.callback, len(history) - 1, state.merit, t * dz)
+    return (z, state, history) if converged(problem, state, options) else None
 
 
-def _damped(problem, z0, rtol, max_iter):
+def _damped(problem, z0, options: NewtonOptions):
     result = newton(
         problem.assemble,
         z0,
         norm=lambda state: state.merit,
         increment=problem.increment,
-        tol=rtol,
-        max_iter=max_iter,
-        stagnation_window=8,
+        tol=options.tol,
+        max_iter=options.max_iter,
+        max_halvings=options.max_halvings,
+        stagnation_window=options.stagnation_window,
         name="solve_line_bvp",
         floor=problem.merit_floor,
+        atol=options.atol,
+        absolute=lambda state: problem.absolute(state, options.tol),
+        line_search=options.line_search != "none",
+        callback=options.callback,
     )
     return result.x, result.state, list(result.history)
 
 
-def _undamped(problem, z0, rtol, max_iter):
-    out = full_steps(problem, z0, rtol, max_iter)
+def _undamped(problem, z0, options: NewtonOptions):
+    out = full_steps(problem, z0, options)
     if out is None:
         raise ConvergenceError("solve_line_bvp: full semismooth steps did not converge", [])
     return out
 
 
-def solve_on(problem, z0, rtol, max_iter) -> LineBVPSolution:
+def solve_on(problem, z0, options: NewtonOptions) -> LineBVPSolution:
     """The line of ``problem`` from the iterate ``z0``: damped Newton, else full steps (the
-    damped one's error raised when both fail), then the polish."""
-    z, state, history = first_success(
-        lambda: _damped(problem, z0, rtol, max_iter), lambda: _undamped(problem, z0, rtol, max_iter)
-    )
+    damped one's error raised when both fail; no fallback where the Newton takes full steps
+    already, ``line_search="none"``), then the polish."""
+    attempts = [lambda: _damped(problem, z0, options)]
+    if options.line_search != "none":
+        attempts.append(lambda: _undamped(problem, z0, options))
+    z, state, history = first_success(*attempts)
     for _ in range(POLISH):
-        trial_z = z + problem.increment(state)
+        step = problem.increment(state)
+        trial_z = z + step
         trial = problem.assemble(trial_z)
         if not trial.merit < 0.1 * state.merit:
             break
         z, state = trial_z, trial
         history.append(state.merit)
+        report(options.callback, len(history) - 1, state.merit, step)
     return LineBVPSolution(problem, z, history, state)

@@ -66,8 +66,8 @@ def line_nodes(lengths, point_loads, n_elements, fitted=(), nodes_at=None) -> np
     n = positive("n_elements", n_elements)
     require("n_elements", n == int(n), "must be a whole number", n)
     per = np.maximum(1, np.round(int(n) * lengths / L)).astype(int)
-    nodes = [np.linspace(a, b, k + 1) for a, b, k in zip(joints[:-1], joints[1:], per, strict=True)]
-    nodes = np.unique(np.concatenate([*nodes, [s for s, _ in point_loads]]))
+    pieces = [np.linspace(a, b, k + 1) for a, b, k in zip(joints[:-1], joints[1:], per, strict=True)]
+    nodes = np.unique(np.concatenate([*pieces, [s for s, _ in point_loads]]))
     if nodes_at is not None:  # a graded mesh: joints and point loads stay nodes
         nodes = np.unique(np.concatenate([nodes_at, joints, [s for s, _ in point_loads]]))
     return with_fitted(nodes, fitted, joints, point_loads)
@@ -79,7 +79,7 @@ def with_fitted(nodes, fitted, joints, point_loads) -> np.ndarray:
     already, else a node inserted (unless one lies within 1e-9 of the length)."""
     L = float(joints[-1])
     loads = [s for s, _ in point_loads]
-    placed = []
+    placed: list[float] = []
     for s_fit in fitted:
         k = int(np.argmin(np.abs(nodes - s_fit)))
         spacing = np.min(np.diff(nodes[max(k - 1, 0) : k + 2]))  # of the elements at that node
@@ -175,11 +175,11 @@ def equidistributed(fixed, s, mass, n_elements):
     at_fixed = np.interp(fixed, s, mass)
     share = np.diff(at_fixed) / at_fixed[-1]
     counts = np.maximum(1, np.round(n_elements * share)).astype(int)
-    inner = [  # the nodes inside each stretch; its ends are the fixed nodes themselves
+    stretches = [  # the nodes inside each stretch; its ends are the fixed nodes themselves
         np.interp(np.linspace(a, b, k + 1)[1:-1], mass, s)
         for a, b, k in zip(at_fixed[:-1], at_fixed[1:], counts, strict=True)
     ]
-    inner = np.unique(np.concatenate(inner))
+    inner = np.unique(np.concatenate(stretches))
     near = np.abs(inner[:, None] - fixed[None, :]).min(axis=1, initial=np.inf) <= 1e-9 * L
     inner = inner[~near & np.concatenate([[True], np.diff(inner) > 1e-9 * L])]  # no slivers
     return np.unique(np.concatenate([inner, fixed]))
@@ -206,7 +206,7 @@ def start_nodes(form, fixed, n_elements):
     )
     m = 0.5 * (s[1:] + s[:-1])
     v = w * (m - s_v)
-    turning = np.where(grounded & (v < 0), 0.0, (w / H) / (1.0 + (v / H) ** 2))  # dθ/ds
+    turning = np.where(grounded & (v < 0), 0.0, (abs(w) / H) / (1.0 + (v / H) ** 2))  # |dθ/ds|
     monitor = 1.0 + L * turning
     rate = smoothed(s, n_elements * monitor / np.sum(monitor * np.diff(s)), n_elements)
     mass = np.concatenate([[0.0], np.cumsum(rate * np.diff(s))])

@@ -2,9 +2,9 @@
 
 from __future__ import annotations
 
-from skcable._checks import nonnegative, positive, scalar, whole
+from skcable._checks import nonnegative, scalar, whole
 from skcable.cable.bvp.line.driver import LineBVPSolver
-from skcable.cable.bvp.line.inputs import point_loads_of, scene, segments_of
+from skcable.cable.bvp.line.inputs import newton_options_of, point_loads_of, scene, segments_of, terms_of
 from skcable.cable.bvp.line.solution import LineBVPSolution
 from skcable.errors import InputError
 
@@ -22,8 +22,11 @@ def solve_line_bvp(
     point_loads=(),
     n_elements: int = 64,
     fit_touchdown: int = 2,
-    rtol: float = 1e-10,
-    max_iter: int = 50,
+    rtol: float | None = None,
+    max_iter: int | None = None,
+    terms=(),
+    options=None,
+    **newton_options,
 ) -> LineBVPSolution:
     """A mooring line from anchor A = (0, 0) to fairlead B = (span, dh), by finite elements,
     optionally resting on a seabed of any shape (see `skcable.cable.bvp.line`).
@@ -64,9 +67,33 @@ def solve_line_bvp(
     rtol : float
         Newton stops when every scaled residual (forces over the total load,
         the stretch over the length, the complementarity rows over the total
-        load) is below ``rtol``.
+        load) is below ``rtol`` (default 1e-10; ``tol`` of `skcable.fe.NewtonOptions`). The
+        total load counts the weight, the point loads and the cable terms' force on the
+        straight chord.
     max_iter : int
-        Newton iterations at most.
+        Newton iterations at most per solve (default 50).
+    terms : CableTerm or list of CableTerm
+        Loads that see the line's whole state, with their tangents (`skcable.cable.terms`:
+        `Buoyancy` varying with depth, `CurrentDrag`, `WindDrag`, or an analyst's own
+        `CableTerm`), besides the segments' self weight; a term reading ``s`` gets the
+        unstretched arc length from A. Their force enters the residual and the exact tangent
+        (and so `LineBVPSolution.stiffness`); what they name (`CableTerm.outputs`) appears in
+        ``samples()["outputs"]``, `LineBVPSolution.to_frame` and the VTK files. A slack stretch
+        near the anchor (friction holding more than the pull) takes vertical terms on a flat
+        seabed only.
+    options : NewtonOptions, optional
+        The Newton options of every solve (`skcable.fe.NewtonOptions`); the line BVP's defaults
+        are ``tol=1e-10, max_iter=50, line_search="residual", stagnation_window=8``.
+    **newton_options
+        Any field of `skcable.fe.NewtonOptions`, over ``options``: ``atol`` (N: converged also
+        when every force residual is below it and the stretch rows meet ``rtol``),
+        ``line_search`` (``"residual"``/True or ``"auto"``: backtracking on the merit, with a
+        full-step retry where it stalls; ``"none"``/False: full steps; ``"energy"`` is
+        refused: the line has no potential), ``callback(iteration, residual_norm,
+        step_norm)`` (after every step of every solve of the continuation, numbered from 1 in
+        each; the last solve's merits are the solution's ``history``), ``max_halvings``,
+        ``stagnation_window``, and ``tol`` (``rtol``'s other name). An unknown name is an
+        `InputError` naming it.
 
     Returns
     -------
@@ -76,7 +103,8 @@ def solve_line_bvp(
     ------
     InputError
         Bad data, named; friction too weak to hold a slack stretch on a
-        sloping seabed.
+        sloping seabed; a term that returns arrays of the wrong shape or non-finite
+        values (``terms``); a callback that raised (``callback``, with the iteration).
     ConvergenceError
         Newton stalled (``history`` holds the merit per iteration); the end
         of a slack stretch not found; the discrete line in compression (its
@@ -97,8 +125,8 @@ def solve_line_bvp(
         point_loads=point_loads,
         n_elements=n_elements,
         fit_touchdown=fit_touchdown,
-        rtol=rtol,
-        max_iter=max_iter,
+        options=newton_options_of(options, rtol=rtol, max_iter=max_iter, **newton_options),
+        terms=terms,
     )
     return LineBVPSolver(checked).solve()
 
@@ -116,6 +144,11 @@ class LineBVP:
     ----------
     segments, seabed, seabed_slope, friction, point_loads, n_elements, fit_touchdown, rtol, max_iter
         As for `solve_line_bvp`.
+    terms, options, **newton_options
+        As for `solve_line_bvp`: the cable terms and the Newton options of every solve. The
+        terms act in the line's own vertical plane, x from the anchor towards the fairlead: in
+        `line_3d` or a `MooringSystem` a horizontal term (`CurrentDrag`, `WindDrag`) is along
+        each line's own span, not a current or a wind in global axes.
 
     Examples
     --------
@@ -136,8 +169,11 @@ class LineBVP:
         point_loads=(),
         n_elements: int = 64,
         fit_touchdown: int = 2,
-        rtol: float = 1e-10,
-        max_iter: int = 50,
+        rtol: float | None = None,
+        max_iter: int | None = None,
+        terms=(),
+        options=None,
+        **newton_options,
     ):
         self.segments = segments_of(segments)
         if seabed is None and seabed_slope is not None:
@@ -151,8 +187,20 @@ class LineBVP:
         self.point_loads = point_loads_of(point_loads, self.length)
         self.n_elements = whole("n_elements", n_elements, 1)
         self.fit_touchdown = whole("fit_touchdown", fit_touchdown, 0, 10)
-        self.rtol = scalar("rtol", positive("rtol", rtol))
-        self.max_iter = whole("max_iter", max_iter, 1)
+        #: the Newton options of every solve (`skcable.fe.NewtonOptions`)
+        self.options = newton_options_of(options, rtol=rtol, max_iter=max_iter, **newton_options)
+        #: the cable terms (`skcable.cable.terms`)
+        self.terms = terms_of(terms)
+
+    @property
+    def rtol(self) -> float:
+        """Newton's tolerance relative to the total load (``options.tol``)."""
+        return self.options.tol
+
+    @property
+    def max_iter(self) -> int:
+        """Newton iterations at most per solve (``options.max_iter``)."""
+        return self.options.max_iter
 
     @property
     def length(self) -> float:
@@ -189,8 +237,8 @@ class LineBVP:
             point_loads=self.point_loads,
             n_elements=self.n_elements,
             fit_touchdown=self.fit_touchdown,
-            rtol=self.rtol,
-            max_iter=self.max_iter,
+            options=self.options,
+            terms=self.terms,
         )
         solver = LineBVPSolver(checked)
         if start is not None and not (isinstance(start, LineBVPSolution) and start.model is self):
@@ -202,5 +250,7 @@ class LineBVP:
     def __repr__(self):
         return (
             f"LineBVP({len(self.segments)} segments, length={self.length:g}, seabed={self.seabed!r}, "
-            f"friction={self.friction:g}, n_elements={self.n_elements})"
+            f"friction={self.friction:g}, n_elements={self.n_elements}"
+            + (f", terms={list(self.terms)!r}" if self.terms else "")
+            + ")"
         )

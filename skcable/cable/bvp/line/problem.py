@@ -8,12 +8,15 @@ buoyant segment has ``w < 0``) and the axial stiffness ``EA(s)`` per element:
 
 .. math::
     R_{\mathbf r} = \int_0^L T\,\mathbf e\cdot\delta\mathbf r'\,ds
-        + \int_0^L w\,\delta y\,ds + \sum_k P_k\,\delta y(s_k)
+        + \int_0^L w\,\delta y\,ds - \int_0^L \mathbf f\cdot\delta\mathbf r\,ds
+        + \sum_k P_k\,\delta y(s_k)
         - \sum_i \lambda_i (\mathbf n_i - \mu\,\mathbf t_i)\cdot\delta\mathbf r_i = 0,
     \qquad R_T = \int_0^L \big(n - 1 - T/EA\big)\,\delta T\,ds = 0,
 
 ``P_k`` the downward point loads (clump weights ``P > 0``, buoys ``P < 0``) at mesh nodes
-``s_k``; the contact rows (the ``λ_i`` terms) are `skcable.cable.bvp.line.contact`'s.
+``s_k``, ``f(r, s, a, T)`` the force of the cable terms per unstretched length (y up:
+`skcable.cable.bvp.line.loads`, whose derivatives enter the tangent); the contact rows (the
+``λ_i`` terms) are `skcable.cable.bvp.line.contact`'s.
 
 Support reactions come from ``R⁰`` (the residual without contact) at the supports:
 ``H_A = -R⁰_x(A)``, ``V_A = R⁰_y(A)``, ``H_B = R⁰_x(B)``, ``V_B = R⁰_y(B)``.
@@ -28,20 +31,21 @@ import copy
 from dataclasses import dataclass, replace
 
 import numpy as np
-from scipy.linalg import lapack
 from skfem import Basis, ElementLineP1DG, ElementLineP2, MeshLine
 
 from skcable.cable.bvp.elements import end_dofs
 from skcable.cable.bvp.line.contact import ContactRows, ContactTerms
+from skcable.cable.bvp.line.loads import TermLoad, term_load
 from skcable.cable.bvp.line.mesh import joints_of, line_nodes
-from skcable.errors import ConvergenceError, InputError
+from skcable.cable.bvp.line.start import closed_form_start
+from skcable.cable.bvp.section import STRAINS, tension_section
+from skcable.errors import InputError
 from skcable.fe.assembly import Assembly
+from skcable.fe.check import sparse_of
 
 __all__ = ["STRAINS", "LineProblem", "LineState"]
 
-#: the generalized strains (field, derivative order): x', y', x, y, T
-STRAINS = (("x", 1), ("y", 1), ("x", 0), ("y", 0), ("T", 0))
-AX, AY, X, Y, T_ = range(5)
+AX, AY, X, Y, T_ = range(5)  # the generalized strains of `STRAINS`: x', y', x, y, T
 EPS = float(np.finfo(float).eps)
 
 
@@ -82,6 +86,8 @@ class LineProblem:
         End ``s0`` of the slack stretch near the anchor (m); 0 without one.
     nodes_at : ndarray, optional
         The nodes of a graded mesh.
+    terms : sequence of CableTerm
+        The cable terms (`skcable.cable.terms`) on the line besides its self weight.
     """
 
     def __init__(
@@ -96,9 +102,13 @@ class LineProblem:
         fitted=(),
         slack_end=0.0,
         nodes_at=None,
+        terms=(),
     ):
         self.span, self.dh, self.seabed, self.friction = span, dh, seabed, friction
         self.slack_end = float(slack_end)
+        self.terms = tuple(terms)
+        if self.terms and self.slack_end > 0:
+            self._slack_terms()
         self.segments = segments
         lengths = np.array([seg.length for seg in segments])
         self.joints = joints_of(lengths)
@@ -122,11 +132,40 @@ class LineProblem:
         self.load_scale = float(
             np.sum(np.abs(self.w_q) * self.assembly.dx) + np.sum(np.abs(self.point_values))
         )
+        #: the mean downward load per unstretched length (N/m) the closed-form start hangs under:
+        #: the weight's, less the cable terms' vertical force on the chord (`chord_forces`)
+        self.start_weight = self.weight / self.L
+        if self.terms:
+            f = self.chord_forces()
+            self.load_scale += float(np.sum(np.hypot(f[0], f[1]) * self.assembly.dx))
+            self.start_weight = (self.weight - float(np.sum(f[1] * self.assembly.dx))) / self.L
         self.length_scale = self.L
         self.stiffness = self.load_scale / self.L  # c of the complementarity function (N/m)
         self.contact = inner if seabed is not None else np.zeros(0, dtype=int)
         self.external = self.load_vector()
         self._contact_rows()
+
+    def _slack_terms(self):
+        """Refuse terms the slack stretch near the anchor cannot carry: there friction holds the
+        line's own tangential load, which `skcable.cable.bvp.line.contact` takes as the weight's;
+        a vertical load on a flat seabed has none, any other term would be held by the tension."""
+        flat = self.seabed is not None and self.seabed.flat is not None
+        if not (flat and all(term.vertical for term in self.terms)):
+            raise InputError(
+                "terms",
+                "friction holds a slack stretch near the anchor here, which the line BVP models with "
+                "vertical cable terms (Buoyancy) on a flat seabed only; "
+                f"got {list(self.terms)!r} on a {'flat' if flat else 'shaped'} seabed",
+            )
+
+    def chord_forces(self) -> np.ndarray:
+        """The cable terms' force ``f`` (N/m, (2, nq, ne)) on the straight chord from A to B,
+        unstretched and slack (``T = 0``): their share of the force scale `load_scale` (``∫ |f|
+        ds``) and of the start's weight `start_weight`."""
+        s = self.assembly.x
+        share = s / self.L
+        a = np.broadcast_to((np.array([self.span, self.dh]) / self.L)[:, None, None], (2, *s.shape))
+        return term_load(self.terms, share * self.span, share * self.dh, s, a, np.zeros_like(s)).f
 
     def _properties(self):
         """Weight and compliance at the quadrature points (an element's segment by its midpoint);
@@ -170,10 +209,40 @@ class LineProblem:
 
     # --- loads: the one place where external forces enter ---------------------------------
     def distributed_load(self, g):
-        """The distributed load at the quadrature points: ``(f_x, f_y)`` (N per unstretched m) in
-        ``R ∋ ∫ f_x δx + f_y δy ds``, here the dead weight ``(0, w)`` (``w`` downward positive),
-        from the strains ``g`` at the quadrature points (``(5, nq, ne)``: x', y', x, y, T)."""
-        return np.zeros_like(g[AX]), self.w_q
+        """The distributed load at the quadrature points: ``(p_x, p_y, forces)``, ``p`` (N per
+        unstretched m) in ``R ∋ ∫ p_x δx + p_y δy ds``: the dead weight ``(0, w)`` (``w``
+        downward positive) less the cable terms' force ``f`` (y up), ``forces`` their
+        `TermLoad` (None without terms), from the strains ``g`` at the quadrature points
+        (``(5, nq, ne)``: x', y', x, y, T)."""
+        if not self.terms:
+            return np.zeros_like(g[AX]), self.w_q, None
+        forces = self.term_load(g)
+        return -forces.f[0], self.w_q - forces.f[1], forces
+
+    def term_load(self, g, terms=None) -> TermLoad:
+        """The cable terms' (``terms``, default all) force and derivatives at the quadrature
+        points, from the strains ``g``; ``s`` the unstretched arc length from A."""
+        terms = self.terms if terms is None else terms
+        return term_load(terms, g[X], g[Y], self.assembly.x, g[AX : AY + 1], g[T_])
+
+    @staticmethod
+    def add_term_tangent(D, forces: TermLoad) -> None:
+        """Add the derivatives of ``p = -f`` (`distributed_load`) to the section tangent ``D``
+        (in place): rows x, y by the strains x, y (``∂f/∂r``), x', y' (``∂f/∂a``) and T."""
+        if forces.df_dr is not None:
+            D[X : Y + 1, X : Y + 1] -= forces.df_dr
+        if forces.df_da is not None:
+            D[X : Y + 1, AX : AY + 1] -= forces.df_da
+        if forces.df_dT is not None:
+            D[X : Y + 1, T_] -= forces.df_dT
+
+    def element_term_load(self, z) -> np.ndarray:
+        """``∫ -f ds`` (N) per element (2, ne), in mesh order, at the iterate ``z``: the terms'
+        share of the load ``p`` (`distributed_load`); zeros without terms."""
+        if not self.terms:
+            return np.zeros((2, self.mesh.t.shape[1]))
+        f = self.term_load(self.assembly.interpolate(z)).f
+        return -np.sum(f * self.assembly.dx, axis=1)
 
     def add_point_loads(self, R):
         """Add the point loads ``P_k δy(s_k)`` to the vector ``R`` (in place)."""
@@ -232,25 +301,41 @@ class LineProblem:
         """``R⁰`` (no contact) and the element tangents, or None for a collapsed tangent."""
         asmb = self.assembly
         g = asmb.interpolate(z)
-        ax, ay, T = g[AX], g[AY], g[T_]
-        n = np.sqrt(ax * ax + ay * ay)
-        if not np.all(n > 0):
+        T = g[T_]
+        section = tension_section(g[AX], g[AY], T)
+        if section is None:
             return None
-        ex, ey = ax / n, ay / n
+        n, ex, ey, D = section  # T e, the stretch and their tangent (skcable.cable.bvp.section)
         c = self.compliance_q
-        fx, fy = self.distributed_load(g)
+        fx, fy, forces = self.distributed_load(g)
         S = np.stack([T * ex, T * ey, fx, fy, n - 1.0 - T * c])
-        D = np.zeros((5, 5, *n.shape))
-        Tn = T / n
-        D[AX, AX] = Tn * (1.0 - ex * ex)
-        D[AX, AY] = D[AY, AX] = -Tn * ex * ey
-        D[AY, AY] = Tn * (1.0 - ey * ey)
-        D[AX, T_] = D[T_, AX] = ex
-        D[AY, T_] = D[T_, AY] = ey
         D[T_, T_] = -c
+        if forces is not None:
+            self.add_term_tangent(D, forces)
         R = asmb.vector(S)
         self.add_point_loads(R)
         return R, asmb.element_matrices(D)
+
+    # --- one term alone (skcable.fe.check_tangent) ---------------------------------------------
+    def term_contribution(self, term, U, state=None):
+        """``(R, K)`` of the cable term ``term`` alone at the iterate ``U``: its residual ``-∫ f·δr``
+        over the dofs and its tangent (sparse)."""
+        asmb = self.assembly
+        g = asmb.interpolate(np.asarray(U, dtype=float))
+        forces = self.term_load(g, (term,))
+        S = np.zeros_like(g)
+        S[X : Y + 1] = -forces.f
+        D = np.zeros((5, 5, *g.shape[1:]))
+        self.add_term_tangent(D, forces)
+        return asmb.vector(S), sparse_of(asmb.matrix(asmb.element_matrices(D)), asmb.N)
+
+    def free_dofs(self):
+        """The dofs a solve moves (for `skcable.fe.check_tangent`)."""
+        return self.free
+
+    def tangent_check_state(self):
+        """The closed-form start of a solve (for `skcable.fe.check_tangent`)."""
+        return closed_form_start(self)
 
     def with_tension_switch(self, z):
         """A copy of the problem whose contact nodes switch to active at ``λ > max(c_i, T/h_i) g``,
@@ -277,6 +362,7 @@ class LineProblem:
 
     def contact_terms(self, z, R0):
         """Per contact node: slope, curvature, gap, multiplier λ, active flag, R⁰ rows."""
+        assert self.contact_rows is not None, "a line without a seabed has no contact terms"
         return self.contact_rows.terms(z, R0)
 
     def assemble(self, z):
@@ -288,7 +374,7 @@ class LineProblem:
         R0, Ke = out
         F = R0.copy()
         terms = None
-        if self.contact.size:
+        if self.contact_rows is not None:
             terms = self.contact_rows.terms(z, R0)
             self.contact_rows.rows(F, terms)
         return LineState(F, R0, Ke, terms, self.merit(F), z)
@@ -299,6 +385,16 @@ class LineProblem:
         force = np.abs(F[self._force_rows]) / self.load_scale
         stretch = np.abs(F[self._stretch_rows]) / self.length_scale
         return max(float(np.max(force, initial=0.0)), float(np.max(stretch, initial=0.0)))
+
+    def absolute(self, state, tol) -> float:
+        """The largest force row of ``F`` (N) where every stretch row meets ``tol`` (over
+        `length_scale`), else inf: the measure of ``atol``."""
+        if state.F is None:
+            return np.inf
+        stretch = np.abs(state.F[self._stretch_rows]) / self.length_scale
+        if not float(np.max(stretch, initial=0.0)) < tol:
+            return np.inf
+        return float(np.max(np.abs(state.F[self._force_rows]), initial=0.0))
 
     def merit_floor(self, state) -> float:
         """The round-off floor of the merit at ``state``: the merit of ``ε |J| |z|`` (``J`` the
@@ -319,8 +415,9 @@ class LineProblem:
     def tangent(self, state):
         """The generalized Jacobian of ``F``: element matrices with the contact rows mixed in,
         and the terms they cannot carry (sparse, or None)."""
-        if not self.contact.size:
+        if self.contact_rows is None:
             return state.Ke, None
+        assert state.terms is not None, "a state of a line with contact carries its contact terms"
         return self.contact_rows.mixed(state.Ke, state.terms, self.basis.element_dofs, self.assembly.N)
 
     def jacobian(self, state):
@@ -347,14 +444,7 @@ class LineProblem:
         """``J⁻¹ rhs`` over the free dofs for several right-hand sides at once (``rhs`` (n_free,
         k), in ``free`` order): one banded LU factorisation (LAPACK ``dgbsv``) of the generalized
         Jacobian at ``state``."""
-        system = self.system
-        order = system.position[self.free]
-        b = np.empty((system.n, rhs.shape[1]))
-        b[order] = rhs
-        _, _, x, info = lapack.dgbsv(system.kl, system.ku, self._band(state), b)
-        if info != 0:
-            raise ConvergenceError(f"banded solve: the tangent is singular (LAPACK dgbsv info = {info})", [])
-        return x[order]
+        return self.system.solve(self._band(state), rhs)
 
     def end_sensitivity(self, state):
         """``(K, dz)``: ``K = ∂(H_B, V_B)/∂(span, dh)`` (N/m, rows H_B, V_B) of the discrete line

@@ -74,13 +74,18 @@ def tension_zero(solution, tol):
 def slack_estimate(solution, friction):
     """The end ``s0`` of the slack stretch (m) that friction ``μ`` fully mobilised from the
     touchdown towards A would give a frictionless solution's grounded line on a flat seabed:
-    ``μ (W(s_td) - W(s0)) = T(s_td)``, W the weight from A; 0 when friction cannot take the pull."""
+    ``μ (W(s_td) - W(s0)) = T(s_td)``, W the vertical load from A (the weight, the point loads
+    and the cable terms' share, `LineBVPSolution.load_before`); 0 when friction cannot take the
+    pull."""
     if not solution.touches_beyond_anchor():
         return 0.0
     s_td = solution.s_touchdown
     slope = solution.seabed_slope_at(s_td)
     pull = solution.H * np.sqrt(1.0 + slope * slope) / friction  # the tension at the touchdown / μ
-    before = solution.weight_before
+
+    def before(s):
+        return solution.load_before(s)[1]
+
     if before(s_td) <= pull:
         return 0.0
     return float(brentq(lambda s: before(s_td) - before(s) - pull, 0.0, s_td))
@@ -88,9 +93,9 @@ def slack_estimate(solution, friction):
 
 def slack_tension(solution):
     """Tension (N) just past the end ``s0`` of the slack stretch, and its slope (N/m) there:
-    the first element that starts at s0."""
+    the first element that starts at s0 (its friction: μ times its vertical load,
+    `LineBVPSolution.load_before`)."""
     s_l, s_r, T_l, T_r = solution.tension_profile()
     k = int(np.argmin(np.abs(s_l - solution.problem.slack_end)))
-    before = solution.weight_before
-    friction_force = solution.friction * (before(s_r[k]) - before(s_l[k]))
+    friction_force = solution.friction * (solution.load_before(s_r[k])[1] - solution.load_before(s_l[k])[1])
     return float(T_l[k]), float(friction_force / (s_r[k] - s_l[k]))

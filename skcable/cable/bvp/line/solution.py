@@ -2,18 +2,25 @@
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from functools import cached_property
+from typing import TYPE_CHECKING
 
 import numpy as np
 from scipy.optimize import brentq
 
 from skcable._checks import real, require, whole
 from skcable.cable.bvp.line.contact import anchor_split
+from skcable.cable.bvp.line.loads import term_load
 from skcable.cable.bvp.line.problem import LineProblem, LineState
 from skcable.cable.bvp.line.stiffness import fairlead_stiffness
+from skcable.cable.terms import CableState, term_outputs
 from skcable.errors import ConvergenceError
 from skcable.fe.probes import gradient_probes
 from skcable.results import ProfileMixin
+
+if TYPE_CHECKING:  # pragma: no cover
+    from skcable.cable.bvp.line.model import LineBVP
 
 __all__ = ["LineBVPSolution"]
 
@@ -73,9 +80,9 @@ class LineBVPSolution(ProfileMixin):
 
     #: ``slack_solver(s0)``: the line re-solved with its slack stretch ending at ``s0`` (set by
     #: the solver that made it; `stiffness` needs it where the line has a slack stretch)
-    slack_solver = None
+    slack_solver: Callable[[float], LineBVPSolution] | None = None
     #: the `LineBVP` model that solved it (None from `solve_line_bvp`)
-    model = None
+    model: LineBVP | None = None
 
     def __init__(self, problem: LineProblem, z, history, state: LineState):
         self.problem, self.dofs, self.state = problem, z, state
@@ -103,6 +110,7 @@ class LineBVPSolution(ProfileMixin):
         """The seabed's forces per contact node (the anchor's node first, when A lies on the
         seabed, whose push the seabed takes from the anchor); the anchor's reaction."""
         problem = self.problem
+        assert problem.contact_rows is not None and self.state.terms is not None, "a line on a seabed"
         bp, gap, lam, active, mu, held = problem.contact_rows.forces(self.state.terms, order)
         if self.anchor_on_seabed:
             # the seabed under the anchor takes the anchor's downward push, friction included
@@ -185,6 +193,26 @@ class LineBVPSolution(ProfileMixin):
         order = np.argsort(self.mesh.p[0, self.mesh.t].mean(axis=0))
         return np.concatenate([[0.0], np.cumsum(self.problem.element_weight[order])])
 
+    def load_before(self, s):
+        """``(P_x, P_y)`` (N): the load on the line over [0, s] in the residual's sense (weight
+        and point loads downward, `weight_before`, less the cable terms' force ``∫_0^s f``, y
+        up), per element interpolated linearly in s as `weight_before` is."""
+        if not self.problem.terms:
+            return 0.0, self.weight_before(s)
+        s_nodes = self.mesh.p[0]
+        k = int(np.clip(np.searchsorted(s_nodes, s) - 1, 0, len(s_nodes) - 2))
+        fraction = (s - s_nodes[k]) / (s_nodes[k + 1] - s_nodes[k])
+        before = self._cumulative_terms
+        terms = before[:, k] + fraction * (before[:, k + 1] - before[:, k])
+        return float(terms[0]), float(terms[1] + self.weight_before(s))
+
+    @cached_property
+    def _cumulative_terms(self):
+        """``∫ -f ds`` (N) of the cable terms from A to each mesh node (2, nodes), in order."""
+        order = np.argsort(self.mesh.p[0, self.mesh.t].mean(axis=0))
+        per_element = self.problem.element_term_load(self.dofs)[:, order]
+        return np.concatenate([np.zeros((2, 1)), np.cumsum(per_element, axis=1)], axis=1)
+
     def _transition(self, balance, near, required=True):
         """Root of ``balance(s)`` between the mesh nodes around ``near`` (a contact node); None
         where it changes sign nowhere there and the root is not ``required``."""
@@ -213,16 +241,20 @@ class LineBVPSolution(ProfileMixin):
     @cached_property
     def _touchdown(self):
         """(s, x) of the last touchdown: ``V_B - (W - W(s)) = H b'(x(s))`` (the suspended part's
-        vertical balance, the line leaving the seabed tangentially). Where only the anchor's node
-        presses on the seabed, the touchdown may lie before the first node: it is sought there
-        (0 where the balance has no root near the anchor)."""
+        vertical balance, the line leaving the seabed tangentially; with cable terms ``W`` is
+        the vertical load `load_before` and ``H`` the horizontal force there, ``H_B - (P_x(L)
+        - P_x(s))``). Where only the anchor's node presses on the seabed, the touchdown may lie
+        before the first node: it is sought there (0 where the balance has no root near the
+        anchor)."""
         anchor_only = self.anchor_on_seabed and self.in_contact.size and self.in_contact[0]
         if not (self.touches_beyond_anchor() or anchor_only):
             return 0.0, 0.0
-        total = self.weight_before(self.length)
+        total_x, total = self.load_before(self.length)
 
         def balance(s):
-            return self.V_B - (total - self.weight_before(s)) - self.H * self.seabed_slope_at(s)
+            before_x, before = self.load_before(s)
+            H = self.H - (total_x - before_x)
+            return self.V_B - (total - before) - H * self.seabed_slope_at(s)
 
         if self.touches_beyond_anchor():
             s_td = self._transition(balance, self.contact_s[self.in_contact][-1])
@@ -234,12 +266,15 @@ class LineBVPSolution(ProfileMixin):
     def s_landing(self):
         """Where a line hanging from an anchor above the seabed first lands on it: the unstretched
         arc length from A (m) where ``W(s) - V_A = H_A b'(x(s))`` (the balance of the part
-        hanging from A); 0 when A lies on the seabed or nothing touches."""
+        hanging from A; with cable terms ``W`` is the vertical load `load_before` and the
+        horizontal force there ``H_A + P_x(s)``); 0 when A lies on the seabed or nothing
+        touches."""
         if self.anchor_on_seabed or not self.in_contact.any():
             return 0.0
 
         def balance(s):
-            return self.weight_before(s) - self.V_A - self.H_A * self.seabed_slope_at(s)
+            before_x, before = self.load_before(s)
+            return before - self.V_A - (self.H_A + before_x) * self.seabed_slope_at(s)
 
         return self._transition(balance, self.contact_s[self.in_contact][0])
 
@@ -343,16 +378,35 @@ class LineBVPSolution(ProfileMixin):
     def samples(self, n: int = 201) -> dict:
         """The line at ``n`` points evenly spaced in unstretched arc length (the input of
         `to_vtk`): ``xy`` (n, 2) (m), ``tension`` (N, the field), ``angle`` (rad above the
-        horizontal) and ``load`` (n, 2), the distributed weight in N per metre of unstretched
-        line, y up (point loads and the seabed's forces not included)."""
+        horizontal), ``load`` (n, 2), the distributed load in N per metre of unstretched line,
+        y up (the weight and the cable terms' force; point loads and the seabed's forces not
+        included), and ``outputs``, what the cable terms name (`CableTerm.outputs`: their
+        force ``<Term>_force_N_per_m`` (n, 2) at least; empty without terms)."""
         s = np.linspace(0.0, self.length, whole("n", n, 2))
         weight = np.asarray(self.problem.weight_at(s), dtype=float)
-        return {
-            "xy": self.xy(s),
-            "tension": np.asarray(self.tension(s), dtype=float),
-            "angle": self.angle(s),
-            "load": np.column_stack([np.zeros_like(s), -weight]),
-        }
+        xy = self.xy(s)
+        tension = np.asarray(self.tension(s), dtype=float)
+        load = np.column_stack([np.zeros_like(s), -weight])
+        outputs = {}
+        if self.problem.terms:
+            G = gradient_probes(self.basis, s.reshape(1, -1))
+            xd, yd, _ = self.fields()
+            a = np.array([G @ xd, G @ yd])
+            state = CableState(xy[:, 0], xy[:, 1], s, a, tension)
+            load = load + term_load(self.problem.terms, xy[:, 0], xy[:, 1], s, a, tension).f.T
+            outputs = {
+                name: np.moveaxis(v, 0, -1) if np.ndim(v) > 1 else v
+                for name, v in term_outputs(self.problem.terms, state).items()
+            }
+        return {"xy": xy, "tension": tension, "angle": self.angle(s), "load": load, "outputs": outputs}
+
+    def to_frame(self, n: int = 201):
+        """``n`` profile samples evenly spaced in unstretched arc length (pandas DataFrame):
+        columns ``s`` (m), ``x``, ``y`` (m) and ``T`` (N) (`skcable.results.ProfileMixin`), then
+        the cable terms' outputs (``samples()["outputs"]``), a vector as ``<name>_x`` and
+        ``<name>_y``."""
+        outputs = self.samples(n)["outputs"] if self.problem.terms else {}
+        return ProfileMixin.frame_with_outputs(self, n, outputs)
 
     def to_vtk(self, path, n: int = 201):
         """Write the line as a VTK polyline (`skcable.io.cable_mesh`: tension, tangent, angle,

@@ -4,7 +4,9 @@
   Irvine, "Cable Structures", MIT Press, 1981, ch. 2; an inextensible line starts from the
   inextensible catenary) or, where it dips below the seabed, Jonkman's grounded one on a flat
   seabed at the anchor's level (J.M. Jonkman, NREL, 2007), its positions lifted onto the
-  seabed. Exact for one uniform segment.
+  seabed. Exact for one uniform segment. With cable terms the mean weight is the weight less
+  the terms' vertical force on the chord (`LineProblem.start_weight`); a line they buoy up
+  (a negative mean weight) hangs upward, the mirror image of the line under the opposite load.
 - `segmented_start`: the multi-segment closed form `skcable.cable.Line` of the same segments,
   clump weights and buoys at the joints and flat seabed: the start of a line whose segments
   differ (a light rope under a heavy chain hangs far from the uniform line of their mean
@@ -24,6 +26,8 @@ uniform line lifted onto the seabed.
 """
 
 from __future__ import annotations
+
+from typing import NamedTuple
 
 import numpy as np
 
@@ -58,18 +62,16 @@ def _uniform(problem):
     (zero where grounded); ``heap`` whether the grounded uniform line is a heap (then x, y, T
     and form are the free line's, lifted onto the seabed)."""
     span, dh, L = problem.span, problem.dh, problem.L
-    w = problem.weight / L
-    if not w > 0:
-        raise InputError("segments", f"the line's mean weight must be > 0 (downward), got {w:g} N/m")
+    w = problem.start_weight
+    if not (w > 0 or (problem.terms and w < 0)):
+        what = "weight less the cable terms' vertical force" if problem.terms else "weight"
+        raise InputError("segments", f"the line's mean {what} must be > 0 (downward), got {w:g} N/m")
     c = problem.compliance / L
-    EA = 1.0 / c if c > 0 else 1e6 * w * L
+    EA = 1.0 / c if c > 0 else 1e6 * abs(w) * L
     s_dof, s_t = problem.basis.doflocs[0], problem.tbasis.doflocs[0]
-    if c > 0:
-        free, stiff = _free_elastic(span, dh, w, EA, L), EA
-    else:
-        # an inextensible line starts inextensible: a stiff elastic start (EA = 1e6 wL) of a line
-        # 1e-9 longer than its chord stretches by more than that excess, and starts H far off
-        free, stiff = catenary(span, dh, w, length=L), np.inf
+    # an inextensible line starts inextensible: a stiff elastic start (EA = 1e6 wL) of a line
+    # 1e-9 longer than its chord stretches by more than that excess, and starts H far off
+    free, stiff = _free_line(span, dh, w, EA, L, c > 0), (EA if c > 0 else np.inf)
     u_a = -free.V_A / free.H
 
     def free_x(s):
@@ -83,7 +85,7 @@ def _uniform(problem):
     T = np.hypot(free.H, -free.V_A + w * s_t)
     form = (float(free.H), w, float(free.V_A) / w, False)
     bed, heap = problem.seabed, False
-    if bed is not None and np.any(y < bed(x)):
+    if bed is not None and w > 0 and np.any(y < bed(x)):
         level = min(float(bed(np.array([0.0]))[0]), 0.0)
         level = min(level, dh - 1e-3 * abs(span))
         try:
@@ -103,6 +105,25 @@ def _uniform(problem):
     return x, y, T, form, heap
 
 
+class _Free(NamedTuple):
+    """The free uniform line's horizontal force and A's upward reaction (N)."""
+
+    H: float
+    V_A: float
+
+
+def _free_line(span, dh, w, EA, L, elastic) -> _Free:
+    """The free uniform line under ``w`` (N/m, downward; a line that cable terms buoy up, ``w <
+    0``, hangs upward: the mirror image of the line under ``-w`` to ``(span, -dh)``), elastic
+    (`_free_elastic`) or inextensible (`skcable.cable.catenary`)."""
+    sign = 1.0 if w > 0 else -1.0
+    if elastic:
+        free = _free_elastic(span, sign * dh, sign * w, EA, L)
+    else:
+        free = catenary(span, sign * dh, sign * w, length=L)
+    return _Free(free.H, sign * free.V_A)
+
+
 def _free_elastic(span, dh, w, EA, L):
     """Irvine's elastic catenary (``H``, ``V_A``); where its Newton stalls above its own
     tolerance (the round-off of a nearly taut, stiff line), the multi-segment closed form `Line`
@@ -119,7 +140,7 @@ def _free_elastic(span, dh, w, EA, L):
 def _exact(problem) -> bool:
     """Whether the uniform closed form is the line's own: one segment of constant weight, no
     point loads, a flat seabed."""
-    one = len(problem.segments) == 1 and not callable(problem.segments[0].w)
+    one = len(problem.segments) == 1 and not callable(problem.segments[0].w) and not problem.terms
     return one and not problem.point_loads and problem.seabed is not None and problem.seabed.flat is not None
 
 
@@ -183,6 +204,8 @@ def segmented_solution(problem, friction=None):
     except (InputError, ConvergenceError):
         return None
     if solution.heap:
+        if problem.terms:  # the segments' heap is not the line's: its terms load it otherwise
+            return None
         raise InputError("length", _HEAP)
     return solution
 

@@ -1,0 +1,107 @@
+r"""Where a line in space leaves the seabed: the touchdown and the landing from the balance of forces.
+
+Nodal contact puts the touchdown at a node, up to half an element from where the line leaves
+the seabed, an error in the end forces of order (that distance)² that jumps with the mesh. The
+driver puts a node at the touchdown instead (`skcable.cable.bvp.line3d.driver`), found from the
+equilibrium of the suspended part: the tension vector at ``s``,
+
+.. math:: \mathbf F(s) = \mathbf S_B + \int_s^L \mathbf f\,ds - \sum_{s_k > s} P_k\,\mathbf e_z,
+
+(``S_B`` the fairlead's reaction on the line, ``f`` the distributed force, ``P_k`` the point
+loads) is tangent to the seabed where the line leaves it, ``n(r(s))·F(s) = 0`` with
+``n = (−b_x, −b_y, 1)``: in 2-D the plane line's vertical balance ``V_B − W(s, L) = H b'``
+(`skcable.cable.bvp.line.solution`). The landing of a line hanging from an anchor above the
+seabed is the same balance of the part ``[0, s]``, ``F(s) = −S_A − ∫_0^s f ds + Σ_{s_k < s} P_k
+e_z``. The integrals are the element integrals of the solution's forces and, in the element of
+``s``, a Gauss–Legendre rule of `ORDER` points; the root is bracketed between the mesh nodes
+around the last (first) node on the seabed and found by Brent's method.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+from scipy.optimize import brentq
+
+__all__ = ["ORDER", "landing", "touchdown"]
+
+#: Gauss–Legendre points of the integral over the part of an element
+ORDER = 8
+_X, _W = np.polynomial.legendre.leggauss(ORDER)
+
+
+class _Balance:
+    """``n(r(s))·F(s)`` of a solved line from its fairlead (``side = "b"``) or anchor (``"a"``)."""
+
+    def __init__(self, problem, z, R0, side):
+        self.problem, self.z, self.side = problem, z, side
+        g = problem.assembly.interpolate(z)
+        f = problem.loads(g)[0]
+        left, right = np.sort(problem.mesh.p[0, problem.mesh.t], axis=0)
+        order = np.argsort(left)  # the elements along the line
+        self.left, self.right = left[order], right[order]
+        self.element_force = np.sum(f * problem.assembly.dx, axis=1)[:, order]  # (3, ne)
+        S_A, S_B = problem.reactions(R0)
+        self.end = S_B if side == "b" else -S_A
+
+    def _partial(self, lo, hi):
+        if hi <= lo:
+            return np.zeros(3)
+        s = 0.5 * (lo + hi) + 0.5 * (hi - lo) * _X
+        return self.problem.forces_at(self.z, s) @ (0.5 * (hi - lo) * _W)
+
+    def force(self, s) -> np.ndarray:
+        """``F(s)`` (N), the tension vector at ``s`` towards the fairlead."""
+        k = int(np.clip(np.searchsorted(self.right, s), 0, self.right.size - 1))
+        loads = self.problem.point_loads
+        if self.side == "b":
+            beyond = self.left >= self.right[k]
+            F = self.end + self.element_force[:, beyond].sum(axis=1) + self._partial(s, self.right[k])
+            F[2] -= sum(P for s_p, P in loads if s_p > s)
+        else:
+            before = self.right <= self.left[k]
+            F = self.end - self.element_force[:, before].sum(axis=1) - self._partial(self.left[k], s)
+            F[2] += sum(P for s_p, P in loads if s_p < s)
+        return F
+
+    def __call__(self, s) -> float:
+        state = self.problem.state_at(self.z, np.array([s]))
+        grad = self.problem.seabed.gradient(state.x, state.y)[:, 0]
+        F = self.force(s)
+        return float(F[2] - grad[0] * F[0] - grad[1] * F[1])
+
+
+def _root(balance, near, nodes, length):
+    """The root of ``balance`` between the mesh ``nodes`` around ``near``, nearest it; None
+    where it changes sign nowhere there."""
+    h = float(np.max(np.diff(nodes)))
+    grid = nodes[(nodes >= near - 2 * h) & (nodes <= near + 2 * h)]
+    values = np.array([balance(s) for s in grid])
+    zero = np.flatnonzero(values == 0.0)
+    if zero.size:
+        return float(grid[zero[np.argmin(np.abs(grid[zero] - near))]])
+    change = np.flatnonzero(np.sign(values[:-1]) != np.sign(values[1:]))
+    if not change.size:
+        return None
+    k = int(change[np.argmin(np.abs(grid[change] - near))])
+    return float(brentq(balance, grid[k], grid[k + 1], xtol=1e-13 * length))
+
+
+def touchdown(problem, z, state):
+    """The arc length (m) where the line leaves the seabed for the last time towards the
+    fairlead (module docstring); None without contact or without a sign change near it."""
+    if state.terms is None or not np.any(state.terms.active):
+        return None
+    near = float(problem.basis.doflocs[0][problem.contact_rows.nodes[state.terms.active]].max())
+    return _root(_Balance(problem, z, state.R0, "b"), near, np.sort(problem.mesh.p[0]), problem.L)
+
+
+def landing(problem, z, state):
+    """The arc length (m) where a line hanging from an anchor above the seabed first lands on it;
+    None where the anchor lies on the seabed or nothing touches."""
+    if state.terms is None or not np.any(state.terms.active):
+        return None
+    a = problem.anchor
+    if abs(a[2] - float(problem.seabed.height(a[0], a[1]))) <= 1e-9 * problem.L:
+        return None
+    near = float(problem.basis.doflocs[0][problem.contact_rows.nodes[state.terms.active]].min())
+    return _root(_Balance(problem, z, state.R0, "a"), near, np.sort(problem.mesh.p[0]), problem.L)
