@@ -19,6 +19,8 @@ __all__ = [
     "capacity_curves",
     "curvature_along",
     "moment_curvature",
+    "mooring_overview",
+    "mooring_plan",
     "mooring_profiles",
     "render_strand",
     "secant_stiffness",
@@ -231,26 +233,93 @@ def render_strand(
     return path
 
 
+def _line_frame(line):
+    """A solved line's first end and its horizontal unit vector towards the other end."""
+    start = getattr(line, "a", None)
+    start = line.anchor if start is None else start
+    return np.asarray(start, dtype=float), np.asarray(line.direction, dtype=float)
+
+
+def _largest_tension(line) -> float:
+    ends = getattr(line, "end_forces", None)
+    ends = np.array([line.force_on_anchor, line.force_on_fairlead]) if ends is None else ends
+    return float(np.linalg.norm(ends, axis=1).max())
+
+
 def mooring_profiles(result, ax=None, *, n: int = 201, depth=None):
-    """Profile of each line of a moored body in its own vertical plane: height z (m)
-    against the horizontal distance from its anchor (m), coloured by line, with the
-    seabed (``result.depth``, or ``depth``) as a line. Reads ``result.lines`` (each
-    line's ``profile(n)``, ``anchor`` and ``direction``)."""
+    """Profile of each line of a mooring system in its own vertical plane: height z (m) against the
+    horizontal distance from its first end (its anchor, or end a) (m), coloured by line, with the
+    seabed (``result.depth``, or ``depth``) as a line. Reads ``result.lines`` (each line's
+    ``profile(n)``, its first end and ``direction``, its end forces)."""
     ax = _axes(ax)
     lines = list(result.lines)
     if not lines:
         raise InputError("result", "has no lines to plot")
     depth = getattr(result, "depth", None) if depth is None else depth
+    numbers = getattr(result, "line_indices", range(len(lines)))
     reach = 0.0
-    for i, line in enumerate(lines):
+    for i, line in zip(numbers, lines, strict=True):
         xyz = line.profile(n)
-        r = (xyz[:, :2] - line.anchor[:2]) @ line.direction[:2]
+        start, e = _line_frame(line)
+        r = (xyz[:, :2] - start[:2]) @ e[:2]
         reach = max(reach, float(r.max()))
         ax.plot(
-            r, xyz[:, 2], color=f"C{i % 10}", label=f"line {i}: T_B = {line.tension_at_fairlead / 1e3:.0f} kN"
+            r, xyz[:, 2], color=f"C{i % 10}", label=f"line {i}: T_max = {_largest_tension(line) / 1e3:.0f} kN"
         )
     if depth is not None:
         ax.axhline(-float(depth), color="0.4", lw=0.8, ls="--", label="seabed")
-    ax.set(xlabel="horizontal distance from the anchor [m]", ylabel="z [m]", xlim=(0.0, 1.02 * reach))
+    ax.set(xlabel="horizontal distance along the line [m]", ylabel="z [m]", xlim=(0.0, 1.02 * reach))
     ax.legend(loc="upper left", fontsize="small")
     return ax
+
+
+def mooring_plan(result, ax=None, *, n: int = 101):
+    """Plan view of a mooring system at equilibrium: each line from above (coloured by line, its
+    grounded part drawn thicker where it lies on the seabed), the anchors (triangles), the free
+    points (circles) and each body's points (joined around its reference point, a cross), in m.
+    Reads ``result.lines`` (``profile(n)``), ``result.points`` and ``result.bodies``."""
+    ax = _axes(ax)
+    lines = list(result.lines)
+    if not lines:
+        raise InputError("result", "has no lines to plot")
+    depth = getattr(result, "depth", None)
+    numbers = getattr(result, "line_indices", range(len(lines)))
+    for i, line in zip(numbers, lines, strict=True):
+        xyz = line.profile(n)
+        ax.plot(xyz[:, 0], xyz[:, 1], color=f"C{i % 10}", lw=1.2, label=f"line {i}")
+        if depth is not None:
+            down = np.abs(xyz[:, 2] + float(depth)) < 1e-6 * max(1.0, float(depth))
+            ax.plot(
+                np.where(down, xyz[:, 0], np.nan),
+                np.where(down, xyz[:, 1], np.nan),
+                color=f"C{i % 10}",
+                lw=3.0,
+            )
+    points = list(getattr(result, "points", []))
+    for kind, marker, label in (("fixed", "^", "anchors"), ("free", "o", "free points")):
+        xy = np.array([p.position[:2] for p in points if p.kind == kind]).reshape(-1, 2)
+        if len(xy):
+            ax.plot(xy[:, 0], xy[:, 1], marker, color="k", ms=5, ls="none", label=label)
+    for state in getattr(result, "bodies", []):
+        ax.plot(*state.offset[:2], "x", color="k", ms=8)
+        local = np.asarray(getattr(state, "local_points", np.zeros((0, 3))))
+        if len(local) > 1:
+            xy = (state.offset + local @ np.asarray(state.rotation).T)[:, :2]
+            order = np.argsort(np.arctan2(*(xy - state.offset[:2]).T[::-1]))
+            ring = xy[np.r_[order, order[:1]]]
+            ax.plot(ring[:, 0], ring[:, 1], color="0.2", lw=1.0)
+    ax.set(xlabel="x [m]", ylabel="y [m]", aspect="equal")
+    ax.legend(loc="best", fontsize="small")
+    return ax
+
+
+def mooring_overview(result, *, n: int = 101):
+    """A figure of a mooring system at equilibrium: its plan view (`mooring_plan`) beside the lines'
+    profiles (`mooring_profiles`); returns the figure."""
+    import matplotlib.pyplot as plt
+
+    fig, (plan, side) = plt.subplots(1, 2, figsize=(12.0, 5.0))
+    mooring_plan(result, plan, n=n)
+    mooring_profiles(result, side, n=n)
+    fig.tight_layout()
+    return fig

@@ -5,9 +5,11 @@ what it computes after the round trip."""
 
 import inspect
 import math
+import os
 import pickle
 import re
 import struct
+import tempfile
 
 import numpy as np
 import pandas as pd
@@ -110,6 +112,27 @@ def mooring(point=False):
         )  # fmt: skip
     leg = cable.Line([cable.Segment(850.0, 2456.82, 1.2326e9)], seabed=0.0)
     return cable.MooringSystem(body, [leg] * 3, 800.0 * ring + [0.0, 0.0, -200.0], depth=200.0)
+
+
+def network():
+    """MoorPy's basicU: a U line between two anchors, two buoyant free points (built point by point)."""
+    system = cable.MooringSystem(depth=100.0)
+    ends = [
+        system.add_point([-200.0, 0.0, -100.0], fixed=True),
+        system.add_point([-100.0, 0.0, -50.0], volume=50.0),
+        system.add_point([100.0, 0.0, -40.0], volume=50.0),
+        system.add_point([200.0, 0.0, -100.0], fixed=True),
+    ]
+    for L, a, b in zip((120.0, 250.0, 120.0), ends[:-1], ends[1:], strict=True):
+        system.add_line(cable.Line([cable.Segment(L, 2456.82, 1.2326e9)]), a, b)
+    return system
+
+
+def moordyn_model():
+    """A system written to a MoorDyn file and read back."""
+    with tempfile.TemporaryDirectory() as folder:
+        path = cable.write_moordyn(network(), os.path.join(folder, "lines.dat"), diameter=0.12)
+        return cable.read_moordyn(path)
 
 
 def strand_model(slip="axis", **options):
@@ -265,6 +288,24 @@ RESULTS = [
         lambda r: r.stiffness(),
     ),
     ("mooring equilibrium", lambda: mooring().equilibrium(force=(2e6, 0.0, 0.0)), lambda r: r.stiffness()),
+    ("mooring network equilibrium", lambda: network().equilibrium(), lambda r: r.stiffness()),
+    (
+        "line between",
+        lambda: cable.line_between(
+            cable.Line([cable.Segment(850.0, 2456.82, 1.2326e9)]), [800, 0, -200], [0, 0, -14]
+        ),
+        lambda r: r.stiffness(),
+    ),
+    (
+        "line in a plane",
+        lambda: cable.line_in_plane(line(), 800.0, 150.0, seabed=0.0),
+        lambda r: (r.jacobian(), r.tensions()),
+    ),
+    (
+        "line in a plane by the BVP",
+        lambda: cable.line_in_plane(line(), 800.0, 150.0, seabed=-10.0),
+        lambda r: (r.jacobian(), r.tensions()),
+    ),
     ("clamp stress", lambda: cable.clamp_stress(strand.preset("acsr-drake").damaged(2), 0.5e-3, 28e3), None),
     ("residual strength", lambda: cable.residual_strength(strand.preset("acsr-drake"), 2, rts=140.1e3), None),
     ("section", lambda: strand.preset("steel-9.5").damaged(1).section(), None),
@@ -356,6 +397,9 @@ MODELS = [
     ),
     ("line", line, lambda m: state(m.solve(800.0, 150.0))),
     ("mooring system", mooring, lambda m: m.stiffness(np.zeros(6))),
+    ("mooring network", network, lambda m: state(m.equilibrium())),
+    ("line component", lambda: cable.component("studless chain R3"), lambda c: c.properties(0.12)),
+    ("MoorDyn model", moordyn_model, lambda m: state(m.system.equilibrium())),
     ("point body system", lambda: mooring(point=True), lambda m: m.stiffness(np.zeros(3))),
     ("conductor", drake, lambda c: state(c.change_of_state(400.0, t0=15.0, H0=28e3, t=[50.0]))),
     ("BVP segment", lambda: cable.BVPSegment(850.0, 1000.0, 5e8), None),

@@ -9,7 +9,7 @@ import os
 import sys
 import warnings
 
-from skcable.cli import _cables, _demo, _examples, _frequencies, _line, _state, _strand, _study
+from skcable.cli import _cables, _demo, _examples, _frequencies, _line, _mooring, _state, _strand, _study
 from skcable.cli._args import Parser, given_numbers, input_message, warning_message
 from skcable.cli._status import (
     EXIT_ERROR,
@@ -23,7 +23,7 @@ from skcable.cli._status import (
 __all__ = ["main", "parser"]
 
 #: The command modules, in the order of ``skcable --help``; each has ``register(sub, command)``.
-COMMANDS = (_demo, _examples, _cables, _strand, _line, _state, _frequencies, _study)
+COMMANDS = (_demo, _examples, _cables, _strand, _line, _mooring, _state, _frequencies, _study)
 
 
 class _Version(argparse.Action):

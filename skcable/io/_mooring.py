@@ -1,14 +1,14 @@
-"""A moored body at equilibrium as one VTK mesh (meshio) for ParaView.
+"""A mooring system at equilibrium as one VTK mesh (meshio) for ParaView.
 
-Global axes, z up, metres. Cells: each line as a polyline (``line`` cells), the
-seabed patch (one ``quad`` at z = -depth, under the anchors and the body, when the
-result has a ``depth``) and the body (a ``hexahedron``: the box of its fairleads in
-body axes, turned and moved with it; a ``vertex`` for a point body). Point data:
-``tension_N`` (zero off the lines); cell data: ``part`` (0 line, 1 seabed, 2 body)
-and ``line`` (the line's number, -1 off the lines). Files are written atomically; a
-missing parent folder is refused, never created. Reads only the result's
-``lines`` (``profile(n)``), ``anchors``, ``fairleads``, ``offset``, ``rotation``,
-``depth`` and ``position``.
+Global axes, z up, metres. Cells: each line as a polyline (``line`` cells), the seabed patch (one
+``quad`` at z = -depth under every point, when the result has a ``depth``), each rigid body as a
+``hexahedron`` (the box of its points in body axes, turned and moved with it), each point body and
+each free point as a ``vertex``. Point data: ``tension_N`` (zero off the lines). Cell data:
+``part`` (0 line, 1 seabed, 2 body, 3 free point) and ``line`` (the line's number in the system,
+-1 off the lines); the bodies follow the seabed in the order of the system's bodies. Files are
+written atomically; a missing parent folder is refused, never created. Reads only the result's ``lines``
+(``profile_with_tension(n)``), ``line_indices``, ``bodies`` (``offset``, ``rotation``,
+``local_points``, ``position``), ``points`` (``position``, ``kind``) and ``depth``.
 """
 
 from __future__ import annotations
@@ -32,11 +32,13 @@ _SUFFIXES = (".vtu", ".vtk")
 _BOX = np.array([[0, 0, 0], [1, 0, 0], [1, 1, 0], [0, 1, 0], [0, 0, 1], [1, 0, 1], [1, 1, 1], [0, 1, 1]])
 
 
-def _body_box(result) -> np.ndarray:
-    """The 8 corners (global axes) of the box of the fairleads in body axes, each side at
-    least a tenth of the largest (and 1 m)."""
-    R, x0 = np.asarray(result.rotation), np.asarray(result.offset)
-    local = (np.asarray(result.fairleads) - x0) @ R  # R^T (b - x0), row-wise
+def _body_box(state) -> np.ndarray:
+    """The 8 corners (global axes) of the box of a body's points in body axes, each side at least a
+    tenth of the largest (and 1 m)."""
+    R, x0 = np.asarray(state.rotation), np.asarray(state.offset)
+    local = np.asarray(state.local_points, dtype=float).reshape(-1, 3)
+    if not len(local):
+        local = np.zeros((1, 3))
     low, high = local.min(axis=0), local.max(axis=0)
     side = max(1.0, 0.1 * float((high - low).max()))
     centre, half = 0.5 * (low + high), np.maximum(0.5 * (high - low), 0.5 * side)
@@ -90,54 +92,70 @@ def write_lines(lines, path, n: int = 101) -> Path:
     return path
 
 
+class _Cells:
+    """The mesh being gathered: point blocks, their tensions, cell blocks and their data."""
+
+    def __init__(self, points, tension, segments, line_id):
+        self.points, self.tension, self.count = list(points), list(tension), len(points[0])
+        self.cells, self.part, self.line, self.body = (
+            [("line", segments)],
+            [np.zeros(len(segments), int)],
+            [line_id],
+            [np.full(len(segments), -1)],
+        )
+
+    def add(self, kind, xyz, part):
+        xyz = np.asarray(xyz, dtype=float).reshape(-1, 3)
+        cells = self.count + np.arange(len(xyz))
+        self.cells.append((kind, cells[None, :] if kind != "vertex" else cells[:, None]))
+        self.points.append(xyz)
+        self.tension.append(np.zeros(len(xyz)))
+        ncell = len(self.cells[-1][1])
+        self.part.append(np.full(ncell, part))
+        self.line.append(np.full(ncell, -1))
+        self.count += len(xyz)
+
+
 def mooring_mesh(result, n: int = 101) -> meshio.Mesh:
-    """Lines, seabed patch and body of a `MooringEquilibrium` (see the module docstring).
+    """Lines, seabed patch, bodies and free points of a `MooringEquilibrium` (module docstring).
 
     Parameters
     ----------
     result : MooringEquilibrium
-        A solved moored body.
+        A solved mooring system.
     n : int
         Points per line, >= 2.
     """
     import meshio
 
     points, tension, segments, line_id = _polylines(result.lines, n)
-    count = len(points[0])
-    points, tension = list(points), list(tension)
-    cells = [("line", segments)]
-    part = [np.zeros(len(segments), dtype=int)]
-    line_id = [line_id]
-    if getattr(result, "depth", None) is not None:
-        corners = np.vstack([np.asarray(result.anchors)[:, :2], np.asarray(result.fairleads)[:, :2]])
-        low, high = corners.min(axis=0), corners.max(axis=0)
-        margin = 0.1 * float((high - low).max())
+    indices = np.asarray(getattr(result, "line_indices", range(len(result.lines))))
+    mesh = _Cells(points, tension, segments, indices[line_id])
+    everything = np.array([p.position for p in result.points]).reshape(-1, 3)
+    if getattr(result, "depth", None) is not None and len(everything):
+        low, high = everything[:, :2].min(axis=0), everything[:, :2].max(axis=0)
+        margin = 0.1 * max(float((high - low).max()), 1.0)
         low, high = low - margin, high + margin
         z = -float(result.depth)
-        quad = np.array(
-            [[low[0], low[1], z], [high[0], low[1], z], [high[0], high[1], z], [low[0], high[1], z]]
+        mesh.add(
+            "quad",
+            [[low[0], low[1], z], [high[0], low[1], z], [high[0], high[1], z], [low[0], high[1], z]],
+            1,
         )
-        points.append(quad)
-        tension.append(np.zeros(4))
-        cells.append(("quad", count + np.arange(4)[None, :]))
-        part.append(np.ones(1, dtype=int))
-        line_id.append(np.full(1, -1))
-        count += 4
-    rigid = len(result.position) == 6
-    body = _body_box(result) if rigid else np.asarray(result.offset, dtype=float)[None, :]
-    points.append(body)
-    tension.append(np.zeros(len(body)))
-    cells.append(("hexahedron" if rigid else "vertex", count + np.arange(len(body))[None, :]))
-    part.append(np.full(1, 2))
-    line_id.append(np.full(1, -1))
-    points = np.vstack(points)
-    if not np.isfinite(points).all():
+    for state in result.bodies:
+        if len(state.position) == 6:
+            mesh.add("hexahedron", _body_box(state), 2)
+        else:
+            mesh.add("vertex", state.offset, 2)
+    free = [p.position for p in result.points if p.kind == "free"]
+    if free:
+        mesh.add("vertex", free, 3)
+    xyz = np.vstack(mesh.points)
+    if not np.isfinite(xyz).all():
         raise InputError("result", "holds non-finite coordinates")
+    cell_data = {"part": mesh.part, "line": mesh.line}
     return meshio.Mesh(
-        points,
-        cells,
-        point_data={"tension_N": np.concatenate(tension)},
-        cell_data={"part": part, "line": line_id},
+        xyz, mesh.cells, point_data={"tension_N": np.concatenate(mesh.tension)}, cell_data=cell_data
     )
 
 

@@ -326,7 +326,7 @@ def test_cli_line_as_json_equals_the_api(capsys):
     for name in ("H", "H_A", "V_B", "length_on_seabed"):
         assert values[name] == pytest.approx(getattr(closed, name), rel=1e-12)
     for flags, flag in (
-        (["--w", "-1", "--seabed", "0"], "--w"),
+        (["--w", "0", "--seabed", "0"], "--w"),  # weightless (a buoyant w < 0 is a line)
         (["--w", "1000", "1000"], "--w"),
         (["--clump", "0.5", "10"], "--clump"),
     ):

@@ -86,9 +86,10 @@ class RigidBody(_Hydrostatics):
 
     Parameters
     ----------
-    fairleads : array_like, shape (n, 3)
-        Where the lines attach, in body axes relative to the reference point (m);
-        one per line, in the order of the lines.
+    fairleads : array_like, shape (n, 3), optional
+        Where the lines of the one-body `MooringSystem` constructor attach, in body axes
+        relative to the reference point (m); one per line, in the order of the lines. Leave
+        it out for a body of a system built with ``add_point(..., body=body)``.
     mass : float, optional
         Mass (kg), >= 0, at ``center_of_gravity``.
     volume : float, optional
@@ -107,7 +108,7 @@ class RigidBody(_Hydrostatics):
 
     def __init__(
         self,
-        fairleads,
+        fairleads=None,
         *,
         mass=0.0,
         volume=0.0,
@@ -117,8 +118,9 @@ class RigidBody(_Hydrostatics):
         rho=1025.0,
         g=9.81,
     ):
-        fairleads = real("fairleads", fairleads)
-        if np.ndim(fairleads) != 2 or np.shape(fairleads)[1] != 3 or len(fairleads) == 0:
+        given = fairleads is not None
+        fairleads = real("fairleads", fairleads) if given else np.zeros((0, 3))
+        if np.ndim(fairleads) != 2 or np.shape(fairleads)[1] != 3 or (given and len(fairleads) == 0):
             raise InputError(
                 "fairleads", f"must be an (n, 3) array of points, got shape {np.shape(fairleads)}"
             )

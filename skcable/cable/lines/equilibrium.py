@@ -29,12 +29,14 @@ found the unstable one is returned with ``stable=False`` and a `PlausibilityWarn
 
 from __future__ import annotations
 
+import functools
 import math
 import warnings
 
 import numpy as np
 
 from skcable._show import counted, quantity
+from skcable.cable.lines.network import end_forces
 from skcable.errors import ConvergenceError, InputError, PlausibilityWarning
 from skcable.fe import newton
 
@@ -47,15 +49,15 @@ _UNSTABLE = 1e-8
 
 
 def _units(system) -> tuple[np.ndarray, float]:
-    """Consistent units of the dofs (1 for translations, the largest arm for rotations) and the arm."""
-    fairleads = getattr(system.body, "fairleads", np.zeros(1))
-    arm = max(1.0, float(np.abs(fairleads).max()))
-    return np.concatenate([np.ones(3), np.full(system.n_dof - 3, arm)]), arm
+    """Consistent units of the dofs (1 for translations, a body's largest arm for its rotations,
+    `MooringSystem.dof_units`) and the largest of them."""
+    units = system.dof_units()
+    return units, float(units.max(initial=1.0))
 
 
 def stiffness_eigenvalues(system, K) -> np.ndarray:
     """Eigenvalues (ascending, N/m) of the symmetric part of the stiffness ``K`` of ``system`` in
-    consistent units: rotations times the largest fairlead arm (`_units`)."""
+    consistent units: rotations times their body's largest arm (`_units`)."""
     units, _ = _units(system)
     scaled = K / units[:, None] / units[None, :]
     return np.linalg.eigvalsh(0.5 * (scaled + scaled.T))
@@ -70,31 +72,41 @@ def is_stable(eigenvalues) -> bool:
 class _Newton:
     """One Newton solve of a system's equilibrium (module docstring): the problem's callables."""
 
-    def __init__(self, system, external, tol, max_iter):
+    def __init__(self, system, external, tol, max_iter, without=frozenset()):
         self.system, self.external, self.tol, self.max_iter = system, external, tol, max_iter
+        self.without = without
         self.units, self.arm = _units(system)
-        body = system.body
-        self.body_scale = max(np.abs(body.weight[2]), body.buoyancy[2], np.linalg.norm(external[:3]))
+        self.body_scale = system.force_scale(external)
         self.lines = None  # the lines of the last accepted state: warm starts of the trials
         self.cap = None  # the step cap, from the start (`step_cap`)
 
     def scaled(self, G, lines) -> np.ndarray:
-        """The net load over the force scale, moments also over the arm."""
-        scale = max(self.body_scale, max(line.tension_at_fairlead for line in lines), 1e-300)
-        g = G / scale
-        g[3:] /= self.arm
-        return g
+        """The net load over the force scale, moments also over their body's arm."""
+        scale = max(self.body_scale, self.system.tension_scale(lines), 1e-300)
+        return G / scale / self.units
 
     def assemble(self, position):
         """(net load G, stiffness K, lines, position); the lines start from the last accepted ones."""
-        return (*self.system.evaluate(position, self.external, start=self.lines), position)
+        return (
+            *self.system.evaluate(position, self.external, start=self.lines, without=self.without),
+            position,
+        )
 
     def norm(self, state) -> float:
-        return float(np.linalg.norm(self.scaled(state[0], state[2])))
+        """The scaled residual's norm (remembered for the last states: the line search asks often)."""
+        key = id(state)
+        cache = self.__dict__.setdefault("_norms", {})
+        if key in cache and cache[key][0] is state:
+            return cache[key][1]
+        value = float(np.linalg.norm(self.scaled(state[0], state[2])))
+        if len(cache) > 8:
+            cache.clear()
+        cache[key] = (state, value)
+        return value
 
     def jacobian(self, state) -> np.ndarray:
         """``-∂G/∂q`` at ``state``."""
-        return state[1] @ self.system.body.rate_map(state[3])
+        return state[1] @ self.system.layout.rate_map(state[3])
 
     def increment(self, state) -> np.ndarray:
         G, _, lines, position = state
@@ -102,32 +114,36 @@ class _Newton:
         _, singular, vh = np.linalg.svd(jac / self.units[:, None] / self.units[None, :])
         self.lines = lines  # Newton steps from this state: the trials start from its lines
         if not singular[-1] > _SINGULAR * singular[0]:
-            return self.slack_step(state, vh[singular <= _SINGULAR * singular[0]])
+            return self.slack_step(state, vh[singular <= _SINGULAR * singular[0]], jac)
         dq = np.linalg.solve(jac, G)
+        return self.capped(dq)
+
+    def capped(self, dq) -> np.ndarray:
         return dq * min(1.0, float(np.min(self.cap / np.maximum(np.abs(dq), 1e-300))))
 
     def step_cap(self, position) -> np.ndarray:
-        """A quarter of the shortest horizontal fairlead-anchor distance, 0.2 rad."""
-        system = self.system
-        reach = system.anchors[:, :2] - system.body.fairlead_positions(position, len(system.lines))[:, :2]
-        span_min = float(np.hypot(reach[:, 0], reach[:, 1]).min())
-        return np.concatenate([np.full(3, 0.25 * span_min), np.full(self.system.n_dof - 3, 0.2)])
+        """A quarter of the shortest horizontal span of each body's or point's lines, 0.2 rad."""
+        return self.system.step_cap(position, self.without)
 
-    def slack_step(self, state, null) -> np.ndarray:
+    def slack_step(self, state, null, jac) -> np.ndarray:
         """The step along the free directions ``null`` (rows, scaled dofs) to where the lines take
-        the net force's component in them (module docstring); raises where there is none."""
-        G, _, _, position = state
+        the net force's component in them (module docstring); with no force along them, the
+        least-squares Newton step in the other directions (the free ones stay as they are: the
+        equilibrium is checked for them at the end, `check_unique`)."""
+        G, _, lines, position = state
         r = G / self.units
         push = null.T @ (null @ r)
         if not np.linalg.norm(push) > 1e-12 * np.linalg.norm(r):  # no force along the free directions
-            raise ConvergenceError(
-                "mooring equilibrium: the stiffness is singular (a direction neither the lines nor the "
-                "hydrostatics restrain: add waterplane_area, a metacentre or lines)",
-                [self.norm(state)],
-            )
+            if not any(_slack(line) for line in lines):  # nothing will take them: not unique
+                raise ConvergenceError(
+                    _SINGULAR_MESSAGE.format(_named(self.system, null)), [self.norm(state)]
+                )
+            scaled = jac / self.units[:, None] / self.units[None, :]  # slack lines, pushed elsewhere
+            return self.capped(np.linalg.lstsq(scaled, r, rcond=_SINGULAR)[0] / self.units)
         direction = push / np.linalg.norm(push)  # scaled dofs, |direction| = 1
         ray = direction / self.units
-        t = _ray_root(self, position, ray, direction, float(self.cap[0]), self.norm(state))
+        cap = self.step_cap(position) if self.cap is None else self.cap
+        t = _ray_root(self, position, ray, direction, float(cap[0]), self.norm(state))
         return t * ray
 
     def along(self, t, position, ray, direction) -> float:
@@ -173,7 +189,8 @@ def _ray_root(solve, position, ray, direction, reach, norm) -> float:
     else:
         raise ConvergenceError(
             "mooring equilibrium: the lines are slack and stay slack along the net force (nothing "
-            "restrains the body in that direction: add lines, waterplane_area or a metacentre)",
+            f"restrains {_named(solve.system, direction[None, :])}: add lines, waterplane_area or a "
+            "metacentre)",
             [norm],
         )
     return brentq(_along_capped, lo, t, args=(solve, *args), xtol=1e-9 * t, rtol=1e-12)
@@ -184,11 +201,57 @@ def _along_capped(t, solve, position, ray, direction) -> float:
     return max(solve.along(t, position, ray, direction), -1.0)
 
 
-def solve_equilibrium(system, position, external, lines, tol, max_iter):
+def _named(system, null) -> str:
+    """The dofs that lead the free directions ``null`` (rows, scaled dofs), in words."""
+    weight = np.abs(np.asarray(null)).max(axis=0)
+    lead = np.flatnonzero(weight > 0.3 * weight.max())
+    return ", ".join(system.layout.describe(int(k)) for k in lead[:6])
+
+
+_SINGULAR_MESSAGE = (
+    "mooring equilibrium: the stiffness is singular (a direction neither the lines nor the hydrostatics "
+    "restrain: {}; add waterplane_area, a metacentre or lines)"
+)
+
+
+def _slack(line) -> bool:
+    """Whether a solved line is slack: no horizontal tension (its slack in a heap, or lying slack)."""
+    plane = getattr(line, "plane", None)
+    return (plane.H_A == 0.0 and plane.H_B == 0.0) if plane is not None else line.H == 0.0
+
+
+def check_unique(solve, state, history):
+    """Raise `ConvergenceError` where the stiffness at the equilibrium ``state`` is singular: a
+    direction neither the lines nor the hydrostatics restrain (the equilibrium is not unique)."""
+    jac = solve.jacobian(state)
+    _, singular, vh = np.linalg.svd(jac / solve.units[:, None] / solve.units[None, :])
+    if not singular[-1] > _SINGULAR * singular[0]:
+        free = vh[singular <= _SINGULAR * singular[0]]
+        raise ConvergenceError(_SINGULAR_MESSAGE.format(_named(solve.system, free)), history)
+
+
+@functools.lru_cache(maxsize=1)
+def _threads():
+    from threadpoolctl import ThreadpoolController
+
+    return ThreadpoolController()
+
+
+def solve_equilibrium(system, position, external, lines, tol, max_iter, without=frozenset()):
     """`skcable.cable.MooringSystem.equilibrium` on checked arguments: Newton from ``position``
     (the ``lines`` of an earlier equilibrium as warm starts, or None), the stable branch
-    preferred (module docstring). Returns a `MooringEquilibrium`."""
-    solve = _Newton(system, external, tol, max_iter)
+    preferred (module docstring), ``without`` the lines of those indices. Returns a
+    `MooringEquilibrium`.
+
+    The small dense solves (a few dozen dofs) run on one BLAS thread (threadpoolctl): more threads
+    only add their start-up and, on a shared machine, their contention (an SVD of order 96 took
+    80 ms on two contending threads against 1 ms on one)."""
+    with _threads().limit(limits=1, user_api="blas"):
+        return _solve_equilibrium(system, position, external, lines, tol, max_iter, without)
+
+
+def _solve_equilibrium(system, position, external, lines, tol, max_iter, without):
+    solve = _Newton(system, external, tol, max_iter, without)
     try:
         result = solve.run(position, lines)
     except ConvergenceError as err:
@@ -199,6 +262,7 @@ def solve_equilibrium(system, position, external, lines, tol, max_iter):
             "may exceed what the mooring can hold, or the start is too far)",
             err.history,
         ) from None
+    check_unique(solve, result.state, result.history)
     eigenvalues = stiffness_eigenvalues(system, result.state[1])
     passed = []
     if not is_stable(eigenvalues):
@@ -214,14 +278,16 @@ def solve_equilibrium(system, position, external, lines, tol, max_iter):
                 break
             passed.append(other.x.copy())
     G, K, lines, _ = result.state
-    eq = MooringEquilibrium(system, result.x, external, G, K, lines, result.history, eigenvalues, passed)
+    eq = MooringEquilibrium(
+        system, result.x, external, G, K, lines, result.history, eigenvalues, passed, without=without
+    )
     if not eq.stable:
         reason = (
             f"the mooring equilibrium found is unstable (stiffness eigenvalue {eigenvalues[0]:.3g} N/m < 0, "
-            f"heel {eq.heel:.3g} rad) and no stable one was found from the restarts: check the body's "
-            "metacentre, centre of gravity and the start"
+            f"heel {max(b.heel for b in eq.bodies) if eq.bodies else 0.0:.3g} rad) and no stable one was "
+            "found from the restarts: check the bodies' metacentres, centres of gravity and the start"
         )
-        warnings.warn(PlausibilityWarning("start", reason), stacklevel=3)
+        warnings.warn(PlausibilityWarning("start", reason), stacklevel=4)
     return eq
 
 
@@ -229,9 +295,10 @@ def _restarts(system, position, result, solve):
     """Starts of the search for a stable branch: the start upright (rotations zeroed), then the
     unstable equilibrium pushed both ways along its most unstable mode."""
     starts = []
-    if system.n_dof == 6 and np.any(position[3:] != 0):
+    rotations = system.layout.rotation_dofs()
+    if rotations.size and np.any(position[rotations] != 0):
         upright = position.copy()
-        upright[3:] = 0.0
+        upright[rotations] = 0.0
         starts.append(upright)
     units, _ = _units(system)
     scaled = result.state[1] / units[:, None] / units[None, :]
@@ -242,83 +309,208 @@ def _restarts(system, position, result, solve):
     return starts
 
 
+class BodyState:
+    """A body at equilibrium: ``body``, ``index``, ``position`` (its dofs: m, rad), ``offset`` (its
+    reference point, m), ``angles`` (roll, pitch, yaw; zeros for a point body), ``rotation`` (body
+    to global axes), ``heel`` (the angle of its z axis to the vertical, rad) and ``local_points``
+    (its points in body axes, m, (n, 3))."""
+
+    def __init__(self, index, body, q, local_points):
+        self.index, self.body, self.position = index, body, q.copy()
+        self.local_points = np.asarray(local_points, dtype=float).reshape(-1, 3)
+        self.offset = q[:3].copy()
+        self.angles = q[3:].copy() if len(q) == 6 else np.zeros(3)
+        self.rotation = R = body.rotation(q)
+        self.heel = float(np.arccos(np.clip(R[2, 2], -1.0, 1.0)))
+
+    def __repr__(self):
+        shown = ", ".join(
+            (
+                quantity("offset", self.offset, "m"),
+                quantity("angles", self.angles, "rad"),
+                quantity("heel", self.heel, "rad"),
+            )
+        )
+        return f"BodyState(body {self.index}: {shown})"
+
+
+class PointState:
+    """A point at equilibrium: ``point``, ``index``, ``kind`` and ``position`` (m, global axes)."""
+
+    def __init__(self, point, position):
+        self.point, self.index, self.kind, self.position = point, point.index, point.kind, position.copy()
+
+    def __repr__(self):
+        return f"PointState({self.kind} point {self.index}: {quantity('position', self.position, 'm')})"
+
+
 class MooringEquilibrium:
-    """A moored body in static equilibrium (`MooringSystem.equilibrium`).
+    """A mooring system in static equilibrium (`MooringSystem.equilibrium`).
 
     Attributes
     ----------
     system : MooringSystem
     position : ndarray
-        ``(x, y, z, roll, pitch, yaw)`` (m, rad) of a rigid body, ``(x, y, z)`` of a point.
-    offset : ndarray, shape (3,)
-        Displacement of the reference point from the origin (m).
-    angles : ndarray, shape (3,)
-        Roll, pitch, yaw (rad); zeros for a point body.
-    heel : float
-        Angle between the body's z axis and the vertical (rad).
-    lines : list of Line3D
-        Each line at equilibrium.
-    fairlead_forces, anchor_forces : ndarray, shape (n, 3)
-        Force of each line on its fairlead and on its anchor (N), global axes.
+        The dofs: each body's ``(x, y, z, roll, pitch, yaw)`` (m, rad; ``(x, y, z)`` of a point
+        body), then each free point's ``(x, y, z)``.
+    bodies : list of BodyState
+        Each body at equilibrium (``position``, ``offset``, ``angles``, ``heel``, ``rotation``).
+    points : list of PointState
+        Each point of the system (``position``, m).
+    lines : list of LineBetween or Line3D
+        Each line at equilibrium (``end_forces``: its forces on its ends a and b, N), in the
+        order of the system's lines, those left out (``without``) skipped.
+    line_indices : list of int
+        The system's number of each line of ``lines``.
+    without : frozenset of int
+        The lines left out.
+    offset, angles, heel, rotation
+        Those of the body of a one-body system.
+    fairlead_forces, anchor_forces, fairleads, anchors : ndarray, shape (n, 3)
+        The one-body constructor's: each line's force on its fairlead and on its anchor (N), the
+        fairleads and the anchors (m).
     residual : ndarray
-        Net force and moment left on the body (N, N m).
+        Net load left on the dofs (N, N m).
     history : list of float
         Scaled residual at each Newton iteration.
     eigenvalues : ndarray
         Eigenvalues of the symmetric part of the stiffness in consistent units (rotations
-        times the largest fairlead arm), N/m, ascending (`stiffness_eigenvalues`).
+        times their body's largest arm), N/m, ascending (`stiffness_eigenvalues`).
     stable : bool
         Whether none of them is negative beyond round-off: a stable equilibrium.
     unstable_found : list of ndarray
         Positions of the unstable equilibria passed over on the way to this one.
     """
 
-    def __init__(self, system, q, external, G, K, lines, history, eigenvalues=None, unstable_found=()):
+    def __init__(
+        self,
+        system,
+        q,
+        external,
+        G,
+        K,
+        lines,
+        history,
+        eigenvalues=None,
+        unstable_found=(),
+        without=frozenset(),
+    ):
         self.system, self.position, self.external, self.residual = system, q, external, G
-        self._K, self.lines, self.history = K, lines, history
-        self.offset = q[:3].copy()
-        self.angles = q[3:].copy() if len(q) == 6 else np.zeros(3)
-        R = system.body.rotation(q)
-        self.heel = float(np.arccos(np.clip(R[2, 2], -1.0, 1.0)))
-        self.fairlead_forces = np.array([line.force_on_fairlead for line in lines])
-        self.anchor_forces = np.array([line.force_on_anchor for line in lines])
-        self.fairleads = np.array([line.fairlead for line in lines])
-        self.anchors = system.anchors
+        self._K, self.lines, self.history, self.without = K, lines, history, without
+        self.line_indices = [h.index for h in system.mooring_lines if h.index not in without]
+        layout = system.layout
+        self.bodies = [
+            BodyState(i, b, layout.body_q(q, i), layout.local[i]) for i, b in enumerate(system.bodies)
+        ]
+        P = system.frame(q)[0]
+        self.points = [PointState(p, P[p.index]) for p in system.points]
         self.depth = system.depth
-        self.rotation = R
+        if len(self.bodies) == 1:
+            one = self.bodies[0]
+            self.offset, self.angles, self.heel, self.rotation = (
+                one.offset,
+                one.angles,
+                one.heel,
+                one.rotation,
+            )
+        if system.shortcut:
+            self.fairlead_forces = np.array([line.force_on_fairlead for line in lines])
+            self.anchor_forces = np.array([line.force_on_anchor for line in lines])
+            self.fairleads = np.array([line.fairlead for line in lines])
+            self.anchors = system.anchors
         self.eigenvalues = stiffness_eigenvalues(system, K) if eigenvalues is None else eigenvalues
         self.stable = is_stable(self.eigenvalues)
         self.unstable_found = list(unstable_found)
-        for name in ("position", "residual", "fairlead_forces", "anchor_forces", "eigenvalues"):
+        for name in ("position", "residual", "eigenvalues"):
             if not np.isfinite(getattr(self, name)).all():
                 raise ConvergenceError(f"mooring equilibrium: non-finite {name}", history)
+        if not all(np.isfinite(end_forces(line)).all() for line in lines):
+            raise ConvergenceError("mooring equilibrium: non-finite line forces", history)
 
-    def stiffness(self, *, lines_only: bool = False) -> np.ndarray:
-        """Stiffness of the mooring system at equilibrium, ``-∂G/∂(x, rotation vector)``
-        (N/m, N/rad, N m/rad), shape (n_dof, n_dof); ``lines_only`` leaves out the
-        body's hydrostatics (see `MooringSystem.stiffness`)."""
-        if lines_only:  # from the lines at equilibrium, no new line solve
-            body, q = self.system.body, self.position
-            stiffnesses = np.array([line.stiffness() for line in self.lines])
-            return body.add_lines(body.arms(q), self.fairlead_forces, stiffnesses)[1]
-        return self._K.copy()
+    @property
+    def handles(self) -> list:
+        """The system's line handles (`MooringLine`) of ``lines``, in order."""
+        return [self.system.mooring_lines[k] for k in self.line_indices]
+
+    def stiffness(self, *, lines_only: bool = False, condensed: bool = False) -> np.ndarray:
+        """Stiffness of the system at equilibrium, ``-∂G/∂(x, rotation vector)`` (N/m, N/rad,
+        N m/rad), shape (n_dof, n_dof) over every body's and free point's dofs.
+
+        ``lines_only`` leaves out the bodies' hydrostatics (from the lines at equilibrium, no new
+        line solve; see `MooringSystem.stiffness`). ``condensed``: the bodies' stiffness alone,
+        the free points condensed out (each in equilibrium as the bodies move),
+        ``K_bb - K_bp K_pp^{-1} K_pb``, shape ``(6 n, 6 n)`` for ``n`` rigid bodies."""
+        if lines_only:
+            system = self.system
+            _, R, arms = system.frame(self.position)
+            K = system.assemble(self.position, (R, arms), self.handles, self.lines, 0.0, lines_only=True)[1]
+        else:
+            K = self._K.copy()
+        if not condensed:
+            return K
+        n_body = sum(b.n_dof for b in self.system.bodies)
+        Kbb, Kbp, Kpb, Kpp = (
+            K[:n_body, :n_body],
+            K[:n_body, n_body:],
+            K[n_body:, :n_body],
+            K[n_body:, n_body:],
+        )
+        if Kpp.size == 0:
+            return Kbb
+        try:
+            return Kbb - Kbp @ np.linalg.solve(Kpp, Kpb)
+        except np.linalg.LinAlgError:
+            raise ConvergenceError(
+                "mooring equilibrium: the free points' stiffness is singular: they cannot be condensed out",
+                self.history,
+            ) from None
 
     def tensions(self):
-        """Tension table: each line's per-segment table (its model's ``tensions()``) with
-        the line's number in front, plus its fairlead and anchor forces (N)."""
+        """Tension table: each line's per-segment table with the line's number in front, plus its
+        end forces (N): ``H, V_B, H_A, V_A, T_fairlead`` for the one-body constructor's lines,
+        ``H_a, V_a, H_b, V_b, T_a, T_b`` (by end, a then b) and ``model`` otherwise."""
         import pandas as pd
 
         frames = []
-        for i, line in enumerate(self.lines):
+        for k, line in zip(self.line_indices, self.lines, strict=True):
             table = line.tensions().copy()
-            table.insert(0, "line", i)
-            table["H"], table["V_B"], table["H_A"], table["V_A"] = line.H, line.V_B, line.H_A, line.V_A
-            table["T_fairlead"] = line.tension_at_fairlead
+            table.insert(0, "line", k)
+            if self.system.shortcut:
+                table["H"], table["V_B"], table["H_A"], table["V_A"] = line.H, line.V_B, line.H_A, line.V_A
+                table["T_fairlead"] = line.tension_at_fairlead
+            else:
+                F = end_forces(line)
+                table["H_a"], table["V_a"] = float(np.hypot(*F[0, :2])), float(-F[0, 2])
+                table["H_b"], table["V_b"] = float(np.hypot(*F[1, :2])), float(-F[1, 2])
+                table["T_a"], table["T_b"] = np.linalg.norm(F, axis=1)
+                table["model"] = getattr(line, "model", "as given")
+                if not isinstance(table["model"].iloc[0], str):
+                    table["model"] = "as given"
             frames.append(table)
         return pd.concat(frames, ignore_index=True)
 
+    def anchor_loads(self):
+        """Each anchor's horizontal and vertical load and uplift angle (`skcable.cable.lines.checks`)."""
+        from skcable.cable.lines.checks import anchor_loads
+
+        return anchor_loads(self)
+
+    def line_checks(self):
+        """Each line's end tensions, grounded length, touchdown and angle at its lower end
+        (`skcable.cable.lines.checks`)."""
+        from skcable.cable.lines.checks import line_checks
+
+        return line_checks(self)
+
+    def segment_checks(self, safety_factor):
+        """Each segment's largest tension against its MBL with ``safety_factor``
+        (`skcable.cable.lines.checks`)."""
+        from skcable.cable.lines.checks import segment_checks
+
+        return segment_checks(self, safety_factor)
+
     def to_vtk(self, path, n: int = 101):
-        """Write the lines (tension as point data), the seabed patch and the body to a
+        """Write the lines (tension as point data), the seabed patch and the bodies to a
         ``.vtu``/``.vtk`` file, atomically (see `skcable.io.mooring_mesh`); returns the path."""
         from skcable.io import write_mooring
 
@@ -326,14 +518,26 @@ class MooringEquilibrium:
 
     def __repr__(self):
         note = "" if self.stable else ", UNSTABLE"
+        if self.system.shortcut:
+            shown = ", ".join(
+                (
+                    quantity("offset", self.offset, "m"),
+                    quantity("angles", self.angles, "rad"),
+                    quantity("heel", self.heel, "rad"),
+                    quantity("T_fairlead", [line.tension_at_fairlead for line in self.lines], "N"),
+                    quantity("min_eigenvalue", self.eigenvalues[0], "N/m"),
+                    quantity("iterations", len(self.history) - 1),
+                )
+            )
+            return f"MooringEquilibrium({counted([len(self.lines)], 'line')}: {shown}{note})"
+        ends = [np.linalg.norm(end_forces(line), axis=1).max() for line in self.lines]
         shown = ", ".join(
             (
-                quantity("offset", self.offset, "m"),
-                quantity("angles", self.angles, "rad"),
-                quantity("heel", self.heel, "rad"),
-                quantity("T_fairlead", [line.tension_at_fairlead for line in self.lines], "N"),
+                quantity("T_max", ends, "N"),
                 quantity("min_eigenvalue", self.eigenvalues[0], "N/m"),
                 quantity("iterations", len(self.history) - 1),
             )
         )
-        return f"MooringEquilibrium({counted([len(self.lines)], 'line')}: {shown}{note})"
+        bodies = "1 body" if len(self.bodies) == 1 else f"{len(self.bodies)} bodies"
+        counts = f"{bodies}, {counted([len(self.points)], 'point')}, {counted([len(self.lines)], 'line')}"
+        return f"MooringEquilibrium({counts}: {shown}{note})"

@@ -117,6 +117,11 @@ class Line3D:
         self.tension_at_fairlead = math.hypot(H * ex, H * ey, V_B)
         self.tension_at_anchor = math.hypot(H_A * ex, H_A * ey, V_A)
 
+    @property
+    def end_forces(self) -> np.ndarray:
+        """The line's forces on its ends, anchor then fairlead (N), shape (2, 3)."""
+        return np.array([self.force_on_anchor, self.force_on_fairlead])
+
     @cached_property
     def _k2(self) -> np.ndarray:
         k2 = np.asarray(self.solution.stiffness(), dtype=float)

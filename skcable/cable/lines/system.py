@@ -1,46 +1,53 @@
-r"""A body moored by lines: static equilibrium and the stiffness of the mooring system.
+r"""A mooring system: bodies, points and lines, their net loads and stiffness.
 
-Lines run from fixed anchors to the body's fairleads; each hangs in its vertical
-plane (`skcable.cable.lines.line3d`). At body position :math:`\mathbf q` the net
-generalised force on the body is
+Points are fixed (anchors), free (three dofs, with their own weight, buoyancy and force) or
+fixed to a body; lines connect any two points (`skcable.cable.lines.network`). A
+`skcable.cable.Line` is solved over the system's flat seabed at ``z = -depth``, from whichever
+end is lower, with the model its position takes (`skcable.cable.lines.between`); any other line
+model is solved as given, its anchor A at the line's first point (`skcable.cable.line_3d`). The
+one-body constructor of earlier releases, ``MooringSystem(body, lines, anchors)``, builds such a
+system: one body, an anchor per line, the fairleads on the body, each line solved as given.
 
-.. math:: \mathbf G(\mathbf q) = \sum_i \begin{pmatrix}\mathbf f_i \\
-    \mathbf r_i\times\mathbf f_i\end{pmatrix} + \mathbf G_\text{own}(\mathbf q)
-    + \begin{pmatrix}\mathbf F_\text{ext}\\ \mathbf M_\text{ext}\end{pmatrix},
+At the dofs :math:`\mathbf q` (bodies, then free points) the net generalised force is
 
-with :math:`\mathbf f_i` the force of line *i* on its fairlead, :math:`\mathbf r_i` its
-arm from the body's reference point (global axes), :math:`\mathbf G_\text{own}` the
-body's weight, buoyancy and heave restoring (`skcable.cable.lines.body`) and a
-constant external force and moment (global axes, moment about the reference
-point). Static equilibrium :math:`\mathbf G = 0` is found by
-`skcable.cable.lines.equilibrium` (Newton's method, a start from slack lines, the
-stable branch).
+.. math:: \mathbf G(\mathbf q) = \sum_{\text{line ends } e} T_e^T\,\mathbf f_e
+    + \sum_{\text{points}} T_p^T\,\mathbf f_p + \sum_{\text{bodies}}\mathbf G_\text{own}
+    + \mathbf G_\text{ext},
 
-The stiffness of the mooring system,
-:math:`K = -\partial\mathbf G/\partial(\mathbf x, \delta\boldsymbol\theta)`, is taken
-with respect to a translation and a small rotation vector about global axes (as
-MoorPy's ``Body.getStiffnessA``, M. Hall, NREL):
+:math:`\mathbf f_e` a line's force on its end, :math:`\mathbf f_p` a point's own load and
+:math:`T` the map of the dofs to a point's displacement: the identity for a free point,
+:math:`[I, -[\mathbf r]_\times]` for a body's point at arm :math:`\mathbf r` (so that
+:math:`T^T\mathbf f = (\mathbf f, \mathbf r\times\mathbf f)`). The stiffness
+:math:`K = -\partial\mathbf G/\partial(\mathbf x, \delta\boldsymbol\theta)` (translations and small
+rotation vectors about global axes, as MoorPy's ``getStiffnessA``, M. Hall, NREL) is assembled
+from each line's end stiffness :math:`K_{ij} = -\partial\mathbf f_i/\partial\mathbf p_j`:
 
-.. math:: K = \sum_i \begin{pmatrix} K_i & -K_i[\mathbf r_i]_\times \\
-    [\mathbf r_i]_\times K_i & -[\mathbf f_i]_\times[\mathbf r_i]_\times
-    - [\mathbf r_i]_\times K_i [\mathbf r_i]_\times \end{pmatrix} + K_\text{own},
+.. math:: K = \sum_{\text{lines}}\sum_{i, j} T_i^T K_{ij} T_j
+    - \sum_{\text{body ends}} [\mathbf f_e]_\times[\mathbf r_e]_\times + K_\text{own},
 
-:math:`K_i` the 3x3 fairlead stiffness of line *i*. The term
-:math:`-[\mathbf f_i]_\times[\mathbf r_i]_\times` (the change of moment arm under
-tension) makes :math:`K` unsymmetric where the line forces have a net moment.
+the term :math:`-[\mathbf f]_\times[\mathbf r]_\times` from the arm turning under a force (it
+makes ``K`` unsymmetric where the forces have a net moment). A body's own ends are summed as
+`RigidBody.add_lines` does, vectorised over them; the coupling of two moving ends of one line
+(a shared line, a bridle) is added block by block. The equilibrium ``G = 0`` is solved by
+`skcable.cable.lines.equilibrium`.
 """
 
 from __future__ import annotations
 
 import math
 from collections.abc import Iterable, Mapping
+from typing import Any
 
 import numpy as np
 
 from skcable._checks import positive, real, scalar
-from skcable.cable.lines.body import PointBody, RigidBody
+from skcable.cable.lines.assembly import Assembler
+from skcable.cable.lines.between import LineBetween, solve_between
+from skcable.cable.lines.body import PointBody, RigidBody, skew
 from skcable.cable.lines.equilibrium import MooringEquilibrium, solve_equilibrium
-from skcable.cable.lines.line3d import Line3D, line_3d, point, solve_in_space, takes_start
+from skcable.cable.lines.geometry import is_line, on_seabed_tolerance
+from skcable.cable.lines.line3d import Line3D, line_3d, line_model, point, solve_in_space, takes_start
+from skcable.cable.lines.network import Layout, MooringLine, MooringPoint, check_body
 from skcable.errors import InputError
 
 __all__ = ["MooringEquilibrium", "MooringSystem"]
@@ -58,25 +65,58 @@ def _line_list(lines) -> list:
     return list(lines)
 
 
+def _shortcut_parts(body, lines, anchors):
+    """The checked arguments of the one-body constructor: ``(body, lines, anchors)``."""
+    for name, value in (("body", body), ("lines", lines), ("anchors", anchors)):
+        if value is None:
+            raise InputError(
+                name,
+                "is missing: give body, lines and anchors together, or build the system with "
+                "add_body, add_point and add_line",
+            )
+    check_body(body)
+    lines = _line_list(lines)
+    for i, model in enumerate(lines):
+        if not callable(getattr(model, "solve", None)):
+            raise InputError("lines", f"line {i} ({type(model).__name__}) has no solve(span, dh) method")
+    if not lines:
+        raise InputError("lines", "give at least one line")
+    anchors = real("anchors", anchors)
+    if np.shape(anchors) != (len(lines), 3):
+        raise InputError(
+            "anchors",
+            f"must be one point (x, y, z) per line, shape ({len(lines)}, 3), got shape {np.shape(anchors)}",
+        )
+    if isinstance(body, RigidBody) and len(body.fairleads) != len(lines):
+        raise InputError(
+            "body", f"has {len(body.fairleads)} fairleads for {len(lines)} lines: give one per line"
+        )
+    return body, lines, np.array(anchors, dtype=float)
+
+
 class MooringSystem:
-    """A body held by lines from fixed anchors.
+    """Bodies, points and lines: a mooring system (module docstring).
+
+    Build it with ``MooringSystem(depth=...)`` and `add_body`, `add_point`, `add_line`, or, for
+    one body held by lines from fixed anchors, ``MooringSystem(body, lines, anchors)``.
 
     Parameters
     ----------
-    body : RigidBody or PointBody
-        The moored body; a `RigidBody` carries the fairleads (body axes), a
-        `PointBody` takes every line at its point.
-    lines : sequence of line models
-        One per anchor: objects with ``solve(span, dh)`` (see
-        `skcable.cable.lines.line3d`); anchor A of the model is the anchor, B the fairlead.
-        A model whose ``solve`` also takes ``start=`` (`skcable.cable.Line`) is
-        warm-started from its previous solution in the equilibrium iterations; the
-        others are solved from their own start each time.
-    anchors : array_like, shape (n, 3)
-        Anchor points in global axes (m), z up.
+    body : RigidBody or PointBody, optional
+        The one-body shortcut: the moored body; a `RigidBody` carries the fairleads (body
+        axes), one per line, a `PointBody` takes every line at its point.
+    lines : sequence of line models, optional
+        The shortcut's lines, one per anchor: objects with ``solve(span, dh)`` (see
+        `skcable.cable.lines.line3d`), each solved as given, anchor A at its anchor. A model
+        whose ``solve`` also takes ``start=`` is warm-started in the equilibrium iterations.
+    anchors : array_like, shape (n, 3), optional
+        The shortcut's anchors in global axes (m), z up.
     depth : float, optional
-        Water depth (m), > 0: the seabed is the plane z = -depth. Used to draw the
-        seabed (VTK) only; each line model holds its own seabed height.
+        Water depth (m), > 0: the seabed is the plane z = -depth. The `skcable.cable.Line`
+        lines of `add_line` rest on it where they reach it; the shortcut's line models hold
+        their own seabed (``depth`` then only draws it).
+    rho, g : float, optional
+        Water density (kg/m^3) and gravity (m/s^2) of the points' buoyancy and weight.
 
     Examples
     --------
@@ -90,113 +130,383 @@ class MooringSystem:
     >>> eq = system.equilibrium(force=(1e5, 0.0, 0.0))
     >>> bool(eq.offset[0] > 0), bool(abs(eq.offset[1]) < 1e-6)
     (True, True)
+
+    The same with `add_body`, `add_point` and `add_line`, the seabed the system's:
+
+    >>> system = cable.MooringSystem(depth=200.0)
+    >>> hull = system.add_body(cable.RigidBody(waterplane_area=500.0))
+    >>> for anchor, fairlead in zip(anchors, fairleads):
+    ...     a, b = system.add_point(anchor, fixed=True), system.add_point(fairlead, body=hull)
+    ...     _ = system.add_line(chain, a, b)
+    >>> eq2 = system.equilibrium(force=(1e5, 0.0, 0.0))
+    >>> bool(np.allclose(eq2.bodies[0].position, eq.position, atol=1e-8))
+    True
     """
 
-    def __init__(self, body, lines, anchors, *, depth=None):
-        if not isinstance(body, (RigidBody, PointBody)):
-            raise InputError("body", f"must be a RigidBody or a PointBody, got {type(body).__name__}")
-        lines = _line_list(lines)
-        for i, model in enumerate(lines):
-            if not callable(getattr(model, "solve", None)):
-                raise InputError("lines", f"line {i} ({type(model).__name__}) has no solve(span, dh) method")
-        if not lines:
-            raise InputError("lines", "give at least one line")
-        anchors = real("anchors", anchors)
-        if np.shape(anchors) != (len(lines), 3):
-            raise InputError(
-                "anchors",
-                f"must be one point (x, y, z) per line, shape ({len(lines)}, 3), "
-                f"got shape {np.shape(anchors)}",
-            )
-        anchors = np.array(anchors, dtype=float)
-        if isinstance(body, RigidBody) and len(body.fairleads) != len(lines):
-            raise InputError(
-                "body", f"has {len(body.fairleads)} fairleads for {len(lines)} lines: give one per line"
-            )
-        self.body, self.lines, self.anchors = body, lines, anchors
-        self._warm = [takes_start(model) for model in lines]
+    def __init__(self, body=None, lines=None, anchors=None, *, depth=None, rho=1025.0, g=9.81):
         self.depth = None if depth is None else scalar("depth", positive("depth", depth))
+        self.rho, self.g = scalar("rho", positive("rho", rho)), scalar("g", positive("g", g))
+        self.bodies, self.points, self.mooring_lines = [], [], []
+        self._body_positions, self._layout, self.shortcut = [], None, False
+        if body is None and lines is None and anchors is None:
+            return
+        body, lines, anchors = _shortcut_parts(body, lines, anchors)
+        self._add_body(body, None)
+        local = body.fairleads if isinstance(body, RigidBody) else np.zeros((len(lines), 3))
+        for model, anchor, fairlead in zip(lines, anchors, local, strict=True):
+            self._add_line(model, self.add_point(anchor, fixed=True), self._body_point(fairlead, body), False)
+        self.shortcut = True
+
+    # -- building ---------------------------------------------------------------------------------
+    def _add_body(self, body, position):
+        check_body(body)
+        if any(b is body for b in self.bodies):
+            raise InputError("body", "is already in this system: add each body once")
+        q = np.zeros(body.n_dof) if position is None else body.check_position("position", position)
+        self.bodies.append(body)
+        self._body_positions.append(q)
+        self._layout = None
+        return body
+
+    def add_body(self, body, *, position=None):
+        """Add a `RigidBody` or `PointBody`; returns it. Attach points to it with ``add_point(...,
+        body=body)``.
+
+        ``position``: where its reference point starts, ``(x, y, z, roll, pitch, yaw)`` (m, rad) of
+        a rigid body, ``(x, y, z)`` of a point body; default zeros."""
+        check_body(body)
+        if isinstance(body, RigidBody) and len(body.fairleads):
+            raise InputError(
+                "body",
+                "has fairleads: in a system built point by point, attach them with "
+                "add_point(position, body=body), in body axes",
+            )
+        return self._add_body(body, position)
+
+    def _new_point(self, position, fixed, mass, volume, force, body):
+        p = MooringPoint(len(self.points), position, fixed, mass, volume, force, body, self.rho, self.g)
+        self.points.append(p)
+        self._layout = None
+        return p
+
+    def _body_point(self, position, body):
+        return self._new_point(position, False, 0.0, 0.0, (0.0, 0.0, 0.0), body)
+
+    def add_point(self, position, fixed=False, mass=0.0, volume=0.0, force=(0.0, 0.0, 0.0), body=None):
+        """Add a point; returns it (a `MooringPoint`).
+
+        Parameters
+        ----------
+        position : array_like, shape (3,)
+            Global axes (m), z up; in the body's axes, relative to its reference point, for a
+            point on a ``body`` (``(0, 0, 0)`` on a `PointBody`).
+        fixed : bool
+            An anchor: it does not move (not with a ``body``).
+        mass, volume : float
+            Mass (kg) and displaced volume (m^3): weight ``m g`` down, buoyancy ``rho g V`` up.
+        force : array_like, shape (3,)
+            A constant force on the point (N), global axes.
+        body : RigidBody or PointBody, optional
+            A body of this system the point is fixed to.
+        """
+        if body is not None:
+            if not any(b is body for b in self.bodies):
+                raise InputError("body", "is not in this system: add it with add_body first")
+            if fixed:
+                raise InputError("fixed", "a point on a body moves with it: give fixed=False with body=")
+            if isinstance(body, PointBody) and np.any(point("position", position) != 0):
+                raise InputError("position", "a point on a PointBody is its point: give (0, 0, 0)")
+        elif self.depth is not None:
+            z = float(point("position", position)[2])
+            if z < -self.depth - on_seabed_tolerance(0.0, z, self.depth):
+                raise InputError("position", f"lies below the seabed (z = {z:.6g} m, depth {self.depth:g} m)")
+        return self._new_point(position, fixed, mass, volume, force, body)
+
+    def _point(self, name, p) -> MooringPoint:
+        if not isinstance(p, MooringPoint) or p.index >= len(self.points) or self.points[p.index] is not p:
+            raise InputError(name, f"must be a point of this system (from add_point), got {p!r}")
+        return p
+
+    def _add_line(self, model, a, b, managed):
+        handle = MooringLine(len(self.mooring_lines), model, a, b, managed, managed or takes_start(model))
+        self.mooring_lines.append(handle)
+        self._layout = None
+        return handle
+
+    def add_line(self, line, a, b):
+        """Add a line from point ``a`` to point ``b``; returns its handle (a `MooringLine`).
+
+        ``line``: a `skcable.cable.Line`, its segments from ``a`` to ``b``, solved over the
+        system's seabed from whichever end is lower (its own ``seabed`` is not used; its
+        ``friction`` is); or another line model, solved as given with ``a`` its anchor A (``a``
+        must then be fixed)."""
+        a, b = self._point("a", a), self._point("b", b)
+        if a is b:
+            raise InputError("b", f"is point {a.index}, the same as a: a line from a point to itself")
+        if is_line(line):
+            if line.seabed is not None and self.depth is None:
+                raise InputError("depth", "the line is given a seabed: give the system its depth= instead")
+            return self._add_line(line, a, b, True)
+        line_model("line", line)
+        if not a.fixed:
+            raise InputError(
+                "a", "a line model other than cable.Line is solved with a as its anchor: a must be fixed"
+            )
+        return self._add_line(line, a, b, False)
+
+    # -- the one-body views of earlier releases ------------------------------------------------------
+    @property
+    def body(self):
+        """The system's body (a one-body system)."""
+        if len(self.bodies) != 1:
+            raise InputError("body", f"the system has {len(self.bodies)} bodies: use bodies[i]")
+        return self.bodies[0]
+
+    @property
+    def lines(self) -> list:
+        """The line models, in the order of the lines."""
+        return [h.model for h in self.mooring_lines]
+
+    @property
+    def anchors(self) -> np.ndarray:
+        """The fixed points (m), shape (n, 3): the anchors of the one-body constructor, in order."""
+        return np.array([p.position for p in self.points if p.fixed]).reshape(-1, 3)
+
+    @property
+    def layout(self) -> Layout:
+        """The dofs of the bodies and the free points (`skcable.cable.lines.network.Layout`)."""
+        if self._layout is None:
+            self._layout = Layout(self.bodies, self.points)
+            self._assembler = Assembler(self.bodies, self.points, self._layout)
+        return self._layout
+
+    def frame(self, q) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        """``(P, R, arms)`` at the dofs ``q``: every point's global position ``(n, 3)`` (m), the
+        bodies' rotation matrices ``(n_bodies, 3, 3)`` and the arms (global axes) of the bodies'
+        points."""
+        layout = self.layout
+        xyz, R = self._assembler.frames(q)
+        arms = self._assembler.body_arms(R)
+        P = layout.fixed_positions.copy()
+        if len(arms):
+            P[self._assembler.body_point_index] = xyz[self._assembler.body_point_owner] + arms
+        if layout.free.size:
+            P[layout.free] = q[layout.free_starts[:, None] + np.arange(3)]
+        return P, R, arms
 
     @property
     def n_dof(self) -> int:
-        return self.body.n_dof
+        return self.layout.n_dof
 
+    # -- positions and loads ---------------------------------------------------------------------------
     def _position(self, name, position):
-        return np.zeros(self.n_dof) if position is None else self.body.check_position(name, position)
+        layout = self.layout
+        if position is None:
+            return layout.initial(self._body_positions)
+        if self.shortcut:
+            return self.body.check_position(name, position)
+        q = real(name, position)
+        if np.shape(q) != (layout.n_dof,):
+            raise InputError(
+                name, f"must hold the {layout.n_dof} dofs of the bodies and free points, got {np.shape(q)}"
+            )
+        return np.array(q, dtype=float)
+
+    def _target(self, name, key):
+        """The first dof of a body or free point named in a load mapping."""
+        layout = self.layout
+        if isinstance(key, MooringPoint) and self._point(name, key).kind == "free":
+            return layout.point_start[key.index], None
+        i = layout.body_of.get(id(key))
+        if i is not None and self.bodies[i] is key:
+            return layout.body_start[i], key
+        raise InputError(name, f"takes bodies and free points of this system as keys, got {key!r}")
 
     def _loads(self, force, moment):
-        force = point("force", force)
-        moment = point("moment", moment)
-        if self.n_dof == 3:
-            if np.any(moment != 0):
-                raise InputError("moment", "a point body takes no moment: leave it out or use a RigidBody")
-            return force
-        return np.concatenate([force, moment])
+        """The external load on the dofs (N, N m): one body's ``(3,)`` force and moment, or mappings
+        ``{body or free point: (3,)}``."""
+        if self.shortcut:
+            force, moment = point("force", force), point("moment", moment)
+            if self.n_dof == 3:
+                if np.any(moment != 0):
+                    raise InputError(
+                        "moment", "a point body takes no moment: leave it out or use a RigidBody"
+                    )
+                return force
+            return np.concatenate([force, moment])
+        external = np.zeros(self.n_dof)
+        for name, value, offset in (("force", force, 0), ("moment", moment, 3)):
+            items = value.items() if isinstance(value, Mapping) else [(None, value)]
+            for key, vector in items:
+                vector = point(name, vector)
+                if key is None:
+                    if not np.any(vector):
+                        continue
+                    if len(self.bodies) != 1:
+                        raise InputError(
+                            name, f"with {len(self.bodies)} bodies: give a mapping {{body: (x, y, z)}}"
+                        )
+                    key = self.bodies[0]
+                start, body = self._target(name, key)
+                if offset and (body is None or body.n_dof == 3):
+                    if np.any(vector):
+                        raise InputError(name, "a point or a point body takes no moment")
+                    continue
+                external[start + offset : start + offset + 3] += vector
+        return external
 
-    def solve_lines(self, position, start=None) -> list[Line3D]:
-        """Every line solved with the body at ``position`` (m, rad).
+    # -- lines ---------------------------------------------------------------------------------------
+    def _active(self, without):
+        return [h for h in self.mooring_lines if h.index not in without]
 
-        ``start``: the lines solved at another position (a list of `Line3D`, one per
-        line), each model that takes a warm start starting from its own (see
-        `skcable.cable.Line.solve`: the same solution as without it, to round-off).
-        Without it, a line whose model was solved for an earlier line of this call
-        (lines of one model, e.g. a spread mooring) starts from that solution.
-        """
-        q = self._position("position", position)
-        return self._solve_lines(q, start)
-
-    def _solve_lines(self, q, start):
-        fairleads = self.body.fairlead_positions(q, len(self.lines))
-        if start is None:
-            start = [None] * len(self.lines)
-        elif len(start) != len(self.lines) or not all(isinstance(s, Line3D) for s in start):
-            raise InputError("start", f"must be a list of {len(self.lines)} Line3D, one per line")
-        reach = fairleads - self.anchors
-        spans = [math.hypot(x, y) for x, y, _ in reach.tolist()]
-        extent = np.maximum(np.abs(reach).max(1), 1.0)
-        if not (np.isfinite(fairleads).all() and (np.array(spans) > 1e-9 * extent).all()):
-            # line_3d's checks raise the error, naming the point
-            pairs = zip(self.anchors, fairleads, strict=True)
-            return [line_3d(model, a, b) for model, (a, b) in zip(self.lines, pairs, strict=True)]
-        solved, latest = [], {}
-        for model, a, b, r, previous, warm in zip(
-            self.lines, self.anchors, fairleads, spans, start, self._warm, strict=True
-        ):
-            if warm and previous is None:  # another line of the same model, solved just now
-                previous = latest.get(id(model))
-            line = solve_in_space(model, a, b, r, previous if warm else None)
+    def _solve_at(self, P, handles, start):
+        """Every line of ``handles`` solved with its ends at ``P`` (n, 3); ``start`` their previous
+        solutions or None."""
+        start = [None] * len(handles) if start is None else start
+        solved: list = []
+        latest: dict = {}
+        depth = self.depth
+        for handle, previous in zip(handles, start, strict=True):
+            a, b = P[handle.a.index], P[handle.b.index]
+            model = handle.model
+            line: Any
+            if handle.managed:
+                line = solve_between(model, a, b, depth, previous or latest.get(id(model)))
+            else:
+                r = math.hypot(float(b[0] - a[0]), float(b[1] - a[1]))
+                if not (np.isfinite(b).all() and r > 1e-9 * max(1.0, float(np.abs(b - a).max()))):
+                    line = line_3d(model, a, b)  # raises, naming the point
+                if handle.warm and previous is None:  # a line of the same model, solved just now
+                    previous = latest.get(id(model))
+                line = solve_in_space(model, a, b, r, previous if handle.warm else None)
             latest[id(model)] = line
             solved.append(line)
         return solved
 
-    def evaluate(self, q, external, *, lines_only=False, start=None):
-        """Net force ``G(q)`` (N, N m), stiffness ``K(q)`` and the solved lines at the checked
-        position ``q`` (a float array of ``n_dof``) under the ``external`` load (``n_dof``
-        values), the lines warm-started from the lines ``start`` (a list of `Line3D`), if given.
+    def _checked_start(self, start, handles):
+        if start is None:
+            return None
+        if len(start) != len(handles) or not all(isinstance(s, (Line3D, LineBetween)) for s in start):
+            raise InputError("start", f"must be a list of {len(handles)} solved lines, one per line")
+        return list(start)
+
+    def solve_lines(self, position, start=None, *, without=()) -> list:
+        """Every line solved with the bodies and free points at ``position`` (the dofs: m, rad).
+
+        ``start``: the lines solved at another position (one per line), each a warm start of its
+        own (the same solution as without it, to round-off). Without it, a line of a model
+        solved for an earlier line of this call (lines of one model, e.g. a spread mooring)
+        starts from that solution. Returns `skcable.cable.Line3D` (line models solved as given)
+        and `skcable.cable.LineBetween` (`skcable.cable.Line`) objects."""
+        q = self._position("position", position)
+        handles = self._active(without)
+        return self._solve_at(self.frame(q)[0], handles, self._checked_start(start, handles))
+
+    def evaluate(self, q, external, *, lines_only=False, start=None, without=()):
+        """Net load ``G(q)`` (N, N m), stiffness ``K(q)`` and the solved lines at the checked dofs
+        ``q`` under the ``external`` load (one value per dof), the lines warm-started from
+        ``start`` (their solutions at another position), if given.
 
         ``lines_only``: ``G`` and ``K`` of the lines alone (no own loads, no external load)."""
-        lines = self._solve_lines(q, start)
-        forces = np.array([line.force_on_fairlead for line in lines])
-        stiffnesses = np.array([line.stiffness() for line in lines])
-        G, K = self.body.add_lines(self.body.arms(q), forces, stiffnesses)
-        if not lines_only:
-            G = G + self.body.own_force(q) + external
-            K = K + self.body.own_stiffness(q)
+        handles = self._active(without)
+        P, R, arms = self.frame(q)
+        lines = self._solve_at(P, handles, start)
+        G, K = self.assemble(q, (R, arms), handles, lines, external, lines_only)
         return G, K, lines
 
+    def assemble(self, q, frame, handles, lines, external, lines_only=False):
+        """``(G, K)`` from the solved ``lines`` of ``handles`` at ``q``, ``frame`` the bodies' rotation
+        matrices and their points' arms there (`frame`; module docstring)."""
+        R, arms = frame
+        ends: list = []
+        cross: list = []
+        for handle, line in zip(handles, lines, strict=True):
+            if handle.managed:
+                _managed_ends(handle, line, ends, cross, self._assembler, arms)
+            elif handle.b.kind != "fixed":
+                ends.append((handle.b.index, line.force_on_fairlead, line.stiffness()))
+        return self._assembler.assemble(q, R, arms, ends, cross, external, lines_only)
+
     def net_force(self, position, *, force=(0.0, 0.0, 0.0), moment=(0.0, 0.0, 0.0)) -> np.ndarray:
-        """Net force (N) and moment (N m, about the reference point) on the body at ``position``:
-        lines, own loads and the external ``force`` and ``moment``, global axes."""
+        """Net load on the dofs at ``position``: lines, own loads and the external ``force`` and
+        ``moment`` (N, N m, global axes; a body's moment about its reference point)."""
         return self.evaluate(self._position("position", position), self._loads(force, moment))[0]
 
     def stiffness(self, position, *, lines_only=False) -> np.ndarray:
         """Stiffness ``-∂G/∂(x, rotation vector)`` at ``position`` (N/m, N, N m/rad), (n_dof, n_dof).
 
-        ``lines_only``: the lines alone (MoorPy's ``lines_only=True``); otherwise the
-        body's hydrostatic stiffness is added.
-        """
+        ``lines_only``: the lines alone (MoorPy's ``lines_only=True``); otherwise the bodies'
+        hydrostatic stiffness is added."""
         q = self._position("position", position)
         return self.evaluate(q, 0.0, lines_only=lines_only)[1]
+
+    # -- what the equilibrium solver asks ----------------------------------------------------------------
+    def dof_units(self) -> np.ndarray:
+        """Consistent units of the dofs: 1 for translations, a body's largest arm (at least 1 m) for
+        its rotations."""
+        layout = self.layout
+        units = np.ones(layout.n_dof)
+        for i, body in enumerate(self.bodies):
+            if body.n_dof == 6:
+                arm = max(1.0, float(np.abs(layout.local[i]).max())) if len(layout.local[i]) else 1.0
+                units[layout.body_start[i] + 3 : layout.body_start[i] + 6] = arm
+        return units
+
+    def step_cap(self, q, without=()) -> np.ndarray:
+        """The largest Newton step of each dof: a quarter of the shortest horizontal span of the lines
+        of its body or point (m), 0.2 rad."""
+        layout = self.layout
+        P = self.frame(q)[0]
+        handles = self._active(without)
+        a = np.array([h.a.index for h in handles], dtype=int)
+        b = np.array([h.b.index for h in handles], dtype=int)
+        spans = np.hypot(*(P[b] - P[a])[:, :2].T) if len(handles) else np.ones(1)
+        starts = self._assembler.group_start  # each point's body or free point: its first dof (-1: fixed)
+        shortest = np.full(layout.n_dof, np.inf)
+        for ends in (a, b):
+            moving = starts[ends] >= 0
+            np.minimum.at(shortest, starts[ends][moving], spans[moving])
+        cap = np.full(layout.n_dof, 0.2)
+        for s in np.unique(starts[starts >= 0]):
+            cap[s : s + 3] = 0.25 * (shortest[s] if np.isfinite(shortest[s]) else spans.max())
+        return cap
+
+    def force_scale(self, external) -> float:
+        """A force scale of the loads other than the lines' (N): weights, buoyancies, point loads,
+        external forces."""
+        self.layout  # noqa: B018 - builds the assembler
+        assembler = self._assembler
+        starts = np.unique(assembler.group_start[assembler.group_start >= 0])
+        pushed = float(np.linalg.norm(external[starts[:, None] + np.arange(3)], axis=1).max(initial=0.0))
+        return max(assembler.own_scale, pushed)
+
+    @staticmethod
+    def tension_scale(lines) -> float:
+        """The largest tension at a moving end of the lines (N)."""
+        return max(
+            (
+                line.max_end_tension if isinstance(line, LineBetween) else line.tension_at_fairlead
+                for line in lines
+            ),
+            default=0.0,
+        )
+
+    def check(self, without=()):
+        """Refuse a system that cannot be solved, naming the part: no body or free point, a free
+        point or body with no line (of those left, ``without`` the lines given)."""
+        handles = self._active(without)
+        if self.n_dof == 0:
+            raise InputError("points", "the system has no body and no free point: nothing to solve for")
+        used = {p.index for h in handles for p in (h.a, h.b)}
+        for p in self.points:  # an anchor left alone by a failure is no error
+            if p.index not in used and (p.kind == "free" or p.kind == "fixed" and not without):
+                raise InputError(
+                    "points", f"point {p.index} ({p.kind}) has no line: connect it or leave it out"
+                )
+        held = {int(self._assembler.owner[j]) for j in used if self.points[j].kind == "body"}
+        for i in range(len(self.bodies)):
+            if i not in held:
+                raise InputError("bodies", f"body {i} has no line: connect a line to one of its points")
 
     def equilibrium(
         self,
@@ -206,59 +516,148 @@ class MooringSystem:
         start=None,
         tol: float = 1e-10,
         max_iter: int = 60,
+        without=(),
     ) -> MooringEquilibrium:
-        """Static equilibrium of the body under a constant external force and moment.
+        """Static equilibrium of every body and free point under constant external loads.
 
         Parameters
         ----------
-        force, moment : array_like, shape (3,)
-            External force (N) and moment (N m, about the reference point), global axes.
+        force, moment : array_like, shape (3,), or mapping
+            External force (N) and moment (N m, about the reference point), global axes: of the
+            one body, or ``{body or free point: (x, y, z)}``.
         start : array_like or MooringEquilibrium, optional
-            Starting position, ``(x, y, z, roll, pitch, yaw)`` (m, rad) for a rigid
-            body, ``(x, y, z)`` for a point body; default all zeros. Or an earlier
-            equilibrium of this system (e.g. under a nearby load): its position, and
-            its lines as warm starts of the first line solves.
+            The starting dofs (bodies, then free points; m, rad); default: where the bodies and
+            points were added (all zeros for the one-body constructor). Or an earlier equilibrium
+            of this system: its position, and its lines as warm starts of the first line solves.
         tol : float
-            Convergence when the net force over the force scale (the largest of the
-            fairlead tensions, the weight, the buoyancy and the external force), and
-            the net moment over force scale times the largest arm, are below ``tol``.
+            Convergence when every net force over the force scale (the largest of the line
+            tensions, the weights, the buoyancies and the external forces), and every net moment
+            over that scale times its body's largest arm, are below ``tol``.
         max_iter : int
             Newton iterations at most.
+        without : sequence of MooringLine, optional
+            Lines left out (a line failure): the damaged system's equilibrium.
 
         Returns
         -------
         MooringEquilibrium
-            With ``stable`` and the stiffness ``eigenvalues``: an unstable equilibrium (a
-            negative eigenvalue) is passed over for a stable one where the restarts find it
-            (`skcable.cable.lines.equilibrium`), else returned with a `PlausibilityWarning`.
+            With ``bodies``, ``points``, ``lines``, ``stable`` and the stiffness ``eigenvalues``.
 
         Raises
         ------
         InputError
-            Bad arguments, or a starting position where a line cannot be solved.
+            Bad arguments, a point or body with no line, a starting position where a line cannot be
+            solved.
         ConvergenceError
-            No equilibrium within ``max_iter`` iterations, or slack lines that stay slack
-            along the net force (a direction the mooring and the hydrostatics do not
-            restrain); carries the history of the scaled residual.
-
-        Notes
-        -----
-        Lines that start slack on the seabed (the slack in a heap: no horizontal stiffness)
-        are first pulled taut along the net force (`skcable.cable.lines.equilibrium`).
-        Each trial position solves every line warm-started from its solution at the
-        last accepted position (models that take ``start=``, see `solve_lines`);
-        a warm-started line has the cold solution to round-off, so the iterates are
-        those of cold solves.
+            No equilibrium within ``max_iter`` iterations, or a direction nothing restrains (named);
+            carries the history of the scaled residual.
         """
+        without = self._without(without)
+        self.check(without)
         external = self._loads(force, moment)
         warm_lines = None
         if isinstance(start, MooringEquilibrium):
             if start.system is not self:
                 raise InputError("start", "is the equilibrium of another MooringSystem")
-            q, warm_lines = start.position.copy(), start.lines
+            q = start.position.copy()
+            warm_lines = start.lines if start.without == without else None
         else:
             q = self._position("start", start)
         tol = scalar("tol", positive("tol", tol))
         if isinstance(max_iter, bool) or not isinstance(max_iter, (int, np.integer)) or max_iter < 1:
             raise InputError("max_iter", f"must be an integer >= 1, got {max_iter!r}")
-        return solve_equilibrium(self, q, external, warm_lines, tol, max_iter)
+        return solve_equilibrium(self, q, external, warm_lines, tol, max_iter, without=without)
+
+    def _without(self, without) -> frozenset:
+        if isinstance(without, (MooringLine, str, bytes)) or not isinstance(without, Iterable):
+            raise InputError("without", "must be a list of the system's lines (from add_line)")
+        out = set()
+        for h in without:
+            if (
+                isinstance(h, (int, np.integer))
+                and not isinstance(h, bool)
+                and 0 <= h < len(self.mooring_lines)
+            ):
+                h = self.mooring_lines[int(h)]
+            if not isinstance(h, MooringLine) or self.mooring_lines[h.index] is not h:
+                raise InputError("without", f"holds {h!r}, not a line of this system (from add_line)")
+            out.add(h.index)
+        return frozenset(out)
+
+    def start_position(self, body) -> np.ndarray:
+        """The dofs of ``body`` where it was added (`add_body`'s ``position``; zeros by default)."""
+        for b, q in zip(self.bodies, self._body_positions, strict=True):
+            if b is body:
+                return q.copy()
+        raise InputError("body", "is not in this system")
+
+    def point_position(self, p, position=None) -> np.ndarray:
+        """The global position (m) of the point ``p`` with the dofs at ``position`` (default: the start)."""
+        p = self._point("point", p)
+        return self.frame(self._position("position", position))[0][p.index].copy()
+
+    def replaced(self, *, models=None, positions=None) -> MooringSystem:
+        """A copy of this system with some lines' models and some points' positions replaced:
+        ``models`` maps line handles to line models, ``positions`` points to their new position (as
+        `add_point` takes it). The bodies are the same objects, at the same starts."""
+        models, positions = dict(models or {}), dict(positions or {})
+        other = MooringSystem(depth=self.depth, rho=self.rho, g=self.g)
+        for body, q in zip(self.bodies, self._body_positions, strict=True):
+            other._add_body(body, q)
+        for p in self.points:
+            where = positions.get(p, p.position)
+            other._new_point(where, p.fixed, p.mass, p.volume, p.force, p.body)
+        for h in self.mooring_lines:
+            model = models.get(h, h.model)
+            other._add_line(model, other.points[h.a.index], other.points[h.b.index], h.managed)
+        other.shortcut = self.shortcut
+        return other
+
+    def failure(self, lines, **options):
+        """The equilibrium without ``lines`` (a line failure) beside the intact one, under the same
+        loads (``options``: those of `equilibrium`): a `skcable.cable.lines.failure.FailureCase`
+        with ``intact``, ``damaged``, ``redistribution()`` and ``offsets()``."""
+        from skcable.cable.lines.failure import failure_case
+
+        return failure_case(self, lines, **options)
+
+    def failure_cases(self, **options) -> list:
+        """Each line failing alone (`failure`), from one intact equilibrium."""
+        from skcable.cable.lines.failure import failure_cases
+
+        return failure_cases(self, **options)
+
+    def __repr__(self):
+        return (
+            f"MooringSystem({len(self.bodies)} bodies, {len(self.points)} points, "
+            f"{len(self.mooring_lines)} lines, depth={self.depth!r})"
+        )
+
+
+def _managed_ends(handle, line, ends, cross, assembler, arms):
+    """The ends of a `skcable.cable.Line` line that move, and their coupling where both do."""
+    moving = (handle.a.kind != "fixed", handle.b.kind != "fixed")
+    if not any(moving):
+        return
+    if not moving[0]:  # the common case: an anchor and a moving fairlead
+        ends.append((handle.b.index, line.end_forces[1], line.b_block()))
+        return
+    J = line.plane.jacobian()
+    for i, p in enumerate((handle.a, handle.b)):
+        if moving[i]:
+            ends.append((p.index, line.end_forces[i], line.block(i, i, J)))
+    if all(moving):
+        (sa, Ta), (sb, Tb) = (_point_map(assembler, arms, p) for p in (handle.a, handle.b))
+        cross.append((sa, Ta, sb, Tb, line.block(0, 1, J), line.block(1, 0, J)))
+
+
+def _point_map(assembler, arms, p):
+    """``(first dof, T)`` with ``δp = T δq`` for a moving point ``p`` (module docstring)."""
+    if p.kind == "free":
+        return int(assembler.free_start[p.index]), np.eye(3)
+    i = int(assembler.owner[p.index])
+    start = int(assembler.start[i])
+    if not assembler.rigid[i]:
+        return start, np.eye(3)
+    r = arms[assembler.row[p.index]]
+    return start, np.hstack([np.eye(3), -skew(r)])

@@ -55,9 +55,8 @@ def inextensible_guess(span, dh, w, EA, L, H0):
         if idx.size == 1:  # Brent's method on floats: the elementwise search costs ~10 ms a call
             args = [float(v[0]) for v in args]
         # a starting point only: Newton on the full equations refines it
-        root, _ = find_root(
-            _touchdown_run, args[0], args[1], tuple(args[2:]), what="seabed guess", xtol=1e-9 * args[1]
-        )
+        xtol = 1e-9 * float(args[1]) if idx.size == 1 else None  # the scalar path's (Brent's)
+        root, _ = find_root(_touchdown_run, args[0], args[1], tuple(args[2:]), what="seabed guess", xtol=xtol)
         h[idx] = root
     h = np.where(ok, h, H0 / w)
     V = np.where(ok, np.sqrt(dh * dh + 2.0 * dh * h), w * L * (1 - 1e-9))

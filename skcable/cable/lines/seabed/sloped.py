@@ -29,7 +29,8 @@ def _scaled_closure(u, scene, scale, chord, history):
     H, L_B = u * scale
     if not (H > 0 and 0 <= L_B < scene[4]):
         return np.array([1e3 * chord, 1e3 * chord])
-    r = np.array(sloped_closure(*scene, H, L_B))
+    span, dh, w, EA, L, m, mu = scene
+    r = np.array(sloped_closure(span, dh, w, EA, L, m, mu, H, L_B))
     history.append(float(np.max(np.abs(r)) / chord))
     return r / chord
 
@@ -132,7 +133,7 @@ def sloped_seabed_catenary(span, dh, w, EA, *, length, seabed_slope, friction=0.
         H0, L_B0 = w * L, 0.5 * L
     scene = (span, dh, w, EA, L, m, mu)
     scale = np.array([H0, L])
-    history = []
+    history: list = []
     # the closure has one root (H > 0, 0 <= L_B < L); hybr from the flat line's start finds it
     # mostly, and from a few others where the slope bends the line away from that start
     starts = [(H0, min(max(L_B0, 0.0), 0.999 * L))]

@@ -151,7 +151,8 @@ class SlopedSeabedCatenary(ProfileMixin):
         """``n`` points evenly spaced in unstretched arc length, the input of `to_vtk`: ``xy``
         (n, 2) m, ``tension`` (N), ``angle`` (rad above the horizontal), ``load`` (n, 2) N/m."""
         s = np.linspace(0.0, self.length, whole("n", n, 2))
-        return arc_samples(*self._maps(s), self.w)
+        x, y, T, angle = self._maps(s)
+        return arc_samples(x, y, T, angle, self.w)
 
     def to_vtk(self, path, n: int = 201):
         """Write the profile as a VTK polyline (see `skcable.io.cable_mesh`); returns the path."""

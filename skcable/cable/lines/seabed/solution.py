@@ -315,7 +315,7 @@ class SeabedCatenary(CableSolution):
         out = np.full(xb.shape, np.nan)
         inside = xb < x1b
         if inside.any():
-            args = [v[inside] for v in (s1b, xb, Hb, Vb, wb, EAb)]
+            args: list = [v[inside] for v in (s1b, xb, Hb, Vb, wb, EAb)]
             if args[0].size == 1:  # Brent's method on floats
                 args = [float(v[0]) for v in args]
             root, _ = find_root(_left_run, 0.0 * args[0], args[0], tuple(args[1:]), what="s_of_x")

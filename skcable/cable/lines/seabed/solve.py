@@ -11,6 +11,8 @@ else it is grounded and its closure is solved
 
 from __future__ import annotations
 
+from typing import Any
+
 import numpy as np
 
 from skcable import _plausible
@@ -119,7 +121,9 @@ def _free_elements(span, dh, w, EA, L0, seabed, shape):
         if shape == ():
             args = [float(v[0]) for v in args]
         # anchor above the seabed and the free line below it: a touchdown between A and B
-        H[hanging], V_t[hanging], dips[hanging] = free_part(*args, np.broadcast_to(seabed, shape)[hanging])
+        span_h, dh_h, w_h, EA_h, L_h = args
+        bed = np.broadcast_to(seabed, shape)[hanging]
+        H[hanging], V_t[hanging], dips[hanging] = free_part(span_h, dh_h, w_h, EA_h, L_h, bed)
         if dips.any():
             contact = contact | dips
             depth[dips] = -np.broadcast_to(seabed, shape)[dips]
@@ -149,13 +153,19 @@ def _heap_elements(span, dh, w, EA, L0, friction, contact, depth, dips, shape):
 def _seabed_catenary_array(span, dh, w, EA, L0, seabed, friction):
     """`elastic_catenary` with a seabed on checked, broadcastable arrays."""
     shape = np.broadcast_shapes(*(np.shape(v) for v in (span, dh, w, EA, L0, seabed, friction)))
+    H: Any  # arrays of the scenes, floats for one
+    V_t: Any
+    heap: Any
+    V_1: Any
+    L_B: Any
+    y_t: Any
     contact, H, V_t, guess, depth, dips = _free_elements(span, dh, w, EA, L0, seabed, shape)
     heap = np.zeros(shape, dtype=bool)
     V_1, L_B = np.zeros(shape), np.zeros(shape)
     if contact.any():
         heap, V_1, L_B = _heap_elements(span, dh, w, EA, L0, friction, contact, depth, dips, shape)
         H[heap], V_t[heap] = 0.0, 0.0
-    history = []
+    history: list = []
     taut = contact & ~heap
     if taut.any():
         args = [np.broadcast_to(v, shape)[taut] for v in (span, dh, w, EA, L0, friction * w, guess, depth)]

@@ -46,7 +46,9 @@ class LineArrays:
     total_weight : float
         Weight in water of the segments and the attachments (N).
     segment_weight : float
-        Weight in water of the segments alone (N).
+        Weight in water of the segments alone (N; buoyant segments count negative).
+    abs_segment_weight : float
+        Sum of the magnitudes of the segments' weights in water (N): a force scale.
     abs_joint_forces : float
         Sum of the magnitudes of the point forces (N): a force scale of the checks.
     """
@@ -68,6 +70,7 @@ class LineArrays:
     total_length: float
     total_weight: float
     segment_weight: float
+    abs_segment_weight: float
     abs_joint_forces: float
 
 
@@ -103,5 +106,6 @@ def line_arrays(segments, P) -> LineArrays:
         total_length=float(L.sum()),
         total_weight=float(w @ L + P.sum()),
         segment_weight=float(w @ L),
+        abs_segment_weight=float(np.abs(w) @ L),
         abs_joint_forces=float(np.abs(P).sum()),
     )

@@ -28,6 +28,8 @@ piece by piece).
 
 from __future__ import annotations
 
+from typing import Any
+
 import numpy as np
 
 from skcable._xp import scalar_math
@@ -79,6 +81,31 @@ class ClosureState:
         "H", "V", "k", "a", "V_top", "V_bot", "V_bot0", "Vb", "L_s", "Tt", "Tb", "dx", "dy", "X", "Z", "jac",
         "l_g", "T_g", "m_g", "R", "stretch", "contact", "H_A", "heap",
     )  # fmt: skip
+    # the slots' types, for mypy (floats or arrays of the segments: Any)
+    H: float
+    V: float
+    k: int
+    a: float
+    V_top: Any
+    V_bot: Any
+    V_bot0: float
+    Vb: Any
+    L_s: Any
+    Tt: Any
+    Tb: Any
+    dx: Any
+    dy: Any
+    X: float
+    Z: float
+    jac: tuple
+    l_g: Any
+    T_g: Any
+    m_g: Any
+    R: Any
+    stretch: Any
+    contact: bool
+    H_A: float
+    heap: bool
 
 
 def _split(arrays, contact, V, st):
@@ -111,6 +138,11 @@ def _suspended(arrays, H, k, a, touchdown, V_top, V_bot, V_bot_k, V_top_k, st):
     touchdown inside piece ``k`` starts it at ``V = 0``, ``a`` from its lower end).
     Returns ``X, Z, jxh, jxv, jzh, jzv`` and keeps the pieces in ``st``."""
     n = arrays.n
+    xp: Any
+    Vt: Any
+    Vb: Any
+    Ls: Any
+    dVb: Any
     if k == n - 1:  # one suspended piece: Python floats
         xp = scalar_math
         Vt, Vb, Ls = V_top_k, (0.0 if touchdown else V_bot_k), arrays.L_list[k] - a

@@ -114,7 +114,30 @@ class Line:
         """Downward point force at each joint (N), ``n + 1`` values (buoys negative)."""
         self.contact = seabed is not None and seabed == 0.0
         """Whether the line may rest on a seabed through its anchor (``seabed=0``)."""
-        self._buoyed = bool((P[1:n] < 0).any())  # buoys between the ends
+        self._buoyed = bool((P[1:n] < 0).any() or (self.arrays.w < 0).any())  # buoys, buoyant segments
+
+    def variant(self, *, reverse: bool = False, contact: bool = False) -> Line:
+        """This line as seen from one end, with or without a seabed through that end (cached).
+
+        ``reverse``: the line given from its other end (segments in reverse order, an
+        attachment at joint ``j`` moved to joint ``n - j``). ``contact``: a flat seabed through
+        the anchor (``seabed=0``) and this line's ``friction``; else no seabed (and no
+        friction). The solutions of a variant are those of the same physical line with its
+        ends named the other way round (`skcable.cable.lines.geometry` picks the variant
+        that suits a line's position over the seabed)."""
+        key = (bool(reverse), bool(contact))
+        cache = self.__dict__.setdefault("_variants", {})
+        if key not in cache:
+            segments, attachments = list(self.segments), list(self.attachments)
+            if reverse:
+                n = len(segments)
+                segments = segments[::-1]
+                attachments = [type(a)(n - a.joint, abs(a.force)) for a in attachments]
+            if contact:
+                cache[key] = Line(segments, attachments, seabed=0.0, friction=self.friction)
+            else:
+                cache[key] = Line(segments, attachments)
+        return cache[key]
 
     @property
     def length(self):
@@ -152,7 +175,7 @@ class Line:
     def vertical_force(self, H, dh):
         """``V`` with ``Z(H, V) = dh`` (``Z`` increases with ``V``), by bracketing."""
         arrays = self.arrays
-        scale = float(arrays.w @ arrays.L + np.abs(self.joint_forces).sum())
+        scale = float(arrays.abs_segment_weight + arrays.abs_joint_forces)
         args = (self, H, dh)
         lo = -scale  # V < 0: the fairlead holds a buoyant line down
         while _height_left(lo, *args) > 0:
@@ -173,14 +196,19 @@ class Line:
         L = self.length
         arrays = self.arrays
         W = float(arrays.w @ arrays.L + self.joint_forces[1:-1].sum())
-        w = W / L if W > 0 else float(arrays.w @ arrays.L) / L
+        w = W / L if W != 0 else float(arrays.w @ arrays.L) / L
         EA = L / float(np.sum(arrays.L / arrays.EA))
         seabed = 0.0 if self.contact else None
+        sign = 1.0
+        if not w > 0:  # a buoyant line: the mirror image (y -> -y) of a heavy one, V_B -> -V_B
+            if self.contact or w == 0:
+                return None
+            w, dh, sign = -w, -dh, -1.0
         try:
             ref = elastic_catenary(span, dh, w, EA, length=L, seabed=seabed, friction=0.0)
         except (InputError, ConvergenceError):
             return None
-        return float(ref.H), float(ref.V_B)
+        return float(ref.H), sign * float(ref.V_B)
 
     def _newton(self, span, dh, H, V, chord, iterations, state=None):
         """Newton's method with the analytic Jacobian and backtracking on ``max|residual|``
@@ -205,7 +233,7 @@ class Line:
 
     def _bracketed(self, span, dh):
         """``(H, V)`` by nested bracketing: ``V(H)`` from the height, then ``H`` from the run."""
-        W = float(self.arrays.w @ self.arrays.L)
+        W = float(self.arrays.abs_segment_weight)
         args = (self, span, dh)
         H_lo = 1e-10 * W
         if _run_left(H_lo, *args) >= 0:
@@ -268,6 +296,11 @@ class Line:
         """
         span = scalar("span", positive("span", span))
         dh = scalar("dh", real("dh", dh))
+        return self.solve_checked(span, dh, start)
+
+    def solve_checked(self, span: float, dh: float, start=None):
+        """`solve` for a caller that has checked ``span`` and ``dh`` (finite floats, ``span > 0``):
+        a system's line solved at every Newton iterate of its equilibrium."""
         if self.seabed is not None:
             require("dh", dh > self.seabed, "must put B above the seabed", dh)
         chord = math.hypot(span, dh)
@@ -283,7 +316,7 @@ class Line:
         if not norm < 1e-11:  # Newton from the equivalent uniform line
             guess = self._guess(span, dh)
             if guess is not None:
-                st, norm, more = self._newton(span, dh, *guess, chord, 40)
+                st, norm, more = self._newton(span, dh, guess[0], guess[1], chord, 40)
                 history = [*history, *more]
         if not norm < 1e-11:  # nested bracketing, then Newton polish
             H, V, hist = self._bracketed(span, dh)

@@ -10,7 +10,7 @@ from __future__ import annotations
 import numpy as np
 
 from skcable import _plausible
-from skcable._checks import positive, scalar
+from skcable._checks import positive, real, scalar
 from skcable.errors import InputError
 
 __all__ = ["Buoy", "ClumpWeight", "Segment", "joint_index"]
@@ -24,22 +24,38 @@ class Segment:
     length : float
         Unstretched length (m), > 0.
     w : float
-        Weight in water per unstretched length (N/m), > 0 (a segment lighter
-        than water is a buoyant line: model its buoyancy with `Buoy` at joints).
+        Weight in water per unstretched length (N/m), not zero: negative for a segment
+        lighter than water (a buoyancy section of a lazy-wave line, a synthetic rope that
+        floats), which rises where it hangs free.
     EA : float
         Axial stiffness (N), > 0.
+    mbl : float, optional
+        Minimum breaking load (N), > 0: the strength the line checks compare its largest
+        tension with (`skcable.cable.lines.checks`); from a component of the library
+        (`skcable.cable.lines.library`) or the maker's data.
+    diameter : float, optional
+        Volume-equivalent diameter (m), > 0: the diameter of the cylinder that displaces as much
+        water per length (MoorDyn's ``Diam``; written to MoorDyn files). The statics use ``w``.
     """
 
-    __slots__ = ("length", "w", "EA")
+    __slots__ = ("length", "w", "EA", "mbl", "diameter")
 
-    def __init__(self, length, w, EA):
+    def __init__(self, length, w, EA, *, mbl=None, diameter=None):
         self.length = scalar("length", positive("length", length))
-        self.w = scalar("w", positive("w", w))
+        self.w = scalar("w", real("w", w))
+        if self.w == 0.0:
+            raise InputError(
+                "w", "must not be 0: a weightless segment has no catenary (give its weight in water)"
+            )
         self.EA = scalar("EA", positive("EA", EA))
-        _plausible.stiffness(self.EA, self.w, self.length)
+        self.mbl = None if mbl is None else scalar("mbl", positive("mbl", mbl))
+        self.diameter = None if diameter is None else scalar("diameter", positive("diameter", diameter))
+        _plausible.stiffness(self.EA, abs(self.w), self.length)
 
     def __repr__(self):
-        return f"Segment(length={self.length!r}, w={self.w!r}, EA={self.EA!r})"
+        extra = "" if self.mbl is None else f", mbl={self.mbl!r}"
+        extra += "" if self.diameter is None else f", diameter={self.diameter!r}"
+        return f"Segment(length={self.length!r}, w={self.w!r}, EA={self.EA!r}{extra})"
 
 
 class ClumpWeight:

@@ -103,7 +103,13 @@ class LineSolution(ProfileMixin):
         self.T_A = math.hypot(self.H_A, V_A0)
         self.joint_forces = P.copy()
         self.heap = bool(st.heap)
-        if contact:  # the grounded pieces, still Python floats from the closed form
+        if contact and arrays.n == 1:  # one grounded piece, on floats
+            self.length_on_seabed = float(st.l_g[0])
+            self.seabed_reaction = arrays.w_list[0] * self.length_on_seabed
+            self.x_touchdown = float(st.l_g[0] + st.stretch[0])
+            if st.heap:
+                self.x_touchdown = float(span)
+        elif contact:  # the grounded pieces, still Python floats from the closed form
             self.length_on_seabed = float(sum(st.l_g))
             self.seabed_reaction = float(arrays.w[: k + 1] @ np.array(st.l_g) + sum(st.R[1:]))
             self.x_touchdown = float(sum(l + e for l, e in zip(st.l_g, st.stretch, strict=True)))
@@ -196,7 +202,7 @@ class LineSolution(ProfileMixin):
         closure = max(abs(st.X - self.span), abs(st.Z - self.dh)) / chord
         if st.heap:  # the slack covers the span
             closure = max(closure, max(self.span - self.length_on_seabed, 0.0) / chord)
-        scale = abs(self.V_A) + abs(self.V_B) + arrays.segment_weight + arrays.abs_joint_forces
+        scale = abs(self.V_A) + abs(self.V_B) + arrays.abs_segment_weight + arrays.abs_joint_forces
         statics = abs(self.V_A + self.V_B + self.seabed_reaction - arrays.total_weight) / scale
         geometry = max(abs(self.x_joints[-1] - self.span) / chord, abs(self.y_joints[-1] - self.dh) / chord)
         return float(max(closure, statics, geometry))
@@ -208,8 +214,14 @@ class LineSolution(ProfileMixin):
         Raises `InputError` (``span``, ``attachments`` or ``seabed``) or `ConvergenceError`."""
         st, line = self._st, self.line
         values = (self.H, self.V_A, self.V_B, self.H_A, self.T_A, self.T_B, self.length_on_seabed)
-        if not all(map(math.isfinite, values)) or not np.isfinite(self.x_joints).all():
+        if not all(map(math.isfinite, (*values, *self.x_joints.tolist()))):
             raise InputError("span", "gives a result outside the range of a float")
+        if st.contact and min(line.arrays.w_list[: st.k + 1]) < 0:
+            raise InputError(
+                "segments",
+                "a buoyant segment lies on the grounded part and would float up: a second touchdown that "
+                "this closed form does not represent (solve it with cable.solve_line_bvp)",
+            )
         if st.contact and st.k > 0:
             buoyed = np.flatnonzero(st.R[1:] < 0) + 1
             if buoyed.size:
@@ -218,7 +230,12 @@ class LineSolution(ProfileMixin):
                     f"a buoy at joint {int(buoyed[0])} lies on the grounded part and would lift it: a second "
                     "touchdown that this closed form does not represent (solve it with cable.solve_line_bvp)",
                 )
-        if line.seabed is not None:
+        arrays = line.arrays
+        # one heavy segment from an anchor on the seabed: it rises from its touchdown or from A
+        rises = (
+            arrays.n == 1 and line.seabed == 0.0 and arrays.w_list[0] > 0 and (st.contact or st.V_bot0 >= 0)
+        )
+        if line.seabed is not None and not rises:
             y_min = self._lowest_suspended()
             floor = line.seabed
             tol = 1e-9 * math.hypot(self.span, self.dh)
@@ -233,6 +250,11 @@ class LineSolution(ProfileMixin):
         residual = self.residual()
         if not residual < 1e-9:
             raise ConvergenceError(f"Line.solve: residual {residual:.3e} after the solve", [residual])
+
+    def lowest_height(self) -> float:
+        """Lowest height (m, above A) of the line's suspended part: its joints and the vertices
+        inside segments (the grounded part, at the seabed, left out)."""
+        return float(self._lowest_suspended())
 
     def _lowest_suspended(self):
         """Lowest height of the suspended part: its joints and the vertices inside segments."""
@@ -358,7 +380,8 @@ class LineSolution(ProfileMixin):
         s = np.linspace(0.0, self.length, whole("n", n, 2))
         arrays = self.line.arrays
         w = arrays.w[np.clip(np.searchsorted(arrays.s_joint, s, side="right") - 1, 0, arrays.n - 1)]
-        return arc_samples(*self._maps(s), w)
+        x, y, T, angle = self._maps(s)
+        return arc_samples(x, y, T, angle, w)
 
     def to_vtk(self, path, n: int = 201):
         """Write the profile as a VTK polyline (see `skcable.io.cable_mesh`); returns the path."""
