@@ -3,8 +3,16 @@
 from __future__ import annotations
 
 from skcable._checks import nonnegative, scalar, whole
+from skcable.cable._extreme import outsized
 from skcable.cable.bvp.line.driver import LineBVPSolver
-from skcable.cable.bvp.line.inputs import newton_options_of, point_loads_of, scene, segments_of, terms_of
+from skcable.cable.bvp.line.inputs import (
+    magnitudes,
+    newton_options_of,
+    point_loads_of,
+    scene,
+    segments_of,
+    terms_of,
+)
 from skcable.cable.bvp.line.solution import LineBVPSolution
 from skcable.errors import InputError
 
@@ -128,7 +136,8 @@ def solve_line_bvp(
         options=newton_options_of(options, rtol=rtol, max_iter=max_iter, **newton_options),
         terms=terms,
     )
-    return LineBVPSolver(checked).solve()
+    with outsized(**magnitudes(checked)):  # a refusal or a float failure inside names the outsized one
+        return LineBVPSolver(checked).solve()
 
 
 class LineBVP:
@@ -243,7 +252,8 @@ class LineBVP:
         solver = LineBVPSolver(checked)
         if start is not None and not (isinstance(start, LineBVPSolution) and start.model is self):
             raise InputError("start", f"must be a solution of this LineBVP, got {type(start).__name__}")
-        solution = solver.solve() if start is None else solver.solve_from(start)
+        with outsized(**magnitudes(checked)):  # as in solve_line_bvp
+            solution = solver.solve() if start is None else solver.solve_from(start)
         solution.model = self
         return solution
 
