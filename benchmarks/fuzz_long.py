@@ -280,16 +280,29 @@ def report_text(state, final, probes) -> str:
     new = [m for m in state.failures if m["known"] is None]
     lines += ["## New failures (no known defect explains them)", ""]
     lines += _failure_lines(new, 100) if new else ["None."]
-    lines += ["", "## Oracle failures (the oracle could not decide: not counted against skcable)", ""]
+    lines += [
+        "",
+        "## Oracle failures (the oracle could not decide: not counted against skcable)",
+        "",
+        "Mostly `solve_line_bvp` results outside the independent walk's model (a buoy lifting the grounded "
+        "line, a second touchdown): returned, finite, unchecked.",
+        "",
+    ]
     lines += _failure_lines(state.oracle_failed, 20) if state.oracle_failed else ["None."]
     return "\n".join(lines) + "\n"
 
 
 def _known_section(state, probes) -> list[str]:
-    lines = ["## Known defects owned by other branches", ""]
+    lines = [
+        "## Known defects",
+        "",
+        "Each defect the fuzz found, the branch whose code it was found in, and whether its fix has "
+        "landed (*fix landed*: then it explains no failure, which counts as new; its probes still rerun).",
+        "",
+    ]
     lines += [
-        "| defect | issue | branch | what | failures in this run | probes |",
-        "|---|---|---|---|---|---|",
+        "| defect | issue | branch | what | fix landed | failures in this run | probes |",
+        "|---|---|---|---|---|---|---|",
     ]
     by_key = defaultdict(list)
     for m in state.failures:
@@ -303,7 +316,7 @@ def _known_section(state, probes) -> list[str]:
         )
         lines.append(
             f"| {defect.key} | {defect.issue} | `{defect.branch}` | {defect.summary} | "
-            f"{len(by_key.get(defect.key, []))} | {status} |"
+            f"{'yes' if defect.fixed else 'no'} | {len(by_key.get(defect.key, []))} | {status} |"
         )
     lines.append("")
     for key, failures in sorted(by_key.items()):

@@ -50,7 +50,8 @@ def _edge(regime, expr, name) -> Case:
     return Case(regime, expr, frozenset({name}), None, None, must_name=(name,))
 
 
-_MOORING_F3 = {
+#: F3's example: a point body on six lines with clumps, slack in heaps at the start.
+KNOWN_F3_SCENE = _MOORING_F3 = {
     "kind": "point",
     "fairleads": [(0.0, 0.0, -2.221810695577151)] * 6,
     "anchors": [
@@ -124,7 +125,8 @@ KNOWN = (
         "D4",
         26,
         "linebvp",
-        "solve_line_bvp fails on scenes Line.solve solves (taut lines, stagnating Newton)",
+        "solve_line_bvp fails on scenes Line.solve solves (taut lines, stagnating Newton; left: a line "
+        "search with no descent just above the tolerance on a few meshes, about one scene in a thousand)",
         ("solve_line_bvp", "edges/solve_line_bvp"),
         ("spurious-refusal",),
         probes=(
@@ -137,7 +139,6 @@ KNOWN = (
                 106.88218088197465,
             ),
         ),
-        fixed=True,
     ),
     Known(
         "D5",
@@ -186,6 +187,7 @@ KNOWN = (
                 64.42683566852091,
             ),
         ),
+        fixed=True,
     ),
     Known(
         "F1",

@@ -110,13 +110,18 @@ def solve_line_bvp(
     Raises
     ------
     InputError
-        Bad data, named; friction too weak to hold a slack stretch on a
+        Bad data, named; an argument beyond any physical magnitude (beyond 10**±100) is the one
+        named, whatever step inside trips on it; friction too weak to hold a slack stretch on a
         sloping seabed; a term that returns arrays of the wrong shape or non-finite
         values (``terms``); a callback that raised (``callback``, with the iteration).
+        ``point_loads``: a slack stretch near the anchor that ends at a point load resting on the
+        seabed with its friction only partly mobilised, a state this BVP does not model (its
+        slack stretch ends where the tension, not a node's friction, vanishes); `skcable.cable.Line`
+        solves it in closed form.
     ConvergenceError
         Newton stalled (``history`` holds the merit per iteration); the end
         of a slack stretch not found; the discrete line in compression (its
-        bends not resolved by the mesh).
+        bends not resolved by the mesh: the message says so, and more ``n_elements`` solve it).
 
     Notes
     -----
