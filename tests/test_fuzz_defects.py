@@ -10,6 +10,7 @@ import numpy as np
 import pytest
 
 from skcable import InputError, cable
+from skcable.cable._extreme import outsized
 from skcable.errors import ConvergenceError
 from tests.fuzz import known, lines, moored, multi
 from tests.fuzz.harness import run_case
@@ -211,3 +212,19 @@ def test_f3_slack_lines_in_heaps_reach_the_stable_equilibrium():
     its eigenvalues positive)."""
     outcome = run_case(moored.mooring_case(known.KNOWN_F3_SCENE))
     assert outcome.kind == "ok", outcome.detail
+
+
+@pytest.mark.parametrize(
+    ("dh", "named"), [(1e-300, "length"), (5e-324, "length"), (1e308, "dh"), (-1e308, "dh")]
+)
+def test_a_tiny_value_where_zero_is_valid_is_no_outsized_one(dh, named):
+    """A subnormal ``dh`` is a level span, not the cause of a refusal inside (the refusal keeps
+    its name); a huge one is."""
+    with pytest.raises(InputError) as caught, outsized(span=800.0, dh=dh, length=850.0):
+        raise InputError("length", "a refusal inside")
+    assert caught.value.argument == named
+
+
+def test_an_arithmetic_failure_without_an_outsized_argument_passes_as_it_is():
+    with pytest.raises(ZeroDivisionError), outsized(span=800.0, dh=1e-300, length=850.0):
+        raise ZeroDivisionError("a defect, not an input")

@@ -11,9 +11,14 @@ naming the argument whose magnitude lies beyond 10**±100
 
 from __future__ import annotations
 
+import numpy as np
+
 from skcable.errors import InputError
 
 __all__ = ["outsized"]
+
+#: Arguments whose domain holds 0 (a subnormal ``dh`` is a level span, no outsized value).
+ZERO_OK = frozenset(("dh", "seabed", "friction", "seabed_slope", "point_loads"))
 
 #: What float arithmetic raises on Python floats where NumPy would give inf or NaN.
 ARITHMETIC = (ZeroDivisionError, OverflowError, ValueError)
@@ -38,11 +43,16 @@ class outsized:  # noqa: N801 - used like a function: ``with outsized(span=..., 
             return False
         from skcable.cable.conductors._inputs import blame_extreme, extreme
 
+        # an argument whose domain holds 0 is outsized only when large: a tiny one is a zero
+        values = {
+            name: np.maximum(np.abs(np.asarray(value, dtype=float)), 1.0) if name in ZERO_OK else value
+            for name, value in self.values.items()
+        }
         if not issubclass(kind, InputError):
-            name = extreme(**self.values)
+            name = extreme(**values)
             if name is None:
                 return False
             raise InputError(
                 name, f"is beyond any physical magnitude: the float arithmetic fails ({kind.__name__}: {exc})"
             ) from exc
-        return blame_extreme(**self.values).__exit__(kind, exc, traceback)
+        return blame_extreme(**values).__exit__(kind, exc, traceback)

@@ -46,8 +46,9 @@ class Known:
         )
 
 
-def _edge(regime, expr, name) -> Case:
-    return Case(regime, expr, frozenset({name}), None, None, must_name=(name,))
+def _edge(regime, expr, *names) -> Case:
+    """An edge case whose refusal must name one of ``names``."""
+    return Case(regime, expr, frozenset(names), None, None, must_name=names)
 
 
 #: F3's example: a point body on six lines with clumps, slack in heaps at the start.
@@ -303,6 +304,7 @@ KNOWN = (
             lambda: _edge(
                 "edges/solve_line_bvp",
                 "cable.solve_line_bvp(800.0, 200.0, [(850.0, 1000.0, [1.0, 2.0])], seabed=0.0)",
+                "EA",
                 "segments",
             ),
         ),

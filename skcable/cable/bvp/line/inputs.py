@@ -61,7 +61,7 @@ class BVPSegment:
     def __post_init__(self):
         object.__setattr__(self, "length", _one("length", positive("length", self.length)))
         if not callable(self.w):
-            object.__setattr__(self, "w", _one("w", real("w", self.w), "(or a callable of s)"))
+            object.__setattr__(self, "w", _one("w", real("w", self.w), " (or a callable of s)"))
         if self.EA is not None:
             EA = _one("EA", positive("EA", self.EA))
             require("EA", EA < np.inf, "must be finite (None for an inextensible segment)", EA)
@@ -71,7 +71,7 @@ class BVPSegment:
 def _one(name: str, value, alternative: str = ""):
     """``value`` unless it is an array: a segment has one number of each (a list of EA is two)."""
     if isinstance(value, np.ndarray):
-        raise InputError(name, f"one number per segment {alternative}, got an array of shape {value.shape}")
+        raise InputError(name, f"one number per segment{alternative}, got an array of shape {value.shape}")
     return value
 
 
