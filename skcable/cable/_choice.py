@@ -29,7 +29,7 @@ Error estimates (relative, on H, the end tensions and the length):
   self weight's share of the load (per horizontal metre) is misplaced: the
   estimate is multiplied by that share.
 - *Stretch*: an inextensible model of an elastic cable (``EA`` given) errs by
-  the wire strain :math:`\varepsilon = T_\max/EA` in the length and, when the
+  the wire strain :math:`\varepsilon = T_{\max}/EA` in the length and, when the
   unstretched length is the constraint, by
   :math:`\varepsilon\,S/(2(S - c))` in H (a parabola's :math:`H \propto (S-c)^{-1/2}`;
   c the chord), which grows without bound as the cable tightens; both times

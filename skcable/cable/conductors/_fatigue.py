@@ -16,8 +16,8 @@ systems", TB 429, 2010):
 
 with :math:`E_a` the Young's modulus and :math:`d_a` the diameter of the outer-layer wires,
 :math:`H` the conductor's tension and :math:`EI` its bending stiffness — between its slip value
-(the wires bending each about its own axis, :math:`EI_\min`) and its stick value (the section
-bending as a whole, :math:`EI_\max`): `clamp_stress` takes both from the (damaged) section,
+(the wires bending each about its own axis, :math:`EI_{\min}`) and its stick value (the section
+bending as a whole, :math:`EI_{\max}`): `clamp_stress` takes both from the (damaged) section,
 `skcable.strand.Section`. The denominator cancels for small :math:`p x_b`; it is evaluated by
 its Taylor series there (:math:`z^2/2 - z^3/6 + \dots`, :math:`z = p x_b < 0.1`).
 

@@ -3,17 +3,21 @@ r"""The net load and stiffness of a mooring system, vectorised over its bodies a
 `skcable.cable.lines.system` states the sums; here they are formed with NumPy over all the
 bodies at once (their rotation matrices, own loads and hydrostatic stiffness) and over all the
 line ends at once: an end on a body at arm :math:`\mathbf r` with force :math:`\mathbf f` and 3 × 3
-stiffness :math:`K` gives the body
+stiffness :math:`K` gives the body, with :math:`T = [I, -[\mathbf r]_\times]` (3 × 6),
 
-.. math:: \begin{pmatrix}\mathbf f\\ \mathbf r\times\mathbf f\end{pmatrix}, \qquad
-    \begin{pmatrix} K & -K[\mathbf r]_\times \\ [\mathbf r]_\times K &
+.. math:: T^T\mathbf f = \begin{pmatrix}\mathbf f\\ \mathbf r\times\mathbf f\end{pmatrix}, \qquad
+    T^T K T - \begin{pmatrix} 0 & 0 \\ 0 & [\mathbf f]_\times[\mathbf r]_\times\end{pmatrix}
+    = \begin{pmatrix} K & -K[\mathbf r]_\times \\ [\mathbf r]_\times K &
     -[\mathbf f]_\times[\mathbf r]_\times - [\mathbf r]_\times K[\mathbf r]_\times\end{pmatrix},
 
-summed per body (``np.add.at``); an end at a free point adds ``f`` and ``K`` to its three dofs.
-The own loads of a body, as `skcable.cable.lines.body`: weight at :math:`R\mathbf r_G`, buoyancy at
-:math:`R\mathbf r_M`, heave restoring; their stiffness
-:math:`K_{\theta\theta} = -[\mathbf W]_\times[R\mathbf r_G]_\times - [\mathbf B]_\times[R\mathbf r_M]_\times`,
-:math:`K_{zz} = \rho g A_{WP}`. A point body is a body whose arms and angles are zero.
+summed per body (one product with a 0/1 matrix of the ends' bodies); an end at a free point adds
+``f`` and ``K`` to its three dofs (``np.add.at``). The own loads of a body, as
+`skcable.cable.lines.body`, are ends of no stiffness: its weight :math:`\mathbf W` at
+:math:`R\mathbf r_G` and its buoyancy :math:`\mathbf B` at :math:`R\mathbf r_M` (their arms
+formed with the points', `Assembler.body_arms`), whose geometric terms are the hydrostatic
+:math:`K_{\theta\theta} = -[\mathbf W]_\times[R\mathbf r_G]_\times - [\mathbf B]_\times[R\mathbf r_M]_\times`;
+then the heave restoring, :math:`-\rho g A_{WP} z` and :math:`K_{zz} = \rho g A_{WP}`. A point
+body is a body whose arms and angles are zero.
 """
 
 from __future__ import annotations
@@ -23,6 +27,22 @@ import numpy as np
 from skcable.cable.lines.body import RigidBody, rotation_matrix
 
 __all__ = ["Assembler", "cross", "rotations", "skews"]
+
+#: ``[v]x`` flattened: ``skews(v).reshape(n, 9) = v @ _SKEW``.
+_SKEW = np.zeros((3, 9))
+for _i, _j, _k, _sign in (
+    (0, 1, 2, -1),
+    (0, 2, 1, 1),
+    (1, 0, 2, 1),
+    (1, 2, 0, -1),
+    (2, 0, 1, -1),
+    (2, 1, 0, 1),
+):
+    _SKEW[_k, 3 * _i + _j] = _sign
+#: ``T = [I, -[r]x]`` flattened (3 x 6), its rotation columns: ``r @ _MINUS_SKEW_T``.
+_MINUS_SKEW_T = np.zeros((3, 18))
+_MINUS_SKEW_T.reshape(3, 3, 6)[:, :, 3:] = -_SKEW.reshape(3, 3, 3)
+_EYE3 = np.eye(3)
 
 
 def rotations(angles) -> np.ndarray:
@@ -104,14 +124,27 @@ class Assembler:
             for p in points
             if p.kind == "free" and any(p.own_force)
         ]
-        self.body_own = [
-            (p.index, p.own_force, np.zeros((3, 3))) for p in points if p.kind == "body" and any(p.own_force)
+        on_bodies = [p for p in points if p.kind == "body" and any(p.own_force)]
+        self.body_own_index = np.array([p.index for p in on_bodies], dtype=int)
+        # the own loads as ends of no stiffness: the bodies' points', then each body's weight at its
+        # centre of gravity and buoyancy at its metacentre (arms: the rows after the points')
+        n_points = len(self.body_point_local)
+        self.own_rows = n_points + np.arange(2 * nb)
+        own = [p.own_force for p in on_bodies] + [
+            v for i in range(nb) for v in (self.weight[i], self.buoyancy[i])
         ]
+        self.own_forces = np.array(own, dtype=float).reshape(-1, 3)
+        self.arm_local = np.concatenate(
+            [self.body_point_local, np.stack([self.cg, self.metacentre], axis=1).reshape(-1, 3)]
+        )
+        self.arm_owner = np.concatenate([self.body_point_owner, np.repeat(np.arange(nb), 2)]).astype(int)
         self._plans = {}
         # each point's body or free point, by its first dof (-1: fixed); the own loads' force scale
         self.group_start = np.where(self.kind == 1, self.free_start, -1)
         on_body = self.kind == 2
         self.group_start[on_body] = self.start[self.owner[on_body]]
+        self.groups = np.unique(self.group_start[self.group_start >= 0])  # the bodies and points held
+        self.group_xyz = self.groups[:, None] + np.arange(3)  # their translation dofs
         scales = [abs(b.weight[2]) for b in bodies] + [b.buoyancy[2] for b in bodies]
         scales += [float(np.abs(p.own_force).max()) for p in points]
         self.own_scale = max(scales, default=0.0)
@@ -129,48 +162,66 @@ class Assembler:
         return xyz, rotations(angles)
 
     def body_arms(self, R) -> np.ndarray:
-        """The arms (global axes) of all the bodies' points, in the order of ``body_point_index``."""
-        return np.einsum("mij,mj->mi", R[self.body_point_owner], self.body_point_local)
+        """The arms (global axes) of all the bodies' points, in the order of ``body_point_index``,
+        then of each body's centre of gravity and metacentre (rows `own_rows`)."""
+        return np.einsum("mij,mj->mi", R[self.arm_owner], self.arm_local)
 
-    def plan(self, index) -> dict:
+    def plan(self, index, own: bool) -> dict:
         """What the assembly needs of a set of moving ends at the points ``index`` (cached: the ends
-        of a system's lines are the same at every evaluation)."""
-        key = tuple(index)
+        of a system's lines are the same at every evaluation), with the bodies' own loads (``own``)
+        as ends of no stiffness: their weight at the centre of gravity, their buoyancy at the
+        metacentre, and the own loads of their points."""
+        key = (tuple(index), own)
         if key not in self._plans:
             index = np.asarray(index, dtype=int)
-            free, on_body = self.kind[index] == 1, self.kind[index] == 2
-            dofs = self.free_start[index[free], None] + np.arange(3)
-            owner = self.owner[index[on_body]]
-            onehot = np.zeros((len(self.start), int(on_body.sum())))
+            extra = self.body_own_index if own else np.zeros(0, dtype=int)
+            points = np.concatenate([index, extra]).astype(int)
+            free, on_body = self.kind[points] == 1, self.kind[points] == 2
+            dofs = self.free_start[points[free], None] + np.arange(3)
+            rows = self.row[points[on_body]]
+            owner = self.owner[points[on_body]]
+            if own:  # weight and buoyancy of each body
+                rows = np.concatenate([rows, self.own_rows]).astype(int)
+                owner = np.concatenate([owner, np.repeat(np.arange(len(self.start)), 2)]).astype(int)
+            onehot = np.zeros((len(self.start), len(rows)))
             onehot[owner, np.arange(len(owner))] = 1.0
-            rows = self.row[index[on_body]]
             self._plans[key] = {
-                "free": free,
-                "on_body": on_body,
+                "free": np.flatnonzero(free[: len(index)]),
+                "on_body": np.flatnonzero(on_body[: len(index)]),
                 "dofs": dofs,
                 "rows": rows,
                 "onehot": onehot,
+                "extra": self.own_forces if own else np.zeros((0, 3)),
+                "extra_K": np.zeros((len(self.own_forces) if own else 0, 3, 3)),
+                "all_on_body": bool(on_body[: len(index)].all()),
+                "one": len(self.start) == 1 and self.rigid[0] and self.n == 6 and not len(dofs),
             }
         return self._plans[key]
 
-    def assemble(self, q, R, arms, ends, cross, external, lines_only):
-        """``(G, K)``: ``ends`` the moving line ends ``(point index, force (3,), stiffness (3, 3))``,
-        ``cross`` the coupling blocks ``(first dof, T_a, first dof, T_b, K_ab, K_ba)``."""
-        G, K = np.zeros(self.n), np.zeros((self.n, self.n))
-        if not lines_only:
-            ends = ends + self.body_own
-        plan = self.plan([e[0] for e in ends])
-        forces = np.array([e[1] for e in ends]).reshape(-1, 3)
-        stiffness = np.array([e[2] for e in ends]).reshape(-1, 3, 3)
-        if len(plan["dofs"]):
-            dofs, free = plan["dofs"], plan["free"]
+    def assemble(self, q, R, arms, index, forces, stiffness, cross, external, lines_only):
+        """``(G, K)``: the moving line ends at the points ``index`` with their forces ``(m, 3)`` and
+        stiffnesses ``(m, 3, 3)``, ``cross`` the coupling blocks ``(first dof, T_a, first dof, T_b,
+        K_ab, K_ba)``."""
+        plan = self.plan(index, not lines_only)
+        free = plan["free"]
+        if len(free):
+            G, K = np.zeros(self.n), np.zeros((self.n, self.n))
+            dofs = plan["dofs"]
             np.add.at(G, dofs, forces[free])
             np.add.at(K, (dofs[:, :, None], dofs[:, None, :]), stiffness[free])
-        on_body = plan["on_body"]
-        Gb, Kb = self._body_ends(plan, forces[on_body], stiffness[on_body], arms)
-        if not lines_only:
-            self._own(q, R, Gb, Kb)
-        self._scatter(G, K, Gb, Kb)
+        if not plan["all_on_body"]:
+            on_body = plan["on_body"]
+            forces, stiffness = forces[on_body], stiffness[on_body]
+        Gb, Kb = self._body_ends(plan, forces, stiffness, arms)
+        if not lines_only and len(self.start):  # heave restoring
+            Gb[:, 2] -= self.heave * q[self.start + 2]
+            Kb[:, 2, 2] += self.heave
+        if plan["one"]:  # one rigid body, no free point: its dofs are the system's
+            G, K = Gb[0], Kb[0]
+        else:
+            if not len(free):
+                G, K = np.zeros(self.n), np.zeros((self.n, self.n))
+            self._scatter(G, K, Gb, Kb)
         for sa, Ta, sb, Tb, K_ab, K_ba in cross:
             ka, kb = Ta.shape[1], Tb.shape[1]
             K[sa : sa + ka, sb : sb + kb] += Ta.T @ K_ab @ Tb
@@ -182,43 +233,26 @@ class Assembler:
         return G, K
 
     def _body_ends(self, plan, F, Kp, arms):
-        """The ends on bodies summed per body: ``(G (n, 6), K (n, 6, 6))``."""
-        nb, m = len(self.start), len(F)
+        """The ends on bodies (and the own loads, where ``plan`` has them) summed per body:
+        ``(G (n, 6), K (n, 6, 6))``, as ``T^T f`` and ``T^T K T - [f]x[r]x`` with
+        ``T = [I, -[r]x]`` (module docstring)."""
+        nb = len(self.start)
+        extra = plan["extra"]
+        if len(extra):
+            F = np.concatenate([F, extra])
+            Kp = np.concatenate([Kp, plan["extra_K"]])
+        m = len(F)
         if not m:
             return np.zeros((nb, 6)), np.zeros((nb, 6, 6))
         r = arms[plan["rows"]]
-        S, Sf = skews(r), skews(F)
-        g = np.empty((m, 6))
-        g[:, :3] = F
-        g[:, 3:] = (S @ F[:, :, None])[:, :, 0]  # r x f
-        KS = Kp @ S
-        k = np.empty((m, 6, 6))
-        k[:, :3, :3] = Kp
-        k[:, :3, 3:] = -KS
-        k[:, 3:, :3] = S @ Kp
-        k[:, 3:, 3:] = -Sf @ S - S @ KS
+        T = (r @ _MINUS_SKEW_T).reshape(m, 3, 6)
+        T[:, :, :3] = _EYE3
+        Tt = T.transpose(0, 2, 1)
+        g = (Tt @ F[:, :, None]).reshape(m, 6)  # (f, r x f)
+        k = Tt @ (Kp @ T)
+        k[:, 3:, 3:] -= (F @ _SKEW).reshape(m, 3, 3) @ (r @ _SKEW).reshape(m, 3, 3)
         onehot = plan["onehot"]
         return onehot @ g, (onehot @ k.reshape(m, 36)).reshape(nb, 6, 6)
-
-    def _own(self, q, R, Gb, Kb):
-        """The bodies' own loads and hydrostatic stiffness, added to ``Gb``, ``Kb``."""
-        if not len(self.start):
-            return
-        if len(self.bodies) <= 2:  # a body or two: their own methods, on floats and 3-vectors
-            for i, body in enumerate(self.bodies):
-                s, m = int(self.start[i]), body.n_dof
-                qb = q[s : s + m]
-                Gb[i, :m] += body.own_force(qb)
-                Kb[i, :m, :m] += body.own_stiffness(qb)
-            return
-        z = q[self.start + 2]
-        rG = np.einsum("nij,nj->ni", R, self.cg)
-        rM = np.einsum("nij,nj->ni", R, self.metacentre)
-        Gb[:, :3] += self.weight + self.buoyancy
-        Gb[:, 2] -= self.heave * z
-        Gb[:, 3:] += cross(rG, self.weight) + cross(rM, self.buoyancy)
-        Kb[:, 2, 2] += self.heave
-        Kb[:, 3:, 3:] -= skews(self.weight) @ skews(rG) + skews(self.buoyancy) @ skews(rM)
 
     def _scatter(self, G, K, Gb, Kb):
         if self.rigid.any():

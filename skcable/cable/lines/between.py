@@ -31,6 +31,7 @@ nothing ``K = [[K_bb, -K_bb], [-K_bb, K_bb]]``.
 from __future__ import annotations
 
 import math
+from functools import cached_property
 
 import numpy as np
 
@@ -65,12 +66,31 @@ class LineBetween:
 
     def __init__(self, line, a, b, plane, span, direction):
         self.line, self.a, self.b, self.plane = line, a, b, plane
-        self.span, self.dh, self.direction = span, float(b[2] - a[2]), direction
+        self.span, self.dh = span, float(b[2] - a[2])
+        self._e = (float(direction[0]), float(direction[1]))
         self.model, self.reason = plane.model, plane.reason
-        ex, ey = float(direction[0]), float(direction[1])
+
+    @cached_property
+    def direction(self) -> np.ndarray:
+        """The unit horizontal vector ``e`` from a towards b."""
+        return np.array([*self._e, 0.0])
+
+    @cached_property
+    def end_forces(self) -> np.ndarray:
+        """The line's forces on a and on b (N), global axes, (2, 3)."""
+        (ex, ey), plane = self._e, self.plane
         H_a, V_a, H_b, V_b = plane.H_A, plane.V_A, plane.H_B, plane.V_B
-        self.end_forces = np.array([[H_a * ex, H_a * ey, -V_a], [-H_b * ex, -H_b * ey, -V_b]])
-        self.tension_a, self.tension_b = plane.T_A, plane.T_B
+        return np.array([[H_a * ex, H_a * ey, -V_a], [-H_b * ex, -H_b * ey, -V_b]])
+
+    @cached_property
+    def tension_a(self) -> float:
+        """The tension at a (N): the norm of the end force (as the checks and tables give it)."""
+        return float(np.linalg.norm(self.end_forces[0]))
+
+    @cached_property
+    def tension_b(self) -> float:
+        """The tension at b (N): the norm of the end force."""
+        return float(np.linalg.norm(self.end_forces[1]))
 
     @property
     def solution(self):
@@ -79,12 +99,14 @@ class LineBetween:
 
     @property
     def max_end_tension(self) -> float:
-        return max(self.tension_a, self.tension_b)
+        """The larger of the end tensions (N), from the solution in the plane (``hypot(H, V)``: the
+        same to round-off as ``tension_a``, ``tension_b``)."""
+        return max(self.plane.T_A, self.plane.T_B)
 
     def block(self, i: int, j: int, J=None) -> np.ndarray:
         """``K_ij = -∂F_i/∂p_j`` (N/m), 3 × 3, for ends ``i, j`` in (0: a, 1: b)."""
         J = self.plane.jacobian() if J is None else J
-        ex, ey = float(self.direction[0]), float(self.direction[1])
+        ex, ey = self._e
         st, s, t = (1.0 if i == j else -1.0), (1.0, -1.0)[i], (-1.0, 1.0)[j]
         c = (self.plane.H_A, self.plane.H_B)[i] / self.span
         row_H, row_V = J[2 * i].tolist(), J[2 * i + 1].tolist()
@@ -102,19 +124,23 @@ class LineBetween:
         """``K_bb`` (N/m), 3 × 3: the block of an end b that moves with a fixed (`block`). Where the
         solution runs from a, from its 2 × 2 stiffness directly (the fairlead stiffness of
         `skcable.cable.line_3d`), else from the Jacobian."""
+        return np.array(self.b_values()[3:]).reshape(3, 3)
+
+    def b_values(self) -> list:
+        """The force on b (3) and `b_block` (3 × 3, by rows), flat: 12 floats (N, N/m)."""
+        ex, ey = self._e
+        force = [-self.plane.H_B * ex, -self.plane.H_B * ey, -self.plane.V_B]
         if self.plane.reversed:
-            return self.block(1, 1)
+            return [*force, *self.block(1, 1).ravel().tolist()]
         (k_hh, k_hv), (k_vh, k_vv) = np.asarray(self.plane.solution.stiffness(), dtype=float).tolist()
-        ex, ey = float(self.direction[0]), float(self.direction[1])
         exx, exy, eyy = ex * ex, ex * ey, ey * ey
         c = self.plane.H_B / self.span
-        return np.array(
-            [
-                [k_hh * exx + c * (1.0 - exx), k_hh * exy - c * exy, k_hv * ex],
-                [k_hh * exy - c * exy, k_hh * eyy + c * (1.0 - eyy), k_hv * ey],
-                [k_vh * ex, k_vh * ey, k_vv],
-            ]
-        )
+        return [
+            *force,
+            *(k_hh * exx + c * (1.0 - exx), k_hh * exy - c * exy, k_hv * ex),
+            *(k_hh * exy - c * exy, k_hh * eyy + c * (1.0 - eyy), k_hv * ey),
+            *(k_vh * ex, k_vh * ey, k_vv),
+        ]
 
     def stiffness(self) -> np.ndarray:
         """``K = -∂(F_a, F_b)/∂(a, b)`` (N/m), shape (6, 6): rows and columns ``(a_xyz, b_xyz)``, the
@@ -179,7 +205,7 @@ def solve_between(line, a, b, depth, start=None, bvp=None) -> LineBetween:
         )
     seabed = None if depth is None else -depth - az
     plane = solve_in_plane(line, r, dz, seabed=seabed, start=None if start is None else start.plane, bvp=bvp)
-    return LineBetween(line, a, b, plane, r, np.array([dx / r, dy / r, 0.0]))
+    return LineBetween(line, a, b, plane, r, (dx / r, dy / r))
 
 
 def line_between(line, a, b, *, depth=None, start=None) -> LineBetween:

@@ -10,7 +10,7 @@ From a `skcable.cable.MooringEquilibrium` (only its lines' end forces and tables
   distance from its lower end, and its angle above the horizontal at its lower end (the
   direction of its tension there: 0 where it rests on the seabed up to a touchdown);
 - **each segment with a minimum breaking load**: its largest tension ``T_max`` against its
-  ``MBL`` with a safety factor ``SF``: the utilisation :math:`SF\,T_\max/MBL` (at most 1 passes).
+  ``MBL`` with a safety factor ``SF``: the utilisation :math:`SF\,T_{\max}/MBL` (at most 1 passes).
   The factor is the design code's for the condition checked (intact or damaged, quasi-static or
   dynamic): give it; none is assumed.
 """

@@ -111,10 +111,10 @@ class _Newton:
     def increment(self, state) -> np.ndarray:
         G, _, lines, position = state
         jac = self.jacobian(state)
-        _, singular, vh = np.linalg.svd(jac / self.units[:, None] / self.units[None, :])
         self.lines = lines  # Newton steps from this state: the trials start from its lines
-        if not singular[-1] > _SINGULAR * singular[0]:
-            return self.slack_step(state, vh[singular <= _SINGULAR * singular[0]], jac)
+        null = _null_space(jac / self.units[:, None] / self.units[None, :])
+        if null is not None:
+            return self.slack_step(state, null, jac)
         dq = np.linalg.solve(jac, G)
         return self.capped(dq)
 
@@ -223,11 +223,21 @@ def _slack(line) -> bool:
 def check_unique(solve, state, history):
     """Raise `ConvergenceError` where the stiffness at the equilibrium ``state`` is singular: a
     direction neither the lines nor the hydrostatics restrain (the equilibrium is not unique)."""
-    jac = solve.jacobian(state)
-    _, singular, vh = np.linalg.svd(jac / solve.units[:, None] / solve.units[None, :])
-    if not singular[-1] > _SINGULAR * singular[0]:
-        free = vh[singular <= _SINGULAR * singular[0]]
+    free = _null_space(solve.jacobian(state) / solve.units[:, None] / solve.units[None, :])
+    if free is not None:
         raise ConvergenceError(_SINGULAR_MESSAGE.format(_named(solve.system, free)), history)
+
+
+def _null_space(scaled):
+    """The free directions of the scaled Jacobian (rows: its right singular vectors whose singular
+    values are below `_SINGULAR` of the largest), or None where there is none: the singular values
+    alone first (a third of a full SVD's work), the vectors only where some are that small."""
+    singular = np.linalg.svd(scaled, compute_uv=False)
+    if singular[-1] > _SINGULAR * singular[0]:
+        return None
+    _, singular, vh = np.linalg.svd(scaled)
+    free = vh[singular <= _SINGULAR * singular[0]]
+    return free if len(free) else None  # (the two at a tie of round-off: the full one decides)
 
 
 @functools.lru_cache(maxsize=1)

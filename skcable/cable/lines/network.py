@@ -112,6 +112,7 @@ class Layout:
                 self.point_start[p.index] = start
                 start += 3
         self.n_dof = start
+        self.units = None  # the dofs' consistent units (`MooringSystem.dof_units`), once asked
         self.body_of = {id(b): i for i, b in enumerate(self.bodies)}
         # per body: its points (indices) and their positions in body axes
         self.body_points = [[p.index for p in self.points if p.body is b] for b in self.bodies]

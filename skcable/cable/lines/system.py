@@ -148,6 +148,7 @@ class MooringSystem:
         self.rho, self.g = scalar("rho", positive("rho", rho)), scalar("g", positive("g", g))
         self.bodies, self.points, self.mooring_lines = [], [], []
         self._body_positions, self._layout, self.shortcut = [], None, False
+        self._cold = None  # the lines last solved with no start: (layout, dofs, (line, model) pairs, lines)
         if body is None and lines is None and anchors is None:
             return
         body, lines, anchors = _shortcut_parts(body, lines, anchors)
@@ -283,13 +284,14 @@ class MooringSystem:
     def frame(self, q) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
         """``(P, R, arms)`` at the dofs ``q``: every point's global position ``(n, 3)`` (m), the
         bodies' rotation matrices ``(n_bodies, 3, 3)`` and the arms (global axes) of the bodies'
-        points."""
+        points, then of each body's centre of gravity and metacentre (`Assembler.body_arms`)."""
         layout = self.layout
         xyz, R = self._assembler.frames(q)
         arms = self._assembler.body_arms(R)
         P = layout.fixed_positions.copy()
-        if len(arms):
-            P[self._assembler.body_point_index] = xyz[self._assembler.body_point_owner] + arms
+        index = self._assembler.body_point_index
+        if len(index):
+            P[index] = xyz[self._assembler.body_point_owner] + arms[: len(index)]
         if layout.free.size:
             P[layout.free] = q[layout.free_starts[:, None] + np.arange(3)]
         return P, R, arms
@@ -410,22 +412,41 @@ class MooringSystem:
         ``lines_only``: ``G`` and ``K`` of the lines alone (no own loads, no external load)."""
         handles = self._active(without)
         P, R, arms = self.frame(q)
-        lines = self._solve_at(P, handles, start)
+        lines = self._solve_at(P, handles, self._remembered(q, handles) if start is None else start)
+        if start is None:
+            self._cold = (self._layout, q.copy(), [(h, h.model) for h in handles], lines)
         G, K = self.assemble(q, (R, arms), handles, lines, external, lines_only)
         return G, K, lines
+
+    def _remembered(self, q, handles):
+        """The lines last solved without a start, if that was at these very dofs ``q`` with these
+        lines (an equilibrium from rest, run again): their warm starts (Newton from a line's own
+        solution stops at once: the same solution). MoorPy's lines, likewise, start each solve
+        from their last forces (``HF0``, ``VF0``). None otherwise."""
+        cold = self._cold
+        if cold is None or cold[0] is not self._layout or not np.array_equal(cold[1], q):
+            return None
+        same = len(cold[2]) == len(handles) and all(
+            h is g and h.model is m for (g, m), h in zip(cold[2], handles, strict=True)
+        )
+        return cold[3] if same else None
 
     def assemble(self, q, frame, handles, lines, external, lines_only=False):
         """``(G, K)`` from the solved ``lines`` of ``handles`` at ``q``, ``frame`` the bodies' rotation
         matrices and their points' arms there (`frame`; module docstring)."""
         R, arms = frame
-        ends: list = []
+        index: list = []
+        values: list = []  # per moving end: its force (3) and its stiffness (3 x 3), flat
         cross: list = []
         for handle, line in zip(handles, lines, strict=True):
             if handle.managed:
-                _managed_ends(handle, line, ends, cross, self._assembler, arms)
+                _managed_ends(handle, line, index, values, cross, self._assembler, arms)
             elif handle.b.kind != "fixed":
-                ends.append((handle.b.index, line.force_on_fairlead, line.stiffness()))
-        return self._assembler.assemble(q, R, arms, ends, cross, external, lines_only)
+                index.append(handle.b.index)
+                values.append([*line.force_on_fairlead.tolist(), *line.stiffness().ravel().tolist()])
+        ends = np.array(values, dtype=float).reshape(-1, 12)
+        forces, stiffness = ends[:, :3], ends[:, 3:].reshape(-1, 3, 3)
+        return self._assembler.assemble(q, R, arms, index, forces, stiffness, cross, external, lines_only)
 
     def net_force(self, position, *, force=(0.0, 0.0, 0.0), moment=(0.0, 0.0, 0.0)) -> np.ndarray:
         """Net load on the dofs at ``position``: lines, own loads and the external ``force`` and
@@ -445,12 +466,14 @@ class MooringSystem:
         """Consistent units of the dofs: 1 for translations, a body's largest arm (at least 1 m) for
         its rotations."""
         layout = self.layout
-        units = np.ones(layout.n_dof)
-        for i, body in enumerate(self.bodies):
-            if body.n_dof == 6:
-                arm = max(1.0, float(np.abs(layout.local[i]).max())) if len(layout.local[i]) else 1.0
-                units[layout.body_start[i] + 3 : layout.body_start[i] + 6] = arm
-        return units
+        if layout.units is None:  # once per layout
+            units = np.ones(layout.n_dof)
+            for i, body in enumerate(self.bodies):
+                if body.n_dof == 6:
+                    arm = max(1.0, float(np.abs(layout.local[i]).max())) if len(layout.local[i]) else 1.0
+                    units[layout.body_start[i] + 3 : layout.body_start[i] + 6] = arm
+            layout.units = units
+        return layout.units.copy()
 
     def step_cap(self, q, without=()) -> np.ndarray:
         """The largest Newton step of each dof: a quarter of the shortest horizontal span of the lines
@@ -458,16 +481,15 @@ class MooringSystem:
         layout = self.layout
         P = self.frame(q)[0]
         handles = self._active(without)
-        a = np.array([h.a.index for h in handles], dtype=int)
-        b = np.array([h.b.index for h in handles], dtype=int)
-        spans = np.hypot(*(P[b] - P[a])[:, :2].T) if len(handles) else np.ones(1)
+        ends = np.array([[h.a.index, h.b.index] for h in handles], dtype=int).reshape(-1, 2)
+        spans = np.hypot(*(P[ends[:, 1]] - P[ends[:, 0]])[:, :2].T) if len(handles) else np.ones(1)
         starts = self._assembler.group_start  # each point's body or free point: its first dof (-1: fixed)
         shortest = np.full(layout.n_dof, np.inf)
-        for ends in (a, b):
-            moving = starts[ends] >= 0
-            np.minimum.at(shortest, starts[ends][moving], spans[moving])
+        at = starts[ends]  # (lines, 2): the first dof of each end's body or point
+        moving = at >= 0
+        np.minimum.at(shortest, at[moving], np.broadcast_to(spans[:, None], at.shape)[moving])
         cap = np.full(layout.n_dof, 0.2)
-        for s in np.unique(starts[starts >= 0]):
+        for s in self._assembler.groups:
             cap[s : s + 3] = 0.25 * (shortest[s] if np.isfinite(shortest[s]) else spans.max())
         return cap
 
@@ -476,20 +498,16 @@ class MooringSystem:
         external forces."""
         self.layout  # noqa: B018 - builds the assembler
         assembler = self._assembler
-        starts = np.unique(assembler.group_start[assembler.group_start >= 0])
-        pushed = float(np.linalg.norm(external[starts[:, None] + np.arange(3)], axis=1).max(initial=0.0))
+        pushed = float(np.linalg.norm(external[assembler.group_xyz], axis=1).max(initial=0.0))
         return max(assembler.own_scale, pushed)
 
     @staticmethod
     def tension_scale(lines) -> float:
         """The largest tension at a moving end of the lines (N)."""
-        return max(
-            (
-                line.max_end_tension if isinstance(line, LineBetween) else line.tension_at_fairlead
-                for line in lines
-            ),
-            default=0.0,
-        )
+        tensions = [
+            line.max_end_tension if type(line) is LineBetween else line.tension_at_fairlead for line in lines
+        ]
+        return max(tensions, default=0.0)
 
     def check(self, without=()):
         """Refuse a system that cannot be solved, naming the part: no body or free point, a free
@@ -634,18 +652,21 @@ class MooringSystem:
         )
 
 
-def _managed_ends(handle, line, ends, cross, assembler, arms):
-    """The ends of a `skcable.cable.Line` line that move, and their coupling where both do."""
+def _managed_ends(handle, line, index, values, cross, assembler, arms):
+    """The ends of a `skcable.cable.Line` line that move (their points into ``index``, their force and
+    stiffness, flat, into ``values``), and their coupling where both do."""
     moving = (handle.a.kind != "fixed", handle.b.kind != "fixed")
     if not any(moving):
         return
     if not moving[0]:  # the common case: an anchor and a moving fairlead
-        ends.append((handle.b.index, line.end_forces[1], line.b_block()))
+        index.append(handle.b.index)
+        values.append(line.b_values())
         return
     J = line.plane.jacobian()
     for i, p in enumerate((handle.a, handle.b)):
         if moving[i]:
-            ends.append((p.index, line.end_forces[i], line.block(i, i, J)))
+            index.append(p.index)
+            values.append([*line.end_forces[i].tolist(), *line.block(i, i, J).ravel().tolist()])
     if all(moving):
         (sa, Ta), (sb, Tb) = (_point_map(assembler, arms, p) for p in (handle.a, handle.b))
         cross.append((sa, Ta, sb, Tb, line.block(0, 1, J), line.block(1, 0, J)))
