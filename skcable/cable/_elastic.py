@@ -28,6 +28,7 @@ from skcable._checks import broadcast, float_range, positive, real, require
 from skcable._newton2 import solve2
 from skcable._xp import namespace
 from skcable.cable._catenary import finite_at, hanging
+from skcable.cable._extreme import outsized
 from skcable.cable._hanging import hanging_forces
 from skcable.cable._roots import find_root
 from skcable.cable._special import asinh_step, asinh_step_log, asinh_step_parts, sinhc_m1, sinhc_pair
@@ -449,13 +450,14 @@ def elastic_catenary(span, dh, w, EA, *, length):
     EA = positive("EA", EA)
     L0 = positive("length", length)
     broadcast(span=span, dh=dh, w=w, EA=EA, length=L0)
-    try:
-        H, V_A, history = _solve(span, dh, w, EA, L0)
-    except (OverflowError, ZeroDivisionError) as exc:
-        raise InputError("EA", f"the closure equations overflow for these data ({exc})") from exc
-    _plausible.stiffness(EA, w, L0)
-    with float_range("length", "a result"):
-        solution = ElasticCatenary(span, dh, w, EA, L0, H, V_A, ("length", L0))
-        if type(H) is float and type(V_A) is float and _checked_floats(solution):
-            return solution
-        return checked_closed_form(solution, "length", history)
+    with outsized(span=span, dh=dh, w=w, EA=EA, length=L0):  # a refusal inside names the outsized one
+        try:
+            H, V_A, history = _solve(span, dh, w, EA, L0)
+        except (OverflowError, ZeroDivisionError) as exc:
+            raise InputError("EA", f"the closure equations overflow for these data ({exc})") from exc
+        _plausible.stiffness(EA, w, L0)
+        with float_range("length", "a result"):
+            solution = ElasticCatenary(span, dh, w, EA, L0, H, V_A, ("length", L0))
+            if type(H) is float and type(V_A) is float and _checked_floats(solution):
+                return solution
+            return checked_closed_form(solution, "length", history)

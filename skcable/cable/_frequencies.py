@@ -53,6 +53,7 @@ from skcable._checks import TINY, exactly_one, positive, real, scalar, whole
 from skcable._eigen import BandPattern, dense, farthest_from_one, first_lobe_positive, lowest_modes
 from skcable._show import attributes, counted
 from skcable.cable._catenary import catenary
+from skcable.cable.conductors._inputs import blame_extreme
 from skcable.errors import ConvergenceError, InputError
 
 __all__ = ["NaturalFrequencies", "natural_frequencies", "irvine_frequencies"]
@@ -305,7 +306,8 @@ def natural_frequencies(span, dh, w, EA, *, H=None, sag=None, n_modes=6, g=9.81)
         raise InputError("n_modes", f"must be <= 60, got {n_modes}")
     name, value = exactly_one(H=H, sag=sag)
     given = {name: _scalar_positive(name, value)}
-    static = catenary(span, dh, w, **given)
+    with blame_extreme(span=span, dh=dh, w=w, EA=EA, g=g, **given):  # the outsized argument, if one is
+        static = catenary(span, dh, w, **given)
     H, sag = float(static.H), float(static.sag)
     irvine = _irvine(span, w, EA, H, n_modes, g, given)
     mesh = _unit_mesh(max(120, 24 * n_modes))

@@ -62,7 +62,7 @@ import numpy as np
 from skcable._checks import broadcast, nonnegative, real, scalar
 from skcable._show import attributes, counted
 from skcable.cable._state import change_of_state, thermal_catenary
-from skcable.cable.conductors._inputs import normal, renamed, thermal_factor
+from skcable.cable.conductors._inputs import blame_extreme, normal, renamed, thermal_factor
 from skcable.cable.conductors._lines import reference_state
 from skcable.errors import ConvergenceError, InputError
 from skcable.fe import newton
@@ -416,6 +416,14 @@ def tension_section(
     lam, weight = strings["insulator_length"], strings["insulator_weight"]
     w, t = normal("w", w), real("t", t)
     shape = broadcast(w=w, t=t)
+    given = dict(spans=spans, dh=dh, EA=EA, alpha=alpha, w0=w0, t0=t0, H0=H0, w=w, t=t)
+    with blame_extreme(**given, insulator_length=lam, insulator_weight=weight):  # the outsized one, if any
+        return _section(spans, dh, EA, alpha, w0, t0, H0, w, t, lam, weight, shape)
+
+
+def _section(spans, dh, EA, alpha, w0, t0, H0, w, t, lam, weight, shape) -> TensionSection:
+    """`tension_section` on checked arguments (``lam``, ``weight``: the strings, one per string)."""
+    n = spans.size
     w_all, t_all = (np.broadcast_to(v, shape).ravel() for v in (w, t))
     thermal_factor(alpha, t_all, t0)  # raises naming t
 

@@ -48,7 +48,7 @@ from skcable import _plausible
 from skcable._checks import broadcast, nonnegative, positive, real, scalar
 from skcable._show import attributes, counted, quantity
 from skcable.cable._elastic import elastic_catenary
-from skcable.cable.conductors._inputs import load_plane, normal, renamed, thermal_factor
+from skcable.cable.conductors._inputs import blame_extreme, load_plane, normal, renamed, thermal_factor
 from skcable.cable.conductors._parabola import parabola_states
 from skcable.cable.conductors._reference import reference_length
 from skcable.errors import ConvergenceError, InputError
@@ -250,7 +250,9 @@ def change_of_state(
     ------
     InputError
         A non-physical argument, both or neither of ``H0``, ``sag0``, an
-        unknown model, a thermal strain ``alpha (t - t0)`` outside (-1, 1).
+        unknown model, a thermal strain ``alpha (t - t0)`` outside (-1, 1). Where an
+        argument lies beyond any physical magnitude (beyond 1e±100), a refusal it causes in
+        the solvers names it (`skcable.cable.conductors` checks, `blame_extreme`).
     ConvergenceError
         A solver stopped (with its history).
     """
@@ -265,6 +267,13 @@ def change_of_state(
     w, t, wind = normal("w", w), real("t", t), nonnegative("wind", wind)
     shape = broadcast(w=w, t=t, wind=wind)
     w, t, wind = (np.array(np.broadcast_to(v, shape), dtype=float) for v in (w, t, wind))
+    given = dict(span=span, dh=dh, EA=EA, alpha=alpha, w0=w0, t0=t0, H0=H0, sag0=sag0, w=w, t=t, wind=wind)
+    with blame_extreme(**given):  # a refusal deep inside names an outsized argument, if one is
+        return _states(span, dh, EA, alpha, w0, t0, H0, sag0, w, t, wind, shape, lead, model)
+
+
+def _states(span, dh, EA, alpha, w0, t0, H0, sag0, w, t, wind, shape, lead, model) -> ChangeOfState:
+    """`change_of_state` on checked arguments (the states' arrays of ``shape``, the spans' ``lead``)."""
     k = thermal_factor(alpha, t, t0)
     if lead:
         from skcable.cable.conductors._lines import line_change_of_state

@@ -11,6 +11,7 @@ from __future__ import annotations
 import argparse
 import difflib
 import math
+from decimal import Decimal
 
 from skcable.cli._status import EXIT_USAGE
 
@@ -30,6 +31,29 @@ def _is_number(token: str) -> bool:
     return True
 
 
+def _scientific_negative(token: str) -> bool:
+    return token.startswith("-") and "e" in token.lower() and _is_number(token)
+
+
+def plain_negatives(args: list[str]) -> list[str]:
+    """``args`` with each negative number in scientific notation (``-1.5e-05``, the way Python
+    prints small floats) that argparse would take for an unknown flag (before Python 3.13: its
+    error is "expected one argument") written as the same decimal number in positional notation
+    (``-0.000015``: exact, the same float), or, where that is no finite float, joined to the
+    flag before it (``--dh=-1e400``), so that the flag's own check refuses it by name."""
+    out: list[str] = []
+    for token in args:
+        if not _scientific_negative(token):
+            out.append(token)
+        elif math.isfinite(float(token)):
+            out.append(format(Decimal(token), "f"))
+        elif out and out[-1].startswith("--") and "=" not in out[-1] and not _is_number(out[-1]):
+            out[-1] = f"{out[-1]}={token}"
+        else:
+            out.append(token)
+    return out
+
+
 class Parser(argparse.ArgumentParser):
     """argparse with one-line errors (exit status 2, no usage dump), no abbreviated flags,
     and unknown flags refused before any other error, with the nearest known flag."""
@@ -42,7 +66,7 @@ class Parser(argparse.ArgumentParser):
         self.exit(EXIT_USAGE, f"skcable: error: {message}\n")
 
     def parse_known_args(self, args=None, namespace=None):
-        args = list(args) if args is not None else None
+        args = plain_negatives(list(args)) if args is not None else None
         if args is not None:
             self._refuse_unknown_flags(args)
         return super().parse_known_args(args, namespace)

@@ -21,6 +21,7 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
+from skcable._checks import whole
 from skcable.errors import InputError
 from skcable.io._atomic import atomic_path, writable_file
 
@@ -28,6 +29,9 @@ if TYPE_CHECKING:
     import meshio
 
 __all__ = ["cable_mesh", "funicular_mesh", "write", "write_series"]
+
+#: The most points of a profile (an integer ``n``): beyond, the arrays would not fit in memory.
+MAX_POINTS = 10**8
 
 
 def _polyline(points_2d) -> tuple[np.ndarray, list]:
@@ -54,15 +58,20 @@ def cable_mesh(solution, n: int = 201, *, point_data=None) -> meshio.Mesh:
     outputs (``samples["outputs"]``: their forces, ``<Term>_force_N_per_m``, and what else
     they name), and the user's ``point_data``: name -> values at the ``n`` points, or a
     callable of the samples dict returning them. Reads only ``solution.samples(n)`` (and
-    ``T_A``, to refuse an array of scenes).
+    ``T_A``, to refuse an array of scenes). ``n`` is an integer in ``[2, 10**8]``; anything
+    else, and a ``solution`` without ``samples``, raise `InputError` naming it.
     """
     import meshio
 
+    if not (callable(getattr(solution, "samples", None)) and hasattr(solution, "T_A")):
+        raise InputError(
+            "solution",
+            f"must be a cable solution with samples(n) (cable.catenary(...), ...), got {solution!r:.80}",
+        )
     if np.ndim(solution.T_A) != 0:
         raise InputError("solution", "write one scene at a time: this solution holds an array of scenes")
-    if int(n) < 2:
-        raise InputError("n", f"must be at least 2, got {n!r}")
-    samples = solution.samples(int(n))
+    n = whole("n", n, 2, MAX_POINTS)
+    samples = solution.samples(n)
     points, cells = _polyline(samples["xy"])
     angle = samples["angle"]
     zero = np.zeros_like(angle)

@@ -260,18 +260,57 @@ def solve_equilibrium(system, position, external, lines, tol, max_iter, without=
         return _solve_equilibrium(system, position, external, lines, tol, max_iter, without)
 
 
-def _solve_equilibrium(system, position, external, lines, tol, max_iter, without):
-    solve = _Newton(system, external, tol, max_iter, without)
+def _first_run(solve, position, lines):
+    """Newton from ``position``; where its line search finds no descent (the net load is not
+    smooth where lines lie slack in heaps: Newton's step from there need not descend), from the
+    start pushed along the net load (`_pushed_starts`), the first that converges."""
     try:
-        result = solve.run(position, lines)
+        return solve.run(position, lines)
     except ConvergenceError as err:
         if "no descent" not in str(err):
             raise
-        raise ConvergenceError(
-            "mooring equilibrium: the line search found no descent (the residual stalls: the loads "
-            "may exceed what the mooring can hold, or the start is too far)",
-            err.history,
-        ) from None
+        history = err.history
+    for start in _pushed_starts(solve, position):
+        try:
+            return solve.run(start)
+        except (ConvergenceError, InputError):
+            continue
+    raise ConvergenceError(
+        "mooring equilibrium: the line search found no descent, from the start nor from it pushed along "
+        "the net load (the residual stalls: the loads may exceed what the mooring can hold, or the start "
+        "is too far)",
+        history,
+    )
+
+
+#: How far `_pushed_starts` pushes the start along the net load: multiples of the step cap (a
+#: quarter of the shortest horizontal span of the lines, 0.2 rad).
+_PUSHES = (0.04, 0.2, 0.6, 1.2)
+
+
+def _pushed_starts(solve, position) -> list:
+    """The start moved horizontally along the net horizontal load on each body and point by
+    `_PUSHES` step caps: the lines slack in heaps at the start take up the load farther along
+    it (rotations and heave stay: the hydrostatics hold them)."""
+    try:
+        G = solve.assemble(position)[0]
+    except (ConvergenceError, InputError):
+        return []
+    layout = solve.system.layout
+    firsts = [*layout.body_start, *layout.point_start.values()]
+    horizontal = np.array([s + k for s in firsts for k in (0, 1)], dtype=int)
+    ray = np.zeros_like(position)
+    ray[horizontal] = G[horizontal]
+    if not np.linalg.norm(ray) > 0:
+        return []
+    cap = solve.step_cap(position)[horizontal]
+    size = float(np.min(cap / np.maximum(np.abs(ray[horizontal]), 1e-300)))
+    return [position + push * size * ray for push in _PUSHES]
+
+
+def _solve_equilibrium(system, position, external, lines, tol, max_iter, without):
+    solve = _Newton(system, external, tol, max_iter, without)
+    result = _first_run(solve, position, lines)
     check_unique(solve, result.state, result.history)
     eigenvalues = stiffness_eigenvalues(system, result.state[1])
     passed = []

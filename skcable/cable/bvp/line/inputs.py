@@ -26,6 +26,7 @@ __all__ = [
     "BVPSegment",
     "Scene",
     "newton_options_of",
+    "magnitudes",
     "point_loads_of",
     "scene",
     "segments_of",
@@ -58,13 +59,20 @@ class BVPSegment:
     EA: float | None = None
 
     def __post_init__(self):
-        object.__setattr__(self, "length", positive("length", self.length))
+        object.__setattr__(self, "length", _one("length", positive("length", self.length)))
         if not callable(self.w):
-            object.__setattr__(self, "w", real("w", self.w))
-            if isinstance(self.w, np.ndarray):
-                raise InputError("w", "one number per segment (or a callable of s)")
+            object.__setattr__(self, "w", _one("w", real("w", self.w), " (or a callable of s)"))
         if self.EA is not None:
-            object.__setattr__(self, "EA", positive("EA", self.EA))
+            EA = _one("EA", positive("EA", self.EA))
+            require("EA", EA < np.inf, "must be finite (None for an inextensible segment)", EA)
+            object.__setattr__(self, "EA", EA)
+
+
+def _one(name: str, value, alternative: str = ""):
+    """``value`` unless it is an array: a segment has one number of each (a list of EA is two)."""
+    if isinstance(value, np.ndarray):
+        raise InputError(name, f"one number per segment{alternative}, got an array of shape {value.shape}")
+    return value
 
 
 def segments_of(segments) -> list[BVPSegment]:
@@ -170,6 +178,21 @@ class Scene:
         return sum(seg.length for seg in self.segments)
 
 
+def magnitudes(checked: Scene) -> dict:
+    """The numbers of a checked scene by the argument names of `solve_line_bvp` (a segment's
+    fields under theirs): what `skcable.cable._extreme.outsized` judges the magnitude of."""
+    segs = checked.segments
+    return {
+        "span": checked.span,
+        "dh": checked.dh,
+        "length": [seg.length for seg in segs],
+        "w": [seg.w for seg in segs if not callable(seg.w)],
+        "EA": [seg.EA for seg in segs if seg.EA is not None],
+        "friction": checked.friction,
+        "point_loads": [value for load in checked.point_loads for value in load],
+    }
+
+
 def scene(
     span,
     dh,
@@ -187,8 +210,9 @@ def scene(
     """Every argument of `solve_line_bvp` checked, in its order; a `Scene` (``options`` checked by
     `newton_options_of` already)."""
     span, dh = positive("span", span), real("dh", dh)
-    if not isinstance(span, float) or not isinstance(dh, float):
-        raise InputError("span", "solve_line_bvp solves one scene: give scalar span and dh")
+    for name, value in (("span", span), ("dh", dh)):
+        if not isinstance(value, float):
+            raise InputError(name, "solve_line_bvp solves one scene: give scalar span and dh")
     segs = segments_of(segments)
     bed = seabed_of(seabed, seabed_slope, span)
     friction = nonnegative("friction", friction)

@@ -3,8 +3,16 @@
 from __future__ import annotations
 
 from skcable._checks import nonnegative, scalar, whole
+from skcable.cable._extreme import outsized
 from skcable.cable.bvp.line.driver import LineBVPSolver
-from skcable.cable.bvp.line.inputs import newton_options_of, point_loads_of, scene, segments_of, terms_of
+from skcable.cable.bvp.line.inputs import (
+    magnitudes,
+    newton_options_of,
+    point_loads_of,
+    scene,
+    segments_of,
+    terms_of,
+)
 from skcable.cable.bvp.line.solution import LineBVPSolution
 from skcable.errors import InputError
 
@@ -102,13 +110,18 @@ def solve_line_bvp(
     Raises
     ------
     InputError
-        Bad data, named; friction too weak to hold a slack stretch on a
+        Bad data, named; an argument beyond any physical magnitude (beyond 10**±100) is the one
+        named, whatever step inside trips on it; friction too weak to hold a slack stretch on a
         sloping seabed; a term that returns arrays of the wrong shape or non-finite
         values (``terms``); a callback that raised (``callback``, with the iteration).
+        ``point_loads``: a slack stretch near the anchor that ends at a point load resting on the
+        seabed with its friction only partly mobilised, a state this BVP does not model (its
+        slack stretch ends where the tension, not a node's friction, vanishes); `skcable.cable.Line`
+        solves it in closed form.
     ConvergenceError
         Newton stalled (``history`` holds the merit per iteration); the end
         of a slack stretch not found; the discrete line in compression (its
-        bends not resolved by the mesh).
+        bends not resolved by the mesh: the message says so, and more ``n_elements`` solve it).
 
     Notes
     -----
@@ -128,7 +141,8 @@ def solve_line_bvp(
         options=newton_options_of(options, rtol=rtol, max_iter=max_iter, **newton_options),
         terms=terms,
     )
-    return LineBVPSolver(checked).solve()
+    with outsized(**magnitudes(checked)):  # a refusal or a float failure inside names the outsized one
+        return LineBVPSolver(checked).solve()
 
 
 class LineBVP:
@@ -243,7 +257,8 @@ class LineBVP:
         solver = LineBVPSolver(checked)
         if start is not None and not (isinstance(start, LineBVPSolution) and start.model is self):
             raise InputError("start", f"must be a solution of this LineBVP, got {type(start).__name__}")
-        solution = solver.solve() if start is None else solver.solve_from(start)
+        with outsized(**magnitudes(checked)):  # as in solve_line_bvp
+            solution = solver.solve() if start is None else solver.solve_from(start)
         solution.model = self
         return solution
 

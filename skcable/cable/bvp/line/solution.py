@@ -139,10 +139,10 @@ class LineBVPSolution(ProfileMixin):
 
     @property
     def EA(self):
-        """The smallest axial stiffness of the segments (N; inf where all are inextensible):
+        """The smallest axial stiffness of the segments (N; None where all are inextensible):
         the line's largest strain is at most ``max(T_A, T_B)/EA``."""
         stiff = [seg.EA for seg in self.problem.segments if seg.EA is not None]
-        return float(min(stiff)) if stiff else float("inf")
+        return float(min(stiff)) if stiff else None
 
     @property
     def weight(self):

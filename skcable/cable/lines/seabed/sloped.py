@@ -14,6 +14,7 @@ import numpy as np
 
 from skcable._checks import nonnegative, positive, real, require
 from skcable.cable._elastic import elastic_catenary as free_elastic_catenary
+from skcable.cable._extreme import outsized
 from skcable.cable.lines.seabed.closure import hanging_length
 from skcable.cable.lines.seabed.slope_closure import sloped_closure
 from skcable.cable.lines.seabed.sloped_solution import SlopedSeabedCatenary
@@ -115,7 +116,15 @@ def sloped_seabed_catenary(span, dh, w, EA, *, length, seabed_slope, friction=0.
             raise InputError(name, "sloped_seabed_catenary solves one scene: give scalars")
     if not isinstance(mu, float):
         raise InputError("friction", "sloped_seabed_catenary solves one scene: give a scalar")
-    require("dh", dh > m * span, "must put B above the seabed (dh > span * seabed_slope)", dh)
+    with outsized(
+        span=span, dh=dh, w=w, EA=EA, length=L, seabed_slope=m, friction=mu
+    ):  # names the outsized one
+        require("dh", dh > m * span, "must put B above the seabed (dh > span * seabed_slope)", dh)
+        return _sloped(span, dh, w, EA, L, m, mu)
+
+
+def _sloped(span, dh, w, EA, L, m, mu):
+    """`sloped_seabed_catenary` on checked scalars."""
     free = free_elastic_catenary(span, dh, w, EA, length=L)
     if -free.V_A / free.H >= m:  # the free line leaves A at or above the slope: no contact
         return SlopedSeabedCatenary(span, dh, w, EA, L, m, mu, free.H, 0.0, [0.0], free=free)

@@ -60,11 +60,14 @@ def _left_run(s, x, H, V1, w, EA):
 
 def _catenary_y_terms(hang, s):
     """The stretch and inextensible terms (m) of the height of the elastic catenary ``hang``
-    at ``s``: ``s (w s/2 - V_A)/EA`` and ``(T(s) - T_A)/w``, written without cancellation."""
-    tv, tv_a = hang.w * s - hang.V_A, -hang.V_A
-    xp = namespace(s, tv)
-    rise = (tv - tv_a) * (tv + tv_a) / (xp.hypot(hang.H, tv) + hang.T_A)
-    return s * (0.5 * hang.w * s - hang.V_A) / hang.EA, rise / hang.w
+    at ``s``: ``s (w s/2 - V_A)/EA`` and ``(T(s) - T_A)/w``, written without cancellation:
+    ``(T(s)² - T_A²)/(w (T(s) + T_A)) = s (w s - 2 V_A)/(T(s) + T_A)``, the difference of the
+    vertical forces ``w s`` taken as it is, not as ``(w s - V_A) - (-V_A)`` (which keeps only the
+    digits of ``w s`` that ``V_A`` leaves, none on a taut line with ``|V_A| >> w L``)."""
+    ws = hang.w * s
+    xp = namespace(s, ws)
+    rise = s * (ws - 2.0 * hang.V_A) / (xp.hypot(hang.H, ws - hang.V_A) + hang.T_A)
+    return s * (0.5 * ws - hang.V_A) / hang.EA, rise
 
 
 class SeabedCatenary(CableSolution):

@@ -18,6 +18,7 @@ import numpy as np
 from skcable import _plausible
 from skcable._checks import broadcast, float_range, nonnegative, positive, real, require
 from skcable.cable._elastic import elastic_catenary as free_elastic_catenary
+from skcable.cable._extreme import outsized
 from skcable.cable.lines.seabed.closure import anchor_part, hanging_length
 from skcable.cable.lines.seabed.free import free_part, lifted
 from skcable.cable.lines.seabed.grounded import solve_grounded, solve_grounded_scalar
@@ -97,9 +98,11 @@ def elastic_catenary(span, dh, w, EA, *, length, seabed=None, friction=0.0):
     _plausible.stiffness(EA, w, L0)
     require("seabed", np.asarray(seabed) <= 0, "must be at or below the anchor (A at height 0)", seabed)
     require("dh", np.asarray(dh) > seabed, "must put B above the seabed", dh)
-    if all(isinstance(v, float) for v in (span, dh, w, EA, L0, seabed, friction)):
-        return _seabed_catenary_scalar(span, dh, w, EA, L0, seabed, friction)
-    return _seabed_catenary_array(span, dh, w, EA, L0, seabed, friction)
+    # a refusal or a float failure inside names the outsized argument, if one is
+    with outsized(span=span, dh=dh, w=w, EA=EA, length=L0, seabed=seabed, friction=friction):
+        if all(isinstance(v, float) for v in (span, dh, w, EA, L0, seabed, friction)):
+            return _seabed_catenary_scalar(span, dh, w, EA, L0, seabed, friction)
+        return _seabed_catenary_array(span, dh, w, EA, L0, seabed, friction)
 
 
 def _free_elements(span, dh, w, EA, L0, seabed, shape):
