@@ -755,8 +755,9 @@ def _H_on_arrays(span, dh, w, H):
             return None
     elif not (np.abs(dh) <= _STEEPEST * span).all():
         return None
-    a = H / w
-    a_lo, a_hi = (H_lo / w, H_hi / w) if isinstance(w, float) else _range(a)
+    with np.errstate(over="ignore"):  # an overflow of H/w is refused just below, by the general path
+        a = H / w
+        a_lo, a_hi = (H_lo / w, H_hi / w) if isinstance(w, float) else _range(a)
     if not (TINY_POSITIVE <= a_lo and a_hi <= _MAX_FLOAT):
         return None
     if not (_Z_MIN <= span_lo / a_hi * 0.5 and span_hi / a_lo * 0.5 <= _Z_LIMIT):
@@ -855,7 +856,8 @@ def catenary(span, dh, w, *, length=None, sag=None, H=None, low=None, T_max=None
         if name == "length":
             z, history = _z_from_length(span, dh, value)
         elif name == "H":
-            a = value / w
+            with np.errstate(over="ignore"):  # H/w beyond the float range: refused by the z checks
+                a = value / w
             within("H", a, TINY_POSITIVE, math.inf, "is so small relative to w that H/w underflows", value)
             z = span / a
             z *= 0.5  # = 0.5 * span / a: halving is exact
