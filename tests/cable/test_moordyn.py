@@ -194,3 +194,41 @@ def test_what_moordyn_cannot_take_is_refused(tmp_path):
     with pytest.raises(InputError) as err:
         cable.write_moordyn(bare, tmp_path / "y.dat")  # no diameter
     assert err.value.argument == "diameter"
+
+
+def test_drag_coefficients_written_on_moordyn_areas(tmp_path):
+    """A segment's drag coefficients reach the file as MoorDyn defines them: ``Cd`` on the frontal
+    area d l (as ``cd_normal``), ``CdAx`` on the surface π d l (MoorPy's line.py applies
+    ``½ ρ CdAx π d |u_t| u_t``), so that MoorPy's tangential drag per length is ours."""
+    moorpy = pytest.importorskip("moorpy")
+    system = cable.MooringSystem(depth=100.0)
+    seg = cable.Segment(110.0, 100.0, 1e8, diameter=0.05, cd_normal=1.2, cd_tangential=0.3)
+    a, b = system.add_point([100, 0, -100.0], fixed=True), system.add_point([0, 0, -10.0], fixed=True)
+    system.add_line(cable.Line([seg]), a, b)
+    ms = moorpy.System(file=str(cable.write_moordyn(system, tmp_path / "d.dat")))
+    kind = ms.lineList[0].type
+    rho, d, u = 1025.0, 0.05, 0.7  # a current of 0.7 m/s along the line
+    assert kind["Cd"] == 1.2
+    assert 0.5 * rho * kind["CdAx"] * np.pi * d * u * u == pytest.approx(
+        0.5 * rho * 0.3 * d * u * u, rel=1e-15
+    )
+
+
+def test_a_line_in_the_sea_is_not_written(tmp_path):
+    """What the file cannot hold with a line (its current, a nonlinear EA) is refused by name,
+    not dropped."""
+    seg = cable.Segment(850.0, 2456.82, 1.2326e9, diameter=0.12, cd_normal=1.2)
+    anchors = np.array([[800.0, 0.0, -200.0], [-400.0, 692.8, -200.0], [-400.0, -692.8, -200.0]])
+    fair = 20.0 * anchors / 800.0 * np.array([1.0, 1.0, 0.0]) + np.array([0.0, 0.0, -14.0])
+    body = cable.RigidBody(fairleads=fair, mass=8e6, volume=8.2e3, center_of_gravity=(0, 0, -5))
+    for line in (
+        cable.Line([seg], current=(0.5, 0.0)),
+        cable.Line(
+            [cable.Segment(850.0, 2456.82, cable.axial.StrainTable([0.0, 0.01, 0.02], [0.0, 1e7, 3e7]), diameter=0.12)]
+        ),
+    ):
+        system = cable.MooringSystem(body, [line] * 3, anchors, depth=200.0)
+        with pytest.raises(InputError) as err:
+            cable.write_moordyn(system, tmp_path / "s.dat")
+        assert err.value.argument == "lines"
+        assert not (tmp_path / "s.dat").exists()

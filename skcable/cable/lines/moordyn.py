@@ -382,6 +382,19 @@ def _fmt(value) -> str:
     return repr(float(value))
 
 
+def _default_columns(segment) -> list[str]:
+    """``BA/-zeta EI Cd Ca CdAx CaAx`` of a segment: MoorDyn's usual damping and added mass, the
+    segment's drag coefficients where it has them (``Cd`` on the frontal area ``d l`` as
+    `skcable.cable.Segment`'s ``cd_normal``; ``CdAx`` on the surface ``π d l``, so that
+    ``CdAx = cd_tangential/π``: MoorDyn's and MoorPy's tangential drag ``½ ρ CdAx π d |u_t| u_t``),
+    else MoorDyn's chain defaults (1.6, 0.05)."""
+    if segment.cd_normal > 0 or segment.cd_tangential > 0:
+        cd, cd_ax = _fmt(segment.cd_normal), _fmt(segment.cd_tangential / math.pi)
+    else:
+        cd, cd_ax = "1.6", "0.05"
+    return ["-1", "0", cd, "1", cd_ax, "0.5"]
+
+
 class _Writer:
     """The tables of a MoorDyn v2 file from a system (see `write_moordyn`)."""
 
@@ -405,15 +418,13 @@ class _Writer:
             raise InputError("diameter", f"{segment!r} has no diameter: give Segment(diameter=) or diameter=")
         system = self.system
         mass = segment.w / system.g + system.rho * math.pi / 4.0 * d * d
-        key = (segment.w, segment.EA, d)
+        key = (segment.w, segment.EA, d, segment.cd_normal, segment.cd_tangential)
         if key not in self.types:
             raw = self.model.line_types.get(hint)
             name = (
                 hint if raw is not None and hint not in self.types.values() else f"type{len(self.types) + 1}"
             )
-            rest = (
-                list(raw[3]) if raw is not None and name == hint else ["-1", "0", "1.6", "1", "0.05", "0.5"]
-            )
+            rest = list(raw[3]) if raw is not None and name == hint else _default_columns(segment)
             EA_text = raw[2] if raw is not None and name == hint else _fmt(segment.EA)
             self.types[key] = name
             self.type_rows.append([name, _fmt(d), _fmt(mass), EA_text, *rest])
@@ -478,6 +489,14 @@ class _Writer:
             line = handle.model
             if not isinstance(line, Line):
                 raise InputError("lines", f"line {k} is a {type(line).__name__}: only cable.Line is written")
+            if line.in_space is not None or line.nonlinear:
+                what = line.in_space[0] if line.in_space is not None else "EA (a nonlinear axial law)"
+                raise InputError(
+                    "lines",
+                    f"line {k} has a {what}, which a MoorDyn v2 file does not hold with the line "
+                    "(its LINE TYPES take one constant EA; a current or a bathymetry goes in files of "
+                    "their own): not written",
+                )
             a, b = system.point_position(handle.a), system.point_position(handle.b)
             s = line.arrays.s_joint / line.length
             joints = [ids[handle.a.index]]
@@ -576,7 +595,9 @@ def write_moordyn(model, path, *, num_segs: int = 20, diameter=None, options=Non
     one; the mass per length is set so that the weight in water is the segment's). ``options``:
     more MoorDyn options ``{key: value}``. Refuses what MoorDyn does not take: a body with a
     waterplane or a metacentre, a point with a constant force, another line model than
-    `skcable.cable.Line`, an unknown option."""
+    `skcable.cable.Line`, a line in a current, on a bathymetry or with a nonlinear axial law, an
+    unknown option. A segment's drag coefficients become the type's ``Cd`` and ``CdAx``
+    (``cd_tangential/π``: MoorDyn's axial drag acts on the surface ``π d l``)."""
     from skcable.io._atomic import write_text
 
     return write_text(Path(path), moordyn_text(model, num_segs=num_segs, diameter=diameter, options=options))
