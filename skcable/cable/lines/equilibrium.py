@@ -5,7 +5,9 @@ body (`skcable.cable.lines.system`) vanishes at equilibrium. Newton's method run
 analytic Jacobian :math:`\partial\mathbf G/\partial\mathbf q = -K\,T` (``K`` the stiffness of the
 mooring system and the body, ``T`` the map of Euler-angle increments to rotation vectors),
 each step capped at a quarter of the shortest anchor radius and 0.2 rad, backtracking on
-the scaled residual (`skcable.fe.newton`).
+the net load over a scale that holds for the solve (the body's loads and the largest line
+tension of the iterates so far), converged where the net load over the state's own scale (its
+line tension, at least the body's loads) is below ``tol`` (`skcable.fe.newton`).
 
 **Slack lines.** Where the lines lie slack on the seabed (their slack in a heap, ``H = 0``)
 the stiffness has no horizontal term: :math:`K` is singular and Newton has no step. The
@@ -286,7 +288,10 @@ def solve_equilibrium(system, position, external, lines, tol, max_iter, without=
 def _first_run(solve, position, lines):
     """Newton from ``position``; where its line search finds no descent (the net load is not
     smooth where lines lie slack in heaps: Newton's step from there need not descend), from the
-    start pushed along the net load (`_pushed_starts`), the first that converges."""
+    start pushed along the net load (`_pushed_starts`), the first that converges; last, from
+    ``position`` with the restrained directions balanced before the free ones are pushed
+    (`_Newton.slack_step`: lines hanging vertically leave x, y and yaw free while roll and pitch
+    are unbalanced, and the push along the free directions found no descent)."""
     try:
         return solve.run(position, lines)
     except ConvergenceError as err:

@@ -12,10 +12,9 @@ descent, stagnation) with the line on the seabed, `frozen_steps` goes on from wh
 with the active set held: a node on the seabed with no push (``λ = g = 0``, a touchdown at a
 node) makes the semismooth Newton cycle between two active sets (the max-norm merit refuses
 both steps), and one of them, held, is a smooth system whose solution meets the contact
-conditions to ``tol``. ``callback(iteration, residual_norm,
-step_norm)`` sees every step of the three, numbered from 1 in each solve (the fallback starts
-again from the start); an exception it raises stops the solve as an `skcable.InputError` naming
-``callback`` and the iteration.
+conditions to ``tol``. ``callback(iteration, residual_norm, step_norm)`` sees every step of
+them all, numbered from 1 in each solve (the fallback starts again from the start); an exception
+it raises stops the solve as an `skcable.InputError` naming ``callback`` and the iteration.
 """
 
 from __future__ import annotations
