@@ -12,7 +12,9 @@ r"""The strategy that takes a line in space from its closed-form start to the co
    few nodes per Newton iteration, so a fine mesh does not find its contact set from the start).
 4. **Fitting** (`LineBVP3DSolver.fitted`): a node at the touchdown and the landing the balance of
    forces gives (`skcable.cable.bvp.line3d.fitting`), ``fit_touchdown`` passes while they move
-   more than 1e-9 of the length.
+   more than 1e-9 of the length. A warm start (`LineBVP3DSolver.solve` from a solution at
+   nearby ends) keeps its start's nodes: where the touchdown has hardly moved, one pass finds
+   it settled and the first solve is the last.
 5. **Checks** (`LineBVP3DSolver.checked`): every number finite, the line not in compression
    (a slack stretch on the seabed near the anchor is not modelled in 3-D), and its equilibrium
    residual within its bound (`skcable.cable.bvp.line3d.solution.LineBVP3DSolution.check`).
@@ -57,8 +59,9 @@ class LineBVP3DSolver:
         ends, moved to these) where given, from scratch where that fails."""
         solved = None
         if start is not None:
+            problem = self.problem(self.scene.n_elements, start.problem.fitted)
             try:
-                solved = self.run(self.problem(self.scene.n_elements), self.moved(start))
+                solved = self.run(problem, self.moved(start, problem))
             except ConvergenceError:
                 solved = None
         if solved is None:
@@ -67,10 +70,9 @@ class LineBVP3DSolver:
             solved = self.fitted(solved)
         return self.checked(solved)
 
-    def moved(self, start: LineBVP3DSolution) -> np.ndarray:
-        """``start``'s line on this scene's mesh, moved to the new ends in proportion to the arc
+    def moved(self, start: LineBVP3DSolution, problem: LineProblem3D) -> np.ndarray:
+        """``start``'s line on ``problem``'s mesh, moved to the new ends in proportion to the arc
         length."""
-        problem = self.problem(self.scene.n_elements)
         z = restart(start.problem, start.dofs, problem)
         N, share = problem.N, problem.basis.doflocs[0] / problem.L
         move_a, move_b = self.scene.anchor - start.anchor, self.scene.fairlead - start.fairlead
@@ -128,14 +130,16 @@ class LineBVP3DSolver:
         return solved
 
     def fitted(self, solved) -> Solved:
-        """Nodes at the touchdown and the landing, moved until they settle (module docstring, 4)."""
-        L, placed = solved.problem.L, list[float]()
+        """Nodes at the touchdown and the landing, moved until they settle (module docstring, 4):
+        from the nodes ``solved``'s mesh has (a warm start's: its start's touchdown), none
+        left where the line no longer touches."""
+        L, placed = solved.problem.L, list(solved.problem.fitted)
         for _ in range(self.scene.fit_touchdown):
             points = self.edges(solved)
             settled = len(points) == len(placed) and all(
                 abs(a - b) <= 1e-9 * L for a, b in zip(points, placed, strict=True)
             )
-            if not points or settled:
+            if settled:
                 break
             solved, placed = self.refit(solved, points), points
         return solved

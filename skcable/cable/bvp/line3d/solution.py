@@ -174,7 +174,7 @@ class LineBVP3DSolution:
         element containing ``s``; `T_A` and `T_B` (the supports' reactions) are the accurate
         end values."""
         s = self._s(s)
-        T = self.problem.tbasis.probes(s.reshape(1, -1)) @ self.dofs[3 * self.problem.N :]
+        T = self.problem.tension_at(self.dofs, s)
         return T.reshape(s.shape)[()]
 
     def tangent(self, s) -> np.ndarray:
