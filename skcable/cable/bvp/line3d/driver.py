@@ -71,13 +71,15 @@ class LineBVP3DSolver:
         return self.checked(solved)
 
     def moved(self, start: LineBVP3DSolution, problem: LineProblem3D) -> np.ndarray:
-        """``start``'s line on ``problem``'s mesh, moved to the new ends in proportion to the arc
-        length."""
-        z = restart(start.problem, start.dofs, problem)
-        N, share = problem.N, problem.basis.doflocs[0] / problem.L
+        """``start``'s line on ``problem``'s mesh, moved to the new ends: along its tangent
+        ``∂z/∂r_B`` (`LineBVP3DSolution.sensitivity`, the active set held) for the fairlead's
+        move, in proportion to the arc length for the anchor's."""
         move_a, move_b = self.scene.anchor - start.anchor, self.scene.fairlead - start.fairlead
+        z = start.dofs + start.sensitivity[2] @ move_b if np.any(move_b) else start.dofs
+        z = restart(start.problem, z, problem)
+        N, share = problem.N, problem.basis.doflocs[0] / problem.L
         for k, (end_a, end_b) in enumerate(zip(problem.anchor, problem.fairlead, strict=True)):
-            z[k * N : (k + 1) * N] += move_a[k] * (1.0 - share) + move_b[k] * share
+            z[k * N : (k + 1) * N] += move_a[k] * (1.0 - share)
             z[k * N + problem.end_a], z[k * N + problem.end_b] = end_a, end_b
         return z
 
