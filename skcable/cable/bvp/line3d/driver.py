@@ -51,8 +51,8 @@ class LineBVP3DSolver:
         """The discrete line on ``n`` elements, nodes at ``fitted``, the drag times ``drag_scale``."""
         return LineProblem3D(self.scene, n, fitted=fitted, drag_scale=drag_scale)
 
-    def run(self, problem, z0) -> Solved:
-        return solve_on(problem, z0, self.scene.rtol, self.scene.max_iter)
+    def run(self, problem, z0, near=False) -> Solved:
+        return solve_on(problem, z0, self.scene.rtol, self.scene.max_iter, near)
 
     def solve(self, start: LineBVP3DSolution | None = None) -> LineBVP3DSolution:
         """The line (module docstring); from ``start`` (a solution of the same line at other
@@ -61,7 +61,7 @@ class LineBVP3DSolver:
         if start is not None:
             problem = self.problem(self.scene.n_elements, start.problem.fitted)
             try:
-                solved = self.run(problem, self.moved(start, problem))
+                solved = self.run(problem, self.moved(start, problem), near=True)
             except ConvergenceError:
                 solved = None
         if solved is None:
@@ -160,7 +160,7 @@ class LineBVP3DSolver:
         n = self.scene.n_elements
         problem = self.problem(n, points)
         return first_success(
-            lambda: self.run(problem, restart(solved.problem, solved.z, problem)),
+            lambda: self.run(problem, restart(solved.problem, solved.z, problem), near=True),
             lambda: self.level(n, points),
         )
 
