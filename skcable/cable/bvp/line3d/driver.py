@@ -26,6 +26,7 @@ from __future__ import annotations
 
 import numpy as np
 
+from skcable.cable.bathymetry import OffGrid
 from skcable.cable.bvp.line.iterate import first_success
 from skcable.cable.bvp.line.mesh import COARSE, nested_sizes
 from skcable.cable.bvp.line3d.fitting import landing, touchdown
@@ -59,9 +60,8 @@ class LineBVP3DSolver:
         ends, moved to these) where given, from scratch where that fails."""
         solved = None
         if start is not None:
-            problem = self.problem(self.scene.n_elements, start.problem.fitted)
             try:
-                solved = self.run(problem, self.moved(start, problem), near=True)
+                solved = self.run(*self.warm(start), near=True)
             except ConvergenceError:
                 solved = None
         if solved is None:
@@ -70,15 +70,32 @@ class LineBVP3DSolver:
             solved = self.fitted(solved)
         return self.checked(solved)
 
-    def moved(self, start: LineBVP3DSolution, problem: LineProblem3D) -> np.ndarray:
-        """``start``'s line on ``problem``'s mesh, moved to the new ends: along its tangent
-        ``∂z/∂r_B`` (`LineBVP3DSolution.sensitivity`, the active set held) for the fairlead's
-        move, in proportion to the arc length for the anchor's."""
-        move_a, move_b = self.scene.anchor - start.anchor, self.scene.fairlead - start.fairlead
-        z = start.dofs + start.sensitivity[2] @ move_b if np.any(move_b) else start.dofs
-        z = restart(start.problem, z, problem)
+    def warm(self, start: LineBVP3DSolution) -> tuple[LineProblem3D, np.ndarray]:
+        """The problem and the first iterate of a warm start: ``start``'s line moved (`moved`), on
+        a mesh with nodes at the touchdown and the landing of the moved line (the balance of
+        `skcable.cable.bvp.line3d.fitting` on it, its supports' reactions moved with it), else at
+        ``start``'s."""
+        z, points = self.moved(start), list(start.problem.fitted)
+        if points and self.scene.fit_touchdown:
+            try:
+                guess = self.edges(Solved(start.problem, z, [], start.problem.assemble(z)))
+            except OffGrid:  # the moved line off the seabed's grid: keep the start's nodes
+                guess = []
+            points = guess if len(guess) == len(points) else points
+        problem = self.problem(self.scene.n_elements, points)
+        if problem.fitted != start.problem.fitted:
+            z = restart(start.problem, z, problem)
+        return problem, z
+
+    def moved(self, start: LineBVP3DSolution) -> np.ndarray:
+        """``start``'s line on its mesh, moved to the new ends: along its tangent ``∂z/∂r_B``
+        (`LineBVP3DSolution.sensitivity`, the active set held) for the fairlead's move, in
+        proportion to the arc length for the anchor's."""
+        problem, anchor, fairlead = start.problem, self.scene.anchor, self.scene.fairlead
+        move_a, move_b = anchor - start.anchor, fairlead - start.fairlead
+        z = start.dofs + start.sensitivity[2] @ move_b if np.any(move_b) else start.dofs.copy()
         N, share = problem.N, problem.basis.doflocs[0] / problem.L
-        for k, (end_a, end_b) in enumerate(zip(problem.anchor, problem.fairlead, strict=True)):
+        for k, (end_a, end_b) in enumerate(zip(anchor, fairlead, strict=True)):
             z[k * N : (k + 1) * N] += move_a[k] * (1.0 - share)
             z[k * N + problem.end_a], z[k * N + problem.end_b] = end_a, end_b
         return z
