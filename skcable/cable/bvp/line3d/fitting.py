@@ -14,7 +14,9 @@ loads) is tangent to the seabed where the line leaves it, ``n(r(s))·F(s) = 0`` 
 seabed is the same balance of the part ``[0, s]``, ``F(s) = −S_A − ∫_0^s f ds + Σ_{s_k < s} P_k
 e_z``. The integrals are the element integrals of the solution's forces and, in the element of
 ``s``, a Gauss–Legendre rule of `ORDER` points; the root is bracketed between the mesh nodes
-around the last (first) node on the seabed and found by Brent's method.
+around the last (first) node on the seabed and found as the root of the balance's Chebyshev
+interpolant over the element, kept where the balance changes sign within 1e-13 of the length of
+it (else by Brent's method to that tolerance).
 """
 
 from __future__ import annotations
@@ -26,6 +28,8 @@ __all__ = ["ORDER", "landing", "touchdown"]
 
 #: Gauss–Legendre points of the integral over the part of an element
 ORDER = 8
+#: Chebyshev points of the interpolant whose root starts the touchdown's search
+SAMPLES = 12
 _X, _W = np.polynomial.legendre.leggauss(ORDER)
 
 
@@ -93,7 +97,27 @@ def _root(balance, near, nodes, length):
     if not change.size:
         return None
     k = int(change[np.argmin(np.abs(grid[change] - near))])
-    return float(brentq(balance, grid[k], grid[k + 1], xtol=1e-13 * length))
+    found = _interpolated_root(balance, grid[k], grid[k + 1], 1e-13 * length)
+    return float(brentq(balance, grid[k], grid[k + 1], xtol=1e-13 * length)) if found is None else found
+
+
+def _interpolated_root(balance, a, b, xtol):
+    """The root in ``[a, b]`` of the Chebyshev interpolant of ``balance`` at `SAMPLES` points
+    (one evaluation), kept where ``balance`` changes sign within ``xtol`` of it (a second one)
+    and refined there by a secant step; None where it does not (a kink in the element: the
+    seabed's grid, a tabulated current), for Brent's method."""
+    x = a + (b - a) * 0.5 * (1.0 - np.cos(np.pi * (np.arange(SAMPLES) + 0.5) / SAMPLES))
+    roots = np.polynomial.Chebyshev.fit(x, balance.values(x), SAMPLES - 1, domain=[a, b]).roots()
+    real = roots.real[(np.abs(roots.imag) <= 1e-9 * (b - a)) & (roots.real >= a) & (roots.real <= b)]
+    if real.size != 1:
+        return None
+    lo, hi = max(a, real[0] - xtol), min(b, real[0] + xtol)
+    v_lo, v_hi = balance.values(np.array([lo, hi]))
+    if v_lo == 0.0 or v_hi == 0.0:
+        return float(lo if v_lo == 0.0 else hi)
+    if np.sign(v_lo) == np.sign(v_hi):
+        return None
+    return float(np.clip(lo - v_lo * (hi - lo) / (v_hi - v_lo), lo, hi))
 
 
 def touchdown(problem, z, state):
