@@ -88,7 +88,6 @@ def _count_line_solves(lines, call) -> int:
     counts = []
     originals = [line.staticSolve for line in lines]
     for line, method in zip(lines, originals, strict=True):
-
         def counted(*args, _method=method, **kwargs):
             counts.append(1)
             return _method(*args, **kwargs)
@@ -217,55 +216,25 @@ def run(repeat: int) -> str:
         [
             "| task | skcable [ms] | MoorPy [ms] | ratio MoorPy/skcable |",
             "|---|---|---|---|",
-            row(
-                "one line between two points, forces and 3x3 stiffness, from the default start "
-                "(MoorPy: `staticSolve(reset=True)`)",
-                t_line,
-                t_line_mp_cold,
-            ),
-            row(
-                "the same, warm-started from the solution at a fairlead 1.1 m away (both codes "
-                "alternate between the two fairleads)",
-                t_line_near,
-                t_line_mp_near,
-            ),
+            row("one line between two points, forces and 3x3 stiffness, from the default start "
+                "(MoorPy: `staticSolve(reset=True)`)", t_line, t_line_mp_cold),
+            row("the same, warm-started from the solution at a fairlead 1.1 m away (both codes "
+                "alternate between the two fairleads)", t_line_near, t_line_mp_near),
             row("the same, warm-started from the solution at the same fairlead", t_line_same, t_line_mp),
             row("of which the 2-D line solve (`Line.solve`), from the default start", t_line_2d),
             row("of which the 2-D line solve, warm-started 1.1 m away", t_line_2d_warm),
-            row(
-                "`elastic_catenary(..., seabed=0)`, one scalar call (the default start of a "
-                "one-segment `Line`)",
-                t_catenary,
-            ),
-            row(
-                f"body equilibrium from rest (skcable: {iterations} Newton steps, {n_solves} line solves; "
-                f"MoorPy: {n_solves_mp} line solves)",
-                t_sys,
-                t_sys_mp,
-                2,
-            ),
-            row(
-                "the same, each line solved from its default start (a line model without `start=`)",
-                t_sys_cold,
-                t_sys_mp,
-                2,
-            ),
-            row(
-                "per line solve in the equilibrium loop: the equilibrium's time / its line solves",
-                per_line,
-                per_line_mp,
-            ),
-            row(
-                "per line solve in the equilibrium loop: its line solves and 3x3 stiffnesses replayed "
-                "alone, against MoorPy's warm-started line (third row)",
-                t_replay,
-                t_line_mp,
-            ),
-            row(
-                "analytic 6x6 stiffness (skcable re-solves the 3 lines; MoorPy reuses their stored 3x3)",
-                t_k,
-                t_k_mp,
-            ),
+            row("`elastic_catenary(..., seabed=0)`, one scalar call (the default start of a "
+                "one-segment `Line`)", t_catenary),
+            row(f"body equilibrium from rest (skcable: {iterations} Newton steps, {n_solves} line solves; "
+                f"MoorPy: {n_solves_mp} line solves)", t_sys, t_sys_mp, 2),
+            row("the same, each line solved from its default start (a line model without `start=`)",
+                t_sys_cold, t_sys_mp, 2),
+            row("per line solve in the equilibrium loop: the equilibrium's time / its line solves",
+                per_line, per_line_mp),
+            row("per line solve in the equilibrium loop: its line solves and 3x3 stiffnesses replayed "
+                "alone, against MoorPy's warm-started line (third row)", t_replay, t_line_mp),
+            row("analytic 6x6 stiffness (skcable re-solves the 3 lines; MoorPy reuses their stored 3x3)",
+                t_k, t_k_mp),
         ]
     )
     version = importlib.metadata.version("moorpy")
