@@ -63,7 +63,7 @@ def fairlead_stiffness_3d(solution, kind: str = "static") -> FairleadStiffness:
     if kind == "dynamic":
         K_B, K_A, _ = problem.end_sensitivity(problem.assemble(solution.dofs, dynamic=True))
     else:
-        K_B, K_A, _ = solution.sensitivity
+        K_B, K_A = (K.copy() for K in solution.sensitivity[:2])  # the solution keeps its own
     if not (np.all(np.isfinite(K_B)) and np.all(np.isfinite(K_A))):
         raise ConvergenceError("fairlead stiffness: non-finite sensitivities", solution.history)
     return FairleadStiffness(K_B, K_A, kind)
