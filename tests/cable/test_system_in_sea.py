@@ -28,8 +28,11 @@ FRICTION = 0.0
 HULL_LINE = 830.0  # semi-taut: the lines hang clear of the seabed
 
 
+MBL = 6e6
+
+
 def chain_segment(length=850.0):
-    return cable.Segment(length, 1000.0, 5e8, diameter=0.1, cd_normal=1.2, cd_tangential=0.1)
+    return cable.Segment(length, 1000.0, 5e8, mbl=MBL, diameter=0.1, cd_normal=1.2, cd_tangential=0.1)
 
 
 def anchors_at(radius, angles_deg, z=-DEPTH):
@@ -106,6 +109,10 @@ def test_checks_tables_and_vtk_show_the_model_that_ran(tmp_path):
     sea = eq.lines[2].sea
     assert float(eq.lines[2].T_of_s(0.0)) == float(sea.T_of_s(515.0))
     assert float(eq.lines[2].T_of_s(515.0)) == float(sea.T_of_s(0.0))
+    # the segment check of the leg's segment at the junction: its largest tension, that of the
+    # hanging chain's upper end, the junction's (to the BVP's tension field there)
+    row = eq.segment_checks(1.67).query("line == 2 and segment == 0").iloc[0]
+    assert abs(row["T_max"] - T_a) < 1e-5 * T_a and row["utilisation"] == 1.67 * row["T_max"] / MBL
     points, tension = eq.lines[2].profile_with_tension(11)
     np.testing.assert_allclose(points[0], eq.points[junction.index].position, atol=1e-9)
     np.testing.assert_allclose(points[-1], (-800.0, 0.0, -DEPTH), atol=1e-9)
