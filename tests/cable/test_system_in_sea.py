@@ -61,6 +61,16 @@ def hull_and_junction():
     return system, hull, junction, (anchors, np.array([-800.0, 0.0, -DEPTH]))
 
 
+LOAD = np.array([2e5, 5e4, 0.0])
+
+
+@pytest.fixture(scope="module")
+def solved():
+    """The hull and junction scene at equilibrium under ``LOAD`` on the hull (solved once)."""
+    system, hull, junction, ends = hull_and_junction()
+    return system, hull, junction, ends, system.equilibrium(force={hull: LOAD})
+
+
 def _recounted_line(segments, anchor, end, seabed_height):
     """The line from ``anchor`` to ``end`` in the current, its seabed a float relative to the anchor:
     its force on ``end`` (N), by ``cable.line_3d``."""
@@ -68,10 +78,9 @@ def _recounted_line(segments, anchor, end, seabed_height):
     return cable.line_3d(line, anchor, end).force_on_fairlead
 
 
-def test_equilibrium_balances_each_body_and_free_point_recounted_by_line_3d():
-    system, hull, junction, (anchors, anchor3) = hull_and_junction()
-    external = np.array([2e5, 5e4, 0.0])
-    eq = system.equilibrium(force={hull: external})
+def test_equilibrium_balances_each_body_and_free_point_recounted_by_line_3d(solved):
+    system, hull, junction, (anchors, anchor3), eq = solved
+    external = LOAD
     x_hull, x_junction = eq.bodies[0].position, eq.points[junction.index].position
     on_hull = [_recounted_line([chain_segment(HULL_LINE)], a, x_hull, -DEPTH) for a in anchors]
     # the lower leg recounted from its anchor: its segments stated in reverse (the junction is its a)
@@ -91,9 +100,8 @@ def test_equilibrium_balances_each_body_and_free_point_recounted_by_line_3d():
     assert eq.lines[2].reversed and not eq.lines[0].reversed
 
 
-def test_checks_tables_and_vtk_show_the_model_that_ran(tmp_path):
-    system, hull, junction, _ = hull_and_junction()
-    eq = system.equilibrium(force={hull: (2e5, 5e4, 0.0)})
+def test_checks_tables_and_vtk_show_the_model_that_ran(solved, tmp_path):
+    system, hull, junction, _, eq = solved
     checks = eq.line_checks()
     assert list(checks["model"]) == ["3-D line BVP", "3-D line BVP", "3-D line BVP", "free"]
     assert list(checks["lower_end"])[:3] == ["a", "a", "b"]
@@ -145,10 +153,9 @@ def test_a_free_buoy_in_a_current_matches_the_shortcut_point_body():
     assert list(eq.line_checks()["model"]) == ["3-D line BVP", "closed form (axial laws)", "3-D line BVP"]
 
 
-def test_stiffness_matches_central_differences():
-    system, hull, junction, _ = hull_and_junction()
-    force = {hull: (2e5, 5e4, 0.0)}
-    eq = system.equilibrium(force=force)
+def test_stiffness_matches_central_differences(solved):
+    system, hull, junction, _, eq = solved
+    force = {hull: LOAD}
     q = eq.position + np.r_[2.0, -1.0, 0.1, 1.5, 0.5, -1.0]  # off equilibrium
     K = system.stiffness(q)
     numeric = _numeric(system, q, lambda x: system.net_force(x, force=force), h=(1e-3, 1e-6))
@@ -190,12 +197,11 @@ def test_a_line_in_the_sea_between_two_moving_points_is_refused_by_name():
     assert "current" in str(caught.value)
 
 
-def test_a_system_with_a_line_in_the_sea_pickles():
-    system, hull, junction, _ = hull_and_junction()
-    eq = system.equilibrium(force={hull: (2e5, 5e4, 0.0)})
+def test_a_system_with_a_line_in_the_sea_pickles(solved):
+    eq = solved[-1]
     copy = pickle.loads(pickle.dumps(eq))
     assert_same(eq.position, copy.position)
     for a, b in zip(eq.lines, copy.lines, strict=True):
         assert_same(a.end_forces, b.end_forces)
-    again = copy.system.equilibrium(force={copy.system.bodies[0]: (2e5, 5e4, 0.0)})
+    again = copy.system.equilibrium(force={copy.system.bodies[0]: LOAD}, start=copy)
     np.testing.assert_allclose(again.position, eq.position, rtol=0, atol=1e-9)
