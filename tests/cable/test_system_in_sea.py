@@ -205,3 +205,12 @@ def test_a_system_with_a_line_in_the_sea_pickles(solved):
         assert_same(a.end_forces, b.end_forces)
     again = copy.system.equilibrium(force={copy.system.bodies[0]: LOAD}, start=copy)
     np.testing.assert_allclose(again.position, eq.position, rtol=0, atol=1e-9)
+
+
+def test_a_copy_with_replaced_parts_keeps_its_lines_in_the_sea(solved):
+    system, hull, junction, _, eq = solved
+    other = system.replaced()  # as failure cases and design to a target build theirs
+    assert [h.sea is not None for h in other.mooring_lines] == [True, True, True, False]
+    lines = other.solve_lines(eq.position)
+    for a, b in zip(eq.lines, lines, strict=True):
+        np.testing.assert_allclose(b.end_forces, a.end_forces, rtol=0, atol=1e-6 * np.abs(a.end_forces).max())

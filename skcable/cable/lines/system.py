@@ -3,8 +3,11 @@ r"""A mooring system: bodies, points and lines, their net loads and stiffness.
 Points are fixed (anchors), free (three dofs, with their own weight, buoyancy and force) or
 fixed to a body; lines connect any two points (`skcable.cable.lines.network`). A
 `skcable.cable.Line` is solved over the system's flat seabed at ``z = -depth``, from whichever
-end is lower, with the model its position takes (`skcable.cable.lines.between`); any other line
-model is solved as given, its anchor A at the line's first point (`skcable.cable.line_3d`). The
+end is lower, with the model its position takes (`skcable.cable.lines.between`); a `Line` in the
+sea (a current, a `skcable.cable.bathymetry.Bathymetry`, a nonlinear axial law) from its fixed
+end, a or b, by the model `skcable.cable.line_3d` picks (`skcable.cable.lines.in_sea`), its
+force and 3 x 3 stiffness at its moving end entering the sums below as a one-end line's do; any
+other line model is solved as given, its anchor A at the line's first point. The
 one-body constructor of earlier releases, ``MooringSystem(body, lines, anchors)``, builds such a
 system: one body, an anchor per line, the fairleads on the body, each line solved as given.
 
