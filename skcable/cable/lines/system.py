@@ -242,7 +242,7 @@ class MooringSystem:
 
     def _add_line(self, model, a, b, managed):
         sea = None
-        if managed and (model.in_space is not None or model.nonlinear):
+        if managed and is_line(model) and (model.in_space is not None or model.nonlinear):
             sea, managed = self._sea_placement(model, a, b), False
         warm = managed or sea is not None or takes_start(model)
         handle = MooringLine(len(self.mooring_lines), model, a, b, managed, warm, sea)
