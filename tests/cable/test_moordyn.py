@@ -221,11 +221,10 @@ def test_a_line_in_the_sea_is_not_written(tmp_path):
     anchors = np.array([[800.0, 0.0, -200.0], [-400.0, 692.8, -200.0], [-400.0, -692.8, -200.0]])
     fair = 20.0 * anchors / 800.0 * np.array([1.0, 1.0, 0.0]) + np.array([0.0, 0.0, -14.0])
     body = cable.RigidBody(fairleads=fair, mass=8e6, volume=8.2e3, center_of_gravity=(0, 0, -5))
+    rope = cable.axial.StrainTable([0.0, 0.01, 0.02], [0.0, 1e7, 3e7])  # a nonlinear law
     for line in (
         cable.Line([seg], current=(0.5, 0.0)),
-        cable.Line(
-            [cable.Segment(850.0, 2456.82, cable.axial.StrainTable([0.0, 0.01, 0.02], [0.0, 1e7, 3e7]), diameter=0.12)]
-        ),
+        cable.Line([cable.Segment(850.0, 2456.82, rope, diameter=0.12)]),
     ):
         system = cable.MooringSystem(body, [line] * 3, anchors, depth=200.0)
         with pytest.raises(InputError) as err:

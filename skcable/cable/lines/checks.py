@@ -8,7 +8,9 @@ From a `skcable.cable.MooringEquilibrium` (only its lines' end forces and tables
   :math:`\operatorname{atan2}(F_z, |\mathbf F_{xy}|)`, the load's elevation above the horizontal;
 - **each line**: its end tensions, grounded (unstretched) length and the touchdown's horizontal
   distance from its lower end, and its angle above the horizontal at its lower end (the
-  direction of its tension there: 0 where it rests on the seabed up to a touchdown);
+  direction of its tension there: 0 where it rests on the seabed up to a touchdown); for a line
+  in the sea (`skcable.cable.lines.in_sea.LineInSeaBetween`) the lower end is its fixed one
+  and the model the one `skcable.cable.line_3d` chose;
 - **each segment with a minimum breaking load**: its largest tension ``T_max`` against its
   ``MBL`` with a safety factor ``SF``: the utilisation :math:`SF\,T_{\max}/MBL` (at most 1 passes).
   The factor is the design code's for the condition checked (intact or damaged, quasi-static or
@@ -69,12 +71,13 @@ def line_checks(eq):
     for k, line in zip(eq.line_indices, eq.lines, strict=True):
         F = end_forces(line)
         plane = getattr(line, "plane", None)
-        lower = (1 if plane.reversed else 0) if plane is not None else 0
-        solution = line.solution
+        sea = getattr(line, "sea", None)  # a line in the sea: its lower end is its fixed one
+        lower = int(plane.reversed if plane is not None else line.reversed if sea is not None else 0)
+        solution = line if sea is not None else line.solution
         grounded = float(getattr(solution, "length_on_seabed", 0.0))
         touchdown = float(getattr(solution, "x_touchdown", 0.0)) if grounded > 0 else 0.0
         angle = _lower_angle(line, lower)
-        row = {"line": k, "model": line.model if plane is not None else "as given"}
+        row = {"line": k, "model": line.model if plane is not None or sea is not None else "as given"}
         row.update(T_a=float(np.linalg.norm(F[0])), T_b=float(np.linalg.norm(F[1])), lower_end="ab"[lower])
         row.update(grounded_length=grounded, x_touchdown=touchdown, lower_angle=angle)
         row.update(lower_angle_deg=math.degrees(angle))

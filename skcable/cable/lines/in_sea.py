@@ -45,7 +45,16 @@ import numpy as np
 from skcable._checks import whole
 from skcable.errors import InputError
 
-__all__ = ["BVP_ELEMENTS", "LineInSea", "ModelChoice", "SlopeModel", "SlopeSolution", "solve_line_in_sea"]
+__all__ = [
+    "BVP_ELEMENTS",
+    "LineInSea",
+    "LineInSeaBetween",
+    "ModelChoice",
+    "SlopeModel",
+    "SlopeSolution",
+    "placed_line",
+    "solve_line_in_sea",
+]
 
 #: elements of the 3-D line BVP of a line in the sea (the error estimate solves on half as many)
 BVP_ELEMENTS = 96
@@ -353,3 +362,140 @@ def solve_line_in_sea(line, anchor, fairlead, span: float, start, solve_in_space
     if not math.isfinite(span):
         raise InputError("fairlead", "must be finite")
     return _by_bvp(line, anchor, fairlead, need[1], start)
+
+
+def placed_line(line, depth, reverse: bool):
+    r"""The `skcable.cable.Line` a `skcable.cable.MooringSystem` solves for ``line``, a line in the sea
+    (a current, a `skcable.cable.bathymetry.Bathymetry` or a nonlinear axial law), from its fixed
+    end: its segments (and attachments) in reverse order where that end is its end b
+    (``reverse``), over its own `Bathymetry` where it has one, else over the system's flat
+    seabed ``z = -depth`` (a flat `skcable.cable.bathymetry.Plane`, in global heights as the
+    system's; none without a ``depth``); its current, friction and water density kept."""
+    from skcable.cable.bathymetry import Plane
+    from skcable.cable.lines.segments import Line
+
+    segments, attachments = list(line.segments), list(line.attachments)
+    if reverse:
+        n = len(segments)
+        segments = segments[::-1]
+        attachments = [type(a)(n - a.joint, abs(a.force)) for a in attachments]
+    seabed = line.bathymetry if line.bathymetry is not None else None if depth is None else Plane(-depth)
+    friction = line.friction if seabed is not None else 0.0
+    return Line(
+        segments,
+        attachments,
+        seabed=seabed,
+        friction=friction,
+        current=line.current,
+        rho_water=line.rho_water,
+    )
+
+
+def _reversed_table(table):
+    """A segment table from the other end: rows in reverse order, renumbered, each ``*_lower``
+    column swapped with its ``*_upper``."""
+    table = table.iloc[::-1].reset_index(drop=True)
+    swap = {}
+    for name in table.columns:
+        if name.endswith("_lower") and name[:-6] + "_upper" in table.columns:
+            swap[name], swap[name[:-6] + "_upper"] = name[:-6] + "_upper", name
+    table = table.rename(columns=swap)[list(table.columns)]
+    if "segment" in table.columns:
+        table["segment"] = np.arange(len(table))
+    return table
+
+
+class LineInSeaBetween:
+    """A line in the sea of a `skcable.cable.MooringSystem`, solved from its fixed end (a
+    `LineInSea`, anchor at the fixed point), seen from its ends a and b in the order of the
+    system's line.
+
+    Attributes
+    ----------
+    line : Line
+        The line as added to the system (segments from a to b).
+    sea : LineInSea
+        The solution from the fixed end: ``sea.anchor`` the fixed point, ``sea.fairlead`` the
+        moving one.
+    reversed : bool
+        Whether the fixed end is b (``sea`` then runs from b to a).
+    a, b : ndarray (3,)
+        The ends (m).
+    end_forces : ndarray (2, 3)
+        The line's forces on a and on b (N), global axes.
+    model, reason : str
+        The model that ran (`ModelChoice.name`) and why.
+    force_on_fairlead, tension_at_fairlead, fairlead, H
+        Of the moving end (N, m): its force, its tension, where it is and the horizontal force
+        there (what the system's assembly and its Newton method read).
+    """
+
+    def __init__(self, line, sea: LineInSea, reverse: bool):
+        self.line, self.sea, self.reversed = line, sea, bool(reverse)
+        self.a, self.b = (sea.fairlead, sea.anchor) if reverse else (sea.anchor, sea.fairlead)
+        self.end_forces = sea.end_forces[::-1].copy() if reverse else sea.end_forces
+        self.model, self.reason = sea.name, sea.reason
+        self.fairlead, self.force_on_fairlead = sea.fairlead, sea.force_on_fairlead
+        self.tension_at_fairlead = sea.tension_at_fairlead
+        self.H = float(np.hypot(*sea.force_on_fairlead[:2]))
+
+    @property
+    def model_choice(self) -> ModelChoice:
+        """Which model ran, why, and its estimated error (`LineInSea.model`)."""
+        return self.sea.model
+
+    @property
+    def solution(self):
+        """The solution from the fixed end (`LineInSea.solution`)."""
+        return self.sea.solution
+
+    @property
+    def equilibrium_residual(self) -> float:
+        """N/m (`LineInSea.equilibrium_residual`)."""
+        return self.sea.equilibrium_residual
+
+    @cached_property
+    def length_on_seabed(self) -> float:
+        """The unstretched length resting on the seabed (m): the closed form's, or the BVP's
+        contact nodes' span summed over its segments."""
+        if not self.sea.bvp:
+            return float(getattr(self.sea.solution, "length_on_seabed", 0.0))
+        return float(np.asarray(self.sea.tensions()["grounded_length"], dtype=float).sum())
+
+    @cached_property
+    def x_touchdown(self) -> float:
+        """The horizontal distance (m) from the fixed end to the touchdown, 0 without one."""
+        if not self.length_on_seabed > 0:
+            return 0.0
+        if not self.sea.bvp:
+            return float(self.sea.solution.x_touchdown)
+        where = self.sea.result.xyz(self.sea.result.s_touchdown)
+        return float(np.hypot(*(where - self.sea.anchor)[:2]))
+
+    def stiffness(self) -> np.ndarray:
+        """The moving end's stiffness ``−∂F/∂p`` (N/m), 3 × 3, global axes, the fixed end fixed."""
+        return self.sea.stiffness()
+
+    def T_of_s(self, s):
+        """Tension (N) at unstretched arc length ``s`` (m) from a."""
+        if not self.reversed:
+            return self.sea.T_of_s(s)
+        return self.sea.T_of_s(float(self.line.length) - np.asarray(s, dtype=float))
+
+    def profile_with_tension(self, n: int = 101) -> tuple[np.ndarray, np.ndarray]:
+        """``(points (n, 3), tension (n,))`` (m, N) evenly spaced in unstretched arc length from a."""
+        points, tension = self.sea.profile_with_tension(n)
+        return (points[::-1].copy(), tension[::-1].copy()) if self.reversed else (points, tension)
+
+    def profile(self, n: int = 101) -> np.ndarray:
+        """Positions ``(n, 3)`` (m) from a to b."""
+        return self.profile_with_tension(n)[0]
+
+    def tensions(self):
+        """One row per segment from a to b (`LineInSea.tensions`, turned round where b is fixed)."""
+        table = self.sea.tensions()
+        return _reversed_table(table) if self.reversed else table
+
+    def __repr__(self):
+        Ta, Tb = np.linalg.norm(self.end_forces, axis=1)
+        return f"LineInSeaBetween(model={self.model!r}, tension_a={Ta:.6g}, tension_b={Tb:.6g})"

@@ -85,11 +85,16 @@ class MooringLine:
         Whether the system picks the line's model over the seabed (a `skcable.cable.Line`).
     warm : bool
         Whether its model takes the previous solution as its start (``solve(..., start=)``).
+    sea : tuple or None
+        A line in the sea (a `skcable.cable.Line` in a current, on a `Bathymetry` or with a
+        nonlinear axial law, `skcable.cable.lines.in_sea`): ``(placed, reverse)``, the line
+        solved from its fixed end (`skcable.cable.lines.in_sea.placed_line`) and whether that
+        end is b; None otherwise.
     """
 
-    def __init__(self, index, model, a, b, managed, warm=True):
+    def __init__(self, index, model, a, b, managed, warm=True, sea=None):
         self.index, self.model, self.a, self.b, self.managed = index, model, a, b, managed
-        self.warm = warm
+        self.warm, self.sea = warm, sea
 
     def __repr__(self):
         model = type(self.model).__name__

@@ -3,8 +3,11 @@ r"""A mooring system: bodies, points and lines, their net loads and stiffness.
 Points are fixed (anchors), free (three dofs, with their own weight, buoyancy and force) or
 fixed to a body; lines connect any two points (`skcable.cable.lines.network`). A
 `skcable.cable.Line` is solved over the system's flat seabed at ``z = -depth``, from whichever
-end is lower, with the model its position takes (`skcable.cable.lines.between`); any other line
-model is solved as given, its anchor A at the line's first point (`skcable.cable.line_3d`). The
+end is lower, with the model its position takes (`skcable.cable.lines.between`); a `Line` in the
+sea (a current, a `skcable.cable.bathymetry.Bathymetry`, a nonlinear axial law) from its fixed
+end, a or b, by the model `skcable.cable.line_3d` picks (`skcable.cable.lines.in_sea`), its
+force and 3 x 3 stiffness at its moving end entering the sums below as a one-end line's do; any
+other line model is solved as given, its anchor A at the line's first point. The
 one-body constructor of earlier releases, ``MooringSystem(body, lines, anchors)``, builds such a
 system: one body, an anchor per line, the fairleads on the body, each line solved as given.
 
@@ -46,7 +49,16 @@ from skcable.cable.lines.between import LineBetween, solve_between
 from skcable.cable.lines.body import PointBody, RigidBody, skew
 from skcable.cable.lines.equilibrium import MooringEquilibrium, solve_equilibrium
 from skcable.cable.lines.geometry import is_line, on_seabed_tolerance
-from skcable.cable.lines.line3d import Line3D, line_3d, line_model, point, solve_in_space, takes_start
+from skcable.cable.lines.in_sea import LineInSeaBetween, placed_line, solve_line_in_sea
+from skcable.cable.lines.line3d import (
+    Line3D,
+    line_3d,
+    line_model,
+    point,
+    solve_in_plane_of_ends,
+    solve_in_space,
+    takes_start,
+)
 from skcable.cable.lines.network import Layout, MooringLine, MooringPoint, check_body
 from skcable.errors import InputError
 
@@ -229,10 +241,29 @@ class MooringSystem:
         return p
 
     def _add_line(self, model, a, b, managed):
-        handle = MooringLine(len(self.mooring_lines), model, a, b, managed, managed or takes_start(model))
+        sea = None
+        if managed and is_line(model) and (model.in_space is not None or model.nonlinear):
+            sea, managed = self._sea_placement(model, a, b), False
+        warm = managed or sea is not None or takes_start(model)
+        handle = MooringLine(len(self.mooring_lines), model, a, b, managed, warm, sea)
         self.mooring_lines.append(handle)
         self._layout = None
         return handle
+
+    def _sea_placement(self, line, a, b):
+        """``(placed, reverse)`` of a line in the sea from ``a`` to ``b`` (`MooringLine.sea`): solved
+        from its fixed end; `InputError` naming ``line`` where both ends move."""
+        if not (a.fixed or b.fixed):
+            reason = (line.in_space or ("EA", "a nonlinear axial law"))[1]
+            raise InputError(
+                "line",
+                f"line {len(self.mooring_lines)} (point {a.index} to point {b.index}) is a line in the sea "
+                f"({reason}) with both ends moving: such a line is solved from a fixed end (an anchor), "
+                "and the 6 x 6 stiffness of a 3-D line BVP with both ends free is not built; fix one "
+                "of its ends",
+            )
+        reverse = not a.fixed
+        return placed_line(line, self.depth, reverse), reverse
 
     def add_line(self, line, a, b):
         """Add a line from point ``a`` to point ``b``; returns its handle (a `MooringLine`).
@@ -240,7 +271,15 @@ class MooringSystem:
         ``line``: a `skcable.cable.Line`, its segments from ``a`` to ``b``, solved over the
         system's seabed from whichever end is lower (its own ``seabed`` is not used; its
         ``friction`` is); or another line model, solved as given with ``a`` its anchor A (``a``
-        must then be fixed)."""
+        must then be fixed).
+
+        A `skcable.cable.Line` in the sea (a ``current``, a `skcable.cable.bathymetry.Bathymetry`
+        or a nonlinear axial law) is solved by `skcable.cable.line_3d`'s choice of model
+        (`skcable.cable.lines.in_sea`) from its fixed end, ``a`` or ``b``, as its anchor: over
+        its own `Bathymetry` where it has one, else over the system's flat seabed; its force and
+        3 x 3 stiffness at its moving end enter the system's. One of its ends must be fixed
+        (`InputError` naming ``line`` otherwise: the both-ends stiffness of such a line is not
+        built)."""
         a, b = self._point("a", a), self._point("b", b)
         if a is b:
             raise InputError("b", f"is point {a.index}, the same as a: a line from a point to itself")
@@ -319,8 +358,8 @@ class MooringSystem:
         layout = self.layout
         if isinstance(key, MooringPoint) and self._point(name, key).kind == "free":
             return layout.point_start[key.index], None
-        i = layout.body_of.get(id(key))
-        if i is not None and self.bodies[i] is key:
+        i = next((i for i, b in enumerate(self.bodies) if b is key), None)  # not by id(): a copy holds others
+        if i is not None:
             return layout.body_start[i], key
         raise InputError(name, f"takes bodies and free points of this system as keys, got {key!r}")
 
@@ -374,6 +413,8 @@ class MooringSystem:
             line: Any
             if handle.managed:
                 line = solve_between(model, a, b, depth, previous or latest.get(id(model)))
+            elif handle.sea is not None:
+                line = _solve_sea(handle, a, b, previous)
             else:
                 r = math.hypot(float(b[0] - a[0]), float(b[1] - a[1]))
                 if not (np.isfinite(b).all() and r > 1e-9 * max(1.0, float(np.abs(b - a).max()))):
@@ -388,7 +429,9 @@ class MooringSystem:
     def _checked_start(self, start, handles):
         if start is None:
             return None
-        if len(start) != len(handles) or not all(isinstance(s, (Line3D, LineBetween)) for s in start):
+        if len(start) != len(handles) or not all(
+            isinstance(s, (Line3D, LineBetween, LineInSeaBetween)) for s in start
+        ):
             raise InputError("start", f"must be a list of {len(handles)} solved lines, one per line")
         return list(start)
 
@@ -441,6 +484,11 @@ class MooringSystem:
         for handle, line in zip(handles, lines, strict=True):
             if handle.managed:
                 _managed_ends(handle, line, index, values, cross, self._assembler, arms)
+            elif handle.sea is not None:
+                moving = handle.a if line.reversed else handle.b
+                if moving.kind != "fixed":
+                    index.append(moving.index)
+                    values.append([*line.force_on_fairlead.tolist(), *line.stiffness().ravel().tolist()])
             elif handle.b.kind != "fixed":
                 index.append(handle.b.index)
                 values.append([*line.force_on_fairlead.tolist(), *line.stiffness().ravel().tolist()])
@@ -627,7 +675,8 @@ class MooringSystem:
             other._new_point(where, p.fixed, p.mass, p.volume, p.force, p.body)
         for h in self.mooring_lines:
             model = models.get(h, h.model)
-            other._add_line(model, other.points[h.a.index], other.points[h.b.index], h.managed)
+            managed = h.managed or h.sea is not None
+            other._add_line(model, other.points[h.a.index], other.points[h.b.index], managed)
         other.shortcut = self.shortcut
         return other
 
@@ -650,6 +699,19 @@ class MooringSystem:
             f"MooringSystem({len(self.bodies)} bodies, {len(self.points)} points, "
             f"{len(self.mooring_lines)} lines, depth={self.depth!r})"
         )
+
+
+def _solve_sea(handle, a, b, previous) -> LineInSeaBetween:
+    """A line in the sea (`MooringLine.sea`) solved with its ends at ``a`` and ``b`` from its fixed end,
+    warm-started from ``previous`` (its solution at other positions) or None."""
+    placed, reverse = handle.sea
+    anchor, moving = (b, a) if reverse else (a, b)
+    r = math.hypot(float(moving[0] - anchor[0]), float(moving[1] - anchor[1]))
+    if not (np.isfinite(moving).all() and r > 1e-9 * max(1.0, float(np.abs(moving - anchor).max()))):
+        line_3d(placed, anchor, moving)  # raises, naming the point
+    start = previous.sea if isinstance(previous, LineInSeaBetween) else None
+    sea = solve_line_in_sea(placed, anchor, moving, r, start, solve_in_plane_of_ends)
+    return LineInSeaBetween(handle.model, sea, reverse)
 
 
 def _managed_ends(handle, line, index, values, cross, assembler, arms):

@@ -15,6 +15,7 @@ Coulomb friction along the line. One concern per module:
 - `contact`: the seabed's semismooth contact rows in 3-D;
 - `problem`: one discrete line — bases, properties, the loads, the residual and its
   generalized Jacobian (every call of the assembly);
+- `pointwise`: the fields at any arc length, through each element's own basis;
 - `start`: the closed form in the vertical plane of the ends;
 - `iterate`: one solve (damped semismooth Newton, full steps, the polish);
 - `fitting`: the touchdown and the landing from the balance of forces;
@@ -24,8 +25,8 @@ Coulomb friction along the line. One concern per module:
 - `solution`: `LineBVP3DSolution`;
 - `model`: `solve_line_bvp_3d` and `LineBVP3D`, a line model.
 
-Data flow one way: ``inputs → driver → (start, problem ⇄ contact, loads) → iterate → fitting →
-solution → (check, stiffness)``.
+Data flow one way: ``inputs → driver → (start, problem ⇄ contact, loads, pointwise) → iterate →
+fitting → solution → (check, stiffness)``.
 """
 
 from skcable.cable.bvp.line3d.driver import LineBVP3DSolver

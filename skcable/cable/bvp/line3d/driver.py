@@ -12,7 +12,9 @@ r"""The strategy that takes a line in space from its closed-form start to the co
    few nodes per Newton iteration, so a fine mesh does not find its contact set from the start).
 4. **Fitting** (`LineBVP3DSolver.fitted`): a node at the touchdown and the landing the balance of
    forces gives (`skcable.cable.bvp.line3d.fitting`), ``fit_touchdown`` passes while they move
-   more than 1e-9 of the length.
+   more than 1e-9 of the length. A warm start (`LineBVP3DSolver.solve` from a solution at
+   nearby ends) keeps its start's nodes: where the touchdown has hardly moved, one pass finds
+   it settled and the first solve is the last.
 5. **Checks** (`LineBVP3DSolver.checked`): every number finite, the line not in compression
    (a slack stretch on the seabed near the anchor is not modelled in 3-D), and its equilibrium
    residual within its bound (`skcable.cable.bvp.line3d.solution.LineBVP3DSolution.check`).
@@ -24,6 +26,7 @@ from __future__ import annotations
 
 import numpy as np
 
+from skcable.cable.bathymetry import OffGrid
 from skcable.cable.bvp.line.iterate import first_success
 from skcable.cable.bvp.line.mesh import COARSE, nested_sizes
 from skcable.cable.bvp.line3d.fitting import landing, touchdown
@@ -49,8 +52,8 @@ class LineBVP3DSolver:
         """The discrete line on ``n`` elements, nodes at ``fitted``, the drag times ``drag_scale``."""
         return LineProblem3D(self.scene, n, fitted=fitted, drag_scale=drag_scale)
 
-    def run(self, problem, z0) -> Solved:
-        return solve_on(problem, z0, self.scene.rtol, self.scene.max_iter)
+    def run(self, problem, z0, near=False) -> Solved:
+        return solve_on(problem, z0, self.scene.rtol, self.scene.max_iter, near)
 
     def solve(self, start: LineBVP3DSolution | None = None) -> LineBVP3DSolution:
         """The line (module docstring); from ``start`` (a solution of the same line at other
@@ -58,7 +61,7 @@ class LineBVP3DSolver:
         solved = None
         if start is not None:
             try:
-                solved = self.run(self.problem(self.scene.n_elements), self.moved(start))
+                solved = self.run(*self.warm(start), near=True)
             except ConvergenceError:
                 solved = None
         if solved is None:
@@ -67,15 +70,33 @@ class LineBVP3DSolver:
             solved = self.fitted(solved)
         return self.checked(solved)
 
+    def warm(self, start: LineBVP3DSolution) -> tuple[LineProblem3D, np.ndarray]:
+        """The problem and the first iterate of a warm start: ``start``'s line moved (`moved`), on
+        a mesh with nodes at the touchdown and the landing of the moved line (the balance of
+        `skcable.cable.bvp.line3d.fitting` on it, its supports' reactions moved with it), else at
+        ``start``'s."""
+        z, points = self.moved(start), list(start.problem.fitted)
+        if points and self.scene.fit_touchdown:
+            try:
+                guess = self.edges(Solved(start.problem, z, [], start.problem.assemble(z)))
+            except OffGrid:  # the moved line off the seabed's grid: keep the start's nodes
+                guess = []
+            points = guess if len(guess) == len(points) else points
+        problem = self.problem(self.scene.n_elements, points)
+        if problem.fitted != start.problem.fitted:
+            z = restart(start.problem, z, problem)
+        return problem, z
+
     def moved(self, start: LineBVP3DSolution) -> np.ndarray:
-        """``start``'s line on this scene's mesh, moved to the new ends in proportion to the arc
-        length."""
-        problem = self.problem(self.scene.n_elements)
-        z = restart(start.problem, start.dofs, problem)
+        """``start``'s line on its mesh, moved to the new ends: along its tangent ``∂z/∂r_B``
+        (`LineBVP3DSolution.sensitivity`, the active set held) for the fairlead's move, in
+        proportion to the arc length for the anchor's."""
+        problem, anchor, fairlead = start.problem, self.scene.anchor, self.scene.fairlead
+        move_a, move_b = anchor - start.anchor, fairlead - start.fairlead
+        z = start.dofs + start.sensitivity[2] @ move_b if np.any(move_b) else start.dofs.copy()
         N, share = problem.N, problem.basis.doflocs[0] / problem.L
-        move_a, move_b = self.scene.anchor - start.anchor, self.scene.fairlead - start.fairlead
-        for k, (end_a, end_b) in enumerate(zip(problem.anchor, problem.fairlead, strict=True)):
-            z[k * N : (k + 1) * N] += move_a[k] * (1.0 - share) + move_b[k] * share
+        for k, (end_a, end_b) in enumerate(zip(anchor, fairlead, strict=True)):
+            z[k * N : (k + 1) * N] += move_a[k] * (1.0 - share)
             z[k * N + problem.end_a], z[k * N + problem.end_b] = end_a, end_b
         return z
 
@@ -128,14 +149,16 @@ class LineBVP3DSolver:
         return solved
 
     def fitted(self, solved) -> Solved:
-        """Nodes at the touchdown and the landing, moved until they settle (module docstring, 4)."""
-        L, placed = solved.problem.L, list[float]()
+        """Nodes at the touchdown and the landing, moved until they settle (module docstring, 4):
+        from the nodes ``solved``'s mesh has (a warm start's: its start's touchdown), none
+        left where the line no longer touches."""
+        L, placed = solved.problem.L, list(solved.problem.fitted)
         for _ in range(self.scene.fit_touchdown):
             points = self.edges(solved)
             settled = len(points) == len(placed) and all(
                 abs(a - b) <= 1e-9 * L for a, b in zip(points, placed, strict=True)
             )
-            if not points or settled:
+            if settled:
                 break
             solved, placed = self.refit(solved, points), points
         return solved
@@ -154,7 +177,7 @@ class LineBVP3DSolver:
         n = self.scene.n_elements
         problem = self.problem(n, points)
         return first_success(
-            lambda: self.run(problem, restart(solved.problem, solved.z, problem)),
+            lambda: self.run(problem, restart(solved.problem, solved.z, problem), near=True),
             lambda: self.level(n, points),
         )
 

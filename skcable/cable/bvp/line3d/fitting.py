@@ -14,7 +14,9 @@ loads) is tangent to the seabed where the line leaves it, ``n(r(s))·F(s) = 0`` 
 seabed is the same balance of the part ``[0, s]``, ``F(s) = −S_A − ∫_0^s f ds + Σ_{s_k < s} P_k
 e_z``. The integrals are the element integrals of the solution's forces and, in the element of
 ``s``, a Gauss–Legendre rule of `ORDER` points; the root is bracketed between the mesh nodes
-around the last (first) node on the seabed and found by Brent's method.
+around the last (first) node on the seabed and found as the root of the balance's Chebyshev
+interpolant over the element, kept where the balance changes sign within 1e-13 of the length of
+it (else by Brent's method to that tolerance).
 """
 
 from __future__ import annotations
@@ -26,11 +28,14 @@ __all__ = ["ORDER", "landing", "touchdown"]
 
 #: Gauss–Legendre points of the integral over the part of an element
 ORDER = 8
+#: Chebyshev points of the interpolant whose root starts the touchdown's search
+SAMPLES = 12
 _X, _W = np.polynomial.legendre.leggauss(ORDER)
 
 
 class _Balance:
-    """``n(r(s))·F(s)`` of a solved line from its fairlead (``side = "b"``) or anchor (``"a"``)."""
+    """``n(r(s))·F(s)`` of a solved line from its fairlead (``side = "b"``) or anchor (``"a"``),
+    vectorised over the arc lengths (`values`; a scalar call for Brent's method)."""
 
     def __init__(self, problem, z, R0, side):
         self.problem, self.z, self.side = problem, z, side
@@ -39,35 +44,44 @@ class _Balance:
         left, right = np.sort(problem.mesh.p[0, problem.mesh.t], axis=0)
         order = np.argsort(left)  # the elements along the line
         self.left, self.right = left[order], right[order]
-        self.element_force = np.sum(f * problem.assembly.dx, axis=1)[:, order]  # (3, ne)
+        element_force = np.sum(f * problem.assembly.dx, axis=1)[:, order]  # (3, ne)
+        zero = np.zeros((3, 1))
+        # the elements' forces beyond element k (side b: k+1…) or before it (side a: …k−1)
+        self.beyond = np.concatenate([np.cumsum(element_force[:, ::-1], axis=1)[:, ::-1], zero], axis=1)[
+            :, 1:
+        ]
+        self.before = np.concatenate([zero, np.cumsum(element_force, axis=1)], axis=1)[:, :-1]
         S_A, S_B = problem.reactions(R0)
         self.end = S_B if side == "b" else -S_A
+        self.loads_s = np.array([s_p for s_p, _ in problem.point_loads], dtype=float)
+        self.loads_P = np.array([P for _, P in problem.point_loads], dtype=float)
 
-    def _partial(self, lo, hi):
-        if hi <= lo:
-            return np.zeros(3)
-        s = 0.5 * (lo + hi) + 0.5 * (hi - lo) * _X
-        return self.problem.forces_at(self.z, s) @ (0.5 * (hi - lo) * _W)
-
-    def force(self, s) -> np.ndarray:
-        """``F(s)`` (N), the tension vector at ``s`` towards the fairlead."""
-        k = int(np.clip(np.searchsorted(self.right, s), 0, self.right.size - 1))
-        loads = self.problem.point_loads
+    def forces(self, s) -> np.ndarray:
+        """``F(s)`` (3, n) (N), the tension vector at the arc lengths ``s`` (1-D) towards the
+        fairlead."""
+        k = np.clip(np.searchsorted(self.right, s), 0, self.right.size - 1)
+        lo, hi = (s, self.right[k]) if self.side == "b" else (self.left[k], s)
+        half = 0.5 * np.maximum(hi - lo, 0.0)
+        points = (0.5 * (lo + hi))[:, None] + half[:, None] * _X  # (n, ORDER)
+        f = self.problem.forces_at(self.z, points.ravel()).reshape(3, *points.shape)
+        partial = np.einsum("knq,nq->kn", f, half[:, None] * _W)
         if self.side == "b":
-            beyond = self.left >= self.right[k]
-            F = self.end + self.element_force[:, beyond].sum(axis=1) + self._partial(s, self.right[k])
-            F[2] -= sum(P for s_p, P in loads if s_p > s)
+            F = self.end[:, None] + self.beyond[:, k] + partial
+            F[2] -= np.sum(np.where(self.loads_s[:, None] > s, self.loads_P[:, None], 0.0), axis=0)
         else:
-            before = self.right <= self.left[k]
-            F = self.end - self.element_force[:, before].sum(axis=1) - self._partial(self.left[k], s)
-            F[2] += sum(P for s_p, P in loads if s_p < s)
+            F = self.end[:, None] - self.before[:, k] - partial
+            F[2] += np.sum(np.where(self.loads_s[:, None] < s, self.loads_P[:, None], 0.0), axis=0)
         return F
 
+    def values(self, s) -> np.ndarray:
+        """``n(r(s))·F(s)`` (N) at the arc lengths ``s`` (1-D)."""
+        state = self.problem.state_at(self.z, s)
+        grad = self.problem.seabed.gradient(state.x, state.y)
+        F = self.forces(s)
+        return F[2] - grad[0] * F[0] - grad[1] * F[1]
+
     def __call__(self, s) -> float:
-        state = self.problem.state_at(self.z, np.array([s]))
-        grad = self.problem.seabed.gradient(state.x, state.y)[:, 0]
-        F = self.force(s)
-        return float(F[2] - grad[0] * F[0] - grad[1] * F[1])
+        return float(self.values(np.array([float(s)]))[0])
 
 
 def _root(balance, near, nodes, length):
@@ -75,7 +89,7 @@ def _root(balance, near, nodes, length):
     where it changes sign nowhere there."""
     h = float(np.max(np.diff(nodes)))
     grid = nodes[(nodes >= near - 2 * h) & (nodes <= near + 2 * h)]
-    values = np.array([balance(s) for s in grid])
+    values = balance.values(grid)
     zero = np.flatnonzero(values == 0.0)
     if zero.size:
         return float(grid[zero[np.argmin(np.abs(grid[zero] - near))]])
@@ -83,7 +97,27 @@ def _root(balance, near, nodes, length):
     if not change.size:
         return None
     k = int(change[np.argmin(np.abs(grid[change] - near))])
-    return float(brentq(balance, grid[k], grid[k + 1], xtol=1e-13 * length))
+    found = _interpolated_root(balance, grid[k], grid[k + 1], 1e-13 * length)
+    return float(brentq(balance, grid[k], grid[k + 1], xtol=1e-13 * length)) if found is None else found
+
+
+def _interpolated_root(balance, a, b, xtol):
+    """The root in ``[a, b]`` of the Chebyshev interpolant of ``balance`` at `SAMPLES` points
+    (one evaluation), kept where ``balance`` changes sign within ``xtol`` of it (a second one)
+    and refined there by a secant step; None where it does not (a kink in the element: the
+    seabed's grid, a tabulated current), for Brent's method."""
+    x = a + (b - a) * 0.5 * (1.0 - np.cos(np.pi * (np.arange(SAMPLES) + 0.5) / SAMPLES))
+    roots = np.polynomial.Chebyshev.fit(x, balance.values(x), SAMPLES - 1, domain=[a, b]).roots()
+    real = roots.real[(np.abs(roots.imag) <= 1e-9 * (b - a)) & (roots.real >= a) & (roots.real <= b)]
+    if real.size != 1:
+        return None
+    lo, hi = max(a, real[0] - xtol), min(b, real[0] + xtol)
+    v_lo, v_hi = balance.values(np.array([lo, hi]))
+    if v_lo == 0.0 or v_hi == 0.0:
+        return float(lo if v_lo == 0.0 else hi)
+    if np.sign(v_lo) == np.sign(v_hi):
+        return None
+    return float(np.clip(lo - v_lo * (hi - lo) / (v_hi - v_lo), lo, hi))
 
 
 def touchdown(problem, z, state):

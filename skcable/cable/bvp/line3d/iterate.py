@@ -3,9 +3,10 @@
 As the plane line's (`skcable.cable.bvp.line.iterate`): `skcable.fe.newton` damped by
 backtracking on the max-norm merit, else full semismooth steps from the same start (which
 identify an active set where the damped steps stall), the damped one's error raised when both
-fail; a trial off a seabed grid (`skcable.cable.bathymetry.OffGrid`) is a step too long. Past
-``rtol``, full Newton steps go on while the merit halves (`POLISH` at most), taking the solution
-to its round-off floor.
+fail; from a start near the solution (a warm start, a refitted touchdown: ``near``) full steps
+first, the damped ones where they fail; a trial off a seabed grid
+(`skcable.cable.bathymetry.OffGrid`) is a step too long. Past ``rtol``, full Newton steps go
+on while the merit halves (`POLISH` at most), taking the solution to its round-off floor.
 """
 
 from __future__ import annotations
@@ -77,11 +78,21 @@ def _full_steps(problem, z0, rtol, max_iter):
     raise ConvergenceError("solve_line_bvp_3d: full semismooth steps did not converge", history, last=z)
 
 
-def solve_on(problem, z0, rtol, max_iter) -> Solved:
-    """The line of ``problem`` from ``z0`` (module docstring)."""
-    z, state, history = first_success(
-        lambda: _damped(problem, z0, rtol, max_iter), lambda: _full_steps(problem, z0, rtol, max_iter)
+def solve_on(problem, z0, rtol, max_iter, near=False) -> Solved:
+    """The line of ``problem`` from ``z0`` (module docstring); ``near``: ``z0`` is a converged
+    line moved a little (a warm start, a touchdown refitted), whose active set full steps
+    identify in a few iterations where the damped ones crawl: full steps first."""
+    damped, full = (
+        (lambda: _damped(problem, z0, rtol, max_iter)),
+        (lambda: _full_steps(problem, z0, rtol, max_iter)),
     )
+    if near:
+        try:
+            z, state, history = full()
+        except ConvergenceError:
+            z, state, history = damped()
+    else:
+        z, state, history = first_success(damped, full)
     for _ in range(POLISH):
         trial_z = z + problem.increment(state)
         try:

@@ -30,6 +30,7 @@ this module.
 from __future__ import annotations
 
 from dataclasses import dataclass
+from functools import cached_property
 
 import numpy as np
 from skfem import Basis, ElementLineP1DG, ElementLineP2, MeshLine
@@ -38,9 +39,9 @@ from skcable.cable.bvp.elements import end_dofs
 from skcable.cable.bvp.line.mesh import joints_of, line_nodes
 from skcable.cable.bvp.line3d.contact import ContactRows3D, ContactTerms3D
 from skcable.cable.bvp.line3d.loads import SegmentDrag
+from skcable.cable.bvp.line3d.pointwise import LinePoints
 from skcable.cable.terms import CableState
 from skcable.fe.assembly import Assembly
-from skcable.fe.probes import gradient_probes
 
 __all__ = ["STRAINS", "LineProblem3D", "LineState3D"]
 
@@ -90,6 +91,7 @@ class LineProblem3D:
         self.joints = joints_of(lengths)
         self.L = float(self.joints[-1])
         self.point_loads = scene.point_loads
+        self.fitted = tuple(float(p) for p in fitted)
         self.mesh = MeshLine(line_nodes(lengths, self.point_loads, n_elements, fitted, nodes_at))
         self.basis = Basis(self.mesh, ElementLineP2(), intorder=6)
         self.tbasis = self.basis.with_element(ElementLineP1DG())
@@ -345,13 +347,19 @@ class LineProblem3D:
     # --- fields at any arc length ----------------------------------------------------------
     def state_at(self, z, s) -> CableState:
         """The line's state (`CableState`, 3-D) at arc lengths ``s`` (1-D, m)."""
-        s = np.asarray(s, dtype=float).reshape(1, -1)
-        P, G = self.basis.probes(s), gradient_probes(self.basis, s)
+        s = np.asarray(s, dtype=float).ravel()
         N = self.N
-        r = np.array([P @ z[k * N : (k + 1) * N] for k in range(3)])
-        a = np.array([G @ z[k * N : (k + 1) * N] for k in range(3)])
-        T = self.tbasis.probes(s) @ z[3 * N :]
-        return CableState.at(r, s[0], a, T)
+        r, a, cells = self.points.fields(z[: 3 * N].reshape(3, N), s)
+        return CableState.at(r, s, a, self.points.tension(z[3 * N :], s, cells))
+
+    def tension_at(self, z, s) -> np.ndarray:
+        """The tension (N) at arc lengths ``s`` (1-D, m): the value of the element holding each."""
+        return self.points.tension(z[3 * self.N :], np.asarray(s, dtype=float).ravel())
+
+    @cached_property
+    def points(self) -> LinePoints:
+        """The point evaluation of the fields (`skcable.cable.bvp.line3d.pointwise`)."""
+        return LinePoints(self.mesh, self.basis, self.tbasis)
 
     def forces_at(self, z, s) -> np.ndarray:
         """The distributed force (3, n) (N per unstretched m) at arc lengths ``s`` (m)."""

@@ -174,7 +174,7 @@ class LineBVP3DSolution:
         element containing ``s``; `T_A` and `T_B` (the supports' reactions) are the accurate
         end values."""
         s = self._s(s)
-        T = self.problem.tbasis.probes(s.reshape(1, -1)) @ self.dofs[3 * self.problem.N :]
+        T = self.problem.tension_at(self.dofs, s)
         return T.reshape(s.shape)[()]
 
     def tangent(self, s) -> np.ndarray:
@@ -229,6 +229,13 @@ class LineBVP3DSolution:
         return strong_residual(self)
 
     # --- stiffness ----------------------------------------------------------------------------
+    @cached_property
+    def sensitivity(self):
+        """``(K_B, K_A, dz)``: the static sensitivities to the fairlead's position at the
+        converged state (`skcable.cable.bvp.line3d.problem.LineProblem3D.end_sensitivity`),
+        computed once: the static `stiffness` and a warm start's predictor read them."""
+        return self.problem.end_sensitivity(self.state)
+
     def stiffness(self, kind: str = "static") -> FairleadStiffness:
         """The fairlead stiffness ``∂S_B/∂r_B`` (N/m, 3 × 3, global axes; `kind` ``"static"`` or
         ``"dynamic"``: `skcable.cable.bvp.line3d.stiffness`)."""

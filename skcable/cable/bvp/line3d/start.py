@@ -174,6 +174,5 @@ def restart(solution_problem, z, problem) -> np.ndarray:
     """The solution ``z`` of ``solution_problem`` interpolated onto ``problem``'s dofs (another
     mesh of the same line)."""
     state = solution_problem.state_at(z, problem.basis.doflocs[0])
-    N = solution_problem.N
-    T = solution_problem.tbasis.probes(_tension_points(problem).reshape(1, -1)) @ z[3 * N :]
+    T = solution_problem.tension_at(z, _tension_points(problem))
     return _ends(problem, state.x.copy(), state.y.copy(), state.z.copy(), T)

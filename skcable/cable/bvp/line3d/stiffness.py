@@ -59,10 +59,11 @@ def fairlead_stiffness_3d(solution, kind: str = "static") -> FairleadStiffness:
     """The fairlead stiffness of a `LineBVP3DSolution` (module docstring)."""
     if kind not in KINDS:
         raise InputError("kind", f"must be one of {KINDS}, got {kind!r}")
-    problem, state = solution.problem, solution.state
+    problem = solution.problem
     if kind == "dynamic":
-        state = problem.assemble(solution.dofs, dynamic=True)
-    K_B, K_A, _ = problem.end_sensitivity(state)
+        K_B, K_A, _ = problem.end_sensitivity(problem.assemble(solution.dofs, dynamic=True))
+    else:
+        K_B, K_A = (K.copy() for K in solution.sensitivity[:2])  # the solution keeps its own
     if not (np.all(np.isfinite(K_B)) and np.all(np.isfinite(K_A))):
         raise ConvergenceError("fairlead stiffness: non-finite sensitivities", solution.history)
     return FairleadStiffness(K_B, K_A, kind)

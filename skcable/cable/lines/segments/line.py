@@ -154,8 +154,8 @@ class Line:
             name, reason = self.in_space or ("EA", "a nonlinear axial law")
             raise InputError(
                 name,
-                f"{reason}: this line is solved by cable.line_3d (and in MooringSystem(body, lines, "
-                "anchors)), not in the vertical plane of its ends",
+                f"{reason}: this line is solved by cable.line_3d (and in a MooringSystem with one "
+                "end fixed), not in the vertical plane of its ends",
             )
         key = (bool(reverse), bool(contact))
         cache = self.__dict__.setdefault("_variants", {})
