@@ -228,3 +228,33 @@ def test_a_tiny_value_where_zero_is_valid_is_no_outsized_one(dh, named):
 def test_an_arithmetic_failure_without_an_outsized_argument_passes_as_it_is():
     with pytest.raises(ZeroDivisionError), outsized(span=800.0, dh=1e-300, length=850.0):
         raise ZeroDivisionError("a defect, not an input")
+
+
+@pytest.mark.parametrize("index", range(len(known.KNOWN_F3_HEAVE_SCENES)))
+def test_f3_bodies_heaving_far_without_a_waterplane_reach_the_stable_equilibrium(index):
+    """The fuzz's last two F3 cases (seed 26), no waterplane: a body that rises 262 m from lines
+    hanging vertically (x, y and yaw free, roll and pitch unbalanced; "no descent" along the free
+    directions) and one that sinks 160 m while its lines' tensions fall a hundredfold (the
+    residual scaled by the state's own tension stood at 0.48 until max_iter). Both reach the
+    independent solver's equilibrium (tests.fuzz.bodies: 50-digit force recount, central-difference
+    stiffness, its eigenvalues positive)."""
+    outcome = run_case(moored.mooring_case(known.KNOWN_F3_HEAVE_SCENES[index]))
+    assert outcome.kind == "ok", outcome.detail
+
+
+def test_d4_a_touchdown_node_with_no_push_converges_on_64_elements():
+    """D4's last case (seed 26): on 64 elements the semismooth Newton cycled between two active
+    sets at a node on the seabed with no push and stopped with "no descent" at a merit of
+    1.8e-10 (tol 1e-10). Held active sets finish it; H, V_B and H_A within 1e-6 of the force
+    scale of the fuzz's independent walk along the segments (50 digits), as on 32, 65 and 128
+    elements."""
+    segments, attachments, bed, friction, span, dh = known.KNOWN_D4_CYCLE
+    data = multi.line_data(segments, attachments, bed, friction)
+    want = segments_line(data, span, dh)
+    force = float(want["H"] + data.weight + sum(abs(p) for p in data.P))
+    loads = [(segments[0][0], attachments[0][2])]
+    for n in (32, 64, 65, 128):
+        got = cable.solve_line_bvp(span, dh, segments, seabed=bed, point_loads=loads, n_elements=n)
+        for name in ("H", "V_B", "H_A"):
+            assert abs(getattr(got, name) - float(want[name])) < 1e-6 * force, (n, name)
+    assert run_case(multi.bvp_case(*known.KNOWN_D4_CYCLE)).kind == "ok"

@@ -81,6 +81,91 @@ KNOWN_F3_SCENE = _MOORING_F3 = {
     "depth": 58.55003847276033,
 }
 
+#: D4's last case (seed 26): 64 elements stopped with "no descent" at a merit of 1.8e-10
+#: (tol 1e-10): a node at the touchdown with no push, the active set cycling.
+KNOWN_D4_CYCLE = (
+    [
+        (144.1160206443183, 4.3671044446924245, 203962485.22061986),
+        (55.34701010100797, 648.2549043307371, 813831488.8227067),
+        (102.4253377866417, 13.51743236817562, 180843.2924765411),
+        (30.244984952482323, 1194.7176670804631, 4983057203.274814),
+    ],
+    [("ClumpWeight", 1, 6495.485188278562)],
+    0.0,
+    0.0,
+    201.14826261129866,
+    132.8696946384012,
+)
+
+
+def _rigid(fairleads, anchors, segment, mass, volume, cog_z, meta_z, force, moment):
+    """A rigid body's scene of `moored.random_scene`'s form, on one single-segment line per
+    anchor, no waterplane, a flat seabed under the anchors."""
+    return {
+        "kind": "rigid",
+        "fairleads": fairleads,
+        "anchors": anchors,
+        "segments": [segment],
+        "attachments": [],
+        "mass": mass,
+        "volume": volume,
+        "cog": (0.0, 0.0, cog_z),
+        "meta": (0.0, 0.0, meta_z),
+        "area": 0.0,
+        "rho": 1025.0,
+        "g": 9.81,
+        "force": force,
+        "moment": moment,
+        "depth": -anchors[0][2],
+    }
+
+
+#: F3's last two cases (seed 26), bodies with no waterplane that heave 262 m (lines hanging
+#: vertically at the start: x, y and yaw free, the roll and pitch moments unbalanced) and
+#: 160 m (tensions falling a hundredfold, the residual scaled by them stood at 0.48).
+KNOWN_F3_HEAVE_SCENES = (
+    _rigid(
+        [
+            (6.17286138637317, -0.04931115455690552, -18.96490386095327),
+            (-4.545968582061406, 4.176220652246626, -18.96490386095327),
+            (-4.391866118194418, -4.337990466240852, -18.96490386095327),
+        ],
+        [
+            (1481.6741587517458, -11.836174323705023, -391.419710336503),
+            (-1091.1704885204285, 1002.4197587425163, -391.419710336503),
+            (-1054.181218193423, -1041.249425903105, -391.419710336503),
+        ],
+        (1858.9610455318734, 171.28034734404466, 5806385399.563488),
+        427991.158424685,
+        459.22661263276007,
+        -1.5060331695580718,
+        1.2503244516536067,
+        (0.0, -0.0, 0.0),
+        (0.0, 0.0, 0.0),
+    ),
+    _rigid(
+        [
+            (8.252999323919887, 0.5753634608161066, -6.413382680059359),
+            (1.929812156957603, 8.044803663951226, -6.413382680059359),
+            (-7.702873121197526, -3.018076644387463, -6.413382680059359),
+            (-2.78064238448509, -7.79173080145031, -6.413382680059359),
+        ],
+        [
+            (1128.9812086999743, 78.70769279615584, -247.45988416070105),
+            (263.9914988495458, 1100.5007764822883, -247.45988416070105),
+            (-1053.7258838283342, -412.86224367595696, -247.45988416070105),
+            (-380.3820740781668, -1065.8813011883365, -247.45988416070105),
+        ],
+        (1132.3110126115646, 406.020242977792, 321054820170.5122),
+        89050.92105322532,
+        167.06518684760385,
+        0.5796011077285246,
+        2.5394991717901636,
+        (6643.010689451111, -116.1002421334383, 0.0),
+        (0.0, 0.0, 4911.318082777067),
+    ),
+)
+
 KNOWN = (
     Known(
         "D1",
@@ -127,7 +212,8 @@ KNOWN = (
         26,
         "linebvp",
         "solve_line_bvp fails on scenes Line.solve solves (taut lines, stagnating Newton; left: a line "
-        "search with no descent just above the tolerance on a few meshes, about one scene in a thousand)",
+        "search with no descent just above the tolerance on a few meshes, about one scene in a thousand: "
+        "the active set cycling at a touchdown node with no push, now held by the frozen steps)",
         ("solve_line_bvp", "edges/solve_line_bvp"),
         ("spurious-refusal",),
         probes=(
@@ -139,7 +225,9 @@ KNOWN = (
                 603.4299455268164,
                 106.88218088197465,
             ),
+            lambda: multi.bvp_case(*KNOWN_D4_CYCLE),
         ),
+        fixed=True,
     ),
     Known(
         "D5",
@@ -223,7 +311,11 @@ KNOWN = (
         ("mooring",),
         ("spurious-refusal",),
         r"no descent|singular|stay slack|no convergence",
-        probes=(lambda: moored.mooring_case(_MOORING_F3),),
+        probes=(
+            lambda: moored.mooring_case(_MOORING_F3),
+            *(lambda sc=sc: moored.mooring_case(sc) for sc in KNOWN_F3_HEAVE_SCENES),
+        ),
+        fixed=True,
     ),
     Known(
         "F6",

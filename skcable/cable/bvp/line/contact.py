@@ -163,6 +163,9 @@ class ContactRows:
     switch : ndarray or None
         ``c_i`` of the active-set test ``λ > c g`` where it differs from ``stiffness`` (the rows
         themselves, ``c g = 0`` or ``λ = 0``, have the same Newton step for any ``c > 0``).
+    frozen : ndarray of bool or None
+        The active set held fixed (`skcable.cable.bvp.line.iterate.frozen_steps`): each node's
+        row is ``c g = 0`` where True and ``λ = 0`` where False, whatever ``λ`` and ``g`` are.
     """
 
     nodes: np.ndarray
@@ -173,6 +176,7 @@ class ContactRows:
     sliding_share: np.ndarray
     external_y: np.ndarray
     switch: np.ndarray | None = None
+    frozen: np.ndarray | None = None
 
     def terms(self, z, R0) -> ContactTerms:
         """Per contact node: slope, curvature, gap, multiplier λ, active flag."""
@@ -183,6 +187,8 @@ class ContactRows:
         Rx, Ry = R0[i], R0[N + i]
         norm2 = 1.0 + bp * bp
         lam = (Ry - bp * Rx) / norm2
+        if self.frozen is not None:
+            return ContactTerms(bp, bpp, gap, lam, self.frozen, Rx, Ry)
         active = lam > (self.stiffness if self.switch is None else self.switch) * gap
         return ContactTerms(bp, bpp, gap, lam, active, Rx, Ry)
 

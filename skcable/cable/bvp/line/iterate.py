@@ -7,10 +7,14 @@ merit, unless ``options.line_search`` is ``"none"``) from ``z0`` with the user's
 damped step where full steps identify the active set and converge: then `full_steps` is tried
 from the same start before the first failure is raised. Past ``tol``, full Newton steps go on
 while the merit still falls tenfold (`POLISH` at most): quadratic convergence takes the solution
-to its round-off floor for one or two more assemblies. ``callback(iteration, residual_norm,
-step_norm)`` sees every step of the three, numbered from 1 in each solve (the fallback starts
-again from the start); an exception it raises stops the solve as an `skcable.InputError` naming
-``callback`` and the iteration.
+to its round-off floor for one or two more assemblies. Where the damped Newton stops (no
+descent, stagnation) with the line on the seabed, `frozen_steps` goes on from where it stopped
+with the active set held: a node on the seabed with no push (``λ = g = 0``, a touchdown at a
+node) makes the semismooth Newton cycle between two active sets (the max-norm merit refuses
+both steps), and one of them, held, is a smooth system whose solution meets the contact
+conditions to ``tol``. ``callback(iteration, residual_norm, step_norm)`` sees every step of
+them all, numbered from 1 in each solve (the fallback starts again from the start); an exception
+it raises stops the solve as an `skcable.InputError` naming ``callback`` and the iteration.
 """
 
 from __future__ import annotations
@@ -21,10 +25,13 @@ from skcable.cable.bvp.line.solution import LineBVPSolution
 from skcable.errors import ConvergenceError, InputError
 from skcable.fe import NewtonOptions, newton
 
-__all__ = ["POLISH", "first_success", "full_steps", "report", "solve_on"]
+__all__ = ["FROZEN_STEPS", "POLISH", "first_success", "frozen_steps", "full_steps", "report", "solve_on"]
 
 #: Newton steps past rtol at most, while the merit falls tenfold
 POLISH = 2
+
+#: full Newton steps at most per active set held (`frozen_steps`)
+FROZEN_STEPS = 8
 
 
 def first_success(*attempts):
@@ -85,7 +92,60 @@ def full_steps(problem, z0, options: NewtonOptions):
     return (z, state, history) if converged(problem, state, options) else None
 
 
+def _active_sets(problem, state):
+    """The active sets `frozen_steps` holds: the iterate's, its full Newton step's, their union
+    and their intersection (each once)."""
+    here = state.terms.active
+    trial = problem.assemble(state.z + problem.increment(state))
+    there = here if trial.terms is None else trial.terms.active
+    masks: list[np.ndarray] = []
+    for mask in (here, there, here | there, here & there):
+        if not any(np.array_equal(mask, seen) for seen in masks):
+            masks.append(mask)
+    return masks
+
+
+def frozen_steps(problem, z, options: NewtonOptions, steps: int = FROZEN_STEPS):
+    """Full Newton steps from ``z`` with the contact nodes' active set held
+    (`LineProblem.with_active_set`), for each of `_active_sets` in turn, ``steps`` at most:
+    (z, state, history) once the line's own residual (its true contact rows, ``min(λ, c g)``)
+    meets ``options.tol`` (`converged`); None if no active set gets there or the line has no
+    contact rows. ``history`` holds the true merit per step."""
+    state = problem.assemble(z)
+    if state.terms is None or not np.isfinite(state.merit):
+        return None
+    for mask in _active_sets(problem, state):
+        held = problem.with_active_set(mask)
+        zh, sh, history = z, held.assemble(z), [state.merit]
+        for _ in range(steps):
+            if not np.isfinite(sh.merit):
+                break
+            step = held.increment(sh)
+            zh = zh + step
+            sh, true = held.assemble(zh), problem.assemble(zh)
+            history.append(true.merit)
+            report(options.callback, len(history) - 1, true.merit, step)
+            if converged(problem, true, options):
+                return zh, true, history
+    return None
+
+
 def _damped(problem, z0, options: NewtonOptions):
+    try:
+        return _newton(problem, z0, options)
+    except ConvergenceError as failed:
+        # the steps left of max_iter (none where the Newton ran out of them)
+        steps = min(FROZEN_STEPS, options.max_iter - (len(failed.history) - 1))
+        out = None
+        if failed.last is not None and steps > 0:
+            out = frozen_steps(problem, failed.last, options, steps)
+        if out is None:
+            raise
+        z, state, history = out
+        return z, state, list(failed.history) + history[1:]
+
+
+def _newton(problem, z0, options: NewtonOptions):
     result = newton(
         problem.assemble,
         z0,
