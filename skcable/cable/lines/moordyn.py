@@ -490,7 +490,11 @@ class _Writer:
             if not isinstance(line, Line):
                 raise InputError("lines", f"line {k} is a {type(line).__name__}: only cable.Line is written")
             if line.in_space is not None or line.nonlinear:
-                what = line.in_space[0] if line.in_space is not None else "EA (a nonlinear axial law)"
+                what = (
+                    {"current": "current", "seabed": "bathymetry"}[line.in_space[0]]
+                    if line.in_space is not None
+                    else "nonlinear axial law (EA)"
+                )
                 raise InputError(
                     "lines",
                     f"line {k} has a {what}, which a MoorDyn v2 file does not hold with the line "
