@@ -299,11 +299,16 @@ class Dask:
             )
         kind = "processes" if problem is None else "threads"
         self.description = f"dask, a local cluster of {self.n_workers} worker {kind}"
+        import logging
+
         return LocalCluster(
             n_workers=self.n_workers,
             threads_per_worker=1,
             processes=problem is None,
             dashboard_address=":0",
+            # errors only: a worker whose heartbeat meets the scheduler already closing logs a
+            # warning with a traceback (a race at shutdown on a loaded machine), not a failure
+            silence_logs=logging.ERROR,
         )
 
     def close(self) -> None:
