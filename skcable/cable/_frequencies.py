@@ -53,7 +53,7 @@ from skcable._checks import TINY, exactly_one, positive, real, scalar, whole
 from skcable._eigen import BandPattern, dense, farthest_from_one, first_lobe_positive, lowest_modes
 from skcable._show import attributes, counted
 from skcable.cable._catenary import catenary
-from skcable.cable.conductors._inputs import blame_extreme
+from skcable.cable._extreme import blame_extreme
 from skcable.errors import ConvergenceError, InputError
 
 __all__ = ["NaturalFrequencies", "natural_frequencies", "irvine_frequencies"]

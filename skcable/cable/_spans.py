@@ -61,8 +61,9 @@ import numpy as np
 
 from skcable._checks import broadcast, nonnegative, real, scalar
 from skcable._show import attributes, counted
+from skcable.cable._extreme import blame_extreme
 from skcable.cable._state import change_of_state, thermal_catenary
-from skcable.cable.conductors._inputs import blame_extreme, normal, renamed, thermal_factor
+from skcable.cable.conductors._inputs import normal, renamed, thermal_factor
 from skcable.cable.conductors._lines import reference_state
 from skcable.errors import ConvergenceError, InputError
 from skcable.fe import newton

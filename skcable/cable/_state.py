@@ -48,7 +48,8 @@ from skcable import _plausible
 from skcable._checks import broadcast, nonnegative, positive, real, scalar
 from skcable._show import attributes, counted, quantity
 from skcable.cable._elastic import elastic_catenary
-from skcable.cable.conductors._inputs import blame_extreme, load_plane, normal, renamed, thermal_factor
+from skcable.cable._extreme import blame_extreme
+from skcable.cable.conductors._inputs import load_plane, normal, renamed, thermal_factor
 from skcable.cable.conductors._parabola import parabola_states
 from skcable.cable.conductors._reference import reference_length
 from skcable.errors import ConvergenceError, InputError

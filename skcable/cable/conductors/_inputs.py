@@ -7,13 +7,10 @@ import numpy as np
 
 from skcable import _plausible
 from skcable._checks import TINY, positive, require
+from skcable.cable._extreme import extreme
 from skcable.errors import InputError
 
-__all__ = ["normal", "thermal_factor", "load_plane", "renamed", "blame_extreme", "extreme"]
-
-#: No input of a cable or conductor computation lies beyond 10**±EXTREME (in any unit system a
-#: float holds: a span of 1e-100 m or a load of 1e100 N/m is no physical cable).
-EXTREME = 100.0
+__all__ = ["normal", "thermal_factor", "load_plane", "renamed"]
 
 
 def normal(name, value):
@@ -73,50 +70,6 @@ def load_plane(span, dh, w, wind):
     dh_p = dh * (w / q)
     span_p = np.hypot(span, dh * (wind / q))
     return q, span_p, dh_p
-
-
-def extreme(**values) -> str | None:
-    """The name of the value farthest from 1 in magnitude when it lies beyond 10**±`EXTREME`
-    (zeros, non-finite values and None left out), else None. Arrays count by their farthest
-    element."""
-    farthest, level = None, EXTREME
-    for name, value in values.items():
-        if value is None:
-            continue
-        magnitude = np.abs(np.asarray(value, dtype=float))
-        magnitude = magnitude[np.isfinite(magnitude) & (magnitude > 0)]
-        if magnitude.size:
-            distance = float(np.max(np.abs(np.log10(magnitude))))
-            if distance > level:
-                farthest, level = name, distance
-    return farthest
-
-
-class blame_extreme:  # noqa: N801 - used like a function: ``with blame_extreme(span=..., ...):``
-    """Context re-raising an inner `InputError` under the name of the argument whose magnitude
-    is beyond any physical one (`extreme`) when there is one and the refusal names another: the
-    solvers inside name the argument their own check trips on (``H0`` for a span of 1e308 whose
-    catenary overflows), the cause is the outsized one."""
-
-    __slots__ = ("values",)
-
-    def __init__(self, **values):
-        self.values = values
-
-    def __enter__(self):
-        return self
-
-    def __exit__(self, kind, exc, traceback):
-        if kind is None or not issubclass(kind, InputError):
-            return False
-        name = extreme(**self.values)
-        if name is None or name == exc.argument:
-            return False
-        value = np.ravel(np.asarray(self.values[name], dtype=float))
-        magnitude = np.abs(value)
-        usable = np.isfinite(magnitude) & (magnitude > 0)
-        shown = value[np.argmax(np.where(usable, np.abs(np.log10(np.where(usable, magnitude, 1.0))), -1.0))]
-        raise InputError(name, f"{shown:.3g} is beyond any physical magnitude ({exc})") from exc
 
 
 class renamed:  # noqa: N801 - used like a function: ``with renamed({...}):``
