@@ -489,17 +489,12 @@ class _Writer:
             line = handle.model
             if not isinstance(line, Line):
                 raise InputError("lines", f"line {k} is a {type(line).__name__}: only cable.Line is written")
-            if line.in_space is not None or line.nonlinear:
-                what = (
-                    {"current": "current", "seabed": "bathymetry"}[line.in_space[0]]
-                    if line.in_space is not None
-                    else "nonlinear axial law (EA)"
-                )
+            if line.off_plane is not None:
                 raise InputError(
                     "lines",
-                    f"line {k} has a {what}, which a MoorDyn v2 file does not hold with the line "
-                    "(its LINE TYPES take one constant EA; a current or a bathymetry goes in files of "
-                    "their own): not written",
+                    f"line {k}: {line.off_plane[1]}, which a MoorDyn v2 file does not hold with the "
+                    "line (its LINE TYPES take one constant EA; a current or a bathymetry goes in files "
+                    "of their own): not written",
                 )
             a, b = system.point_position(handle.a), system.point_position(handle.b)
             s = line.arrays.s_joint / line.length

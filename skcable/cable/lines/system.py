@@ -242,7 +242,7 @@ class MooringSystem:
 
     def _add_line(self, model, a, b, managed):
         sea = None
-        if managed and is_line(model) and (model.in_space is not None or model.nonlinear):
+        if managed and is_line(model) and model.off_plane is not None:
             sea, managed = self._sea_placement(model, a, b), False
         warm = managed or sea is not None or takes_start(model)
         handle = MooringLine(len(self.mooring_lines), model, a, b, managed, warm, sea)
@@ -254,7 +254,7 @@ class MooringSystem:
         """``(placed, reverse)`` of a line in the sea from ``a`` to ``b`` (`MooringLine.sea`): solved
         from its fixed end; `InputError` naming ``line`` where both ends move."""
         if not (a.fixed or b.fixed):
-            reason = (line.in_space or ("EA", "a nonlinear axial law"))[1]
+            reason = line.off_plane[1]
             raise InputError(
                 "line",
                 f"line {len(self.mooring_lines)} (point {a.index} to point {b.index}) is a line in the sea "

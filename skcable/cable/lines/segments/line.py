@@ -150,8 +150,8 @@ class Line:
         that suits a line's position over the seabed). A line in a current, on a `Bathymetry` or
         with a nonlinear axial law has none (`InputError` naming ``current``, ``seabed`` or
         ``EA``): it is solved in space (`skcable.cable.line_3d`)."""
-        if self.in_space is not None or self.nonlinear:  # no variant of the plane closed forms
-            name, reason = self.in_space or ("EA", "a nonlinear axial law")
+        if self.off_plane is not None:  # no variant of the plane closed forms
+            name, reason = self.off_plane
             raise InputError(
                 name,
                 f"{reason}: this line is solved by cable.line_3d (and in a MooringSystem with one "
@@ -396,6 +396,14 @@ class Line:
         if self.bathymetry is not None:
             return "seabed", "a flat Bathymetry is given in global coordinates, which only line_3d places"
         return None
+
+    @property
+    def off_plane(self) -> tuple[str, str] | None:
+        """``(argument, reason)`` where the plane closed forms of the line's vertical plane do not
+        take this line (`in_space`, or a nonlinear axial law), else None."""
+        if self.in_space is not None:
+            return self.in_space
+        return ("EA", "a nonlinear axial law") if self.nonlinear else None
 
     def _solve_law(self, span, dh, start):
         """The closed form with the laws' exact elongation integrals (`solve_law_line`)."""
