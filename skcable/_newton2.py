@@ -200,7 +200,13 @@ def _scalar(closure, x, y, args, max_iter, halvings, floor, slack, what, strict)
 def _evaluate(closure, x, y, args):
     with np.errstate(all="ignore"):
         out = closure(x, y, *args)
-    return [np.broadcast_to(np.asarray(v, dtype=float), x.shape) for v in out[:8]]
+    shape = x.shape
+    return [
+        v
+        if type(v) is np.ndarray and v.shape == shape and v.dtype == np.float64
+        else np.broadcast_to(np.asarray(v, dtype=float), shape)
+        for v in out[:8]
+    ]
 
 
 def _array(closure, x, y, args, max_iter, halvings, floor, slack, what, strict):

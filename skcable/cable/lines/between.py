@@ -36,11 +36,11 @@ from functools import cached_property
 import numpy as np
 
 from skcable._checks import whole
-from skcable.cable.lines.geometry import solve_in_plane
+from skcable.cable.lines.geometry import batchable, grounded_batch, is_grounded_scene, solve_in_plane
 from skcable.cable.lines.line3d import point
 from skcable.errors import InputError
 
-__all__ = ["LineBetween", "line_between", "solve_between"]
+__all__ = ["LineBetween", "line_between", "solve_between", "solve_many_between"]
 
 
 class LineBetween:
@@ -206,6 +206,41 @@ def solve_between(line, a, b, depth, start=None, bvp=None) -> LineBetween:
     seabed = None if depth is None else -depth - az
     plane = solve_in_plane(line, r, dz, seabed=seabed, start=None if start is None else start.plane, bvp=bvp)
     return LineBetween(line, a, b, plane, r, (dx / r, dy / r))
+
+
+#: Lines of one model a system solves together (`solve_many_between`) from this many: below it,
+#: a Python-float Newton per line is faster than one on arrays (`benchmarks/bench_system.py`).
+BATCH = 32
+
+
+def solve_many_between(line, ends, depth, starts) -> list:
+    """Lines of one model ``line`` with their ends ``ends`` (pairs of checked float 3-vectors
+    ``(a, b)``) over the flat seabed ``z = -depth``, warm-started from ``starts`` (their
+    `LineBetween` solutions elsewhere): those whose anchor end a rests on the seabed with b above
+    it are solved together where there are `BATCH` of them and the model is one segment
+    (`skcable.cable.lines.geometry.grounded_batch`); a `LineBetween` per line, or None for the
+    caller's `solve_between`."""
+    out: list = [None] * len(ends)
+    if depth is None or len(ends) < BATCH or not batchable(line):
+        return out
+    picked, scenes, previous, geometry = [], [], [], []
+    for i, ((a, b), start) in enumerate(zip(ends, starts, strict=True)):
+        (ax, ay, az), (bx, by, bz) = a.tolist(), b.tolist()
+        dx, dy, dz = bx - ax, by - ay, bz - az
+        r = math.hypot(dx, dy)
+        seabed = -depth - az
+        plane = getattr(start, "plane", None)
+        if r > 1e-9 * max(1.0, abs(dx), abs(dy), abs(dz)) and is_grounded_scene(r, dz, seabed, plane):
+            picked.append(i)
+            scenes.append((r, dz, seabed))
+            previous.append(plane)
+            geometry.append((a, b, r, (dx / r, dy / r)))
+    if len(picked) < BATCH:
+        return out
+    for i, plane, (a, b, r, e) in zip(picked, grounded_batch(line, scenes, previous), geometry, strict=True):
+        if plane is not None:
+            out[i] = LineBetween(line, a, b, plane, r, e)
+    return out
 
 
 def line_between(line, a, b, *, depth=None, start=None) -> LineBetween:

@@ -45,10 +45,14 @@ from skcable.cable.lines.lying import lying_line
 from skcable.cable.lines.plane import MODELS, PlaneLine, on_seabed_tolerance, uniform
 from skcable.cable.lines.seabed import elastic_catenary
 from skcable.cable.lines.segments import Line
+from skcable.cable.lines.segments.batch import batchable, solve_batch
 from skcable.cable.lines.slope import solve_on_slope
 from skcable.errors import InputError
 
-__all__ = ["MODELS", "PlaneLine", "is_line", "line_in_plane", "on_seabed_tolerance", "solve_in_plane"]
+__all__ = [
+    "MODELS", "PlaneLine", "batchable", "grounded_batch", "is_grounded_scene", "is_line", "line_in_plane",
+    "on_seabed_tolerance", "solve_in_plane",
+]  # fmt: skip
 
 
 # -- the choice of the model ---------------------------------------------------------------------------
@@ -162,6 +166,36 @@ def _grounded(line, scene, reverse, start, bvp) -> PlaneLine:
         if err.argument not in ("attachments", "segments"):
             raise
         return bvp(line, *scene[:3], f"the lower end on the seabed and {err}", scene[3])
+    return _grounded_plane(scene, reverse, key, variant, solution)
+
+
+def grounded_batch(line, scenes, starts) -> list:
+    """Scenes ``(span, dh, seabed)`` of ``line`` with A on the flat seabed and B above it
+    (`is_grounded_scene`), each from its previous `PlaneLine` of that model, solved together
+    (`skcable.cable.lines.segments.batch`, for a `batchable` line): a `PlaneLine` per scene as
+    `solve_in_plane` gives it, or None where the scene is left to `solve_in_plane`."""
+    key = ("grounded", False)
+    variant = line.variant(contact=True)
+    solutions = solve_batch(
+        variant, [s[0] for s in scenes], [s[1] for s in scenes], [p.solution for p in starts]
+    )
+    return [
+        None if sol is None else _grounded_plane((*scene, 0.0), False, key, variant, sol)
+        for scene, sol in zip(scenes, solutions, strict=True)
+    ]
+
+
+def is_grounded_scene(span, dh, seabed, start) -> bool:
+    """Whether `grounded_batch` takes the scene: A on the flat seabed, B above it, and the
+    previous solution ``start`` of that model with ``H > 0`` (not a heap)."""
+    if start is None or start.key != ("grounded", False) or not start.solution.H > 0 or dh < 0:
+        return False
+    tol = on_seabed_tolerance(span, dh, seabed)
+    return -tol <= -seabed <= tol and dh - seabed > tol
+
+
+def _grounded_plane(scene, reverse, key, variant, solution) -> PlaneLine:
+    """The `PlaneLine` of a solution of the grounded variant: grounded, a heap, or hanging free."""
     if not solution.state.contact:
         reason = "the lower end on the seabed and the line leaving it upwards: it hangs free"
         jacobian = partial(of_free, solution)  # noqa: E731

@@ -45,7 +45,7 @@ import numpy as np
 
 from skcable._checks import positive, real, scalar
 from skcable.cable.lines.assembly import Assembler
-from skcable.cable.lines.between import LineBetween, solve_between
+from skcable.cable.lines.between import BATCH, LineBetween, solve_between, solve_many_between
 from skcable.cable.lines.body import PointBody, RigidBody, skew
 from skcable.cable.lines.equilibrium import MooringEquilibrium, solve_equilibrium
 from skcable.cable.lines.geometry import is_line, on_seabed_tolerance
@@ -407,11 +407,14 @@ class MooringSystem:
         solved: list = []
         latest: dict = {}
         depth = self.depth
-        for handle, previous in zip(handles, start, strict=True):
+        together = self._solve_together(P, handles, start)
+        for k, (handle, previous) in enumerate(zip(handles, start, strict=True)):
             a, b = P[handle.a.index], P[handle.b.index]
             model = handle.model
             line: Any
-            if handle.managed:
+            if k in together:
+                line = together[k]
+            elif handle.managed:
                 line = solve_between(model, a, b, depth, previous or latest.get(id(model)))
             elif handle.sea is not None:
                 line = _solve_sea(handle, a, b, previous)
@@ -425,6 +428,26 @@ class MooringSystem:
             latest[id(model)] = line
             solved.append(line)
         return solved
+
+    def _solve_together(self, P, handles, start) -> dict:
+        """The warm-started `skcable.cable.Line` lines of one model solved together
+        (`solve_many_between`): ``{position in handles: LineBetween}``."""
+        groups: dict = {}
+        for k, (handle, previous) in enumerate(zip(handles, start, strict=True)):
+            if handle.managed and previous is not None:
+                groups.setdefault(id(handle.model), []).append(k)
+        together = {}
+        for ks in groups.values():
+            if len(ks) < BATCH:
+                continue
+            model = handles[ks[0]].model
+            ends = [(P[handles[k].a.index], P[handles[k].b.index]) for k in ks]
+            for k, line in zip(
+                ks, solve_many_between(model, ends, self.depth, [start[k] for k in ks]), strict=True
+            ):
+                if line is not None:
+                    together[k] = line
+        return together
 
     def _checked_start(self, start, handles):
         if start is None:

@@ -6,6 +6,7 @@ One concern per module:
 - `arrays`: `LineArrays`, the line's read-only per-segment and per-joint numbers;
 - `closure`: the closed form at given fairlead forces, its closure and Jacobian
   (`ClosureState`);
+- `batch`: many scenes of one single-segment line at once, Newton on arrays;
 - `heap`: the heap state (``H = 0``, the slack on the seabed);
 - `line`: `Line` and its solve (warm start, uniform-line start, bracketing, Newton);
 - `solution`: `LineSolution`, the equilibrium mapped along the line, its checks,
