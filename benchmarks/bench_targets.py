@@ -255,7 +255,8 @@ def linear_solve_times(ref, r):
     """``(skcable, scipy)`` s: the bordered banded solve of the 10k-element catenary's Newton step
     (one LU, two right-hand sides, the Schur complement) and ``scipy.linalg.solve_banded`` of the
     same band with the one right-hand side; each on a fresh copy of the band (LAPACK overwrites
-    it), minimum of ``20 r`` runs."""
+    it; ours in the band's own memory order, Fortran, as the Newton step hands it over),
+    minimum of ``20 r`` runs."""
     from scipy.linalg import solve_banded
 
     sol = cable.solve_bvp(800.0, -20.0, cable.SelfWeight(20.0), n_elements=10_000, length=ref.length)
@@ -270,7 +271,8 @@ def linear_solve_times(ref, r):
     rhs_banded[system.position[interior]] = rhs
 
     def ours():
-        problem.solver.solve(band.copy(), state.R[interior], state.dR_dH[interior], state.dg_dy[interior],
+        ab = band.copy(order="K")  # Fortran, as the Newton step's band
+        problem.solver.solve(ab, state.R[interior], state.dR_dH[interior], state.dg_dy[interior],
                              state.dg_dH, state.g)  # fmt: skip
 
     def plain():
