@@ -260,10 +260,7 @@ class StrandModel:
             raise InputError("supports", "fix a dof twice (both ends on one node?)")
         self.fixed, self.fixed_values = fixed, values
         self.free = np.setdiff1d(np.arange(self.assembly.N), np.append(fixed, self.pull))
-        self._reaction_dofs = {
-            end: {dof: self.supports.index(end, dof, self.bases, offsets) for dof in given}
-            for end, given in (("left", self.supports.left), ("right", self.supports.right))
-        }
+        self._reaction_dofs = self.supports.indices(self.bases, offsets)
 
     def _equation_groups(self):
         """Dofs of equations of one kind: per field, the values, and the slopes of v and w.
