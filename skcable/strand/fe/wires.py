@@ -137,6 +137,13 @@ class HelicalWires(SectionTerm):
         eps = np.clip(axial_strain, 0.0, self.kappa_grid[-1])
         return self._spline(eps), self._slope(eps) * (axial_strain > 0)
 
+    def _kappa_m_of(self, axial_strain):
+        """`kappa_m`, without the derivative (None) where the law sticks everywhere: no tangent
+        reads it then."""
+        if self._sticks:
+            return self._spline(np.clip(axial_strain, 0.0, self.kappa_grid[-1])), None
+        return self.kappa_m(axial_strain)
+
     def initial_state(self, model):
         return self.slip.initial_state((2, *model.x.shape))
 
@@ -198,7 +205,7 @@ class HelicalWires(SectionTerm):
         kappa = g[2:5:2]  # (v'', w'') components along y, z
         levers = self.levers
         k_principal = contract("kcen,cen->ken", levers, kappa)
-        k_m, dk_m = self.kappa_m(axial)
+        k_m, dk_m = self._kappa_m_of(axial)
         state = step.state
         kappa_c, P, q, d_km = self._slip_derivatives(kappa, k_principal, k_m, dk_m, state)
         y, z, c2 = self._y, self._z, self.c2
