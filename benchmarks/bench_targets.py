@@ -267,7 +267,7 @@ def linear_solve_times(ref, r):
     (one LU, two right-hand sides, the Schur complement) and ``scipy.linalg.solve_banded`` of the
     same band with the one right-hand side; each on a fresh copy of the band (LAPACK overwrites
     it; ours in the band's own memory order, Fortran, as the Newton step hands it over),
-    minimum of ``20 r`` runs."""
+    minimum of ``20 r`` runs of each, the two timed back to back."""
     from scipy.linalg import solve_banded
 
     sol = cable.solve_bvp(800.0, -20.0, cable.SelfWeight(20.0), n_elements=10_000, length=ref.length)
@@ -289,7 +289,8 @@ def linear_solve_times(ref, r):
     def plain():
         solve_banded((kl, ku), compact.copy(), rhs_banded, overwrite_ab=True, check_finite=False)
 
-    return best(ours, 20 * r), best(plain, 20 * r)
+    own, peer, _ = alternated(ours, plain, 20 * r)
+    return own, peer
 
 
 def write_section(name, lines, page=PAGE):
