@@ -146,7 +146,7 @@ def asinh_diff(p, q):
     return np.arcsinh(np.where(same, (p - q) * (p + q) / den, p * rq - q * rp))
 
 
-def asinh_step_parts(q, d, p, rq, rp):
+def asinh_step_parts(q, d, p, rq, rp, xp=None):
     r"""``(S, A)``: ``A = asinh(q + d) - asinh(q)`` and ``S = sinh(A)``, from ``q``, the step
     ``d >= 0`` formed directly (``wL/H``, never a difference of rounded ratios), ``p = q + d``
     and ``rq = sqrt(1 + q²)``, ``rp = sqrt(1 + p²)`` (the caller's, often ``T/H`` at the ends).
@@ -156,9 +156,10 @@ def asinh_step_parts(q, d, p, rq, rp):
     (the only case where it cancels) to :math:`d\,(p + q)/(p r_q + q r_p)`: every operation
     is then free of cancellation, and the result keeps its digits however small ``d`` is
     against ``|q|`` (a taut, steep line: ``d`` ~ 1e-12, ``|q|`` ~ 1). The difference of the
-    rounded ratios, `asinh_diff`, loses ``|q|/d`` ulps there.
+    rounded ratios, `asinh_diff`, loses ``|q|/d`` ulps there. ``xp``: the back end, if the caller
+    knows it (`skcable._xp.namespace`).
     """
-    xp = namespace(q, d, p)
+    xp = namespace(q, d, p) if xp is None else xp
     if xp is not np:
         S = d * (p + q) / (p * rq + q * rp) if p * q > 0 else p * rq - q * rp
         return S, xp.arcsinh(S)

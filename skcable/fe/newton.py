@@ -219,6 +219,7 @@ def newton(
     line_search: bool = True,
     callback: Callable | None = None,
     nonmonotone: int = 0,
+    watchdog: int = 0,
 ) -> NewtonResult:
     """Solve ``R(x) = 0`` from ``x0``; see the module docstring.
 
@@ -259,6 +260,18 @@ def newton(
         nonmonotone line search technique for Newton's method", SIAM J. Numer. Anal., 1986),
         which lets a semismooth Newton step through the transients of an active set that is
         still being identified (its residual rises and falls) while keeping it from running off.
+    watchdog : int
+        Relaxed steps a solve may take (the watchdog technique of R.M. Chamberlain, M.J.D. Powell,
+        C. Lemarechal, H.C. Pedersen, "The watchdog technique for forcing convergence in
+        algorithms for constrained optimization", Math. Programming Study 16, 1982; J. Nocedal,
+        S.J. Wright, "Numerical Optimization", 2006, §15.6): a full step whose merit does not
+        fall is taken anyway, and the full step from there is judged against the point before
+        it. If its merit is below that point's by the Armijo factor, the iteration goes on from
+        it; otherwise it returns to that point and backtracks along its step from ``t = 1/2``
+        (the relaxed iteration is dropped from the history; ``callback`` has seen it). A Newton
+        whose full step overshoots a hardening problem's solution (a mooring pulled from rest)
+        lands on the stiff side instead of halving back to the soft one, and a solve where the
+        relaxed step leads nowhere pays one assembly more than without it.
 
     Raises
     ------
@@ -275,21 +288,23 @@ def newton(
 
     def stop(message):
         if floor is not None and history[-1] <= floor(state):
-            return NewtonResult(x, state, history, assemblies, at_floor=True, steps=steps)
+            return NewtonResult(x, state, history, 1 + search.assemblies, at_floor=True, steps=steps)
         raise ConvergenceError(f"{name}: {message}", history, last=x)
 
     update = (lambda x, dx, t: x + t * dx) if update is None else update
+    search = _LineSearch(assemble, update, admissible, rejects, merit, lambda s: converged(s, norm(s)),
+                         line_search, max_halvings)  # fmt: skip
     x = np.array(x0, dtype=float)
     state = assemble(x) if state is None else state
-    assemblies = 1
     history, merits = [norm(state)], []
     steps: list[float] = []
+    relaxed, saved = 0, None  # the watchdog's relaxed steps taken, and the point it returns to
     for _ in range(max_iter + 1):
         current = history[-1]
         if not np.isfinite(current):
             raise ConvergenceError(f"{name}: the residual is not finite", history, last=x)
         if converged(state, current):
-            return NewtonResult(x, state, history, assemblies, steps=steps)
+            return NewtonResult(x, state, history, 1 + search.assemblies, steps=steps)
         if len(history) > max_iter:
             break
         back = len(history) - 1 - stagnation_window
@@ -302,27 +317,68 @@ def newton(
             )
         dx = increment(state)
         merits.append(merit(state))
-        base, t = max(merits[-nonmonotone:]) if nonmonotone else merits[-1], 1.0
-        for _ in range(max_halvings + 1):
-            trial_x = update(x, dx, t)
-            if admissible is None or admissible(trial_x):
-                try:
-                    trial = assemble(trial_x)
-                except rejects:
-                    trial = None
-                assemblies += 1
-                if trial is not None and (
-                    not line_search or merit(trial) < (1.0 - 1e-4 * t) * base or converged(trial, norm(trial))
-                ):
-                    break
-            t *= 0.5
-        else:
+        base = max(merits[-nonmonotone:]) if nonmonotone else merits[-1]
+        if saved is None:
+            found = search(x, dx, base, 1.0, relaxed < watchdog)
+        else:  # a full step from a relaxed one: below the point before it, or back there
+            found = search.past(saved[1], search(x, dx, base, 1.0, True, halvings=0))
+            if found is None:
+                x, state, dx, base, kept = saved
+                del history[kept:], steps[kept - 1 :], merits[kept:]
+                increment(state)  # the problem's own record of the iterate it steps from
+                found = search(x, dx, base, 0.5)
+            saved = None
+        if found is None:
             return stop("line search found no descent along the Newton step")
-        x, state = trial_x, trial
+        if found[3]:  # a relaxed step: the point before it is where the watchdog returns
+            relaxed += 1
+            saved = (x, state, dx, base, len(history))
+        x, state, t = found[0], found[1], found[2]
         history.append(norm(state))
         steps.append(t)
         _callback(callback, len(history) - 1, history[-1], float(np.max(np.abs(t * dx), initial=0.0)))
     return stop(f"no convergence to {tol:g} in {max_iter} iterations")
+
+
+class _LineSearch:
+    """The backtracking of `newton` along a step: the problem's callables, and the assemblies."""
+
+    def __init__(self, assemble, update, admissible, rejects, merit, done, line_search, max_halvings):
+        self.assemble, self.update, self.admissible, self.rejects = assemble, update, admissible, rejects
+        self.merit, self.done, self.line_search, self.max_halvings = merit, done, line_search, max_halvings
+        self.assemblies = 0
+
+    def __call__(self, x, dx, base, t=1.0, relax=False, halvings=None):
+        """``(trial x, trial state, t, relaxed)`` of the step accepted from ``x`` along ``dx`` (from
+        length ``t``, ``halvings`` at most), None where none is: a trial's merit below ``base`` by
+        the Armijo factor, or converged; ``relax``: a full step that assembles and does not descend
+        is taken as a relaxed one (the watchdog's)."""
+        for _ in range((self.max_halvings if halvings is None else halvings) + 1):
+            trial_x = self.update(x, dx, t)
+            if self.admissible is None or self.admissible(trial_x):
+                try:
+                    trial = self.assemble(trial_x)
+                except self.rejects:
+                    trial = None
+                self.assemblies += 1
+                if trial is not None and (
+                    not self.line_search or self.merit(trial) < (1.0 - 1e-4 * t) * base or self.done(trial)
+                ):
+                    return trial_x, trial, t, False
+                if trial is not None and relax and t == 1.0 and np.isfinite(self.merit(trial)):
+                    return trial_x, trial, t, True
+            t *= 0.5
+        return None
+
+    def past(self, before, found):
+        """``found`` (a step from a relaxed one) as a step taken where its merit is below the merit
+        of ``before`` (the state before the relaxed step) by the Armijo factor, or converged; else
+        None (the watchdog returns)."""
+        if found is not None and (
+            self.merit(found[1]) < (1.0 - 1e-4) * self.merit(before) or self.done(found[1])
+        ):
+            return (*found[:3], False)
+        return None
 
 
 def minimize(

@@ -32,6 +32,8 @@ moments give the hydrostatic restoring in roll and pitch,
 
 from __future__ import annotations
 
+import math
+
 import numpy as np
 
 from skcable._checks import nonnegative, positive, real, scalar
@@ -62,8 +64,8 @@ def rotation_matrix(roll: float, pitch: float, yaw: float) -> np.ndarray:
 
 def angular_velocity_map(roll: float, pitch: float, yaw: float) -> np.ndarray:
     """``T`` with ``omega = T d(roll, pitch, yaw)/dt``, omega the angular velocity in global axes."""
-    c1, s1 = np.cos(yaw), np.sin(yaw)
-    c2, s2 = np.cos(pitch), np.sin(pitch)
+    c1, s1 = math.cos(yaw), math.sin(yaw)
+    c2, s2 = math.cos(pitch), math.sin(pitch)
     return np.array([[c1 * c2, -s1, 0.0], [s1 * c2, c1, 0.0], [-s2, 0.0, 1.0]])
 
 

@@ -34,6 +34,7 @@ from __future__ import annotations
 import functools
 import math
 import warnings
+from typing import NamedTuple
 
 import numpy as np
 
@@ -74,6 +75,18 @@ def is_stable(eigenvalues) -> bool:
     return bool(eigenvalues[0] >= -_UNSTABLE * scale)
 
 
+class _State(NamedTuple):
+    """The system at an iterate: net load ``G`` (N, N m), stiffness ``K``, the solved lines, the
+    dofs, the norm of ``G`` in consistent units and the largest line tension (N)."""
+
+    G: np.ndarray
+    K: np.ndarray
+    lines: list
+    position: np.ndarray
+    size: float
+    tension: float
+
+
 class _Newton:
     """One Newton solve of a system's equilibrium (module docstring): the problem's callables."""
 
@@ -81,16 +94,12 @@ class _Newton:
         self.system, self.external, self.tol, self.max_iter = system, external, tol, max_iter
         self.without = without
         self.units, self.arm = _units(system)
+        self.unit_pairs = self.units[:, None] * self.units[None, :]  # a matrix in consistent units
         self.body_scale = system.force_scale(external)
         self.lines = None  # the lines of the last accepted state: warm starts of the trials
         self.cap = None  # the step cap, from the start (`step_cap`)
         self.seen = 0.0  # the largest line tension of the run's iterates Newton stepped from (N)
         self.restrained_first = False  # `slack_step`: the restrained directions before the free ones
-
-    def scaled(self, G, lines) -> np.ndarray:
-        """The net load over the force scale, moments also over their body's arm."""
-        scale = max(self.body_scale, self.system.tension_scale(lines), 1e-300)
-        return G / scale / self.units
 
     def merit(self, state) -> float:
         """The line search's merit: the net load's norm over a scale that holds during the line
@@ -101,45 +110,37 @@ class _Newton:
         net load; as a merit that ratio stood at 0.48 while the tensions of a body sinking 160 m
         fell a hundredfold (the net load fell with them), and the line search crawled until
         ``max_iter``."""
-        scale = max(self.body_scale, self.seen, 1e-300)
-        return float(np.linalg.norm(state[0] / scale / self.units))
+        return state.size / max(self.body_scale, self.seen, 1e-300)
 
-    def assemble(self, position):
-        """(net load G, stiffness K, lines, position); the lines start from the last accepted ones."""
-        return (
-            *self.system.evaluate(position, self.external, start=self.lines, without=self.without),
-            position,
-        )
+    def assemble(self, position) -> _State:
+        """The `_State` at ``position``; the lines start from the last accepted ones."""
+        G, K, lines = self.system.evaluate(position, self.external, start=self.lines, without=self.without)
+        size = float(np.linalg.norm(G / self.units))
+        return _State(G, K, lines, position, size, self.system.tension_scale(lines))
 
     def norm(self, state) -> float:
-        """The scaled residual's norm (remembered for the last states: the line search asks often)."""
-        key = id(state)
-        cache = self.__dict__.setdefault("_norms", {})
-        if key in cache and cache[key][0] is state:
-            return cache[key][1]
-        value = float(np.linalg.norm(self.scaled(state[0], state[2])))
-        if len(cache) > 8:
-            cache.clear()
-        cache[key] = (state, value)
-        return value
+        """The scaled residual's norm: the net load over the state's force scale (its largest line
+        tension, at least the other loads), moments also over their body's arm."""
+        return state.size / max(self.body_scale, state.tension, 1e-300)
 
     def jacobian(self, state) -> np.ndarray:
         """``-∂G/∂q`` at ``state``."""
-        return state[1] @ self.system.layout.rate_map(state[3])
+        return self.system.layout.times_rate_map(state.K, state.position)
 
     def increment(self, state) -> np.ndarray:
-        G, _, lines, position = state
         jac = self.jacobian(state)
-        self.lines = lines  # Newton steps from this state: the trials start from its lines
-        self.seen = max(self.seen, self.system.tension_scale(lines))
-        null = _null_space(jac / self.units[:, None] / self.units[None, :])
+        self.lines = state.lines  # Newton steps from this state: the trials start from its lines
+        self.seen = max(self.seen, state.tension)
+        null = _null_space(jac / self.unit_pairs)
         if null is not None:
             return self.slack_step(state, null, jac)
-        dq = np.linalg.solve(jac, G)
+        dq = np.linalg.solve(jac, state.G)
         return self.capped(dq)
 
     def capped(self, dq) -> np.ndarray:
-        return dq * min(1.0, float(np.min(self.cap / np.maximum(np.abs(dq), 1e-300))))
+        """``dq`` scaled down to the step cap, where a dof exceeds it."""
+        excess = float(np.max(np.abs(dq) / self.cap))
+        return dq / excess if excess > 1.0 else dq
 
     def step_cap(self, position) -> np.ndarray:
         """A quarter of the shortest horizontal span of each body's or point's lines, 0.2 rad."""
@@ -150,19 +151,19 @@ class _Newton:
         the net force's component in them (module docstring); with no force along them, the
         least-squares Newton step in the other directions (the free ones stay as they are: the
         equilibrium is checked for them at the end, `check_unique`)."""
-        G, _, lines, position = state
+        G, lines, position = state.G, state.lines, state.position
         r = G / self.units
         push = null.T @ (null @ r)
         restrained = self.restrained_first and np.linalg.norm(push) < _RESTRAINED * np.linalg.norm(r - push)
         if restrained and any(_slack(line) for line in lines):
-            scaled = jac / self.units[:, None] / self.units[None, :]  # the restrained directions first
+            scaled = jac / self.unit_pairs  # the restrained directions first
             return self.capped(np.linalg.lstsq(scaled, r, rcond=_SINGULAR)[0] / self.units)
         if not np.linalg.norm(push) > 1e-12 * np.linalg.norm(r):  # no force along the free directions
             if not any(_slack(line) for line in lines):  # nothing will take them: not unique
                 raise ConvergenceError(
                     _SINGULAR_MESSAGE.format(_named(self.system, null)), [self.norm(state)]
                 )
-            scaled = jac / self.units[:, None] / self.units[None, :]  # slack lines, pushed elsewhere
+            scaled = jac / self.unit_pairs  # slack lines, pushed elsewhere
             return self.capped(np.linalg.lstsq(scaled, r, rcond=_SINGULAR)[0] / self.units)
         direction = push / np.linalg.norm(push)  # scaled dofs, |direction| = 1
         ray = direction / self.units
@@ -195,6 +196,7 @@ class _Newton:
             stagnation_window=self.max_iter,  # no stagnation rule: a capped step may gain slowly
             name="mooring equilibrium",
             rejects=(InputError, ConvergenceError),  # a line that cannot reach a trial position
+            watchdog=1,  # the first full step from rest overshoots onto the stiff side: take it
         )
 
 
@@ -248,7 +250,7 @@ def _slack(line) -> bool:
 def check_unique(solve, state, history):
     """Raise `ConvergenceError` where the stiffness at the equilibrium ``state`` is singular: a
     direction neither the lines nor the hydrostatics restrain (the equilibrium is not unique)."""
-    free = _null_space(solve.jacobian(state) / solve.units[:, None] / solve.units[None, :])
+    free = _null_space(solve.jacobian(state) / solve.unit_pairs)
     if free is not None:
         raise ConvergenceError(_SINGULAR_MESSAGE.format(_named(solve.system, free)), history)
 
@@ -347,7 +349,7 @@ def _solve_equilibrium(system, position, external, lines, tol, max_iter, without
     solve = _Newton(system, external, tol, max_iter, without)
     result = _first_run(solve, position, lines)
     check_unique(solve, result.state, result.history)
-    eigenvalues = stiffness_eigenvalues(system, result.state[1])
+    eigenvalues = stiffness_eigenvalues(system, result.state.K)
     passed = []
     if not is_stable(eigenvalues):
         passed.append(result.x.copy())
@@ -356,12 +358,12 @@ def _solve_equilibrium(system, position, external, lines, tol, max_iter, without
                 other = solve.run(start)
             except (ConvergenceError, InputError):
                 continue
-            other_eig = stiffness_eigenvalues(system, other.state[1])
+            other_eig = stiffness_eigenvalues(system, other.state.K)
             if is_stable(other_eig):
                 result, eigenvalues = other, other_eig
                 break
             passed.append(other.x.copy())
-    G, K, lines, _ = result.state
+    G, K, lines = result.state.G, result.state.K, result.state.lines
     eq = MooringEquilibrium(
         system, result.x, external, G, K, lines, result.history, eigenvalues, passed, without=without
     )
@@ -385,7 +387,7 @@ def _restarts(system, position, result, solve):
         upright[rotations] = 0.0
         starts.append(upright)
     units, _ = _units(system)
-    scaled = result.state[1] / units[:, None] / units[None, :]
+    scaled = result.state.K / units[:, None] / units[None, :]
     mode = np.linalg.eigh(0.5 * (scaled + scaled.T))[1][:, 0] / units
     cap = solve.step_cap(result.x)
     size = float(np.min(cap / np.maximum(np.abs(mode), 1e-300)))

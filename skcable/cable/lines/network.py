@@ -21,7 +21,7 @@ from __future__ import annotations
 import numpy as np
 
 from skcable._checks import nonnegative, positive, scalar
-from skcable.cable.lines.body import PointBody, RigidBody
+from skcable.cable.lines.body import PointBody, RigidBody, angular_velocity_map
 from skcable.cable.lines.line3d import point
 from skcable.errors import InputError
 
@@ -151,6 +151,16 @@ class Layout:
             s = self.body_start[i]
             M[s : s + body.n_dof, s : s + body.n_dof] = body.rate_map(self.body_q(q, i))
         return M
+
+    def times_rate_map(self, K, q) -> np.ndarray:
+        """``K @ rate_map(q)``: the rotation columns of each rigid body times its
+        `skcable.cable.lines.body.angular_velocity_map`, the other columns as they are."""
+        out = np.array(K, dtype=float)
+        for i, body in enumerate(self.bodies):
+            if body.n_dof == 6:
+                s = self.body_start[i] + 3
+                out[:, s : s + 3] = K[:, s : s + 3] @ angular_velocity_map(*q[s : s + 3].tolist())
+        return out
 
     def rotation_dofs(self) -> np.ndarray:
         """Indices of the rotation dofs (roll, pitch, yaw of each rigid body)."""

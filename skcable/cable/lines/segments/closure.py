@@ -186,7 +186,7 @@ def piece_terms(xp, H, Vt, Vb, Tt, Tb, Ls, ws, EAs, dVb):
     ∂dy/∂H, ∂dy/∂V``."""
     qt, qb, rt, rb = Vt / H, Vb / H, Tt / H, Tb / H
     d = ws * Ls / H
-    ad = asinh_step_parts(qb, d, qt, rb, rt)[1]
+    ad = asinh_step_parts(qb, d, qt, rb, rt, xp)[1]
     sd = sine_step(xp, d, qt, qb, rt, rb)
     rise = Ls * (Vt + Vb) / (Tt + Tb)  # (T_t - T_b)/w
     dx = H * Ls / EAs + H / ws * ad
