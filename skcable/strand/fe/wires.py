@@ -175,7 +175,7 @@ class HelicalWires(SectionTerm):
 
     def _slip_derivatives(self, kappa, k_principal, k_m, dk_m, state):
         """``(κ_c, ∂κ_c/∂κ (2, 2, ...), ∂κ_c/∂ε_a or None, ∂κ_c/∂κ_m)`` in (y, z) through the slip law;
-        a law that sticks everywhere (`Stick`'s composite) has them fixed: κ_c = κ, P of the model, no q."""
+        a law that sticks everywhere (`Stick`'s composite) has κ_c from κ alone, P fixed, no q."""
         levers = self.levers
         if self._sticks:
             return contract("kcen,ken->cen", levers, k_principal), self._P_stick, None, None
