@@ -19,7 +19,9 @@ unstretched length):
 
 by the Schur complement: one LU of ``K`` with the two right-hand sides ``-R`` and ``c`` gives
 ``a = -K⁻¹R``, ``b = K⁻¹c``, then ``δλ = (-g - r·a) / (d - r·b)`` and ``δu = a - b δλ``. Dot
-products are plain reductions (``np.sum``), not BLAS calls that would wake its threads.
+products are plain reductions (``np.sum``), not BLAS calls that would wake its threads. Bands
+and right-hand sides are kept in Fortran order, so that LAPACK works on them in place (f2py
+copies a C-ordered array to Fortran order on every call).
 """
 
 from __future__ import annotations
@@ -76,17 +78,19 @@ class BandedSystem:
         self._slot = self._flat(i[keep], j[keep])
 
     def _flat(self, i, j):
-        return (self.kl + self.ku + i - j) * self.n + j
+        """Position of entry (i, j) in the band storage read in Fortran order."""
+        return (self.kl + self.ku + i - j) + j * self.shape[0]
 
     def band(self) -> np.ndarray:
-        """An empty matrix in this band storage."""
-        return np.zeros(self.shape)
+        """An empty matrix in this band storage, in Fortran order: LAPACK takes it as it is
+        (a C-ordered band is copied to Fortran order by every call)."""
+        return np.zeros(self.shape, order="F")
 
     def add_elements(self, ab: np.ndarray, Ke: np.ndarray) -> np.ndarray:
-        """Add element matrices of the pattern (in its ravel order) into band storage ``ab``."""
-        ab.ravel()[:] += np.bincount(
-            self._slot, weights=np.asarray(Ke).ravel()[self._keep], minlength=ab.size
-        )
+        """Add element matrices of the pattern (in its ravel order) into band storage ``ab``
+        (in place, whatever its memory order)."""
+        summed = np.bincount(self._slot, weights=np.asarray(Ke).ravel()[self._keep], minlength=ab.size)
+        ab += summed.reshape(self.shape, order="F")
         return ab
 
     def _free_entries(self, K):
@@ -106,7 +110,7 @@ class BandedSystem:
         i, j, data = self._free_entries(K)
         if np.any(np.abs(i - j) > self.kl):
             raise ValueError("the matrix couples dofs farther apart than the band")
-        np.add.at(ab.ravel(), self._flat(i, j), data)
+        np.add.at(ab, (self.kl + self.ku + i - j, j), data)
         return ab
 
     def solve_positive(self, ab: np.ndarray, b: np.ndarray, shift: np.ndarray | None = None, mu: float = 0.0):
@@ -241,19 +245,21 @@ class BorderedSolver:
         """
         system, rank = self.system, self._rank
         bordered = column is not None
-        rhs = np.empty((system.n, 2 if bordered else 1), order="F")
-        rhs[rank, 0] = -residual
+        columns = np.empty((2 if bordered else 1, system.n))  # the right-hand sides, one a row
+        columns[0][rank] = -residual  # one-dimensional scatters and gathers: the cheapest kind
         if bordered:
-            rhs[rank, 1] = column
-        _, _, x, info = lapack.dgbsv(system.kl, system.ku, ab, rhs, overwrite_ab=True, overwrite_b=True)
+            columns[1][rank] = column
+        # columns.T is the Fortran-ordered (n, k) array dgbsv solves in place, one call for both
+        _, _, x, info = lapack.dgbsv(system.kl, system.ku, ab, columns.T, overwrite_ab=True, overwrite_b=True)
         if info != 0:
             raise ConvergenceError(f"the tangent is singular (LAPACK dgbsv info = {info})", [])
-        a = x[rank, 0]
+        a = x[:, 0].take(rank)
         if not bordered:
             return a, -gap / corner
-        b = x[rank, 1]
-        schur = corner - np.sum(row * b)
-        scale = abs(corner) + np.sum(np.abs(row * b))
+        b = x[:, 1].take(rank)
+        weighted = row * b
+        schur = corner - np.sum(weighted)
+        scale = abs(corner) + np.sum(np.abs(weighted, out=weighted))
         if not (np.isfinite(schur) and abs(schur) > 1e-14 * scale):
             raise ConvergenceError("the bordered tangent is singular (Schur complement zero)", [])
         d_global = (-gap - np.sum(row * a)) / schur

@@ -31,6 +31,7 @@ Source: S. Pino Vidal, "Rigidez a flexión en cables: análisis numérico", Univ
 
 from __future__ import annotations
 
+import math
 import warnings
 from typing import Any
 
@@ -259,10 +260,7 @@ class StrandModel:
             raise InputError("supports", "fix a dof twice (both ends on one node?)")
         self.fixed, self.fixed_values = fixed, values
         self.free = np.setdiff1d(np.arange(self.assembly.N), np.append(fixed, self.pull))
-        self._reaction_dofs = {
-            end: {dof: self.supports.index(end, dof, self.bases, offsets) for dof in given}
-            for end, given in (("left", self.supports.left), ("right", self.supports.right))
-        }
+        self._reaction_dofs = self.supports.indices(self.bases, offsets)
 
     def _equation_groups(self):
         """Dofs of equations of one kind: per field, the values, and the slopes of v and w.
@@ -292,7 +290,8 @@ class StrandModel:
         free_order = np.concatenate(with_free)
         free_starts = np.cumsum([0] + [len(f) for f in with_free[:-1]])
         moment = np.array([is_moment for _, _, is_moment in groups])
-        return order, starts, free_order, free_starts, moment, np.where(moment, self.length, 1.0)
+        length = np.where(moment, self.length, 1.0)[self._has_free]  # over the groups with free dofs
+        return order, starts, free_order, free_starts, np.flatnonzero(~moment), length
 
     def _layout(self) -> StrandLayout:
         w = self.strand.wires()
@@ -407,11 +406,9 @@ class StrandModel:
             St, Dt, outputs[i] = t.section(g, Step(strain, self.x, state[i]))
             S, D = (St, Dt.copy()) if S is None else (S + St, D + Dt)
         if S is not None:
-            R = self.section_vector(S)
-            size = self.assembly.magnitude(S.transpose(0, 2, 1))
+            R, size = self.assembly.vector_and_magnitude(S.transpose(0, 2, 1))
         else:
             R, size = np.zeros(self.assembly.N), np.zeros(self.assembly.N)
-        Ke = self.section_matrices(D) if D is not None else None
         densities = [outputs[i].get("energy") for i, _ in self._section_terms]
         energy = None if any(e is None for e in densities) else float(np.sum(sum(densities) * self._dx))
         extra = []
@@ -437,7 +434,14 @@ class StrandModel:
             if energy is not None:
                 e = t.energy(U, step) if t.potential is not False else None
                 energy = None if e is None else energy + e
-        return dict(R=R, Ke=Ke, extra=extra, outputs=outputs, g=g, S=S, D=D, energy=energy, size=size)
+        return dict(R=R, extra=extra, outputs=outputs, g=g, S=S, D=D, energy=energy, size=size)
+
+    def _element_matrices(self, a):
+        """The section terms' element matrices of an assembly ``a`` (None without section terms),
+        formed on first use and kept in it: a Newton iterate that converges never needs them."""
+        if "Ke" not in a:
+            a["Ke"] = self.section_matrices(a["D"]) if a["D"] is not None else None
+        return a["Ke"]
 
     def assemble(self, U, state=None):
         """``(R, K, outputs)``: residual (N,), tangent (CSR, N × N) and the terms' outputs at ``U``
@@ -446,7 +450,8 @@ class StrandModel:
         return a["R"], self._global_tangent(a), a["outputs"]
 
     def _global_tangent(self, a):
-        K = self.assembly.matrix(a["Ke"]) if a["Ke"] is not None else 0
+        Ke = self._element_matrices(a)
+        K = self.assembly.matrix(Ke) if Ke is not None else 0
         for Kt in a["extra"]:
             K = K + Kt
         return K
@@ -474,8 +479,9 @@ class StrandModel:
             self._metric = None  # rebuilt in the new storage
         system = self._system
         ab = system.band()
-        if a["Ke"] is not None:
-            system.add_elements(ab, a["Ke"])
+        Ke = self._element_matrices(a)
+        if Ke is not None:
+            system.add_elements(ab, Ke)
         for Kt in a["extra"]:
             system.add_sparse(ab, Kt)
         return ab
@@ -501,13 +507,13 @@ class StrandModel:
     def _norm(self, a, tol: float) -> float:
         """The largest residual of each group of equations over its force scale, or over its
         round-off floor divided by the tolerance where that is larger (module docstring)."""
-        order, starts, free_order, free_starts, moment, length = self._group_index
+        order, starts, free_order, free_starts, force, free_length = self._group_index
         scales = np.maximum.reduceat(a["size"][order], starts)
-        forces = float(np.max(np.where(moment, 0.0, scales)))
-        floor = ROUND_OFF * forces / tol * length  # the moment groups' floor times the length
+        forces = float(np.max(scales[force], initial=0.0))  # the scales are >= 0; NaN stays NaN
+        floor = ROUND_OFF * forces / tol * free_length  # the moment groups' floor times the length
         residual = np.maximum.reduceat(np.abs(a["R"][free_order]), free_starts)
-        worst = residual / np.maximum(np.maximum(scales[self._has_free], floor[self._has_free]), 1e-300)
-        return float(np.max(worst, initial=0.0)) if np.isfinite(forces) else float("nan")  # NaN stays NaN
+        worst = residual / np.maximum(np.maximum(scales[self._has_free], floor), 1e-300)
+        return float(np.max(worst, initial=0.0)) if math.isfinite(forces) else float("nan")  # NaN stays NaN
 
     def _solver(self, first, options: NewtonOptions) -> str:
         """'minimize', 'newton' or 'semismooth', from the terms' declarations and the options."""

@@ -130,20 +130,39 @@ class StrandSupports:
         field, nodal = _FIELD_DOF[dof]
         return int(offsets[field] + bases[field].get_dofs(end).nodal[nodal][0])
 
+    def indices(self, bases: Mapping, offsets: Mapping) -> dict:
+        """``{"left": {dof: index}, "right": {...}}``: `index` of every supported dof (for the
+        reactions), each field's end dofs looked up once."""
+        seen: dict = {}
+        return {
+            end: {dof: int(offsets[_FIELD_DOF[dof][0]] + _nodal(bases, end, dof, seen)[0]) for dof in given}
+            for end, given in (("left", self.left), ("right", self.right))
+        }
+
     def dofs(self, bases: Mapping, offsets: Mapping) -> tuple[np.ndarray, np.ndarray]:
         """``(fixed, values)``: global dof indices and their prescribed values, the imposed
         strain's dof excluded; ``bases`` has the fields' scikit-fem bases (a mesh with
         boundaries ``left`` and ``right``) and ``offsets`` where each field starts."""
         index, value = [], []
+        seen: dict = {}
         for end, values in (("left", self.left), ("right", self.right)):
             for dof, v in values.items():
-                field, nodal = _FIELD_DOF[dof]
-                dofs = bases[field].get_dofs(end)
-                if nodal not in dofs.nodal:
-                    raise InputError("supports", f"{end} end: the basis of {field!r} has no dof {dof!r}")
-                index.append(offsets[field] + dofs.nodal[nodal])
-                value.append(np.full(len(dofs.nodal[nodal]), v))
+                nodal = _nodal(bases, end, dof, seen)
+                index.append(offsets[_FIELD_DOF[dof][0]] + nodal)
+                value.append(np.full(len(nodal), v))
         fixed = np.concatenate(index).astype(int)
         prescribed = np.concatenate(value)
         order = np.argsort(fixed, kind="stable")
         return fixed[order], prescribed[order]
+
+
+def _nodal(bases: Mapping, end: str, dof: str, seen: dict) -> np.ndarray:
+    """The nodal dofs of ``dof`` at ``end`` (InputError when its field's basis has none), each
+    field's ``get_dofs(end)`` asked once per ``seen`` (scikit-fem searches the facets each time)."""
+    field, name = _FIELD_DOF[dof]
+    if (field, end) not in seen:
+        seen[field, end] = bases[field].get_dofs(end).nodal
+    nodal = seen[field, end]
+    if name not in nodal:
+        raise InputError("supports", f"{end} end: the basis of {field!r} has no dof {dof!r}")
+    return nodal[name]

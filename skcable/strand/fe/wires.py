@@ -16,7 +16,7 @@ from skfem import asm
 from skcable.fe.assembly import contract
 from skcable.strand._bending import critical_curvature
 from skcable.strand.fe.loads import unit_load
-from skcable.strand.fe.slip import slip_law
+from skcable.strand.fe.slip import SlipLaw, Stick, slip_law
 from skcable.strand.fe.terms import SectionTerm, Term
 
 __all__ = ["HelicalWires", "SinusoidalDamageLoads", "WireBending", "critical_curvature_table"]
@@ -113,6 +113,20 @@ class HelicalWires(SectionTerm):
         self._y = self.wire_y - self.centroid_y[None]
         self._z = self.wire_z - self.centroid_z[None]
         self._alive3 = self.alive[:, None, None]
+        self._cy, self._cz = self.centroid_y[None], self.centroid_z[None]
+        self._neg_c2 = -self.c2
+        self._stick_constants(x.shape)
+
+    def _stick_constants(self, shape):
+        """What a law that sticks everywhere (`Stick`'s composite, no second derivatives) fixes per
+        model: ∂κ_c/∂κ of the unit composite and the rows of ∂ε_j/∂g that do not depend on g."""
+        kind = type(self.slip)
+        self._sticks = (
+            kind.composite is Stick.composite and kind.second_derivatives is SlipLaw.second_derivatives
+        )
+        self._P_stick = contract("kcen,ken,kden->cden", self.levers, np.ones((2, *shape)), self.levers)
+        b = self._strain_gradients(np.zeros((6, *shape)), self._P_stick, np.zeros((2, *shape)), self._y.shape)
+        self._b_stick = b[[0, 2, 4, 5]]
 
     def kappa_m(self, axial_strain):
         """Critical curvatures (2, ...) and their derivative with respect to the axial strain.
@@ -122,6 +136,13 @@ class HelicalWires(SectionTerm):
         """
         eps = np.clip(axial_strain, 0.0, self.kappa_grid[-1])
         return self._spline(eps), self._slope(eps) * (axial_strain > 0)
+
+    def _kappa_m_of(self, axial_strain):
+        """`kappa_m`, without the derivative (None) where the law sticks everywhere: no tangent
+        reads it then."""
+        if self._sticks:
+            return self._spline(np.clip(axial_strain, 0.0, self.kappa_grid[-1])), None
+        return self.kappa_m(axial_strain)
 
     def initial_state(self, model):
         return self.slip.initial_state((2, *model.x.shape))
@@ -152,46 +173,60 @@ class HelicalWires(SectionTerm):
             D += cross + cross.transpose(1, 0, 2, 3)
         D += contract("en,aen,ben->aben", coef_ee.sum(axis=0), E, E)
 
-    def section(self, g, step):
-        axial = g[0] + 0.5 * (g[1] ** 2 + g[3] ** 2)
-        kappa = np.array([g[2], g[4]])  # (v'', w'') components along y, z
+    def _slip_derivatives(self, kappa, k_principal, k_m, dk_m, state):
+        """``(κ_c, ∂κ_c/∂κ (2, 2, ...), ∂κ_c/∂ε_a or None, ∂κ_c/∂κ_m)`` in (y, z) through the slip law;
+        a law that sticks everywhere (`Stick`'s composite) has κ_c from κ alone, P fixed, no q."""
         levers = self.levers
-        k_principal = contract("kcen,cen->ken", levers, kappa)
-        k_m, dk_m = self.kappa_m(axial)
-        state = step.state
+        if self._sticks:
+            return contract("kcen,ken->cen", levers, k_principal), self._P_stick, None, None
         clamped, d_clamp, d_km = self.slip.composite(k_principal, k_m, state)
-        d_eps = d_km * dk_m
         kappa_c = contract("kcen,ken->cen", levers, clamped)  # bending about the centroid seen by the wires
         P = contract("kcen,ken,kden->cden", levers, d_clamp, levers)  # dκc/dκ (2x2)
-        q = contract("kcen,ken->cen", levers, d_eps)  # dκc/dε_a
-        cy, cz = self.centroid_y[None], self.centroid_z[None]
-        y, z, c2, sc = self._y, self._z, self.c2, self.sc
-        eccentric = cy * kappa[0][None] + cz * kappa[1][None]
+        q = contract("kcen,ken->cen", levers, d_km * dk_m)  # dκc/dε_a
+        return kappa_c, P, q, d_km
+
+    def _strain_gradients(self, g, P, q, shape):
+        """``b = ∂ε_j/∂g`` (6, nw, ne, nq), its first row ∂ε_j/∂ε_a, filled row by row in one array."""
+        y, z, c2, cy, cz = self._y, self._z, self.c2, self._cy, self._cz
+        b = np.empty((6, *shape))
+        if q is None:  # sticking everywhere
+            b[[0, 2, 4, 5]] = self._b_stick
+        else:
+            np.multiply(c2, 1.0 - y * q[0][None] - z * q[1][None], out=b[0])  # ∂ε_j/∂ε_a
+            b[2] = self._neg_c2 * (cy + y * P[0, 0][None] + z * P[1, 0][None])
+            b[4] = self._neg_c2 * (cz + y * P[0, 1][None] + z * P[1, 1][None])
+            b[5] = self.sc
+        np.multiply(b[0], g[1][None], out=b[1])
+        np.multiply(b[0], g[3][None], out=b[3])
+        return b
+
+    def section(self, g, step):
+        axial = g[0] + 0.5 * (g[1] ** 2 + g[3] ** 2)
+        kappa = g[2:5:2]  # (v'', w'') components along y, z
+        levers = self.levers
+        k_principal = contract("kcen,cen->ken", levers, kappa)
+        k_m, dk_m = self._kappa_m_of(axial)
+        state = step.state
+        kappa_c, P, q, d_km = self._slip_derivatives(kappa, k_principal, k_m, dk_m, state)
+        y, z, c2 = self._y, self._z, self.c2
+        eccentric = self._cy * kappa[0][None] + self._cz * kappa[1][None]
         strain = (
-            c2 * (axial[None] - eccentric - y * kappa_c[0][None] - z * kappa_c[1][None]) + sc * g[5][None]
+            c2 * (axial[None] - eccentric - y * kappa_c[0][None] - z * kappa_c[1][None])
+            + self.sc * g[5][None]
         )
         stress, tangent = self.materials.stress_and_tangent(strain)
-        stress, tangent = stress * self._alive3, tangent * self._alive3
+        stress = stress * self._alive3  # a broken wire carries nothing (its area weight is zero too)
         energy = np.sum(self.area_weight * self.materials.energy(strain), axis=0)
-        d_axial = c2 * (1.0 - y * q[0][None] - z * q[1][None])  # ∂ε_j/∂ε_a
-        b = np.array(
-            [
-                d_axial,
-                d_axial * g[1][None],
-                -c2 * (cy + y * P[0, 0][None] + z * P[1, 0][None]),
-                d_axial * g[3][None],
-                -c2 * (cz + y * P[0, 1][None] + z * P[1, 1][None]),
-                np.broadcast_to(sc, strain.shape),
-            ]
-        )  # (6, nw, ne, nq)
+        b = self._strain_gradients(g, P, q, strain.shape)
         s = self.area_weight * stress
         k = self.area_weight * tangent
         S = contract("jen,ajen->aen", s, b)
         D = contract("ajen,jen,bjen->aben", b, k, b)
-        N = contract("jen,jen->en", s, d_axial)
+        N = contract("jen,jen->en", s, b[0])
         D[1, 1] += N  # the geometric stiffness K_G
         D[3, 3] += N
-        self._curved_slip(D, s, g, axial, levers, k_principal, k_m, dk_m, d_km, state)
+        if not self._sticks:
+            self._curved_slip(D, s, g, axial, levers, k_principal, k_m, dk_m, d_km, state)
         output = dict(
             strain=strain,
             stress=stress,
