@@ -188,24 +188,25 @@ class Material:
         numbers are those of evaluating every branch everywhere and selecting (``np.where``)."""
         eps = np.abs(strain)
         e1, e2, ey, E_e, E_p = self.eps_y1, self.eps_y2, self.eps_y, self.E_e, self.E_p
-        top, low = eps.max(initial=-np.inf), eps.min(initial=np.inf)  # NaN: both comparisons fail
-        if top <= e1:  # every point elastic
-            elastic = plastic = None
+        elastic = plastic = None  # the masks, where more than one branch is on
+        if eps.max(initial=-np.inf) <= e1:  # every point elastic (NaN fails every comparison)
             on = (True, False, False)
-        elif low >= e2:  # every point on the hardening line
-            elastic = plastic = None
+        elif eps.min(initial=np.inf) >= e2:  # every point on the hardening line
             on = (False, True, False)
         else:
             elastic, plastic = eps <= e1, eps >= e2
             n_elastic, n_plastic = int(np.count_nonzero(elastic)), int(np.count_nonzero(plastic))
             on = (n_elastic > 0, n_plastic > 0, n_elastic + n_plastic < eps.size)  # NaN: in the blend
         t = eps - e1 if on[2] else None
+        over = eps - ey if on[1] else None  # beyond the bilinear yield, on the hardening line
         a, b, c, d = self._cubic
         stress = tangent = density = None
         if law:
-            line = E_e * ey + E_p * (eps - ey) if on[1] else None
+            line = E_e * ey + E_p * over if over is not None else None
             blend = ((a * t + b) * t + c) * t + d if on[2] else None
-            stress = np.copysign(_select(eps, elastic, plastic, on, E_e * eps, line, blend), strain)
+            stress = np.copysign(
+                _select(eps, elastic, plastic, on, E_e * eps if on[0] else None, line, blend), strain
+            )
             slope = (3 * a * t + 2 * b) * t + c if on[2] else None
             tangent = _select(eps, elastic, plastic, on, E_e, E_p, slope)
         if energy:
@@ -216,7 +217,9 @@ class Material:
             W1 = 0.5 * E_e * e1**2
             W2 = W1 + cubic(e2 - e1)
             line = (
-                W2 + E_e * ey * (eps - e2) + 0.5 * E_p * ((eps - ey) ** 2 - (e2 - ey) ** 2) if on[1] else None
+                W2 + E_e * ey * (eps - e2) + 0.5 * E_p * (over**2 - (e2 - ey) ** 2)
+                if over is not None
+                else None
             )
             blend = W1 + cubic(t) if on[2] else None
             density = _select(eps, elastic, plastic, on, 0.5 * E_e * eps**2 if on[0] else None, line, blend)
