@@ -25,9 +25,13 @@ ROOT = Path(__file__).resolve().parents[1]
 CHILD = """
 import json, statistics, sys, time, warnings
 warnings.simplefilter("ignore")
-sys.path.insert(0, {benchmarks!r})
+# the checkout's skcable, not an editable install's finder nor the working directory's
+sys.meta_path = [f for f in sys.meta_path if "editable" not in repr(f).lower()]
+sys.path[:0] = [{checkout!r}, {benchmarks!r}]
 from bench_strand_opensees import LENGTH, STEPS, STRAND, TOP
+import skcable
 from skcable import strand
+assert skcable.__file__.startswith({checkout!r}), skcable.__file__
 
 def curve():
     model = strand.StrandModel(STRAND, LENGTH, n_elements=32)
@@ -46,7 +50,7 @@ print(json.dumps([min(times), statistics.median(times)]))
 def timed(checkout: Path, runs: int) -> tuple[float, float]:
     """(minimum, median) CPU seconds of the curve with ``checkout`` first on the path."""
     env = dict(os.environ, PYTHONPATH=str(checkout))
-    code = CHILD.format(benchmarks=str(ROOT / "benchmarks"), runs=runs)
+    code = CHILD.format(checkout=str(checkout.resolve()), benchmarks=str(ROOT / "benchmarks"), runs=runs)
     out = subprocess.run([sys.executable, "-c", code], env=env, capture_output=True, text=True, check=True)
     low, mid = json.loads(out.stdout.strip().splitlines()[-1])
     return low, mid

@@ -37,6 +37,7 @@ import warnings
 from typing import NamedTuple
 
 import numpy as np
+from scipy.linalg import lapack
 
 from skcable._show import counted, quantity
 from skcable.cable.lines.network import end_forces
@@ -131,11 +132,14 @@ class _Newton:
         jac = self.jacobian(state)
         self.lines = state.lines  # Newton steps from this state: the trials start from its lines
         self.seen = max(self.seen, state.tension)
-        null = _null_space(jac / self.unit_pairs)
+        scaled = jac / self.unit_pairs
+        solved = _well_conditioned_solve(scaled, state.G / self.units)
+        if solved is not None:  # no free direction: Newton's step
+            return self.capped(solved / self.units)
+        null = _null_space(scaled)
         if null is not None:
             return self.slack_step(state, null, jac)
-        dq = np.linalg.solve(jac, state.G)
-        return self.capped(dq)
+        return self.capped(np.linalg.solve(jac, state.G))
 
     def capped(self, dq) -> np.ndarray:
         """``dq`` scaled down to the step cap, where a dof exceeds it."""
@@ -253,6 +257,29 @@ def check_unique(solve, state, history):
     free = _null_space(solve.jacobian(state) / solve.unit_pairs)
     if free is not None:
         raise ConvergenceError(_SINGULAR_MESSAGE.format(_named(solve.system, free)), history)
+
+
+#: `_well_conditioned_solve` solves where LAPACK's estimate of the reciprocal condition number
+#: (1-norm) is above this: five orders above `_SINGULAR`, so that no singular value is below
+#: `_SINGULAR` of the largest (the 2-norm condition number is at most n times the 1-norm one,
+#: and the estimate is within a small factor of it; N.J. Higham, "Accuracy and Stability of
+#: Numerical Algorithms", 2002, §15.3).
+_CONDITIONED = 1e-6
+
+
+def _well_conditioned_solve(scaled, rhs):
+    """``scaled⁻¹ rhs`` by an LU factorisation where its estimated reciprocal condition number is
+    above `_CONDITIONED`, else None (`_null_space` then looks for free directions): the singular
+    values cost several LU factorisations, and a Newton step needs them only near a singular
+    Jacobian."""
+    lu, piv, info = lapack.dgetrf(scaled)
+    if info != 0:
+        return None
+    rcond, info = lapack.dgecon(lu, float(np.abs(scaled).sum(axis=0).max()))
+    if info != 0 or not rcond > _CONDITIONED:
+        return None
+    x, info = lapack.dgetrs(lu, piv, rhs)
+    return x if info == 0 and np.isfinite(x).all() else None
 
 
 def _null_space(scaled):
