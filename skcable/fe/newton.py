@@ -336,7 +336,8 @@ def newton(
         x, state, t = found[0], found[1], found[2]
         history.append(norm(state))
         steps.append(t)
-        _callback(callback, len(history) - 1, history[-1], float(np.max(np.abs(t * dx), initial=0.0)))
+        if callback is not None:  # the step's norm is for the callback alone
+            _callback(callback, len(history) - 1, history[-1], float(np.max(np.abs(t * dx), initial=0.0)))
     return stop(f"no convergence to {tol:g} in {max_iter} iterations")
 
 
@@ -465,7 +466,8 @@ def minimize(
             energies.append(energy(state))
             steps.append(t if mu == 0.0 else 0.0)  # a shifted step is no Newton step
             mu = 0.0 if mu <= mu0 else mu / 4.0
-            _callback(callback, len(history) - 1, history[-1], float(np.max(np.abs(t * d), initial=0.0)))
+            if callback is not None:
+                _callback(callback, len(history) - 1, history[-1], float(np.max(np.abs(t * d), initial=0.0)))
         else:
             mu, shifted = (mu0 if mu == 0.0 else 10.0 * mu), True
             history.append(current)
@@ -495,13 +497,11 @@ def _energy_step(assemble, energy, norm, converged, x, d, Pi, current, slope, ha
     for k in range(halvings):
         trial_x = x + t * d
         trial = assemble(trial_x)
-        drop = energy(trial) - Pi
         n_t = norm(trial)
-        if (
-            converged(trial, n_t)
-            or drop <= 1e-4 * t * slope
-            or (abs(drop) <= noise * abs(Pi) and n_t < (1 - 1e-4 * t) * current)
-        ):
+        if converged(trial, n_t):  # accepted whatever its energy: tested first
+            return (t, trial_x, trial, n_t), k + 1
+        drop = energy(trial) - Pi
+        if drop <= 1e-4 * t * slope or (abs(drop) <= noise * abs(Pi) and n_t < (1 - 1e-4 * t) * current):
             return (t, trial_x, trial, n_t), k + 1
         t *= 0.5
     return None, halvings

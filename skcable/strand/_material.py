@@ -144,14 +144,6 @@ class Material:
         """Stress at ``eps_rupture`` (Pa)."""
         return float(self.stress(self.eps_rupture))
 
-    def _branches(self, strain):
-        eps = np.abs(strain)
-        t = eps - self.eps_y1
-        a, b, c, d = self._cubic
-        elastic = eps <= self.eps_y1
-        plastic = eps >= self.eps_y2
-        return eps, t, elastic, plastic, (a, b, c, d)
-
     def stress(self, strain):
         """Stress (Pa) at ``strain``: element-wise over an array of any shape, odd in the strain.
 
@@ -172,11 +164,7 @@ class Material:
         """`stress` and `tangent` of a float array in one pass, without input checks (the
         finite-element models' hot path: their strains are float arrays they computed);
         `stress` and `tangent` check their input and call it."""
-        eps, t, elastic, plastic, (a, b, c, d) = self._branches(strain)
-        blend = ((a * t + b) * t + c) * t + d
-        line = self.E_e * self.eps_y + self.E_p * (eps - self.eps_y)
-        stress = np.copysign(np.where(elastic, self.E_e * eps, np.where(plastic, line, blend)), strain)
-        tangent = np.where(elastic, self.E_e, np.where(plastic, self.E_p, (3 * a * t + 2 * b) * t + c))
+        stress, tangent, _ = self._evaluate(strain, law=True, energy=False)
         return stress, tangent
 
     def energy(self, strain: np.ndarray) -> np.ndarray:
@@ -186,16 +174,56 @@ class Material:
         :math:`W(\varepsilon'_y) + d t + c t^2/2 + b t^3/3 + a t^4/4`, then the hardening line's
         :math:`W(\varepsilon''_y) + E_e\varepsilon_y(|\varepsilon| - \varepsilon''_y)
         + \tfrac12 E_p[(|\varepsilon| - \varepsilon_y)^2 - (\varepsilon''_y - \varepsilon_y)^2]`."""
-        eps, t, elastic, plastic, (a, b, c, d) = self._branches(strain)
-        e1, e2, ey = self.eps_y1, self.eps_y2, self.eps_y
+        return self._evaluate(strain, law=False, energy=True)[2]
 
-        def blend(t):
-            return (((a / 4 * t + b / 3) * t + c / 2) * t + d) * t
+    def stress_tangent_energy(self, strain: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        """`stress_and_tangent` and `energy` of a float array in one pass (the finite-element
+        models' hot path), without input checks; the same numbers, bit for bit."""
+        stress, tangent, energy = self._evaluate(strain, law=True, energy=True)
+        return stress, tangent, energy
 
-        W1 = 0.5 * self.E_e * e1**2
-        W2 = W1 + blend(e2 - e1)
-        line = W2 + self.E_e * ey * (eps - e2) + 0.5 * self.E_p * ((eps - ey) ** 2 - (e2 - ey) ** 2)
-        return np.where(elastic, 0.5 * self.E_e * eps**2, np.where(plastic, line, W1 + blend(t)))
+    def _evaluate(self, strain, law: bool, energy: bool):
+        """``(stress, tangent, energy)`` (None for what is not asked), each branch of the law
+        evaluated only where some point lies on it: a point takes its own branch's value, so the
+        numbers are those of evaluating every branch everywhere and selecting (``np.where``)."""
+        eps = np.abs(strain)
+        e1, e2, ey, E_e, E_p = self.eps_y1, self.eps_y2, self.eps_y, self.E_e, self.E_p
+        elastic = plastic = None  # the masks, where more than one branch is on
+        if eps.max(initial=-np.inf) <= e1:  # every point elastic (NaN fails every comparison)
+            on = (True, False, False)
+        elif eps.min(initial=np.inf) >= e2:  # every point on the hardening line
+            on = (False, True, False)
+        else:
+            elastic, plastic = eps <= e1, eps >= e2
+            n_elastic, n_plastic = int(np.count_nonzero(elastic)), int(np.count_nonzero(plastic))
+            on = (n_elastic > 0, n_plastic > 0, n_elastic + n_plastic < eps.size)  # NaN: in the blend
+        t = eps - e1 if on[2] else None
+        over = eps - ey if on[1] else None  # beyond the bilinear yield, on the hardening line
+        a, b, c, d = self._cubic
+        stress = tangent = density = None
+        if law:
+            line = E_e * ey + E_p * over if over is not None else None
+            blend = ((a * t + b) * t + c) * t + d if on[2] else None
+            stress = np.copysign(
+                _select(eps, elastic, plastic, on, E_e * eps if on[0] else None, line, blend), strain
+            )
+            slope = (3 * a * t + 2 * b) * t + c if on[2] else None
+            tangent = _select(eps, elastic, plastic, on, E_e, E_p, slope)
+        if energy:
+
+            def cubic(t):
+                return (((a / 4 * t + b / 3) * t + c / 2) * t + d) * t
+
+            W1 = 0.5 * E_e * e1**2
+            W2 = W1 + cubic(e2 - e1)
+            line = (
+                W2 + E_e * ey * (eps - e2) + 0.5 * E_p * (over**2 - (e2 - ey) ** 2)
+                if over is not None
+                else None
+            )
+            blend = W1 + cubic(t) if on[2] else None
+            density = _select(eps, elastic, plastic, on, 0.5 * E_e * eps**2 if on[0] else None, line, blend)
+        return stress, tangent, density
 
     @property
     def softening_range(self) -> tuple[float, float] | None:
@@ -224,6 +252,19 @@ class Material:
         safe = np.where(strain == 0.0, 1.0, strain)
         out = np.where(strain == 0.0, self.E_e, self.stress(safe) / safe)
         return out[()] if out.ndim == 0 else out
+
+
+def _select(eps, elastic, plastic, on, on_elastic, on_line, on_blend):
+    """``np.where(elastic, on_elastic, np.where(plastic, on_line, on_blend))`` with the branches
+    no point lies on (``on``: elastic, line, blend) left out, and a constant branch spread over
+    ``eps``'s shape when it is the only one."""
+    values = [v for v, present in zip((on_elastic, on_line, on_blend), on, strict=True) if present]
+    if len(values) == 1:
+        return np.full(eps.shape, values[0]) if np.isscalar(values[0]) else values[0]
+    if not on[0]:
+        return np.where(plastic, on_line, on_blend)
+    inner = np.where(plastic, on_line, on_blend) if on[1] and on[2] else (on_line if on[1] else on_blend)
+    return np.where(elastic, on_elastic, inner)
 
 
 #: Pino Vidal (2021), Table B.1 (MPa in the table, Pa here); density and thermal expansion:
@@ -333,3 +374,10 @@ class WireMaterials:
     def energy(self, strain: np.ndarray, axis: int = 0) -> np.ndarray:
         """`Material.energy` (J/m³) of every wire's own material; the wires run along ``axis``."""
         return self._per_group("energy", strain, axis, 1)[0]
+
+    def stress_tangent_energy(
+        self, strain: np.ndarray, axis: int = 0
+    ) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        """`Material.stress_tangent_energy` of every wire's own material (one pass per material);
+        the wires run along ``axis``."""
+        return self._per_group("stress_tangent_energy", strain, axis, 3)

@@ -139,6 +139,9 @@ class StrandModel:
     ----------
     terms : list of Term
         Every term of the model (unbound, as given): the physics, then ``terms``.
+    strand_section : skcable.strand.Section
+        The strand's section properties, formed once per model: its ``wires`` (the wire table)
+        and ``materials`` are what the built-in terms read when they are bound.
     bases : dict of str to skfem.Basis
         ``u``, ``v``, ``w``, ``phi``.
     assembly : skcable.fe.Assembly
@@ -193,7 +196,8 @@ class StrandModel:
         self.x = np.asarray(self.bases["u"].global_coordinates())[0]  # (ne, nq)
         self._dx = self.bases["u"].dx
         self._boundary()
-        self.EA = strand.section().EA
+        self.strand_section = strand.section()  # its wire table and materials, formed once per model
+        self.EA = self.strand_section.EA
         self._bound = [t.bind(self) for t in self.terms]
         # (position in the model's term list, bound term): the states and outputs follow that list
         self._section_terms = [(i, t) for i, t in enumerate(self._bound) if isinstance(t, SectionTerm)]
@@ -294,7 +298,7 @@ class StrandModel:
         return order, starts, free_order, free_starts, np.flatnonzero(~moment), length
 
     def _layout(self) -> StrandLayout:
-        w = self.strand.wires()
+        w, materials = self.strand_section.wires, self.strand_section.materials
         helical = w.layer > 0
         lay_length = np.ones_like(w.radius)
         lay_length[helical] = self.strand.lay_lengths[w.layer[helical] - 1]
@@ -312,8 +316,8 @@ class StrandModel:
             slip=self.slip.name,
             eps_rupture=min(m.eps_rupture for m in self.strand.materials),
             eps_y1=min(m.eps_y1 for m in self.strand.materials),
-            wire_eps_rupture=self.strand.wire_materials().take("eps_rupture"),
-            wire_eps_y1=self.strand.wire_materials().take("eps_y1"),
+            wire_eps_rupture=materials.take("eps_rupture"),
+            wire_eps_y1=materials.take("eps_y1"),
             element=self.element,
         )
 

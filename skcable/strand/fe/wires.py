@@ -78,10 +78,10 @@ class HelicalWires(SectionTerm):
 
     def setup(self, model) -> None:
         super().setup(model)
-        s = model.strand
-        w = s.wires()
+        s, section = model.strand, model.strand_section
+        w = section.wires
         self.material = s.material
-        self.materials = s.wire_materials()
+        self.materials = section.materials
         self.alive = w.intact
         cos, sin = np.cos(w.lay_angle), np.sin(w.lay_angle)
         helical = w.layer > 0
@@ -101,7 +101,6 @@ class HelicalWires(SectionTerm):
         self.c2 = (cos**2)[:, None, None]
         self.sc = (w.radius * sin * cos * w.direction)[:, None, None]
         self.area_weight = np.where(self.alive, w.area / cos, 0.0)[:, None, None]
-        section = s.section()
         levers = [np.array([-t[1], t[0]]) for t in section.principal_axes]
         lever_angle = np.array([np.arctan2(n[0], n[1]) for n in levers])
         angle = lever_angle[:, None, None] + rotation[None]
@@ -214,9 +213,9 @@ class HelicalWires(SectionTerm):
             c2 * (axial[None] - eccentric - y * kappa_c[0][None] - z * kappa_c[1][None])
             + self.sc * g[5][None]
         )
-        stress, tangent = self.materials.stress_and_tangent(strain)
+        stress, tangent, density = self.materials.stress_tangent_energy(strain)
         stress = stress * self._alive3  # a broken wire carries nothing (its area weight is zero too)
-        energy = np.sum(self.area_weight * self.materials.energy(strain), axis=0)
+        energy = np.sum(self.area_weight * density, axis=0)
         b = self._strain_gradients(g, P, q, strain.shape)
         s = self.area_weight * stress
         k = self.area_weight * tangent
@@ -247,9 +246,9 @@ class WireBending(SectionTerm):
 
     def setup(self, model):
         super().setup(model)
-        s, w = model.strand, model.strand.wires()
+        s, w = model.strand, model.strand_section.wires
         cos = np.cos(w.lay_angle)
-        materials = s.wire_materials()
+        materials = model.strand_section.materials
         E_ratio = materials.take("E_e") / s.material.E_e  # exactly 1.0 with one material
         G_ratio = materials.take("G") / s.material.G
         self.EI = s.material.E_e * float(np.sum(np.where(w.intact, w.inertia * cos * E_ratio, 0.0)))
@@ -283,10 +282,10 @@ class SinusoidalDamageLoads(Term):
     damage = True
 
     def setup(self, model):
-        s, w = model.strand, model.strand.wires()
+        s, w = model.strand, model.strand_section.wires
         self.material = s.material
         self.broken = np.flatnonzero(~w.intact & (w.layer > 0))
-        self.materials = s.wire_materials().subset(self.broken)
+        self.materials = model.strand_section.materials.subset(self.broken)
         helical = w.layer > 0
         lay_length = np.ones_like(w.radius)
         lay_length[helical] = s.lay_lengths[w.layer[helical] - 1]
