@@ -254,7 +254,10 @@ def _slack(line) -> bool:
 def check_unique(solve, state, history):
     """Raise `ConvergenceError` where the stiffness at the equilibrium ``state`` is singular: a
     direction neither the lines nor the hydrostatics restrain (the equilibrium is not unique)."""
-    free = _null_space(solve.jacobian(state) / solve.unit_pairs)
+    scaled = solve.jacobian(state) / solve.unit_pairs
+    if _well_conditioned_solve(scaled, np.zeros(len(scaled))) is not None:
+        return  # no singular value near zero (`_CONDITIONED`)
+    free = _null_space(scaled)
     if free is not None:
         raise ConvergenceError(_SINGULAR_MESSAGE.format(_named(solve.system, free)), history)
 
@@ -307,11 +310,19 @@ def solve_equilibrium(system, position, external, lines, tol, max_iter, without=
     preferred (module docstring), ``without`` the lines of those indices. Returns a
     `MooringEquilibrium`.
 
-    The small dense solves (a few dozen dofs) run on one BLAS thread (threadpoolctl): more threads
+    The dense solves of a few dozen dofs run on one BLAS thread (threadpoolctl): more threads
     only add their start-up and, on a shared machine, their contention (an SVD of order 96 took
-    80 ms on two contending threads against 1 ms on one)."""
+    80 ms on two contending threads against 1 ms on one). Below `_ONE_THREAD` dofs BLAS runs on
+    one thread anyway (OpenBLAS threads only larger products), and setting the limit would cost
+    more than a Newton step."""
+    if system.n_dof < _ONE_THREAD:
+        return _solve_equilibrium(system, position, external, lines, tol, max_iter, without)
     with _threads().limit(limits=1, user_api="blas"):
         return _solve_equilibrium(system, position, external, lines, tol, max_iter, without)
+
+
+#: Systems of this many dofs and more solve under a limit of one BLAS thread (`solve_equilibrium`).
+_ONE_THREAD = 24
 
 
 def _first_run(solve, position, lines):

@@ -549,19 +549,20 @@ class MooringSystem:
     def step_cap(self, q, without=()) -> np.ndarray:
         """The largest Newton step of each dof: a quarter of the shortest horizontal span of the lines
         of its body or point (m), 0.2 rad."""
-        layout = self.layout
-        P = self.frame(q)[0]
-        handles = self._active(without)
-        ends = np.array([[h.a.index, h.b.index] for h in handles], dtype=int).reshape(-1, 2)
-        spans = np.hypot(*(P[ends[:, 1]] - P[ends[:, 0]])[:, :2].T) if len(handles) else np.ones(1)
-        starts = self._assembler.group_start  # each point's body or free point: its first dof (-1: fixed)
-        shortest = np.full(layout.n_dof, np.inf)
-        at = starts[ends]  # (lines, 2): the first dof of each end's body or point
-        moving = at >= 0
-        np.minimum.at(shortest, at[moving], np.broadcast_to(spans[:, None], at.shape)[moving])
-        cap = np.full(layout.n_dof, 0.2)
-        for s in self._assembler.groups:
-            cap[s : s + 3] = 0.25 * (shortest[s] if np.isfinite(shortest[s]) else spans.max())
+        P = self.frame(q)[0].tolist()
+        starts = self._assembler.group_start.tolist()  # each point's body or free point: its first dof, or -1
+        shortest: dict = {}
+        longest = 1.0  # with no line at all
+        for k, h in enumerate(self._active(without)):
+            (ax, ay, _), (bx, by, _) = P[h.a.index], P[h.b.index]
+            r = math.hypot(bx - ax, by - ay)
+            longest = r if k == 0 else max(longest, r)
+            for end in (h.a.index, h.b.index):
+                if starts[end] >= 0 and not r >= shortest.get(starts[end], math.inf):
+                    shortest[starts[end]] = r
+        cap = np.full(self.layout.n_dof, 0.2)
+        for first in self._assembler.groups.tolist():  # a group with no line: the longest span
+            cap[first : first + 3] = 0.25 * shortest.get(first, longest)
         return cap
 
     def force_scale(self, external) -> float:
