@@ -38,6 +38,7 @@ import numpy as np
 from skcable._checks import whole
 from skcable.cable.lines.geometry import batchable, grounded_batch, is_grounded_scene, solve_in_plane
 from skcable.cable.lines.line3d import point
+from skcable.cable.lines.segments import LineSolution
 from skcable.errors import InputError
 
 __all__ = ["LineBetween", "line_between", "solve_between", "solve_many_between"]
@@ -132,7 +133,11 @@ class LineBetween:
         force = [-self.plane.H_B * ex, -self.plane.H_B * ey, -self.plane.V_B]
         if self.plane.reversed:
             return [*force, *self.block(1, 1).ravel().tolist()]
-        (k_hh, k_hv), (k_vh, k_vv) = np.asarray(self.plane.solution.stiffness(), dtype=float).tolist()
+        solution = self.plane.solution
+        if type(solution) is LineSolution:  # the closed forms' common case, on floats
+            k_hh, k_hv, k_vh, k_vv = solution.stiffness_values()
+        else:
+            k_hh, k_hv, k_vh, k_vv = np.asarray(solution.stiffness(), dtype=float).ravel().tolist()
         exx, exy, eyy = ex * ex, ex * ey, ey * ey
         c = self.plane.H_B / self.span
         return [

@@ -398,14 +398,18 @@ class LineSolution(ProfileMixin):
         the heap side's stiffness, one-sided at the boundary (the line becomes taut again
         only when the span exceeds the slack's length on the seabed).
         """
+        return np.array(self.stiffness_values()).reshape(2, 2)
+
+    def stiffness_values(self) -> tuple[float, float, float, float]:
+        """`stiffness` by rows, as Python floats: ``(k_H_span, k_H_dh, k_VB_span, k_VB_dh)``."""
         if self._st.heap:
-            return np.array([[0.0, 0.0], [0.0, 1.0 / self._st.jac[3]]])
+            return 0.0, 0.0, 0.0, 1.0 / self._st.jac[3]
         j11, j12, j21, j22 = self._st.jac
         det = j11 * j22 - j12 * j21
-        K = (j22 / det, -j12 / det, -j21 / det, j11 / det) if det != 0.0 else (math.inf,)
+        K = (j22 / det, -j12 / det, -j21 / det, j11 / det) if det != 0.0 else (math.inf,) * 4
         if not all(map(math.isfinite, K)):
             raise ConvergenceError("LineSolution.stiffness: the closure's Jacobian is singular here")
-        return np.array(K).reshape(2, 2)
+        return K
 
     @cached_property
     def _segment_table(self):
