@@ -214,7 +214,7 @@ def solve_between(line, a, b, depth, start=None, bvp=None) -> LineBetween:
 
 
 #: Lines of one model a system solves together (`solve_many_between`) from this many: below it,
-#: a Python-float Newton per line is faster than one on arrays (`benchmarks/bench_system.py`).
+#: a Python-float Newton per line is faster than one on arrays (`benchmarks/bench_line_batch.py`).
 BATCH = 32
 
 
