@@ -72,18 +72,12 @@ class blame_extreme:  # noqa: N801 - used like a function: ``with blame_extreme(
         raise InputError(name, f"{shown:.3g} is beyond any physical magnitude ({exc})") from exc
 
 
-class outsized:  # noqa: N801 - used like a function: ``with outsized(span=..., ...):``
+class outsized(blame_extreme):  # noqa: N801 - used like a function: ``with outsized(span=..., ...):``
     """`blame_extreme`, and an arithmetic error (`ARITHMETIC`) under the name of the outsized
     argument (an `InputError`) when there is one; otherwise the error passes unchanged.
     Costs nothing unless an error passes."""
 
-    __slots__ = ("values",)
-
-    def __init__(self, **values):
-        self.values = values
-
-    def __enter__(self):
-        return self
+    __slots__ = ()
 
     def __exit__(self, kind, exc, traceback):
         if kind is None or not issubclass(kind, (InputError, *ARITHMETIC)):
