@@ -13,7 +13,7 @@ Coulomb friction):
     X = \Delta x(H, V, L - a) + a + e_g, \qquad Z = \Delta y(H, V, L - a),
 
 with ``a = max(-(V - wL)/w, 0)`` the grounded length where the line touches down (``V < wL``)
-and ``e_g`` its stretch under the friction ``C_B w`` per unit length (`closure._grounded`).
+and ``e_g`` its stretch under the friction ``C_B w`` per unit length (`closure.grounded_piece`).
 
 Each converged element is then taken as the scalar closed form at its ``(H, V)``
 (`closure_state`) and checked as `Line.solve` checks its solutions: its closure residual over
@@ -29,7 +29,7 @@ import math
 import numpy as np
 
 from skcable._newton2 import solve2
-from skcable.cable.lines.segments.closure import closure_state, piece_terms
+from skcable.cable.lines.segments.closure import closure_state, grounded_piece, piece_terms
 from skcable.cable.lines.segments.solution import LineSolution
 
 __all__ = ["batchable", "solve_batch"]
@@ -62,12 +62,8 @@ class _Closure:
             np, H, V, Vb, np.hypot(H, V), np.hypot(H, Vb), L - a, w, EA, np.where(touches, 0.0, 1.0)
         )
         # the grounded piece: tension H at the touchdown, falling by m per unit length to the anchor
-        slips = (m == 0.0) | (H - m * a > 0)
         da = np.where(a > 0, -1.0 / w, 0.0)  # ∂a/∂V
-        with np.errstate(divide="ignore", invalid="ignore"):
-            stretch = np.where(slips, (H * a - 0.5 * m * a * a) / EA, 0.5 * H * H / (m * EA))
-            g_h = np.where(slips, a / EA, H / (m * EA))
-        g_v = np.where(slips, da + (H * da - m * a * da) / EA, da)
+        stretch, g_h, g_v = grounded_piece(np, H, 1.0, 0.0, a, da, m, EA)[:3]
         X = dx + np.where(touches, a + stretch, 0.0)
         outside = ~(H > 0) | (touches & ~(V > 0))
         f1 = np.where(outside, np.nan, X - span)

@@ -35,7 +35,7 @@ import numpy as np
 from skcable._xp import scalar_math
 from skcable.cable._special import asinh_step_parts
 
-__all__ = ["ClosureState", "closure_state", "piece_terms", "sine_step"]
+__all__ = ["ClosureState", "closure_state", "grounded_piece", "piece_terms", "sine_step"]
 
 
 class ClosureState:
@@ -202,6 +202,31 @@ def piece_terms(xp, H, Vt, Vb, Tt, Tb, Ls, ws, EAs, dVb):
     return dx, dy, x_h, x_v, y_h, y_v
 
 
+def grounded_piece(xp, T, dT_h, dT_v, l, dl_v, m, EA):
+    r"""Stretch of a grounded piece and its derivatives (`xp`: `math` or NumPy).
+
+    The piece of unstretched length ``l`` (m) lies on the seabed under the tension ``T`` (N) at
+    its upper end, falling by the friction ``m = C_B w`` (N/m) per unit length towards the
+    anchor, down to 0 where friction takes it all (J.M. Jonkman, "Dynamics modeling and loads
+    analysis of an offshore floating wind turbine", NREL, 2007):
+    :math:`e = (T\ell - m\ell^2/2)/EA` while :math:`T > m\ell`, else :math:`T^2/(2 m EA)`.
+    ``dT_h, dT_v, dl_v`` are the derivatives of ``T`` and ``l`` in the fairlead forces
+    ``(H, V)``. Returns ``e``, its derivatives in ``(H, V)`` plus ``∂l/∂V``, and the tension
+    at the lower end with its derivatives."""
+    if xp is not np:
+        if m == 0 or T - m * l > 0:
+            x_v = dl_v + (dT_v * l + T * dl_v - m * l * dl_v) / EA
+            return (T * l - 0.5 * m * l * l) / EA, dT_h * l / EA, x_v, T - m * l, dT_h, dT_v - m * dl_v
+        return 0.5 * T * T / (m * EA), T * dT_h / (m * EA), dl_v + T * dT_v / (m * EA), 0.0, 0.0, 0.0
+    taut = (m == 0) | (T - m * l > 0)  # the tension reaches the lower end
+    with np.errstate(divide="ignore", invalid="ignore"):
+        stretch = np.where(taut, (T * l - 0.5 * m * l * l) / EA, 0.5 * T * T / (m * EA))
+        x_h = np.where(taut, dT_h * l / EA, T * dT_h / (m * EA))
+        x_v = np.where(taut, dl_v + (dT_v * l + T * dl_v - m * l * dl_v) / EA, dl_v + T * dT_v / (m * EA))
+    lower = np.where(taut, T - m * l, 0.0), np.where(taut, dT_h, 0.0), np.where(taut, dT_v - m * dl_v, 0.0)
+    return (stretch, x_h, x_v, *lower)
+
+
 def _grounded(arrays, mu, H, k, a, vk, X, jxh, jxv, st):
     """Walk the grounded pieces ``k, k-1, .. 0`` from the touchdown towards the anchor,
     with the tension ``T`` and its derivatives ``(dT_h, dT_v)`` in ``(H, V)`` at the upper end
@@ -227,19 +252,12 @@ def _grounded(arrays, mu, H, k, a, vk, X, jxh, jxv, st):
         T_g[i] = T
         l = l_g[i]
         dl_v = -1.0 / wf[k] if (i == k and a > 0) else 0.0
-        m = mu * wf[i]
-        if m == 0 or T - m * l > 0:
-            stretch[i] = (T * l - 0.5 * m * l * l) / EAf[i]
-            X += l + stretch[i]
-            jxh += dT_h * l / EAf[i]
-            jxv += dl_v + (dT_v * l + T * dl_v - m * l * dl_v) / EAf[i]
-            T, dT_v = T - m * l, dT_v - m * dl_v
-        else:
-            stretch[i] = 0.5 * T * T / (m * EAf[i])
-            X += l + stretch[i]
-            jxh += T * dT_h / (m * EAf[i])
-            jxv += dl_v + T * dT_v / (m * EAf[i])
-            T, dT_h, dT_v = 0.0, 0.0, 0.0
+        stretch[i], x_h, x_v, T, dT_h, dT_v = grounded_piece(
+            scalar_math, T, dT_h, dT_v, l, dl_v, mu * wf[i], EAf[i]
+        )
+        X += l + stretch[i]
+        jxh += x_h
+        jxv += x_v
     st.l_g, st.T_g, st.R, st.stretch = l_g, T_g, R, stretch
     st.H_A = T
     return X, jxh, jxv
