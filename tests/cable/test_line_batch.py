@@ -7,6 +7,7 @@ import pytest
 from skcable import cable
 from skcable.cable.lines import between
 from skcable.cable.lines.segments.batch import batchable, solve_batch
+from skcable.errors import InputError
 from tests.cable.mooring_reference import balance, free_line, grounded_line, reference_forces
 
 W, EA, L = 2456.82, 1.2326e9, 850.0  # studless chain of 120 mm
@@ -91,3 +92,16 @@ def test_a_spread_mooring_solved_together_balances_and_matches_line_by_line(monk
     monkeypatch.setattr("skcable.cable.lines.system.BATCH", 10**9)  # line by line
     alone = system.equilibrium(force=force)
     np.testing.assert_allclose(eq.position, alone.position, rtol=0, atol=1e-9 * np.abs(alone.position).max())
+
+
+def test_a_fairlead_on_the_vertical_of_its_anchor_is_refused_by_name():
+    line = _line(0.0)
+    with pytest.raises(InputError) as err:
+        cable.line_between(line, [0.0, 0.0, -200.0], [0.0, 0.0, -14.0], depth=200.0)
+    assert err.value.argument == "b" and "vertical" in str(err.value)
+    # among lines solved together it is left out, for `solve_between` to refuse
+    ends = [(np.array([800.0, 0.0, -200.0]), np.array([20.0, 0.0, -14.0]))] * (between.BATCH + 1)
+    ends[3] = (np.array([0.0, 0.0, -200.0]), np.array([0.0, 0.0, -14.0]))
+    start = cable.line_between(line, *ends[0], depth=200.0)
+    solved = between.solve_many_between(line, ends, 200.0, [start] * len(ends))
+    assert solved[3] is None and all(s is not None for k, s in enumerate(solved) if k != 3)

@@ -197,20 +197,32 @@ class LineBetween:
         )
 
 
-def solve_between(line, a, b, depth, start=None, bvp=None) -> LineBetween:
-    """`line_between` on checked float 3-vectors (the horizontal distance checked here)."""
+def _plane_of(a, b):
+    """``(r, dz, az, e)`` of the vertical plane through float 3-vectors ``a`` and ``b``: the horizontal
+    distance, the height of b above a, a's height (m) and the unit horizontal vector ``e`` from a
+    to b; None where b lies on the vertical of a (the plane undefined)."""
     (ax, ay, az), (bx, by, bz) = a.tolist(), b.tolist()
     dx, dy, dz = bx - ax, by - ay, bz - az
     r = math.hypot(dx, dy)
     if not r > 1e-9 * max(1.0, abs(dx), abs(dy), abs(dz)):
+        return None
+    return r, dz, az, (dx / r, dy / r)
+
+
+def solve_between(line, a, b, depth, start=None, bvp=None) -> LineBetween:
+    """`line_between` on checked float 3-vectors (the horizontal distance checked here)."""
+    plane_of = _plane_of(a, b)
+    if plane_of is None:
+        r = math.hypot(*(b - a)[:2].tolist())
         raise InputError(
             "b",
             f"lies on the vertical of a (horizontal distance {r:.3g} m): the line's vertical plane is "
             "undefined",
         )
+    r, dz, az, e = plane_of
     seabed = None if depth is None else -depth - az
     plane = solve_in_plane(line, r, dz, seabed=seabed, start=None if start is None else start.plane, bvp=bvp)
-    return LineBetween(line, a, b, plane, r, (dx / r, dy / r))
+    return LineBetween(line, a, b, plane, r, e)
 
 
 #: Lines of one model a system solves together (`solve_many_between`) from this many: below it,
@@ -230,16 +242,15 @@ def solve_many_between(line, ends, depth, starts) -> list:
         return out
     picked, scenes, previous, geometry = [], [], [], []
     for i, ((a, b), start) in enumerate(zip(ends, starts, strict=True)):
-        (ax, ay, az), (bx, by, bz) = a.tolist(), b.tolist()
-        dx, dy, dz = bx - ax, by - ay, bz - az
-        r = math.hypot(dx, dy)
-        seabed = -depth - az
-        plane = getattr(start, "plane", None)
-        if r > 1e-9 * max(1.0, abs(dx), abs(dy), abs(dz)) and is_grounded_scene(r, dz, seabed, plane):
+        plane_of, plane = _plane_of(a, b), getattr(start, "plane", None)
+        if plane_of is None:  # left to `solve_between`, which refuses it by name
+            continue
+        r, dz, az, e = plane_of
+        if is_grounded_scene(r, dz, -depth - az, plane):
             picked.append(i)
-            scenes.append((r, dz, seabed))
+            scenes.append((r, dz, -depth - az))
             previous.append(plane)
-            geometry.append((a, b, r, (dx / r, dy / r)))
+            geometry.append((a, b, r, e))
     if len(picked) < BATCH:
         return out
     for i, plane, (a, b, r, e) in zip(picked, grounded_batch(line, scenes, previous), geometry, strict=True):

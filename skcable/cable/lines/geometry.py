@@ -190,8 +190,11 @@ def is_grounded_scene(span, dh, seabed, start) -> bool:
     previous solution ``start`` of that model with ``H > 0`` (not a heap)."""
     if start is None or start.key != ("grounded", False) or not start.solution.H > 0 or dh < 0:
         return False
-    tol = on_seabed_tolerance(span, dh, seabed)
-    return -tol <= -seabed <= tol and dh - seabed > tol
+    try:  # the choice of `solve_in_plane`: the lower end A on the seabed, B above it
+        gap_A, gap_B, tol = _check_ends(span, dh, seabed, 0.0)
+    except InputError:  # an end below the seabed: `solve_in_plane` refuses it by name
+        return False
+    return gap_A <= tol < gap_B
 
 
 def _grounded_plane(scene, reverse, key, variant, solution) -> PlaneLine:

@@ -17,9 +17,9 @@ and ``e_g`` its stretch under the friction ``C_B w`` per unit length (`closure.g
 
 Each converged element is then taken as the scalar closed form at its ``(H, V)``
 (`closure_state`) and checked as `Line.solve` checks its solutions: its closure residual over
-the chord below 1e-11 and `LineSolution.validate`. An element that does not converge here, or
-fails that check, is returned as None: the caller solves it alone (the same closure, the same
-root: this is a faster evaluation of the same Newton, not another model).
+the chord below `CLOSURE_TOLERANCE` and `LineSolution.validate`. An element that does not
+converge here, or fails that check, is returned as None: the caller solves it alone (the same
+closure, the same root: this is a faster evaluation of the same Newton, not another model).
 """
 
 from __future__ import annotations
@@ -30,7 +30,7 @@ import numpy as np
 
 from skcable._newton2 import solve2
 from skcable.cable.lines.segments.closure import closure_state, grounded_piece, piece_terms
-from skcable.cable.lines.segments.solution import LineSolution
+from skcable.cable.lines.segments.solution import CLOSURE_TOLERANCE, LineSolution
 
 __all__ = ["batchable", "solve_batch"]
 
@@ -98,9 +98,9 @@ def solve_batch(line, spans, dhs, starts) -> list:
 
 def _checked(line, span, dh, H, V):
     """The `LineSolution` of the closed form at ``(H, V)`` where it closes the scene as `Line.solve`
-    asks (residual over the chord below 1e-11, `LineSolution.validate`), else None."""
+    asks (residual over the chord below `CLOSURE_TOLERANCE`, `LineSolution.validate`), else None."""
     st = closure_state(line.arrays, line.friction, line.contact, H, V) if H > 0 else None
-    if st is None or not max(abs(st.X - span), abs(st.Z - dh)) < 1e-11 * math.hypot(span, dh):
+    if st is None or not max(abs(st.X - span), abs(st.Z - dh)) < CLOSURE_TOLERANCE * math.hypot(span, dh):
         return None
     solution = LineSolution(line, span, dh, st)
     solution.validate()

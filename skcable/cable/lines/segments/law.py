@@ -30,6 +30,7 @@ import numpy as np
 
 from skcable._newton2 import solve2
 from skcable.cable.axial import catenary_ends, elongation
+from skcable.cable.lines.segments.solution import CLOSURE_TOLERANCE
 from skcable.errors import ConvergenceError, InputError
 
 __all__ = ["GroundedLaw", "LawLineSolution", "law_closure", "solve_law_line"]
@@ -82,7 +83,7 @@ def solve_law_line(line, span: float, dh: float, start=None) -> LawLineSolution:
     )
     f1, f2 = result.last[:2]
     norm = max(abs(f1), abs(f2)) / chord
-    if not norm < 1e-11:
+    if not norm < CLOSURE_TOLERANCE:
         raise ConvergenceError(
             f"Line.solve: the closure of the line with nonlinear axial laws is not met ({norm:.3g})",
             result.history,

@@ -33,7 +33,7 @@ from skcable.cable.lines.segments.closure import closure_state
 from skcable.cable.lines.segments.heap import heap_state
 from skcable.cable.lines.segments.law import LawLineSolution, solve_law_line
 from skcable.cable.lines.segments.parts import Buoy, ClumpWeight, Segment
-from skcable.cable.lines.segments.solution import LineSolution
+from skcable.cable.lines.segments.solution import CLOSURE_TOLERANCE, LineSolution
 from skcable.errors import ConvergenceError, InputError
 
 __all__ = ["Line"]
@@ -361,20 +361,20 @@ class Line:
             H0, V0, state = self._start(start)
             if H0 > 0:  # a heap state (H = 0) is no start for Newton
                 st, norm, history = self._newton(span, dh, H0, V0, chord, 40, state)
-        if not norm < 1e-11 and not self._buoyed:  # the slack in a heap on the seabed (H = 0)?
+        if not norm < CLOSURE_TOLERANCE and not self._buoyed:  # the slack in a heap on the seabed (H = 0)?
             heap = heap_state(self.arrays, span, dh) if self.contact else None
             if heap is not None:
                 st, norm = heap, 0.0
-        if not norm < 1e-11:  # Newton from the equivalent uniform line
+        if not norm < CLOSURE_TOLERANCE:  # Newton from the equivalent uniform line
             guess = self._guess(span, dh)
             if guess is not None:
                 st, norm, more = self._newton(span, dh, guess[0], guess[1], chord, 40)
                 history = [*history, *more]
-        if not norm < 1e-11:  # nested bracketing, then Newton polish
+        if not norm < CLOSURE_TOLERANCE:  # nested bracketing, then Newton polish
             H, V, hist = self._bracketed(span, dh)
             st, norm, more = self._newton(span, dh, H, V, chord, 20)
             history = [*history, *hist, *more]
-        if not norm < 1e-11:
+        if not norm < CLOSURE_TOLERANCE:
             raise ConvergenceError("Line.solve: closure not met", history)
         solution = LineSolution(self, span, dh, st)
         solution.validate()

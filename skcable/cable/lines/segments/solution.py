@@ -29,7 +29,11 @@ from skcable.cable.lines.arc_samples import arc_samples, write_profile
 from skcable.errors import ConvergenceError, InputError
 from skcable.results import ProfileMixin
 
-__all__ = ["LineSolution"]
+__all__ = ["CLOSURE_TOLERANCE", "LineSolution"]
+
+#: A solution closes its scene where the closure misses the end by less than this over the chord:
+#: every path of `Line.solve` (warm, cold, bracketed, batched, with nonlinear laws) checks it.
+CLOSURE_TOLERANCE = 1e-11
 
 _NO_GROUND = np.zeros(1)
 _NO_GROUND.flags.writeable = False
