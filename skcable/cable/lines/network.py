@@ -21,7 +21,7 @@ from __future__ import annotations
 import numpy as np
 
 from skcable._checks import nonnegative, positive, scalar
-from skcable.cable.lines.body import PointBody, RigidBody, angular_velocity_map
+from skcable.cable.lines.body import PointBody, RigidBody
 from skcable.cable.lines.line3d import point
 from skcable.errors import InputError
 
@@ -146,20 +146,15 @@ class Layout:
 
     def rate_map(self, q) -> np.ndarray:
         """``∂(displacements, rotation vectors)/∂q``: each body's `rate_map`, identity on points."""
-        M = np.eye(self.n_dof)
-        for i, body in enumerate(self.bodies):
-            s = self.body_start[i]
-            M[s : s + body.n_dof, s : s + body.n_dof] = body.rate_map(self.body_q(q, i))
-        return M
+        return self.times_rate_map(np.eye(self.n_dof), q)
 
     def times_rate_map(self, K, q) -> np.ndarray:
-        """``K @ rate_map(q)``: the rotation columns of each rigid body times its
-        `skcable.cable.lines.body.angular_velocity_map`, the other columns as they are."""
+        """``K @ rate_map(q)`` block by block: each body's columns times its `rate_map`, the free
+        points' columns as they are."""
         out = np.array(K, dtype=float)
         for i, body in enumerate(self.bodies):
-            if body.n_dof == 6:
-                s = self.body_start[i] + 3
-                out[:, s : s + 3] = K[:, s : s + 3] @ angular_velocity_map(*q[s : s + 3].tolist())
+            s, n = self.body_start[i], body.n_dof
+            out[:, s : s + n] = K[:, s : s + n] @ body.rate_map(self.body_q(q, i))
         return out
 
     def rotation_dofs(self) -> np.ndarray:
