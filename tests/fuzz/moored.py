@@ -193,16 +193,23 @@ def _eq_call(sc) -> str:
     return f"{system_expr(sc)}.equilibrium({load})"
 
 
+def _recounted(scene, q):
+    """``(G, sols, scale, sizes)``: the oracle's net load at the dofs ``q``, its line solutions, its
+    force scale and each dof's size (the scale, times the arm for a moment); inside
+    ``mp.workdps(bodies.DPS)``."""
+    G, sols = bodies.recount(scene, *bodies.at(scene, q))
+    scale = bodies.force_scale(scene, sols)
+    return G, sols, scale, [scale * (float(scene.arm) if i >= 3 else 1.0) for i in range(len(G))]
+
+
 def check_equilibrium(eq, sc, caught) -> tuple[list[str], object, float]:
     """Balance, fairlead forces, stiffness and stability of ``eq`` against the recount."""
     scene = oracle_scene(sc)
     q = [float(v) for v in eq.position]
     with mp.workdps(bodies.DPS):
-        G, sols = bodies.recount(scene, *bodies.at(scene, q))
-        scale = bodies.force_scale(scene, sols)
+        G, sols, scale, sizes = _recounted(scene, q)
         problems = []
-        for i, value in enumerate(G):
-            size = scale * (float(scene.arm) if i >= 3 else 1.0)
+        for i, (value, size) in enumerate(zip(G, sizes, strict=True)):
             if abs(float(value)) > 1e-8 * size:
                 problems.append(
                     f"balance: recounted net load[{i}] = {float(value):.6g} at the returned position "
@@ -311,11 +318,9 @@ def mooring_at(rng) -> Case:
         G_got, K_got = result
         scene = oracle_scene(sc)
         with mp.workdps(bodies.DPS):
-            G, sols = bodies.recount(scene, *bodies.at(scene, q))
-            scale = bodies.force_scale(scene, sols)
+            G, _, _, sizes = _recounted(scene, q)
             problems = []
-            for i, value in enumerate(G):
-                size = scale * (float(scene.arm) if i >= 3 else 1.0)
+            for i, (value, size) in enumerate(zip(G, sizes, strict=True)):
                 if abs(G_got[i] - float(value)) > 1e-9 * size:
                     problems.append(f"net_force[{i}]: oracle {float(value):.17g}, skcable {G_got[i]!r}")
             K = bodies.fd_stiffness(scene, q)
