@@ -28,8 +28,14 @@ TOLERANCE = {
     ("strand", "analyse"): 1e-8,
 }
 #: a result that is zero up to round-off is compared at the round-off of the force it is part of:
-#: with friction taking the whole pull, the anchor's H_A is round-off of the fairlead's H
-SCALE_OF = {("bvp", "line_bvp_friction", "H_A"): "H"}
+#: with friction taking the whole pull, the anchor's H_A is round-off of the fairlead's H; a
+#: number is the scale itself: the model choice's error estimate is a relative difference of two
+#: solves' H, T_max and length (``|a/b - 1|``), so its round-off is that of the ratio (a few
+#: 1e-16 whatever its size: 4.4e-16 between numpy 2.2 and 2.4), not a fraction of its own 2.5e-10
+SCALE_OF: dict[tuple[str, str, str], str | float] = {
+    ("bvp", "line_bvp_friction", "H_A"): "H",
+    ("bvp", "choice", "error_estimate"): 1.0,
+}
 PINNED = json.loads((Path(__file__).parent / "data" / "pinned_library.json").read_text())
 
 
@@ -44,7 +50,8 @@ def test_library_numbers_are_unchanged(group):
             want = np.array(pinned["values"], dtype=float).reshape(pinned["shape"])
             got = np.asarray(computed[case][key], dtype=float)
             assert got.shape == want.shape, (case, key)
-            of = values[SCALE_OF.get((group, case, key), key)]["values"]
+            of = SCALE_OF.get((group, case, key), key)
+            of = of if isinstance(of, float) else values[of]["values"]
             scale = float(np.max(np.abs(of), initial=0.0)) or 1.0
             np.testing.assert_allclose(
                 got, want, rtol=0, atol=TOLERANCE.get((group, case), 1e-12) * scale, err_msg=f"{case}.{key}"

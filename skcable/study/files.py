@@ -22,7 +22,7 @@ the working directory. Anything else is refused, never ignored:
 
 from __future__ import annotations
 
-import sys
+import tomllib
 from pathlib import Path
 
 from skcable.errors import InputError
@@ -31,11 +31,6 @@ from skcable.study.cases import grid, parameters, sample
 from skcable.study.runner import run
 from skcable.study.table import StudyTable
 from skcable.study.tasks import MODELS
-
-if sys.version_info >= (3, 11):
-    import tomllib
-else:  # pragma: no cover
-    import tomli as tomllib
 
 __all__ = ["FILE_KEYS", "TABLE_SUFFIXES", "check_output", "load_study", "run_file", "write_table"]
 

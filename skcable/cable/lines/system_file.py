@@ -1,6 +1,6 @@
 """A mooring system described in a TOML file: line types, bodies, points, lines and loads.
 
-The file (TOML, read with the standard library's ``tomllib``, ``tomli`` before Python 3.11)::
+The file (TOML, read with the standard library's ``tomllib``)::
 
     depth = 200.0                      # m; rho (kg/m^3) and g (m/s^2) too, optional
 
@@ -39,7 +39,6 @@ defined is refused by name (`InputError` naming the key or the name).
 
 from __future__ import annotations
 
-import sys
 from dataclasses import dataclass, field
 from pathlib import Path
 
@@ -182,10 +181,7 @@ def _points(system, data, out):
 
 def read_system(path) -> SystemFile:
     """Read a mooring system from a TOML file (module docstring); returns a `SystemFile`."""
-    if sys.version_info >= (3, 11):
-        import tomllib
-    else:  # Python 3.10: the same parser as a package
-        import tomli as tomllib
+    import tomllib
 
     from skcable.cable.lines.system import MooringSystem
 
