@@ -34,7 +34,7 @@ sys.path.insert(0, str(Path(__file__).resolve().parents[1]))  # the skcable of t
 from _peers import available, moorpy_H, opensees_catenary_cable_H, pycatenary_H  # noqa: E402
 from _reference import irvine_H  # noqa: E402
 
-from skcable import cable  # noqa: E402
+from skcable import bvp, cable  # noqa: E402
 from skcable.errors import ConvergenceError, InputError  # noqa: E402
 
 SPAN, DH, W, EA = 100.0, 0.0, 1.0, 1e8
@@ -113,9 +113,7 @@ def methods(L0):
                     f"solve_bvp graph P{degree}",
                     n,
                     lambda n=n, d=degree: (
-                        cable.solve_bvp(
-                            SPAN, DH, cable.SelfWeight(W), EA=EA, length=L0, n_elements=n, degree=d
-                        ).H
+                        bvp.solve_bvp(SPAN, DH, bvp.SelfWeight(W), EA=EA, length=L0, n_elements=n, degree=d).H
                     ),
                 )
             )
@@ -125,8 +123,8 @@ def methods(L0):
                 "solve_bvp arc P2/P1dg",
                 n,
                 lambda n=n: (
-                    cable.solve_bvp(
-                        SPAN, DH, cable.SelfWeight(W), EA=EA, length=L0, n_elements=n, formulation="arc"
+                    bvp.solve_bvp(
+                        SPAN, DH, bvp.SelfWeight(W), EA=EA, length=L0, n_elements=n, formulation="arc"
                     ).H
                 ),
             )
@@ -207,13 +205,13 @@ def large(args):
     ``--repeats`` times; the minimum is the measure (the machine is shared)."""
     ref = cable.catenary(800.0, -20.0, 20.0, low=-30.0)
     cases = [
-        ("catenary", cable.SelfWeight(20.0), {"length": ref.length}),
-        ("catenary", cable.SelfWeight(20.0), {"sag": ref.sag}),
-        ("deck + self weight", [cable.DeckLoad(20.0), cable.SelfWeight(5.0)], {"length": 830.0}),
-        ("deck + self weight", [cable.DeckLoad(20.0), cable.SelfWeight(5.0)], {"sag": 40.0}),
+        ("catenary", bvp.SelfWeight(20.0), {"length": ref.length}),
+        ("catenary", bvp.SelfWeight(20.0), {"sag": ref.sag}),
+        ("deck + self weight", [bvp.DeckLoad(20.0), bvp.SelfWeight(5.0)], {"length": 830.0}),
+        ("deck + self weight", [bvp.DeckLoad(20.0), bvp.SelfWeight(5.0)], {"sag": 40.0}),
     ]
     for label, load, kw in cases:
-        fn = lambda load=load, kw=kw: cable.solve_bvp(800.0, -20.0, load, n_elements=10_000, **kw)  # noqa: E731
+        fn = lambda load=load, kw=kw: bvp.solve_bvp(800.0, -20.0, load, n_elements=10_000, **kw)  # noqa: E731
         solution = fn()
         times = np.sort([_timed(fn) for _ in range(args.repeats)])
         print(
@@ -235,10 +233,10 @@ def stability(args):
                 T_exact = cable.catenary(span, dh, 1.0, length=length).T_A
                 for formulation in ("graph", "arc"):
                     try:
-                        b = cable.solve_bvp(
+                        b = bvp.solve_bvp(
                             span,
                             dh,
-                            cable.SelfWeight(1.0),
+                            bvp.SelfWeight(1.0),
                             length=length,
                             n_elements=256,
                             formulation=formulation,
@@ -266,8 +264,8 @@ def stability(args):
 def seabed(args):
     """`solve_line_bvp` on a flat seabed (with and without friction) and on a slope, against
     the closed forms: error in H and time per solve (touchdown fitted, the default), by mesh."""
-    from skcable.cable.bvp import solve_line_bvp
-    from skcable.cable.lines.seabed import sloped_seabed_catenary
+    from skcable.cable.seabed import sloped_seabed_catenary
+    from skcable.mooring import solve_line_bvp
 
     span, dh, w, ea, length = 400.0, 100.0, 1000.0, 5e8, 440.0
     cases = [

@@ -1,6 +1,6 @@
 """The small eigenproblems against a hand-written scipy solve of the same matrices.
 
-- ``cable.natural_frequencies(300, 0, 10, 3e7, sag=6)`` (the pinned scene; 287 DOFs a plane)
+- ``conductors.natural_frequencies(300, 0, 10, 3e7, sag=6)`` (the pinned scene; 287 DOFs a plane)
   and the same with ``n_modes=20`` (959 DOFs): the whole call, static catenary, assembly and
   checks included, against ``scipy.linalg.eigh(K, M, subset_by_index=[0, n - 1])`` (values and
   vectors, as skcable returns both) of its in-plane and out-of-plane matrices
@@ -42,7 +42,7 @@ from skfem.helpers import dd, ddot
 from skfem.models import laplace, mass
 from threadpoolctl import threadpool_info, threadpool_limits
 
-from skcable import cable, strand
+from skcable import conductors, strand
 
 ROOT = Path(__file__).resolve().parents[1]
 DOCS = ROOT / "docs" / "speed_targets.md"
@@ -60,7 +60,7 @@ def cable_case(n_modes):
     (band part, mass, rank-one part or None), and the call's eigenvalues."""
 
     def call():
-        return cable.natural_frequencies(300.0, 0.0, 10.0, 3e7, sag=6.0, n_modes=n_modes)
+        return conductors.natural_frequencies(300.0, 0.0, 10.0, 3e7, sag=6.0, n_modes=n_modes)
 
     r = call()
     coupling = r.stiffness_in_plane - r.stiffness_out_of_plane

@@ -1,4 +1,4 @@
-"""Multi-segment lines (`cable.Line`): time per solve, outcome of random scenes, MoorPy agreement.
+"""Multi-segment lines (`mooring.Line`): time per solve, outcome of random scenes, MoorPy agreement.
 
     python benchmarks/bench_line.py            # 2000 random scenes (seed 0) + 40 MoorPy scenes
 
@@ -18,7 +18,7 @@ import time
 
 import numpy as np
 
-from skcable import cable
+from skcable import mooring
 from skcable.errors import ConvergenceError, InputError
 
 
@@ -27,22 +27,22 @@ def random_scenes(count, seed=0):
     for _ in range(count):
         n = int(rng.integers(1, 4))
         segments = [
-            cable.Segment(rng.uniform(20, 600), 10 ** rng.uniform(1.5, 3.5), 10 ** rng.uniform(7, 10))
+            mooring.Segment(rng.uniform(20, 600), 10 ** rng.uniform(1.5, 3.5), 10 ** rng.uniform(7, 10))
             for _ in range(n)
         ]
         att = []
         for j in range(1, n):
             kind = rng.integers(0, 3)
             if kind == 1:
-                att.append(cable.ClumpWeight(j, 10 ** rng.uniform(3, 5.5)))
+                att.append(mooring.ClumpWeight(j, 10 ** rng.uniform(3, 5.5)))
             elif kind == 2:
-                att.append(cable.Buoy(j, 10 ** rng.uniform(3, 5)))
+                att.append(mooring.Buoy(j, 10 ** rng.uniform(3, 5)))
         L = sum(s.length for s in segments)
         seabed = [None, 0.0, -rng.uniform(1, 100)][int(rng.integers(0, 3))]
         mu = rng.uniform(0, 2) if seabed == 0.0 else 0.0
         span = L * rng.uniform(0.05, 1.2)
         dh = L * rng.uniform(0.02, 0.9) * (1 if seabed is not None else rng.choice([-1, 1]))
-        yield cable.Line(segments, att, seabed=seabed, friction=mu), span, dh
+        yield mooring.Line(segments, att, seabed=seabed, friction=mu), span, dh
 
 
 def sweep(count=2000):
@@ -77,13 +77,15 @@ def moorpy_comparison(count=40, seed=1):
     for _ in range(count):
         lengths = rng.uniform([300, 200, 100], [500, 400, 200])
         segments = [
-            cable.Segment(lengths[0], 1000.0, 7.5e8),
-            cable.Segment(lengths[1], 150.0, 6.0e8),
-            cable.Segment(lengths[2], 1000.0, 7.5e8),
+            mooring.Segment(lengths[0], 1000.0, 7.5e8),
+            mooring.Segment(lengths[1], 150.0, 6.0e8),
+            mooring.Segment(lengths[2], 1000.0, 7.5e8),
         ]
         joint = int(rng.integers(1, 3))
-        att = cable.ClumpWeight(joint, rng.uniform(5e3, 5e4)) if rng.random() < 0.5 else cable.Buoy(2, 6e4)
-        line = cable.Line(segments, [att], seabed=0.0)
+        att = (
+            mooring.ClumpWeight(joint, rng.uniform(5e3, 5e4)) if rng.random() < 0.5 else mooring.Buoy(2, 6e4)
+        )
+        line = mooring.Line(segments, [att], seabed=0.0)
         L = line.length
         dh = rng.uniform(0.2, 0.6) * L
         span = rng.uniform(0.75, 0.95) * np.sqrt(L * L - dh * dh)

@@ -1,4 +1,4 @@
-"""The 3-D line BVP (`skcable.cable.bvp.line3d`): time per solve, medians of repeated solves.
+"""The 3-D line BVP (`skcable.mooring.line_bvp_3d`): time per solve, medians of repeated solves.
 
     python benchmarks/bench_line3d.py              # 21 repeats of each scene
     python benchmarks/bench_line3d.py --repeat 51
@@ -13,14 +13,14 @@ seabed):
 3. a chain on a bilinear grid seabed with friction, in a current, at 200 elements;
 4. for scale, the plane `solve_line_bvp` of the chain without current at 200 elements (one
    process, the same machine: the ratio is what a quiet machine reproduces);
-5. `cable.line_3d` of a `cable.Line` in a current: the model chosen (the 3-D BVP on
+5. `mooring.line_3d` of a `mooring.Line` in a current: the model chosen (the 3-D BVP on
    `BVP_ELEMENTS` elements), as a user calls it (its error estimate, a second solve on half as
    many elements when first asked for, is printed but not timed);
-6. `cable.line_3d` of a chain-polyester `cable.Line` in still water: the closed form with the
+6. `mooring.line_3d` of a chain-polyester `mooring.Line` in still water: the closed form with the
    rope's nonlinear law integrated exactly;
-7. twelve lines of a spread mooring in a current, each by `cable.line_3d`: one evaluation of the
+7. twelve lines of a spread mooring in a current, each by `mooring.line_3d`: one evaluation of the
    lines of a 12-line system, cold;
-8. a 12-line `cable.MooringSystem` of those lines (built with ``current=``, taut, clear of the
+8. a 12-line `mooring.MooringSystem` of those lines (built with ``current=``, taut, clear of the
    seabed) reaching its equilibrium (issue 23's target: <= 1 s), the lines warm-started by the
    system from their previous solutions;
 9. the same with chains that rest on the seabed (a touchdown fitted on every solve; the same
@@ -37,12 +37,12 @@ import time
 
 import numpy as np
 
-from skcable import cable
-from skcable.cable.axial import StrainTable
-from skcable.cable.bathymetry import Grid
-from skcable.cable.bvp import solve_line_bvp
-from skcable.cable.bvp.line3d import LineSegment, solve_line_bvp_3d
-from skcable.cable.current import TabulatedCurrent
+from skcable import mooring
+from skcable.bvp.current import TabulatedCurrent
+from skcable.mooring import solve_line_bvp
+from skcable.mooring.axial import StrainTable
+from skcable.mooring.bathymetry import Grid
+from skcable.mooring.line_bvp_3d import LineSegment, solve_line_bvp_3d
 
 TARGET_MS = 20.0
 ANCHOR, FAIRLEAD = np.array([0.0, 0.0, -200.0]), np.array([400.0, 0.0, -20.0])
@@ -56,14 +56,14 @@ def grid():
 
 
 def sea_line(current=(0.0, 0.9)):
-    """The chain of scene 1 as a `cable.Line` (in a current unless ``current`` is None)."""
-    seg = cable.Segment(500.0, 600.0, 4e8, diameter=0.1, cd_normal=1.2, cd_tangential=0.008)
-    return cable.Line([seg], current=current)
+    """The chain of scene 1 as a `mooring.Line` (in a current unless ``current`` is None)."""
+    seg = mooring.Segment(500.0, 600.0, 4e8, diameter=0.1, cd_normal=1.2, cd_tangential=0.008)
+    return mooring.Line([seg], current=current)
 
 
 def polyester():
     rope = StrainTable([0.0, 0.01, 0.02, 0.03, 0.05], [0.0, 1.2e6, 3.0e6, 5.2e6, 1.0e7])
-    return cable.Line([cable.Segment(60.0, 1800.0, 1.5e9), cable.Segment(560.0, 60.0, rope)])
+    return mooring.Line([mooring.Segment(60.0, 1800.0, 1.5e9), mooring.Segment(560.0, 60.0, rope)])
 
 
 def twelve_lines():
@@ -73,7 +73,7 @@ def twelve_lines():
     c, s = np.cos(angles), np.sin(angles)
     anchors = np.column_stack([420.0 * c, 420.0 * s, np.full(12, -200.0)])
     fairleads = np.column_stack([20.0 * c, 20.0 * s, np.full(12, -20.0)])
-    return lambda: [cable.line_3d(line, a, b) for a, b in zip(anchors, fairleads, strict=True)]
+    return lambda: [mooring.line_3d(line, a, b) for a, b in zip(anchors, fairleads, strict=True)]
 
 
 def spread(line, radius=420.0, depth=200.0):
@@ -82,21 +82,21 @@ def spread(line, radius=420.0, depth=200.0):
     c, s = np.cos(angles), np.sin(angles)
     anchors = np.column_stack([radius * c, radius * s, np.full(12, -depth)])
     fairleads = np.column_stack([20.0 * c, 20.0 * s, np.full(12, -20.0)])
-    body = cable.RigidBody(
+    body = mooring.RigidBody(
         fairleads, mass=8e6, volume=8.2e3, center_of_gravity=(0.0, 0.0, -5.0), metacentre=(0.0, 0.0, 10.0),
         waterplane_area=600.0,
     )  # fmt: skip
-    return cable.MooringSystem(body, [line] * 12, anchors, depth=depth)
+    return mooring.MooringSystem(body, [line] * 12, anchors, depth=depth)
 
 
 def taut_system():
-    seg = cable.Segment(440.0, 300.0, 4e8, diameter=0.1, cd_normal=1.2, cd_tangential=0.008)
-    return spread(cable.Line([seg], seabed=0.0, current=(0.6, 0.3)))
+    seg = mooring.Segment(440.0, 300.0, 4e8, diameter=0.1, cd_normal=1.2, cd_tangential=0.008)
+    return spread(mooring.Line([seg], seabed=0.0, current=(0.6, 0.3)))
 
 
 def grounded_system():
-    seg = cable.Segment(500.0, 600.0, 4e8, diameter=0.1, cd_normal=1.2, cd_tangential=0.008)
-    return spread(cable.Line([seg], seabed=0.0, current=(0.6, 0.3)))
+    seg = mooring.Segment(500.0, 600.0, 4e8, diameter=0.1, cd_normal=1.2, cd_tangential=0.008)
+    return spread(mooring.Line([seg], seabed=0.0, current=(0.6, 0.3)))
 
 
 def scenes():
@@ -117,13 +117,13 @@ def scenes():
         "2-D solve_line_bvp, no current, 200 elements": lambda: solve_line_bvp(
             400.0, 180.0, [(500.0, 600.0, 4e8)], n_elements=200
         ),
-        "cable.line_3d, Line in a current (BVP; its error estimate, asked after, untimed)": lambda: (
-            cable.line_3d(sea_line(), ANCHOR, FAIRLEAD)
+        "mooring.line_3d, Line in a current (BVP; its error estimate, asked after, untimed)": lambda: (
+            mooring.line_3d(sea_line(), ANCHOR, FAIRLEAD)
         ),
-        "cable.line_3d, chain-polyester Line, closed form with its law": lambda: cable.line_3d(
+        "mooring.line_3d, chain-polyester Line, closed form with its law": lambda: mooring.line_3d(
             polyester(), ANCHOR, FAIRLEAD + [200.0, 0.0, 0.0]
         ),
-        "12 lines in a current by cable.line_3d (one evaluation)": twelve_lines(),
+        "12 lines in a current by mooring.line_3d (one evaluation)": twelve_lines(),
         "12-line MooringSystem in a current, taut lines, equilibrium": lambda: taut_system().equilibrium(),
         "12-line MooringSystem in a current, grounded chains, equilibrium": lambda: (
             grounded_system().equilibrium()

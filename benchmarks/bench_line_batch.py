@@ -4,9 +4,9 @@ A spread mooring of ``n`` identical chain lines (120 mm studless, 850 m, anchors
 a seabed 200 m deep) on one body; its lines are solved at the equilibrium moved by 1 m surge
 and 1/3 m sway, warm-started from the equilibrium's lines (`MooringSystem.solve_lines(position,
 start=...)`, as every evaluation of an equilibrium does), once with the lines of the model
-solved together (`skcable.cable.lines.between.solve_many_between`) and once line by line.
+solved together (`skcable.mooring.between.solve_many_between`) and once line by line.
 The ratio batched / line by line, median over alternating rounds, sets
-`skcable.cable.lines.between.BATCH` (where it falls below 1).
+`skcable.mooring.between.BATCH` (where it falls below 1).
 
 Run:  python benchmarks/bench_line_batch.py [--repeat 7]
 """
@@ -25,7 +25,7 @@ sys.path.insert(0, str(Path(__file__).parent))
 sys.path.insert(0, str(Path(__file__).resolve().parents[1]))  # the skcable of this checkout
 from bench_system import skcable_scene  # noqa: E402
 
-from skcable.cable.lines import between, system  # noqa: E402
+from skcable.mooring import between, system  # noqa: E402
 
 
 def _solve(moored, q, lines, batch):

@@ -27,9 +27,9 @@ from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1]))  # the skcable of this checkout
 
-from skcable import cable  # noqa: E402
-from skcable.cable.bvp.line.driver import LineBVPSolver  # noqa: E402
-from skcable.cable.bvp.line.inputs import (
+from skcable import bvp, mooring  # noqa: E402
+from skcable.mooring.line_bvp.driver import LineBVPSolver  # noqa: E402
+from skcable.mooring.line_bvp.inputs import (
     LINE_OPTIONS,  # noqa: E402
     scene,  # noqa: E402
 )
@@ -39,8 +39,8 @@ SEGMENTS = [(440.0, 1000.0, 5e8)]
 LINES = {"grounded": (400.0, 100.0, {"seabed": 0.0}), "suspended": (420.0, 100.0, {})}
 TERMS = {
     "none": [],
-    "buoyancy": [cable.Buoyancy(0.04, gradient=0.05, surface=120.0)],
-    "current": [cable.CurrentDrag(lambda d: 1.5 * (1 - d / 300), 0.1, cd_tangential=0.01, surface=120.0)],
+    "buoyancy": [bvp.Buoyancy(0.04, gradient=0.05, surface=120.0)],
+    "current": [bvp.CurrentDrag(lambda d: 1.5 * (1 - d / 300), 0.1, cd_tangential=0.01, surface=120.0)],
 }
 TERMS["both"] = TERMS["buoyancy"] + TERMS["current"]
 
@@ -67,13 +67,13 @@ def cases():
     out = {}
     for line, (span, dh, kw) in LINES.items():
         for name, terms in TERMS.items():
-            solution = cable.solve_line_bvp(span, dh, SEGMENTS, n_elements=N_ELEMENTS, terms=terms, **kw)
+            solution = mooring.solve_line_bvp(span, dh, SEGMENTS, n_elements=N_ELEMENTS, terms=terms, **kw)
             nodes = solution.problem.mesh.p[0]
             problem = problem_of(span, dh, kw, terms, nodes)
             z = solution.dofs
 
             def solve(span=span, dh=dh, kw=kw, terms=terms):
-                return cable.solve_line_bvp(span, dh, SEGMENTS, n_elements=N_ELEMENTS, terms=terms, **kw)
+                return mooring.solve_line_bvp(span, dh, SEGMENTS, n_elements=N_ELEMENTS, terms=terms, **kw)
 
             out[line, name] = (solve, lambda problem=problem, z=z: problem.assemble(z), solution.iterations)
     return out

@@ -26,7 +26,7 @@ from pathlib import Path
 
 import numpy as np
 
-from skcable import cable
+from skcable import conductors
 
 ROOT = Path(__file__).resolve().parents[1]
 BEGIN, END = "<!-- conductors:begin -->", "<!-- conductors:end -->"
@@ -67,13 +67,15 @@ def mechaphlowers_change_of_state(spans, dh, temperatures):
 
 
 def skcable_line(spans, dh, temperatures):
-    return cable.change_of_state(spans, dh, **CONDUCTOR, H0=H0, w=CONDUCTOR["w0"], t=temperatures).H
+    return conductors.change_of_state(spans, dh, **CONDUCTOR, H0=H0, w=CONDUCTOR["w0"], t=temperatures).H
 
 
 def skcable_span_by_span(spans, dh, temperatures):
     return np.array(
         [
-            cable.change_of_state(float(a), float(h), **CONDUCTOR, H0=H0, w=CONDUCTOR["w0"], t=temperatures).H
+            conductors.change_of_state(
+                float(a), float(h), **CONDUCTOR, H0=H0, w=CONDUCTOR["w0"], t=temperatures
+            ).H
             for a, h in zip(spans, dh, strict=True)
         ]
     )
@@ -97,7 +99,7 @@ def section_scene(n, seed=5):
     rng = np.random.default_rng(seed + n)
     spans, dh = rng.uniform(200.0, 500.0, n), rng.uniform(-20.0, 20.0, n)
     kw = dict(**CONDUCTOR, H0=H0, w=CONDUCTOR["w0"], t=75.0, insulator_length=3.0, insulator_weight=700.0)
-    return lambda: cable.tension_section(spans, dh, **kw)
+    return lambda: conductors.tension_section(spans, dh, **kw)
 
 
 def measure(repeats):

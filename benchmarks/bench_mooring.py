@@ -36,9 +36,9 @@ from pathlib import Path
 
 import numpy as np
 
-from skcable import cable
-from skcable.cable.lines.line3d import solve_in_space
+from skcable import cable, mooring
 from skcable.io._atomic import write_text
+from skcable.mooring.line3d import solve_in_space
 
 ROOT = Path(__file__).resolve().parents[1]
 EXAMPLE = runpy.run_path(str(ROOT / "examples" / "spread_mooring.py"))
@@ -88,6 +88,7 @@ def _count_line_solves(lines, call) -> int:
     counts = []
     originals = [line.staticSolve for line in lines]
     for line, method in zip(lines, originals, strict=True):
+
         def counted(*args, _method=method, **kwargs):
             counts.append(1)
             return _method(*args, **kwargs)
@@ -103,7 +104,7 @@ def _count_line_solves(lines, call) -> int:
 
 def _recorded_line_solves(call) -> list[tuple]:
     """The arguments of every line solve (`solve_in_space`) that ``call()`` makes, in order."""
-    from skcable.cable.lines import system as system_module
+    from skcable.mooring import system as system_module
 
     original, calls = system_module.solve_in_space, []
 
@@ -150,12 +151,12 @@ def run(repeat: int) -> str:
     here = eq.lines[0].fairlead
     there = here + np.array([1.0, 0.5, -0.2])  # a step of the body's Newton iteration
     mp_line = ms.lineList[0]
-    line_here, line_there = cable.line_3d(model, anchor, here), cable.line_3d(model, anchor, there)
+    line_here, line_there = mooring.line_3d(model, anchor, here), mooring.line_3d(model, anchor, there)
     mp_here, mp_there = mp_line.rB.copy(), mp_line.rB + (there - here)
 
     def ours_alternating():  # each solve warm-started from the other fairlead's solution
-        cable.line_3d(model, anchor, here, start=line_there).stiffness()
-        cable.line_3d(model, anchor, there, start=line_here).stiffness()
+        mooring.line_3d(model, anchor, here, start=line_there).stiffness()
+        mooring.line_3d(model, anchor, there, start=line_here).stiffness()
 
     def moorpy_alternating():  # staticSolve warm-starts from its last solution
         mp_line.setEndPosition(mp_there, True)
@@ -163,9 +164,9 @@ def run(repeat: int) -> str:
         mp_line.setEndPosition(mp_here, True)
         mp_line.staticSolve()
 
-    t_line = best_time(lambda: cable.line_3d(model, anchor, here).stiffness(), repeat, 200)
+    t_line = best_time(lambda: mooring.line_3d(model, anchor, here).stiffness(), repeat, 200)
     t_line_same = best_time(
-        lambda: cable.line_3d(model, anchor, here, start=line_here).stiffness(), repeat, 200
+        lambda: mooring.line_3d(model, anchor, here, start=line_here).stiffness(), repeat, 200
     )
     t_line_near = best_time(ours_alternating, repeat, 100) / 2
     span, dh = line_here.span, line_here.dh
@@ -181,7 +182,7 @@ def run(repeat: int) -> str:
 
     # the body's equilibrium; "cold": the same lines behind a model without start= (the
     # line-model protocol before warm starts), each line solved from its own start
-    cold_system = cable.MooringSystem(system.body, [_ColdModel(m) for m in system.lines], system.anchors)
+    cold_system = mooring.MooringSystem(system.body, [_ColdModel(m) for m in system.lines], system.anchors)
     n_solves = 3 * _count_calls(system, "evaluate", lambda: system.equilibrium(force=force, moment=moment))
     body = ms.bodyList[0]
 
@@ -216,25 +217,55 @@ def run(repeat: int) -> str:
         [
             "| task | skcable [ms] | MoorPy [ms] | ratio MoorPy/skcable |",
             "|---|---|---|---|",
-            row("one line between two points, forces and 3x3 stiffness, from the default start "
-                "(MoorPy: `staticSolve(reset=True)`)", t_line, t_line_mp_cold),
-            row("the same, warm-started from the solution at a fairlead 1.1 m away (both codes "
-                "alternate between the two fairleads)", t_line_near, t_line_mp_near),
+            row(
+                "one line between two points, forces and 3x3 stiffness, from the default start "
+                "(MoorPy: `staticSolve(reset=True)`)",
+                t_line,
+                t_line_mp_cold,
+            ),
+            row(
+                "the same, warm-started from the solution at a fairlead 1.1 m away (both codes "
+                "alternate between the two fairleads)",
+                t_line_near,
+                t_line_mp_near,
+            ),
             row("the same, warm-started from the solution at the same fairlead", t_line_same, t_line_mp),
             row("of which the 2-D line solve (`Line.solve`), from the default start", t_line_2d),
             row("of which the 2-D line solve, warm-started 1.1 m away", t_line_2d_warm),
-            row("`elastic_catenary(..., seabed=0)`, one scalar call (the default start of a "
-                "one-segment `Line`)", t_catenary),
-            row(f"body equilibrium from rest (skcable: {iterations} Newton steps, {n_solves} line solves; "
-                f"MoorPy: {n_solves_mp} line solves)", t_sys, t_sys_mp, 2),
-            row("the same, each line solved from its default start (a line model without `start=`)",
-                t_sys_cold, t_sys_mp, 2),
-            row("per line solve in the equilibrium loop: the equilibrium's time / its line solves",
-                per_line, per_line_mp),
-            row("per line solve in the equilibrium loop: its line solves and 3x3 stiffnesses replayed "
-                "alone, against MoorPy's warm-started line (third row)", t_replay, t_line_mp),
-            row("analytic 6x6 stiffness (skcable re-solves the 3 lines; MoorPy reuses their stored 3x3)",
-                t_k, t_k_mp),
+            row(
+                "`elastic_catenary(..., seabed=0)`, one scalar call (the default start of a "
+                "one-segment `Line`)",
+                t_catenary,
+            ),
+            row(
+                f"body equilibrium from rest (skcable: {iterations} Newton steps, {n_solves} line solves; "
+                f"MoorPy: {n_solves_mp} line solves)",
+                t_sys,
+                t_sys_mp,
+                2,
+            ),
+            row(
+                "the same, each line solved from its default start (a line model without `start=`)",
+                t_sys_cold,
+                t_sys_mp,
+                2,
+            ),
+            row(
+                "per line solve in the equilibrium loop: the equilibrium's time / its line solves",
+                per_line,
+                per_line_mp,
+            ),
+            row(
+                "per line solve in the equilibrium loop: its line solves and 3x3 stiffnesses replayed "
+                "alone, against MoorPy's warm-started line (third row)",
+                t_replay,
+                t_line_mp,
+            ),
+            row(
+                "analytic 6x6 stiffness (skcable re-solves the 3 lines; MoorPy reuses their stored 3x3)",
+                t_k,
+                t_k_mp,
+            ),
         ]
     )
     version = importlib.metadata.version("moorpy")

@@ -42,7 +42,7 @@ from pathlib import Path
 
 import numpy as np
 
-from skcable import cable
+from skcable import mooring
 from skcable.io._atomic import write_text
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -82,11 +82,11 @@ def _layout(rows, n_lines):
 
 
 def skcable_scene(rows, n_lines):
-    system = cable.MooringSystem(depth=DEPTH)
-    line = cable.Line([cable.Segment(LENGTH, W, EA)])
+    system = mooring.MooringSystem(depth=DEPTH)
+    line = mooring.Line([mooring.Segment(LENGTH, W, EA)])
     loads = {}
     for (x0, y0), ends in _layout(rows, n_lines):
-        body = system.add_body(cable.RigidBody(**OWN), position=[x0, y0, 0.0, 0.0, 0.0, 0.0])
+        body = system.add_body(mooring.RigidBody(**OWN), position=[x0, y0, 0.0, 0.0, 0.0, 0.0])
         loads[body] = FORCE
         for anchor, fairlead in ends:
             system.add_line(line, system.add_point(anchor, fixed=True), system.add_point(fairlead, body=body))

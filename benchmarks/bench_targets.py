@@ -41,7 +41,7 @@ sys.path.insert(0, str(ROOT / "benchmarks"))
 
 from bench_closed_forms import timed as per_call  # noqa: E402  (median of 5 batches)
 
-from skcable import cable  # noqa: E402
+from skcable import bvp, cable  # noqa: E402
 
 SPAN, DH, W, EA, L0 = 800.0, -20.0, 20.0, 1e12, 801.409
 
@@ -122,7 +122,7 @@ def strand_rows(r):
             )
     ref = cable.catenary(800.0, -20.0, 20.0, low=-30.0)
     t_bvp = best(
-        lambda: cable.solve_bvp(800.0, -20.0, cable.SelfWeight(20.0), n_elements=10_000, length=ref.length),
+        lambda: bvp.solve_bvp(800.0, -20.0, bvp.SelfWeight(20.0), n_elements=10_000, length=ref.length),
         3 * r,
     )
     rows.append(
@@ -269,7 +269,7 @@ def linear_solve_times(ref, r):
     minimum of ``20 r`` runs of each, the two timed back to back."""
     from scipy.linalg import solve_banded
 
-    sol = cable.solve_bvp(800.0, -20.0, cable.SelfWeight(20.0), n_elements=10_000, length=ref.length)
+    sol = bvp.solve_bvp(800.0, -20.0, bvp.SelfWeight(20.0), n_elements=10_000, length=ref.length)
     problem = sol.problem
     state = problem.assemble(sol.dofs, sol.H)
     system, interior = problem.solver.system, problem.interior

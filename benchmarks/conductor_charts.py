@@ -22,7 +22,7 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
-from skcable import cable  # noqa: E402
+from skcable import conductors  # noqa: E402
 
 OUT = Path(__file__).resolve().parents[1] / "docs" / "img"
 W0, EA, ALPHA = 15.97, 2.94e7, 19.3e-6
@@ -41,8 +41,8 @@ def parabola_error():
         rows = []
         for ratio in ratios:
             kw = dict(EA=EA, alpha=ALPHA, w0=W0, t0=15.0, sag0=ratio * span, w=w, t=t, wind=wind)
-            e = cable.change_of_state(span, 0.0, **kw)
-            p = cable.change_of_state(span, 0.0, **kw, model="parabola")
+            e = conductors.change_of_state(span, 0.0, **kw)
+            p = conductors.change_of_state(span, 0.0, **kw, model="parabola")
             rows.append((e.sag / span, abs(p.H / e.H - 1), abs(p.sag / e.sag - 1)))
         rows = np.array(rows)
         axes[0].loglog(rows[:, 0], rows[:, 1], "o-", ms=3, label=name)
@@ -69,7 +69,7 @@ def frequencies():
     irv = []
     for l2 in lam2:
         EA_ = l2 * H * L_e / ((w * L / H) ** 2 * L)
-        r = cable.natural_frequencies(L, 0.0, w, EA_, H=H, n_modes=4)
+        r = conductors.natural_frequencies(L, 0.0, w, EA_, H=H, n_modes=4)
         fe.append(r.f_in_plane * L / c)
         irv.append(r.irvine["in_plane"] * L / c)
     fe, irv = np.array(fe), np.array(irv)

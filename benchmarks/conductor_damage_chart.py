@@ -22,7 +22,7 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
-from skcable import cable, strand  # noqa: E402
+from skcable import conductors, strand  # noqa: E402
 
 OUT = Path(__file__).resolve().parents[1] / "docs" / "img"
 SPAN, T0, H0 = 400.0, 15.0, 28e3
@@ -31,21 +31,21 @@ TEMPERATURES = np.linspace(-20.0, 100.0, 25)
 
 def main():
     drake = strand.preset("acsr-drake")
-    intact = cable.Conductor.from_strand(drake)
+    intact = conductors.Conductor.from_strand(drake)
     reference = intact.change_of_state(SPAN, 0.0, t0=T0, H0=H0, t=TEMPERATURES)
     strain = H0 / intact.EA
     fig, ax = plt.subplots(figsize=(7, 4.5))
     print(f"intact: EA = {intact.EA:.6g} N, L0 = {reference.L0:.6f} m, reference strain {strain:.3g}")
     for n in (1, 2, 3, 4):
         start = time.perf_counter()
-        broken = cable.Conductor.from_strand(drake, damage=n)
+        broken = conductors.Conductor.from_strand(drake, damage=n)
         result = broken.change_of_state(SPAN, 0.0, t0=T0, length=reference.L0, t=TEMPERATURES)
         elapsed = time.perf_counter() - start
         start = time.perf_counter()
         model = strand.StrandModel(broken.strand, 2.0)
         secant = model.solve(strain).force / strain
         fe_time = time.perf_counter() - start
-        fe = cable.Conductor.from_strand(drake, damage=n, EA=secant)
+        fe = conductors.Conductor.from_strand(drake, damage=n, EA=secant)
         fe_result = fe.change_of_state(SPAN, 0.0, t0=T0, length=reference.L0, t=TEMPERATURES)
         extra, extra_fe = result.sag - reference.sag, fe_result.sag - reference.sag
         ax.plot(TEMPERATURES, 100 * extra, "-", color=f"C{n - 1}", label=f"{n} broken: section EA")

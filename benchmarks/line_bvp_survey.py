@@ -1,9 +1,9 @@
-"""Survey of `solve_line_bvp` over seeded scenes that the closed-form `cable.Line` solves.
+"""Survey of `solve_line_bvp` over seeded scenes that the closed-form `mooring.Line` solves.
 
-The scenes are those of ``tests/cable/line_scenes.py`` (the CI test runs a sample of them): one
+The scenes are those of ``tests/mooring/line_scenes.py`` (the CI test runs a sample of them): one
 to three segments of chain, wire or rope (weights 1 to 3000 N/m, ``EA/(wL)`` 1e2 to 1e9), a
 clump weight at a joint or none, no seabed, a flat seabed through the anchor (friction 0, 0.3,
-1) or one below it, lengths from 0.98 to 3 chords. Each scene is solved by ``cable.Line``
+1) or one below it, lengths from 0.98 to 3 chords. Each scene is solved by ``mooring.Line``
 (the reference; for one-segment lines also a 60-digit mpmath closure) and by
 ``solve_line_bvp`` at its default 64 elements, again at 256 where the 64-element fairlead force
 is farther from the reference than the tolerance (``line_scenes.tolerance``: 1e-6 of the
@@ -40,7 +40,7 @@ import numpy as np
 ROOT = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT))
 from skcable.errors import InputError  # noqa: E402
-from tests.cable.line_scenes import exact_one_segment, scenes, tolerance  # noqa: E402
+from tests.mooring.line_scenes import exact_one_segment, scenes, tolerance  # noqa: E402
 
 OUTCOMES = ("right", "right at 256", "heap refused", "clump refused", "wrong", "failed")
 START, END = "<!-- line-bvp-survey:start -->", "<!-- line-bvp-survey:end -->"
@@ -102,7 +102,7 @@ def report(rows, seeds, count):
     counts = Counter(r[5] for r in rows)
     times = np.array([r[7] for r in rows if r[5] in ("right", "right at 256")])
     lines = [
-        f"{len(seeds)} seeds x {count} scenes, {len(rows)} that `cable.Line` solves or finds a heap in:",
+        f"{len(seeds)} seeds x {count} scenes, {len(rows)} that `mooring.Line` solves or finds a heap in:",
         "",
         "| " + " | ".join(OUTCOMES) + " |",
         "|" + "---|" * len(OUTCOMES),

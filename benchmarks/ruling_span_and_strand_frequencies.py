@@ -21,7 +21,7 @@ import time
 
 import numpy as np
 
-from skcable import cable, strand
+from skcable import conductors, strand
 
 W0, EA, ALPHA = 15.97, 2.94e7, 19.3e-6
 SPANS = [250.0, 450.0, 300.0, 400.0, 200.0]
@@ -37,7 +37,7 @@ def section(dh):
     w = np.array([v[0] for v in STATES.values()])
     t = np.array([v[1] for v in STATES.values()])
     start = time.perf_counter()
-    res = cable.tension_section(
+    res = conductors.tension_section(
         SPANS, dh, EA=EA, alpha=ALPHA, w0=W0, t0=15.0, H0=25e3, w=w, t=t,
         insulator_length=3.0, insulator_weight=700.0,
     )  # fmt: skip

@@ -48,7 +48,7 @@ import numpy as np
 sys.path.insert(0, str(Path(__file__).parent))
 from _reference import jonkman_grounded  # noqa: E402
 
-from skcable import cable  # noqa: E402
+from skcable import cable, mooring  # noqa: E402
 
 ROOT = Path(__file__).resolve().parents[1]
 SPAN, W = 100.0, 1.0
@@ -106,7 +106,7 @@ def skcable_closed(dh, L, EA, cb):
 
 
 def skcable_line(dh, L, EA, cb):
-    r = cable.Line([cable.Segment(L, W, EA)], seabed=0.0, friction=cb).solve(SPAN, dh)
+    r = mooring.Line([mooring.Segment(L, W, EA)], seabed=0.0, friction=cb).solve(SPAN, dh)
     return float(r.H), float(r.V_B)
 
 
@@ -117,7 +117,7 @@ def skcable_bvp(dh, L, EA, cb):
     discretisation error; then the coarser of the last two meshes."""
     before, change = None, np.inf
     for n in (80, 160, 320, 640, 1280):
-        r = cable.solve_line_bvp(SPAN, dh, [(L, W, EA)], seabed=0.0, friction=cb, n_elements=n)
+        r = mooring.solve_line_bvp(SPAN, dh, [(L, W, EA)], seabed=0.0, friction=cb, n_elements=n)
         now = np.array([r.H, r.V_B])
         if before is not None:
             moved = np.hypot(*(now - before)) / np.hypot(*now)

@@ -18,7 +18,7 @@ Methods: skcable closed form (catenary / elastic_catenary), skcable BVP graph fo
 form (P2, the mesh doubled from 64 elements until two meshes agree within 1e-10, at most 4096),
 skcable line BVP (`solve_line_bvp`: the arc form on meshes graded by the line's turning, the
 mesh doubled alike, or until the change between meshes stops falling: the round-off regime),
-skcable cable.solve(rtol=1e-9), MoorPy catenary(), pycatenary MooringLine, OpenSeesPy
+skcable bvp.solve(rtol=1e-9), MoorPy catenary(), pycatenary MooringLine, OpenSeesPy
 CatenaryCable.
 
 Run:  python benchmarks/stability_map.py            (about 15 minutes)
@@ -39,7 +39,7 @@ sys.path.insert(0, str(Path(__file__).parent))
 from _peers import moorpy_H, opensees_catenary_cable_H, pycatenary_H  # noqa: E402
 from _reference import catenary_H, irvine_H  # noqa: E402
 
-from skcable import cable  # noqa: E402
+from skcable import bvp, cable, mooring  # noqa: E402
 
 ROOT = Path(__file__).resolve().parents[1]
 SPAN, W = 100.0, 1.0
@@ -59,8 +59,8 @@ def bvp_converged(dh, length, EA, formulation):
     """Mesh doubled until two successive H agree within 1e-10 (at most 4096 elements)."""
     n, previous = 64, None
     while n <= 4096:
-        sol = cable.solve_bvp(
-            SPAN, dh, cable.SelfWeight(W), length=length, EA=EA, n_elements=n, formulation=formulation
+        sol = bvp.solve_bvp(
+            SPAN, dh, bvp.SelfWeight(W), length=length, EA=EA, n_elements=n, formulation=formulation
         )
         if previous is not None and abs(sol.H / previous - 1) < 1e-10:
             return sol.H
@@ -76,7 +76,7 @@ def line_bvp_converged(dh, length, EA):
     discretisation error; then the coarser of the last two meshes."""
     n, previous, change = 64, None, np.inf
     while n <= 4096:
-        H = cable.solve_line_bvp(SPAN, dh, [(length, W, EA)], n_elements=n).H
+        H = mooring.solve_line_bvp(SPAN, dh, [(length, W, EA)], n_elements=n).H
         if previous is not None:
             now = abs(H / previous - 1)
             if now < 1e-10:
@@ -100,7 +100,7 @@ def methods(elastic):
         "skcable BVP arc": lambda dh, L, EA: bvp_converged(dh, L, EA, "arc"),
         "skcable line BVP": line_bvp_converged,
         "skcable solve(rtol=1e-9)": lambda dh, L, EA: (
-            cable.solve(SPAN, dh, cable.SelfWeight(W), length=L, EA=EA, rtol=1e-9).H
+            bvp.solve(SPAN, dh, bvp.SelfWeight(W), length=L, EA=EA, rtol=1e-9).H
         ),
     }
     peers = {

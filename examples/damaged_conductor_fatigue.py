@@ -29,8 +29,8 @@ from pathlib import Path
 
 import numpy as np
 
-from skcable import cable, strand
-from skcable.cable.conductors import WohlerCurve, clamp_stress, residual_strength
+from skcable import conductors, strand
+from skcable.conductors import WohlerCurve, clamp_stress, residual_strength
 
 SPAN = 400.0  # m, level
 T0, H0 = 15.0, 28e3  # °C, N: the everyday state of the intact conductor (20 % RTS)
@@ -44,13 +44,13 @@ def table():
     import pandas as pd
 
     drake = strand.preset("acsr-drake")
-    intact = cable.Conductor.from_strand(drake, rts=RTS)
+    intact = conductors.Conductor.from_strand(drake, rts=RTS)
     L0 = intact.change_of_state(SPAN, t0=T0, H0=H0, t=T0).L0
     sbl = WohlerCurve.safe_border_line(layers=2)
     rows = []
     for n in BROKEN:
         damaged = drake.damaged(n) if n else drake
-        conductor = cable.Conductor.from_strand(drake, damage=n or None, rts=RTS)
+        conductor = conductors.Conductor.from_strand(drake, damage=n or None, rts=RTS)
         states = conductor.change_of_state(SPAN, t0=T0, length=L0, t=[T0, 75.0])
         stress = clamp_stress(damaged, Y_B, float(states.H[0]))
         rows.append(

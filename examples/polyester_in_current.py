@@ -3,11 +3,11 @@
 A semi-taut mooring line of chain, polyester rope and chain, with a clump weight where the
 bottom chain meets the rope, runs from an anchor on a sloped seabed 200 m deep to a fairlead
 15 m below the waterline. The polyester's stiffness grows with its load: its strain is a
-working curve of (strain, tension) points (`skcable.cable.axial.StrainTable`). A sheared
+working curve of (strain, tension) points (`skcable.mooring.axial.StrainTable`). A sheared
 current, 1.1 m/s at the surface falling to 0.3 m/s at the seabed by a one-seventh power law,
 flows 40 degrees off the line's heading and drags the line out of its vertical plane.
 
-`cable.line_3d` sees the current and the slope and solves the line by the 3-D line BVP on
+`mooring.line_3d` sees the current and the slope and solves the line by the 3-D line BVP on
 scikit-fem, started from the closed form in the plane of the ends, and says so: which model
 ran, why, and its estimated error. We print the end forces, the drag's pull across the line,
 the clump's height above the seabed and the equilibrium residual, and draw the line from
@@ -24,10 +24,10 @@ from pathlib import Path
 
 import numpy as np
 
-from skcable import cable
-from skcable.cable.axial import StrainTable
-from skcable.cable.bathymetry import Plane
-from skcable.cable.current import ProfileCurrent
+from skcable import mooring
+from skcable.bvp.current import ProfileCurrent
+from skcable.mooring.axial import StrainTable
+from skcable.mooring.bathymetry import Plane
 
 DEPTH = 200.0  # m, at the anchor
 SLOPE = (0.04, 0.01)  # the seabed rises towards the fairlead
@@ -54,24 +54,24 @@ def current(z):
     return u * np.cos(HEADING), u * np.sin(HEADING)
 
 
-def line(in_current: bool = True) -> cable.Line:
+def line(in_current: bool = True) -> mooring.Line:
     """The line from the anchor on the slope, in the current or in still water."""
     chain = {k: v for k, v in CHAIN.items() if k != "EA"}
     segments = [
-        cable.Segment(LENGTHS[0], EA=CHAIN["EA"], **chain),
-        cable.Segment(LENGTHS[1], EA=ROPE_CURVE, **ROPE),
-        cable.Segment(LENGTHS[2], EA=CHAIN["EA"], **chain),
+        mooring.Segment(LENGTHS[0], EA=CHAIN["EA"], **chain),
+        mooring.Segment(LENGTHS[1], EA=ROPE_CURVE, **ROPE),
+        mooring.Segment(LENGTHS[2], EA=CHAIN["EA"], **chain),
     ]
-    clump = [cable.ClumpWeight(1, CLUMP)]
+    clump = [mooring.ClumpWeight(1, CLUMP)]
     seabed = Plane(-DEPTH, SLOPE, origin=ANCHOR[:2])
     if not in_current:
-        return cable.Line(segments, clump, seabed=seabed, friction=FRICTION)
-    return cable.Line(segments, clump, seabed=seabed, friction=FRICTION, current=ProfileCurrent(current))
+        return mooring.Line(segments, clump, seabed=seabed, friction=FRICTION)
+    return mooring.Line(segments, clump, seabed=seabed, friction=FRICTION, current=ProfileCurrent(current))
 
 
 def solve():
     """The line in the current, and in still water, on the slope."""
-    return cable.line_3d(line(True), ANCHOR, FAIRLEAD), cable.line_3d(line(False), ANCHOR, FAIRLEAD)
+    return mooring.line_3d(line(True), ANCHOR, FAIRLEAD), mooring.line_3d(line(False), ANCHOR, FAIRLEAD)
 
 
 def report(sea, still) -> str:

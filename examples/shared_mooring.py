@@ -19,7 +19,7 @@ from pathlib import Path
 
 import numpy as np
 
-from skcable import cable
+from skcable import mooring
 from skcable.io._atomic import write_text
 
 DEPTH, SPACING = 200.0, 1400.0  # m
@@ -32,13 +32,13 @@ SAFETY = 1.67  # the safety factor checked (a design code's, for the condition c
 
 def system():
     """The two turbines, their four anchor lines and the shared line; returns (system, turbines, lines)."""
-    chain = cable.component("studless chain R3")
-    anchor_line = cable.Line([chain.segment(850.0, 0.12)], seabed=0.0, friction=0.6)
-    shared = cable.Line([chain.segment(1500.0, 0.076)])  # no friction: it touches down between its ends
-    moored = cable.MooringSystem(depth=DEPTH)
+    chain = mooring.component("studless chain R3")
+    anchor_line = mooring.Line([chain.segment(850.0, 0.12)], seabed=0.0, friction=0.6)
+    shared = mooring.Line([chain.segment(1500.0, 0.076)])  # no friction: it touches down between its ends
+    moored = mooring.MooringSystem(depth=DEPTH)
     turbines, lines = [], []
     for i, x0 in enumerate((0.0, SPACING)):
-        hull = moored.add_body(cable.RigidBody(**HULL), position=[x0, 0.0, 0.0, 0.0, 0.0, 0.0])
+        hull = moored.add_body(mooring.RigidBody(**HULL), position=[x0, 0.0, 0.0, 0.0, 0.0, 0.0])
         turbines.append(hull)
         for heading in np.radians((120.0, 240.0) if i == 0 else (60.0, -60.0)):
             c, s = np.cos(heading), np.sin(heading)

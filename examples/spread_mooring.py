@@ -21,7 +21,7 @@ from pathlib import Path
 
 import numpy as np
 
-from skcable import cable
+from skcable import mooring
 from skcable.io._atomic import write_text
 
 DEPTH = 200.0  # m, water depth; anchors on the seabed
@@ -46,8 +46,8 @@ def layout():
 
 def system():
     anchors, fairleads = layout()
-    chain = cable.Line([cable.Segment(LENGTH, W, EA)], seabed=0.0)  # anchors on the seabed
-    platform = cable.RigidBody(
+    chain = mooring.Line([mooring.Segment(LENGTH, W, EA)], seabed=0.0)  # anchors on the seabed
+    platform = mooring.RigidBody(
         fairleads,
         mass=MASS,
         volume=VOLUME,
@@ -55,7 +55,7 @@ def system():
         metacentre=METACENTRE,
         waterplane_area=WATERPLANE,
     )
-    return cable.MooringSystem(platform, [chain] * 3, anchors, depth=DEPTH)
+    return mooring.MooringSystem(platform, [chain] * 3, anchors, depth=DEPTH)
 
 
 def solve():

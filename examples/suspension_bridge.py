@@ -20,7 +20,7 @@ from __future__ import annotations
 import argparse
 from pathlib import Path
 
-from skcable import cable
+from skcable import bvp, cable
 
 SPAN = 1000.0  # m, main span
 SAG = 100.0  # m, sag ratio 1/10
@@ -31,13 +31,13 @@ EA = 2.0e11 * 0.6  # N, steel wires, 0.6 m^2 of steel
 
 def solve():
     """The exact BVP and two closed-form estimates, as one dict of solutions."""
-    loads = [cable.DeckLoad(DECK), cable.SelfWeight(WEIGHT)]
-    bvp = cable.solve_bvp(SPAN, 0.0, loads, sag=SAG, EA=EA, n_elements=200)
+    loads = [bvp.DeckLoad(DECK), bvp.SelfWeight(WEIGHT)]
+    exact = bvp.solve_bvp(SPAN, 0.0, loads, sag=SAG, EA=EA, n_elements=200)
     deck_only = cable.parabola(SPAN, 0.0, DECK, sag=SAG)
     # weight smeared per horizontal metre with the parabola's length
     smeared = cable.parabola(SPAN, 0.0, DECK + WEIGHT * deck_only.length / SPAN, sag=SAG)
     return {
-        "BVP (deck + weight, elastic)": bvp,
+        "BVP (deck + weight, elastic)": exact,
         "parabola, deck only": deck_only,
         "parabola, weight smeared": smeared,
     }

@@ -18,7 +18,7 @@ from pathlib import Path
 
 import numpy as np
 
-from skcable import cable
+from skcable import bvp, cable
 
 SPAN, DH = 400.0, 10.0  # m
 WEIGHT = 15.97  # N/m, ACSR "Drake" conductor
@@ -35,10 +35,10 @@ def iced(x):
 
 def solve():
     mesh = np.union1d(np.linspace(0.0, SPAN, 401), [ICE_END])
-    bare_bvp = cable.solve_bvp(SPAN, DH, [cable.SelfWeight(WEIGHT)], length=LENGTH, EA=EA, mesh=mesh)
+    bare_bvp = bvp.solve_bvp(SPAN, DH, [bvp.SelfWeight(WEIGHT)], length=LENGTH, EA=EA, mesh=mesh)
     bare = cable.elastic_catenary(SPAN, DH, WEIGHT, EA, length=LENGTH)
-    ice = cable.solve_bvp(
-        SPAN, DH, [cable.SelfWeight(WEIGHT), cable.DistributedLoad(qy=iced)], length=LENGTH, EA=EA, mesh=mesh
+    ice = bvp.solve_bvp(
+        SPAN, DH, [bvp.SelfWeight(WEIGHT), bvp.DistributedLoad(qy=iced)], length=LENGTH, EA=EA, mesh=mesh
     )
     return bare, bare_bvp, ice
 

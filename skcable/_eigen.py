@@ -1,6 +1,6 @@
 r"""The lowest modes of a small banded symmetric pencil :math:`K\phi = \lambda M\phi`.
 
-The vibration problems of the package (`skcable.cable.natural_frequencies`,
+The vibration problems of the package (`skcable.conductors.natural_frequencies`,
 `skcable.strand.beam_frequencies`) assemble a stiffness :math:`K` and a consistent mass
 :math:`M`, both symmetric positive definite and banded in the order of the nodes
 (half-bandwidth 2 or 3), the in-plane cable adding one rank-one term :math:`c\,bb^T`,

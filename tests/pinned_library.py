@@ -88,10 +88,10 @@ def seabed_cases():
 
 
 def line_cases():
-    from skcable import cable
+    from skcable import mooring
 
-    chain, wire = cable.Segment(300.0, 1000.0, 5e8), cable.Segment(250.0, 400.0, 2e8)
-    line = cable.Line([chain, wire, chain], [cable.ClumpWeight(1, 2e4)], seabed=0.0, friction=0.5)
+    chain, wire = mooring.Segment(300.0, 1000.0, 5e8), mooring.Segment(250.0, 400.0, 2e8)
+    line = mooring.Line([chain, wire, chain], [mooring.ClumpWeight(1, 2e4)], seabed=0.0, friction=0.5)
     r = line.solve(800.0, 150.0)
     table = r.tensions()
     out = {
@@ -99,10 +99,10 @@ def line_cases():
             H=r.H, V_A=r.V_A, V_B=r.V_B, K=r.stiffness(), T=table.select_dtypes("number").to_numpy()
         )
     }
-    buoyed = cable.Line([chain, wire, chain], [cable.Buoy(2, 5e4)])
+    buoyed = mooring.Line([chain, wire, chain], [mooring.Buoy(2, 5e4)])
     r = buoyed.solve(780.0, 350.0)
     out["line_buoy"] = dict(H=r.H, V_B=r.V_B, K=r.stiffness())
-    l3 = cable.line_3d(cable.Line([chain], seabed=0.0), (0.0, 0.0, -200.0), (500.0, 300.0, -14.0))
+    l3 = mooring.line_3d(mooring.Line([chain], seabed=0.0), (0.0, 0.0, -200.0), (500.0, 300.0, -14.0))
     out["line_3d"] = dict(F_a=l3.force_on_anchor, F_b=l3.force_on_fairlead, K=l3.stiffness())
     return out
 
@@ -124,18 +124,18 @@ def mooring_cases():
 
 
 def bvp_cases():
-    from skcable import cable
+    from skcable import bvp, mooring
 
-    ice = cable.DistributedLoad(qy=lambda x: -15.0 * ((x > 100) & (x < 220)))
-    a = cable.solve_bvp(300.0, 10.0, [cable.SelfWeight(3.0), ice], length=320.0)
-    b = cable.solve_bvp(800.0, -20.0, [cable.DeckLoad(20.0), cable.SelfWeight(5.0)], sag=60.0, EA=2e9)
-    c = cable.solve_bvp(
-        300.0, 10.0, [cable.SelfWeight(3.0), cable.PointLoad(120.0, 500.0)], H=900.0, degree=3, n_elements=20
+    ice = bvp.DistributedLoad(qy=lambda x: -15.0 * ((x > 100) & (x < 220)))
+    a = bvp.solve_bvp(300.0, 10.0, [bvp.SelfWeight(3.0), ice], length=320.0)
+    b = bvp.solve_bvp(800.0, -20.0, [bvp.DeckLoad(20.0), bvp.SelfWeight(5.0)], sag=60.0, EA=2e9)
+    c = bvp.solve_bvp(
+        300.0, 10.0, [bvp.SelfWeight(3.0), bvp.PointLoad(120.0, 500.0)], H=900.0, degree=3, n_elements=20
     )
-    wind = cable.DistributedLoad(qx=lambda x: 2.0 + 0.0 * x, qy=lambda x: -3.0 + 0.0 * x)
-    d = cable.solve_bvp(300.0, 10.0, [wind], length=320.0, EA=1e6, formulation="arc", n_elements=32)
-    e = cable.solve_bvp(300.0, 10.0, [cable.SelfWeight(3.0)], T_max=2000.0, formulation="arc", n_elements=32)
-    f = cable.solve_bvp(300.0, 10.0, [cable.SelfWeight(3.0)], low=-20.0, n_elements=32)
+    wind = bvp.DistributedLoad(qx=lambda x: 2.0 + 0.0 * x, qy=lambda x: -3.0 + 0.0 * x)
+    d = bvp.solve_bvp(300.0, 10.0, [wind], length=320.0, EA=1e6, formulation="arc", n_elements=32)
+    e = bvp.solve_bvp(300.0, 10.0, [bvp.SelfWeight(3.0)], T_max=2000.0, formulation="arc", n_elements=32)
+    f = bvp.solve_bvp(300.0, 10.0, [bvp.SelfWeight(3.0)], low=-20.0, n_elements=32)
     xs = np.linspace(0.0, 300.0, 7)
     out = {
         "bvp_ice": dict(_forces(a), y=a.y(xs)),
@@ -146,38 +146,38 @@ def bvp_cases():
         "bvp_low": dict(_forces(f)),
     }
     segs = [(300.0, 1000.0, 5e8), (250.0, 400.0, 2e8), (300.0, 1000.0, 5e8)]
-    g = cable.solve_line_bvp(800.0, 150.0, segs, seabed=lambda x: -0.02 * x)
-    h = cable.solve_line_bvp(800.0, 150.0, [(850.0, 1000.0, 5e8)], seabed=0.0, friction=0.5, n_elements=80)
-    k = cable.solve_line_bvp(700.0, 250.0, segs, point_loads=[(300.0, 2e4)], n_elements=48)
+    g = mooring.solve_line_bvp(800.0, 150.0, segs, seabed=lambda x: -0.02 * x)
+    h = mooring.solve_line_bvp(800.0, 150.0, [(850.0, 1000.0, 5e8)], seabed=0.0, friction=0.5, n_elements=80)
+    k = mooring.solve_line_bvp(700.0, 250.0, segs, point_loads=[(300.0, 2e4)], n_elements=48)
     out["line_bvp_slope"] = dict(H=g.H, H_A=g.H_A, V_A=g.V_A, V_B=g.V_B)
     out["line_bvp_friction"] = dict(H=h.H, H_A=h.H_A, V_A=h.V_A, V_B=h.V_B)
     out["line_bvp_free"] = dict(H=k.H, H_A=k.H_A, V_A=k.V_A, V_B=k.V_B)
-    sol = cable.solve(1000.0, 0.0, [cable.DeckLoad(100e3), cable.SelfWeight(15e3)], sag=100.0, rtol=1e-3)
+    sol = bvp.solve(1000.0, 0.0, [bvp.DeckLoad(100e3), bvp.SelfWeight(15e3)], sag=100.0, rtol=1e-3)
     out["choice"] = dict(H=sol.H, V_A=sol.V_A, error_estimate=sol.error_estimate)
     return out
 
 
 def conductor_cases():
-    from skcable import cable, strand
+    from skcable import conductors, strand
 
     out = {}
-    cs = cable.change_of_state(
+    cs = conductors.change_of_state(
         300.0, 0.0, EA=3e7, alpha=2.3e-5, w0=10.0, t0=15.0, sag0=6.0, w=[10.0, 25.0], t=[50.0, -5.0]
     )
     out["change_of_state"] = dict(H=cs.H, sag=cs.sag)
-    drake = cable.Conductor.from_strand(strand.preset("acsr-drake"), damage=2)
+    drake = conductors.Conductor.from_strand(strand.preset("acsr-drake"), damage=2)
     out["drake"] = dict(EA=drake.EA, w=drake.w, alpha=drake.alpha)
     table = drake.sag_tension_table(
         400.0, t0=15.0, H0=28e3, temperatures=[-20, 15, 75], load_cases={"ice": (0.0125, 0)}
     )
     out["drake_table"] = dict(values=table.select_dtypes("number").to_numpy())
-    ts = cable.tension_section(
+    ts = conductors.tension_section(
         [250, 450, 300], EA=3e7, alpha=2.3e-5, w0=16, t0=15, H0=2e4, w=16, t=80,
         insulator_length=3.0, insulator_weight=700.0,
     )  # fmt: skip
     out["tension_section"] = dict(H=ts.H, sag=ts.sag)
-    out["ruling_span"] = dict(value=cable.ruling_span([250.0, 450.0, 300.0]))
-    nf = cable.natural_frequencies(300.0, 0.0, 10.0, 3e7, sag=6.0)
+    out["ruling_span"] = dict(value=conductors.ruling_span([250.0, 450.0, 300.0]))
+    nf = conductors.natural_frequencies(300.0, 0.0, 10.0, 3e7, sag=6.0)
     out["natural_frequencies"] = dict(f_in=nf.f_in_plane, f_out=nf.f_out_of_plane)
     return out
 

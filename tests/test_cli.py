@@ -14,7 +14,7 @@ import numpy as np
 import pytest
 
 import skcable
-from skcable import cable, cli, strand
+from skcable import cable, cli, conductors, strand
 from skcable.cli import _args
 from skcable.errors import ConvergenceError
 
@@ -388,7 +388,7 @@ def test_change_of_state_json_is_the_api(capsys, model):
     )  # fmt: skip
     assert status == cli.EXIT_OK, err
     got = json.loads(out)
-    api = cable.change_of_state(
+    api = conductors.change_of_state(
         300.0, -10.0, EA=3e7, alpha=2.3e-5, w0=15.0, t0=15.0, H0=2e4,
         w=np.array([15.0, 25.0]), t=np.array([-20.0, 60.0]), wind=np.array([0.0, 8.0]), model=model,
     )  # fmt: skip
@@ -400,7 +400,7 @@ def test_change_of_state_json_is_the_api(capsys, model):
 def test_change_of_state_single_state_by_sag(capsys):
     status, out, _ = main(capsys, "change-of-state", *_STATE, "--sag0", "8", "--w", "15", "--t", "60")
     assert status == cli.EXIT_OK
-    api = cable.change_of_state(
+    api = conductors.change_of_state(
         300.0, -10.0, EA=3e7, alpha=2.3e-5, w0=15.0, t0=15.0, sag0=8.0, w=15.0, t=60.0
     )
     assert f"{api.H:.10g}" in out and f"{api.sag:.10g}" in out
@@ -431,7 +431,7 @@ def test_frequencies_json_and_vtk_are_the_api(tmp_path, capsys):
     status, out, err = main(capsys, *args, "--g", "9.8", "--vtk", path, "--json")
     assert status == cli.EXIT_OK, err
     got = json.loads(out)
-    api = cable.natural_frequencies(250.0, 12.0, 12.0, 2e7, sag=6.0, n_modes=3, g=9.8)
+    api = conductors.natural_frequencies(250.0, 12.0, 12.0, 2e7, sag=6.0, n_modes=3, g=9.8)
     assert got["f_in_plane"] == api.f_in_plane.tolist()
     assert got["f_out_of_plane"] == api.f_out_of_plane.tolist()
     assert got["in_plane_symmetric"] == api.in_plane_symmetric.tolist()
@@ -604,7 +604,7 @@ def test_change_of_state_prints_a_table_per_state_with_units(capsys):
         "8",
     )
     assert status == cli.EXIT_OK
-    api = cable.change_of_state(
+    api = conductors.change_of_state(
         300.0, -10.0, EA=3e7, alpha=2.3e-5, w0=15.0, t0=15.0, H0=2e4,
         w=np.array([15.0, 25.0]), t=np.array([-20.0, 60.0]), wind=np.array([0.0, 8.0]),
     )  # fmt: skip
@@ -626,7 +626,7 @@ def test_frequencies_print_labelled_by_mode_and_plane(capsys):
     args = _FREQUENCIES
     status, out, _ = main(capsys, *args)
     assert status == cli.EXIT_OK
-    api = cable.natural_frequencies(250.0, 12.0, 12.0, 2e7, sag=6.0, n_modes=3)
+    api = conductors.natural_frequencies(250.0, 12.0, 12.0, 2e7, sag=6.0, n_modes=3)
     lines = out.splitlines()
     header = lines[0].split("  ")
     assert [h.strip() for h in header if h.strip()] == [

@@ -9,7 +9,7 @@ import mpmath
 import numpy as np
 import pytest
 
-from skcable import InputError, cable
+from skcable import InputError, cable, mooring
 from skcable.cable._extreme import outsized
 from skcable.errors import ConvergenceError
 from tests.fuzz import known, lines, moored, multi
@@ -90,11 +90,11 @@ OUTSIZED = [
         "seabed_slope=1e308, friction=0.3)",
         "seabed_slope",
     ),
-    ("cable.solve_line_bvp(1e308, 200.0, [(850.0, 1000.0, 5e8)], seabed=0.0)", "span"),
-    ("cable.solve_line_bvp(800.0, 200.0, [(850.0, 1000.0, 1e-300)], seabed=0.0)", "EA"),
-    ("cable.solve_line_bvp(800.0, 200.0, [(1e-300, 1000.0, 5e8)], seabed=0.0)", "length"),
-    ("cable.solve_line_bvp(800.0, 200.0, [(1e308, 1000.0, 5e8)], seabed=0.0)", "length"),
-    ("cable.solve_line_bvp(800.0, 200.0, [(850.0, 1e-300, 5e8)], seabed=0.0)", "w"),
+    ("mooring.solve_line_bvp(1e308, 200.0, [(850.0, 1000.0, 5e8)], seabed=0.0)", "span"),
+    ("mooring.solve_line_bvp(800.0, 200.0, [(850.0, 1000.0, 1e-300)], seabed=0.0)", "EA"),
+    ("mooring.solve_line_bvp(800.0, 200.0, [(1e-300, 1000.0, 5e8)], seabed=0.0)", "length"),
+    ("mooring.solve_line_bvp(800.0, 200.0, [(1e308, 1000.0, 5e8)], seabed=0.0)", "length"),
+    ("mooring.solve_line_bvp(800.0, 200.0, [(850.0, 1e-300, 5e8)], seabed=0.0)", "w"),
 ]
 
 
@@ -102,7 +102,7 @@ OUTSIZED = [
 @pytest.mark.parametrize(("expr", "name"), OUTSIZED)
 def test_f6_f8_f9_an_outsized_argument_is_the_one_named(expr, name):
     with pytest.raises(InputError) as caught:
-        eval(expr, {"cable": cable})  # noqa: S307 - the fuzz's reproducer, a literal
+        eval(expr, {"cable": cable, "mooring": mooring})  # noqa: S307 - the fuzz's reproducer, a literal
     assert caught.value.argument == name
 
 
@@ -116,14 +116,14 @@ def test_f6_f8_f9_an_outsized_argument_is_the_one_named(expr, name):
 )
 def test_f7_a_segment_holds_one_finite_number_of_each(segment, name):
     with pytest.raises(InputError) as caught:
-        cable.solve_line_bvp(800.0, 200.0, [segment], seabed=0.0)
+        mooring.solve_line_bvp(800.0, 200.0, [segment], seabed=0.0)
     assert caught.value.argument == name
 
 
 def test_f7_an_inextensible_line_has_no_EA():
     """EA = None (inextensible): the result's EA is None, no infinity; the line is the
     inextensible catenary of its length (H against the 50-digit root with EA -> inf)."""
-    got = cable.solve_line_bvp(800.0, 200.0, [(850.0, 1000.0, None)], n_elements=256)
+    got = mooring.solve_line_bvp(800.0, 200.0, [(850.0, 1000.0, None)], n_elements=256)
     assert got.EA is None
     H, _ = _irvine_root(800.0, 200.0, 1000.0, mpmath.inf, 850.0, got.H, got.V_A)
     assert got.H == pytest.approx(float(H), rel=1e-4)  # P2 elements: the discretisation's error
@@ -131,7 +131,7 @@ def test_f7_an_inextensible_line_has_no_EA():
 
 def test_f7_dh_of_the_wrong_shape_names_dh():
     with pytest.raises(InputError) as caught:
-        cable.solve_line_bvp(800.0, [], [(850.0, 1000.0, 5e8)])
+        mooring.solve_line_bvp(800.0, [], [(850.0, 1000.0, 5e8)])
     assert caught.value.argument == "dh"
 
 
@@ -160,7 +160,7 @@ F10_FRICTION = 0.15672533623919793
 def test_f10_a_state_outside_the_bvp_is_refused_naming_point_loads_and_line_solves_it():
     s = F10_SEGMENTS[0][0]
     with pytest.raises(InputError, match="does not model that state") as caught:
-        cable.solve_line_bvp(
+        mooring.solve_line_bvp(
             *F10_SCENE,
             F10_SEGMENTS,
             seabed=0.0,
@@ -168,9 +168,9 @@ def test_f10_a_state_outside_the_bvp_is_refused_naming_point_loads_and_line_solv
             point_loads=[(s, P) for P in F10_CLUMPS],
         )
     assert caught.value.argument == "point_loads"
-    line = cable.Line(
-        [cable.Segment(*seg) for seg in F10_SEGMENTS],
-        [cable.ClumpWeight(1, P) for P in F10_CLUMPS],
+    line = mooring.Line(
+        [mooring.Segment(*seg) for seg in F10_SEGMENTS],
+        [mooring.ClumpWeight(1, P) for P in F10_CLUMPS],
         seabed=0.0,
         friction=F10_FRICTION,
     ).solve(*F10_SCENE)
@@ -196,8 +196,8 @@ def test_f10_a_line_in_compression_is_solved_with_the_elements_the_refusal_asks_
     ]
     span, dh = 32.95266515096135, 64.42683566852091
     with pytest.raises(ConvergenceError, match="give more"):
-        cable.solve_line_bvp(span, dh, segments, seabed=0.0, n_elements=64)
-    got = cable.solve_line_bvp(span, dh, segments, seabed=0.0, n_elements=256)
+        mooring.solve_line_bvp(span, dh, segments, seabed=0.0, n_elements=64)
+    got = mooring.solve_line_bvp(span, dh, segments, seabed=0.0, n_elements=256)
     data = LineData(
         [s[0] for s in segments], [s[1] for s in segments], [s[2] for s in segments], [0.0] * 4, 0.0
     )
@@ -254,7 +254,7 @@ def test_d4_a_touchdown_node_with_no_push_converges_on_64_elements():
     force = float(want["H"] + data.weight + sum(abs(p) for p in data.P))
     loads = [(segments[0][0], attachments[0][2])]
     for n in (32, 64, 65, 128):
-        got = cable.solve_line_bvp(span, dh, segments, seabed=bed, point_loads=loads, n_elements=n)
+        got = mooring.solve_line_bvp(span, dh, segments, seabed=bed, point_loads=loads, n_elements=n)
         for name in ("H", "V_B", "H_A"):
             assert abs(getattr(got, name) - float(want[name])) < 1e-6 * force, (n, name)
     assert run_case(multi.bvp_case(*known.KNOWN_D4_CYCLE)).kind == "ok"

@@ -10,7 +10,7 @@ import numpy as np
 import pytest
 from mpmath import mpf
 
-from skcable import cable, cli, io
+from skcable import cable, cli, conductors, io
 from skcable.errors import InputError
 from tests.fuzz import state
 
@@ -33,7 +33,7 @@ def test_line_path_reference_length_to_round_off():
         30.32663457446332,
         10.034135389183621,
     )
-    res = cable.change_of_state(
+    res = conductors.change_of_state(
         np.array([span, 29.65046559678961]),
         np.array([dh, 4.331467771090164]),
         EA=EA,
@@ -114,16 +114,16 @@ _TABLE = dict(
 @pytest.mark.parametrize(
     "call, name",
     [
-        (lambda: cable.change_of_state(1e-300, 10.0, **_STATE), "span"),  # named dh
-        (lambda: cable.change_of_state(1e308, 10.0, **_STATE), "span"),  # named H0
-        (lambda: cable.change_of_state(300.0, 10.0, **(_STATE | {"w0": 1e308})), "w0"),  # named H0
-        (lambda: cable.change_of_state(300.0, 10.0, **(_STATE | {"t0": 1e308})), "t0"),  # named t
-        (lambda: cable.sag_tension_table(1e308, 0.0, **_TABLE), "span"),  # named H0
-        (lambda: cable.sag_tension_table(300.0, 0.0, **(_TABLE | {"EA": 2.5e-308})), "EA"),  # named H0
-        (lambda: cable.sag_tension_table(300.0, 0.0, **(_TABLE | {"t0": 1e308})), "t0"),  # temperatures
-        (lambda: cable.natural_frequencies(1e308, 10.0, 15.0, 3e7, H=2e4), "span"),  # named H
-        (lambda: cable.natural_frequencies(1e-300, 10.0, 15.0, 3e7, H=2e4), "span"),  # named dh
-        (lambda: cable.natural_frequencies(300.0, 10.0, 1e308, 3e7, H=2e4), "w"),  # named H
+        (lambda: conductors.change_of_state(1e-300, 10.0, **_STATE), "span"),  # named dh
+        (lambda: conductors.change_of_state(1e308, 10.0, **_STATE), "span"),  # named H0
+        (lambda: conductors.change_of_state(300.0, 10.0, **(_STATE | {"w0": 1e308})), "w0"),  # named H0
+        (lambda: conductors.change_of_state(300.0, 10.0, **(_STATE | {"t0": 1e308})), "t0"),  # named t
+        (lambda: conductors.sag_tension_table(1e308, 0.0, **_TABLE), "span"),  # named H0
+        (lambda: conductors.sag_tension_table(300.0, 0.0, **(_TABLE | {"EA": 2.5e-308})), "EA"),  # named H0
+        (lambda: conductors.sag_tension_table(300.0, 0.0, **(_TABLE | {"t0": 1e308})), "t0"),  # temperatures
+        (lambda: conductors.natural_frequencies(1e308, 10.0, 15.0, 3e7, H=2e4), "span"),  # named H
+        (lambda: conductors.natural_frequencies(1e-300, 10.0, 15.0, 3e7, H=2e4), "span"),  # named dh
+        (lambda: conductors.natural_frequencies(300.0, 10.0, 1e308, 3e7, H=2e4), "w"),  # named H
     ],
 )
 def test_refusals_name_the_outsized_argument(call, name):
@@ -138,7 +138,7 @@ def test_parabolic_reference_out_of_range_is_named(span, name):
     """The parabola's reference tension w0 span²/(8 sag0 cos ψ) underflowed to 0 ("stretches the
     cable by more than its length ... = 0", naming sag0) or overflowed as an OverflowError."""
     with pytest.raises(InputError) as info:
-        cable.change_of_state(
+        conductors.change_of_state(
             span, 10.0, EA=3e7, alpha=2e-5, w0=15.0, t0=15.0, sag0=8.0, w=20.0, t=80.0, model="parabola"
         )
     assert info.value.argument == name, info.value

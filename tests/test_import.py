@@ -1,6 +1,6 @@
 """Light import (PEP 562): the packages load their heavy dependencies only when a name that
-needs them is used, every public name still resolves, ``dir()`` lists them, and the weak
-forms that left ``skcable.cable`` still work for one release with a DeprecationWarning."""
+needs them is used, every public name still resolves, and ``dir()`` lists them (the names
+that moved in 0.3.0: tests/test_moved.py)."""
 
 import ast
 import importlib
@@ -8,7 +8,6 @@ import inspect
 import json
 import subprocess
 import sys
-import warnings
 from pathlib import Path
 
 import pytest
@@ -17,14 +16,14 @@ import skcable
 
 ROOT = Path(skcable.__file__).resolve().parents[1]
 HEAVY = ("pandas", "scipy.optimize", "meshio", "pyvista", "matplotlib", "dask", "skfem")
-PACKAGES = ("skcable", "skcable.cable", "skcable.strand", "skcable.io")
-MOVED_FORMS = (
-    "arc_constitutive",
-    "arc_equilibrium_x",
-    "arc_equilibrium_y",
-    "graph_dH",
-    "graph_residual",
-    "graph_tangent",
+PACKAGES = (
+    "skcable",
+    "skcable.cable",
+    "skcable.bvp",
+    "skcable.mooring",
+    "skcable.conductors",
+    "skcable.strand",
+    "skcable.io",
 )
 
 
@@ -42,7 +41,9 @@ def loaded_after(statement: str) -> dict:
         "from skcable import cable",
         "from skcable import strand",
         "import skcable.io",
+        "from skcable import bvp, mooring, conductors",
         "from skcable import cable, strand, io; cable.__all__, dir(cable), dir(strand), dir(io)",
+        "from skcable import bvp, mooring, conductors as c; dir(bvp), dir(mooring), dir(c)",
     ],
 )
 def test_import_loads_no_heavy_module(statement):
@@ -51,17 +52,17 @@ def test_import_loads_no_heavy_module(statement):
 
 
 def test_the_probe_sees_a_heavy_module():  # the subprocess check can fail
-    assert loaded_after("from skcable import cable; cable.MooringSystem")["pandas"] is False
+    assert loaded_after("from skcable import mooring; mooring.MooringSystem")["pandas"] is False
     assert loaded_after("import skcable.io; skcable.io.write")["meshio"] is False  # imported in write()
-    assert loaded_after("from skcable import cable; cable.natural_frequencies")["skfem"] is True
+    assert loaded_after("from skcable import conductors; conductors.natural_frequencies")["skfem"] is True
     assert loaded_after("from skcable import strand; strand.StrandModel")["skfem"] is True
 
 
 def test_closed_forms_and_mooring_lines_run_without_scikit_fem():
     """A seabed line's closed form solves with skcable.fe's Newton: that loads no FE machinery."""
     scene = "cable.elastic_catenary(800.0, 150.0, 1000.0, 5e8, length=850.0, seabed=0.0, friction=0.5)"
-    line = "cable.Line([cable.Segment(300.0, 1000.0, 5e8)], seabed=0.0).solve(280.0, 150.0)"
-    loaded = loaded_after(f"from skcable import cable; {scene}; {line}")
+    line = "mooring.Line([mooring.Segment(300.0, 1000.0, 5e8)], seabed=0.0).solve(280.0, 150.0)"
+    loaded = loaded_after(f"from skcable import cable, mooring; {scene}; {line}")
     assert not loaded["skfem"] and not loaded["pandas"]
 
 
@@ -112,20 +113,3 @@ def test_version_is_the_package_metadata():
     from importlib.metadata import version
 
     assert skcable.__version__ == version("skcable")
-
-
-@pytest.mark.parametrize("name", MOVED_FORMS)
-def test_weak_forms_moved_to_bvp_forms(name):
-    from skcable import cable
-    from skcable.cable.bvp import forms
-
-    assert name not in cable.__all__ and name not in dir(cable)
-    with pytest.warns(DeprecationWarning, match=rf"skcable\.cable\.bvp\.forms\.{name}\b"):
-        old = getattr(cable, name)
-    assert old is getattr(forms, name)
-
-
-def test_the_new_path_does_not_warn():
-    with warnings.catch_warnings():
-        warnings.simplefilter("error")
-        from skcable.cable.bvp.forms import graph_residual  # noqa: F401

@@ -15,7 +15,7 @@ import numpy as np
 import pandas as pd
 import pytest
 
-from skcable import cable, strand, study
+from skcable import bvp, cable, conductors, mooring, strand, study
 
 # --- bit-for-bit comparison ---------------------------------------------------------------
 
@@ -95,42 +95,54 @@ def sloping_seabed(x):
     return -0.02 * x
 
 
+def sheared(z):
+    """A current sheared towards the seabed (m/s at height z, m): a module function, so it pickles."""
+    return (0.0, 0.8 * np.exp(np.asarray(z, dtype=float) / 100.0))
+
+
 def line_in_sea(current):
-    """`cable.line_3d` of a chain-polyester line (the closed form with the rope's law), or of a chain
-    in a current (the 3-D BVP), its model report formed."""
+    """`mooring.line_3d` of a chain-polyester line (the closed form with the rope's law), or of a chain
+    in a current (the 3-D BVP: uniform, tabulated or sheared), its model report formed."""
     if current:
-        seg = cable.Segment(500.0, 600.0, 4e8, diameter=0.1, cd_normal=1.2)
-        solved = cable.line_3d(cable.Line([seg], current=(0.0, 0.8)), (0, 0, -200.0), (400.0, 0, -20.0))
+        flow = {
+            True: (0.0, 0.8),
+            "tabulated": bvp.TabulatedCurrent([0.0, 100.0, 200.0], [(0.0, 0.8), (0.0, 0.5), (0.0, 0.2)]),
+            "sheared": bvp.ProfileCurrent(sheared),
+        }[current]
+        seg = mooring.Segment(500.0, 600.0, 4e8, diameter=0.1, cd_normal=1.2)
+        solved = mooring.line_3d(mooring.Line([seg], current=flow), (0, 0, -200.0), (400.0, 0, -20.0))
     else:
-        rope = cable.axial.StrainTable([0.0, 0.01, 0.03], [0.0, 1e6, 2.5e6])
-        segs = [cable.Segment(100.0, 1500.0, 1e9), cable.Segment(500.0, 50.0, rope)]
-        solved = cable.line_3d(cable.Line(segs), (0, 0, -200.0), (550.0, 0, -20.0))
+        rope = mooring.axial.StrainTable([0.0, 0.01, 0.03], [0.0, 1e6, 2.5e6])
+        segs = [mooring.Segment(100.0, 1500.0, 1e9), mooring.Segment(500.0, 50.0, rope)]
+        solved = mooring.line_3d(mooring.Line(segs), (0, 0, -200.0), (550.0, 0, -20.0))
     assert solved.model.error >= 0.0
     return solved
 
 
 def line():
-    segments = [cable.Segment(300.0, 1000.0, 5e8), cable.Segment(250.0, 400.0, 2e8)]
-    return cable.Line([*segments, cable.Segment(300.0, 1000.0, 5e8)], [cable.ClumpWeight(1, 2e4)], seabed=0.0)
+    segments = [mooring.Segment(300.0, 1000.0, 5e8), mooring.Segment(250.0, 400.0, 2e8)]
+    return mooring.Line(
+        [*segments, mooring.Segment(300.0, 1000.0, 5e8)], [mooring.ClumpWeight(1, 2e4)], seabed=0.0
+    )
 
 
-def mooring(point=False):
+def moored_system(point=False):
     heading = np.radians([0.0, 120.0, 240.0])
     ring = np.column_stack([np.cos(heading), np.sin(heading), np.zeros(3)])
     if point:
-        body = cable.PointBody(mass=8e6, volume=8.2e3, waterplane_area=600.0)
+        body = mooring.PointBody(mass=8e6, volume=8.2e3, waterplane_area=600.0)
     else:
-        body = cable.RigidBody(
+        body = mooring.RigidBody(
             20.0 * ring + [0.0, 0.0, -14.0], mass=8e6, volume=8.2e3, center_of_gravity=(0, 0, -5),
             metacentre=(0, 0, 10), waterplane_area=600.0,
         )  # fmt: skip
-    leg = cable.Line([cable.Segment(850.0, 2456.82, 1.2326e9)], seabed=0.0)
-    return cable.MooringSystem(body, [leg] * 3, 800.0 * ring + [0.0, 0.0, -200.0], depth=200.0)
+    leg = mooring.Line([mooring.Segment(850.0, 2456.82, 1.2326e9)], seabed=0.0)
+    return mooring.MooringSystem(body, [leg] * 3, 800.0 * ring + [0.0, 0.0, -200.0], depth=200.0)
 
 
 def network():
     """MoorPy's basicU: a U line between two anchors, two buoyant free points (built point by point)."""
-    system = cable.MooringSystem(depth=100.0)
+    system = mooring.MooringSystem(depth=100.0)
     ends = [
         system.add_point([-200.0, 0.0, -100.0], fixed=True),
         system.add_point([-100.0, 0.0, -50.0], volume=50.0),
@@ -138,15 +150,15 @@ def network():
         system.add_point([200.0, 0.0, -100.0], fixed=True),
     ]
     for L, a, b in zip((120.0, 250.0, 120.0), ends[:-1], ends[1:], strict=True):
-        system.add_line(cable.Line([cable.Segment(L, 2456.82, 1.2326e9)]), a, b)
+        system.add_line(mooring.Line([mooring.Segment(L, 2456.82, 1.2326e9)]), a, b)
     return system
 
 
 def moordyn_model():
     """A system written to a MoorDyn file and read back."""
     with tempfile.TemporaryDirectory() as folder:
-        path = cable.write_moordyn(network(), os.path.join(folder, "lines.dat"), diameter=0.12)
-        return cable.read_moordyn(path)
+        path = mooring.write_moordyn(network(), os.path.join(folder, "lines.dat"), diameter=0.12)
+        return mooring.read_moordyn(path)
 
 
 def strand_model(slip="axis", **options):
@@ -154,18 +166,18 @@ def strand_model(slip="axis", **options):
 
 
 def conductor_curves():
-    from skcable.cable.conductors import aa_coefficients
+    from skcable.conductors import aa_coefficients
 
     psi = 6894.757293168361
-    al = cable.ComponentCurve(
+    al = conductors.ComponentCurve(
         "aluminium", aa_coefficients([-1213.0, 44308.1, -14004.4, -37618.0, 30676.0]), 0.0045,
         64000.0 * psi * 100, 23e-6, compression_limit=0.0,
     )  # fmt: skip
-    st = cable.ComponentCurve(
+    st = conductors.ComponentCurve(
         "steel", aa_coefficients([-69.3, 38629.0, -3998.1, -45713.0, 27892.0]), 0.0045, 37000.0 * psi * 100,
         11.5e-6,
     )  # fmt: skip
-    return cable.StressStrainModel((al, st), area=468.6e-6, t_ref=20.0)
+    return conductors.StressStrainModel((al, st), area=468.6e-6, t_ref=20.0)
 
 
 def rating():
@@ -183,11 +195,11 @@ def rating():
         air_temperature=20.0, wind_direction=np.radians(80), wind_speed=1.66, ground_albedo=0.1,
         clearness_ratio=0.5,
     )  # fmt: skip
-    return cable.ThermalRating(span, weather, np.datetime64("2016-10-03T14:00"), standard="ieee738")
+    return conductors.ThermalRating(span, weather, np.datetime64("2016-10-03T14:00"), standard="ieee738")
 
 
 def drake():
-    return cable.Conductor.from_strand(strand.preset("acsr-drake"), damage=2)
+    return conductors.Conductor.from_strand(strand.preset("acsr-drake"), damage=2)
 
 
 X = np.linspace(0.0, 700.0, 9)
@@ -245,19 +257,21 @@ RESULTS = [
     ("sliding load", lambda: cable.sliding_load(100.0, 1.0, 110.0, 20.0), None),
     (
         "change of state",
-        lambda: cable.change_of_state(
+        lambda: conductors.change_of_state(
             SPANS, 0.0, EA=3e7, alpha=2.3e-5, w0=10.0, t0=15.0, sag0=6.0, w=[10.0, 25.0], t=[50.0, -5.0]
         ),
         None,
     ),
     (
         "thermal catenary",
-        lambda: cable.thermal_catenary(SPANS, 0.0, 10.0, 3e7, length=851.0, alpha=2.3e-5, t=50.0, t0=15.0),
+        lambda: conductors.thermal_catenary(
+            SPANS, 0.0, 10.0, 3e7, length=851.0, alpha=2.3e-5, t=50.0, t0=15.0
+        ),
         along,
     ),
     (
         "tension section",
-        lambda: cable.tension_section(
+        lambda: conductors.tension_section(
             [250, 450, 300],
             EA=3e7,
             alpha=2.3e-5,
@@ -278,13 +292,13 @@ RESULTS = [
     ),
     (
         "natural frequencies",
-        lambda: cable.natural_frequencies(300.0, 0.0, 10.0, 3e7, sag=6.0, n_modes=3),
+        lambda: conductors.natural_frequencies(300.0, 0.0, 10.0, 3e7, sag=6.0, n_modes=3),
         None,
     ),
-    ("BVP graph", lambda: cable.solve_bvp(300.0, 10.0, [cable.SelfWeight(3.0)], length=320.0), along),
+    ("BVP graph", lambda: bvp.solve_bvp(300.0, 10.0, [bvp.SelfWeight(3.0)], length=320.0), along),
     (
         "BVP arc",
-        lambda: cable.solve_bvp(300.0, 10.0, [cable.SelfWeight(3.0)], length=320.0, formulation="arc"),
+        lambda: bvp.solve_bvp(300.0, 10.0, [bvp.SelfWeight(3.0)], length=320.0, formulation="arc"),
         lambda c: (
             [c.y(x) for x in X[:5] % c.span],
             *profile(c),
@@ -293,37 +307,63 @@ RESULTS = [
     ("line solution", lambda: line().solve(800.0, 150.0), lambda r: (r.tensions(), r.stiffness())),
     (
         "line BVP",
-        lambda: cable.solve_line_bvp(800.0, 150.0, [(850.0, 1000.0, 5e8)], seabed=sloping_seabed),
+        lambda: mooring.solve_line_bvp(800.0, 150.0, [(850.0, 1000.0, 5e8)], seabed=sloping_seabed),
         lambda r: (r.stiffness(), r.samples(11)),
     ),
     (
         "line 3-D",
-        lambda: cable.line_3d(line(), [800.0, 0.0, -150.0], [0.0, 0.0, 0.0]),
+        lambda: mooring.line_3d(line(), [800.0, 0.0, -150.0], [0.0, 0.0, 0.0]),
         lambda r: r.stiffness(),
     ),
     ("line in the sea, a rope's law", lambda: line_in_sea(False), lambda r: (r.stiffness(), r.profile(5))),
     ("line in the sea, a current", lambda: line_in_sea(True), lambda r: (r.stiffness(), r.profile(5))),
-    ("mooring equilibrium", lambda: mooring().equilibrium(force=(2e6, 0.0, 0.0)), lambda r: r.stiffness()),
+    ("line in a tabulated current", lambda: line_in_sea("tabulated"), lambda r: r.profile(5)),
+    ("line in a sheared current", lambda: line_in_sea("sheared"), lambda r: r.profile(5)),
+    (
+        "line design",
+        lambda: mooring.design_line(
+            mooring.Line([mooring.Segment(850.0, 2456.82, 1.2326e9)], seabed=0.0, friction=0.5),
+            [800.0, 0.0, -200.0],
+            [20.0, 0.0, -14.0],
+            target="pretension",
+            value=1.2e6,
+            depth=200.0,
+        ),
+        lambda r: (r.x, r.achieved),
+    ),
+    (
+        "mooring equilibrium",
+        lambda: moored_system().equilibrium(force=(2e6, 0.0, 0.0)),
+        lambda r: r.stiffness(),
+    ),
     ("mooring network equilibrium", lambda: network().equilibrium(), lambda r: r.stiffness()),
     (
         "line between",
-        lambda: cable.line_between(
-            cable.Line([cable.Segment(850.0, 2456.82, 1.2326e9)]), [800, 0, -200], [0, 0, -14]
+        lambda: mooring.line_between(
+            mooring.Line([mooring.Segment(850.0, 2456.82, 1.2326e9)]), [800, 0, -200], [0, 0, -14]
         ),
         lambda r: r.stiffness(),
     ),
     (
         "line in a plane",
-        lambda: cable.line_in_plane(line(), 800.0, 150.0, seabed=0.0),
+        lambda: mooring.line_in_plane(line(), 800.0, 150.0, seabed=0.0),
         lambda r: (r.jacobian(), r.tensions()),
     ),
     (
         "line in a plane by the BVP",
-        lambda: cable.line_in_plane(line(), 800.0, 150.0, seabed=-10.0),
+        lambda: mooring.line_in_plane(line(), 800.0, 150.0, seabed=-10.0),
         lambda r: (r.jacobian(), r.tensions()),
     ),
-    ("clamp stress", lambda: cable.clamp_stress(strand.preset("acsr-drake").damaged(2), 0.5e-3, 28e3), None),
-    ("residual strength", lambda: cable.residual_strength(strand.preset("acsr-drake"), 2, rts=140.1e3), None),
+    (
+        "clamp stress",
+        lambda: conductors.clamp_stress(strand.preset("acsr-drake").damaged(2), 0.5e-3, 28e3),
+        None,
+    ),
+    (
+        "residual strength",
+        lambda: conductors.residual_strength(strand.preset("acsr-drake"), 2, rts=140.1e3),
+        None,
+    ),
     ("section", lambda: strand.preset("steel-9.5").damaged(1).section(), None),
     (
         "bending law",
@@ -370,7 +410,7 @@ RESULTS = [
 MODELS = [
     (
         "line BVP model",
-        lambda: cable.LineBVP([(850.0, 1000.0, 5e8)], seabed=0.0, friction=0.3, n_elements=32),
+        lambda: mooring.LineBVP([(850.0, 1000.0, 5e8)], seabed=0.0, friction=0.3, n_elements=32),
         lambda m: (lambda r: (r.H_B, r.V_B, r.stiffness()))(m.solve(780.0, 186.0)),
     ),
     ("strand", lambda: strand.preset("steel-9.5").damaged(1), lambda s: state(s.section())),
@@ -408,39 +448,39 @@ MODELS = [
     ("wire bending", lambda: strand.WireBending(), None),
     (
         "segment, clump, buoy",
-        lambda: [cable.Segment(1.0, 2.0, 3.0), cable.ClumpWeight(1, 2.0), cable.Buoy(1, 3.0)],
+        lambda: [mooring.Segment(1.0, 2.0, 3.0), mooring.ClumpWeight(1, 2.0), mooring.Buoy(1, 3.0)],
         None,
     ),
     ("line", line, lambda m: state(m.solve(800.0, 150.0))),
-    ("mooring system", mooring, lambda m: m.stiffness(np.zeros(6))),
+    ("mooring system", moored_system, lambda m: m.stiffness(np.zeros(6))),
     ("mooring network", network, lambda m: state(m.equilibrium())),
-    ("line component", lambda: cable.component("studless chain R3"), lambda c: c.properties(0.12)),
+    ("line component", lambda: mooring.component("studless chain R3"), lambda c: c.properties(0.12)),
     ("MoorDyn model", moordyn_model, lambda m: state(m.system.equilibrium())),
-    ("point body system", lambda: mooring(point=True), lambda m: m.stiffness(np.zeros(3))),
+    ("point body system", lambda: moored_system(point=True), lambda m: m.stiffness(np.zeros(3))),
     ("conductor", drake, lambda c: state(c.change_of_state(400.0, t0=15.0, H0=28e3, t=[50.0]))),
-    ("BVP segment", lambda: cable.BVPSegment(850.0, 1000.0, 5e8), None),
+    ("BVP segment", lambda: mooring.BVPSegment(850.0, 1000.0, 5e8), None),
     (
         "cable loads",
         lambda: [
-            cable.SelfWeight(3.0),
-            cable.DeckLoad(2.0),
-            cable.PointLoad(10.0, 5.0),
-            cable.DistributedLoad(qy=np.sin),
+            bvp.SelfWeight(3.0),
+            bvp.DeckLoad(2.0),
+            bvp.PointLoad(10.0, 5.0),
+            bvp.DistributedLoad(qy=np.sin),
         ],
         None,
     ),
     (
         "cable terms",
-        lambda: [cable.Buoyancy(0.01), cable.WindDrag(10.0, 0.03), cable.CurrentDrag(1.0, 0.1)],
-        lambda terms: state(cable.solve_bvp(300.0, 10.0, [cable.SelfWeight(30.0), *terms], length=320.0)),
+        lambda: [bvp.Buoyancy(0.01), bvp.WindDrag(10.0, 0.03), bvp.CurrentDrag(1.0, 0.1)],
+        lambda terms: state(bvp.solve_bvp(300.0, 10.0, [bvp.SelfWeight(30.0), *terms], length=320.0)),
     ),
     ("stress-strain model", conductor_curves, lambda m: state(m)),
     (
         "creep law",
-        lambda: cable.CreepLaw(K=1.2e-5, phi=0.01, alpha=1.3, mu=0.16),
+        lambda: conductors.CreepLaw(K=1.2e-5, phi=0.01, alpha=1.3, mu=0.16),
         lambda c: c.strain(30e6, 8.76e4, 15.0),
     ),
-    ("Wöhler curve", lambda: cable.WohlerCurve.safe_border_line(layers=2), None),
+    ("Wöhler curve", lambda: conductors.WohlerCurve.safe_border_line(layers=2), None),
     ("thermal rating", rating, lambda r: r.temperature([600.0, 1000.0])),
 ]
 
@@ -472,9 +512,8 @@ def test_pickles_to_equal_values(make, probe):
 #: the per-evaluation records handed to a term.
 NOT_A_RESULT = {
     "CableSolution", "CableTerm", "CableState", "CableForce", "Term", "FieldTerm", "SectionTerm", "SlipLaw",
-    "Step", "FieldAssembly", "StrandSupports",
+    "Step", "FieldAssembly", "StrandSupports", "Current",
 }  # fmt: skip
-DEPRECATED = {strand.DistributedLoad}  # the old name of TransverseLoad
 
 
 def types_in(obj, seen=None) -> set:
@@ -506,10 +545,10 @@ def test_every_public_result_and_model_is_pickled_above():
             made |= types_in(make())
     public = {
         getattr(module, name)
-        for module in (cable, strand)
+        for module in (cable, bvp, mooring, conductors, strand)
         for name in module.__all__
         if inspect.isclass(getattr(module, name)) and name not in NOT_A_RESULT
-    } - DEPRECATED | {study.StudyTable}
+    } | {study.StudyTable}
     missing = sorted(c.__name__ for c in public - made)
     assert not missing, f"public types that no factory above makes: {missing}"
 

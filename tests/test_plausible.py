@@ -8,7 +8,7 @@ import warnings
 import numpy as np
 import pytest
 
-from skcable import _plausible, cable, cli, strand
+from skcable import _plausible, cable, cli, conductors, mooring, strand
 from skcable.errors import InputError, PlausibilityWarning
 
 STATE = dict(alpha=2.3e-5, w0=15.0, t0=15.0, H0=2e4, w=[15.0, 25.0], t=[-20.0, 60.0])
@@ -22,7 +22,7 @@ def _ratio(warning) -> float:
 def test_ea_typed_in_mn_for_a_conductor():
     # issue 25: EA = 30 (MN) gave a 0.45 m unstressed length for a 300 m span
     with pytest.warns(PlausibilityWarning, match=r"^EA: .*MN") as caught:
-        res = cable.change_of_state(300.0, 0.0, EA=30.0, **STATE)
+        res = conductors.change_of_state(300.0, 0.0, EA=30.0, **STATE)
     assert res.L0 < 1.0  # solved: it is a warning, not a refusal
     assert {w.message.argument for w in caught} == {"EA"}
     assert {str(w.message) for w in caught} == {str(caught[0].message)}  # one line, however many solves
@@ -34,7 +34,7 @@ def test_ea_below_the_weight_of_a_line():
         cable.elastic_catenary(800.0, -20.0, 20.0, 100.0, length=810.0)  # 100 N under 16 kN
     assert 100.0 < 0.01 * 20.0 * 810.0 and _ratio(caught[0]) == 100.0
     with pytest.warns(PlausibilityWarning, match=r"^EA: "):
-        cable.Segment(850.0, 1000.0, 500.0)  # 5e8 N typed in MN
+        mooring.Segment(850.0, 1000.0, 500.0)  # 5e8 N typed in MN
     with pytest.warns(PlausibilityWarning, match=r"^EA: "):
         cable.elastic_catenary(800.0, 150.0, 1000.0, 500.0, length=850.0, seabed=0.0)
 
@@ -42,24 +42,26 @@ def test_ea_below_the_weight_of_a_line():
 def test_sag_typed_in_mm():
     # issue 25: --sag 6000 for a 250 m span gave an effective length of 3.8e8 m
     with pytest.warns(PlausibilityWarning, match=r"^sag: .*mm") as caught:
-        cable.natural_frequencies(250.0, 0.0, 1.2, 2e7, sag=6000.0)
+        conductors.natural_frequencies(250.0, 0.0, 1.2, 2e7, sag=6000.0)
     assert _ratio(caught[0]) == pytest.approx(6000.0 / 250.0, rel=1e-2)
     with pytest.warns(PlausibilityWarning, match=r"^sag: "):
-        cable.change_of_state(250.0, 0.0, EA=2e7, alpha=2.3e-5, w0=12.0, t0=15.0, sag0=300.0, w=12.0, t=15.0)
+        conductors.change_of_state(
+            250.0, 0.0, EA=2e7, alpha=2.3e-5, w0=12.0, t0=15.0, sag0=300.0, w=12.0, t=15.0
+        )
 
 
 def test_alpha_typed_in_micro_per_kelvin():
     # alpha 23 (1e-6/K meant): a thermal strain of 23 per kelvin is refused, naming alpha (not t)
     with pytest.raises(InputError) as info:
-        cable.change_of_state(300.0, 0.0, EA=3e7, **dict(STATE, alpha=23.0, t=[15.0, 16.0]))
+        conductors.change_of_state(300.0, 0.0, EA=3e7, **dict(STATE, alpha=23.0, t=[15.0, 16.0]))
     assert info.value.argument == "alpha"
     with pytest.raises(InputError) as info:  # colder than t0 as well
-        cable.change_of_state(300.0, 0.0, EA=3e7, **dict(STATE, alpha=23.0))
+        conductors.change_of_state(300.0, 0.0, EA=3e7, **dict(STATE, alpha=23.0))
     assert info.value.argument == "alpha"
     # alpha in 1e-4/K, a strain of 0.1 over 40 K: it solves, and warns naming alpha
     warm = dict(STATE, alpha=2.5e-3, t=[15.0, 55.0])
     with pytest.warns(PlausibilityWarning, match=r"^alpha: .*23e-6") as caught:
-        cable.change_of_state(300.0, 0.0, EA=3e7, **warm)
+        conductors.change_of_state(300.0, 0.0, EA=3e7, **warm)
     strain = float(re.search(r"up to ([-+.\de]+),", str(caught[0].message)).group(1))
     assert strain == pytest.approx(2.5e-3 * (55.0 - 15.0), rel=1e-2)
 
@@ -100,14 +102,16 @@ def test_ordinary_scenes_do_not_warn():
         cable.elastic_catenary(800.0, -20.0, 20.0, 1e12, length=801.409)
         cable.elastic_catenary(800.0, 150.0, 1000.0, 5e8, length=850.0, seabed=0.0, friction=0.5)
         cable.elastic_catenary(800.0, 150.0, 1000.0, 5e5, length=850.0)  # rubber-like: EA ~ 0.6 w L
-        line = cable.Line([cable.Segment(300.0, 1000.0, 5e8), cable.Segment(250.0, 400.0, 2e8)], seabed=0.0)
+        line = mooring.Line(
+            [mooring.Segment(300.0, 1000.0, 5e8), mooring.Segment(250.0, 400.0, 2e8)], seabed=0.0
+        )
         line.solve(500.0, 150.0)
-        cable.change_of_state(300.0, 0.0, EA=3e7, **STATE)
-        cable.sag_tension_table(
+        conductors.change_of_state(300.0, 0.0, EA=3e7, **STATE)
+        conductors.sag_tension_table(
             400.0, 0.0, EA=3e7, alpha=1.9e-5, w0=16.0, t0=15.0, H0=28e3,
             temperatures=[-20.0, 15.0, 75.0], load_cases={"ice": (25.0, 0.0)},
         )  # fmt: skip
-        cable.natural_frequencies(300.0, 0.0, 10.0, 3e7, sag=6.0)
+        conductors.natural_frequencies(300.0, 0.0, 10.0, 3e7, sag=6.0)
         strand.preset("steel-9.5").damaged(1).bending_law(mu=0.5, axial_strain=0.004)
 
 

@@ -5,7 +5,7 @@ InputError naming its argument (or ConvergenceError)."""
 import numpy as np
 import pytest
 
-from skcable import cable, cli, strand
+from skcable import cli, conductors, mooring, strand
 from skcable.errors import ConvergenceError, InputError
 
 
@@ -18,22 +18,22 @@ def _named(name, call):
 def test_line_refusals_name_their_argument():
     # a buoy in a line whose slack would lie in a heap: the polish of the hanging part left
     # its bracket and a TypeError escaped
-    line = cable.Line(
-        [cable.Segment(53.0, 156.0, 1e9), cable.Segment(41.0, 894.0, 1e9)],
-        [cable.Buoy(1, 31000.0)],
+    line = mooring.Line(
+        [mooring.Segment(53.0, 156.0, 1e9), mooring.Segment(41.0, 894.0, 1e9)],
+        [mooring.Buoy(1, 31000.0)],
         seabed=0.0,
     )
     _named("attachments", lambda: line.solve(1.0, 30.0))
-    segment = cable.Segment(100.0, 10.0, 1e8)
-    _named("attachments", lambda: cable.Line([segment], cable.ClumpWeight(1, 5.0)))  # not a list
-    _named("segments", lambda: cable.Line(segment))
+    segment = mooring.Segment(100.0, 10.0, 1e8)
+    _named("attachments", lambda: mooring.Line([segment], mooring.ClumpWeight(1, 5.0)))  # not a list
+    _named("segments", lambda: mooring.Line(segment))
 
 
 def test_seabed_bvp_refusals_name_their_argument():
     segments = [(100.0, 10.0, 1e8)]
 
     def bvp(**kw):
-        return lambda: cable.solve_line_bvp(80.0, 20.0, segments, **kw)
+        return lambda: mooring.solve_line_bvp(80.0, 20.0, segments, **kw)
 
     for value in (2.7, "16", True):  # 2.7 once ran 2 elements, True escaped as a scipy ValueError
         _named("n_elements", bvp(n_elements=value))
@@ -49,7 +49,7 @@ def test_conductor_vibration_and_section_refusals():
         _named("axis", lambda axis=axis: strand.strand_bending_frequencies(section, 1e3, 1.0, 1.6, axis=axis))
     _named(
         "spans",
-        lambda: cable.tension_section(
+        lambda: conductors.tension_section(
             [],
             EA=3e7,
             alpha=2e-5,
@@ -63,18 +63,18 @@ def test_conductor_vibration_and_section_refusals():
         ),
     )
     # H so large that Irvine's λ² underflows (once a ZeroDivisionError) or K overflows
-    _named("H", lambda: cable.natural_frequencies(2.5, 0.0, 1e9, 5.0, H=1e300))
+    _named("H", lambda: conductors.natural_frequencies(2.5, 0.0, 1e9, 5.0, H=1e300))
     with pytest.raises((InputError, ConvergenceError)):
-        cable.natural_frequencies(2.5, 0.0, 1e3, 5.0, H=1e300, g=1e10)
+        conductors.natural_frequencies(2.5, 0.0, 1e3, 5.0, H=1e300, g=1e10)
 
 
 def test_a_bool_inside_a_sequence_is_not_a_number():
     angles = np.radians([0.0, 120.0, 240.0])
     anchors = np.column_stack([800 * np.cos(angles), 800 * np.sin(angles), np.full(3, -200.0)])
     fairleads = np.column_stack([20 * np.cos(angles), 20 * np.sin(angles), np.full(3, -14.0)])
-    line = cable.Line([cable.Segment(850.0, 2456.82, 1.2326e9)], seabed=0.0)
-    body = cable.RigidBody(fairleads, waterplane_area=600.0)
-    system = cable.MooringSystem(body, [line] * 3, anchors)
+    line = mooring.Line([mooring.Segment(850.0, 2456.82, 1.2326e9)], seabed=0.0)
+    body = mooring.RigidBody(fairleads, waterplane_area=600.0)
+    system = mooring.MooringSystem(body, [line] * 3, anchors)
     _named("force", lambda: system.equilibrium(force=(True, 0, 0)))  # once read as 1 N
 
 

@@ -7,7 +7,7 @@ import re
 import numpy as np
 import pytest
 
-from skcable import cable, strand, study
+from skcable import cable, conductors, mooring, strand, study
 
 NUMBER = r"[-+]?(?:\d+\.?\d*|\.\d+)(?:e[-+]?\d+)?"
 VALUE = rf"\[{NUMBER}(?:, {NUMBER})*\]|\({NUMBER}(?:, {NUMBER})*\)|{NUMBER}\.\.{NUMBER}|{NUMBER}"
@@ -125,7 +125,7 @@ def test_section_and_bending_law():
 
 
 def test_change_of_state_and_thermal_catenary():
-    states = cable.change_of_state(
+    states = conductors.change_of_state(
         np.array([300.0, 400.0]),
         0.0,
         EA=3e7,
@@ -138,19 +138,19 @@ def test_change_of_state_and_thermal_catenary():
     )
     units = {"t": "°C", "w": "N/m", "H": "N", "sag": "m", "T_max": "N", "L0": "m"}
     assert "(catenary, 2 spans × 2 states: " in check_repr(states, attrs(units))
-    windy = cable.change_of_state(
+    windy = conductors.change_of_state(
         300.0, 0.0, EA=3e7, alpha=2.3e-5, w0=10.0, t0=15.0, sag0=6.0, w=10.0, t=50.0, wind=3.0
     )
     blowout = ("rad", lambda r: np.arctan2(r.wind, r.w))  # the resultant load's angle
     check_repr(windy, attrs(units | {"wind": "N/m"}) | {"blowout": blowout})
-    hot = cable.thermal_catenary(300.0, 0.0, 10.0, 3e7, length=301.0, alpha=2.3e-5, t=50.0, t0=15.0)
+    hot = conductors.thermal_catenary(300.0, 0.0, 10.0, 3e7, length=301.0, alpha=2.3e-5, t=50.0, t0=15.0)
     units = {"H": "N", "V_A": "N", "V_B": "N", "T_A": "N", "T_B": "N", "sag": "m", "length": "m"}
     spec = attrs(units | {"stretched_length": "m"}) | {"k": ("", lambda r: 1 + 2.3e-5 * 35)}
     check_repr(hot, spec)
 
 
 def test_tension_section():
-    section = cable.tension_section(
+    section = conductors.tension_section(
         [250, 450, 300],
         EA=3e7,
         alpha=2.3e-5,
@@ -169,7 +169,7 @@ def test_tension_section():
 
 
 def test_frequencies():
-    f = cable.natural_frequencies(300.0, 0.0, 10.0, 3e7, sag=6.0, n_modes=4)
+    f = conductors.natural_frequencies(300.0, 0.0, 10.0, 3e7, sag=6.0, n_modes=4)
     units = {"f_in_plane": "Hz", "f_out_of_plane": "Hz", "H": "N", "sag": "m", "lambda2": ""}
     assert "(4 modes: " in check_repr(f, attrs(units))
     beam = strand.beam_frequencies(1.0, 1e3, 1.0, 0.45, n_modes=3)
@@ -205,7 +205,7 @@ def test_catenaries_on_arrays():
 def test_mooring_equilibrium():
     heading = np.radians([0.0, 120.0, 240.0])
     ring = np.column_stack([np.cos(heading), np.sin(heading), np.zeros(3)])
-    body = cable.RigidBody(
+    body = mooring.RigidBody(
         20.0 * ring + [0.0, 0.0, -14.0],
         mass=8e6,
         volume=8.2e3,
@@ -213,8 +213,8 @@ def test_mooring_equilibrium():
         metacentre=(0, 0, 10),
         waterplane_area=600.0,
     )
-    leg = cable.Line([cable.Segment(850.0, 2456.82, 1.2326e9)], seabed=0.0)
-    system = cable.MooringSystem(body, [leg] * 3, 800.0 * ring + [0.0, 0.0, -200.0], depth=200.0)
+    leg = mooring.Line([mooring.Segment(850.0, 2456.82, 1.2326e9)], seabed=0.0)
+    system = mooring.MooringSystem(body, [leg] * 3, 800.0 * ring + [0.0, 0.0, -200.0], depth=200.0)
     eq = system.equilibrium(force=(2e6, 0.0, 0.0))
     spec = attrs({"offset": "m", "angles": "rad", "heel": "rad"}) | {
         "T_fairlead": ("N", lambda e: np.linalg.norm(e.fairlead_forces, axis=1)),

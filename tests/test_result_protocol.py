@@ -20,8 +20,8 @@ import meshio
 import numpy as np
 import pytest
 
-from skcable import cable
-from skcable.cable.bvp import LineBVPSolution
+from skcable import bvp, cable, mooring
+from skcable.mooring import LineBVPSolution
 from skcable.results import CableResult
 
 SPAN, DH, W = 100.0, 20.0, 20.0
@@ -57,14 +57,14 @@ FACTORIES = [
         ),
         id="sloped",
     ),
-    # LineSolution (a multi-segment Line) is checked in tests/cable/test_lines_protocol.py: its
+    # LineSolution (a multi-segment Line) is checked in tests/mooring/test_lines_protocol.py: its
     # tensions() has no H_lower column (one more column would move the pinned tables' shape)
     # the finite-element solutions (graph and arc forms): their tensions along the cable are the
     # field's, the end tensions the reactions', which agree to the discretisation's accuracy
     pytest.param(
         fe(
-            lambda span, dh: cable.solve_bvp(
-                span, dh, cable.SelfWeight(W), length=LENGTH, EA=2e5, n_elements=256, rtol=1e-13
+            lambda span, dh: bvp.solve_bvp(
+                span, dh, bvp.SelfWeight(W), length=LENGTH, EA=2e5, n_elements=256, rtol=1e-13
             ),
             1e-5,
         ),
@@ -72,10 +72,10 @@ FACTORIES = [
     ),
     pytest.param(
         fe(
-            lambda span, dh: cable.solve_bvp(
+            lambda span, dh: bvp.solve_bvp(
                 span,
                 dh,
-                cable.SelfWeight(W),
+                bvp.SelfWeight(W),
                 length=LENGTH,
                 EA=2e5,
                 formulation="arc",
@@ -88,12 +88,12 @@ FACTORIES = [
     ),
     # the line BVP (branch linebvp): free, and touching a seabed below the anchor
     pytest.param(
-        fe(lambda span, dh: cable.solve_line_bvp(span, dh, [(LENGTH, W, 2e5)], n_elements=256), 1e-5),
+        fe(lambda span, dh: mooring.solve_line_bvp(span, dh, [(LENGTH, W, 2e5)], n_elements=256), 1e-5),
         id="line-bvp",
     ),
     pytest.param(
         fe(
-            lambda span, dh: cable.solve_line_bvp(
+            lambda span, dh: mooring.solve_line_bvp(
                 span, dh, [(LENGTH / 2, W, 2e5), (LENGTH / 2, W, 2e5)], seabed=-5.0, n_elements=256
             ),
             1e-5,

@@ -31,18 +31,21 @@ COMPONENTS = {
     "skcable.results": "the result protocol of every 2-D cable solution",
     "skcable.fe": "finite-element machinery without physics: assembly, linear solves, Newton, "
     "terms, tangent checks, continuation",
+    "skcable._moved": "the module paths and names of 0.2.0 that moved, served for one release",
     "skcable.cable": "suspended cables in closed form: funicular, parabola, catenary, elastic "
-    "catenary, stiffness, end conditions, surfaces, change of state, frequencies, cable terms, "
-    "currents, axial laws, bathymetry",
-    "skcable.cable.bvp": "suspended cables as boundary-value problems on scikit-fem",
-    "skcable.cable.bvp.line": "the mooring line as a boundary-value problem (seabed contact, "
+    "catenary, stiffness, end conditions, surfaces",
+    "skcable.cable.seabed": "one elastic line on a flat or sloped seabed, in closed form",
+    "skcable.bvp": "cables as boundary-value problems on scikit-fem, their loads and terms, "
+    "currents, and the choice of the cheapest model",
+    "skcable.mooring.segments": "multi-segment lines with clump weights and buoys",
+    "skcable.mooring.line_bvp": "the mooring line as a boundary-value problem (seabed contact, "
     "friction, slack)",
-    "skcable.cable.bvp.line3d": "a line in space as a boundary-value problem (current drag, "
+    "skcable.mooring.line_bvp_3d": "a line in space as a boundary-value problem (current drag, "
     "bathymetry, axial laws, 3 x 3 stiffness)",
-    "skcable.cable.lines": "mooring lines in 3-D, moored bodies, mooring systems",
-    "skcable.cable.lines.seabed": "one elastic line on a flat or sloped seabed, in closed form",
-    "skcable.cable.lines.segments": "multi-segment lines with clump weights and buoys",
-    "skcable.cable.conductors": "overhead-line conductors: whole lines, rating, fatigue, catalogue",
+    "skcable.mooring": "mooring lines and systems: lines in the sea, axial laws, bathymetry, "
+    "moored bodies, MoorDyn files",
+    "skcable.conductors": "overhead-line conductors: change of state, ruling span, frequencies, "
+    "whole lines, rating, fatigue, catalogue",
     "skcable.strand": "strand sections, damage, wire materials, the stick/slip bending law, capacity curves",
     "skcable.strand.fe": "the strand finite element: term protocol, slip laws, supports, loads, "
     "foundations, the model",

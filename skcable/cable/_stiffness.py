@@ -38,7 +38,7 @@ from skcable.cable._catenary import Catenary
 from skcable.cable._elastic import ElasticCatenary
 from skcable.cable._parabola import Parabola
 from skcable.cable._special import ldexp_sum, power_product
-from skcable.cable.lines.seabed import SeabedCatenary
+from skcable.cable.seabed import SeabedCatenary
 from skcable.errors import InputError
 
 __all__ = ["fairlead_stiffness", "geometric_stiffness", "geometric_stiffness_series"]

@@ -1,5 +1,5 @@
 """``skcable frequencies``: in-plane and out-of-plane natural frequencies and mode shapes of
-a sagging cable (Irvine's linear theory on finite elements; `skcable.cable.natural_frequencies`)."""
+a sagging cable (Irvine's linear theory on finite elements; `skcable.conductors.natural_frequencies`)."""
 
 from __future__ import annotations
 
@@ -36,12 +36,12 @@ def _print(values: dict) -> None:
 
 
 def _run(args) -> int:
-    from skcable import cable
+    from skcable import conductors
     from skcable.cli._output import output_file
     from skcable.cli._status import EXIT_OK
 
     vtk = output_file("--vtk", args.vtk, args.force) if args.vtk else None
-    res = cable.natural_frequencies(
+    res = conductors.natural_frequencies(
         args.span, args.dh, args.w, args.EA, H=args.H, sag=args.sag, n_modes=args.n_modes, g=args.g
     )
     values = {
@@ -70,7 +70,7 @@ def register(sub, command) -> None:
         "frequencies",
         _run,
         "in-plane and out-of-plane natural frequencies and mode shapes of a sagging cable (Irvine's "
-        "linear theory on finite elements; skcable.cable.natural_frequencies)",
+        "linear theory on finite elements; skcable.conductors.natural_frequencies)",
     )
     span_flags(fr)
     fr.add_argument("--w", type=finite, required=True, help="weight per metre of cable [N/m], > 0 (required)")

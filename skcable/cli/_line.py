@@ -35,7 +35,7 @@ def _joint(flag: str, value: float) -> int:
 
 
 def _model(args):
-    from skcable import cable
+    from skcable import mooring
     from skcable.errors import InputError
 
     n = len(args.length)
@@ -45,19 +45,19 @@ def _model(args):
                 name, f"takes one value or one per segment ({n}), got {len(getattr(args, name))}"
             )
     w, EA = (v if len(v) == n else v * n for v in (args.w, args.EA))
-    segments = [cable.Segment(*values) for values in zip(args.length, w, EA, strict=True)]
-    attachments: list[cable.ClumpWeight | cable.Buoy] = [
-        cable.ClumpWeight(_joint("clump", j), f) for j, f in args.clump or ()
+    segments = [mooring.Segment(*values) for values in zip(args.length, w, EA, strict=True)]
+    attachments: list[mooring.ClumpWeight | mooring.Buoy] = [
+        mooring.ClumpWeight(_joint("clump", j), f) for j, f in args.clump or ()
     ]
-    attachments += [cable.Buoy(_joint("buoy", j), f) for j, f in args.buoy or ()]
-    return cable.Line(segments, attachments, seabed=args.seabed, friction=args.friction)
+    attachments += [mooring.Buoy(_joint("buoy", j), f) for j, f in args.buoy or ()]
+    return mooring.Line(segments, attachments, seabed=args.seabed, friction=args.friction)
 
 
 def _run(args) -> int:
     """Fairlead and anchor forces, grounded length, 2x2 stiffness, each segment's tensions."""
     import numpy as np
 
-    from skcable import cable
+    from skcable import mooring
     from skcable.cli._status import EXIT_OK
 
     vtk = vtk_path(args)
@@ -72,7 +72,7 @@ def _run(args) -> int:
     if vtk:
         from skcable.io import write_lines
 
-        line = cable.line_3d(model, (0.0, 0.0, 0.0), (args.span, 0.0, args.dh))
+        line = mooring.line_3d(model, (0.0, 0.0, 0.0), (args.span, 0.0, args.dh))
         values["vtk"] = str(write_lines([line], vtk))
     if args.json:
         print_json(values)

@@ -1,5 +1,5 @@
 """``skcable mooring FILE``: the equilibrium of a mooring system from a MoorDyn v2 input file or a
-TOML system file (`skcable.cable.lines.system_file`): the bodies' and free points' positions, each
+TOML system file (`skcable.mooring.system_file`): the bodies' and free points' positions, each
 line's end tensions and model, the anchor loads and uplift, and the bodies' stiffness."""
 
 from __future__ import annotations
@@ -14,16 +14,16 @@ def _load(path: str):
     """``(system, force, moment)`` of a TOML system file (``.toml``) or a MoorDyn file (any other)."""
     from pathlib import Path
 
-    from skcable import cable
-    from skcable.cable.lines.system_file import read_system
+    from skcable import mooring
     from skcable.errors import InputError
+    from skcable.mooring.system_file import read_system
 
     if not Path(path).is_file():
         raise InputError("FILE", f"{path!r} is no file")
     if Path(path).suffix.lower() == ".toml":
         described = read_system(path)
         return described.system, described.force, described.moment
-    return cable.read_moordyn(path).system, {}, {}
+    return mooring.read_moordyn(path).system, {}, {}
 
 
 def _values(eq) -> dict:

@@ -1,5 +1,5 @@
 """``skcable change-of-state``: sag and tension of a span in other states (load, temperature,
-wind) at the unstressed length of a reference state (`skcable.cable.change_of_state`)."""
+wind) at the unstressed length of a reference state (`skcable.conductors.change_of_state`)."""
 
 from __future__ import annotations
 
@@ -61,10 +61,10 @@ def _print_states(res, values: dict, w0: float, t0: float) -> None:
 
 
 def _run(args) -> int:
-    from skcable import cable
+    from skcable import conductors
     from skcable.cli._status import EXIT_OK
 
-    res = cable.change_of_state(
+    res = conductors.change_of_state(
         args.span, args.dh, EA=args.EA, alpha=args.alpha, w0=args.w0, t0=args.t0, H0=args.H0,
         sag0=args.sag0, w=_numbers(args.w), t=_numbers(args.t),
         wind=_numbers(args.wind), model=args.model,
@@ -91,7 +91,7 @@ def register(sub, command) -> None:
         "change-of-state",
         _run,
         "sag and tension of a span in other states (load, temperature, wind) at the unstressed length "
-        "of a reference state (skcable.cable.change_of_state)",
+        "of a reference state (skcable.conductors.change_of_state)",
     )
     span_flags(cs)
     cs.add_argument("--alpha", type=finite, required=True, help="thermal expansion [1/K] (required)")

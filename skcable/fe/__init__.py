@@ -22,12 +22,12 @@ from skcable._lazy import attach
 from skcable.fe.newton import NewtonOptions, NewtonResult, minimize, newton
 
 if TYPE_CHECKING:  # what static tools see; at run time, `attach` below serves them
-    from skcable.fe.assembly import Assembly, StrainAssembly
+    from skcable.fe.assembly import Assembly
     from skcable.fe.check import check_tangent
     from skcable.fe.linear import BandedSystem, BorderedSolver, LinearSystem, SparseSystem
 
 _NAMES = {
-    ".assembly": ("Assembly", "StrainAssembly"),
+    ".assembly": ("Assembly",),
     ".check": ("check_tangent",),
     ".linear": ("BandedSystem", "BorderedSolver", "LinearSystem", "SparseSystem"),
 }
@@ -44,7 +44,6 @@ __all__ = [
     "NewtonOptions",
     "NewtonResult",
     "SparseSystem",
-    "StrainAssembly",
     "check_tangent",
     "minimize",
     "newton",

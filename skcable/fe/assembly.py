@@ -33,7 +33,6 @@ transposed views: `element_matrices` reads ``D`` through a transposed view in an
 
 from __future__ import annotations
 
-import warnings
 from functools import cached_property
 
 import numpy as np
@@ -43,7 +42,7 @@ from skfem import Basis
 from skcable.errors import InputError
 from skcable.fe.linear import BandedSystem
 
-__all__ = ["Assembly", "StrainAssembly", "contract", "dof_locations"]
+__all__ = ["Assembly", "contract", "dof_locations"]
 
 
 def contract(subscripts: str, *operands) -> np.ndarray:
@@ -56,7 +55,7 @@ def contract(subscripts: str, *operands) -> np.ndarray:
 def _derivative(field, order: int) -> np.ndarray:
     """Derivative of order 0, 1 or 2 of a scikit-fem DiscreteField on a line: (ne, nq)."""
     if order == 0:
-        return np.asarray(field)  # the field itself is its value (``.value`` is deprecated)
+        return np.asarray(field)  # the field itself is its value
     if order == 1:
         return field.grad[0]
     if order == 2:
@@ -239,48 +238,3 @@ class Assembly:
         """The slice of the global vector that holds field ``name``."""
         k = self.fields.index(name)
         return slice(int(self.offsets[k]), int(self.offsets[k + 1]))
-
-
-class StrainAssembly:
-    """Deprecated: `Assembly` with scikit-fem's quadrature layout ``(n_elements, n_quad)``.
-
-    Kept for one release with its old shapes (``interpolate`` → (n_strains, ne, nq), ``vector``
-    and ``matrix(D)`` from (…, ne, nq), ``element_matrices`` → (ne, n_local, n_local)); use
-    `Assembly`, whose arrays put the elements last.
-    """
-
-    def __init__(self, bases: dict, strains):
-        warnings.warn(
-            "skcable.fe.StrainAssembly is deprecated: use skcable.fe.Assembly (quadrature arrays "
-            "(n_quad, n_elements), element matrices (n_local, n_local, n_elements))",
-            DeprecationWarning,
-            stacklevel=2,
-        )
-        self.assembly = a = Assembly(bases, strains)
-        self.bases, self.fields, self.strains, self.offsets, self.N = (
-            a.bases,
-            a.fields,
-            a.strains,
-            a.offsets,
-            a.N,
-        )
-        self.dofs, self.dx = a.dofs, a.dx.T
-
-    def interpolate(self, U):
-        return self.assembly.interpolate(U).transpose(0, 2, 1)
-
-    def vector(self, S):
-        return self.assembly.vector(np.swapaxes(S, -1, -2))
-
-    def element_matrices(self, D):
-        return self.assembly.element_matrices(np.swapaxes(D, -1, -2)).transpose(2, 0, 1)
-
-    def matrix(self, D=None, *, element_matrices=None):
-        Ke = None if element_matrices is None else np.asarray(element_matrices).transpose(1, 2, 0)
-        return self.assembly.matrix(Ke, D=None if D is None else np.swapaxes(D, -1, -2))
-
-    def banded(self, free):
-        a = self.assembly
-        n_local, ne = a.dofs.shape
-        rows, cols = (r.reshape(n_local, n_local, ne).transpose(2, 0, 1).ravel() for r in a.pattern)
-        return BandedSystem(a.N, free, rows, cols, a._location)

@@ -8,7 +8,7 @@ factor: the shapes are mass-normalised, ``φᵀMφ = 1``, in m/√kg) shows the
 mode, and animating the scale factor between ±s animates it. The arrays carry
 their unit in their names (``in_plane_1_m_per_sqrt_kg``).
 
-This module reads a result (`skcable.cable.NaturalFrequencies` or any object
+This module reads a result (`skcable.conductors.NaturalFrequencies` or any object
 with the same attributes) and imports no model.
 """
 

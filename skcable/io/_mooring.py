@@ -67,7 +67,7 @@ def _polylines(lines, n):
 
 
 def lines_mesh(lines, n: int = 101) -> meshio.Mesh:
-    """Lines in 3-D (e.g. `skcable.cable.Line3D`, anything with ``profile(n)`` giving
+    """Lines in 3-D (e.g. `skcable.mooring.Line3D`, anything with ``profile(n)`` giving
     ``(points (m, 3), tension (m,))``) as polylines: point data ``tension_N``, cell data
     ``line`` (the line's number)."""
     import meshio

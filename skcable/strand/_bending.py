@@ -67,7 +67,7 @@ import numpy as np
 
 from skcable.errors import InputError
 from skcable.strand._arguments import float_array, is_real_number, principal_axis, real_number
-from skcable.strand._section import Section, deprecated_alias
+from skcable.strand._section import Section
 
 __all__ = ["BendingLaw", "critical_curvature"]
 
@@ -240,9 +240,6 @@ class BendingLaw:
     def M_m(self) -> np.ndarray:
         """Moments ``EI_stick κ_m`` at the stick/slip transition, principal axes 1, 2 (N·m)."""
         return self.EI_stick * self.kappa_m
-
-    EI_max = deprecated_alias("EI_max", "EI_stick")
-    EI_min = deprecated_alias("EI_min", "EI_slip")
 
     def theta(self, axis: int) -> np.ndarray:
         """Angular position θ (rad) of every wire about the core centre from the neutral axis,

@@ -474,7 +474,7 @@ def preset(name: str) -> Strand:
 
     Every size of the conductor catalogue (ACSR of ASTM B232, AAC of B231, AAAC of B399:
     ``"acsr-partridge"``, ``"aac-arbutus"``, ``"aaac-greeley"`` ...; see
-    `skcable.cable.conductors.catalogue`), built from its stranding. An unknown name is refused
+    `skcable.conductors.catalogue`), built from its stranding. An unknown name is refused
     with the nearest known names.
     """
     if isinstance(name, str) and name in _ACSR:

@@ -54,7 +54,7 @@ class Material:
     density : float or None
         Mass density (kg/m³), > 0; None (the default) when unknown: the section
         and the FE model do not need it, a conductor's weight does
-        (`skcable.cable.Conductor.from_strand` raises InputError naming it).
+        (`skcable.conductors.Conductor.from_strand` raises InputError naming it).
     alpha : float or None
         Coefficient of linear thermal expansion (1/K), finite (composite cores of
         high-temperature conductors have it near 0, some slightly below); None (the

@@ -53,7 +53,6 @@ cables to tension, torsion, and bending", J. Appl. Mech. 52, 1985.
 
 from __future__ import annotations
 
-import warnings
 from functools import cached_property
 from math import pi
 
@@ -68,19 +67,6 @@ __all__ = ["Section"]
 #: round-off of zero (all intact wires on one line); a discrete wire geometry has no
 #: genuine values this small
 _DEGENERATE = 1e-12
-
-
-def deprecated_alias(old: str, new: str):
-    def getter(self):
-        warnings.warn(
-            f"{type(self).__name__}.{old} is deprecated: use {new} (the same values)",
-            DeprecationWarning,
-            stacklevel=2,
-        )
-        return getattr(self, new)
-
-    getter.__doc__ = f"Deprecated alias of `{new}` (the stick/slip pair is not a max/min pair)."
-    return property(getter)
 
 
 class Section:
@@ -241,11 +227,6 @@ class Section:
         """``E_e I_slip`` about principal axes 1 and 2 (index 0, 1), N·m²."""
         return self.E * self.I_slip
 
-    I_max = deprecated_alias("I_max", "I_stick")
-    I_min = deprecated_alias("I_min", "I_slip")
-    EI_max = deprecated_alias("EI_max", "EI_stick")
-    EI_min = deprecated_alias("EI_min", "EI_slip")
-
     @property
     def axial_torsion_coupling(self) -> float:
         """``sum E A R sin(alpha) cos^2(alpha)``, signed by the lay direction (N·m)."""
@@ -284,9 +265,6 @@ class Section:
         """Eq. 2.13: ``sum n E I cos(beta)`` (N·m², intact strands)."""
         self._require_intact()
         return self.E * self._own
-
-    EI_max_lanteigne = deprecated_alias("EI_max_lanteigne", "EI_stick_lanteigne")
-    EI_min_lanteigne = deprecated_alias("EI_min_lanteigne", "EI_slip_lanteigne")
 
     def __repr__(self):
         w = self.wires

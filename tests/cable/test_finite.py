@@ -12,7 +12,7 @@ import mpmath as mp
 import numpy as np
 import pytest
 
-from skcable import cable
+from skcable import bvp, cable
 from skcable.cable.solution import ACCEPT
 from skcable.errors import ConvergenceError, InputError
 
@@ -70,12 +70,12 @@ def check_result(result):
         for name in ("H", "V_A", "T_A", "y_load"):
             _finite_numbers(getattr(result, name), name)
         check_result(result.arc)
-    elif isinstance(result, (cable.SelfWeight, cable.DeckLoad)):
+    elif isinstance(result, (bvp.SelfWeight, bvp.DeckLoad)):
         _finite_numbers(result.w, "w")
         assert type(result.w) is float
-    elif isinstance(result, cable.PointLoad):
+    elif isinstance(result, bvp.PointLoad):
         _finite_numbers((result.x, result.P), "x, P")
-    elif isinstance(result, cable.DistributedLoad):
+    elif isinstance(result, bvp.DistributedLoad):
         pass
     else:
         _finite_numbers(result, "result")
@@ -118,11 +118,11 @@ def _parabola_y_at(span, dh, w, H, x):
 
 
 def _solve(span, dh, w, value, name):
-    return cable.solve(span, dh, cable.SelfWeight(w), **{name: value})
+    return bvp.solve(span, dh, bvp.SelfWeight(w), **{name: value})
 
 
 def _solve_deck(span, dh, w, value, name):
-    return cable.solve(span, dh, cable.DeckLoad(w), **{name: value})  # the parabola is exact: no BVP
+    return bvp.solve(span, dh, bvp.DeckLoad(w), **{name: value})  # the parabola is exact: no BVP
 
 
 #: target: (callable, valid base arguments, which of them are numbers to perturb)
@@ -179,9 +179,9 @@ TARGETS = {
     "sliding_load": (_sliding, dict(span=100.0, w=1.0, length=110.0, P=20.0)),
     "catenary-methods": (_y_at, dict(span=100.0, dh=30.0, w=2.0, H=300.0, x=40.0)),
     "parabola-methods": (_parabola_y_at, dict(span=100.0, dh=30.0, w=2.0, H=300.0, x=40.0)),
-    "SelfWeight": (cable.SelfWeight, dict(w=1.0)),
-    "DeckLoad": (cable.DeckLoad, dict(w=1.0)),
-    "PointLoad": (cable.PointLoad, dict(x=1.0, P=2.0)),
+    "SelfWeight": (bvp.SelfWeight, dict(w=1.0)),
+    "DeckLoad": (bvp.DeckLoad, dict(w=1.0)),
+    "PointLoad": (bvp.PointLoad, dict(x=1.0, P=2.0)),
     "solve-catenary": (
         lambda span, dh, w, value: _solve(span, dh, w, value, "sag"),
         dict(span=200.0, dh=0.0, w=1.0, value=20.0),
@@ -257,10 +257,10 @@ def test_bad_input_names_the_argument():
         (lambda: cable.catenary(100.0, 30.0, 1.0, H=1e-300), "H"),  # tensions overflow
         (lambda: cable.catenary(100.0, 30.0, 1.0, H=1e307), "H"),  # span/(2a) underflows
         (lambda: cable.parabola(100.0, 30.0, 1.0, H=1e-300), "H"),
-        (lambda: cable.SelfWeight("3"), "w"),
-        (lambda: cable.SelfWeight(np.array([1.0, 2.0])), "w"),
-        (lambda: cable.DeckLoad(None), "w"),
-        (lambda: cable.PointLoad("1", 2.0), "x"),
+        (lambda: bvp.SelfWeight("3"), "w"),
+        (lambda: bvp.SelfWeight(np.array([1.0, 2.0])), "w"),
+        (lambda: bvp.DeckLoad(None), "w"),
+        (lambda: bvp.PointLoad("1", 2.0), "x"),
         (lambda: cable.capstan(1e300, 10.0, 100.0), "T0, mu, angle"),
         (lambda: cable.sphere_parallel(1.0, 1.0, 1e-320), "q, R, latitude"),
         (lambda: cable.geometric_stiffness_series(1e-300, 1.0, 1.0), "span, w, H"),

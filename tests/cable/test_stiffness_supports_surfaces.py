@@ -6,7 +6,7 @@ import mpmath as mp
 import numpy as np
 import pytest
 
-from skcable import cable
+from skcable import bvp, cable
 from skcable.errors import InputError
 
 
@@ -272,4 +272,4 @@ def test_fairlead_stiffness_broadcasts_and_refuses_other_solutions():
             single = make(span[i], dh[i], 10.0, length=120.0, **kwargs)
             np.testing.assert_allclose(K[i], cable.fairlead_stiffness(single), rtol=1e-12)
     with pytest.raises(InputError, match="solution"):
-        cable.fairlead_stiffness(cable.solve_bvp)  # not a closed-form solution
+        cable.fairlead_stiffness(bvp.solve_bvp)  # not a closed-form solution

@@ -7,7 +7,7 @@ import scipy.sparse.linalg as spla
 from skfem import Basis, BilinearForm, ElementLineHermite, ElementLineP2, LinearForm, MeshLine, asm, bmat
 
 from skcable.errors import ConvergenceError, InputError
-from skcable.fe import Assembly, LinearSystem, SparseSystem, StrainAssembly, minimize, newton
+from skcable.fe import Assembly, LinearSystem, SparseSystem, minimize, newton
 
 STRAINS = (("u", 1), ("v", 0), ("v", 1), ("v", 2), ("phi", 1))
 
@@ -72,17 +72,10 @@ def test_vector_and_matrix_equal_scikit_fem_forms(setup):
     )
 
 
-def test_the_deprecated_strain_assembly_keeps_its_shapes(setup):
-    asmb, bases = setup
-    with pytest.warns(DeprecationWarning, match="Assembly"):
-        old = StrainAssembly(bases, STRAINS)
-    rng = np.random.default_rng(7)
-    U = rng.standard_normal(asmb.N)
-    D = rng.standard_normal((len(STRAINS), len(STRAINS), *asmb.dx.shape))
-    np.testing.assert_array_equal(old.interpolate(U), asmb.interpolate(U).transpose(0, 2, 1))
-    np.testing.assert_allclose(
-        old.matrix(D.transpose(0, 1, 3, 2)).toarray(), asmb.matrix(D=D).toarray(), rtol=1e-13, atol=1e-13
-    )
+def test_the_strain_assembly_deprecated_in_0_2_0_is_gone():
+    from skcable import fe
+
+    assert not hasattr(fe, "StrainAssembly") and "StrainAssembly" not in fe.__all__
 
 
 def _positive_system(asmb, seed):
@@ -267,20 +260,11 @@ def test_newton_rejects_failed_trials_and_stops_at_a_given_round_off_floor():
     assert result.at_floor and result.x[0] == 2.0
 
 
-@pytest.mark.parametrize(
-    ("old", "new"),
-    [
-        ("skcable.cable.bvp.assembly.LineAssembly", "skcable.fe.assembly.Assembly"),
-        ("skcable.cable.bvp.bordered.BorderedSolver", "skcable.fe.linear.BorderedSolver"),
-        ("skcable.cable.bvp.probes.gradient_probes", "skcable.fe.probes.gradient_probes"),
-        ("skcable.cable.bvp.probes.element_values", "skcable.fe.probes.element_values"),
-    ],
-)
-def test_the_names_that_moved_to_fe_are_served_with_a_warning_naming_the_new_one(old, new):
+@pytest.mark.parametrize("old", ["skcable.bvp.assembly", "skcable.bvp.bordered", "skcable.bvp.probes"])
+def test_the_shims_deprecated_in_0_2_0_are_gone(old):
+    """0.2.0 served LineAssembly, BorderedSolver and the probes from the cable BVPs for one
+    release; 0.3.0 has them in skcable.fe only."""
     import importlib
 
-    module, _, name = old.rpartition(".")
-    home, _, new_name = new.rpartition(".")
-    with pytest.warns(DeprecationWarning, match=new.replace(".", r"\.")):
-        served = getattr(importlib.import_module(module), name)
-    assert served is getattr(importlib.import_module(home), new_name)
+    with pytest.raises(ModuleNotFoundError):
+        importlib.import_module(old)

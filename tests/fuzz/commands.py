@@ -124,7 +124,7 @@ def elastic(rng) -> Case:
 
 
 def line(rng) -> Case:
-    """``skcable line --json`` (segments, clumps, buoys, seabed, friction) against `cable.Line`."""
+    """``skcable line --json`` (segments, clumps, buoys, seabed, friction) against `mooring.Line`."""
     segments, attachments, bed, friction, span, dh = multi.random_line(rng)
     argv = [
         "line",
@@ -149,7 +149,7 @@ def line(rng) -> Case:
 
 
 def change_of_state(rng) -> Case:
-    """``skcable change-of-state --json`` against `cable.change_of_state`."""
+    """``skcable change-of-state --json`` against `conductors.change_of_state`."""
     span, dh, EA, alpha, w0, t0, ref = conductors._conductor(rng)
     m = int(rng.integers(1, 4))
     w, t, wind = conductors._states(rng, w0, m)
@@ -178,9 +178,9 @@ def change_of_state(rng) -> Case:
         "--json",
     ]
     api = (
-        f"cable.change_of_state({_number(span)}, {_number(dh)}, EA={_number(EA)}, alpha={_number(alpha)}, "
-        f"w0={_number(w0)}, t0={_number(t0)}, {ref[0]}={_number(ref[1])}, w={_cli_values(w)}, "
-        f"t={_cli_values(t)}, wind={_cli_values(wind)})"
+        f"conductors.change_of_state({_number(span)}, {_number(dh)}, EA={_number(EA)}, "
+        f"alpha={_number(alpha)}, w0={_number(w0)}, t0={_number(t0)}, {ref[0]}={_number(ref[1])}, "
+        f"w={_cli_values(w)}, t={_cli_values(t)}, wind={_cli_values(wind)})"
     )
 
     def pairs(data, ref_):
@@ -197,7 +197,7 @@ def change_of_state(rng) -> Case:
 
 
 def frequencies(rng) -> Case:
-    """``skcable frequencies --json`` against `cable.natural_frequencies`."""
+    """``skcable frequencies --json`` against `conductors.natural_frequencies`."""
     span, dh, w, EA, given, n = spectra._cable(rng)
     argv = [
         "frequencies",

@@ -122,7 +122,7 @@ def change_of_state(rng) -> Case:
     w, t, wind = _states(rng, w0, m)
     model = "parabola" if rng.uniform() < 0.2 else "catenary"
     expr = (
-        f"cable.change_of_state({fmt(span)}, {fmt(dh)}, EA={fmt(EA)}, alpha={fmt(alpha)}, w0={fmt(w0)}, "
+        f"conductors.change_of_state({fmt(span)}, {fmt(dh)}, EA={fmt(EA)}, alpha={fmt(alpha)}, w0={fmt(w0)}, "
         f"t0={fmt(t0)}, {ref[0]}={fmt(ref[1])}, w={_list(w)}, t={_list(t)}, wind={_list(wind)}, "
         f"model={model!r})"
     )
@@ -157,7 +157,7 @@ def change_of_state_line(rng) -> Case:
     w, t, wind = _states(rng, w0, m)
     refs = [ref[1] * (s / span0) ** (2 if ref[0] == "sag0" else 0) for s in spans]
     expr = (
-        f"cable.change_of_state(np.array({_list(spans)}), np.array({_list(dhs)}), "
+        f"conductors.change_of_state(np.array({_list(spans)}), np.array({_list(dhs)}), "
         f"EA={fmt(EA)}, alpha={fmt(alpha)}, w0={fmt(w0)}, t0={fmt(t0)}, "
         f"{ref[0]}=np.array({_list(refs)}), w={_list(w)}, t={_list(t)}, wind={_list(wind)})"
     )
@@ -182,8 +182,9 @@ def sag_tension_table(rng) -> Case:
     temps = [rng.uniform(-20.0, 90.0) for _ in range(int(rng.integers(1, 4)))]
     cases_expr = "{" + ", ".join(f"{k!r}: ({fmt(a)}, {fmt(b)})" for k, (a, b) in cases.items()) + "}"
     expr = (
-        f"cable.sag_tension_table({fmt(span)}, {fmt(dh)}, EA={fmt(EA)}, alpha={fmt(alpha)}, w0={fmt(w0)}, "
-        f"t0={fmt(t0)}, {ref[0]}={fmt(ref[1])}, temperatures={_list(temps)}, load_cases={cases_expr})"
+        f"conductors.sag_tension_table({fmt(span)}, {fmt(dh)}, EA={fmt(EA)}, alpha={fmt(alpha)}, "
+        f"w0={fmt(w0)}, t0={fmt(t0)}, {ref[0]}={fmt(ref[1])}, temperatures={_list(temps)}, "
+        f"load_cases={cases_expr})"
     )
 
     def check(table, caught):
@@ -210,7 +211,7 @@ def tension_section(rng) -> Case:
     m = int(rng.integers(1, 4))
     w, t, _ = _states(rng, w0, m)
     expr = (
-        f"cable.tension_section({_list(spans)}, {_list(dhs)}, EA={fmt(EA)}, alpha={fmt(alpha)}, "
+        f"conductors.tension_section({_list(spans)}, {_list(dhs)}, EA={fmt(EA)}, alpha={fmt(alpha)}, "
         f"w0={fmt(w0)}, "
         f"t0={fmt(t0)}, H0={fmt(H0)}, w={_list(w)}, t={_list(t)}, insulator_length={_list(lam)}, "
         f"insulator_weight={_list(W)})"

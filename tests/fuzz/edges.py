@@ -40,14 +40,14 @@ EDGES = (
     "2.5e-308",
 )
 
-_NF = "cable.natural_frequencies(300.0, 0.0, 15.0, 3e7, H=2e4, n_modes=2)"
+_NF = "conductors.natural_frequencies(300.0, 0.0, 15.0, 3e7, H=2e4, n_modes=2)"
 _SECTION = "strand.preset('steel-9.5').damaged(1).section()"
 _BODY = (
-    "cable.RigidBody([(20.0, 0.0, -10.0), (-10.0, 17.32, -10.0), (-10.0, -17.32, -10.0)], "
+    "mooring.RigidBody([(20.0, 0.0, -10.0), (-10.0, 17.32, -10.0), (-10.0, -17.32, -10.0)], "
     "waterplane_area=500.0)"
 )
 _ANCHORS = "[(800.0, 0.0, -200.0), (-400.0, 692.8, -200.0), (-400.0, -692.8, -200.0)]"
-_CHAIN = "cable.Line([cable.Segment(850.0, 1000.0, 5e8)], seabed=0.0)"
+_CHAIN = "mooring.Line([mooring.Segment(850.0, 1000.0, 5e8)], seabed=0.0)"
 
 #: (label, call template, {argument: valid value}); each argument is replaced in turn.
 TARGETS = (
@@ -86,8 +86,8 @@ TARGETS = (
     ),
     (
         "Line.solve",
-        "cable.Line([cable.Segment({length}, {w}, {EA}), cable.Segment(300.0, 200.0, 3e8)], "
-        "[cable.ClumpWeight(1, {weight})], seabed={seabed}, friction={friction}).solve({span}, {dh})",
+        "mooring.Line([mooring.Segment({length}, {w}, {EA}), mooring.Segment(300.0, 200.0, 3e8)], "
+        "[mooring.ClumpWeight(1, {weight})], seabed={seabed}, friction={friction}).solve({span}, {dh})",
         {
             "length": "600.0",
             "w": "1000.0",
@@ -101,12 +101,12 @@ TARGETS = (
     ),
     (
         "line_3d",
-        "cable.line_3d({model}, {anchor}, {fairlead})",
+        "mooring.line_3d({model}, {anchor}, {fairlead})",
         {"model": _CHAIN, "anchor": "[800.0, 0.0, -200.0]", "fairlead": "[20.0, 0.0, -10.0]"},
     ),
     (
         "MooringSystem.equilibrium",
-        "cable.MooringSystem({body}, {lines}, {anchors}).equilibrium(force={force}, tol={tol}, "
+        "mooring.MooringSystem({body}, {lines}, {anchors}).equilibrium(force={force}, tol={tol}, "
         "max_iter={max_iter})",
         {
             "body": _BODY,
@@ -119,7 +119,7 @@ TARGETS = (
     ),
     (
         "change_of_state",
-        "cable.change_of_state({span}, {dh}, EA={EA}, alpha={alpha}, w0={w0}, t0={t0}, H0={H0}, w={w}, "
+        "conductors.change_of_state({span}, {dh}, EA={EA}, alpha={alpha}, w0={w0}, t0={t0}, H0={H0}, w={w}, "
         "t={t}, "
         "wind={wind})",
         {
@@ -137,8 +137,8 @@ TARGETS = (
     ),
     (
         "change_of_state/sag0",
-        "cable.change_of_state({span}, {dh}, EA={EA}, alpha={alpha}, w0={w0}, t0={t0}, sag0={sag0}, w={w}, "
-        "t={t}, model='parabola')",
+        "conductors.change_of_state({span}, {dh}, EA={EA}, alpha={alpha}, w0={w0}, t0={t0}, "
+        "sag0={sag0}, w={w}, t={t}, model='parabola')",
         {
             "span": "300.0",
             "dh": "10.0",
@@ -153,7 +153,7 @@ TARGETS = (
     ),
     (
         "sag_tension_table",
-        "cable.sag_tension_table({span}, {dh}, EA={EA}, alpha={alpha}, w0={w0}, t0={t0}, H0={H0}, "
+        "conductors.sag_tension_table({span}, {dh}, EA={EA}, alpha={alpha}, w0={w0}, t0={t0}, H0={H0}, "
         "temperatures={temperatures}, load_cases={load_cases})",
         {
             "span": "300.0",
@@ -169,7 +169,7 @@ TARGETS = (
     ),
     (
         "tension_section",
-        "cable.tension_section({spans}, {dh}, EA={EA}, alpha={alpha}, w0={w0}, t0={t0}, H0={H0}, w={w}, "
+        "conductors.tension_section({spans}, {dh}, EA={EA}, alpha={alpha}, w0={w0}, t0={t0}, H0={H0}, w={w}, "
         "t={t}, "
         "insulator_length={insulator_length}, insulator_weight={insulator_weight})",
         {
@@ -188,7 +188,7 @@ TARGETS = (
     ),
     (
         "natural_frequencies",
-        "cable.natural_frequencies({span}, {dh}, {w}, {EA}, H={H}, n_modes={n_modes}, g={g})",
+        "conductors.natural_frequencies({span}, {dh}, {w}, {EA}, H={H}, n_modes={n_modes}, g={g})",
         {"span": "300.0", "dh": "10.0", "w": "15.0", "EA": "3e7", "H": "2e4", "n_modes": "3", "g": "9.81"},
     ),
     (
@@ -207,7 +207,7 @@ TARGETS = (
     ("strand.damaged", "strand.preset({name}).damaged({n}).section()", {"name": "'steel-9.5'", "n": "2"}),
     (
         "solve_line_bvp",
-        "cable.solve_line_bvp({span}, {dh}, [({length}, {w}, {EA})], seabed={seabed}, friction={friction}, "
+        "mooring.solve_line_bvp({span}, {dh}, [({length}, {w}, {EA})], seabed={seabed}, friction={friction}, "
         "n_elements={n_elements}, rtol={rtol}, max_iter={max_iter})",
         {
             "span": "800.0",

@@ -62,7 +62,7 @@ OUTCOMES = (
     "oracle-failed",
 )
 FAILURES = ("silent-wrong", "non-finite", "untyped", "hang", "spurious-refusal")
-PREAMBLE = "from skcable import cable, cli, io, strand; import numpy as np"
+PREAMBLE = "from skcable import bvp, cable, cli, conductors, io, mooring, strand; import numpy as np"
 
 
 class RefusedByCli(Exception):
@@ -78,9 +78,10 @@ class Hang(BaseException):
 class Case:
     """One fuzzed call.
 
-    ``expr``: a Python expression in `namespace` (``cable``, ``cli``, ``io``, ``strand``,
-    ``np``), evaluated as is. ``names``: the arguments an `InputError` may name (``None``: any
-    argument name the expression spells as a keyword or documents). ``check(result,
+    ``expr``: a Python expression in `namespace` (``bvp``, ``cable``, ``cli``, ``conductors``,
+    ``io``, ``mooring``, ``strand``, ``np``), evaluated as is. ``names``: the arguments an
+    `InputError` may name (``None``: any argument name the expression spells as a keyword or
+    documents). ``check(result,
     warnings)``: the oracle, a list of disagreements (empty: ok) or `NoRoot`. ``judge(exc)``:
     None where the refusal is honest, else why it is spurious (the independent solver's
     answer); ``must_name``: the argument an edge case made invalid (then the refusal must
@@ -114,10 +115,13 @@ class Outcome:
 
 
 def namespace() -> dict:
-    from skcable import cable, cli, io, strand
+    from skcable import bvp, cable, cli, conductors, io, mooring, strand
 
     return {
+        "bvp": bvp,
         "cable": cable,
+        "conductors": conductors,
+        "mooring": mooring,
         "cli": cli,
         "io": io,
         "strand": strand,

@@ -395,7 +395,7 @@ KNOWN = (
         probes=(
             lambda: _edge(
                 "edges/solve_line_bvp",
-                "cable.solve_line_bvp(800.0, 200.0, [(850.0, 1000.0, [1.0, 2.0])], seabed=0.0)",
+                "mooring.solve_line_bvp(800.0, 200.0, [(850.0, 1000.0, [1.0, 2.0])], seabed=0.0)",
                 "EA",
                 "segments",
             ),

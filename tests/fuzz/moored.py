@@ -159,13 +159,13 @@ def system_expr(sc) -> str:
     if sc["kind"] == "rigid":
         fl = "[" + ", ".join(_vec(f) for f in sc["fairleads"]) + "]"
         body = (
-            f"cable.RigidBody({fl}, {own}, center_of_gravity={_vec(sc['cog'])}, "
+            f"mooring.RigidBody({fl}, {own}, center_of_gravity={_vec(sc['cog'])}, "
             f"metacentre={_vec(sc['meta'])})"
         )
     else:
-        body = f"cable.PointBody({own})"
+        body = f"mooring.PointBody({own})"
     n = len(sc["anchors"])
-    return f"(lambda line: cable.MooringSystem({body}, [line] * {n}, {anchors}))({model})"
+    return f"(lambda line: mooring.MooringSystem({body}, [line] * {n}, {anchors}))({model})"
 
 
 def oracle_scene(sc) -> bodies.Scene:

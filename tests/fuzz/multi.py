@@ -1,4 +1,4 @@
-"""Regimes of multi-segment lines (`cable.Line`: clumps, buoys, seabed, friction, heaps; warm
+"""Regimes of multi-segment lines (`mooring.Line`: clumps, buoys, seabed, friction, heaps; warm
 starts, mirror and unit scale, `line_3d` in space) and of the sloped seabed.
 
 Oracles: the independent walk of `tests.fuzz.segments` and the sloped closure of
@@ -76,10 +76,10 @@ def random_line(rng, *, seabed="any"):
 
 
 def line_expr(segments, attachments, seabed, friction) -> str:
-    segs = ", ".join(f"cable.Segment({fmt(L)}, {fmt(w)}, {fmt(EA)})" for L, w, EA in segments)
-    atts = ", ".join(f"cable.{kind}({j}, {fmt(size)})" for kind, j, size in attachments)
+    segs = ", ".join(f"mooring.Segment({fmt(L)}, {fmt(w)}, {fmt(EA)})" for L, w, EA in segments)
+    atts = ", ".join(f"mooring.{kind}({j}, {fmt(size)})" for kind, j, size in attachments)
     bed = "" if seabed is None else f", seabed={fmt(seabed)}, friction={fmt(friction)}"
-    return f"cable.Line([{segs}], [{atts}]{bed})"
+    return f"mooring.Line([{segs}], [{atts}]{bed})"
 
 
 def line_data(segments, attachments, seabed, friction) -> LineData:
@@ -214,7 +214,7 @@ def line3d(rng) -> Case:
     anchor = [log_uniform(rng, 1.0, 1e3) * rng.choice([-1, 1]) for _ in range(3)]
     fairlead = [anchor[0] + span * math.cos(heading), anchor[1] + span * math.sin(heading), anchor[2] + dh]
     model = line_expr(segments, attachments, bed, friction)
-    expr = f"cable.line_3d({model}, {[fmt(v) for v in anchor]}, {[fmt(v) for v in fairlead]})".replace(
+    expr = f"mooring.line_3d({model}, {[fmt(v) for v in anchor]}, {[fmt(v) for v in fairlead]})".replace(
         "'", ""
     )
 
@@ -331,7 +331,7 @@ def bvp_case(segments, attachments, bed, friction, span, dh) -> Case:
     segs = ", ".join(f"({fmt(L)}, {fmt(w)}, {fmt(EA)})" for L, w, EA in segments)
     pl = ", ".join(f"({fmt(s)}, {fmt(P)})" for s, P in loads)
     bed_kw = "" if bed is None else f", seabed={fmt(bed)}, friction={fmt(friction)}"
-    expr = f"cable.solve_line_bvp({fmt(span)}, {fmt(dh)}, [{segs}]{bed_kw}, point_loads=[{pl}])"
+    expr = f"mooring.solve_line_bvp({fmt(span)}, {fmt(dh)}, [{segs}]{bed_kw}, point_loads=[{pl}])"
 
     def check(result, caught):
         try:
@@ -354,7 +354,7 @@ def bvp_case(segments, attachments, bed, friction, span, dh) -> Case:
 
 #: What `solve_line_bvp` documents it refuses, though the walk may solve it: a slack stretch that
 #: ends at a point load resting on the seabed, its friction partly mobilised (`InputError`
-#: naming ``point_loads``; `cable.Line` solves it).
+#: naming ``point_loads``; `mooring.Line` solves it).
 OUTSIDE_BVP = "this BVP does not model that state"
 #: The advice of its refusal of a discrete line in compression (its bends unresolved).
 MORE_ELEMENTS = "elements do not resolve its bends; give more"
@@ -364,7 +364,7 @@ def _bvp_verdict(exc, expr, check, verdict):
     """The judgement of a refusal of `solve_line_bvp` where the walk solves the line: honest
     (None) where it is a documented limit of the BVP (`OUTSIDE_BVP`), or where it says to give
     more elements and 1024 elements give the walk's answer (the advice works); else ``verdict``."""
-    from skcable import InputError, cable
+    from skcable import InputError, mooring
     from skcable.errors import ConvergenceError
 
     text = str(exc)
@@ -372,7 +372,7 @@ def _bvp_verdict(exc, expr, check, verdict):
         return None
     if isinstance(exc, ConvergenceError) and MORE_ELEMENTS in text:
         try:
-            finer = eval(expr[:-1] + ", n_elements=1024)", {"cable": cable})  # noqa: S307 - our own call
+            finer = eval(expr[:-1] + ", n_elements=1024)", {"mooring": mooring})  # noqa: S307 - our own call
         except (InputError, ConvergenceError) as again:
             return f"{verdict}; with 1024 elements: {type(again).__name__}: {again}"
         problems = check(finer, [])

@@ -49,8 +49,8 @@ def _cable(rng):
 
 def _freq_call(span, dh, w, EA, given, n, g=9.81):
     return (
-        f"cable.natural_frequencies({fmt(span)}, {fmt(dh)}, {fmt(w)}, {fmt(EA)}, {given[0]}={fmt(given[1])}, "
-        f"n_modes={n}, g={fmt(g)})"
+        f"conductors.natural_frequencies({fmt(span)}, {fmt(dh)}, {fmt(w)}, {fmt(EA)}, "
+        f"{given[0]}={fmt(given[1])}, n_modes={n}, g={fmt(g)})"
     )
 
 

@@ -8,7 +8,7 @@ import numpy as np
 import pytest
 import pyvista as pv
 
-from skcable import cable, strand
+from skcable import bvp, cable, conductors, mooring, strand
 from skcable.errors import InputError
 from skcable.io import funicular_mesh, write, write_series
 
@@ -29,10 +29,8 @@ def curves():
         lambda: cable.catenary(800, -20, 20, low=-30),
         lambda: cable.parabola(800, -20, 20, low=-30),
         lambda: cable.elastic_catenary(800, -20, 20, 1e8, length=810),
-        lambda: cable.solve_bvp(800, -20, [cable.SelfWeight(20)], low=-30, n_elements=32),
-        lambda: cable.solve_bvp(
-            800, -20, [cable.SelfWeight(20)], length=810, n_elements=32, formulation="arc"
-        ),
+        lambda: bvp.solve_bvp(800, -20, [bvp.SelfWeight(20)], low=-30, n_elements=32),
+        lambda: bvp.solve_bvp(800, -20, [bvp.SelfWeight(20)], length=810, n_elements=32, formulation="arc"),
     ],
 )
 def test_cable_profile_round_trip(tmp_path, solve):
@@ -47,7 +45,7 @@ def test_cable_profile_round_trip(tmp_path, solve):
     np.testing.assert_allclose(grid.point_data["tension_N"], T)
     # statics: the horizontal component of the tension is H everywhere (no horizontal load);
     # the arc form's P1 tension and P2 slope meet it to the discretisation error (h^2)
-    rtol = 1e-4 if isinstance(sol, cable.ArcSolution) else 1e-6
+    rtol = 1e-4 if isinstance(sol, bvp.ArcSolution) else 1e-6
     np.testing.assert_allclose(T * np.cos(angle), sol.H, rtol=rtol)
     np.testing.assert_allclose(T[[0, -1]], [sol.T_A, sol.T_B], rtol=rtol)
     np.testing.assert_allclose(np.linalg.norm(mesh.point_data["tangent"], axis=1), 1.0)
@@ -214,16 +212,16 @@ def _polygon():
 
 
 def _line():
-    return cable.line_3d(cable.Line([cable.Segment(400.0, 200.0, 1e8)]), (0, 0, 0), (380.0, 0, 60.0))
+    return mooring.line_3d(mooring.Line([mooring.Segment(400.0, 200.0, 1e8)]), (0, 0, 0), (380.0, 0, 60.0))
 
 
 def _moored():
-    line = cable.Line([cable.Segment(850.0, 2456.82, 1.2326e9)], seabed=0.0)
+    line = mooring.Line([mooring.Segment(850.0, 2456.82, 1.2326e9)], seabed=0.0)
     angles = np.radians([0.0, 120.0, 240.0])
     anchors = np.column_stack([800 * np.cos(angles), 800 * np.sin(angles), np.full(3, -200.0)])
     fairleads = np.column_stack([20 * np.cos(angles), 20 * np.sin(angles), np.full(3, -14.0)])
-    body = cable.RigidBody(fairleads, waterplane_area=600.0)
-    return cable.MooringSystem(body, [line] * 3, anchors).equilibrium()
+    body = mooring.RigidBody(fairleads, waterplane_area=600.0)
+    return mooring.MooringSystem(body, [line] * 3, anchors).equilibrium()
 
 
 def _writers():
@@ -231,7 +229,7 @@ def _writers():
     from skcable.io import write_lines, write_mode_shapes, write_mooring
 
     sol = cable.catenary(800, -20, 20, low=-30)
-    modes = cable.natural_frequencies(100.0, 0.0, 10.0, 5e7, sag=3.0, n_modes=2)
+    modes = conductors.natural_frequencies(100.0, 0.0, 10.0, 5e7, sag=3.0, n_modes=2)
     return {
         "write": (lambda p: write(_polygon(), p), ".vtu"),
         "to_vtk": (lambda p: sol.to_vtk(p), ".vtk"),
@@ -263,7 +261,7 @@ def test_writer_refuses_a_missing_parent_and_never_creates_it(tmp_path, writer):
 def test_write_mode_shapes_none_is_a_path_error():  # issue 26, D7: a TypeError escaped
     from skcable.io import write_mode_shapes
 
-    res = cable.natural_frequencies(100.0, 0.0, 10.0, 5e7, sag=3.0, n_modes=2)
+    res = conductors.natural_frequencies(100.0, 0.0, 10.0, 5e7, sag=3.0, n_modes=2)
     for path in (None, 3.0, ["m.vtu"]):
         with pytest.raises(InputError) as info:
             write_mode_shapes(res, path)
@@ -292,7 +290,7 @@ def test_array_names_carry_their_units(tmp_path):
     meshes = [
         cable_mesh(cable.catenary(800, -20, 20, low=-30)),
         _polygon(),
-        mode_shape_mesh(cable.natural_frequencies(100.0, 0.0, 10.0, 5e7, sag=3.0, n_modes=2)),
+        mode_shape_mesh(conductors.natural_frequencies(100.0, 0.0, 10.0, 5e7, sag=3.0, n_modes=2)),
         lines_mesh([_line()]),
         mooring_mesh(_moored()),
     ]

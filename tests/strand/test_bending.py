@@ -272,13 +272,10 @@ def test_critical_curvature_bad_input(argument, strains, kwargs):
     assert info.value.argument == argument
 
 
-def test_repr_and_deprecated_names(law):
+def test_repr_and_the_names_of_0_1_are_gone(law):
     text = repr(law)
     assert len(text) < 300 and "N·m²" in text and "1/m" in text and "\n" not in text
-    with pytest.warns(DeprecationWarning, match="EI_stick"):
-        np.testing.assert_array_equal(law.EI_max, law.EI_stick)
-    with pytest.warns(DeprecationWarning, match="EI_slip"):
-        np.testing.assert_array_equal(law.EI_min, law.EI_slip)
+    assert not hasattr(law, "EI_max") and not hasattr(law, "EI_min")  # EI_stick, EI_slip since 0.2.0
     core = strand.preset("steel-9.5").damaged(wires=[(1, j) for j in range(6)]).bending_law()
     assert "linear about principal axis 1 and 2" in repr(core)
 

@@ -185,22 +185,12 @@ def test_one_wire_left_and_core_alone():
     assert core.area == pytest.approx(A) and core.EA == pytest.approx(s.material.E_e * A)
 
 
-def test_deprecated_max_min_names_warn_and_return_the_stick_slip_values():
+def test_the_max_min_names_deprecated_in_0_2_0_are_gone():
+    """0.2.0 served I_max, EI_min, ... for one release; 0.3.0 has the stick/slip names only."""
     sec = strand.preset("steel-9.5").damaged(2).section()
-    for old, new in [
-        ("I_max", "I_stick"),
-        ("I_min", "I_slip"),
-        ("EI_max", "EI_stick"),
-        ("EI_min", "EI_slip"),
-    ]:
-        with pytest.warns(DeprecationWarning, match=new):
-            value = getattr(sec, old)
-        np.testing.assert_array_equal(value, getattr(sec, new))
-    intact = strand.preset("steel-9.5").section()
-    with pytest.warns(DeprecationWarning, match="EI_stick_lanteigne"):
-        assert intact.EI_max_lanteigne == intact.EI_stick_lanteigne
-    with pytest.warns(DeprecationWarning, match="EI_slip_lanteigne"):
-        assert intact.EI_min_lanteigne == intact.EI_slip_lanteigne
+    for old in ("I_max", "I_min", "EI_max", "EI_min", "EI_max_lanteigne", "EI_min_lanteigne"):
+        assert not hasattr(sec, old), old
+    assert np.all(sec.EI_stick >= sec.EI_slip)
 
 
 def test_repr_is_short_and_names_units():

@@ -4,7 +4,7 @@
 
 from skcable.strand.fe.annex_e import AnnexE, annex_e_forces, annex_e_section
 from skcable.strand.fe.foundations import ElasticFoundation, NodalSpring, RigidCylinder, TensionlessFoundation
-from skcable.strand.fe.loads import DistributedLoad, FollowerForce, PointForce, PointMoment, TransverseLoad
+from skcable.strand.fe.loads import FollowerForce, PointForce, PointMoment, TransverseLoad
 from skcable.strand.fe.model import DAMAGE_LOADS, ELEMENTS, StrandModel, default_physics
 from skcable.strand.fe.slip import AxisSlip, ElementSlip, SlipLaw, Stick, slip_law
 from skcable.strand.fe.supports import DOFS, END_CONDITIONS, StrandSupports
@@ -16,7 +16,6 @@ __all__ = [
     "AxisSlip",
     "DAMAGE_LOADS",
     "DOFS",
-    "DistributedLoad",
     "ELEMENTS",
     "END_CONDITIONS",
     "ElasticFoundation",

@@ -18,7 +18,7 @@ from skcable.errors import InputError
 from skcable.fe.probes import gradient_probes
 from skcable.strand.fe.terms import FIELDS, FieldTerm, Term
 
-__all__ = ["DistributedLoad", "FollowerForce", "PointForce", "PointMoment", "TransverseLoad", "unit_load"]
+__all__ = ["FollowerForce", "PointForce", "PointMoment", "TransverseLoad", "unit_load"]
 
 
 @LinearForm
@@ -46,21 +46,6 @@ class TransverseLoad(FieldTerm):
 
     def __init__(self, qy=0.0, qz=0.0):
         super().__init__(load={"v": _load_y, "w": _load_z}, qy=qy, qz=qz)
-
-
-class DistributedLoad(TransverseLoad):
-    """Deprecated name of `TransverseLoad` (``skcable.cable.DistributedLoad`` is a cable's load)."""
-
-    def __init__(self, qy=0.0, qz=0.0):
-        import warnings
-
-        warnings.warn(
-            "skcable.strand.DistributedLoad is deprecated: use skcable.strand.TransverseLoad "
-            "(skcable.cable.DistributedLoad is the cable BVPs' load)",
-            DeprecationWarning,
-            stacklevel=2,
-        )
-        super().__init__(qy, qz)
 
 
 def _at(model, x, name="x") -> float:

@@ -1,0 +1,126 @@
+"""Overhead-line conductors: the conductor of a strand, change of state with temperature, ice and
+wind, ruling span and tension sections, natural frequencies, whole lines at array speed,
+conductor temperature from current and weather (linerate, imported only when a rating is made),
+the damaged-conductor chain (residual strength, Poffenberger–Swart, fatigue), a conductor
+catalogue and stress–strain conductor models.
+
+One concern per module:
+
+- `_conductor`: `Conductor`, a conductor's EA, weight and expansion, from a strand or given;
+- `_state`: the change of state of one span (`change_of_state`, `sag_tension_table`) and the
+  thermal catenary;
+- `_spans`: the ruling span and the exact tension section over suspension insulators;
+- `_frequencies`: natural frequencies of a suspended cable, FE beside Irvine's closed forms;
+- `_lines`, `_grid`, `_closure_z`, `_parabola`, `_inputs`, `_scratch`, `_reference`: whole
+  lines at array speed (the line path of `change_of_state`);
+- `_rating`: conductor temperature from current and weather (IEEE 738, CIGRE 601);
+- `_strength`, `_fatigue`: residual strength, Poffenberger–Swart, Wöhler curves and Miner;
+- `_catalogue`: a conductor catalogue; `_stress_strain`: stress–strain conductor models.
+"""
+
+from __future__ import annotations
+
+from typing import TYPE_CHECKING
+
+from skcable._lazy import attach
+
+if TYPE_CHECKING:  # what static tools see; at run time, `attach` below serves them
+    from skcable.conductors._catalogue import catalogue
+    from skcable.conductors._conductor import Conductor
+    from skcable.conductors._fatigue import (
+        ClampStress,
+        WohlerCurve,
+        clamp_stress,
+        fatigue_life,
+        miner_damage,
+        poffenberger_swart,
+    )
+    from skcable.conductors._frequencies import NaturalFrequencies, irvine_frequencies, natural_frequencies
+    from skcable.conductors._rating import ThermalRating, clearance_ampacity, sag_at_current
+    from skcable.conductors._spans import TensionSection, ruling_span, tension_section
+    from skcable.conductors._state import (
+        ChangeOfState,
+        ThermalCatenary,
+        change_of_state,
+        sag_tension_table,
+        thermal_catenary,
+    )
+    from skcable.conductors._strength import ResidualStrength, layer_rrts, residual_strength, wire_strengths
+    from skcable.conductors._stress_strain import (
+        ComponentCurve,
+        CreepLaw,
+        History,
+        StressStrainModel,
+        aa_coefficients,
+        level_span_states,
+    )
+
+#: Where each public name lives (imported on first use, PEP 562).
+_NAMES = {
+    "._catalogue": ("catalogue",),
+    "._conductor": ("Conductor",),
+    "._fatigue": (
+        "ClampStress",
+        "WohlerCurve",
+        "clamp_stress",
+        "fatigue_life",
+        "miner_damage",
+        "poffenberger_swart",
+    ),
+    "._frequencies": ("NaturalFrequencies", "irvine_frequencies", "natural_frequencies"),
+    "._rating": ("ThermalRating", "clearance_ampacity", "sag_at_current"),
+    "._spans": ("TensionSection", "ruling_span", "tension_section"),
+    "._state": (
+        "ChangeOfState",
+        "ThermalCatenary",
+        "change_of_state",
+        "sag_tension_table",
+        "thermal_catenary",
+    ),
+    "._strength": ("ResidualStrength", "layer_rrts", "residual_strength", "wire_strengths"),
+    "._stress_strain": (
+        "ComponentCurve",
+        "CreepLaw",
+        "History",
+        "StressStrainModel",
+        "aa_coefficients",
+        "level_span_states",
+    ),
+}
+
+__getattr__, __dir__ = attach(__name__, names=_NAMES)
+
+__all__ = [
+    "ChangeOfState",
+    "ClampStress",
+    "ComponentCurve",
+    "Conductor",
+    "CreepLaw",
+    "History",
+    "NaturalFrequencies",
+    "ResidualStrength",
+    "StressStrainModel",
+    "TensionSection",
+    "ThermalCatenary",
+    "ThermalRating",
+    "WohlerCurve",
+    "aa_coefficients",
+    "catalogue",
+    "change_of_state",
+    "clamp_stress",
+    "clearance_ampacity",
+    "fatigue_life",
+    "irvine_frequencies",
+    "layer_rrts",
+    "level_span_states",
+    "miner_damage",
+    "natural_frequencies",
+    "poffenberger_swart",
+    "residual_strength",
+    "ruling_span",
+    "sag_at_current",
+    "sag_tension_table",
+    "tension_section",
+    "thermal_catenary",
+    "wire_strengths",
+]

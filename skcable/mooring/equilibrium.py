@@ -1,0 +1,667 @@
+r"""The static equilibrium of a moored body: Newton's method, a start from slack lines, stability.
+
+At body position :math:`\mathbf q` the net generalised force :math:`\mathbf G(\mathbf q)` on the
+body (`skcable.mooring.system`) vanishes at equilibrium. Newton's method runs with the
+analytic Jacobian :math:`\partial\mathbf G/\partial\mathbf q = -K\,T` (``K`` the stiffness of the
+mooring system and the body, ``T`` the map of Euler-angle increments to rotation vectors),
+each step capped at a quarter of the shortest anchor radius and 0.2 rad, backtracking on
+the net load over a scale that holds for the solve (the body's loads and the largest line
+tension of the iterates so far), converged where the net load over the state's own scale (its
+line tension, at least the body's loads) is below ``tol`` (`skcable.fe.newton`).
+
+**Slack lines.** Where the lines lie slack on the seabed (their slack in a heap, ``H = 0``)
+the stiffness has no horizontal term: :math:`K` is singular and Newton has no step. The
+free directions are the null space of the scaled Jacobian (singular values below
+:math:`10^{-11}` of the largest); the net force's component in it, :math:`\mathbf d`, pushes
+the body. Along the ray :math:`\mathbf q + t\,\mathbf d` the force along it,
+:math:`g(t) = \mathbf G(\mathbf q + t\mathbf d)\cdot\mathbf d`, stays positive while the
+lines are slack and falls once they take the load: ``t`` is doubled until :math:`g < 0`,
+the root bracketed (Brent's method) and Newton resumes from there. With no net force
+in the free directions the step is the least-squares one (a neutral direction).
+
+**Stability.** A static equilibrium is stable where the stiffness is positive definite:
+the eigenvalues of the symmetric part of :math:`K` in consistent units (rotations times
+the largest fairlead arm, N/m) are all positive (a potential at a minimum; K.-J. Bathe,
+"Finite Element Procedures", 1996, §6.5.2, on stability from the tangent stiffness).
+An equilibrium with a negative eigenvalue (a capsized body, say) is passed over: Newton is
+run again from the start with the body upright and from the equilibrium pushed both ways
+along the unstable mode, and the first stable equilibrium is returned. When none is
+found the unstable one is returned with ``stable=False`` and a `PlausibilityWarning`.
+"""
+
+from __future__ import annotations
+
+import functools
+import math
+import warnings
+from typing import NamedTuple
+
+import numpy as np
+from scipy.linalg import lapack
+
+from skcable._show import counted, quantity
+from skcable.errors import ConvergenceError, InputError, PlausibilityWarning
+from skcable.fe import newton
+from skcable.mooring.network import end_forces
+
+__all__ = ["MooringEquilibrium", "solve_equilibrium", "stiffness_eigenvalues"]
+
+#: Singular values of the scaled Jacobian below this fraction of the largest: a free direction.
+_SINGULAR = 1e-11
+#: Eigenvalues below ``-_UNSTABLE`` times the largest magnitude: an unstable equilibrium.
+_UNSTABLE = 1e-8
+#: `_first_run`'s last attempt: the free directions' share of the net load below which the
+#: restrained directions are balanced first (`_Newton.slack_step`).
+_RESTRAINED = 1e-3
+
+
+def _units(system) -> tuple[np.ndarray, float]:
+    """Consistent units of the dofs (1 for translations, a body's largest arm for its rotations,
+    `MooringSystem.dof_units`) and the largest of them."""
+    units = system.dof_units()
+    return units, float(units.max(initial=1.0))
+
+
+def stiffness_eigenvalues(system, K) -> np.ndarray:
+    """Eigenvalues (ascending, N/m) of the symmetric part of the stiffness ``K`` of ``system`` in
+    consistent units: rotations times their body's largest arm (`_units`)."""
+    units, _ = _units(system)
+    scaled = K / units[:, None] / units[None, :]
+    return np.linalg.eigvalsh(0.5 * (scaled + scaled.T))
+
+
+def is_stable(eigenvalues) -> bool:
+    """Whether no eigenvalue is negative beyond round-off (``-1e-8`` of the largest magnitude)."""
+    scale = float(np.abs(eigenvalues).max())
+    return bool(eigenvalues[0] >= -_UNSTABLE * scale)
+
+
+class _State(NamedTuple):
+    """The system at an iterate: net load ``G`` (N, N m), stiffness ``K``, the solved lines, the
+    dofs, the norm of ``G`` in consistent units and the largest line tension (N)."""
+
+    G: np.ndarray
+    K: np.ndarray
+    lines: list
+    position: np.ndarray
+    size: float
+    tension: float
+
+
+class _Newton:
+    """One Newton solve of a system's equilibrium (module docstring): the problem's callables."""
+
+    def __init__(self, system, external, tol, max_iter, without=frozenset()):
+        self.system, self.external, self.tol, self.max_iter = system, external, tol, max_iter
+        self.without = without
+        self.units, self.arm = _units(system)
+        self.unit_pairs = self.units[:, None] * self.units[None, :]  # a matrix in consistent units
+        self.body_scale = system.force_scale(external)
+        self.lines = None  # the lines of the last accepted state: warm starts of the trials
+        self.cap = None  # the step cap, from the start (`step_cap`)
+        self.seen = 0.0  # the largest line tension of the run's iterates Newton stepped from (N)
+        self.restrained_first = False  # `slack_step`: the restrained directions before the free ones
+
+    def merit(self, state) -> float:
+        """The line search's merit: the net load's norm over a scale that holds during the line
+        search and never falls in a run, the largest of the loads other than the lines' and the
+        line tensions of the iterates Newton stepped from (`seen`).
+
+        The convergence test (`norm`) judges each state by its own tension, the round-off of its
+        net load; as a merit that ratio stood at 0.48 while the tensions of a body sinking 160 m
+        fell a hundredfold (the net load fell with them), and the line search crawled until
+        ``max_iter``."""
+        return state.size / max(self.body_scale, self.seen, 1e-300)
+
+    def assemble(self, position) -> _State:
+        """The `_State` at ``position``; the lines start from the last accepted ones."""
+        G, K, lines = self.system.evaluate(position, self.external, start=self.lines, without=self.without)
+        size = float(np.linalg.norm(G / self.units))
+        return _State(G, K, lines, position, size, self.system.tension_scale(lines))
+
+    def norm(self, state) -> float:
+        """The scaled residual's norm: the net load over the state's force scale (its largest line
+        tension, at least the other loads), moments also over their body's arm."""
+        return state.size / max(self.body_scale, state.tension, 1e-300)
+
+    def jacobian(self, state) -> np.ndarray:
+        """``-∂G/∂q`` at ``state``."""
+        return self.system.layout.times_rate_map(state.K, state.position)
+
+    def increment(self, state) -> np.ndarray:
+        jac = self.jacobian(state)
+        self.lines = state.lines  # Newton steps from this state: the trials start from its lines
+        self.seen = max(self.seen, state.tension)
+        scaled = jac / self.unit_pairs
+        solved = _well_conditioned_solve(scaled, state.G / self.units)
+        if solved is not None:  # no free direction: Newton's step
+            return self.capped(solved / self.units)
+        null = _null_space(scaled)
+        if null is not None:
+            return self.slack_step(state, null, jac)
+        return self.capped(np.linalg.solve(jac, state.G))
+
+    def capped(self, dq) -> np.ndarray:
+        """``dq`` scaled down to the step cap, where a dof exceeds it."""
+        excess = float(np.max(np.abs(dq) / self.cap))
+        return dq / excess if excess > 1.0 else dq
+
+    def step_cap(self, position) -> np.ndarray:
+        """A quarter of the shortest horizontal span of each body's or point's lines, 0.2 rad."""
+        return self.system.step_cap(position, self.without)
+
+    def slack_step(self, state, null, jac) -> np.ndarray:
+        """The step along the free directions ``null`` (rows, scaled dofs) to where the lines take
+        the net force's component in them (module docstring); with no force along them, the
+        least-squares Newton step in the other directions (the free ones stay as they are: the
+        equilibrium is checked for them at the end, `check_unique`)."""
+        G, lines, position = state.G, state.lines, state.position
+        r = G / self.units
+        push = null.T @ (null @ r)
+        restrained = self.restrained_first and np.linalg.norm(push) < _RESTRAINED * np.linalg.norm(r - push)
+        if restrained and any(_slack(line) for line in lines):
+            scaled = jac / self.unit_pairs  # the restrained directions first
+            return self.capped(np.linalg.lstsq(scaled, r, rcond=_SINGULAR)[0] / self.units)
+        if not np.linalg.norm(push) > 1e-12 * np.linalg.norm(r):  # no force along the free directions
+            if not any(_slack(line) for line in lines):  # nothing will take them: not unique
+                raise ConvergenceError(
+                    _SINGULAR_MESSAGE.format(_named(self.system, null)), [self.norm(state)]
+                )
+            scaled = jac / self.unit_pairs  # slack lines, pushed elsewhere
+            return self.capped(np.linalg.lstsq(scaled, r, rcond=_SINGULAR)[0] / self.units)
+        direction = push / np.linalg.norm(push)  # scaled dofs, |direction| = 1
+        ray = direction / self.units
+        cap = self.step_cap(position) if self.cap is None else self.cap
+        t = _ray_root(self, position, ray, direction, float(cap[0]), self.norm(state))
+        return t * ray
+
+    def along(self, t, position, ray, direction) -> float:
+        """``g(t)``: the scaled net load at ``position + t ray`` along ``direction`` (a trial that no
+        line can reach counts as pulling back, -inf)."""
+        try:
+            G = self.assemble(position + t * ray)[0]
+        except (InputError, ConvergenceError):
+            return -math.inf
+        return float((G / self.units) @ direction) / max(self.body_scale, 1e-300)
+
+    def run(self, position, lines=None):
+        """`skcable.fe.newton` from ``position`` (the ``lines`` as warm starts of the first solves)."""
+        self.lines, self.seen = lines, 0.0
+        self.cap = self.step_cap(position)
+        return newton(
+            self.assemble,
+            position,
+            norm=self.norm,
+            merit=self.merit,
+            increment=self.increment,
+            tol=self.tol,
+            max_iter=self.max_iter,
+            max_halvings=20,
+            stagnation_window=self.max_iter,  # no stagnation rule: a capped step may gain slowly
+            name="mooring equilibrium",
+            rejects=(InputError, ConvergenceError),  # a line that cannot reach a trial position
+            watchdog=1,  # the first full step from rest overshoots onto the stiff side: take it
+        )
+
+
+def _ray_root(solve, position, ray, direction, reach, norm) -> float:
+    """The distance ``t`` along ``ray`` where ``g(t)`` (`_Newton.along`) changes sign: doubled from
+    ``1e-3 reach`` until ``g < 0`` (at most ``2**20`` times that), then Brent's method; ``norm``
+    is the scaled residual at ``position`` (the history of the error, if there is no sign change)."""
+    from scipy.optimize import brentq
+
+    args = (position, ray, direction)
+    lo, t = 0.0, 1e-3 * reach
+    for _ in range(21):
+        g = solve.along(t, *args)
+        if g <= 0:
+            break
+        lo, t = t, 2.0 * t
+    else:
+        raise ConvergenceError(
+            "mooring equilibrium: the lines are slack and stay slack along the net force (nothing "
+            f"restrains {_named(solve.system, direction[None, :])}: add lines, waterplane_area or a "
+            "metacentre)",
+            [norm],
+        )
+    return brentq(_along_capped, lo, t, args=(solve, *args), xtol=1e-9 * t, rtol=1e-12)
+
+
+def _along_capped(t, solve, position, ray, direction) -> float:
+    """`_Newton.along`, at least -1 (finite for Brent's method)."""
+    return max(solve.along(t, position, ray, direction), -1.0)
+
+
+def _named(system, null) -> str:
+    """The dofs that lead the free directions ``null`` (rows, scaled dofs), in words."""
+    weight = np.abs(np.asarray(null)).max(axis=0)
+    lead = np.flatnonzero(weight > 0.3 * weight.max())
+    return ", ".join(system.layout.describe(int(k)) for k in lead[:6])
+
+
+_SINGULAR_MESSAGE = (
+    "mooring equilibrium: the stiffness is singular (a direction neither the lines nor the hydrostatics "
+    "restrain: {}; add waterplane_area, a metacentre or lines)"
+)
+
+
+def _slack(line) -> bool:
+    """Whether a solved line is slack: no horizontal tension (its slack in a heap, or lying slack)."""
+    plane = getattr(line, "plane", None)
+    return (plane.H_A == 0.0 and plane.H_B == 0.0) if plane is not None else line.H == 0.0
+
+
+def check_unique(solve, state, history):
+    """Raise `ConvergenceError` where the stiffness at the equilibrium ``state`` is singular: a
+    direction neither the lines nor the hydrostatics restrain (the equilibrium is not unique)."""
+    scaled = solve.jacobian(state) / solve.unit_pairs
+    if _well_conditioned_solve(scaled, np.zeros(len(scaled))) is not None:
+        return  # no singular value near zero (`_CONDITIONED`)
+    free = _null_space(scaled)
+    if free is not None:
+        raise ConvergenceError(_SINGULAR_MESSAGE.format(_named(solve.system, free)), history)
+
+
+#: `_well_conditioned_solve` solves where LAPACK's estimate of the reciprocal condition number
+#: (1-norm) is above this: five orders above `_SINGULAR`, so that no singular value is below
+#: `_SINGULAR` of the largest (the 2-norm condition number is at most n times the 1-norm one,
+#: and the estimate is within a small factor of it; N.J. Higham, "Accuracy and Stability of
+#: Numerical Algorithms", 2002, §15.3).
+_CONDITIONED = 1e-6
+
+
+def _well_conditioned_solve(scaled, rhs):
+    """``scaled⁻¹ rhs`` by an LU factorisation where its estimated reciprocal condition number is
+    above `_CONDITIONED`, else None (`_null_space` then looks for free directions): the singular
+    values cost several LU factorisations, and a Newton step needs them only near a singular
+    Jacobian."""
+    lu, piv, info = lapack.dgetrf(scaled)
+    if info != 0:
+        return None
+    rcond, info = lapack.dgecon(lu, float(np.abs(scaled).sum(axis=0).max()))
+    if info != 0 or not rcond > _CONDITIONED:
+        return None
+    x, info = lapack.dgetrs(lu, piv, rhs)
+    return x if info == 0 and np.isfinite(x).all() else None
+
+
+def _null_space(scaled):
+    """The free directions of the scaled Jacobian (rows: its right singular vectors whose singular
+    values are below `_SINGULAR` of the largest), or None where there is none: the singular values
+    alone first (a third of a full SVD's work), the vectors only where some are that small."""
+    singular = np.linalg.svd(scaled, compute_uv=False)
+    if singular[-1] > _SINGULAR * singular[0]:
+        return None
+    _, singular, vh = np.linalg.svd(scaled)
+    free = vh[singular <= _SINGULAR * singular[0]]
+    return free if len(free) else None  # (the two at a tie of round-off: the full one decides)
+
+
+@functools.lru_cache(maxsize=1)
+def _threads():
+    from threadpoolctl import ThreadpoolController
+
+    return ThreadpoolController()
+
+
+def solve_equilibrium(system, position, external, lines, tol, max_iter, without=frozenset()):
+    """`skcable.mooring.MooringSystem.equilibrium` on checked arguments: Newton from ``position``
+    (the ``lines`` of an earlier equilibrium as warm starts, or None), the stable branch
+    preferred (module docstring), ``without`` the lines of those indices. Returns a
+    `MooringEquilibrium`.
+
+    The dense solves of a few dozen dofs run on one BLAS thread (threadpoolctl): more threads
+    only add their start-up and, on a shared machine, their contention (an SVD of order 96 took
+    80 ms on two contending threads against 1 ms on one). Below `_ONE_THREAD` dofs BLAS runs on
+    one thread anyway (OpenBLAS threads only larger products), and setting the limit would cost
+    more than a Newton step."""
+    if system.n_dof < _ONE_THREAD:
+        return _solve_equilibrium(system, position, external, lines, tol, max_iter, without)
+    with _threads().limit(limits=1, user_api="blas"):
+        return _solve_equilibrium(system, position, external, lines, tol, max_iter, without)
+
+
+#: Systems of this many dofs and more solve under a limit of one BLAS thread (`solve_equilibrium`).
+_ONE_THREAD = 24
+
+
+def _first_run(solve, position, lines):
+    """Newton from ``position``; where its line search finds no descent (the net load is not
+    smooth where lines lie slack in heaps: Newton's step from there need not descend), from the
+    start pushed along the net load (`_pushed_starts`), the first that converges; last, from
+    ``position`` with the restrained directions balanced before the free ones are pushed
+    (`_Newton.slack_step`: lines hanging vertically leave x, y and yaw free while roll and pitch
+    are unbalanced, and the push along the free directions found no descent)."""
+    try:
+        return solve.run(position, lines)
+    except ConvergenceError as err:
+        if "no descent" not in str(err):
+            raise
+        history = err.history
+    for start in _pushed_starts(solve, position):
+        try:
+            return solve.run(start)
+        except (ConvergenceError, InputError):
+            continue
+    try:
+        solve.restrained_first = True
+        return solve.run(position, lines)
+    except (ConvergenceError, InputError):
+        pass
+    finally:
+        solve.restrained_first = False
+    raise ConvergenceError(
+        "mooring equilibrium: the line search found no descent, from the start nor from it pushed along "
+        "the net load (the residual stalls: the loads may exceed what the mooring can hold, or the start "
+        "is too far)",
+        history,
+    )
+
+
+#: How far `_pushed_starts` pushes the start along the net load: multiples of the step cap (a
+#: quarter of the shortest horizontal span of the lines, 0.2 rad).
+_PUSHES = (0.04, 0.2, 0.6, 1.2)
+
+
+def _pushed_starts(solve, position) -> list:
+    """The start moved horizontally along the net horizontal load on each body and point by
+    `_PUSHES` step caps: the lines slack in heaps at the start take up the load farther along
+    it (rotations and heave stay: the hydrostatics hold them)."""
+    try:
+        G = solve.assemble(position)[0]
+    except (ConvergenceError, InputError):
+        return []
+    layout = solve.system.layout
+    firsts = [*layout.body_start, *layout.point_start.values()]
+    horizontal = np.array([s + k for s in firsts for k in (0, 1)], dtype=int)
+    ray = np.zeros_like(position)
+    ray[horizontal] = G[horizontal]
+    if not np.linalg.norm(ray) > 0:
+        return []
+    cap = solve.step_cap(position)[horizontal]
+    size = float(np.min(cap / np.maximum(np.abs(ray[horizontal]), 1e-300)))
+    return [position + push * size * ray for push in _PUSHES]
+
+
+def _solve_equilibrium(system, position, external, lines, tol, max_iter, without):
+    solve = _Newton(system, external, tol, max_iter, without)
+    result = _first_run(solve, position, lines)
+    check_unique(solve, result.state, result.history)
+    eigenvalues = stiffness_eigenvalues(system, result.state.K)
+    passed = []
+    if not is_stable(eigenvalues):
+        passed.append(result.x.copy())
+        for start in _restarts(system, position, result, solve):
+            try:
+                other = solve.run(start)
+            except (ConvergenceError, InputError):
+                continue
+            other_eig = stiffness_eigenvalues(system, other.state.K)
+            if is_stable(other_eig):
+                result, eigenvalues = other, other_eig
+                break
+            passed.append(other.x.copy())
+    G, K, lines = result.state.G, result.state.K, result.state.lines
+    eq = MooringEquilibrium(
+        system, result.x, external, G, K, lines, result.history, eigenvalues, passed, without=without
+    )
+    if not eq.stable:
+        reason = (
+            f"the mooring equilibrium found is unstable (stiffness eigenvalue {eigenvalues[0]:.3g} N/m < 0, "
+            f"heel {max(b.heel for b in eq.bodies) if eq.bodies else 0.0:.3g} rad) and no stable one was "
+            "found from the restarts: check the bodies' metacentres, centres of gravity and the start"
+        )
+        warnings.warn(PlausibilityWarning("start", reason), stacklevel=4)
+    return eq
+
+
+def _restarts(system, position, result, solve):
+    """Starts of the search for a stable branch: the start upright (rotations zeroed), then the
+    unstable equilibrium pushed both ways along its most unstable mode."""
+    starts = []
+    rotations = system.layout.rotation_dofs()
+    if rotations.size and np.any(position[rotations] != 0):
+        upright = position.copy()
+        upright[rotations] = 0.0
+        starts.append(upright)
+    units, _ = _units(system)
+    scaled = result.state.K / units[:, None] / units[None, :]
+    mode = np.linalg.eigh(0.5 * (scaled + scaled.T))[1][:, 0] / units
+    cap = solve.step_cap(result.x)
+    size = float(np.min(cap / np.maximum(np.abs(mode), 1e-300)))
+    starts += [result.x + size * mode, result.x - size * mode]
+    return starts
+
+
+class BodyState:
+    """A body at equilibrium: ``body``, ``index``, ``position`` (its dofs: m, rad), ``offset`` (its
+    reference point, m), ``angles`` (roll, pitch, yaw; zeros for a point body), ``rotation`` (body
+    to global axes), ``heel`` (the angle of its z axis to the vertical, rad) and ``local_points``
+    (its points in body axes, m, (n, 3))."""
+
+    def __init__(self, index, body, q, local_points):
+        self.index, self.body, self.position = index, body, q.copy()
+        self.local_points = np.asarray(local_points, dtype=float).reshape(-1, 3)
+        self.offset = q[:3].copy()
+        self.angles = q[3:].copy() if len(q) == 6 else np.zeros(3)
+        self.rotation = R = body.rotation(q)
+        self.heel = float(np.arccos(np.clip(R[2, 2], -1.0, 1.0)))
+
+    def __repr__(self):
+        shown = ", ".join(
+            (
+                quantity("offset", self.offset, "m"),
+                quantity("angles", self.angles, "rad"),
+                quantity("heel", self.heel, "rad"),
+            )
+        )
+        return f"BodyState(body {self.index}: {shown})"
+
+
+class PointState:
+    """A point at equilibrium: ``point``, ``index``, ``kind`` and ``position`` (m, global axes)."""
+
+    def __init__(self, point, position):
+        self.point, self.index, self.kind, self.position = point, point.index, point.kind, position.copy()
+
+    def __repr__(self):
+        return f"PointState({self.kind} point {self.index}: {quantity('position', self.position, 'm')})"
+
+
+class MooringEquilibrium:
+    """A mooring system in static equilibrium (`MooringSystem.equilibrium`).
+
+    Attributes
+    ----------
+    system : MooringSystem
+    position : ndarray
+        The dofs: each body's ``(x, y, z, roll, pitch, yaw)`` (m, rad; ``(x, y, z)`` of a point
+        body), then each free point's ``(x, y, z)``.
+    bodies : list of BodyState
+        Each body at equilibrium (``position``, ``offset``, ``angles``, ``heel``, ``rotation``).
+    points : list of PointState
+        Each point of the system (``position``, m).
+    lines : list of LineBetween or Line3D
+        Each line at equilibrium (``end_forces``: its forces on its ends a and b, N), in the
+        order of the system's lines, those left out (``without``) skipped.
+    line_indices : list of int
+        The system's number of each line of ``lines``.
+    without : frozenset of int
+        The lines left out.
+    offset, angles, heel, rotation
+        Those of the body of a one-body system.
+    fairlead_forces, anchor_forces, fairleads, anchors : ndarray, shape (n, 3)
+        The one-body constructor's: each line's force on its fairlead and on its anchor (N), the
+        fairleads and the anchors (m).
+    residual : ndarray
+        Net load left on the dofs (N, N m).
+    history : list of float
+        Scaled residual at each Newton iteration.
+    eigenvalues : ndarray
+        Eigenvalues of the symmetric part of the stiffness in consistent units (rotations
+        times their body's largest arm), N/m, ascending (`stiffness_eigenvalues`).
+    stable : bool
+        Whether none of them is negative beyond round-off: a stable equilibrium.
+    unstable_found : list of ndarray
+        Positions of the unstable equilibria passed over on the way to this one.
+    """
+
+    def __init__(
+        self,
+        system,
+        q,
+        external,
+        G,
+        K,
+        lines,
+        history,
+        eigenvalues=None,
+        unstable_found=(),
+        without=frozenset(),
+    ):
+        self.system, self.position, self.external, self.residual = system, q, external, G
+        self._K, self.lines, self.history, self.without = K, lines, history, without
+        self.line_indices = [h.index for h in system.mooring_lines if h.index not in without]
+        layout = system.layout
+        self.bodies = [
+            BodyState(i, b, layout.body_q(q, i), layout.local[i]) for i, b in enumerate(system.bodies)
+        ]
+        P = system.frame(q)[0]
+        self.points = [PointState(p, P[p.index]) for p in system.points]
+        self.depth = system.depth
+        if len(self.bodies) == 1:
+            one = self.bodies[0]
+            self.offset, self.angles, self.heel, self.rotation = (
+                one.offset,
+                one.angles,
+                one.heel,
+                one.rotation,
+            )
+        if system.shortcut:
+            self.fairlead_forces = np.array([line.force_on_fairlead for line in lines])
+            self.anchor_forces = np.array([line.force_on_anchor for line in lines])
+            self.fairleads = np.array([line.fairlead for line in lines])
+            self.anchors = system.anchors
+        self.eigenvalues = stiffness_eigenvalues(system, K) if eigenvalues is None else eigenvalues
+        self.stable = is_stable(self.eigenvalues)
+        self.unstable_found = list(unstable_found)
+        for name in ("position", "residual", "eigenvalues"):
+            if not np.isfinite(getattr(self, name)).all():
+                raise ConvergenceError(f"mooring equilibrium: non-finite {name}", history)
+        if not all(np.isfinite(end_forces(line)).all() for line in lines):
+            raise ConvergenceError("mooring equilibrium: non-finite line forces", history)
+
+    @property
+    def handles(self) -> list:
+        """The system's line handles (`MooringLine`) of ``lines``, in order."""
+        return [self.system.mooring_lines[k] for k in self.line_indices]
+
+    def stiffness(self, *, lines_only: bool = False, condensed: bool = False) -> np.ndarray:
+        """Stiffness of the system at equilibrium, ``-∂G/∂(x, rotation vector)`` (N/m, N/rad,
+        N m/rad), shape (n_dof, n_dof) over every body's and free point's dofs.
+
+        ``lines_only`` leaves out the bodies' hydrostatics (from the lines at equilibrium, no new
+        line solve; see `MooringSystem.stiffness`). ``condensed``: the bodies' stiffness alone,
+        the free points condensed out (each in equilibrium as the bodies move),
+        ``K_bb - K_bp K_pp^{-1} K_pb``, shape ``(6 n, 6 n)`` for ``n`` rigid bodies."""
+        if lines_only:
+            system = self.system
+            _, R, arms = system.frame(self.position)
+            K = system.assemble(self.position, (R, arms), self.handles, self.lines, 0.0, lines_only=True)[1]
+        else:
+            K = self._K.copy()
+        if not condensed:
+            return K
+        n_body = sum(b.n_dof for b in self.system.bodies)
+        Kbb, Kbp, Kpb, Kpp = (
+            K[:n_body, :n_body],
+            K[:n_body, n_body:],
+            K[n_body:, :n_body],
+            K[n_body:, n_body:],
+        )
+        if Kpp.size == 0:
+            return Kbb
+        try:
+            return Kbb - Kbp @ np.linalg.solve(Kpp, Kpb)
+        except np.linalg.LinAlgError:
+            raise ConvergenceError(
+                "mooring equilibrium: the free points' stiffness is singular: they cannot be condensed out",
+                self.history,
+            ) from None
+
+    def tensions(self):
+        """Tension table: each line's per-segment table with the line's number in front, plus its
+        end forces (N): ``H, V_B, H_A, V_A, T_fairlead`` for the one-body constructor's lines,
+        ``H_a, V_a, H_b, V_b, T_a, T_b`` (by end, a then b) and ``model`` otherwise."""
+        import pandas as pd
+
+        frames = []
+        for k, line in zip(self.line_indices, self.lines, strict=True):
+            table = line.tensions().copy()
+            table.insert(0, "line", k)
+            if self.system.shortcut:
+                table["H"], table["V_B"], table["H_A"], table["V_A"] = line.H, line.V_B, line.H_A, line.V_A
+                table["T_fairlead"] = line.tension_at_fairlead
+            else:
+                F = end_forces(line)
+                table["H_a"], table["V_a"] = float(np.hypot(*F[0, :2])), float(-F[0, 2])
+                table["H_b"], table["V_b"] = float(np.hypot(*F[1, :2])), float(-F[1, 2])
+                table["T_a"], table["T_b"] = np.linalg.norm(F, axis=1)
+                table["model"] = getattr(line, "model", "as given")
+                if not isinstance(table["model"].iloc[0], str):
+                    table["model"] = "as given"
+            frames.append(table)
+        return pd.concat(frames, ignore_index=True)
+
+    def anchor_loads(self):
+        """Each anchor's horizontal and vertical load and uplift angle (`skcable.mooring.checks`)."""
+        from skcable.mooring.checks import anchor_loads
+
+        return anchor_loads(self)
+
+    def line_checks(self):
+        """Each line's end tensions, grounded length, touchdown and angle at its lower end
+        (`skcable.mooring.checks`)."""
+        from skcable.mooring.checks import line_checks
+
+        return line_checks(self)
+
+    def segment_checks(self, safety_factor):
+        """Each segment's largest tension against its MBL with ``safety_factor``
+        (`skcable.mooring.checks`)."""
+        from skcable.mooring.checks import segment_checks
+
+        return segment_checks(self, safety_factor)
+
+    def to_vtk(self, path, n: int = 101):
+        """Write the lines (tension as point data), the seabed patch and the bodies to a
+        ``.vtu``/``.vtk`` file, atomically (see `skcable.io.mooring_mesh`); returns the path."""
+        from skcable.io import write_mooring
+
+        return write_mooring(self, path, n)
+
+    def __repr__(self):
+        note = "" if self.stable else ", UNSTABLE"
+        if self.system.shortcut:
+            shown = ", ".join(
+                (
+                    quantity("offset", self.offset, "m"),
+                    quantity("angles", self.angles, "rad"),
+                    quantity("heel", self.heel, "rad"),
+                    quantity("T_fairlead", [line.tension_at_fairlead for line in self.lines], "N"),
+                    quantity("min_eigenvalue", self.eigenvalues[0], "N/m"),
+                    quantity("iterations", len(self.history) - 1),
+                )
+            )
+            return f"MooringEquilibrium({counted([len(self.lines)], 'line')}: {shown}{note})"
+        ends = [np.linalg.norm(end_forces(line), axis=1).max() for line in self.lines]
+        shown = ", ".join(
+            (
+                quantity("T_max", ends, "N"),
+                quantity("min_eigenvalue", self.eigenvalues[0], "N/m"),
+                quantity("iterations", len(self.history) - 1),
+            )
+        )
+        bodies = "1 body" if len(self.bodies) == 1 else f"{len(self.bodies)} bodies"
+        counts = f"{bodies}, {counted([len(self.points)], 'point')}, {counted([len(self.lines)], 'line')}"
+        return f"MooringEquilibrium({counts}: {shown}{note})"

@@ -1,0 +1,501 @@
+r"""A `skcable.mooring.Line` in the sea between an anchor and a fairlead: the model it needs, and why.
+
+`solve_line_in_sea` picks, per line, the cheapest model that is exact for it and reports it
+(`ModelChoice`, as `skcable.bvp.solve` does for a span):
+
+- **closed form**: no current and a flat seabed (or none), constant ``EA``: the line hangs in the
+  vertical plane of its ends (`skcable.mooring.line3d.Line3D` over `skcable.mooring.Line`'s
+  closed form: H.M. Irvine, "Cable Structures", MIT Press, 1981; J.M. Jonkman, "Dynamics
+  modeling and loads analysis of an offshore floating wind turbine", NREL, 2007). Error: the
+  closure's relative residual (round-off);
+- **closed form on a plane slope**: no current, one uniform heavy segment of constant ``EA``
+  without attachments, its anchor on a `skcable.mooring.bathymetry.Plane` that slopes along the
+  line only (Jonkman's grounded line on a slope: `skcable.cable.sloped_seabed_catenary`).
+  Error: the closure's relative residual;
+- **closed form with the laws' elongation integrals**: the same with nonlinear axial laws
+  ``ε(T)`` (`skcable.mooring.segments.law`), hanging clear of the seabed. Error: the
+  closure's residual (the Gauss quadrature of a smooth law is exact to round-off);
+- **3-D line BVP** (`skcable.mooring.line_bvp_3d`, started from the closed form in the plane of the
+  ends): a current, a shaped seabed, or a nonlinear law on a line that rests on the seabed. Error:
+  the difference of the end forces on ``n`` and ``n/2`` elements over the largest end force (the
+  P2 line converges at ``h³``: the difference bounds the coarser solution's error, the finer
+  one's is smaller).
+
+A flat seabed given as a `skcable.mooring.bathymetry.Bathymetry` (global heights) is placed
+relative to the anchor for the closed forms; a ``seabed`` float of the `Line` is relative to the
+anchor as in `skcable.mooring.Line`.
+
+`LineInSea` gives the end forces, ``profile(n)`` ``(n, 3)`` over the unstretched arc length,
+``T_of_s(s)``, the fairlead ``stiffness()`` (3 × 3), ``model`` and ``equilibrium_residual``:
+for the BVP the largest ``|d(T t)/ds + q|`` at its quadrature points
+(`skcable.mooring.line_bvp_3d.solution`); for a closed form, which meets the equilibrium equations
+exactly along the line, the balance of the forces on the whole line,
+``|F_a + F_b + W e_z − R| / L`` (N/m; ``R`` the seabed's force), to round-off; on a slope, where
+``R`` is the closure's own, the closure's relative residual times the weight per length.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from functools import cached_property
+
+import numpy as np
+
+from skcable._checks import whole
+from skcable.errors import InputError
+
+__all__ = [
+    "BVP_ELEMENTS",
+    "LineInSea",
+    "LineInSeaBetween",
+    "ModelChoice",
+    "SlopeModel",
+    "SlopeSolution",
+    "placed_line",
+    "solve_line_in_sea",
+]
+
+#: elements of the 3-D line BVP of a line in the sea (the error estimate solves on half as many)
+BVP_ELEMENTS = 96
+
+
+@dataclass(frozen=True)
+class ModelChoice:
+    """Which model solved a line, why, and its estimated relative error in the end forces.
+
+    Attributes
+    ----------
+    name : str
+        ``"closed form"``, ``"closed form (slope)"``, ``"closed form (axial laws)"`` or
+        ``"3-D line BVP"``.
+    reason : str
+        Why (module docstring).
+    error : float
+        Estimated relative error of the end forces (-).
+    """
+
+    name: str
+    reason: str
+    error: float
+
+    def __str__(self):
+        return f"{self.name}: {self.reason} (estimated error {self.error:.1e})"
+
+
+class LineInSea:
+    """A `skcable.mooring.Line` solved between ``anchor`` and ``fairlead`` (module docstring).
+
+    Attributes
+    ----------
+    line : Line
+    anchor, fairlead : ndarray (3,)
+        The ends (m), z up.
+    result : Line3D or LineBVP3DSolution
+        What the model gave in space.
+    solution : LineSolution, LawLineSolution or LineBVP3DSolution
+        The closed form's 2-D solution in the plane of the ends (``Line3D.solution``), or the
+        BVP's.
+    model : ModelChoice
+        Which model ran, why, and its estimated error (the BVP's estimate, a second solve on
+        half the elements, is computed when first asked for).
+    force_on_anchor, force_on_fairlead : ndarray (3,)
+        The line's forces on its ends (N), global axes.
+    tension_at_anchor, tension_at_fairlead : float
+        Their magnitudes (N).
+    """
+
+    def __init__(self, line, anchor, fairlead, result, name, reason, error=None, end_loads=(0.0, 0.0)):
+        self.line, self.anchor, self.fairlead = line, anchor, fairlead
+        self.result, self.name, self.reason, self._error = result, name, reason, error
+        self.end_loads = end_loads
+        self.solution = getattr(result, "solution", result)
+        solution = result
+        self.force_on_anchor = np.array(solution.force_on_anchor, dtype=float)
+        self.force_on_fairlead = np.array(solution.force_on_fairlead, dtype=float)
+        self.force_on_anchor[2] -= end_loads[0]  # attachments at the ends pull their supports down
+        self.force_on_fairlead[2] -= end_loads[1]
+        self.tension_at_anchor = float(np.linalg.norm(self.force_on_anchor))
+        self.tension_at_fairlead = float(np.linalg.norm(self.force_on_fairlead))
+        if not (np.isfinite(self.force_on_anchor).all() and np.isfinite(self.force_on_fairlead).all()):
+            raise InputError("line", "the line's solution has non-finite end forces")
+
+    def __getattr__(self, name):
+        # the closed form's other attributes (`Line3D`: ``H``, ``V_B``, ``direction``, ...), as
+        # ``line_3d`` gave them before it returned a LineInSea for a Line
+        if name.startswith("_") or name in ("result", "solution", "name", "line"):
+            raise AttributeError(name)
+        if self.name != "3-D line BVP" and hasattr(self.result, name):
+            return getattr(self.result, name)
+        raise AttributeError(f"{type(self).__name__} of the {self.name} has no attribute {name!r}")
+
+    @cached_property
+    def model(self) -> ModelChoice:
+        """Which model ran, why, and its estimated error (`ModelChoice`)."""
+        error = self._error if self._error is not None else _bvp_error(self)
+        return ModelChoice(self.name, self.reason, max(float(error), 1e-15))
+
+    @property
+    def bvp(self) -> bool:
+        """Whether the 3-D line BVP solved the line."""
+        return self.name == "3-D line BVP"
+
+    @property
+    def end_forces(self) -> np.ndarray:
+        """The line's forces on its ends, anchor then fairlead (N), (2, 3)."""
+        return np.array([self.force_on_anchor, self.force_on_fairlead])
+
+    def profile_with_tension(self, n: int = 101) -> tuple[np.ndarray, np.ndarray]:
+        """``(points (n, 3), tension (n,))`` (m, N) at ``n`` points evenly spaced in unstretched arc
+        length from the anchor."""
+        return self.result.profile_with_tension(whole("n", n, 2))
+
+    def profile(self, n: int = 101) -> np.ndarray:
+        """Positions ``(n, 3)`` (m) evenly spaced in unstretched arc length from the anchor."""
+        return self.profile_with_tension(n)[0]
+
+    def T_of_s(self, s):
+        """Tension (N) at unstretched arc length ``s`` (m) from the anchor."""
+        return self.result.T_of_s(s)
+
+    def stiffness(self) -> np.ndarray:
+        """The fairlead stiffness ``−∂F_b/∂b`` (N/m), 3 × 3, global axes, the anchor fixed (the
+        static one)."""
+        return np.asarray(self.result.stiffness(), dtype=float)
+
+    def tensions(self):
+        """The solution's tension table (pandas DataFrame, one row per segment)."""
+        return self.result.tensions()
+
+    @property
+    def equilibrium_residual(self) -> float:
+        """N/m (module docstring)."""
+        if self.bvp:
+            return float(self.result.equilibrium_residual)
+        sol = self.solution
+        if isinstance(sol, SlopeSolution):
+            return sol.residual() * self.line.weight / self.line.length
+        seabed = float(getattr(sol, "seabed_reaction", 0.0))
+        friction = (sol.H - sol.H_A) * self.result.direction
+        total = self.end_forces.sum(axis=0) + np.array([*friction[:2], self.line.weight - seabed])
+        return float(np.linalg.norm(total)) / self.line.length
+
+    def __repr__(self):
+        Fb = self.force_on_fairlead
+        return (
+            f"LineInSea(model={self.name!r}, force_on_fairlead=[{Fb[0]:.6g}, {Fb[1]:.6g}, "
+            f"{Fb[2]:.6g}] N, tension_at_fairlead={self.tension_at_fairlead:.6g} N)"
+        )
+
+
+def _relative_seabed(line, anchor):
+    """The line's seabed relative to the anchor (m) for the closed forms, or None; the flat
+    `Bathymetry` placed at the anchor (``0`` where the anchor lies on it)."""
+    if line.bathymetry is None:
+        return line.seabed
+    rel = float(line.bathymetry.flat) - float(anchor[2])
+    if rel > 1e-9 * max(1.0, abs(float(anchor[2]))):
+        raise InputError("seabed", f"must be at or below the anchor, got {rel:g} m above it")
+    return 0.0 if abs(rel) <= 1e-9 * max(1.0, abs(float(anchor[2]))) else rel
+
+
+class SlopeModel:
+    """A one-segment `Line` on a plane slope along it, as a line model: ``solve(span, dh)`` is
+    `skcable.cable.sloped_seabed_catenary` (``seabed_slope`` the slope along the line, -)."""
+
+    def __init__(self, line, seabed_slope: float):
+        self.line, self.seabed_slope = line, float(seabed_slope)
+
+    def solve(self, span, dh):
+        from skcable.cable.seabed import sloped_seabed_catenary
+
+        seg = self.line.segments[0]
+        solved = sloped_seabed_catenary(
+            span, dh, seg.w, seg.EA, length=seg.length, seabed_slope=self.seabed_slope,
+            friction=self.line.friction,
+        )  # fmt: skip
+        return SlopeSolution(solved)
+
+
+class SlopeSolution:
+    """A `SlopedSeabedCatenary` with the 2-D solution's ``x_of_s``, ``y_of_s`` of a line model."""
+
+    def __init__(self, solved):
+        self.solved = solved
+        for name in ("H", "H_A", "V_A", "V_B", "length", "length_on_seabed", "x_touchdown"):
+            setattr(self, name, getattr(solved, name))
+
+    def x_of_s(self, s):
+        return self.solved.xy(s)[..., 0]
+
+    def y_of_s(self, s):
+        return self.solved.xy(s)[..., 1]
+
+    def T_of_s(self, s):
+        return self.solved.T_of_s(s)
+
+    def stiffness(self):
+        return self.solved.stiffness()
+
+    def tensions(self):
+        return self.solved.tensions()
+
+    def residual(self) -> float:
+        return float(self.solved.residual())
+
+
+def _along_slope(line, anchor, fairlead, span):
+    """The slope (-) of the line's `Plane` along it where the closed form on a slope holds
+    (module docstring), else None."""
+    from skcable.mooring.bathymetry import Plane
+
+    bed, segs = line.bathymetry, line.segments
+    if not (isinstance(bed, Plane) and line.current is None and len(segs) == 1 and not line.attachments):
+        return None
+    if segs[0].nonlinear or not segs[0].w > 0:
+        return None
+    e = (np.asarray(fairlead[:2]) - np.asarray(anchor[:2])) / span
+    grad = np.asarray(bed.slope, dtype=float)
+    along = float(grad @ e)
+    across = grad - along * e
+    on_bed = abs(float(anchor[2]) - float(bed.height(anchor[0], anchor[1]))) <= 1e-9 * line.length
+    if not on_bed or float(np.abs(across).max()) > 1e-12 * (1.0 + abs(along)):
+        return None
+    return along
+
+
+def _closed_form(line, anchor, fairlead, span, start, solve_in_space):
+    """`LineInSea` by the closed form (module docstring), or None where a nonlinear law rests on
+    the seabed; ``solve_in_space`` is `skcable.mooring.line3d.solve_in_plane_of_ends`."""
+    from skcable.mooring.segments.law import GroundedLaw
+
+    plain = line.variant_with_seabed(_relative_seabed(line, anchor))
+    try:
+        solved = solve_in_space(plain, anchor, fairlead, span, start)
+    except GroundedLaw:
+        return None
+    sol = solved.solution
+    if line.nonlinear:
+        name, error = "closed form (axial laws)", float(sol.history[-1]) if sol.history else 0.0
+        reason = (
+            "no current, a flat seabed, the line hangs clear of it: the laws' elongation integrated exactly"
+        )
+    else:
+        name, error = "closed form", float(sol.residual())
+        reason = "no current, a flat seabed (or none), constant EA: the elastic catenary is exact"
+    return LineInSea(line, anchor, fairlead, solved, name, reason, error)
+
+
+def bvp_model(line, n_elements: int = BVP_ELEMENTS, anchor_z: float = 0.0):
+    """The `skcable.mooring.line_bvp_3d.LineBVP3D` of ``line`` on ``n_elements`` (its seabed placed at
+    the anchor's height ``anchor_z`` where it is a float), and its end attachments ``(P_0, P_n)``
+    (N); cached on the line (a warm start needs the same model)."""
+    from skcable.mooring.line_bvp_3d import LineBVP3D, LineSegment
+
+    cache = line.__dict__.setdefault("_bvp_models", {})
+    key = (int(n_elements), None if line.seabed is None else float(anchor_z))
+    if key in cache:
+        return cache[key]
+    segments = [
+        LineSegment(s.length, s.w, s.law, s.diameter, s.cd_normal, s.cd_tangential) for s in line.segments
+    ]
+    n = len(segments)
+    inner = [(a.joint, a.force) for a in line.attachments if 0 < a.joint < n]
+    seabed = line.bathymetry
+    if seabed is None and line.seabed is not None:
+        seabed = anchor_z + line.seabed
+    model = LineBVP3D(
+        segments, attachments=inner, seabed=seabed, friction=line.friction, current=line.current,
+        rho_water=line.rho_water, n_elements=n_elements,
+    )  # fmt: skip
+    cache[key] = model, (float(line.joint_forces[0]), float(line.joint_forces[n]))
+    return cache[key]
+
+
+def _bvp_error(solved: LineInSea) -> float:
+    """The BVP's error estimate (module docstring): the line on half the elements, against it."""
+    coarse_model, _ = bvp_model(solved.line, BVP_ELEMENTS // 2, float(solved.anchor[2]))
+    fine = solved.result
+    coarse = coarse_model.solve(solved.anchor, solved.fairlead)
+    diff = np.vstack(
+        [fine.force_on_anchor - coarse.force_on_anchor, fine.force_on_fairlead - coarse.force_on_fairlead]
+    )
+    return float(np.abs(diff).max()) / max(fine.T_A, fine.T_B)
+
+
+def _by_bvp(line, anchor, fairlead, reason, start=None):
+    model, ends = bvp_model(line, BVP_ELEMENTS, float(anchor[2]))
+    previous = start.result if isinstance(start, LineInSea) and start.bvp else None
+    if previous is not None and previous.model is not model:
+        previous = None
+    fine = model.solve(anchor, fairlead, start=previous)
+    return LineInSea(line, anchor, fairlead, fine, "3-D line BVP", reason, None, ends)
+
+
+def solve_line_in_sea(line, anchor, fairlead, span: float, start, solve_in_space) -> LineInSea:
+    """``line`` between the checked float 3-vectors ``anchor`` and ``fairlead`` at the horizontal
+    distance ``span > 0`` by the model it needs (module docstring); ``start`` a previous
+    solution (a `LineInSea` or a `skcable.mooring.line3d.Line3D`) for a warm start of the
+    closed form, or None; ``solve_in_space``: `skcable.mooring.line3d.solve_in_plane_of_ends`, which
+    solves a line model in the plane of its ends (`skcable.mooring.line_3d` passes it: this
+    module is below it)."""
+    need = line.in_space
+    if need is not None and need[0] == "seabed" and line.current is None and line.bathymetry.flat is not None:
+        need = None  # a flat Bathymetry: the closed forms, placed at the anchor
+    slope = None if need is None else _along_slope(line, anchor, fairlead, span)
+    if slope is not None:
+        solved = solve_in_space(SlopeModel(line, slope), anchor, fairlead, span)
+        reason = "no current, one uniform segment anchored on a plane sloping along the line"
+        return LineInSea(
+            line, anchor, fairlead, solved, "closed form (slope)", reason, solved.solution.residual()
+        )
+    if need is None:
+        plain = start.result if isinstance(start, LineInSea) and not start.bvp else start
+        solved = _closed_form(
+            line, anchor, fairlead, span, None if isinstance(plain, LineInSea) else plain, solve_in_space
+        )
+        if solved is not None:
+            return solved
+        return _by_bvp(
+            line, anchor, fairlead, "a nonlinear axial law on a line that rests on the seabed", start
+        )
+    if not math.isfinite(span):
+        raise InputError("fairlead", "must be finite")
+    return _by_bvp(line, anchor, fairlead, need[1], start)
+
+
+def placed_line(line, depth, reverse: bool):
+    r"""The `skcable.mooring.Line` a `skcable.mooring.MooringSystem` solves for ``line``, a line in the sea
+    (a current, a `skcable.mooring.bathymetry.Bathymetry` or a nonlinear axial law), from its fixed
+    end: its segments (and attachments) in reverse order where that end is its end b
+    (``reverse``), over its own `Bathymetry` where it has one, else over the system's flat
+    seabed ``z = -depth`` (a flat `skcable.mooring.bathymetry.Plane`, in global heights as the
+    system's; none without a ``depth``); its current, friction and water density kept."""
+    from skcable.mooring.bathymetry import Plane
+    from skcable.mooring.segments import Line
+
+    segments, attachments = list(line.segments), list(line.attachments)
+    if reverse:
+        n = len(segments)
+        segments = segments[::-1]
+        attachments = [type(a)(n - a.joint, abs(a.force)) for a in attachments]
+    seabed = line.bathymetry if line.bathymetry is not None else None if depth is None else Plane(-depth)
+    friction = line.friction if seabed is not None else 0.0
+    return Line(
+        segments,
+        attachments,
+        seabed=seabed,
+        friction=friction,
+        current=line.current,
+        rho_water=line.rho_water,
+    )
+
+
+def _reversed_table(table):
+    """A segment table from the other end: rows in reverse order, renumbered, each ``*_lower``
+    column swapped with its ``*_upper``."""
+    table = table.iloc[::-1].reset_index(drop=True)
+    swap = {}
+    for name in table.columns:
+        if name.endswith("_lower") and name[:-6] + "_upper" in table.columns:
+            swap[name], swap[name[:-6] + "_upper"] = name[:-6] + "_upper", name
+    table = table.rename(columns=swap)[list(table.columns)]
+    if "segment" in table.columns:
+        table["segment"] = np.arange(len(table))
+    return table
+
+
+class LineInSeaBetween:
+    """A line in the sea of a `skcable.mooring.MooringSystem`, solved from its fixed end (a
+    `LineInSea`, anchor at the fixed point), seen from its ends a and b in the order of the
+    system's line.
+
+    Attributes
+    ----------
+    line : Line
+        The line as added to the system (segments from a to b).
+    sea : LineInSea
+        The solution from the fixed end: ``sea.anchor`` the fixed point, ``sea.fairlead`` the
+        moving one.
+    reversed : bool
+        Whether the fixed end is b (``sea`` then runs from b to a).
+    a, b : ndarray (3,)
+        The ends (m).
+    end_forces : ndarray (2, 3)
+        The line's forces on a and on b (N), global axes.
+    model, reason : str
+        The model that ran (`ModelChoice.name`) and why.
+    force_on_fairlead, tension_at_fairlead, fairlead, H
+        Of the moving end (N, m): its force, its tension, where it is and the horizontal force
+        there (what the system's assembly and its Newton method read).
+    """
+
+    def __init__(self, line, sea: LineInSea, reverse: bool):
+        self.line, self.sea, self.reversed = line, sea, bool(reverse)
+        self.a, self.b = (sea.fairlead, sea.anchor) if reverse else (sea.anchor, sea.fairlead)
+        self.end_forces = sea.end_forces[::-1].copy() if reverse else sea.end_forces
+        self.model, self.reason = sea.name, sea.reason
+        self.fairlead, self.force_on_fairlead = sea.fairlead, sea.force_on_fairlead
+        self.tension_at_fairlead = sea.tension_at_fairlead
+        self.H = float(np.hypot(*sea.force_on_fairlead[:2]))
+
+    @property
+    def model_choice(self) -> ModelChoice:
+        """Which model ran, why, and its estimated error (`LineInSea.model`)."""
+        return self.sea.model
+
+    @property
+    def solution(self):
+        """The solution from the fixed end (`LineInSea.solution`)."""
+        return self.sea.solution
+
+    @property
+    def equilibrium_residual(self) -> float:
+        """N/m (`LineInSea.equilibrium_residual`)."""
+        return self.sea.equilibrium_residual
+
+    @cached_property
+    def length_on_seabed(self) -> float:
+        """The unstretched length resting on the seabed (m): the closed form's, or the BVP's
+        contact nodes' span summed over its segments."""
+        if not self.sea.bvp:
+            return float(getattr(self.sea.solution, "length_on_seabed", 0.0))
+        return float(np.asarray(self.sea.tensions()["grounded_length"], dtype=float).sum())
+
+    @cached_property
+    def x_touchdown(self) -> float:
+        """The horizontal distance (m) from the fixed end to the touchdown, 0 without one."""
+        if not self.length_on_seabed > 0:
+            return 0.0
+        if not self.sea.bvp:
+            return float(self.sea.solution.x_touchdown)
+        where = self.sea.result.xyz(self.sea.result.s_touchdown)
+        return float(np.hypot(*(where - self.sea.anchor)[:2]))
+
+    def stiffness(self) -> np.ndarray:
+        """The moving end's stiffness ``−∂F/∂p`` (N/m), 3 × 3, global axes, the fixed end fixed."""
+        return self.sea.stiffness()
+
+    def T_of_s(self, s):
+        """Tension (N) at unstretched arc length ``s`` (m) from a."""
+        if not self.reversed:
+            return self.sea.T_of_s(s)
+        return self.sea.T_of_s(float(self.line.length) - np.asarray(s, dtype=float))
+
+    def profile_with_tension(self, n: int = 101) -> tuple[np.ndarray, np.ndarray]:
+        """``(points (n, 3), tension (n,))`` (m, N) evenly spaced in unstretched arc length from a."""
+        points, tension = self.sea.profile_with_tension(n)
+        return (points[::-1].copy(), tension[::-1].copy()) if self.reversed else (points, tension)
+
+    def profile(self, n: int = 101) -> np.ndarray:
+        """Positions ``(n, 3)`` (m) from a to b."""
+        return self.profile_with_tension(n)[0]
+
+    def tensions(self):
+        """One row per segment from a to b (`LineInSea.tensions`, turned round where b is fixed)."""
+        table = self.sea.tensions()
+        return _reversed_table(table) if self.reversed else table
+
+    def __repr__(self):
+        Ta, Tb = np.linalg.norm(self.end_forces, axis=1)
+        return f"LineInSeaBetween(model={self.model!r}, tension_a={Ta:.6g}, tension_b={Tb:.6g})"

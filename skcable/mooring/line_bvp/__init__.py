@@ -1,0 +1,38 @@
+"""A mooring line as an arc-length BVP: segments, w(s), point loads and unilateral seabed contact.
+
+`solve_line_bvp` solves one line from the anchor A = (0, 0) to the fairlead B = (span, dh) in
+the arc-length form on the unstretched arc length, positions P2 and tension P1-DG, optionally
+on a seabed of any shape with Coulomb friction. One concern per module:
+
+- `inputs`: the segments (`BVPSegment`), the point loads and every argument, checked into a
+  `Scene`;
+- `contact`: the seabed and the semismooth (primal–dual active set) contact rows;
+- `mesh`: uniform, graded (equidistributed turning), fitted and nested meshes;
+- `problem`: one discrete line — bases, properties at the quadrature points, the loads, the
+  residual and its generalized Jacobian (every call of the assembly is there);
+- `start`: the closed-form start (elastic catenary, grounded where it dips below the seabed);
+- `iterate`: one solve — damped semismooth Newton, full steps, the polish;
+- `slack`: Jonkman's slack stretch near the anchor;
+- `driver`: the continuation `LineBVPSolver` — levels, gradings, friction, fitting, checks;
+- `solution`: `LineBVPSolution`, the end forces, contact and fields;
+- `stiffness`: the fairlead stiffness from the converged tangent (implicit function theorem);
+- `model`: `solve_line_bvp` and `LineBVP`, a line model for `line_3d` and `MooringSystem`.
+
+Data flow one way: ``inputs → driver → (mesh, start, problem ⇄ contact) → iterate → solution``.
+"""
+
+from skcable.mooring.line_bvp.driver import LineBVPSolver
+from skcable.mooring.line_bvp.inputs import BVPSegment
+from skcable.mooring.line_bvp.model import LineBVP, solve_line_bvp
+from skcable.mooring.line_bvp.problem import LineProblem, LineState
+from skcable.mooring.line_bvp.solution import LineBVPSolution
+
+__all__ = [
+    "BVPSegment",
+    "LineBVP",
+    "LineBVPSolution",
+    "LineBVPSolver",
+    "LineProblem",
+    "LineState",
+    "solve_line_bvp",
+]

@@ -1,0 +1,488 @@
+r"""The continuation that takes a line from its closed-form start to the converged, fitted solution.
+
+`LineBVPSolver(scene).solve()` runs one strategy, stage by stage; each stage is a method, and
+each solve (`skcable.mooring.line_bvp.iterate.solve_on`) starts from the last stage's solution:
+
+1. **Levels** (`LineBVPSolver.solve`). A mesh of more than ``2·COARSE`` elements whose start
+   touches the seabed is reached by nested solves, from `COARSE`-odd elements up, each finished
+   solution starting the doubled mesh (the active set moves by a few nodes per Newton iteration,
+   so a fine mesh does not find its contact set from the coarse start). A level that fails from
+   the coarser solution is solved from scratch; a coarse level that fails even so is skipped
+   (the next level starts from scratch); the finest level's failure is final.
+2. **First solve** (`LineBVPSolver.first`): frictionless, on a mesh graded by the closed-form
+   start's angle (`skcable.mooring.line_bvp.mesh.start_nodes`), from that start
+   (`skcable.mooring.line_bvp.start.closed_form_start`, the uniform line), else from the
+   segment-wise closed form (`skcable.mooring.line_bvp.start.segmented_start`), else from the
+   first start with the contact nodes switching by the line's tension (`LineBVPSolver.switched`:
+   a taut line's residual forces at its start can exceed the switch of a line bent by its
+   weight).
+3. **Passes of grading** (`LineBVPSolver.graded`): the mesh graded by the last solution's angle
+   (`skcable.mooring.line_bvp.mesh.graded_nodes`), again while the elements of the bends could
+   shrink no more than ``REFINEMENT`` times at one pass (the start then puts the touchdown a
+   node or two off: nodal contact moves a few nodes per Newton iteration) or while the discrete
+   line is in compression (its bends not resolved), `GRADE_PASSES` at most.
+4. **Friction** (`LineBVPSolver.with_friction`): the frictionless line tells where friction
+   takes the whole pull (the slack stretch's first estimate,
+   `skcable.mooring.line_bvp.slack.slack_estimate`); the line is solved again with friction, with
+   a node at the touchdown too where that fails (μ = 5 on a nearly L-shaped line: friction takes
+   the whole pull 0.1–2 mm before the touchdown).
+5. **Fitting** (`LineBVPSolver.fitted`): a node at the touchdown and the landing the vertical
+   balance gives (``LineBVPSolution.s_touchdown``, ``s_landing``), ``fit_touchdown`` passes
+   while it moves more than 1e-9 of the length; and the end of the slack stretch moved
+   (`skcable.mooring.line_bvp.slack.next_slack_end`) until the tension past it is zero to ``rtol``
+   of the total load, `SLACK_PASSES` more at most, then `SLACK_PASSES` secant steps at most
+   (`LineBVPSolver.secant_slack`); with friction, graded and fitted once more where the mesh is
+   too coarse for the line with friction (`LineBVPSolver.regraded`).
+6. **Checks** (`LineBVPSolver.checked`): the friction that holds a slack stretch on a slope is
+   at most μN, every number finite, the discrete line not in compression.
+7. **Refusal** (`LineBVPSolver.solve`): a failure where the segment-wise closed form's slack
+   stretch ends at a clump weight on the seabed becomes ``InputError("point_loads")``
+   (`LineBVPSolver.clump_at_slack_end`).
+
+**A warm start** (`LineBVPSolver.solve_from`, `LineBVP.solve(start=)`): the previous solution,
+moved to the new fairlead on its own mesh (`LineBVPSolver.moved`), is the start of one level
+(stages 3 and 5, with friction from the start); from scratch where that fails.
+
+**Retries.** Every solve on a new mesh starts from the last solution interpolated onto it, else
+from the closed-form start (on a nearly L-shaped line the bend at the touchdown has the radius
+H/w, a thousandth of the length, and the interpolated bend of a coarser or differently graded
+mesh can start Newton farther off than the closed form does), else from the segment-wise one.
+Each retry is an alternative passed to `skcable.mooring.line_bvp.iterate.first_success`, which
+raises the first alternative's error when every one fails.
+"""
+
+from __future__ import annotations
+
+from functools import partial
+
+import numpy as np
+
+from skcable.errors import ConvergenceError, InputError
+from skcable.mooring.line_bvp.inputs import Scene
+from skcable.mooring.line_bvp.iterate import first_success, solve_on
+from skcable.mooring.line_bvp.mesh import (
+    COARSE,
+    fixed_nodes,
+    graded_nodes,
+    joints_of,
+    nested_sizes,
+    start_nodes,
+)
+from skcable.mooring.line_bvp.problem import LineProblem
+from skcable.mooring.line_bvp.slack import (
+    SLACK_PASSES,
+    next_slack_end,
+    slack_estimate,
+    slack_tension,
+    tension_zero,
+)
+from skcable.mooring.line_bvp.solution import LineBVPSolution
+from skcable.mooring.line_bvp.start import (
+    closed_form_start,
+    on_dofs,
+    segmented_solution,
+    segmented_start,
+    slack_end_of,
+    start_form,
+)
+
+__all__ = ["GRADE_PASSES", "LineBVPSolver"]
+
+#: gradings of the mesh at most
+GRADE_PASSES = 10
+
+
+def _with(s0, fitted=()):
+    """The points to fit: ``fitted`` and the end of the slack stretch, if any."""
+    return list(fitted) + ([s0] if s0 > 0 else [])
+
+
+class LineBVPSolver:
+    """The solver of one line BVP: the continuation of the module docstring over a `Scene`.
+
+    Parameters
+    ----------
+    scene : Scene
+        The checked scene and options (`skcable.mooring.line_bvp.inputs.scene`).
+    """
+
+    def __init__(self, scene: Scene):
+        self.scene = scene
+        lengths = np.array([seg.length for seg in scene.segments])
+        self.length = float(joints_of(lengths)[-1])
+        #: the nodes every mesh keeps (joints, point loads)
+        self.fixed = fixed_nodes(joints_of(lengths), scene.point_loads)
+
+    # --- the pieces: a problem, a solve, a solve on a new mesh --------------------------------
+    def problem(self, n, fitted=(), slack_end=0.0, mu=None, nodes_at=None) -> LineProblem:
+        """The discrete line on ``n`` elements (μ the scene's unless given)."""
+        sc = self.scene
+        mu = sc.friction if mu is None else mu
+        return LineProblem(
+            sc.span, sc.dh, sc.segments, sc.point_loads, sc.seabed, mu, n,
+            fitted=fitted, slack_end=slack_end, nodes_at=nodes_at, terms=sc.terms,
+        )  # fmt: skip
+
+    def run(self, problem, z0) -> LineBVPSolution:
+        """One solve of ``problem`` from ``z0`` with the scene's Newton options."""
+        return solve_on(problem, z0, self.scene.options)
+
+    def restart(self, solution, problem):
+        """``solution`` interpolated onto ``problem``'s dofs."""
+        xy = solution.xy(problem.basis.doflocs[0])
+        tension = solution.tension(np.clip(problem.tbasis.doflocs[0], 0.0, self.length))
+        return np.concatenate([xy[:, 0], xy[:, 1], tension])
+
+    def switched(self, problem, z0) -> LineBVPSolution:
+        """One solve of ``problem`` from ``z0`` with its contact nodes switching by the line's
+        tension (`LineProblem.with_tension_switch`); a `ConvergenceError` without contact."""
+        other = problem.with_tension_switch(z0)
+        if other is None:
+            raise ConvergenceError("solve_line_bvp: no contact rows to switch by tension", [])
+        return self.run(other, z0)
+
+    def from_segments(self, problem) -> LineBVPSolution:
+        """The line of ``problem`` from the segment-wise closed-form start (`segmented_start`);
+        a `ConvergenceError` where there is none."""
+        z0 = segmented_start(problem)
+        if z0 is None:
+            raise ConvergenceError("solve_line_bvp: no segment-wise closed form of this line", [])
+        return self.run(problem, z0)
+
+    def rerun(self, problem, solution) -> LineBVPSolution:
+        """The line on ``problem``'s mesh from ``solution`` interpolated onto it, else from the
+        closed-form start, else from the segment-wise one."""
+        return first_success(
+            lambda: self.run(problem, self.restart(solution, problem)),
+            lambda: self.run(problem, closed_form_start(problem)),
+            lambda: self.from_segments(problem),
+        )
+
+    def edges(self, solution):
+        """The touchdown and the landing to put nodes at (none without fitting or contact)."""
+        if not (self.scene.fit_touchdown and solution.s_touchdown > 0):
+            return []
+        return [solution.s_touchdown] + ([solution.s_landing] if solution.s_landing > 0 else [])
+
+    def compressed(self, solution) -> bool:
+        """Whether the discrete line is in compression beyond ``1e3 rtol`` of the total load."""
+        floor = -1e3 * self.scene.options.tol * solution.problem.load_scale
+        return bool(np.min(solution.fields()[2]) < floor)
+
+    # --- the stages ---------------------------------------------------------------------------
+    def solve(self) -> LineBVPSolution:
+        """The line on the scene's mesh: one level, or nested levels (module docstring, 1); a
+        failure where the slack stretch ends at a clump weight on the seabed refused
+        (`clump_at_slack_end`)."""
+        try:
+            return self.levels()
+        except ConvergenceError:
+            clump = self.clump_at_slack_end()
+            if clump is None:
+                raise
+            raise InputError(
+                "point_loads",
+                f"the slack stretch near the anchor ends at the point load at s = {clump:.6g} m, which "
+                "rests on the seabed with its friction only partly mobilised: this BVP does not model "
+                "that state (mooring.Line solves it in closed form)",
+            ) from None
+
+    def solve_from(self, previous) -> LineBVPSolution:
+        """The line from ``previous``, a solution of the same line at another fairlead: moved to
+        this one on its mesh (`moved`), then graded and fitted as a level from it; from
+        scratch (`solve`) where that fails."""
+        try:
+            return self.checked(self.level(self.scene.n_elements, self.moved(previous)))
+        except ConvergenceError:
+            return self.solve()
+
+    def moved(self, previous) -> LineBVPSolution:
+        """``previous`` solved again at this scene's fairlead on its own mesh (its slack stretch
+        kept), from its shape moved to the new ends in proportion to the arc length:
+        ``x(s) + (span - span₀) s/L``, ``y(s) + (dh - dh₀) s/L``."""
+        sc, old = self.scene, previous.problem
+        nodes = np.sort(old.mesh.p[0])
+        problem = self.problem(nodes.size - 1, _with(old.slack_end), old.slack_end, sc.friction, nodes)
+        z0 = self.restart(previous, problem)
+        share = problem.basis.doflocs[0] / self.length
+        z0[: problem.N] += (sc.span - previous.span) * share
+        z0[problem.N : 2 * problem.N] += (sc.dh - previous.dh) * share
+        z0[problem.end_b], z0[problem.N + problem.end_b] = sc.span, sc.dh
+        return self.run(problem, z0)
+
+    def clump_at_slack_end(self):
+        """The arc length (m) of the downward point load where the segment-wise closed form's
+        slack stretch ends, or None (no friction, no such load, or no closed form).
+
+        A clump weight resting on the seabed near the anchor can end the slack stretch itself:
+        the tension jumps there by the friction the clump mobilises, only partly (the share of
+        ``μN`` that the pull needs). The BVP's slack stretch ends at a node where the friction is
+        fully mobilised beyond it (`skcable.mooring.line_bvp.slack`): the tension past its end has
+        no zero then (negative for every end before the clump, positive after it), and the solve
+        fails. `skcable.mooring.Line` (Jonkman's grounded pieces, applied piece by piece) gives
+        that state.
+        """
+        sc = self.scene
+        loads = [s for s, P in sc.point_loads if P > 0]
+        if not (sc.friction > 0 and sc.seabed is not None and loads):
+            return None
+        line = segmented_solution(self.problem(COARSE), sc.friction)
+        if line is None:
+            return None
+        step = 1e-9 * self.length
+        for s in loads:
+            if line.T_of_s(s - step) <= 0.0 < line.T_of_s(s + step):
+                return float(s)
+        return None
+
+    def levels(self) -> LineBVPSolution:
+        """One level, or nested levels (module docstring, 1), checked."""
+        n, bed = self.scene.n_elements, self.scene.seabed
+        if n > 2 * COARSE and bed is not None:
+            probe = self.problem(n, mu=0.0)
+            if np.any(probe.gaps(closed_form_start(probe)) <= 0):
+                return self.checked(self.nested(n))
+        return self.checked(self.level(n))
+
+    def nested(self, n) -> LineBVPSolution:
+        """Nested levels up to ``n`` elements, each from the last (module docstring, 1)."""
+        solution = None
+        for size in nested_sizes(n):
+            try:
+                solution = self.level(size, solution)
+            except ConvergenceError:
+                if solution is None and size == n:
+                    raise
+                if solution is None:
+                    continue  # this coarse level failed from scratch: the next one starts so
+                if size == n:
+                    solution = self.level(size)  # from scratch, its failure final
+                else:
+                    try:
+                        solution = self.level(size)
+                    except ConvergenceError:
+                        solution = None
+        assert solution is not None, "the finest level returns or raises"
+        return solution
+
+    def level(self, n, start=None) -> LineBVPSolution:
+        """The line on ``n`` elements, from scratch or from ``start`` (the finished solution on
+        a coarser mesh): stages 2–5."""
+        if start is None:
+            solution, s0, fitted = self.first(n), 0.0, []
+        else:
+            solution, s0, fitted = start, start.problem.slack_end, self.edges(start)
+        mu_now = self.scene.friction if start is not None else 0.0
+        graded = None
+        if self.scene.fit_touchdown:
+            solution, graded = self.graded(n, solution, fitted, s0, mu_now)
+        elif start is not None:
+            solution = self.rerun(self.problem(n, _with(s0), s0), solution)
+        if start is None and self.scene.friction > 0:
+            solution, s0, fitted = self.with_friction(n, solution, graded)
+            solution = self.fitted(n, solution, s0, fitted, graded)
+            return self.regraded(n, solution)
+        return self.fitted(n, solution, s0, fitted, graded)
+
+    def regraded(self, n, solution) -> LineBVPSolution:
+        """The line with friction graded again and fitted again, where its mesh (graded by the
+        frictionless line) is too coarse for it: where its own grading asks for elements more
+        than ``REFINEMENT`` times smaller somewhere (a heavy chain whose friction holds a light
+        rope: the bend at the touchdown tightened from 0.4 m to 6 cm of radius)."""
+        if not (self.scene.fit_touchdown and graded_nodes(solution, n, self.fixed)[1]):
+            return solution
+        s0, fitted, mu = solution.problem.slack_end, self.edges(solution), self.scene.friction
+        solution, graded = self.graded(n, solution, fitted, s0, mu)
+        return self.fitted(n, solution, s0, fitted, graded)
+
+    def first(self, n) -> LineBVPSolution:
+        """The frictionless line from the closed-form start, on a mesh graded by it when the
+        touchdown is fitted; from the segment-wise closed form where that fails, or where it
+        leaves the discrete line in compression (a spurious branch: a clump weight at the bottom
+        of a U-shaped line under a uniform start) and the segment-wise start does not."""
+        problem = self.problem(n, mu=0.0)
+        if self.scene.fit_touchdown:
+            problem = self.problem(n, mu=0.0, nodes_at=start_nodes(start_form(problem), self.fixed, n))
+        solution = first_success(
+            lambda: self.run(problem, closed_form_start(problem)),
+            lambda: self.from_segments(problem),
+            lambda: self.switched(problem, closed_form_start(problem)),
+        )
+        if self.compressed(solution):
+            other = first_success(lambda: self.from_segments(problem), lambda: solution)
+            solution = solution if self.compressed(other) else other
+        return solution
+
+    def graded(self, n, solution, fitted, s0, mu):
+        """Passes of grading by the last solution's angle (module docstring, 3): the solution and
+        the last graded nodes."""
+        for _ in range(GRADE_PASSES):
+            graded, capped = graded_nodes(solution, n, self.fixed)
+            solution = self.rerun(self.problem(n, _with(s0, fitted), s0, mu, graded), solution)
+            if not (capped or self.compressed(solution)):
+                break
+        return solution, graded
+
+    def with_friction(self, n, frictionless, graded):
+        """The line with friction from the frictionless one (module docstring, 4): the solution,
+        the end of the slack stretch and the points fitted. Three alternatives, in turn
+        (`first_success`): from the frictionless line on its mesh, with a node at its
+        touchdown too, from the segment-wise closed form with friction."""
+        anchored = frictionless.problem.anchor_on_seabed
+        s0 = slack_estimate(frictionless, self.scene.friction) if anchored else 0.0
+        solution, s0, fitted = first_success(
+            lambda: self.from_frictionless(n, frictionless, graded, s0, []),
+            lambda: self.from_frictionless(n, frictionless, graded, s0, self.edges(frictionless)),
+            lambda: self.from_closed_friction(n, frictionless, graded),
+        )
+        if s0 == 0 and anchored:
+            s0 = tension_zero(solution, 1e3 * self.scene.options.tol * solution.problem.load_scale)
+        return solution, s0, fitted
+
+    def from_frictionless(self, n, frictionless, graded, s0, fitted):
+        """``(solution, s0, fitted)``: the line with friction and a slack stretch ending at
+        ``s0`` from the frictionless line, nodes at ``fitted``."""
+        problem = self.problem(n, _with(s0, fitted), s0, self.scene.friction, graded)
+        return self.rerun(problem, frictionless), s0, fitted
+
+    def from_closed_friction(self, n, frictionless, graded):
+        """``(solution, s0, fitted)``: the line with friction from the segment-wise closed form
+        with friction and its slack stretch (`slack_end_of`), a node at the frictionless
+        touchdown; a `ConvergenceError` where there is no such closed form."""
+        line = segmented_solution(frictionless.problem, self.scene.friction)
+        if line is None:
+            raise ConvergenceError("solve_line_bvp: no segment-wise closed form of this line", [])
+        end = slack_end_of(line, self.length) if frictionless.problem.anchor_on_seabed else 0.0
+        fitted = self.edges(frictionless)
+        problem = self.problem(n, _with(end, fitted), end, self.scene.friction, graded)
+        return self.run(problem, on_dofs(problem, line)), end, fitted
+
+    def fitted(self, n, solution, s0, fitted, graded) -> LineBVPSolution:
+        """Nodes at the touchdown and landing, and the end of the slack stretch, moved until they
+        settle (module docstring, 5)."""
+        fit = self.scene.fit_touchdown
+        slack_tol = self.scene.options.tol * solution.problem.load_scale
+        edge_passes = 0
+        tried: list[tuple[float, float]] = []  # (end, tension past it) of the settled solves
+        for _ in range(fit + SLACK_PASSES):
+            fitted, edges_moved, settled = self.moved_edges(solution, fitted, edge_passes < fit or s0 > 0)
+            edge_passes += edges_moved
+            s0, end_moved = self.moved_slack_end(solution, s0, tried, settled, slack_tol)
+            if not (edges_moved or end_moved):
+                break
+            problem = self.problem(n, _with(s0, fitted), s0, self.scene.friction, graded)
+            solution = self.rerun(problem, solution)
+        if s0 > 0 and not abs(slack_tension(solution)[0]) <= slack_tol:
+            solution = self.secant_slack(n, solution, fitted, graded, slack_tol)
+        if solution.problem.slack_end > 0:
+            g, _ = slack_tension(solution)
+            if not abs(g) <= slack_tol:
+                raise ConvergenceError(
+                    "solve_line_bvp: the end of the slack stretch near the anchor was not found "
+                    f"(tension {g:.3g} N there after {len(tried)} updates)",
+                    solution.history,
+                )
+        return solution
+
+    def secant_slack(self, n, solution, fitted, graded, tol) -> LineBVPSolution:
+        """More passes on the end of the slack stretch, each a secant step on the last two (end,
+        tension past it) pairs, bracketed as in `next_slack_end`, with the touchdown fitted
+        until it settles as well (`SLACK_PASSES` plus ``fit_touchdown`` at most).
+
+        The Newton step of the first passes takes the tension's growth with the end from the
+        friction alone, ``μ w``; where the end moves the whole line (a compliant rope at the
+        anchor under a heavy chain: H grew from 850 N to 1480 N while the end moved 2.5 m) the
+        tension past it falls by a constant factor per pass instead, and the secant restores
+        the superlinear convergence. Where the stretch vanishes (the secant passes the anchor),
+        the touchdown is fitted anew for the line without it."""
+        pairs = []
+        for _ in range(SLACK_PASSES + self.scene.fit_touchdown):
+            fitted, moved, _ = self.moved_edges(solution, fitted, True)
+            s0, step = solution.problem.slack_end, False
+            if s0 > 0:
+                g, slope = slack_tension(solution)
+                if abs(g) > tol:
+                    pairs.append((s0, g))
+                    if len(pairs) > 1:
+                        (s1, g1), (s2, g2) = pairs[-2:]
+                        secant = (g2 - g1) / (s2 - s1) if s2 != s1 else 0.0
+                        slope = secant if secant > 0 else slope
+                    s0, step = next_slack_end(pairs, slope, solution.s_touchdown), True
+            if not (step or moved):
+                break
+            problem = self.problem(n, _with(s0, fitted), s0, self.scene.friction, graded)
+            solution = self.rerun(problem, solution)
+        return solution
+
+    def moved_edges(self, solution, fitted, look):
+        """The touchdown and landing of ``solution`` where they moved more than 1e-9 of the
+        length from the nodes ``fitted`` (and ``look``): ``(fitted, moved, settled)``, settled
+        when they moved less than 1e-6 of it (the tension past the slack stretch's end is worth a
+        bracket only then)."""
+        if not look:
+            return fitted, False, True
+        L, edges, moved = self.length, self.edges(solution), np.inf
+        if len(edges) == len(fitted):
+            moved = max((abs(a - b) for a, b in zip(edges, fitted, strict=True)), default=0.0)
+        if moved > 1e-9 * L:
+            return edges, True, moved <= 1e-6 * L
+        return fitted, False, True
+
+    def moved_slack_end(self, solution, s0, tried, settled, tol):
+        """The next end of the slack stretch (`next_slack_end`) where the tension past the one
+        ``solution`` was solved with exceeds ``tol``, or where ``s0`` is not yet that one:
+        ``(s0, moved)``; a settled solution's (end, tension) goes into ``tried``."""
+        slack_end = solution.problem.slack_end
+        if not (s0 > 0 or slack_end > 0):
+            return s0, False
+        if slack_end != s0:
+            return s0, True
+        g, slope = slack_tension(solution)
+        if not abs(g) > tol:
+            return s0, False
+        s0 = next_slack_end([*tried, (s0, g)], slope, solution.s_touchdown)
+        if settled:
+            tried.append((slack_end, g))
+        return s0, True
+
+    def checked(self, solution) -> LineBVPSolution:
+        """The solution, once its checks hold (module docstring, 6)."""
+        problem, friction = solution.problem, self.scene.friction
+        slack_tol = self.scene.options.tol * problem.load_scale
+        s0 = problem.slack_end
+        if s0 > 0:
+            # the friction that holds the slack stretch (its tangential force) is at most μN
+            on = solution.contact_s < s0
+            slope = problem.seabed.slope(solution.contact_xy[on, 0])
+            force = solution.contact_force[on]
+            tangential = np.abs(force[:, 0] + slope * force[:, 1]) / np.sqrt(1.0 + slope * slope)
+            if np.any(tangential > friction * solution.normal_force[on] + slack_tol):
+                raise InputError(
+                    "friction",
+                    "too weak to hold the slack stretch near the anchor on the sloping seabed "
+                    "(the line would slide down it)",
+                )
+        values = (solution.H, solution.V_B, solution.H_A, solution.V_A)
+        if not all(np.isfinite(values)) or not np.all(np.isfinite(solution.dofs)):
+            raise ConvergenceError("solve_line_bvp: non-finite result", solution.history)
+        T = solution.fields()[2]
+        if np.min(T) < -1e3 * self.scene.options.tol * problem.load_scale:
+            raise ConvergenceError(
+                "solve_line_bvp: the discrete line is in compression "
+                f"(min T = {np.min(T):.3g} N, H = {solution.H:.3g} N): "
+                + (
+                    "fully mobilised friction with the anchor above the seabed"
+                    if friction > 0 and not problem.anchor_on_seabed
+                    else f"{problem.mesh.t.shape[1]} elements do not resolve its bends; give more"
+                ),
+                solution.history,
+            )
+        solution.slack_solver = partial(self.at_slack_end, solution) if s0 > 0 else None
+        return solution
+
+    def at_slack_end(self, solution, s0) -> LineBVPSolution:
+        """``solution``'s line re-solved from it on its mesh with the slack stretch ending at
+        ``s0`` instead (its node moved there): for the stiffness along the slack end."""
+        nodes = np.sort(solution.problem.mesh.p[0])
+        problem = self.problem(nodes.size - 1, [s0], s0, self.scene.friction, nodes)
+        return self.rerun(problem, solution)

@@ -1,0 +1,222 @@
+r"""Meshes of the unstretched arc length: uniform, graded by the line's turning, fitted, nested.
+
+- `line_nodes`: the nodes of one solve: uniform per segment (joints and point loads are nodes),
+  or given (a graded mesh), with nodes put at fitted points (the touchdown, the landing, the end
+  of a slack stretch);
+- `start_nodes`: the first solve's grading, from the closed-form start's angle;
+- `graded_nodes`: each later solve's grading, from the last solution's angle;
+- `nested_sizes`: the element counts of nested solves, from `COARSE` elements up.
+
+The gradings equidistribute a monitor function (W. Huang, R.D. Russell, "Adaptive Moving Mesh
+Methods", Springer, 2011, ch. 2): ``1 + L |dθ/ds|`` (θ the line's angle to the horizontal), or
+``1 + L max(|dθ/ds|, |d ln cos θ/ds|)`` on a line whose ``cos θ`` varies more than tenfold, with
+neighbouring elements within a factor ``1 + GROWTH`` (`smoothed`).
+"""
+
+from __future__ import annotations
+
+import numpy as np
+from scipy.optimize import brentq
+
+from skcable._checks import positive, require
+
+__all__ = [
+    "COARSE",
+    "GROWTH",
+    "REFINEMENT",
+    "TAIL_RATIO",
+    "equidistributed",
+    "fixed_nodes",
+    "graded_nodes",
+    "joints_of",
+    "line_nodes",
+    "nested_sizes",
+    "smoothed",
+    "start_nodes",
+    "with_fitted",
+]
+
+#: elements of the first solve of a fine mesh whose start touches the seabed
+COARSE = 32
+#: how much finer an element may get at one grading
+REFINEMENT = 4.0
+#: growth of the element size per length away from small elements (neighbours differ by 1.5 at most)
+GROWTH = 0.5
+#: the monitor's tail term only on lines whose cos θ (= H/T on a catenary) varies more than tenfold
+TAIL_RATIO = float(np.log(10.0))
+
+
+def fixed_nodes(joints, point_loads) -> np.ndarray:
+    """The nodes every mesh keeps: the joints (ends included) and the point loads (m)."""
+    return np.unique(np.concatenate([joints, [s_p for s_p, _ in point_loads]]))
+
+
+def joints_of(lengths) -> np.ndarray:
+    """The joints of segments of unstretched ``lengths`` (m), from 0 to the length."""
+    return np.concatenate([[0.0], np.cumsum(lengths)])
+
+
+def line_nodes(lengths, point_loads, n_elements, fitted=(), nodes_at=None) -> np.ndarray:
+    """The nodes (unstretched arc length, m) of a solve on ``n_elements`` over segments of
+    ``lengths`` (m): uniform per segment (its share of ``n_elements`` by length, at least one),
+    or ``nodes_at`` (a graded mesh), joints and point loads always nodes; then a node at each
+    ``fitted`` point (`with_fitted`)."""
+    joints = joints_of(lengths)
+    L = float(joints[-1])
+    n = positive("n_elements", n_elements)
+    require("n_elements", n == int(n), "must be a whole number", n)
+    per = np.maximum(1, np.round(int(n) * lengths / L)).astype(int)
+    pieces = [np.linspace(a, b, k + 1) for a, b, k in zip(joints[:-1], joints[1:], per, strict=True)]
+    nodes = np.unique(np.concatenate([*pieces, [s for s, _ in point_loads]]))
+    if nodes_at is not None:  # a graded mesh: joints and point loads stay nodes
+        nodes = np.unique(np.concatenate([nodes_at, joints, [s for s, _ in point_loads]]))
+    return with_fitted(nodes, fitted, joints, point_loads)
+
+
+def with_fitted(nodes, fitted, joints, point_loads) -> np.ndarray:
+    """``nodes`` with a node at each ``fitted`` point: the nearest inner node moved there when it
+    is closer than a quarter of an element and is neither a joint, a point load nor fitted
+    already, else a node inserted (unless one lies within 1e-9 of the length)."""
+    L = float(joints[-1])
+    loads = [s for s, _ in point_loads]
+    placed: list[float] = []
+    for s_fit in fitted:
+        k = int(np.argmin(np.abs(nodes - s_fit)))
+        spacing = np.min(np.diff(nodes[max(k - 1, 0) : k + 2]))  # of the elements at that node
+        movable = 0 < k < len(nodes) - 1 and not np.any(np.isclose(nodes[k], joints))
+        movable = movable and not any(np.isclose(nodes[k], s) for s in [*placed, *loads])
+        placed.append(s_fit)
+        if movable and abs(nodes[k] - s_fit) < 0.25 * spacing:
+            nodes[k] = s_fit
+        elif np.min(np.abs(nodes - s_fit)) > 1e-9 * L:
+            nodes = np.sort(np.append(nodes, s_fit))
+    return nodes
+
+
+def graded_nodes(solution, n_elements, fixed, refinement=REFINEMENT):
+    """Mesh nodes (unstretched arc length, m) equidistributing
+    ``1 + L max(|dθ/ds|, |d ln cos θ/ds|)`` over the line, no element smaller than
+    ``1/refinement`` of the solution's element there; and whether that bound held anywhere
+    (another pass would refine further).
+
+    θ(s) is the solution's angle to the horizontal (``solution.angle``, on ``solution.mesh``), so
+    the density is one per length plus the turning of the line per length: a slack line's
+    elements gather where it bends, near its touchdown or its lowest point, instead of lying on
+    the seabed where it is straight. Where the line is steeper than 45° the second term,
+    ``|d ln cos θ/ds| = |tan θ| |dθ/ds|``, takes over: past the bend of a nearly L-shaped line
+    (radius ``r = H/w``) the catenary's ``x = r asinh(σ/r)`` grows like ``r ln σ`` (σ the
+    arc length past the touchdown) while ``|dθ/ds| = r/σ²`` falls fast; ``cos θ = r/σ`` there,
+    so the second term is ``1/σ``, a geometric grading that interpolates the logarithm (the
+    horizontal closure that sets H) instead of leaving its P2 error at ``r`` times a constant
+    (H converged like h, 3e-4 of H at 80 elements, before it). The term is used only on a line
+    whose ``cos θ`` varies more than tenfold (``ln`` of the ratio above ``TAIL_RATIO``): taut
+    and ordinary lines keep the turning monitor. The bound keeps each solve's
+    start (the previous solution interpolated) within a node or two of its contact set. Each
+    stretch between the ``fixed`` nodes (joints and point loads) gets its share (at least one
+    element) of the ``n_elements``.
+    """
+    L = float(fixed[-1])
+    old = np.sort(solution.mesh.p[0])
+    h_old = np.diff(old)
+    cells = 16  # per element of the solution: its turning is measured inside each element, so
+    # that the kink of a point load or a joint (a node of every mesh) draws no elements
+    fraction = (np.arange(cells) + 0.5) / cells
+    inside = old[:-1, None] + fraction[None, :] * h_old[:, None]  # (ne, cells)
+    theta = np.unwrap(solution.angle(inside.ravel()).reshape(inside.shape), axis=1)
+    turning = np.abs(np.gradient(theta, axis=1)) / (h_old[:, None] / cells)
+    cosine = np.log(np.maximum(np.abs(np.cos(theta)), 1e-12))
+    stretching = np.abs(np.gradient(cosine, axis=1)) / (h_old[:, None] / cells)
+    ds = np.repeat(h_old / cells, cells)
+    if np.sum(stretching.ravel() * ds) <= TAIL_RATIO:  # cos θ = H/T varies less than tenfold
+        stretching = 0.0
+    rho = (1.0 + L * np.maximum(turning, stretching)).ravel()
+    h_old = np.repeat(h_old, cells)
+    s = np.concatenate([[0.0], np.cumsum(ds)])
+    s[-1] = L
+
+    def density(scale):  # elements per length: the monitor over scale, at most refinement / h_old
+        return np.minimum(rho / scale, refinement / h_old)
+
+    total = np.sum(rho * ds)
+    if np.sum(refinement / h_old * ds) <= n_elements:
+        scale = 0.0
+    else:
+        scale = brentq(lambda c: np.sum(density(c) * ds) - n_elements, 1e-12 * total / n_elements, total)
+    rate = density(scale) if scale > 0 else refinement / h_old
+    capped = bool(np.any(rho / max(scale, 1e-300) > refinement / h_old * (1 + 1e-9)))
+    rate = smoothed(s, rate, n_elements)
+    mass = np.concatenate([[0.0], np.cumsum(rate * ds)])
+    return equidistributed(fixed, s, mass, n_elements), capped
+
+
+def smoothed(s, rate, n_elements, growth=None):
+    """Elements per length ``rate`` on the intervals of ``s``, raised where the element size
+    ``h = 1/rate`` would grow faster than ``growth`` per length away from small elements (a mesh
+    whose neighbouring elements differ by a factor ``1 + growth`` at most), and scaled back to
+    ``n_elements`` in all: ``h_i = min_j (h_j + growth |m_i - m_j|)``, m the midpoints, two running
+    minima."""
+    growth = GROWTH if growth is None else growth
+    m = 0.5 * (s[1:] + s[:-1])
+    ds = np.diff(s)
+    for _ in range(3):
+        h = 1.0 / rate
+        forward = growth * m + np.minimum.accumulate(h - growth * m)
+        backward = -growth * m + np.minimum.accumulate((h + growth * m)[::-1])[::-1]
+        rate = 1.0 / np.minimum(forward, backward)
+        rate *= n_elements / np.sum(rate * ds)
+    return rate
+
+
+def equidistributed(fixed, s, mass, n_elements):
+    """Nodes at equal steps of ``mass(s)`` (increasing, sampled at ``s``), each stretch between
+    the ``fixed`` nodes (sorted, from 0 to the length) getting its share (at least one element)
+    of ``n_elements``."""
+    L = float(fixed[-1])
+    at_fixed = np.interp(fixed, s, mass)
+    share = np.diff(at_fixed) / at_fixed[-1]
+    counts = np.maximum(1, np.round(n_elements * share)).astype(int)
+    stretches = [  # the nodes inside each stretch; its ends are the fixed nodes themselves
+        np.interp(np.linspace(a, b, k + 1)[1:-1], mass, s)
+        for a, b, k in zip(at_fixed[:-1], at_fixed[1:], counts, strict=True)
+    ]
+    inner = np.unique(np.concatenate(stretches))
+    near = np.abs(inner[:, None] - fixed[None, :]).min(axis=1, initial=np.inf) <= 1e-9 * L
+    inner = inner[~near & np.concatenate([[True], np.diff(inner) > 1e-9 * L])]  # no slivers
+    return np.unique(np.concatenate([inner, fixed]))
+
+
+def start_nodes(form, fixed, n_elements):
+    """Mesh nodes for the first solve: ``1 + L |dθ/ds|`` equidistributed over the start's shape
+    ``form = (H, w, s_v, grounded)`` (`skcable.mooring.line_bvp.start.start_form`), whose angle is
+    known in closed form, ``tan θ = w (s - s_v) / H`` (zero on the grounded part): the elements
+    gather at its touchdown or lowest point down to the bend's radius ``H/w``, which a uniform
+    mesh of a nearly L-shaped line cannot see."""
+    H, w, s_v, grounded = form
+    L = float(fixed[-1])
+
+    def angle(s):
+        v = w * (s - s_v)
+        return np.arctan((np.maximum(v, 0.0) if grounded else v) / H)
+
+    turns = np.linspace(angle(0.0), angle(L), 32 * n_elements + 1)
+    s = np.unique(
+        np.concatenate(
+            [np.linspace(0.0, L, 16 * n_elements + 1), np.clip(s_v + H / w * np.tan(turns), 0.0, L)]
+        )
+    )
+    m = 0.5 * (s[1:] + s[:-1])
+    v = w * (m - s_v)
+    turning = np.where(grounded & (v < 0), 0.0, (abs(w) / H) / (1.0 + (v / H) ** 2))  # |dθ/ds|
+    monitor = 1.0 + L * turning
+    rate = smoothed(s, n_elements * monitor / np.sum(monitor * np.diff(s)), n_elements)
+    mass = np.concatenate([[0.0], np.cumsum(rate * np.diff(s))])
+    return equidistributed(fixed, s, mass, n_elements)
+
+
+def nested_sizes(n_elements):
+    """The element counts of nested solves up to ``n_elements``: halved down to `COARSE` or
+    above, coarsest first."""
+    sizes = [n_elements]
+    while sizes[-1] // 2 >= COARSE:
+        sizes.append(sizes[-1] // 2)
+    return sizes[::-1]

@@ -1,0 +1,424 @@
+"""The solution of a line BVP: end forces, contact, touchdown, and the fields along the line."""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+from functools import cached_property
+from typing import TYPE_CHECKING
+
+import numpy as np
+from scipy.optimize import brentq
+
+from skcable._checks import real, require, whole
+from skcable.bvp.terms import CableState, term_outputs
+from skcable.errors import ConvergenceError
+from skcable.fe.probes import gradient_probes
+from skcable.mooring.line_bvp.contact import anchor_split
+from skcable.mooring.line_bvp.loads import term_load
+from skcable.mooring.line_bvp.problem import LineProblem, LineState
+from skcable.mooring.line_bvp.stiffness import fairlead_stiffness
+from skcable.results import ProfileMixin
+
+if TYPE_CHECKING:  # pragma: no cover
+    from skcable.mooring.line_bvp.model import LineBVP
+
+__all__ = ["LineBVPSolution"]
+
+
+class LineBVPSolution(ProfileMixin):
+    """Solution of `solve_line_bvp`; a `skcable.results.CableResult`.
+
+    Attributes
+    ----------
+    H_B, V_B : float
+        Horizontal and upward vertical reaction at the fairlead B (N).
+    H : float
+        ``H_B``: the horizontal tension of the suspended part, B's (as for the closed-form
+        lines on a seabed, `skcable.cable.elastic_catenary(seabed=)`): friction on the seabed
+        takes some of it before A, so ``H_A`` may be smaller.
+    H_A, V_A : float
+        Horizontal and upward vertical reaction at the anchor A (N).
+    T_A, T_B : float
+        End tensions (N), ``hypot(H_A, V_A)`` and ``hypot(H_B, V_B)``: the support reactions,
+        more accurate than the tension field at the ends (`T_of_s`).
+    length : float
+        Unstretched length (m).
+    contact_s, contact_xy : ndarray
+        Arc length from A (m) and position (m) of every contact node.
+    normal_force : ndarray
+        Seabed normal force ``N_i >= 0`` at each contact node (N).
+    contact_force : ndarray (n, 2)
+        Force of the seabed on the line at each contact node, friction
+        included (N): ``λ_i (n_i - μ t_i)`` where the line slides, on a slack
+        stretch near the anchor the friction that holds its tangential weight
+        (none on a flat seabed).
+    gap : ndarray
+        Height of each contact node above the seabed (m), ``>= 0`` to round-off.
+    in_contact : ndarray of bool
+        The nodes on the seabed (the final active set).
+    s_touchdown, x_touchdown : float
+        Where the line leaves the seabed for the last time towards B: the
+        unstretched arc length from A (m) at which the suspended part's
+        vertical balance ``V_B - ∫_s^L w - ΣP = H b'(x(s))`` holds (a point
+        between mesh nodes, not the last contact node), and its abscissa; 0
+        without contact.
+    s_landing : float
+        Where a line hanging from an anchor above the seabed first lands
+        (the balance of the part hanging from A, as for ``s_touchdown``); 0
+        when A lies on the seabed.
+    length_on_seabed : float
+        ``s_touchdown - s_landing`` (m): the unstretched length between the
+        first landing and the last touchdown (where the line lifts off a bump
+        in between, that free stretch is included).
+    history, iterations
+        Newton's merit per iteration.
+    problem : LineProblem
+        The discrete line it solves (mesh, bases, loads, contact rows).
+    state : LineState
+        Residual and tangents at the solution.
+    """
+
+    #: ``slack_solver(s0)``: the line re-solved with its slack stretch ending at ``s0`` (set by
+    #: the solver that made it; `stiffness` needs it where the line has a slack stretch)
+    slack_solver: Callable[[float], LineBVPSolution] | None = None
+    #: the `LineBVP` model that solved it (None from `solve_line_bvp`)
+    model: LineBVP | None = None
+
+    def __init__(self, problem: LineProblem, z, history, state: LineState):
+        self.problem, self.dofs, self.state = problem, z, state
+        self.span, self.dh, self.length = problem.span, problem.dh, problem.L
+        self.mesh, self.basis = problem.mesh, problem.basis
+        self.history = [float(h) for h in history]
+        self.iterations = len(self.history) - 1
+        self.friction = problem.friction
+        H_A, V_A, H_B, V_B = (float(v) for v in problem.reactions(state.R0))
+        self.H, self.V_B, self.H_B = H_B, V_B, H_B
+        i, N = problem.contact, problem.N
+        order = np.argsort(problem.basis.doflocs[0][i], kind="stable")
+        i = i[order]
+        self.contact_s = problem.basis.doflocs[0][i]
+        self.contact_xy = np.column_stack([z[i], z[N + i]])
+        self.anchor_on_seabed = problem.anchor_on_seabed
+        if i.size:
+            H_A, V_A = self._contact(order, H_A, V_A)
+        else:
+            self.normal_force, self.gap = np.zeros(0), np.zeros(0)
+            self.contact_force, self.in_contact = np.zeros((0, 2)), np.zeros(0, dtype=bool)
+        self.H_A, self.V_A = H_A, V_A
+
+    def _contact(self, order, H_A, V_A):
+        """The seabed's forces per contact node (the anchor's node first, when A lies on the
+        seabed, whose push the seabed takes from the anchor); the anchor's reaction."""
+        problem = self.problem
+        assert problem.contact_rows is not None and self.state.terms is not None, "a line on a seabed"
+        bp, gap, lam, active, mu, held = problem.contact_rows.forces(self.state.terms, order)
+        if self.anchor_on_seabed:
+            # the seabed under the anchor takes the anchor's downward push, friction included
+            slope = float(problem.seabed.slope(np.array([0.0]))[0])
+            mu_a = problem.friction if problem.slack_end == 0 else 0.0  # the anchor holds a slack stretch
+            H_A, V_A, lam_a = anchor_split(H_A, V_A, slope, mu_a)
+            self.contact_s = np.concatenate([[0.0], self.contact_s])
+            self.contact_xy = np.vstack([[0.0, 0.0], self.contact_xy])
+            bp, gap = np.concatenate([[slope], bp]), np.concatenate([[0.0], gap])
+            lam, active = np.concatenate([[lam_a], lam]), np.concatenate([[lam_a > 0], active])
+            mu, held = np.concatenate([[mu_a], mu]), np.concatenate([[0.0], held])
+        self.normal_force = lam * np.sqrt(1.0 + bp * bp)
+        self.contact_force = lam[:, None] * np.column_stack([-bp - mu, 1.0 - mu * bp]) + held[
+            :, None
+        ] * np.column_stack([np.ones_like(bp), bp])
+        self.gap, self.in_contact = gap, active
+        return H_A, V_A
+
+    @property
+    def T_A(self):
+        return float(np.hypot(self.H_A, self.V_A))
+
+    @property
+    def T_B(self):
+        return float(np.hypot(self.H, self.V_B))
+
+    @property
+    def EA(self):
+        """The smallest axial stiffness of the segments (N; None where all are inextensible):
+        the line's largest strain is at most ``max(T_A, T_B)/EA``."""
+        stiff = [seg.EA for seg in self.problem.segments if seg.EA is not None]
+        return float(min(stiff)) if stiff else None
+
+    @property
+    def weight(self):
+        """Total weight of the line and its point loads (N, downward)."""
+        p = self.problem
+        return p.weight + float(np.sum(p.point_values))
+
+    def fields(self):
+        """The dofs of ``x``, ``y`` (P2, m) and ``T`` (P1-DG, N)."""
+        N = self.problem.N
+        return self.dofs[:N], self.dofs[N : 2 * N], self.dofs[2 * N :]
+
+    def xy(self, s):
+        """Position (x, y) (m) at unstretched arc length ``s`` from A, array ``(..., 2)``."""
+        s = np.asarray(real("s", s), dtype=float)
+        require("s", (s >= 0) & (s <= self.length), "must lie in [0, length]", s)
+        probes = self.basis.probes(s.reshape(1, -1))
+        xd, yd, _ = self.fields()
+        return np.stack([probes @ xd, probes @ yd], axis=-1).reshape(*s.shape, 2)
+
+    def tension(self, s):
+        """Tension (N) at unstretched arc length ``s`` (P1-DG: the value of the element containing s)."""
+        s = np.asarray(real("s", s), dtype=float)
+        require("s", (s >= 0) & (s <= self.length), "must lie in [0, length]", s)
+        T = self.fields()[2]
+        return (self.problem.tbasis.probes(s.reshape(1, -1)) @ T).reshape(s.shape)[()]
+
+    def angle(self, s):
+        """Angle of the line to the horizontal (rad) at ``s``."""
+        s = np.atleast_1d(np.asarray(real("s", s), dtype=float))
+        require("s", (s >= 0) & (s <= self.length), "must lie in [0, length]", s)
+        G = gradient_probes(self.basis, s.reshape(1, -1))
+        xd, yd, _ = self.fields()
+        return np.arctan2(G @ yd, G @ xd)
+
+    def weight_before(self, s):
+        """Weight of the line over [0, s] and of the point loads before s (N)."""
+        p = self.problem
+        s_nodes = self.mesh.p[0]
+        k = int(np.clip(np.searchsorted(s_nodes, s) - 1, 0, len(s_nodes) - 2))
+        fraction = (s - s_nodes[k]) / (s_nodes[k + 1] - s_nodes[k])
+        before = self._cumulative_weight
+        points = sum(P for s_p, P in p.point_loads if s_p < s)
+        return before[k] + fraction * (before[k + 1] - before[k]) + points
+
+    @cached_property
+    def _cumulative_weight(self):
+        order = np.argsort(self.mesh.p[0, self.mesh.t].mean(axis=0))
+        return np.concatenate([[0.0], np.cumsum(self.problem.element_weight[order])])
+
+    def load_before(self, s):
+        """``(P_x, P_y)`` (N): the load on the line over [0, s] in the residual's sense (weight
+        and point loads downward, `weight_before`, less the cable terms' force ``∫_0^s f``, y
+        up), per element interpolated linearly in s as `weight_before` is."""
+        if not self.problem.terms:
+            return 0.0, self.weight_before(s)
+        s_nodes = self.mesh.p[0]
+        k = int(np.clip(np.searchsorted(s_nodes, s) - 1, 0, len(s_nodes) - 2))
+        fraction = (s - s_nodes[k]) / (s_nodes[k + 1] - s_nodes[k])
+        before = self._cumulative_terms
+        terms = before[:, k] + fraction * (before[:, k + 1] - before[:, k])
+        return float(terms[0]), float(terms[1] + self.weight_before(s))
+
+    @cached_property
+    def _cumulative_terms(self):
+        """``∫ -f ds`` (N) of the cable terms from A to each mesh node (2, nodes), in order."""
+        order = np.argsort(self.mesh.p[0, self.mesh.t].mean(axis=0))
+        per_element = self.problem.element_term_load(self.dofs)[:, order]
+        return np.concatenate([np.zeros((2, 1)), np.cumsum(per_element, axis=1)], axis=1)
+
+    def _transition(self, balance, near, required=True):
+        """Root of ``balance(s)`` between the mesh nodes around ``near`` (a contact node); None
+        where it changes sign nowhere there and the root is not ``required``."""
+        s_nodes = self.mesh.p[0]
+        h = np.max(np.diff(s_nodes))
+        grid = s_nodes[(s_nodes >= near - 2 * h) & (s_nodes <= near + 2 * h)]
+        values = np.array([balance(s) for s in grid])
+        zero = np.flatnonzero(values == 0.0)
+        if zero.size:
+            return float(grid[zero[0]])
+        change = np.flatnonzero(np.sign(values[:-1]) != np.sign(values[1:]))
+        if not change.size and not required:
+            return None
+        if not change.size:
+            raise ConvergenceError(
+                "solve_line_bvp: no sign change of the vertical balance near the contact edge", self.history
+            )
+        k = int(change[np.argmin(np.abs(grid[change] - near))])
+        return float(brentq(balance, grid[k], grid[k + 1], xtol=1e-12 * self.length))
+
+    def seabed_slope_at(self, s):
+        """The seabed's slope ``b'`` under the line at arc length ``s`` (m)."""
+        x = self.xy(np.array(s))[0]
+        return float(self.problem.seabed.slope(np.array([x]))[0])
+
+    @cached_property
+    def _touchdown(self):
+        """(s, x) of the last touchdown: ``V_B - (W - W(s)) = H b'(x(s))`` (the suspended part's
+        vertical balance, the line leaving the seabed tangentially; with cable terms ``W`` is
+        the vertical load `load_before` and ``H`` the horizontal force there, ``H_B - (P_x(L)
+        - P_x(s))``). Where only the anchor's node presses on the seabed, the touchdown may lie
+        before the first node: it is sought there (0 where the balance has no root near the
+        anchor)."""
+        anchor_only = self.anchor_on_seabed and self.in_contact.size and self.in_contact[0]
+        if not (self.touches_beyond_anchor() or anchor_only):
+            return 0.0, 0.0
+        total_x, total = self.load_before(self.length)
+
+        def balance(s):
+            before_x, before = self.load_before(s)
+            H = self.H - (total_x - before_x)
+            return self.V_B - (total - before) - H * self.seabed_slope_at(s)
+
+        if self.touches_beyond_anchor():
+            s_td = self._transition(balance, self.contact_s[self.in_contact][-1])
+        else:
+            s_td = self._transition(balance, 0.0, required=False) or 0.0
+        return s_td, float(self.xy(np.array(s_td))[0])
+
+    @cached_property
+    def s_landing(self):
+        """Where a line hanging from an anchor above the seabed first lands on it: the unstretched
+        arc length from A (m) where ``W(s) - V_A = H_A b'(x(s))`` (the balance of the part
+        hanging from A; with cable terms ``W`` is the vertical load `load_before` and the
+        horizontal force there ``H_A + P_x(s)``); 0 when A lies on the seabed or nothing
+        touches."""
+        if self.anchor_on_seabed or not self.in_contact.any():
+            return 0.0
+
+        def balance(s):
+            before_x, before = self.load_before(s)
+            return before - self.V_A - (self.H_A + before_x) * self.seabed_slope_at(s)
+
+        return self._transition(balance, self.contact_s[self.in_contact][0])
+
+    @property
+    def s_touchdown(self):
+        return self._touchdown[0]
+
+    @property
+    def x_touchdown(self):
+        return self._touchdown[1]
+
+    @property
+    def length_on_seabed(self):
+        if not self.in_contact.any():
+            return 0.0
+        return self.s_touchdown - self.s_landing
+
+    def touches_beyond_anchor(self):
+        """Whether a node other than the anchor's lies on the seabed."""
+        return bool(self.in_contact[self.contact_s > 0].any())
+
+    def tension_profile(self):
+        """The P1-DG tension per element, sorted along the line: (s_left, s_right, T_left, T_right)."""
+        tb = self.problem.tbasis
+        dofs = tb.element_dofs  # (2, ne)
+        at = tb.doflocs[0][dofs]
+        T = self.fields()[2][dofs]
+        first = np.argmin(at, axis=0)
+        cols = np.arange(dofs.shape[1])
+        s_l, s_r = at[first, cols], at[1 - first, cols]
+        T_l, T_r = T[first, cols], T[1 - first, cols]
+        order = np.argsort(s_l)
+        return s_l[order], s_r[order], T_l[order], T_r[order]
+
+    def residual(self):
+        """Largest scaled residual (forces over the total load, stretch over the length)."""
+        return self.state.merit
+
+    # --- the result protocol (skcable.results) ---------------------------------------------
+    def x_of_s(self, s):
+        """Abscissa (m) at unstretched arc length ``s`` (m) from A."""
+        return self.xy(s)[..., 0]
+
+    def y_of_s(self, s):
+        """Height above A (m) at unstretched arc length ``s`` (m) from A."""
+        return self.xy(s)[..., 1]
+
+    def T_of_s(self, s):
+        """The tension field (N) at unstretched arc length ``s`` (m): P1-DG, the value of the
+        element containing s, accurate to O(h²) at the nodes; the end tensions `T_A`, `T_B`
+        (the support reactions) are the accurate values at the ends."""
+        return self.tension(s)
+
+    def stiffness(self) -> np.ndarray:
+        """Fairlead stiffness ``∂(H_B, V_B)/∂(span, dh)`` (N/m), 2 × 2, rows (H_B, V_B), columns
+        (span, dh), the anchor fixed: from the converged tangent by the implicit function
+        theorem (`skcable.mooring.line_bvp.stiffness`)."""
+        return fairlead_stiffness(self, self.slack_solver)
+
+    def round_off(self) -> float:
+        """An estimate of the relative round-off in ``H_B`` (dimensionless): the positions carry
+        ε times their size each, so the n elements' geometry carries about ``n ε`` of the span
+        and of dh, which H amplifies by ``|∂ ln H/∂ ln span|`` and ``|∂ ln H/∂ ln dh|``:
+        ``n ε (|K_HH| span + |K_HV| |dh|)/H_B`` (`stiffness`). Negligible on ordinary lines; an
+        inextensible line within 1e-9 of its chord (its H conditioned 5e8 by its length) carries
+        1e-6 on 64 elements, which this bounds within a factor of ten (7e-6), and more on finer
+        meshes, where the closed forms `cable.catenary` and `mooring.Line` do not."""
+        K = self.stiffness()
+        spread = abs(K[0, 0]) * self.span + abs(K[0, 1]) * abs(self.dh)
+        return float(self.mesh.t.shape[1] * np.finfo(float).eps * spread / abs(self.H_B))
+
+    def tensions(self):
+        """One row per segment (pandas DataFrame): ``segment, length, T_lower, T_upper, H_lower,
+        H_upper`` (SI), the tension and horizontal tension at its ends towards A and B (the
+        support reactions at A and B, the tension field inside the segment at the joints), and
+        ``grounded_length``, its length on the seabed (m, between `s_landing` and
+        `s_touchdown`)."""
+        import pandas as pd
+
+        joints = self.problem.joints
+        inside = 1e-9 * np.diff(joints)
+        lower, upper = joints[:-1] + inside, joints[1:] - inside
+        T_l, T_u = np.atleast_1d(self.tension(lower)), np.atleast_1d(self.tension(upper))
+        H_l, H_u = T_l * np.cos(self.angle(lower)), T_u * np.cos(self.angle(upper))
+        T_l[0], H_l[0], T_u[-1], H_u[-1] = self.T_A, self.H_A, self.T_B, self.H_B
+        grounded = np.clip(
+            np.minimum(joints[1:], self.s_touchdown) - np.maximum(joints[:-1], self.s_landing), 0, None
+        )
+        return pd.DataFrame(
+            {
+                "segment": np.arange(joints.size - 1),
+                "length": np.diff(joints),
+                "T_lower": T_l,
+                "T_upper": T_u,
+                "H_lower": H_l,
+                "H_upper": H_u,
+                "grounded_length": grounded if self.in_contact.any() else np.zeros(joints.size - 1),
+            }
+        )
+
+    def samples(self, n: int = 201) -> dict:
+        """The line at ``n`` points evenly spaced in unstretched arc length (the input of
+        `to_vtk`): ``xy`` (n, 2) (m), ``tension`` (N, the field), ``angle`` (rad above the
+        horizontal), ``load`` (n, 2), the distributed load in N per metre of unstretched line,
+        y up (the weight and the cable terms' force; point loads and the seabed's forces not
+        included), and ``outputs``, what the cable terms name (`CableTerm.outputs`: their
+        force ``<Term>_force_N_per_m`` (n, 2) at least; empty without terms)."""
+        s = np.linspace(0.0, self.length, whole("n", n, 2))
+        weight = np.asarray(self.problem.weight_at(s), dtype=float)
+        xy = self.xy(s)
+        tension = np.asarray(self.tension(s), dtype=float)
+        load = np.column_stack([np.zeros_like(s), -weight])
+        outputs = {}
+        if self.problem.terms:
+            G = gradient_probes(self.basis, s.reshape(1, -1))
+            xd, yd, _ = self.fields()
+            a = np.array([G @ xd, G @ yd])
+            state = CableState(xy[:, 0], xy[:, 1], s, a, tension)
+            load = load + term_load(self.problem.terms, xy[:, 0], xy[:, 1], s, a, tension).f.T
+            outputs = {
+                name: np.moveaxis(v, 0, -1) if np.ndim(v) > 1 else v
+                for name, v in term_outputs(self.problem.terms, state).items()
+            }
+        return {"xy": xy, "tension": tension, "angle": self.angle(s), "load": load, "outputs": outputs}
+
+    def to_frame(self, n: int = 201):
+        """``n`` profile samples evenly spaced in unstretched arc length (pandas DataFrame):
+        columns ``s`` (m), ``x``, ``y`` (m) and ``T`` (N) (`skcable.results.ProfileMixin`), then
+        the cable terms' outputs (``samples()["outputs"]``), a vector as ``<name>_x`` and
+        ``<name>_y``."""
+        outputs = self.samples(n)["outputs"] if self.problem.terms else {}
+        return ProfileMixin.frame_with_outputs(self, n, outputs)
+
+    def to_vtk(self, path, n: int = 201):
+        """Write the line as a VTK polyline (`skcable.io.cable_mesh`: tension, tangent, angle,
+        load as point data); returns the path."""
+        from skcable.io import cable_mesh, write
+
+        return write(cable_mesh(self, n), path)
+
+    def __repr__(self):
+        return (
+            f"LineBVPSolution(span={self.span:g}, dh={self.dh:g}, {self.mesh.t.shape[1]} elements: "
+            f"H_B={self.H_B:.9g}, V_B={self.V_B:.9g}, H_A={self.H_A:.9g}, V_A={self.V_A:.9g}, "
+            f"T_A={self.T_A:.9g}, T_B={self.T_B:.9g}, length={self.length:.9g}, "
+            f"{int(self.in_contact.sum())} nodes on the seabed, iterations={self.iterations})"
+        )

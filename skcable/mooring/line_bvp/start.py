@@ -1,0 +1,241 @@
+"""The closed-form starts of a line BVP.
+
+- `closed_form_start`: the elastic catenary of the line's mean weight and compliance (H. M.
+  Irvine, "Cable Structures", MIT Press, 1981, ch. 2; an inextensible line starts from the
+  inextensible catenary) or, where it dips below the seabed, Jonkman's grounded one on a flat
+  seabed at the anchor's level (J.M. Jonkman, NREL, 2007), its positions lifted onto the
+  seabed. Exact for one uniform segment. With cable terms the mean weight is the weight less
+  the terms' vertical force on the chord (`LineProblem.start_weight`); a line they buoy up
+  (a negative mean weight) hangs upward, the mirror image of the line under the opposite load.
+- `segmented_start`: the multi-segment closed form `skcable.mooring.Line` of the same segments,
+  clump weights and buoys at the joints and flat seabed: the start of a line whose segments
+  differ (a light rope under a heavy chain hangs far from the uniform line of their mean
+  weight). Only for lines it can describe: constant weights ``w > 0`` and point loads at the
+  joints; an inextensible segment gets ``EA = 1e9`` times the line's weight.
+- `start_form`: the uniform start's shape, which grades the first mesh
+  (`skcable.mooring.line_bvp.mesh.start_nodes`).
+
+**The heap.** A line longer than its L-shape leaves its slack in a heap on the seabed: ``H = 0``,
+and the arc form has no tension to solve for (the tangent is singular on the heap). The uniform
+closed form's heap is the line's own only for one uniform segment without point loads on a flat
+seabed: then ``InputError("length")``. For any other line the uniform line's heap says nothing
+of the line's (a heavy chain at the fairlead holds a light rope off the seabed): the verdict is
+`skcable.mooring.Line`'s, the closed form of the segments themselves, where it applies
+(``InputError("length")`` if it finds a heap), and the Newton solve's otherwise, from the free
+uniform line lifted onto the seabed.
+"""
+
+from __future__ import annotations
+
+from typing import NamedTuple
+
+import numpy as np
+
+from skcable.cable._catenary import catenary
+from skcable.cable._elastic import elastic_catenary as free_catenary
+from skcable.cable.seabed import elastic_catenary
+from skcable.errors import ConvergenceError, InputError
+from skcable.mooring.segments import Buoy, ClumpWeight, Line, Segment
+
+__all__ = [
+    "closed_form_start",
+    "on_dofs",
+    "segmented_solution",
+    "segmented_start",
+    "slack_end_of",
+    "start_form",
+]
+
+_HEAP = (
+    "leaves slack line lying in a heap on the seabed (H = 0): elastic_catenary(seabed=...) "
+    "and mooring.Line return that state"
+)
+
+
+class _Heap(Exception):
+    """The uniform line's grounded closed form is a heap."""
+
+
+def _uniform(problem):
+    """``(x, y, T, form, heap)``: the uniform start on the problem's dofs; ``form = (H, w, s_v,
+    grounded)``, the catenary's horizontal force, weight and vertical force ``w (s - s_v)``
+    (zero where grounded); ``heap`` whether the grounded uniform line is a heap (then x, y, T
+    and form are the free line's, lifted onto the seabed)."""
+    span, dh, L = problem.span, problem.dh, problem.L
+    w = problem.start_weight
+    if not (w > 0 or (problem.terms and w < 0)):
+        what = "weight less the cable terms' vertical force" if problem.terms else "weight"
+        raise InputError("segments", f"the line's mean {what} must be > 0 (downward), got {w:g} N/m")
+    c = problem.compliance / L
+    EA = 1.0 / c if c > 0 else 1e6 * abs(w) * L
+    s_dof, s_t = problem.basis.doflocs[0], problem.tbasis.doflocs[0]
+    # an inextensible line starts inextensible: a stiff elastic start (EA = 1e6 wL) of a line
+    # 1e-9 longer than its chord stretches by more than that excess, and starts H far off
+    free, stiff = _free_line(span, dh, w, EA, L, c > 0), (EA if c > 0 else np.inf)
+    u_a = -free.V_A / free.H
+
+    def free_x(s):
+        return free.H * s / stiff + free.H / w * (np.arcsinh(u_a + w * s / free.H) - np.arcsinh(u_a))
+
+    def free_y(s):
+        t0, t1 = np.hypot(1.0, u_a), np.hypot(1.0, u_a + w * s / free.H)
+        return (free.H / w) * (t1 - t0) + (-free.V_A * s + 0.5 * w * s * s) / stiff
+
+    x, y = free_x(s_dof), free_y(s_dof)
+    T = np.hypot(free.H, -free.V_A + w * s_t)
+    form = (float(free.H), w, float(free.V_A) / w, False)
+    bed, heap = problem.seabed, False
+    if bed is not None and w > 0 and np.any(y < bed(x)):
+        level = min(float(bed(np.array([0.0]))[0]), 0.0)
+        level = min(level, dh - 1e-3 * abs(span))
+        try:
+            grounded = elastic_catenary(span, dh, w, EA, length=L, seabed=level)
+            if np.any(grounded.heap):  # H = 0: the arc form has no tension to solve for
+                raise _Heap
+            x, y, T = grounded.x_of_s(s_dof), grounded.y_of_s(s_dof), grounded.T_of_s(s_t)
+            form = (float(grounded.H), w, L - float(grounded.V_B) / w, True)
+        except _Heap:
+            heap = True
+        except InputError:
+            if bed.flat is not None:  # on a flat seabed the closed form's refusal holds
+                raise
+        except ConvergenceError:  # its Newton stalled (at round-off): the free line lifted instead
+            pass
+        y = np.maximum(y, bed(x))  # a curved seabed: the free line lifted onto it, if nothing better
+    return x, y, T, form, heap
+
+
+class _Free(NamedTuple):
+    """The free uniform line's horizontal force and A's upward reaction (N)."""
+
+    H: float
+    V_A: float
+
+
+def _free_line(span, dh, w, EA, L, elastic) -> _Free:
+    """The free uniform line under ``w`` (N/m, downward; a line that cable terms buoy up, ``w <
+    0``, hangs upward: the mirror image of the line under ``-w`` to ``(span, -dh)``), elastic
+    (`_free_elastic`) or inextensible (`skcable.cable.catenary`)."""
+    sign = 1.0 if w > 0 else -1.0
+    if elastic:
+        free = _free_elastic(span, sign * dh, sign * w, EA, L)
+    else:
+        free = catenary(span, sign * dh, sign * w, length=L)
+    return _Free(free.H, sign * free.V_A)
+
+
+def _free_elastic(span, dh, w, EA, L):
+    """Irvine's elastic catenary (``H``, ``V_A``); where its Newton stalls above its own
+    tolerance (the round-off of a nearly taut, stiff line), the multi-segment closed form `Line`
+    of the one segment, whose solve polishes the same closure from bracketing."""
+    try:
+        return free_catenary(span, dh, w, EA, length=L)
+    except ConvergenceError as failed:
+        try:
+            return Line([Segment(L, w, EA)]).solve(span, dh)
+        except (InputError, ConvergenceError):
+            raise failed from None
+
+
+def _exact(problem) -> bool:
+    """Whether the uniform closed form is the line's own: one segment of constant weight, no
+    point loads, a flat seabed."""
+    one = len(problem.segments) == 1 and not callable(problem.segments[0].w) and not problem.terms
+    return one and not problem.point_loads and problem.seabed is not None and problem.seabed.flat is not None
+
+
+def start_form(problem):
+    """``(H, w, s_v, grounded)`` of the uniform start's catenary: its vertical force is
+    ``w (s - s_v)``, zero where it is grounded."""
+    return _uniform(problem)[3]
+
+
+def _ends(problem, x, y, T):
+    x[problem.end_a], y[problem.end_a] = 0.0, 0.0
+    x[problem.end_b], y[problem.end_b] = problem.span, problem.dh
+    return np.concatenate([x, y, T])
+
+
+def closed_form_start(problem):
+    """The first iterate on ``problem``'s dofs: ``[x, y, T]``, the ends at A and B exactly; the
+    heap refused (module docstring)."""
+    x, y, T, _, heap = _uniform(problem)
+    if heap:
+        if _exact(problem):
+            raise InputError("length", _HEAP)
+        segmented = segmented_start(problem)  # raises where mooring.Line finds the heap
+        if segmented is not None:
+            return segmented
+    return _ends(problem, x, y, T)
+
+
+def _line(problem, friction=None):
+    """The `Line` of the problem's segments, point loads and friction (``friction`` instead,
+    if given), or None where it has none."""
+    if problem.seabed is not None and problem.seabed.flat is None:
+        return None
+    if any(callable(seg.w) or not seg.w > 0 for seg in problem.segments):
+        return None
+    joints = problem.joints
+    stiff = 1e9 * abs(problem.weight)
+    segments = [Segment(seg.length, seg.w, stiff if seg.EA is None else seg.EA) for seg in problem.segments]
+    attachments = []
+    for s, P in problem.point_loads:
+        k = int(np.argmin(np.abs(joints - s)))
+        if abs(joints[k] - s) > 1e-9 * problem.L or P == 0:
+            return None
+        attachments.append(ClumpWeight(k, P) if P > 0 else Buoy(k, -P))
+    bed = None if problem.seabed is None else problem.seabed.flat
+    friction = problem.friction if friction is None else friction
+    return Line(segments, attachments, seabed=bed, friction=friction if bed is not None else 0.0)
+
+
+def segmented_solution(problem, friction=None):
+    """The `Line` solution of the problem's segments (module docstring; with ``friction``
+    instead of the problem's, if given), or None where it does not describe the line or finds
+    no solution; ``InputError("length")`` where it finds the slack in a heap."""
+    if friction is None and len(problem.segments) == 1 and not problem.point_loads:
+        return None  # the uniform start is this closed form already
+    line = _line(problem, friction)
+    if line is None:
+        return None
+    try:
+        solution = line.solve(problem.span, problem.dh)
+    except (InputError, ConvergenceError):
+        return None
+    if solution.heap:
+        if problem.terms:  # the segments' heap is not the line's: its terms load it otherwise
+            return None
+        raise InputError("length", _HEAP)
+    return solution
+
+
+def slack_end_of(solution, length):
+    """Where the tension of a closed-form ``solution`` first rises above zero from the anchor
+    (m of arc length, to 1e-12 of the ``length``): the end of its slack stretch; 0 without one."""
+    if not solution.T_of_s(0.0) <= 0.0:
+        return 0.0
+    lo, hi = 0.0, float(length)
+    while hi - lo > 1e-12 * length:
+        mid = 0.5 * (lo + hi)
+        lo, hi = (mid, hi) if solution.T_of_s(mid) <= 0.0 else (lo, mid)
+    return lo
+
+
+def on_dofs(problem, solution):
+    """A closed-form ``solution`` (``x_of_s``, ``y_of_s``, ``T_of_s``) on the problem's dofs."""
+    s_dof = problem.basis.doflocs[0]
+    x, y = np.asarray(solution.x_of_s(s_dof), float), np.asarray(solution.y_of_s(s_dof), float)
+    # each tension dof from inside its element: a clump at a joint makes the tension jump there
+    dofs, s_t = problem.tbasis.element_dofs, problem.tbasis.doflocs[0]
+    inside = np.empty_like(s_t)
+    inside[dofs] = s_t[dofs] + 1e-9 * (problem.middle[None, :] - s_t[dofs])
+    T = np.asarray(solution.T_of_s(np.clip(inside, 0.0, problem.L)), float)
+    return _ends(problem, x, y, T)
+
+
+def segmented_start(problem):
+    """The start from `Line`, the closed form of the segments (module docstring), on the
+    problem's dofs, or None where there is none (`segmented_solution`)."""
+    solution = segmented_solution(problem)
+    return None if solution is None else on_dofs(problem, solution)

@@ -1,0 +1,47 @@
+"""A line in space as an arc-length BVP: segments with axial laws, current drag, bathymetry.
+
+`solve_line_bvp_3d` solves one line from its anchor to its fairlead (3-vectors, z up) in the
+arc-length form of the plane line BVP (`skcable.mooring.line_bvp`) in three dimensions: positions
+``r(s)`` P2, tension P1-DG, on the unstretched arc length; multi-segment lines (each segment its
+length, weight, axial law `skcable.mooring.axial`, diameter and drag coefficients) with clump
+weights and buoys at the joints; loads as cable terms (`skcable.bvp.terms`: the weight, the
+current's drag ``½ρ C_d d |v_n| v_n`` normal and tangential, the analyst's); the seabed
+(`skcable.mooring.bathymetry`: a plane, a depth function, a grid) as unilateral contact with
+Coulomb friction along the line. One concern per module:
+
+- `inputs`: the segments (`LineSegment`), the attachments and every argument, checked into a
+  `Scene3D`;
+- `loads`: the current's drag on the segments as a cable term (`SegmentDrag`);
+- `contact`: the seabed's semismooth contact rows in 3-D;
+- `problem`: one discrete line — bases, properties, the loads, the residual and its
+  generalized Jacobian (every call of the assembly);
+- `pointwise`: the fields at any arc length, through each element's own basis;
+- `start`: the closed form in the vertical plane of the ends;
+- `iterate`: one solve (damped semismooth Newton, full steps, the polish);
+- `fitting`: the touchdown and the landing from the balance of forces;
+- `driver`: the strategy `LineBVP3DSolver` — the current by steps, nested meshes, fitting, checks;
+- `check`: the equilibrium residual, by scikit-fem's own assembly;
+- `stiffness`: the 3 × 3 fairlead stiffness from the converged tangent, static or dynamic;
+- `solution`: `LineBVP3DSolution`;
+- `model`: `solve_line_bvp_3d` and `LineBVP3D`, a line model.
+
+Data flow one way: ``inputs → driver → (start, problem ⇄ contact, loads, pointwise) → iterate →
+fitting → solution → (check, stiffness)``.
+"""
+
+from skcable.mooring.line_bvp_3d.driver import LineBVP3DSolver
+from skcable.mooring.line_bvp_3d.inputs import LineSegment
+from skcable.mooring.line_bvp_3d.model import LineBVP3D, solve_line_bvp_3d
+from skcable.mooring.line_bvp_3d.problem import LineProblem3D
+from skcable.mooring.line_bvp_3d.solution import LineBVP3DSolution
+from skcable.mooring.line_bvp_3d.stiffness import FairleadStiffness
+
+__all__ = [
+    "FairleadStiffness",
+    "LineBVP3D",
+    "LineBVP3DSolution",
+    "LineBVP3DSolver",
+    "LineProblem3D",
+    "LineSegment",
+    "solve_line_bvp_3d",
+]

@@ -1,0 +1,204 @@
+r"""The strategy that takes a line in space from its closed-form start to the converged solution.
+
+`LineBVP3DSolver(scene).solve()` runs, each solve by `skcable.mooring.line_bvp_3d.iterate.solve_on`:
+
+1. **A level** (`LineBVP3DSolver.level`): the line on the scene's mesh from the closed-form
+   start (`skcable.mooring.line_bvp_3d.start`); where that fails,
+2. **the current by steps** (`LineBVP3DSolver.continued`): the line in still water, then the
+   drag grown to its full value in steps (a quarter first, halved where a step fails, down to
+   1/64), each from the last; where that fails too (or a fine mesh's start touches the seabed),
+3. **nested meshes** (`LineBVP3DSolver.nested`): from `skcable.mooring.line_bvp.mesh.COARSE`
+   elements up, each solution interpolated onto the doubled mesh (the active set moves by a
+   few nodes per Newton iteration, so a fine mesh does not find its contact set from the start).
+4. **Fitting** (`LineBVP3DSolver.fitted`): a node at the touchdown and the landing the balance of
+   forces gives (`skcable.mooring.line_bvp_3d.fitting`), ``fit_touchdown`` passes while they move
+   more than 1e-9 of the length. A warm start (`LineBVP3DSolver.solve` from a solution at
+   nearby ends) keeps its start's nodes: where the touchdown has hardly moved, one pass finds
+   it settled and the first solve is the last.
+5. **Checks** (`LineBVP3DSolver.checked`): every number finite, the line not in compression
+   (a slack stretch on the seabed near the anchor is not modelled in 3-D), and its equilibrium
+   residual within its bound (`skcable.mooring.line_bvp_3d.solution.LineBVP3DSolution.check`).
+
+A failure raises the first attempt's `skcable.ConvergenceError`, with its history.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from skcable.errors import ConvergenceError
+from skcable.mooring.bathymetry import OffGrid
+from skcable.mooring.line_bvp.iterate import first_success
+from skcable.mooring.line_bvp.mesh import COARSE, nested_sizes
+from skcable.mooring.line_bvp_3d.fitting import landing, touchdown
+from skcable.mooring.line_bvp_3d.iterate import Solved, solve_on
+from skcable.mooring.line_bvp_3d.problem import LineProblem3D
+from skcable.mooring.line_bvp_3d.solution import LineBVP3DSolution
+from skcable.mooring.line_bvp_3d.start import closed_form_start, restart
+
+__all__ = ["LineBVP3DSolver"]
+
+#: the smallest step of the current's continuation
+SMALLEST_STEP = 1.0 / 64.0
+
+
+class LineBVP3DSolver:
+    """The solver of one line in space: the strategy of the module docstring over a `Scene3D`."""
+
+    def __init__(self, scene):
+        self.scene = scene
+
+    def problem(self, n, fitted=(), drag_scale=1.0) -> LineProblem3D:
+        """The discrete line on ``n`` elements, nodes at ``fitted``, the drag times ``drag_scale``."""
+        return LineProblem3D(self.scene, n, fitted=fitted, drag_scale=drag_scale)
+
+    def run(self, problem, z0, near=False) -> Solved:
+        return solve_on(problem, z0, self.scene.rtol, self.scene.max_iter, near)
+
+    def solve(self, start: LineBVP3DSolution | None = None) -> LineBVP3DSolution:
+        """The line (module docstring); from ``start`` (a solution of the same line at other
+        ends, moved to these) where given, from scratch where that fails."""
+        solved = None
+        if start is not None:
+            try:
+                solved = self.run(*self.warm(start), near=True)
+            except ConvergenceError:
+                solved = None
+        if solved is None:
+            solved = self.level(self.scene.n_elements)
+        if self.scene.seabed is not None and self.scene.fit_touchdown:
+            solved = self.fitted(solved)
+        return self.checked(solved)
+
+    def warm(self, start: LineBVP3DSolution) -> tuple[LineProblem3D, np.ndarray]:
+        """The problem and the first iterate of a warm start: ``start``'s line moved (`moved`), on
+        a mesh with nodes at the touchdown and the landing of the moved line (the balance of
+        `skcable.mooring.line_bvp_3d.fitting` on it, its supports' reactions moved with it), else at
+        ``start``'s."""
+        z, points = self.moved(start), list(start.problem.fitted)
+        if points and self.scene.fit_touchdown:
+            try:
+                guess = self.edges(Solved(start.problem, z, [], start.problem.assemble(z)))
+            except OffGrid:  # the moved line off the seabed's grid: keep the start's nodes
+                guess = []
+            points = guess if len(guess) == len(points) else points
+        problem = self.problem(self.scene.n_elements, points)
+        if problem.fitted != start.problem.fitted:
+            z = restart(start.problem, z, problem)
+        return problem, z
+
+    def moved(self, start: LineBVP3DSolution) -> np.ndarray:
+        """``start``'s line on its mesh, moved to the new ends: along its tangent ``∂z/∂r_B``
+        (`LineBVP3DSolution.sensitivity`, the active set held) for the fairlead's move, in
+        proportion to the arc length for the anchor's."""
+        problem, anchor, fairlead = start.problem, self.scene.anchor, self.scene.fairlead
+        move_a, move_b = anchor - start.anchor, fairlead - start.fairlead
+        z = start.dofs + start.sensitivity[2] @ move_b if np.any(move_b) else start.dofs.copy()
+        N, share = problem.N, problem.basis.doflocs[0] / problem.L
+        for k, (end_a, end_b) in enumerate(zip(anchor, fairlead, strict=True)):
+            z[k * N : (k + 1) * N] += move_a[k] * (1.0 - share)
+            z[k * N + problem.end_a], z[k * N + problem.end_b] = end_a, end_b
+        return z
+
+    def level(self, n, fitted=()) -> Solved:
+        """The line on ``n`` elements from the closed-form start, by steps of the current, or on
+        nested meshes (module docstring, 1–3)."""
+        problem = self.problem(n, fitted)
+        z0 = closed_form_start(problem)
+        touches = problem.contact_rows is not None and np.any(problem.contact_rows.terms(z0, 0 * z0).gap <= 0)
+        attempts = [lambda: self.run(problem, z0)]
+        if problem.terms:
+            attempts.append(lambda: self.continued(n, fitted, z0))
+        if n > 2 * COARSE:
+            attempts.append(lambda: self.nested(n, fitted))
+        if touches and n > 2 * COARSE:
+            attempts = [attempts[-1], *attempts[:-1]]
+        return first_success(*attempts)
+
+    def continued(self, n, fitted, z0) -> Solved:
+        """The drag grown from zero to its full value in steps, each solve from the last."""
+        solved = self.run(self.problem(n, fitted, drag_scale=0.0), z0)
+        scale, step = 0.0, 0.25
+        while scale < 1.0:
+            trial = min(1.0, scale + step)
+            try:
+                solved = self.run(self.problem(n, fitted, drag_scale=trial), solved.z)
+                scale = trial
+            except ConvergenceError:
+                step *= 0.5
+                if step < SMALLEST_STEP:
+                    raise
+        return solved
+
+    def nested(self, n, fitted=()) -> Solved:
+        """Nested meshes up to ``n`` elements (module docstring, 3), the coarsest from its
+        closed-form start (by steps of the current where it needs them)."""
+        solved: Solved | None = None
+        for size in nested_sizes(n):
+            problem = self.problem(size, fitted)
+            if solved is None:
+                z0 = closed_form_start(problem)
+                attempts = [lambda p=problem, z=z0: self.run(p, z)]
+                if problem.terms:
+                    attempts.append(lambda s=size, z=z0: self.continued(s, fitted, z))
+                solved = first_success(*attempts)
+            else:
+                solved = self.run(problem, restart(solved.problem, solved.z, problem))
+        if solved is None:  # nested_sizes gives at least one size: never here
+            raise ConvergenceError("solve_line_bvp_3d: no nested mesh to solve", [])
+        return solved
+
+    def fitted(self, solved) -> Solved:
+        """Nodes at the touchdown and the landing, moved until they settle (module docstring, 4):
+        from the nodes ``solved``'s mesh has (a warm start's: its start's touchdown), none
+        left where the line no longer touches."""
+        L, placed = solved.problem.L, list(solved.problem.fitted)
+        for _ in range(self.scene.fit_touchdown):
+            points = self.edges(solved)
+            settled = len(points) == len(placed) and all(
+                abs(a - b) <= 1e-9 * L for a, b in zip(points, placed, strict=True)
+            )
+            if settled:
+                break
+            solved, placed = self.refit(solved, points), points
+        return solved
+
+    @staticmethod
+    def edges(solved) -> list[float]:
+        """The landing and the touchdown of ``solved`` where it has them (m of arc length)."""
+        found = (
+            landing(solved.problem, solved.z, solved.state),
+            touchdown(solved.problem, solved.z, solved.state),
+        )
+        return [p for p in found if p is not None]
+
+    def refit(self, solved, points) -> Solved:
+        """The line with nodes at ``points``, from ``solved`` interpolated, else from scratch."""
+        n = self.scene.n_elements
+        problem = self.problem(n, points)
+        return first_success(
+            lambda: self.run(problem, restart(solved.problem, solved.z, problem), near=True),
+            lambda: self.level(n, points),
+        )
+
+    def checked(self, solved) -> LineBVP3DSolution:
+        """The solution, once its checks hold (module docstring, 5)."""
+        problem, z = solved.problem, solved.z
+        if not (np.all(np.isfinite(z)) and np.all(np.isfinite(solved.state.R0))):
+            raise ConvergenceError("solve_line_bvp_3d: non-finite result", solved.history)
+        T = z[3 * problem.N :]
+        if np.min(T) < -1e3 * self.scene.rtol * problem.load_scale:
+            grounded = problem.contact_rows is not None and self.scene.friction > 0
+            raise ConvergenceError(
+                f"solve_line_bvp_3d: the discrete line is in compression (min T = {np.min(T):.3g} N): "
+                + (
+                    "friction holds a slack stretch on the seabed, which the 3-D line does not model "
+                    "(solve_line_bvp does, in the plane)"
+                    if grounded
+                    else f"{problem.mesh.t.shape[1]} elements do not resolve its bends; give more"
+                ),
+                solved.history,
+            )
+        solution = LineBVP3DSolution(problem, z, solved.history, solved.state)
+        solution.check()
+        return solution

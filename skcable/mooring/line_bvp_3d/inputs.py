@@ -1,0 +1,214 @@
+"""The scene of one line in space, checked: segments, attachments, seabed, current, options.
+
+`LineSegment` is one segment (length, weight, axial law, diameter and drag coefficients);
+`scene` checks every argument of `solve_line_bvp_3d` (each refusal an `skcable.InputError`
+naming the argument as the public API spells it) and returns a `Scene3D`, which the solver
+(`skcable.mooring.line_bvp_3d.driver`) takes as it is.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from skcable._checks import nonnegative, positive, real, scalar, whole
+from skcable.bvp.current import Current, current_of
+from skcable.bvp.terms import CableTerm
+from skcable.errors import InputError
+from skcable.mooring.axial import StrainLaw, strain_law
+from skcable.mooring.bathymetry import Bathymetry, bathymetry_of
+
+__all__ = ["LineSegment", "Scene3D", "attachments_of", "checked_options", "point", "scene", "segments_of"]
+
+
+@dataclass(frozen=True)
+class LineSegment:
+    """One segment of a line in space, listed from the anchor.
+
+    Attributes
+    ----------
+    length : float
+        Unstretched length (m), > 0.
+    w : float
+        Weight in water per unstretched length (N/m, downward; negative: a buoyant segment).
+    EA : StrainLaw, float or None
+        Axial law: a `skcable.mooring.axial.StrainLaw`, a stiffness EA (N, `ConstantEA`), or None
+        (inextensible).
+    diameter : float or None
+        Hydrodynamic diameter (m) for the current's drag; None: no drag.
+    cd_normal, cd_tangential : float
+        Drag coefficients normal and along the line (Morison), >= 0; a positive one needs the
+        diameter.
+    """
+
+    length: float
+    w: float
+    EA: StrainLaw | float | None = None
+    diameter: float | None = None
+    cd_normal: float = 0.0
+    cd_tangential: float = 0.0
+
+    def __post_init__(self):
+        object.__setattr__(self, "length", scalar("length", positive("length", self.length)))
+        object.__setattr__(self, "w", scalar("w", self.w))
+        object.__setattr__(self, "EA", strain_law(self.EA))
+        for name in ("cd_normal", "cd_tangential"):
+            object.__setattr__(self, name, scalar(name, nonnegative(name, getattr(self, name))))
+        if self.diameter is not None:
+            object.__setattr__(self, "diameter", scalar("diameter", positive("diameter", self.diameter)))
+        elif self.cd_normal > 0 or self.cd_tangential > 0:
+            raise InputError("diameter", "a segment with drag coefficients needs its diameter (m)")
+
+    @property
+    def law(self) -> StrainLaw | None:
+        """The axial law (None: inextensible)."""
+        return self.EA  # type: ignore[return-value]
+
+    @property
+    def drags(self) -> bool:
+        """Whether the current drags this segment."""
+        return self.diameter is not None and (self.cd_normal > 0 or self.cd_tangential > 0)
+
+
+def segments_of(segments) -> list[LineSegment]:
+    """The segments as a list of `LineSegment` (``(length, w[, EA[, diameter, cd_normal,
+    cd_tangential]])`` tuples converted)."""
+    if isinstance(segments, LineSegment):
+        segments = [segments]
+    try:
+        items = list(segments)
+    except TypeError as exc:
+        raise InputError("segments", "give a list of LineSegment or (length, w, EA) tuples") from exc
+    if not items:
+        raise InputError("segments", "give at least one segment")
+    out = []
+    for item in items:
+        if isinstance(item, LineSegment):
+            out.append(item)
+        elif isinstance(item, (tuple, list)) and 2 <= len(item) <= 6:
+            out.append(LineSegment(*item))
+        else:
+            raise InputError(
+                "segments", f"each segment is a LineSegment or (length, w[, EA, ...]), got {item!r}"
+            )
+    return out
+
+
+def attachments_of(attachments, n_segments: int) -> list[tuple[int, float]]:
+    """Point loads at the joints as ``(joint, P)`` pairs, ``P`` downward (N; negative for a buoy):
+    from ``(joint, P)`` pairs or objects with ``joint`` and ``force`` (`skcable.mooring.ClumpWeight`,
+    `skcable.mooring.Buoy`); joints 1 to ``n_segments − 1`` (the ends are supports)."""
+    out = []
+    try:
+        items = list(attachments)
+    except TypeError:
+        raise InputError("attachments", f"must be a sequence of (joint, P), got {attachments!r}") from None
+    for item in items:
+        if hasattr(item, "joint") and hasattr(item, "force"):
+            joint, P = item.joint, item.force
+        else:
+            try:
+                joint, P = item
+            except (TypeError, ValueError) as exc:
+                raise InputError(
+                    "attachments", f"each is (joint, P) or a ClumpWeight/Buoy, got {item!r}"
+                ) from exc
+        joint = whole("attachments", joint, 1, n_segments - 1) if n_segments > 1 else None
+        if joint is None:
+            raise InputError("attachments", "a line of one segment has no inner joint to attach to")
+        out.append((int(joint), float(scalar("attachments", P))))
+    return out
+
+
+def point(name: str, value) -> np.ndarray:
+    """``value`` as a finite 3-vector (m), or `InputError` naming ``name``."""
+    v = real(name, value)
+    if np.shape(v) != (3,):
+        raise InputError(name, f"must be a point (x, y, z) of 3 numbers, got {value!r}")
+    return np.array(v, dtype=float)
+
+
+@dataclass(frozen=True)
+class Scene3D:
+    """A checked scene and the solver's options (the arguments of `solve_line_bvp_3d`)."""
+
+    anchor: np.ndarray
+    fairlead: np.ndarray
+    segments: list
+    attachments: list
+    seabed: Bathymetry | None
+    friction: float
+    current: Current | None
+    rho_water: float
+    terms: tuple
+    n_elements: int
+    fit_touchdown: int
+    rtol: float
+    max_iter: int
+
+    @property
+    def length(self) -> float:
+        """Unstretched length of the line (m)."""
+        return float(sum(seg.length for seg in self.segments))
+
+    @property
+    def joints(self) -> np.ndarray:
+        """Arc length of every joint from the anchor (m), ends included."""
+        return np.concatenate([[0.0], np.cumsum([seg.length for seg in self.segments])])
+
+    @property
+    def point_loads(self) -> list[tuple[float, float]]:
+        """The attachments as ``(s, P)``: arc length of their joint (m), downward force (N)."""
+        return [(float(self.joints[k]), P) for k, P in self.attachments]
+
+
+def _terms(terms) -> tuple:
+    out = tuple(terms)
+    for term in out:
+        if not isinstance(term, CableTerm):
+            raise InputError("terms", f"each term is a cable term (skcable.bvp.CableTerm), got {term!r}")
+    return out
+
+
+def checked_options(segments, options: dict) -> dict:
+    """The arguments of `solve_line_bvp_3d` but the ends, checked: the segments (`segments_of`),
+    the attachments, seabed, friction, current, density, terms and solver options."""
+    segs = segments_of(segments)
+    bed = bathymetry_of(options["seabed"])
+    friction = scalar("friction", nonnegative("friction", options["friction"]))
+    if friction > 0 and bed is None:
+        raise InputError("friction", "applies to a line on the seabed: give seabed= as well")
+    current = current_of(options["current"])
+    if current is not None and not any(seg.drags for seg in segs):
+        raise InputError("current", "drags no segment: give the segments a diameter and drag coefficients")
+    return dict(
+        segments=segs,
+        attachments=attachments_of(options["attachments"], len(segs)),
+        seabed=bed,
+        friction=friction,
+        current=current,
+        rho_water=scalar("rho_water", positive("rho_water", options["rho_water"])),
+        terms=_terms(options["terms"]),
+        n_elements=whole("n_elements", options["n_elements"], 1),
+        fit_touchdown=whole("fit_touchdown", options["fit_touchdown"], 0, 10),
+        rtol=scalar("rtol", positive("rtol", options["rtol"])),
+        max_iter=whole("max_iter", options["max_iter"], 1),
+    )
+
+
+def scene(anchor, fairlead, checked: dict) -> Scene3D:
+    """The scene between ``anchor`` and ``fairlead`` of the `checked_options` ``checked``."""
+    a, b = point("anchor", anchor), point("fairlead", fairlead)
+    if not np.hypot(*(b[:2] - a[:2])) > 0 and not b[2] > a[2]:
+        raise InputError("fairlead", "must lie above the anchor where it is not beside it")
+    bed = checked["seabed"]
+    if bed is not None:
+        at_a = float(bed.height(a[0], a[1]))
+        if a[2] < at_a - 1e-9 * max(1.0, abs(at_a)):
+            raise InputError(
+                "seabed", f"must be at or below the anchor (z = {a[2]:g} m), got {at_a:g} m there"
+            )
+        if not b[2] > float(bed.height(b[0], b[1])):
+            raise InputError("fairlead", "must lie above the seabed")
+    return Scene3D(anchor=a, fairlead=b, **checked)

@@ -1,0 +1,157 @@
+"""The public entry points of the 3-D line BVP: `solve_line_bvp_3d`, and `LineBVP3D`, a line model."""
+
+from __future__ import annotations
+
+from skcable.errors import InputError
+from skcable.mooring.line_bvp_3d.driver import LineBVP3DSolver
+from skcable.mooring.line_bvp_3d.inputs import checked_options, scene
+from skcable.mooring.line_bvp_3d.solution import LineBVP3DSolution
+
+__all__ = ["LineBVP3D", "solve_line_bvp_3d"]
+
+_DEFAULTS = dict(
+    attachments=(),
+    seabed=None,
+    friction=0.0,
+    current=None,
+    rho_water=1025.0,
+    terms=(),
+    n_elements=64,
+    fit_touchdown=3,
+    rtol=1e-10,
+    max_iter=50,
+)
+
+
+def solve_line_bvp_3d(
+    anchor,
+    fairlead,
+    segments,
+    *,
+    attachments=(),
+    seabed=None,
+    friction: float = 0.0,
+    current=None,
+    rho_water: float = 1025.0,
+    terms=(),
+    n_elements: int = 64,
+    fit_touchdown: int = 3,
+    rtol: float = 1e-10,
+    max_iter: int = 50,
+) -> LineBVP3DSolution:
+    """A line in space from ``anchor`` to ``fairlead`` by finite elements, in a current, on a
+    seabed of any shape (see `skcable.mooring.line_bvp_3d`).
+
+    Parameters
+    ----------
+    anchor, fairlead : array_like (3,)
+        The ends (m), z up (the water's surface at z = 0 for the current's depths).
+    segments : list of LineSegment or tuples
+        From the anchor: ``LineSegment(length, w, EA, diameter, cd_normal, cd_tangential)``
+        (`skcable.mooring.line_bvp_3d.inputs.LineSegment`; ``EA`` a stiffness or a strain law).
+    attachments : sequence
+        Point loads at the inner joints: ``(joint, P)`` (``P`` downward, N; negative: a buoy) or
+        `skcable.mooring.ClumpWeight` / `skcable.mooring.Buoy`.
+    seabed : float, Bathymetry or (height, gradient), optional
+        The seabed (`skcable.mooring.bathymetry.bathymetry_of`): a flat height (m), a `Plane`, a
+        `DepthFunction`, a `Grid`.
+    friction : float
+        Coulomb coefficient μ on the seabed, fully mobilised along the line (needs a seabed).
+    current : (Ux, Uy), callable or Current, optional
+        The current (`skcable.bvp.current.current_of`), m/s; it drags the segments that have
+        a diameter and drag coefficients.
+    rho_water : float
+        Density of the water (kg/m³) for the drag.
+    terms : sequence of CableTerm
+        More distributed loads (`skcable.bvp.terms`: `Buoyancy` for a line given its dry
+        weight, the analyst's own).
+    n_elements : int
+        Elements over the line, shared among segments by length (at least one each).
+    fit_touchdown : int
+        Passes putting a node at the touchdown and the landing (0: nodal contact only).
+    rtol : float
+        Newton's tolerance on the scaled residual (forces over the total load, stretches over
+        the length).
+    max_iter : int
+        Newton iterations at most per solve.
+
+    Returns
+    -------
+    LineBVP3DSolution
+
+    Raises
+    ------
+    InputError
+        Bad data, named.
+    ConvergenceError
+        No solve converged (``history`` holds the merit per iteration); the line in compression;
+        its equilibrium residual above its bound.
+
+    Examples
+    --------
+    >>> from skcable.mooring.line_bvp_3d import LineSegment, solve_line_bvp_3d
+    >>> line = solve_line_bvp_3d(
+    ...     (0.0, 0.0, -200.0), (400.0, 0.0, -20.0), [LineSegment(500.0, 600.0, 4e8, 0.1, 1.2, 0.0)],
+    ...     current=(0.0, 0.8),
+    ... )
+    >>> bool(line.force_on_fairlead[1] > 0)  # the cross current pulls the fairlead along +y
+    True
+    """
+    options = dict(
+        attachments=attachments, seabed=seabed, friction=friction, current=current, rho_water=rho_water,
+        terms=terms, n_elements=n_elements, fit_touchdown=fit_touchdown, rtol=rtol, max_iter=max_iter,
+    )  # fmt: skip
+    return LineBVP3DSolver(scene(anchor, fairlead, checked_options(segments, options))).solve()
+
+
+class LineBVP3D:
+    """A line in space solved by `solve_line_bvp_3d`, as a line model: everything but its ends,
+    checked once; ``solve(anchor, fairlead, start=None)`` gives a `LineBVP3DSolution`.
+
+    Parameters
+    ----------
+    segments : list of LineSegment or tuples
+        As for `solve_line_bvp_3d`.
+    **options
+        ``attachments``, ``seabed``, ``friction``, ``current``, ``rho_water``, ``terms``,
+        ``n_elements``, ``fit_touchdown``, ``rtol``, ``max_iter``: as for `solve_line_bvp_3d`.
+    """
+
+    def __init__(self, segments, **options):
+        unknown = set(options) - set(_DEFAULTS)
+        if unknown:
+            raise InputError(
+                sorted(unknown)[0], f"is not an option of LineBVP3D (options are {sorted(_DEFAULTS)})"
+            )
+        self.options = {**_DEFAULTS, **options}
+        self.checked = checked_options(segments, self.options)
+        self.segments = self.checked["segments"]
+
+    @property
+    def length(self) -> float:
+        """Unstretched length (m)."""
+        return float(sum(seg.length for seg in self.segments))
+
+    def solve(self, anchor, fairlead, start: LineBVP3DSolution | None = None) -> LineBVP3DSolution:
+        """The line between ``anchor`` and ``fairlead`` (m); ``start``: a solution of this model at
+        other ends (a moored body's previous position), which the solve starts from.
+
+        Raises
+        ------
+        InputError
+            Bad ends; ``start`` that is no solution of this model.
+        ConvergenceError
+            As `solve_line_bvp_3d`.
+        """
+        if start is not None and not (isinstance(start, LineBVP3DSolution) and start.model is self):
+            raise InputError("start", f"must be a solution of this LineBVP3D, got {type(start).__name__}")
+        solution = LineBVP3DSolver(scene(anchor, fairlead, self.checked)).solve(start)
+        solution.model = self
+        return solution
+
+    def __repr__(self):
+        o = self.options
+        return (
+            f"LineBVP3D({len(self.segments)} segments, length={self.length:g} m, seabed={o['seabed']!r}, "
+            f"friction={o['friction']:g}, current={o['current']!r}, n_elements={o['n_elements']})"
+        )

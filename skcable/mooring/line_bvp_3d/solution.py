@@ -1,0 +1,291 @@
+r"""The solution of a line in space: end forces, contact, fields, equilibrium residual, stiffness.
+
+**The equilibrium residual.** The converged discrete line satisfies its weak equations to
+round-off. What it reports is that, as a field: ``ρ`` in the position space (P2, zero at the
+supports) with
+
+.. math:: \int_0^L \boldsymbol\rho\cdot\delta\mathbf r\,ds
+          = \int_0^L \Big(\frac{d(T\mathbf t)}{ds} + \mathbf q\Big)\cdot\delta\mathbf r\,ds
+          = -\int_0^L \big(T\,\mathbf t\cdot\delta\mathbf r' - \mathbf f\cdot\delta\mathbf r\big)\,ds
+            - \sum_k P_k\,\delta z_k + \sum_i \mathbf C_i\cdot\delta\mathbf r_i
+
+for every test field ``δr`` vanishing at the ends (``q`` all the forces on the line: ``f`` per
+length, the point loads, the seabed's forces ``C_i`` at the contact nodes; the inter-element
+jumps of ``T t`` included), evaluated at every quadrature point: the Galerkin projection of
+``d(T t)/ds + q``. It is assembled by scikit-fem's own ``asm`` (not the solve's assembly, whose
+round-off it must not share) and solved with the consistent mass matrix. `LineBVP3DSolution.check`
+bounds it by ``1e-8 w`` (``w`` the largest weight per length), or by its round-off floor where
+that is larger: 64 times the change of the rows when every dof moves by its rounding,
+``ε |J| |z|`` (N), per unit of the mass matrix's row (a taut line's tension over a short
+element, positions far from the origin). Beside it, `strong_residual` is the
+pointwise ``|d(T t)/ds + q|`` inside the elements: not round-off but the discretisation's error
+(it falls as the mesh is refined), an error indicator.
+"""
+
+from __future__ import annotations
+
+from functools import cached_property
+
+import numpy as np
+
+from skcable._checks import real, require, whole
+from skcable.bvp.terms import CableState, term_outputs
+from skcable.errors import ConvergenceError
+from skcable.mooring.line_bvp_3d.contact import anchor_split_3d, sliding_direction
+from skcable.mooring.line_bvp_3d.stiffness import FairleadStiffness, fairlead_stiffness_3d
+
+__all__ = ["LineBVP3DSolution"]
+
+EPS = float(np.finfo(float).eps)
+
+
+class LineBVP3DSolution:
+    """Solution of `skcable.mooring.line_bvp_3d.solve_line_bvp_3d`.
+
+    Attributes
+    ----------
+    anchor, fairlead : ndarray (3,)
+        The ends (m), z up.
+    force_on_anchor, force_on_fairlead : ndarray (3,)
+        The forces the line exerts on its anchor and its fairlead (N, global axes); where the
+        anchor lies on the seabed, the seabed under it takes its push.
+    T_A, T_B : float
+        Their magnitudes (N): the end tensions.
+    length : float
+        Unstretched length (m).
+    contact_s, contact_xyz : ndarray
+        Arc length (m) and position (n, 3) (m) of every contact node, along the line.
+    normal_force, gap : ndarray
+        Seabed normal force ``N_i >= 0`` (N) and height above the seabed (m) of each.
+    contact_force : ndarray (n, 3)
+        The seabed's force on the line at each contact node, friction included (N).
+    in_contact : ndarray of bool
+        The nodes on the seabed (the final active set).
+    s_touchdown : float
+        The arc length (m) of the last contact node towards the fairlead (0 without contact).
+    history, iterations
+        Newton's merit per iteration of the last solve.
+    problem, state
+        The discrete line (`skcable.mooring.line_bvp_3d.problem.LineProblem3D`) and its state.
+    model : object
+        The model that solved it (`LineBVP3D`; None from `solve_line_bvp_3d`).
+    """
+
+    model: object | None = None
+
+    def __init__(self, problem, z, history, state):
+        self.problem, self.dofs, self.state = problem, z, state
+        self.anchor, self.fairlead, self.length = problem.anchor, problem.fairlead, problem.L
+        self.history = [float(h) for h in history]
+        self.iterations = len(self.history) - 1
+        S_A, S_B = (np.array(v, dtype=float) for v in problem.reactions(state.R0))
+        self._contact()
+        if self.anchor_on_seabed:
+            bed, a = problem.seabed, self.anchor
+            grad = bed.gradient(a[0], a[1])
+            chord = self.xyz(np.array(min(problem.L, self.mesh_size))) - a
+            S_A, self.anchor_seabed_force = anchor_split_3d(S_A, grad, chord, problem.friction)
+        self.force_on_anchor, self.force_on_fairlead = -S_A, -S_B
+        self.T_A, self.T_B = float(np.linalg.norm(S_A)), float(np.linalg.norm(S_B))
+
+    @property
+    def mesh_size(self) -> float:
+        """The shortest element (m)."""
+        return float(np.min(np.diff(np.sort(self.problem.mesh.p[0]))))
+
+    @property
+    def anchor_on_seabed(self) -> bool:
+        """Whether the anchor lies on the seabed (to 1e-12 of the length)."""
+        bed, a = self.problem.seabed, self.anchor
+        return bed is not None and abs(a[2] - float(bed.height(a[0], a[1]))) <= 1e-12 * self.length
+
+    def _contact(self):
+        problem, terms = self.problem, self.state.terms
+        self.anchor_seabed_force = np.zeros(3)
+        if terms is None:
+            self.contact_s, self.contact_xyz = np.zeros(0), np.zeros((0, 3))
+            self.normal_force, self.gap = np.zeros(0), np.zeros(0)
+            self.contact_force, self.in_contact = np.zeros((0, 3)), np.zeros(0, dtype=bool)
+            self.s_touchdown = 0.0
+            return
+        rows, N, z = problem.contact_rows, problem.N, self.dofs
+        i = rows.nodes
+        self.contact_s = problem.basis.doflocs[0][i]
+        self.contact_xyz = np.column_stack([z[i], z[N + i], z[2 * N + i]])
+        g = terms.grad
+        n = np.array([-g[0], -g[1], np.ones_like(g[0])])
+        size = np.sqrt(np.sum(n * n, axis=0))
+        s_hat = sliding_direction(terms.chord, n)[0]
+        self.normal_force = terms.lam * size
+        self.contact_force = (terms.lam * n - problem.friction * self.normal_force * s_hat).T
+        self.gap, self.in_contact = terms.gap, terms.active
+        self.s_touchdown = float(self.contact_s[self.in_contact].max()) if self.in_contact.any() else 0.0
+
+    # --- fields ---------------------------------------------------------------------------------
+    def _s(self, s):
+        s = np.asarray(real("s", s), dtype=float)
+        require("s", (s >= 0) & (s <= self.length), "must lie in [0, length]", s)
+        return s
+
+    def xyz(self, s) -> np.ndarray:
+        """Position (m) at unstretched arc lengths ``s`` from the anchor: ``(*s.shape, 3)``."""
+        s = self._s(s)
+        state = self.problem.state_at(self.dofs, s.ravel())
+        return np.stack([state.x, state.y, state.z], axis=-1).reshape(*s.shape, 3)
+
+    def profile(self, n: int = 101) -> np.ndarray:
+        """The line at ``n`` points evenly spaced in unstretched arc length: ``(n, 3)`` (m)."""
+        return self.xyz(np.linspace(0.0, self.length, whole("n", n, 2)))
+
+    def profile_with_tension(self, n: int = 101):
+        """``(points (n, 3), tension (n,))`` at ``n`` points evenly spaced in unstretched arc
+        length (what `skcable.io.lines_mesh` reads)."""
+        s = np.linspace(0.0, self.length, whole("n", n, 2))
+        return self.xyz(s), np.asarray(self.T_of_s(s), dtype=float)
+
+    def tensions(self):
+        """One row per segment (pandas DataFrame): ``segment, length, T_lower, T_upper``
+        (N; the tension field just inside the segment at its ends, the support reactions at the
+        line's ends) and ``grounded_length`` (m, of its contact nodes' span on the seabed)."""
+        import pandas as pd
+
+        joints = self.problem.joints
+        inside = 1e-9 * np.diff(joints)
+        T_l = np.atleast_1d(self.T_of_s(joints[:-1] + inside))
+        T_u = np.atleast_1d(self.T_of_s(joints[1:] - inside))
+        T_l[0], T_u[-1] = self.T_A, self.T_B
+        grounded = np.zeros(joints.size - 1)
+        if self.in_contact.any():
+            on = self.contact_s[self.in_contact]
+            low, high = on.min(), on.max()
+            grounded = np.clip(np.minimum(joints[1:], high) - np.maximum(joints[:-1], low), 0.0, None)
+        return pd.DataFrame(
+            {
+                "segment": np.arange(joints.size - 1),
+                "length": np.diff(joints),
+                "T_lower": T_l,
+                "T_upper": T_u,
+                "grounded_length": grounded,
+            }
+        )
+
+    def T_of_s(self, s):
+        """The tension field (N) at unstretched arc lengths ``s`` (m): P1-DG, the value of the
+        element containing ``s``; `T_A` and `T_B` (the supports' reactions) are the accurate
+        end values."""
+        s = self._s(s)
+        T = self.problem.tension_at(self.dofs, s)
+        return T.reshape(s.shape)[()]
+
+    def tangent(self, s) -> np.ndarray:
+        """The unit tangent towards the fairlead at ``s``: ``(*s.shape, 3)``."""
+        s = self._s(s)
+        a = self.problem.state_at(self.dofs, s.ravel()).a
+        return (a / np.sqrt(np.sum(a * a, axis=0))).T.reshape(*s.shape, 3)
+
+    @property
+    def weight(self) -> float:
+        """The weight of the line and its point loads (N, downward)."""
+        return self.problem.weight + float(np.sum(self.problem.point_values))
+
+    # --- checks -----------------------------------------------------------------------------------
+    @cached_property
+    def _residual(self):
+        from skcable.mooring.line_bvp_3d.check import equilibrium_field
+
+        return equilibrium_field(self)
+
+    @property
+    def equilibrium_residual(self) -> float:
+        """The largest ``|ρ|`` (N/m) over the quadrature points (module docstring)."""
+        return float(np.max(self._residual[0]))
+
+    @property
+    def residual_field(self) -> np.ndarray:
+        """``|ρ|`` (N/m) at every quadrature point, (n_elements, n_points)."""
+        return self._residual[0]
+
+    @property
+    def residual_bound(self) -> float:
+        """The bound `check` holds the residual to (N/m): ``1e-8 w`` or its round-off floor."""
+        w = max(abs(seg.w) for seg in self.problem.segments)
+        return max(1e-8 * w, self._residual[1])
+
+    def check(self) -> None:
+        """Raise `skcable.ConvergenceError` where `equilibrium_residual` exceeds `residual_bound`."""
+        if not self.equilibrium_residual <= self.residual_bound:
+            raise ConvergenceError(
+                f"solve_line_bvp_3d: the equilibrium residual {self.equilibrium_residual:.3g} N/m exceeds "
+                f"{self.residual_bound:.3g} N/m",
+                self.history,
+            )
+
+    @cached_property
+    def strong_residual(self) -> np.ndarray:
+        """``|d(T t)/ds + q|`` (N/m) inside the elements at the quadrature points, (nq, ne): the
+        discretisation's error (module docstring)."""
+        from skcable.mooring.line_bvp_3d.check import strong_residual
+
+        return strong_residual(self)
+
+    # --- stiffness ----------------------------------------------------------------------------
+    @cached_property
+    def sensitivity(self):
+        """``(K_B, K_A, dz)``: the static sensitivities to the fairlead's position at the
+        converged state (`skcable.mooring.line_bvp_3d.problem.LineProblem3D.end_sensitivity`),
+        computed once: the static `stiffness` and a warm start's predictor read them."""
+        return self.problem.end_sensitivity(self.state)
+
+    def stiffness(self, kind: str = "static") -> FairleadStiffness:
+        """The fairlead stiffness ``∂S_B/∂r_B`` (N/m, 3 × 3, global axes; `kind` ``"static"`` or
+        ``"dynamic"``: `skcable.mooring.line_bvp_3d.stiffness`)."""
+        return fairlead_stiffness_3d(self, kind)
+
+    # --- output -----------------------------------------------------------------------------------
+    def samples(self, n: int = 201) -> dict:
+        """The line at ``n`` points evenly spaced in unstretched arc length: ``s`` (m), ``xyz``
+        (n, 3) (m), ``tension`` (N), ``tangent`` (n, 3), ``load`` (n, 3) (N/m, the distributed
+        force: weight, drag, the terms') and ``outputs`` (the terms' named point data, (n, 3))."""
+        s = np.linspace(0.0, self.length, whole("n", n, 2))
+        state = self.problem.state_at(self.dofs, s)
+        outputs = {k: np.asarray(v).T for k, v in term_outputs(self.problem.terms, state).items()}
+        return {
+            "s": s,
+            "xyz": np.column_stack([state.x, state.y, state.z]),
+            "tension": np.asarray(state.T, dtype=float),
+            "tangent": (state.a / np.sqrt(np.sum(state.a * state.a, axis=0))).T,
+            "load": self.problem.forces_at(self.dofs, s).T,
+            "outputs": outputs,
+        }
+
+    def to_vtk(self, path, n: int = 201):
+        """Write the line as a VTK polyline of ``n`` points (point data ``tension_N``,
+        ``tangent``, ``load_N_per_m`` and the terms' outputs, the current's drag
+        ``CurrentDrag_force_N_per_m``), atomically through `skcable.io.write`; returns the path."""
+        import meshio
+
+        from skcable.io import write
+
+        samples = self.samples(n)
+        points = samples["xyz"]
+        cells = np.column_stack([np.arange(len(points) - 1), np.arange(1, len(points))])
+        data = {
+            "tension_N": samples["tension"],
+            "tangent": samples["tangent"],
+            "load_N_per_m": samples["load"],
+        }
+        data.update(samples["outputs"])
+        return write(meshio.Mesh(points, [("line", cells)], point_data=data), path)
+
+    def state_at(self, s) -> CableState:
+        """The line's `CableState` at arc lengths ``s`` (m)."""
+        return self.problem.state_at(self.dofs, self._s(s).ravel())
+
+    def __repr__(self):
+        Fa, Fb = self.force_on_anchor, self.force_on_fairlead
+        return (
+            f"LineBVP3DSolution({self.problem.mesh.t.shape[1]} elements: force_on_fairlead=[{Fb[0]:.9g}, "
+            f"{Fb[1]:.9g}, {Fb[2]:.9g}] N, force_on_anchor=[{Fa[0]:.9g}, {Fa[1]:.9g}, {Fa[2]:.9g}] N, "
+            f"T_A={self.T_A:.9g} N, T_B={self.T_B:.9g} N, length={self.length:.9g} m, "
+            f"{int(self.in_contact.sum())} nodes on the seabed, iterations={self.iterations})"
+        )

@@ -1,0 +1,69 @@
+r"""The fairlead stiffness of a line in space, from its converged tangent.
+
+``K = ∂S_B/∂r_B`` (N/m, 3 × 3, global axes): the growth of the fairlead's reaction on the line
+``S_B`` as the fairlead moves by ``δr_B``, the anchor fixed (``K = −∂F_b/∂r_B``, ``F_b = −S_B``
+the force the line exerts on the fairlead: the sign of `skcable.mooring.Line3D.stiffness` and
+MoorPy's). By the implicit function theorem on the discrete equations ``F(z; r_B) = 0`` at the
+converged state, the active contact set held: ``J_ff ∂z_f/∂r_B = −J_fB`` (one banded
+factorisation, three right-hand sides), ``K = J_Bf ∂z_f/∂r_B + J_BB``
+(`skcable.mooring.line_bvp_3d.problem.LineProblem3D.end_sensitivity`). The anchor's reaction moves
+by ``∂S_A/∂r_B`` (the coupling a mooring system needs).
+
+**Static or dynamic.** The static stiffness takes each segment's quasi-static compliance
+``dε/dT``; the dynamic one, about the converged (mean) state, takes the laws' dynamic compliance
+(`skcable.mooring.axial.StaticDynamicRope`: ``1/(α + β T_mean)`` at the local mean tension; the
+static one for every other law). The result says which it is.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from skcable.errors import ConvergenceError, InputError
+
+__all__ = ["KINDS", "FairleadStiffness", "fairlead_stiffness_3d"]
+
+#: the stiffnesses a line gives
+KINDS = ("static", "dynamic")
+
+
+@dataclass(frozen=True)
+class FairleadStiffness:
+    """A fairlead stiffness (module docstring); an array-like 3 × 3 matrix (N/m).
+
+    Attributes
+    ----------
+    matrix : ndarray (3, 3)
+        ``∂S_B/∂r_B`` (N/m).
+    anchor : ndarray (3, 3)
+        ``∂S_A/∂r_B`` (N/m), the anchor's reaction on the line.
+    kind : str
+        ``"static"`` or ``"dynamic"``.
+    """
+
+    matrix: np.ndarray
+    anchor: np.ndarray
+    kind: str
+
+    def __array__(self, dtype=None, copy=None):
+        return np.asarray(self.matrix, dtype=dtype)
+
+    def __repr__(self):
+        diagonal = ", ".join(f"{v:.6g}" for v in np.diag(self.matrix))
+        return f"FairleadStiffness({self.kind}, diagonal=[{diagonal}] N/m)"
+
+
+def fairlead_stiffness_3d(solution, kind: str = "static") -> FairleadStiffness:
+    """The fairlead stiffness of a `LineBVP3DSolution` (module docstring)."""
+    if kind not in KINDS:
+        raise InputError("kind", f"must be one of {KINDS}, got {kind!r}")
+    problem = solution.problem
+    if kind == "dynamic":
+        K_B, K_A, _ = problem.end_sensitivity(problem.assemble(solution.dofs, dynamic=True))
+    else:
+        K_B, K_A = (K.copy() for K in solution.sensitivity[:2])  # the solution keeps its own
+    if not (np.all(np.isfinite(K_B)) and np.all(np.isfinite(K_A))):
+        raise ConvergenceError("fairlead stiffness: non-finite sensitivities", solution.history)
+    return FairleadStiffness(K_B, K_A, kind)

@@ -1,0 +1,409 @@
+"""The 3-D line BVP (`skcable.mooring.line_bvp_3d`) against independent references written here:
+scipy ``solve_ivp`` shooting of the same ODEs (in and across the line's plane, multi-segment
+with a clump and a nonlinear axial law, a tabulated current), the sloped closed form
+(`sloped_seabed_catenary`) on a plane bathymetry, central differences of its own solutions for
+the stiffness, a vertical tether's series compliance for the dynamic stiffness, and statics."""
+
+import pickle
+
+import numpy as np
+import pytest
+from scipy.integrate import solve_ivp
+from scipy.optimize import root
+
+from skcable.bvp.current import TabulatedCurrent
+from skcable.cable.seabed import sloped_seabed_catenary
+from skcable.errors import ConvergenceError, InputError
+from skcable.mooring.axial import StaticDynamicRope, StrainFunction, StrainTable
+from skcable.mooring.bathymetry import DepthFunction, Grid, Plane
+from skcable.mooring.line_bvp_3d import LineBVP3D, LineSegment, solve_line_bvp_3d
+
+RHO = 1025.0
+A = np.array([20.0, -10.0, -200.0])
+AZIMUTH = np.radians(30.0)
+E = np.array([np.cos(AZIMUTH), np.sin(AZIMUTH)])
+B = A + np.array([400.0 * E[0], 400.0 * E[1], 180.0])
+CHAIN = dict(length=500.0, w=600.0, EA=4e8, diameter=0.1, cd_normal=1.2, cd_tangential=0.008)
+
+
+def drag(v, a, d, cn, ct):
+    """Morison's drag per unstretched length, written here."""
+    n = np.linalg.norm(a)
+    t = a / n
+    vt = (v @ t) * t
+    vn = v - vt
+    return 0.5 * RHO * d * n * (cn * np.linalg.norm(vn) * vn + ct * np.linalg.norm(vt) * vt)
+
+
+def shoot(anchor, fairlead, pieces, velocity, start):
+    """``(F(0), F(L))``: the tension vectors at the ends by shooting ``dr/ds = (1 + ε(T)) F/T``,
+    ``dF/ds = −f`` segment by segment (``pieces``: (length, w, strain(T), d, cn, ct, P at its
+    upper joint)), ``F`` jumping by ``P e_z`` at a joint, from ``F(0)`` found by MINPACK's hybrd so that
+    ``r(L)`` is the fairlead. ``velocity(z)`` is the current (3,)."""
+
+    def rhs(s, y, w, strain, d, cn, ct):
+        r, F = y[:3], y[3:]
+        T = np.linalg.norm(F)
+        a = (1.0 + strain(T)) * F / T
+        f = drag(velocity(r[2]), a, d, cn, ct) if d else np.zeros(3)
+        f[2] -= w
+        return np.concatenate([a, -f])
+
+    def end(F0):
+        y = np.concatenate([anchor, F0])
+        for length, w, strain, d, cn, ct, P in pieces:
+            sol = solve_ivp(
+                rhs, (0.0, length), y, args=(w, strain, d, cn, ct), rtol=1e-12, atol=1e-9, method="DOP853"
+            )
+            y = sol.y[:, -1].copy()
+            y[5] += P
+        return y
+
+    F0 = root(lambda F: end(F)[:3] - fairlead, start, method="hybr", options={"xtol": 1e-12}).x
+    y = end(F0)
+    assert np.max(np.abs(y[:3] - fairlead)) < 1e-9 * np.linalg.norm(fairlead - anchor)
+    return F0, y[3:]
+
+
+def assert_end_forces(line, F0, FL, rtol):
+    """The line's end forces against shooting's: ``force_on_anchor = F(0)``, ``force_on_fairlead
+    = −F(L)``."""
+    scale = np.linalg.norm(FL)
+    assert np.max(np.abs(line.force_on_anchor - F0)) < rtol * scale
+    assert np.max(np.abs(line.force_on_fairlead + FL)) < rtol * scale
+
+
+@pytest.mark.parametrize("across", [False, True], ids=["current in the line's plane", "current across it"])
+def test_a_line_in_a_uniform_current_matches_shooting(across):
+    U = np.array([-0.9 * E[1], 0.9 * E[0]]) if across else 0.9 * E
+    line = solve_line_bvp_3d(A, B, [LineSegment(**CHAIN)], current=tuple(U), n_elements=128)
+    c = CHAIN
+    F0, FL = shoot(
+        A, B, [(c["length"], c["w"], lambda T: T / c["EA"], c["diameter"], 1.2, 0.008, 0.0)],
+        lambda z: np.array([U[0], U[1], 0.0]), line.force_on_anchor,
+    )  # fmt: skip
+    assert_end_forces(line, F0, FL, 1e-7)
+    middle = line.xyz(np.array(250.0)) - A
+    off_plane = middle[0] * -E[1] + middle[1] * E[0]
+    if across:  # the line leaves its vertical plane, downstream
+        assert off_plane > 5.0
+    else:
+        assert abs(off_plane) < 1e-9 * 400.0
+    assert line.equilibrium_residual <= line.residual_bound
+
+
+def test_the_end_forces_converge_at_h_to_the_p_plus_1():
+    """P2 positions (p = 2): the error ratio on mesh doubling is at most 2^-(p+1) = 1/8 (the end
+    forces superconverge: measured 1/16)."""
+    U = (-0.5, 0.8)
+    F0, FL = shoot(
+        A, B, [(500.0, 600.0, lambda T: T / 4e8, 0.1, 1.2, 0.008, 0.0)], lambda z: np.array([*U, 0.0]),
+        solve_line_bvp_3d(A, B, [LineSegment(**CHAIN)], current=U).force_on_anchor,
+    )  # fmt: skip
+    errors = []
+    for n in (16, 32, 64):
+        line = solve_line_bvp_3d(A, B, [LineSegment(**CHAIN)], current=U, n_elements=n)
+        errors.append(np.max(np.abs(line.force_on_fairlead + FL)) / np.linalg.norm(FL))
+    ratios = np.array(errors[1:]) / np.array(errors[:-1])
+    assert np.all(ratios < 1 / 8), ratios
+    assert np.all(ratios > 1 / 40), ratios  # and it is the discretisation, not round-off, here
+
+
+def polyester_law():
+    """A polyester-like rope: ε = (T*/EA) ln(1 + T/T*), stiffening with the load."""
+    EA, Tr = 1.2e8, 3e5
+
+    def strain(T):
+        return Tr / EA * np.log1p(T / Tr)
+
+    def slope(T):
+        return 1.0 / (EA * (1.0 + T / Tr))
+
+    return StrainFunction(strain, slope), strain
+
+
+def test_chain_polyester_chain_with_a_clump_in_a_sheared_current_matches_shooting():
+    law, strain = polyester_law()
+    table = TabulatedCurrent([0.0, 50.0, 150.0, 400.0], [[0.9, 0.3], [0.7, 0.35], [0.35, 0.2], [0.1, 0.05]])
+    segments = [
+        LineSegment(150.0, 1400.0, 7e8, 0.15, 2.4, 0.4),
+        LineSegment(450.0, 30.0, law, 0.16, 1.2, 0.008),
+        LineSegment(60.0, 1400.0, 7e8, 0.15, 2.4, 0.4),
+    ]
+    anchor, fairlead = np.array([0.0, 0.0, -300.0]), np.array([560.0, 60.0, -15.0])
+    line = solve_line_bvp_3d(
+        anchor, fairlead, segments, attachments=[(1, 2e4)], current=table, n_elements=200
+    )
+
+    def velocity(z):
+        U = table.velocity(np.array(z))
+        return np.array([float(U[0]), float(U[1]), 0.0])
+
+    pieces = [
+        (150.0, 1400.0, lambda T: T / 7e8, 0.15, 2.4, 0.4, 2e4),
+        (450.0, 30.0, strain, 0.16, 1.2, 0.008, 0.0),
+        (60.0, 1400.0, lambda T: T / 7e8, 0.15, 2.4, 0.4, 0.0),
+    ]
+    F0, FL = shoot(anchor, fairlead, pieces, velocity, line.force_on_anchor)
+    assert_end_forces(line, F0, FL, 1e-7)
+
+
+def slope_scene(slope, friction):
+    span, dh, w, EA, L = 400.0, 100.0, 1000.0, 5e8, 440.0
+    a = np.array([10.0, -20.0, -150.0])
+    b = a + np.array([span * E[0], span * E[1], dh])
+    bed = Plane(a[2], slope=(slope * E[0], slope * E[1]), origin=a[:2])
+    ref = sloped_seabed_catenary(span, dh, w, EA, length=L, seabed_slope=slope, friction=friction)
+    return a, b, bed, [LineSegment(L, w, EA)], ref
+
+
+@pytest.mark.parametrize(("slope", "friction"), [(0.05, 0.0), (-0.05, 0.1)])
+def test_a_line_on_a_plane_bathymetry_matches_the_sloped_closed_form(slope, friction):
+    """The plane rises along the line's azimuth (30°): in the line's vertical plane it is the
+    closed form's slope. The touchdown is fitted; the end forces converge at h⁴, and their
+    Richardson extrapolation from 128 and 256 elements meets the closed form to 1e-9."""
+    a, b, bed, segments, ref = slope_scene(slope, friction)
+
+    def forces(n):
+        line = solve_line_bvp_3d(a, b, segments, seabed=bed, friction=friction, n_elements=n)
+        Fb, Fa = -line.force_on_fairlead, line.force_on_anchor
+        return line, np.array([Fb[:2] @ E, Fb[2], Fa[:2] @ E, -Fa[2]])
+
+    coarse, fine = forces(128)[1], forces(256)
+    line, fine = fine
+    exact = np.array([ref.H, ref.V_B, ref.H_A, ref.V_A])
+    scale = np.array([ref.H, ref.V_B, ref.H_A, ref.T_A])
+    assert np.all(np.abs(fine - exact) / scale < 1e-8)
+    ratio = np.abs(fine - exact) / np.abs(coarse - exact)
+    assert np.all(ratio < 1 / 8), ratio
+    richardson = (16.0 * fine - coarse) / 15.0
+    assert np.all(np.abs(richardson - exact) / scale < 1e-9), np.abs(richardson - exact) / scale
+    assert line.s_touchdown == pytest.approx(ref.length_on_seabed, rel=1e-6)
+    assert np.all(line.gap >= -1e-12 * line.length) and np.all(np.abs(line.gap[line.in_contact]) < 1e-9)
+    assert line.normal_force.min() > -1e-6 * line.weight
+
+
+def statics(line):
+    """The forces on the line, summed, over its weight: anchor, fairlead, seabed and distributed."""
+    p = line.problem
+    f = p.loads(p.assembly.interpolate(line.dofs))[0]
+    total = -line.force_on_anchor - line.force_on_fairlead + line.contact_force.sum(axis=0)
+    total = total + line.anchor_seabed_force + np.sum(f * p.assembly.dx, axis=(1, 2))
+    total[2] -= np.sum(p.point_values)
+    return total / line.weight
+
+
+def wavy_grid():
+    xs, ys = np.linspace(-100, 900, 21), np.linspace(-300, 300, 13)
+    X, Y = np.meshgrid(xs, ys, indexing="ij")
+    return Grid(xs, ys, -200 + 0.03 * X + 10 * np.sin(X / 150) * np.cos(Y / 120))
+
+
+def test_a_line_on_a_grid_seabed_in_a_current_balances_and_touches_exactly():
+    grid = wavy_grid()
+    a = np.array([0.0, 0.0, float(grid.height(0.0, 0.0))])
+    line = solve_line_bvp_3d(
+        a, (600.0, 50.0, -20.0), [LineSegment(660.0, 1000.0, 5e8, 0.09, 2.4, 0.4)], seabed=grid,
+        friction=0.15, current=(0.2, 0.6), n_elements=96,
+    )  # fmt: skip
+    assert np.max(np.abs(statics(line))) < 1e-12
+    assert line.in_contact.sum() > 20 and np.all(line.gap >= -1e-12 * line.length)
+    # on the seabed the friction is μ N along it, and the seabed pushes along its normal
+    on = line.in_contact
+    normal = grid.normal(line.contact_xyz[on, 0], line.contact_xyz[on, 1]).T
+    along = line.contact_force[on] - np.sum(line.contact_force[on] * normal, axis=1)[:, None] * normal
+    np.testing.assert_allclose(
+        np.linalg.norm(along, axis=1), 0.15 * line.normal_force[on], rtol=1e-9, atol=1e-9
+    )
+
+
+def test_the_stiffness_matches_central_differences():
+    cases = [
+        (A, B, dict(current=(0.3, 0.9)), [LineSegment(**CHAIN)]),
+        (
+            *slope_scene(0.05, 0.1)[:2],
+            dict(seabed=slope_scene(0.05, 0.1)[2], friction=0.1),
+            slope_scene(0.05, 0.1)[3],
+        ),
+    ]
+    for anchor, fairlead, options, segments in cases:
+        model = LineBVP3D(segments, n_elements=64, fit_touchdown=0, **options)
+        line = model.solve(anchor, fairlead)
+        K = np.asarray(line.stiffness())
+        h = 1e-3
+        fd = np.zeros((3, 3))
+        for j in range(3):
+            step = np.zeros(3)
+            step[j] = h
+            plus = model.solve(anchor, fairlead + step, start=line).force_on_fairlead
+            minus = model.solve(anchor, fairlead - step, start=line).force_on_fairlead
+            fd[:, j] = -(plus - minus) / (2 * h)  # K = ∂S_B/∂r_B, S_B = −force_on_fairlead
+        assert np.max(np.abs(K - fd)) < 1e-6 * np.max(np.abs(K)), (K, fd)
+
+
+def test_the_dynamic_stiffness_of_a_vertical_tether_is_its_series_compliance():
+    """A vertical rope: its axial stiffness is ``1/∫ ds/EA(T(s))``, statically ``EA_s/L`` and
+    dynamically ``β w / ln((α + β T_B)/(α + β T_A))`` with ``T(s) = T_A + w s``."""
+    rope = StaticDynamicRope(1e8, alpha=2e8, beta=30.0)
+    L, w = 200.0, 50.0
+    line = solve_line_bvp_3d((0.0, 0.0, -250.0), (0.0, 0.0, -48.0), [LineSegment(L, w, rope)], n_elements=32)
+    T_A, T_B = line.T_A, line.T_B
+    assert T_B - T_A == pytest.approx(w * L, rel=1e-12)
+    static, dynamic = line.stiffness("static"), line.stiffness("dynamic")
+    assert static.kind == "static" and dynamic.kind == "dynamic"
+    assert static.matrix[2, 2] == pytest.approx(1e8 / L, rel=1e-10)
+    expected = 30.0 * w / np.log((2e8 + 30.0 * T_B) / (2e8 + 30.0 * T_A))
+    assert dynamic.matrix[2, 2] == pytest.approx(expected, rel=1e-9)
+
+
+def test_a_tabulated_law_line_matches_shooting():
+    eps = np.array([0.0, 0.002, 0.005, 0.009, 0.014, 0.02])
+    tension = np.array([0.0, 0.8e5, 2.2e5, 4.4e5, 7.5e5, 1.2e6])
+    law = StrainTable(eps, tension)
+    line = solve_line_bvp_3d(
+        A, B, [LineSegment(500.0, 600.0, law, 0.1, 1.2, 0.0)], current=(0.4, -0.3), n_elements=256
+    )
+    F0, FL = shoot(
+        A, B, [(500.0, 600.0, lambda T: float(law.strain(np.array(T))), 0.1, 1.2, 0.0, 0.0)],
+        lambda z: np.array([0.4, -0.3, 0.0]), line.force_on_anchor,
+    )  # fmt: skip
+    assert_end_forces(line, F0, FL, 1e-7)
+
+
+def test_the_drag_term_tangent_is_exact():
+    from skcable.fe import check_tangent
+
+    line = solve_line_bvp_3d(
+        A, B, [LineSegment(**CHAIN)], current=TabulatedCurrent([0, 400.0], [[1, 0.5], [0.2, 0.1]])
+    )
+    for term in line.problem.terms:
+        assert check_tangent(term, line.problem, line.dofs) < 1e-6
+
+
+def test_a_line_that_cannot_lie_on_its_seabed_fails_with_its_history():
+    """A ridge higher than the line can pass over: no equilibrium."""
+
+    def height(x, y):
+        return -200 + 190 * np.exp(-(((x - 300) / 40) ** 2))
+
+    def gradient(x, y):
+        return -2 * (x - 300) / 40**2 * 190 * np.exp(-(((x - 300) / 40) ** 2)), 0 * y
+
+    with pytest.raises(ConvergenceError) as info:
+        solve_line_bvp_3d(
+            (0.0, 0.0, -200.0), (600.0, 0.0, -20.0), [LineSegment(640.0, 1000.0, 5e8)],
+            seabed=DepthFunction(height, gradient), n_elements=64,
+        )  # fmt: skip
+    assert len(info.value.history) > 2
+
+
+def test_bad_inputs_are_refused_by_name():
+    with pytest.raises(InputError, match="cd_normal"):
+        LineSegment(100.0, 10.0, 1e8, 0.1, -1.0)
+    with pytest.raises(InputError, match="cd_tangential"):
+        LineSegment(100.0, 10.0, 1e8, 0.1, 1.0, -0.1)
+    with pytest.raises(InputError, match="diameter"):
+        LineSegment(100.0, 10.0, 1e8, None, 1.0)
+    with pytest.raises(InputError, match="strain"):
+        LineSegment(100.0, 10.0, StrainTable([0.0, 0.01, 0.005], [0.0, 1e5, 2e5]))
+    with pytest.raises(InputError, match="depths"):
+        solve_line_bvp_3d(
+            A, B, [LineSegment(**CHAIN)], current=TabulatedCurrent([0.0, 50.0, 20.0], np.ones((3, 2)))
+        )
+    xs, ys = np.linspace(0, 500, 6), np.linspace(-50, 50, 3)
+    z = -200.0 + 0 * xs[:, None] + 0 * ys
+    z[3, 1] = np.nan
+    with pytest.raises(InputError, match="z"):
+        solve_line_bvp_3d(A, B, [LineSegment(**CHAIN)], seabed=Grid(xs, ys, z))
+    with pytest.raises(InputError, match="friction"):
+        solve_line_bvp_3d(A, B, [LineSegment(**CHAIN)], friction=0.3)
+    with pytest.raises(InputError, match="current"):
+        solve_line_bvp_3d(A, B, [LineSegment(500.0, 600.0, 4e8)], current=(1.0, 0.0))
+    with pytest.raises(InputError, match="seabed"):
+        solve_line_bvp_3d(A, B, [LineSegment(**CHAIN)], seabed=-150.0)  # above the anchor
+    with pytest.raises(InputError, match="fairlead"):  # a seabed through the anchor, above the fairlead
+        solve_line_bvp_3d(A, B, [LineSegment(**CHAIN)], seabed=Plane(A[2], slope=(1.0, 0.0), origin=A[:2]))
+    with pytest.raises(InputError, match="attachments"):
+        solve_line_bvp_3d(A, B, [LineSegment(**CHAIN)], attachments=[(1, 1e4)])
+    with pytest.raises(InputError, match="anchor"):
+        solve_line_bvp_3d((0.0, 0.0), B, [LineSegment(**CHAIN)])
+    with pytest.raises(InputError, match="spam"):
+        LineBVP3D([LineSegment(**CHAIN)], spam=1)
+
+
+def test_vtk_repr_and_pickle(tmp_path):
+    import meshio
+
+    line = solve_line_bvp_3d(A, B, [LineSegment(**CHAIN)], current=(0.3, 0.9), n_elements=32)
+    mesh = meshio.read(line.to_vtk(tmp_path / "line.vtu", n=41))
+    np.testing.assert_allclose(mesh.points, line.profile(41), rtol=1e-12)
+    np.testing.assert_allclose(
+        mesh.point_data["tension_N"], line.T_of_s(np.linspace(0, 500.0, 41)), rtol=1e-12
+    )
+    drag_written = mesh.point_data["CurrentDrag_force_N_per_m"]
+    assert drag_written.shape == (41, 3)
+    s = 250.0
+    k = 20
+    a = line.state_at(np.array([s])).a[:, 0]
+    np.testing.assert_allclose(
+        drag_written[k], drag(np.array([0.3, 0.9, 0.0]), a, 0.1, 1.2, 0.008), rtol=1e-10
+    )
+    assert "force_on_fairlead=[" in repr(line) and "32 elements" in repr(line)
+    from skcable.io import lines_mesh
+
+    polyline = lines_mesh([line], n=21)  # the 3-D writer of the mooring lines reads it too
+    np.testing.assert_allclose(polyline.points, line.profile(21), rtol=1e-12)
+    table = line.tensions()
+    assert table["T_lower"].iloc[0] == line.T_A and table["T_upper"].iloc[-1] == line.T_B
+    copy = pickle.loads(pickle.dumps(line))
+    np.testing.assert_array_equal(copy.force_on_fairlead, line.force_on_fairlead)
+    np.testing.assert_array_equal(copy.profile(11), line.profile(11))
+    assert repr(copy) == repr(line)
+
+
+@pytest.mark.parametrize("kind", ["grid", "depth function"])
+def test_the_contact_rows_generalized_jacobian_is_exact(kind):
+    """On a curved seabed with friction and a current, the contact rows' Jacobian (row mixing,
+    ∇∇b, the sliding direction through the neighbours) against central differences of the
+    residual, the active set held."""
+
+    def height(x, y):
+        return -200 + 0.03 * x + 10 * np.sin(x / 150) * np.cos(y / 120)
+
+    def gradient(x, y):
+        return 0.03 + 10 / 150 * np.cos(x / 150) * np.cos(y / 120), -10 / 120 * np.sin(x / 150) * np.sin(
+            y / 120
+        )
+
+    bed = wavy_grid() if kind == "grid" else DepthFunction(height, gradient)
+    a = np.array([0.0, 0.0, float(bed.height(0.0, 0.0))])
+    segment = LineSegment(660.0, 1000.0, 5e8, 0.09, 2.4, 0.4)
+    line = solve_line_bvp_3d(
+        a, (600.0, 50.0, -20.0), [segment], seabed=bed, friction=0.15, current=(0.2, 0.6), n_elements=48
+    )
+    p, z = line.problem, line.dofs
+    state = p.assemble(z)
+    J = p.jacobian(state)
+    rng = np.random.default_rng(0)
+    for _ in range(4):
+        d = np.zeros(z.size)
+        d[p.free] = rng.standard_normal(p.free.size)
+        d /= np.abs(d).max()
+        errors = []
+        for h in (1e-5, 1e-6, 1e-7):
+            plus, minus = p.assemble(z + h * d), p.assemble(z - h * d)
+            assert np.array_equal(plus.terms.active, state.terms.active)
+            fd = ((plus.F - minus.F) / (2 * h))[p.free]
+            errors.append(np.linalg.norm((J @ d)[p.free] - fd) / np.linalg.norm(fd))
+        assert min(errors) < 1e-8, errors
+
+
+def test_the_line_model_pickles_and_solves_alike():
+    model = LineBVP3D(
+        [LineSegment(**CHAIN)], current=TabulatedCurrent([0, 400.0], [[1, 0.5], [0.2, 0.1]]), n_elements=24
+    )
+    copy = pickle.loads(pickle.dumps(model))
+    np.testing.assert_array_equal(copy.solve(A, B).force_on_fairlead, model.solve(A, B).force_on_fairlead)
+    assert repr(copy) == repr(model)
+    with pytest.raises(InputError, match="start"):
+        model.solve(A, B, start=copy.solve(A, B))

@@ -1,0 +1,143 @@
+"""The line BVP as a result and as a line model: stiffness, tables, `line_3d`, a spread mooring.
+
+References: central differences of re-solved lines (the stiffness from the implicit function
+theorem), the closed-form `mooring.Line` of the same segments (tables, 3-D forces, a whole spread
+mooring in equilibrium), the 2-D solution rotated by hand.
+"""
+
+import runpy
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from skcable import mooring
+from skcable.errors import InputError
+from skcable.mooring import LineBVP, LineBVPSolution
+
+ROOT = Path(__file__).resolve().parents[2]
+SCENES = {
+    "free": (360.0, 120.0, [(100.0, 1500.0, 8e8), (250.0, 300.0, 4e8), (60.0, 1500.0, 8e8)], {}),
+    "grounded": (400.0, 100.0, [(440.0, 1000.0, 5e8)], {"seabed": 0.0}),
+    "friction": (400.0, 100.0, [(440.0, 1000.0, 5e8)], {"seabed": 0.0, "friction": 0.2}),
+    "slack stretch": (400.0, 100.0, [(440.0, 1000.0, 5e8)], {"seabed": 0.0, "friction": 0.5}),
+    "clump, grounded": (
+        780.0,
+        250.0,
+        [(300.0, 1500.0, 8e8), (500.0, 600.0, 4e8), (50.0, 1500.0, 8e8)],
+        {"seabed": 0.0, "friction": 0.3, "point_loads": [(300.0, 2e4)]},
+    ),
+}
+
+
+@pytest.mark.parametrize("name", list(SCENES))
+def test_stiffness_is_the_derivative_of_resolved_lines(name):
+    span, dh, segments, kw = SCENES[name]
+    b = mooring.solve_line_bvp(span, dh, segments, **kw)
+    assert (b.problem.slack_end > 0) == (name == "slack stretch")
+    K = b.stiffness()
+    h = 1e-5 * span  # central differences' truncation below 1e-8 of K, round-off 1e-11
+    fd = np.empty((2, 2))
+    for column, (d_span, d_dh) in enumerate([(h, 0.0), (0.0, h)]):
+        plus = mooring.solve_line_bvp(span + d_span, dh + d_dh, segments, **kw)
+        minus = mooring.solve_line_bvp(span - d_span, dh - d_dh, segments, **kw)
+        fd[:, column] = [(plus.H_B - minus.H_B) / (2 * h), (plus.V_B - minus.V_B) / (2 * h)]
+    # measured 1e-8 to 5e-8; holding the slack stretch's end instead of solving for it was 8e-4 off
+    np.testing.assert_allclose(K, fd, rtol=0, atol=1e-6 * np.abs(fd).max())
+    if "friction" not in kw:  # without friction the line has a potential: K is symmetric
+        assert abs(K[0, 1] - K[1, 0]) < 1e-9 * np.abs(K).max()
+
+
+def test_tensions_per_segment_match_the_closed_form():
+    span, dh, segments, kw = SCENES["clump, grounded"]
+    b = mooring.solve_line_bvp(span, dh, segments, **kw)
+    line = mooring.Line(
+        [mooring.Segment(*s) for s in segments], [mooring.ClumpWeight(1, 2e4)], seabed=0.0, friction=0.3
+    ).solve(span, dh)
+    ours, closed = b.tensions(), line.tensions()
+    assert list(ours["segment"]) == [0, 1, 2]
+    np.testing.assert_allclose(ours["length"], [s[0] for s in segments], rtol=1e-15)
+    # at the joints the P1-DG tension field is O(h²): 6e-5 of T_B at 64 elements, 1.4e-5 at 128
+    # on the free line of this module (the field is superconvergent at the elements' Gauss
+    # points, 2e-7); the ends are the support reactions
+    scale = line.T_B
+    for column in {"T_lower", "T_upper", "H_lower", "H_upper"} & set(closed.columns):
+        np.testing.assert_allclose(ours[column], closed[column], rtol=0, atol=1e-4 * scale, err_msg=column)
+    np.testing.assert_allclose(ours["grounded_length"], closed["grounded_length"], atol=1e-8 * b.length)
+    assert ours["T_lower"][0] == b.T_A and ours["T_upper"].iloc[-1] == b.T_B
+
+
+def test_a_line_model_in_space_is_its_2d_solution_rotated():
+    chain = LineBVP([(850.0, 1000.0, 5e8)], seabed=0.0, friction=0.4)
+    anchor, heading = np.array([10.0, -20.0, -200.0]), np.radians(37.0)
+    fairlead = anchor + [780.0 * np.cos(heading), 780.0 * np.sin(heading), 186.0]
+    line = mooring.line_3d(chain, anchor, fairlead)
+    flat = chain.solve(780.0, 186.0)
+    assert isinstance(line.solution, LineBVPSolution) and line.solution.model is chain
+    e = np.array([np.cos(heading), np.sin(heading), 0.0])
+    np.testing.assert_allclose(line.force_on_fairlead, -flat.H_B * e + [0, 0, -flat.V_B], rtol=1e-12)
+    points = line.profile(51)
+    points = points[0] if isinstance(points, tuple) else points  # (points, tension) before 0.2
+    np.testing.assert_allclose(points[[0, -1]], [anchor, fairlead], atol=1e-9 * 850.0)
+    # the 3x3 stiffness against central differences of the fairlead force
+    K, h = line.stiffness(), 1e-2
+    numeric = np.column_stack(
+        [
+            -(
+                mooring.line_3d(chain, anchor, fairlead + h * step).force_on_fairlead
+                - mooring.line_3d(chain, anchor, fairlead - h * step).force_on_fairlead
+            )
+            / (2 * h)
+            for step in np.eye(3)
+        ]
+    )
+    np.testing.assert_allclose(K, numeric, rtol=0, atol=1e-6 * np.abs(K).max())
+
+
+def test_a_warm_start_gives_the_cold_solution():
+    model = LineBVP([(440.0, 1000.0, 5e8)], seabed=0.0, friction=0.5)
+    cold = model.solve(400.0, 100.0)
+    previous = model.solve(402.0, 99.0)
+    warm = model.solve(400.0, 100.0, start=previous)
+    # both converged on meshes graded from different paths: they agree to the discretisation
+    assert warm.H_B == pytest.approx(cold.H_B, rel=1e-9) and warm.V_B == pytest.approx(cold.V_B, rel=1e-9)
+    assert warm.problem.slack_end == pytest.approx(cold.problem.slack_end, rel=1e-6)
+    other = mooring.solve_line_bvp(400.0, 100.0, [(440.0, 1000.0, 5e8)], seabed=0.0)
+    for start in (other, (1e5, 2e5)):
+        with pytest.raises(InputError) as info:
+            model.solve(400.0, 100.0, start=start)
+        assert info.value.argument == "start"
+
+
+def test_the_model_checks_its_arguments_once():
+    for kwargs, argument in [
+        ({"friction": 0.2}, "friction"),
+        ({"seabed": 0.0, "friction": -1.0}, "friction"),
+        ({"seabed_slope": lambda x: 0 * x}, "seabed_slope"),
+        ({"n_elements": 2.5}, "n_elements"),
+        ({"rtol": [1e-10, 1e-9]}, "rtol"),
+        ({"point_loads": [(500.0, 1.0)]}, "point_loads"),
+    ]:
+        with pytest.raises(InputError) as info:
+            LineBVP([(440.0, 1000.0, 5e8)], **kwargs)
+        assert info.value.argument == argument, kwargs
+    with pytest.raises(InputError) as info:
+        LineBVP([(440.0, 1000.0, 5e8)], seabed=0.0).solve(400.0, -1.0)  # B below the seabed
+    assert info.value.argument == "dh"
+
+
+def test_a_spread_mooring_of_bvp_lines_equals_the_closed_form_one():
+    example = runpy.run_path(str(ROOT / "examples" / "spread_mooring.py"))
+    closed = example["system"]()
+    line = LineBVP([(example["LENGTH"], example["W"], example["EA"])], seabed=0.0)
+    bvp = mooring.MooringSystem(closed.body, [line] * 3, closed.anchors, depth=example["DEPTH"])
+    push = dict(force=example["FORCE"], moment=example["MOMENT"])
+    ours, theirs = bvp.equilibrium(**push), closed.equilibrium(**push)
+    # the lines' forces agree to 2e-8 (the BVP's discretisation at 64 elements): the offset of
+    # 56 m to 1e-7 m, the heel to 1e-9 rad
+    np.testing.assert_allclose(ours.position[:3], theirs.position[:3], rtol=0, atol=1e-7)
+    np.testing.assert_allclose(ours.position[3:], theirs.position[3:], rtol=0, atol=1e-9)
+    tensions = [[line.tension_at_fairlead for line in eq.lines] for eq in (ours, theirs)]
+    np.testing.assert_allclose(*tensions, rtol=1e-7)
+    K, K_closed = ours.stiffness(), theirs.stiffness()
+    np.testing.assert_allclose(K, K_closed, rtol=0, atol=1e-7 * np.abs(K_closed).max())

@@ -1,0 +1,213 @@
+"""Any line geometry a mooring system produces: either end higher, buoyant segments, a touchdown
+between two suspended ends, both ends on the seabed, an end on a sloped seabed, and the line BVP
+where no closed form holds, each chosen with its reason.
+
+References: the closures solved at 30 digits with mpmath (`tests.mooring.mooring_reference`),
+MoorPy's published test values (``tests/test_catenary.py`` of MoorPy: its buoyant line, its
+symmetric U, its sloped mirror), the lying line's tension from its stretch written here, central
+differences of the end forces for the stiffness.
+"""
+
+import math
+
+import numpy as np
+import pytest
+
+from skcable import mooring
+from skcable.errors import InputError
+from tests.mooring.mooring_reference import (
+    free_line,
+    grounded_multi,
+    sloped_line,
+    touchdown_line,
+)
+
+W, EA = 2456.82, 1.2326e9
+
+
+def test_buoyant_line_of_moorpy_test_catenary():
+    # MoorPy tests/test_catenary.py, case 5: x, z, L, EA, w = 37.97, 20.49, 100, 7.51e8, -881.05
+    x, z, L, EA_, w = 37.96888656874307, 20.49078283711694, 100.0, 751000000.0, -881.0549577007893
+    line = mooring.Line([mooring.Segment(L, w, EA_)])
+    r = mooring.line_in_plane(line, x, z, seabed=-1245.2679469540894)
+    assert r.model == "free"
+    H, V_A, V_B = free_line(x, z, [(L, w, EA_)], (r.H_B, r.V_B))
+    np.testing.assert_allclose([r.H_A, r.V_A, r.H_B, r.V_B], [H, V_A, H, V_B], rtol=1e-12)
+    # MoorPy's desired fAH, fAV, fBH, fBV (the forces on the ends; its rtol 1e-5)
+    desired = [6428.437434537766, 53178.729367882406, -6428.437434537766, 34926.76640219652]
+    np.testing.assert_allclose([r.H_A, -r.V_A, -r.H_B, -r.V_B], desired, rtol=1e-5)
+    # the line floats: it pulls both ends up, by its buoyancy in all
+    assert r.V_A < 0 and r.V_B < 0
+    assert r.V_A + r.V_B == pytest.approx(w * L, rel=1e-12)
+
+
+def test_buoyant_line_given_from_its_upper_end():
+    line = mooring.Line([mooring.Segment(100.0, -881.0549577007893, 7.51e8)])
+    up = mooring.line_in_plane(line, 37.96888656874307, 20.49078283711694)
+    down = mooring.line_in_plane(line, 37.96888656874307, -20.49078283711694)
+    np.testing.assert_allclose(
+        [down.H_A, down.V_A, down.H_B, down.V_B], [up.H_B, up.V_B, up.H_A, up.V_A], rtol=1e-13
+    )
+
+
+def test_symmetric_u_of_moorpy_test_catenary():
+    # MoorPy's test_catenary_symmetricU: catenary(100, 0, 130, 1e12, 100, CB=-20), against its half line
+    line = mooring.Line([mooring.Segment(130.0, 100.0, 1e12)])
+    u = mooring.line_in_plane(line, 100.0, 0.0, seabed=-20.0)
+    assert u.model == "touchdown between the ends"
+    s = u.solution
+    H, V_A, V_B = touchdown_line(100.0, 0.0, 100.0, 1e12, 130.0, 20.0, (s.H, s.V_A, s.V_B))
+    np.testing.assert_allclose([u.H_A, u.V_A, u.H_B, u.V_B], [H, V_A, H, V_B], rtol=1e-10)
+    half = mooring.line_in_plane(mooring.Line([mooring.Segment(65.0, 100.0, 1e12)]), 50.0, 20.0, seabed=0.0)
+    np.testing.assert_allclose(
+        [u.H_A, u.V_A, u.H_B, u.V_B], [half.H_B, half.V_B, half.H_B, half.V_B], rtol=1e-9
+    )
+
+
+def test_sloped_mirror_of_moorpy():
+    # MoorPy's test_sloped_mirror: a 10 degree slope, the line seen from either end
+    t = math.tan(math.radians(10.0))
+    line = mooring.Line([mooring.Segment(80.0, 100.0, 1e12)])
+    up = mooring.line_in_plane(line, 60.0, 40.0, seabed=0.0, seabed_slope=t)
+    down = mooring.line_in_plane(line, 60.0, -40.0, seabed=-(40.0 - 60.0 * t), seabed_slope=-t)
+    assert up.model == down.model == "grounded (slope)"
+    ref = sloped_line(60.0, 40.0, 100.0, 1e12, 80.0, t, 0.0, (up.H_B, up.length_on_seabed))
+    np.testing.assert_allclose([up.H_A, up.V_A, up.H_B, up.V_B], ref, rtol=1e-10)
+    np.testing.assert_allclose(
+        [down.H_A, down.V_A, down.H_B, down.V_B], [ref[2], ref[3], ref[0], ref[1]], rtol=1e-10
+    )
+    moorpy = pytest.importorskip("moorpy.Catenary")
+    fAH, fAV, fBH, fBV, _ = moorpy.catenary(60, 40, 80, 1e12, 100.0, CB=0, alpha=10, Tol=1e-5, MaxIter=50)
+    np.testing.assert_allclose([up.H_A, -up.V_A, -up.H_B, -up.V_B], [fAH, fAV, fBH, fBV], rtol=1e-5)
+
+
+def test_sloped_friction_and_stiffness():
+    t = math.tan(math.radians(6.0))
+    line = mooring.Line([mooring.Segment(420.0, W, EA)], seabed=0.0, friction=0.6)
+    r = mooring.line_in_plane(line, 380.0, 150.0, seabed=0.0, seabed_slope=t)
+    ref = sloped_line(380.0, 150.0, W, EA, 420.0, t, 0.6, (r.H_B, r.length_on_seabed))
+    np.testing.assert_allclose([r.H_A, r.V_A, r.H_B, r.V_B], ref, rtol=1e-10)
+    J = r.jacobian()
+    h = 1e-4
+    for col, (dspan, ddh) in ((0, (h, 0.0)), (2, (0.0, h))):
+        up = mooring.line_in_plane(line, 380.0 + dspan, 150.0 + ddh, seabed=0.0, seabed_slope=t)
+        down = mooring.line_in_plane(line, 380.0 - dspan, 150.0 - ddh, seabed=0.0, seabed_slope=t)
+        numeric = (np.array([up.H_A, up.V_A, up.H_B, up.V_B]) - [down.H_A, down.V_A, down.H_B, down.V_B]) / (
+            2 * h
+        )
+        np.testing.assert_allclose(J[:, col], numeric, rtol=1e-6, atol=1e-6 * np.abs(numeric).max())
+
+
+def test_lazy_wave_with_a_buoyant_section():
+    segments = [(300.0, W, EA), (200.0, W, EA), (150.0, -1500.0, 3e8), (250.0, W, EA)]
+    line = mooring.Line([mooring.Segment(*s) for s in segments])
+    r = mooring.line_in_plane(line, 600.0, 200.0, seabed=0.0)
+    assert r.model == "grounded"
+    H, V_B, grounded = grounded_multi(600.0, 200.0, segments, (r.H_B, r.V_B))
+    np.testing.assert_allclose([r.H_B, r.V_B, r.length_on_seabed], [H, V_B, grounded], rtol=1e-10)
+    # a hump: the buoyant section's top above both its ends
+    y = r.xy(np.linspace(500.0, 650.0, 301))[:, 1]
+    assert y.max() > max(y[0], y[-1]) + 1.0
+
+
+def test_both_ends_on_the_seabed():
+    line = mooring.Line(
+        [mooring.Segment(200.0, W, EA), mooring.Segment(100.0, 500.0, 4e8)], [mooring.ClumpWeight(1, 1e4)]
+    )
+    taut = mooring.line_in_plane(line, 300.5, 0.0, seabed=0.0)
+    assert taut.model == "on the seabed"
+    T = 0.5 / (200.0 / EA + 100.0 / 4e8)  # the stretch of the two segments takes the extra half metre
+    assert taut.H_A == pytest.approx(T, rel=1e-12) and taut.H_B == pytest.approx(T, rel=1e-12)
+    assert taut.V_A == taut.V_B == 0.0
+    slack = mooring.line_in_plane(line, 250.0, 0.0, seabed=0.0)
+    assert slack.H_A == slack.H_B == 0.0 and slack.solution.heap
+    with pytest.raises(InputError) as err:
+        slack.stiffness()
+    assert err.value.argument == "dh"
+
+
+def test_anchor_above_the_seabed_several_segments_takes_the_bvp():
+    # two equal segments touching down between suspended ends: no closed form for several segments;
+    # the BVP agrees with the one-segment three-part closure at the mesh's accuracy
+    half = (65.0, 100.0, 1e9)
+    line = mooring.Line([mooring.Segment(*half), mooring.Segment(*half)])
+    r = mooring.line_in_plane(line, 100.0, 5.0, seabed=-20.0)
+    assert r.model == "bvp" and "not one uniform segment" in r.reason
+    one = mooring.line_in_plane(mooring.Line([mooring.Segment(130.0, 100.0, 1e9)]), 100.0, 5.0, seabed=-20.0)
+    s = one.solution
+    H, V_A, V_B = touchdown_line(100.0, 5.0, 100.0, 1e9, 130.0, 20.0, (s.H, s.V_A, s.V_B))
+    np.testing.assert_allclose([r.H_A, r.V_A, r.H_B, r.V_B], [H, V_A, H, V_B], rtol=1e-5)
+
+
+def test_a_buoy_on_the_grounded_part_takes_the_bvp():
+    line = mooring.Line(
+        [mooring.Segment(400.0, W, EA), mooring.Segment(400.0, W, EA)], [mooring.Buoy(1, 2e5)]
+    )
+    r = mooring.line_in_plane(line, 720.0, 150.0, seabed=0.0)
+    assert r.model == "bvp" and "buoy" in r.reason
+    assert r.V_A + r.V_B + r.solution.bvp.normal_force.sum() == pytest.approx(800.0 * W - 2e5, rel=1e-6)
+
+
+def test_touchdown_between_ends_refuses_friction():
+    line = mooring.Line([mooring.Segment(130.0, 100.0, 1e12)], seabed=0.0, friction=0.3)
+    with pytest.raises(InputError) as err:
+        mooring.line_in_plane(line, 100.0, 0.0, seabed=-20.0)
+    assert err.value.argument == "friction"
+
+
+def test_end_below_the_seabed_is_refused():
+    line = mooring.Line([mooring.Segment(130.0, 100.0, 1e12)])
+    with pytest.raises(InputError) as err:
+        mooring.line_in_plane(line, 100.0, -30.0, seabed=-20.0)
+    assert err.value.argument == "seabed"
+    with pytest.raises(InputError) as err:
+        mooring.Segment(10.0, 0.0, 1e8)
+    assert err.value.argument == "w"
+
+
+@pytest.mark.parametrize(
+    "a, b",
+    [([0.0, 0.0, -80.0], [90.0, 30.0, -75.0]), ([90.0, 30.0, -75.0], [0.0, 0.0, -80.0])],
+    ids=["a lower", "b lower"],
+)
+def test_touchdown_between_ends_stiffness_in_space(a, b):
+    line = mooring.Line([mooring.Segment(130.0, 100.0, 1e9)])
+    r = mooring.line_between(line, a, b, depth=100.0)
+    assert r.model == "touchdown between the ends"
+    K = r.stiffness()
+    p0, h = np.r_[a, b], 1e-4
+    numeric = np.empty((6, 6))
+    for j in range(6):
+        up, down = p0.copy(), p0.copy()
+        up[j] += h
+        down[j] -= h
+        fu = mooring.line_between(line, up[:3], up[3:], depth=100.0).end_forces.ravel()
+        fd = mooring.line_between(line, down[:3], down[3:], depth=100.0).end_forces.ravel()
+        numeric[:, j] = -(fu - fd) / (2 * h)
+    np.testing.assert_allclose(K, numeric, rtol=1e-6, atol=1e-6 * np.abs(K).max())
+
+
+def test_lazy_wave_in_a_moored_system():
+    system = mooring.MooringSystem(depth=200.0)
+    hull = system.add_body(
+        mooring.RigidBody(mass=3e6, volume=3.3e3, metacentre=(0, 0, 8.0), waterplane_area=400.0)
+    )
+    riser = [
+        mooring.Segment(350.0, W, EA),
+        mooring.Segment(120.0, -1200.0, 3e8),
+        mooring.Segment(230.0, W, EA),
+    ]
+    for heading in np.radians([0.0, 120.0, 240.0]):
+        c, s = np.cos(heading), np.sin(heading)
+        a = system.add_point([650 * c, 650 * s, -200.0], fixed=True)
+        system.add_line(mooring.Line(riser), a, system.add_point([15 * c, 15 * s, -10.0], body=hull))
+    eq = system.equilibrium(force=(3e5, 0.0, 0.0))
+    assert all(line.model == "grounded" for line in eq.lines)
+    for line in eq.lines:  # each line's fairlead forces against its mpmath closure
+        low, high = line.a, line.b
+        span, dh = float(np.hypot(*(high - low)[:2])), float(high[2] - low[2])
+        segments = [(s.length, s.w, s.EA) for s in riser]
+        H, V_B, _ = grounded_multi(span, dh, segments, (line.plane.H_B, line.plane.V_B))
+        np.testing.assert_allclose([line.plane.H_B, line.plane.V_B], [H, V_B], rtol=1e-10)
+    net = system.net_force(eq.position, force=(3e5, 0.0, 0.0))
+    assert np.abs(net[:3]).max() < 1e-9 * max(line.tension_b for line in eq.lines)

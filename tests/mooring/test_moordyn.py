@@ -1,0 +1,233 @@
+"""MoorDyn v2 input files: read, write, round trips, and refusals by name.
+
+References: MoorPy's own MoorDyn reader (``System(file=...)``) on the files written here, and
+MoorPy's writer (``System.unload``) for a file read here (independent implementations of the
+format); the equilibrium of the system read back against the system written.
+"""
+
+import textwrap
+
+import numpy as np
+import pytest
+
+from skcable import mooring
+from skcable.errors import InputError
+from tests.mooring.test_mooring_system import basic_u
+
+FILE = textwrap.dedent(
+    """\
+    --------------------- MoorDyn Input File ------------------------------------
+    A buoy moored by three lines and a shared free point  ! front matter
+    ---------------------- LINE TYPES ----------------------------------------------------------------------
+    TypeName   Diam    Mass/m     EA     BA/-zeta    EI         Cd     Ca     CdAx    CaAx
+    (name)     (m)     (kg/m)     (N)    (N-s/-)     (N-m^2)    (-)    (-)    (-)     (-)
+    chain      0.216   288.0      1.2326e9  -1       0          1.33   1.0    0.64    0.5
+    rope       0.17    30.0       3.0e7|5.0e7  -1    0          2.0    1.1    0.0     0.15
+    ---------------------- BODIES ---------------------------------------
+    ID   Attachment  X0     Y0    Z0     r0      p0     y0     Mass  CG*   I*      Volume   CdA*   Ca*
+    (#)   (word)     (m)    (m)   (m)   (deg)   (deg)  (deg)   (kg)  (m)  (kg-m^2)  (m^3)   (m^2)  (-)
+    1     free       0      0     -20    0       0      0      1.0e5  -1.0  0       300.0    0      0
+    ---------------------- POINTS ---------------------------------------
+    ID   Attachment  X       Y     Z      Mass   Volume  CdA    Ca
+    (#)   (word/ID) (m)     (m)   (m)    (kg)   (m^3)   (m^2)  (-)
+    1     Fixed      600     0     -150    0      0       0      0
+    2     Fixed     -300   519.6   -150    0      0       0      0
+    3     Anchor    -300  -519.6   -150    0      0       0      0
+    4     Body1       5      0      -2     0      0       0      0
+    5     Body1     -2.5   4.33    -2     0      0       0      0
+    6     Body1     -2.5  -4.33    -2     0      0       0      0
+    7     Free      300      0     -100   2000    0       0      0   # a clump on line 1
+    ---------------------- LINES ----------------------------------------
+    ID   LineType   AttachA  AttachB  UnstrLen  NumSegs  LineOutputs
+    (#)   (name)     (ID)     (ID)      (m)       (-)      (-)
+    1     chain       1        7        330        20       p
+    2     rope        7        4        310        20       -
+    3     chain       2        5        640        30       -
+    4     chain       3        6        640        30       -
+    ---------------------- OPTIONS -----------------------------------------
+    0.002         dtM           time step to use in mooring integration (s)
+    150           WtrDpth       water depth (m)
+    1025          rho           water density
+    9.81          g
+    3.0e6         kBot
+    ---------------------- OUTPUTS -----------------------------------------
+    FairTen1
+    END
+    --------------------- need this line ------------------
+    """
+)
+
+
+def test_read_a_file_with_a_body_and_a_free_point(tmp_path):
+    path = tmp_path / "buoy.dat"
+    path.write_text(FILE)
+    model = mooring.read_moordyn(path)
+    system = model.system
+    assert system.depth == 150.0 and len(system.bodies) == 1 and len(system.mooring_lines) == 4
+    assert [p.kind for p in system.points] == ["fixed"] * 3 + ["body"] * 3 + ["free"]
+    chain = system.mooring_lines[0].model.segments[0]
+    assert chain.w == pytest.approx(9.81 * (288.0 - 1025.0 * np.pi / 4 * 0.216**2), rel=1e-14)
+    assert system.mooring_lines[1].model.segments[0].EA == 3.0e7  # the static EA of EA_s|EA_d
+    assert model.line_type_of == ["chain", "rope", "chain", "chain"] and model.segments == [20, 20, 30, 30]
+    assert model.outputs == ["FairTen1"] and model.options["kBot"] == "3.0e6"
+    eq = system.equilibrium()
+    scale = max(np.linalg.norm(line.end_forces, axis=1).max() for line in eq.lines)
+    assert eq.stable and np.abs(eq.residual).max() < 1e-9 * scale
+
+
+def test_round_trip(tmp_path):
+    first = tmp_path / "first.dat"
+    first.write_text(FILE)
+    model = mooring.read_moordyn(first)
+    second = mooring.write_moordyn(model, tmp_path / "second.dat")
+    again = mooring.read_moordyn(second)
+    a, b = model.system, again.system
+    assert [p.kind for p in a.points] == [p.kind for p in b.points]
+    np.testing.assert_array_equal([p.position for p in a.points], [p.position for p in b.points])
+    for ha, hb in zip(a.mooring_lines, b.mooring_lines, strict=True):
+        sa, sb = ha.model.segments[0], hb.model.segments[0]
+        assert (sa.length, sa.w, sa.EA, sa.diameter) == (sb.length, sb.w, sb.EA, sb.diameter)
+        assert (ha.a.index, ha.b.index) == (hb.a.index, hb.b.index)
+    assert again.line_types == model.line_types
+    assert {k: float(v) for k, v in again.options.items()} == {k: float(v) for k, v in model.options.items()}
+    np.testing.assert_array_equal(a.equilibrium().position, b.equilibrium().position)
+
+
+def test_a_written_file_reads_in_moorpy(tmp_path):
+    moorpy = pytest.importorskip("moorpy")
+    system, _ = basic_u()
+    path = mooring.write_moordyn(system, tmp_path / "u.dat", diameter=0.216)
+    ms = moorpy.System(file=str(path))
+    assert ms.depth == 100.0 and len(ms.pointList) == 4 and len(ms.lineList) == 3
+    for mp_point, p in zip(ms.pointList, system.points, strict=True):
+        np.testing.assert_array_equal(mp_point.r, p.position)
+        assert mp_point.type == (1 if p.fixed else 0) and mp_point.v == p.volume
+    for mp_line, h in zip(ms.lineList, system.mooring_lines, strict=True):
+        s = h.model.segments[0]
+        assert mp_line.L == s.length and mp_line.type["EA"] == s.EA
+        assert mp_line.type["w"] == pytest.approx(s.w, rel=1e-13)
+
+
+def test_a_file_moorpy_wrote_reads_here(tmp_path):
+    moorpy = pytest.importorskip("moorpy")
+    ms = moorpy.System(depth=200.0)
+    ms.setLineType(dnommm=120, material="chain", name="chain")
+    ms.addPoint(1, [800.0, 0.0, -200.0])
+    ms.addPoint(0, [20.0, 0.0, -14.0], m=1e4, v=30.0)
+    ms.addPoint(1, [-800.0, 0.0, -200.0])
+    ms.addLine(850.0, "chain", pointA=1, pointB=2)
+    ms.addLine(850.0, "chain", pointA=3, pointB=2)
+    ms.initialize()
+    path = tmp_path / "moorpy.dat"
+    ms.unload(str(path))
+    system = mooring.read_moordyn(path).system
+    assert system.depth == 200.0
+    np.testing.assert_allclose([p.position for p in system.points], [p.r for p in ms.pointList], atol=1e-3)
+    assert [p.kind for p in system.points] == ["fixed", "free", "fixed"]
+    seg = system.mooring_lines[0].model.segments[0]
+    # MoorPy writes its line types to four significant digits
+    assert seg.EA == pytest.approx(ms.lineTypes["chain"]["EA"], rel=5e-4)
+    assert seg.w == pytest.approx(ms.lineTypes["chain"]["w"], rel=5e-4)
+
+
+def test_a_multi_segment_line_written_as_lines_between_free_points(tmp_path):
+    # the joints of the multi-segment lines become free points (their clump weights as mass): the
+    # system read back is solved point by point, the one written by the multi-segment closed form
+    chain, rope = mooring.component("studless chain R3"), mooring.component("polyester rope")
+    line = mooring.Line(
+        [chain.segment(60.0, 0.1), rope.segment(440.0, 0.16), chain.segment(80.0, 0.1)],
+        [mooring.ClumpWeight(2, 3e4)],
+    )
+    system = mooring.MooringSystem(depth=200.0)
+    hub = system.add_body(mooring.PointBody(volume=200.0, mass=2e4), position=[0.0, 0.0, -20.0])
+    for h in np.radians([0.0, 120.0, 240.0]):
+        c, s = np.cos(h), np.sin(h)
+        system.add_line(
+            line,
+            system.add_point([560 * c, 560 * s, -200.0], fixed=True),
+            system.add_point([0, 0, 0], body=hub),
+        )
+    eq = system.equilibrium()
+    back = mooring.read_moordyn(mooring.write_moordyn(system, tmp_path / "multi.dat")).system
+    assert len(back.mooring_lines) == 9 and sum(p.kind == "free" for p in back.points) == 7
+    clumps = [p for p in back.points if p.kind == "free" and p.mass > 0 and p.volume == 0]
+    assert len(clumps) == 3 and clumps[0].mass == pytest.approx(3e4 / back.g, rel=1e-15)
+    eq_back = back.equilibrium()
+    np.testing.assert_allclose(eq_back.points[1].position, eq.position, atol=1e-9)
+
+
+_RODS = "---------------------- RODS ---\nID RodType\n(#) (name)\n1 Can Body1 0 0 2 0 0 15 8 p\n"
+
+
+@pytest.mark.parametrize(
+    "change, keyword",
+    [
+        (("---------------------- OPTIONS", "---------------------- WIBBLE"), "WIBBLE"),
+        (("3.0e6         kBot", "3.0e6         kBottom"), "kBottom"),
+        (("4     Body1", "4     Floating"), "Floating"),
+        (("1     chain       1        7", "1     chain       R1A      7"), "R1A"),
+        (("---------------------- OPTIONS", _RODS + "---------------------- OPTIONS"), "RODS"),
+        (("1     chain       1        7", "1     steel       1        7"), "steel"),
+        (("0.216   288.0", "0.216   heavy"), "Mass/m"),
+    ],
+)
+def test_unknown_keywords_are_refused_by_name(tmp_path, change, keyword):
+    path = tmp_path / "bad.dat"
+    path.write_text(FILE.replace(*change))
+    with pytest.raises(InputError) as err:
+        mooring.read_moordyn(path)
+    assert err.value.argument == keyword
+
+
+def test_what_moordyn_cannot_take_is_refused(tmp_path):
+    system = mooring.MooringSystem(depth=100.0)
+    hull = system.add_body(mooring.RigidBody(waterplane_area=10.0))
+    line = mooring.Line([mooring.Segment(110.0, 100.0, 1e8, diameter=0.05)])
+    system.add_line(
+        line, system.add_point([100, 0, -100.0], fixed=True), system.add_point([0, 0, 0], body=hull)
+    )
+    with pytest.raises(InputError) as err:
+        mooring.write_moordyn(system, tmp_path / "x.dat")
+    assert err.value.argument == "body"
+    assert not (tmp_path / "x.dat").exists()
+    bare, _ = basic_u()
+    with pytest.raises(InputError) as err:
+        mooring.write_moordyn(bare, tmp_path / "y.dat")  # no diameter
+    assert err.value.argument == "diameter"
+
+
+def test_drag_coefficients_written_on_moordyn_areas(tmp_path):
+    """A segment's drag coefficients reach the file as MoorDyn defines them: ``Cd`` on the frontal
+    area d l (as ``cd_normal``), ``CdAx`` on the surface π d l (MoorPy's line.py applies
+    ``½ ρ CdAx π d |u_t| u_t``), so that MoorPy's tangential drag per length is ours."""
+    moorpy = pytest.importorskip("moorpy")
+    system = mooring.MooringSystem(depth=100.0)
+    seg = mooring.Segment(110.0, 100.0, 1e8, diameter=0.05, cd_normal=1.2, cd_tangential=0.3)
+    a, b = system.add_point([100, 0, -100.0], fixed=True), system.add_point([0, 0, -10.0], fixed=True)
+    system.add_line(mooring.Line([seg]), a, b)
+    ms = moorpy.System(file=str(mooring.write_moordyn(system, tmp_path / "d.dat")))
+    kind = ms.lineList[0].type
+    rho, d, u = 1025.0, 0.05, 0.7  # a current of 0.7 m/s along the line
+    assert kind["Cd"] == 1.2
+    assert 0.5 * rho * kind["CdAx"] * np.pi * d * u * u == pytest.approx(
+        0.5 * rho * 0.3 * d * u * u, rel=1e-15
+    )
+
+
+def test_a_line_in_the_sea_is_not_written(tmp_path):
+    """What the file cannot hold with a line (its current, a nonlinear EA) is refused by name,
+    not dropped."""
+    seg = mooring.Segment(850.0, 2456.82, 1.2326e9, diameter=0.12, cd_normal=1.2)
+    anchors = np.array([[800.0, 0.0, -200.0], [-400.0, 692.8, -200.0], [-400.0, -692.8, -200.0]])
+    fair = 20.0 * anchors / 800.0 * np.array([1.0, 1.0, 0.0]) + np.array([0.0, 0.0, -14.0])
+    body = mooring.RigidBody(fairleads=fair, mass=8e6, volume=8.2e3, center_of_gravity=(0, 0, -5))
+    rope = mooring.axial.StrainTable([0.0, 0.01, 0.02], [0.0, 1e7, 3e7])  # a nonlinear law
+    for line in (
+        mooring.Line([seg], current=(0.5, 0.0)),
+        mooring.Line([mooring.Segment(850.0, 2456.82, rope, diameter=0.12)]),
+    ):
+        system = mooring.MooringSystem(body, [line] * 3, anchors, depth=200.0)
+        with pytest.raises(InputError) as err:
+            mooring.write_moordyn(system, tmp_path / "s.dat")
+        assert err.value.argument == "lines"
+        assert not (tmp_path / "s.dat").exists()
