@@ -27,6 +27,13 @@ from skcable._lazy import attach
 if TYPE_CHECKING:  # what static tools see; at run time, `attach` below serves them
     from skcable.conductors._catalogue import catalogue
     from skcable.conductors._conductor import Conductor
+    from skcable.conductors._damping import (
+        DAMPING_EXPONENTS,
+        damping_exponents,
+        foti_damping,
+        power_law_damping,
+        self_damping,
+    )
     from skcable.conductors._fatigue import (
         ClampStress,
         WohlerCurve,
@@ -59,6 +66,13 @@ if TYPE_CHECKING:  # what static tools see; at run time, `attach` below serves t
 _NAMES = {
     "._catalogue": ("catalogue",),
     "._conductor": ("Conductor",),
+    "._damping": (
+        "DAMPING_EXPONENTS",
+        "damping_exponents",
+        "foti_damping",
+        "power_law_damping",
+        "self_damping",
+    ),
     "._fatigue": (
         "ClampStress",
         "WohlerCurve",
@@ -91,6 +105,7 @@ _NAMES = {
 __getattr__, __dir__ = attach(__name__, names=_NAMES)
 
 __all__ = [
+    "DAMPING_EXPONENTS",
     "ChangeOfState",
     "ClampStress",
     "ComponentCurve",
@@ -109,17 +124,21 @@ __all__ = [
     "change_of_state",
     "clamp_stress",
     "clearance_ampacity",
+    "damping_exponents",
     "fatigue_life",
+    "foti_damping",
     "irvine_frequencies",
     "layer_rrts",
     "level_span_states",
     "miner_damage",
     "natural_frequencies",
     "poffenberger_swart",
+    "power_law_damping",
     "residual_strength",
     "ruling_span",
     "sag_at_current",
     "sag_tension_table",
+    "self_damping",
     "tension_section",
     "thermal_catenary",
     "wire_strengths",
