@@ -364,6 +364,13 @@ RESULTS = [
         lambda: conductors.residual_strength(strand.preset("acsr-drake"), 2, rts=140.1e3),
         None,
     ),
+    (
+        "aeolian vibration",
+        lambda: conductors.aeolian_vibration(
+            strand.preset("acsr-drake"), 28e3, [10.0, 30.0], damping="foti", hours_per_year=[5.0, 5.0]
+        ),
+        lambda r: (r.to_frame().to_numpy(), r.life_years),
+    ),
     ("section", lambda: strand.preset("steel-9.5").damaged(1).section(), None),
     (
         "bending law",
