@@ -23,14 +23,18 @@ from __future__ import annotations
 
 from collections.abc import Callable
 from dataclasses import dataclass, field
+from typing import TYPE_CHECKING
 
 import numpy as np
 
 from skcable._checks import nonnegative, positive, scalar
 from skcable.conductors._damping import foti_damping, self_damping
 from skcable.conductors._fatigue import WohlerCurve, clamp_amplitude, miner_damage, poffenberger_swart
-from skcable.conductors._wind import wind_band, wind_power
+from skcable.conductors._wind import WIND_MODELS, wind_band, wind_power
 from skcable.errors import ConvergenceError, InputError
+
+if TYPE_CHECKING:
+    from skcable.strand import LayerSlipLaw
 
 __all__ = ["AeolianVibration", "aeolian_amplitude", "aeolian_vibration"]
 
@@ -203,7 +207,7 @@ class AeolianVibration:
     E_a: float
     d_a: float
     x_b: float
-    law: object = field(repr=False)
+    law: LayerSlipLaw = field(repr=False)
     damping: str = "model"
     wind: str = "cigre"
     turbulence: float = 0.0
@@ -323,6 +327,8 @@ def aeolian_vibration(
 
     tension = positive("tension", scalar("tension", tension))
     f = np.atleast_1d(positive("frequencies", frequencies)).astype(float)
+    if not isinstance(wind, str) or wind not in WIND_MODELS:
+        raise InputError("wind", f"must be one of {WIND_MODELS}, got {wind!r}")
     conductor = Conductor.from_strand(strand, damage=damage)
     mass, diameter = conductor.w / STANDARD_GRAVITY, conductor.diameter
     law = LayerSlipLaw(conductor.strand.section(), mu=mu, tension=tension)
