@@ -243,3 +243,22 @@ def test_no_root_in_the_band(drake):
         conductors.aeolian_amplitude(20.0, D, m, T, lambda y, f: 1e3 + 0 * y * f)
     with pytest.raises(ConvergenceError, match="no root of P_wind = P_damping.*'rawlins-1983'"):
         conductors.aeolian_amplitude(20.0, D, m, T, lambda y, f: 0 * y * f, model="rawlins-1983")
+
+
+def test_a_tabulated_wind_balances_too(drake):
+    m, D, EI, k0 = drake["mass"], drake["D"], drake["EI"], drake["k0"]
+    damping = lambda y, f: conductors.foti_damping(y, f, T, m, EI, k0)  # noqa: E731
+    f = np.linspace(10.0, 25.0, 6)  # outside, the root leaves the table: below 0.03 or above 0.8
+    y = conductors.aeolian_amplitude(f, D, m, T, damping, model="diana-falco-1971")
+    np.testing.assert_allclose(conductors.wind_power(y, f, D, "diana-falco-1971"), damping(y, f), rtol=1e-10)
+    assert np.all((y / D >= 0.03) & (y / D <= 0.8))
+    with pytest.raises(ConvergenceError, match="smallest amplitude"):
+        conductors.aeolian_amplitude(40.0, D, m, T, damping, model="diana-falco-1971")
+
+
+def test_a_loop_steeper_than_a_taut_strings_is_refused(drake):
+    """At 100 N the loops are short: an undamped conductor's amplitude, y/D = e0, is no taut
+    string's loop there (slope 2π y/λ above 0.3)."""
+    with pytest.raises(InputError, match="taut") as err:
+        conductors.aeolian_amplitude(60.0, drake["D"], drake["mass"], 100.0, lambda y, f: 0.0 * y * f)
+    assert err.value.argument == "f"
