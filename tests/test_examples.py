@@ -76,3 +76,12 @@ def test_strand_bending_example_writes_figures_and_tables(tmp_path):
     assert len(written) == 3 and all(p.stat().st_size > 10_000 for p in written)
     table = mod["tables"]()
     assert "| 0.5 | 3.98e-05 |" in table  # the thesis value is shown beside ours
+
+
+def test_aeolian_example_carries_the_measured_points_of_the_test_data():
+    import numpy as np
+
+    mod = runpy.run_path(str(ROOT / "examples" / "aeolian_vibration.py"))
+    path = ROOT / "tests" / "strand" / "data" / "cardinal_bending_40kN.csv"
+    data = np.loadtxt(path, delimiter=",", comments="#", skiprows=9)
+    np.testing.assert_array_equal(mod["CARDINAL_MEASURED"], data)

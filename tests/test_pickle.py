@@ -364,12 +364,31 @@ RESULTS = [
         lambda: conductors.residual_strength(strand.preset("acsr-drake"), 2, rts=140.1e3),
         None,
     ),
+    (
+        "aeolian vibration",
+        lambda: conductors.aeolian_vibration(
+            strand.preset("acsr-drake"), 28e3, [10.0, 30.0], damping="foti", hours_per_year=[5.0, 5.0]
+        ),
+        lambda r: (r.to_frame().to_numpy(), r.life_years),
+    ),
     ("section", lambda: strand.preset("steel-9.5").damaged(1).section(), None),
     (
         "bending law",
         lambda: strand.preset("steel-9.5").damaged(1).bending_law(mu=0.5, axial_strain=0.004),
         lambda law: law.moment(np.linspace(0.0, 0.5, 11), 0),
     ),
+    (
+        "layer slip law",
+        lambda: strand.LayerSlipLaw(strand.preset("acsr-drake").damaged(2).section(), mu=0.7, tension=28e3),
+        lambda law: (law.moment(np.linspace(0.0, 0.5, 11), 1), law.energy_per_cycle(0.2, 1)),
+    ),
+    ("stage law", lambda: strand.StageLaw(50.0, [950.0], [9.5]), lambda law: law.loop(0.03)),
+    (
+        "stage response",
+        lambda: strand.StageLaw(50.0, [950.0], [9.5]).update([0.02, 0.0], np.zeros((2, 1))),
+        None,
+    ),
+    ("curvature path", lambda: strand.StageLaw(50.0, [950.0], [9.5]).path([0.02, -0.02]), None),
     ("beam frequencies", lambda: strand.beam_frequencies(1.0, 1e3, 1.0, 0.45, n_modes=3), None),
     (
         "strand frequencies",

@@ -7,12 +7,13 @@ worked examples of the sources beside skcable's values; ``catenary``,
 ``parabola``, ``elastic-catenary`` and ``funicular`` solve one cable;
 ``line`` one mooring line (segments, clump weights, buoys, seabed and
 friction); ``change-of-state`` and ``frequencies`` a conductor's span;
-``strand section`` and ``strand capacity`` analyse a strand; ``study run``
-runs a study file. Every command takes ``--json`` where it prints numbers;
-without it, results print with their units, arrays as labelled columns.
+``strand section`` and ``strand capacity`` analyse a strand; ``conductor vibration``
+a catalogue conductor's aeolian vibration; ``study run`` runs a study file. Every command
+takes ``--json`` where it prints numbers; without it, results print with their units, arrays
+as labelled columns.
 
 One private module per command group (``_demo``, ``_examples``, ``_cables``,
-``_strand``, ``_line``, ``_state``, ``_frequencies``, ``_study``, each with
+``_strand``, ``_line``, ``_state``, ``_frequencies``, ``_vibration``, ``_study``, each with
 ``register(subparsers, command)``), each importing the library inside its
 functions, so that ``skcable --help`` imports no model; shared: ``_args``
 (parsing, one-line errors, flag names), ``_output`` (tables, JSON, output

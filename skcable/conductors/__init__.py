@@ -14,7 +14,11 @@ One concern per module:
 - `_lines`, `_grid`, `_closure_z`, `_parabola`, `_inputs`, `_scratch`, `_reference`: whole
   lines at array speed (the line path of `change_of_state`);
 - `_rating`: conductor temperature from current and weather (IEEE 738, CIGRE 601);
-- `_strength`, `_fatigue`: residual strength, Poffenberger–Swart, Wöhler curves and Miner;
+- `_strength`, `_fatigue`: residual strength, Poffenberger–Swart (and the clamp amplitude of a
+  vibration loop), Wöhler curves and Miner;
+- `_damping`, `_wind`, `_aeolian`: aeolian vibration: self-damping (the conductor's own, from its
+  layer-by-layer bending law, Foti & Martinelli's, power laws), wind power input, and the energy
+  balance to the antinode amplitude, the clamp stress and a fatigue life;
 - `_catalogue`: a conductor catalogue; `_stress_strain`: stress–strain conductor models.
 """
 
@@ -25,11 +29,20 @@ from typing import TYPE_CHECKING
 from skcable._lazy import attach
 
 if TYPE_CHECKING:  # what static tools see; at run time, `attach` below serves them
+    from skcable.conductors._aeolian import AeolianVibration, aeolian_amplitude, aeolian_vibration
     from skcable.conductors._catalogue import catalogue
     from skcable.conductors._conductor import Conductor
+    from skcable.conductors._damping import (
+        DAMPING_EXPONENTS,
+        damping_exponents,
+        foti_damping,
+        power_law_damping,
+        self_damping,
+    )
     from skcable.conductors._fatigue import (
         ClampStress,
         WohlerCurve,
+        clamp_amplitude,
         clamp_stress,
         fatigue_life,
         miner_damage,
@@ -54,14 +67,24 @@ if TYPE_CHECKING:  # what static tools see; at run time, `attach` below serves t
         aa_coefficients,
         level_span_states,
     )
+    from skcable.conductors._wind import WIND_MODELS, wind_band, wind_power
 
 #: Where each public name lives (imported on first use, PEP 562).
 _NAMES = {
+    "._aeolian": ("AeolianVibration", "aeolian_amplitude", "aeolian_vibration"),
     "._catalogue": ("catalogue",),
     "._conductor": ("Conductor",),
+    "._damping": (
+        "DAMPING_EXPONENTS",
+        "damping_exponents",
+        "foti_damping",
+        "power_law_damping",
+        "self_damping",
+    ),
     "._fatigue": (
         "ClampStress",
         "WohlerCurve",
+        "clamp_amplitude",
         "clamp_stress",
         "fatigue_life",
         "miner_damage",
@@ -78,6 +101,7 @@ _NAMES = {
         "thermal_catenary",
     ),
     "._strength": ("ResidualStrength", "layer_rrts", "residual_strength", "wire_strengths"),
+    "._wind": ("WIND_MODELS", "wind_band", "wind_power"),
     "._stress_strain": (
         "ComponentCurve",
         "CreepLaw",
@@ -91,6 +115,8 @@ _NAMES = {
 __getattr__, __dir__ = attach(__name__, names=_NAMES)
 
 __all__ = [
+    "AeolianVibration",
+    "DAMPING_EXPONENTS",
     "ChangeOfState",
     "ClampStress",
     "ComponentCurve",
@@ -103,24 +129,34 @@ __all__ = [
     "TensionSection",
     "ThermalCatenary",
     "ThermalRating",
+    "WIND_MODELS",
     "WohlerCurve",
     "aa_coefficients",
+    "aeolian_amplitude",
+    "aeolian_vibration",
     "catalogue",
     "change_of_state",
+    "clamp_amplitude",
     "clamp_stress",
     "clearance_ampacity",
+    "damping_exponents",
     "fatigue_life",
+    "foti_damping",
     "irvine_frequencies",
     "layer_rrts",
     "level_span_states",
     "miner_damage",
     "natural_frequencies",
     "poffenberger_swart",
+    "power_law_damping",
     "residual_strength",
     "ruling_span",
     "sag_at_current",
     "sag_tension_table",
+    "self_damping",
     "tension_section",
     "thermal_catenary",
+    "wind_band",
+    "wind_power",
     "wire_strengths",
 ]

@@ -46,6 +46,7 @@ from skcable.errors import InputError
 
 __all__ = [
     "poffenberger_swart",
+    "clamp_amplitude",
     "ClampStress",
     "clamp_stress",
     "WohlerCurve",
@@ -103,6 +104,49 @@ def poffenberger_swart(Y_b, H, EI, E_a, d_a, x_b=X_B):
     if not np.all(np.isfinite(sigma)):
         raise InputError("H", "gives a stress outside the float range for these data")
     return float(sigma) if np.ndim(sigma) == 0 else sigma
+
+
+def clamp_amplitude(y_max, f, tension, mass, EI, x_b=X_B):
+    r"""Bending amplitude :math:`Y_b` (m, **peak to peak**) at ``x_b`` from the last point of
+    contact with a clamp, of a vibration loop of antinode amplitude ``y_max`` (zero to peak).
+
+    Near a clamped end the loop of a taut string, :math:`y\sin\beta x` with
+    :math:`\beta = 2\pi f\sqrt{m/T}`, becomes the boundary layer of a tensioned beam,
+    :math:`w(x) = (y\beta/p)(e^{-px} - 1 + px)`, :math:`p = \sqrt{T/EI}` (zero displacement and
+    slope at the clamp, the string's slope :math:`y\beta` away from it; asymptotic for
+    :math:`p \gg \beta`), so that
+
+    .. math:: Y_b = 2 w(x_b) = \frac{2 y\beta}{p}\left(e^{-p x_b} - 1 + p x_b\right).
+
+    `poffenberger_swart` of this :math:`Y_b` (the same EI) is the outer wire's stress amplitude
+    :math:`E_a (d_a/2)\,w''(0) = \pi d_a E_a f \sqrt{m/EI}\,y` (the "f·y_max" rule).
+
+    Parameters
+    ----------
+    y_max : float or array_like
+        Antinode amplitude, zero to peak (m), > 0.
+    f : float or array_like
+        Frequency (Hz), > 0.
+    tension, mass, EI : float or array_like
+        Tension (N), mass per unit length (kg/m), bending stiffness at the clamp (N·m²), > 0.
+    x_b : float
+        Where ``Y_b`` is measured (m), > 0; 0.089 m (IEEE, 1966).
+
+    Returns
+    -------
+    float or ndarray
+        ``Y_b`` peak to peak (m), broadcast over the arguments.
+    """
+    names = ("y_max", "f", "tension", "mass", "EI", "x_b")
+    y, f, T, m, EI, x_b = (
+        positive(n, v) for n, v in zip(names, (y_max, f, tension, mass, EI, x_b), strict=True)
+    )
+    p = np.sqrt(T / EI)
+    beta = 2.0 * np.pi * f * np.sqrt(m / T)
+    Y_b = 2.0 * y * beta / p * _denominator(p * x_b)
+    if not np.all(np.isfinite(Y_b)):
+        raise InputError("y_max", "gives a bending amplitude beyond floating point")
+    return float(Y_b) if np.ndim(Y_b) == 0 else Y_b
 
 
 @dataclass(frozen=True)

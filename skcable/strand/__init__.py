@@ -13,8 +13,10 @@ if TYPE_CHECKING:  # what static tools see; at run time, `attach` below serves t
     from skcable.strand._bending import BendingLaw, critical_curvature
     from skcable.strand._choice import Analysis, ClosedFormCurve, analyse, axial_force
     from skcable.strand._geometry import Layer, Strand, Wires, preset
+    from skcable.strand._layers import LayerSlipLaw
     from skcable.strand._material import Material, material
     from skcable.strand._section import Section
+    from skcable.strand._stages import CurvaturePath, StageLaw, StageResponse
     from skcable.strand._vibration import (
         BeamFrequencies,
         StrandFrequencies,
@@ -59,8 +61,10 @@ _NAMES = {
     "._bending": ("BendingLaw", "critical_curvature"),
     "._choice": ("Analysis", "ClosedFormCurve", "analyse", "axial_force"),
     "._geometry": ("Layer", "Strand", "Wires", "preset"),
+    "._layers": ("LayerSlipLaw",),
     "._material": ("Material", "material"),
     "._section": ("Section",),
+    "._stages": ("CurvaturePath", "StageLaw", "StageResponse"),
     "._vibration": (
         "BeamFrequencies",
         "StrandFrequencies",
@@ -138,9 +142,13 @@ __all__ = [
     "axial_force",
     "BendingLaw",
     "CapacityCurve",
+    "CurvaturePath",
     "Layer",
+    "LayerSlipLaw",
     "Material",
     "Section",
+    "StageLaw",
+    "StageResponse",
     "StepResult",
     "Strand",
     "StrandModel",
