@@ -333,6 +333,7 @@ def natural_frequencies(span, dh, w, EA, *, H=None, sag=None, n_modes=6, g=9.81)
     symmetric = np.linalg.norm(unit + unit[:, ::-1], axis=1) > np.linalg.norm(unit - unit[:, ::-1], axis=1)
     x = span * mesh.xi
     _plausible.conductor(span, dh, EA=EA, w=w, sag=sag if name == "sag" else None)
+    _plausible.gravity(g)
     return NaturalFrequencies(
         f_in_plane=results["in"][0],
         f_out_of_plane=results["out"][0],

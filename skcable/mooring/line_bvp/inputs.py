@@ -15,6 +15,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from skcable import _plausible
 from skcable._checks import nonnegative, positive, real, require, scalar, whole
 from skcable.bvp.terms import CableTerm
 from skcable.errors import InputError
@@ -216,6 +217,7 @@ def scene(
     segs = segments_of(segments)
     bed = seabed_of(seabed, seabed_slope, span)
     friction = nonnegative("friction", friction)
+    _plausible.friction(friction)
     if not isinstance(friction, float):
         raise InputError("friction", "one coefficient for the whole line")
     if friction > 0 and bed is None:

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+from skcable import _plausible
 from skcable._checks import nonnegative, scalar, whole
 from skcable.cable._extreme import outsized
 from skcable.errors import InputError
@@ -196,6 +197,7 @@ class LineBVP:
             seabed = scalar("seabed", seabed)
         self.seabed, self.seabed_slope = seabed, seabed_slope
         self.friction = scalar("friction", nonnegative("friction", friction))
+        _plausible.friction(self.friction)
         if self.friction > 0 and seabed is None:
             raise InputError("friction", "applies to a line on the seabed: give seabed= as well")
         self.point_loads = point_loads_of(point_loads, self.length)

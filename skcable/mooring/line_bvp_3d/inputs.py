@@ -12,6 +12,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from skcable import _plausible
 from skcable._checks import nonnegative, positive, real, scalar, whole
 from skcable.bvp.current import Current, current_of
 from skcable.bvp.terms import CableTerm
@@ -177,6 +178,7 @@ def checked_options(segments, options: dict) -> dict:
     segs = segments_of(segments)
     bed = bathymetry_of(options["seabed"])
     friction = scalar("friction", nonnegative("friction", options["friction"]))
+    _plausible.friction(friction)
     if friction > 0 and bed is None:
         raise InputError("friction", "applies to a line on the seabed: give seabed= as well")
     current = current_of(options["current"])

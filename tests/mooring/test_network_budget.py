@@ -1,0 +1,49 @@
+"""Every mooring equilibrium has a bound (issue 31): seeded networks of 2-3 bodies on 12-18
+lines, shared lines and free points (`tests.fuzz.networks`), each answering or raising
+`ConvergenceError` within its ``time_limit``, the error carrying every scaled residual and the
+best point reached; an answer balances at every body and free point by an independent recount.
+"""
+
+import math
+import time
+
+import numpy as np
+import pytest
+
+from skcable.errors import ConvergenceError, InputError
+from tests.fuzz.networks import network, recount
+
+pytestmark = pytest.mark.filterwarnings("ignore::skcable.errors.PlausibilityWarning")
+
+#: Seconds each call may take; one more line solve of the whole network may end past it.
+LIMIT = 1.0
+
+
+@pytest.mark.parametrize("seed", [0, 1])
+def test_a_network_answers_or_stops_within_its_budget(seed):
+    system, loads, data = network(seed)
+    assert 2 <= data["n_bodies"] <= 3 and 12 <= data["n_lines"] <= 18 and data["free"] >= 1
+    start = time.monotonic()
+    try:
+        eq = system.equilibrium(force=loads, time_limit=LIMIT)
+    except ConvergenceError as err:
+        took = time.monotonic() - start
+        assert took < LIMIT + 1.0, took  # the state that crossed the limit, at most
+        assert err.history and all(math.isfinite(h) for h in err.history)
+        if "time_limit" in str(err):
+            assert err.last is not None and err.last.shape == (system.n_dof,)
+            assert min(err.history) == pytest.approx(
+                float(str(err).split("residual of ")[1].split()[0]), rel=1e-2
+            )
+        return
+    assert recount(system, eq, loads) < 1e-8
+
+
+def test_the_time_limit_is_checked():
+    system, loads, _ = network(0)
+    with pytest.raises(InputError) as err:
+        system.equilibrium(force=loads, time_limit=0.0)
+    assert err.value.argument == "time_limit"
+    with pytest.raises(ConvergenceError, match=r"time_limit = 1e-06 s") as err:
+        system.equilibrium(force=loads, time_limit=1e-6)
+    assert isinstance(err.value.last, np.ndarray) or err.value.last is None
