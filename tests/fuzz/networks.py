@@ -15,8 +15,9 @@ import math
 import numpy as np
 
 from skcable import cable, mooring
+from tests.fuzz.harness import Case
 
-__all__ = ["network", "recount"]
+__all__ = ["REGIMES", "network", "recount", "solve"]
 
 RHO, G = 1025.0, 9.81
 
@@ -27,8 +28,9 @@ def _chain(rng, length):
     )
 
 
-def network(seed: int):
-    """``(system, loads, data)``: a seeded network and the external force on each body."""
+def network(seed: int, shared: bool = True, free: bool = True):
+    """``(system, loads, data)``: a seeded network and the external force on each body; without
+    the lines ``shared`` between bodies or the ``free`` points, if asked."""
     rng = np.random.default_rng(seed)
     depth = float(rng.uniform(100.0, 300.0))
     system = mooring.MooringSystem(depth=depth)
@@ -45,11 +47,11 @@ def network(seed: int):
         data["bodies"].append((0.8 * RHO * volume, volume, area))
     attach = [system.add_point((0.0, 0.0, 0.0), body=b) for b in bodies]
     lines = 0
-    for k in range(n_bodies - 1):  # shared lines between neighbours
+    for k in range(n_bodies - 1 if shared else 0):  # shared lines between neighbours
         span = float(np.linalg.norm(centres[k + 1] - centres[k]))
         system.add_line(_chain(rng, span * float(rng.uniform(1.01, 1.05))), attach[k], attach[k + 1])
         lines += 1
-    free = 0
+    n_free, free = 0, free
     while lines < n_lines:
         k = int(rng.integers(n_bodies))
         heading = float(rng.uniform(0.0, 2.0 * math.pi))
@@ -57,17 +59,18 @@ def network(seed: int):
         ring = np.array([math.cos(heading), math.sin(heading), 0.0])
         anchor = system.add_point(centres[k] + radius * ring - [0.0, 0.0, depth], fixed=True)
         reach = math.hypot(radius, depth)
-        if lines + 2 <= n_lines and rng.uniform() < 0.3:  # through a free point with a clump
+        through = rng.uniform() < 0.3
+        if free and through and lines + 2 <= n_lines:  # through a free point with a clump
             mid = centres[k] + 0.5 * radius * ring - [0.0, 0.0, 0.5 * depth]
-            point = system.add_point(mid, mass=float(rng.uniform(0.0, 2e4)))
-            system.add_line(_chain(rng, 0.55 * reach * float(rng.uniform(1.05, 1.3))), anchor, point)
-            system.add_line(_chain(rng, 0.5 * reach * float(rng.uniform(1.0, 1.05))), point, attach[k])
-            lines, free = lines + 2, free + 1
+            point = system.add_point(mid, mass=float(rng.uniform(0.0, 5e3)))
+            system.add_line(_chain(rng, 0.55 * reach * float(rng.uniform(1.01, 1.05))), anchor, point)
+            system.add_line(_chain(rng, 0.5 * reach * float(rng.uniform(1.01, 1.05))), point, attach[k])
+            lines, n_free = lines + 2, n_free + 1
         else:
             system.add_line(_chain(rng, reach * float(rng.uniform(1.1, 1.4))), anchor, attach[k])
             lines += 1
     loads = {b: (float(rng.uniform(-1, 1)) * 5e4, float(rng.uniform(-1, 1)) * 5e4, 0.0) for b in bodies}
-    data.update(n_bodies=n_bodies, n_lines=n_lines, free=free)
+    data.update(n_bodies=n_bodies, n_lines=n_lines, free=n_free)
     return system, loads, data
 
 
@@ -117,3 +120,32 @@ def recount(system, eq, loads) -> float:
             key = ("point", point.index)
             net[key] = net[key] + np.array([0.0, 0.0, (RHO * point.point.volume - point.point.mass) * G])
     return max(float(np.linalg.norm(net[k])) / max(scale[k], 1.0) for k in net)
+
+
+#: The time budget of a network's equilibrium in the fuzz (s); the harness's own limit is above it.
+BUDGET = 5.0
+
+
+def solve(seed: int, shared: bool = True, free: bool = True, time_limit: float = BUDGET):
+    """``(system, eq, loads)``: the equilibrium of `network`'s scene under its time budget."""
+    system, loads, _ = network(seed, shared, free)
+    return system, system.equilibrium(force=loads, time_limit=time_limit), loads
+
+
+def network_case(rng) -> Case:
+    """A `Case` of `tests.fuzz.harness`: a network's equilibrium within `BUDGET` seconds (the
+    harness's time limit, twice it, makes one past it a hang), an answer balanced at every body
+    and free point by `recount`; a `ConvergenceError` is an honest refusal (no independent
+    solver judges it)."""
+    seed, free = int(rng.integers(2**31)), bool(rng.uniform() < 0.5)
+
+    def check(result, caught):
+        system, eq, loads = result
+        left = recount(system, eq, loads)
+        return [] if left < 1e-8 else [f"recounted net force {left:.3g} of the local line tension"]
+
+    expr = f"__import__('tests.fuzz.networks', fromlist=['solve']).solve({seed}, True, {free})"
+    return Case("network", expr, frozenset({"force", "time_limit", "start"}), check, timeout=2 * BUDGET)
+
+
+REGIMES = {"network": network_case}
