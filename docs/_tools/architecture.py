@@ -24,6 +24,7 @@ COMPONENTS = {
     "skcable._checks": "argument checks: finite reals, positives, integers, exactly-one-of",
     "skcable._xp": "one formula, two back ends (math for scalars, NumPy for arrays)",
     "skcable._plausible": "the limits of plausible inputs and answers, their reasons and sources",
+    "skcable._budget": "the iteration and time budget of a search, its best point kept",
     "skcable._show": "``name=value unit`` for the reprs of results",
     "skcable._lazy": "lazy public names of a package (PEP 562)",
     "skcable._newton2": "the damped two-unknown Newton of every closed form on two unknowns",

@@ -39,12 +39,12 @@ best ``x`` reached.
 from __future__ import annotations
 
 import math
-import time
 
 import numpy as np
 
 from skcable import _plausible
-from skcable._checks import positive, real, scalar
+from skcable._budget import Budget, checked_budget
+from skcable._checks import real, scalar
 from skcable.errors import ConvergenceError, InputError
 from skcable.mooring.line3d import point
 from skcable.mooring.segments import ClumpWeight, Line, Segment
@@ -374,7 +374,7 @@ def design_line(
 
     lo, hi = _bounds(bounds, vary, line, a, b, depth, i, j)
     span = math.hypot(*(b[:2] - a[:2]))
-    counter = _Counted(q, value, *_budget(max_iter, time_limit))
+    counter = _Counted(q, value, *checked_budget(max_iter, time_limit))
     with _plausible.quiet():  # the samples are trials, not answers
         x, bracket = counter.run(
             _solve_bracketed, lo, hi, value, _tolerance(target, value, span), target, SAMPLES
@@ -385,39 +385,26 @@ def design_line(
     return Design(vary, target, value, x, achieved, model, anchor_x, solved, (lo, hi), bracket, counter.calls)
 
 
-def _budget(max_iter, time_limit) -> tuple[int, float]:
-    if isinstance(max_iter, bool) or not isinstance(max_iter, (int, np.integer)) or max_iter < 1:
-        raise InputError("max_iter", f"must be an integer >= 1, got {max_iter!r}")
-    return int(max_iter), scalar("time_limit", positive("time_limit", time_limit))
-
-
-class _OverBudget(Exception):
-    """A design's budget is spent (`_Counted`; no ``except`` of a solve's failure takes it)."""
-
-
 class _Counted:
-    """``f`` counted against a budget of ``max_iter`` calls and ``time_limit`` seconds, each
-    ``|f(x) - value|`` remembered (the history, the best ``x``); a call whose line cannot be
+    """``f`` counted against a `skcable._budget.Budget` of solves and seconds, each
+    ``|f(x) - value|`` recorded (the history, the best ``x``); a call whose line cannot be
     solved raises `_Unsolved`."""
 
-    def __init__(self, f, value=0.0, max_iter=10**9, time_limit=math.inf):
-        self.f, self.calls, self.value = f, 0, value
-        self.max_iter, self.deadline, self.time_limit = max_iter, time.monotonic() + time_limit, time_limit
-        self.history: list[float] = []
-        self.best: tuple[float, float | None] = (math.inf, None)
+    def __init__(self, f, value=0.0, max_iter=math.inf, time_limit=math.inf):
+        self.f, self.value = f, value
+        self.budget = Budget(max_iter, time_limit)
+
+    @property
+    def calls(self) -> int:
+        return self.budget.calls
 
     def __call__(self, x):
-        if self.calls >= self.max_iter or time.monotonic() > self.deadline:
-            raise _OverBudget
-        self.calls += 1
+        self.budget.spend()
         try:
             q = self.f(x)
         except (InputError, ConvergenceError):
             raise _Unsolved(x) from None
-        miss = abs(q - self.value)
-        self.history.append(miss)
-        if miss < self.best[0]:
-            self.best = (miss, float(x))
+        self.budget.record(abs(q - self.value), float(x))
         return q
 
     def run(self, search, *args):
@@ -425,13 +412,8 @@ class _Counted:
         best ``x`` (``last``)."""
         try:
             return search(self, *args)
-        except _OverBudget:
-            raise ConvergenceError(
-                f"design: no design within max_iter = {self.max_iter} solves or time_limit = "
-                f"{self.time_limit:g} s (the best x reached, error.last, misses by {self.best[0]:.3g})",
-                self.history,
-                last=self.best[1],
-            ) from None
+        except Budget.Spent:
+            raise self.budget.error("design (the measure: |q - value|)", "solves") from None
 
 
 def _bounds(bounds, vary, line, a, b, depth, i, j):
@@ -511,7 +493,7 @@ def design_pattern(
     a = first.a.position
     b = system.point_position(first.b)
     lo, hi = _bounds(bounds, vary, first.model, a, b, system.depth, i, j)
-    counter = _Counted(q, value, *_budget(max_iter, time_limit))
+    counter = _Counted(q, value, *checked_budget(max_iter, time_limit))
     tol = _tolerance(target, value, math.hypot(*(b[:2] - a[:2])))
     with _plausible.quiet():  # the samples are trials, not answers
         x, bracket = counter.run(_solve_bracketed, lo, hi, value, tol, target, int(samples))

@@ -40,7 +40,6 @@ from __future__ import annotations
 
 import functools
 import math
-import time
 import warnings
 from typing import NamedTuple
 
@@ -48,6 +47,7 @@ import numpy as np
 from scipy.linalg import lapack
 
 from skcable import _plausible
+from skcable._budget import Budget
 from skcable._show import counted, quantity
 from skcable.errors import ConvergenceError, InputError, PlausibilityWarning
 from skcable.fe import newton
@@ -98,23 +98,15 @@ class _State(NamedTuple):
     tension: float
 
 
-class _OverBudget(Exception):
-    """The equilibrium's time budget is spent (raised by `_Newton.assemble`, past every rejection
-    of a trial: no ``except ConvergenceError`` takes it; `solve_equilibrium` reports it)."""
-
-
 class _Newton:
     """One Newton solve of a system's equilibrium (module docstring): the problem's callables.
 
-    Every state it assembles counts against the time budget (``deadline``, `time.monotonic`) and
-    is remembered if it is the best so far (``best``: the smallest scaled residual and its dofs;
-    ``trace``: every scaled residual, in order), for the error of a search that runs out of time."""
+    Every state it assembles counts against the time budget (`skcable._budget.Budget`: its scaled
+    residual and dofs recorded, the best kept), for the error of a search that runs out of time."""
 
-    def __init__(self, system, external, tol, max_iter, without=frozenset(), deadline=math.inf):
+    def __init__(self, system, external, tol, max_iter, without=frozenset(), time_limit=math.inf):
         self.system, self.external, self.tol, self.max_iter = system, external, tol, max_iter
-        self.deadline = deadline
-        self.best: tuple[float, np.ndarray | None] = (math.inf, None)
-        self.trace: list[float] = []
+        self.budget = Budget(time_limit=time_limit)
         self.without = without
         self.units, self.arm = _units(system)
         self.unit_pairs = self.units[:, None] * self.units[None, :]  # a matrix in consistent units
@@ -137,15 +129,11 @@ class _Newton:
 
     def assemble(self, position) -> _State:
         """The `_State` at ``position``; the lines start from the last accepted ones."""
-        if time.monotonic() > self.deadline:
-            raise _OverBudget
+        self.budget.spend()
         G, K, lines = self.system.evaluate(position, self.external, start=self.lines, without=self.without)
         size = float(np.linalg.norm(G / self.units))
         state = _State(G, K, lines, position, size, self.system.tension_scale(lines))
-        scaled = self.norm(state)
-        self.trace.append(scaled)
-        if scaled < self.best[0]:
-            self.best = (scaled, np.array(position, dtype=float))
+        self.budget.record(self.norm(state), np.array(position, dtype=float))
         return state
 
     def norm(self, state) -> float:
@@ -347,21 +335,14 @@ def solve_equilibrium(
     80 ms on two contending threads against 1 ms on one). Below `_ONE_THREAD` dofs BLAS runs on
     one thread anyway (OpenBLAS threads only larger products), and setting the limit would cost
     more than a Newton step."""
-    solve = _Newton(system, external, tol, max_iter, without, time.monotonic() + time_limit)
+    solve = _Newton(system, external, tol, max_iter, without, time_limit)
     try:
         if system.n_dof < _ONE_THREAD:
             return _solve_equilibrium(solve, position, lines)
         with _threads().limit(limits=1, user_api="blas"):
             return _solve_equilibrium(solve, position, lines)
-    except _OverBudget:
-        best, where = solve.best
-        raise ConvergenceError(
-            f"mooring equilibrium: no equilibrium within time_limit = {time_limit:g} s "
-            f"({len(solve.trace)} states evaluated; the best reached, error.last, has a scaled "
-            f"residual of {best:.3g} against tol = {tol:g})",
-            solve.trace,
-            last=where,
-        ) from None
+    except Budget.Spent:
+        raise solve.budget.error("mooring equilibrium (the measure: the scaled residual)", "states") from None
 
 
 #: Systems of this many dofs and more solve under a limit of one BLAS thread (`solve_equilibrium`).

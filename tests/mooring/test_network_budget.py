@@ -5,11 +5,13 @@ best point reached; an answer balances at every body and free point by an indepe
 """
 
 import math
+import re
 import time
 
 import numpy as np
 import pytest
 
+from skcable import mooring
 from skcable.errors import ConvergenceError, InputError
 from tests.fuzz.networks import network, recount
 
@@ -32,9 +34,8 @@ def test_a_network_answers_or_stops_within_its_budget(seed):
         assert err.history and all(math.isfinite(h) for h in err.history)
         if "time_limit" in str(err):
             assert err.last is not None and err.last.shape == (system.n_dof,)
-            assert min(err.history) == pytest.approx(
-                float(str(err).split("residual of ")[1].split()[0]), rel=1e-2
-            )
+            best = float(re.search(r"measures ([-+.\de]+)\)", str(err)).group(1))
+            assert min(err.history) == pytest.approx(best, rel=1e-2)
         return
     assert recount(system, eq, loads) < 1e-8
 
@@ -57,3 +58,21 @@ def test_the_time_limit_is_checked():
     with pytest.raises(ConvergenceError, match=r"time_limit = 1e-06 s") as err:
         system.equilibrium(force=loads, time_limit=1e-6)
     assert isinstance(err.value.last, np.ndarray) or err.value.last is None
+
+
+def test_the_line_bvps_stop_at_their_time_limit():
+    from skcable.mooring.line_bvp_3d import LineSegment, solve_line_bvp_3d
+
+    segments = [(300.0, 1000.0, 5e8), (250.0, 400.0, 2e8), (300.0, 1000.0, 5e8)]
+    start = time.monotonic()
+    with pytest.raises(ConvergenceError, match=r"solve_line_bvp .*time_limit = 1e-09 s") as err:
+        mooring.solve_line_bvp(800.0, 150.0, segments, seabed=0.0, time_limit=1e-9)
+    assert time.monotonic() - start < 5.0 and err.value.history == []  # stopped before its first solve
+    with pytest.raises(ConvergenceError, match="solve_line_bvp_3d") as err:
+        solve_line_bvp_3d(
+            (0.0, 0.0, -200.0), (400.0, 0.0, -20.0), [LineSegment(500.0, 600.0, 4e8, 0.1, 1.2, 0.0)],
+            current=(0.0, 0.8), time_limit=1e-9,
+        )  # fmt: skip
+    with pytest.raises(InputError) as bad:
+        mooring.solve_line_bvp(800.0, 150.0, segments, time_limit=-1.0)
+    assert bad.value.argument == "time_limit"

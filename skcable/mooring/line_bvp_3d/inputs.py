@@ -147,6 +147,7 @@ class Scene3D:
     fit_touchdown: int
     rtol: float
     max_iter: int
+    time_limit: float = 60.0
 
     @property
     def length(self) -> float:
@@ -196,6 +197,7 @@ def checked_options(segments, options: dict) -> dict:
         fit_touchdown=whole("fit_touchdown", options["fit_touchdown"], 0, 10),
         rtol=scalar("rtol", positive("rtol", options["rtol"])),
         max_iter=whole("max_iter", options["max_iter"], 1),
+        time_limit=scalar("time_limit", positive("time_limit", options.get("time_limit", 60.0))),
     )
 
 
