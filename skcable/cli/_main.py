@@ -9,7 +9,18 @@ import os
 import sys
 import warnings
 
-from skcable.cli import _cables, _demo, _examples, _frequencies, _line, _mooring, _state, _strand, _study
+from skcable.cli import (
+    _cables,
+    _conductor,
+    _demo,
+    _examples,
+    _frequencies,
+    _line,
+    _mooring,
+    _state,
+    _strand,
+    _study,
+)
 from skcable.cli._args import Parser, given_numbers, input_message, warning_message
 from skcable.cli._status import (
     EXIT_ERROR,
@@ -24,7 +35,7 @@ from skcable.cli._status import (
 __all__ = ["main", "parser"]
 
 #: The command modules, in the order of ``skcable --help``; each has ``register(sub, command)``.
-COMMANDS = (_demo, _examples, _cables, _strand, _line, _mooring, _state, _frequencies, _study)
+COMMANDS = (_demo, _examples, _cables, _strand, _line, _mooring, _state, _frequencies, _conductor, _study)
 
 
 class _Version(argparse.Action):
@@ -85,6 +96,8 @@ def _no_handler(args) -> str:
         return "strand: choose 'section' or 'capacity' (skcable strand --help)"
     if args.command == "study":
         return "study: choose 'run' (skcable study --help)"
+    if args.command == "conductor":
+        return "conductor: choose 'table', 'ruling-span' or 'rating' (skcable conductor --help)"
     return "choose a command (skcable --help)"
 
 

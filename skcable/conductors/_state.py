@@ -46,7 +46,7 @@ import numpy as np
 
 from skcable import _plausible
 from skcable._checks import broadcast, nonnegative, positive, real, scalar
-from skcable._show import attributes, counted, quantity
+from skcable._show import Shown, attributes, counted, quantity
 from skcable.cable._elastic import elastic_catenary_unchecked as elastic_catenary
 from skcable.cable._extreme import blame_extreme
 from skcable.conductors._inputs import load_plane, normal, renamed, thermal_factor
@@ -59,7 +59,7 @@ __all__ = ["ThermalCatenary", "thermal_catenary", "ChangeOfState", "change_of_st
 _MODELS = ("catenary", "parabola")
 
 
-class ThermalCatenary:
+class ThermalCatenary(Shown):
     """Solution of `thermal_catenary`.
 
     ``H, V_A, V_B, T_A, T_B, sag`` and ``y(x), T(x), slope(x)`` of the loaded
@@ -150,7 +150,7 @@ def thermal_catenary(span, dh, w, EA, *, length, alpha, t, t0=0.0):
     return ThermalCatenary(curve, w, EA, length, k)
 
 
-class ChangeOfState:
+class ChangeOfState(Shown):
     """Result of `change_of_state`; arrays over the broadcast states.
 
     Attributes

@@ -45,6 +45,7 @@ import numpy as np
 from skcable import _plausible
 from skcable._budget import Budget, checked_budget
 from skcable._checks import real, scalar
+from skcable._show import Shown
 from skcable.errors import ConvergenceError, InputError
 from skcable.mooring.line3d import point
 from skcable.mooring.segments import ClumpWeight, Line, Segment
@@ -73,7 +74,7 @@ def quantity(target, solved) -> float:
     return touchdown if target == "touchdown" else float(solved.span - touchdown)
 
 
-class Design:
+class Design(Shown):
     """The designed value of a variable and what it achieves.
 
     Attributes

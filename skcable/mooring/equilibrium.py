@@ -48,7 +48,7 @@ from scipy.linalg import lapack
 
 from skcable import _plausible
 from skcable._budget import Budget
-from skcable._show import counted, quantity
+from skcable._show import Shown, counted, quantity
 from skcable.errors import ConvergenceError, InputError, PlausibilityWarning
 from skcable.fe import newton
 from skcable.mooring._answers import equilibrium_findings
@@ -462,7 +462,7 @@ def _restarts(system, position, result, solve):
     return starts
 
 
-class BodyState:
+class BodyState(Shown):
     """A body at equilibrium: ``body``, ``index``, ``position`` (its dofs: m, rad), ``offset`` (its
     reference point, m), ``angles`` (roll, pitch, yaw; zeros for a point body), ``rotation`` (body
     to global axes), ``heel`` (the angle of its z axis to the vertical, rad) and ``local_points``
@@ -487,7 +487,7 @@ class BodyState:
         return f"BodyState(body {self.index}: {shown})"
 
 
-class PointState:
+class PointState(Shown):
     """A point at equilibrium: ``point``, ``index``, ``kind`` and ``position`` (m, global axes)."""
 
     def __init__(self, point, position):
@@ -497,7 +497,7 @@ class PointState:
         return f"PointState({self.kind} point {self.index}: {quantity('position', self.position, 'm')})"
 
 
-class MooringEquilibrium:
+class MooringEquilibrium(Shown):
     """A mooring system in static equilibrium (`MooringSystem.equilibrium`).
 
     Attributes
