@@ -153,6 +153,18 @@ def test_demo_prints_the_secant_stiffness_and_the_restick(tmp_path, capsys):
         value = np.interp(0.002, c.strain, c.force) / (EA * 0.002)
         assert re.search(rf"at ε = 0.002: .*{label} {value:.3f}", printed), (label, value, printed)
     assert "re-sticks" in printed and (tmp_path / "r" / "stiffness.png").stat().st_size > 10_000
+    # issue 31: both models' wires and curvatures at one strain, where slip makes them differ
+    captions = [
+        Image.open(tmp_path / "r" / f"{name}_wires.png").text["Description"]
+        for name in ("stick", "stick-slip")
+    ]
+    strains = [float(re.search(r"axial strain ([\d.e-]+)", c).group(1)) for c in captions]
+    assert strains[0] == strains[1]
+    stick = strand.StrandModel(damaged, slip="none", n_elements=16).capacity_curve(n_steps=8)
+    slip = strand.StrandModel(damaged, slip="axis", n_elements=16).capacity_curve(n_steps=8)
+    k = int(np.argmin(np.abs(stick.strain[1:] - 0.002)))  # the steps (strain 0 is no step)
+    assert slip.steps[k].strain == stick.steps[k].strain == pytest.approx(strains[0], rel=1e-3)
+    assert np.max(np.abs(slip.steps[k].curvature)) > 1.05 * np.max(np.abs(stick.steps[k].curvature))
 
 
 def test_render_strand_off_screen(tmp_path, curve):
