@@ -70,7 +70,7 @@ def _command(subparsers, name, handler, help_text, **kw):
     p.add_argument(
         "--strict",
         action="store_true",
-        help="a plausibility warning is an error: status 2, nothing printed or written (default: warn, "
+        help="a plausibility warning is an error: the run stops there, status 2 (default: warn, "
         f"status {EXIT_WARNINGS})",
     )
     return p

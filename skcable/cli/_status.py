@@ -29,7 +29,7 @@ EXIT_STATUS = {
     EXIT_ERROR: "a file could not be written, or an unexpected error (a bug: please report it)",
     EXIT_WARNINGS: "solved, with warnings: data or an answer that no real cable fits (a unit slip, a strain "
     "no material survives, an anchor pulled up, a body out of the water), each printed as one "
-    "'skcable: warning: ...' line; --strict makes them errors (status 2, nothing written)",
+    "'skcable: warning: ...' line; --strict makes the first an error (status 2: the run stops there)",
     EXIT_INTERRUPTED: "interrupted (Ctrl-C); a study's finished cases stay in its cache",
 }
 
