@@ -4,8 +4,10 @@ bound; what it reached is kept).
 
 An iteration calls `Budget.spend` before each evaluation (raising `Budget.Spent`, which no
 ``except ConvergenceError`` of a strategy's alternatives takes) and `Budget.record` after it; the
-entry point turns `Budget.Spent` into `Budget.error`: a `ConvergenceError` whose ``history`` is
-every recorded measure and whose ``last`` is the best point reached.
+entry point runs the search by `Budget.run`, which turns `Budget.Spent` into `Budget.error` (a
+`ConvergenceError` whose ``history`` is every recorded measure and whose ``last`` is the best
+point reached) and gives any other `ConvergenceError` of the search the best point reached as
+its ``last`` where it has none (and the recorded measures where it has no history).
 """
 
 from __future__ import annotations
@@ -56,6 +58,19 @@ class Budget:
         self.history.append(float(measure))
         if measure < self.best[0]:
             self.best = (float(measure), point)
+
+    def run(self, what: str, unit: str, search, *args):
+        """``search(*args)`` within the budget (module docstring)."""
+        try:
+            return search(*args)
+        except Budget.Spent:
+            raise self.error(what, unit) from None
+        except ConvergenceError as failed:
+            if failed.last is None:
+                failed.last = self.best[1]
+            if not failed.history:
+                failed.history = list(self.history)
+            raise
 
     def error(self, what: str, unit: str = "evaluations") -> ConvergenceError:
         """The `ConvergenceError` of a search out of budget: ``what`` found nothing within it."""

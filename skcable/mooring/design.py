@@ -411,10 +411,7 @@ class _Counted:
     def run(self, search, *args):
         """``search(self, *args)``; past the budget, `ConvergenceError` with the history and the
         best ``x`` (``last``)."""
-        try:
-            return search(self, *args)
-        except Budget.Spent:
-            raise self.budget.error("design (the measure: |q - value|)", "solves") from None
+        return self.budget.run("design (the measure: |q - value|)", "solves", search, self, *args)
 
 
 def _bounds(bounds, vary, line, a, b, depth, i, j):

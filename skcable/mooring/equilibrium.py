@@ -336,13 +336,11 @@ def solve_equilibrium(
     one thread anyway (OpenBLAS threads only larger products), and setting the limit would cost
     more than a Newton step."""
     solve = _Newton(system, external, tol, max_iter, without, time_limit)
-    try:
-        if system.n_dof < _ONE_THREAD:
-            return _solve_equilibrium(solve, position, lines)
-        with _threads().limit(limits=1, user_api="blas"):
-            return _solve_equilibrium(solve, position, lines)
-    except Budget.Spent:
-        raise solve.budget.error("mooring equilibrium (the measure: the scaled residual)", "states") from None
+    what = "mooring equilibrium (the measure: the scaled residual)"
+    if system.n_dof < _ONE_THREAD:
+        return solve.budget.run(what, "states", _solve_equilibrium, solve, position, lines)
+    with _threads().limit(limits=1, user_api="blas"):
+        return solve.budget.run(what, "states", _solve_equilibrium, solve, position, lines)
 
 
 #: Systems of this many dofs and more solve under a limit of one BLAS thread (`solve_equilibrium`).

@@ -28,9 +28,11 @@ def _chain(rng, length):
     )
 
 
-def network(seed: int, shared: bool = True, free: bool = True):
+def network(seed: int, shared: bool = True, free: bool = True, buoyed: bool = True):
     """``(system, loads, data)``: a seeded network and the external force on each body; without
-    the lines ``shared`` between bodies or the ``free`` points, if asked."""
+    the lines ``shared`` between bodies or the ``free`` points, if asked; a free point's buoy
+    lifts it unless not ``buoyed`` (then it sinks towards the seabed, where a free point has no
+    contact: no equilibrium, a search that stalls or runs out of its budget)."""
     rng = np.random.default_rng(seed)
     depth = float(rng.uniform(100.0, 300.0))
     system = mooring.MooringSystem(depth=depth)
@@ -60,11 +62,17 @@ def network(seed: int, shared: bool = True, free: bool = True):
         anchor = system.add_point(centres[k] + radius * ring - [0.0, 0.0, depth], fixed=True)
         reach = math.hypot(radius, depth)
         through = rng.uniform() < 0.3
-        if free and through and lines + 2 <= n_lines:  # through a free point with a clump
+        if free and through and lines + 2 <= n_lines:  # through a free point: a subsea buoy
             mid = centres[k] + 0.5 * radius * ring - [0.0, 0.0, 0.5 * depth]
-            point = system.add_point(mid, mass=float(rng.uniform(0.0, 5e3)))
-            system.add_line(_chain(rng, 0.55 * reach * float(rng.uniform(1.01, 1.05))), anchor, point)
-            system.add_line(_chain(rng, 0.5 * reach * float(rng.uniform(1.01, 1.05))), point, attach[k])
+            lower = _chain(rng, 0.55 * reach * float(rng.uniform(1.01, 1.05)))
+            upper = _chain(rng, 0.5 * reach * float(rng.uniform(1.01, 1.05)))
+            # a point with no lift sinks to the seabed, where a free point has no contact: its
+            # buoy lifts 1.5 to 3 times the lines' weight (it floats between the two lines)
+            hung = sum(seg.w * seg.length for line in (lower, upper) for seg in line.segments)
+            lift = float(rng.uniform(1.5, 3.0)) * hung
+            point = system.add_point(mid, volume=lift / (RHO * G) if buoyed else 0.0)
+            system.add_line(lower, anchor, point)
+            system.add_line(upper, point, attach[k])
             lines, n_free = lines + 2, n_free + 1
         else:
             system.add_line(_chain(rng, reach * float(rng.uniform(1.1, 1.4))), anchor, attach[k])
@@ -126,9 +134,9 @@ def recount(system, eq, loads) -> float:
 BUDGET = 5.0
 
 
-def solve(seed: int, shared: bool = True, free: bool = True, time_limit: float = BUDGET):
+def solve(seed: int, shared: bool = True, free: bool = True, buoyed: bool = True, time_limit: float = BUDGET):
     """``(system, eq, loads)``: the equilibrium of `network`'s scene under its time budget."""
-    system, loads, _ = network(seed, shared, free)
+    system, loads, _ = network(seed, shared, free, buoyed)
     return system, system.equilibrium(force=loads, time_limit=time_limit), loads
 
 
@@ -137,14 +145,14 @@ def network_case(rng) -> Case:
     harness's time limit, twice it, makes one past it a hang), an answer balanced at every body
     and free point by `recount`; a `ConvergenceError` is an honest refusal (no independent
     solver judges it)."""
-    seed, free = int(rng.integers(2**31)), bool(rng.uniform() < 0.5)
+    seed, free, buoyed = int(rng.integers(2**31)), bool(rng.uniform() < 0.8), bool(rng.uniform() < 0.8)
 
     def check(result, caught):
         system, eq, loads = result
         left = recount(system, eq, loads)
         return [] if left < 1e-8 else [f"recounted net force {left:.3g} of the local line tension"]
 
-    expr = f"__import__('tests.fuzz.networks', fromlist=['solve']).solve({seed}, True, {free})"
+    expr = f"__import__('tests.fuzz.networks', fromlist=['solve']).solve({seed}, True, {free}, {buoyed})"
     return Case("network", expr, frozenset({"force", "time_limit", "start"}), check, timeout=2 * BUDGET)
 
 

@@ -140,12 +140,9 @@ class LineBVPSolver:
 
     def bounded(self, stage, *args) -> LineBVPSolution:
         """``stage(*args)``; past the budget, its `ConvergenceError` (module docstring)."""
-        try:
-            return stage(*args)
-        except Budget.Spent:
-            raise self.budget.error(
-                "solve_line_bvp (the measure: the last merit of a solve)", "solves"
-            ) from None
+        return self.budget.run(
+            "solve_line_bvp (the measure: the last merit of a solve)", "solves", stage, *args
+        )
 
     def restart(self, solution, problem):
         """``solution`` interpolated onto ``problem``'s dofs."""

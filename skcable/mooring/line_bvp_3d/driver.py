@@ -67,12 +67,8 @@ class LineBVP3DSolver:
     def solve(self, start: LineBVP3DSolution | None = None) -> LineBVP3DSolution:
         """The line (module docstring); from ``start`` (a solution of the same line at other
         ends, moved to these) where given, from scratch where that fails; within the budget."""
-        try:
-            return self.unbounded(start)
-        except Budget.Spent:
-            raise self.budget.error(
-                "solve_line_bvp_3d (the measure: the last merit of a solve)", "solves"
-            ) from None
+        what = "solve_line_bvp_3d (the measure: the last merit of a solve)"
+        return self.budget.run(what, "solves", self.unbounded, start)
 
     def unbounded(self, start: LineBVP3DSolution | None = None) -> LineBVP3DSolution:
         """`solve` without the budget's conversion."""
