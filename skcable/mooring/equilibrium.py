@@ -372,10 +372,16 @@ def _first_run(solve, position, lines):
         pass
     finally:
         solve.restrained_first = False
+    sinking = (
+        "; a free point has no contact with the seabed: one that its lines' weight sinks (no buoyancy "
+        "to hold it) has no equilibrium"
+        if solve.system.layout.free.size
+        else ""
+    )
     raise ConvergenceError(
         "mooring equilibrium: the line search found no descent, from the start nor from it pushed along "
-        "the net load (the residual stalls: the loads may exceed what the mooring can hold, or the start "
-        "is too far)",
+        f"the net load (the residual stalls: the loads may exceed what the mooring can hold, or the start "
+        f"is too far{sinking})",
         history,
     )
 
