@@ -11,6 +11,9 @@ a page that needs a CDN fails here as it would offline. The check fails on
   template's ``%s`` shown as text (mkdocs-gallery's list of several figures);
 - a link to a page or an anchor of the site that does not exist;
 - a gallery thumbnail that is mkdocs-gallery's placeholder (an example without a figure);
+- a link that does not browse from ``file://`` (`offline_links`: a folder, or a missing file:
+  the site is built with ``use_directory_urls: false``), or a page that does not render when
+  opened from ``file://`` (the index, a theory page: screenshots ``*_file.png``);
 
 and writes full-page screenshots of the index, a theory page with equations, an API page,
 the gallery and one gallery example to ``--out`` (and, for a page with display maths, a
@@ -33,11 +36,13 @@ from urllib.parse import unquote, urldefrag, urlparse
 
 SCREENSHOTS = {
     "index": "",
-    "theory_mooring": "mooring/",
-    "api_strand_fe": "api/strand.fe/",
+    "theory_mooring": "mooring.html",
+    "api_strand_fe": "api/strand.fe.html",
     "gallery": "generated/gallery/",
-    "gallery_strand_capacity": "generated/gallery/strand_capacity_paraview/",
+    "gallery_strand_capacity": "generated/gallery/strand_capacity_paraview.html",
 }
+#: Pages opened from ``file://`` too (the site browsed offline, without a server).
+FILE_PAGES = {"index_file": "index.html", "theory_mooring_file": "mooring.html"}
 CHROMIUM_FLAGS = [
     "--no-sandbox",
     "--disable-gpu",
@@ -129,6 +134,57 @@ def broken_links(site: Path, base: str, links: set[str]) -> list[str]:
     return problems
 
 
+class _Refs(HTMLParser):
+    """The relative references of a page: ``<a href>``, ``<link href>``, ``<img src>``, ``<script src>``."""
+
+    def __init__(self):
+        super().__init__()
+        self.refs: list[str] = []
+
+    def handle_starttag(self, tag, attrs):
+        for name, value in attrs:
+            if value and (tag, name) in {("a", "href"), ("link", "href"), ("img", "src"), ("script", "src")}:
+                self.refs.append(value)
+
+
+def offline_links(site: Path) -> list[str]:
+    """The references of every page that do not open from ``file://``: a relative one (no scheme,
+    no leading ``/``) must name a file of the site, not a folder (a browser shows a folder's
+    listing from ``file://``, not its ``index.html``) nor a missing file."""
+    problems = []
+    for html in sorted(site.rglob("*.html")):
+        parser = _Refs()
+        parser.feed(html.read_text(encoding="utf-8", errors="replace"))
+        for ref in parser.refs:
+            path = urldefrag(ref)[0].split("?")[0]
+            if not path or urlparse(ref).scheme or ref.startswith(("/", "#")):
+                continue
+            target = (html.parent / unquote(path)).resolve()
+            if target.is_dir():
+                problems.append(f"{html.relative_to(site)}: link to a folder (no page from file://): {ref}")
+            elif not target.is_file():
+                problems.append(f"{html.relative_to(site)}: link to a missing file: {ref}")
+    return problems
+
+
+def file_pages(context, site: Path, out: Path) -> list[str]:
+    """`FILE_PAGES` opened from ``file://`` in ``context`` (no server): each must render its title
+    and its formulas, every image loaded; a screenshot of each."""
+    problems = []
+    for name, rel in FILE_PAGES.items():
+        page = context.new_page()
+        page.goto((site / rel).resolve().as_uri(), wait_until="load")
+        state = page.evaluate(PAGE_STATE)
+        where = f"file://{rel}"
+        if not page.title():
+            problems.append(f"{where}: no title: the page did not render from file://")
+        problems += [f"{where}: image did not load: {i['src']}" for i in state["images"] if not i["ok"]]
+        problems += [f"{where}: formula left unrendered: {t!r}" for t in state["unrendered"]]
+        page.screenshot(path=str(out / f"{name}.png"), full_page=False)
+        page.close()
+    return problems
+
+
 def examples_without_figures(site: Path) -> list[str]:
     """Gallery examples that show no figure (their thumbnail is then mkdocs-gallery's placeholder)."""
     images = site / "generated" / "gallery" / "images"
@@ -203,6 +259,8 @@ def run(site: Path, out: Path, chromium: str) -> list[str]:
                 if path in shots:
                     screenshot(page, out / f"{shots[path]}.png")
                 page.close()
+            offline = browser.new_context(viewport={"width": 1280, "height": 900})
+            problems += file_pages(offline, site, out)
             browser.close()
     finally:
         server.shutdown()
@@ -211,6 +269,7 @@ def run(site: Path, out: Path, chromium: str) -> list[str]:
         for u in sorted(set(refused))
     ]
     problems += broken_links(site, base, links)
+    problems += offline_links(site)
     problems += examples_without_figures(site)
     missing = [path for path in SCREENSHOTS.values() if not _target_file(site, path).is_file()]
     problems += [f"page to screenshot is missing: /{path}" for path in missing]

@@ -22,9 +22,12 @@ Examples
 
 from __future__ import annotations
 
+import html as _html
+import re
+
 import numpy as np
 
-__all__ = ["LISTED", "attributes", "counted", "quantity"]
+__all__ = ["LISTED", "Shown", "attributes", "counted", "html_table", "quantity"]
 
 #: Longest array printed value by value (a longer one prints as its range).
 LISTED = 8
@@ -70,3 +73,35 @@ def counted(shape, noun: str) -> str:
         return f"1 {noun}"
     size = "×".join(map(str, shape))
     return f"{size} {noun}" if shape == (1,) else f"{size} {noun}s"
+
+
+_NUMBER = r"[-+]?(?:\d+\.?\d*|\.\d+|inf|nan)(?:e[-+]?\d+)?"
+_VALUE = rf"\[{_NUMBER}(?:, {_NUMBER})*\]|\({_NUMBER}(?:, {_NUMBER})*\)|{_NUMBER}\.\.{_NUMBER}|{_NUMBER}"
+#: One ``name=value unit`` of a repr (`quantity`'s form).
+_ITEM = re.compile(rf"(\w+)=({_VALUE})(?: ([^\s,;:()=]+))?")
+
+
+def html_table(text: str) -> str:
+    """A result's one-line ``repr`` as an HTML table (Jupyter's rich display): its head (the
+    class and what it holds, the text before the first quantity) as the caption, then one row
+    per ``name=value unit`` (`quantity`'s form), in the order printed."""
+    items = list(_ITEM.finditer(text))
+    head = text[: items[0].start()].rstrip(" :(") if items else text
+    tail = text[items[-1].end() :].strip(" ,;)") if items else ""
+    head = f"{head}: {tail}" if tail else head
+    rows = "".join(
+        f"<tr><th style='text-align:left'>{_html.escape(m[1])}</th><td>{_html.escape(m[2])}</td>"
+        f"<td>{_html.escape(m[3] or '')}</td></tr>"
+        for m in items
+    )
+    header = "<tr><th>quantity</th><th>value</th><th>unit</th></tr>"
+    return f"<table><caption>{_html.escape(head)}</caption>{header}{rows}</table>"
+
+
+class Shown:
+    """Mixin: a result that displays in Jupyter as the table of its ``repr`` (`html_table`)."""
+
+    __slots__ = ()
+
+    def _repr_html_(self) -> str:
+        return html_table(repr(self))

@@ -46,18 +46,26 @@ def _labels(items, labels):
 
 
 def cable_profile(solution, ax=None, *, n: int = 201, tension: bool = True):
-    """Profile y(x) of a cable solution (m) and, on a twin axis, its tension (kN)."""
+    """Profile y(x) of a cable solution (m) and, on its own axis (right, from 0), its tension (kN);
+    one legend names the three curves.
+
+    The tension axis starts at 0: on a catenary the tension is linear in the height
+    (``T = H + w (y - y_0)``), and a twin axis scaled to its own range drew it exactly on the
+    profile."""
     ax = _axes(ax)
     samples = solution.samples(n)
     x, y = samples["xy"].T
-    ax.plot(x, y, color="C0", label="profile")
-    ax.plot([0, float(solution.span)], [0, float(solution.dh)], ":", color="0.5", label="chord")
+    lines = ax.plot(x, y, color="C0", label="profile y(x)")
+    lines += ax.plot([0, float(solution.span)], [0, float(solution.dh)], ":", color="0.5", label="chord")
     ax.set(xlabel="x [m]", ylabel="y [m]")
     if tension:
         twin = ax.twinx()
-        twin.plot(x, samples["tension"] / 1e3, color="C3", label="tension")
+        T = samples["tension"] / 1e3
+        lines += twin.plot(x, T, "--", color="C3", label="tension T(x) (right axis)")
+        twin.set_ylim(0.0, 1.15 * float(np.max(T)))
         twin.set_ylabel("tension [kN]", color="C3")
-    ax.legend(loc="lower left")
+        twin.tick_params(axis="y", colors="C3")
+    ax.legend(lines, [line.get_label() for line in lines], loc="lower right")
     return ax
 
 

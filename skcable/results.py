@@ -34,6 +34,7 @@ from typing import TYPE_CHECKING, Protocol, runtime_checkable
 import numpy as np
 
 from skcable._checks import whole
+from skcable._show import Shown
 
 if TYPE_CHECKING:  # pragma: no cover
     import pandas as pd
@@ -72,7 +73,7 @@ class CableResult(Protocol):
     def to_vtk(self, path, n: int = 201) -> Path: ...
 
 
-class ProfileMixin:
+class ProfileMixin(Shown):
     """``profile``, ``to_frame`` and a one-row ``tensions`` of a `CableResult`, from its ``xy`` and
     ``T_of_s`` (the class it is mixed into)."""
 

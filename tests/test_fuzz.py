@@ -27,6 +27,7 @@ COUNTS = {
     "mooring/turned": 2,
     "mooring/mirror": 2,
     "mooring/at": 3,
+    "network": 3,
     "solve_line_bvp": 6,
     "sloped_seabed": 12,
     "line_3d": 12,

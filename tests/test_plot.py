@@ -53,6 +53,23 @@ def test_cable_profile_and_moment_curvature():
     np.testing.assert_allclose(moment[stick], law.EI_stick[0] * kappa[stick], rtol=1e-9)  # stick branch
 
 
+def test_the_tension_is_drawn_apart_from_the_profile_and_named():
+    # issue 31: on a catenary T = H + w (y - y0) is linear in y, and a twin axis scaled to its own
+    # range drew it exactly on the profile, with no legend entry
+    sol = cable.catenary(800, -20, 20, low=-30)
+    ax = plot.cable_profile(sol)
+    twin = [other for other in ax.figure.axes if other is not ax][0]
+    profile, tension = ax.lines[0], twin.lines[0]
+    np.testing.assert_allclose(tension.get_ydata() * 1e3, sol.T(tension.get_xdata()), rtol=1e-9)
+    ax.figure.canvas.draw()
+    on_screen = [line.get_transform().transform(line.get_xydata())[:, 1] for line in (profile, tension)]
+    height = ax.figure.bbox.height
+    assert np.max(np.abs(on_screen[0] - on_screen[1])) > 0.2 * height  # apart by a fifth of the figure
+    assert twin.get_ylim()[0] == 0.0
+    labels = [text.get_text() for text in ax.get_legend().get_texts()]
+    assert labels == ["profile y(x)", "chord", "tension T(x) (right axis)"]
+
+
 @pytest.fixture(scope="module")
 def pair():
     """Stick and stick–slip curves to rupture of a strand with two broken wires."""
@@ -136,6 +153,18 @@ def test_demo_prints_the_secant_stiffness_and_the_restick(tmp_path, capsys):
         value = np.interp(0.002, c.strain, c.force) / (EA * 0.002)
         assert re.search(rf"at ε = 0.002: .*{label} {value:.3f}", printed), (label, value, printed)
     assert "re-sticks" in printed and (tmp_path / "r" / "stiffness.png").stat().st_size > 10_000
+    # issue 31: both models' wires and curvatures at one strain, where slip makes them differ
+    captions = [
+        Image.open(tmp_path / "r" / f"{name}_wires.png").text["Description"]
+        for name in ("stick", "stick-slip")
+    ]
+    strains = [float(re.search(r"axial strain ([\d.e-]+)", c).group(1)) for c in captions]
+    assert strains[0] == strains[1]
+    stick = strand.StrandModel(damaged, slip="none", n_elements=16).capacity_curve(n_steps=8)
+    slip = strand.StrandModel(damaged, slip="axis", n_elements=16).capacity_curve(n_steps=8)
+    k = int(np.argmin(np.abs(stick.strain[1:] - 0.002)))  # the steps (strain 0 is no step)
+    assert slip.steps[k].strain == stick.steps[k].strain == pytest.approx(strains[0], rel=1e-3)
+    assert np.max(np.abs(slip.steps[k].curvature)) > 1.05 * np.max(np.abs(stick.steps[k].curvature))
 
 
 def test_render_strand_off_screen(tmp_path, curve):

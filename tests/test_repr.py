@@ -3,6 +3,7 @@ each ``name=value unit`` back from the ``repr`` and compares it with the object'
 (to the last digit printed), and checks that no number is printed unchecked."""
 
 import re
+from html.parser import HTMLParser
 
 import numpy as np
 import pytest
@@ -56,7 +57,42 @@ def check_repr(result, spec: dict, digits: int = 6) -> str:
             assert len(printed) == actual.size, (name, text)
             pairs = zip(printed, actual, strict=True)
             assert all(agrees(p, a, digits) for p, a in pairs), (name, printed, actual)
+    check_html(result, found)
     return text
+
+
+class _Table(HTMLParser):
+    """The rows of an HTML table: each row's cell texts; the caption."""
+
+    def __init__(self):
+        super().__init__()
+        self.rows, self.caption, self._in = [], "", None
+
+    def handle_starttag(self, tag, attrs):
+        if tag == "tr":
+            self.rows.append([])
+        elif tag in ("td", "th", "caption"):
+            self._in = tag
+            if tag != "caption":
+                self.rows[-1].append("")
+
+    def handle_endtag(self, tag):
+        self._in = None
+
+    def handle_data(self, data):
+        if self._in == "caption":
+            self.caption += data
+        elif self._in:
+            self.rows[-1][-1] += data
+
+
+def check_html(result, found: dict) -> None:
+    """Jupyter shows ``result`` as a table (issue 31): one row per quantity of its repr, its
+    value and unit as printed there."""
+    table = _Table()
+    table.feed(result._repr_html_())
+    assert table.rows[0] == ["quantity", "value", "unit"] and table.caption
+    assert parse(", ".join(f"{n}={v} {u}".rstrip() for n, v, u in table.rows[1:])) == found
 
 
 def attr(name):

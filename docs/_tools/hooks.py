@@ -61,7 +61,22 @@ def with_members(markdown: str) -> str:
     return "\n".join(out) + "\n"
 
 
-def on_page_markdown(markdown, page, **kwargs):
+#: mkdocs-gallery's links that assume folder URLs (``gallery/x/``): a thumbnail's link to its
+#: example (``href="x"``) and an example's figure in ``srcset="../images/..."``.
+GALLERY_LINK = re.compile(r'href="(?P<name>[A-Za-z0-9_]+)"')
+
+
+def as_files(markdown: str) -> str:
+    """A gallery page's links for a site of files (``use_directory_urls: false``): ``href="x"``
+    to ``href="x.html"``, ``srcset="../images/`` to ``srcset="images/`` (the page's own folder)."""
+    markdown = GALLERY_LINK.sub(lambda m: f'href="{m["name"]}.html"', markdown)
+    return markdown.replace('srcset="../images/', 'srcset="images/')
+
+
+def on_page_markdown(markdown, page, config=None, **kwargs):
     if page.file.src_uri.startswith("api/"):
         return with_members(markdown)
+    if page.file.src_uri.startswith("generated/gallery/") and config is not None:
+        if not config.get("use_directory_urls", True):
+            return as_files(markdown)
     return markdown

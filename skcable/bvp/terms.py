@@ -45,6 +45,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from skcable import _plausible
 from skcable._checks import nonnegative, positive, real
 from skcable.bvp.current import Current, current_of
 from skcable.errors import InputError
@@ -273,6 +274,7 @@ class Buoyancy(CableTerm):
     ):
         self.area, self.rho = float(positive("area", area)), float(positive("rho", rho))
         self.gradient, self.g = float(real("gradient", gradient)), float(positive("g", g))
+        _plausible.gravity(self.g)
         self.surface = float(real("surface", surface))
 
     def __repr__(self):

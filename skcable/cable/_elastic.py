@@ -27,6 +27,7 @@ from skcable import _plausible
 from skcable._checks import broadcast, float_range, positive, real, require
 from skcable._newton2 import solve2
 from skcable._xp import namespace
+from skcable.cable._answers import check_catenary
 from skcable.cable._catenary import finite_at, hanging
 from skcable.cable._extreme import outsized
 from skcable.cable._hanging import hanging_forces
@@ -415,6 +416,7 @@ def _checked_floats(e) -> bool:
 _INF = math.inf
 
 
+@_plausible.answer(check_catenary)
 def elastic_catenary(span, dh, w, EA, *, length):
     """Elastic (Irvine) catenary from A = (0, 0) to B = (span, dh).
 
@@ -461,3 +463,9 @@ def elastic_catenary(span, dh, w, EA, *, length):
             if type(H) is float and type(V_A) is float and _checked_floats(solution):
                 return solution
             return checked_closed_form(solution, "length", history)
+
+
+#: `elastic_catenary` without its answer check (`skcable._plausible.answer`): the solve inside
+#: another model, which checks its own answer against its own limits (a conductor's change of
+#: state against a conductor's strain).
+elastic_catenary_unchecked = elastic_catenary.__wrapped__

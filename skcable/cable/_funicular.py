@@ -29,7 +29,7 @@ import numpy as np
 
 from skcable._checks import positive, real, require, scalar, whole
 from skcable._newton2 import solve2
-from skcable._show import counted, quantity
+from skcable._show import Shown, counted, quantity
 from skcable._xp import power_of_two_near
 from skcable.cable.solution import ACCEPT
 from skcable.errors import ConvergenceError, InputError
@@ -84,7 +84,7 @@ def _accept(solution, history, accept=ACCEPT):
 
 
 @dataclass(frozen=True)
-class Funicular:
+class Funicular(Shown):
     """Solution of `funicular`.
 
     Attributes
@@ -252,7 +252,7 @@ def funicular(B, lengths, loads, *, tol: float = 1e-13, max_iter: int = 100) -> 
 
 
 @dataclass(frozen=True)
-class FunicularVertical:
+class FunicularVertical(Shown):
     """Solution of `funicular_vertical`.
 
     Attributes

@@ -15,6 +15,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from skcable import _plausible
 from skcable._checks import broadcast, float_range, positive, real, require, scalar
 from skcable._xp import namespace
 from skcable.cable._catenary import Catenary, catenary
@@ -60,6 +61,7 @@ def ring_on_rod(dh, w, length, mu) -> Catenary:
     """
     dh = real("dh", dh)
     w, length, mu = positive("w", w), positive("length", length), positive("mu", mu)
+    _plausible.friction(mu, "mu")
     broadcast(dh=dh, w=w, length=length, mu=mu)
     xp = namespace(dh, w, length, mu)
     require("length", length > xp.abs(dh), "must exceed |dh| to reach the rod", length)
@@ -111,6 +113,7 @@ def anchor_block_weight(solution, mu, *, end: str = "A"):
     end : {"A", "B"}
     """
     mu = positive("mu", mu)
+    _plausible.friction(mu, "mu")
     if end not in ("A", "B"):
         raise InputError("end", f"must be 'A' or 'B', got {end!r}")
     try:

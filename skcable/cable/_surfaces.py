@@ -18,6 +18,7 @@ import math
 
 import numpy as np
 
+from skcable import _plausible
 from skcable._checks import TINY, broadcast, nonnegative, positive, real, require
 from skcable._xp import namespace
 from skcable.cable._special import ldexp_sum, power_product
@@ -63,6 +64,7 @@ def capstan(T0, mu, angle):
         A bad argument, or a tension beyond the largest float.
     """
     T0, mu, angle = positive("T0", T0), nonnegative("mu", mu), nonnegative("angle", angle)
+    _plausible.friction(mu, "mu")
     broadcast(T0=T0, mu=mu, angle=angle)
     exponent = mu * angle  # may be inf: then so is the tension
     # T0·e^x in chunks of at most e^700, each partial product below the

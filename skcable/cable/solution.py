@@ -24,7 +24,7 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 
 from skcable._checks import whole
-from skcable._show import counted, quantity
+from skcable._show import Shown, counted, quantity
 from skcable._xp import PicklesBackend, namespace
 from skcable.cable._special import largest_abs
 from skcable.errors import ConvergenceError, InputError
@@ -48,7 +48,7 @@ def matrix_2x2(k11, k12, k21, k22):
     )
 
 
-class CableSolution(PicklesBackend):
+class CableSolution(PicklesBackend, Shown):
     """Base of the suspended-cable solutions (`skcable.results.CableResult`).
 
     Subclasses define ``H, V_A, V_B, T_A, T_B, length, sag, x_low, y_low``,

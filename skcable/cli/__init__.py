@@ -35,6 +35,7 @@ from skcable.cli._status import (
     EXIT_OK,
     EXIT_STATUS,
     EXIT_USAGE,
+    EXIT_WARNINGS,
 )
 
 __all__ = [
@@ -45,6 +46,7 @@ __all__ = [
     "EXIT_OK",
     "EXIT_STATUS",
     "EXIT_USAGE",
+    "EXIT_WARNINGS",
     "main",
     "parser",
 ]

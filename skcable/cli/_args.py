@@ -86,10 +86,20 @@ class Parser(argparse.ArgumentParser):
                 continue
             flag = token.split("=", 1)[0]
             if flag not in known:
-                near = difflib.get_close_matches(flag, [f for f in known if f.startswith("--")], n=1)
+                near = nearest_flag(flag, [f for f in known if f.startswith("--")])
                 hint = f"; did you mean {near[0]}?" if near else f" (see {self.prog} --help)"
                 where = f"{self.prog.removeprefix('skcable ')}: " if " " in self.prog else ""
                 self.error(f"{where}unknown flag {flag}{hint}")
+
+
+def nearest_flag(flag: str, flags: list[str]) -> list[str]:
+    """The known flag nearest ``flag``: the one equal to it but for case (``--ea`` -> ``--EA``),
+    else difflib's closest, compared in lower case (``--Spam`` -> ``--span``); [] if none is near."""
+    lower = {f.lower(): f for f in flags}
+    if flag.lower() in lower:
+        return [lower[flag.lower()]]
+    near = difflib.get_close_matches(flag.lower(), list(lower), n=1)
+    return [lower[near[0]]] if near else []
 
 
 def finite(text: str) -> float:

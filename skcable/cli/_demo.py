@@ -4,7 +4,9 @@ broken wire (Pino Vidal 2021, §4.3), written as CSV, VTK for ParaView and PNG f
 The force curves of the two models lie on top of each other; what slip changes is the
 stiffness at small strain. ``stiffness.png`` shows it beside the force: the secant
 F/(EA ε) with the fraction of the length in slip and where the strand re-sticks, and the
-summary prints both numbers, read from the curves."""
+summary prints both numbers, read from the curves. The wires (``*_wires.png``) and the
+curvature along the strand (``*_curvature.png``) of both models are drawn at one strain, `_AT`,
+where slip makes them differ (at rupture they look the same)."""
 
 from __future__ import annotations
 
@@ -78,7 +80,7 @@ def _run(args) -> int:
         curves[label] = run_curve(model, label, args.n_steps, not args.no_progress)
         if not curves[label].steps:
             raise ConvergenceError(f"demo, {label}: not one step converged: {curves[label].failure}")
-    write_staged(curves, out, args.force)
+    write_staged(curves, out, args.force, at=_AT)
     _stiffness_figure(curves, out, args.force)
     print(f"steel 9.5 mm, one broken wire, 1 m between clamps: results in {out}/")
     print(f"{'model':12s} {'K_Leq [MN]':>11s} {'last strain':>12s} {'force [kN]':>11s} {'D_r':>7s}")
@@ -93,7 +95,8 @@ def _run(args) -> int:
         print(line)
     print(
         f"open {out / 'stick-slip.pvd'} in ParaView (Warp By Vector on 'transverse_displacement_m'); "
-        f"figures: {out}/*.png ({_STIFFNESS}: the secant stiffness beside the force)"
+        f"figures: {out}/*.png ({_STIFFNESS}: the secant stiffness beside the force; the wires and the "
+        f"curvatures of both models at ε = {_AT:g})"
     )
     problem = "; ".join(filter(None, [stopped(curves, out), *problems]))
     if problem:

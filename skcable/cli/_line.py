@@ -57,7 +57,6 @@ def _run(args) -> int:
     """Fairlead and anchor forces, grounded length, 2x2 stiffness, each segment's tensions."""
     import numpy as np
 
-    from skcable import mooring
     from skcable.cli._status import EXIT_OK
 
     vtk = vtk_path(args)
@@ -69,11 +68,8 @@ def _run(args) -> int:
     values["residual"] = sol.residual()
     frame = sol.tensions()
     values |= {f"segment_{c}": [float(v) for v in frame[c]] for c, _ in _SEGMENT}
-    if vtk:
-        from skcable.io import write_lines
-
-        line = mooring.line_3d(model, (0.0, 0.0, 0.0), (args.span, 0.0, args.dh))
-        values["vtk"] = str(write_lines([line], vtk))
+    if vtk:  # the API's 2-D file: the x-y plane, y up, as every 2-D line (docs/howto.md)
+        values["vtk"] = str(sol.to_vtk(vtk))
     if args.json:
         print_json(values)
         return EXIT_OK

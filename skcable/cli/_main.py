@@ -11,6 +11,7 @@ import warnings
 
 from skcable.cli import (
     _cables,
+    _conductor,
     _demo,
     _examples,
     _frequencies,
@@ -19,7 +20,6 @@ from skcable.cli import (
     _state,
     _strand,
     _study,
-    _vibration,
 )
 from skcable.cli._args import Parser, given_numbers, input_message, warning_message
 from skcable.cli._status import (
@@ -28,13 +28,14 @@ from skcable.cli._status import (
     EXIT_NO_CONVERGENCE,
     EXIT_STATUS,
     EXIT_USAGE,
+    EXIT_WARNINGS,
     Usage,
 )
 
 __all__ = ["main", "parser"]
 
 #: The command modules, in the order of ``skcable --help``; each has ``register(sub, command)``.
-COMMANDS = (_demo, _examples, _cables, _strand, _line, _mooring, _state, _frequencies, _vibration, _study)
+COMMANDS = (_demo, _examples, _cables, _strand, _line, _mooring, _state, _frequencies, _conductor, _study)
 
 
 class _Version(argparse.Action):
@@ -66,6 +67,12 @@ def _epilog() -> str:
 def _command(subparsers, name, handler, help_text, **kw):
     p = subparsers.add_parser(name, help=help_text, description=help_text, **kw)
     p.set_defaults(handler=handler, active=p)
+    p.add_argument(
+        "--strict",
+        action="store_true",
+        help="a plausibility warning is an error: the run stops there, status 2 (default: warn, "
+        f"status {EXIT_WARNINGS})",
+    )
     return p
 
 
@@ -90,7 +97,7 @@ def _no_handler(args) -> str:
     if args.command == "study":
         return "study: choose 'run' (skcable study --help)"
     if args.command == "conductor":
-        return "conductor: choose 'vibration' (skcable conductor --help)"
+        return "conductor: choose 'table', 'ruling-span', 'rating' or 'vibration' (skcable conductor --help)"
     return "choose a command (skcable --help)"
 
 
@@ -116,7 +123,7 @@ def _failure(args, exc: BaseException) -> tuple[int, str | None]:
 
 def _run(top, argv) -> tuple[int, str | None, object]:
     """Parse and run; returns the exit status, the one-line error message (or None), the args."""
-    from skcable.errors import ConvergenceError, InputError
+    from skcable.errors import ConvergenceError, InputError, PlausibilityWarning
 
     try:
         args = top.parse_args(argv)
@@ -125,7 +132,11 @@ def _run(top, argv) -> tuple[int, str | None, object]:
     if not hasattr(args, "handler"):
         return EXIT_USAGE, _no_handler(args), args
     try:
+        if getattr(args, "strict", False):
+            warnings.simplefilter("error", PlausibilityWarning)
         return args.handler(args), None, args
+    except PlausibilityWarning as exc:  # --strict
+        return EXIT_USAGE, f"{warning_message(args, _Caught(exc))} (--strict)", args
     except Usage as exc:
         return EXIT_USAGE, str(exc), args
     except InputError as exc:
@@ -136,12 +147,20 @@ def _run(top, argv) -> tuple[int, str | None, object]:
         return (*_failure(args, exc), args)
 
 
+class _Caught:
+    """A raised `PlausibilityWarning` as `warning_message` reads a caught one."""
+
+    def __init__(self, exc):
+        self.message = exc
+
+
 def main(argv=None) -> int:
     """Run the command line ``argv`` (default ``sys.argv[1:]``); returns the exit status.
 
     Without arguments, prints the help and returns 2. Numpy's floating-point warnings are
-    not shown (the results are checked); skcable's own warnings (a `PlausibilityWarning`,
-    say) are one line each, naming the flag, and do not change the exit status.
+    not shown (the results are checked); skcable's own warnings are one line each, naming the
+    flag; a `PlausibilityWarning` turns a successful run's status into ``EXIT_WARNINGS`` (5), or,
+    with ``--strict``, into a usage error (2).
     """
     top = parser()
     argv = sys.argv[1:] if argv is None else [str(a) for a in argv]
@@ -151,12 +170,16 @@ def main(argv=None) -> int:
     with warnings.catch_warnings(record=True) as caught:
         warnings.simplefilter("always")
         status, message, args = _run(top, argv)
+    from skcable.errors import PlausibilityWarning
+
     seen = set()
     for warning in caught:
         text = warning_message(args, warning)
         if warning.category.__module__.startswith("skcable") and text not in seen:
             seen.add(text)
             print(f"skcable: warning: {text}", file=sys.stderr)
+            if issubclass(warning.category, PlausibilityWarning) and status == 0:
+                status = EXIT_WARNINGS
     if message is not None:
         print(f"skcable: error: {' '.join(message.split())}", file=sys.stderr)
     return status

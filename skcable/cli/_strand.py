@@ -113,8 +113,17 @@ def curve_files(names) -> list[str]:
     return [*_FIGURES, *(pattern.format(name) for name in names for pattern in per)]
 
 
-def _write_results(curves: dict, out) -> list:
-    """CSV per curve, VTK time series (strand and wires), and PNG figures, into ``out``."""
+def _nearest_step(curve, strain) -> int:
+    """The step of ``curve`` whose strain is nearest ``strain``."""
+    import numpy as np
+
+    return int(np.argmin([abs(s.strain - strain) for s in curve.steps]))
+
+
+def _write_results(curves: dict, out, at: float | None = None) -> list:
+    """CSV per curve, VTK time series (strand and wires), and PNG figures, into ``out``: the wires
+    and the curvature along the strand at the step nearest the strain ``at`` in every curve (so
+    that the models are compared at one strain), else at the last step and at the peak curvature."""
     import matplotlib
 
     matplotlib.use("Agg")
@@ -127,7 +136,8 @@ def _write_results(curves: dict, out) -> list:
     for name, curve in curves.items():
         written.append(curve.to_csv(out / f"{name}.csv"))
         written.extend(curve.to_vtk(out / f"{name}.pvd", wires=True))
-        written.append(plot.render_strand(curve, out / f"{name}_wires.png"))
+        step = -1 if at is None else _nearest_step(curve, at)
+        written.append(plot.render_strand(curve, out / f"{name}_wires.png", step=step))
     labels = list(curves)
     for figure, draw in (("capacity", plot.capacity_curves), ("slip_fraction", plot.slip_fraction)):
         ax = draw(list(curves.values()), labels)
@@ -136,21 +146,21 @@ def _write_results(curves: dict, out) -> list:
         plt.close(ax.figure)
     for name, curve in curves.items():
         peak = int(np.argmax([np.max(np.abs(s.curvature)) for s in curve.steps]))
-        ax = plot.curvature_along(curve, peak)
+        ax = plot.curvature_along(curve, peak if at is None else _nearest_step(curve, at))
         written.append(out / f"{name}_curvature.png")
         ax.figure.savefig(written[-1], dpi=120)
         plt.close(ax.figure)
     return written
 
 
-def write_staged(curves: dict, out, force: bool) -> list[str]:
+def write_staged(curves: dict, out, force: bool, at: float | None = None) -> list[str]:
     """`_write_results` into a stage inside ``out``, then moved into ``out`` file by file."""
     from pathlib import Path
 
     from skcable.cli._output import staged
 
     with staged(out, force) as stage:
-        written = _write_results(curves, stage)
+        written = _write_results(curves, stage, at)
     return [str(out / Path(p).relative_to(stage)) for p in written]
 
 

@@ -2,8 +2,8 @@
 band, from its layer-by-layer bending law to the clamp stress and a fatigue life
 (`skcable.conductors.aeolian_vibration`).
 
-`add_vibration` adds the ``vibration`` command to a ``conductor`` command group; `register`
-makes that group when no other module has (one call to move when the group gets more commands).
+`add_vibration` adds the ``vibration`` command to the ``conductor`` command group
+(`skcable.cli._conductor`).
 """
 
 from __future__ import annotations
@@ -149,11 +149,3 @@ def add_vibration(conductor_commands, command) -> None:
         "life (default: none)",
     )
     p.add_argument("--json", action="store_true", help="print one JSON object (default: a table)")
-
-
-def register(sub, command) -> None:
-    """The ``conductor`` command group, with ``vibration``."""
-    group = sub.add_parser("conductor", help="overhead-line conductors: aeolian vibration").add_subparsers(
-        dest="conductor_command", metavar="command"
-    )
-    add_vibration(group, command)

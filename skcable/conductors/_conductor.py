@@ -52,7 +52,8 @@ from dataclasses import dataclass
 import numpy as np
 
 from skcable._checks import broadcast, nonnegative, positive, real, scalar
-from skcable.cable._elastic import elastic_catenary
+from skcable._show import Shown
+from skcable.cable._elastic import elastic_catenary_unchecked as elastic_catenary
 from skcable.conductors._inputs import normal
 from skcable.conductors._state import change_of_state, sag_tension_table
 from skcable.errors import InputError
@@ -72,7 +73,7 @@ def _positive_scalar(name, value) -> float:
 
 
 @dataclass(frozen=True)
-class Conductor:
+class Conductor(Shown):
     """An overhead line conductor for sag–tension calculations. SI units.
 
     Parameters

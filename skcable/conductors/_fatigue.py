@@ -42,6 +42,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from skcable._checks import nonnegative, positive
+from skcable._show import Shown
 from skcable.errors import InputError
 
 __all__ = [
@@ -150,7 +151,7 @@ def clamp_amplitude(y_max, f, tension, mass, EI, x_b=X_B):
 
 
 @dataclass(frozen=True)
-class ClampStress:
+class ClampStress(Shown):
     """Poffenberger–Swart stress amplitudes (Pa) of one conductor at a clamp.
 
     ``stick`` and ``slip`` per bending axis of the section (its two principal axes: a damaged

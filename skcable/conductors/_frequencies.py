@@ -51,7 +51,7 @@ from skfem import Basis, BilinearForm, ElementLineP2, LinearForm, MeshLine
 from skcable import _plausible
 from skcable._checks import TINY, exactly_one, positive, real, scalar, whole
 from skcable._eigen import BandPattern, dense, farthest_from_one, first_lobe_positive, lowest_modes
-from skcable._show import attributes, counted
+from skcable._show import Shown, attributes, counted
 from skcable.cable._catenary import catenary
 from skcable.cable._extreme import blame_extreme
 from skcable.errors import ConvergenceError, InputError
@@ -135,7 +135,7 @@ def _symmetric_root(j, lambda2):
     return lo + t
 
 
-class NaturalFrequencies:
+class NaturalFrequencies(Shown):
     """Result of `natural_frequencies`.
 
     Attributes
@@ -333,6 +333,7 @@ def natural_frequencies(span, dh, w, EA, *, H=None, sag=None, n_modes=6, g=9.81)
     symmetric = np.linalg.norm(unit + unit[:, ::-1], axis=1) > np.linalg.norm(unit - unit[:, ::-1], axis=1)
     x = span * mesh.xi
     _plausible.conductor(span, dh, EA=EA, w=w, sag=sag if name == "sag" else None)
+    _plausible.gravity(g)
     return NaturalFrequencies(
         f_in_plane=results["in"][0],
         f_out_of_plane=results["out"][0],

@@ -20,7 +20,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from skcable.cable._elastic import elastic_catenary
+from skcable.cable._elastic import elastic_catenary_unchecked as elastic_catenary
 from skcable.conductors import _closure_z, _grid
 from skcable.conductors._grid import closure_check, closure_terms, length_into, sag_into
 from skcable.conductors._inputs import load_plane, renamed

@@ -28,6 +28,7 @@ from __future__ import annotations
 
 import numpy as np
 
+from skcable import _plausible
 from skcable._checks import positive, real, scalar
 from skcable.errors import ConvergenceError, InputError
 
@@ -211,10 +212,9 @@ def clearance_ampacity(
     lo, hi = _bounds("bounds", bounds)
 
     def excess(t):
-        return (
-            float(conductor.change_of_state(span, dh, t0=t0, H0=H0, sag0=sag0, length=length, t=t).sag)
-            - max_sag
-        )
+        with _plausible.quiet():  # a trial temperature of the search, not an answer
+            state = conductor.change_of_state(span, dh, t0=t0, H0=H0, sag0=sag0, length=length, t=t)
+        return float(state.sag) - max_sag
 
     f_lo, f_hi = excess(lo), excess(hi)
     if f_lo > 0 or f_hi < 0:

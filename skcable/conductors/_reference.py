@@ -7,7 +7,7 @@ from __future__ import annotations
 import numpy as np
 
 from skcable.cable._catenary import catenary
-from skcable.cable._elastic import elastic_catenary
+from skcable.cable._elastic import elastic_catenary_unchecked as elastic_catenary
 from skcable.cable._roots import find_root
 from skcable.errors import InputError
 

@@ -60,7 +60,7 @@ from typing import Any
 import numpy as np
 
 from skcable._checks import broadcast, nonnegative, real, scalar
-from skcable._show import attributes, counted
+from skcable._show import Shown, attributes, counted
 from skcable.cable._extreme import blame_extreme
 from skcable.conductors._inputs import normal, renamed, thermal_factor
 from skcable.conductors._lines import reference_state
@@ -107,7 +107,7 @@ def ruling_span(spans) -> float:
     return float(top * np.sqrt(np.sum((spans / top) ** 3) / np.sum(spans / top)))
 
 
-class TensionSection:
+class TensionSection(Shown):
     """Result of `tension_section`.
 
     Arrays have the states' broadcast shape followed by the spans (``n``) or

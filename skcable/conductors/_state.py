@@ -46,8 +46,8 @@ import numpy as np
 
 from skcable import _plausible
 from skcable._checks import broadcast, nonnegative, positive, real, scalar
-from skcable._show import attributes, counted, quantity
-from skcable.cable._elastic import elastic_catenary
+from skcable._show import Shown, attributes, counted, quantity
+from skcable.cable._elastic import elastic_catenary_unchecked as elastic_catenary
 from skcable.cable._extreme import blame_extreme
 from skcable.conductors._inputs import load_plane, normal, renamed, thermal_factor
 from skcable.conductors._parabola import parabola_states
@@ -59,7 +59,7 @@ __all__ = ["ThermalCatenary", "thermal_catenary", "ChangeOfState", "change_of_st
 _MODELS = ("catenary", "parabola")
 
 
-class ThermalCatenary:
+class ThermalCatenary(Shown):
     """Solution of `thermal_catenary`.
 
     ``H, V_A, V_B, T_A, T_B, sag`` and ``y(x), T(x), slope(x)`` of the loaded
@@ -150,7 +150,7 @@ def thermal_catenary(span, dh, w, EA, *, length, alpha, t, t0=0.0):
     return ThermalCatenary(curve, w, EA, length, k)
 
 
-class ChangeOfState:
+class ChangeOfState(Shown):
     """Result of `change_of_state`; arrays over the broadcast states.
 
     Attributes
@@ -310,7 +310,9 @@ def _states(span, dh, EA, alpha, w0, t0, H0, sag0, w, t, wind, shape, lead, mode
     out.update(w=w, t=t, wind=wind)
     if shape == ():
         out = {key: float(value) for key, value in out.items()}
-    _plausible.conductor(span, dh, EA=EA, w=max(w0, float(np.max(w))), sag=sag0, alpha=alpha, t=t, t0=t0)
+    _plausible.conductor(
+        span, dh, EA=EA, w=max(w0, float(np.max(w))), sag=sag0, alpha=alpha, t=t, t0=t0, T_max=out["T_max"]
+    )
     return ChangeOfState(**out, L0=float(L0), H0=float(H0_out), sag0=float(sag0_out), model=model)
 
 

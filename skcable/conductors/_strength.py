@@ -23,6 +23,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from skcable._checks import nonnegative, positive, scalar
+from skcable._show import Shown
 from skcable.errors import ConvergenceError, InputError
 
 __all__ = ["layer_rrts", "wire_strengths", "ResidualStrength", "residual_strength"]
@@ -61,7 +62,7 @@ def wire_strengths(strand, rts) -> np.ndarray:
 
 
 @dataclass(frozen=True)
-class ResidualStrength:
+class ResidualStrength(Shown):
     """Residual rated strength of a damaged conductor.
 
     ``rrts`` (N) and ``fraction = rrts / rts``; ``method``; ``broken`` per layer (core first);

@@ -43,6 +43,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from skcable import _plausible
 from skcable._checks import positive, real
 from skcable.cable._special import asinh_step
 from skcable.errors import InputError
@@ -485,7 +486,8 @@ def law_catenary(
     chord = float(np.hypot(span, dh))
     if start is None:
         EA = 1e9 * w * L if law is None else float(law.secant_EA(np.array(w * L)))
-        guess = elastic_catenary(span, dh, w, EA, length=L)
+        with _plausible.quiet():  # a guess, not an answer
+            guess = elastic_catenary(span, dh, w, EA, length=L)
         start = (float(guess.H), float(guess.V_A))
     H0, VA0 = (float(v) for v in start)
     scale = np.array([H0, max(abs(VA0), H0)])

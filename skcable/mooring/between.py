@@ -36,6 +36,7 @@ from functools import cached_property
 import numpy as np
 
 from skcable._checks import whole
+from skcable._show import Shown
 from skcable.errors import InputError
 from skcable.mooring.geometry import batchable, grounded_batch, is_grounded_scene, solve_in_plane
 from skcable.mooring.line3d import point
@@ -44,7 +45,7 @@ from skcable.mooring.segments import LineSolution
 __all__ = ["LineBetween", "line_between", "solve_between", "solve_many_between"]
 
 
-class LineBetween:
+class LineBetween(Shown):
     """A line solved between two points in space (module docstring).
 
     Attributes

@@ -36,6 +36,7 @@ import math
 
 import numpy as np
 
+from skcable import _plausible
 from skcable._checks import nonnegative, positive, real, scalar
 from skcable.errors import InputError
 from skcable.mooring.line3d import point
@@ -78,6 +79,7 @@ class _Hydrostatics:
         self.waterplane_area = scalar("waterplane_area", nonnegative("waterplane_area", waterplane_area))
         self.rho = scalar("rho", positive("rho", rho))
         self.g = scalar("g", positive("g", g))
+        _plausible.gravity(self.g)
         self.weight = np.array([0.0, 0.0, -self.mass * self.g])
         self.buoyancy = np.array([0.0, 0.0, self.rho * self.g * self.volume])
         self.heave_stiffness = self.rho * self.g * self.waterplane_area

@@ -14,17 +14,26 @@ pattern (`design_pattern`), is to meet ``value``:
   lifts off at the anchor); ``"layback"``: the horizontal distance from the fairlead to the
   touchdown (m; the span where the line lifts off).
 
-**Bracketed and guaranteed.** ``q`` is sampled at `SAMPLES` points over the bounds; the first
-sign change of ``q - value`` from the lower bound brackets a root, which Brent's method
+**Bracketed and guaranteed.** ``q`` is sampled at `SAMPLES` points over the bounds (a sample
+whose line cannot be solved, a buoy landing on the grounded part say, is skipped); the first
+sign change of ``q - value`` between solved samples from the lower bound brackets a root, which
+Brent's method
 (R.P. Brent, "Algorithms for Minimization without Derivatives", 1973) closes to the last digits
-of ``x``; the root is accepted when ``|q - value|`` is within ``1e-10`` of ``|value|`` (of the
-span for lengths, 1e-10 rad for angles). Without a sign change the target is out of reach:
+of ``x`` (where a solve inside the bracket fails, the bracket is narrowed around that point
+by the nearest points that solve, and Brent's method resumes); the root is accepted when
+``|q - value|`` is within ``1e-10`` of ``|value|`` (of the span for lengths, 1e-10 rad for
+angles). Without a sign change the target is out of reach:
 `InputError` naming ``value``, with the range of ``q`` over the bounds (the sampled range; its
 ends are exact where ``q`` is monotone, as a pretension is in the length of a line on the seabed).
 The default bounds: a total length from 0.98 times the chord (a 2 % stretch) to the L-shape
 (span plus the fairlead's height above the seabed: the line lies in a heap beyond it), an anchor
 radius from 2 % of the length to the radius where the line is 2 % stretched, a clump weight from 0
-to ten times the line's weight.
+to ten times the line's weight; each widened to hold the given line's own value (its segment's
+length, its anchor radius, its clump), so that a target the line meets as given is in reach.
+
+**Bounded.** A design stops after ``max_iter`` solves or ``time_limit`` seconds with a
+`ConvergenceError` whose ``history`` is ``|q - value|`` of every solve and whose ``last`` is the
+best ``x`` reached.
 """
 
 from __future__ import annotations
@@ -33,7 +42,10 @@ import math
 
 import numpy as np
 
+from skcable import _plausible
+from skcable._budget import Budget, checked_budget
 from skcable._checks import real, scalar
+from skcable._show import Shown
 from skcable.errors import ConvergenceError, InputError
 from skcable.mooring.line3d import point
 from skcable.mooring.segments import ClumpWeight, Line, Segment
@@ -62,7 +74,7 @@ def quantity(target, solved) -> float:
     return touchdown if target == "touchdown" else float(solved.span - touchdown)
 
 
-class Design:
+class Design(Shown):
     """The designed value of a variable and what it achieves.
 
     Attributes
@@ -144,7 +156,10 @@ def _clump_joint(line, joint):
 def _with_length(line, i, length) -> Line:
     segments = list(line.segments)
     s = segments[i]
-    segments[i] = Segment(length, s.w, s.EA, mbl=s.mbl, diameter=s.diameter)
+    segments[i] = Segment(
+        length, s.w, s.EA, mbl=s.mbl, diameter=s.diameter, cd_normal=s.cd_normal,
+        cd_tangential=s.cd_tangential, material=s.material,
+    )  # fmt: skip
     return Line(segments, line.attachments, seabed=line.seabed, friction=line.friction)
 
 
@@ -161,7 +176,24 @@ def _anchor_at(anchor, fairlead, radius) -> np.ndarray:
     return np.array([fairlead[0] + radius * e[0], fairlead[1] + radius * e[1], anchor[2]])
 
 
+def _own(vary, line, anchor, fairlead, i, joint) -> float:
+    """The given line's own value of the variable: its segment's length, its anchor radius, its
+    clump's weight at ``joint`` (0 without one)."""
+    if vary == "length":
+        return float(line.segments[i].length)
+    if vary == "anchor_radius":
+        return math.hypot(*(fairlead[:2] - anchor[:2]))
+    return sum(a.weight for a in line.attachments if isinstance(a, ClumpWeight) and a.joint == joint)
+
+
 def _default_bounds(vary, line, anchor, fairlead, depth, i, joint):
+    """The bounds of the module docstring, widened to hold the line's own value (`_own`)."""
+    lo, hi = _formula_bounds(vary, line, anchor, fairlead, depth, i, joint)
+    own = _own(vary, line, anchor, fairlead, i, joint)
+    return min(lo, own), max(hi, own)
+
+
+def _formula_bounds(vary, line, anchor, fairlead, depth, i, joint):
     span = math.hypot(*(fairlead[:2] - anchor[:2]))
     dh = abs(float(fairlead[2] - anchor[2]))
     chord, L = math.hypot(span, dh), line.length
@@ -188,15 +220,65 @@ def _tolerance(target, value, scale) -> float:
     return RTOL * abs(value)
 
 
-def _solve_bracketed(f, lo, hi, value, tol, what, samples):
-    """``x`` in [lo, hi] with ``f(x) = value``: sampled, bracketed, Brent (module docstring)."""
+class _Unsolved(Exception):
+    """A sample whose line cannot be solved (`_Counted`, inside Brent's method): ``x`` its abscissa."""
+
+    def __init__(self, x):
+        self.x = x
+
+
+def _sampled(f, xs) -> np.ndarray:
+    """``f`` at ``xs``; NaN where the line cannot be solved (a failed sample is skipped)."""
+    out = np.full(len(xs), np.nan)
+    for k, x in enumerate(xs):
+        try:
+            out[k] = f(float(x))
+        except _Unsolved:
+            continue
+    return out
+
+
+def _narrowed(f, value, a, ga, b, gb, bad):
+    """The bracket ``[a, b]`` (``ga``, ``gb`` of opposite signs) narrowed around the failed point
+    ``bad``: the nearest points on either side that solve, tried at ``bad ± (b - a) 2^-k``."""
+    for k in range(2, 30):
+        step = (b - a) * 2.0**-k
+        for x in (bad - step, bad + step):
+            if not a < x < b:
+                continue
+            try:
+                g = f(x) - value
+            except _Unsolved:
+                continue
+            if np.sign(g) == np.sign(ga):
+                return x, g, b, gb
+            return a, ga, x, g
+    raise ConvergenceError(f"design: no line solves around x = {bad:.12g} inside the bracket [{a}, {b}]", [])
+
+
+def _brent(f, value, a, ga, b, gb):
+    """Brent's method on ``f - value`` over ``[a, b]``; a failed solve narrows the bracket around it
+    (`_narrowed`) and the method resumes."""
     from scipy.optimize import brentq
 
+    while True:
+        try:
+            tol = 1e-15 * max(abs(a), abs(b))
+            return brentq(lambda t: f(t) - value, a, b, xtol=tol, rtol=8.9e-16, maxiter=200), (a, b)
+        except _Unsolved as failed:
+            a, ga, b, gb = _narrowed(f, value, a, ga, b, gb, failed.x)
+
+
+def _solve_bracketed(f, lo, hi, value, tol, what, samples):
+    """``x`` in [lo, hi] with ``f(x) = value``: sampled, bracketed, Brent (module docstring)."""
     xs = np.linspace(lo, hi, samples)
-    qs = np.array([f(float(x)) for x in xs])
-    if not np.isfinite(qs).all():
+    qs = _sampled(f, xs)
+    solved = np.flatnonzero(~np.isnan(qs))
+    if not solved.size:
+        raise ConvergenceError(f"design: no line of the bounds [{lo:.9g}, {hi:.9g}] could be solved", [])
+    if not np.isfinite(qs[solved]).all():
         raise ConvergenceError(f"design: a non-finite {what} over the bounds", [])
-    g = qs - value
+    xs, g = xs[solved], qs[solved] - value
     exact = np.flatnonzero(g == 0.0)
     change = np.flatnonzero(np.sign(g[:-1]) * np.sign(g[1:]) < 0)
     if exact.size and (not change.size or exact[0] <= change[0]):
@@ -205,11 +287,10 @@ def _solve_bracketed(f, lo, hi, value, tol, what, samples):
         raise InputError(
             "value",
             f"the {what} {value:.12g} is out of reach: over the bounds [{lo:.9g}, {hi:.9g}] it takes values "
-            f"in [{qs.min():.9g}, {qs.max():.9g}] (give other bounds=, or another target)",
+            f"in [{g.min() + value:.9g}, {g.max() + value:.9g}] (give other bounds=, or another target)",
         )
     k = int(change[0])
-    a, b = float(xs[k]), float(xs[k + 1])
-    x = brentq(lambda t: f(t) - value, a, b, xtol=1e-15 * max(abs(a), abs(b)), rtol=8.9e-16, maxiter=200)
+    x, (a, b) = _brent(f, value, float(xs[k]), float(g[k]), float(xs[k + 1]), float(g[k + 1]))
     if not abs(f(x) - value) <= tol:
         raise ConvergenceError(
             f"design: the {what} reached {f(x):.15g}, not {value:.15g} within {tol:.3g}", []
@@ -218,7 +299,19 @@ def _solve_bracketed(f, lo, hi, value, tol, what, samples):
 
 
 def design_line(
-    line, anchor, fairlead, *, target, value, vary="length", depth=None, segment=None, joint=None, bounds=None
+    line,
+    anchor,
+    fairlead,
+    *,
+    target,
+    value,
+    vary="length",
+    depth=None,
+    segment=None,
+    joint=None,
+    bounds=None,
+    max_iter: int = 500,
+    time_limit: float = 60.0,
 ) -> Design:
     """The length, anchor radius or clump weight of one line that meets a target (module docstring).
 
@@ -241,7 +334,11 @@ def design_line(
         Which segment's length or which joint's clump weight varies (needed where the line has
         several).
     bounds : (float, float), optional
-        The variable's bounds (defaults in the module docstring).
+        The variable's bounds (defaults in the module docstring: they hold the line's own value).
+    max_iter : int
+        Line solves at most (default 500; a design takes about 50).
+    time_limit : float
+        Seconds at most (default 60).
 
     Returns
     -------
@@ -251,6 +348,9 @@ def design_line(
     ------
     InputError
         Unknown names; the target out of reach over the bounds (naming ``value``, with the range).
+    ConvergenceError
+        Past ``max_iter`` solves or ``time_limit`` seconds (``history``: ``|q - value|`` of each
+        solve; ``last``: the best ``x``); no line solves inside a bracket.
     """
     from skcable.mooring.between import line_between
 
@@ -275,8 +375,11 @@ def design_line(
 
     lo, hi = _bounds(bounds, vary, line, a, b, depth, i, j)
     span = math.hypot(*(b[:2] - a[:2]))
-    counter = _Counted(q)
-    x, bracket = _solve_bracketed(counter, lo, hi, value, _tolerance(target, value, span), target, SAMPLES)
+    counter = _Counted(q, value, *checked_budget(max_iter, time_limit))
+    with _plausible.quiet():  # the samples are trials, not answers
+        x, bracket = counter.run(
+            _solve_bracketed, lo, hi, value, _tolerance(target, value, span), target, SAMPLES
+        )
     model, anchor_x = build(x)
     solved = line_between(model, anchor_x, b, depth=depth)
     achieved = quantity(target, solved)
@@ -284,12 +387,31 @@ def design_line(
 
 
 class _Counted:
-    def __init__(self, f):
-        self.f, self.calls = f, 0
+    """``f`` counted against a `skcable._budget.Budget` of solves and seconds, each
+    ``|f(x) - value|`` recorded (the history, the best ``x``); a call whose line cannot be
+    solved raises `_Unsolved`."""
+
+    def __init__(self, f, value=0.0, max_iter=math.inf, time_limit=math.inf):
+        self.f, self.value = f, value
+        self.budget = Budget(max_iter, time_limit)
+
+    @property
+    def calls(self) -> int:
+        return self.budget.calls
 
     def __call__(self, x):
-        self.calls += 1
-        return self.f(x)
+        self.budget.spend()
+        try:
+            q = self.f(x)
+        except (InputError, ConvergenceError):
+            raise _Unsolved(x) from None
+        self.budget.record(abs(q - self.value), float(x))
+        return q
+
+    def run(self, search, *args):
+        """``search(self, *args)``; past the budget, `ConvergenceError` with the history and the
+        best ``x`` (``last``)."""
+        return self.budget.run("design (the measure: |q - value|)", "solves", search, self, *args)
 
 
 def _bounds(bounds, vary, line, a, b, depth, i, j):
@@ -315,6 +437,8 @@ def design_pattern(
     joint=None,
     bounds=None,
     samples: int = 13,
+    max_iter: int = 200,
+    time_limit: float = 600.0,
     **equilibrium,
 ) -> Design:
     """The same change to every line of a pattern of a `MooringSystem`, so that the first line's
@@ -324,7 +448,9 @@ def design_pattern(
     ``lines``: the pattern's line handles (each a `skcable.mooring.Line` from its anchor, end a, fixed,
     to its fairlead, end b); ``vary``, ``segment``, ``joint``, ``bounds``: as `design_line`, the
     bounds' defaults from the first line; ``samples``: the bracket's search (fewer than a line's:
-    each is an equilibrium). Returns a `Design` whose ``solved`` is the equilibrium at ``x``.
+    each is an equilibrium); ``max_iter``, ``time_limit``: the budget (equilibria, seconds), past
+    which `ConvergenceError` carries the history and the best ``x``. Returns a `Design` whose
+    ``solved`` is the equilibrium at ``x``.
     """
     _check_names(target, vary)
     handles = list(lines)
@@ -365,9 +491,10 @@ def design_pattern(
     a = first.a.position
     b = system.point_position(first.b)
     lo, hi = _bounds(bounds, vary, first.model, a, b, system.depth, i, j)
-    counter = _Counted(q)
+    counter = _Counted(q, value, *checked_budget(max_iter, time_limit))
     tol = _tolerance(target, value, math.hypot(*(b[:2] - a[:2])))
-    x, bracket = _solve_bracketed(counter, lo, hi, value, tol, target, int(samples))
+    with _plausible.quiet():  # the samples are trials, not answers
+        x, bracket = counter.run(_solve_bracketed, lo, hi, value, tol, target, int(samples))
     eq = solve(x)
     line = eq.lines[eq.line_indices.index(first.index)]
     achieved = quantity(target, line)

@@ -27,6 +27,13 @@ An equilibrium with a negative eigenvalue (a capsized body, say) is passed over:
 run again from the start with the body upright and from the equilibrium pushed both ways
 along the unstable mode, and the first stable equilibrium is returned. When none is
 found the unstable one is returned with ``stable=False`` and a `PlausibilityWarning`.
+
+**Admissible.** ``stable`` also asks that the equilibrium be a physical state
+(`skcable.mooring._answers`): no segment strained beyond what its material survives, no anchor on
+the seabed pulled up beyond what a drag anchor takes, no body clear of the water with its
+buoyancy, nothing below the seabed. ``positive_definite`` is the stiffness's verdict alone, and
+``implausible`` lists the findings (``(quantity, reason)``), each warned by
+`MooringSystem.equilibrium` (`skcable.errors.PlausibilityWarning`).
 """
 
 from __future__ import annotations
@@ -39,9 +46,12 @@ from typing import NamedTuple
 import numpy as np
 from scipy.linalg import lapack
 
-from skcable._show import counted, quantity
+from skcable import _plausible
+from skcable._budget import Budget
+from skcable._show import Shown, counted, quantity
 from skcable.errors import ConvergenceError, InputError, PlausibilityWarning
 from skcable.fe import newton
+from skcable.mooring._answers import equilibrium_findings
 from skcable.mooring.network import end_forces
 
 __all__ = ["MooringEquilibrium", "solve_equilibrium", "stiffness_eigenvalues"]
@@ -89,10 +99,14 @@ class _State(NamedTuple):
 
 
 class _Newton:
-    """One Newton solve of a system's equilibrium (module docstring): the problem's callables."""
+    """One Newton solve of a system's equilibrium (module docstring): the problem's callables.
 
-    def __init__(self, system, external, tol, max_iter, without=frozenset()):
+    Every state it assembles counts against the time budget (`skcable._budget.Budget`: its scaled
+    residual and dofs recorded, the best kept), for the error of a search that runs out of time."""
+
+    def __init__(self, system, external, tol, max_iter, without=frozenset(), time_limit=math.inf):
         self.system, self.external, self.tol, self.max_iter = system, external, tol, max_iter
+        self.budget = Budget(time_limit=time_limit)
         self.without = without
         self.units, self.arm = _units(system)
         self.unit_pairs = self.units[:, None] * self.units[None, :]  # a matrix in consistent units
@@ -115,9 +129,12 @@ class _Newton:
 
     def assemble(self, position) -> _State:
         """The `_State` at ``position``; the lines start from the last accepted ones."""
+        self.budget.spend()
         G, K, lines = self.system.evaluate(position, self.external, start=self.lines, without=self.without)
         size = float(np.linalg.norm(G / self.units))
-        return _State(G, K, lines, position, size, self.system.tension_scale(lines))
+        state = _State(G, K, lines, position, size, self.system.tension_scale(lines))
+        self.budget.record(self.norm(state), np.array(position, dtype=float))
+        return state
 
     def norm(self, state) -> float:
         """The scaled residual's norm: the net load over the state's force scale (its largest line
@@ -304,21 +321,26 @@ def _threads():
     return ThreadpoolController()
 
 
-def solve_equilibrium(system, position, external, lines, tol, max_iter, without=frozenset()):
+def solve_equilibrium(
+    system, position, external, lines, tol, max_iter, without=frozenset(), time_limit=math.inf
+):
     """`skcable.mooring.MooringSystem.equilibrium` on checked arguments: Newton from ``position``
     (the ``lines`` of an earlier equilibrium as warm starts, or None), the stable branch
-    preferred (module docstring), ``without`` the lines of those indices. Returns a
-    `MooringEquilibrium`.
+    preferred (module docstring), ``without`` the lines of those indices, within ``time_limit``
+    seconds (then `ConvergenceError` with every scaled residual evaluated as its history and the
+    best point reached as its ``last``). Returns a `MooringEquilibrium`.
 
     The dense solves of a few dozen dofs run on one BLAS thread (threadpoolctl): more threads
     only add their start-up and, on a shared machine, their contention (an SVD of order 96 took
     80 ms on two contending threads against 1 ms on one). Below `_ONE_THREAD` dofs BLAS runs on
     one thread anyway (OpenBLAS threads only larger products), and setting the limit would cost
     more than a Newton step."""
+    solve = _Newton(system, external, tol, max_iter, without, time_limit)
+    what = "mooring equilibrium (the measure: the scaled residual)"
     if system.n_dof < _ONE_THREAD:
-        return _solve_equilibrium(system, position, external, lines, tol, max_iter, without)
+        return solve.budget.run(what, "states", _solve_equilibrium, solve, position, lines)
     with _threads().limit(limits=1, user_api="blas"):
-        return _solve_equilibrium(system, position, external, lines, tol, max_iter, without)
+        return solve.budget.run(what, "states", _solve_equilibrium, solve, position, lines)
 
 
 #: Systems of this many dofs and more solve under a limit of one BLAS thread (`solve_equilibrium`).
@@ -350,10 +372,16 @@ def _first_run(solve, position, lines):
         pass
     finally:
         solve.restrained_first = False
+    sinking = (
+        "; a free point has no contact with the seabed: one that its lines' weight sinks (no buoyancy "
+        "to hold it) has no equilibrium"
+        if solve.system.layout.free.size
+        else ""
+    )
     raise ConvergenceError(
         "mooring equilibrium: the line search found no descent, from the start nor from it pushed along "
-        "the net load (the residual stalls: the loads may exceed what the mooring can hold, or the start "
-        "is too far)",
+        f"the net load (the residual stalls: the loads may exceed what the mooring can hold, or the start "
+        f"is too far{sinking})",
         history,
     )
 
@@ -383,8 +411,8 @@ def _pushed_starts(solve, position) -> list:
     return [position + push * size * ray for push in _PUSHES]
 
 
-def _solve_equilibrium(system, position, external, lines, tol, max_iter, without):
-    solve = _Newton(system, external, tol, max_iter, without)
+def _solve_equilibrium(solve, position, lines):
+    system, external, without = solve.system, solve.external, solve.without
     result = _first_run(solve, position, lines)
     check_unique(solve, result.state, result.history)
     eigenvalues = stiffness_eigenvalues(system, result.state.K)
@@ -405,7 +433,7 @@ def _solve_equilibrium(system, position, external, lines, tol, max_iter, without
     eq = MooringEquilibrium(
         system, result.x, external, G, K, lines, result.history, eigenvalues, passed, without=without
     )
-    if not eq.stable:
+    if not eq.positive_definite:
         reason = (
             f"the mooring equilibrium found is unstable (stiffness eigenvalue {eigenvalues[0]:.3g} N/m < 0, "
             f"heel {max(b.heel for b in eq.bodies) if eq.bodies else 0.0:.3g} rad) and no stable one was "
@@ -413,6 +441,11 @@ def _solve_equilibrium(system, position, external, lines, tol, max_iter, without
         )
         warnings.warn(PlausibilityWarning("start", reason), stacklevel=4)
     return eq
+
+
+def warn_implausible(eq) -> None:
+    """Warn each finding of ``eq`` (`MooringEquilibrium.implausible`): the answer's check."""
+    _plausible.warn_all(eq.implausible)
 
 
 def _restarts(system, position, result, solve):
@@ -433,7 +466,7 @@ def _restarts(system, position, result, solve):
     return starts
 
 
-class BodyState:
+class BodyState(Shown):
     """A body at equilibrium: ``body``, ``index``, ``position`` (its dofs: m, rad), ``offset`` (its
     reference point, m), ``angles`` (roll, pitch, yaw; zeros for a point body), ``rotation`` (body
     to global axes), ``heel`` (the angle of its z axis to the vertical, rad) and ``local_points``
@@ -458,7 +491,7 @@ class BodyState:
         return f"BodyState(body {self.index}: {shown})"
 
 
-class PointState:
+class PointState(Shown):
     """A point at equilibrium: ``point``, ``index``, ``kind`` and ``position`` (m, global axes)."""
 
     def __init__(self, point, position):
@@ -468,7 +501,7 @@ class PointState:
         return f"PointState({self.kind} point {self.index}: {quantity('position', self.position, 'm')})"
 
 
-class MooringEquilibrium:
+class MooringEquilibrium(Shown):
     """A mooring system in static equilibrium (`MooringSystem.equilibrium`).
 
     Attributes
@@ -500,8 +533,14 @@ class MooringEquilibrium:
     eigenvalues : ndarray
         Eigenvalues of the symmetric part of the stiffness in consistent units (rotations
         times their body's largest arm), N/m, ascending (`stiffness_eigenvalues`).
+    positive_definite : bool
+        Whether none of them is negative beyond round-off.
+    implausible : list of (str, str)
+        What makes the answer no physical state, ``(quantity, reason)`` (module docstring,
+        "Admissible"); each is warned.
     stable : bool
-        Whether none of them is negative beyond round-off: a stable equilibrium.
+        ``positive_definite`` and nothing ``implausible``: a stable, physically admissible
+        equilibrium.
     unstable_found : list of ndarray
         Positions of the unstable equilibria passed over on the way to this one.
     """
@@ -543,13 +582,15 @@ class MooringEquilibrium:
             self.fairleads = np.array([line.fairlead for line in lines])
             self.anchors = system.anchors
         self.eigenvalues = stiffness_eigenvalues(system, K) if eigenvalues is None else eigenvalues
-        self.stable = is_stable(self.eigenvalues)
+        self.positive_definite = is_stable(self.eigenvalues)
         self.unstable_found = list(unstable_found)
         for name in ("position", "residual", "eigenvalues"):
             if not np.isfinite(getattr(self, name)).all():
                 raise ConvergenceError(f"mooring equilibrium: non-finite {name}", history)
         if not all(np.isfinite(end_forces(line)).all() for line in lines):
             raise ConvergenceError("mooring equilibrium: non-finite line forces", history)
+        self.implausible = equilibrium_findings(self)
+        self.stable = self.positive_definite and not self.implausible
 
     @property
     def handles(self) -> list:
@@ -641,7 +682,8 @@ class MooringEquilibrium:
         return write_mooring(self, path, n)
 
     def __repr__(self):
-        note = "" if self.stable else ", UNSTABLE"
+        note = "" if self.positive_definite else ", UNSTABLE"
+        note += "" if not self.implausible else f", IMPLAUSIBLE: {', '.join(q for q, _ in self.implausible)}"
         if self.system.shortcut:
             shown = ", ".join(
                 (

@@ -43,6 +43,7 @@ from functools import cached_property
 import numpy as np
 
 from skcable._checks import whole
+from skcable._show import Shown
 from skcable.errors import InputError
 
 __all__ = [
@@ -217,7 +218,7 @@ class SlopeModel:
         return SlopeSolution(solved)
 
 
-class SlopeSolution:
+class SlopeSolution(Shown):
     """A `SlopedSeabedCatenary` with the 2-D solution's ``x_of_s``, ``y_of_s`` of a line model."""
 
     def __init__(self, solved):
@@ -405,7 +406,7 @@ def _reversed_table(table):
     return table
 
 
-class LineInSeaBetween:
+class LineInSeaBetween(Shown):
     """A line in the sea of a `skcable.mooring.MooringSystem`, solved from its fixed end (a
     `LineInSea`, anchor at the fixed point), seen from its ends a and b in the order of the
     system's line.

@@ -37,6 +37,7 @@ import math
 from collections.abc import Callable
 from dataclasses import dataclass
 
+from skcable import _plausible
 from skcable._checks import positive, scalar
 from skcable.errors import InputError
 from skcable.mooring.segments import Segment
@@ -82,6 +83,7 @@ class Component:
         """``{"diameter", "mass", "w", "EA", "MBL", "volume_diameter"}`` (SI) at the nominal
         ``diameter`` (m) in water of density ``rho`` (kg/m³), gravity ``g`` (m/s²)."""
         d = scalar("diameter", positive("diameter", diameter))
+        _plausible.gravity(scalar("g", positive("g", g)))
         low, high = self.diameters
         if not low <= d <= high:
             raise InputError(
@@ -110,7 +112,14 @@ class Component:
         """A `Segment` of this component: ``length`` (m) at the nominal ``diameter`` (m), its weight in
         water, EA and MBL from the formulas."""
         p = self.properties(diameter, rho=rho, g=g)
-        return Segment(length, p["w"], p["EA"], mbl=p["MBL"], diameter=p["volume_diameter"])
+        material = next((m for key, m in _MATERIALS if key in self.name), None)
+        return Segment(
+            length, p["w"], p["EA"], mbl=p["MBL"], diameter=p["volume_diameter"], material=material
+        )
+
+
+#: The material of a component, by a word of its name (`Segment`'s ``material``).
+_MATERIALS = (("chain", "chain"), ("wire", "wire rope"), ("rope", "synthetic rope"))
 
 
 @dataclass(frozen=True)

@@ -49,6 +49,7 @@ from functools import cached_property, lru_cache
 import numpy as np
 
 from skcable._checks import real, whole
+from skcable._show import Shown
 from skcable.errors import InputError
 
 __all__ = [
@@ -88,7 +89,7 @@ def _finite(name: str, value) -> float:
     return value
 
 
-class Line3D:
+class Line3D(Shown):
     """A line solved between an anchor and a fairlead in space (see module docstring).
 
     Attributes

@@ -43,12 +43,13 @@ from typing import Any
 
 import numpy as np
 
+from skcable import _plausible
 from skcable._checks import positive, real, scalar
 from skcable.errors import InputError
 from skcable.mooring.assembly import Assembler
 from skcable.mooring.between import BATCH, LineBetween, solve_between, solve_many_between
 from skcable.mooring.body import PointBody, RigidBody, skew
-from skcable.mooring.equilibrium import MooringEquilibrium, solve_equilibrium
+from skcable.mooring.equilibrium import MooringEquilibrium, solve_equilibrium, warn_implausible
 from skcable.mooring.geometry import is_line, on_seabed_tolerance
 from skcable.mooring.in_sea import LineInSeaBetween, placed_line, solve_line_in_sea
 from skcable.mooring.line3d import (
@@ -159,6 +160,7 @@ class MooringSystem:
     def __init__(self, body=None, lines=None, anchors=None, *, depth=None, rho=1025.0, g=9.81):
         self.depth = None if depth is None else scalar("depth", positive("depth", depth))
         self.rho, self.g = scalar("rho", positive("rho", rho)), scalar("g", positive("g", g))
+        _plausible.gravity(self.g)
         self.bodies, self.points, self.mooring_lines = [], [], []
         self._body_positions, self._layout, self.shortcut = [], None, False
         self._cold = None  # the lines last solved with no start: (layout, dofs, (line, model) pairs, lines)
@@ -599,6 +601,7 @@ class MooringSystem:
             if i not in held:
                 raise InputError("bodies", f"body {i} has no line: connect a line to one of its points")
 
+    @_plausible.answer(warn_implausible)
     def equilibrium(
         self,
         *,
@@ -608,6 +611,7 @@ class MooringSystem:
         tol: float = 1e-10,
         max_iter: int = 60,
         without=(),
+        time_limit: float = 60.0,
     ) -> MooringEquilibrium:
         """Static equilibrium of every body and free point under constant external loads.
 
@@ -625,9 +629,14 @@ class MooringSystem:
             tensions, the weights, the buoyancies and the external forces), and every net moment
             over that scale times its body's largest arm, are below ``tol``.
         max_iter : int
-            Newton iterations at most.
+            Newton iterations at most, in each of the runs (the start, the start pushed along the
+            net load, the restarts towards a stable branch: a bounded number).
         without : sequence of MooringLine, optional
             Lines left out (a line failure): the damaged system's equilibrium.
+        time_limit : float
+            Seconds at most (> 0, default 60): past them the search stops with a
+            `ConvergenceError` whose ``history`` is every scaled residual evaluated and whose
+            ``last`` is the best point reached (the dofs).
 
         Returns
         -------
@@ -640,8 +649,8 @@ class MooringSystem:
             Bad arguments, a point or body with no line, a starting position where a line cannot be
             solved.
         ConvergenceError
-            No equilibrium within ``max_iter`` iterations, or a direction nothing restrains (named);
-            carries the history of the scaled residual.
+            No equilibrium within ``max_iter`` iterations or ``time_limit`` seconds, or a direction
+            nothing restrains (named); carries the history of the scaled residual.
         """
         without = self._without(without)
         self.check(without)
@@ -657,7 +666,8 @@ class MooringSystem:
         tol = scalar("tol", positive("tol", tol))
         if isinstance(max_iter, bool) or not isinstance(max_iter, (int, np.integer)) or max_iter < 1:
             raise InputError("max_iter", f"must be an integer >= 1, got {max_iter!r}")
-        return solve_equilibrium(self, q, external, warm_lines, tol, max_iter, without=without)
+        time_limit = scalar("time_limit", positive("time_limit", time_limit))
+        return solve_equilibrium(self, q, external, warm_lines, tol, max_iter, without, time_limit)
 
     def _without(self, without) -> frozenset:
         if isinstance(without, (MooringLine, str, bytes)) or not isinstance(without, Iterable):

@@ -65,6 +65,7 @@ from __future__ import annotations
 
 import numpy as np
 
+from skcable._show import Shown
 from skcable.errors import InputError
 from skcable.strand._arguments import float_array, is_real_number, principal_axis, real_number
 from skcable.strand._section import Section
@@ -195,7 +196,7 @@ def critical_curvature(section, mu: float, axial_strain) -> np.ndarray:
     return _law(section, mu, _strains(section, axial_strain, scalar=False))["kappa_m"]
 
 
-class BendingLaw:
+class BendingLaw(Shown):
     """Stick/slip bending law of a strand section at friction ``mu`` and axial strain.
 
     Arrays of two entries are over the principal axes: index 0 is principal

@@ -24,14 +24,14 @@ from dataclasses import dataclass
 import numpy as np
 
 from skcable._checks import positive
-from skcable._show import counted, quantity
+from skcable._show import Shown, counted, quantity
 from skcable.errors import InputError
 
 __all__ = ["Analysis", "ClosedFormCurve", "analyse", "axial_force"]
 
 
 @dataclass
-class ClosedFormCurve:
+class ClosedFormCurve(Shown):
     """Axial force–strain curve of an undamaged strand (no FE): ``strain``,
     ``force`` (N), ``K_Leq`` (N, the secant at the elastic limit), ``toughness``
     (N), ``ruptured`` (True), ``D_r`` (0: undamaged by definition)."""
@@ -99,7 +99,7 @@ def axial_force(strand, strain):
 
 
 @dataclass
-class Analysis:
+class Analysis(Shown):
     """Result of `analyse`: the ``curve`` of the chosen ``model``
     ("closed form", "stick" or "stick-slip"), the ``reason``, and the stick curve
     used to decide (``stick``, None for the closed form)."""

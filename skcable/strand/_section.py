@@ -58,6 +58,7 @@ from math import pi
 
 import numpy as np
 
+from skcable._show import Shown
 from skcable.errors import InputError
 from skcable.strand._arguments import principal_axis
 
@@ -69,7 +70,7 @@ __all__ = ["Section"]
 _DEGENERATE = 1e-12
 
 
-class Section:
+class Section(Shown):
     """Section properties of ``strand`` (SI units: m, m², m⁴, N, N·m²).
 
     Arrays of two entries are over the principal axes: index 0 is principal

@@ -51,7 +51,7 @@ from skfem.helpers import dd, ddot
 
 from skcable._checks import TINY, nonnegative, positive, scalar, whole
 from skcable._eigen import BandPattern, farthest_from_one, first_lobe_positive, lowest_modes
-from skcable._show import attributes, counted
+from skcable._show import Shown, attributes, counted
 from skcable.errors import InputError
 
 __all__ = [
@@ -114,7 +114,7 @@ def _pinned_mode(k, EI, N, m):
     return k * (math.sqrt(N) / math.sqrt(m)) * math.sqrt(1.0 + 1.0 / ratio) / (2.0 * math.pi)
 
 
-class BeamFrequencies:
+class BeamFrequencies(Shown):
     """Result of `beam_frequencies`.
 
     Attributes
@@ -288,7 +288,7 @@ def _solve(beam, EI, N, length, m, n_modes):
     return f, phi
 
 
-class StrandFrequencies:
+class StrandFrequencies(Shown):
     """Result of `strand_bending_frequencies`.
 
     Attributes

@@ -18,7 +18,7 @@ import numpy as np
 
 from skcable import _plausible
 from skcable._checks import positive
-from skcable._show import counted, quantity
+from skcable._show import Shown, counted, quantity
 from skcable.errors import ConvergenceError, InputError
 from skcable.fe.continuation import StepControl
 
@@ -140,7 +140,7 @@ class StrandLayout:
 
 
 @dataclass(eq=False)
-class StepResult:
+class StepResult(Shown):
     """State of the strand at one load step: everything writers and plots need.
 
     Attributes
@@ -239,7 +239,7 @@ class StepResult:
 
 
 @dataclass(repr=False)
-class CapacityCurve:
+class CapacityCurve(Shown):
     """Force–strain curve and the state at every step.
 
     Attributes

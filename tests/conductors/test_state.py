@@ -2,6 +2,8 @@
 solution of the original equations (in 3-D with wind), the textbook cubic,
 limits, tables and error cases."""
 
+import warnings
+
 import mpmath as mp
 import numpy as np
 import pytest
@@ -267,10 +269,16 @@ def test_sag_tension_table_names_its_temperatures_and_load_cases():
 def test_a_thermal_strain_within_range_still_solves():
     # |alpha (t - t0)| just below 1 is refused by no check: an independent mpmath-free oracle is
     # the elastic catenary of length k L0, weight w/k and stiffness EA k
-    with pytest.warns(PlausibilityWarning, match="alpha"):  # a strain of 0.8: it solves, and says so
+    with warnings.catch_warnings(record=True) as caught:  # a strain of 0.8: it solves, and says so
+        warnings.simplefilter("always")
         r = conductors.change_of_state(
             300.0, 0.0, EA=3e7, alpha=2e-5, w0=15.0, t0=15.0, H0=2e4, w=15.0, t=15.0 + 4e4
         )
+    # alpha's thermal strain, and t beyond any conductor's temperature
+    assert {w.message.argument for w in caught if issubclass(w.category, PlausibilityWarning)} == {
+        "alpha",
+        "t",
+    }
     k = 1 + 2e-5 * 4e4
     e = cable.elastic_catenary(300.0, 0.0, 15.0 / k, 3e7 * k, length=r.L0 * k)
     assert r.H == pytest.approx(e.H, rel=1e-13)

@@ -227,9 +227,11 @@ def check_equilibrium(eq, sc, caught) -> tuple[list[str], object, float]:
     problems += [problem] if problem else []
     lam = bodies.eigenvalues(scene, K)
     stable = bool(lam[0] >= -1e-8 * np.abs(lam).max())
-    if stable != bool(eq.stable) and abs(lam[0]) > 1e-6 * np.abs(lam).max():
-        problems.append(f"stable: oracle {stable} (eigenvalues {lam.tolist()}), skcable {eq.stable}")
-    if not eq.stable and not any("unstable" in str(w.message) for w in caught):
+    if stable != bool(eq.positive_definite) and abs(lam[0]) > 1e-6 * np.abs(lam).max():
+        problems.append(
+            f"positive_definite: oracle {stable} (eigenvalues {lam.tolist()}), skcable {eq.positive_definite}"
+        )
+    if not eq.positive_definite and not any("unstable" in str(w.message) for w in caught):
         problems.append("an unstable equilibrium returned without a warning")
     return problems, lam, scale
 

@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from tests.fuzz import commands, conductors, edges, lines, moored, multi, spectra
+from tests.fuzz import commands, conductors, edges, lines, moored, multi, networks, spectra
 from tests.fuzz.harness import Case
 from tests.fuzz.scenes import rng_for
 
@@ -12,6 +12,7 @@ REGIMES = {
     **lines.REGIMES,
     **multi.REGIMES,
     **moored.REGIMES,
+    **networks.REGIMES,
     **conductors.REGIMES,
     **spectra.REGIMES,
     **commands.REGIMES,

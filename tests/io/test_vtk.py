@@ -298,3 +298,19 @@ def test_array_names_carry_their_units(tmp_path):
     for mesh in meshes:
         for name in [*mesh.point_data, *mesh.cell_data]:
             assert name in unitless or name.endswith(unit), name
+
+
+def test_the_array_names_of_getting_started_are_the_files():
+    """docs/getting_started.md names the arrays of the demo's step files (issue 31: it named
+    `displacement`, `curvature_1`, `axial_force` where the files say `displacement_m`, ...)."""
+    import re
+    from pathlib import Path
+
+    from skcable import strand
+
+    page = (Path(__file__).resolve().parents[2] / "docs" / "getting_started.md").read_text()
+    paraview = page[page.index("In ParaView") :].split("\n\n")[0]
+    named = set(re.findall(r"`([A-Za-z_0-9]+)`", paraview))
+    model = strand.StrandModel(strand.preset("steel-9.5").damaged(1), 0.3, n_elements=8, slip="axis")
+    mesh = model.capacity_curve(max_strain=0.004, n_steps=4).step_mesh(1)
+    assert len(named) >= 4 and named <= set(mesh.point_data) | set(mesh.cell_data), named

@@ -14,6 +14,10 @@ from skcable import cable, mooring
 from skcable.errors import ConvergenceError, InputError
 from skcable.mooring import Buoy, ClumpWeight, Line, Segment
 
+#: These scenes exercise the solvers beyond plausible answers (lifted anchors, bodies out of the
+#: water, extreme magnitudes): the answer checks (tests/test_plausible.py) are not what they test.
+pytestmark = pytest.mark.filterwarnings("ignore:(strain|uplift_angle)\\b:skcable.errors.PlausibilityWarning")
+
 CHAIN = (1000.0, 7.5e8)  # w (N/m in water), EA (N)
 WIRE = (150.0, 6.0e8)
 

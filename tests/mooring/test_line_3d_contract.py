@@ -18,6 +18,12 @@ from skcable import ConvergenceError, InputError, mooring
 from skcable.mooring import axial
 from skcable.mooring.bathymetry import DepthFunction, Plane
 
+#: These scenes exercise the solvers beyond plausible answers (lifted anchors, bodies out of the
+#: water, extreme magnitudes): the answer checks (tests/test_plausible.py) are not what they test.
+pytestmark = pytest.mark.filterwarnings(
+    "ignore:(uplift_angle|position)\\b:skcable.errors.PlausibilityWarning"
+)
+
 RHO = 1025.0
 
 

@@ -10,6 +10,10 @@ from skcable.mooring import between
 from skcable.mooring.segments.batch import batchable, solve_batch
 from tests.mooring.mooring_reference import balance, free_line, grounded_line, reference_forces
 
+#: These scenes exercise the solvers beyond plausible answers (lifted anchors, bodies out of the
+#: water, extreme magnitudes): the answer checks (tests/test_plausible.py) are not what they test.
+pytestmark = pytest.mark.filterwarnings("ignore:(strain|uplift_angle)\\b:skcable.errors.PlausibilityWarning")
+
 W, EA, L = 2456.82, 1.2326e9, 850.0  # studless chain of 120 mm
 
 

@@ -14,6 +14,10 @@ import pytest
 
 from skcable import cable, mooring
 
+#: These scenes exercise the solvers beyond plausible answers (lifted anchors, bodies out of the
+#: water, extreme magnitudes): the answer checks (tests/test_plausible.py) are not what they test.
+pytestmark = pytest.mark.filterwarnings("ignore:(uplift_angle)\\b:skcable.errors.PlausibilityWarning")
+
 mp.mp.dps = 50
 
 

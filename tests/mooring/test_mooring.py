@@ -21,6 +21,12 @@ from scipy.spatial.transform import Rotation
 from skcable import cable, cli, mooring
 from skcable.errors import ConvergenceError, InputError, PlausibilityWarning
 
+#: These scenes exercise the solvers beyond plausible answers (lifted anchors, bodies out of the
+#: water, extreme magnitudes): the answer checks (tests/test_plausible.py) are not what they test.
+pytestmark = pytest.mark.filterwarnings(
+    "ignore:(uplift_angle|position|strain)\\b:skcable.errors.PlausibilityWarning"
+)
+
 ROOT = Path(__file__).resolve().parents[2]
 EXAMPLE = runpy.run_path(str(ROOT / "examples" / "spread_mooring.py"))
 
@@ -350,6 +356,12 @@ def test_cli_line_free_and_vtk(capsys, tmp_path):
     mesh = meshio.read(tmp_path / "line.vtu")
     assert mesh.point_data["tension_N"][-1] == pytest.approx(ref.T_B, rel=1e-12)
     assert [p.name for p in tmp_path.iterdir()] == ["line.vtu"]
+    # one plane for every 2-D line (issue 31): the command's file is the API's, x-y with y up
+    api = meshio.read(
+        mooring.Line([mooring.Segment(400.0, 200.0, 1e8)]).solve(380.0, 60.0).to_vtk(tmp_path / "api.vtu")
+    )
+    np.testing.assert_array_equal(mesh.points, api.points)
+    assert np.all(mesh.points[:, 2] == 0.0) and mesh.points[-1, :2] == pytest.approx([380.0, 60.0], abs=1e-9)
 
 
 # -- warm starts in the equilibrium loop -------------------------------------------------------

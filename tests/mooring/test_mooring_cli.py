@@ -11,6 +11,12 @@ from skcable import cli, mooring
 from skcable.errors import InputError
 from skcable.mooring.system_file import read_system
 
+#: These scenes exercise the solvers beyond plausible answers (lifted anchors, bodies out of the
+#: water, extreme magnitudes): the answer checks (tests/test_plausible.py) are not what they test.
+pytestmark = pytest.mark.filterwarnings(
+    "ignore:(uplift_angle|position)\\b:skcable.errors.PlausibilityWarning"
+)
+
 DATA = Path(__file__).resolve().parents[1] / "data"
 
 
@@ -55,7 +61,10 @@ def test_cli_mooring_reads_a_moordyn_file_and_writes_vtk(capsys, tmp_path):
     path.write_text(FILE)
     status = cli.main(["mooring", str(path), "--vtk", str(tmp_path / "buoy.vtu")])
     out, err = capsys.readouterr()
-    assert status == 0 and err == "" and "body 0 x" in out and "uplift" in out
+    assert "body 0 x" in out and "uplift" in out
+    # the file's buoy (300 m³, 100 t, no waterplane) rises out of the water on its slack lines, its
+    # buoyancy kept: solved, with that warning (issue 31)
+    assert status == cli.EXIT_WARNINGS and "position: puts body 0 clear of the water" in err
     assert (tmp_path / "buoy.vtu").stat().st_size > 1000
 
 

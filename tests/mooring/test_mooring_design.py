@@ -11,6 +11,12 @@ from skcable import mooring
 from skcable.errors import InputError
 from tests.mooring.mooring_reference import grounded_line
 
+#: These scenes exercise the solvers beyond plausible answers (lifted anchors, bodies out of the
+#: water, extreme magnitudes): the answer checks (tests/test_plausible.py) are not what they test.
+pytestmark = pytest.mark.filterwarnings(
+    "ignore:(uplift_angle|position)\\b:skcable.errors.PlausibilityWarning"
+)
+
 W, EA, DEPTH = 2456.82, 1.2326e9, 200.0
 ANCHOR, FAIRLEAD = np.array([800.0, 0.0, -DEPTH]), np.array([20.0, 0.0, -14.0])
 CHAIN = mooring.Line([mooring.Segment(850.0, W, EA)], seabed=0.0, friction=0.5)

@@ -17,6 +17,7 @@ import numpy as np
 
 from skcable import _plausible
 from skcable._checks import broadcast, float_range, nonnegative, positive, real, require
+from skcable.cable._answers import check_catenary
 from skcable.cable._elastic import elastic_catenary as free_elastic_catenary
 from skcable.cable._extreme import outsized
 from skcable.cable.seabed.closure import anchor_part, hanging_length
@@ -34,6 +35,7 @@ _INDETERMINATE = (
 )
 
 
+@_plausible.answer(check_catenary)
 def elastic_catenary(span, dh, w, EA, *, length, seabed=None, friction=0.0):
     """Elastic (Irvine) catenary from A = (0, 0) to B = (span, dh), optionally on a seabed.
 
@@ -96,6 +98,7 @@ def elastic_catenary(span, dh, w, EA, *, length, seabed=None, friction=0.0):
     friction = nonnegative("friction", friction)
     broadcast(span=span, dh=dh, w=w, EA=EA, length=L0, seabed=seabed, friction=friction)
     _plausible.stiffness(EA, w, L0)
+    _plausible.friction(friction)
     require("seabed", np.asarray(seabed) <= 0, "must be at or below the anchor (A at height 0)", seabed)
     require("dh", np.asarray(dh) > seabed, "must put B above the seabed", dh)
     # a refusal or a float failure inside names the outsized argument, if one is

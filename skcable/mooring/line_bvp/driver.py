@@ -43,6 +43,10 @@ each solve (`skcable.mooring.line_bvp.iterate.solve_on`) starts from the last st
 moved to the new fairlead on its own mesh (`LineBVPSolver.moved`), is the start of one level
 (stages 3 and 5, with friction from the start); from scratch where that fails.
 
+**Bounded.** Every solve counts against the scene's ``time_limit`` (`skcable._budget.Budget`):
+past it `solve` and `solve_from` raise a `ConvergenceError` with the last merit of every solve
+and the best solution reached (``last``). The number of solves is bounded by the stages.
+
 **Retries.** Every solve on a new mesh starts from the last solution interpolated onto it, else
 from the closed-form start (on a nearly L-shaped line the bend at the touchdown has the radius
 H/w, a thousandth of the length, and the interpolated bend of a coarser or differently graded
@@ -57,6 +61,7 @@ from functools import partial
 
 import numpy as np
 
+from skcable._budget import Budget
 from skcable.errors import ConvergenceError, InputError
 from skcable.mooring.line_bvp.inputs import Scene
 from skcable.mooring.line_bvp.iterate import first_success, solve_on
@@ -112,6 +117,7 @@ class LineBVPSolver:
         self.length = float(joints_of(lengths)[-1])
         #: the nodes every mesh keeps (joints, point loads)
         self.fixed = fixed_nodes(joints_of(lengths), scene.point_loads)
+        self.budget = Budget(time_limit=scene.time_limit)
 
     # --- the pieces: a problem, a solve, a solve on a new mesh --------------------------------
     def problem(self, n, fitted=(), slack_end=0.0, mu=None, nodes_at=None) -> LineProblem:
@@ -124,8 +130,19 @@ class LineBVPSolver:
         )  # fmt: skip
 
     def run(self, problem, z0) -> LineBVPSolution:
-        """One solve of ``problem`` from ``z0`` with the scene's Newton options."""
-        return solve_on(problem, z0, self.scene.options)
+        """One solve of ``problem`` from ``z0`` with the scene's Newton options, counted against
+        the budget (the best solution so far remembered)."""
+        self.budget.spend()
+        solution = solve_on(problem, z0, self.scene.options)
+        history = solution.history
+        self.budget.record(history[-1] if len(history) else 0.0, solution)
+        return solution
+
+    def bounded(self, stage, *args) -> LineBVPSolution:
+        """``stage(*args)``; past the budget, its `ConvergenceError` (module docstring)."""
+        return self.budget.run(
+            "solve_line_bvp (the measure: the last merit of a solve)", "solves", stage, *args
+        )
 
     def restart(self, solution, problem):
         """``solution`` interpolated onto ``problem``'s dofs."""
@@ -173,7 +190,11 @@ class LineBVPSolver:
     def solve(self) -> LineBVPSolution:
         """The line on the scene's mesh: one level, or nested levels (module docstring, 1); a
         failure where the slack stretch ends at a clump weight on the seabed refused
-        (`clump_at_slack_end`)."""
+        (`clump_at_slack_end`); within the budget."""
+        return self.bounded(self.unbounded)
+
+    def unbounded(self) -> LineBVPSolution:
+        """`solve` without the budget's conversion (a stage of `solve_from` too)."""
         try:
             return self.levels()
         except ConvergenceError:
@@ -190,11 +211,15 @@ class LineBVPSolver:
     def solve_from(self, previous) -> LineBVPSolution:
         """The line from ``previous``, a solution of the same line at another fairlead: moved to
         this one on its mesh (`moved`), then graded and fitted as a level from it; from
-        scratch (`solve`) where that fails."""
+        scratch (`solve`) where that fails; within the budget."""
+        return self.bounded(self.from_previous, previous)
+
+    def from_previous(self, previous) -> LineBVPSolution:
+        """`solve_from` without the budget's conversion."""
         try:
             return self.checked(self.level(self.scene.n_elements, self.moved(previous)))
         except ConvergenceError:
-            return self.solve()
+            return self.unbounded()
 
     def moved(self, previous) -> LineBVPSolution:
         """``previous`` solved again at this scene's fairlead on its own mesh (its slack stretch

@@ -15,6 +15,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from skcable import _plausible
 from skcable._checks import nonnegative, positive, real, require, scalar, whole
 from skcable.bvp.terms import CableTerm
 from skcable.errors import InputError
@@ -171,6 +172,7 @@ class Scene:
     fit_touchdown: int
     options: NewtonOptions = LINE_OPTIONS
     terms: tuple = ()
+    time_limit: float = 60.0
 
     @property
     def length(self) -> float:
@@ -206,6 +208,7 @@ def scene(
     fit_touchdown,
     options=LINE_OPTIONS,
     terms=(),
+    time_limit=60.0,
 ) -> Scene:
     """Every argument of `solve_line_bvp` checked, in its order; a `Scene` (``options`` checked by
     `newton_options_of` already)."""
@@ -216,6 +219,7 @@ def scene(
     segs = segments_of(segments)
     bed = seabed_of(seabed, seabed_slope, span)
     friction = nonnegative("friction", friction)
+    _plausible.friction(friction)
     if not isinstance(friction, float):
         raise InputError("friction", "one coefficient for the whole line")
     if friction > 0 and bed is None:
@@ -228,4 +232,7 @@ def scene(
     whole("n_elements", n_elements, 1)
     whole("fit_touchdown", fit_touchdown, 0, 10)
     terms = terms_of(terms)
-    return Scene(span, dh, segs, loads, bed, friction, int(n_elements), int(fit_touchdown), options, terms)
+    time_limit = scalar("time_limit", positive("time_limit", time_limit))
+    return Scene(
+        span, dh, segs, loads, bed, friction, int(n_elements), int(fit_touchdown), options, terms, time_limit
+    )

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+from skcable import _plausible
 from skcable._checks import nonnegative, scalar, whole
 from skcable.cable._extreme import outsized
 from skcable.errors import InputError
@@ -34,6 +35,7 @@ def solve_line_bvp(
     max_iter: int | None = None,
     terms=(),
     options=None,
+    time_limit: float = 60.0,
     **newton_options,
 ) -> LineBVPSolution:
     """A mooring line from anchor A = (0, 0) to fairlead B = (span, dh), by finite elements,
@@ -79,7 +81,12 @@ def solve_line_bvp(
         total load counts the weight, the point loads and the cable terms' force on the
         straight chord.
     max_iter : int
-        Newton iterations at most per solve (default 50).
+        Newton iterations at most per solve (default 50); the continuation's solves are bounded
+        by its stages (`skcable.mooring.line_bvp.driver`).
+    time_limit : float
+        Seconds at most for the whole continuation (default 60): past them a
+        `ConvergenceError` whose ``history`` holds the last merit of every solve and whose
+        ``last`` is the best solution reached.
     terms : CableTerm or list of CableTerm
         Loads that see the line's whole state, with their tangents (`skcable.bvp.terms`:
         `Buoyancy` varying with depth, `CurrentDrag`, `WindDrag`, or an analyst's own
@@ -140,6 +147,7 @@ def solve_line_bvp(
         fit_touchdown=fit_touchdown,
         options=newton_options_of(options, rtol=rtol, max_iter=max_iter, **newton_options),
         terms=terms,
+        time_limit=time_limit,
     )
     with outsized(**magnitudes(checked)):  # a refusal or a float failure inside names the outsized one
         return LineBVPSolver(checked).solve()
@@ -196,6 +204,7 @@ class LineBVP:
             seabed = scalar("seabed", seabed)
         self.seabed, self.seabed_slope = seabed, seabed_slope
         self.friction = scalar("friction", nonnegative("friction", friction))
+        _plausible.friction(self.friction)
         if self.friction > 0 and seabed is None:
             raise InputError("friction", "applies to a line on the seabed: give seabed= as well")
         self.point_loads = point_loads_of(point_loads, self.length)

@@ -31,6 +31,7 @@ from typing import NamedTuple
 
 import numpy as np
 
+from skcable import _plausible
 from skcable.cable._catenary import catenary
 from skcable.cable._elastic import elastic_catenary as free_catenary
 from skcable.cable.seabed import elastic_catenary
@@ -89,7 +90,8 @@ def _uniform(problem):
         level = min(float(bed(np.array([0.0]))[0]), 0.0)
         level = min(level, dh - 1e-3 * abs(span))
         try:
-            grounded = elastic_catenary(span, dh, w, EA, length=L, seabed=level)
+            with _plausible.quiet():  # a start, not an answer
+                grounded = elastic_catenary(span, dh, w, EA, length=L, seabed=level)
             if np.any(grounded.heap):  # H = 0: the arc form has no tension to solve for
                 raise _Heap
             x, y, T = grounded.x_of_s(s_dof), grounded.y_of_s(s_dof), grounded.T_of_s(s_t)
@@ -129,10 +131,12 @@ def _free_elastic(span, dh, w, EA, L):
     tolerance (the round-off of a nearly taut, stiff line), the multi-segment closed form `Line`
     of the one segment, whose solve polishes the same closure from bracketing."""
     try:
-        return free_catenary(span, dh, w, EA, length=L)
+        with _plausible.quiet():  # a start, not an answer
+            return free_catenary(span, dh, w, EA, length=L)
     except ConvergenceError as failed:
         try:
-            return Line([Segment(L, w, EA)]).solve(span, dh)
+            with _plausible.quiet():
+                return Line([Segment(L, w, EA)]).solve(span, dh)
         except (InputError, ConvergenceError):
             raise failed from None
 
@@ -200,7 +204,8 @@ def segmented_solution(problem, friction=None):
     if line is None:
         return None
     try:
-        solution = line.solve(problem.span, problem.dh)
+        with _plausible.quiet():  # a start, not an answer
+            solution = line.solve(problem.span, problem.dh)
     except (InputError, ConvergenceError):
         return None
     if solution.heap:

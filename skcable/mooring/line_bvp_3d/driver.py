@@ -19,13 +19,16 @@ r"""The strategy that takes a line in space from its closed-form start to the co
    (a slack stretch on the seabed near the anchor is not modelled in 3-D), and its equilibrium
    residual within its bound (`skcable.mooring.line_bvp_3d.solution.LineBVP3DSolution.check`).
 
-A failure raises the first attempt's `skcable.ConvergenceError`, with its history.
+A failure raises the first attempt's `skcable.ConvergenceError`, with its history. Every solve
+counts against the scene's ``time_limit`` (`skcable._budget.Budget`): past it, a
+`ConvergenceError` with the last merit of every solve and the best solution reached (``last``).
 """
 
 from __future__ import annotations
 
 import numpy as np
 
+from skcable._budget import Budget
 from skcable.errors import ConvergenceError
 from skcable.mooring.bathymetry import OffGrid
 from skcable.mooring.line_bvp.iterate import first_success
@@ -47,17 +50,28 @@ class LineBVP3DSolver:
 
     def __init__(self, scene):
         self.scene = scene
+        self.budget = Budget(time_limit=getattr(scene, "time_limit", 60.0))
 
     def problem(self, n, fitted=(), drag_scale=1.0) -> LineProblem3D:
         """The discrete line on ``n`` elements, nodes at ``fitted``, the drag times ``drag_scale``."""
         return LineProblem3D(self.scene, n, fitted=fitted, drag_scale=drag_scale)
 
     def run(self, problem, z0, near=False) -> Solved:
-        return solve_on(problem, z0, self.scene.rtol, self.scene.max_iter, near)
+        """One solve, counted against the budget (the best so far remembered)."""
+        self.budget.spend()
+        solved = solve_on(problem, z0, self.scene.rtol, self.scene.max_iter, near)
+        history = list(solved.history)
+        self.budget.record(history[-1] if history else 0.0, solved)
+        return solved
 
     def solve(self, start: LineBVP3DSolution | None = None) -> LineBVP3DSolution:
         """The line (module docstring); from ``start`` (a solution of the same line at other
-        ends, moved to these) where given, from scratch where that fails."""
+        ends, moved to these) where given, from scratch where that fails; within the budget."""
+        what = "solve_line_bvp_3d (the measure: the last merit of a solve)"
+        return self.budget.run(what, "solves", self.unbounded, start)
+
+    def unbounded(self, start: LineBVP3DSolution | None = None) -> LineBVP3DSolution:
+        """`solve` without the budget's conversion."""
         solved = None
         if start is not None:
             try:

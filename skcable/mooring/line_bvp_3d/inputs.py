@@ -12,6 +12,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from skcable import _plausible
 from skcable._checks import nonnegative, positive, real, scalar, whole
 from skcable.bvp.current import Current, current_of
 from skcable.bvp.terms import CableTerm
@@ -146,6 +147,7 @@ class Scene3D:
     fit_touchdown: int
     rtol: float
     max_iter: int
+    time_limit: float = 60.0
 
     @property
     def length(self) -> float:
@@ -177,6 +179,7 @@ def checked_options(segments, options: dict) -> dict:
     segs = segments_of(segments)
     bed = bathymetry_of(options["seabed"])
     friction = scalar("friction", nonnegative("friction", options["friction"]))
+    _plausible.friction(friction)
     if friction > 0 and bed is None:
         raise InputError("friction", "applies to a line on the seabed: give seabed= as well")
     current = current_of(options["current"])
@@ -194,6 +197,7 @@ def checked_options(segments, options: dict) -> dict:
         fit_touchdown=whole("fit_touchdown", options["fit_touchdown"], 0, 10),
         rtol=scalar("rtol", positive("rtol", options["rtol"])),
         max_iter=whole("max_iter", options["max_iter"], 1),
+        time_limit=scalar("time_limit", positive("time_limit", options.get("time_limit", 60.0))),
     )
 
 

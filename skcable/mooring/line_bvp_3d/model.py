@@ -20,6 +20,7 @@ _DEFAULTS = dict(
     fit_touchdown=3,
     rtol=1e-10,
     max_iter=50,
+    time_limit=60.0,
 )
 
 
@@ -38,6 +39,7 @@ def solve_line_bvp_3d(
     fit_touchdown: int = 3,
     rtol: float = 1e-10,
     max_iter: int = 50,
+    time_limit: float = 60.0,
 ) -> LineBVP3DSolution:
     """A line in space from ``anchor`` to ``fairlead`` by finite elements, in a current, on a
     seabed of any shape (see `skcable.mooring.line_bvp_3d`).
@@ -74,6 +76,10 @@ def solve_line_bvp_3d(
         the length).
     max_iter : int
         Newton iterations at most per solve.
+    time_limit : float
+        Seconds at most for the whole strategy (default 60): past them a `ConvergenceError`
+        whose ``history`` holds the last merit of every solve and whose ``last`` is the best
+        solution reached.
 
     Returns
     -------
@@ -100,6 +106,7 @@ def solve_line_bvp_3d(
     options = dict(
         attachments=attachments, seabed=seabed, friction=friction, current=current, rho_water=rho_water,
         terms=terms, n_elements=n_elements, fit_touchdown=fit_touchdown, rtol=rtol, max_iter=max_iter,
+        time_limit=time_limit,
     )  # fmt: skip
     return LineBVP3DSolver(scene(anchor, fairlead, checked_options(segments, options))).solve()
 
@@ -114,7 +121,8 @@ class LineBVP3D:
         As for `solve_line_bvp_3d`.
     **options
         ``attachments``, ``seabed``, ``friction``, ``current``, ``rho_water``, ``terms``,
-        ``n_elements``, ``fit_touchdown``, ``rtol``, ``max_iter``: as for `solve_line_bvp_3d`.
+        ``n_elements``, ``fit_touchdown``, ``rtol``, ``max_iter``, ``time_limit``: as for
+        `solve_line_bvp_3d`.
     """
 
     def __init__(self, segments, **options):

@@ -29,6 +29,7 @@ from functools import cached_property
 import numpy as np
 
 from skcable._checks import real, require, whole
+from skcable._show import Shown
 from skcable.bvp.terms import CableState, term_outputs
 from skcable.errors import ConvergenceError
 from skcable.mooring.line_bvp_3d.contact import anchor_split_3d, sliding_direction
@@ -39,7 +40,7 @@ __all__ = ["LineBVP3DSolution"]
 EPS = float(np.finfo(float).eps)
 
 
-class LineBVP3DSolution:
+class LineBVP3DSolution(Shown):
     """Solution of `skcable.mooring.line_bvp_3d.solve_line_bvp_3d`.
 
     Attributes

@@ -29,6 +29,7 @@ import math
 import numpy as np
 
 from skcable._newton2 import solve2
+from skcable._show import Shown
 from skcable.errors import ConvergenceError, InputError
 from skcable.mooring.axial import catenary_ends, elongation
 from skcable.mooring.segments.solution import CLOSURE_TOLERANCE
@@ -93,7 +94,7 @@ def solve_law_line(line, span: float, dh: float, start=None) -> LawLineSolution:
     return solution
 
 
-class LawLineSolution:
+class LawLineSolution(Shown):
     """A hanging line with nonlinear axial laws (module docstring); the attributes of
     `skcable.mooring.LineSolution` that a line model needs (`skcable.mooring.line_3d`).
 

@@ -22,6 +22,7 @@ import math
 
 import numpy as np
 
+from skcable import _plausible
 from skcable._checks import nonnegative, positive, real, require, scalar
 from skcable._newton2 import solve2
 from skcable.bvp.current import current_of
@@ -29,6 +30,7 @@ from skcable.cable._roots import find_root
 from skcable.cable.seabed import elastic_catenary
 from skcable.errors import ConvergenceError, InputError
 from skcable.mooring.bathymetry import Bathymetry
+from skcable.mooring.segments._answers import check_line
 from skcable.mooring.segments.arrays import line_arrays
 from skcable.mooring.segments.closure import closure_state
 from skcable.mooring.segments.heap import heap_state
@@ -128,6 +130,7 @@ class Line:
             raise InputError("current", "drags no segment: give the segments a diameter and cd_normal")
         self.rho_water = scalar("rho_water", positive("rho_water", rho_water))
         self.friction = scalar("friction", nonnegative("friction", friction))
+        _plausible.friction(self.friction)
         self.seabed = seabed
         self.segments = tuple(segments)
         self.attachments = tuple(attachments)
@@ -251,7 +254,8 @@ class Line:
                 return None
             w, dh, sign = -w, -dh, -1.0
         try:
-            ref = elastic_catenary(span, dh, w, EA, length=L, seabed=seabed, friction=0.0)
+            with _plausible.quiet():  # a guess, not an answer
+                ref = elastic_catenary(span, dh, w, EA, length=L, seabed=seabed, friction=0.0)
         except (InputError, ConvergenceError):
             return None
         return float(ref.H), sign * float(ref.V_B)
@@ -299,6 +303,7 @@ class Line:
         H, hist = find_root(_run_left, H_lo, H_hi, args, what="Line.solve, H", xtol=1e-10 * H_hi)
         return H, self.vertical_force(H, dh), hist
 
+    @_plausible.answer(check_line)
     def solve(self, span, dh, start=None):
         """Static equilibrium with A at (0, 0) and B at (span, dh).
 

@@ -45,6 +45,10 @@ class Segment:
         Drag coefficients normal to and along the line (-), >= 0 (Morison's
         ``½ ρ C_d d |v_n| v_n``); a positive one needs ``diameter``. Used when the line is in
         a current (`skcable.mooring.Line`'s ``current``).
+    material : {"chain", "wire rope", "synthetic rope", "conductor"}, optional
+        What the segment is made of: an answer that strains it beyond what that material
+        survives warns (`skcable._plausible.STRAIN_LIMITS`; unknown: 50 %). The library's
+        components (`skcable.mooring.library`) give it.
 
     Attributes
     ----------
@@ -58,9 +62,13 @@ class Segment:
         the segment's own weight ``|w| L``, for starts and scales only (never for a result).
     """
 
-    __slots__ = ("length", "w", "EA", "mbl", "diameter", "cd_normal", "cd_tangential", "law", "nominal_EA")
+    __slots__ = (
+        "length", "w", "EA", "mbl", "diameter", "cd_normal", "cd_tangential", "law", "nominal_EA", "material",
+    )  # fmt: skip
 
-    def __init__(self, length, w, EA, *, mbl=None, diameter=None, cd_normal=0.0, cd_tangential=0.0):
+    def __init__(
+        self, length, w, EA, *, mbl=None, diameter=None, cd_normal=0.0, cd_tangential=0.0, material=None
+    ):
         self.length = scalar("length", positive("length", length))
         self.w = scalar("w", real("w", w))
         if self.w == 0.0:
@@ -86,6 +94,11 @@ class Segment:
         self.cd_tangential = scalar("cd_tangential", nonnegative("cd_tangential", cd_tangential))
         if self.diameter is None and (self.cd_normal > 0 or self.cd_tangential > 0):
             raise InputError("diameter", "a segment with drag coefficients needs its diameter (m)")
+        if material is not None and material not in _plausible.MATERIALS:
+            raise InputError(
+                "material", f"must be one of {', '.join(_plausible.MATERIALS)}, got {material!r}"
+            )
+        self.material = material
         _plausible.stiffness(self.nominal_EA, abs(self.w), self.length)
 
     @property
@@ -103,6 +116,7 @@ class Segment:
         extra += "" if self.diameter is None else f", diameter={self.diameter!r}"
         extra += "" if self.cd_normal == 0.0 else f", cd_normal={self.cd_normal!r}"
         extra += "" if self.cd_tangential == 0.0 else f", cd_tangential={self.cd_tangential!r}"
+        extra += "" if self.material is None else f", material={self.material!r}"
         return f"Segment(length={self.length!r}, w={self.w!r}, EA={self.EA!r}{extra})"
 
 

@@ -1,0 +1,78 @@
+"""The plausibility of a mooring equilibrium (`skcable._plausible` holds the limits and their
+sources): each line's strain (`skcable.mooring.segments._answers`), the uplift angle at each
+anchor on the seabed, a body clear of the water that keeps its buoyancy, a body's point or a
+free point below the seabed. Each function returns its findings, ``(quantity, reason)`` pairs;
+an equilibrium with a finding is not ``stable`` (not physically admissible).
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from skcable import _plausible
+from skcable.mooring.network import end_forces
+from skcable.mooring.segments._answers import line_findings
+
+__all__ = ["equilibrium_findings"]
+
+
+def _bodies(eq) -> list:
+    findings = []
+    for state in eq.bodies:
+        body = state.body
+        points = [state.offset]
+        if len(state.local_points):
+            points.append(state.offset + state.local_points @ state.rotation.T)
+        cog = getattr(body, "center_of_gravity", None)
+        if cog is not None:
+            points.append(state.offset + state.rotation @ cog)
+        z = np.concatenate([np.atleast_2d(p)[:, 2] for p in points])
+        found = _plausible.body_height(
+            float(z.min()), float(state.offset[2]), body.volume, body.waterplane_area, f"body {state.index}"
+        )
+        if found is not None:
+            findings.append(found)
+        found = _plausible.below_seabed(float(z.min()), eq.depth, f"a point of body {state.index}")
+        if found is not None:
+            findings.append(found)
+    for point in eq.points:
+        if point.kind == "free":
+            found = _plausible.below_seabed(float(point.position[2]), eq.depth, f"free point {point.index}")
+            if found is not None:
+                findings.append(found)
+    return findings
+
+
+def _anchors(eq) -> list:
+    """The uplift at each fixed point on the seabed (``z = -depth``) that holds a line."""
+    if eq.depth is None:
+        return []
+    totals: dict = {}
+    for handle, line in zip(eq.handles, eq.lines, strict=True):
+        for end, force in zip((handle.a, handle.b), end_forces(line), strict=True):
+            if end.kind == "fixed":
+                totals[end.index] = totals.get(end.index, 0.0) + force
+    findings = []
+    for j, F in sorted(totals.items()):
+        z = float(eq.points[j].position[2])
+        if abs(z + eq.depth) > 1e-9 * eq.depth:
+            continue  # not on the seabed: a fixed point in the water takes any direction
+        found = _plausible.anchor_uplift(math.atan2(F[2], math.hypot(F[0], F[1])), f" at anchor point {j}")
+        if found is not None:
+            findings.append(found)
+    return findings
+
+
+def equilibrium_findings(eq) -> list:
+    """The findings of a `skcable.mooring.MooringEquilibrium`: each line's strain, the anchors on the
+    seabed, the bodies and the free points."""
+    findings = []
+    for k, handle, line in zip(eq.line_indices, eq.handles, eq.lines, strict=True):
+        segments = getattr(handle.model, "segments", None)
+        if segments is None:
+            continue
+        largest = float(np.linalg.norm(end_forces(line), axis=1).max())
+        findings += line_findings(line, segments, largest, f" on line {k}")
+    return findings + _anchors(eq) + _bodies(eq)
