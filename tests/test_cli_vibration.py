@@ -76,4 +76,4 @@ def test_errors_name_the_flag(capsys, args, flag):
 
 def test_the_group_alone_says_what_to_choose(capsys):
     status, out, err = main(capsys, "conductor")
-    assert status == cli.EXIT_USAGE and "choose 'vibration'" in err
+    assert status == cli.EXIT_USAGE and "'vibration'" in err and "choose 'table'" in err

@@ -11,7 +11,7 @@ from __future__ import annotations
 from skcable.cli._args import finite, whole
 from skcable.cli._output import print_json, quantities, table
 
-__all__ = ["WIND_MODELS", "add_vibration", "register"]
+__all__ = ["WIND_MODELS", "add_vibration"]
 
 #: Strouhal number of the band's default: f = S V / D for winds of 1 to 7 m/s.
 _STROUHAL, _WINDS = 0.185, (1.0, 7.0)
