@@ -26,7 +26,9 @@ has weight :math:`w_k` per unstretched length and the joints carry the point loa
   ``ε = T/EA``). The ends' vertical stiffness is :math:`1/C`, :math:`C = \int c(T)\,ds` the
   line's compliance (:math:`c = d\varepsilon/dT`); the lateral one is the limit of the catenary's
   :math:`H/r`, :math:`k = 1/\int (1 + \varepsilon)\,ds/T` (the line's shape under a small offset
-  is :math:`T\,x' = H`), zero where the tension vanishes at an end;
+  is :math:`T\,x' = H`), zero where the tension vanishes at an end; ends a horizontal distance
+  below the round-off of the plane's (`skcable.mooring.between`) apart take its first-order force
+  :math:`k\,(\mathbf b - \mathbf a)_{xy}`;
 - **folded** (the line longer than the height, every segment heavier than water, no point load
   between the ends): both branches hang from a fold at :math:`s^*` where the tension vanishes,
   its height the same from either end, :math:`z_a - S_a(s^*) = z_b - S_b(s^*)`; the ends'
@@ -278,6 +280,9 @@ def vertical_between(line, a, b, depth) -> VerticalBetween:
         F_up = np.array([0.0, 0.0, -T_U - P_up])
         blocks = _blocks(k_lat, 1.0 / C, -1.0 / C, 1.0 / C)
         forces = np.array([F_up, F_low]) if reverse else np.array([F_low, F_up])
+        lateral_offset = np.array([b[0] - a[0], b[1] - a[1], 0.0])  # below round-off of r: first order
+        forces[0] += k_lat * lateral_offset
+        forces[1] -= k_lat * lateral_offset
         ordered = [(t1, t0) for t0, t1 in reversed(tens)] if reverse else tens
         return VerticalBetween(line, a, b, "taut", forces, blocks, ordered)
     return _slack_vertical(line, a, b, depth, hang, reverse)

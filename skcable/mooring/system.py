@@ -586,7 +586,7 @@ class MooringSystem:
         longest = 1.0  # with no line at all
         for k, h in enumerate(self._active(without)):
             (ax, ay, az), (bx, by, bz) = P[h.a.index], P[h.b.index]
-            r = max(math.hypot(bx - ax, by - ay), abs(bz - az))  # a steep line: its height
+            r = max(math.hypot(bx - ax, by - ay), 0.1 * abs(bz - az))  # a steep line: a tenth of its height
             if r == 0.0:  # a tie of two points (`skcable.mooring.rod.Tie`): no reach
                 continue
             longest = r if k == 0 else max(longest, r)
