@@ -552,8 +552,17 @@ def _pushed_starts(solve, position) -> list:
 
 def _solve_equilibrium(system, position, external, lines, tol, max_iter, without, neutral):
     solve = _Newton(system, external, tol, max_iter, without, neutral)
+    result = None
+    if lines is None and any(getattr(h.model, "stiffness", None) is not None for h in system.mooring_lines):
+        # a pin held by a stiff spring (a tie): Newton from the start where it is near (a few steps),
+        # else reached through its softer ties
+        try:
+            result = _Newton(system, external, tol, _NEAR, without, neutral).run(position)
+        except (ConvergenceError, InputError):
+            softer = _stiffened_start(system, position, external, (tol, max_iter, without, neutral))
+            position = position if softer is None else softer
     try:
-        result = _first_run(solve, position, lines)
+        result = result if result is not None else _first_run(solve, position, lines)
     except ConvergenceError as err:
         if "singular" in str(err) or "nothing restrains" in str(err):  # not a matter of stiffness
             raise
@@ -591,20 +600,26 @@ def _solve_equilibrium(system, position, external, lines, tol, max_iter, without
     return eq
 
 
-#: The stiffness factors of `_stiffened_start`'s softened systems, softest first.
+#: The Newton steps a system with ties takes from its start before its ties are softened.
+_NEAR = 6
+
+#: The stiffness factors of `_stiffened_start`'s softened systems, softest first: of the lines
+#: (and rods and ties), then of the ties alone (a pin held by a stiff spring: `skcable.mooring.rod.Tie`).
 _SOFTENED = (1e-6, 1e-4, 1e-2)
+_SOFTENED_TIES = tuple(10.0**k for k in range(-8, 0))
 
 
-def _softened(system, factor):
+def _softened(system, factor, ties_only=False):
     """A copy of ``system`` whose lines and rods are ``factor`` times as stiff axially (their weights
-    and geometry the same), or None where it has no line to soften."""
+    and geometry the same), or only its ties (a model with a ``stiffness``) with ``ties_only``; None
+    where it has nothing to soften."""
     from skcable.mooring.axial import StrainTable
     from skcable.mooring.segments import Line, Segment
 
     models = {}
     for handle in system.mooring_lines:
         model = handle.model
-        if isinstance(model, Line):
+        if isinstance(model, Line) and not ties_only:
             segments = []
             for seg in model.segments:
                 law = seg.law
@@ -616,9 +631,11 @@ def _softened(system, factor):
                     return None
                 segments.append(Segment(seg.length, seg.w, EA, diameter=seg.diameter))
             models[handle] = Line(segments, model.attachments, friction=model.friction)
-        elif getattr(model, "axial_stiffness", None) is not None or hasattr(model, "stiffness"):
+            continue
+        name = "stiffness" if ties_only else "axial_stiffness"
+        if getattr(model, name, None) is not None or (not ties_only and getattr(model, "stiffness", None)):
+            name = name if getattr(model, name, None) is not None else "stiffness"
             other = copy.copy(model)
-            name = "axial_stiffness" if getattr(model, "axial_stiffness", None) is not None else "stiffness"
             setattr(other, name, getattr(model, name) * factor)
             models[handle] = other
     return system.replaced(models=models) if models else None
@@ -626,23 +643,32 @@ def _softened(system, factor):
 
 def _stiffened_start(system, position, external, settings):
     """A start for a system whose stiff taut lines must turn far (a weight swinging on a line a
-    million times stiffer than the weight's pendulum): the equilibria of the system with its lines
-    softened (`_SOFTENED`), each from the last; None where that fails or there is nothing to
-    soften. A start only: the equilibrium is the system's own, solved from it."""
+    million times stiffer than the weight's pendulum) or whose ties are stiff (a rod pinned to a
+    body): the equilibria of the system with its ties alone softened (`_SOFTENED_TIES`), where it
+    has ties, else with its lines softened (`_SOFTENED`), each from the last; None where that
+    fails or there is nothing to soften. A start only: the equilibrium is the system's own, solved
+    from it."""
     tol, max_iter, without, neutral = settings
-    start = position
     with warnings.catch_warnings():  # a softened line is implausible by design
         warnings.simplefilter("ignore", PlausibilityWarning)
-        for factor in _SOFTENED:
-            soft = _softened(system, factor)
-            if soft is None:
-                return None
-            try:
-                solve = _Newton(soft, external, tol, max_iter, without, neutral)
-                start = _first_run(solve, start, None).x
-            except (ConvergenceError, InputError):
-                return None
-    return start
+        ties = any(getattr(h.model, "stiffness", None) is not None for h in system.mooring_lines)
+        plans = ((_SOFTENED_TIES, True), (_SOFTENED, False)) if ties else ((_SOFTENED, False),)
+        for factors, ties_only in plans:
+            start = position
+            for factor in factors:
+                soft = _softened(system, factor, ties_only)
+                if soft is None:
+                    start = None
+                    break
+                try:
+                    solve = _Newton(soft, external, tol, max_iter, without, neutral)
+                    start = _first_run(solve, start, None).x
+                except (ConvergenceError, InputError):
+                    start = None
+                    break
+            if start is not None:
+                return start
+    return None
 
 
 def _restarts(system, position, result, solve):

@@ -309,7 +309,9 @@ class RodBody(RigidBody):
 class Tie:
     """Two points held together by a stiff spring of zero length, ``F_a = k (b - a)``: a pin joining
     a rod's end to a body (MoorDyn's ``Body#Pinned`` rods). ``stiffness`` ``k`` (N/m), > 0: the
-    points' gap is the force over it (`TieBetween.gap`)."""
+    points' gap is the force over it (`TieBetween.gap`; 6e-8 m in MoorDyn's ``BodiesAndRods.dat``).
+    The equilibrium reaches a system with ties through its ties softened
+    (`skcable.mooring.equilibrium`)."""
 
     def __init__(self, stiffness):
         self.stiffness = scalar("stiffness", positive("stiffness", stiffness))

@@ -53,7 +53,6 @@ OTHERS = sorted(
 )
 #: files whose scene these statics do not solve yet, and why (the report says it)
 UNSOLVED = {
-    "MoorDyn/tests/Mooring/BodiesAndRods.dat": "a rod pinned to a floating body (a joint between two bodies)",
     "MoorDyn/tests/Mooring/rod_tests/AddedMass.txt": (
         "a free rod floating across the water line: its cross-section's submergence, which the slender "
         "rod's buoyancy (its axis' submerged length) does not hold (the equilibrium found is unstable, "

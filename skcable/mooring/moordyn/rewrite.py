@@ -77,6 +77,8 @@ def _rod_ends(model, rod, eq) -> list[str] | None:
             )
         )
         a, b = R.T @ (a - x), R.T @ (b - x)
+        b = b - (a - rod.a)  # its pin where the file has it on its body (the tie's gap taken out)
+        a = rod.a
     else:  # a turbine's rod: relative to its turbine
         a, b = a - rod.offset, b - rod.offset
     return [*map(_fmt, a), *map(_fmt, b)]
