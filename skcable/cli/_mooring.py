@@ -1,4 +1,4 @@
-"""``skcable mooring FILE``: the equilibrium of a mooring system from a MoorDyn v2 input file or a
+"""``skcable mooring FILE``: the equilibrium of a mooring system from a MoorDyn input file or a
 TOML system file (`skcable.mooring.system_file`): the bodies' and free points' positions, each
 line's end tensions and model, the anchor loads and uplift, and the bodies' stiffness."""
 
@@ -6,24 +6,32 @@ from __future__ import annotations
 
 from skcable.cli._cables import output_flags, vtk_path
 from skcable.cli._output import print_json, quantities, table
+from skcable.errors import ConvergenceError
 
 __all__ = ["register"]
 
 
-def _load(path: str):
-    """``(system, force, moment)`` of a TOML system file (``.toml``) or a MoorDyn file (any other)."""
+def _solve(args):
+    """``(equilibrium, notes)`` of a TOML system file (``.toml``) or a MoorDyn file (any other):
+    the TOML file's loads applied; a MoorDyn file's system as `MoorDynModel.equilibrium` solves it
+    (its ``notes``: what the statics leave aside, the neutral directions held)."""
     from pathlib import Path
 
     from skcable import mooring
     from skcable.errors import InputError
     from skcable.mooring.system_file import read_system
 
+    path = args.file
     if not Path(path).is_file():
         raise InputError("FILE", f"{path!r} is no file")
     if Path(path).suffix.lower() == ".toml":
         described = read_system(path)
-        return described.system, described.force, described.moment
-    return mooring.read_moordyn(path).system, {}, {}
+        system: mooring.MooringSystem = described.system  # type: ignore[assignment]
+        return system.equilibrium(force=described.force, moment=described.moment), {}
+    turbines = {k + 1: xyz for k, xyz in enumerate(args.turbine)} if args.turbine else None
+    model = mooring.read_moordyn(path, turbines=turbines)
+    eq = model.equilibrium()
+    return eq, {"ignored": dict(model.ignored), "neutral": list(eq.neutral)}
 
 
 def _values(eq) -> dict:
@@ -56,7 +64,10 @@ def _values(eq) -> dict:
         ],
     }
     if eq.bodies:
-        values["stiffness"] = eq.stiffness(condensed=True).tolist()
+        try:
+            values["stiffness"] = eq.stiffness(condensed=True).tolist()
+        except ConvergenceError:  # free points that nothing holds alone (a neutral direction)
+            values["stiffness"] = None
     return values
 
 
@@ -93,10 +104,16 @@ def _print(values) -> None:
             ("uplift [deg]", "uplift_angle_deg"),
         ]
         table([(header, [r[key] for r in a]) for header, key in columns])
-    if "stiffness" in values:
+    if values.get("stiffness") is not None:
         print("\nstiffness of the bodies, free points condensed out (N/m, N/rad, N m/rad):")
         for row in values["stiffness"]:
             print("  " + " ".join(f"{k:12.5e}" for k in row))
+    for what in values.get("neutral", ()):
+        print(f"\nneutral (nothing acts along it: held where the file starts it): {what}")
+    if values.get("ignored"):
+        print("\nleft aside by the statics:")
+        for name, why in values["ignored"].items():
+            print(f"  {name}: {why}")
 
 
 def _run(args) -> int:
@@ -104,9 +121,9 @@ def _run(args) -> int:
     from skcable.cli._status import EXIT_OK
 
     vtk = vtk_path(args)
-    system, force, moment = _load(args.file)
-    eq = system.equilibrium(force=force, moment=moment)
+    eq, notes = _solve(args)
     values = _values(eq)
+    values.update(notes)
     if vtk:
         values["vtk"] = str(eq.to_vtk(vtk))
     if args.json:
@@ -125,5 +142,14 @@ def register(sub, command) -> None:
         "TOML system file (.toml): positions, each line's end tensions and model, anchor loads and "
         "uplift, the bodies' stiffness",
     )
-    p.add_argument("file", metavar="FILE", help="a MoorDyn v2 input file, or a .toml system file")
+    p.add_argument("file", metavar="FILE", help="a MoorDyn input file (v1 or v2), or a .toml system file")
+    p.add_argument(
+        "--turbine",
+        nargs=3,
+        type=float,
+        action="append",
+        metavar=("X", "Y", "Z"),
+        help="a FAST.Farm turbine's position (m), turbine 1 first, for a farm-level MoorDyn file's Turbine# "
+        "attachments (repeat for each turbine) (default: none)",
+    )
     output_flags(p, "the system (lines, seabed, bodies, free points)")

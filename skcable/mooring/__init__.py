@@ -22,7 +22,9 @@ One concern per module (the packages split further, see their docstrings):
   `lying` (both ends on the seabed), `slope` (a sloped seabed), `bvp_model` (the line BVP
   as a line solution), `plane` (the solved line in its plane, `PlaneLine`) and `jacobians`
   (the closed forms' end-force Jacobians);
-- `between`: that line between two points in space, its 6 x 6 end stiffness;
+- `between`: that line between two points in space, its 6 x 6 end stiffness; `straight`: a line
+  whose ends share a vertical, or a weightless one (straight, in closed form);
+- `rod`: rigid rods (MoorDyn's), as a line between two points or a body of the equilibrium;
 - `body`: point and rigid bodies (6 dofs) with their own loads;
 - `network`: the points, line handles and dofs of a system;
 - `assembly`: the net loads and the stiffness of a system, vectorised over its line ends;
@@ -33,7 +35,8 @@ One concern per module (the packages split further, see their docstrings):
 - `checks`: anchor loads, line angles and grounded lengths, segments against their MBL;
 - `library`: the component library (chain, wire rope, fibre rope: diameter to w, EA, MBL);
 - `design`: a line's length or a segment's property to reach a target, bracketed;
-- `moordyn`: MoorDyn v2 input files read and written; `system_file`: the TOML system file.
+- `moordyn`: MoorDyn input files (v1 and v2, as MoorDyn reads them) read and written;
+  `system_file`: the TOML system file.
 
 Data flow: segments and seabed solutions (2-D) → ``geometry`` / ``line3d`` → ``between`` (in
 space) → ``system`` (bodies and points) → ``equilibrium`` → the writers and plots, which only
@@ -104,8 +107,10 @@ SUBMODULES = (
     "moordyn",
     "network",
     "plane",
+    "rod",
     "segments",
     "slope",
+    "straight",
     "system",
     "system_file",
 )

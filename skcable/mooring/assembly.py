@@ -16,8 +16,9 @@ summed per body (one product with a 0/1 matrix of the ends' bodies); an end at a
 :math:`R\mathbf r_G` and its buoyancy :math:`\mathbf B` at :math:`R\mathbf r_M` (their arms
 formed with the points', `Assembler.body_arms`), whose geometric terms are the hydrostatic
 :math:`K_{\theta\theta} = -[\mathbf W]_\times[R\mathbf r_G]_\times - [\mathbf B]_\times[R\mathbf r_M]_\times`;
-then the heave restoring, :math:`-\rho g A_{WP} z` and :math:`K_{zz} = \rho g A_{WP}`. A point
-body is a body whose arms and angles are zero.
+then the heave restoring, :math:`-\rho g A_{WP} z` and :math:`K_{zz} = \rho g A_{WP}`, and the
+own loads of a body whose loads change with its pose (its ``posed_loads(q)``: a rod's buoyancy,
+`skcable.mooring.rod.RodBody`). A point body is a body whose arms and angles are zero.
 """
 
 from __future__ import annotations
@@ -139,6 +140,8 @@ class Assembler:
         )
         self.arm_owner = np.concatenate([self.body_point_owner, np.repeat(np.arange(nb), 2)]).astype(int)
         self._plans = {}
+        # bodies with own loads that change with their pose (`skcable.mooring.rod.RodBody`'s buoyancy)
+        self.posed = [(i, b) for i, b in enumerate(bodies) if callable(getattr(b, "posed_loads", None))]
         # each point's body or free point, by its first dof (-1: fixed); the own loads' force scale
         self.group_start = np.where(self.kind == 1, self.free_start, -1)
         on_body = self.kind == 2
@@ -216,6 +219,12 @@ class Assembler:
         if not lines_only and len(self.start):  # heave restoring
             Gb[:, 2] -= self.heave * q[self.start + 2]
             Kb[:, 2, 2] += self.heave
+        if not lines_only:
+            for i, body in self.posed:  # own loads of the pose, and their stiffness
+                s = int(self.start[i])
+                g, k = body.posed_loads(q[s : s + body.n_dof])
+                Gb[i] += g
+                Kb[i] += k
         if plan["one"]:  # one rigid body, no free point: its dofs are the system's
             G, K = Gb[0], Kb[0]
         else:

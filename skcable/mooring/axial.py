@@ -138,7 +138,9 @@ class ConstantEA(StrainLaw):
 class StrainTable(StrainLaw):
     """``ε(T)`` from a table of points (strain, tension) starting at (0, 0), both strictly
     increasing: the monotone cubic through them (scipy's ``PchipInterpolator``, a continuous
-    derivative), linear with its end slopes below zero and beyond the last point.
+    derivative), or the straight segments between them (``interpolation="linear"``: MoorDyn's
+    strain–tension curves, ``moordyn::interp``), linear with its end slopes below zero and beyond
+    the last point.
 
     Parameters
     ----------
@@ -146,10 +148,15 @@ class StrainTable(StrainLaw):
         Strains (-), from 0, strictly increasing.
     tension : array_like
         Tensions (N) at those strains, from 0, strictly increasing.
+    interpolation : {"pchip", "linear"}, optional
+        The curve between the points.
     """
 
-    def __init__(self, strain, tension):
-        from scipy.interpolate import PchipInterpolator
+    def __init__(self, strain, tension, *, interpolation: str = "pchip"):
+        from scipy.interpolate import BSpline, PchipInterpolator, make_interp_spline
+
+        if interpolation not in ("pchip", "linear"):
+            raise InputError("interpolation", f"must be 'pchip' or 'linear', got {interpolation!r}")
 
         eps, T = real("strain", strain), real("tension", tension)
         for name, values in (("strain", eps), ("tension", T)):
@@ -167,10 +174,21 @@ class StrainTable(StrainLaw):
                     f"must increase strictly (ε(T) increasing), got {values[k]:g} then {values[k + 1]:g}",
                 )
         self.table = (np.array(eps, dtype=float), np.array(T, dtype=float))
-        self.curve = PchipInterpolator(self.table[1], self.table[0], extrapolate=False)
+        self.interpolation = interpolation
+        if interpolation == "linear":
+            spline = make_interp_spline(self.table[1], self.table[0], k=1)
+            self.curve = BSpline(spline.t, spline.c, 1, extrapolate=False)
+        else:
+            self.curve = PchipInterpolator(self.table[1], self.table[0], extrapolate=False)
         self.slope = self.curve.derivative()
         self.breakpoints = self.table[1][1:]
-        self.ends = (float(self.slope(T[0])), float(self.slope(T[-1])))
+        if (
+            interpolation == "linear"
+        ):  # the end segments' slopes (a spline's derivative at a knot is one side's)
+            slopes = np.diff(self.table[0]) / np.diff(self.table[1])
+            self.ends = (float(slopes[0]), float(slopes[-1]))
+        else:
+            self.ends = (float(self.slope(T[0])), float(self.slope(T[-1])))
 
     def strain(self, T):
         T = np.asarray(T, dtype=float)
@@ -190,7 +208,8 @@ class StrainTable(StrainLaw):
 
     def __repr__(self):
         eps, T = self.table
-        return f"StrainTable({eps.size} points to ε={eps[-1]:g} at T={T[-1]:g} N)"
+        linear = ", linear" if self.interpolation == "linear" else ""
+        return f"StrainTable({eps.size} points to ε={eps[-1]:g} at T={T[-1]:g} N{linear})"
 
 
 class StrainFunction(StrainLaw):

@@ -38,7 +38,7 @@ import numpy as np
 from skcable._checks import whole
 from skcable._show import Shown
 from skcable.errors import InputError
-from skcable.mooring.geometry import batchable, grounded_batch, is_grounded_scene, solve_in_plane
+from skcable.mooring.geometry import batchable, grounded_batch, is_grounded_scene, is_line, solve_in_plane
 from skcable.mooring.line3d import point
 from skcable.mooring.segments import LineSolution
 
@@ -211,15 +211,20 @@ def _plane_of(a, b):
 
 
 def solve_between(line, a, b, depth, start=None, bvp=None) -> LineBetween:
-    """`line_between` on checked float 3-vectors (the horizontal distance checked here)."""
+    """`line_between` on checked float 3-vectors (the horizontal distance checked here); a model
+    with its own ``solve_between`` (`skcable.mooring.rod.Rod`) solved by it."""
+    if not is_line(line):
+        return line.solve_between(a, b, depth, start)
+    weightless = [seg.w == 0.0 for seg in line.segments]
+    if all(weightless):  # no gravity: straight between its ends
+        from skcable.mooring.straight import weightless_between
+
+        return weightless_between(line, a, b)  # type: ignore[return-value]
     plane_of = _plane_of(a, b)
-    if plane_of is None:
-        r = math.hypot(*(b - a)[:2].tolist())
-        raise InputError(
-            "b",
-            f"lies on the vertical of a (horizontal distance {r:.3g} m): the line's vertical plane is "
-            "undefined",
-        )
+    if plane_of is None:  # its ends on one vertical: it hangs straight
+        from skcable.mooring.straight import vertical_between
+
+        return vertical_between(line, a, b, depth)  # type: ignore[return-value]
     r, dz, az, e = plane_of
     seabed = None if depth is None else -depth - az
     plane = solve_in_plane(line, r, dz, seabed=seabed, start=None if start is None else start.plane, bvp=bvp)
@@ -289,8 +294,6 @@ def line_between(line, a, b, *, depth=None, start=None) -> LineBetween:
     >>> one.model, bool(abs(one.end_forces - other.end_forces[::-1]).max() < 1e-9)
     ('grounded', True)
     """
-    from skcable.mooring.geometry import is_line
-
     if not is_line(line):
         raise InputError(
             "line", f"must be a mooring.Line, got {type(line).__name__} (use line_3d for other models)"

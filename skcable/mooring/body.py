@@ -37,7 +37,7 @@ import math
 import numpy as np
 
 from skcable import _plausible
-from skcable._checks import nonnegative, positive, real, scalar
+from skcable._checks import nonnegative, real, scalar
 from skcable.errors import InputError
 from skcable.mooring.line3d import point
 
@@ -77,8 +77,8 @@ class _Hydrostatics:
         self.mass = scalar("mass", nonnegative("mass", mass))
         self.volume = scalar("volume", nonnegative("volume", volume))
         self.waterplane_area = scalar("waterplane_area", nonnegative("waterplane_area", waterplane_area))
-        self.rho = scalar("rho", positive("rho", rho))
-        self.g = scalar("g", positive("g", g))
+        self.rho = scalar("rho", nonnegative("rho", rho))
+        self.g = scalar("g", nonnegative("g", g))
         _plausible.gravity(self.g)
         self.weight = np.array([0.0, 0.0, -self.mass * self.g])
         self.buoyancy = np.array([0.0, 0.0, self.rho * self.g * self.volume])

@@ -38,6 +38,7 @@ buoyancy, nothing below the seabed. ``positive_definite`` is the stiffness's ver
 
 from __future__ import annotations
 
+import copy
 import functools
 import math
 import warnings
@@ -72,16 +73,25 @@ def _units(system) -> tuple[np.ndarray, float]:
     return units, float(units.max(initial=1.0))
 
 
-def stiffness_eigenvalues(system, K) -> np.ndarray:
+def stiffness_eigenvalues(system, K, held=()) -> np.ndarray:
     """Eigenvalues (ascending, N/m) of the symmetric part of the stiffness ``K`` of ``system`` in
-    consistent units: rotations times their body's largest arm (`_units`)."""
+    consistent units: rotations times their body's largest arm (`_units`); the dofs it holds
+    (``held_dofs``: a pinned body's translations) and the ``held`` ones (a point the seabed
+    holds) left out."""
     units, _ = _units(system)
     scaled = K / units[:, None] / units[None, :]
+    held = np.union1d(system.held_dofs, np.asarray(held, dtype=int))
+    if len(held):
+        free = np.setdiff1d(np.arange(len(units)), held)
+        scaled = scaled[np.ix_(free, free)]
     return np.linalg.eigvalsh(0.5 * (scaled + scaled.T))
 
 
 def is_stable(eigenvalues) -> bool:
-    """Whether no eigenvalue is negative beyond round-off (``-1e-8`` of the largest magnitude)."""
+    """Whether no eigenvalue is negative beyond round-off (``-1e-8`` of the largest magnitude); a
+    system of no dofs is."""
+    if not len(eigenvalues):
+        return True
     scale = float(np.abs(eigenvalues).max())
     return bool(eigenvalues[0] >= -_UNSTABLE * scale)
 
@@ -96,25 +106,38 @@ class _State(NamedTuple):
     position: np.ndarray
     size: float
     tension: float
+    held: np.ndarray = np.zeros(0, dtype=int)  # free points' heights the seabed holds there
 
 
 class _Newton:
     """One Newton solve of a system's equilibrium (module docstring): the problem's callables.
 
     Every state it assembles counts against the time budget (`skcable._budget.Budget`: its scaled
-    residual and dofs recorded, the best kept), for the error of a search that runs out of time."""
+    residual and dofs recorded, the best kept), for the error of a search that runs out of time;
+    the solves of one search (its softened systems' too) share one budget."""
 
-    def __init__(self, system, external, tol, max_iter, without=frozenset(), time_limit=math.inf):
+    def __init__(self, system, external, tol, max_iter, without=frozenset(), neutral="raise", budget=None):
         self.system, self.external, self.tol, self.max_iter = system, external, tol, max_iter
-        self.budget = Budget(time_limit=time_limit)
-        self.without = without
+        self.without, self.neutral = without, neutral
+        self.budget = Budget() if budget is None else budget
         self.units, self.arm = _units(system)
+        self.held = system.held_dofs  # a pinned body's translations: no unknowns
+        # the free points' heights and the seabed under them: a point rests on it (`seabed_contact`)
+        layout = system.layout
+        self.floor_dofs = (
+            np.array([s + 2 for s in layout.point_start.values()], dtype=int)
+            if system.depth is not None
+            else np.zeros(0, dtype=int)
+        )
+        self.floor = -float(system.depth) if system.depth is not None else 0.0
         self.unit_pairs = self.units[:, None] * self.units[None, :]  # a matrix in consistent units
         self.body_scale = system.force_scale(external)
         self.lines = None  # the lines of the last accepted state: warm starts of the trials
         self.cap = None  # the step cap, from the start (`step_cap`)
         self.seen = 0.0  # the largest line tension of the run's iterates Newton stepped from (N)
         self.restrained_first = False  # `slack_step`: the restrained directions before the free ones
+        self.corrected = False  # `update`: trials corrected by a step with the step's Jacobian
+        self.jac = None  # the Jacobian of the last Newton step
 
     def merit(self, state) -> float:
         """The line search's merit: the net load's norm over a scale that holds during the line
@@ -127,12 +150,47 @@ class _Newton:
         ``max_iter``."""
         return state.size / max(self.body_scale, self.seen, 1e-300)
 
+    def update(self, x, dx, t) -> np.ndarray:
+        """The trial ``x + t dx``, its free points no lower than the seabed; with ``corrected``, the
+        trial then corrected by one step of Newton's method with the step's own Jacobian (a second
+        order correction: the trial path bends with a taut line as a point swings on it, instead
+        of stretching it)."""
+        trial = self._floored(x + t * dx)
+        if self.corrected and self.jac is not None:
+            try:
+                G = self.assemble(trial).G
+            except (InputError, ConvergenceError):
+                return trial
+            fix = np.linalg.lstsq(self.jac / self.unit_pairs, G / self.units, rcond=_SINGULAR)[0] / self.units
+            trial = self._floored(trial + self.capped(fix))
+        return trial
+
+    def _floored(self, trial) -> np.ndarray:
+        if len(self.floor_dofs):
+            trial[self.floor_dofs] = np.maximum(trial[self.floor_dofs], self.floor)
+        return trial
+
     def assemble(self, position) -> _State:
-        """The `_State` at ``position``; the lines start from the last accepted ones."""
+        """The `_State` at ``position`` (its free points no lower than the seabed); the lines start
+        from the last accepted ones. A pinned body's translations and a free point on the seabed
+        that the loads press into it are held: their load is the pin's or the seabed's reaction, no
+        residual."""
         self.budget.spend()
+        if len(self.floor_dofs):
+            position = position.copy()
+            position[self.floor_dofs] = np.maximum(position[self.floor_dofs], self.floor)
         G, K, lines = self.system.evaluate(position, self.external, start=self.lines, without=self.without)
+        contact = np.zeros(0, dtype=int)
+        if len(self.floor_dofs):
+            k = self.floor_dofs
+            on = position[k] <= self.floor + 1e-12 * max(1.0, abs(self.floor))
+            contact = k[on & (G[k] <= 0.0)]  # pressed into the seabed, or resting on it
+        if len(self.held) or len(contact):  # the reactions: no unknowns, no residual
+            G = G.copy()
+            G[self.held] = 0.0
+            G[contact] = 0.0
         size = float(np.linalg.norm(G / self.units))
-        state = _State(G, K, lines, position, size, self.system.tension_scale(lines))
+        state = _State(G, K, lines, position, size, self.system.tension_scale(lines), contact)
         self.budget.record(self.norm(state), np.array(position, dtype=float))
         return state
 
@@ -142,20 +200,29 @@ class _Newton:
         return state.size / max(self.body_scale, state.tension, 1e-300)
 
     def jacobian(self, state) -> np.ndarray:
-        """``-∂G/∂q`` at ``state``."""
-        return self.system.layout.times_rate_map(state.K, state.position)
+        """``-∂G/∂q`` at ``state``; the held dofs' rows and columns those of no unknown (a unit
+        diagonal in consistent units, at the matrix's scale)."""
+        jac = self.system.layout.times_rate_map(state.K, state.position)
+        held = np.concatenate([self.held, state.held]).astype(int)
+        if len(held):
+            size = max(float(np.abs(jac / self.unit_pairs).max()), 1e-300)
+            jac[held, :] = 0.0
+            jac[:, held] = 0.0
+            jac[held, held] = size * self.unit_pairs[held, held]
+        return jac
 
     def increment(self, state) -> np.ndarray:
         jac = self.jacobian(state)
+        self.jac = jac
         self.lines = state.lines  # Newton steps from this state: the trials start from its lines
         self.seen = max(self.seen, state.tension)
         scaled = jac / self.unit_pairs
         solved = _well_conditioned_solve(scaled, state.G / self.units)
         if solved is not None:  # no free direction: Newton's step
             return self.capped(solved / self.units)
-        null = _null_space(scaled)
-        if null is not None:
-            return self.slack_step(state, null, jac)
+        pair = _null_space(scaled, left=True)
+        if pair is not None:
+            return self.slack_step(state, pair, jac)
         return self.capped(np.linalg.solve(jac, state.G))
 
     def capped(self, dq) -> np.ndarray:
@@ -167,29 +234,38 @@ class _Newton:
         """A quarter of the shortest horizontal span of each body's or point's lines, 0.2 rad."""
         return self.system.step_cap(position, self.without)
 
-    def slack_step(self, state, null, jac) -> np.ndarray:
-        """The step along the free directions ``null`` (rows, scaled dofs) to where the lines take
-        the net force's component in them (module docstring); with no force along them, the
-        least-squares Newton step in the other directions (the free ones stay as they are: the
-        equilibrium is checked for them at the end, `check_unique`)."""
+    def slack_step(self, state, pair, jac) -> np.ndarray:
+        """The step along the free directions (``pair``: rows, the right and left null vectors of
+        the scaled Jacobian) to where the lines take the net load no Newton step reaches (its
+        component along the left ones; module docstring); with no such load, the least-squares
+        Newton step in the other directions (the free ones stay as they are: the equilibrium is
+        checked for them at the end, `check_unique`)."""
         G, lines, position = state.G, state.lines, state.position
+        null, left = pair
         r = G / self.units
-        push = null.T @ (null @ r)
-        restrained = self.restrained_first and np.linalg.norm(push) < _RESTRAINED * np.linalg.norm(r - push)
+        push = null.T @ (left @ r)  # along the free directions, by the load out of reach
+        restrained = self.restrained_first and np.linalg.norm(push) < _RESTRAINED * np.linalg.norm(
+            r - left.T @ (left @ r)
+        )
         if restrained and any(_slack(line) for line in lines):
             scaled = jac / self.unit_pairs  # the restrained directions first
             return self.capped(np.linalg.lstsq(scaled, r, rcond=_SINGULAR)[0] / self.units)
         if not np.linalg.norm(push) > 1e-12 * np.linalg.norm(r):  # no force along the free directions
-            if not any(_slack(line) for line in lines):  # nothing will take them: not unique
-                raise ConvergenceError(
-                    _SINGULAR_MESSAGE.format(_named(self.system, null)), [self.norm(state)]
-                )
-            scaled = jac / self.unit_pairs  # slack lines, pushed elsewhere
+            if not any(_slack(line) for line in lines) and self.neutral != "hold":
+                if any(_probe(self, state, d) != "restrained" for d in null):  # nothing takes them
+                    raise ConvergenceError(
+                        _SINGULAR_MESSAGE.format(_named(self.system, null)), [self.norm(state)]
+                    )
+            # the others balanced first, the free ones stay (slack lines, lines whose stiffness
+            # vanishes there but that hold them, neutral directions held): `check_unique` at the end
+            scaled = jac / self.unit_pairs
             return self.capped(np.linalg.lstsq(scaled, r, rcond=_SINGULAR)[0] / self.units)
         direction = push / np.linalg.norm(push)  # scaled dofs, |direction| = 1
+        out_of_reach = left.T @ (left @ r)  # the load measured along its left partner
+        measure = out_of_reach / np.linalg.norm(out_of_reach)
         ray = direction / self.units
         cap = self.step_cap(position) if self.cap is None else self.cap
-        t = _ray_root(self, position, ray, direction, float(cap[0]), self.norm(state))
+        t = _ray_root(self, position, ray, measure, float(cap[0]), self.norm(state))
         return t * ray
 
     def along(self, t, position, ray, direction) -> float:
@@ -218,7 +294,17 @@ class _Newton:
             name="mooring equilibrium",
             rejects=(InputError, ConvergenceError),  # a line that cannot reach a trial position
             watchdog=1,  # the first full step from rest overshoots onto the stiff side: take it
+            update=self.update,
+            floor=self.round_off,
         )
+
+    def round_off(self, state) -> float:
+        """The round-off floor of `norm` at ``state``: the net load the stiffness gives to the dofs'
+        own round-off (8 ulps of each dof, a dof of 1 m or 1 rad at least), over the force scale:
+        a stiff taut line resolves its force no finer than ``EA ε``."""
+        dq = 8.0 * np.finfo(float).eps * (np.abs(state.position) + self.units)
+        noise = np.abs(state.K) @ dq
+        return float(np.linalg.norm(noise / self.units)) / max(self.body_scale, state.tension, 1e-300)
 
 
 def _ray_root(solve, position, ray, direction, reach, norm) -> float:
@@ -263,20 +349,65 @@ _SINGULAR_MESSAGE = (
 
 
 def _slack(line) -> bool:
-    """Whether a solved line is slack: no horizontal tension (its slack in a heap, or lying slack)."""
+    """Whether a solved line is slack: no horizontal tension (its slack in a heap, or lying slack),
+    or its own ``is_slack`` where it says."""
+    said = getattr(line, "is_slack", None)
+    if said is not None:
+        return bool(said)
     plane = getattr(line, "plane", None)
     return (plane.H_A == 0.0 and plane.H_B == 0.0) if plane is not None else line.H == 0.0
 
 
-def check_unique(solve, state, history):
-    """Raise `ConvergenceError` where the stiffness at the equilibrium ``state`` is singular: a
-    direction neither the lines nor the hydrostatics restrain (the equilibrium is not unique)."""
+def check_unique(solve, state, history) -> list:
+    """The directions the stiffness at the equilibrium ``state`` leaves free, judged by the net
+    load a small move along each gives (`_probe`): one the loads push back along both ways is
+    restrained at a higher order (a line whose tension vanishes at a free end: no stiffness, yet a
+    restoring force); one along which nothing changes is neutral: raise `ConvergenceError` (the
+    equilibrium is not unique), or, with ``neutral="hold"``, keep it where it started and return
+    it. One the loads push further is no equilibrium: `ConvergenceError`. Returns the neutral
+    directions held (rows, scaled dofs)."""
     scaled = solve.jacobian(state) / solve.unit_pairs
     if _well_conditioned_solve(scaled, np.zeros(len(scaled))) is not None:
-        return  # no singular value near zero (`_CONDITIONED`)
+        return []  # no singular value near zero (`_CONDITIONED`)
     free = _null_space(scaled)
-    if free is not None:
-        raise ConvergenceError(_SINGULAR_MESSAGE.format(_named(solve.system, free)), history)
+    if free is None:
+        return []
+    held, bad = [], []
+    for direction in free:
+        verdict = _probe(solve, state, direction)
+        if verdict == "restrained":
+            continue
+        if verdict == "neutral" and solve.neutral == "hold":
+            held.append(direction)
+        else:
+            bad.append(direction)
+    if bad:
+        raise ConvergenceError(_SINGULAR_MESSAGE.format(_named(solve.system, np.array(bad))), history)
+    return held
+
+
+def _probe(solve, state, direction) -> str:
+    """``"restrained"``, ``"neutral"`` or ``"pushed"``: the change of the net load along
+    ``direction`` (scaled dofs) that a move of 1e-4 of the step cap each way along it gives, over
+    the force scale: below 1e-12 both ways, neutral; opposing the move both ways, restrained."""
+    ray = direction / solve.units
+    cap = solve.cap if solve.cap is not None else solve.step_cap(state.position)
+    lead = int(np.argmax(np.abs(ray)))
+    t = 1e-4 * float(cap[lead]) / float(abs(ray[lead]))
+    scale = max(solve.body_scale, state.tension, 1e-300)
+    g = []
+    for sign in (1.0, -1.0):
+        try:
+            G = solve.assemble(state.position + sign * t * ray).G
+        except (InputError, ConvergenceError):
+            return "pushed"
+        g.append(float(((G - state.G) / solve.units) @ direction) / scale)
+    small = 1e-12
+    if abs(g[0]) <= small and abs(g[1]) <= small:
+        return "neutral"
+    if g[0] < -small and g[1] > small:
+        return "restrained"
+    return "pushed"
 
 
 #: `_well_conditioned_solve` solves where LAPACK's estimate of the reciprocal condition number
@@ -302,16 +433,23 @@ def _well_conditioned_solve(scaled, rhs):
     return x if info == 0 and np.isfinite(x).all() else None
 
 
-def _null_space(scaled):
+def _null_space(scaled, left: bool = False):
     """The free directions of the scaled Jacobian (rows: its right singular vectors whose singular
     values are below `_SINGULAR` of the largest), or None where there is none: the singular values
-    alone first (a third of a full SVD's work), the vectors only where some are that small."""
+    alone first (a third of a full SVD's work), the vectors only where some are that small. With
+    ``left``, ``(right, left)``: the left singular vectors too, the loads no step can change (the
+    Jacobian is not symmetric where a body's rotation dofs are Euler angles and its moments are
+    about global axes: a rod turning about its own axis is its pitch, the moment about the axis
+    its left partner)."""
     singular = np.linalg.svd(scaled, compute_uv=False)
     if singular[-1] > _SINGULAR * singular[0]:
         return None
-    _, singular, vh = np.linalg.svd(scaled)
-    free = vh[singular <= _SINGULAR * singular[0]]
-    return free if len(free) else None  # (the two at a tie of round-off: the full one decides)
+    u, singular, vh = np.linalg.svd(scaled)
+    small = singular <= _SINGULAR * singular[0]
+    free = vh[small]
+    if not len(free):  # (the two at a tie of round-off: the full one decides)
+        return None
+    return (free, u[:, small].T) if left else free
 
 
 @functools.lru_cache(maxsize=1)
@@ -322,7 +460,15 @@ def _threads():
 
 
 def solve_equilibrium(
-    system, position, external, lines, tol, max_iter, without=frozenset(), time_limit=math.inf
+    system,
+    position,
+    external,
+    lines,
+    tol,
+    max_iter,
+    without=frozenset(),
+    neutral="raise",
+    time_limit=math.inf,
 ):
     """`skcable.mooring.MooringSystem.equilibrium` on checked arguments: Newton from ``position``
     (the ``lines`` of an earlier equilibrium as warm starts, or None), the stable branch
@@ -335,7 +481,7 @@ def solve_equilibrium(
     80 ms on two contending threads against 1 ms on one). Below `_ONE_THREAD` dofs BLAS runs on
     one thread anyway (OpenBLAS threads only larger products), and setting the limit would cost
     more than a Newton step."""
-    solve = _Newton(system, external, tol, max_iter, without, time_limit)
+    solve = _Newton(system, external, tol, max_iter, without, neutral, Budget(time_limit=time_limit))
     what = "mooring equilibrium (the measure: the scaled residual)"
     if system.n_dof < _ONE_THREAD:
         return solve.budget.run(what, "states", _solve_equilibrium, solve, position, lines)
@@ -360,7 +506,7 @@ def _first_run(solve, position, lines):
         if "no descent" not in str(err):
             raise
         history = err.history
-    for start in _pushed_starts(solve, position):
+    for start in [*_pushed_starts(solve, position), *_carried_starts(solve, position)]:
         try:
             return solve.run(start)
         except (ConvergenceError, InputError):
@@ -372,18 +518,42 @@ def _first_run(solve, position, lines):
         pass
     finally:
         solve.restrained_first = False
-    sinking = (
-        "; a free point has no contact with the seabed: one that its lines' weight sinks (no buoyancy "
-        "to hold it) has no equilibrium"
-        if solve.system.layout.free.size
-        else ""
-    )
+    for start in [position, *_carried_starts(solve, position)]:  # taut lines that must swing
+        try:
+            solve.corrected = True
+            return solve.run(start)
+        except (ConvergenceError, InputError):
+            continue
+        finally:
+            solve.corrected = False
     raise ConvergenceError(
         "mooring equilibrium: the line search found no descent, from the start nor from it pushed along "
-        f"the net load (the residual stalls: the loads may exceed what the mooring can hold, or the start "
-        f"is too far{sinking})",
+        "the net load (the residual stalls: the loads may exceed what the mooring can hold, or the start "
+        "is too far)",
         history,
     )
+
+
+def _carried_starts(solve, position) -> list:
+    """The start carried along the net load (every dof, in consistent units) to where the load
+    along it vanishes (`_ray_root`): slack lines that take no load until they are taut, and then a
+    stiff one (a weight on a weightless line), where Newton's step overshoots; none where the load
+    does not turn along the ray."""
+    try:
+        state = solve.assemble(position)
+    except (ConvergenceError, InputError):
+        return []
+    r = state.G / solve.units
+    if not np.linalg.norm(r) > 0:
+        return []
+    direction = r / np.linalg.norm(r)
+    ray = direction / solve.units
+    cap = solve.step_cap(position)
+    try:
+        t = _ray_root(solve, position, ray, direction, float(cap.min()), solve.norm(state))
+    except ConvergenceError:
+        return []
+    return [position + t * ray]
 
 
 #: How far `_pushed_starts` pushes the start along the net load: multiples of the step cap (a
@@ -413,9 +583,28 @@ def _pushed_starts(solve, position) -> list:
 
 def _solve_equilibrium(solve, position, lines):
     system, external, without = solve.system, solve.external, solve.without
-    result = _first_run(solve, position, lines)
-    check_unique(solve, result.state, result.history)
-    eigenvalues = stiffness_eigenvalues(system, result.state.K)
+    settings = (solve.tol, solve.max_iter, without, solve.neutral, solve.budget)
+    result = None
+    if lines is None and any(getattr(h.model, "stiffness", None) is not None for h in system.mooring_lines):
+        # a pin held by a stiff spring (a tie): Newton from the start where it is near (a few steps),
+        # else reached through its softer ties
+        try:
+            near = _Newton(system, external, solve.tol, _NEAR, without, solve.neutral, solve.budget)
+            result = near.run(position)
+        except (ConvergenceError, InputError):
+            softer = _stiffened_start(system, position, external, settings)
+            position = position if softer is None else softer
+    try:
+        result = result if result is not None else _first_run(solve, position, lines)
+    except ConvergenceError as err:
+        if "singular" in str(err) or "nothing restrains" in str(err):  # not a matter of stiffness
+            raise
+        start = _stiffened_start(system, position, external, settings)
+        if start is None:
+            raise err from None
+        result = _first_run(solve, start, None)
+    held = check_unique(solve, result.state, result.history)
+    eigenvalues = stiffness_eigenvalues(system, result.state.K, result.state.held)
     passed = []
     if not is_stable(eigenvalues):
         passed.append(result.x.copy())
@@ -424,7 +613,7 @@ def _solve_equilibrium(solve, position, lines):
                 other = solve.run(start)
             except (ConvergenceError, InputError):
                 continue
-            other_eig = stiffness_eigenvalues(system, other.state.K)
+            other_eig = stiffness_eigenvalues(system, other.state.K, other.state.held)
             if is_stable(other_eig):
                 result, eigenvalues = other, other_eig
                 break
@@ -433,6 +622,7 @@ def _solve_equilibrium(solve, position, lines):
     eq = MooringEquilibrium(
         system, result.x, external, G, K, lines, result.history, eigenvalues, passed, without=without
     )
+    eq.neutral = [_named(system, d[None, :]) for d in held]
     if not eq.positive_definite:
         reason = (
             f"the mooring equilibrium found is unstable (stiffness eigenvalue {eigenvalues[0]:.3g} N/m < 0, "
@@ -448,6 +638,77 @@ def warn_implausible(eq) -> None:
     _plausible.warn_all(eq.implausible)
 
 
+#: The Newton steps a system with ties takes from its start before its ties are softened.
+_NEAR = 6
+
+#: The stiffness factors of `_stiffened_start`'s softened systems, softest first: of the lines
+#: (and rods and ties), then of the ties alone (a pin held by a stiff spring: `skcable.mooring.rod.Tie`).
+_SOFTENED = (1e-6, 1e-4, 1e-2)
+_SOFTENED_TIES = tuple(10.0**k for k in range(-8, 0))
+
+
+def _softened(system, factor, ties_only=False):
+    """A copy of ``system`` whose lines and rods are ``factor`` times as stiff axially (their weights
+    and geometry the same), or only its ties (a model with a ``stiffness``) with ``ties_only``; None
+    where it has nothing to soften."""
+    from skcable.mooring.axial import StrainTable
+    from skcable.mooring.segments import Line, Segment
+
+    models = {}
+    for handle in system.mooring_lines:
+        model = handle.model
+        if isinstance(model, Line) and not ties_only:
+            segments = []
+            for seg in model.segments:
+                law = seg.law
+                if law.kind == "constant":
+                    EA = float(seg.EA) * factor
+                elif isinstance(law, StrainTable):
+                    EA = StrainTable(law.table[0], law.table[1] * factor, interpolation=law.interpolation)
+                else:
+                    return None
+                segments.append(Segment(seg.length, seg.w, EA, diameter=seg.diameter))
+            models[handle] = Line(segments, model.attachments, friction=model.friction)
+            continue
+        name = "stiffness" if ties_only else "axial_stiffness"
+        if getattr(model, name, None) is not None or (not ties_only and getattr(model, "stiffness", None)):
+            name = name if getattr(model, name, None) is not None else "stiffness"
+            other = copy.copy(model)
+            setattr(other, name, getattr(model, name) * factor)
+            models[handle] = other
+    return system.replaced(models=models) if models else None
+
+
+def _stiffened_start(system, position, external, settings):
+    """A start for a system whose stiff taut lines must turn far (a weight swinging on a line a
+    million times stiffer than the weight's pendulum) or whose ties are stiff (a rod pinned to a
+    body): the equilibria of the system with its ties alone softened (`_SOFTENED_TIES`), where it
+    has ties, else with its lines softened (`_SOFTENED`), each from the last; None where that
+    fails or there is nothing to soften. A start only: the equilibrium is the system's own, solved
+    from it."""
+    tol, max_iter, without, neutral, budget = settings
+    with warnings.catch_warnings():  # a softened line is implausible by design
+        warnings.simplefilter("ignore", PlausibilityWarning)
+        ties = any(getattr(h.model, "stiffness", None) is not None for h in system.mooring_lines)
+        plans = ((_SOFTENED_TIES, True), (_SOFTENED, False)) if ties else ((_SOFTENED, False),)
+        for factors, ties_only in plans:
+            start = position
+            for factor in factors:
+                soft = _softened(system, factor, ties_only)
+                if soft is None:
+                    start = None
+                    break
+                try:
+                    solve = _Newton(soft, external, tol, max_iter, without, neutral, budget)
+                    start = _first_run(solve, start, None).x
+                except (ConvergenceError, InputError):
+                    start = None
+                    break
+            if start is not None:
+                return start
+    return None
+
+
 def _restarts(system, position, result, solve):
     """Starts of the search for a stable branch: the start upright (rotations zeroed), then the
     unstable equilibrium pushed both ways along its most unstable mode."""
@@ -460,6 +721,7 @@ def _restarts(system, position, result, solve):
     units, _ = _units(system)
     scaled = result.state.K / units[:, None] / units[None, :]
     mode = np.linalg.eigh(0.5 * (scaled + scaled.T))[1][:, 0] / units
+    mode[solve.held] = 0.0  # a pin holds these
     cap = solve.step_cap(result.x)
     size = float(np.min(cap / np.maximum(np.abs(mode), 1e-300)))
     starts += [result.x + size * mode, result.x - size * mode]
@@ -584,6 +846,7 @@ class MooringEquilibrium(Shown):
         self.eigenvalues = stiffness_eigenvalues(system, K) if eigenvalues is None else eigenvalues
         self.positive_definite = is_stable(self.eigenvalues)
         self.unstable_found = list(unstable_found)
+        self.neutral: list = []  # the neutral directions held where they started (`check_unique`)
         for name in ("position", "residual", "eigenvalues"):
             if not np.isfinite(getattr(self, name)).all():
                 raise ConvergenceError(f"mooring equilibrium: non-finite {name}", history)

@@ -111,6 +111,7 @@ def solve_in_plane(line, span, dh, *, seabed=None, seabed_slope=0.0, start=None,
         With ``model`` and ``reason`` (module docstring).
     """
     bvp = solve_bvp_line if bvp is None else bvp
+    refuse_weightless(line)
     if seabed is None:
         return _free(line, (span, dh, None, 0.0), start, "no seabed: the line hangs free")
     slope = float(seabed_slope)
@@ -235,6 +236,17 @@ def _touchdown(line, scene, reverse, depth, bvp) -> PlaneLine:
     return _plane(
         scene, solution, reverse, "touchdown between the ends", reason, ("touchdown",), jacobian, variant
     )
+
+
+def refuse_weightless(line) -> None:
+    """`InputError` naming ``w`` for a line with a weightless segment (``w = 0``): it has no
+    catenary (`skcable.mooring.line_between` takes a line of weightless segments: straight)."""
+    if any(seg.w == 0.0 for seg in line.segments):
+        raise InputError(
+            "w",
+            "a segment of w = 0 is weightless: it has no catenary (a line of weightless segments is "
+            "straight between two points: line_between)",
+        )
 
 
 def is_line(model) -> bool:

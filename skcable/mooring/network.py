@@ -20,7 +20,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from skcable._checks import nonnegative, positive, scalar
+from skcable._checks import nonnegative, scalar
 from skcable.errors import InputError
 from skcable.mooring.body import PointBody, RigidBody
 from skcable.mooring.line3d import point
@@ -55,7 +55,7 @@ class MooringPoint:
         self.mass = scalar("mass", nonnegative("mass", mass))
         self.volume = scalar("volume", nonnegative("volume", volume))
         self.force = point("force", force)
-        rho, g = scalar("rho", positive("rho", rho)), scalar("g", positive("g", g))
+        rho, g = scalar("rho", nonnegative("rho", rho)), scalar("g", nonnegative("g", g))
         self.own_force = self.force + np.array([0.0, 0.0, rho * g * self.volume - self.mass * g])
 
     @property

@@ -44,7 +44,7 @@ from typing import Any
 import numpy as np
 
 from skcable import _plausible
-from skcable._checks import positive, real, scalar
+from skcable._checks import nonnegative, positive, real, scalar
 from skcable.errors import InputError
 from skcable.mooring.assembly import Assembler
 from skcable.mooring.between import BATCH, LineBetween, solve_between, solve_many_between
@@ -62,6 +62,7 @@ from skcable.mooring.line3d import (
     takes_start,
 )
 from skcable.mooring.network import Layout, MooringLine, MooringPoint, check_body
+from skcable.mooring.rod import RodBetween
 
 __all__ = ["MooringEquilibrium", "MooringSystem"]
 
@@ -129,7 +130,8 @@ class MooringSystem:
         lines of `add_line` rest on it where they reach it; the shortcut's line models hold
         their own seabed (``depth`` then only draws it).
     rho, g : float, optional
-        Water density (kg/m^3) and gravity (m/s^2) of the points' buoyancy and weight.
+        Water density (kg/m^3) and gravity (m/s^2) of the points' buoyancy and weight, >= 0
+        (zero gravity: weightless lines, straight between their ends).
 
     Examples
     --------
@@ -159,10 +161,11 @@ class MooringSystem:
 
     def __init__(self, body=None, lines=None, anchors=None, *, depth=None, rho=1025.0, g=9.81):
         self.depth = None if depth is None else scalar("depth", positive("depth", depth))
-        self.rho, self.g = scalar("rho", positive("rho", rho)), scalar("g", positive("g", g))
+        self.rho, self.g = scalar("rho", nonnegative("rho", rho)), scalar("g", nonnegative("g", g))
         _plausible.gravity(self.g)
         self.bodies, self.points, self.mooring_lines = [], [], []
         self._body_positions, self._layout, self.shortcut = [], None, False
+        self._pinned: list = []  # the pinned bodies (`add_body`)
         self._cold = None  # the lines last solved with no start: (layout, dofs, (line, model) pairs, lines)
         if body is None and lines is None and anchors is None:
             return
@@ -184,12 +187,14 @@ class MooringSystem:
         self._layout = None
         return body
 
-    def add_body(self, body, *, position=None):
+    def add_body(self, body, *, position=None, pinned=False):
         """Add a `RigidBody` or `PointBody`; returns it. Attach points to it with ``add_point(...,
         body=body)``.
 
         ``position``: where its reference point starts, ``(x, y, z, roll, pitch, yaw)`` (m, rad) of
-        a rigid body, ``(x, y, z)`` of a point body; default zeros."""
+        a rigid body, ``(x, y, z)`` of a point body; default zeros. ``pinned``: a rigid body whose
+        reference point is held where it starts, free to turn about it (a pin: MoorDyn's pinned
+        rods and ``CoupledPinned`` bodies); its translations are no unknowns of the equilibrium."""
         check_body(body)
         if isinstance(body, RigidBody) and len(body.fairleads):
             raise InputError(
@@ -197,7 +202,24 @@ class MooringSystem:
                 "has fairleads: in a system built point by point, attach them with "
                 "add_point(position, body=body), in body axes",
             )
-        return self._add_body(body, position)
+        if pinned and not isinstance(body, RigidBody):
+            raise InputError("pinned", "a pinned body turns about its pin: give a RigidBody")
+        self._add_body(body, position)
+        if pinned:
+            self._pinned.append(body)
+        return body
+
+    @property
+    def held_dofs(self) -> np.ndarray:
+        """The dofs held where they start: the translations of the pinned bodies (`add_body`)."""
+        layout = self.layout
+        held = [
+            layout.body_start[i] + k
+            for i, b in enumerate(self.bodies)
+            if any(b is p for p in self._pinned)
+            for k in range(3)
+        ]
+        return np.array(held, dtype=int)
 
     def _new_point(self, position, fixed, mass, volume, force, body):
         p = MooringPoint(len(self.points), position, fixed, mass, volume, force, body, self.rho, self.g)
@@ -245,7 +267,8 @@ class MooringSystem:
 
     def _add_line(self, model, a, b, managed):
         sea = None
-        if managed and is_line(model) and model.off_plane is not None:
+        straight = is_line(model) and all(seg.w == 0.0 for seg in model.segments)  # weightless: straight
+        if managed and is_line(model) and model.off_plane is not None and not straight:
             sea, managed = self._sea_placement(model, a, b), False
         warm = managed or sea is not None or takes_start(model)
         handle = MooringLine(len(self.mooring_lines), model, a, b, managed, warm, sea)
@@ -282,13 +305,20 @@ class MooringSystem:
         its own `Bathymetry` where it has one, else over the system's flat seabed; its force and
         3 x 3 stiffness at its moving end enter the system's. One of its ends must be fixed
         (`InputError` naming ``line`` otherwise: the both-ends stiffness of such a line is not
-        built)."""
+        built).
+
+        A model with ``solve_between(a, b, depth, start)`` (the extension point of models solved
+        between two points in space, either end moving: `skcable.mooring.rod.Rod`) is solved by
+        it, its ends' forces ``end_forces`` and 3 x 3 blocks ``block(i, j)`` entering the
+        system's as a `skcable.mooring.Line`'s do."""
         a, b = self._point("a", a), self._point("b", b)
         if a is b:
             raise InputError("b", f"is point {a.index}, the same as a: a line from a point to itself")
         if is_line(line):
             if line.seabed is not None and self.depth is None:
                 raise InputError("depth", "the line is given a seabed: give the system its depth= instead")
+            return self._add_line(line, a, b, True)
+        if callable(getattr(line, "solve_between", None)):
             return self._add_line(line, a, b, True)
         line_model("line", line)
         if not a.fixed:
@@ -456,7 +486,7 @@ class MooringSystem:
         if start is None:
             return None
         if len(start) != len(handles) or not all(
-            isinstance(s, (Line3D, LineBetween, LineInSeaBetween)) for s in start
+            isinstance(s, (Line3D, LineBetween, LineInSeaBetween, RodBetween)) for s in start
         ):
             raise InputError("start", f"must be a list of {len(handles)} solved lines, one per line")
         return list(start)
@@ -551,14 +581,16 @@ class MooringSystem:
 
     def step_cap(self, q, without=()) -> np.ndarray:
         """The largest Newton step of each dof: a quarter of the shortest horizontal span of the lines
-        of its body or point (m), 0.2 rad."""
+        of its body or point (m; of a line steeper than 45°, its height), 0.2 rad."""
         P = self.frame(q)[0].tolist()
         starts = self._assembler.group_start.tolist()  # each point's body or free point: its first dof, or -1
         shortest: dict = {}
         longest = 1.0  # with no line at all
         for k, h in enumerate(self._active(without)):
-            (ax, ay, _), (bx, by, _) = P[h.a.index], P[h.b.index]
-            r = math.hypot(bx - ax, by - ay)
+            (ax, ay, az), (bx, by, bz) = P[h.a.index], P[h.b.index]
+            r = max(math.hypot(bx - ax, by - ay), 0.1 * abs(bz - az))  # a steep line: a tenth of its height
+            if r == 0.0:  # a tie of two points (`skcable.mooring.rod.Tie`): no reach
+                continue
             longest = r if k == 0 else max(longest, r)
             for end in (h.a.index, h.b.index):
                 if starts[end] >= 0 and not r >= shortest.get(starts[end], math.inf):
@@ -580,16 +612,23 @@ class MooringSystem:
     def tension_scale(lines) -> float:
         """The largest tension at a moving end of the lines (N)."""
         tensions = [
-            line.max_end_tension if type(line) is LineBetween else line.tension_at_fairlead for line in lines
+            line.max_end_tension
+            if type(line) is LineBetween or hasattr(line, "max_end_tension")
+            else line.tension_at_fairlead
+            for line in lines
         ]
         return max(tensions, default=0.0)
 
-    def check(self, without=()):
+    def check(self, without=(), alone: bool = False):
         """Refuse a system that cannot be solved, naming the part: no body or free point, a free
-        point or body with no line (of those left, ``without`` the lines given)."""
+        point or body with no line (of those left, ``without`` the lines given). ``alone``: a body
+        or point with no line is no error (its own loads may hold it, or leave it neutral: the
+        equilibrium with ``neutral="hold"`` judges it)."""
         handles = self._active(without)
         if self.n_dof == 0:
             raise InputError("points", "the system has no body and no free point: nothing to solve for")
+        if alone:
+            return
         used = {p.index for h in handles for p in (h.a, h.b)}
         for p in self.points:  # an anchor left alone by a failure is no error
             if p.index not in used and (p.kind == "free" or p.kind == "fixed" and not without):
@@ -612,6 +651,7 @@ class MooringSystem:
         max_iter: int = 60,
         without=(),
         time_limit: float = 60.0,
+        neutral: str = "raise",
     ) -> MooringEquilibrium:
         """Static equilibrium of every body and free point under constant external loads.
 
@@ -637,6 +677,10 @@ class MooringSystem:
             Seconds at most (> 0, default 60): past them the search stops with a
             `ConvergenceError` whose ``history`` is every scaled residual evaluated and whose
             ``last`` is the best point reached (the dofs).
+        neutral : {"raise", "hold"}
+            A direction along which the loads do not change (a body whose lines all meet at
+            its reference point turns freely): ``"raise"`` refuses the equilibrium as not unique;
+            ``"hold"`` keeps it where it starts and names it in the result's ``neutral``.
 
         Returns
         -------
@@ -653,7 +697,7 @@ class MooringSystem:
             nothing restrains (named); carries the history of the scaled residual.
         """
         without = self._without(without)
-        self.check(without)
+        self.check(without, alone=neutral == "hold")
         external = self._loads(force, moment)
         warm_lines = None
         if isinstance(start, MooringEquilibrium):
@@ -667,7 +711,19 @@ class MooringSystem:
         if isinstance(max_iter, bool) or not isinstance(max_iter, (int, np.integer)) or max_iter < 1:
             raise InputError("max_iter", f"must be an integer >= 1, got {max_iter!r}")
         time_limit = scalar("time_limit", positive("time_limit", time_limit))
-        return solve_equilibrium(self, q, external, warm_lines, tol, max_iter, without, time_limit)
+        if neutral not in ("raise", "hold"):
+            raise InputError("neutral", f"must be 'raise' or 'hold', got {neutral!r}")
+        return solve_equilibrium(
+            self,
+            q,
+            external,
+            warm_lines,
+            tol,
+            max_iter,
+            without=without,
+            neutral=neutral,
+            time_limit=time_limit,
+        )
 
     def _without(self, without) -> frozenset:
         if isinstance(without, (MooringLine, str, bytes)) or not isinstance(without, Iterable):
@@ -705,6 +761,7 @@ class MooringSystem:
         other = MooringSystem(depth=self.depth, rho=self.rho, g=self.g)
         for body, q in zip(self.bodies, self._body_positions, strict=True):
             other._add_body(body, q)
+        other._pinned = list(self._pinned)
         for p in self.points:
             where = positions.get(p, p.position)
             other._new_point(where, p.fixed, p.mass, p.volume, p.force, p.body)
@@ -759,7 +816,7 @@ def _managed_ends(handle, line, index, values, cross, assembler, arms):
         index.append(handle.b.index)
         values.append(line.b_values())
         return
-    J = line.plane.jacobian()
+    J = line.plane.jacobian() if line.plane is not None else None
     for i, p in enumerate((handle.a, handle.b)):
         if moving[i]:
             index.append(p.index)

@@ -383,7 +383,10 @@ def test_refusals():
     "build, argument",
     [
         (lambda: mooring.Segment(-1.0, 1.0, 1.0), "length"),
-        (lambda: mooring.Segment(1.0, 0.0, 1.0), "w"),
+        (
+            lambda: mooring.Line([mooring.Segment(1.0, 0.0, 1.0)]).solve(0.5, 0.1),
+            "w",
+        ),  # weightless: no catenary
         (lambda: mooring.Segment(1.0, 1.0, np.inf), "EA"),
         (lambda: mooring.Segment(1.0, "1", 1.0), "w"),
         (lambda: mooring.ClumpWeight(1, -5.0), "weight"),

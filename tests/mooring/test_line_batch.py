@@ -5,7 +5,6 @@ import numpy as np
 import pytest
 
 from skcable import mooring
-from skcable.errors import InputError
 from skcable.mooring import between
 from skcable.mooring.segments.batch import batchable, solve_batch
 from tests.mooring.mooring_reference import balance, free_line, grounded_line, reference_forces
@@ -98,12 +97,20 @@ def test_a_spread_mooring_solved_together_balances_and_matches_line_by_line(monk
     np.testing.assert_allclose(eq.position, alone.position, rtol=0, atol=1e-9 * np.abs(alone.position).max())
 
 
-def test_a_fairlead_on_the_vertical_of_its_anchor_is_refused_by_name():
+def test_a_fairlead_on_the_vertical_of_its_anchor_hangs_straight():
+    from scipy.optimize import brentq
+
     line = _line(0.0)
-    with pytest.raises(InputError) as err:
-        mooring.line_between(line, [0.0, 0.0, -200.0], [0.0, 0.0, -14.0], depth=200.0)
-    assert err.value.argument == "b" and "vertical" in str(err.value)
-    # among lines solved together it is left out, for `solve_between` to refuse
+    hung = mooring.line_between(line, [0.0, 0.0, -200.0], [0.0, 0.0, -14.0], depth=200.0)
+    # the line hangs straight down from the fairlead to the seabed, the rest in a heap there: the
+    # hanging length ℓ stretches to the height, ℓ + W ℓ²/(2 EA) = 186 m, its top tension W ℓ
+    hanging = brentq(lambda ell: ell + W * ell**2 / (2.0 * EA) - 186.0, 0.0, 400.0, xtol=1e-14)
+    assert hung.model == "vertical" and hung.state == "on the seabed"
+    np.testing.assert_allclose(
+        hung.end_forces, [[0.0, 0.0, 0.0], [0.0, 0.0, -W * hanging]], rtol=1e-13, atol=0.0
+    )
+    assert hung.length_on_seabed == pytest.approx(L - hanging, rel=1e-13)
+    # among lines solved together it is left out, for `solve_between` to solve on its own
     ends = [(np.array([800.0, 0.0, -200.0]), np.array([20.0, 0.0, -14.0]))] * (between.BATCH + 1)
     ends[3] = (np.array([0.0, 0.0, -200.0]), np.array([0.0, 0.0, -14.0]))
     start = mooring.line_between(line, *ends[0], depth=200.0)

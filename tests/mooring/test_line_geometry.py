@@ -160,8 +160,8 @@ def test_end_below_the_seabed_is_refused():
     with pytest.raises(InputError) as err:
         mooring.line_in_plane(line, 100.0, -30.0, seabed=-20.0)
     assert err.value.argument == "seabed"
-    with pytest.raises(InputError) as err:
-        mooring.Segment(10.0, 0.0, 1e8)
+    with pytest.raises(InputError) as err:  # weightless: straight between two points, no catenary
+        mooring.line_in_plane(mooring.Line([mooring.Segment(10.0, 0.0, 1e8)]), 5.0, 1.0)
     assert err.value.argument == "w"
 
 

@@ -166,23 +166,40 @@ _RODS = "---------------------- RODS ---\nID RodType\n(#) (name)\n1 Can Body1 0 
 
 
 @pytest.mark.parametrize(
-    "change, keyword",
+    "change, keyword, line",
     [
-        (("---------------------- OPTIONS", "---------------------- WIBBLE"), "WIBBLE"),
-        (("3.0e6         kBot", "3.0e6         kBottom"), "kBottom"),
-        (("4     Body1", "4     Floating"), "Floating"),
-        (("1     chain       1        7", "1     chain       R1A      7"), "R1A"),
-        (("---------------------- OPTIONS", _RODS + "---------------------- OPTIONS"), "RODS"),
-        (("1     chain       1        7", "1     steel       1        7"), "steel"),
-        (("0.216   288.0", "0.216   heavy"), "Mass/m"),
+        (("4     Body1", "4     Floating"), "Floating", 18),
+        (("1     chain       1        7", "1     chain       R1A      7"), "R1A", 25),  # no rod 1
+        (("---------------------- OPTIONS", _RODS + "---------------------- OPTIONS"), "Can", 32),
+        (("1     chain       1        7", "1     steel       1        7"), "steel", 25),
+        (("0.216   288.0", "0.216   heavy"), "Mass/m", 6),
+        (("1     chain       1        7", "1     chain       1        9"), "9", 25),  # no point 9
     ],
 )
-def test_unknown_keywords_are_refused_by_name(tmp_path, change, keyword):
+def test_unknown_keywords_are_refused_by_name_and_line(tmp_path, change, keyword, line):
     path = tmp_path / "bad.dat"
     path.write_text(FILE.replace(*change))
     with pytest.raises(InputError) as err:
         mooring.read_moordyn(path)
-    assert err.value.argument == keyword
+    assert (
+        err.value.argument == keyword
+        and err.value.line == line
+        and f"bad.dat, line {line}:" in str(err.value)
+    )
+
+
+def test_unknown_sections_are_skipped_and_unknown_options_warn(tmp_path):
+    """As MoorDyn-C: a '---' line naming no section starts nothing (its rows belong to no section),
+    an option it does not know warns and is left aside."""
+    path = tmp_path / "odd.dat"
+    path.write_text(FILE.replace("3.0e6         kBot", "3.0e6         kBottom"))
+    with pytest.warns(UserWarning, match="kBottom"):
+        model = mooring.read_moordyn(path)
+    assert "kBottom" in model.ignored and model.system.depth == 150.0
+    path.write_text(FILE.replace("---------------------- OPTIONS", "---------------------- WIBBLE"))
+    model = mooring.read_moordyn(path)
+    assert model.options == {}  # not read: the depth is MoorDyn's, the lowest point's
+    assert model.system.depth == 150.0 and model.system.g == 9.80665 and model.system.rho == 1025.0
 
 
 def test_what_moordyn_cannot_take_is_refused(tmp_path):
@@ -237,3 +254,102 @@ def test_a_line_in_the_sea_is_not_written(tmp_path):
             mooring.write_moordyn(system, tmp_path / "s.dat")
         assert err.value.argument == "lines"
         assert not (tmp_path / "s.dat").exists()
+
+
+def _same_system(a, b) -> bool:
+    """Whether two systems read are the same: points, lines and their segments, depth, rho, g."""
+    if (a.depth, a.rho, a.g, len(a.points), len(a.mooring_lines)) != (
+        b.depth,
+        b.rho,
+        b.g,
+        len(b.points),
+        len(b.mooring_lines),
+    ):
+        return False
+    if any(
+        p.kind != q.kind or not np.array_equal(p.position, q.position)
+        for p, q in zip(a.points, b.points, strict=True)
+    ):
+        return False
+    return all(
+        (ha.a.index, ha.b.index, ha.model.segments[0].length)
+        == (hb.a.index, hb.b.index, hb.model.segments[0].length)
+        for ha, hb in zip(a.mooring_lines, b.mooring_lines, strict=True)
+    )
+
+
+def test_a_file_cut_anywhere_is_refused_or_is_the_whole(tmp_path):
+    """Cut after any line, or in the middle of any line: read, it is refused with the file and the
+    line (a section's rows end at a '---' line, and MoorDyn's files end with one), or it is the very
+    system of the whole file (a cut inside its closing '--- need this line ---'), never another."""
+    path = tmp_path / "cut.dat"
+    path.write_text(FILE)
+    whole = mooring.read_moordyn(path).system
+    lines = FILE.splitlines(keepends=True)
+    refused = 0
+    for k in range(1, len(lines)):
+        for text in ("".join(lines[:k]), "".join(lines[:k]) + lines[k][: len(lines[k]) // 2]):
+            path.write_text(text)
+            try:
+                read = mooring.read_moordyn(path).system
+            except InputError as err:
+                assert str(err).split(": ", 1)[1].startswith("cut.dat"), str(err)  # the file, its line
+                refused += 1
+                continue
+            assert _same_system(read, whole), repr(text[-80:])
+    assert refused >= 2 * (len(lines) - 1) - 2
+
+
+@pytest.mark.parametrize(
+    "change, argument, line, reason",
+    [
+        (
+            (
+                "6     Body1     -2.5  -4.33    -2     0      0       0      0",
+                "6     Body1     -2.5  -4.33    -2     0      0       0",
+            ),
+            "POINTS",
+            20,
+            "8 columns",
+        ),
+        (("2     rope        7        4        310", "2     rope        7        4"), "LINES", 26, "columns"),
+        (("1     chain       1        7", "1     chain       1        8"), "8", 25, "no point 8"),
+        (("1.2326e9", "1.2326e999"), "EA", 6, "overflows"),
+        (("150           WtrDpth", "1e400         WtrDpth"), "WtrDpth", 31, "overflows"),
+        (("5      0      -2     0", "5      0      -2e-999999999999999999999 0"), "Z", 18, None),
+    ],
+    ids=[
+        "a point row short of a column",
+        "a line row short",
+        "a line naming a missing point",
+        "EA overflows",
+        "the depth overflows",
+        "an underflow is a number",
+    ],
+)
+def test_bad_rows_are_named_with_their_line(tmp_path, change, argument, line, reason):
+    path = tmp_path / "bad.dat"
+    assert change[0] in FILE
+    path.write_text(FILE.replace(*change))
+    if reason is None:  # 2e-...: a number that underflows to zero is a number, read as MoorDyn reads it
+        assert mooring.read_moordyn(path).system.points[3].position[2] == 0.0
+        return
+    with pytest.raises(InputError) as err:
+        mooring.read_moordyn(path)
+    assert err.value.argument == argument and err.value.line == line, str(err.value)
+    assert f"bad.dat, line {line}:" in str(err.value) and reason in str(err.value)
+
+
+def test_a_byte_that_is_not_utf8_is_named_where_it_is_read(tmp_path):
+    """A byte that is not UTF-8 in a number MoorDyn reads is refused with its line; in the units row or
+    a comment, which nothing reads, it is left there (MoorDyn reads bytes)."""
+    path = tmp_path / "bytes.dat"
+    data = FILE.encode("utf-8")
+    path.write_bytes(data.replace(b"600     0     -150", b"6\xff0     0     -150", 1))
+    with pytest.raises(InputError) as err:
+        mooring.read_moordyn(path)
+    assert err.value.line == 15 and "0xff" in str(err.value) and "not UTF-8" in str(err.value)
+    path.write_bytes(
+        data.replace(b"(m^3)   (m^2)  (-)", b"(m\xb33)   (m^2)  (-)", 1)
+    )  # a Latin-1 cube in the units
+    assert len(mooring.read_moordyn(path).system.points) == 7

@@ -345,6 +345,10 @@ class Line:
         ConvergenceError
             Bracketing or Newton failed; carries the residual history.
         """
+        if any(seg.w == 0.0 for seg in self.segments):
+            raise InputError(
+                "w", "a segment of w = 0 is weightless: it has no catenary (line_between takes it)"
+            )
         span = scalar("span", positive("span", span))
         dh = scalar("dh", real("dh", dh))
         return self.solve_checked(span, dh, start)

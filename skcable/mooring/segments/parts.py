@@ -25,9 +25,11 @@ class Segment:
     length : float
         Unstretched length (m), > 0.
     w : float
-        Weight in water per unstretched length (N/m), not zero: negative for a segment
-        lighter than water (a buoyancy section of a lazy-wave line, a synthetic rope that
-        floats), which rises where it hangs free.
+        Weight in water per unstretched length (N/m): negative for a segment lighter than water
+        (a buoyancy section of a lazy-wave line, a synthetic rope that floats), which rises
+        where it hangs free; zero for a weightless one (no gravity), which has no catenary: a
+        line of weightless segments is straight between two points in space
+        (`skcable.mooring.line_between`; the plane solvers refuse it, naming ``w``).
     EA : float or StrainLaw
         Axial stiffness (N), > 0, or an axial strain law ``ε(T)`` (`skcable.mooring.axial`:
         `ConstantEA`, `StrainTable`, `StrainFunction`, `StaticDynamicRope`). A law that is not
@@ -71,10 +73,6 @@ class Segment:
     ):
         self.length = scalar("length", positive("length", length))
         self.w = scalar("w", real("w", w))
-        if self.w == 0.0:
-            raise InputError(
-                "w", "must not be 0: a weightless segment has no catenary (give its weight in water)"
-            )
         law: StrainLaw
         if isinstance(EA, StrainLaw):
             law = EA
