@@ -32,7 +32,7 @@ import numpy as np
 import pytest
 
 from skcable import mooring
-from skcable.errors import InputError
+from skcable.errors import InputError, PlausibilityWarning
 from skcable.mooring.rod import RodBody
 
 DATA = Path(__file__).resolve().parents[1] / "data" / "moordyn"
@@ -94,13 +94,33 @@ def solved(name):
 @functools.cache
 def _solved(name):
     try:
-        with warnings.catch_warnings():
+        with warnings.catch_warnings(record=True) as caught:
             warnings.simplefilter("ignore", UserWarning)  # an option MoorDyn does not know warns
-            warnings.simplefilter("error", mooring_warning())
+            warnings.simplefilter("always", mooring_warning())
             model = mooring.read_moordyn(DATA / name, turbines=TURBINES.get(Path(name).name))
-            return model, model.equilibrium()
+            eq = model.equilibrium()
+        FINDINGS[name] = [str(w.message) for w in caught if issubclass(w.category, mooring_warning())]
+        return model, eq
     except Exception as exc:  # noqa: BLE001 - kept, raised by `solved`
         return exc
+
+
+#: ``{file: [message]}``: the plausibility warnings of each file's equilibrium (`_solved`), judged by
+#: `test_the_only_findings_are_anchors_pulled_up_as_a_recount_says`
+FINDINGS: dict[str, list[str]] = {}
+
+
+def uplift_angles(model, eq) -> dict:
+    """``{fixed point index: angle (degrees)}`` of the net pull of its lines above the horizontal,
+    at each fixed point on the seabed, summed here from the lines' end forces."""
+    system = model.system
+    pulls: dict = {}
+    for k, line in zip(eq.line_indices, eq.lines, strict=True):
+        handle = system.mooring_lines[k]
+        for end, p in enumerate((handle.a, handle.b)):
+            if p.kind == "fixed" and system.depth is not None and abs(p.position[2] + system.depth) < 1e-6:
+                pulls[p.index] = pulls.get(p.index, 0.0) + np.asarray(line.end_forces[end])
+    return {j: math.degrees(math.atan2(F[2], math.hypot(F[0], F[1]))) for j, F in pulls.items()}
 
 
 def mooring_warning():
@@ -360,7 +380,11 @@ def test_a_line_whose_ends_share_a_vertical_either_way_up(upward):
     point = system.add_point(start, **kind)
     ends = (anchor, point) if upward else (point, anchor)  # a below b, then b below a
     system.add_line(mooring.Line([mooring.Segment(L, w, EA)]), *ends)
-    eq = system.equilibrium()
+    if upward:  # a buoy straight above its anchor pulls it up at 90°: a pile's load, said
+        with pytest.warns(PlausibilityWarning, match=r"uplift_angle: is 90° at anchor point 0"):
+            eq = system.equilibrium()
+    else:
+        eq = system.equilibrium()
     (line,) = eq.lines
     # to the equilibrium's tolerance (1e-10 of the load; its lateral stiffness T/L: 1e-8 m)
     assert line.model == "vertical" and eq.points[1].position[:2] == pytest.approx([10.0, 5.0], abs=1e-8)
@@ -373,18 +397,25 @@ def test_a_line_whose_ends_share_a_vertical_either_way_up(upward):
     assert L + (T_low * L + 0.5 * w * L * L) / EA == pytest.approx(height, rel=1e-13)
 
 
+@pytest.mark.filterwarnings("default::skcable.errors.PlausibilityWarning")  # the command reports them
 def test_the_command_runs_on_every_file_of_the_corpus(capsys):
-    """``skcable mooring FILE`` on the 67 files: a result for every one MoorDyn reads (exit 0), a
-    named refusal (exit 2) for the one it refuses; the unsolved ones loud (`UNSOLVED`). Each file's
+    """``skcable mooring FILE`` on the 67 files: a result for every one MoorDyn reads (exit 0, or 5
+    with the anchors pulled up named where the file's equilibrium has them: `FINDINGS`), a named
+    refusal (exit 2) for the one it refuses; the unsolved ones loud (`UNSOLVED`). Each file's
     equilibrium is the module's (`solved`): the command's reading, its output and its errors are
     what this test runs."""
     from skcable import cli
+    from skcable.mooring.equilibrium import warn_implausible
     from skcable.mooring.moordyn import MoorDynModel
 
-    def cached(model, **options):  # each file solved once per module (`solved`)
-        return solved(str(Path(model.path).relative_to(DATA)))[1]
+    def cached(model, **options):  # each file solved once per module (`solved`), its findings warned
+        eq = solved(str(Path(model.path).relative_to(DATA)))[1]
+        warn_implausible(eq)
+        return eq
 
     for name in CORPUS:
+        if name not in UNSOLVED and name not in REFUSED:
+            solved(name)  # solved before the command's equilibrium is the cached one
         with pytest.MonkeyPatch.context() as patch:
             if name not in UNSOLVED:
                 patch.setattr(MoorDynModel, "equilibrium", cached)
@@ -394,6 +425,12 @@ def test_the_command_runs_on_every_file_of_the_corpus(capsys):
             assert status == cli.EXIT_USAGE and "line 17" in err, (name, err)
         elif name in UNSOLVED:  # loud: no convergence, or an equilibrium that says it is unstable
             assert (status != 0 or "unstable" in err) and err, name
+        elif FINDINGS[name]:  # solved, with its findings named (`FINDINGS`)
+            assert status == cli.EXIT_WARNINGS and all(m.split(":")[0] in err for m in FINDINGS[name]), (
+                name,
+                err,
+            )
+            assert '"lines"' in out
         else:
             assert status == 0, (name, err)
             assert '"lines"' in out
@@ -415,7 +452,10 @@ def test_written_at_its_equilibrium_it_starts_there(name, tmp_path):
     with warnings.catch_warnings():
         warnings.simplefilter("ignore", UserWarning)
         again = mooring.read_moordyn(path, turbines=TURBINES.get(Path(name).name))
-    eq2 = again.equilibrium()
+    with warnings.catch_warnings(record=True) as caught:  # the file's own findings (`FINDINGS`), again
+        warnings.simplefilter("always", PlausibilityWarning)
+        eq2 = again.equilibrium()
+    assert sorted(str(w.message) for w in caught) == sorted(FINDINGS[name])
     assert len(eq2.history) - 1 <= 1
     scale = max(1.0, max(float(np.abs(p.position).max()) for p in eq.points))
     for p, q in zip(eq.points, eq2.points, strict=True):
@@ -448,3 +488,31 @@ def test_rods_pinned_and_free_take_their_closed_forms():
     system = model.system
     weight = (rod.type.mass - system.rho * math.pi / 4 * rod.type.d**2) * system.g * 20.0
     assert ends[0][2] + ends[1][2] == pytest.approx(weight, rel=1e-9)
+
+
+@pytest.mark.parametrize("name", [n for n in CORPUS + OTHERS if n not in REFUSED and n not in UNSOLVED])
+def test_the_only_findings_are_anchors_pulled_up_or_lines_overstretched_as_a_recount_says(name):
+    """A public file's equilibrium warns only where an anchor on the seabed is pulled up beyond the
+    5° of a drag anchor (a riser's base, a tension leg's pile: real, and named), exactly there (the
+    angle recounted from the lines' end forces), or where a line is stretched beyond what a rope
+    survives: MoorDyn's viscoelastic test stretches 1 m of polyester between points 2 m apart, a
+    strain of at least 100 % by the chord alone."""
+    model, eq = solved(name)
+    angles = {j: a for j, a in uplift_angles(model, eq).items() if a > 5.0 + 1e-9}
+    found = FINDINGS[name]
+    uplifts = [m for m in found if m.startswith("uplift_angle:")]
+    strains = [m for m in found if m.startswith("strain:")]
+    assert len(uplifts) + len(strains) == len(found), found
+    named = {int(re.search(r"at anchor point (\d+)", m)[1]): m for m in uplifts}
+    assert sorted(named) == sorted(angles), (named, angles)
+    for j, message in named.items():
+        assert f"is {angles[j]:.3g}°" in message, (message, angles[j])
+    system = model.system
+    P = {p.index: p.position for p in eq.points}
+    for message in strains:
+        k = int(re.search(r"on line (\d+)", message)[1])
+        handle = system.mooring_lines[k]
+        chord = float(np.linalg.norm(P[handle.b.index] - P[handle.a.index]))
+        length = sum(seg.length for seg in handle.model.segments)
+        strain = float(re.search(r"a strain of ([0-9.e+-]+) %", message)[1]) / 100.0
+        assert strain >= chord / length - 1.0 - 1e-9 and chord / length - 1.0 > 0.5, (message, chord, length)

@@ -7,6 +7,9 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
+from skcable import _plausible
+from skcable.mooring.equilibrium import warn_implausible
+
 if TYPE_CHECKING:
     from skcable.mooring.system import MooringSystem
 
@@ -71,12 +74,14 @@ class MoorDynModel:
     text: list = field(default_factory=list)
     records: dict = field(default_factory=dict)
 
+    @_plausible.answer(warn_implausible)
     def equilibrium(self, **options):
         """The static equilibrium of the file's system (`MooringSystem.equilibrium`, its
         ``options``; a neutral direction held where the file starts it, as MoorDyn leaves it, and
         named in the result's ``neutral``). A system with nothing free (every point fixed or held)
         is its lines solved where the file puts them: a `skcable.mooring.MooringEquilibrium` with
-        no dofs."""
+        no dofs. Either way the answer is checked (`skcable.mooring.MooringEquilibrium.implausible`,
+        each finding warned)."""
         system = self.system
         if system.n_dof:
             options.setdefault("neutral", "hold")
