@@ -51,6 +51,24 @@ def reference_H() -> tuple[float, float]:
     return float(H), float(w * span / (2 * z))
 
 
+def newton_floor(span, dh, w, length, rtol=1e-8):
+    """The floor of vectorised ``catenary(length=)``: a plain NumPy Newton that computes H alone.
+
+    ``sinh(z)/z = r``, ``r = sqrt(S² - dh²)/span``, by Newton's method from the shallow-cable
+    start ``z = sqrt(6 (r - 1))``, all elements stepping together until the largest relative
+    step is below ``rtol``; then ``H = w span / (2 z)``. No other output, no check, no care for
+    cancellation (``sinh(z)/z - r`` costs it digits on taut spans)."""
+    r = np.sqrt(length * length - dh * dh) / span
+    z = np.sqrt(6.0 * (r - 1.0))
+    for _ in range(100):
+        s, c = np.sinh(z), np.cosh(z)
+        step = (s / z - r) / ((z * c - s) / (z * z))
+        z = z - step
+        if np.all(np.abs(step) <= rtol * z):
+            return w * span / (2.0 * z)
+    raise RuntimeError("the floor's Newton did not converge")
+
+
 def timed(fn, number: int) -> float:
     """Seconds a call: the median of 5 batches of ``number`` calls (the machine may be shared)."""
     fn()

@@ -13,7 +13,7 @@ it cannot: no element is returned unchecked, none with H <= 0. The sag, the larg
 and the loaded length come from the check's end tensions and arc.
 
 The states are taken in passes of at most `CHUNK` elements, each in the rows of one block of
-scratch (`_scratch.scratch`), which stays mapped from call to call.
+scratch (`skcable.cable._scratch.scratch`), which stays mapped from call to call.
 """
 
 from __future__ import annotations
@@ -21,12 +21,12 @@ from __future__ import annotations
 import numpy as np
 
 from skcable.cable._elastic import elastic_catenary
+from skcable.cable._scratch import scratch
 from skcable.conductors import _closure_z, _grid
 from skcable.conductors._grid import closure_check, closure_terms, length_into, sag_into
 from skcable.conductors._inputs import load_plane, renamed
 from skcable.conductors._parabola import parabola_states
 from skcable.conductors._reference import reference_length
-from skcable.conductors._scratch import scratch
 from skcable.errors import ConvergenceError, InputError
 
 __all__ = ["line_change_of_state", "reference_state", "CHUNK"]

@@ -1,9 +1,10 @@
-"""Scratch rows for the vectorised line path, reused from call to call.
+"""Scratch rows for the vectorised paths (the catenary's passes, the conductors' line path),
+reused from call to call.
 
 On arrays of 1e4 floats a new NumPy array costs more than the arithmetic on it: each 80 kB
 temporary is served by the C allocator from memory it returned to the system at the last
 free, and every one of its 20 pages is then faulted in anew (about 1.5 µs a page here, 30 µs
-an array, against 1.5 µs for an addition over it). The line path therefore works in place in
+an array, against 1.5 µs for an addition over it). The vectorised paths therefore work in place in
 the rows of one block taken from a small per-thread pool and given back at the end: blocks
 up to `KEEP` floats stay allocated between calls, so that their pages stay mapped.
 """
