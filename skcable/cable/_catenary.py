@@ -108,8 +108,11 @@ class Catenary(CableSolution):
         to ``shape``; ``a`` and ``z`` there, or given in ``results`` already shaped):
         ``__init__`` and `_arrays` done pass by pass."""
         solution = _new(cls)
-        V, T = (results[k].reshape(2, *shape) for k in ("V", "T"))
-        rows = {k: results[k].reshape(shape) for k in ("a", "z", "sinh_z", "m", "H", "length")}
+        if len(shape) == 1:  # the rows themselves
+            V, T, rows = results["V"], results["T"], results
+        else:
+            V, T = (results[k].reshape(2, *shape) for k in ("V", "T"))
+            rows = {k: results[k].reshape(shape) for k in ("a", "z", "sinh_z", "m", "H", "length")}
         solution.__dict__.update(
             span=span, dh=dh, w=w, a=rows["a"], z=rows["z"], _xp=np, _sinh_z=rows["sinh_z"],
             m=rows["m"], constraint=constraint, H=rows["H"], V_A=V[0], V_B=V[1], T_A=T[0],

@@ -12,8 +12,6 @@ up to `KEEP` floats stay allocated between calls, so that their pages stay mappe
 from __future__ import annotations
 
 import threading
-from collections.abc import Iterator
-from contextlib import contextmanager
 
 import numpy as np
 
@@ -24,21 +22,36 @@ KEEP = 1 << 20
 _POOL = threading.local()
 
 
-@contextmanager
-def scratch(rows: int, size: int) -> Iterator[np.ndarray]:
+class scratch:  # noqa: N801 - used like a function: ``with scratch(rows, size) as block:``
     """A ``(rows, size)`` float block of uninitialised scratch memory for the duration of the
-    ``with`` block (taken from this thread's pool when one there is large enough)."""
-    pool = getattr(_POOL, "blocks", None)
-    if pool is None:
-        pool = _POOL.blocks = []
-    need = rows * size
-    fits = [i for i, block in enumerate(pool) if block.size >= need]
-    block = pool.pop(min(fits, key=lambda i: pool[i].size)) if fits else np.empty(need)
-    try:
-        yield block[:need].reshape(rows, size)
-    finally:
+    ``with`` block (taken from this thread's pool when one there is large enough: the
+    smallest such; given back at the end, the pool keeping its largest blocks up to `KEEP`
+    floats). A class rather than a generator: it opens every vectorised pass."""
+
+    __slots__ = ("block", "pool", "rows", "size")
+
+    def __init__(self, rows: int, size: int):
+        self.rows, self.size = rows, size
+
+    def __enter__(self) -> np.ndarray:
+        pool = getattr(_POOL, "blocks", None)
+        if pool is None:
+            pool = _POOL.blocks = []
+        need = self.rows * self.size
+        best = None  # the pool is sorted largest first: the last block that fits is the smallest
+        for i, block in enumerate(pool):
+            if block.size < need:
+                break
+            best = i
+        self.pool = pool
+        self.block = pool.pop(best) if best is not None else np.empty(need)
+        return self.block[:need].reshape(self.rows, self.size)
+
+    def __exit__(self, kind, exc, traceback):
+        block, pool = self.block, self.pool
         if block.size <= KEEP:
             pool.append(block)
             pool.sort(key=len, reverse=True)
             while sum(b.size for b in pool) > KEEP:
                 pool.pop()  # the smallest go first
+        return False
