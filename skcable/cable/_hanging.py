@@ -51,6 +51,8 @@ STEP_TOL = 1e-7
 #: ``0 < rho <= 1`` the start ``sqrt(rho PADE_NUM/PADE_DEN)`` lies within 2.5e-8 of the root.
 PADE_NUM = (0.005722844662462971, 0.45112759888939313, 3.5843451643580484, 8.4486403084625, 6.0)
 PADE_DEN = (0.012408553118772064, 0.20702301751392926, 0.9726800190066092, 1.708106718077083, 1.0)
+_N0, _N1, _N2, _N3, _N4 = PADE_NUM
+_D0, _D1, _D2, _D3, _D4 = PADE_DEN
 
 
 def excess(span, dh, length):
@@ -134,7 +136,14 @@ def z_of_excess(rho: float) -> tuple[float | None, list]:
     `start` and `step` (the same operations), inlined where the closed forms spend their
     time: ``rho < 1`` and ``z`` in [1e-150, 1]."""
     history = []
-    z = start(rho)
+    if rho < 1.0:  # `start`, inlined
+        z = sqrt(
+            rho
+            * ((((_N0 * rho + _N1) * rho + _N2) * rho + _N3) * rho + _N4)
+            / ((((_D0 * rho + _D1) * rho + _D2) * rho + _D3) * rho + _D4)
+        )
+    else:
+        z = start(rho)
     for _ in range(100):
         if 1e-150 <= z < 1.0:
             phi, slope = sinhc_pair(z)
