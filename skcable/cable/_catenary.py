@@ -755,10 +755,9 @@ def catenary(span, dh, w, *, length=None, sag=None, H=None, low=None, T_max=None
     (85819.2, 507.11)
     """
     if length is not None and sag is None and H is None and low is None and T_max is None:
-        if type(span) is np.ndarray and type(length) is np.ndarray:
+        solution = _length_on_floats(span, dh, w, length)  # one scene of Python numbers
+        if solution is None and type(span) is np.ndarray and type(length) is np.ndarray:
             solution = _length_on_arrays(span, dh, w, length)  # arrays of one shape
-        else:
-            solution = _length_on_floats(span, dh, w, length)  # one scene of Python numbers
         if solution is not None:
             return solution
     elif (

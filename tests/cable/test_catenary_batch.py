@@ -139,29 +139,30 @@ def test_data_beyond_the_normal_range_take_the_general_path_and_agree():
 
 
 def test_the_start_is_within_its_bound_and_one_step_settles():
-    """`skcable.cable._hanging.start` against mpmath's root of sinh(z)/z = 1 + rho on (0, 1)
-    (the Padé approximant's bound, 2.5e-8), and Halley's method stops after one step there."""
+    """The start against mpmath's root of sinh(z)/z = 1 + rho on (0, 1): the Padé approximant
+    (arrays; floats from rho = 0.01) within 2.5e-8, the inverted series' first terms (floats
+    below 0.01) within 4e-8; Halley's method stops after one step there."""
     rhos = np.geomspace(1e-12, 0.999999, 400)
+
+    def root(r):
+        r = mpmath.mpf(float(r))
+        return float(mpmath.findroot(lambda z: mpmath.sinh(z) / z - 1 - r, mpmath.sqrt(6 * r)))
+
     with mpmath.workdps(30):
-        roots = [
-            float(
-                mpmath.findroot(
-                    lambda z, r=r: mpmath.sinh(z) / z - 1 - mpmath.mpf(float(r)), math.sqrt(6 * r)
-                )
-            )
-            for r in rhos
-        ]
-    starts = np.array([start(float(r)) for r in rhos])
-    assert np.max(np.abs(starts / roots - 1)) < 2.6e-8
+        roots = np.array([root(r) for r in rhos])
     z = _catenary_batch.start(rhos)
-    np.testing.assert_allclose(z, starts, rtol=4e-16)
+    assert np.max(np.abs(z / roots - 1)) < 2.6e-8
+    starts = np.array([start(float(r)) for r in rhos])
+    padé = rhos >= 0.01
+    np.testing.assert_allclose(starts[padé], z[padé], rtol=4e-16)
+    assert np.max(np.abs(starts[~padé] / roots[~padé] - 1)) < 4e-8
     history = _catenary_batch.iterate(z, rhos)
     assert len(history) == 1
     # an ulp or two below z = 1 (the series of sinh(z)/z - 1); above, sinh(z)/z - 1 itself
     # loses up to 6 eps (`skcable.cable._special`)
-    small = np.array(roots) < 1.0
-    np.testing.assert_allclose(z[small], np.array(roots)[small], rtol=3e-16)
-    np.testing.assert_allclose(z[~small], np.array(roots)[~small], rtol=1.5e-15)
+    small = roots < 1.0
+    np.testing.assert_allclose(z[small], roots[small], rtol=3e-16)
+    np.testing.assert_allclose(z[~small], roots[~small], rtol=1.5e-15)
 
 
 def test_a_solve_that_does_not_settle_raises_with_its_history():
