@@ -47,6 +47,9 @@ _MAX_FLOAT = float(np.finfo(float).max)
 _TERMS = ((0.01, 5), (0.1, 7), (1.0, 9))
 #: Largest iterations of Halley's method before `iterate` gives up.
 _MAX_STEPS = 100
+#: The Padé approximant's coefficients of each power, highest first, as columns (numerator,
+#: denominator) for Horner's rule on the two at once.
+_PADE = np.array([PADE_NUM, PADE_DEN]).T[:, :, None].copy()
 
 
 def start(rho, out=None, scratch=None, top=None):
@@ -55,13 +58,17 @@ def start(rho, out=None, scratch=None, top=None):
     fixed-point steps of the asymptote above); ``scratch``: two rows of ``rho``'s size, or None;
     ``top``: the largest ``rho``, if the caller has it."""
     z = np.empty(rho.shape) if out is None else out
-    num, den = np.empty((2, *rho.shape)) if scratch is None else scratch
+    both = np.empty((2, rho.size)) if scratch is None else scratch.reshape(2, -1)  # num., den.
     top = float(_MAX(rho, axis=None)) if top is None else top
-    small = rho if top < 1.0 else np.minimum(rho, 1.0)
-    _polynomial(PADE_NUM, small, num)
-    _polynomial(PADE_DEN, small, den)
+    small = (rho if top < 1.0 else np.minimum(rho, 1.0)).reshape(-1)
+    np.multiply(small, _PADE[0], out=both)  # Horner's rule on the two at once
+    both += _PADE[1]
+    for c in _PADE[2:]:
+        both *= small
+        both += c
+    num, den = both
     num *= small
-    np.divide(num, den, out=z)
+    np.divide(num, den, out=z.reshape(-1))
     np.sqrt(z, out=z)
     if top >= 1.0:
         big = np.flatnonzero(rho >= 1.0)
@@ -70,17 +77,6 @@ def start(rho, out=None, scratch=None, top=None):
         zb = y + np.log(2.0 * zb)
         z.reshape(-1)[big] = y + np.log(2.0 * zb)
     return z
-
-
-def _polynomial(coefficients, x, out):
-    """The polynomial of ``coefficients`` (highest power first) at ``x`` into ``out``, by
-    Horner's rule."""
-    np.multiply(x, coefficients[0], out=out)
-    out += coefficients[1]
-    for c in coefficients[2:]:
-        out *= x
-        out += c
-    return out
 
 
 def _phi_into(z, t, phi, scratch, z_min, z_max):
@@ -108,7 +104,7 @@ def _phi_into(z, t, phi, scratch, z_min, z_max):
     return phi
 
 
-def halley_step(z, rho, rows):
+def halley_step(z, rho, rows, near=False):
     r"""The step of Halley's method for :math:`g(z) = \log(\sinh z/z) - \operatorname{log1p}
     \rho` into ``rows[0]`` (returned), elementwise, ``rows`` six rows of scratch of ``z``'s
     size: the step of `skcable.cable._hanging.step` (Newton's where Halley's correction exceeds
@@ -118,7 +114,9 @@ def halley_step(z, rho, rows):
     (the derivative of :math:`\sinh z/z`, :math:`(\cosh z - 1 - \varphi)/z`; it loses at
     most two bits, which move the step by 1e-16 of itself: the root is set by :math:`g`,
     whose :math:`\varphi` is accurate to an ulp). Above ``z = 20`` or below ``1e-150`` (where
-    ``z²`` underflows) `_far_step`.
+    ``z²`` underflows) `_far_step`. ``near``: the caller vouches that ``z`` lies within 1e-7 of
+    the root (the Padé start), where Halley's correction is about that small: Newton's step is
+    not looked for.
     """
     z_min, z_max = float(_MIN(z, axis=None)), float(_MAX(z, axis=None))
     if not (1e-150 <= z_min and z_max <= 20.0):
@@ -149,10 +147,11 @@ def halley_step(z, rho, rows):
     t *= slope
     t += t
     c /= t
-    np.abs(c, out=t)
-    far = t > 0.5  # Newton's step there (a NaN stays, and fails the stop test)
-    if far.any():
-        c[far] = 0.0
+    if not near:
+        np.abs(c, out=t)
+        far = t > 0.5  # Newton's step there (a NaN stays, and fails the stop test)
+        if far.any():
+            c[far] = 0.0
     np.subtract(1.0, c, out=c)
     step /= c
     return step
@@ -181,17 +180,18 @@ def _tiny_newton(z, rho):
     return np.log1p((phi - rho) / (1.0 + rho)) * (1.0 + phi) / (z * (2.0 * SINHC_SERIES[-1]))
 
 
-def iterate(z, rho, rows=None, history=None):
+def iterate(z, rho, rows=None, history=None, near=False):
     """Halley's method on ``g(z) = log(sinh z / z) - log1p(rho)`` from ``z`` (arrays of one size,
     ``z`` overwritten with the root), each element stopping on its own when its relative
     change falls below `STEP_TOL` (cubic convergence: its error is then below 1e-20); later
     steps run on the few elements left. Returns ``history`` (the largest relative change of
-    each step, appended to) or raises `ConvergenceError`."""
+    each step, appended to) or raises `ConvergenceError`. ``near``: `halley_step`'s, for the
+    first step."""
     history = [] if history is None else history
     flat = z.reshape(-1)
     targets = (rho if np.shape(rho) == z.shape else np.broadcast_to(rho, z.shape)).reshape(-1)
     rows = np.empty((6, flat.size)) if rows is None else rows
-    change = halley_step(flat, targets, rows)
+    change = halley_step(flat, targets, rows, near)
     flat -= change
     change /= flat
     np.abs(change, out=change)
@@ -220,7 +220,7 @@ def forces_into(span, dh, w, a, z, out, u):
     sinh_z, m, H, V, T, length = (out[k] for k in ("sinh_z", "m", "H", "V", "T", "length"))
     np.sinh(z, out=sinh_z)
     np.divide(sinh_z, z, out=m)  # the steps of `_m_in_place`
-    np.divide(dh / span, m, out=m)
+    np.divide(np.divide(dh, span, out=u[0]), m, out=m)
     np.arcsinh(m, out=m)
     np.multiply(w, a, out=H)
     np.subtract(z, m, out=u[0])  # -u_A
@@ -359,7 +359,7 @@ def of_length(span, dh, w, length, span_range, size=CHUNK):
         z, a = out["z"][part], out["a"][part]
         start(rho, z, rows[1:3], top)
         try:
-            iterate(z, rho, rows[1:7])
+            iterate(z, rho, rows[1:7], near=top < 1.0)  # the Padé start: within 2.5e-8
         except ConvergenceError:
             return None
         z_lo = float(_MIN(z))

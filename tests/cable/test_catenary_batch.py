@@ -108,6 +108,13 @@ def test_two_dimensional_arrays_keep_their_shape():
     flat = cable.catenary(spans.ravel(), dh.ravel(), w.ravel(), length=lengths.ravel())
     np.testing.assert_array_equal(c.V_A.ravel(), flat.V_A)
     assert c.y(spans / 2).shape == (4, 5)
+    # shapes that only broadcast take the general path (a 2-D excess, started elementwise)
+    lengths = np.hypot(spans[0], 1.0) * np.array([[1.001], [1.3], [2.5]])
+    b = cable.catenary(spans[0], np.array([[1.0], [1.0], [1.0]]), 1.0, length=lengths)
+    assert b.H.shape == (3, 5)
+    for i in range(3):
+        one = cable.catenary(spans[0], 1.0, 1.0, length=lengths[i])
+        np.testing.assert_allclose(b.H[i], one.H, rtol=1e-14)
 
 
 @pytest.mark.parametrize(
