@@ -31,6 +31,7 @@ import statistics
 import sys
 import tempfile
 import time
+import tracemalloc
 from pathlib import Path
 
 import numpy as np
@@ -65,9 +66,30 @@ def alternated(own, peer, repeats):
 
 def paired(own, peer, number, rounds):
     """``(own s, peer s, median of own/peer)``: both timed back to back in each round."""
+    own_s, peer_s, ratios = paired_rounds(own, peer, number, rounds)
+    return statistics.median(own_s), statistics.median(peer_s), statistics.median(ratios)
+
+
+def paired_rounds(own, peer, number, rounds):
+    """``(own s, peer s, own/peer)`` of each round, the two timed back to back in each (each
+    time the median of its five batches of ``number`` calls)."""
     pairs = [(per_call(own, number), per_call(peer, number)) for _ in range(rounds)]
-    ratio = statistics.median(a / b for a, b in pairs)
-    return statistics.median(a for a, _ in pairs), statistics.median(b for _, b in pairs), ratio
+    return [a for a, _ in pairs], [b for _, b in pairs], [a / b for a, b in pairs]
+
+
+def peak_mib(fn):
+    """Peak memory a call of ``fn`` adds (MiB, tracemalloc: NumPy reports its arrays to it),
+    its result held until the peak is read; after a first call (pools filled)."""
+    fn()
+    tracemalloc.start()
+    try:
+        base = tracemalloc.get_traced_memory()[0]
+        kept = fn()
+        peak = tracemalloc.get_traced_memory()[1] - base
+    finally:
+        tracemalloc.stop()
+    del kept
+    return peak / 2**20
 
 
 def strand_rows(r):
@@ -159,8 +181,16 @@ def _verdict(ok, miss):
     return "met" if ok else f"**not met**: {miss}"
 
 
+def _ratio_text(ratios):
+    """``"median (min–max)"`` of the rounds' ratios."""
+    return f"{statistics.median(ratios):.2f}× (rounds {min(ratios):.2f}–{max(ratios):.2f})"
+
+
 def _vectorised_rows(n, r):
-    """The vectorised rows on a batch of ``n`` spans."""
+    """The vectorised rows on a batch of ``n`` spans: ``catenary(length=)`` against the floor (a
+    plain NumPy Newton that computes H alone, `bench_closed_forms.newton_floor`), ``catenary(H=)``
+    against mechaphlowers' span model given the same parameter."""
+    from bench_closed_forms import newton_floor
     from mechaphlowers.core.models.cable.span import CatenarySpan
 
     rows = []
@@ -179,34 +209,44 @@ def _vectorised_rows(n, r):
     def given_length(spans=spans, lengths=lengths):
         return cable.catenary(spans, DH, W, length=lengths).H
 
-    t_h, t_m, ratio = paired(given_H, mecha, max(1, 200_000 // n), r)  # batches of >= 0.2M spans
+    def floor(spans=spans, lengths=lengths):
+        return newton_floor(spans, DH, W, lengths)
+
+    number = max(1, 200_000 // n)  # batches of >= 0.2M spans
+    t_l, t_f, ratios = paired_rounds(given_length, floor, number, r)
+    gap = float(np.max(np.abs(floor() / given_length() - 1)))
+    rows.append(
+        (
+            f"vectorised `catenary(length=)`, {n:,} spans, every output and check",
+            f"{statistics.median(t_l) / n * 1e9:.0f} ns a span, {_ratio_text(ratios)} the NumPy Newton "
+            f"floor ({statistics.median(t_f) / n * 1e9:.0f} ns; its H {gap:.0e} from skcable's)",
+            "≤ 2× the floor",
+            _verdict(statistics.median(ratios) <= 2.0, f"{statistics.median(ratios):.2f}×"),
+        )
+    )
+    t_h, t_m, ratios = paired_rounds(given_H, mecha, number, r)
     rows.append(
         (
             f"vectorised `catenary(H=)` with its check, {n:,} spans",
-            f"{t_h / n * 1e9:.0f} ns a span, {1 / ratio:.2f}× mechaphlowers' throughput "
-            f"({t_m / n * 1e9:.0f} ns)",
-            "≥ 1× mechaphlowers' throughput",
-            _verdict(
-                ratio <= 1.0,
-                f"{1 / ratio:.2f}×: every span passes through about sixty NumPy loops (the sinh, "
-                "cosh and arcsinh of the solve, the five rows of the residual and their reductions) "
-                "against mechaphlowers' unchecked evaluation",
-            ),
+            f"{statistics.median(t_h) / n * 1e9:.0f} ns a span, {_ratio_text(ratios)} mechaphlowers' "
+            f"time ({statistics.median(t_m) / n * 1e9:.0f} ns)",
+            "≤ 1× mechaphlowers' time",
+            _verdict(statistics.median(ratios) <= 1.0, f"{statistics.median(ratios):.2f}×"),
         )
     )
-    t_l = statistics.median(per_call(given_length, 1) for _ in range(r))
-    rows.append(
-        (
-            f"vectorised `catenary(length=)`, {n:,} spans",
-            f"{t_l / n * 1e9:.0f} ns a span",
-            "≤ 300 ns a span",
-            _verdict(
-                t_l / n <= 3e-7,
-                f"{t_l / n / 3e-7:.2f}× the target; {t_l / t_m:.1f}× mechaphlowers' forward "
-                "evaluation given H in the same process (the load of the machine slows both)",
-            ),
+    if n >= 1_000_000:
+        mib = {name: peak_mib(fn) for name, fn in (("floor", floor), ("length", given_length),
+                                                   ("H", given_H), ("mecha", mecha))}  # fmt: skip
+        rows.append(
+            (
+                f"peak memory a call adds, {n:,} spans (tracemalloc)",
+                f"`catenary(length=)` +{mib['length']:.0f} MiB, {mib['length'] / mib['floor']:.2f}× the "
+                f"floor's (+{mib['floor']:.0f} MiB); `catenary(H=)` +{mib['H']:.0f} MiB, mechaphlowers "
+                f"+{mib['mecha']:.0f} MiB",
+                "≤ 2× the floor's",
+                _verdict(mib["length"] <= 2.0 * mib["floor"], f"{mib['length'] / mib['floor']:.2f}×"),
+            )
         )
-    )
     return rows
 
 
@@ -250,9 +290,13 @@ def closed_form_rows(r, spans_n):
         f"`python benchmarks/bench_targets.py --only closed-forms --repeats {r}`: the scene of "
         "`benchmarks/bench_closed_forms.py` (span 800 m, dh -20 m, w 20 N/m, EA 1e12 N, length "
         "801.409 m) and batches of spans 100–1000 m (lengths 1e-6 to 50 % over the chord). Each "
-        f"ratio is the median over {r} rounds of skcable and the peer timed back to back, each the "
-        "median of five batches (of 2000 scalar calls, 500 elastic ones, 20 calls on 10,000 spans, "
-        "one on 1,000,000); absolute times move with the load of the machine, the ratios less.",
+        f"ratio is the median over {r} rounds of skcable and the peer or floor timed back to back "
+        "(the range of the rounds beside it), each time the median of five batches (of 2000 "
+        "scalar calls, 500 elastic ones, 20 calls on 10,000 spans, one on 1,000,000); absolute "
+        "times move with the load of the machine, the ratios less. The floor of `catenary(length=)` "
+        "is a plain NumPy Newton that computes H alone (`newton_floor` in "
+        "`benchmarks/bench_closed_forms.py`); `catenary(H=)` is compared with mechaphlowers' "
+        "`CatenarySpan` given the same parameter (its length and H, unchecked).",
         "",
         "| call | measured | target | |",
         "|---|---|---|---|",

@@ -36,18 +36,14 @@ import numpy as np
 
 from skcable._checks import broadcast, exactly_one, float_range, positive, real, require, within
 from skcable._xp import namespace, power_of_two_near, scalar_math
+from skcable.cable import _catenary_batch as _batch
 from skcable.cable._hanging import RHO_LIMIT as _RHO_LIMIT
-from skcable.cable._hanging import excess, z_of_excess
+from skcable.cable._hanging import Z_LIMIT, Z_MIN, excess, z_of_excess
 from skcable.cable._roots import find_root
 from skcable.cable._special import (
-    DSINHC_SERIES,
-    SINHC_SERIES,
     asinh_step_parts,
-    horner,
-    largest_abs,
     ldexp_sum,
     log_cosh,
-    piecewise,
     power_product,
     sinhc_m1,
     z_minus_tanh_over_cube,
@@ -60,7 +56,7 @@ __all__ = ["Catenary", "catenary"]
 _Z_MAX = 350.0  # the sag search: phi(z)**2 overflows near z = 355
 #: Range of z = span/(2a) the closed form evaluates: below _Z_MIN the abscissae
 #: x/(2a) turn subnormal (no relative precision), above _Z_LIMIT sinh(z) overflows.
-_Z_MIN, _Z_LIMIT = 1e-300, 709.0
+_Z_MIN, _Z_LIMIT = Z_MIN, Z_LIMIT
 #: Largest |dh|/span: squares of lengths scaled by the longer leg stay representable.
 _STEEPEST = 1e150
 
@@ -107,36 +103,37 @@ class Catenary(CableSolution):
         self.constraint = constraint
 
     @classmethod
-    def _of_one_shape(cls, span, dh, w, a, z, constraint: tuple[str, object]) -> Catenary:
-        """`Catenary` of arrays ``a`` and ``z`` of one shape that ``span``, ``dh`` and ``w`` (floats
-        or arrays) broadcast to, with its forces and length filled (`_arrays`): ``__init__``
-        without its tests of the kind and shape of the data."""
+    def _of_batch(cls, span, dh, w, constraint: tuple[str, object], results, shape) -> Catenary:
+        """`Catenary` of the rows ``results`` of `skcable.cable._catenary_batch` (flat, brought
+        to ``shape``; ``a`` and ``z`` there, or given in ``results`` already shaped):
+        ``__init__`` and `_arrays` done pass by pass."""
         solution = _new(cls)
-        sinh_z = np.sinh(z)
+        if len(shape) == 1:  # the rows themselves
+            V, T, rows = results["V"], results["T"], results
+        else:
+            V, T = (results[k].reshape(2, *shape) for k in ("V", "T"))
+            rows = {k: results[k].reshape(shape) for k in ("a", "z", "sinh_z", "m", "H", "length")}
         solution.__dict__.update(
-            span=span, dh=dh, w=w, a=a, z=z, _xp=np, _sinh_z=sinh_z, m=_m_in_place(span, dh, z, sinh_z),
-            constraint=constraint,
+            span=span, dh=dh, w=w, a=rows["a"], z=rows["z"], _xp=np, _sinh_z=rows["sinh_z"],
+            m=rows["m"], constraint=constraint, H=rows["H"], V_A=V[0], V_B=V[1], T_A=T[0],
+            T_B=T[1], length=rows["length"], _ends=(V, T),
         )  # fmt: skip
-        return solution._arrays()
+        return solution
 
     def _arrays(self):
         """Fill the forces and the length of an array of scenes at once: the formulas of the
-        properties below, evaluated in place (the same bits, fewer temporaries: each new
-        array costs more than the arithmetic on it): the vectorised hot path. The ends' forces
-        are the rows of two blocks, ``(V_A, V_B)`` and ``(T_A, T_B)``: each function is called
-        once for both ends (and so is each term of `residual`)."""
-        a, z, m = self.a, self.z, self.m
-        H = self.w * a
-        u = np.empty((2, *m.shape))
-        np.subtract(z, m, out=u[0])  # -u_A
-        np.add(z, m, out=u[1])  # u_B
-        V, T = np.sinh(u), np.cosh(u)  # cosh is even: cosh(m - z)
-        V *= H
-        T *= H
-        length = a * self._sinh_z
-        length *= 2.0
-        length *= np.cosh(m, out=u[0])
-        self.__dict__.update(H=H, V_A=V[0], V_B=V[1], T_A=T[0], T_B=T[1], length=length, _ends=(V, T))
+        properties below, evaluated in place (`skcable.cable._catenary_batch.forces_into`: the
+        same bits, fewer temporaries). The ends' forces are the rows of two blocks, ``(V_A,
+        V_B)`` and ``(T_A, T_B)``: each function is called once for both ends (and so is each
+        term of `residual`)."""
+        shape = self.m.shape
+        block = np.empty((8, *shape))
+        out = dict(sinh_z=self._sinh_z, m=self.m, H=block[0], length=block[1], V=block[2:4], T=block[4:6])
+        _batch.forces_into(self.span, self.dh, self.w, self.a, self.z, out, block[6:])
+        V, T = out["V"], out["T"]
+        self.__dict__.update(
+            H=out["H"], V_A=V[0], V_B=V[1], T_A=T[0], T_B=T[1], length=out["length"], _ends=(V, T)
+        )
         return self
 
     def _end_blocks(self, shape):
@@ -178,36 +175,18 @@ class Catenary(CableSolution):
 
     def _residual_rows(self, block, V, T):
         """`residual` written into the first five rows of ``block`` (the last two are scratch),
-        with the ends' forces in the blocks ``V`` and ``T``."""
-        H, w = self.H, self.w
-        rows, two, pair = block[:5], block[5], block[5:]
-        closure, balance, ends, met = rows[0], rows[1], rows[2:4], rows[4]
-        np.subtract(T[1], T[0], out=closure)
-        closure -= w * self.dh
-        closure /= np.add(T[0], T[1], out=two)
-        np.multiply(w, self.length, out=two)  # the weight
-        np.add(V[0], V[1], out=balance)
-        balance -= two
-        np.abs(V, out=ends)  # the rows of the ends, not yet written, as scratch
-        two += ends[0]
-        two += ends[1]
-        balance /= two
-        # each end: (1 - t² - v²)/2, t = H/T, v = V/T through one reciprocal scaled by √½ (its
-        # rounding, 1e-16 relative, moves the term by 1e-16: the round-off the term measures)
-        np.divide(_SQRT_HALF, T, out=pair)
-        np.multiply(V, pair, out=ends)
-        ends *= ends  # v²/2
-        pair *= H
-        np.square(pair, out=pair)  # t²/2
-        np.subtract(0.5, pair, out=pair)
-        np.subtract(pair, ends, out=ends)
-        name, value = self.constraint  # the constraint met, as in `_common_residuals`
-        if name == "low":
-            met[...] = self._common_residuals(np)[2]
-        else:
-            np.subtract(getattr(self, ATTRIBUTE_OF[name]), value, out=met)
-            met /= value
-        return largest_abs(rows)
+        with the ends' forces in the blocks ``V`` and ``T``
+        (`skcable.cable._catenary_batch.residual_rows`)."""
+        name, value = self.constraint
+
+        def met(row):  # the constraint met, as in `_common_residuals`
+            if name == "low":
+                row[...] = self._common_residuals(np)[2]
+            else:
+                np.subtract(getattr(self, ATTRIBUTE_OF[name]), value, out=row)
+                row /= value
+
+        return _batch.residual_rows(block, V, T, self.H, self.w, self.dh, self.length, met)
 
     @cached_property
     def _phi(self):
@@ -444,97 +423,8 @@ def _z_from_length(span, dh, length):
         return z, history
     # g(z) = log(sinh z / z) - target is convex and increasing: Halley's method (Newton's far
     # from the root) from the start of `skcable.cable._hanging.start`, elementwise
-    z = piecewise(rho, rho < 1.0, lambda r: np.sqrt(r * (6.0 + r * (-1.8 + 0.8229 * r))), _large_start)
-    return _z_iterate_arrays(z, np.log1p(rho))
-
-
-def _large_start(rho):
-    y = np.log1p(rho)
-    z = y + np.log(2.0 * (y + 1.0))
-    z = y + np.log(2.0 * z)
-    return y + np.log(2.0 * z)
-
-
-def _z_iterate_arrays(z, target):
-    """The iteration of `skcable.cable._hanging.z_of_excess` on arrays, each element stopping
-    on its own (the same test): later iterations run on the few elements left."""
-    z = np.array(z, dtype=float)
-    flat, targets = z.reshape(-1), np.broadcast_to(target, z.shape).reshape(-1)
-    active, history = None, []
-    for _ in range(100):
-        zs, ts = (flat, targets) if active is None else (flat[active], targets[active])
-        change = _step_arrays(zs, ts)
-        zs = zs - change
-        change /= zs
-        np.abs(change, out=change)
-        history.append(largest_abs(change))
-        if active is None:
-            flat[:] = zs
-            active = np.flatnonzero(~(change < 1e-7))  # NaN keeps iterating (and fails)
-        else:
-            flat[active] = zs
-            active = active[~(change < 1e-7)]
-        if active.size == 0:
-            return z, history
-    raise ConvergenceError("catenary(length=...): Halley's method did not converge", history)
-
-
-def _sinhc_pair_arrays(z):
-    """`sinhc_m1` and `dsinhc` on an array, each branch computed once on the whole array when
-    the elements fall on one side of ``z = 1`` (the usual case), else both, then chosen."""
-    low = z < 1.0
-    if not low.any():
-        s = np.sinh(z)
-        phi = s / z
-        phi -= 1.0
-        dphi = z * np.cosh(z)
-        dphi -= s
-        dphi /= z * z
-        return phi, dphi
-    t = z * z
-    phi, dphi = horner(SINHC_SERIES, t), horner(DSINHC_SERIES, t)
-    phi *= t
-    dphi *= z
-    if low.all():
-        return phi, dphi
-    with np.errstate(over="ignore", invalid="ignore"):
-        s = np.sinh(z)
-        direct_phi, direct_dphi = s / z - 1.0, (z * np.cosh(z) - s) / t
-    return np.where(low, phi, direct_phi), np.where(low, dphi, direct_dphi)
-
-
-def _step_arrays(z, target):
-    """`skcable.cable._hanging.step` on arrays."""
-    big = z > 20.0
-    with np.errstate(over="ignore", invalid="ignore", divide="ignore"):
-        if big.any():
-            zb = np.where(big, z, 21.0)
-            first_b = 1.0 / np.tanh(zb) - 1.0 / zb
-            newton_b = (zb - np.log(2.0 * zb) + np.log1p(-np.exp(-2.0 * zb)) - target) / first_b
-            halley_b = _halley(newton_b, 1.0 / (zb * zb), first_b)
-            zs = np.where(big, 1.0, z)
-            return np.where(big, halley_b, _small_step(zs, target))
-        return _small_step(z, target)
-
-
-def _small_step(z, target):
-    phi, slope = _sinhc_pair_arrays(z)
-    one_phi = 1.0 + phi
-    newton = np.log1p(phi)
-    newton -= target
-    newton *= one_phi
-    newton /= slope
-    curvature = phi * (2.0 + phi)
-    curvature /= z * z
-    curvature /= one_phi
-    curvature /= one_phi
-    slope /= one_phi  # g'
-    return _halley(newton, curvature, slope)
-
-
-def _halley(newton, curvature, first):
-    correction = 0.5 * newton * curvature / first
-    return np.where(np.abs(correction) <= 0.5, newton / (1.0 - correction), newton)
+    z = _batch.start(rho)
+    return z, _batch.iterate(z, rho)
 
 
 def _z_from_sag(span, dh, sag):
@@ -658,7 +548,6 @@ _MAX_FLOAT = float(np.finfo(float).max)
 #: The least positive float (a subnormal): H/w above it has not underflowed to zero.
 TINY_POSITIVE = 5e-324
 _new = object.__new__
-_SQRT_HALF = math.sqrt(0.5)
 _MIN, _MAX = np.minimum.reduce, np.maximum.reduce
 
 
@@ -764,8 +653,49 @@ def _H_on_arrays(span, dh, w, H):
         return None
     z = span / a
     z *= 0.5  # = 0.5 * span / a: halving is exact
-    with float_range("H", "a result"):
-        return checked_closed_form(Catenary._of_one_shape(span, dh, w, a, z, ("H", H[()])), "H", [])
+    flat = [v if isinstance(v, float) else v.reshape(-1) for v in (span, dh, w, a, z, H)]
+    with np.errstate(all="ignore"):  # a NaN or inf fails the residual: the general path then names it
+        done = _batch.of_H(*flat)
+        if done is None or not done[0] <= ACCEPT:
+            return None
+        results = {**done[1], "a": a, "z": z}
+        solution = Catenary._of_batch(span, dh, w, ("H", H[()]), results, shape)
+        return solution if solution.finite_beyond_residual() else None
+
+
+#: Bounds of the data the vectorised ``length=`` path takes: within them every square and
+#: product of the excess is a normal float, so that the general path's scaling by a power of
+#: two (`skcable._xp.power_of_two_near`) changes no bit, and is left out.
+_NORMAL_RANGE = (1e-100, 1e100)
+
+
+def _length_on_arrays(span, dh, w, length):
+    """`catenary(span, dh, w, length=length)` for float64 arrays ``span`` and ``length`` of one
+    shape (``dh`` and ``w`` Python floats or float64 arrays of that shape), solved and checked
+    pass by pass (`skcable.cable._catenary_batch.of_length`), or None where any check of the
+    general path would fail or the data are of another kind: the general path then gives the
+    same solution, or raises naming the argument.
+
+    The argument checks fused into two reductions an argument; the data held within
+    `_NORMAL_RANGE` (else the general path)."""
+    shape = span.shape
+    if not (
+        span.dtype == length.dtype == np.float64 and span.size and _floats_of_shape(shape, length, dh, w)
+    ):
+        return None
+    (span_lo, span_hi), (L_lo, L_hi), (w_lo, w_hi), (dh_lo, dh_hi) = map(_range, (span, length, w, dh))
+    tiny, huge = _NORMAL_RANGE
+    if not (tiny < span_lo and span_hi < huge and tiny < L_lo and L_hi < huge and 0.0 < w_lo and w_hi < _INF):
+        return None
+    if not (-huge < dh_lo <= dh_hi < huge and max(-dh_lo, dh_hi) / _STEEPEST <= span_lo):
+        return None  # ... and |dh| <= _STEEPEST·span (`catenary`'s test, for the shortest span)
+    s, d, wf, L = (v if isinstance(v, float) else v.reshape(-1) for v in (span, dh, w, length))
+    with np.errstate(all="ignore"):  # a NaN or inf fails the residual: the general path then names it
+        done = _batch.of_length(s, d, wf, L, (span_lo, span_hi))
+        if done is None or not done[0] <= ACCEPT:
+            return None
+        solution = Catenary._of_batch(span, dh, w, ("length", length[()]), done[1], shape)
+        return solution if solution.finite_beyond_residual() else None
 
 
 def hanging(span, dh, w, length) -> Catenary:
@@ -826,6 +756,8 @@ def catenary(span, dh, w, *, length=None, sag=None, H=None, low=None, T_max=None
     """
     if length is not None and sag is None and H is None and low is None and T_max is None:
         solution = _length_on_floats(span, dh, w, length)  # one scene of Python numbers
+        if solution is None and type(span) is np.ndarray and type(length) is np.ndarray:
+            solution = _length_on_arrays(span, dh, w, length)  # arrays of one shape
         if solution is not None:
             return solution
     elif (

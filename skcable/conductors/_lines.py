@@ -13,7 +13,7 @@ it cannot: no element is returned unchecked, none with H <= 0. The sag, the larg
 and the loaded length come from the check's end tensions and arc.
 
 The states are taken in passes of at most `CHUNK` elements, each in the rows of one block of
-scratch (`_scratch.scratch`), which stays mapped from call to call.
+scratch (`skcable.cable._scratch.scratch`), which stays mapped from call to call.
 """
 
 from __future__ import annotations
@@ -21,12 +21,13 @@ from __future__ import annotations
 import numpy as np
 
 from skcable.cable._elastic import elastic_catenary_unchecked as elastic_catenary
+from skcable.cable._scratch import scratch
 from skcable.conductors import _closure_z, _grid
+from skcable.conductors._choice import choose
 from skcable.conductors._grid import closure_check, closure_terms, length_into, sag_into
-from skcable.conductors._inputs import load_plane, renamed
+from skcable.conductors._inputs import renamed
 from skcable.conductors._parabola import parabola_states
 from skcable.conductors._reference import reference_length
-from skcable.conductors._scratch import scratch
 from skcable.errors import ConvergenceError, InputError
 
 __all__ = ["line_change_of_state", "reference_state", "CHUNK"]
@@ -151,9 +152,10 @@ def _finite(results):
             raise ConvergenceError(f"change_of_state: non-finite {key} for these data")
 
 
-def line_change_of_state(span, dh, EA, alpha, w0, t0, ref, w, t, wind, k, model):
+def line_change_of_state(span, dh, EA, alpha, w0, t0, ref, w, t, wind, k, model, rtol=None):
     """`change_of_state` of spans of shape ``lead`` (arrays) over states of shape ``shape``:
-    a dict of its results, each of shape ``lead + shape`` (``L0, H0, sag0`` of ``lead``)."""
+    a dict of its results, each of shape ``lead + shape`` (``L0, H0, sag0`` and the choice's
+    ``error_estimate`` and ``models`` of ``lead``), and the `Choice` (`skcable.conductors._choice`)."""
     lead = np.broadcast_shapes(np.shape(span), np.shape(dh))
     shape = np.shape(w)
     spans, dhs = (np.broadcast_to(v, lead).ravel().astype(float) for v in (span, dh))
@@ -161,23 +163,31 @@ def line_change_of_state(span, dh, EA, alpha, w0, t0, ref, w, t, wind, k, model)
     value = np.broadcast_to(value, lead).ravel().astype(float)
     wf, tf, windf = (np.ravel(v) for v in (w, t, wind))
     kf = np.broadcast_to(k, shape).ravel()
-    if model == "parabola":
-        q, span_p, dh_p = load_plane(spans[:, None], dhs[:, None], wf[None, :], windf[None, :])
+    par = None
+    if model != "catenary":
         H0, sag0 = (value, None) if name == "H0" else (None, value)
-        L0, H0_out, sag0_out, H_plane, sag, T_max, length = parabola_states(
-            spans[:, None], dhs[:, None], EA, alpha, w0, t0, None if H0 is None else H0[:, None],
-            None if sag0 is None else sag0[:, None], tf[None, :], q, span_p, dh_p,
-        )  # fmt: skip
-        L0, H0_out, sag0_out = (np.broadcast_to(v, (spans.size, 1))[:, 0] for v in (L0, H0_out, sag0_out))
-        H = H_plane * spans[:, None] / span_p
-        out = dict(H=H, H_plane=H_plane, sag=sag, T_max=T_max, length=length)
-        _finite(out)
-    else:
-        L0, _, H0_out, sag0_out = reference_state(spans, dhs, w0, EA, value, name)
-        out = catenary_states(spans, dhs, L0, EA, wf, windf, kf, {"H": "w", "length": name})
+        par = parabola_states(spans, dhs, EA, alpha, w0, t0, H0, sag0, wf, tf, windf)
+    choice = choose(model, rtol, None if par is None else par.error, spans.size)
+    if par is not None:
+        out = {key: getattr(par, key) for key in _RESULTS}
+        _finite(out if choice.parabola.all() else {k: v[choice.parabola] for k, v in out.items()})
+        L0, H0_out, sag0_out = par.L0, par.H0, par.sag0
+    exact = np.flatnonzero(~choice.parabola)
+    if exact.size:
+        names = {"H": "w", "length": name}
+        L0_e, _, H0_e, sag0_e = reference_state(spans[exact], dhs[exact], w0, EA, value[exact], name)
+        solved = catenary_states(spans[exact], dhs[exact], L0_e, EA, wf, windf, kf, names)
+        if par is None:
+            out, L0, H0_out, sag0_out = solved, L0_e, H0_e, sag0_e
+        else:
+            for key, result in solved.items():
+                out[key][exact] = result
+            L0[exact], H0_out[exact], sag0_out[exact] = L0_e, H0_e, sag0_e
     blowout = np.arctan2(windf, wf)  # finite: w >= the smallest normal float, wind finite
     out["blowout"] = np.broadcast_to(blowout, (spans.size, kf.size)).copy()
     out = {key: result.reshape(*lead, *shape) for key, result in out.items()}
     for key, result in (("L0", L0), ("H0", H0_out), ("sag0", sag0_out)):
         out[key] = np.asarray(result, dtype=float).reshape(lead)
-    return out
+    out["error_estimate"] = choice.error_estimate.reshape(lead)
+    out["models"] = choice.models().reshape(lead)
+    return out, choice

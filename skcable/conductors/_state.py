@@ -49,14 +49,13 @@ from skcable._checks import broadcast, nonnegative, positive, real, scalar
 from skcable._show import Shown, attributes, counted, quantity
 from skcable.cable._elastic import elastic_catenary_unchecked as elastic_catenary
 from skcable.cable._extreme import blame_extreme
+from skcable.conductors._choice import check_model, choose
 from skcable.conductors._inputs import load_plane, normal, renamed, thermal_factor
 from skcable.conductors._parabola import parabola_states
 from skcable.conductors._reference import reference_length
 from skcable.errors import ConvergenceError, InputError
 
 __all__ = ["ThermalCatenary", "thermal_catenary", "ChangeOfState", "change_of_state", "sag_tension_table"]
-
-_MODELS = ("catenary", "parabola")
 
 
 class ThermalCatenary(Shown):
@@ -167,7 +166,15 @@ class ChangeOfState(Shown):
         cable's plane) from the vertical, ``atan(wind / w)`` (rad).
     L0 : unstressed length at the reference temperature.
     H0, sag0 : the reference state's horizontal tension and sag (model's).
-    w, t, wind, model : the states, as given.
+    w, t, wind : the states, as given.
+    model : the model of the results: ``"catenary"``, ``"parabola"``, or ``"mixed"`` when
+        ``model="auto"`` took the parabola for some spans and the exact catenary for others.
+    models : the model of each span (a string for one span, else an array of them).
+    error_estimate : the estimated relative error of each span's results (the largest over its
+        states of H, sag, T_max, length and the reference's H0 or sag0): the parabola's estimate
+        where it was taken (`skcable.conductors._parabola`), 0 for the exact model.
+    reason : why this model, in words (``model="auto"``: the estimates against ``rtol``).
+    rtol : the tolerance of ``model="auto"`` (None for the other models).
     """
 
     # set by ``__init__`` from its keywords: floats for one span and one state, else arrays
@@ -184,6 +191,10 @@ class ChangeOfState(Shown):
     t: Any
     wind: Any
     model: str
+    models: Any
+    error_estimate: Any
+    reason: str
+    rtol: Any
     T_max_pct_rts: Any  # set by `skcable.conductors.Conductor.change_of_state` when the RTS is known
 
     def __init__(self, **values):
@@ -207,7 +218,7 @@ class ChangeOfState(Shown):
 
 
 def change_of_state(
-    span, dh, *, EA, alpha, w0, t0, H0=None, sag0=None, w, t, wind=0.0, model="catenary"
+    span, dh, *, EA, alpha, w0, t0, H0=None, sag0=None, w, t, wind=0.0, model="catenary", rtol=None
 ) -> ChangeOfState:
     """Sag and tension of a cable in other states at its unstressed length.
 
@@ -234,18 +245,24 @@ def change_of_state(
         The states: vertical load per unstressed reference length including
         ice (> 0), temperature, transverse (horizontal, perpendicular to the
         span) wind load per the same length (>= 0); broadcast together.
-    model : {"catenary", "parabola"}
+    model : {"catenary", "parabola", "auto"}
         ``"catenary"``: the elastic catenary with thermal strain (exact, see
         `thermal_catenary`), in the plane of the resultant load.
         ``"parabola"``: the classical cubic change-of-state equation (CIGRE TB
         324, 2007; Kiessling et al., "Overhead Power Lines", 2003), valid for
         small sag/span, with the same plane.
+        ``"auto"``: for each span, the parabola where its estimated relative error (in H, the
+        sag, T_max, the length and the reference's H0 or sag0, over the span's states) is at
+        most ``rtol``, else the exact catenary (`skcable.conductors._choice`).
+    rtol : float, optional
+        The tolerance of ``model="auto"`` (default 1e-3); refused with the other models.
 
     Returns
     -------
     ChangeOfState
         ``H, H_plane, sag, T_max, length, blowout`` over the spans × states; ``L0``,
-        ``H0``, ``sag0`` per span (floats for one span).
+        ``H0``, ``sag0``, ``models`` and ``error_estimate`` per span (floats for one span);
+        ``model`` and ``reason``: the model taken and why.
 
     Raises
     ------
@@ -257,8 +274,7 @@ def change_of_state(
     ConvergenceError
         A solver stopped (with its history).
     """
-    if not isinstance(model, str) or model not in _MODELS:
-        raise InputError("model", f"must be one of {_MODELS}, got {model!r}")
+    model, rtol = check_model(model, rtol)
     span, dh = normal("span", span), real("dh", dh)
     lead = broadcast(span=span, dh=dh)
     EA = normal("EA", scalar("EA", EA))
@@ -270,21 +286,34 @@ def change_of_state(
     w, t, wind = (np.array(np.broadcast_to(v, shape), dtype=float) for v in (w, t, wind))
     given = dict(span=span, dh=dh, EA=EA, alpha=alpha, w0=w0, t0=t0, H0=H0, sag0=sag0, w=w, t=t, wind=wind)
     with blame_extreme(**given):  # a refusal deep inside names an outsized argument, if one is
-        return _states(span, dh, EA, alpha, w0, t0, H0, sag0, w, t, wind, shape, lead, model)
+        return _states(span, dh, EA, alpha, w0, t0, H0, sag0, w, t, wind, shape, lead, (model, rtol))
 
 
 def _states(span, dh, EA, alpha, w0, t0, H0, sag0, w, t, wind, shape, lead, model) -> ChangeOfState:
-    """`change_of_state` on checked arguments (the states' arrays of ``shape``, the spans' ``lead``)."""
+    """`change_of_state` on checked arguments (the states' arrays of ``shape``, the spans' ``lead``;
+    ``model``: the model and its ``rtol``)."""
     k = thermal_factor(alpha, t, t0)
+    model, rtol = model
     if lead:
         from skcable.conductors._lines import line_change_of_state
 
         ref = (H0 if H0 is not None else sag0, "H0" if H0 is not None else "sag0")
-        out = line_change_of_state(span, dh, EA, alpha, w0, t0, ref, w, t, wind, k, model)
-        out.update(w=w, t=t, wind=wind, model=model)
+        out, choice = line_change_of_state(span, dh, EA, alpha, w0, t0, ref, w, t, wind, k, model, rtol)
+        out.update(w=w, t=t, wind=wind, model=choice.model, reason=choice.reason, rtol=rtol)
         return ChangeOfState(**out)
+    par = choice = None
+    if model != "catenary":
+        one = np.array([float(span)]), np.array([float(dh)])
+        H0_, sag0_ = (None if v is None else np.array([float(v)]) for v in (H0, sag0))
+        par = parabola_states(*one, EA, alpha, w0, t0, H0_, sag0_, w.ravel(), t.ravel(), wind.ravel())
+    choice = choose(model, rtol, None if par is None else par.error, 1)
     q, span_p, dh_p = load_plane(span, dh, w, wind)
-    if model == "catenary":
+    if par is not None and choice.parabola[0]:
+        L0, H0_out, sag0_out = par.L0[0], par.H0[0], par.sag0[0]
+        H_plane, sag, T_max, length = (
+            getattr(par, key).reshape(shape) for key in ("H_plane", "sag", "T_max", "length")
+        )
+    else:
         ref_name = "H0" if sag0 is None else "sag0"
         with renamed({"H": "H0", "sag": "sag0", "w": "w0", "length": ref_name}):
             L0 = reference_length(span, dh, w0, EA, H0, sag0)
@@ -297,10 +326,6 @@ def _states(span, dh, EA, alpha, w0, t0, H0, sag0, w, t, wind, shape, lead, mode
         for name, value in (("H", H_plane), ("sag", sag)):  # the solver's residual is checked inside
             if not np.all(np.isfinite(value)):
                 raise ConvergenceError(f"change_of_state: non-finite {name}")
-    else:
-        L0, H0_out, sag0_out, H_plane, sag, T_max, length = parabola_states(
-            span, dh, EA, alpha, w0, t0, H0, sag0, t, q, span_p, dh_p
-        )
     H = H_plane * span / span_p
     blowout = np.arctan2(wind, w)
     out = dict(H=H, H_plane=H_plane, sag=sag, T_max=T_max, length=length, blowout=blowout)
@@ -313,7 +338,11 @@ def _states(span, dh, EA, alpha, w0, t0, H0, sag0, w, t, wind, shape, lead, mode
     _plausible.conductor(
         span, dh, EA=EA, w=max(w0, float(np.max(w))), sag=sag0, alpha=alpha, t=t, t0=t0, T_max=out["T_max"]
     )
-    return ChangeOfState(**out, L0=float(L0), H0=float(H0_out), sag0=float(sag0_out), model=model)
+    return ChangeOfState(
+        **out, L0=float(L0), H0=float(H0_out), sag0=float(sag0_out), model=choice.model,
+        models=str(choice.models()[0]), error_estimate=float(choice.error_estimate[0]),
+        reason=choice.reason, rtol=rtol,
+    )  # fmt: skip
 
 
 def _reference_input(H0, sag0, lead):
@@ -334,13 +363,13 @@ def _reference_input(H0, sag0, lead):
 
 
 def sag_tension_table(
-    span, dh, *, EA, alpha, w0, t0, H0=None, sag0=None, temperatures, load_cases, model="catenary"
+    span, dh, *, EA, alpha, w0, t0, H0=None, sag0=None, temperatures, load_cases, model="catenary", rtol=None
 ):
     """Sag-tension table: a pandas DataFrame over load case × temperature.
 
     ``load_cases`` maps a case name to ``(w, wind)`` (vertical load per length
     including ice, transverse wind per length); ``temperatures`` is a
-    sequence. The other arguments are those of `change_of_state`. The index
+    sequence. The other arguments (``model``, ``rtol`` too) are those of `change_of_state`. The index
     is ``(case, t)``; the columns ``w, wind, H, sag, T_max, length,
     blowout_deg``. For a line (``span`` a 1-D array, ``dh`` and ``H0`` or ``sag0``
     one number or one per span) the index is ``(span_no, case, t)`` and the columns
@@ -363,7 +392,7 @@ def sag_tension_table(
     with renamed({"t": "temperatures", "w": "load_cases", "wind": "load_cases"}):
         res = change_of_state(
             span, dh, EA=EA, alpha=alpha, w0=w0, t0=t0, H0=H0, sag0=sag0,
-            w=loads[:, :1], t=temps[None, :], wind=loads[:, 1:], model=model,
+            w=loads[:, :1], t=temps[None, :], wind=loads[:, 1:], model=model, rtol=rtol,
         )  # fmt: skip
     n_states = len(names) * temps.size
     data = {
