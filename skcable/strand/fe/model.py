@@ -31,6 +31,7 @@ Source: S. Pino Vidal, "Rigidez a flexión en cables: análisis numérico", Univ
 
 from __future__ import annotations
 
+import functools
 import math
 import warnings
 from typing import Any
@@ -399,24 +400,30 @@ class StrandModel:
         return term.bind(self)
 
     # --- assembly ----------------------------------------------------------------
-    def _assemble(self, U, state, strain):
+    def _assemble(self, U, state, strain, bound=None):
         """Residual, element matrices of the section terms, other tangents, the terms' outputs,
-        and the size of what each equation sums (for the force scales)."""
+        and the size of what each equation sums (for the force scales); ``bound`` replaces the
+        model's bound terms (a surrogate, `_pass_fold`)."""
         state = self.initial_state() if state is None else state
+        if bound is None:
+            section_terms, other_terms = self._section_terms, self._other_terms
+        else:
+            section_terms = [(i, t) for i, t in enumerate(bound) if isinstance(t, SectionTerm)]
+            other_terms = [(i, t) for i, t in enumerate(bound) if not isinstance(t, SectionTerm)]
         g = self.generalized_strains(U)
         S = D = None
         outputs: list[Any] = [None] * len(self._bound)  # each term's output dict, filled below
-        for i, t in self._section_terms:
+        for i, t in section_terms:
             St, Dt, outputs[i] = t.section(g, Step(strain, self.x, state[i]))
             S, D = (St, Dt.copy()) if S is None else (S + St, D + Dt)
         if S is not None:
             R, size = self.assembly.vector_and_magnitude(S.transpose(0, 2, 1))
         else:
             R, size = np.zeros(self.assembly.N), np.zeros(self.assembly.N)
-        densities = [outputs[i].get("energy") for i, _ in self._section_terms]
+        densities = [outputs[i].get("energy") for i, _ in section_terms]
         energy = None if any(e is None for e in densities) else float(np.sum(sum(densities) * self._dx))
         extra = []
-        for i, t in self._other_terms:
+        for i, t in other_terms:
             step = Step(strain, self.x, state[i])
             Rt, Kt, outputs[i] = t.contribute(U, step)
             if Rt is not None:
@@ -438,7 +445,10 @@ class StrandModel:
             if energy is not None:
                 e = t.energy(U, step) if t.potential is not False else None
                 energy = None if e is None else energy + e
-        return dict(R=R, extra=extra, outputs=outputs, g=g, S=S, D=D, energy=energy, size=size)
+        return dict(
+            R=R, extra=extra, outputs=outputs, g=g, S=S, D=D, energy=energy, size=size, strain=strain,
+            state=state,
+        )  # fmt: skip
 
     def _element_matrices(self, a):
         """The section terms' element matrices of an assembly ``a`` (None without section terms),
@@ -596,32 +606,84 @@ class StrandModel:
         )  # fmt: skip
 
     def _semismooth(self, assemble, U, first, options, common):
-        """Newton for a model with non-smooth terms (contact, tensionless supports).
+        """Newton for a model with non-smooth terms (contact, tensionless supports, a kinked
+        section law).
 
-        First a semismooth Newton: full steps on the generalized derivative, which identify the
-        active set while the residual rises and falls, under a non-monotone line search
-        (`NONMONOTONE`) and no stagnation rule before twice the iteration limit. Where that does
-        not converge and every term has a potential (a convex penalty, a bed), the energy is
+        First a semismooth Newton (steps on the generalized derivative) under a monotone line
+        search, which a kinked section law (Cardou's) passes in a few steps; where that stalls,
+        a model with a section law passes a fold of its path through a potential surrogate
+        (`_pass_fold`); then a semismooth Newton under a non-monotone line search
+        (`NONMONOTONE`), which identifies a contact's active set while the residual rises and
+        falls, with no stagnation rule before twice the iteration limit. Where that does not
+        converge and every term has a potential (a convex penalty, a bed), the energy is
         minimised instead: Armijo's rule on the energy takes the fraction of a first step that
         would push the strand deep into a bed (40 halvings), and the tangent's shift may grow to
-        1e6 times the elastic one. Both failing, the first failure is raised."""
-        try:
-            return newton(
-                assemble, U, increment=self._increment, max_iter=2 * options.max_iter, merit=self._merit,
-                line_search=options.line_search != "none", max_halvings=options.max_halvings,
-                stagnation_window=2 * options.max_iter, nonmonotone=NONMONOTONE, **common,
-            )  # fmt: skip
-        except ConvergenceError as failed:
-            potential = all(t.symmetric and t.potential is not False for t in self._bound)
-            if first["energy"] is None or not potential:
-                raise
+        1e6 times the elastic one. All failing, the first failure is raised."""
+        search = options.line_search != "none"
+        run = functools.partial(
+            newton, assemble, increment=self._increment, max_iter=2 * options.max_iter, merit=self._merit,
+            line_search=search, max_halvings=options.max_halvings,
+        )  # fmt: skip
+        try:  # a monotone line search
+            return run(U, stagnation_window=2 * options.stagnation_window, **common)
+        except ConvergenceError as exc:
+            failed = exc
+        potential = first["energy"] is not None and all(
+            t.symmetric and t.potential is not False for t in self._bound
+        )
+        if not potential and any(hasattr(t, "frozen") for t in self._bound):
             try:
-                return self._minimize(
-                    assemble, U, options, common, halvings=40, mu_max=max(options.mu_max, 1e6),
-                    max_iter=max(4 * options.max_iter, 100),
-                )  # fmt: skip
+                return self._pass_fold(assemble, U, first, options, common, failed)
             except ConvergenceError:
-                raise failed from None
+                pass
+        if search:
+            try:
+                return run(U, stagnation_window=2 * options.max_iter, nonmonotone=NONMONOTONE, **common)
+            except ConvergenceError:
+                pass
+        if not potential:
+            raise failed
+        try:
+            return self._minimize(
+                assemble, U, options, common, halvings=40, mu_max=max(options.mu_max, 1e6),
+                max_iter=max(4 * options.max_iter, 100),
+            )  # fmt: skip
+        except ConvergenceError:
+            raise failed from None
+
+    def _pass_fold(self, assemble, U, first, options, common, failed, rounds: int = 3):
+        """A model with a section law (no potential) whose Newton failed: where every term has a
+        potential surrogate (`HelicalWires.frozen`: the wires' composite curvature and the law's
+        points frozen at the current state), minimise the surrogate's energy (which passes a fold
+        of the path, as `_minimize` does) and polish the step with the model's own Newton from
+        there, refreezing at most ``rounds`` times; else raise ``failed``."""
+        strain, state = first["strain"], first["state"]
+        for _ in range(rounds):
+            start = assemble(U)
+            bound = [_surrogate(t, o) for t, o in zip(self._bound, start["outputs"], strict=True)]
+            if any(t is None for t in bound):
+                raise failed
+            surrogate = functools.partial(self._assemble, state=state, strain=strain, bound=bound)
+            try:
+                U = self._minimize(
+                    surrogate, U, options, {**common, "state": None}, halvings=40,
+                    mu_max=max(options.mu_max, 1e6), max_iter=max(4 * options.max_iter, 100),
+                ).x  # fmt: skip
+            except ConvergenceError as exc:
+                U = exc.last if exc.last is not None else U
+            try:
+                result = newton(
+                    assemble, U, increment=self._increment, max_iter=2 * options.max_iter,
+                    merit=self._merit, line_search=options.line_search != "none",
+                    max_halvings=options.max_halvings, stagnation_window=2 * options.max_iter,
+                    **{**common, "state": None},
+                )  # fmt: skip
+            except ConvergenceError as exc:
+                U = exc.last if exc.last is not None else U
+                continue
+            result.shifted = True  # the path passed a fold
+            return result
+        raise failed
 
     def _suspects(self, U, state) -> list[str]:
         """The terms whose tangent `skcable.fe.check_tangent` finds off at ``U``, worst first."""
@@ -763,6 +825,14 @@ class StrandModel:
     def capacity_curve(self, max_strain=None, n_steps=None, **kwargs):
         """Force–strain curve up to rupture (see [`capacity_curve`][skcable.strand.capacity_curve])."""
         return capacity_curve(self, max_strain, n_steps, **kwargs)
+
+
+def _surrogate(term, output):
+    """A term's potential surrogate (`HelicalWires.frozen`), the term itself if it has a potential,
+    else None."""
+    if hasattr(term, "frozen"):
+        return term.frozen(output)
+    return term if term.symmetric and term.potential is not False else None
 
 
 def _rebuild(cls, strand, length, kwargs):

@@ -7,6 +7,7 @@ Source: S. Pino Vidal, "Rigidez a flexión en cables: análisis numérico", Univ
 
 from __future__ import annotations
 
+import copy
 from functools import lru_cache
 
 import numpy as np
@@ -14,9 +15,9 @@ from scipy.interpolate import PchipInterpolator
 from skfem import asm
 
 from skcable.fe.assembly import contract
-from skcable.strand._bending import critical_curvature
+from skcable.strand._bending import CardouSection, critical_curvature
 from skcable.strand.fe.loads import unit_load
-from skcable.strand.fe.slip import SlipLaw, Stick, slip_law
+from skcable.strand.fe.slip import SlipLaw, SlipPoints, Stick, slip_law
 from skcable.strand.fe.terms import SectionTerm, Term
 
 __all__ = ["HelicalWires", "SinusoidalDamageLoads", "WireBending", "critical_curvature_table"]
@@ -52,7 +53,18 @@ class HelicalWires(SectionTerm):
               + N\,(e_{v'}e_{v'}^T + e_{w'}e_{w'}^T),
               \qquad N = \sum_j s_j\,\partial\varepsilon_j/\partial\varepsilon_a,
 
-    the material stiffness K_L and the geometric stiffness K_G (eq. 4.1). Every wire
+    the material stiffness K_L and the geometric stiffness K_G (eq. 4.1), for a kinematic slip
+    law (`Stick`, `ElementSlip`: the composite curvature κ_c is the law's). Under a section law
+    (`AxisSlip`, any `SlipLaw` with `SlipLaw.moment`) the bending about the centroid is the
+    law's moment instead: with :math:`\hat c = (1, v', -c_y, w', -c_z, 0)`,
+
+    .. math:: S = \sum_j s_j\,(\cos^2\alpha_j\,\hat c + R_j\sin\alpha_j\cos\alpha_j d_j\,e_{\varphi'})
+              + \sum_k \ell_k\,M_{c,k}(\kappa_k, \varepsilon_a),
+
+    :math:`\ell_k` the lever direction of principal axis k (in the v″, w″ components), the wires'
+    strains taken at :math:`\kappa_{c,k} = M_{c,k}/(EI_{stick} - EI_{slip})` (the curvature that
+    carries the law's moment elastically), and the tangent its exact derivative (not symmetric:
+    the term then has no potential). Every wire
     has its own material's σ and E_t (`Layer.material`: a steel core under aluminium
     layers), evaluated per material group; the centroid c(x) is modulus-weighted,
     :math:`\sum E_j A_j\cos^3\alpha_j (y_j, z_j) / \sum E_j A_j\cos^3\alpha_j`.
@@ -115,13 +127,20 @@ class HelicalWires(SectionTerm):
         self._cy, self._cz = self.centroid_y[None], self.centroid_z[None]
         self._neg_c2 = -self.c2
         self._stick_constants(x.shape)
+        self._cardou = CardouSection(section, self.slip.mu)
+        # the composite curvatures and points of `frozen`
+        self._frozen: tuple[np.ndarray, SlipPoints] | None = None
+        if not self.slip.kinematic:  # a section law: a friction moment has no potential
+            self.symmetric, self.potential, self.smooth = False, False, bool(self.slip.smooth)
 
     def _stick_constants(self, shape):
         """What a law that sticks everywhere (`Stick`'s composite, no second derivatives) fixes per
         model: ∂κ_c/∂κ of the unit composite and the rows of ∂ε_j/∂g that do not depend on g."""
         kind = type(self.slip)
         self._sticks = (
-            kind.composite is Stick.composite and kind.second_derivatives is SlipLaw.second_derivatives
+            self.slip.kinematic
+            and kind.composite is Stick.composite
+            and kind.second_derivatives is SlipLaw.second_derivatives
         )
         self._P_stick = contract("kcen,ken,kden->cden", self.levers, np.ones((2, *shape)), self.levers)
         b = self._strain_gradients(np.zeros((6, *shape)), self._P_stick, np.zeros((2, *shape)), self._y.shape)
@@ -147,7 +166,12 @@ class HelicalWires(SectionTerm):
         return self.slip.initial_state((2, *model.x.shape))
 
     def next_state(self, output, state):
-        return self.slip.next_state(output["curvature"], output["kappa_m"], state)
+        return self.slip.next_state(output["curvature"], output["points"], state)
+
+    def points(self, axial_strain, kappa_m=None) -> SlipPoints:
+        """What the slip law sees at the points of axial strain ``axial_strain`` (`SlipPoints`),
+        ``kappa_m`` the kinematic laws' tabulated one."""
+        return SlipPoints(self._cardou, axial_strain, self.kappa_grid[-1], kappa_m)
 
     def _curved_slip(self, D, s, g, axial, levers, k_principal, k_m, dk_m, d_km, state):
         """Stress times the second derivatives of the wire strains through the slip law:
@@ -204,8 +228,13 @@ class HelicalWires(SectionTerm):
         kappa = g[2:5:2]  # (v'', w'') components along y, z
         levers = self.levers
         k_principal = contract("kcen,cen->ken", levers, kappa)
+        if not self.slip.kinematic:
+            if self._frozen is not None:
+                return self._section_frozen(g, step, axial, kappa, k_principal)
+            return self._section_law(g, step, axial, kappa, k_principal)
         k_m, dk_m = self._kappa_m_of(axial)
         state = step.state
+        points = self.points(axial, k_m)
         kappa_c, P, q, d_km = self._slip_derivatives(kappa, k_principal, k_m, dk_m, state)
         y, z, c2 = self._y, self._z, self.c2
         eccentric = self._cy * kappa[0][None] + self._cz * kappa[1][None]
@@ -231,11 +260,123 @@ class HelicalWires(SectionTerm):
             stress=stress,
             curvature=k_principal,
             kappa_m=k_m,
-            slipping=self.slip.slipping(k_principal, k_m, state),
+            slipping=self.slip.slipping(k_principal, points, state),
             axial=axial,
             N=N,
             energy=energy,
+            points=points,
         )
+        return S, D, output
+
+    def _section_law(self, g, step, axial, kappa, k_principal):
+        """`section` under a section law (the class docstring): the law's moment about the
+        centroid, the wires' strains at the composite curvature that carries it."""
+        levers, state = self.levers, step.state
+        points = self.points(axial)
+        M, dM_dk, dM_de = self.slip.moment(k_principal, points, state)
+        EI, d_EI = points.EI_composite, points.d_EI_composite
+        composite = EI > 0.0  # an axis without composite bending: the wires have no lever about it
+        safe = np.where(composite, EI, 1.0)
+        k_c = np.where(composite, M / safe, k_principal)
+        kappa_c = contract("kcen,ken->cen", levers, k_c)
+        P = contract("kcen,ken,kden->cden", levers, np.where(composite, dM_dk / safe, 1.0), levers)
+        q = contract("kcen,ken->cen", levers, np.where(composite, (dM_de - k_c * d_EI) / safe, 0.0))
+        y, z, c2 = self._y, self._z, self.c2
+        eccentric = self._cy * kappa[0][None] + self._cz * kappa[1][None]
+        strain = (
+            c2 * (axial[None] - eccentric - y * kappa_c[0][None] - z * kappa_c[1][None])
+            + self.sc * g[5][None]
+        )
+        stress, tangent = self.materials.stress_and_tangent(strain)
+        stress = stress * self._alive3
+        s, k = self.area_weight * stress, self.area_weight * tangent
+        b = self._strain_gradients(g, P, q, strain.shape)  # ∂ε_j/∂g through the law
+        N = contract("jen,jen->en", s, self.c2)
+        n_b = contract("jen,ajen->aen", k * self.c2, b)  # ∂N/∂g
+        t_b = contract("jen,ajen->aen", k * self.sc, b)  # ∂(Σ s_j R_j sin α cos α d_j)/∂g
+        zero = np.zeros_like(axial)
+        c_hat = np.array([np.ones_like(axial), g[1], -self.centroid_y, g[3], -self.centroid_z, zero])
+        S = c_hat * N
+        S[5] = contract("jen,jen->en", s, self.sc)
+        D = contract("aen,ben->aben", c_hat, n_b)
+        D[5] += t_b
+        D[1, 1] += N  # the geometric stiffness K_G
+        D[3, 3] += N
+        moment = contract("kcen,ken->cen", levers, M)  # the law's moment in the (v'', w'') components
+        S[2] += moment[0]
+        S[4] += moment[1]
+        bending = contract("kcen,ken,kden->cden", levers, dM_dk, levers)
+        strain_row = contract("kcen,ken->cen", levers, dM_de)
+        E = np.array([np.ones_like(axial), g[1], zero, g[3], zero, zero])  # ∂ε_a/∂g
+        for c, row in ((0, 2), (1, 4)):
+            D[row, 2] += bending[c, 0]
+            D[row, 4] += bending[c, 1]
+            D[row] += strain_row[c] * E
+        output = dict(
+            strain=strain,
+            stress=stress,
+            curvature=k_principal,
+            kappa_m=points.kappa_m,
+            slipping=self.slip.slipping(k_principal, points, state),
+            axial=axial,
+            N=N,
+            points=points,
+            composite=k_c,
+        )
+        return S, D, output
+
+    def frozen(self, output):
+        """A potential surrogate of this term under a section law, or None (a kinematic law has
+        its potential; a section law without `SlipLaw.energy` has none): the wires' strains at
+        the composite curvatures of ``output`` (an assembly's), frozen, and the law's moment at
+        its points there, frozen, with the law's potential ψ (``∂ψ/∂κ = M_c``). Its residual is
+        this term's at that assembly's state; it has the energy Σ ∫ A σ dε / cos α + Σ ψ and a
+        symmetric tangent, so a model whose path folds (a softening wire law) can minimise it
+        past the fold and polish the step with the section law from there."""
+        if self.slip.kinematic or type(self.slip).energy is SlipLaw.energy:
+            return None
+        out = copy.copy(self)
+        out._frozen = (output["composite"], output["points"])
+        out.symmetric, out.potential = True, None
+        return out
+
+    def _section_frozen(self, g, step, axial, kappa, k_principal):
+        """`section` of the surrogate of `frozen`."""
+        assert self._frozen is not None  # a surrogate of `frozen`
+        k_c, points = self._frozen
+        levers, state = self.levers, step.state
+        kappa_c = contract("kcen,ken->cen", levers, k_c)
+        eccentric = self._cy * kappa[0][None] + self._cz * kappa[1][None]
+        strain = (
+            self.c2 * (axial[None] - eccentric - self._y * kappa_c[0][None] - self._z * kappa_c[1][None])
+            + self.sc * g[5][None]
+        )
+        stress, tangent, density = self.materials.stress_tangent_energy(strain)
+        stress = stress * self._alive3
+        s, k = self.area_weight * stress, self.area_weight * tangent
+        frozen = np.zeros((2, 2, *axial.shape)), np.zeros((2, *axial.shape))  # κ_c depends on nothing
+        b = self._strain_gradients(g, *frozen, strain.shape)
+        S = contract("jen,ajen->aen", s, b)
+        D = contract("ajen,jen,bjen->aben", b, k, b)
+        N = contract("jen,jen->en", s, self.c2)
+        D[1, 1] += N
+        D[3, 3] += N
+        M, dM_dk, _ = self.slip.moment(k_principal, points, state)
+        psi = self.slip.energy(k_principal, points, state)
+        moment = contract("kcen,ken->cen", levers, M)
+        S[2] += moment[0]
+        S[4] += moment[1]
+        bending = contract("kcen,ken,kden->cden", levers, dM_dk, levers)
+        D[2, 2] += bending[0, 0]
+        D[2, 4] += bending[0, 1]
+        D[4, 2] += bending[1, 0]
+        D[4, 4] += bending[1, 1]
+        energy = np.sum(self.area_weight * density, axis=0) + np.sum(psi, axis=0)
+        output = dict(
+            strain=strain, stress=stress, curvature=k_principal, kappa_m=points.kappa_m,
+            slipping=self.slip.slipping(k_principal, points, state), axial=axial, N=N, points=points,
+            composite=k_c, energy=energy,
+        )  # fmt: skip
         return S, D, output
 
 
