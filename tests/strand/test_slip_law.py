@@ -26,7 +26,7 @@ THETAS = (1e-3, 5e-3, 2e-2)
 
 def _turned(theta):
     return (
-        {"v": 0.0, "v'": theta, "w": 0.0, "w'": 0.0, "phi": 0.0},
+        {"u": 0.0, "v": 0.0, "v'": theta, "w": 0.0, "w'": 0.0, "phi": 0.0},
         {"v": 0.0, "v'": -theta, "w": 0.0, "w'": 0.0, "phi": 0.0},
     )
 

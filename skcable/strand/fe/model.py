@@ -6,8 +6,9 @@ node) and twist φ (as u), on bases that share one quadrature. The physics is a 
 [terms][skcable.strand.Term]; by default the helical wire fibres with a slip law and the wires'
 own bending and torsion (and, for the thesis's reading of the damage, its sinusoidal loads). The
 ends are supports given as data (`skcable.strand.fe.supports`): clamped at both ends by default
-and pulled at x = L, ``u(L) = ε L`` (Pino Vidal 2021, §4.1, "fixed – fixed sliding"), or pinned,
-sliding, free, or any dof fixed at any value.
+and pulled at x = L, ``u(L) = u(0) + ε L`` (Pino Vidal 2021, §4.1, "fixed – fixed sliding"), or
+pinned, sliding, free, or any dof fixed at any value; the axial load at x = L is data too
+(``axial=``): an imposed strain, an axial force, or none.
 
 Pipeline: strand → mesh and bases → supports and terms → `skcable.fe.newton` (or
 `skcable.fe.minimize` when every term has a potential) per step →
@@ -126,8 +127,12 @@ class StrandModel:
     supports : pair of end conditions, optional
         ``(left, right)``, each ``"clamped"``, ``"pinned"``, ``"sliding"``, ``"free"`` or a
         dict ``{dof: value}`` over ``"u"``, ``"v"``, ``"w"``, ``"phi"``, ``"v'"``, ``"w'"``
-        (m, rad): `skcable.strand.fe.supports`. Default: both clamped. The imposed strain
-        always prescribes ``u(L) = ε L``.
+        (m, rad): `skcable.strand.fe.supports`. Default: both clamped.
+    axial : {"strain", "force", "none"}
+        The axial load at x = L (`skcable.strand.fe.supports`): an imposed strain,
+        ``u(L) = u(0) + ε L`` (``solve(strain)``, the capacity curves of the thesis); an axial
+        force P (``solve(force=P)``, load control); or none (``solve()``: u at both ends is a
+        support like the others, a clamped–free strand is free at its tip).
     twist : {"clamped", "free"}
         Shortcut: ``"free"`` frees the twist at x = L (of the default or the given supports).
     element : {"P2", "P3"}
@@ -150,8 +155,10 @@ class StrandModel:
     x : ndarray (n_elements, n_quad)
         Quadrature points (m), scikit-fem's layout: what the terms see.
     fixed, fixed_values : ndarray
-        The dofs the supports fix and their values (the imposed strain's dof excluded);
-        ``pull`` is that dof, ``free`` the rest.
+        The dofs the supports fix and their values (an imposed strain's dof excluded); ``pull``
+        is the axial dof at x = L, ``free`` the dofs a solve moves.
+    axial : str
+        The axial load at x = L.
     """
 
     def __init__(
@@ -169,11 +176,13 @@ class StrandModel:
         physics=None,
         twist: str = "clamped",
         supports=None,
+        axial: str = "strain",
         element: str = "P2",
         options: NewtonOptions | None = None,
     ):
         self.strand, self.length = strand, float(positive("length", length))
-        self.supports = StrandSupports.of(supports, twist)
+        self.supports = StrandSupports.of(supports, twist, axial)
+        self.axial = self.supports.axial
         self.twist = "free" if "phi" not in self.supports.right else "clamped"
         if not 0 <= grading < 1:
             raise InputError("grading", f"must lie in [0, 1), got {grading!r}")
@@ -185,6 +194,10 @@ class StrandModel:
         else:
             self.damage_load = "custom"
         self.terms = check_terms(physics) + check_terms(terms)
+        if self.axial != "strain" and any(isinstance(t, SinusoidalDamageLoads) for t in self.terms):
+            raise InputError(
+                "axial", "the sinusoidal damage loads take the wires' force at the imposed strain: 'strain'"
+            )
         laws = [t.slip for t in self.terms if isinstance(getattr(t, "slip", None), SlipLaw)]
         self.slip = laws[0] if laws else slip_law("none", mu)
         if self.slip.name != "none" and len(strand.layers) != 1:
@@ -211,7 +224,7 @@ class StrandModel:
         self._init = dict(
             strand=strand, length=length, mesh=self.mesh.p[0].copy(), physics=self.terms[: len(physics)],
             terms=self.terms[len(physics) :], supports=self.supports.describe(), element=element,
-            options=options, grading=grading, mu=mu, damage_load=damage_load,
+            options=options, grading=grading, mu=mu, damage_load=damage_load, axial=self.axial,
         )  # fmt: skip
 
     def __repr__(self) -> str:
@@ -219,7 +232,7 @@ class StrandModel:
         return (
             f"StrandModel({s!r}, length={self.length:g} m, {self.mesh.t.shape[1]} elements, "
             f"{self.assembly.N} dofs, slip={self.slip!r}, supports={self.supports.describe()}, "
-            f"terms=[{', '.join(map(repr, self.terms))}])"
+            f"axial={self.axial!r}, terms=[{', '.join(map(repr, self.terms))}])"
         )
 
     def __reduce__(self):
@@ -229,6 +242,7 @@ class StrandModel:
         kwargs = dict(
             mesh=a["mesh"], grading=a["grading"], physics=a["physics"], terms=a["terms"],
             supports=a["supports"], element=a["element"], options=a["options"], mu=a["mu"],
+            axial=a["axial"],
         )  # fmt: skip
         return (_rebuild, (type(self), a["strand"], a["length"], kwargs), {"damage_load": self.damage_load})
 
@@ -260,12 +274,16 @@ class StrandModel:
     def _boundary(self):
         offsets = {name: int(self.offsets[i]) for i, name in enumerate(FIELDS)}
         fixed, values = self.supports.dofs(self.bases, offsets)
-        self.pull = int(offsets["u"] + self.bases["u"].get_dofs("right").nodal["u"][0])
+        self.pull = StrandSupports.index("right", "u", self.bases, offsets)
+        self._left_u = StrandSupports.index("left", "u", self.bases, offsets)
         if np.any(np.diff(fixed) == 0):
             raise InputError("supports", "fix a dof twice (both ends on one node?)")
         self.fixed, self.fixed_values = fixed, values
-        self.free = np.setdiff1d(np.arange(self.assembly.N), np.append(fixed, self.pull))
+        imposed = np.append(fixed, self.pull) if self.axial == "strain" else fixed
+        self.free = np.setdiff1d(np.arange(self.assembly.N), imposed)
         self._reaction_dofs = self.supports.indices(self.bases, offsets)
+        if self.axial == "strain":  # the imposed strain's reaction is the axial force at x = L
+            self._reaction_dofs["right"]["u"] = self.pull
 
     def _equation_groups(self):
         """Dofs of equations of one kind: per field, the values, and the slopes of v and w.
@@ -331,7 +349,7 @@ class StrandModel:
         kept = [t for t in self.terms if not t.damage]
         return type(self)(
             strand, self.length, mesh=self.mesh, physics=kept, supports=self.supports.describe(),
-            element=self.element, options=self.options,
+            axial=self.axial, element=self.element, options=self.options,
         )  # fmt: skip
 
     # --- fields ----------------------------------------------------------------
@@ -358,7 +376,7 @@ class StrandModel:
 
     def uniform(self, strain):
         """Dof vector of the uniform axial strain ``u = strain·x`` (the straight start), with the
-        supports' prescribed values."""
+        supports' prescribed values (and, under an imposed strain, ``u(L) = u(0) + strain·L``)."""
         U = np.zeros(self.assembly.N)
         u = self.bases["u"]
         if isinstance(u.elem, ElementLineP2):
@@ -367,10 +385,22 @@ class StrandModel:
             U[u.nodal_dofs[0]] = strain * self.mesh.p[0]
         return self._prescribed(U, strain)
 
-    def _prescribed(self, U, strain):
+    def _prescribed(self, U, load):
+        """``U`` with the supports' values and, under an imposed strain ``load``, ``u(L)``."""
         U[self.fixed] = self.fixed_values
-        U[self.pull] = strain * self.length + self.supports.left["u"]
+        if self.axial == "strain":
+            U[self.pull] = load * self.length + self.supports.left["u"]
         return U
+
+    def _start(self, load):
+        """The straight start of a solve: the uniform strain of the load (P / EA under a force)."""
+        if self.axial == "strain":
+            return self.uniform(load)
+        return self.uniform(load / self.EA if self.axial == "force" else 0.0)
+
+    def strain_of(self, U) -> float:
+        """The strand's mean axial strain ``(u(L) − u(0)) / L`` of the dofs ``U``."""
+        return float((U[self.pull] - U[self._left_u]) / self.length)
 
     def initial_state(self):
         """The terms' states at the start of a curve (all stick)."""
@@ -400,11 +430,13 @@ class StrandModel:
         return term.bind(self)
 
     # --- assembly ----------------------------------------------------------------
-    def _assemble(self, U, state, strain, bound=None):
+    def _assemble(self, U, state, load, bound=None):
         """Residual, element matrices of the section terms, other tangents, the terms' outputs,
-        and the size of what each equation sums (for the force scales); ``bound`` replaces the
-        model's bound terms (a surrogate, `_pass_fold`)."""
+        and the size of what each equation sums (for the force scales), at the axial ``load``
+        (the imposed strain, or the axial force at x = L, or 0); ``bound`` replaces the model's
+        bound terms (a surrogate, `_pass_fold`)."""
         state = self.initial_state() if state is None else state
+        strain = load if self.axial == "strain" else self.strain_of(U)
         if bound is None:
             section_terms, other_terms = self._section_terms, self._other_terms
         else:
@@ -445,9 +477,14 @@ class StrandModel:
             if energy is not None:
                 e = t.energy(U, step) if t.potential is not False else None
                 energy = None if e is None else energy + e
+        if self.axial == "force" and load != 0.0:  # the axial force at x = L: a dead load
+            R = R.copy()
+            R[self.pull] -= load
+            size[self.pull] += abs(load)
+            energy = None if energy is None else energy - load * float(U[self.pull])
         return dict(
             R=R, extra=extra, outputs=outputs, g=g, S=S, D=D, energy=energy, size=size, strain=strain,
-            state=state,
+            state=state, load=load,
         )  # fmt: skip
 
     def _element_matrices(self, a):
@@ -457,10 +494,12 @@ class StrandModel:
             a["Ke"] = self.section_matrices(a["D"]) if a["D"] is not None else None
         return a["Ke"]
 
-    def assemble(self, U, state=None):
+    def assemble(self, U, state=None, *, force: float = 0.0):
         """``(R, K, outputs)``: residual (N,), tangent (CSR, N × N) and the terms' outputs at ``U``
-        (the imposed strain is read from U at the pulled end; ``state`` as from a solve)."""
-        a = self._assemble(U, state, (U[self.pull] - self.supports.left["u"]) / self.length)
+        (an imposed strain is read from U at the pulled end; under ``axial="force"`` the axial
+        force at x = L is ``force``; ``state`` as from a solve)."""
+        load = (U[self.pull] - self.supports.left["u"]) / self.length if self.axial == "strain" else force
+        a = self._assemble(U, state, load)
         return a["R"], self._global_tangent(a), a["outputs"]
 
     def _global_tangent(self, a):
@@ -474,7 +513,7 @@ class StrandModel:
         """``(R, K)`` of one term alone at ``U`` (for `skcable.fe.check_tangent`): its residual
         (N,) and its tangent (CSR, N × N); ``state`` the term's state (default: its initial one)."""
         bound = self.bound(term)
-        strain = (U[self.pull] - self.supports.left["u"]) / self.length
+        strain = self.strain_of(U)
         step = Step(strain, self.x, bound.initial_state(self) if state is None else state)
         if isinstance(bound, SectionTerm):
             S, D, _ = bound.section(self.generalized_strains(U), step)
@@ -545,9 +584,14 @@ class StrandModel:
             return "semismooth"
         return "minimize" if potential and search in ("auto", "energy") else "newton"
 
+    def _load_name(self, load) -> str:
+        if self.axial == "strain":
+            return f"at strain {load:.6g}"
+        return f"at axial force {load:.6g} N" if self.axial == "force" else "without axial load"
+
     def _newton(self, U, strain, state, options: NewtonOptions):
-        U = self.uniform(strain) if U is None else self._prescribed(np.array(U, dtype=float), strain)
-        name = f"StrandModel: Newton at strain {strain:.6g}"
+        U = self._start(strain) if U is None else self._prescribed(np.array(U, dtype=float), strain)
+        name = f"StrandModel: Newton {self._load_name(strain)}"
 
         def assemble(x):
             return self._assemble(x, state, strain)
@@ -657,13 +701,13 @@ class StrandModel:
         points frozen at the current state), minimise the surrogate's energy (which passes a fold
         of the path, as `_minimize` does) and polish the step with the model's own Newton from
         there, refreezing at most ``rounds`` times; else raise ``failed``."""
-        strain, state = first["strain"], first["state"]
+        load, state = first["load"], first["state"]
         for _ in range(rounds):
             start = assemble(U)
             bound = [_surrogate(t, o) for t, o in zip(self._bound, start["outputs"], strict=True)]
             if any(t is None for t in bound):
                 raise failed
-            surrogate = functools.partial(self._assemble, state=state, strain=strain, bound=bound)
+            surrogate = functools.partial(self._assemble, state=state, load=load, bound=bound)
             try:
                 U = self._minimize(
                     surrogate, U, options, {**common, "state": None}, halvings=40,
@@ -705,7 +749,7 @@ class StrandModel:
         if not suspects:  # every tangent is right: a nearly singular tangent (a fold) converges linearly
             return
         warnings.warn(
-            f"StrandModel: Newton at strain {strain:.6g} converged linearly (ratios "
+            f"StrandModel: Newton {self._load_name(strain)} converged linearly (ratios "
             f"{', '.join(f'{q:.2f}' for q in ratios)}) where the tangent should give quadratic "
             f"convergence; tangents off by check_tangent: {', '.join(suspects)}",
             SlowConvergenceWarning,
@@ -713,18 +757,27 @@ class StrandModel:
         )
 
     def solve(
-        self, strain: float, guess=None, state=None, *, passes: int = 6, options=None, **newton_options
+        self,
+        strain: float | None = None,
+        guess=None,
+        state=None,
+        *,
+        force: float | None = None,
+        passes: int = 6,
+        options=None,
+        **newton_options,
     ):
-        """Equilibrium at the imposed axial strain ``u(L) = strain·L``: a
-        [`StepResult`][skcable.strand.StepResult].
+        """Equilibrium under the model's axial load: a [`StepResult`][skcable.strand.StepResult].
 
-        ``guess``: starting dofs (default: the uniform strain). ``state``: the terms' states
-        (default: all stick). Each state is frozen within a Newton solve and updated from the
-        converged solution, the step re-solved until the states settle (``passes`` at most); a
-        state that cycles, or whose re-solve fails, is left as it was and the step is reported
-        as not ``settled``. Newton options: ``options`` (a `NewtonOptions`, default the model's)
-        and any of its fields as keywords (``tol``, ``atol``, ``max_iter``, ``line_search``,
-        ``callback``, ...).
+        ``strain``: the imposed axial strain ``u(L) = u(0) + strain·L`` (``axial="strain"``);
+        ``force``: the axial force at x = L (N, ``axial="force"``); neither under
+        ``axial="none"``. ``guess``: starting dofs (default: the uniform strain of the load).
+        ``state``: the terms' states (default: all stick). Each state is frozen within a Newton
+        solve and updated from the converged solution, the step re-solved until the states
+        settle (``passes`` at most); a state that cycles, or whose re-solve fails, is left as it
+        was and the step is reported as not ``settled``. Newton options: ``options`` (a
+        `NewtonOptions`, default the model's) and any of its fields as keywords (``tol``,
+        ``atol``, ``max_iter``, ``line_search``, ``callback``, ...).
 
         Raises
         ------
@@ -733,10 +786,7 @@ class StrandModel:
         InputError
             A bad option, or a callback that raised (the iteration is named).
         """
-        strain = float(strain)
-        if not np.isfinite(strain):
-            raise InputError("strain", f"must be finite, got {strain!r}")
-        _plausible.strand_strain("strain", strain, [m.eps_rupture for m in self.strand.materials])
+        strain = self._load_of(strain, force)
         options = NewtonOptions.of(self.options if options is None else options, **newton_options)
         whole("passes", passes, 0)
         state = self.initial_state() if state is None else tuple(state)
@@ -763,7 +813,28 @@ class StrandModel:
             settled = False
         return self._step_result(strain, result, state, settled, assemblies, shifted)
 
-    def _step_result(self, strain, result, state, settled, assemblies, shifted=False):
+    def _load_of(self, strain, force) -> float:
+        """The load of a solve from `solve`'s ``strain`` and ``force``, checked against ``axial``."""
+        wanted = {"strain": "strain", "force": "force", "none": None}[self.axial]
+        for name, value in (("strain", strain), ("force", force)):
+            if value is not None and name != wanted:
+                needs = f"solve({wanted}=...)" if wanted else "solve() with no load"
+                raise InputError(name, f"the model's axial load is {self.axial!r}: {needs}")
+        if wanted is None:
+            return 0.0
+        value = strain if wanted == "strain" else force
+        if value is None:
+            raise InputError(wanted, f"the model's axial load is {self.axial!r}: give solve({wanted}=...)")
+        if isinstance(value, bool) or not isinstance(value, (int, float, np.integer, np.floating)):
+            raise InputError(wanted, f"must be a real number, got {value!r}")
+        value = float(value)
+        if not np.isfinite(value):
+            raise InputError(wanted, f"must be finite, got {value!r}")
+        if wanted == "strain":
+            _plausible.strand_strain("strain", value, [m.eps_rupture for m in self.strand.materials])
+        return value
+
+    def _step_result(self, load, result, state, settled, assemblies, shifted=False):
         a, U = result.state, result.x
         # the wire kinematics of the first term that reports them (HelicalWires, AnnexE, ...)
         wires = next((o for o in a["outputs"] if o and {"strain", "curvature", "kappa_m"} <= set(o)), None)
@@ -781,9 +852,13 @@ class StrandModel:
                 N=S[0] if S is not None else zeros[0],
             )
         alive = ~self.layout.wire_broken[:, None, None]
+        if self.axial == "force":
+            force = load
+        else:  # the reaction of the imposed strain or of a support holding u(L); 0 where it is free
+            force = float(a["R"][self.pull]) if self.axial == "strain" or self.pull in self.fixed else 0.0
         return StepResult(
-            strain=strain,
-            force=float(a["R"][self.pull]),
+            strain=a["strain"],
+            force=force,
             x=self.x,
             curvature=wires["curvature"],
             kappa_m=wires["kappa_m"],
