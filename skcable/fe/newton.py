@@ -161,19 +161,21 @@ class NewtonResult:
     def iterations(self) -> int:
         return len(self.history) - 1
 
-    def linear_rate(self, tol: float) -> list[float] | None:
-        """The contraction ratios of the last full steps if this converged *linearly*, else None.
+    def linear_rate(self, tol: float, full_steps: bool = True) -> list[float] | None:
+        """The contraction ratios of the last steps if this converged *linearly*, else None.
 
         Newton with a consistent tangent converges quadratically once the residual is small:
         ``r_{k+1} ≤ C r_k²``, so successive ratios ``r_{k+1}/r_k`` fall fast. A wrong tangent
-        gives a constant ratio instead (`linear_tail`), here over the full steps taken below a
-        residual of 1e-2, none of them limited by the round-off floor (1e3·tol below).
+        gives a constant ratio instead (`linear_tail`), here over the steps taken below a
+        residual of 1e-2, none of them limited by the round-off floor (1e3·tol below): the full
+        steps only, or (``full_steps=False``) every step, whatever the line search cut (a wrong
+        tangent whose every step the line search halves converges linearly too).
         """
         r, t = self.history, self.steps
         ratios = [
             r[k + 1] / r[k]
             for k in range(len(r) - 1)
-            if t[k] == 1.0 and 0 < r[k] < 1e-2 and r[k + 1] > 1e-3 * tol
+            if (t[k] == 1.0 or not full_steps) and 0 < r[k] < 1e-2 and r[k + 1] > 1e-3 * tol
         ]
         return linear_tail(ratios)
 
@@ -403,6 +405,7 @@ def minimize(
     atol: float = 0.0,
     absolute: Callable[[Any], float] | None = None,
     callback: Callable | None = None,
+    rejects: tuple[type[Exception], ...] = (),
 ) -> NewtonResult:
     r"""Newton for a problem with a potential Π (residual R = ∇Π, tangent K = ∇²Π), shifted where
     K is not positive definite: a Newton that passes the folds of a softening law.
@@ -421,7 +424,8 @@ def minimize(
     nor the energy moves over ``window`` iterations, or after ``max_iter`` iterations.
     ``NewtonResult.shifted`` tells whether the shift was needed: the path passed a point where
     the tangent was not positive definite (a fold of the equilibrium path under the imposed
-    data). ``callback`` as in `newton`.
+    data). ``callback`` and ``rejects`` (exceptions of a trial's ``assemble`` that reject it: the
+    step is halved) as in `newton`.
     """
 
     def converged(s, value):
@@ -457,7 +461,7 @@ def minimize(
         shifted = shifted or more
         slope = float(gradient(state) @ d)
         step, tried = _energy_step(
-            assemble, energy, norm, converged, x, d, Pi, current, slope, halvings, noise
+            assemble, energy, norm, converged, x, d, Pi, current, slope, halvings, noise, rejects
         )
         assemblies += tried
         if step is not None:
@@ -490,13 +494,17 @@ def _shifted_increment(solve, state, mu: float, mu0: float, mu_max: float) -> tu
                 raise
 
 
-def _energy_step(assemble, energy, norm, converged, x, d, Pi, current, slope, halvings, noise):
+def _energy_step(assemble, energy, norm, converged, x, d, Pi, current, slope, halvings, noise, rejects=()):
     """`minimize`'s line search along ``d``, t = 1, ½, … (its docstring): ``((t, x, state,
     norm), assemblies)`` of the accepted trial, or ``(None, halvings)`` when none is."""
     t = 1.0
     for k in range(halvings):
         trial_x = x + t * d
-        trial = assemble(trial_x)
+        try:
+            trial = assemble(trial_x)
+        except rejects:
+            t *= 0.5
+            continue
         n_t = norm(trial)
         if converged(trial, n_t):  # accepted whatever its energy: tested first
             return (t, trial_x, trial, n_t), k + 1

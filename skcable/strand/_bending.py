@@ -69,7 +69,25 @@ from skcable.errors import InputError
 from skcable.strand._arguments import float_array, is_real_number, principal_axis, real_number
 from skcable.strand._section import Section
 
-__all__ = ["BendingLaw", "CardouSection", "critical_curvature"]
+__all__ = ["BendingLaw", "CardouSection", "MAX_FRICTION", "critical_curvature", "friction"]
+
+#: the largest friction coefficient between wires taken: measured wire-on-wire coefficients lie
+#: between about 0.1 and 1 (Cardou 2013; Pino Vidal 2021 uses 0.3 to 0.7), and the capstan gain
+#: exp(μ π sin α) of a larger one sends the wire forces of the friction moment beyond any wire's
+#: strength
+MAX_FRICTION = 2.0
+
+
+def friction(mu) -> float:
+    """``mu`` checked: a real number in ``[0, MAX_FRICTION]`` (`InputError` naming ``mu``)."""
+    mu = real_number("mu", mu, lower=0.0)
+    if mu > MAX_FRICTION:
+        raise InputError(
+            "mu",
+            f"must lie in [0, {MAX_FRICTION:g}] (friction between wires: about 0.1 to 1; Cardou 2013 and "
+            f"Pino Vidal 2021 use 0.3 to 0.7), got {mu!r}",
+        )
+    return mu
 
 
 def _section(section) -> Section:
@@ -249,7 +267,7 @@ def critical_curvature(section, mu: float, axial_strain) -> np.ndarray:
         the documented constant ``2 ε_rupture / d_max`` (see `BendingLaw`).
     """
     section = _section(section)
-    mu = real_number("mu", mu, lower=0.0)
+    mu = friction(mu)
     return _law(section, mu, _strains(section, axial_strain, scalar=False))["kappa_m"]
 
 
@@ -286,7 +304,7 @@ class BendingLaw:
 
     def __init__(self, section, *, mu: float, axial_strain: float):
         self.section = _section(section)
-        self.mu = real_number("mu", mu, lower=0.0)
+        self.mu = friction(mu)
         self.axial_strain = float(_strains(section, axial_strain, scalar=True)[0])
         law = _law(section, self.mu, np.array([self.axial_strain]))
         self.EI_stick, self.EI_slip, self.M_rf, self.kappa_m = (

@@ -494,8 +494,14 @@ def capacity_curve(
         while path.eps < goal - 1e-15 and failure is None:
             step, target, cut, last = path.solve(control, goal, smallest)
             if step is None:
-                failure = f"no convergence beyond strain {path.eps:.6g} (increment cut to 1/64 of the step)"
+                where = (
+                    f"strain {path.eps:.6g}"
+                    if getattr(model, "axial", "strain") == "strain"
+                    else (f"force {path.eps:.6g} N")
+                )
+                failure = f"no convergence beyond {where} (increment cut to 1/64 of the step)"
                 failure += _softening_note(model, path.steps[-1] if path.steps else None)
+                failure += _last_note(model, last, target, path.state)
                 if on_failure == "raise":
                     assert last is not None  # the solve that failed last
                     raise ConvergenceError("capacity_curve: " + failure, last.history) from last
@@ -612,9 +618,10 @@ class _Path:
 
     def _solve(self, load, guess, state, **kwargs) -> StepResult:
         """The model's step at ``load``: an imposed strain, or an axial force (``axial="force"``)."""
+        kwargs.update(options=self.options, diagnose=False)  # the final failure is explained once
         if getattr(self.model, "axial", "strain") == "force":
-            return self.model.solve(None, guess, state, force=load, options=self.options, **kwargs)
-        return self.model.solve(load, guess, state, options=self.options, **kwargs)
+            return self.model.solve(None, guess, state, force=load, **kwargs)
+        return self.model.solve(load, guess, state, **kwargs)
 
     def add(self, step: StepResult, target: float) -> None:
         """Keep a converged step at strain ``target``; end the curve at the rupture strain if a
@@ -652,6 +659,16 @@ class _Path:
             steps[-1] = self._solve(loads[-1], guess, steps[-2].state if len(steps) > 1 else None)
         except ConvergenceError:
             pass  # keep the step beyond rupture: the curve itself ends at the rupture strain
+
+
+def _last_note(model, last, load, state) -> str:
+    """What the last failed solve said, and what its tangent shows (`StrandModel.explain`)."""
+    if last is None:
+        return ""
+    said = str(last.args[0]).split(" (last ")[0]
+    explain = getattr(model, "explain", None)
+    modes = explain(last.last, load, state) if explain is not None and last.last is not None else ""
+    return f"; the last solve: {said}" + (f"; {modes}" if modes and modes not in said else "")
 
 
 def _softening_note(model, step) -> str:

@@ -42,12 +42,14 @@ import scipy.sparse as sp
 from skfem import Basis, ElementLineHermite, ElementLineP2, MeshLine
 
 from skcable import _plausible
-from skcable._checks import nonnegative, positive, whole
-from skcable.errors import ConvergenceError, InputError, SlowConvergenceWarning
+from skcable._checks import positive, whole
+from skcable.errors import ConvergenceError, InputError, NonFiniteError, SlowConvergenceWarning
 from skcable.fe import Assembly, LinearSystem, NewtonOptions, minimize, newton
 from skcable.fe.elements import ElementLinePpExact
 from skcable.fe.newton import linear_tail
+from skcable.strand._bending import friction
 from skcable.strand.capacity import StepResult, StrandLayout, capacity_curve
+from skcable.strand.fe.diagnosis import FirstSolveCheck, non_finite, tangent_modes
 from skcable.strand.fe.slip import SlipLaw, slip_law
 from skcable.strand.fe.supports import StrandSupports
 from skcable.strand.fe.terms import FIELDS, STRAINS, SectionTerm, Step, check_terms
@@ -70,6 +72,10 @@ ROUND_OFF = 100 * np.finfo(float).eps
 TANGENT_ERROR = 1e-6
 #: the merits a semismooth step is measured against (`skcable.fe.newton` ``nonmonotone``)
 NONMONOTONE = 10
+#: the largest relative error of the curvature scikit-fem's Hermite basis (a global polynomial in
+#: x, inverted per element) may carry: about ε·(x/h)³ for an element of length h at x (measured:
+#: 1.7e-10 at x/h = 100, 1.8e-7 at 1000, 1.5e-4 at 10,000; at 270,000 the inversion fails)
+BASIS_ERROR = 1e-5
 
 
 def default_physics(slip="none", mu: float = 0.5, damage_load: str = "eccentricity") -> list:
@@ -140,6 +146,10 @@ class StrandModel:
     options : NewtonOptions, optional
         Default Newton settings of `solve` and `capacity_curve` (tolerances, iterations, line
         search, callback); each call may override them.
+    check_tangents : bool
+        On the model's first solve, check the tangent of every term an analyst wrote against a
+        directional difference of its residual (`skcable.strand.fe.diagnosis`: two residual
+        evaluations per term, once; a `skcable.errors.TangentWarning` names a term that is off).
 
     Attributes
     ----------
@@ -179,6 +189,7 @@ class StrandModel:
         axial: str = "strain",
         element: str = "P2",
         options: NewtonOptions | None = None,
+        check_tangents: bool = True,
     ):
         self.strand, self.length = strand, float(positive("length", length))
         self.supports = StrandSupports.of(supports, twist, axial)
@@ -186,7 +197,7 @@ class StrandModel:
         self.twist = "free" if "phi" not in self.supports.right else "clamped"
         if not 0 <= grading < 1:
             raise InputError("grading", f"must lie in [0, 1), got {grading!r}")
-        nonnegative("mu", mu)
+        friction(mu)
         self.options = NewtonOptions.of(options)
         if physics is None:
             physics = default_physics(slip, mu, damage_load)
@@ -217,6 +228,7 @@ class StrandModel:
         self._section_terms = [(i, t) for i, t in enumerate(self._bound) if isinstance(t, SectionTerm)]
         self._other_terms = [(i, t) for i, t in enumerate(self._bound) if not isinstance(t, SectionTerm)]
         self._system = LinearSystem(self.assembly.banded(self.free))
+        self._first = FirstSolveCheck(self, check_tangents)
         self._groups = self._equation_groups()
         self._group_index = self._index_groups()
         self._metric = None  # the elastic tangent of the straight strand, in the solver's storage
@@ -225,6 +237,7 @@ class StrandModel:
             strand=strand, length=length, mesh=self.mesh.p[0].copy(), physics=self.terms[: len(physics)],
             terms=self.terms[len(physics) :], supports=self.supports.describe(), element=element,
             options=options, grading=grading, mu=mu, damage_load=damage_load, axial=self.axial,
+            check_tangents=bool(check_tangents),
         )  # fmt: skip
 
     def __repr__(self) -> str:
@@ -242,7 +255,7 @@ class StrandModel:
         kwargs = dict(
             mesh=a["mesh"], grading=a["grading"], physics=a["physics"], terms=a["terms"],
             supports=a["supports"], element=a["element"], options=a["options"], mu=a["mu"],
-            axial=a["axial"],
+            axial=a["axial"], check_tangents=a["check_tangents"],
         )  # fmt: skip
         return (_rebuild, (type(self), a["strand"], a["length"], kwargs), {"damage_load": self.damage_load})
 
@@ -266,9 +279,30 @@ class StrandModel:
             )
             s = np.linspace(0.0, 1.0, n + 1)
             nodes = self.length * (s - grading * np.sin(2 * np.pi * s) / (2 * np.pi))
+        self._check_basis(nodes, n_elements, mesh)
         L = self.length
         return MeshLine(nodes).with_boundaries(
             {"left": lambda x: np.isclose(x[0], 0.0), "right": lambda x: np.isclose(x[0], L)}
+        )
+
+    def _check_basis(self, nodes, n_elements, mesh):
+        """Refuse a mesh whose Hermite basis would lose more than `BASIS_ERROR` of the curvature
+        (before anything is built: scikit-fem's inversion of it may fail outright)."""
+        h = np.diff(nodes)
+        reach = np.maximum(np.abs(nodes[:-1]), np.abs(nodes[1:])) / h
+        error = np.finfo(float).eps * float(np.max(reach)) ** 3
+        if error <= BASIS_ERROR:
+            return
+        k = int(np.argmax(reach))
+        largest = int(len(h) * (BASIS_ERROR / error) ** (1 / 3))
+        argument = "mesh" if mesh is not None else "n_elements" if n_elements is not None else "length"
+        raise InputError(
+            argument,
+            f"length = {self.length:g} m on {len(h)} elements: the element at x = {nodes[k + 1]:.4g} m is "
+            f"{h[k]:.3g} m long, 1/{reach[k]:.3g} of its distance from x = 0, and scikit-fem's Hermite "
+            f"basis of v and w (a polynomial in x) would give its curvature a relative error of about "
+            f"{error:.1g} (more than {BASIS_ERROR:g}); give at most about {largest} elements "
+            "(n_elements), or model a shorter specimen (the clamps' boundary layers span about sqrt(EI/N))",
         )
 
     def _boundary(self):
@@ -477,6 +511,10 @@ class StrandModel:
             if energy is not None:
                 e = t.energy(U, step) if t.potential is not False else None
                 energy = None if e is None else energy + e
+        if not (np.all(np.isfinite(R)) and (D is None or np.all(np.isfinite(D)))) or any(
+            not np.all(np.isfinite(K.data if sp.issparse(K) else K)) for K in extra
+        ):
+            raise self._non_finite(U, state, load, section_terms, other_terms)
         if self.axial == "force" and load != 0.0:  # the axial force at x = L: a dead load
             R = R.copy()
             R[self.pull] -= load
@@ -486,6 +524,21 @@ class StrandModel:
             R=R, extra=extra, outputs=outputs, g=g, S=S, D=D, energy=energy, size=size, strain=strain,
             state=state, load=load,
         )  # fmt: skip
+
+    def _non_finite(self, U, state, load, section_terms, other_terms):
+        """The `NonFiniteError` naming the terms whose residual or tangent is not finite at ``U``."""
+        strain = load if self.axial == "strain" else self.strain_of(U)
+        g = self.generalized_strains(U)
+        pieces = []
+        for group in (section_terms, other_terms):
+            for i, t in group:
+                step = Step(strain, self.x, state[i])
+                try:
+                    out = t.section(g, step)[:2] if isinstance(t, SectionTerm) else t.contribute(U, step)[:2]
+                except NonFiniteError as exc:  # a law inside the term named itself
+                    return exc
+                pieces.append((t, *out))
+        return non_finite(self, pieces, self._load_name(load))
 
     def _element_matrices(self, a):
         """The section terms' element matrices of an assembly ``a`` (None without section terms),
@@ -525,6 +578,15 @@ class StrandModel:
     def free_dofs(self):
         """The dofs a solve moves (for `skcable.fe.check_tangent`)."""
         return self.free
+
+    def tangent_check_state(self) -> np.ndarray:
+        """A generic, non-trivial state for `skcable.fe.check_tangent` without ``U``: the uniform
+        strain 0.002 (the force EA·0.002 under ``axial="force"``, none under ``"none"``) with every
+        free dof moved by a random 1e-5·L (a seeded draw: the same state every time)."""
+        load = {"strain": 0.002, "force": 0.002 * self.EA, "none": 0.0}[self.axial]
+        U = self._start(load)
+        U[self.free] += 1e-5 * self.length * np.random.default_rng(1).standard_normal(self.free.size)
+        return U
 
     def _band_of(self, a):
         """The free–free tangent of an assembly in the solver's storage (section terms and the others)."""
@@ -589,33 +651,62 @@ class StrandModel:
             return f"at strain {load:.6g}"
         return f"at axial force {load:.6g} N" if self.axial == "force" else "without axial load"
 
-    def _newton(self, U, strain, state, options: NewtonOptions):
+    def _newton(self, U, strain, state, options: NewtonOptions, diagnose: bool = True):
         U = self._start(strain) if U is None else self._prescribed(np.array(U, dtype=float), strain)
         name = f"StrandModel: Newton {self._load_name(strain)}"
 
+        first_check, non_finite_seen = self._first, []
+
         def assemble(x):
-            return self._assemble(x, state, strain)
+            try:
+                a = self._assemble(x, state, strain)
+            except NonFiniteError as exc:  # a trial is rejected (halved); keep the name for the error
+                non_finite_seen.append(exc)
+                raise
+            if first_check.pending:
+                first_check(x, state)
+            return a
 
         first = assemble(U)
         kind = self._solver(first, options)
         try:
             return self._run(kind, assemble, U, first, options, name, strain, state)
+        except NonFiniteError:
+            raise
         except ConvergenceError as exc:
             # a solve that crawled linearly to its iteration limit: name the terms whose tangent is off
             h = exc.history
             crawled = len(h) > 3 and linear_tail(np.divide(h[1:], h[:-1])) is not None
             linear = kind != "semismooth" and exc.last is not None and crawled
             suspects = self._suspects(exc.last, state) if linear else []
-            if not suspects:
+            off = f"; tangents off by check_tangent: {', '.join(suspects)}"
+            note = off if suspects else first_check.note()
+            if non_finite_seen:
+                note += f"; on the way, {non_finite_seen[-1].args[0]}"
+            if diagnose:
+                modes = self.explain(exc.last if exc.last is not None else U, strain, state)
+                note += f"; {modes}" if modes else ""
+            if not note:
                 raise
-            raise ConvergenceError(
-                f"{exc.args[0]}; tangents off by check_tangent: {', '.join(suspects)}", exc.history, exc.last
-            ) from None
+            raise _amended(exc, note) from None
+
+    def explain(self, U, load=None, state=None) -> str:
+        """What the tangent at ``U`` says about a failed solve: the dofs its null vectors move (a
+        missing support) or its negative modes (under compression: a load beyond buckling), ""
+        when it is regular and positive definite (`skcable.strand.fe.diagnosis.tangent_modes`).
+        ``load``: the solve's strain or force (read from ``U`` under an imposed strain, 0 by
+        default otherwise); ``state``: the terms' states."""
+        if load is None:
+            load = self.strain_of(np.asarray(U, dtype=float)) if self.axial == "strain" else 0.0
+        try:
+            return tangent_modes(self, self._assemble(np.asarray(U, dtype=float), state, load))
+        except (ConvergenceError, np.linalg.LinAlgError, ValueError):
+            return ""
 
     def _run(self, kind, assemble, U, first, options, name, strain, state):
         common = dict(
             norm=lambda a: self._norm(a, options.tol), tol=options.tol, atol=options.atol,
-            name=name, state=first, callback=options.callback,
+            name=name, state=first, callback=options.callback, rejects=(NonFiniteError,),
             absolute=lambda a: float(np.max(np.abs(a["R"][self.free]), initial=0.0)),
         )  # fmt: skip
         if kind == "minimize":  # every term has a potential: minimise it, shifted at folds
@@ -742,7 +833,7 @@ class StrandModel:
         return [f"{t!r} ({e:.1e})" for e, t in sorted(errors, key=lambda p: -p[0]) if e > TANGENT_ERROR]
 
     def _warn_if_linear(self, result, tol, state, strain):
-        ratios = result.linear_rate(tol)
+        ratios = result.linear_rate(tol, full_steps=False)
         if ratios is None:
             return
         suspects = self._suspects(result.x, state)
@@ -765,6 +856,7 @@ class StrandModel:
         force: float | None = None,
         passes: int = 6,
         options=None,
+        diagnose: bool = True,
         **newton_options,
     ):
         """Equilibrium under the model's axial load: a [`StepResult`][skcable.strand.StepResult].
@@ -777,7 +869,9 @@ class StrandModel:
         settle (``passes`` at most); a state that cycles, or whose re-solve fails, is left as it
         was and the step is reported as not ``settled``. Newton options: ``options`` (a
         `NewtonOptions`, default the model's) and any of its fields as keywords (``tol``,
-        ``atol``, ``max_iter``, ``line_search``, ``callback``, ...).
+        ``atol``, ``max_iter``, ``line_search``, ``callback``, ...). ``diagnose``: on failure,
+        read the tangent's singular or negative modes into the message (an eigendecomposition
+        of its free block; `capacity_curve` skips it for the steps it cuts back).
 
         Raises
         ------
@@ -790,7 +884,7 @@ class StrandModel:
         options = NewtonOptions.of(self.options if options is None else options, **newton_options)
         whole("passes", passes, 0)
         state = self.initial_state() if state is None else tuple(state)
-        result = self._newton(guess, strain, state, options)
+        result = self._newton(guess, strain, state, options, diagnose)
         settled, seen, assemblies, shifted = True, [state], result.assemblies, result.shifted
         for _ in range(passes):
             outputs = result.state["outputs"]
@@ -831,6 +925,10 @@ class StrandModel:
         if not np.isfinite(value):
             raise InputError(wanted, f"must be finite, got {value!r}")
         if wanted == "strain":
+            if abs(value) >= 1.0:
+                raise InputError(
+                    "strain", f"must lie in (-1, 1): {value!r} stretches the strand to nothing or doubles it"
+                )
             _plausible.strand_strain("strain", value, [m.eps_rupture for m in self.strand.materials])
         return value
 
@@ -900,6 +998,13 @@ class StrandModel:
     def capacity_curve(self, max_strain=None, n_steps=None, **kwargs):
         """Force–strain curve up to rupture (see [`capacity_curve`][skcable.strand.capacity_curve])."""
         return capacity_curve(self, max_strain, n_steps, **kwargs)
+
+
+def _amended(exc: ConvergenceError, note: str) -> ConvergenceError:
+    """``exc`` with ``note`` added to its message (its history and last iterate kept)."""
+    out = ConvergenceError(exc.args[0] + note)
+    out.history, out.last = exc.history, exc.last
+    return out
 
 
 def _surrogate(term, output):

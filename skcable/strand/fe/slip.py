@@ -45,9 +45,8 @@ from functools import cached_property
 
 import numpy as np
 
-from skcable._checks import nonnegative
 from skcable.errors import InputError
-from skcable.strand._bending import CardouSection
+from skcable.strand._bending import CardouSection, friction
 
 __all__ = ["SlipLaw", "SlipPoints", "Stick", "AxisSlip", "ElementSlip", "slip_law"]
 
@@ -137,7 +136,7 @@ class SlipLaw:
     smooth = True
 
     def __init__(self, mu: float = 0.5):
-        self.mu = float(nonnegative("mu", mu))
+        self.mu = friction(mu)
 
     def __repr__(self) -> str:
         return f"{type(self).__name__}(mu={self.mu:g})"

@@ -54,6 +54,9 @@ END_CONDITIONS = {
 }
 #: what loads the axial dof at x = L: an imposed strain, an axial force, or nothing
 AXIAL_LOADS = ("strain", "force", "none")
+#: the largest prescribed end slope (rad): the moderate-rotation strain u' + ½v'² errs by about
+#: v'²/4 of the stretch of the bent axis against the exact one, 1.6 % at 0.25 rad
+MAX_SLOPE = 0.25
 #: (field, scikit-fem nodal dof name) of each dof
 _FIELD_DOF = {
     "u": ("u", "u"),
@@ -86,6 +89,12 @@ def _end(name: str, given) -> dict[str, float]:
         if np.ndim(value) != 0:
             raise InputError(
                 "supports", f"{name} end: the value of {dof!r} must be one number, got {value!r}"
+            )
+        if dof in ("v'", "w'") and abs(float(value)) > MAX_SLOPE:
+            raise InputError(
+                "supports",
+                f"{name} end: a slope {dof} = {float(value)!r} rad is beyond the moderate rotations the "
+                f"model's kinematics hold (ε_a = u' + ½(v'² + w'²), |slope| <= {MAX_SLOPE:g} rad)",
             )
         out[dof] = float(value)
     return out
@@ -173,8 +182,8 @@ class StrandSupports:
                 nodal = _nodal(bases, end, dof, seen)
                 index.append(offsets[_FIELD_DOF[dof][0]] + nodal)
                 value.append(np.full(len(nodal), v))
-        fixed = np.concatenate(index).astype(int)
-        prescribed = np.concatenate(value)
+        fixed = np.concatenate(index).astype(int) if index else np.zeros(0, dtype=int)
+        prescribed = np.concatenate(value) if value else np.zeros(0)
         order = np.argsort(fixed, kind="stable")
         return fixed[order], prescribed[order]
 

@@ -14,6 +14,7 @@ import numpy as np
 from scipy.interpolate import PchipInterpolator
 from skfem import asm
 
+from skcable.errors import NonFiniteError
 from skcable.fe.assembly import contract
 from skcable.strand._bending import CardouSection, critical_curvature
 from skcable.strand.fe.loads import unit_load
@@ -273,7 +274,7 @@ class HelicalWires(SectionTerm):
         centroid, the wires' strains at the composite curvature that carries it."""
         levers, state = self.levers, step.state
         points = self.points(axial)
-        M, dM_dk, dM_de = self.slip.moment(k_principal, points, state)
+        M, dM_dk, dM_de = self._law_moment(k_principal, points, state)
         EI, d_EI = points.EI_composite, points.d_EI_composite
         composite = EI > 0.0  # an axis without composite bending: the wires have no lever about it
         safe = np.where(composite, EI, 1.0)
@@ -325,6 +326,19 @@ class HelicalWires(SectionTerm):
         )
         return S, D, output
 
+    def _law_moment(self, kappa, points, state):
+        """The slip law's ``(M_c, ∂M_c/∂κ, ∂M_c/∂ε_a)``, checked finite (`NonFiniteError` names the law)."""
+        out = self.slip.moment(kappa, points, state)
+        bad = ~(np.isfinite(out[0]) & np.isfinite(out[1]) & np.isfinite(out[2]))
+        if bad.any():
+            x = np.broadcast_to(self._model.x, bad.shape[1:])[np.any(bad, axis=0)]
+            raise NonFiniteError(
+                f"the slip law {self.slip!r} gave a moment or tangent that is not finite at "
+                f"{int(bad.sum())} of {bad.size} (axis, point) pairs, x = {x.min():.4g} to {x.max():.4g} m",
+                repr(self.slip),
+            )
+        return out
+
     def frozen(self, output):
         """A potential surrogate of this term under a section law, or None (a kinematic law has
         its potential; a section law without `SlipLaw.energy` has none): the wires' strains at
@@ -361,7 +375,7 @@ class HelicalWires(SectionTerm):
         N = contract("jen,jen->en", s, self.c2)
         D[1, 1] += N
         D[3, 3] += N
-        M, dM_dk, _ = self.slip.moment(k_principal, points, state)
+        M, dM_dk, _ = self._law_moment(k_principal, points, state)
         psi = self.slip.energy(k_principal, points, state)
         moment = contract("kcen,ken->cen", levers, M)
         S[2] += moment[0]
