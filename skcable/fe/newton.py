@@ -51,7 +51,9 @@ import numpy as np
 from skcable._checks import nonnegative, positive, whole
 from skcable.errors import ConvergenceError, InputError
 
-__all__ = ["LINE_SEARCHES", "NewtonOptions", "NewtonResult", "linear_tail", "minimize", "newton"]
+__all__ = [
+    "LINE_SEARCHES", "NewtonOptions", "NewtonResult", "linear_tail", "minimize", "newton", "semismooth",
+]  # fmt: skip
 
 #: ``line_search`` values: on (Armijo on the residual's merit), off (full steps), or on the energy
 LINE_SEARCHES = ("residual", "none", "energy", "auto")
@@ -341,6 +343,82 @@ def newton(
         if callback is not None:  # the step's norm is for the callback alone
             _callback(callback, len(history) - 1, history[-1], float(np.max(np.abs(t * dx), initial=0.0)))
     return stop(f"no convergence to {tol:g} in {max_iter} iterations")
+
+
+def semismooth(
+    assemble: Callable[[np.ndarray], Any],
+    x0: np.ndarray,
+    *,
+    norm: Callable[[Any], float],
+    increment: Callable[[Any], np.ndarray],
+    active: Callable[[Any], Any],
+    tol: float,
+    max_iter: int = 100,
+    name: str = "semismooth",
+    state=None,
+    atol: float = 0.0,
+    absolute: Callable[[Any], float] | None = None,
+    callback: Callable | None = None,
+    rejects: tuple[type[Exception], ...] = (),
+    growth: float = 1e6,
+) -> NewtonResult:
+    """A semismooth Newton with active sets (the primal–dual active-set method as a semismooth
+    Newton: M. Hintermüller, K. Ito, K. Kunisch, SIAM J. Optim. 13, 2002): full steps on the
+    generalized derivative, while ``active(state)`` (a hashable fingerprint of the non-smooth
+    terms' active sets: where a contact presses, a law slips) tells the iterations apart.
+
+    A step that changes the active set is progress whatever the residual does (the residual of a
+    stiff penalty jumps by orders of magnitude as a contact zone grows node by node); the
+    iteration stops, with a `ConvergenceError` carrying the history, when an active set comes
+    back after others (a cycle), when a step within one active set raises the residual (its
+    smooth part needs damping: a line-search Newton's job), when the residual grows ``growth``
+    times beyond its start, or after ``max_iter`` iterations. ``norm``, ``increment``, ``tol``,
+    ``atol``/``absolute``, ``callback``, ``rejects`` (a rejected step stops the iteration) as in
+    `newton`.
+    """
+
+    def converged(s, value):
+        return value < tol or (atol > 0 and absolute is not None and absolute(s) < atol)
+
+    x = np.array(x0, dtype=float)
+    state = assemble(x) if state is None else state
+    history, assemblies = [norm(state)], 1
+    steps: list[float] = []
+    previous = active(state)
+    seen = {previous: 0}
+    for k in range(max_iter + 1):
+        current = history[-1]
+        if not np.isfinite(current):
+            raise ConvergenceError(f"{name}: the residual is not finite", history, last=x)
+        if converged(state, current):
+            return NewtonResult(x, state, history, assemblies, steps=steps)
+        if k == max_iter:
+            break
+        if current > growth * history[0]:
+            raise ConvergenceError(f"{name}: the residual grows (full steps diverge)", history, last=x)
+        dx = increment(state)
+        try:
+            trial = assemble(x + dx)
+        except rejects:
+            raise ConvergenceError(
+                f"{name}: a full step leaves the admissible states", history, last=x
+            ) from None
+        assemblies += 1
+        key = active(trial)
+        value = norm(trial)
+        if key == previous and value >= current and not converged(trial, value):
+            raise ConvergenceError(
+                f"{name}: a step within one active set raises the residual", history + [value], last=x
+            )
+        if key in seen and seen[key] < k and key != previous:
+            raise ConvergenceError(f"{name}: the active set cycles", history + [value], last=x)
+        seen.setdefault(key, k + 1)
+        previous = key
+        x, state = x + dx, trial
+        history.append(value)
+        steps.append(1.0)
+        _callback(callback, len(history) - 1, value, float(np.max(np.abs(dx), initial=0.0)))
+    raise ConvergenceError(f"{name}: no convergence to {tol:g} in {max_iter} iterations", history, last=x)
 
 
 class _LineSearch:

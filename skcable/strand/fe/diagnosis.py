@@ -174,7 +174,12 @@ def tangent_modes(model, a) -> str:
     block = K[model.free][:, model.free].toarray()
     if not np.all(np.isfinite(block)):
         return ""
-    values, vectors = np.linalg.eigh(0.5 * (block + block.T))
+    # Jacobi scaling: each dof against its own stiffness (a penalty of 1e12 beside a twist of a few
+    # N·m² must not make the twist look singular)
+    diagonal = np.abs(np.diag(block))
+    d = 1.0 / np.sqrt(np.where(diagonal > 0, diagonal, np.max(diagonal, initial=1.0) or 1.0))
+    # the modes in the scaled dofs: each dof's share measured against its own stiffness
+    values, vectors = np.linalg.eigh(0.5 * (block + block.T) * np.outer(d, d))
     scale = float(np.max(np.abs(values), initial=0.0))
     if scale == 0.0:
         return "the tangent is zero: no term gives the free dofs any stiffness"

@@ -46,7 +46,7 @@ from skcable._checks import positive, whole
 from skcable.errors import ConvergenceError, InputError, NonFiniteError, SlowConvergenceWarning
 from skcable.fe import Assembly, LinearSystem, NewtonOptions, minimize, newton
 from skcable.fe.elements import ElementLinePpExact
-from skcable.fe.newton import linear_tail
+from skcable.fe.newton import linear_tail, semismooth
 from skcable.strand._bending import friction
 from skcable.strand.capacity import StepResult, StrandLayout, capacity_curve
 from skcable.strand.fe.diagnosis import FirstSolveCheck, non_finite, tangent_modes
@@ -488,7 +488,7 @@ class StrandModel:
             R, size = np.zeros(self.assembly.N), np.zeros(self.assembly.N)
         densities = [outputs[i].get("energy") for i, _ in section_terms]
         energy = None if any(e is None for e in densities) else float(np.sum(sum(densities) * self._dx))
-        extra = []
+        extra, tangents = [], {}
         for i, t in other_terms:
             step = Step(strain, self.x, state[i])
             Rt, Kt, outputs[i] = t.contribute(U, step)
@@ -508,6 +508,7 @@ class StrandModel:
                         f"not ({self.assembly.N}, {self.assembly.N})",
                     )
                 extra.append(Kt)
+                tangents[i] = Kt
             if energy is not None:
                 e = t.energy(U, step) if t.potential is not False else None
                 energy = None if e is None else energy + e
@@ -522,7 +523,7 @@ class StrandModel:
             energy = None if energy is None else energy - load * float(U[self.pull])
         return dict(
             R=R, extra=extra, outputs=outputs, g=g, S=S, D=D, energy=energy, size=size, strain=strain,
-            state=state, load=load,
+            state=state, load=load, tangents=tangents,
         )  # fmt: skip
 
     def _non_finite(self, U, state, load, section_terms, other_terms):
@@ -744,8 +745,10 @@ class StrandModel:
         """Newton for a model with non-smooth terms (contact, tensionless supports, a kinked
         section law).
 
-        First a semismooth Newton (steps on the generalized derivative) under a monotone line
-        search, which a kinked section law (Cardou's) passes in a few steps; where that stalls,
+        First a semismooth Newton with active sets (`skcable.fe.semismooth`, `_active`: full steps
+        while the active sets change, stopped at a cycle), which finds a stiff contact zone node by
+        node; then (steps on the generalized derivative) under a monotone line search, which a
+        kinked section law (Cardou's) passes in a few steps; where that stalls,
         a model with a section law passes a fold of its path through a potential surrogate
         (`_pass_fold`); then a semismooth Newton under a non-monotone line search
         (`NONMONOTONE`), which identifies a contact's active set while the residual rises and
@@ -755,6 +758,13 @@ class StrandModel:
         would push the strand deep into a bed (40 halvings), and the tangent's shift may grow to
         1e6 times the elastic one. All failing, the first failure is raised."""
         search = options.line_search != "none"
+        try:  # full steps on the active sets (contact, a slipping law)
+            return semismooth(
+                assemble, U, increment=self._increment, active=self._active,
+                max_iter=max(4 * options.max_iter, 100), **common,
+            )  # fmt: skip
+        except ConvergenceError:
+            pass
         run = functools.partial(
             newton, assemble, increment=self._increment, max_iter=2 * options.max_iter, merit=self._merit,
             line_search=search, max_halvings=options.max_halvings,
@@ -785,6 +795,24 @@ class StrandModel:
             )  # fmt: skip
         except ConvergenceError:
             raise failed from None
+
+    def _active(self, a) -> tuple:
+        """The active sets of the non-smooth terms of an assembly ``a``, as a fingerprint: a
+        term's ``"active"`` (or ``"slipping"``) output where it gives one (a contact's pressed
+        points, a law's slipping ones), else the bytes of its tangent (a penalty's tangent is a
+        function of its active set)."""
+        keys: list = []
+        for i, t in enumerate(self._bound):
+            if t.smooth:
+                continue
+            out = a["outputs"][i] or {}
+            mask = out.get("active", out.get("slipping"))
+            if mask is not None:
+                keys.append(np.packbits(np.asarray(mask, dtype=bool)).tobytes())
+            else:
+                K = a["tangents"].get(i)
+                keys.append(None if K is None else sp.csr_matrix(K).data.tobytes())
+        return tuple(keys)
 
     def _pass_fold(self, assemble, U, first, options, common, failed, rounds: int = 3):
         """A model with a section law (no potential) whose Newton failed: where every term has a
