@@ -3,8 +3,8 @@ whole force–strain curve) on a few coarse cases, so a restructured model can b
 the code that produced them: ``python benchmarks/pin_strand_numbers.py`` writes
 ``tests/strand/data/pinned_strand.json`` with the commit it ran on, every solve converged to 1e-13.
 ``tests/strand/test_pinned.py`` recomputes every case and compares. ``--slip axis --reason ...``
-re-pins the cases of one slip law only (when the law itself changed), recording the commit and
-the reason in the file.
+(or ``--preset NAME``) re-pins the cases of one slip law (or preset) only, when what they compute
+changed, recording the commit and the reason in the file.
 """
 
 import json
@@ -74,24 +74,35 @@ def main(argv=None):
     parser.add_argument(
         "--slip", help="re-pin only the cases of this slip law (the others are kept as recorded)"
     )
+    parser.add_argument("--preset", help="re-pin only the cases of this preset (with --slip: of both)")
     parser.add_argument("--reason", default="", help="why the cases of --slip move (kept in the file)")
     args = parser.parse_args(argv)
     commit = subprocess.run(["git", "rev-parse", "HEAD"], capture_output=True, text=True, cwd=ROOT).stdout
     path = ROOT / "tests" / "strand" / "data" / "pinned_strand.json"
-    if args.slip:
+    if args.slip or args.preset:
         out = json.loads(path.read_text())
-        chosen = [case for case in CASES if case[2] == args.slip]
+        chosen = [
+            case
+            for case in CASES
+            if (args.slip is None or case[2] == args.slip) and (args.preset is None or case[0] == args.preset)
+        ]
         if not chosen:
-            raise SystemExit(f"no case has slip {args.slip!r}")
+            raise SystemExit(f"no case has slip {args.slip!r} and preset {args.preset!r}")
         fresh = {tuple(case): run(*case) for case in chosen}
         out["cases"] = [
             fresh.get((c["preset"], c["damage"], c["slip"], c["damage_load"]), c) for c in out["cases"]
         ]
         out.setdefault("repinned", []).append(
-            {"slip": args.slip, "commit": commit.strip(), "tol": TOL, "reason": args.reason}
+            {
+                "slip": args.slip,
+                "preset": args.preset,
+                "commit": commit.strip(),
+                "tol": TOL,
+                "reason": args.reason,
+            }
         )
         path.write_text(json.dumps(out, indent=1))
-        print(f"re-pinned {len(chosen)} cases of slip {args.slip!r} in {path} at {commit[:10]}")
+        print(f"re-pinned {len(chosen)} cases in {path} at {commit[:10]}")
         return
     out = {
         "commit": commit.strip(),

@@ -227,6 +227,26 @@ class StepResult:
         """Fraction of the strand length in slip (about either axis)."""
         return float(np.mean(np.any(self.slipping, axis=0)))
 
+    def to_vtk(
+        self, path, *, wires: bool = False, scale: float = 1.0, radial_scale: float = 1.0, fields=None
+    ):
+        """Write this step as a VTK file ``path`` (``.vtu`` or ``.vtk``, atomically:
+        `skcable.io.write`) for ParaView: the axis with its point and cell data, the terms'
+        outputs included ([`strand_mesh`][skcable.io.strand_mesh]). With ``wires``, also the
+        wires as tubes ([`wire_mesh`][skcable.io.wire_mesh]) in ``<stem>_wires<suffix>``;
+        ``fields(step) -> (point_data, cell_data)`` adds the user's arrays. Returns the paths."""
+        from pathlib import Path
+
+        from skcable.io import strand_mesh, wire_mesh, write
+
+        path = Path(path)
+        point_data, cell_data = (None, None) if fields is None else fields(self)
+        out = [write(strand_mesh(self, point_data=point_data, cell_data=cell_data), path)]
+        if wires:
+            tubes = wire_mesh(self, scale=scale, radial_scale=radial_scale)
+            out.append(write(tubes, path.with_name(path.stem + "_wires" + path.suffix)))
+        return out
+
     def __repr__(self) -> str:
         peak = float(np.max(np.abs(self.curvature))) if self.curvature.size else 0.0
         top = float(np.max(self.wire_strain)) if self.wire_strain.size else 0.0
@@ -464,9 +484,10 @@ def capacity_curve(
     strains the strand's mean axial strain ``(u(L) − u(0))/L`` at each step; past the largest
     force the strand carries, no step converges (``on_failure`` as below).
 
-    ``n_steps`` (default 60) strain increments, half of them up to twice the
-    yield strain and half from there to ``max_strain`` (default 1.5 eps_rupture;
-    the curve stops at the first wire rupture, interpolated to the strain where the
+    ``n_steps`` (default 60) strain increments, whatever ``max_strain`` is: half of them up to
+    twice the yield strain and half from there to ``max_strain`` (default 1.5 eps_rupture), or,
+    for a ``max_strain`` below twice the yield strain, all of them equal (the curve
+    stops at the first wire rupture, interpolated to the strain where the
     most strained wire reaches eps_rupture, and its last step is solved there). A step
     that fails is halved; the cut increment is kept until two steps in a row converge
     at it (then it doubles), down to 1/64 of the schedule's step. The slip state is
@@ -569,12 +590,14 @@ def _schedule(model, max_strain, n_steps, state_passes, max_force=None) -> tuple
     # half the steps, uniform, up to twice the yield strain (where slip and yield
     # shape the curve and K_Leq is measured), half from there to rupture with
     # geometrically growing increments (no jump in step size for Newton to absorb)
-    knee = min(2.0 * min(m.eps_y for m in materials), top)
+    knee = 2.0 * min(m.eps_y for m in materials)
+    if top <= knee:  # the whole range is the uniform part: n_steps equal increments
+        return n_steps, np.linspace(0.0, top, n_steps + 1)[1:]
     schedule = np.unique(
         np.concatenate(
             [
                 np.linspace(0.0, knee, n_steps // 2 + 1),
-                np.geomspace(knee, max(top, knee), n_steps - n_steps // 2 + 1),  # increments grow gradually
+                np.geomspace(knee, top, n_steps - n_steps // 2 + 1),  # increments grow gradually
             ]
         )
     )[1:]
