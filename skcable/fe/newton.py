@@ -120,6 +120,8 @@ class NewtonOptions:
         base = cls() if options is None else options
         if not isinstance(base, cls):
             raise InputError("options", f"must be a NewtonOptions, got {options!r}")
+        if not given:
+            return base
         names = {f.name for f in fields(cls)}
         for key in given:
             if key not in names:
@@ -496,35 +498,43 @@ def minimize(
     factorisation succeeds, K₀ being the problem's own positive-definite metric (for a strand:
     its elastic tangent). d is then a descent direction of Π, and a step t = 1, ½, … is accepted
     by Armijo's rule on the energy, ``Π(x + t d) ≤ Π(x) + 10⁻⁴ t R·d``, or, where the energy
-    change is at its round-off (``noise``·|Π|), by the residual falling. After an accepted step
+    change is at its round-off (``noise``·|Π|), by the residual falling; a full, unshifted step
+    (the tangent positive definite) whose residual falls tenfold is Newton converging and is
+    accepted as it is. After an accepted step
     μ shrinks fourfold (to 0 below ``mu0``); after a failed line search it grows tenfold. Gives
     up (ConvergenceError with the history) when μ exceeds ``mu_max``, when neither the residual
     nor the energy moves over ``window`` iterations, or after ``max_iter`` iterations.
     ``NewtonResult.shifted`` tells whether the shift was needed: the path passed a point where
     the tangent was not positive definite (a fold of the equilibrium path under the imposed
     data). ``callback`` and ``rejects`` (exceptions of a trial's ``assemble`` that reject it: the
-    step is halved) as in `newton`.
+    step is halved) as in `newton`. The energy of a state is asked for only where a test needs
+    it (a Newton step that converges at once needs none): a model may compute it on demand.
     """
 
     def converged(s, value):
         return value < tol or (atol > 0 and absolute is not None and absolute(s) < atol)
 
+    def finite(value):
+        if not np.isfinite(value):
+            raise ConvergenceError(f"{name}: the energy is not finite", history, last=x)
+        return value
+
     x = np.array(x0, dtype=float)
     state = assemble(x) if state is None else state
     assemblies = 1
-    history, energies = [norm(state)], [energy(state)]
+    history, energies = [norm(state)], [_Once(energy, state)]
     steps: list[float] = []
     mu, shifted = 0.0, False
     for _ in range(max_iter + 1):
         current, Pi = history[-1], energies[-1]
-        if not (np.isfinite(current) and np.isfinite(Pi)):
+        if not np.isfinite(current):
             raise ConvergenceError(f"{name}: the residual or the energy is not finite", history, last=x)
         if converged(state, current):
             return NewtonResult(x, state, history, assemblies, shifted, steps=steps)
         if len(history) > max_iter:
             break
         if len(history) > window and current > factor * history[-1 - window]:
-            if abs(Pi - energies[-1 - window]) <= noise * abs(Pi):
+            if abs(finite(Pi()) - finite(energies[-1 - window]())) <= noise * abs(Pi()):
                 raise ConvergenceError(f"{name}: neither the residual nor the energy moves", history, last=x)
             if mu == 0.0:
                 mu, shifted = mu0, True
@@ -539,13 +549,14 @@ def minimize(
         shifted = shifted or more
         slope = float(gradient(state) @ d)
         step, tried = _energy_step(
-            assemble, energy, norm, converged, x, d, Pi, current, slope, halvings, noise, rejects
-        )
+            assemble, energy, norm, converged, x, d, lambda here=Pi: finite(here()), current, slope, halvings,
+            noise, rejects, mu == 0.0,
+        )  # fmt: skip
         assemblies += tried
         if step is not None:
             t, x, state, n_t = step
             history.append(n_t)
-            energies.append(energy(state))
+            energies.append(_Once(energy, state))
             steps.append(t if mu == 0.0 else 0.0)  # a shifted step is no Newton step
             mu = 0.0 if mu <= mu0 else mu / 4.0
             if callback is not None:
@@ -572,9 +583,27 @@ def _shifted_increment(solve, state, mu: float, mu0: float, mu_max: float) -> tu
                 raise
 
 
-def _energy_step(assemble, energy, norm, converged, x, d, Pi, current, slope, halvings, noise, rejects=()):
+class _Once:
+    """The energy of a state, computed on first use (`minimize` asks only where a test needs it)."""
+
+    def __init__(self, energy, state):
+        self.energy, self.state = energy, state
+        self.value: float | None = None
+
+    def __call__(self) -> float:
+        if self.value is None:
+            self.value = float(self.energy(self.state))
+            self.state = None
+        return self.value
+
+
+def _energy_step(
+    assemble, energy, norm, converged, x, d, Pi, current, slope, halvings, noise, rejects=(), newton=False
+):
     """`minimize`'s line search along ``d``, t = 1, ½, … (its docstring): ``((t, x, state,
-    norm), assemblies)`` of the accepted trial, or ``(None, halvings)`` when none is."""
+    norm), assemblies)`` of the accepted trial, or ``(None, halvings)`` when none is; ``Pi()``
+    the energy at ``x``, asked for only when a trial has not converged; ``newton``: ``d`` is an
+    unshifted Newton step, accepted in full where the residual falls tenfold."""
     t = 1.0
     for k in range(halvings):
         trial_x = x + t * d
@@ -584,10 +613,11 @@ def _energy_step(assemble, energy, norm, converged, x, d, Pi, current, slope, ha
             t *= 0.5
             continue
         n_t = norm(trial)
-        if converged(trial, n_t):  # accepted whatever its energy: tested first
-            return (t, trial_x, trial, n_t), k + 1
-        drop = energy(trial) - Pi
-        if drop <= 1e-4 * t * slope or (abs(drop) <= noise * abs(Pi) and n_t < (1 - 1e-4 * t) * current):
+        if converged(trial, n_t) or (newton and k == 0 and n_t <= 0.1 * current):
+            return (t, trial_x, trial, n_t), k + 1  # accepted whatever its energy: tested first
+        here = Pi()
+        drop = energy(trial) - here
+        if drop <= 1e-4 * t * slope or (abs(drop) <= noise * abs(here) and n_t < (1 - 1e-4 * t) * current):
             return (t, trial_x, trial, n_t), k + 1
         t *= 0.5
     return None, halvings

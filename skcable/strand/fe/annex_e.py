@@ -411,6 +411,9 @@ class AnnexE(SectionTerm):
         kinematic = self.slip.kinematic
         _, _, output = self._kinematics.section(g, step if kinematic else Step(step.strain, step.x, None))
         output.pop("energy", None)  # the annex's law has no potential: its tangent is not symmetric
+        if output["curvature"] is None:  # a law that sticks leaves them to the results: give them
+            output["curvature"] = self._kinematics.principal(g)
+            output["kappa_m"] = self._kinematics.kappa_m(output["axial"], derivative=False)[0]
         # (ne, nq): E.2 where either axis slips (under a section law, where the frozen state says so)
         slipping = np.any(output["slipping"] if kinematic else np.asarray(step.state), axis=0)
         (E1, G1), (E2, G2) = self._matrices[False], self._matrices[True]

@@ -88,6 +88,19 @@ def default_physics(slip="none", mu: float = 0.5, damage_load: str = "eccentrici
     return terms + [SinusoidalDamageLoads()] if sinusoidal else terms
 
 
+@functools.lru_cache(maxsize=16)
+def _discretisation(nodes: bytes, length: float, element: str):
+    """``(mesh, bases, assembly)`` of the node abscissae ``nodes`` (float64 bytes): what depends on
+    the mesh alone, formed once for every model on it (a study's models share their mesh; none
+    of the three is changed by a model or a term)."""
+    L = float(length)
+    mesh = MeshLine(np.frombuffer(nodes, dtype=float).copy()).with_boundaries(
+        {"left": lambda x: np.isclose(x[0], 0.0), "right": lambda x: np.isclose(x[0], L)}
+    )
+    bases = _bases(mesh, element)
+    return mesh, bases, Assembly(bases, STRAINS)
+
+
 def _bases(mesh: MeshLine, element: str) -> dict:
     if element not in ELEMENTS:
         raise InputError("element", f"must be one of {tuple(ELEMENTS)}, got {element!r}")
@@ -214,14 +227,17 @@ class StrandModel:
         if self.slip.name != "none" and len(strand.layers) != 1:
             raise InputError("slip", "slip models need a single helical layer (1x7-type strands)")
         self.element = element
-        self.mesh = self._mesh(n_elements, mesh, grading)
-        self.bases = _bases(self.mesh, element)
-        self.assembly = Assembly(self.bases, STRAINS)
+        if element not in ELEMENTS:
+            raise InputError("element", f"must be one of {tuple(ELEMENTS)}, got {element!r}")
+        nodes = self._nodes(n_elements, mesh, grading)
+        self.mesh, self.bases, self.assembly = _discretisation(nodes.tobytes(), self.length, element)
         self.offsets = self.assembly.offsets
         self.x = np.asarray(self.bases["u"].global_coordinates())[0]  # (ne, nq)
         self._dx = self.bases["u"].dx
         self._boundary()
         self.strand_section = strand.section()  # its wire table and materials, formed once per model
+        self._ruptures = [m.eps_rupture for m in strand.materials]
+        self._plausible_strain = max(_plausible.MAX_STRAIN, 1.5 * max(self._ruptures))
         self.EA = self.strand_section.EA
         self._bound = [t.bind(self) for t in self.terms]
         # (position in the model's term list, bound term): the states and outputs follow that list
@@ -260,7 +276,8 @@ class StrandModel:
         return (_rebuild, (type(self), a["strand"], a["length"], kwargs), {"damage_load": self.damage_load})
 
     # --- set-up --------------------------------------------------------------
-    def _mesh(self, n_elements, mesh, grading):
+    def _nodes(self, n_elements, mesh, grading) -> np.ndarray:
+        """The node abscissae (m), checked (`_check_basis`)."""
         if mesh is not None:
             nodes = np.asarray(mesh.p[0] if isinstance(mesh, MeshLine) else mesh, dtype=float)
             if nodes.ndim != 1 or nodes.size < 3 or not np.all(np.isfinite(nodes)):
@@ -280,10 +297,7 @@ class StrandModel:
             s = np.linspace(0.0, 1.0, n + 1)
             nodes = self.length * (s - grading * np.sin(2 * np.pi * s) / (2 * np.pi))
         self._check_basis(nodes, n_elements, mesh)
-        L = self.length
-        return MeshLine(nodes).with_boundaries(
-            {"left": lambda x: np.isclose(x[0], 0.0), "right": lambda x: np.isclose(x[0], L)}
-        )
+        return np.ascontiguousarray(nodes, dtype=float)
 
     def _check_basis(self, nodes, n_elements, mesh):
         """Refuse a mesh whose Hermite basis would lose more than `BASIS_ERROR` of the curvature
@@ -307,15 +321,16 @@ class StrandModel:
 
     def _boundary(self):
         offsets = {name: int(self.offsets[i]) for i, name in enumerate(FIELDS)}
-        fixed, values = self.supports.dofs(self.bases, offsets)
-        self.pull = StrandSupports.index("right", "u", self.bases, offsets)
-        self._left_u = StrandSupports.index("left", "u", self.bases, offsets)
+        seen: dict = {}  # each basis's end dofs, looked up once
+        fixed, values = self.supports.dofs(self.bases, offsets, seen)
+        self.pull = StrandSupports.index("right", "u", self.bases, offsets, seen)
+        self._left_u = StrandSupports.index("left", "u", self.bases, offsets, seen)
         if np.any(np.diff(fixed) == 0):
             raise InputError("supports", "fix a dof twice (both ends on one node?)")
         self.fixed, self.fixed_values = fixed, values
         imposed = np.append(fixed, self.pull) if self.axial == "strain" else fixed
         self.free = np.setdiff1d(np.arange(self.assembly.N), imposed)
-        self._reaction_dofs = self.supports.indices(self.bases, offsets)
+        self._reaction_dofs = self.supports.indices(self.bases, offsets, seen)
         if self.axial == "strain":  # the imposed strain's reaction is the axial force at x = L
             self._reaction_dofs["right"]["u"] = self.pull
 
@@ -481,13 +496,13 @@ class StrandModel:
         outputs: list[Any] = [None] * len(self._bound)  # each term's output dict, filled below
         for i, t in section_terms:
             St, Dt, outputs[i] = t.section(g, Step(strain, self.x, state[i]))
-            S, D = (St, Dt.copy()) if S is None else (S + St, D + Dt)
+            S, D = (St, Dt) if S is None else (S + St, D + Dt)  # new arrays: the terms' stay as given
         if S is not None:
             R, size = self.assembly.vector_and_magnitude(S.transpose(0, 2, 1))
         else:
             R, size = np.zeros(self.assembly.N), np.zeros(self.assembly.N)
         densities = [outputs[i].get("energy") for i, _ in section_terms]
-        energy = None if any(e is None for e in densities) else float(np.sum(sum(densities) * self._dx))
+        energy: Any = None if any(e is None for e in densities) else 0.0  # the other terms' part
         extra, tangents = [], {}
         for i, t in other_terms:
             step = Step(strain, self.x, state[i])
@@ -512,8 +527,9 @@ class StrandModel:
             if energy is not None:
                 e = t.energy(U, step) if t.potential is not False else None
                 energy = None if e is None else energy + e
-        if not (np.all(np.isfinite(R)) and (D is None or np.all(np.isfinite(D)))) or any(
-            not np.all(np.isfinite(K.data if sp.issparse(K) else K)) for K in extra
+        # a sum is NaN or infinite where an entry is (one pass, no mask)
+        if not (math.isfinite(R.sum()) and (D is None or math.isfinite(D.sum()))) or any(
+            not math.isfinite((K.data if sp.issparse(K) else np.asarray(K)).sum()) for K in extra
         ):
             raise self._non_finite(U, state, load, section_terms, other_terms)
         if self.axial == "force" and load != 0.0:  # the axial force at x = L: a dead load
@@ -521,6 +537,8 @@ class StrandModel:
             R[self.pull] -= load
             size[self.pull] += abs(load)
             energy = None if energy is None else energy - load * float(U[self.pull])
+        if energy is not None:  # the section terms' part on demand (`_energy`): a converged step needs none
+            energy = _Energy(densities, self._dx, energy)
         return dict(
             R=R, extra=extra, outputs=outputs, g=g, S=S, D=D, energy=energy, size=size, strain=strain,
             state=state, load=load, tangents=tangents,
@@ -589,17 +607,23 @@ class StrandModel:
         U[self.free] += 1e-5 * self.length * np.random.default_rng(1).standard_normal(self.free.size)
         return U
 
-    def _band_of(self, a):
-        """The free–free tangent of an assembly in the solver's storage (section terms and the others)."""
+    def _band_of(self, a, upper: bool = False):
+        """The free–free tangent of an assembly in the solver's storage (section terms and the
+        others); ``upper``: its upper band alone (a symmetric tangent for the Cholesky solve)."""
         if self._system.accept(a["extra"]):
             self._metric = None  # rebuilt in the new storage
         system = self._system
-        ab = system.band()
+        if upper and system.is_banded:
+            ab = system.band_upper()
+            add, add_sparse = system.add_elements_upper, system.add_sparse_upper
+        else:
+            ab = system.band()
+            add, add_sparse = system.add_elements, system.add_sparse
         Ke = self._element_matrices(a)
         if Ke is not None:
-            system.add_elements(ab, Ke)
+            add(ab, Ke)
         for Kt in a["extra"]:
-            system.add_sparse(ab, Kt)
+            add_sparse(ab, Kt)
         return ab
 
     def _increment(self, a):
@@ -611,12 +635,14 @@ class StrandModel:
         """``-(K + mu K0)⁻¹ R`` by a Cholesky-like factorisation (raises LinAlgError when not positive
         definite); K0 is the tangent of the straight, unstrained strand (positive definite), built on
         first use."""
-        ab = self._band_of(a)
+        ab = self._band_of(a, upper=True)
+        banded = self._system.is_banded  # `_band_of` may have moved it to the sparse storage
         if mu != 0.0 and self._metric is None:
             straight = self._prescribed(np.zeros(self.assembly.N), 0.0)
-            self._metric = self._band_of(self._assemble(straight, self.initial_state(), 0.0))
+            self._metric = self._band_of(self._assemble(straight, self.initial_state(), 0.0), upper=True)
         dU = np.zeros(self.assembly.N)
-        dU[self.free] = self._system.solve_positive(ab, -a["R"][self.free], self._metric, mu)
+        solve = self._system.solve_positive_upper if banded else self._system.solve_positive
+        dU[self.free] = solve(ab, -a["R"][self.free], self._metric, mu)
         return dU
 
     # --- solution ----------------------------------------------------------------
@@ -625,11 +651,12 @@ class StrandModel:
         round-off floor divided by the tolerance where that is larger (module docstring)."""
         order, starts, free_order, free_starts, force, free_length = self._group_index
         scales = np.maximum.reduceat(a["size"][order], starts)
-        forces = float(np.max(scales[force], initial=0.0))  # the scales are >= 0; NaN stays NaN
+        # the scales are >= 0 (NaN stays NaN); ndarray methods: a Newton calls this per assembly
+        forces = float(scales[force].max(initial=0.0))
         floor = ROUND_OFF * forces / tol * free_length  # the moment groups' floor times the length
         residual = np.maximum.reduceat(np.abs(a["R"][free_order]), free_starts)
         worst = residual / np.maximum(np.maximum(scales[self._has_free], floor), 1e-300)
-        return float(np.max(worst, initial=0.0)) if math.isfinite(forces) else float("nan")  # NaN stays NaN
+        return float(worst.max(initial=0.0)) if math.isfinite(forces) else float("nan")  # NaN stays NaN
 
     def _solver(self, first, options: NewtonOptions) -> str:
         """'minimize', 'newton' or 'semismooth', from the terms' declarations and the options."""
@@ -737,7 +764,7 @@ class StrandModel:
 
         settings = {"max_iter": max(options.max_iter, 40), "mu_max": options.mu_max} | settings
         return minimize(
-            assemble, U, energy=lambda a: a["energy"], gradient=gradient, solve=self._increment_positive,
+            assemble, U, energy=lambda a: a["energy"](), gradient=gradient, solve=self._increment_positive,
             **settings, **common,
         )  # fmt: skip
 
@@ -861,7 +888,7 @@ class StrandModel:
         return [f"{t!r} ({e:.1e})" for e, t in sorted(errors, key=lambda p: -p[0]) if e > TANGENT_ERROR]
 
     def _warn_if_linear(self, result, tol, state, strain):
-        ratios = result.linear_rate(tol, full_steps=False)
+        ratios = result.linear_rate(tol, full_steps=False) if result.iterations > 3 else None
         if ratios is None:
             return
         suspects = self._suspects(result.x, state)
@@ -953,17 +980,25 @@ class StrandModel:
         if not np.isfinite(value):
             raise InputError(wanted, f"must be finite, got {value!r}")
         if wanted == "strain":
-            if abs(value) >= 1.0:
+            if not -1.0 < value < 1.0:
                 raise InputError(
                     "strain", f"must lie in (-1, 1): {value!r} stretches the strand to nothing or doubles it"
                 )
-            _plausible.strand_strain("strain", value, [m.eps_rupture for m in self.strand.materials])
+            if abs(value) > self._plausible_strain:  # `_plausible.strand_strain`'s own bound, kept here
+                _plausible.strand_strain("strain", value, self._ruptures)
         return value
 
     def _step_result(self, load, result, state, settled, assemblies, shifted=False):
         a, U = result.state, result.x
         # the wire kinematics of the first term that reports them (HelicalWires, AnnexE, ...)
         wires = next((o for o in a["outputs"] if o and {"strain", "curvature", "kappa_m"} <= set(o)), None)
+        if wires is not None and wires["kappa_m"] is None:  # a law that sticks leaves these to the results
+            owner = next(t for t, o in zip(self._bound, a["outputs"], strict=True) if o is wires)
+            wires = dict(
+                wires,
+                kappa_m=owner.kappa_m(wires["axial"], derivative=False)[0],
+                curvature=owner.principal(a["g"]),
+            )
         shape = (2, *self.x.shape)
         zeros = np.zeros(shape)
         g, S, D = a["g"], a["S"], a["D"]
@@ -1026,6 +1061,21 @@ class StrandModel:
     def capacity_curve(self, max_strain=None, n_steps=None, **kwargs):
         """Force–strain curve up to rupture (see [`capacity_curve`][skcable.strand.capacity_curve])."""
         return capacity_curve(self, max_strain, n_steps, **kwargs)
+
+
+class _Energy:
+    """A model's energy (J) at an assembly, its section terms' densities (arrays, or callables
+    that compute them) integrated on first use, plus the other terms' part."""
+
+    def __init__(self, densities, dx, rest: float):
+        self.densities, self.dx, self.rest = densities, dx, rest
+        self.value: float | None = None
+
+    def __call__(self) -> float:
+        if self.value is None:
+            total = sum(d() if callable(d) else d for d in self.densities)
+            self.value = float(np.sum(total * self.dx)) + self.rest
+        return self.value
 
 
 def _amended(exc: ConvergenceError, note: str) -> ConvergenceError:

@@ -157,26 +157,28 @@ class StrandSupports:
         return name(self.left, False), name(self.right, self.axial != "none", strain)
 
     @staticmethod
-    def index(end: str, dof: str, bases: Mapping, offsets: Mapping) -> int:
-        """The global index of ``dof`` (a name of `DOFS`) at ``end`` ("left" or "right")."""
-        field, nodal = _FIELD_DOF[dof]
-        return int(offsets[field] + bases[field].get_dofs(end).nodal[nodal][0])
+    def index(end: str, dof: str, bases: Mapping, offsets: Mapping, seen: dict | None = None) -> int:
+        """The global index of ``dof`` (a name of `DOFS`) at ``end`` ("left" or "right");
+        ``seen``: a cache of the bases' end dofs shared between calls (`_nodal`)."""
+        return int(offsets[_FIELD_DOF[dof][0]] + _nodal(bases, end, dof, {} if seen is None else seen)[0])
 
-    def indices(self, bases: Mapping, offsets: Mapping) -> dict:
+    def indices(self, bases: Mapping, offsets: Mapping, seen: dict | None = None) -> dict:
         """``{"left": {dof: index}, "right": {...}}``: `index` of every supported dof (for the
-        reactions), each field's end dofs looked up once."""
-        seen: dict = {}
+        reactions), each basis's end dofs looked up once."""
+        seen = {} if seen is None else seen
         return {
             end: {dof: int(offsets[_FIELD_DOF[dof][0]] + _nodal(bases, end, dof, seen)[0]) for dof in given}
             for end, given in (("left", self.left), ("right", self.right))
         }
 
-    def dofs(self, bases: Mapping, offsets: Mapping) -> tuple[np.ndarray, np.ndarray]:
+    def dofs(
+        self, bases: Mapping, offsets: Mapping, seen: dict | None = None
+    ) -> tuple[np.ndarray, np.ndarray]:
         """``(fixed, values)``: global dof indices and their prescribed values, the axial load's
         dof excluded; ``bases`` has the fields' scikit-fem bases (a mesh with
         boundaries ``left`` and ``right``) and ``offsets`` where each field starts."""
         index, value = [], []
-        seen: dict = {}
+        seen = {} if seen is None else seen
         for end, values in (("left", self.left), ("right", self.right)):
             for dof, v in values.items():
                 nodal = _nodal(bases, end, dof, seen)
@@ -209,11 +211,13 @@ def _load_owns_u(given, right: dict, axial: str) -> None:
 
 def _nodal(bases: Mapping, end: str, dof: str, seen: dict) -> np.ndarray:
     """The nodal dofs of ``dof`` at ``end`` (InputError when its field's basis has none), each
-    field's ``get_dofs(end)`` asked once per ``seen`` (scikit-fem searches the facets each time)."""
+    basis's ``get_dofs(end)`` asked once per ``seen`` (scikit-fem searches the facets each time;
+    fields on one basis share it)."""
     field, name = _FIELD_DOF[dof]
-    if (field, end) not in seen:
-        seen[field, end] = bases[field].get_dofs(end).nodal
-    nodal = seen[field, end]
+    key = (id(bases[field]), end)
+    if key not in seen:
+        seen[key] = bases[field].get_dofs(end).nodal
+    nodal = seen[key]
     if name not in nodal:
         raise InputError("supports", f"{end} end: the basis of {field!r} has no dof {dof!r}")
     return nodal[name]

@@ -121,6 +121,7 @@ class HelicalWires(SectionTerm):
         self.levers = np.array([np.sin(angle), np.cos(angle)]).transpose(1, 0, 2, 3)
         self.kappa_grid, _, self._spline, self._slope = critical_curvature_table(s, self.slip.mu)
         self._curvature = self._slope.derivative()
+        self._cubics = np.ascontiguousarray(self._spline.c.transpose(1, 2, 0))  # (n - 1, axis, power)
         # the lever offsets from the centroid, and the centroid, per wire: fixed per model
         self._y = self.wire_y - self.centroid_y[None]
         self._z = self.wire_z - self.centroid_z[None]
@@ -145,16 +146,46 @@ class HelicalWires(SectionTerm):
         )
         self._P_stick = contract("kcen,ken,kden->cden", self.levers, np.ones((2, *shape)), self.levers)
         b = self._strain_gradients(np.zeros((6, *shape)), self._P_stick, np.zeros((2, *shape)), self._y.shape)
-        self._b_stick = b[[0, 2, 4, 5]]
+        self._b_stick = np.ascontiguousarray(b[[0, 2, 4, 5]])
+        # the products C_a C_b of the 10 pairs a <= b of the rows on the strains 0, 2, 4, 5, and which of
+        # `_section_stick`'s 21 rows each entry of D is: those pairs (0–9, in `triu_indices` order),
+        # v' times the axial row (10–13), w' times it (14–17), (1, 1), (3, 3), (1, 3) (18–20)
+        upper = np.triu_indices(4)
+        self._stick_pairs = np.ascontiguousarray(self._b_stick[upper[0]] * self._b_stick[upper[1]])
+        pair = {(int(a), int(b)): p for p, (a, b) in enumerate(zip(*upper, strict=True))}
+        reduced = {0: 0, 2: 1, 4: 2, 5: 3}
+        stick_map = np.empty((6, 6), dtype=np.intp)
+        for a in range(6):
+            for b in range(6):
+                if a in reduced and b in reduced:
+                    low, high = sorted((reduced[a], reduced[b]))
+                    stick_map[a, b] = pair[low, high]
+                elif {a, b} <= {1, 3}:
+                    stick_map[a, b] = 18 if a == b == 1 else 19 if a == b == 3 else 20
+                else:
+                    geometric, other = (a, b) if a in (1, 3) else (b, a)
+                    stick_map[a, b] = (10 if geometric == 1 else 14) + reduced[other]
+        self._stick_map = stick_map
+        self._no_slip = np.zeros((2, *shape), dtype=bool)
+        self._no_slip.flags.writeable = False
 
-    def kappa_m(self, axial_strain):
-        """Critical curvatures (2, ...) and their derivative with respect to the axial strain.
+    def kappa_m(self, axial_strain, derivative: bool = True):
+        """Critical curvatures (2, ...) and their derivative with respect to the axial strain
+        (None without ``derivative``: then the interpolant's cubic pieces evaluated here, on its
+        uniform grid, the same values to round-off, for the results of a law that sticks).
 
         A monotone C¹ interpolant (PCHIP) of the tabulated law: a piecewise-linear one
         has a derivative that jumps at every grid point, and Newton stalls on a kink.
         """
-        eps = np.clip(axial_strain, 0.0, self.kappa_grid[-1])
-        return self._spline(eps), self._slope(eps) * (axial_strain > 0)
+        grid = self.kappa_grid
+        eps = np.clip(axial_strain, 0.0, grid[-1])
+        if derivative:
+            return self._spline(eps), self._slope(eps) * (axial_strain > 0)
+        i = np.minimum((eps * ((len(grid) - 1) / grid[-1])).astype(np.intp), len(grid) - 2)
+        c = self._cubics[i]  # (..., 2, 4): the cubic of each point's interval, per axis
+        t = (eps - grid[i])[..., None]
+        value = ((c[..., 0] * t + c[..., 1]) * t + c[..., 2]) * t + c[..., 3]  # (..., 2)
+        return np.moveaxis(value, -1, 0), None
 
     def _kappa_m_of(self, axial_strain):
         """`kappa_m`, without the derivative (None) where the law sticks everywhere: no tangent
@@ -167,6 +198,8 @@ class HelicalWires(SectionTerm):
         return self.slip.initial_state((2, *model.x.shape))
 
     def next_state(self, output, state):
+        if self._sticks:
+            return state
         return self.slip.next_state(output["curvature"], output["points"], state)
 
     def points(self, axial_strain, kappa_m=None) -> SlipPoints:
@@ -226,6 +259,8 @@ class HelicalWires(SectionTerm):
 
     def section(self, g, step):
         axial = g[0] + 0.5 * (g[1] ** 2 + g[3] ** 2)
+        if self._sticks:  # the principal curvatures are for the results alone (`principal`)
+            return self._section_stick(g, axial)
         kappa = g[2:5:2]  # (v'', w'') components along y, z
         levers = self.levers
         k_principal = contract("kcen,cen->ken", levers, kappa)
@@ -266,6 +301,53 @@ class HelicalWires(SectionTerm):
             N=N,
             energy=energy,
             points=points,
+        )
+        return S, D, output
+
+    def principal(self, g) -> np.ndarray:
+        """The curvatures about the principal axes of the turning section (2, ne, nq) (1/m) at
+        generalized strains ``g``."""
+        return contract("kcen,cen->ken", self.levers, g[2:5:2])
+
+    def _section_stick(self, g, axial):
+        """`section` of a law that sticks everywhere: the strains are ``Σ_a C_a g̃_a`` over the
+        rows of ∂ε_j/∂g fixed per model (``C``: on ε_a, v″, w″, φ′), the forces and tangent their
+        4 × 4 sums, and the rows of v′ and w′ the axial row times v′ and w′ (∂ε_a/∂v′ = v′)."""
+        C = self._b_stick  # (4, nw, ne, nq)
+        reduced = np.array([axial, g[2], g[4], g[5]])
+        strain = contract("ajen,aen->jen", C, reduced)
+        stress, tangent = self.materials.stress_and_tangent(strain)
+        stress = stress * self._alive3  # a broken wire carries nothing (its area weight is zero too)
+        s = self.area_weight * stress
+        S4 = contract("jen,ajen->aen", s, C)
+        # the 10 distinct entries of the symmetric 4 × 4 Σ_j k_j C_a C_b (the products fixed per model)
+        D4 = contract("pjen,jen->pen", self._stick_pairs, self.area_weight * tangent)
+        N = S4[0]
+        v1, w1 = g[1], g[3]
+        S = np.empty_like(g)
+        S[0], S[2], S[4], S[5] = N, S4[1], S4[2], S4[3]
+        S[1], S[3] = N * v1, N * w1
+        # D from 21 rows in one gather (`_stick_map`): D4 on the rows and columns of ε_a, v″, w″,
+        # φ′; those of v′ and w′ the axial row times v′ and w′, with N on the diagonal (the
+        # geometric stiffness K_G)
+        first, D00 = D4[:4], D4[0]  # the axial row: pairs (0, 0), (0, 1), (0, 2), (0, 3)
+        rows = np.empty((21, *axial.shape))
+        rows[:10] = D4
+        np.multiply(first, v1, out=rows[10:14])
+        np.multiply(first, w1, out=rows[14:18])
+        rows[18] = D00 * v1 * v1 + N
+        rows[19] = D00 * w1 * w1 + N
+        rows[20] = D00 * v1 * w1
+        D = rows[self._stick_map]
+        output = dict(
+            strain=strain,
+            stress=stress,
+            curvature=None,  # Stick: for the results only, `principal` and `kappa_m` at the converged state
+            kappa_m=None,
+            slipping=self._no_slip,
+            axial=axial,
+            N=N,
+            energy=lambda: np.sum(self.area_weight * self.materials.energy(strain), axis=0),  # on demand
         )
         return S, D, output
 
@@ -412,11 +494,12 @@ class WireBending(SectionTerm):
         self._D = np.zeros((6, 6, ne, nq))
         self._D[2, 2] = self._D[4, 4] = self.EI
         self._D[5, 5] = self.GJ
+        self._D.flags.writeable = False  # shared by every assembly
+        self._stiffness = np.array([0.0, 0.0, self.EI, 0.0, self.EI, self.GJ])[:, None, None]
 
     def section(self, g, step):
-        S = np.zeros_like(g)
-        S[2], S[4], S[5] = self.EI * g[2], self.EI * g[4], self.GJ * g[5]
-        return S, self._D, {"energy": 0.5 * (S[2] * g[2] + S[4] * g[4] + S[5] * g[5])}
+        S = self._stiffness * g
+        return S, self._D, {"energy": lambda: 0.5 * np.sum(S * g, axis=0)}  # the energy on demand
 
 
 class SinusoidalDamageLoads(Term):
