@@ -40,9 +40,9 @@ One concern per module (the packages split further, see their docstrings):
 - `moordyn`: MoorDyn input files (v1 and v2, as MoorDyn reads them) read and written;
   `system_file`: the TOML system file.
 
-Data flow: segments and seabed solutions (2-D) → ``choice`` (the model, in the plane or in
-space) → ``line3d`` → ``system`` (bodies and points) → ``equilibrium`` → the writers and plots, which only
-read the results.
+Data flow: segments and seabed solutions (2-D), the line BVPs → ``choice`` (the model, in the
+plane or in space) → ``system`` (bodies and points) → ``equilibrium`` → the writers and plots,
+which only read the results.
 """
 
 from __future__ import annotations

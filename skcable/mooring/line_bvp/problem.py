@@ -392,14 +392,6 @@ class LineProblem(DiscreteLine):
         rows = abs(self.jacobian(state)) @ np.abs(state.z) * EPS
         return self.merit(rows)
 
-    def end_sensitivity(self, state):
-        """``(K, dz)``: ``K = ∂(H_B, V_B)/∂(span, dh)`` (N/m, rows H_B, V_B) of the discrete line
-        at a converged ``state`` and ``dz = ∂z/∂(span, dh)`` (every dof, two columns), by the
-        implicit function theorem (`DiscreteLine.end_sensitivities`: ``(H_B, V_B)`` are the rows
-        of ``R⁰`` at B, the fairlead no contact node)."""
-        K, _, dz = self.end_sensitivities(state)
-        return K, dz
-
     def reactions(self, R0):
         """``(H_A, V_A, H_B, V_B)`` (N) from the residual without contact at the supports."""
         N = self.N

@@ -265,13 +265,6 @@ class LineProblem3D(DiscreteLine):
         """The merit of `rounding`: the round-off floor of the merit at ``state``."""
         return 0.0 if state.z is None else self.merit(self.rounding(state))
 
-    def end_sensitivity(self, state):
-        """``(K_B, K_A, dz)`` at a converged ``state``: ``K_B = ∂S_B/∂r_B`` and ``K_A =
-        ∂S_A/∂r_B`` (N/m, 3 × 3; ``S`` the supports' reactions on the line, ``r_B`` the fairlead)
-        and ``dz = ∂z/∂r_B``, by the implicit function theorem (the active set held:
-        `DiscreteLine.end_sensitivities`)."""
-        return self.end_sensitivities(state)
-
     def reactions(self, R0):
         """``(S_A, S_B)``: the supports' reactions on the line at A and B (N, 3-vectors)."""
         return R0[self.end_dofs("a")], R0[self.end_dofs("b")]
