@@ -36,7 +36,7 @@ import pytest
 from scipy.integrate import trapezoid
 
 from skcable import strand
-from skcable.errors import InputError
+from skcable.errors import InputError, PlausibilityWarning
 from skcable.fe import check_tangent
 
 P = 20e3  # N: the axial force of the 1x7 and the tension of its law
@@ -220,6 +220,8 @@ def test_refusals(steel):
         model.solve(force=P, prescribed={"left": {"u'": 0.0}})
     with pytest.raises(InputError, match="^prescribed: "):
         model.solve(force=P, prescribed={"right": {"v'": 0.5}})
+    with pytest.warns(PlausibilityWarning, match="^force: .*not the tension"):  # knees of another tension
+        strand.bending_cycles(model, 0.001, force=0.8 * P, n_steps=1, cycles=1)
     with pytest.raises(InputError, match="^law: "):
         strand.StageSlip(strand.BendingLaw(model.strand.section(), mu=0.5, axial_strain=0.002))
     drake = strand.LayerSlipLaw(strand.preset("acsr-drake").section(), mu=0.5, tension=28e3)

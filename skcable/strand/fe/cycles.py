@@ -19,15 +19,16 @@ reach its slip moment gives the next event, and the model is solved there. The r
 linear between the vertices (the moderate-rotation kinematics aside: ε_a = u′ + ½v′² stiffens
 the strand by a relative amount of the order of the end slope squared), and the trapezoidal
 rule gives the loop's area, the energy per cycle, exactly: it equals the summed friction work to
-about 1e-8 (tests/strand/test_cycles.py). Without ``exact``, the steps are the schedule's alone
-and the loop's area carries the trapezoidal rule's error at the kinks it steps over.
+about 1e-9 (tests/strand/test_cycles.py, benchmarks/strand_loops.py). Without ``exact``, the
+steps are the schedule's alone and the loop's area carries the trapezoidal rule's error at the
+kinks it steps over (6 % with two steps a quarter cycle in the benchmark).
 
 **Masing's rules for a structure.** A structure whose only nonlinearity is its Coulomb stages,
-loaded from the virgin state by one displacement q with every point's curvature growing
+loaded from the virgin state by one displacement q so that every point that slips is loaded
 monotonically, obeys Masing's rules as a whole: after a reversal at :math:`(q_r, R_r)` the
 increment problem is the virgin one with every slip limit doubled, whose solution is twice the
-virgin solution at half the displacement, so :math:`R = R_r - 2R_b((q_r - q)/2)` with the
-structure's backbone :math:`R_b`, and a cycle :math:`\pm q_a` dissipates
+virgin solution at half the displacement, so :math:`R = R_r - 2(R_b((q_r - q)/2) - R_b(0))`
+with the structure's backbone :math:`R_b`, and a cycle :math:`\pm q_a` dissipates
 
 $$
 W = 8\int_0^{q_a}\big(R_b - R_b(0)\big)\,dq - 4q_a\big(R_b(q_a) - R_b(0)\big)
@@ -36,11 +37,13 @@ $$
 
 :math:`D_b(q_a)` the friction work done along the backbone up to :math:`q_a` (every slip of a
 half cycle is twice the backbone's at half the displacement). `BendingCycles.masing_energy` is
-the first form from the traced backbone.
+the first form from the traced backbone. A point that stops slipping while the drive goes on
+(`BendingCycles.unloaded`) breaks the premise: the first cycle then need not close.
 """
 
 from __future__ import annotations
 
+import warnings
 from dataclasses import dataclass
 
 import numpy as np
@@ -48,12 +51,15 @@ import scipy.sparse.linalg as spla
 
 from skcable._checks import whole
 from skcable._show import Shown, counted, quantity
-from skcable.errors import ConvergenceError, InputError
+from skcable.errors import ConvergenceError, InputError, PlausibilityWarning
 from skcable.strand.fe.stages import StageSlip
 from skcable.strand.fe.supports import StrandSupports
 from skcable.strand.fe.terms import FIELDS
 
-__all__ = ["ACTIVE_SET_ROUNDS", "BendingCycles", "ON_LIMIT", "PROBE", "SIMULTANEOUS", "bending_cycles"]
+__all__ = [
+    "ACTIVE_SET_ROUNDS", "BendingCycles", "ON_LIMIT", "PROBE", "SIMULTANEOUS", "TENSION_MATCH",
+    "bending_cycles",
+]  # fmt: skip
 
 #: how far into a step (relative to it) the tangent of its start is taken: the stages on their
 #: slip limit go on slipping as the load goes on, and unload (stick) after a reversal
@@ -64,6 +70,9 @@ SIMULTANEOUS = 1e-9
 ON_LIMIT = 1e-6
 #: tangents tried at a vertex until the stages' status agrees with the rate it gives
 ACTIVE_SET_ROUNDS = 4
+#: the largest relative difference between the strand's axial force and its law's tension
+#: before `bending_cycles` warns
+TENSION_MATCH = 0.01
 
 
 @dataclass(repr=False, eq=False)
@@ -237,9 +246,25 @@ class _Tracer:
         self.rows: list[tuple[float, float, float, int]] = []  # (drive, reaction, work, branch)
         self.inexact = 0
         start = self.solve(0.0, None, None)
+        self._check_tension(start.force)
         self.U, self.state = start.dofs, start.state
         self.rows.append((0.0, float(start.reactions[end][dof]), 0.0, 0))
         self.start = start
+
+    def _check_tension(self, force: float) -> None:
+        """Warn when the strand's axial force is not the tension the law's knees are for."""
+        tension = getattr(self.law.law, "tension", None)
+        if tension is None or abs(force - tension) <= TENSION_MATCH * abs(tension):
+            return
+        argument = "force" if "force" in self.load else "strain" if "strain" in self.load else "model"
+        warnings.warn(
+            PlausibilityWarning(
+                argument,
+                f"the strand's axial force {force:.6g} N is not the tension {tension:.6g} N of its layer "
+                "law, whose knees are that tension's (the law's parameters do not follow the model's)",
+            ),
+            stacklevel=4,
+        )
 
     def solve(self, q, guess, state):
         prescribed = {self.end: {self.dof: self.base + q}}
@@ -298,11 +323,11 @@ class _Tracer:
         rate, sticking = self.tangent_rate(moment, direction, span)
         speed = self.B * direction * self.curvature(rate)[:, None]
         moving = sticking & (speed != 0.0)
-        with np.errstate(divide="ignore", invalid="ignore"):
+        with np.errstate(divide="ignore", invalid="ignore"):  # >= 0: a sticking stage is inside its limit
             distance = np.where(
                 moving, (np.sign(speed) * self.M - moment) / np.where(moving, speed, 1.0), np.inf
             )
-        first = float(distance.min(initial=np.inf))
+        first = max(float(distance.min(initial=np.inf)), 0.0)
         if first >= span:
             return q1, rate, sticking, distance <= span * (1.0 + SIMULTANEOUS)
         return q0 + direction * first, rate, sticking, distance <= first + span * SIMULTANEOUS

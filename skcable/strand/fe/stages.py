@@ -154,8 +154,9 @@ class StageSlip(SlipLaw):
 
     def onset(self, points):
         """The law's first knee about each axis (1/m), at every point: where the strand first
-        slips (infinite about an axis without friction)."""
-        return np.broadcast_to(self._first.reshape(2, *(1,) * (points.axial.ndim)), (2, *points.axial.shape))
+        slips; about an axis without friction, Cardou's κ_m there (finite: `BendingLaw`)."""
+        first = self._first.reshape(2, *(1,) * points.axial.ndim)
+        return np.where(np.isfinite(first), first, points.kappa_m)
 
     def work(self, previous, state) -> np.ndarray:
         """The friction work of a step per unit length (J/m) at every point and axis,
