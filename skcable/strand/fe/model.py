@@ -224,8 +224,12 @@ class StrandModel:
             )
         laws = [t.slip for t in self.terms if isinstance(getattr(t, "slip", None), SlipLaw)]
         self.slip = laws[0] if laws else slip_law("none", mu)
-        if self.slip.name != "none" and len(strand.layers) != 1:
-            raise InputError("slip", "slip models need a single helical layer (1x7-type strands)")
+        if self.slip.name != "none" and not self.slip.layered and len(strand.layers) != 1:
+            raise InputError(
+                "slip",
+                "this slip law needs a single helical layer (1x7-type strands); a strand of several "
+                "layers takes the layer-by-layer law, StageSlip(LayerSlipLaw(...))",
+            )
         self.element = element
         if element not in ELEMENTS:
             raise InputError("element", f"must be one of {tuple(ELEMENTS)}, got {element!r}")
@@ -434,18 +438,41 @@ class StrandModel:
             U[u.nodal_dofs[0]] = strain * self.mesh.p[0]
         return self._prescribed(U, strain)
 
-    def _prescribed(self, U, load):
-        """``U`` with the supports' values and, under an imposed strain ``load``, ``u(L)``."""
-        U[self.fixed] = self.fixed_values
+    def _prescribed(self, U, load, values=None):
+        """``U`` with the supports' values (``values``: those of a solve's ``prescribed``) and,
+        under an imposed strain ``load``, ``u(L)``."""
+        U[self.fixed] = self.fixed_values if values is None else values
         if self.axial == "strain":
             U[self.pull] = load * self.length + self.supports.left["u"]
         return U
 
-    def _start(self, load):
-        """The straight start of a solve: the uniform strain of the load (P / EA under a force)."""
-        if self.axial == "strain":
-            return self.uniform(load)
-        return self.uniform(load / self.EA if self.axial == "force" else 0.0)
+    def _start(self, load, values=None):
+        """The straight start of a solve: the uniform strain of the load (P / EA under a force),
+        with the supports' ``values``."""
+        strain = load if self.axial == "strain" else load / self.EA if self.axial == "force" else 0.0
+        return self._prescribed(self.uniform(strain), load, values)
+
+    def prescribed_values(self, prescribed) -> np.ndarray:
+        """The values of the held dofs (``fixed``'s order) with ``prescribed`` in place of the
+        supports' own: ``{"left": {dof: value}, "right": {...}}`` (m, rad) over the dofs the
+        supports hold at that end (not the axial load's u(L)); refused by name otherwise."""
+        values = self.fixed_values.copy()
+        if not isinstance(prescribed, dict) or not set(prescribed) <= {"left", "right"}:
+            raise InputError("prescribed", f"must be a dict over 'left' and 'right', got {prescribed!r:.80}")
+        for end, given in prescribed.items():
+            held = getattr(self.supports, end)
+            if not isinstance(given, dict):
+                raise InputError("prescribed", f"{end} end: must be a dict {{dof: value}}, got {given!r:.80}")
+            for dof, value in given.items():
+                if dof not in held:
+                    raise InputError(
+                        "prescribed",
+                        f"{end} end: {dof!r} is not held by the supports ({sorted(held)}); a solve "
+                        "moves only a held dof (hold it in supports=, at any value)",
+                    )
+                checked = StrandSupports.value(end, dof, value, "prescribed")
+                values[np.searchsorted(self.fixed, self._reaction_dofs[end][dof])] = checked
+        return values
 
     def strain_of(self, U) -> float:
         """The strand's mean axial strain ``(u(L) − u(0)) / L`` of the dofs ``U``."""
@@ -679,8 +706,11 @@ class StrandModel:
             return f"at strain {load:.6g}"
         return f"at axial force {load:.6g} N" if self.axial == "force" else "without axial load"
 
-    def _newton(self, U, strain, state, options: NewtonOptions, diagnose: bool = True):
-        U = self._start(strain) if U is None else self._prescribed(np.array(U, dtype=float), strain)
+    def _newton(self, U, strain, state, options: NewtonOptions, diagnose: bool = True, values=None):
+        if U is None:
+            U = self._start(strain, values)
+        else:
+            U = self._prescribed(np.array(U, dtype=float), strain, values)
         name = f"StrandModel: Newton {self._load_name(strain)}"
 
         first_check, non_finite_seen = self._first, []
@@ -912,6 +942,7 @@ class StrandModel:
         passes: int = 6,
         options=None,
         diagnose: bool = True,
+        prescribed=None,
         **newton_options,
     ):
         """Equilibrium under the model's axial load: a [`StepResult`][skcable.strand.StepResult].
@@ -927,6 +958,9 @@ class StrandModel:
         ``atol``, ``max_iter``, ``line_search``, ``callback``, ...). ``diagnose``: on failure,
         read the tangent's singular or negative modes into the message (an eigendecomposition
         of its free block; `capacity_curve` skips it for the steps it cuts back).
+        ``prescribed``: ``{"left": {dof: value}, "right": {...}}`` (m, rad), values of dofs the
+        supports hold, for this solve in place of theirs (an end turned or moved step by step:
+        `skcable.strand.bending_cycles`).
 
         Raises
         ------
@@ -939,7 +973,8 @@ class StrandModel:
         options = NewtonOptions.of(self.options if options is None else options, **newton_options)
         whole("passes", passes, 0)
         state = self.initial_state() if state is None else tuple(state)
-        result = self._newton(guess, strain, state, options, diagnose)
+        values = None if prescribed is None else self.prescribed_values(prescribed)
+        result = self._newton(guess, strain, state, options, diagnose, values)
         settled, seen, assemblies, shifted = True, [state], result.assemblies, result.shifted
         for _ in range(passes):
             outputs = result.state["outputs"]
@@ -950,7 +985,7 @@ class StrandModel:
                 settled = False
                 break
             try:
-                retry = self._newton(result.x, strain, new, options)
+                retry = self._newton(result.x, strain, new, options, values=values)
             except ConvergenceError:
                 settled = False
                 break

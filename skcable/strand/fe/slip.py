@@ -33,9 +33,11 @@ element beyond κ_m anywhere: the lower bound, no friction moment). They see κ_
 
 A law may keep a *state* (which elements slip, a load reversal): it is frozen within a Newton
 solve and updated from the converged curvatures between solves, until it settles
-(`SlipLaw.next_state`). A section law written outside the library subclasses `SlipLaw` and
-implements `SlipLaw.moment`; a stateless law needs nothing else (``smooth = False`` where its
-moment has kinks: the model then takes semismooth Newton steps).
+(`SlipLaw.next_state`). A law with a history commits its state that way: `StageSlip`
+(`skcable.strand.fe.stages`), the layer-by-layer law with the slip of every stage at every
+point, traces hysteresis loops step by step. A section law written outside the library
+subclasses `SlipLaw` and implements `SlipLaw.moment`; a stateless law needs nothing else
+(``smooth = False`` where its moment has kinks: the model then takes semismooth Newton steps).
 """
 
 from __future__ import annotations
@@ -129,17 +131,30 @@ class SlipLaw:
         True for a law that gives the composite curvature (`composite`) instead of the moment.
     smooth : bool
         False when the moment has kinks in κ (the model then takes semismooth Newton steps).
+    layered : bool
+        True for a law that holds for strands of several helical layers (`StageSlip`: one
+        stage per layer); the others need a single helical layer (1x7-type strands).
     """
 
     name = "custom"
     kinematic = False
     smooth = True
+    layered = False
 
     def __init__(self, mu: float = 0.5):
         self.mu = friction(mu)
 
     def __repr__(self) -> str:
         return f"{type(self).__name__}(mu={self.mu:g})"
+
+    def check(self, model) -> None:
+        """Refuse (`InputError` naming ``slip``) a model the law does not fit; called when a
+        model binds its wires. The default accepts every model."""
+
+    def onset(self, points: SlipPoints) -> np.ndarray:
+        """The curvature (1/m) at which the law first slips, (2, ne, nq), for the results:
+        Cardou's κ_m by default."""
+        return points.kappa_m
 
     def initial_state(self, shape: tuple):
         """State at the start of a curve (all stick); ``shape`` = (2, n_elements, n_quad). None: stateless."""

@@ -157,6 +157,17 @@ class StrandSupports:
         return name(self.left, False), name(self.right, self.axial != "none", strain)
 
     @staticmethod
+    def value(end: str, dof: str, value, argument: str = "supports") -> float:
+        """``value`` of ``dof`` at ``end`` checked as a support's (a finite number; a slope within
+        `MAX_SLOPE`), or `InputError` naming ``argument``."""
+        try:
+            return _end(end, {dof: value})[dof]
+        except InputError as exc:
+            if argument == "supports":
+                raise
+            raise InputError(argument, str(exc).removeprefix("supports: ")) from None
+
+    @staticmethod
     def index(end: str, dof: str, bases: Mapping, offsets: Mapping, seen: dict | None = None) -> int:
         """The global index of ``dof`` (a name of `DOFS`) at ``end`` ("left" or "right");
         ``seen``: a cache of the bases' end dofs shared between calls (`_nodal`)."""

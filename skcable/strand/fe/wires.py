@@ -130,6 +130,7 @@ class HelicalWires(SectionTerm):
         self._neg_c2 = -self.c2
         self._stick_constants(x.shape)
         self._cardou = CardouSection(section, self.slip.mu)
+        self.slip.check(model)
         # the composite curvatures and points of `frozen`
         self._frozen: tuple[np.ndarray, SlipPoints] | None = None
         if not self.slip.kinematic:  # a section law: a friction moment has no potential
@@ -399,7 +400,7 @@ class HelicalWires(SectionTerm):
             strain=strain,
             stress=stress,
             curvature=k_principal,
-            kappa_m=points.kappa_m,
+            kappa_m=self.slip.onset(points),
             slipping=self.slip.slipping(k_principal, points, state),
             axial=axial,
             N=N,
@@ -469,7 +470,7 @@ class HelicalWires(SectionTerm):
         D[4, 4] += bending[1, 1]
         energy = np.sum(self.area_weight * density, axis=0) + np.sum(psi, axis=0)
         output = dict(
-            strain=strain, stress=stress, curvature=k_principal, kappa_m=points.kappa_m,
+            strain=strain, stress=stress, curvature=k_principal, kappa_m=self.slip.onset(points),
             slipping=self.slip.slipping(k_principal, points, state), axial=axial, N=N, points=points,
             composite=k_c, energy=energy,
         )  # fmt: skip
