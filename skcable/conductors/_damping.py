@@ -24,23 +24,23 @@ $$
 **Foti & Martinelli's closed form** (F. Foti, L. Martinelli, "An enhanced unified model for the
 self-damping of stranded cables under aeolian vibrations", J. Wind Eng. Ind. Aerodyn. 182, 2018,
 eqs. 23–30): with the limit curvature :math:`\kappa_0` and the stick stiffness
-:math:`EI_\max` of the linearised law (`StageLaw.kappa_0`, `StageLaw.EI_max`),
+:math:`EI_{\max}` of the linearised law (`StageLaw.kappa_0`, `StageLaw.EI_max`),
 
 $$
-P = G_1(k_n)\,\frac{128\pi^5 m^3 EI_\max}{\kappa_0}\frac{y^3 f^7}{T^3}
-  + G_2(k_n)\,4\pi^3 m^2 EI_\max\frac{y^2 f^5}{T^2},
+P = G_1(k_n)\,\frac{128\pi^5 m^3 EI_{\max}}{\kappa_0}\frac{y^3 f^7}{T^3}
+  + G_2(k_n)\,4\pi^3 m^2 EI_{\max}\frac{y^2 f^5}{T^2},
 $$
 
 :math:`G_1 = 1/3 - (3/8)\cos 2\pi k_n + (1/24)\cos 6\pi k_n`,
 :math:`G_2 = \pi - 4\pi k_n + \sin 4\pi k_n`, :math:`2\pi k_n = \arcsin\min(1,
 \kappa_0\lambda^2/4\pi^2 y)`: the string-loop integral of the loop energy
-:math:`W = EI_\max\kappa_a^3/(2\kappa_0)` (micro-slip, :math:`\kappa_a \le \kappa_0`) and
-:math:`EI_\max\kappa_a^2/2` (gross slip) beyond. It is evaluated here in that integrated form,
+:math:`W = EI_{\max}\kappa_a^3/(2\kappa_0)` (micro-slip, :math:`\kappa_a \le \kappa_0`) and
+:math:`EI_{\max}\kappa_a^2/2` (gross slip) beyond. It is evaluated here in that integrated form,
 without cancellation: with :math:`r = \min(1, \kappa_0/\kappa_{y})`, :math:`\kappa_y = 4\pi^2 y /
 \lambda^2`, :math:`s = \sqrt{1 - r^2}`, :math:`\psi = \arccos r`,
 
 $$
-P = \frac{f\,EI_\max}{\pi}\left[\frac{\kappa_y^3}{\kappa_0}\frac{(1 - s)^2(2 + s)}{3}
+P = \frac{f\,EI_{\max}}{\pi}\left[\frac{\kappa_y^3}{\kappa_0}\frac{(1 - s)^2(2 + s)}{3}
     + \frac{\kappa_y^2}{2}(\psi + r s)\right].
 $$
 

@@ -18,10 +18,8 @@ has weight :math:`w_k` per unstretched length and the joints carry the point loa
 ``s``. Three states:
 
 - **taut**: :math:`T \ge 0` along the line and its stretched length is the ends' height
-  difference :math:`\Delta z`:
-
-  .. math:: \sum_k \int_{s_k}^{s_{k+1}} \big(1 + \varepsilon(T(s))\big)\,ds = \Delta z,
-
+  difference :math:`\Delta z`,
+  :math:`\sum_k \int_{s_k}^{s_{k+1}} \big(1 + \varepsilon(T(s))\big)\,ds = \Delta z`:
   one equation for :math:`T_D`, monotone (solved by safeguarded Newton; closed form for
   ``ε = T/EA``). The ends' vertical stiffness is :math:`1/C`, :math:`C = \int c(T)\,ds` the
   line's compliance (:math:`c = d\varepsilon/dT`); the lateral one is the limit of the catenary's

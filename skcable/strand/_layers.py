@@ -9,11 +9,11 @@ mechanical models for overhead electrical conductors in bending", GREMCA, Univer
 torsion and bending", Int. J. Solids Struct. 91, 2016). The law is a `StageLaw` of one stage per
 helical layer:
 
-- **Stiffnesses.** The wires' own bending, :math:`EI_\min = \sum E_i I_{w,i}\cos\alpha_i`, and
+- **Stiffnesses.** The wires' own bending, :math:`EI_{\min} = \sum E_i I_{w,i}\cos\alpha_i`, and
   per layer k the composite share :math:`B_k = \sum_{i\in k} E_i A_i \cos^3\alpha_i\,d_i^2`, d_i
   the wire's distance to the principal axis through the net (modulus-weighted) centroid; the
   straight core's share (not zero when wires are broken) belongs to the first layer, the one that
-  slides on it. :math:`EI_\min + \sum_k B_k` is the section's stick stiffness
+  slides on it. :math:`EI_{\min} + \sum_k B_k` is the section's stick stiffness
   (`Section.EI_stick`); all secant moduli at the axial strain, as in `BendingLaw`.
 - **Pressure.** A helical wire of tension F, helix radius R and lay angle α presses inward with
   :math:`F\sin^2\alpha/R` per unit of its length, so layer j presses on what is inside it with

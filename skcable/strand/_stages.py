@@ -1,18 +1,18 @@
 r"""A piecewise-linear stick/slip bending law of several stages, monotonic and cyclic.
 
 Per principal axis, the bending moment is carried by the wires' own bending, stiffness
-:math:`EI_\min`, and by stages k = 1..n, each an elastic element of stiffness :math:`B_k` that
+:math:`EI_{\min}`, and by stages k = 1..n, each an elastic element of stiffness :math:`B_k` that
 slips at the moment :math:`M_k` (a Coulomb element: Iwan's parallel model, W.D. Iwan, "A
 distributed-element model for hysteresis and its steady-state dynamic response", J. Appl. Mech.
 33, 1966). With the slip curvature :math:`\kappa_{p,k}` of stage k as its history,
 
 $$
-M = EI_\min\,\kappa + \sum_k m_k, \qquad m_k = B_k(\kappa - \kappa_{p,k}), \qquad |m_k| \le M_k .
+M = EI_{\min}\,\kappa + \sum_k m_k, \qquad m_k = B_k(\kappa - \kappa_{p,k}), \qquad |m_k| \le M_k .
 $$
 
-**Backbone.** From the straight, unslipped state, :math:`M_b(\kappa) = EI_\min\kappa + \sum_k
+**Backbone.** From the straight, unslipped state, :math:`M_b(\kappa) = EI_{\min}\kappa + \sum_k
 \min(B_k|\kappa|, M_k)\,\mathrm{sign}\,\kappa`: piecewise linear from
-:math:`EI_\max = EI_\min + \sum_k B_k` to :math:`EI_\min`, one knee per stage at
+:math:`EI_{\max} = EI_{\min} + \sum_k B_k` to :math:`EI_{\min}`, one knee per stage at
 :math:`\kappa_k = M_k/B_k` (a stage without stiffness carries nothing: :math:`\kappa_k = 0`).
 
 **Any curvature path.** Each stage is updated by its exact return mapping (trial
@@ -29,7 +29,7 @@ W(\kappa_a) = 8\int_0^{\kappa_a} M_b\,d\kappa - 4\kappa_a M_b(\kappa_a)
            = 4\sum_k M_k\,(\kappa_a - \kappa_k)^+ ,
 $$
 
-for one stage (a bilinear law, :math:`EI_1 = EI_\min + B`, :math:`EI_2 = EI_\min`,
+for one stage (a bilinear law, :math:`EI_1 = EI_{\min} + B`, :math:`EI_2 = EI_{\min}`,
 :math:`\kappa_s = M/B`) :math:`W = 4(EI_1 - EI_2)\kappa_s(\kappa_a - \kappa_s)^+`.
 
 **Over a sine.** A vibration loop whose curvature amplitude varies as

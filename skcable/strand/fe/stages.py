@@ -22,7 +22,7 @@ law traces Masing's loops under any path of the structure. The friction work of 
 
 **What the model adds.** M_c is the *composite* moment; the section moment is
 :math:`EI_w\kappa + M_c` with the wires' own bending :math:`EI_w` of `WireBending`, so the
-law's :math:`EI_\min` must be the section's ``EI_slip`` and its stick share :math:`\sum_k B_k`
+law's :math:`EI_{\min}` must be the section's ``EI_slip`` and its stick share :math:`\sum_k B_k`
 the section's ``EI_stick − EI_slip`` (the elastic ones: a `LayerSlipLaw` of the model's
 strand at an axial strain in its wires' linear range; checked when a model takes the law, to
 1e-6). The wires' strains follow the composite curvature :math:`M_c/(EI_{stick} - EI_{slip})`
