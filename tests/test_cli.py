@@ -380,21 +380,44 @@ def test_unusable_paths_and_options_are_refused_before_computing(
 _STATE = ("--span", "300", "--dh", "-10", "--EA", "3e7", "--alpha", "2.3e-5", "--w0", "15", "--t0", "15")
 
 
-@pytest.mark.parametrize("model", ["catenary", "parabola"])
-def test_change_of_state_json_is_the_api(capsys, model):
+@pytest.mark.parametrize(
+    ("model", "rtol", "chosen"),
+    [("catenary", None, "catenary"), ("parabola", None, "parabola"), ("auto", None, "catenary"),
+     ("auto", 1e-2, "parabola")],
+)  # fmt: skip
+def test_change_of_state_json_is_the_api(capsys, model, rtol, chosen):
     status, out, err = main(
         capsys, "change-of-state", *_STATE, "--H0", "2e4", "--w", "15", "25", "--t", "-20", "60",
-        "--wind", "0", "8", "--model", model, "--json",
+        "--wind", "0", "8", "--model", model, *(() if rtol is None else ("--rtol", str(rtol))), "--json",
     )  # fmt: skip
     assert status == cli.EXIT_OK, err
     got = json.loads(out)
     api = conductors.change_of_state(
         300.0, -10.0, EA=3e7, alpha=2.3e-5, w0=15.0, t0=15.0, H0=2e4,
-        w=np.array([15.0, 25.0]), t=np.array([-20.0, 60.0]), wind=np.array([0.0, 8.0]), model=model,
+        w=np.array([15.0, 25.0]), t=np.array([-20.0, 60.0]), wind=np.array([0.0, 8.0]), model=chosen,
     )  # fmt: skip
     for key in ("H", "H_plane", "sag", "T_max", "length", "blowout"):
         assert got[key] == getattr(api, key).tolist(), key
     assert (got["L0"], got["H0"], got["sag0"]) == (api.L0, api.H0, api.sag0)
+    # auto says which model it took and why: the parabola's estimate against rtol
+    assert got["model"] == chosen
+    if model == "auto":
+        assert f"rtol {rtol or 1e-3:g}" in got["reason"]
+
+
+def test_conductor_table_auto_names_its_model(capsys):
+    args = ("conductor", "table", *_STATE, "--H0", "2e4", "--temperatures", "-20", "60")
+    status, out, err = main(capsys, *args, "--model", "auto", "--rtol", "1e-2", "--json")
+    assert status == cli.EXIT_OK, err
+    got = json.loads(out)
+    parabola = conductors.sag_tension_table(
+        300.0, -10.0, EA=3e7, alpha=2.3e-5, w0=15.0, t0=15.0, H0=2e4, temperatures=[-20.0, 60.0],
+        load_cases={"bare": (15.0, 0.0)}, model="parabola",
+    )  # fmt: skip
+    assert got["H"] == parabola["H"].tolist() and got["model"] == "parabola"
+    status, out, err = main(capsys, *args, "--model", "auto")
+    assert status == cli.EXIT_OK, err
+    assert out.rstrip().splitlines()[-1].startswith("model: the exact catenary")
 
 
 def test_change_of_state_single_state_by_sag(capsys):

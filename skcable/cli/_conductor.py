@@ -17,6 +17,8 @@ _COLUMNS = (("w", "N/m"), ("wind", "N/m"), ("H", "N"), ("sag", "m"), ("T_max", "
 
 
 def _table(args) -> int:
+    import numpy as np
+
     from skcable import conductors
     from skcable.cli._status import EXIT_OK
 
@@ -32,17 +34,20 @@ def _table(args) -> int:
             ) from None
     frame = conductors.sag_tension_table(
         args.span, args.dh, EA=args.EA, alpha=args.alpha, w0=args.w0, t0=args.t0, H0=args.H0,
-        sag0=args.sag0, temperatures=args.temperatures, load_cases=cases, model=args.model,
+        sag0=args.sag0, temperatures=args.temperatures, load_cases=cases, model=args.model, rtol=args.rtol,
     )  # fmt: skip
     rows = [(str(case), float(t)) for case, t in frame.index]
     if args.json:
         out = {"case": [r[0] for r in rows], "t": [r[1] for r in rows]}
         out |= {name: [float(v) for v in frame[name]] for name, _ in _COLUMNS}
+        out |= {"model": np.asarray(frame.attrs["model"]).tolist(), "reason": frame.attrs["reason"]}
         print_json(out)
         return EXIT_OK
     columns: list[tuple[str, list]] = [("case", [r[0] for r in rows]), ("t [°C]", [r[1] for r in rows])]
     columns += [(f"{name} [{unit}]", [float(v) for v in frame[name]]) for name, unit in _COLUMNS]
     table(columns)
+    if args.model == "auto":
+        print(f"model: {frame.attrs['reason']}")
     return EXIT_OK
 
 
@@ -135,7 +140,17 @@ def _table_flags(p) -> None:
         "repeat for more (default: one case 'bare', W = --w0, no wind)",
     )  # fmt: skip
     p.add_argument(
-        "--model", default="catenary", choices=("catenary", "parabola"), help="(default: catenary)"
+        "--model",
+        default="catenary",
+        choices=("catenary", "parabola", "auto"),
+        help="elastic catenary with thermal strain, the classical parabolic cubic, or auto: the parabola "
+        "where its estimated error is within --rtol, else the catenary (default: catenary)",
+    )
+    p.add_argument(
+        "--rtol",
+        type=finite,
+        default=None,
+        help="tolerance of --model auto: relative error [-] (default: 1e-3)",
     )
 
 

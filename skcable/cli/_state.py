@@ -67,14 +67,16 @@ def _run(args) -> int:
     res = conductors.change_of_state(
         args.span, args.dh, EA=args.EA, alpha=args.alpha, w0=args.w0, t0=args.t0, H0=args.H0,
         sag0=args.sag0, w=_numbers(args.w), t=_numbers(args.t),
-        wind=_numbers(args.wind), model=args.model,
+        wind=_numbers(args.wind), model=args.model, rtol=args.rtol,
     )  # fmt: skip
     values = {k: getattr(res, k) for k, _, _ in _FIELDS} | {"L0": res.L0, "H0": res.H0, "sag0": res.sag0}
-    values = listed(values)
+    values = listed(values | {"model": res.model}) | {"reason": res.reason}
     if args.json:
         print_json(values)
     else:
         _print_states(res, values, args.w0, args.t0)
+        if args.model == "auto":
+            print(f"\nmodel: {res.reason}")
     return EXIT_OK
 
 
@@ -120,7 +122,14 @@ def register(sub, command) -> None:
     cs.add_argument(
         "--model",
         default="catenary",
-        choices=("catenary", "parabola"),
-        help="elastic catenary with thermal strain, or the classical parabolic cubic (default: catenary)",
+        choices=("catenary", "parabola", "auto"),
+        help="elastic catenary with thermal strain, the classical parabolic cubic, or auto: the parabola "
+        "where its estimated error is within --rtol, else the catenary (default: catenary)",
+    )
+    cs.add_argument(
+        "--rtol",
+        type=finite,
+        default=None,
+        help="tolerance of --model auto: relative error [-] (default: 1e-3)",
     )
     cs.add_argument("--json", action="store_true", help="print one JSON object (default: a table per state)")

@@ -287,8 +287,8 @@ class Conductor(Shown):
             return H0, sag0
         if H0 is not None or sag0 is not None:
             raise InputError("length", "give exactly one of H0, sag0, length for the reference state")
-        if model != "catenary":
-            raise InputError("length", f"a reference length needs model='catenary', got {model!r}")
+        if model == "parabola":  # "auto" takes the exact H0 of that length, and each state within rtol
+            raise InputError("length", f"a reference length needs model='catenary' or 'auto', got {model!r}")
         length, span, dh = normal("length", length), normal("span", span), real("dh", dh)
         broadcast(span=span, dh=dh, length=length)
         H0 = elastic_catenary(span, dh, self.w, self.EA, length=length).H
@@ -310,6 +310,7 @@ class Conductor(Shown):
         ice_density: float = ICE_DENSITY,
         g: float = STANDARD_GRAVITY,
         model: str = "catenary",
+        rtol: float | None = None,
     ):
         """Sag and tension in other states (`skcable.conductors.change_of_state` with this conductor's data).
 
@@ -324,15 +325,21 @@ class Conductor(Shown):
         H0, sag0, length : float or array_like
             Exactly one (one number, or one per span): the reference state's horizontal
             tension (N), sag (m), or the unstressed length at ``t0`` (m, ``model="catenary"``
-            only) — e.g. the ``L0`` of the intact conductor, for the same conductor after wires
+            or ``"auto"``) — e.g. the ``L0`` of the intact conductor, for the same conductor after wires
             broke.
         t, ice, wind_pressure : float or array_like
             The states: temperature, radial ice thickness (m, >= 0), wind pressure (Pa, >= 0)
             on the iced diameter; broadcast together.
         ice_density, g : float
             Ice density (kg/m³) and gravity (m/s²), > 0.
-        model : {"catenary", "parabola"}
-            As in `skcable.conductors.change_of_state`.
+        model : {"catenary", "parabola", "auto"}
+            As in `skcable.conductors.change_of_state`: ``"auto"`` takes the parabola for a span
+            whose estimated error is within ``rtol``, else the exact catenary, and the result's
+            ``reason`` says which and why.
+        rtol : float, optional
+            The tolerance of ``model="auto"`` (the parabola's estimated relative error in H, sag,
+            T_max and length; default 1e-3), as in `skcable.conductors.change_of_state`; refused
+            with the other models.
 
         Returns
         -------
@@ -345,7 +352,7 @@ class Conductor(Shown):
         wind = self._wind_load(wind_pressure, ice)
         result = change_of_state(
             span, dh, EA=self.EA, alpha=self.alpha, w0=self.w, t0=t0, H0=H0, sag0=sag0,
-            w=w, t=real("t", t), wind=wind, model=model,
+            w=w, t=real("t", t), wind=wind, model=model, rtol=rtol,
         )  # fmt: skip
         if self.rts is not None:
             result.T_max_pct_rts = 100.0 * np.asarray(result.T_max) / self.rts
@@ -365,6 +372,7 @@ class Conductor(Shown):
         ice_density: float = ICE_DENSITY,
         g: float = STANDARD_GRAVITY,
         model: str = "catenary",
+        rtol: float | None = None,
     ):
         """Sag–tension table (pandas DataFrame) of this conductor over load case × temperature.
 
@@ -391,7 +399,7 @@ class Conductor(Shown):
         H0, sag0 = self._reference(span, dh, H0, sag0, length, model)
         table = sag_tension_table(
             span, dh, EA=self.EA, alpha=self.alpha, w0=self.w, t0=t0, H0=H0, sag0=sag0,
-            temperatures=temperatures, load_cases=loads, model=model,
+            temperatures=temperatures, load_cases=loads, model=model, rtol=rtol,
         )  # fmt: skip
         if self.rts is not None:
             table["T_max_per_rts"] = table["T_max"] / self.rts

@@ -373,7 +373,8 @@ def sag_tension_table(
     is ``(case, t)``; the columns ``w, wind, H, sag, T_max, length,
     blowout_deg``. For a line (``span`` a 1-D array, ``dh`` and ``H0`` or ``sag0``
     one number or one per span) the index is ``(span_no, case, t)`` and the columns
-    start with the span's ``span, dh``: one vectorised solve for the whole table.
+    start with the span's ``span, dh``: one vectorised solve for the whole table. The
+    frame's ``attrs`` carry ``model``, ``reason`` and ``rtol`` (which model, and why).
     """
     import pandas as pd
 
@@ -416,4 +417,6 @@ def sag_tension_table(
         spans, dhs = np.broadcast_arrays(np.asarray(span, dtype=float), np.asarray(dh, dtype=float))
         line = {"span": np.repeat(np.ravel(spans), n_states), "dh": np.repeat(np.ravel(dhs), n_states)}
         data = line | {key: np.ravel(np.broadcast_to(value, (n, n_states))) for key, value in data.items()}
-    return pd.DataFrame(data, index=index)
+    frame = pd.DataFrame(data, index=index)
+    frame.attrs.update(model=res.model, reason=res.reason, rtol=res.rtol)  # which model, and why
+    return frame

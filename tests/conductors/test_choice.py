@@ -108,3 +108,32 @@ def test_rtol_belongs_to_auto(change, argument):
             300.0, 0.0, EA=3e7, alpha=2e-5, w0=15.0, t0=15.0, H0=2e4, w=15.0, t=20.0, **change
         )
     assert info.value.argument == argument
+
+
+def test_a_conductor_takes_auto_and_rtol_from_a_reference_length():
+    """`Conductor.change_of_state` passes ``model="auto"`` and ``rtol`` through, a reference
+    length included (its exact H0, then each span's model): within rtol of the exact model on
+    every span, the parabola on the short ones, and its table says which model it took."""
+    drake = conductors.Conductor.from_catalogue("acsr-drake")
+    spans = np.array([60.0, 150.0, 400.0, 1200.0])
+    L0 = drake.change_of_state(spans, t0=15.0, H0=28e3, t=15.0).L0  # an intact line's lengths
+    states = dict(t0=15.0, length=L0, t=np.array([-20.0, 15.0, 75.0]), ice=0.01, wind_pressure=300.0)
+    exact = drake.change_of_state(spans, **states)
+    auto = drake.change_of_state(spans, **states, model="auto", rtol=2e-3)
+    parabola = conductors.change_of_state(
+        spans, 0.0, EA=drake.EA, alpha=drake.alpha, w0=drake.w, t0=15.0, H0=exact.H0, w=exact.w,
+        t=exact.t, wind=exact.wind, model="parabola",
+    )  # fmt: skip
+    took = np.asarray(auto.models) == "parabola"
+    assert auto.model == "mixed"
+    assert took.any() and not took.all(), auto.reason
+    assert np.all(np.abs(auto.H / exact.H - 1) <= 2e-3)
+    np.testing.assert_array_equal(auto.H[took], parabola.H[took])
+    np.testing.assert_array_equal(auto.H[~took], exact.H[~took])
+    table = drake.sag_tension_table(
+        400.0, t0=15.0, H0=28e3, temperatures=[0.0, 50.0], model="auto", rtol=1e-1
+    )
+    assert table.attrs["model"] == "parabola" and "rtol 0.1" in table.attrs["reason"]
+    with pytest.raises(InputError) as info:
+        drake.change_of_state(400.0, t0=15.0, H0=28e3, t=15.0, rtol=1e-3)
+    assert info.value.argument == "rtol"
