@@ -186,7 +186,7 @@ MAX_FRICTION = 5.0
 
 #: Each limit: (quantity, limit, reason, source). docs/howto.md prints this table.
 LIMITS = (
-    ("strain of a chain", "25 %", "offshore chain steels break at an elongation of 12 to 17 %",
+    ("strain of a chain", "25 %", "offshore chain steels' minimum elongation at fracture is 17 % (R3) to 12 % (R5)",
      "Det Norske Veritas, DNV-OS-E302 Offshore Mooring Chain, 2008 (grades R3 to R5)"),
     ("strain of a wire rope or a conductor", "5 %",
      "steel and aluminium wires rupture at a few per cent (the strands' materials, docs/strand_sections.md)",
@@ -204,7 +204,7 @@ LIMITS = (
      "API RP 2SK, Design and Analysis of Stationkeeping Systems for Floating Structures, 3rd ed., 2005"),
     ("a body clear of the water", "lowest point above z = 0, or heave above V / A_WP",
      "the hydrostatics keep the buoyancy ρ g V whatever the heave: a body out of the water has none",
-     "J.N. Newman, Marine Hydrodynamics, MIT Press, 1977, §6.16 (linear hydrostatics about the waterline)"),
+     "J.N. Newman, Marine Hydrodynamics, MIT Press, 1977, ch. 6 (linear hydrostatics about the waterline)"),
     ("a body or a point below the seabed", "z < -depth", "no line or body sits inside the seabed", "-"),
     ("conductor temperature", "-60 to 250 °C",
      "the coldest design ambient to the hottest rated operation (high-temperature conductors); "

@@ -23,7 +23,7 @@ NREL): weight :math:`mg` at the centre of gravity :math:`R\,\mathbf r_G`, buoyan
 moments give the hydrostatic restoring in roll and pitch,
 :math:`\rho g V\,\overline{GM}` to first order), and the heave restoring
 :math:`-\rho g A_{WP}\, z` (J.N. Newman, "Marine Hydrodynamics", MIT Press, 1977,
-§6.16). Their stiffness about the current position,
+ch. 6). Their stiffness about the current position,
 :math:`-\partial(\mathbf F, \mathbf M)/\partial(\mathbf x, \delta\boldsymbol\theta)`, is
 
 .. math:: K_{\theta\theta} = -[\mathbf W]_\times[R\mathbf r_G]_\times

@@ -2,7 +2,7 @@
 differences, an independent equilibrium solver.
 
 The body's own loads follow their statement in MoorPy's ``Body`` (M. Hall, NREL) and J.N.
-Newman, "Marine Hydrodynamics", 1977, §6.16: weight ``m g`` at the centre of gravity,
+Newman, "Marine Hydrodynamics", 1977, ch. 6: weight ``m g`` at the centre of gravity,
 buoyancy ``rho g V`` at the metacentre, heave restoring ``-rho g A_WP z``; its attitude
 ``R = Rz(yaw) Ry(pitch) Rx(roll)``. Each line is solved in its vertical plane by the walk of
 `tests.fuzz.segments` at 50 digits, its force on the fairlead ``(-H e, -V_B)``. Nothing here
