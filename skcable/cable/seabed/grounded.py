@@ -1,6 +1,6 @@
 r"""The grounded regime: the line rests on the seabed from the anchor (or from a first
 touchdown) and rises to the fairlead; its fairlead forces ``(H, V_B)`` solve the
-closure of `skcable.cable.seabed.closure` (J.M. Jonkman, "Dynamics modeling and
+closure of `skcable.cable.closure.on_seabed` (J.M. Jonkman, "Dynamics modeling and
 loads analysis of an offshore floating wind turbine", NREL, 2007).
 
 The iteration starts from the frictionless inextensible touchdown line (a monotone
@@ -19,7 +19,7 @@ import numpy as np
 from skcable._newton2 import solve2
 from skcable._xp import namespace
 from skcable.cable._roots import find_root
-from skcable.cable.seabed.closure import anchor_part, grounded_closure
+from skcable.cable.closure import anchor_part, grounded_closure
 
 __all__ = ["solve_grounded", "solve_grounded_scalar"]
 

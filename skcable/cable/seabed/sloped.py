@@ -15,7 +15,7 @@ import numpy as np
 from skcable._checks import nonnegative, positive, real, require
 from skcable.cable._elastic import elastic_catenary as free_elastic_catenary
 from skcable.cable._extreme import outsized
-from skcable.cable.seabed.closure import hanging_length
+from skcable.cable.closure import hanging_length
 from skcable.cable.seabed.slope_closure import sloped_closure
 from skcable.cable.seabed.sloped_solution import SlopedSeabedCatenary
 from skcable.cable.seabed.solve import elastic_catenary

@@ -20,7 +20,7 @@ from skcable._checks import broadcast, float_range, nonnegative, positive, real,
 from skcable.cable._answers import check_catenary
 from skcable.cable._elastic import elastic_catenary as free_elastic_catenary
 from skcable.cable._extreme import outsized
-from skcable.cable.seabed.closure import anchor_part, hanging_length
+from skcable.cable.closure import anchor_part, hanging_length
 from skcable.cable.seabed.free import free_part, lifted
 from skcable.cable.seabed.grounded import solve_grounded, solve_grounded_scalar
 from skcable.cable.seabed.solution import SeabedCatenary
@@ -86,7 +86,9 @@ def elastic_catenary(span, dh, w, EA, *, length, seabed=None, friction=0.0):
         Newton stalled; the error carries the residual history.
     """
     if seabed is None:
-        if friction is not None and np.any(np.asarray(friction) != 0.0):
+        if friction is not None and (
+            friction != 0.0 if type(friction) is float else np.any(np.asarray(friction) != 0.0)
+        ):
             raise InputError("friction", "applies to a line on the seabed: give seabed= as well")
         return free_elastic_catenary(span, dh, w, EA, length=length)
     span = positive("span", span)
