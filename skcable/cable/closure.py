@@ -37,9 +37,11 @@ half-angle is checked here):
   it from its anchor or from a first touchdown;
 - `check`, `check_into`: the closure evaluated by other formulas than the solves' (the arc as
   a logarithm, the rise through :math:`\tanh(A/2)`), so that a check never shares the round-off
-  of the solve it checks.
+  of the solve it checks; `check_into` is its form in place on many spans (the conductors' 10⁴
+  spans × states, where a new array costs more than the arithmetic on it), with
+  `stretched_length_into` from its rows.
 
-Every function but `check_into` takes Python floats or NumPy arrays, one source for both:
+Every function but the ``*_into`` ones takes Python floats or NumPy arrays, one source for both:
 ``xp`` is the back end (`skcable._xp.namespace`: ``scalar_math`` for floats, ``numpy``).
 """
 
@@ -70,11 +72,13 @@ __all__ = [
     "positions",
     "segment",
     "stretched_length",
+    "stretched_length_into",
+    "tension_into",
     "tensioned",
 ]
 
 _EPS = float(np.finfo(float).eps)
-#: The bound of `check_into`'s callers: this many ulps of the closure's terms.
+#: The bound of `check_into`: this many ulps of the closure's terms.
 CHECK_ULPS = 64.0
 #: Rows of scratch `check_into` fills (the first seven are named in its docstring).
 CHECK_ROWS = 10
@@ -362,7 +366,7 @@ def check(H, Vb, w, EA, L, span, dh, xp=scalar_math, ratios=None):
     )
 
 
-def _tension_and_p(tv, H_sq, T, P):
+def tension_into(tv, H_sq, T, P):
     """The tension ``T = sqrt(T_v² + H²)`` and ``P = |T_v| + T`` of an end into ``T`` and ``P``,
     from its vertical tension ``tv`` and ``H_sq = H²``, in place."""
     np.multiply(tv, tv, out=T)
@@ -393,7 +397,8 @@ def check_into(H, m, w, EA, L, a, h, rows):
 
     Fills 0 ``T_v,A``, 1 ``T_v,B``, 2 ``T_A``, 3 ``T_B``, 4 the arc ``A``, 5 the larger of
     ``|f_x|, |f_y|`` and 6 the larger sum of the magnitudes of their terms (m); rows 7 to 9 are
-    scratch. A solution meets its closure where row 5 is at most `CHECK_ULPS` ulps of row 6.
+    scratch. Returns ``ok``, per element: row 5 at most `CHECK_ULPS` ulps of row 6 (the check's
+    own round-off is a few) and ``H > 0`` (NaN fails).
     """
     tv_a, tv_b, T_A, T_B, arc, res, terms, u, v, y = rows
     with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
@@ -402,8 +407,8 @@ def check_into(H, m, w, EA, L, a, h, rows):
         np.subtract(m, v, out=tv_a)
         np.add(m, v, out=tv_b)
         np.multiply(H, H, out=v)
-        _tension_and_p(tv_a, v, T_A, res)
-        _tension_and_p(tv_b, v, T_B, terms)
+        tension_into(tv_a, v, T_A, res)
+        tension_into(tv_b, v, T_B, terms)
         ratio_of_ends(tv_a, tv_b, res, terms, v, out=arc)
         arc += 1.0
         arc *= u
@@ -436,7 +441,34 @@ def check_into(H, m, w, EA, L, a, h, rows):
         v += y
         np.maximum(res, v, out=terms)
         np.copyto(res, u)
-    return rows
+        np.multiply(terms, CHECK_ULPS * _EPS, out=v)
+        ok = res <= v
+        ok &= H > 0.0
+    return ok
+
+
+def stretched_length_into(H, w, EA, L, rows, out):
+    r"""`stretched_length` of many spans into ``out``, from `check_into`'s rows 0 to 4 (rows 5
+    and 6 are overwritten): :math:`L + (J + H^2 A)/(2wEA)` with
+    :math:`J = T_{v,B}T_B - T_{v,A}T_A = wL\,(T_B + T_{v,A}(T_{v,A} + T_{v,B})/(T_A + T_B))`
+    (`stretched_length`'s rationalised form, here for every sign of the slopes: where they
+    differ its two terms do not cancel by more than a factor two)."""
+    tv_a, tv_b, T_A, T_B, arc, u, v = rows[:7]
+    np.add(tv_a, tv_b, out=out)
+    out *= tv_a
+    np.add(T_A, T_B, out=u)
+    out /= u
+    out += T_B
+    np.multiply(w, L, out=u)
+    out *= u  # J
+    np.multiply(H, H, out=v)
+    v *= arc
+    out += v
+    out /= w
+    out /= EA
+    out *= 0.5
+    out += L
+    return out
 
 
 def check_residual(H, m, w, EA, L, span, dh):
@@ -445,6 +477,7 @@ def check_residual(H, m, w, EA, L, span, dh):
     H, m, w, EA, L, span, dh = np.broadcast_arrays(
         *(np.asarray(v, dtype=float) for v in (H, m, w, EA, L, span, dh))
     )
-    rows = check_into(H, m, w, EA, L, span, dh, np.empty((CHECK_ROWS, *H.shape)))
+    rows = np.empty((CHECK_ROWS, *H.shape))
+    check_into(H, m, w, EA, L, span, dh, rows)
     chord = np.hypot(span, dh)
     return rows[5] / chord, CHECK_ULPS * _EPS * rows[6] / chord
