@@ -34,7 +34,8 @@ half-angle is checked here):
   vertically (``H = 0``);
 - `segment`: the closure in the upper end's forces ``(H, V)`` of one segment hanging or
   resting on a seabed through its anchor; `on_seabed` / `grounded_closure`: of one resting on
-  it from its anchor or from a first touchdown;
+  it from its anchor or from a first touchdown; `on_slope`: on a sloped seabed, in
+  ``(H, L_B)``;
 - `check`, `check_into`: the closure evaluated by other formulas than the solves' (the arc as
   a logarithm, the rise through :math:`\tanh(A/2)`), so that a check never shares the round-off
   of the solve it checks; `check_into` is its form in place on many spans (the conductors' 10⁴
@@ -69,8 +70,10 @@ __all__ = [
     "hanging",
     "hanging_length",
     "on_seabed",
+    "on_slope",
     "positions",
     "segment",
+    "slope_frame",
     "stretched_length",
     "stretched_length_into",
     "tension_into",
@@ -324,6 +327,46 @@ def grounded_closure(span, dh, w, EA, L, mu_w, H, V, depth=0.0):
     always). Returns ``f_x, f_z, j_xh, j_xv, j_zh, j_zv``."""
     X, Z, *jac = on_seabed(H, V, w, EA, L, mu_w, depth, namespace(span, dh, w, EA, L, mu_w, H, V, depth))
     return (X - span, Z - dh, *jac)
+
+
+def slope_frame(m, xp=scalar_math):
+    """``(cos α, sin α)`` of the slope ``tan α = m``."""
+    cos = 1.0 / xp.hypot(1.0, m)
+    return cos, m * cos
+
+
+def on_slope(H, L_B, w, EA, L, m, mu, xp=scalar_math):
+    r"""Run and rise (m) from A of a segment resting over ``L_B`` (m) on a straight seabed
+    ``y = x tan α`` through A, ``tan α = m``, and rising tangentially to B, and their Jacobian
+    in ``(H, L_B)``.
+
+    The grounded part is a `grounded` piece under the touchdown tension :math:`T_t = H/\cos\alpha`
+    falling towards A by :math:`k = w(\sin\alpha + \mu\cos\alpha)` per unit length (the
+    weight's component along the slope and Coulomb friction on :math:`w\cos\alpha`; ``k <= 0``:
+    the tension grows towards A), of stretched length :math:`G = L_B + e`; the rest hangs from
+    the touchdown (`hanging`, :math:`V_b = H\tan\alpha`, length :math:`L - L_B`):
+
+    .. math:: X = G\cos\alpha + x, \qquad Z = G\sin\alpha + y
+
+    (Jonkman 2007 on a slope, as MoorPy's ``catenary(..., alpha=...)``, which takes the friction
+    force as :math:`\mu w`). By the chain rule, with :math:`V_b = H\tan\alpha`:
+    :math:`X_H = e_T + x_H + m\,x_V`, :math:`X_L = (1 + e_l)\cos\alpha - x_L`,
+    :math:`Z_H = m\,e_T + y_H + m\,y_V`, :math:`Z_L = (1 + e_l)\sin\alpha - y_L`.
+    Returns ``X, Z, X_H, X_L, Z_H, Z_L``.
+    """
+    cos, sin = slope_frame(m, xp)
+    e, e_T, e_l, _ = grounded(H / cos, L_B, w * (sin + mu * cos), EA, xp)
+    x, z, x_H, x_V, z_V, x_L, z_L = hanging(H, H * m, w, EA, L - L_B, xp)[:7]
+    G = L_B + e
+    # e_T is ∂e/∂T_t: ∂G/∂H = e_T/cos α
+    return (
+        G * cos + x,
+        G * sin + z,
+        e_T + x_H + m * x_V,
+        (1.0 + e_l) * cos - x_L,
+        m * e_T + x_V + m * z_V,
+        (1.0 + e_l) * sin - z_L,
+    )
 
 
 def segment(H, V, w, EA, L, mu_w, contact, xp=scalar_math):

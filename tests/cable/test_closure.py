@@ -167,3 +167,35 @@ def test_the_in_place_check_is_the_check_and_catches_an_error(piece):
     assert length[0] == pytest.approx(closure.stretched_length(*piece), rel=1e-13)
     wrong = closure.check(H * (1 + 1e-9), Vb, w, EA, L, span, dh)
     assert max(abs(r) for r in wrong) > 1e-13
+
+
+def _sloped(H, L_B, w, EA, L, m, mu):
+    """Run and rise from A of a line grounded over ``L_B`` on the slope ``y = m x`` and hanging
+    tangentially from there (Jonkman 2007 on a slope; Irvine 1981 for the hanging part)."""
+    cos = 1 / mp.sqrt(1 + m * m)
+    sin = m * cos
+    k, T_t = w * (sin + mu * cos), H / cos
+    ell = min(L_B, T_t / k) if k > 0 else L_B
+    G = L_B + (T_t * ell - k * ell * ell / 2) / EA
+    V_t = H * m
+    x, y = _irvine(H, V_t, w, EA, L - L_B)
+    return G * cos + x, G * sin + y
+
+
+@pytest.mark.parametrize(
+    ("m", "mu", "L_B"), [(0.1, 0.5, 300.0), (0.1, 0.5, 800.0), (-0.2, 0.3, 400.0), (0.0, 0.0, 400.0)]
+)
+def test_a_segment_on_a_slope_and_its_jacobian_are_the_equations(m, mu, L_B):
+    H, w, EA, L = 6.0e4, 1000.0, 5e8, 1000.0  # L_B = 800: friction holds the anchor's end slack
+    with mp.workdps(50):
+        p = [mpf(v) for v in (H, L_B, w, EA, L, m, mu)]
+        X, Z = _sloped(*p)
+        jac = [
+            [mp.diff(lambda t, i=i, k=k: _sloped(*p[:i], t, *p[i + 1 :])[k], p[i]) for i in (0, 1)]
+            for k in (0, 1)
+        ]
+    got = closure.on_slope(H, L_B, w, EA, L, m, mu)
+    assert got[0] == pytest.approx(float(X), rel=1e-14)
+    assert got[1] == pytest.approx(float(Z), rel=1e-13, abs=1e-14 * L)
+    for g, e in zip(got[2:], (jac[0][0], jac[0][1], jac[1][0], jac[1][1]), strict=True):
+        assert g == pytest.approx(float(e), rel=1e-10, abs=1e-14)

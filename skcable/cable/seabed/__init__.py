@@ -14,11 +14,11 @@ Press, 1981). One concern per module:
   L-shape, ``H = 0``);
 - `solve`: `elastic_catenary`, which picks each element's regime and solves it;
 - `solution`: `SeabedCatenary`, the solution in every regime (maps, checks, stiffness);
-- the sloped seabed: `slope_closure` (its closure and Jacobian), `sloped`
+- the sloped seabed (its closure and Jacobian `skcable.cable.closure.on_slope`): `sloped`
   (`sloped_seabed_catenary`) and `sloped_solution` (`SlopedSeabedCatenary`).
 
 Data flow: ``solve`` → (``free`` | ``heap`` | ``grounded`` → `skcable.cable.closure`) → ``solution``;
-``sloped`` starts from ``solve`` in the slope's frame → ``slope_closure`` →
+``sloped`` starts from ``solve`` in the slope's frame → `skcable.cable.closure` →
 ``sloped_solution``.
 """
 
