@@ -1,4 +1,4 @@
-r"""Irvine's elastic catenary closure: one elastic segment, hanging or partly on a flat seabed.
+r"""Irvine's elastic catenary closure: one elastic segment, hanging or partly on the seabed.
 
 A segment of unstretched length :math:`L` (m), weight :math:`w` per unstretched length (N/m)
 and axial stiffness :math:`EA` (N) carries the horizontal tension :math:`H` (N) and, at its
@@ -16,8 +16,8 @@ with :math:`q = V_b/H`, the step :math:`d = ws/H` formed directly, :math:`p_s = 
 :math:`r = \sqrt{1 + (\cdot)^2}` (the second term is :math:`(T(s) - T_b)/w` rationalised;
 :math:`\operatorname{asinh} p_s - \operatorname{asinh} q` by
 `skcable.cable._special.asinh_step_parts`): every operation free of cancellation, so taut
-steep lines keep their digits. On a flat seabed the segment may rest on it from its anchor
-end and rise tangentially to its upper end; along the grounded part the tension falls by the
+steep lines keep their digits. On a flat (or sloped) seabed the segment may rest on it from
+its anchor end and rise tangentially to its upper end; along the grounded part the tension falls by the
 Coulomb friction :math:`\mu_w = C_B w` per unit length (J.M. Jonkman, "Dynamics modeling and
 loads analysis of an offshore floating wind turbine", NREL, 2007).
 
@@ -28,7 +28,8 @@ conductors' change of state (`skcable.conductors`, whose own solve in the hyperb
 half-angle is checked here):
 
 - `hanging`: the run and rise of a hanging piece and their Jacobian in ``(H, V_b)`` and ``L``;
-  `positions`: the same run and rise at any ``s``; `stretched_length`;
+  `closure`: the same as the closure of a free segment in `skcable._newton2.solve2`'s form;
+  `positions`: the run and rise at any ``s``; `stretched_length`;
 - `grounded`: the stretch of a grounded piece under friction, `tensioned` its loaded length;
   `anchor_part`, `hanging_length`: the parts hanging from an anchor above the seabed and
   vertically (``H = 0``);
@@ -56,9 +57,8 @@ from skcable._xp import namespace, scalar_math
 from skcable.cable._special import asinh_step_parts, exp_asinh, sinhc_m1, sinhc_pair
 
 __all__ = [
-    "CHECK_ULPS",
     "CHECK_ROWS",
-    "ratio_of_ends",
+    "CHECK_ULPS",
     "anchor_part",
     "check",
     "check_into",
@@ -72,6 +72,7 @@ __all__ = [
     "on_seabed",
     "on_slope",
     "positions",
+    "ratio_of_ends",
     "segment",
     "slope_frame",
     "stretched_length",
