@@ -56,6 +56,10 @@ def piecewise(z, small, series, direct):
     evaluated only where it is used (on scalars, only one is evaluated)."""
     if not isinstance(z, np.ndarray):
         return series(z) if small else direct(z)
+    if small.all():  # one branch everywhere: no indexing
+        return series(z)
+    if not small.any():
+        return direct(z)
     out = np.empty(z.shape)
     out[small] = series(z[small])
     out[~small] = direct(z[~small])
@@ -63,7 +67,10 @@ def piecewise(z, small, series, direct):
 
 
 def sinhc_m1(z):
-    """``sinh(z)/z - 1``, accurate for all real z (even function)."""
+    """``sinh(z)/z - 1``, accurate for all real z (even function); a Python float by
+    `sinhc_pair`'s unrolled series."""
+    if not isinstance(z, np.ndarray):
+        return _sinhc_m1_float(z)
     xp = namespace(z)
     return piecewise(
         z,
@@ -112,6 +119,20 @@ def sinhc_pair(z: float) -> tuple[float, float]:
         return t * phi, z * dphi
     s = math.sinh(z)
     return s / z - 1.0, (z * math.cosh(z) - s) / (z * z)
+
+
+def _sinhc_m1_float(z: float) -> float:
+    """`sinhc_m1` of a Python float: `sinhc_pair`'s first value, without its second."""
+    if -_SERIES_BELOW < z < _SERIES_BELOW:
+        t = z * z
+        if t < 0.01:
+            return t * ((((_S4 * t + _S5) * t + _S6) * t + _S7) * t + _S8)
+        if t < 0.1:
+            return t * ((((((_S2 * t + _S3) * t + _S4) * t + _S5) * t + _S6) * t + _S7) * t + _S8)
+        return t * (
+            (((((((_S0 * t + _S1) * t + _S2) * t + _S3) * t + _S4) * t + _S5) * t + _S6) * t + _S7) * t + _S8
+        )
+    return math.sinh(z) / z - 1.0
 
 
 def z_minus_tanh(z):

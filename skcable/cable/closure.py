@@ -54,7 +54,7 @@ from typing import Any
 import numpy as np
 
 from skcable._xp import namespace, scalar_math
-from skcable.cable._special import asinh_step_parts, exp_asinh, sinhc_m1, sinhc_pair
+from skcable.cable._special import asinh_step_parts, exp_asinh, sinhc_m1
 
 __all__ = [
     "CHECK_ROWS",
@@ -140,9 +140,8 @@ def hanging(H, Vb, w, EA, L, xp=scalar_math):
     Returns
     -------
     tuple
-        ``x, y, x_H, x_V, y_V, x_L, y_L, y_size, T_b, T_t``: the run and rise, ``∂x/∂H``,
-        ``∂x/∂V_b`` (= ``∂y/∂H``), ``∂y/∂V_b``, ``∂x/∂L``, ``∂y/∂L``, the sum of the magnitudes
-        of the rise's terms (m; a few ulps of it are its round-off) and the end tensions (N).
+        ``x, y, x_H, x_V, y_V, x_L, y_L, T_b, T_t``: the run and rise, ``∂x/∂H``,
+        ``∂x/∂V_b`` (= ``∂y/∂H``), ``∂y/∂V_b``, ``∂x/∂L``, ``∂y/∂L`` and the end tensions (N).
     """
     q, d = Vb / H, w * L / H
     p = q + d
@@ -156,7 +155,7 @@ def hanging(H, Vb, w, EA, L, xp=scalar_math):
         A = xp.arcsinh(S)
         if -2.0 < A < 2.0:
             p2, q2 = p * p, q * q
-            core = S * (p2 + q2 + p2 * q2) / ((rr + 1.0) * rr) - A * sinhc_pair(abs(A))[0]
+            core = S * (p2 + q2 + p2 * q2) / ((rr + 1.0) * rr) - A * sinhc_m1(A)
         else:
             core = A - S / rr
     compliance = L / EA
@@ -169,7 +168,6 @@ def hanging(H, Vb, w, EA, L, xp=scalar_math):
         compliance + S / (rr * w),
         x_L,
         p * x_L,
-        L * (0.5 * abs(w) * L + abs(Vb)) / EA + L * (abs(p) + abs(q)) / rsum,
         H * rq,
         H * rp,
     )
@@ -188,8 +186,10 @@ def closure(H, Vb, span, dh, w, EA, L):
         H, xp = np.where(H > 0, H, np.nan), np
     elif not H > 0:
         return _NAN8
-    x, y, x_H, x_V, y_V, _, _, y_size, _, _ = hanging(H, Vb, w, EA, L, xp)
-    return x - span, y - dh, x_H, x_V, x_V, y_V, x + span, y_size + abs(dh)
+    x, y, x_H, x_V, y_V, _, _, T_b, T_t = hanging(H, Vb, w, EA, L, xp)
+    # the sizes: the terms summed, and the operands of the differences V_b + wL/2 and T_t - T_b
+    size_y = L * (0.5 * w * L + abs(Vb)) / EA + L * (abs(Vb) + abs(Vb + w * L)) / (T_b + T_t) + abs(dh)
+    return x - span, y - dh, x_H, x_V, x_V, y_V, x + span, size_y
 
 
 def positions(H, Vb, w, EA, s, xp=scalar_math):
@@ -310,7 +310,7 @@ def on_seabed(H, V, w, EA, L, mu_w, depth=0.0, xp=scalar_math):
     """
     V1, T1, x1, s1, dV1 = anchor_part(H, w, EA, depth, xp)
     L_B = L - s1 - V / w
-    x, z, x_H, z_H, _, x_L, z_L, _, _, _ = hanging(H, 0.0 * V, w, EA, V / w, xp)
+    x, z, x_H, z_H, _, x_L, z_L, _, _ = hanging(H, 0.0 * V, w, EA, V / w, xp)
     e, e_T, e_l, H_A = grounded(H, L_B, mu_w, EA, xp)
     X = x1 + L_B + x + e
     X_H = x_H + e_T

@@ -51,15 +51,15 @@ def test_hanging_piece_and_its_jacobian_are_irvines(piece):
             cols.append([mp.diff(lambda t, k=k, i=i: shifted(t, i, k), p[i]) for k in (0, 1)])
     got = closure.hanging(*piece)
     assert got[0] == pytest.approx(float(x), rel=1e-14)
-    assert got[1] == pytest.approx(float(y), rel=1e-13, abs=1e-14 * got[7])
+    assert got[1] == pytest.approx(float(y), rel=1e-13, abs=1e-14 * piece[4])
     expected = {2: cols[0][0], 3: cols[1][0], 4: cols[1][1], 5: cols[2][0], 6: cols[2][1]}
     scale = max(abs(float(v)) for v in expected.values())
     for k, value in expected.items():
         assert got[k] == pytest.approx(float(value), rel=1e-12, abs=1e-13 * scale), k
     assert got[3] == pytest.approx(float(cols[0][1]), rel=1e-12, abs=1e-13 * scale)  # ∂y/∂H = ∂x/∂V_b
     H, Vb, w, _, L = piece
-    assert got[8] == pytest.approx(np.hypot(H, Vb), rel=1e-15)
-    assert got[9] == pytest.approx(np.hypot(H, Vb + w * L), rel=1e-15)
+    assert got[7] == pytest.approx(np.hypot(H, Vb), rel=1e-15)
+    assert got[8] == pytest.approx(np.hypot(H, Vb + w * L), rel=1e-15)
 
 
 def test_positions_follow_an_ode_integration_of_the_equilibrium():

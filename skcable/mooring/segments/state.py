@@ -141,7 +141,7 @@ def _suspended(arrays, H, k, a, touchdown, V_top, V_bot, V_bot_k, V_top_k, st):
     n = arrays.n
     if k == n - 1:  # one suspended piece: Python floats
         Vb, Ls, w = (0.0 if touchdown else V_bot_k), arrays.L_list[k] - a, arrays.w_list[k]
-        dx, dy, x_h, y_h, y_v, x_l, y_l, _, Tb, Tt = hanging(H, Vb, w, arrays.EA_list[k], Ls)
+        dx, dy, x_h, y_h, y_v, x_l, y_l, Tb, Tt = hanging(H, Vb, w, arrays.EA_list[k], Ls)
         x_v = y_h  # ∂x/∂V_b = ∂y/∂H
         if touchdown:  # V_b = 0, L_s = V_t/w: the columns in V are those in L over w
             x_v, y_v = x_l / w, y_l / w
@@ -151,7 +151,7 @@ def _suspended(arrays, H, k, a, touchdown, V_top, V_bot, V_bot_k, V_top_k, st):
     if touchdown:
         Vb[0] = 0.0
         Ls[0] -= a
-    dx, dy, x_h, x_v, y_v, x_l, y_l, _, Tb, Tt = hanging(H, Vb, w, arrays.EA[k:], Ls, np)
+    dx, dy, x_h, x_v, y_v, x_l, y_l, Tb, Tt = hanging(H, Vb, w, arrays.EA[k:], Ls, np)
     y_h = x_v.copy()
     if touchdown:
         x_v[0], y_v[0] = x_l[0] / w[0], y_l[0] / w[0]
