@@ -4,9 +4,9 @@ A spread mooring of ``n`` identical chain lines (120 mm studless, 850 m, anchors
 a seabed 200 m deep) on one body; its lines are solved at the equilibrium moved by 1 m surge
 and 1/3 m sway, warm-started from the equilibrium's lines (`MooringSystem.solve_lines(position,
 start=...)`, as every evaluation of an equilibrium does), once with the lines of the model
-solved together (`skcable.mooring.between.solve_many_between`) and once line by line.
+solved together (`skcable.mooring.choice.solve_many_between`) and once line by line.
 The ratio batched / line by line, median over alternating rounds, sets
-`skcable.mooring.between.BATCH` (where it falls below 1).
+`skcable.mooring.choice.BATCH` (where it falls below 1).
 
 Run:  python benchmarks/bench_line_batch.py [--repeat 7]
 """
@@ -25,18 +25,18 @@ sys.path.insert(0, str(Path(__file__).parent))
 sys.path.insert(0, str(Path(__file__).resolve().parents[1]))  # the skcable of this checkout
 from bench_system import skcable_scene  # noqa: E402
 
-from skcable.mooring import between, system  # noqa: E402
+from skcable.mooring import choice, system  # noqa: E402
 
 
 def _solve(moored, q, lines, batch):
     """The lines solved at ``q``, batched from ``batch`` lines of a model (the threshold that the
     system and `solve_many_between` read, set for the call)."""
-    default = between.BATCH
-    system.BATCH = between.BATCH = batch
+    default = choice.BATCH
+    system.BATCH = choice.BATCH = batch
     try:
         return moored.solve_lines(q, start=lines)
     finally:
-        system.BATCH = between.BATCH = default
+        system.BATCH = choice.BATCH = default
 
 
 def run(repeat: int) -> str:
@@ -71,7 +71,7 @@ def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--repeat", type=int, default=7)
     print(run(parser.parse_args().repeat))
-    print(f"BATCH = {between.BATCH}")
+    print(f"BATCH = {choice.BATCH}")
 
 
 if __name__ == "__main__":

@@ -2,7 +2,9 @@
 whole force–strain curve) on a few coarse cases, so a restructured model can be checked against
 the code that produced them: ``python benchmarks/pin_strand_numbers.py`` writes
 ``tests/strand/data/pinned_strand.json`` with the commit it ran on, every solve converged to 1e-13.
-``tests/strand/test_pinned.py`` recomputes every case and compares.
+``tests/strand/test_pinned.py`` recomputes every case and compares. ``--slip axis --reason ...``
+(or ``--preset NAME``) re-pins the cases of one slip law (or preset) only, when what they compute
+changed, recording the commit and the reason in the file.
 """
 
 import json
@@ -65,8 +67,43 @@ def run(preset, damage, slip, damage_load):
     }
 
 
-def main():
+def main(argv=None):
+    import argparse
+
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument(
+        "--slip", help="re-pin only the cases of this slip law (the others are kept as recorded)"
+    )
+    parser.add_argument("--preset", help="re-pin only the cases of this preset (with --slip: of both)")
+    parser.add_argument("--reason", default="", help="why the cases of --slip move (kept in the file)")
+    args = parser.parse_args(argv)
     commit = subprocess.run(["git", "rev-parse", "HEAD"], capture_output=True, text=True, cwd=ROOT).stdout
+    path = ROOT / "tests" / "strand" / "data" / "pinned_strand.json"
+    if args.slip or args.preset:
+        out = json.loads(path.read_text())
+        chosen = [
+            case
+            for case in CASES
+            if (args.slip is None or case[2] == args.slip) and (args.preset is None or case[0] == args.preset)
+        ]
+        if not chosen:
+            raise SystemExit(f"no case has slip {args.slip!r} and preset {args.preset!r}")
+        fresh = {tuple(case): run(*case) for case in chosen}
+        out["cases"] = [
+            fresh.get((c["preset"], c["damage"], c["slip"], c["damage_load"]), c) for c in out["cases"]
+        ]
+        out.setdefault("repinned", []).append(
+            {
+                "slip": args.slip,
+                "preset": args.preset,
+                "commit": commit.strip(),
+                "tol": TOL,
+                "reason": args.reason,
+            }
+        )
+        path.write_text(json.dumps(out, indent=1))
+        print(f"re-pinned {len(chosen)} cases in {path} at {commit[:10]}")
+        return
     out = {
         "commit": commit.strip(),
         "n_elements": N_ELEMENTS,
@@ -74,7 +111,6 @@ def main():
         "mu": MU,
         "cases": [run(*case) for case in CASES],
     }
-    path = ROOT / "tests" / "strand" / "data" / "pinned_strand.json"
     path.write_text(json.dumps(out, indent=1))
     print(f"wrote {path} ({len(CASES)} cases) at {out['commit'][:10]}")
 

@@ -171,6 +171,15 @@ def require(name: str, ok, reason: str, value) -> None:
         raise InputError(name, f"{reason}, got {_first_bad(arr, ~ok)}")
 
 
+def point(name: str, value) -> np.ndarray:
+    """``value`` as a finite float 3-vector ``(x, y, z)`` (m), raising `InputError` naming ``name``
+    otherwise."""
+    arr = real(name, value)
+    if np.shape(arr) != (3,):
+        raise InputError(name, f"must be a point (x, y, z) of 3 numbers, got shape {np.shape(arr)}")
+    return np.array(arr, dtype=float)
+
+
 def broadcast(**values) -> tuple[int, ...]:
     """Shape the (already checked) arguments broadcast to.
 

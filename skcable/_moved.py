@@ -1,7 +1,9 @@
 """What moved in 0.3.0, one package per domain: the one table of moves, served for one release.
 
 0.2.0 held three domains inside `skcable.cable`; 0.3.0 gives each its package
-(`skcable.bvp`, `skcable.mooring`, `skcable.conductors`). Two tables say where things went:
+(`skcable.bvp`, `skcable.mooring`, `skcable.conductors`), and names its mooring modules by what
+they hold (the 0.3.0 development paths ``skcable.mooring.<old>`` are served as well). Two tables
+say where things went:
 
 - `MODULES`: an old module path and its new one. Importing the old path (or any module below
   it) gives a stand-in that serves the new module's names, with a `DeprecationWarning` naming the
@@ -39,6 +41,18 @@ MODULES = {
     "skcable.cable.lines.seabed": "skcable.cable.seabed",
     "skcable.cable.lines.segments.closure": "skcable.mooring.segments.state",
     "skcable.cable.lines.arc_samples": "skcable.cable.arc_samples",
+    "skcable.cable.lines.in_sea": "skcable.mooring.sea_line",
+    "skcable.mooring.in_sea": "skcable.mooring.sea_line",
+    "skcable.cable.lines.between": "skcable.mooring.between_points",
+    "skcable.mooring.between": "skcable.mooring.between_points",
+    "skcable.cable.lines.plane": "skcable.mooring.plane_line",
+    "skcable.mooring.plane": "skcable.mooring.plane_line",
+    "skcable.cable.lines.lying": "skcable.mooring.line_on_seabed",
+    "skcable.mooring.lying": "skcable.mooring.line_on_seabed",
+    "skcable.cable.lines.assembly": "skcable.mooring.net_loads",
+    "skcable.mooring.assembly": "skcable.mooring.net_loads",
+    "skcable.cable.lines.geometry": "skcable.mooring.choice",
+    "skcable.mooring.geometry": "skcable.mooring.choice",
     "skcable.cable.lines": "skcable.mooring",
     "skcable.cable.axial": "skcable.mooring.axial",
     "skcable.cable.bathymetry": "skcable.mooring.bathymetry",
@@ -51,6 +65,12 @@ MODULES = {
 
 _LINE_BVP = ("BVPSegment", "LineBVP", "LineBVPSolution", "solve_line_bvp")
 _LINE_BVP_3D = ("LineBVP3D", "LineBVP3DSolution", "LineSegment", "solve_line_bvp_3d")
+_BETWEEN = ("BATCH", "line_between", "solve_between", "solve_many_between")
+_LINES = ("skcable.cable.lines", "skcable.mooring")
+_IN_SEA: dict[str, Sequence[str]] = {
+    "skcable.mooring.choice": ("solve_line_in_sea",),
+    "skcable.mooring.slope": ("SlopeModel", "SlopeSolution"),
+}
 _SEABED = ("SeabedCatenary", "SlopedSeabedCatenary", "elastic_catenary", "sloped_seabed_catenary")
 
 #: old package -> {new package: the names of the old package that live there now}
@@ -136,6 +156,9 @@ NAMES: dict[str, dict[str, Sequence[str]]] = {
         ),
     },
     "skcable.cable.bvp": {"skcable.mooring": (*_LINE_BVP, *_LINE_BVP_3D)},
+    # the functions that choose a line's model left the modules of its results for `choice`
+    **{f"{package}.between": {"skcable.mooring.choice": _BETWEEN} for package in _LINES},
+    **{f"{package}.in_sea": _IN_SEA for package in _LINES},
     "skcable.cable.lines": {"skcable.cable": _SEABED},
 }
 

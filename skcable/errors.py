@@ -2,20 +2,31 @@
 
 Bad input raises `InputError` (a `ValueError`) naming the
 argument and the reason; a solver that does not converge raises
-`ConvergenceError` carrying its iteration history.
+`ConvergenceError` carrying its iteration history, and `NonFiniteError` (a `ConvergenceError`)
+names the term or law that produced a value that is not finite.
 
 Warnings say what is suspicious but not wrong: `PlausibilityWarning` for data
 that a unit slip would explain (an EA in MN, a strain beyond any wire's),
 `SlowConvergenceWarning` for a Newton that converges at a linear rate where its
-tangent promises a quadratic one (a term's tangent is likely wrong), and
-`CacheWarning` for a cached study result computed by other code.
+tangent promises a quadratic one (a term's tangent is likely wrong), its subclass
+`TangentWarning` for a term whose tangent disagrees with a directional difference of its own
+residual (checked on a model's first solve), and `CacheWarning` for a cached study result
+computed by other code.
 """
 
 from __future__ import annotations
 
 from collections.abc import Sequence
 
-__all__ = ["InputError", "ConvergenceError", "PlausibilityWarning", "SlowConvergenceWarning", "CacheWarning"]
+__all__ = [
+    "InputError",
+    "ConvergenceError",
+    "PlausibilityWarning",
+    "SlowConvergenceWarning",
+    "TangentWarning",
+    "NonFiniteError",
+    "CacheWarning",
+]
 
 
 class InputError(ValueError):
@@ -51,6 +62,20 @@ class ConvergenceError(RuntimeError):
         super().__init__(message + more)
 
 
+class NonFiniteError(ConvergenceError):
+    """A term (or a law inside it) produced a value that is not finite; the message names it.
+
+    Attributes
+    ----------
+    source : str
+        What produced it (the term's or the law's repr).
+    """
+
+    def __init__(self, message: str, source: str = ""):
+        self.source = source
+        super().__init__(message)
+
+
 class PlausibilityWarning(UserWarning):
     """Data that solve but are unlikely to be meant (a unit slip, say).
 
@@ -68,6 +93,13 @@ class PlausibilityWarning(UserWarning):
 class SlowConvergenceWarning(RuntimeWarning):
     """A Newton iteration converged at a linear rate where its tangent should give a quadratic
     one: a term's tangent is probably not the derivative of its residual."""
+
+
+class TangentWarning(SlowConvergenceWarning):
+    """A term's tangent disagrees with a directional difference of its own residual: Newton will
+    converge slowly or not at all. The message names the term and the ratio of its tangent to the
+    difference along the direction checked (1 when right; ⅓, −1 or 0 for a tangent a third of the
+    true one, of the wrong sign, or missing)."""
 
 
 class CacheWarning(UserWarning):

@@ -6,6 +6,8 @@ checked against the code that produced them.
 ran on; ``tests/test_pinned_library.py`` recomputes every case through the same functions
 (``CASES`` below) and compares each array to 1e-12 of its largest entry. The scenes are ordinary
 ones (no extreme ratios), where a change of operation order moves a result by round-off only.
+``python tests/pinned_library.py GROUP CASE "reason"`` re-pins one case whose physics changed
+(the file keeps the commit and the reason).
 """
 
 from __future__ import annotations
@@ -237,7 +239,27 @@ def run_all() -> dict:
             for group, fn in CASES.items()}  # fmt: skip
 
 
+def repin(group: str, case: str, reason: str) -> None:
+    """Recompute one case of one group and replace it in the file, every other number kept as
+    recorded; the commit and the reason are appended to the file's ``repinned`` list."""
+    data = json.loads(OUT.read_text())
+    computed = CASES[group]()
+    if case not in data["groups"].get(group, {}) or case not in computed:
+        raise SystemExit(f"no case {case!r} in group {group!r}")
+    data["groups"][group][case] = {k: encode(v) for k, v in computed[case].items()}
+    commit = subprocess.run(
+        ["git", "rev-parse", "HEAD"], cwd=ROOT, capture_output=True, text=True, check=True
+    ).stdout.strip()
+    data.setdefault("repinned", []).append({"group": group, "case": case, "commit": commit, "reason": reason})
+    OUT.write_text(json.dumps(data, indent=1) + "\n")
+    print(f"re-pinned {group}.{case} in {OUT} at {commit[:10]}")
+
+
 def main():
+    if len(sys.argv) > 1:  # python tests/pinned_library.py GROUP CASE "reason"
+        group, case, reason = sys.argv[1:4]
+        repin(group, case, reason)
+        return
     commit = subprocess.run(
         ["git", "rev-parse", "HEAD"], cwd=ROOT, capture_output=True, text=True, check=True
     ).stdout.strip()

@@ -165,6 +165,13 @@ def strand_model(slip="axis", **options):
     return strand.StrandModel(strand.preset("steel-9.5").damaged(2), 0.3, n_elements=16, slip=slip, **options)
 
 
+def stage_model():
+    """A damaged 1x7 pulled by 15 kN, its layer law with history (both ends clamped but u(L))."""
+    s = strand.preset("steel-9.5").damaged(1)
+    law = strand.LayerSlipLaw(s.section(), mu=0.5, tension=15e3)
+    return strand.StrandModel(s, 0.3, n_elements=16, slip=strand.StageSlip(law), axial="force")
+
+
 def conductor_curves():
     from skcable.conductors import aa_coefficients
 
@@ -399,6 +406,11 @@ RESULTS = [
     ),
     ("step result", lambda: strand_model().solve(0.003), None),
     (
+        "bending cycles",
+        lambda: strand.bending_cycles(stage_model(), 0.006, force=15e3, n_steps=1, cycles=1),
+        lambda c: (c.energy_per_cycle, c.friction_per_cycle, c.masing_energy, c.loop(0)),
+    ),
+    (
         "capacity curve",
         lambda: strand_model().capacity_curve(n_steps=8),
         lambda c: (c.K_Leq, c.secant(0.002)),
@@ -440,6 +452,11 @@ MODELS = [
     ("strand model, stick", lambda: strand_model("none"), solves),
     ("strand model, axis slip", lambda: strand_model("axis"), solves),
     ("strand model, element slip", lambda: strand_model("element"), solves),
+    (
+        "strand model, stage slip",
+        stage_model,
+        lambda m: state(m.solve(force=15e3, prescribed={"right": {"v'": 0.004}})),
+    ),
     ("strand model, annex E", lambda: strand_model(physics=[strand.AnnexE("element")], twist="free"), solves),
     (
         "strand model with terms",
@@ -531,7 +548,7 @@ def test_pickles_to_equal_values(make, probe):
 #: the per-evaluation records handed to a term.
 NOT_A_RESULT = {
     "CableSolution", "CableTerm", "CableState", "CableForce", "Term", "FieldTerm", "SectionTerm", "SlipLaw",
-    "Step", "FieldAssembly", "StrandSupports", "Current",
+    "Step", "FieldAssembly", "StrandSupports", "Current", "SlipPoints",
 }  # fmt: skip
 
 

@@ -3,6 +3,14 @@
 ``python tests/pinned_library.py`` recorded them (its commit is in the JSON file) on ordinary
 scenes; the library must reproduce each array to 1e-12 of its largest entry (bit-for-bit where
 no operation order changed).
+
+Re-pinned (issue 34; each with its commit and reason in the file's ``repinned`` list): the
+strand group's ``strand_free_twist_axis_slip`` and ``analyse`` (the stick-slip model of
+`strand.analyse`), whose ``slip="axis"`` is now Cardou's law as a section law with the friction
+moment M_rf in slip (the previous model lost it: its section moment in slip was EI_slip κ). The
+axial force of the free-twist step moves from 19862.2 to 19995.1 N, ``analyse``'s K_Leq from
+8320.0 to 8330.8 kN; ``tests/strand/test_slip_law.py`` checks the new law against
+`BendingLaw.moment` at every point and against a shooting solution.
 """
 
 import json

@@ -143,6 +143,27 @@ def test_capacity_curve_and_step(curve):
     check_repr(curve.steps[2], step_spec)
 
 
+def test_bending_cycles():
+    s = strand.preset("steel-9.5")
+    law = strand.LayerSlipLaw(s.section(), mu=0.5, tension=20e3)
+    model = strand.StrandModel(s, 0.3, n_elements=16, slip=strand.StageSlip(law), axial="force")
+    cycles = strand.bending_cycles(model, 0.006, force=20e3, n_steps=1, cycles=1)
+
+    def loop_area(c):  # ∮ R dq of the cycle's polygon (the shoelace formula, clockwise positive)
+        q, R = c.drive[c.branch > 0], c.reaction[c.branch > 0]
+        q, R = np.append(c.amplitude, q), np.append(c.backbone[1][-1], R)
+        return -0.5 * (np.dot(q[:-1], R[1:]) - np.dot(q[1:], R[:-1]))
+
+    spec = {
+        "amplitude": ("rad", attr("amplitude")),
+        "energy_per_cycle": ("J", loop_area),
+        "friction_per_cycle": ("J", lambda c: c.work[c.branch > 0].sum()),
+        "inexact": ("", attr("inexact")),
+        "unloaded": ("", attr("unloaded")),
+    }
+    assert check_repr(cycles, spec).startswith("BendingCycles(right v', 1 cycle, ")
+
+
 def test_analysis_and_closed_form():
     analysis = strand.analyse(strand.preset("steel-9.5"), n_points=50)
     text = check_repr(analysis, {k: (u, lambda a, f=f: f(a.curve)) for k, (u, f) in curve_spec().items()})

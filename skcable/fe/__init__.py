@@ -19,7 +19,7 @@ from __future__ import annotations
 from typing import TYPE_CHECKING
 
 from skcable._lazy import attach
-from skcable.fe.newton import NewtonOptions, NewtonResult, minimize, newton
+from skcable.fe.newton import NewtonOptions, NewtonResult, minimize, newton, semismooth
 
 if TYPE_CHECKING:  # what static tools see; at run time, `attach` below serves them
     from skcable.fe.assembly import Assembly
@@ -47,4 +47,5 @@ __all__ = [
     "check_tangent",
     "minimize",
     "newton",
+    "semismooth",
 ]

@@ -15,18 +15,55 @@ tangent off by a factor gives that factor's distance from 1.
 
 The model supplies ``term_contribution(term, U, state=None) -> (R, K)`` (the term alone),
 ``free_dofs()`` and, for ``U=None``, ``tangent_check_state()`` (a generic, non-trivial state).
+
+`directional_check` is the cheap form a model runs on its first solve (two steps along one
+direction, `skcable.errors.TangentWarning`): besides the error it gives the ratio of the
+tangent to the difference along the direction, ``(K d)·f / f·f`` (1 when right; ⅓, −1 or 0 for
+a tangent a third of the true one, of the wrong sign, or missing), and whether the difference
+is resolved at all (a term whose residual is flat or kinked there says nothing yet).
 """
 
 from __future__ import annotations
+
+from typing import NamedTuple
 
 import numpy as np
 
 from skcable.errors import InputError
 
-__all__ = ["STEPS", "check_tangent", "sparse_of"]
+__all__ = ["STEPS", "DirectionalCheck", "check_tangent", "directional_check", "sparse_of"]
 
 #: the finite-difference steps tried, relative to the size of the state
 STEPS = 10.0 ** -np.arange(4, 11)
+
+
+class DirectionalCheck(NamedTuple):
+    """`directional_check`'s answer: the smallest relative error of ``K d`` against the central
+    differences over the steps, the ratio ``(K d)·f / f·f`` at that step, and whether the
+    differences agree between the steps (``resolved``) to 1e-3 of their size."""
+
+    error: float
+    ratio: float
+    resolved: bool
+
+
+def directional_check(contribution, U, d, K, steps) -> DirectionalCheck:
+    """``K d`` against central differences ``(R(U + h d) − R(U − h d)) / 2h`` of
+    ``contribution(x) -> R`` at the steps ``h`` (absolute), module docstring. A term whose residual
+    and tangent both vanish along ``d`` gives an error 0, ratio 1 and ``resolved`` False."""
+    Kd = K @ d
+    best, ratio, differences = np.inf, 1.0, []
+    for h in steps:
+        fd = (contribution(U + h * d) - contribution(U - h * d)) / (2 * h)
+        differences.append(fd)
+        size = max(float(np.linalg.norm(Kd)), float(np.linalg.norm(fd)))
+        error = float(np.linalg.norm(Kd - fd)) / size if size > 0 else 0.0
+        if error < best:
+            ff = float(fd @ fd)
+            best, ratio = error, (float(Kd @ fd) / ff if ff > 0 else (1.0 if size == 0 else 0.0))
+    spread = max(float(np.linalg.norm(f - differences[0])) for f in differences)
+    scale = max(float(np.linalg.norm(f)) for f in differences)
+    return DirectionalCheck(best, ratio, scale > 0 and spread <= 1e-3 * scale)
 
 
 def sparse_of(K, n: int):
@@ -80,17 +117,13 @@ def check_tangent(term, model, U=None, *, state=None, directions: int = 6, seed:
     rng = np.random.default_rng(seed)
     size = max(float(np.max(np.abs(U), initial=0.0)), 1e-3)
     worst = 0.0
+
+    def contribution(x):
+        return model.term_contribution(term, x, state)[0]
+
     for _ in range(directions):
         d = np.zeros(U.size)
         d[free] = rng.standard_normal(free.size)
         d /= np.max(np.abs(d))
-        Kd = K @ d
-        best = np.inf
-        for h in size * STEPS:
-            plus = model.term_contribution(term, U + h * d, state)[0]
-            minus = model.term_contribution(term, U - h * d, state)[0]
-            fd = (plus - minus) / (2 * h)
-            scale = max(float(np.linalg.norm(Kd)), float(np.linalg.norm(fd)))
-            best = min(best, float(np.linalg.norm(Kd - fd)) / scale if scale > 0 else 0.0)
-        worst = max(worst, best)
+        worst = max(worst, directional_check(contribution, U, d, K, size * STEPS).error)
     return worst

@@ -27,6 +27,7 @@ copies a C-ordered array to Fortran order on every call).
 from __future__ import annotations
 
 from dataclasses import dataclass
+from functools import cached_property
 
 import numpy as np
 import scipy.sparse as sp
@@ -112,6 +113,50 @@ class BandedSystem:
             raise ValueError("the matrix couples dofs farther apart than the band")
         np.add.at(ab, (self.kl + self.ku + i - j, j), data)
         return ab
+
+    # --- the upper band alone, for a symmetric matrix (half the entries to sum) ---------------
+    @cached_property
+    def _upper(self) -> tuple[np.ndarray, np.ndarray]:
+        """``(keep, slot)``: which entries of the element matrices lie on or above the diagonal
+        of the free block, and where each goes in the (ku + 1, n) upper band (Fortran order)."""
+        i, j = self.position[self.rows], self.position[self.cols]
+        keep = (i >= 0) & (j >= 0) & (i <= j)
+        return keep, (self.ku + i[keep] - j[keep]) + j[keep] * (self.ku + 1)
+
+    def band_upper(self) -> np.ndarray:
+        """An empty upper band ``(ku + 1, n)`` in Fortran order: LAPACK's ``dpbtrf`` storage."""
+        return np.zeros((self.ku + 1, self.n), order="F")
+
+    def add_elements_upper(self, ab: np.ndarray, Ke: np.ndarray) -> np.ndarray:
+        """Add the upper triangle of symmetric element matrices into an upper band ``ab``."""
+        keep, slot = self._upper
+        summed = np.bincount(slot, weights=np.asarray(Ke).ravel()[keep], minlength=ab.size)
+        ab += summed.reshape(ab.shape, order="F")
+        return ab
+
+    def add_sparse_upper(self, ab: np.ndarray, K) -> np.ndarray:
+        """Add the free–free upper triangle of a symmetric sparse (N, N) matrix into ``ab`` (it must
+        lie in the band, else `ValueError`)."""
+        i, j, data = self._free_entries(K)
+        if np.any(np.abs(i - j) > self.kl):
+            raise ValueError("the matrix couples dofs farther apart than the band")
+        upper = i <= j
+        np.add.at(ab, (self.ku + i[upper] - j[upper], j[upper]), data[upper])
+        return ab
+
+    def solve_positive_upper(self, ab: np.ndarray, b: np.ndarray, shift=None, mu: float = 0.0):
+        """`solve_positive` for upper bands (`band_upper`): ``ab`` is overwritten."""
+        if shift is not None and mu != 0.0:
+            ab = ab + mu * shift
+        c, info = lapack.dpbtrf(ab, lower=0, overwrite_ab=True)
+        if info != 0:
+            raise np.linalg.LinAlgError(f"not positive definite (LAPACK dpbtrf info = {info})")
+        rhs = np.empty(self.n)
+        rhs[self._free_rank] = b
+        x, info = lapack.dpbtrs(c, rhs, lower=0, overwrite_b=True)
+        if info != 0:
+            raise np.linalg.LinAlgError(f"LAPACK dpbtrs info = {info}")
+        return x[self._free_rank]
 
     def solve_positive(self, ab: np.ndarray, b: np.ndarray, shift: np.ndarray | None = None, mu: float = 0.0):
         """Solve ``(A + mu·M) x = b`` by banded Cholesky (LAPACK ``dpbtrf``/``dpbtrs``) for a

@@ -51,7 +51,9 @@ import numpy as np
 from skcable._checks import nonnegative, positive, whole
 from skcable.errors import ConvergenceError, InputError
 
-__all__ = ["LINE_SEARCHES", "NewtonOptions", "NewtonResult", "linear_tail", "minimize", "newton"]
+__all__ = [
+    "LINE_SEARCHES", "NewtonOptions", "NewtonResult", "linear_tail", "minimize", "newton", "semismooth",
+]  # fmt: skip
 
 #: ``line_search`` values: on (Armijo on the residual's merit), off (full steps), or on the energy
 LINE_SEARCHES = ("residual", "none", "energy", "auto")
@@ -118,6 +120,8 @@ class NewtonOptions:
         base = cls() if options is None else options
         if not isinstance(base, cls):
             raise InputError("options", f"must be a NewtonOptions, got {options!r}")
+        if not given:
+            return base
         names = {f.name for f in fields(cls)}
         for key in given:
             if key not in names:
@@ -161,19 +165,21 @@ class NewtonResult:
     def iterations(self) -> int:
         return len(self.history) - 1
 
-    def linear_rate(self, tol: float) -> list[float] | None:
-        """The contraction ratios of the last full steps if this converged *linearly*, else None.
+    def linear_rate(self, tol: float, full_steps: bool = True) -> list[float] | None:
+        """The contraction ratios of the last steps if this converged *linearly*, else None.
 
         Newton with a consistent tangent converges quadratically once the residual is small:
         ``r_{k+1} ≤ C r_k²``, so successive ratios ``r_{k+1}/r_k`` fall fast. A wrong tangent
-        gives a constant ratio instead (`linear_tail`), here over the full steps taken below a
-        residual of 1e-2, none of them limited by the round-off floor (1e3·tol below).
+        gives a constant ratio instead (`linear_tail`), here over the steps taken below a
+        residual of 1e-2, none of them limited by the round-off floor (1e3·tol below): the full
+        steps only, or (``full_steps=False``) every step, whatever the line search cut (a wrong
+        tangent whose every step the line search halves converges linearly too).
         """
         r, t = self.history, self.steps
         ratios = [
             r[k + 1] / r[k]
             for k in range(len(r) - 1)
-            if t[k] == 1.0 and 0 < r[k] < 1e-2 and r[k + 1] > 1e-3 * tol
+            if (t[k] == 1.0 or not full_steps) and 0 < r[k] < 1e-2 and r[k + 1] > 1e-3 * tol
         ]
         return linear_tail(ratios)
 
@@ -341,6 +347,82 @@ def newton(
     return stop(f"no convergence to {tol:g} in {max_iter} iterations")
 
 
+def semismooth(
+    assemble: Callable[[np.ndarray], Any],
+    x0: np.ndarray,
+    *,
+    norm: Callable[[Any], float],
+    increment: Callable[[Any], np.ndarray],
+    active: Callable[[Any], Any],
+    tol: float,
+    max_iter: int = 100,
+    name: str = "semismooth",
+    state=None,
+    atol: float = 0.0,
+    absolute: Callable[[Any], float] | None = None,
+    callback: Callable | None = None,
+    rejects: tuple[type[Exception], ...] = (),
+    growth: float = 1e6,
+) -> NewtonResult:
+    """A semismooth Newton with active sets (the primal–dual active-set method as a semismooth
+    Newton: M. Hintermüller, K. Ito, K. Kunisch, SIAM J. Optim. 13, 2002): full steps on the
+    generalized derivative, while ``active(state)`` (a hashable fingerprint of the non-smooth
+    terms' active sets: where a contact presses, a law slips) tells the iterations apart.
+
+    A step that changes the active set is progress whatever the residual does (the residual of a
+    stiff penalty jumps by orders of magnitude as a contact zone grows node by node); the
+    iteration stops, with a `ConvergenceError` carrying the history, when an active set comes
+    back after others (a cycle), when a step within one active set raises the residual (its
+    smooth part needs damping: a line-search Newton's job), when the residual grows ``growth``
+    times beyond its start, or after ``max_iter`` iterations. ``norm``, ``increment``, ``tol``,
+    ``atol``/``absolute``, ``callback``, ``rejects`` (a rejected step stops the iteration) as in
+    `newton`.
+    """
+
+    def converged(s, value):
+        return value < tol or (atol > 0 and absolute is not None and absolute(s) < atol)
+
+    x = np.array(x0, dtype=float)
+    state = assemble(x) if state is None else state
+    history, assemblies = [norm(state)], 1
+    steps: list[float] = []
+    previous = active(state)
+    seen = {previous: 0}
+    for k in range(max_iter + 1):
+        current = history[-1]
+        if not np.isfinite(current):
+            raise ConvergenceError(f"{name}: the residual is not finite", history, last=x)
+        if converged(state, current):
+            return NewtonResult(x, state, history, assemblies, steps=steps)
+        if k == max_iter:
+            break
+        if current > growth * history[0]:
+            raise ConvergenceError(f"{name}: the residual grows (full steps diverge)", history, last=x)
+        dx = increment(state)
+        try:
+            trial = assemble(x + dx)
+        except rejects:
+            raise ConvergenceError(
+                f"{name}: a full step leaves the admissible states", history, last=x
+            ) from None
+        assemblies += 1
+        key = active(trial)
+        value = norm(trial)
+        if key == previous and value >= current and not converged(trial, value):
+            raise ConvergenceError(
+                f"{name}: a step within one active set raises the residual", history + [value], last=x
+            )
+        if key in seen and seen[key] < k and key != previous:
+            raise ConvergenceError(f"{name}: the active set cycles", history + [value], last=x)
+        seen.setdefault(key, k + 1)
+        previous = key
+        x, state = x + dx, trial
+        history.append(value)
+        steps.append(1.0)
+        _callback(callback, len(history) - 1, value, float(np.max(np.abs(dx), initial=0.0)))
+    raise ConvergenceError(f"{name}: no convergence to {tol:g} in {max_iter} iterations", history, last=x)
+
+
 class _LineSearch:
     """The backtracking of `newton` along a step: the problem's callables, and the assemblies."""
 
@@ -403,6 +485,7 @@ def minimize(
     atol: float = 0.0,
     absolute: Callable[[Any], float] | None = None,
     callback: Callable | None = None,
+    rejects: tuple[type[Exception], ...] = (),
 ) -> NewtonResult:
     r"""Newton for a problem with a potential Π (residual R = ∇Π, tangent K = ∇²Π), shifted where
     K is not positive definite: a Newton that passes the folds of a softening law.
@@ -415,34 +498,43 @@ def minimize(
     factorisation succeeds, K₀ being the problem's own positive-definite metric (for a strand:
     its elastic tangent). d is then a descent direction of Π, and a step t = 1, ½, … is accepted
     by Armijo's rule on the energy, ``Π(x + t d) ≤ Π(x) + 10⁻⁴ t R·d``, or, where the energy
-    change is at its round-off (``noise``·|Π|), by the residual falling. After an accepted step
+    change is at its round-off (``noise``·|Π|), by the residual falling; a full, unshifted step
+    (the tangent positive definite) whose residual falls tenfold is Newton converging and is
+    accepted as it is. After an accepted step
     μ shrinks fourfold (to 0 below ``mu0``); after a failed line search it grows tenfold. Gives
     up (ConvergenceError with the history) when μ exceeds ``mu_max``, when neither the residual
     nor the energy moves over ``window`` iterations, or after ``max_iter`` iterations.
     ``NewtonResult.shifted`` tells whether the shift was needed: the path passed a point where
     the tangent was not positive definite (a fold of the equilibrium path under the imposed
-    data). ``callback`` as in `newton`.
+    data). ``callback`` and ``rejects`` (exceptions of a trial's ``assemble`` that reject it: the
+    step is halved) as in `newton`. The energy of a state is asked for only where a test needs
+    it (a Newton step that converges at once needs none): a model may compute it on demand.
     """
 
     def converged(s, value):
         return value < tol or (atol > 0 and absolute is not None and absolute(s) < atol)
 
+    def finite(value):
+        if not np.isfinite(value):
+            raise ConvergenceError(f"{name}: the energy is not finite", history, last=x)
+        return value
+
     x = np.array(x0, dtype=float)
     state = assemble(x) if state is None else state
     assemblies = 1
-    history, energies = [norm(state)], [energy(state)]
+    history, energies = [norm(state)], [_Once(energy, state)]
     steps: list[float] = []
     mu, shifted = 0.0, False
     for _ in range(max_iter + 1):
         current, Pi = history[-1], energies[-1]
-        if not (np.isfinite(current) and np.isfinite(Pi)):
+        if not np.isfinite(current):
             raise ConvergenceError(f"{name}: the residual or the energy is not finite", history, last=x)
         if converged(state, current):
             return NewtonResult(x, state, history, assemblies, shifted, steps=steps)
         if len(history) > max_iter:
             break
         if len(history) > window and current > factor * history[-1 - window]:
-            if abs(Pi - energies[-1 - window]) <= noise * abs(Pi):
+            if abs(finite(Pi()) - finite(energies[-1 - window]())) <= noise * abs(Pi()):
                 raise ConvergenceError(f"{name}: neither the residual nor the energy moves", history, last=x)
             if mu == 0.0:
                 mu, shifted = mu0, True
@@ -457,13 +549,14 @@ def minimize(
         shifted = shifted or more
         slope = float(gradient(state) @ d)
         step, tried = _energy_step(
-            assemble, energy, norm, converged, x, d, Pi, current, slope, halvings, noise
-        )
+            assemble, energy, norm, converged, x, d, lambda here=Pi: finite(here()), current, slope, halvings,
+            noise, rejects, mu == 0.0,
+        )  # fmt: skip
         assemblies += tried
         if step is not None:
             t, x, state, n_t = step
             history.append(n_t)
-            energies.append(energy(state))
+            energies.append(_Once(energy, state))
             steps.append(t if mu == 0.0 else 0.0)  # a shifted step is no Newton step
             mu = 0.0 if mu <= mu0 else mu / 4.0
             if callback is not None:
@@ -490,18 +583,41 @@ def _shifted_increment(solve, state, mu: float, mu0: float, mu_max: float) -> tu
                 raise
 
 
-def _energy_step(assemble, energy, norm, converged, x, d, Pi, current, slope, halvings, noise):
+class _Once:
+    """The energy of a state, computed on first use (`minimize` asks only where a test needs it)."""
+
+    def __init__(self, energy, state):
+        self.energy, self.state = energy, state
+        self.value: float | None = None
+
+    def __call__(self) -> float:
+        if self.value is None:
+            self.value = float(self.energy(self.state))
+            self.state = None
+        return self.value
+
+
+def _energy_step(
+    assemble, energy, norm, converged, x, d, Pi, current, slope, halvings, noise, rejects=(), newton=False
+):
     """`minimize`'s line search along ``d``, t = 1, ½, … (its docstring): ``((t, x, state,
-    norm), assemblies)`` of the accepted trial, or ``(None, halvings)`` when none is."""
+    norm), assemblies)`` of the accepted trial, or ``(None, halvings)`` when none is; ``Pi()``
+    the energy at ``x``, asked for only when a trial has not converged; ``newton``: ``d`` is an
+    unshifted Newton step, accepted in full where the residual falls tenfold."""
     t = 1.0
     for k in range(halvings):
         trial_x = x + t * d
-        trial = assemble(trial_x)
+        try:
+            trial = assemble(trial_x)
+        except rejects:
+            t *= 0.5
+            continue
         n_t = norm(trial)
-        if converged(trial, n_t):  # accepted whatever its energy: tested first
-            return (t, trial_x, trial, n_t), k + 1
-        drop = energy(trial) - Pi
-        if drop <= 1e-4 * t * slope or (abs(drop) <= noise * abs(Pi) and n_t < (1 - 1e-4 * t) * current):
+        if converged(trial, n_t) or (newton and k == 0 and n_t <= 0.1 * current):
+            return (t, trial_x, trial, n_t), k + 1  # accepted whatever its energy: tested first
+        here = Pi()
+        drop = energy(trial) - here
+        if drop <= 1e-4 * t * slope or (abs(drop) <= noise * abs(here) and n_t < (1 - 1e-4 * t) * current):
             return (t, trial_x, trial, n_t), k + 1
         t *= 0.5
     return None, halvings

@@ -13,7 +13,7 @@ end joint is carried by the support there and added to its vertical force, as in
 ``x_of_s``, ``y_of_s``, ``T_of_s``, ``tensions()`` a system reads). Its stiffness is taken by
 central differences of re-solved lines (steps of `STEP` times the chord, each solve to its
 ``rtol`` of 1e-10: the differences are good to about 1e-6 relative), the only stiffness of a
-mooring system not in closed form; `skcable.mooring.geometry` reports ``model="bvp"``
+mooring system not in closed form; `skcable.mooring.choice` reports ``model="bvp"``
 with the reason no closed form holds.
 """
 
@@ -27,7 +27,7 @@ import numpy as np
 
 from skcable.errors import InputError
 from skcable.mooring.jacobians import of_own
-from skcable.mooring.plane import PlaneLine, on_seabed_tolerance
+from skcable.mooring.plane_line import PlaneLine, on_seabed_tolerance
 
 __all__ = ["BVPLineView", "Resolver", "SeabedPlane", "SeabedSlope", "solve_bvp_line"]
 
@@ -194,7 +194,7 @@ def solve_bvp_line(line, span, dh, seabed, reason, slope=0.0):
     """``line`` (segments from A) between A = (0, 0) and B = (span, dh) over the seabed
     ``y = seabed + x slope`` (relative to A, or None) by `skcable.mooring.solve_line_bvp`, from the
     end that rests on the seabed (else the lower); a
-    `skcable.mooring.plane.PlaneLine` with ``model="bvp"`` and ``reason``."""
+    `skcable.mooring.plane_line.PlaneLine` with ``model="bvp"`` and ``reason``."""
     tol = on_seabed_tolerance(span, dh, 0.0 if seabed is None else seabed)
     on_A = seabed is not None and -seabed <= tol
     on_B = seabed is not None and dh - seabed - span * slope <= tol

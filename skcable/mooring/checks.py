@@ -9,7 +9,7 @@ From a `skcable.mooring.MooringEquilibrium` (only its lines' end forces and tabl
 - **each line**: its end tensions, grounded (unstretched) length and the touchdown's horizontal
   distance from its lower end, and its angle above the horizontal at its lower end (the
   direction of its tension there: 0 where it rests on the seabed up to a touchdown); for a line
-  in the sea (`skcable.mooring.in_sea.LineInSeaBetween`) the lower end is its fixed one
+  in the sea (`skcable.mooring.sea_line.LineInSeaBetween`) the lower end is its fixed one
   and the model the one `skcable.mooring.line_3d` chose;
 - **each segment with a minimum breaking load**: its largest tension ``T_max`` against its
   ``MBL`` with a safety factor ``SF``: the utilisation :math:`SF\,T_{\max}/MBL` (at most 1 passes).

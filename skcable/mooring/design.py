@@ -352,7 +352,7 @@ def design_line(
         Past ``max_iter`` solves or ``time_limit`` seconds (``history``: ``|q - value|`` of each
         solve; ``last``: the best ``x``); no line solves inside a bracket.
     """
-    from skcable.mooring.between import line_between
+    from skcable.mooring.choice import line_between
 
     _check_names(target, vary)
     if not isinstance(line, Line):

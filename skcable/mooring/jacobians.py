@@ -1,6 +1,6 @@
 r"""The Jacobians of the end forces of the closed forms, in the span and the ends' heights.
 
-For a line solved from its lower end A (`skcable.mooring.geometry`), each function gives
+For a line solved from its lower end A (`skcable.mooring.choice`), each function gives
 ``∂(H_A, V_A, H_B, V_B)/∂(span, y_A, y_B)`` (4 × 3) with the seabed fixed; an end resting on the
 seabed has no derivative in its height (it cannot move into the seabed): its column is that of
 the end and the seabed moved together (a rigid shift, as MoorPy's end stiffnesses assume).

@@ -48,7 +48,7 @@ from functools import cached_property, lru_cache
 
 import numpy as np
 
-from skcable._checks import real, whole
+from skcable._checks import point, whole
 from skcable._show import Shown
 from skcable.errors import InputError
 
@@ -61,14 +61,6 @@ __all__ = [
     "solve_in_space",
     "takes_start",
 ]
-
-
-def point(name: str, value) -> np.ndarray:
-    """``value`` as a finite float 3-vector, raising `InputError` naming ``name`` otherwise."""
-    arr = real(name, value)
-    if np.shape(arr) != (3,):
-        raise InputError(name, f"must be a point (x, y, z) of 3 numbers, got shape {np.shape(arr)}")
-    return np.array(arr, dtype=float)
 
 
 def line_model(name: str, model):
@@ -225,7 +217,7 @@ def line_3d(model, anchor, fairlead, start=None) -> Line3D:
     ----------
     model : Line or object
         A `skcable.mooring.Line`: solved by the model it needs, chosen per line and reported
-        (`skcable.mooring.in_sea`: the closed form, the closed form with its axial laws'
+        (`skcable.mooring.choice`: the closed form, the closed form with its axial laws'
         elongation integrals, or the 3-D line BVP in a current or on a shaped seabed). Or any
         line model: ``model.solve(span, dh)`` returns the 2-D solution (see the module
         docstring for the attributes it must have).
@@ -269,8 +261,8 @@ def line_3d(model, anchor, fairlead, start=None) -> Line3D:
         )
     from skcable.mooring.segments import Line
 
-    if isinstance(model, Line):  # the model it needs, reported (`skcable.mooring.in_sea`)
-        from skcable.mooring.in_sea import solve_line_in_sea
+    if isinstance(model, Line):  # the model it needs, reported (`skcable.mooring.choice`)
+        from skcable.mooring.choice import solve_line_in_sea
 
         return solve_line_in_sea(model, a, b, r, start, solve_in_plane_of_ends)  # type: ignore[return-value]
     if start is not None and not takes_start(model):
@@ -284,11 +276,11 @@ def solve_in_space(model, anchor, fairlead, span, start=None) -> Line3D:
 
     For callers that checked them once (`skcable.mooring.MooringSystem` in its Newton loop). A
     `skcable.mooring.Line` in a current, over a shaped seabed or with a nonlinear axial law is solved
-    by the model it needs (`skcable.mooring.in_sea`: a `LineInSea`, with the force on the
+    by the model it needs (`skcable.mooring.choice`: a `LineInSea`, with the force on the
     fairlead and the 3 × 3 ``stiffness()`` of a `Line3D`).
     """
     if getattr(model, "in_space", None) is not None or getattr(model, "nonlinear", False):
-        from skcable.mooring.in_sea import solve_line_in_sea
+        from skcable.mooring.choice import solve_line_in_sea
 
         return solve_line_in_sea(model, anchor, fairlead, span, start, solve_in_plane_of_ends)  # type: ignore[return-value]
     return solve_in_plane_of_ends(model, anchor, fairlead, span, start)

@@ -13,7 +13,7 @@ A system (`skcable.mooring.MooringSystem`) holds bodies, points and lines:
 The unknowns ``q`` are the dofs of every body (6 of a `RigidBody`: position and roll, pitch,
 yaw; 3 of a `PointBody`), then three of every free point. `Layout` maps them: where each body's
 and free point's dofs start, the bodies' points in body axes, the fixed points; the positions at
-``q`` are formed by `skcable.mooring.assembly.Assembler` (vectorised over the bodies).
+``q`` are formed by `skcable.mooring.net_loads.Assembler` (vectorised over the bodies).
 """
 
 from __future__ import annotations
@@ -87,8 +87,8 @@ class MooringLine:
         Whether its model takes the previous solution as its start (``solve(..., start=)``).
     sea : tuple or None
         A line in the sea (a `skcable.mooring.Line` in a current, on a `Bathymetry` or with a
-        nonlinear axial law, `skcable.mooring.in_sea`): ``(placed, reverse)``, the line
-        solved from its fixed end (`skcable.mooring.in_sea.placed_line`) and whether that
+        nonlinear axial law, `skcable.mooring.sea_line`): ``(placed, reverse)``, the line
+        solved from its fixed end (`skcable.mooring.sea_line.placed_line`) and whether that
         end is b; None otherwise.
     """
 

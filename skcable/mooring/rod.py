@@ -256,7 +256,7 @@ class RodBody(RigidBody):
     displaced volume of the submerged length of its axis (module docstring), acts on its ends A and
     B as `RodBetween`'s does, changing with its pose where it crosses the still water line:
     ``posed_loads`` gives that force and moment and their stiffness to the assembly
-    (`skcable.mooring.assembly`). Its turning about its own axis changes nothing: a neutral
+    (`skcable.mooring.net_loads`). Its turning about its own axis changes nothing: a neutral
     direction of the equilibrium (``neutral="hold"``).
 
     Parameters

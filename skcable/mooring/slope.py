@@ -1,36 +1,27 @@
-r"""A line between two ends over a plane sloped seabed ``y = seabed + x tan α``: the model and why.
+r"""A line on a plane sloped seabed: the closed form on the slope as a line model, and the clearance.
 
-The same choice as over a flat seabed (`skcable.mooring.geometry`), by the end that rests on
-the seabed rather than the lower one (on a slope the end on the seabed may be the higher):
-
-- an end on the slope, one uniform segment: it is the anchor of
-  `skcable.cable.sloped_seabed_catenary` (Jonkman's grounded line on a slope, J.M. Jonkman,
-  "Dynamics modeling and loads analysis of an offshore floating wind turbine", NREL, 2007, as
-  MoorPy's ``catenary(alpha=...)``), the line seen from that end: from B, ``x' = span - x`` turns
-  the slope to ``-tan α`` (``"grounded (slope)"``);
-- neither end on it: the free line (``"free"``) where it clears the slope, the clearance
-  ``y(s) - seabed - x(s) tan α`` sampled along the line and its least value polished by Brent's
-  method (the clearance is convex along each heavy segment);
-- anything else: the line BVP with the plane as its seabed (``"bvp"``).
+Jonkman's grounded line on a slope (J.M. Jonkman, "Dynamics modeling and loads analysis of an
+offshore floating wind turbine", NREL, 2007, as MoorPy's ``catenary(alpha=...)``) is
+`skcable.cable.sloped_seabed_catenary`; `SlopeModel` gives it the line-model protocol
+(``solve(span, dh)``, `skcable.mooring.line3d`) for a one-segment `skcable.mooring.Line` anchored
+on a `skcable.mooring.bathymetry.Plane` that slopes along the line, and `clearance` the least
+height of a free line above a slope (sampled, then polished by Brent's method: the clearance is
+convex along each heavy segment). Which model a line on a slope takes, and why, is
+`skcable.mooring.choice`'s.
 
 The grounded line's end forces at A, :math:`H_A = T_A\cos\alpha`, :math:`V_A = -T_A\sin\alpha` with
 :math:`T_A = \max(H/\cos\alpha - k L_B, 0)`, :math:`k = w(\sin\alpha + \mu\cos\alpha)` and
-:math:`L_B = L - (V_B - H\tan\alpha)/w`, are differentiated through ``(H, V_B)``; A moves with
-the seabed (`skcable.mooring.geometry`).
+:math:`L_B = L - (V_B - H\tan\alpha)/w`, are differentiated through ``(H, V_B)``
+(`skcable.mooring.jacobians.of_sloped`); A moves with the seabed.
 """
 
 from __future__ import annotations
 
-from functools import partial
-
 import numpy as np
 
-from skcable.cable.seabed import sloped_seabed_catenary
-from skcable.errors import InputError
-from skcable.mooring.jacobians import of_free, of_sloped
-from skcable.mooring.plane import PlaneLine, on_seabed_tolerance, uniform
+from skcable._show import Shown
 
-__all__ = ["clearance", "solve_on_slope"]
+__all__ = ["SlopeModel", "SlopeSolution", "clearance"]
 
 
 def clearance(solution, floor, slope) -> float:
@@ -51,89 +42,46 @@ def clearance(solution, floor, slope) -> float:
     return min(float(values[i]), float(best.fun))
 
 
-def _free_clear(line, scene, start, tol):
-    """The free line, if it clears the slope (else None)."""
-    span, dh, seabed, slope = scene
-    reverse = dh < 0
-    variant = line.variant(reverse=reverse)
-    previous = start.solution if start is not None and start.key == ("free", reverse) else None
-    solution = (
-        variant.solve(span, abs(dh)) if previous is None else variant.solve(span, abs(dh), start=previous)
-    )
-    floor, m = (seabed - dh + span * slope, -slope) if reverse else (seabed, slope)
-    if clearance(solution, floor, m) < -tol:
-        return None
-    reason = "neither end on the sloped seabed and the line clear of it"
-    return PlaneLine(
-        span,
-        dh,
-        seabed,
-        solution,
-        reverse,
-        "free",
-        reason,
-        ("free", reverse),
-        partial(of_free, solution),
-        variant,
-        slope,
-    )
+class SlopeModel:
+    """A one-segment `Line` on a plane slope along it, as a line model: ``solve(span, dh)`` is
+    `skcable.cable.sloped_seabed_catenary` (``seabed_slope`` the slope along the line, -)."""
+
+    def __init__(self, line, seabed_slope: float):
+        self.line, self.seabed_slope = line, float(seabed_slope)
+
+    def solve(self, span, dh):
+        from skcable.cable.seabed import sloped_seabed_catenary
+
+        seg = self.line.segments[0]
+        solved = sloped_seabed_catenary(
+            span, dh, seg.w, seg.EA, length=seg.length, seabed_slope=self.seabed_slope,
+            friction=self.line.friction,
+        )  # fmt: skip
+        return SlopeSolution(solved)
 
 
-def solve_on_slope(line, scene, on_A, on_B, start, bvp) -> PlaneLine:
-    """`skcable.mooring.geometry.solve_in_plane` over a sloped seabed (module docstring)."""
-    span, dh, seabed, slope = scene
-    tol = on_seabed_tolerance(span, dh, seabed)
-    if on_A and on_B:
-        raise InputError(
-            "seabed_slope", "both ends on the sloped seabed: a line lying along a slope is not solved"
-        )
-    if not (on_A or on_B):
-        free = _free_clear(line, scene, start, tol)
-        if free is not None:
-            return free
-        return bvp(
-            line,
-            span,
-            dh,
-            seabed,
-            "the line touches down on the slope between its ends (no closed form)",
-            slope,
-        )
-    reverse = on_B
-    variant = line.variant(reverse=reverse)
-    if not uniform(variant):
-        return bvp(line, span, dh, seabed, "an end on the sloped seabed and not one uniform segment", slope)
-    seg = variant.segments[0]
-    span_o, dh_o, slope_o = (span, -dh, -slope) if reverse else (span, dh, slope)
-    solution = sloped_seabed_catenary(
-        span_o, dh_o, seg.w, seg.EA, length=seg.length, seabed_slope=slope_o, friction=line.friction
-    )
-    if solution.free is not None:
-        reason = "an end on the sloped seabed and the line leaving it upwards: it hangs free"
-        return PlaneLine(
-            span,
-            dh,
-            seabed,
-            solution,
-            reverse,
-            "free",
-            reason,
-            ("slope",),
-            partial(of_free, solution),
-            variant,
-            slope,
-        )
-    reason = "an end on the sloped seabed: the line rests on the slope up to a touchdown (closed form)"
-    return PlaneLine(
-        span,
-        dh,
-        seabed,
-        solution,
-        reverse,
-        "grounded (slope)",
-        reason,
-        ("slope",),
-        partial(of_sloped, solution),
-        variant,
-        slope,
-    )
+class SlopeSolution(Shown):
+    """A `SlopedSeabedCatenary` with the 2-D solution's ``x_of_s``, ``y_of_s`` of a line model."""
+
+    def __init__(self, solved):
+        self.solved = solved
+        for name in ("H", "H_A", "V_A", "V_B", "length", "length_on_seabed", "x_touchdown"):
+            setattr(self, name, getattr(solved, name))
+
+    def x_of_s(self, s):
+        return self.solved.xy(s)[..., 0]
+
+    def y_of_s(self, s):
+        return self.solved.xy(s)[..., 1]
+
+    def T_of_s(self, s):
+        return self.solved.T_of_s(s)
+
+    def stiffness(self):
+        return self.solved.stiffness()
+
+    def tensions(self):
+        return self.solved.tensions()
+
+    def residual(self) -> float:
+        return float(self.solved.residual())

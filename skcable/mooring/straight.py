@@ -27,7 +27,7 @@ has weight :math:`w_k` per unstretched length and the joints carry the point loa
   line's compliance (:math:`c = d\varepsilon/dT`); the lateral one is the limit of the catenary's
   :math:`H/r`, :math:`k = 1/\int (1 + \varepsilon)\,ds/T` (the line's shape under a small offset
   is :math:`T\,x' = H`), zero where the tension vanishes at an end; ends a horizontal distance
-  below the round-off of the plane's (`skcable.mooring.between`) apart take its first-order force
+  below the round-off of the plane's (`skcable.mooring.between_points`) apart take its first-order force
   :math:`k\,(\mathbf b - \mathbf a)_{xy}`;
 - **folded** (the line longer than the height, every segment heavier than water, no point load
   between the ends): both branches hang from a fold at :math:`s^*` where the tension vanishes,
@@ -176,8 +176,7 @@ class VerticalBetween:
         self._blocks = blocks
         self._tensions = tensions_by_segment
         self.length_on_seabed = float(grounded)
-        self.model = "vertical"
-        self.reason = f"its ends share a vertical: it hangs straight ({state})"
+        self.model, self.reason = "vertical", ""  # said by `skcable.mooring.choice.solve_between`
         self.is_slack = state != "taut"
 
     @property
@@ -443,6 +442,6 @@ def weightless_between(line, a, b) -> VerticalBetween:
     blocks = [[K, -K], [-K, K]]
     forces = np.array([T * u + [0.0, 0.0, -P_a], -T * u + [0.0, 0.0, -P_b]])
     out = VerticalBetween(line, a, b, "taut" if T > 0 else "slack", forces, blocks, [(T, T)] * arrays.n)
-    out.model, out.reason = "weightless", "weightless (w = 0): straight between its ends"
+    out.model = "weightless"
     out.span = float(math.hypot(chord[0], chord[1]))
     return out

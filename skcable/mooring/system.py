@@ -3,9 +3,9 @@ r"""A mooring system: bodies, points and lines, their net loads and stiffness.
 Points are fixed (anchors), free (three dofs, with their own weight, buoyancy and force) or
 fixed to a body; lines connect any two points (`skcable.mooring.network`). A
 `skcable.mooring.Line` is solved over the system's flat seabed at ``z = -depth``, from whichever
-end is lower, with the model its position takes (`skcable.mooring.between`); a `Line` in the
+end is lower, with the model its position takes (`skcable.mooring.choice`); a `Line` in the
 sea (a current, a `skcable.mooring.bathymetry.Bathymetry`, a nonlinear axial law) from its fixed
-end, a or b, by the model `skcable.mooring.line_3d` picks (`skcable.mooring.in_sea`), its
+end, a or b, by the model `skcable.mooring.line_3d` picks (`skcable.mooring.choice`), its
 force and 3 x 3 stiffness at its moving end entering the sums below as a one-end line's do; any
 other line model is solved as given, its anchor A at the line's first point. The
 one-body constructor of earlier releases, ``MooringSystem(body, lines, anchors)``, builds such a
@@ -46,12 +46,18 @@ import numpy as np
 from skcable import _plausible
 from skcable._checks import nonnegative, positive, real, scalar
 from skcable.errors import InputError
-from skcable.mooring.assembly import Assembler
-from skcable.mooring.between import BATCH, LineBetween, solve_between, solve_many_between
+from skcable.mooring.between_points import LineBetween
 from skcable.mooring.body import PointBody, RigidBody, skew
+from skcable.mooring.choice import (
+    BATCH,
+    is_line,
+    on_seabed_tolerance,
+    solve_between,
+    solve_line_in_sea,
+    solve_many_between,
+    solved_in_sea,
+)
 from skcable.mooring.equilibrium import MooringEquilibrium, solve_equilibrium, warn_implausible
-from skcable.mooring.geometry import is_line, on_seabed_tolerance
-from skcable.mooring.in_sea import LineInSeaBetween, placed_line, solve_line_in_sea
 from skcable.mooring.line3d import (
     Line3D,
     line_3d,
@@ -61,8 +67,10 @@ from skcable.mooring.line3d import (
     solve_in_space,
     takes_start,
 )
+from skcable.mooring.net_loads import Assembler
 from skcable.mooring.network import Layout, MooringLine, MooringPoint, check_body
 from skcable.mooring.rod import RodBetween
+from skcable.mooring.sea_line import LineInSeaBetween, placed_line
 
 __all__ = ["MooringEquilibrium", "MooringSystem"]
 
@@ -267,8 +275,7 @@ class MooringSystem:
 
     def _add_line(self, model, a, b, managed):
         sea = None
-        straight = is_line(model) and all(seg.w == 0.0 for seg in model.segments)  # weightless: straight
-        if managed and is_line(model) and model.off_plane is not None and not straight:
+        if managed and solved_in_sea(model):  # the choice of `skcable.mooring.choice`
             sea, managed = self._sea_placement(model, a, b), False
         warm = managed or sea is not None or takes_start(model)
         handle = MooringLine(len(self.mooring_lines), model, a, b, managed, warm, sea)
@@ -301,7 +308,7 @@ class MooringSystem:
 
         A `skcable.mooring.Line` in the sea (a ``current``, a `skcable.mooring.bathymetry.Bathymetry`
         or a nonlinear axial law) is solved by `skcable.mooring.line_3d`'s choice of model
-        (`skcable.mooring.in_sea`) from its fixed end, ``a`` or ``b``, as its anchor: over
+        (`skcable.mooring.choice`) from its fixed end, ``a`` or ``b``, as its anchor: over
         its own `Bathymetry` where it has one, else over the system's flat seabed; its force and
         3 x 3 stiffness at its moving end enter the system's. One of its ends must be fixed
         (`InputError` naming ``line`` otherwise: the both-ends stiffness of such a line is not

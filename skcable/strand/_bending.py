@@ -70,7 +70,25 @@ from skcable.errors import InputError
 from skcable.strand._arguments import float_array, is_real_number, principal_axis, real_number
 from skcable.strand._section import Section
 
-__all__ = ["BendingLaw", "critical_curvature"]
+__all__ = ["BendingLaw", "CardouSection", "MAX_FRICTION", "critical_curvature", "friction"]
+
+#: the largest friction coefficient between wires taken: measured wire-on-wire coefficients lie
+#: between about 0.1 and 1 (Cardou 2013; Pino Vidal 2021 uses 0.3 to 0.7), and the capstan gain
+#: exp(μ π sin α) of a larger one sends the wire forces of the friction moment beyond any wire's
+#: strength
+MAX_FRICTION = 2.0
+
+
+def friction(mu) -> float:
+    """``mu`` checked: a real number in ``[0, MAX_FRICTION]`` (`InputError` naming ``mu``)."""
+    mu = real_number("mu", mu, lower=0.0)
+    if mu > MAX_FRICTION:
+        raise InputError(
+            "mu",
+            f"must lie in [0, {MAX_FRICTION:g}] (friction between wires: about 0.1 to 1; Cardou 2013 and "
+            f"Pino Vidal 2021 use 0.3 to 0.7), got {mu!r}",
+        )
+    return mu
 
 
 def _section(section) -> Section:
@@ -132,42 +150,100 @@ def _theta(section: Section, axis: int) -> np.ndarray:
     return _side(section, axis) * theta
 
 
+class CardouSection:
+    r"""Cardou's law of one section and friction at any axial strains: its strain-independent
+    per-wire factors (levers, capstan gains) formed once, the strain-dependent ones (secant
+    moduli, wire forces) per call, with their derivatives on request.
+
+    Parameters
+    ----------
+    section : Section
+        The strand section (``strand.section()``).
+    mu : float
+        Friction coefficient, >= 0.
+
+    Notes
+    -----
+    ``section(strain)`` returns a dict of ``EI_stick``, ``EI_slip``, ``M_rf``, ``kappa_m``, each
+    (2, *strain.shape) over principal axes 1, 2 (the module's law, unchecked strains); with
+    ``derivatives=True`` also ``d_EI_stick``, ``d_EI_slip``, ``d_M_rf``, ``d_kappa_m``, their
+    derivatives with respect to the axial strain (per unit strain): with ``e_i = cos²α_i ε``,
+
+    .. math:: \frac{dE_{sec,i}}{d\varepsilon} = \cos^2\alpha_i\,\frac{E_t(e_i) - E_{sec}(e_i)}{e_i},
+              \qquad \frac{dF_i}{d\varepsilon} = A_i\cos^2\alpha_i\,E_t(e_i),
+              \qquad \frac{d\kappa_m}{d\varepsilon} = \frac{M_{rf}' - \kappa_m (EI_{stick} - EI_{slip})'}
+              {EI_{stick} - EI_{slip}}
+
+    (0 at ε = 0 for the modulus, whose law starts linear; 0 about an axis without composite
+    bending, whose κ_m is a constant).
+    """
+
+    def __init__(self, section: Section, mu: float):
+        self.section, self.mu = section, float(mu)
+        w = section.wires
+        alive, composite = w.intact, section.composite_bending
+        helical = alive & (w.layer > 0)
+        cos, sin = np.cos(w.lay_angle), np.sin(w.lay_angle)
+        levers = np.array([section.lever(k) for k in (0, 1)])  # (2, wires)
+        theta = np.array([_theta(section, k) for k in (0, 1)])
+        # strain-independent per-wire factors; nothing composite about a lever-less axis
+        self._stick = np.where(alive & composite[:, None], w.area * cos**3 * levers**2, 0.0)
+        self._own = np.where(alive, w.inertia * cos, 0.0)
+        with np.errstate(over="ignore", invalid="ignore"):
+            capstan = np.where(
+                helical & composite[:, None], w.radius * cos * np.expm1(mu * theta * sin) * np.sin(theta), 0.0
+            )
+        if not np.all(np.isfinite(capstan)):
+            raise InputError("mu", f"the capstan factor exp(mu·θ·sin α) overflows for mu = {mu!r}")
+        self._capstan = capstan
+        self._cos2 = cos**2
+        self._area = w.area
+        self._composite = composite
+        materials = section.materials
+        if materials.uniform:
+            self._no_lever = 2.0 * materials.materials[0].eps_rupture / float(np.max(w.diameter[alive]))
+        else:  # the intact wire that breaks first by its own bending
+            self._no_lever = float(np.min(2.0 * materials.take("eps_rupture")[alive] / w.diameter[alive]))
+
+    def __call__(self, strain: np.ndarray, derivatives: bool = False) -> dict:
+        materials = self.section.materials
+        strain = np.asarray(strain, dtype=float)
+        flat = strain.reshape(-1)
+        wire_strain = np.multiply.outer(self._cos2, flat)  # (wires, n)
+        modulus = materials.secant(wire_strain)  # secant modulus per wire, its own material
+        force = self._area[:, None] * materials.stress(wire_strain)
+        composite_part = self._stick @ modulus  # (2, n)
+        slip = np.broadcast_to(self._own @ modulus, composite_part.shape)
+        M_rf = self._capstan @ force
+        composite = self._composite[:, None]
+        with np.errstate(divide="ignore", invalid="ignore"):
+            kappa = np.where(composite, M_rf / composite_part, self._no_lever)
+        out = dict(EI_stick=composite_part + slip, EI_slip=slip.copy(), M_rf=M_rf, kappa_m=kappa)
+        if derivatives:
+            tangent = materials.stress_and_tangent(wire_strain)[1]
+            safe = np.where(wire_strain > 0.0, wire_strain, 1.0)
+            d_modulus = np.where(wire_strain > 0.0, self._cos2[:, None] * (tangent - modulus) / safe, 0.0)
+            d_force = (self._area * self._cos2)[:, None] * tangent
+            d_composite = self._stick @ d_modulus
+            d_slip = np.broadcast_to(self._own @ d_modulus, d_composite.shape)
+            d_M_rf = self._capstan @ d_force
+            with np.errstate(divide="ignore", invalid="ignore"):
+                d_kappa = np.where(composite, (d_M_rf - kappa * d_composite) / composite_part, 0.0)
+            out.update(
+                d_EI_stick=d_composite + d_slip, d_EI_slip=d_slip.copy(), d_M_rf=d_M_rf, d_kappa_m=d_kappa
+            )
+        for key, value in out.items():
+            if not np.all(np.isfinite(value)):
+                raise InputError(
+                    "section", f"{key} is not finite: wire sizes or moduli beyond floating point?"
+                )
+            out[key] = value.reshape((2, *strain.shape))
+        return out
+
+
 def _law(section: Section, mu: float, strain: np.ndarray) -> dict:
     """EI_stick, EI_slip, M_rf, kappa_m (2, *strain.shape) of Cardou's law at every strain."""
-    w, materials = section.wires, section.materials
-    alive, composite = w.intact, section.composite_bending
-    helical = alive & (w.layer > 0)
-    cos, sin = np.cos(w.lay_angle), np.sin(w.lay_angle)
-    levers = np.array([section.lever(k) for k in (0, 1)])  # (2, wires)
-    theta = np.array([_theta(section, k) for k in (0, 1)])
-    # strain-independent per-wire factors; nothing composite about a lever-less axis
-    stick = np.where(alive & composite[:, None], w.area * cos**3 * levers**2, 0.0)
-    own = np.where(alive, w.inertia * cos, 0.0)
-    with np.errstate(over="ignore", invalid="ignore"):
-        capstan = np.where(
-            helical & composite[:, None], w.radius * cos * np.expm1(mu * theta * sin) * np.sin(theta), 0.0
-        )
-    if not np.all(np.isfinite(capstan)):
-        raise InputError("mu", f"the capstan factor exp(mu·θ·sin α) overflows for mu = {mu!r}")
-    flat = strain.reshape(-1)
-    wire_strain = np.multiply.outer(cos**2, flat)  # (wires, n)
-    modulus = materials.secant(wire_strain)  # secant modulus per wire, its own material
-    force = w.area[:, None] * materials.stress(wire_strain)
-    composite_part = stick @ modulus  # (2, n)
-    slip = np.broadcast_to(own @ modulus, composite_part.shape)
-    M_rf = capstan @ force
-    if materials.uniform:
-        no_lever = 2.0 * materials.materials[0].eps_rupture / float(np.max(w.diameter[alive]))
-    else:  # the intact wire that breaks first by its own bending
-        no_lever = float(np.min(2.0 * materials.take("eps_rupture")[alive] / w.diameter[alive]))
-    with np.errstate(divide="ignore", invalid="ignore"):
-        kappa = np.where(composite[:, None], M_rf / composite_part, no_lever)
-    out = dict(EI_stick=composite_part + slip, EI_slip=slip.copy(), M_rf=M_rf, kappa_m=kappa)
-    for key, value in out.items():
-        if not np.all(np.isfinite(value)):
-            raise InputError("section", f"{key} is not finite: wire sizes or moduli beyond floating point?")
-        out[key] = value.reshape((2, *strain.shape))
-    return out
+    return CardouSection(section, mu)(strain)
 
 
 def critical_curvature(section, mu: float, axial_strain) -> np.ndarray:
@@ -192,7 +268,7 @@ def critical_curvature(section, mu: float, axial_strain) -> np.ndarray:
         the documented constant ``2 ε_rupture / d_max`` (see `BendingLaw`).
     """
     section = _section(section)
-    mu = real_number("mu", mu, lower=0.0)
+    mu = friction(mu)
     return _law(section, mu, _strains(section, axial_strain, scalar=False))["kappa_m"]
 
 
@@ -229,7 +305,7 @@ class BendingLaw(Shown):
 
     def __init__(self, section, *, mu: float, axial_strain: float):
         self.section = _section(section)
-        self.mu = real_number("mu", mu, lower=0.0)
+        self.mu = friction(mu)
         self.axial_strain = float(_strains(section, axial_strain, scalar=True)[0])
         law = _law(section, self.mu, np.array([self.axial_strain]))
         self.EI_stick, self.EI_slip, self.M_rf, self.kappa_m = (

@@ -146,7 +146,10 @@ class StepResult(Shown):
     Attributes
     ----------
     strain, force : float
-        Imposed axial strain and the axial reaction at x = L (N).
+        The strand's axial strain ``(u(L) − u(0))/L`` (the imposed one under
+        ``axial="strain"``) and the axial force at x = L (N): the imposed strain's reaction, the
+        applied force (``axial="force"``), or the reaction of a support holding u(L) (0 where
+        u(L) is free).
     x : ndarray (n_elements, n_quad)
         Quadrature points (m).
     curvature : ndarray (2, n_elements, n_quad)
@@ -224,6 +227,26 @@ class StepResult(Shown):
         """Fraction of the strand length in slip (about either axis)."""
         return float(np.mean(np.any(self.slipping, axis=0)))
 
+    def to_vtk(
+        self, path, *, wires: bool = False, scale: float = 1.0, radial_scale: float = 1.0, fields=None
+    ):
+        """Write this step as a VTK file ``path`` (``.vtu`` or ``.vtk``, atomically:
+        `skcable.io.write`) for ParaView: the axis with its point and cell data, the terms'
+        outputs included ([`strand_mesh`][skcable.io.strand_mesh]). With ``wires``, also the
+        wires as tubes ([`wire_mesh`][skcable.io.wire_mesh]) in ``<stem>_wires<suffix>``;
+        ``fields(step) -> (point_data, cell_data)`` adds the user's arrays. Returns the paths."""
+        from pathlib import Path
+
+        from skcable.io import strand_mesh, wire_mesh, write
+
+        path = Path(path)
+        point_data, cell_data = (None, None) if fields is None else fields(self)
+        out = [write(strand_mesh(self, point_data=point_data, cell_data=cell_data), path)]
+        if wires:
+            tubes = wire_mesh(self, scale=scale, radial_scale=radial_scale)
+            out.append(write(tubes, path.with_name(path.stem + "_wires" + path.suffix)))
+        return out
+
     def __repr__(self) -> str:
         peak = float(np.max(np.abs(self.curvature))) if self.curvature.size else 0.0
         top = float(np.max(self.wire_strain)) if self.wire_strain.size else 0.0
@@ -268,6 +291,7 @@ class CapacityCurve(Shown):
     failure: str | None = None
     cutbacks: int = 0
     options: object = None
+    max_force: float | None = None
 
     @property
     def snaps(self) -> list:
@@ -429,7 +453,9 @@ class CapacityCurve(Shown):
     @cached_property
     def reference(self):
         """The undamaged strand's curve with the same settings (for D_r)."""
-        return capacity_curve(self.model.twin(), n_steps=self.n_steps, options=self.options)
+        return capacity_curve(
+            self.model.twin(), n_steps=self.n_steps, options=self.options, max_force=self.max_force
+        )
 
     @property
     def D_r(self) -> float:
@@ -448,13 +474,20 @@ def capacity_curve(
     on_failure: str = "raise",
     callback=None,
     options=None,
+    max_force=None,
     **newton_options,
 ) -> CapacityCurve:
     """Pull ``model`` step by step until a wire breaks (or ``max_strain``).
 
-    ``n_steps`` (default 60) strain increments, half of them up to twice the
-    yield strain and half from there to ``max_strain`` (default 1.5 eps_rupture;
-    the curve stops at the first wire rupture, interpolated to the strain where the
+    A model loaded by an axial force (``axial="force"``) is pulled by force instead: ``n_steps``
+    (default 60) equal increments of the force up to ``max_force`` (N, required), its curve's
+    strains the strand's mean axial strain ``(u(L) − u(0))/L`` at each step; past the largest
+    force the strand carries, no step converges (``on_failure`` as below).
+
+    ``n_steps`` (default 60) strain increments, whatever ``max_strain`` is: half of them up to
+    twice the yield strain and half from there to ``max_strain`` (default 1.5 eps_rupture), or,
+    for a ``max_strain`` below twice the yield strain, all of them equal (the curve
+    stops at the first wire rupture, interpolated to the strain where the
     most strained wire reaches eps_rupture, and its last step is solved there). A step
     that fails is halved; the cut increment is kept until two steps in a row converge
     at it (then it doubles), down to 1/64 of the schedule's step. The slip state is
@@ -474,7 +507,7 @@ def capacity_curve(
     if on_failure not in ("raise", "stop"):
         raise InputError("on_failure", f"must be 'raise' or 'stop', got {on_failure!r}")
     solve_options = NewtonOptions.of(model.options if options is None else options, **newton_options)
-    n_steps, schedule = _schedule(model.strand.materials, max_strain, n_steps, state_passes)
+    n_steps, schedule = _schedule(model, max_strain, n_steps, state_passes, max_force)
     path = _Path(model, state_passes, solve_options)
     failure = None
     control = StepControl(schedule)  # cut, hold, grow and lift the strain increments
@@ -482,8 +515,14 @@ def capacity_curve(
         while path.eps < goal - 1e-15 and failure is None:
             step, target, cut, last = path.solve(control, goal, smallest)
             if step is None:
-                failure = f"no convergence beyond strain {path.eps:.6g} (increment cut to 1/64 of the step)"
+                where = (
+                    f"strain {path.eps:.6g}"
+                    if getattr(model, "axial", "strain") == "strain"
+                    else (f"force {path.eps:.6g} N")
+                )
+                failure = f"no convergence beyond {where} (increment cut to 1/64 of the step)"
                 failure += _softening_note(model, path.steps[-1] if path.steps else None)
+                failure += _last_note(model, last, target, path.state)
                 if on_failure == "raise":
                     assert last is not None  # the solve that failed last
                     raise ConvergenceError("capacity_curve: " + failure, last.history) from last
@@ -508,13 +547,27 @@ def capacity_curve(
         failure,
         control.cutbacks,
         solve_options,
+        None if max_force is None else float(max_force),
     )
 
 
-def _schedule(materials, max_strain, n_steps, state_passes) -> tuple[int, np.ndarray]:
-    """``n_steps`` checked (default 60) and the strain goals of `capacity_curve` after 0: half the
-    steps uniform up to twice the yield strain, half growing geometrically to ``max_strain``
-    (default 1.5 eps_rupture); ``max_strain`` and ``state_passes`` checked on the way."""
+def _schedule(model, max_strain, n_steps, state_passes, max_force=None) -> tuple[int, np.ndarray]:
+    """``n_steps`` checked (default 60) and the load goals of `capacity_curve` after 0: for an
+    imposed strain, half the steps uniform up to twice the yield strain, half growing
+    geometrically to ``max_strain`` (default 1.5 eps_rupture); for an axial force, equal steps up
+    to ``max_force``; ``max_strain``, ``max_force`` and ``state_passes`` checked on the way."""
+    materials = model.strand.materials
+    axial = getattr(model, "axial", "strain")
+    if axial == "none":
+        raise InputError("model", "has no axial load (axial='none'): a curve pulls by strain or force")
+    if axial == "force":
+        if max_strain is not None:
+            raise InputError("max_strain", "the model is pulled by force (axial='force'): give max_force")
+        if max_force is None:
+            raise InputError("max_force", "a model pulled by force (axial='force') needs it (N)")
+        positive("max_force", max_force)
+    elif max_force is not None:
+        raise InputError("max_force", "the model is pulled by strain (axial='strain'): give max_strain")
     if n_steps is None:
         n_steps = 60
     elif isinstance(n_steps, bool) or not isinstance(n_steps, (int, np.integer)):
@@ -531,16 +584,20 @@ def _schedule(materials, max_strain, n_steps, state_passes) -> tuple[int, np.nda
         and state_passes >= 0
     ):
         raise InputError("state_passes", f"must be a whole number >= 0, got {state_passes!r}")
+    if axial == "force":
+        return n_steps, np.linspace(0.0, float(max_force), n_steps + 1)[1:]
     top = float(max_strain) if max_strain is not None else 1.5 * min(m.eps_rupture for m in materials)
     # half the steps, uniform, up to twice the yield strain (where slip and yield
     # shape the curve and K_Leq is measured), half from there to rupture with
     # geometrically growing increments (no jump in step size for Newton to absorb)
-    knee = min(2.0 * min(m.eps_y for m in materials), top)
+    knee = 2.0 * min(m.eps_y for m in materials)
+    if top <= knee:  # the whole range is the uniform part: n_steps equal increments
+        return n_steps, np.linspace(0.0, top, n_steps + 1)[1:]
     schedule = np.unique(
         np.concatenate(
             [
                 np.linspace(0.0, knee, n_steps // 2 + 1),
-                np.geomspace(knee, max(top, knee), n_steps - n_steps // 2 + 1),  # increments grow gradually
+                np.geomspace(knee, top, n_steps - n_steps // 2 + 1),  # increments grow gradually
             ]
         )
     )[1:]
@@ -556,7 +613,7 @@ class _Path:
         self.model, self.passes, self.options = model, passes, options
         self.layout = model.layout
         self.state = model.initial_state()
-        self.strains, self.forces, self.fractions = [0.0], [0.0], [0.0]
+        self.strains, self.forces, self.fractions, self.loads = [0.0], [0.0], [0.0], [0.0]
         self.steps: list[StepResult] = []
         self.chatter: list[int] = []
         self.U: np.ndarray | None = None
@@ -573,7 +630,7 @@ class _Path:
         while True:
             try:
                 guess = None if self.U is None else _extrapolate(self.U, self.previous, self.eps, target)
-                step = self.model.solve(target, guess, self.state, passes=self.passes, options=self.options)
+                step = self._solve(target, guess, self.state, passes=self.passes)
                 return step, target, cut, None
             except ConvergenceError as exc:
                 cut = True
@@ -581,6 +638,13 @@ class _Path:
                 if halved is None:
                     return None, target, cut, exc
                 target = halved
+
+    def _solve(self, load, guess, state, **kwargs) -> StepResult:
+        """The model's step at ``load``: an imposed strain, or an axial force (``axial="force"``)."""
+        kwargs.update(options=self.options, diagnose=False)  # the final failure is explained once
+        if getattr(self.model, "axial", "strain") == "force":
+            return self.model.solve(None, guess, state, force=load, **kwargs)
+        return self.model.solve(load, guess, state, **kwargs)
 
     def add(self, step: StepResult, target: float) -> None:
         """Keep a converged step at strain ``target``; end the curve at the rupture strain if a
@@ -590,6 +654,7 @@ class _Path:
         if not step.settled:
             self.chatter.append(len(self.steps))
         self.eps = target
+        self.loads.append(target)
         self.steps.append(step)
         self.strains.append(step.strain)
         self.forces.append(step.force)
@@ -606,17 +671,27 @@ class _Path:
         t = (rupture - before) / (peak - before)
         strains[-1] = strains[-2] + t * (strains[-1] - strains[-2])
         forces[-1] = forces[-2] + t * (forces[-1] - forces[-2])
+        loads = self.loads
+        loads[-1] = loads[-2] + t * (loads[-1] - loads[-2])
         self.ruptured = True
         # one last state everywhere: the last step is the equilibrium at the rupture strain
         # (the force of the curve stays the interpolated one; they differ by its error)
         U_prev = self.previous[0]
         guess = None if U_prev is None else U_prev + t * (U - U_prev)
         try:
-            steps[-1] = self.model.solve(
-                strains[-1], guess, steps[-2].state if len(steps) > 1 else None, options=self.options
-            )
+            steps[-1] = self._solve(loads[-1], guess, steps[-2].state if len(steps) > 1 else None)
         except ConvergenceError:
             pass  # keep the step beyond rupture: the curve itself ends at the rupture strain
+
+
+def _last_note(model, last, load, state) -> str:
+    """What the last failed solve said, and what its tangent shows (`StrandModel.explain`)."""
+    if last is None:
+        return ""
+    said = str(last.args[0]).split(" (last ")[0]
+    explain = getattr(model, "explain", None)
+    modes = explain(last.last, load, state) if explain is not None and last.last is not None else ""
+    return f"; the last solve: {said}" + (f"; {modes}" if modes and modes not in said else "")
 
 
 def _softening_note(model, step) -> str:

@@ -407,3 +407,54 @@ def test_the_line_model_pickles_and_solves_alike():
     assert repr(copy) == repr(model)
     with pytest.raises(InputError, match="start"):
         model.solve(A, B, start=copy.solve(A, B))
+
+
+# -- the line in space in its vertical plane is the plane line (issue 32, item 2) --------------------
+SEGMENTS = [(300.0, 1000.0, 5e8), (250.0, 400.0, 2e8), (300.0, 1000.0, 5e8)]
+
+
+@pytest.mark.parametrize("scene", ["a seabed sloping along the line", "a clump at a joint, no seabed"])
+def test_the_line_in_space_in_its_vertical_plane_is_the_plane_line(scene):
+    """The pinned plane scenes of `tests/pinned_library.py` (`line_bvp_slope`, `line_bvp_free`)
+    solved by the 3-D line BVP in the vertical plane x-z: the two discretisations (the plane's
+    graded meshes, the 3-D line's uniform ones) agree to their discretisation errors, 2.7e-8 and
+    2.2e-8 of the largest force at the pinned element counts (64 and 48), 1e-9 and 3e-9 at 256
+    elements (measured); held at 256 to 1e-8, and closer than on a quarter of the elements."""
+    from skcable import mooring
+
+    if scene.startswith("a seabed"):
+        plane = mooring.solve_line_bvp(800.0, 150.0, SEGMENTS, seabed=lambda x: -0.02 * x, n_elements=256)
+        kwargs = dict(seabed=Plane(0.0, (-0.02, 0.0)))
+        b = (800.0, 0.0, 150.0)
+    else:
+        plane = mooring.solve_line_bvp(700.0, 250.0, SEGMENTS, point_loads=[(300.0, 2e4)], n_elements=256)
+        kwargs = dict(attachments=[(1, 2e4)])
+        b = (700.0, 0.0, 250.0)
+    want = np.array([plane.H_A, -plane.V_A, -plane.H_B, -plane.V_B])
+    gaps = []
+    for n in (64, 256):
+        space = solve_line_bvp_3d((0.0, 0.0, 0.0), b, SEGMENTS, n_elements=n, **kwargs)
+        assert abs(space.force_on_fairlead[1]) <= 1e-12 * space.T_B  # it stays in its plane
+        got = np.array([*space.force_on_anchor[[0, 2]], *space.force_on_fairlead[[0, 2]]])
+        gaps.append(np.abs(got - want).max() / np.abs(want).max())
+    assert gaps[1] < 1e-8 and gaps[1] < gaps[0]
+
+
+def test_the_line_in_space_refuses_the_slack_stretch_the_plane_line_solves():
+    """Where friction holds a slack stretch near the anchor (the pinned `line_bvp_friction`), the
+    plane line models it (Jonkman's H_A = 0) and the 3-D line says it does not."""
+    from skcable import mooring
+
+    plane = mooring.solve_line_bvp(
+        800.0, 150.0, [(850.0, 1000.0, 5e8)], seabed=0.0, friction=0.5, n_elements=80
+    )
+    assert plane.problem.slack_end > 0 and abs(plane.H_A) <= 1e-9 * plane.H
+    with pytest.raises(ConvergenceError, match="slack stretch"):
+        solve_line_bvp_3d(
+            (0.0, 0.0, 0.0),
+            (800.0, 0.0, 150.0),
+            [(850.0, 1000.0, 5e8)],
+            seabed=0.0,
+            friction=0.5,
+            n_elements=80,
+        )

@@ -5,7 +5,7 @@ import numpy as np
 import pytest
 
 from skcable import mooring
-from skcable.mooring import between
+from skcable.mooring import choice
 from skcable.mooring.segments.batch import batchable, solve_batch
 from tests.mooring.mooring_reference import balance, free_line, grounded_line, reference_forces
 
@@ -73,12 +73,12 @@ def _spread(n_lines, friction):
 
 
 def test_a_spread_mooring_solved_together_balances_and_matches_line_by_line(monkeypatch):
-    n = between.BATCH + 4
+    n = choice.BATCH + 4
     system, body = _spread(n, 0.5)
     force = {body: (6.0e6, 1.5e6, 0.0)}
     eq = system.equilibrium(force=force)
     solved = []
-    original = between.solve_many_between
+    original = choice.solve_many_between
     monkeypatch.setattr(
         "skcable.mooring.system.solve_many_between",
         lambda *a: solved.append(sum(x is not None for x in original(*a))) or original(*a),
@@ -111,8 +111,8 @@ def test_a_fairlead_on_the_vertical_of_its_anchor_hangs_straight():
     )
     assert hung.length_on_seabed == pytest.approx(L - hanging, rel=1e-13)
     # among lines solved together it is left out, for `solve_between` to solve on its own
-    ends = [(np.array([800.0, 0.0, -200.0]), np.array([20.0, 0.0, -14.0]))] * (between.BATCH + 1)
+    ends = [(np.array([800.0, 0.0, -200.0]), np.array([20.0, 0.0, -14.0]))] * (choice.BATCH + 1)
     ends[3] = (np.array([0.0, 0.0, -200.0]), np.array([0.0, 0.0, -14.0]))
     start = mooring.line_between(line, *ends[0], depth=200.0)
-    solved = between.solve_many_between(line, ends, 200.0, [start] * len(ends))
+    solved = choice.solve_many_between(line, ends, 200.0, [start] * len(ends))
     assert solved[3] is None and all(s is not None for k, s in enumerate(solved) if k != 3)

@@ -27,8 +27,10 @@ def test_damaged_strand_switches_slip_on_where_stick_reaches_kappa_m():
 
 
 def test_stick_is_kept_when_the_wires_never_slip():
-    # friction so high that kappa_m (proportional to mu) stays above the stick curvature
-    analysis = strand.analyse(strand.preset("steel-9.5").damaged(1), 0.3, mu=100, n_elements=16, n_steps=8)
+    # a steep lay (17°) and the largest friction taken (mu = 2): kappa_m (its capstan gain grows
+    # with mu sin α) stays above the stick curvature
+    steep = strand.Strand(3.1e-3, (strand.Layer(6, 3.1e-3, lay_angle=0.3),), strand.material("steel"))
+    analysis = strand.analyse(steep.damaged(1), 0.3, mu=2.0, n_elements=16, n_steps=8)
     assert analysis.model == "stick" and analysis.curve is analysis.stick
     assert all(np.max(np.abs(s.curvature) / s.kappa_m) < 1 for s in analysis.stick.steps)
 

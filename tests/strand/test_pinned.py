@@ -5,6 +5,27 @@ JSON file), each Newton solve converged to 1e-13 rather than its default (1e-9 o
 left the bending of a damaged strand converged to about 1e-9 only). Solved to 1e-12, the model
 reproduces every one to 1e-9 relative (the curve's forces to 1e-11 of its largest force: 1.7e-12
 measured); at its default tolerance, to the default's own accuracy, 1e-8.
+
+Re-pinned (issue 34): the two ``slip="axis"`` cases. ``"axis"`` is now Cardou's law as a section
+law: beyond κ_m the section moment is M_rf + EI_slip κ at every point and principal axis (the
+friction moment included), as `BendingLaw.moment` and docs/strand_model.md say. The previous
+model saturated the composite curvature inside an energy, so the saturated wires' moment did no
+virtual work and the section moment fell to EI_slip κ, little above the thesis's element rule
+(the lower bound, which drops the composite bending altogether). Secant F/ε at ε = 0.003, in kN,
+element rule / axis / stick: one broken wire 8114.3 / 8147.1 before, 8203.3 now / 8405.8; two
+broken wires 5218.9 / 5262.0 before, 5396.7 now / 6040.0 (at 0.001 the axis curve moves from
+7498 to 7708 and from 3879 to 4209 kN). Evidence: ``tests/strand/test_slip_law.py`` checks the
+moment at every point against `BendingLaw.moment` (1e-6) and the end moments of a turned strand
+against a shooting solution of the law (1e-4). ``python benchmarks/pin_strand_numbers.py --slip
+axis --reason ...`` recorded them (the file keeps the commit and the reason); the stick and
+element cases are unchanged.
+
+Re-pinned (issue 34, step 5): the two aluminium 10.1 mm cases. They stop at max_strain = 0.008,
+below aluminium's 2 ε_y, where `capacity_curve` used to collapse half its schedule (12 steps of
+the 24 asked for); it now takes the 24 increments asked for. Their forces at the 12 old strains
+equal the previous pins to 2.4e-14 relative (the same equilibria); K_Leq moves by 2.1e-4 (stick)
+and 1.4e-3 (element rule), its interpolation to the elastic limit spanning half the step now.
+``python benchmarks/pin_strand_numbers.py --preset aluminium-10.1 --reason ...`` recorded them.
 """
 
 import json

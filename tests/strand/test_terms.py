@@ -52,8 +52,10 @@ def test_analyst_foundation_term_matches_the_closed_form_and_the_ready_term():
 
 # --- a slip law written outside the library -----------------------------------------------------
 class SmoothSaturation(strand.SlipLaw):
-    """κ_c = k tanh(κ/k), k = κ_m + κ_0: stateless and smooth (κ_0 = 0.05 1/m keeps the
-    untensioned strand, whose κ_m is 0, from a zero-width transition)."""
+    """A kinematic law: κ_c = k tanh(κ/k), k = κ_m + κ_0: stateless and smooth (κ_0 = 0.05 1/m
+    keeps the untensioned strand, whose κ_m is 0, from a zero-width transition)."""
+
+    kinematic = True
 
     def composite(self, kappa, kappa_m, state):
         k = kappa_m + 0.05

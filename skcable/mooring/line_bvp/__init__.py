@@ -8,10 +8,14 @@ on a seabed of any shape with Coulomb friction. One concern per module:
   `Scene`;
 - `contact`: the seabed and the semismooth (primal–dual active set) contact rows;
 - `mesh`: uniform, graded (equidistributed turning), fitted and nested meshes;
+- `discrete`: what the plane line and the line in space (`skcable.mooring.line_bvp_3d`) write
+  once, parametrised by the dimension: mesh, bases, dofs, merit, the generalized Jacobian's
+  banded solves and the ends' sensitivities (`DiscreteLine`);
 - `problem`: one discrete line — bases, properties at the quadrature points, the loads, the
   residual and its generalized Jacobian (every call of the assembly is there);
 - `start`: the closed-form start (elastic catenary, grounded where it dips below the seabed);
-- `iterate`: one solve — damped semismooth Newton, full steps, the polish;
+- `iterate`: one solve — damped semismooth Newton, full steps, the polish (the full steps and
+  the polish shared with the line in space);
 - `slack`: Jonkman's slack stretch near the anchor;
 - `driver`: the continuation `LineBVPSolver` — levels, gradings, friction, fitting, checks;
 - `solution`: `LineBVPSolution`, the end forces, contact and fields;

@@ -25,7 +25,20 @@ from skcable.errors import ConvergenceError, InputError
 from skcable.fe import NewtonOptions, newton
 from skcable.mooring.line_bvp.solution import LineBVPSolution
 
-__all__ = ["FROZEN_STEPS", "POLISH", "first_success", "frozen_steps", "full_steps", "report", "solve_on"]
+__all__ = [
+    "FROZEN_STEPS",
+    "POLISH",
+    "first_success",
+    "frozen_steps",
+    "full_newton",
+    "full_steps",
+    "polish",
+    "report",
+    "solve_on",
+]
+
+#: exceptions a trial may raise that make it a step too long (a seabed grid's `OffGrid`)
+Rejects = tuple[type[BaseException], ...]
 
 #: Newton steps past rtol at most, while the merit falls tenfold
 POLISH = 2
@@ -67,29 +80,65 @@ def converged(problem, state, options: NewtonOptions) -> bool:
     )
 
 
-def full_steps(problem, z0, options: NewtonOptions):
-    """Semismooth Newton with full steps (halved only where the tangent collapses): (z, state,
-    history) once converged (`converged`), None if it is not within ``options.max_iter`` steps
-    or the merit grows a thousandfold."""
+def full_newton(problem, z0, converged_at, max_iter, halvings, callback=None, rejects: Rejects = ()):
+    """Semismooth Newton with full steps from ``z0``, halved only where the tangent collapses or a
+    trial is one of ``rejects`` (an exception: a step off a seabed's grid), ``halvings`` times at
+    most: ``(z, state, history, done)``, ``done`` whether ``converged_at(state)`` holds; it stops
+    short where the merit grows a thousandfold or a step finds no trial. The plane's solves and
+    the 3-D line's (`skcable.mooring.line_bvp_3d.iterate`) share it."""
     state = problem.assemble(z0)
     z, history = z0, [state.merit]
-    for _ in range(options.max_iter):
-        if converged(problem, state, options):
-            return z, state, history
+    for _ in range(max_iter):
+        if converged_at(state):
+            return z, state, history, True
         if not state.merit < 1e3 * history[0]:
-            return None
+            break
         dz, t = problem.increment(state), 1.0
-        for _ in range(options.max_halvings):
-            trial = problem.assemble(z + t * dz)
-            if np.isfinite(trial.merit):
+        for _ in range(halvings):
+            try:
+                trial = problem.assemble(z + t * dz)
+            except rejects:
+                trial = None
+            if trial is not None and np.isfinite(trial.merit):
                 break
             t *= 0.5
         else:
-            return None
+            break
         z, state = z + t * dz, trial
         history.append(state.merit)
-        report(options.callback, len(history) - 1, state.merit, t * dz)
-    return (z, state, history) if converged(problem, state, options) else None
+        report(callback, len(history) - 1, state.merit, t * dz)
+    return z, state, history, converged_at(state)
+
+
+def full_steps(problem, z0, options: NewtonOptions):
+    """Semismooth Newton with full steps (`full_newton`): (z, state, history) once converged
+    (`converged`), None if it is not within ``options.max_iter`` steps or the merit grows a
+    thousandfold."""
+    z, state, history, done = full_newton(
+        problem, z0, lambda st: converged(problem, st, options), options.max_iter, options.max_halvings,
+        options.callback,
+    )  # fmt: skip
+    return (z, state, history) if done else None
+
+
+def polish(problem, z, state, history, steps, factor, callback=None, rejects: Rejects = ()):
+    """Full Newton steps past the tolerance, ``steps`` at most, while the merit falls below
+    ``factor`` times the last (quadratic convergence takes the solution to its round-off floor
+    for one or two more assemblies); a trial that raises one of ``rejects`` stops it. Returns
+    ``(z, state, history)``."""
+    for _ in range(steps):
+        step = problem.increment(state)
+        trial_z = z + step
+        try:
+            trial = problem.assemble(trial_z)
+        except rejects:
+            break
+        if not trial.merit < factor * state.merit:
+            break
+        z, state = trial_z, trial
+        history.append(state.merit)
+        report(callback, len(history) - 1, state.merit, step)
+    return z, state, history
 
 
 def _active_sets(problem, state):
@@ -180,13 +229,5 @@ def solve_on(problem, z0, options: NewtonOptions) -> LineBVPSolution:
     if options.line_search != "none":
         attempts.append(lambda: _undamped(problem, z0, options))
     z, state, history = first_success(*attempts)
-    for _ in range(POLISH):
-        step = problem.increment(state)
-        trial_z = z + step
-        trial = problem.assemble(trial_z)
-        if not trial.merit < 0.1 * state.merit:
-            break
-        z, state = trial_z, trial
-        history.append(state.merit)
-        report(options.callback, len(history) - 1, state.merit, step)
+    z, state, history = polish(problem, z, state, history, POLISH, 0.1, options.callback)
     return LineBVPSolution(problem, z, history, state)

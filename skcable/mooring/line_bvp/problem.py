@@ -31,16 +31,13 @@ import copy
 from dataclasses import dataclass, replace
 
 import numpy as np
-from skfem import Basis, ElementLineP1DG, ElementLineP2, MeshLine
 
-from skcable.bvp.elements import end_dofs
 from skcable.bvp.section import STRAINS, tension_section
 from skcable.errors import InputError
-from skcable.fe.assembly import Assembly
 from skcable.fe.check import sparse_of
 from skcable.mooring.line_bvp.contact import ContactRows, ContactTerms
+from skcable.mooring.line_bvp.discrete import DiscreteLine
 from skcable.mooring.line_bvp.loads import TermLoad, term_load
-from skcable.mooring.line_bvp.mesh import joints_of, line_nodes
 from skcable.mooring.line_bvp.start import closed_form_start
 
 __all__ = ["STRAINS", "LineProblem", "LineState"]
@@ -66,7 +63,7 @@ class LineState:
 REJECTED = LineState(None, None, None, None, np.inf)
 
 
-class LineProblem:
+class LineProblem(DiscreteLine):
     """Mesh, bases, properties per quadrature point and the assembly of one line.
 
     Parameters
@@ -110,25 +107,10 @@ class LineProblem:
         if self.terms and self.slack_end > 0:
             self._slack_terms()
         self.segments = segments
-        lengths = np.array([seg.length for seg in segments])
-        self.joints = joints_of(lengths)
-        self.L = float(self.joints[-1])
         self.point_loads = point_loads
-        self.mesh = MeshLine(line_nodes(lengths, point_loads, n_elements, fitted, nodes_at))
-        self.basis = Basis(self.mesh, ElementLineP2(), intorder=6)
-        self.tbasis = self.basis.with_element(ElementLineP1DG())
-        N, M = self.basis.N, self.tbasis.N
-        self.N, self.M = N, M
-        self.assembly = Assembly({"x": self.basis, "y": self.basis, "T": self.tbasis}, STRAINS)
-        self.end_a, self.end_b, inner = end_dofs(self.basis)
-        self.free = np.concatenate([inner, N + inner, 2 * N + np.arange(M)])
-        self.system = self.assembly.banded(self.free)
-        self._force_rows = self.free[self.free < 2 * N]
-        self._stretch_rows = self.free[self.free >= 2 * N]
+        lengths = np.array([seg.length for seg in segments])
+        inner = self.discretise(lengths, point_loads, n_elements, fitted, nodes_at, STRAINS)
         self._properties()
-        s_dof = self.basis.doflocs[0]
-        self.point_rows = np.array([N + int(np.argmin(np.abs(s_dof - s))) for s, _ in point_loads], dtype=int)
-        self.point_values = np.array([P for _, P in point_loads], dtype=float)
         self.load_scale = float(
             np.sum(np.abs(self.w_q) * self.assembly.dx) + np.sum(np.abs(self.point_values))
         )
@@ -262,13 +244,8 @@ class LineProblem:
         """The contact nodes' rows: c per node, the friction per node (μ where the line slides, 0
         on the slack stretch ``[0, slack_end]``), whether A lies on the seabed."""
         N, seabed = self.N, self.seabed
-        # c per contact node: the total load per length, times the node's element length over the
-        # mean one (uniform on a uniform mesh), so that λ_i ~ w h_i switches at a gap ~ h_i / h̄·h̄
-        element_length = np.diff(self.mesh.p[0, self.mesh.t], axis=0)[0]
-        node_length = np.zeros(N)
-        np.maximum.at(node_length, self.basis.element_dofs.ravel(), np.tile(element_length, 3))
-        self.stiffness_nodes = self.stiffness * node_length[self.contact] / (self.L / element_length.size)
-        self.node_length = node_length[self.contact]
+        # c per contact node (`DiscreteLine.contact_stiffness`): λ_i ~ w h_i switches at a gap ~ h_i
+        self.stiffness_nodes, self.node_length = self.contact_stiffness(self.contact)
         # per contact node the share of its weight that lies beyond the slack stretch [0, slack_end]
         # (where friction is fully mobilised)
         sliding_q = np.where((self.middle > self.slack_end)[None, :], self.w_q, 0.0)
@@ -389,13 +366,6 @@ class LineProblem:
             self.contact_rows.rows(F, terms)
         return LineState(F, R0, Ke, terms, self.merit(F), z)
 
-    def merit(self, F) -> float:
-        """The largest free row of ``F``, force rows over `load_scale` (N), stretch rows over
-        `length_scale` (m)."""
-        force = np.abs(F[self._force_rows]) / self.load_scale
-        stretch = np.abs(F[self._stretch_rows]) / self.length_scale
-        return max(float(np.max(force, initial=0.0)), float(np.max(stretch, initial=0.0)))
-
     def absolute(self, state, tol) -> float:
         """The largest force row of ``F`` (N) where every stretch row meets ``tol`` (over
         `length_scale`), else inf: the measure of ``atol``."""
@@ -421,54 +391,6 @@ class LineProblem:
             return 0.0
         rows = abs(self.jacobian(state)) @ np.abs(state.z) * EPS
         return self.merit(rows)
-
-    def tangent(self, state):
-        """The generalized Jacobian of ``F``: element matrices with the contact rows mixed in,
-        and the terms they cannot carry (sparse, or None)."""
-        if self.contact_rows is None:
-            return state.Ke, None
-        assert state.terms is not None, "a state of a line with contact carries its contact terms"
-        return self.contact_rows.mixed(state.Ke, state.terms, self.basis.element_dofs, self.assembly.N)
-
-    def jacobian(self, state):
-        """The generalized Jacobian as a CSR matrix over all dofs (for inspection; Newton uses the band)."""
-        Ke, extra = self.tangent(state)
-        J = self.assembly.matrix(Ke)
-        return J if extra is None else (J + extra).tocsr()
-
-    def _band(self, state):
-        Ke, extra = self.tangent(state)
-        system = self.system
-        ab = system.add_elements(system.band(), Ke)
-        if extra is not None:
-            system.add_sparse(ab, extra)
-        return ab
-
-    def increment(self, state):
-        """Newton increment: the banded solve of the generalized Jacobian."""
-        step = np.zeros(self.assembly.N)
-        step[self.free] = self.system.solve(self._band(state), -state.F[self.free])
-        return step
-
-    def solve_many(self, state, rhs):
-        """``J⁻¹ rhs`` over the free dofs for several right-hand sides at once (``rhs`` (n_free,
-        k), in ``free`` order): one banded LU factorisation (LAPACK ``dgbsv``) of the generalized
-        Jacobian at ``state``."""
-        return self.system.solve(self._band(state), rhs)
-
-    def end_sensitivity(self, state):
-        """``(K, dz)``: ``K = ∂(H_B, V_B)/∂(span, dh)`` (N/m, rows H_B, V_B) of the discrete line
-        at a converged ``state`` and ``dz = ∂z/∂(span, dh)`` (every dof, two columns), by the
-        implicit function theorem: with ``z_B`` the fairlead's two fixed dofs and ``J`` the
-        generalized Jacobian (its active set held), ``J_ff ∂z_f = -J_fB`` (one factorisation,
-        two right-hand sides, `solve_many`); ``(H_B, V_B)`` are the rows of ``R⁰`` at B (the
-        fairlead is no contact node: its rows are ``R⁰``'s), so ``K = J_Bf ∂z_f + J_BB``."""
-        J = self.jacobian(state)
-        ends = np.array([self.end_b, self.N + self.end_b])
-        dz = np.zeros((self.assembly.N, 2))
-        dz[ends, [0, 1]] = 1.0
-        dz[self.free] = self.solve_many(state, -(J[self.free][:, ends]).toarray())
-        return np.asarray(J[ends] @ dz), dz
 
     def reactions(self, R0):
         """``(H_A, V_A, H_B, V_B)`` (N) from the residual without contact at the supports."""

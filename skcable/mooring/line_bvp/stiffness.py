@@ -3,9 +3,9 @@ r"""The fairlead stiffness of a line BVP solution, from its converged tangent.
 ``K = ∂(H_B, V_B)/∂(span, dh)`` (N/m, rows H_B and V_B, columns span and dh, the anchor fixed)
 by the implicit function theorem on the discrete equations ``F(z; span, dh) = 0`` at the
 converged state, the active contact set held: one factorisation of the generalized Jacobian,
-two right-hand sides (`LineProblem.end_sensitivity`). The touchdown's fitted node is held too:
-the error of a node off the touchdown grows with the square of its distance, so holding it
-changes the derivative by nothing at first order.
+two right-hand sides (`skcable.mooring.line_bvp.discrete.DiscreteLine.end_sensitivities`). The
+touchdown's fitted node is held too: the error of a node off the touchdown grows with the square
+of its distance, so holding it changes the derivative by nothing at first order.
 
 **The slack stretch.** Its end ``s0`` is not held but solved for, by ``g(z, s0) = 0``, ``g`` the
 tension just past it (`skcable.mooring.line_bvp.slack`): with the sensitivities at fixed ``s0``
@@ -48,7 +48,7 @@ def _slack_dof(solution) -> int:
 def fairlead_stiffness(solution, slack_solver=None) -> np.ndarray:
     """``∂(H_B, V_B)/∂(span, dh)`` (N/m) of ``solution`` (module docstring); ``slack_solver(s0)``
     re-solves its line with the slack stretch ending at ``s0`` (needed where it has one)."""
-    K, dz = solution.problem.end_sensitivity(solution.state)
+    K, _, dz = solution.problem.end_sensitivities(solution.state)
     s0 = solution.problem.slack_end
     if s0 == 0:
         return K

@@ -13,11 +13,13 @@ Coulomb friction along the line. One concern per module:
   `Scene3D`;
 - `loads`: the current's drag on the segments as a cable term (`SegmentDrag`);
 - `contact`: the seabed's semismooth contact rows in 3-D;
-- `problem`: one discrete line — bases, properties, the loads, the residual and its
-  generalized Jacobian (every call of the assembly);
+- `problem`: one discrete line — properties, the loads, the residual and its generalized
+  Jacobian (every call of the assembly), on the plane line's `skcable.mooring.line_bvp.discrete`
+  in three dimensions (mesh, bases, dofs, merit, banded solves, end sensitivities);
 - `pointwise`: the fields at any arc length, through each element's own basis;
 - `start`: the closed form in the vertical plane of the ends;
-- `iterate`: one solve (damped semismooth Newton, full steps, the polish);
+- `iterate`: one solve (damped semismooth Newton, and the plane line's full steps and polish,
+  `skcable.mooring.line_bvp.iterate`);
 - `fitting`: the touchdown and the landing from the balance of forces;
 - `driver`: the strategy `LineBVP3DSolver` — the current by steps, nested meshes, fitting, checks;
 - `check`: the equilibrium residual, by scikit-fem's own assembly;

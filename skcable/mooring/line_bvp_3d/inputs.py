@@ -13,7 +13,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from skcable import _plausible
-from skcable._checks import nonnegative, positive, real, scalar, whole
+from skcable._checks import nonnegative, point, positive, scalar, whole
 from skcable.bvp.current import Current, current_of
 from skcable.bvp.terms import CableTerm
 from skcable.errors import InputError
@@ -120,14 +120,6 @@ def attachments_of(attachments, n_segments: int) -> list[tuple[int, float]]:
             raise InputError("attachments", "a line of one segment has no inner joint to attach to")
         out.append((int(joint), float(scalar("attachments", P))))
     return out
-
-
-def point(name: str, value) -> np.ndarray:
-    """``value`` as a finite 3-vector (m), or `InputError` naming ``name``."""
-    v = real(name, value)
-    if np.shape(v) != (3,):
-        raise InputError(name, f"must be a point (x, y, z) of 3 numbers, got {value!r}")
-    return np.array(v, dtype=float)
 
 
 @dataclass(frozen=True)

@@ -18,12 +18,14 @@ import numpy as np
 from skcable.errors import ConvergenceError
 from skcable.fe.newton import newton
 from skcable.mooring.bathymetry import OffGrid
-from skcable.mooring.line_bvp.iterate import first_success
+from skcable.mooring.line_bvp.iterate import first_success, full_newton, polish
 
 __all__ = ["POLISH", "Solved", "solve_on"]
 
 #: Newton steps past rtol at most, while the merit halves
 POLISH = 3
+#: halvings of a full step at most where its trial collapses or leaves the seabed's grid
+HALVINGS = 12
 
 
 @dataclass
@@ -53,27 +55,10 @@ def _damped(problem, z0, rtol, max_iter):
 
 
 def _full_steps(problem, z0, rtol, max_iter):
-    state = problem.assemble(z0)
-    z, history = z0, [state.merit]
-    for _ in range(max_iter):
-        if state.merit < rtol:
-            return z, state, history
-        if not state.merit < 1e3 * history[0]:
-            break
-        dz, t = problem.increment(state), 1.0
-        for _ in range(12):
-            try:
-                trial = problem.assemble(z + t * dz)
-            except OffGrid:  # a trial off the seabed's grid: step back
-                trial = None
-            if trial is not None and np.isfinite(trial.merit):
-                break
-            t *= 0.5
-        else:
-            break
-        z, state = z + t * dz, trial
-        history.append(state.merit)
-    if state.merit < rtol:
+    z, state, history, done = full_newton(
+        problem, z0, lambda st: st.merit < rtol, max_iter, HALVINGS, rejects=(OffGrid,)
+    )
+    if done:
         return z, state, history
     raise ConvergenceError("solve_line_bvp_3d: full semismooth steps did not converge", history, last=z)
 
@@ -93,14 +78,5 @@ def solve_on(problem, z0, rtol, max_iter, near=False) -> Solved:
             z, state, history = damped()
     else:
         z, state, history = first_success(damped, full)
-    for _ in range(POLISH):
-        trial_z = z + problem.increment(state)
-        try:
-            trial = problem.assemble(trial_z)
-        except OffGrid:
-            break
-        if not trial.merit < 0.5 * state.merit:
-            break
-        z, state = trial_z, trial
-        history.append(state.merit)
+    z, state, history = polish(problem, z, state, history, POLISH, 0.5, rejects=(OffGrid,))
     return Solved(problem, z, history, state)

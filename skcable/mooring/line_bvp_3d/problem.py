@@ -33,12 +33,9 @@ from dataclasses import dataclass
 from functools import cached_property
 
 import numpy as np
-from skfem import Basis, ElementLineP1DG, ElementLineP2, MeshLine
 
-from skcable.bvp.elements import end_dofs
 from skcable.bvp.terms import CableState
-from skcable.fe.assembly import Assembly
-from skcable.mooring.line_bvp.mesh import joints_of, line_nodes
+from skcable.mooring.line_bvp.discrete import DiscreteLine
 from skcable.mooring.line_bvp_3d.contact import ContactRows3D, ContactTerms3D
 from skcable.mooring.line_bvp_3d.loads import SegmentDrag
 from skcable.mooring.line_bvp_3d.pointwise import LinePoints
@@ -67,7 +64,7 @@ class LineState3D:
 REJECTED = LineState3D(None, None, None, None, np.inf)
 
 
-class LineProblem3D:
+class LineProblem3D(DiscreteLine):
     """Mesh, bases, properties per quadrature point and the assembly of one line in space.
 
     Parameters
@@ -83,35 +80,18 @@ class LineProblem3D:
         Factor on the current's drag (the driver's continuation; 1: the scene's).
     """
 
+    dim = 3
+
     def __init__(self, scene, n_elements, fitted=(), nodes_at=None, drag_scale=1.0):
         self.scene, self.drag_scale = scene, float(drag_scale)
         self.anchor, self.fairlead = scene.anchor, scene.fairlead
         self.segments, self.seabed, self.friction = scene.segments, scene.seabed, scene.friction
         lengths = np.array([seg.length for seg in self.segments])
-        self.joints = joints_of(lengths)
-        self.L = float(self.joints[-1])
         self.point_loads = scene.point_loads
         self.fitted = tuple(float(p) for p in fitted)
-        self.mesh = MeshLine(line_nodes(lengths, self.point_loads, n_elements, fitted, nodes_at))
-        self.basis = Basis(self.mesh, ElementLineP2(), intorder=6)
-        self.tbasis = self.basis.with_element(ElementLineP1DG())
-        N, M = self.basis.N, self.tbasis.N
-        self.N, self.M = N, M
-        self.assembly = Assembly(
-            {"x": self.basis, "y": self.basis, "z": self.basis, "T": self.tbasis}, STRAINS
-        )
-        self.end_a, self.end_b, inner = end_dofs(self.basis)
-        self.free = np.concatenate([inner, N + inner, 2 * N + inner, 3 * N + np.arange(M)])
-        self.system = self.assembly.banded(self.free)
-        self._force_rows = self.free[self.free < 3 * N]
-        self._stretch_rows = self.free[self.free >= 3 * N]
+        inner = self.discretise(lengths, self.point_loads, n_elements, fitted, nodes_at, STRAINS)
         self._properties()
         self.terms = self._terms()
-        s_dof = self.basis.doflocs[0]
-        self.point_rows = np.array(
-            [2 * N + int(np.argmin(np.abs(s_dof - s))) for s, _ in self.point_loads], int
-        )
-        self.point_values = np.array([P for _, P in self.point_loads], dtype=float)
         self.load_scale = self._load_scale()
         self.length_scale = self.L
         self.contact_rows = self._contact_rows(inner) if self.seabed is not None else None
@@ -178,10 +158,7 @@ class LineProblem3D:
         rank = np.empty_like(order)
         rank[order] = np.arange(order.size)
         nodes = inner[np.argsort(s[inner], kind="stable")]
-        element_length = np.diff(self.mesh.p[0, self.mesh.t], axis=0)[0]
-        node_length = np.zeros(self.N)
-        np.maximum.at(node_length, self.basis.element_dofs.ravel(), np.tile(element_length, 3))
-        stiffness = self.load_scale / self.L * node_length[nodes] / (self.L / element_length.size)
+        stiffness = self.contact_stiffness(nodes)[0]
         return ContactRows3D(
             nodes,
             order[rank[nodes] - 1],
@@ -274,12 +251,6 @@ class LineProblem3D:
             self.contact_rows.rows(F, terms)
         return LineState3D(F, R0, Ke, terms, self.merit(F), z)
 
-    def merit(self, F) -> float:
-        """The largest free row of ``F``: forces over `load_scale` (N), stretches over the length."""
-        force = np.abs(F[self._force_rows]) / self.load_scale
-        stretch = np.abs(F[self._stretch_rows]) / self.length_scale
-        return max(float(np.max(force, initial=0.0)), float(np.max(stretch, initial=0.0)))
-
     def rounding(self, state) -> np.ndarray:
         """``ε |J| |z|`` (per row): the residual's change when every dof of ``state`` moves by its
         rounding, from the element matrices (no global matrix built)."""
@@ -293,52 +264,6 @@ class LineProblem3D:
     def merit_floor(self, state) -> float:
         """The merit of `rounding`: the round-off floor of the merit at ``state``."""
         return 0.0 if state.z is None else self.merit(self.rounding(state))
-
-    def tangent(self, state):
-        """Element matrices with the contact rows mixed in, and the sparse rest (or None)."""
-        if self.contact_rows is None:
-            return state.Ke, None
-        return self.contact_rows.mixed(state.Ke, state.terms, self.basis.element_dofs, self.assembly.N)
-
-    def jacobian(self, state):
-        """The generalized Jacobian as a CSR matrix over all dofs."""
-        Ke, extra = self.tangent(state)
-        J = self.assembly.matrix(Ke)
-        return J if extra is None else (J + extra).tocsr()
-
-    def _band(self, state):
-        Ke, extra = self.tangent(state)
-        ab = self.system.add_elements(self.system.band(), Ke)
-        if extra is not None:
-            self.system.add_sparse(ab, extra)
-        return ab
-
-    def increment(self, state):
-        """Newton increment: the banded solve of the generalized Jacobian."""
-        step = np.zeros(self.assembly.N)
-        step[self.free] = self.system.solve(self._band(state), -state.F[self.free])
-        return step
-
-    def solve_many(self, state, rhs):
-        """``J⁻¹ rhs`` over the free dofs, several right-hand sides (n_free, k): one banded LU."""
-        return self.system.solve(self._band(state), rhs)
-
-    def end_dofs(self, end) -> np.ndarray:
-        """The three position dofs of the anchor (``"a"``) or the fairlead (``"b"``)."""
-        k = self.end_a if end == "a" else self.end_b
-        return np.array([k, self.N + k, 2 * self.N + k])
-
-    def end_sensitivity(self, state):
-        """``(K_B, K_A, dz)`` at a converged ``state``: ``K_B = ∂S_B/∂r_B`` and ``K_A =
-        ∂S_A/∂r_B`` (N/m, 3 × 3; ``S`` the supports' reactions on the line, ``r_B`` the fairlead)
-        and ``dz = ∂z/∂r_B``, by the implicit function theorem (the active set held): one
-        factorisation, three right-hand sides."""
-        J = self.jacobian(state)
-        ends = self.end_dofs("b")
-        dz = np.zeros((self.assembly.N, 3))
-        dz[ends, [0, 1, 2]] = 1.0
-        dz[self.free] = self.solve_many(state, -(J[self.free][:, ends]).toarray())
-        return np.asarray(J[ends] @ dz), np.asarray(J[self.end_dofs("a")] @ dz), dz
 
     def reactions(self, R0):
         """``(S_A, S_B)``: the supports' reactions on the line at A and B (N, 3-vectors)."""

@@ -233,9 +233,9 @@ class LineBVP3DSolution(Shown):
     @cached_property
     def sensitivity(self):
         """``(K_B, K_A, dz)``: the static sensitivities to the fairlead's position at the
-        converged state (`skcable.mooring.line_bvp_3d.problem.LineProblem3D.end_sensitivity`),
+        converged state (`skcable.mooring.line_bvp.discrete.DiscreteLine.end_sensitivities`),
         computed once: the static `stiffness` and a warm start's predictor read them."""
-        return self.problem.end_sensitivity(self.state)
+        return self.problem.end_sensitivities(self.state)
 
     def stiffness(self, kind: str = "static") -> FairleadStiffness:
         """The fairlead stiffness ``∂S_B/∂r_B`` (N/m, 3 × 3, global axes; `kind` ``"static"`` or

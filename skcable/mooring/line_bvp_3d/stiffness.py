@@ -6,7 +6,7 @@ the force the line exerts on the fairlead: the sign of `skcable.mooring.Line3D.s
 MoorPy's). By the implicit function theorem on the discrete equations ``F(z; r_B) = 0`` at the
 converged state, the active contact set held: ``J_ff ∂z_f/∂r_B = −J_fB`` (one banded
 factorisation, three right-hand sides), ``K = J_Bf ∂z_f/∂r_B + J_BB``
-(`skcable.mooring.line_bvp_3d.problem.LineProblem3D.end_sensitivity`). The anchor's reaction moves
+(`skcable.mooring.line_bvp.discrete.DiscreteLine.end_sensitivities`). The anchor's reaction moves
 by ``∂S_A/∂r_B`` (the coupling a mooring system needs).
 
 **Static or dynamic.** The static stiffness takes each segment's quasi-static compliance
@@ -61,7 +61,7 @@ def fairlead_stiffness_3d(solution, kind: str = "static") -> FairleadStiffness:
         raise InputError("kind", f"must be one of {KINDS}, got {kind!r}")
     problem = solution.problem
     if kind == "dynamic":
-        K_B, K_A, _ = problem.end_sensitivity(problem.assemble(solution.dofs, dynamic=True))
+        K_B, K_A, _ = problem.end_sensitivities(problem.assemble(solution.dofs, dynamic=True))
     else:
         K_B, K_A = (K.copy() for K in solution.sensitivity[:2])  # the solution keeps its own
     if not (np.all(np.isfinite(K_B)) and np.all(np.isfinite(K_A))):

@@ -149,7 +149,7 @@ class Line:
         attachment at joint ``j`` moved to joint ``n - j``). ``contact``: a flat seabed through
         the anchor (``seabed=0``) and this line's ``friction``; else no seabed (and no
         friction). The solutions of a variant are those of the same physical line with its
-        ends named the other way round (`skcable.mooring.geometry` picks the variant
+        ends named the other way round (`skcable.mooring.choice` picks the variant
         that suits a line's position over the seabed). A line in a current, on a `Bathymetry` or
         with a nonlinear axial law has none (`InputError` naming ``current``, ``seabed`` or
         ``EA``): it is solved in space (`skcable.mooring.line_3d`)."""

@@ -83,7 +83,7 @@ import numpy as np
 
 from skcable._checks import positive, real
 from skcable.errors import InputError
-from skcable.strand.fe.terms import SectionTerm
+from skcable.strand.fe.terms import SectionTerm, Step
 
 __all__ = ["STRAINS", "THESIS_DOFS", "annex_e_section", "annex_e_forces", "annex_e_element"]
 
@@ -398,15 +398,24 @@ class AnnexE(SectionTerm):
         self._kinematics = HelicalWires(self.slip, helical=self.turning).bind(model)
 
     def initial_state(self, model):
-        return self._kinematics.initial_state(model)
+        if self.slip.kinematic:
+            return self._kinematics.initial_state(model)
+        return np.zeros((2, *model.x.shape), dtype=bool)  # where E.2 holds, frozen within a solve
 
     def next_state(self, output, state):
-        return self._kinematics.next_state(output, state)
+        if self.slip.kinematic:
+            return self._kinematics.next_state(output, state)
+        return np.array(output["slipping"], dtype=bool)
 
     def section(self, g, step):
-        _, _, output = self._kinematics.section(g, step)
-        output.pop("energy")  # the annex's law has no potential: its tangent is not symmetric
-        slipping = np.any(output["slipping"], axis=0)  # (ne, nq): E.2 where either axis slips
+        kinematic = self.slip.kinematic
+        _, _, output = self._kinematics.section(g, step if kinematic else Step(step.strain, step.x, None))
+        output.pop("energy", None)  # the annex's law has no potential: its tangent is not symmetric
+        if output["curvature"] is None:  # a law that sticks leaves them to the results: give them
+            output["curvature"] = self._kinematics.principal(g)
+            output["kappa_m"] = self._kinematics.kappa_m(output["axial"], derivative=False)[0]
+        # (ne, nq): E.2 where either axis slips (under a section law, where the frozen state says so)
+        slipping = np.any(output["slipping"] if kinematic else np.asarray(step.state), axis=0)
         (E1, G1), (E2, G2) = self._matrices[False], self._matrices[True]
         D_E = np.where(slipping, E2, E1)
         D_G = np.where(slipping, G2, G1)

@@ -139,7 +139,7 @@ class TensionlessFoundation(Term):
         # the generalized derivative takes the bed's branch at the kink (gap = 0): a strand that
         # starts on the bed's surface meets its stiffness at the first step
         K = self._fa.matrix((self.k * (gap <= 0))[None, None].astype(float))
-        return R, K, {"point_data": {"reaction": pressure, "gap": gap}}
+        return R, K, {"point_data": {"reaction": pressure, "gap": gap}, "active": gap <= 0}
 
     def energy(self, U, step):
         gap = np.minimum(self._gap(U), 0.0)
@@ -202,7 +202,8 @@ class RigidCylinder(Term):
             for j in range(2):
                 nn = n[i] * n[j]
                 D[i, j] = self.k * inside * (nn + ratio * ((i == j) - nn))
-        return R, self._fa.matrix(D), {"point_data": {"contact_pressure": -force, "gap": gap}}
+        output = {"point_data": {"contact_pressure": -force, "gap": gap}, "active": inside}
+        return R, self._fa.matrix(D), output
 
     def energy(self, U, step):
         gap = np.minimum(self._kinematics(U)[2], 0.0)

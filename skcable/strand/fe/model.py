@@ -6,8 +6,9 @@ node) and twist φ (as u), on bases that share one quadrature. The physics is a 
 [terms][skcable.strand.Term]; by default the helical wire fibres with a slip law and the wires'
 own bending and torsion (and, for the thesis's reading of the damage, its sinusoidal loads). The
 ends are supports given as data (`skcable.strand.fe.supports`): clamped at both ends by default
-and pulled at x = L, ``u(L) = ε L`` (Pino Vidal 2021, §4.1, "fixed – fixed sliding"), or pinned,
-sliding, free, or any dof fixed at any value.
+and pulled at x = L, ``u(L) = u(0) + ε L`` (Pino Vidal 2021, §4.1, "fixed – fixed sliding"), or
+pinned, sliding, free, or any dof fixed at any value; the axial load at x = L is data too
+(``axial=``): an imposed strain, an axial force, or none.
 
 Pipeline: strand → mesh and bases → supports and terms → `skcable.fe.newton` (or
 `skcable.fe.minimize` when every term has a potential) per step →
@@ -31,6 +32,7 @@ Source: S. Pino Vidal, "Rigidez a flexión en cables: análisis numérico", Univ
 
 from __future__ import annotations
 
+import functools
 import math
 import warnings
 from typing import Any
@@ -40,12 +42,14 @@ import scipy.sparse as sp
 from skfem import Basis, ElementLineHermite, ElementLineP2, MeshLine
 
 from skcable import _plausible
-from skcable._checks import nonnegative, positive, whole
-from skcable.errors import ConvergenceError, InputError, SlowConvergenceWarning
+from skcable._checks import positive, whole
+from skcable.errors import ConvergenceError, InputError, NonFiniteError, SlowConvergenceWarning
 from skcable.fe import Assembly, LinearSystem, NewtonOptions, minimize, newton
 from skcable.fe.elements import ElementLinePpExact
-from skcable.fe.newton import linear_tail
+from skcable.fe.newton import linear_tail, semismooth
+from skcable.strand._bending import friction
 from skcable.strand.capacity import StepResult, StrandLayout, capacity_curve
+from skcable.strand.fe.diagnosis import FirstSolveCheck, non_finite, tangent_modes
 from skcable.strand.fe.slip import SlipLaw, slip_law
 from skcable.strand.fe.supports import StrandSupports
 from skcable.strand.fe.terms import FIELDS, STRAINS, SectionTerm, Step, check_terms
@@ -68,6 +72,10 @@ ROUND_OFF = 100 * np.finfo(float).eps
 TANGENT_ERROR = 1e-6
 #: the merits a semismooth step is measured against (`skcable.fe.newton` ``nonmonotone``)
 NONMONOTONE = 10
+#: the largest relative error of the curvature scikit-fem's Hermite basis (a global polynomial in
+#: x, inverted per element) may carry: about ε·(x/h)³ for an element of length h at x (measured:
+#: 1.7e-10 at x/h = 100, 1.8e-7 at 1000, 1.5e-4 at 10,000; at 270,000 the inversion fails)
+BASIS_ERROR = 1e-5
 
 
 def default_physics(slip="none", mu: float = 0.5, damage_load: str = "eccentricity") -> list:
@@ -78,6 +86,19 @@ def default_physics(slip="none", mu: float = 0.5, damage_load: str = "eccentrici
     sinusoidal = damage_load == "sinusoidal"
     terms = [HelicalWires(slip, mu, helical=not sinusoidal), WireBending()]
     return terms + [SinusoidalDamageLoads()] if sinusoidal else terms
+
+
+@functools.lru_cache(maxsize=16)
+def _discretisation(nodes: bytes, length: float, element: str):
+    """``(mesh, bases, assembly)`` of the node abscissae ``nodes`` (float64 bytes): what depends on
+    the mesh alone, formed once for every model on it (a study's models share their mesh; none
+    of the three is changed by a model or a term)."""
+    L = float(length)
+    mesh = MeshLine(np.frombuffer(nodes, dtype=float).copy()).with_boundaries(
+        {"left": lambda x: np.isclose(x[0], 0.0), "right": lambda x: np.isclose(x[0], L)}
+    )
+    bases = _bases(mesh, element)
+    return mesh, bases, Assembly(bases, STRAINS)
 
 
 def _bases(mesh: MeshLine, element: str) -> dict:
@@ -125,8 +146,12 @@ class StrandModel:
     supports : pair of end conditions, optional
         ``(left, right)``, each ``"clamped"``, ``"pinned"``, ``"sliding"``, ``"free"`` or a
         dict ``{dof: value}`` over ``"u"``, ``"v"``, ``"w"``, ``"phi"``, ``"v'"``, ``"w'"``
-        (m, rad): `skcable.strand.fe.supports`. Default: both clamped. The imposed strain
-        always prescribes ``u(L) = ε L``.
+        (m, rad): `skcable.strand.fe.supports`. Default: both clamped.
+    axial : {"strain", "force", "none"}
+        The axial load at x = L (`skcable.strand.fe.supports`): an imposed strain,
+        ``u(L) = u(0) + ε L`` (``solve(strain)``, the capacity curves of the thesis); an axial
+        force P (``solve(force=P)``, load control); or none (``solve()``: u at both ends is a
+        support like the others, a clamped–free strand is free at its tip).
     twist : {"clamped", "free"}
         Shortcut: ``"free"`` frees the twist at x = L (of the default or the given supports).
     element : {"P2", "P3"}
@@ -134,6 +159,10 @@ class StrandModel:
     options : NewtonOptions, optional
         Default Newton settings of `solve` and `capacity_curve` (tolerances, iterations, line
         search, callback); each call may override them.
+    check_tangents : bool
+        On the model's first solve, check the tangent of every term an analyst wrote against a
+        directional difference of its residual (`skcable.strand.fe.diagnosis`: two residual
+        evaluations per term, once; a `skcable.errors.TangentWarning` names a term that is off).
 
     Attributes
     ----------
@@ -149,8 +178,10 @@ class StrandModel:
     x : ndarray (n_elements, n_quad)
         Quadrature points (m), scikit-fem's layout: what the terms see.
     fixed, fixed_values : ndarray
-        The dofs the supports fix and their values (the imposed strain's dof excluded);
-        ``pull`` is that dof, ``free`` the rest.
+        The dofs the supports fix and their values (an imposed strain's dof excluded); ``pull``
+        is the axial dof at x = L, ``free`` the dofs a solve moves.
+    axial : str
+        The axial load at x = L.
     """
 
     def __init__(
@@ -168,15 +199,18 @@ class StrandModel:
         physics=None,
         twist: str = "clamped",
         supports=None,
+        axial: str = "strain",
         element: str = "P2",
         options: NewtonOptions | None = None,
+        check_tangents: bool = True,
     ):
         self.strand, self.length = strand, float(positive("length", length))
-        self.supports = StrandSupports.of(supports, twist)
+        self.supports = StrandSupports.of(supports, twist, axial)
+        self.axial = self.supports.axial
         self.twist = "free" if "phi" not in self.supports.right else "clamped"
         if not 0 <= grading < 1:
             raise InputError("grading", f"must lie in [0, 1), got {grading!r}")
-        nonnegative("mu", mu)
+        friction(mu)
         self.options = NewtonOptions.of(options)
         if physics is None:
             physics = default_physics(slip, mu, damage_load)
@@ -184,25 +218,37 @@ class StrandModel:
         else:
             self.damage_load = "custom"
         self.terms = check_terms(physics) + check_terms(terms)
+        if self.axial != "strain" and any(isinstance(t, SinusoidalDamageLoads) for t in self.terms):
+            raise InputError(
+                "axial", "the sinusoidal damage loads take the wires' force at the imposed strain: 'strain'"
+            )
         laws = [t.slip for t in self.terms if isinstance(getattr(t, "slip", None), SlipLaw)]
         self.slip = laws[0] if laws else slip_law("none", mu)
-        if self.slip.name != "none" and len(strand.layers) != 1:
-            raise InputError("slip", "slip models need a single helical layer (1x7-type strands)")
+        if self.slip.name != "none" and not self.slip.layered and len(strand.layers) != 1:
+            raise InputError(
+                "slip",
+                "this slip law needs a single helical layer (1x7-type strands); a strand of several "
+                "layers takes the layer-by-layer law, StageSlip(LayerSlipLaw(...))",
+            )
         self.element = element
-        self.mesh = self._mesh(n_elements, mesh, grading)
-        self.bases = _bases(self.mesh, element)
-        self.assembly = Assembly(self.bases, STRAINS)
+        if element not in ELEMENTS:
+            raise InputError("element", f"must be one of {tuple(ELEMENTS)}, got {element!r}")
+        nodes = self._nodes(n_elements, mesh, grading)
+        self.mesh, self.bases, self.assembly = _discretisation(nodes.tobytes(), self.length, element)
         self.offsets = self.assembly.offsets
         self.x = np.asarray(self.bases["u"].global_coordinates())[0]  # (ne, nq)
         self._dx = self.bases["u"].dx
         self._boundary()
         self.strand_section = strand.section()  # its wire table and materials, formed once per model
+        self._ruptures = [m.eps_rupture for m in strand.materials]
+        self._plausible_strain = max(_plausible.MAX_STRAIN, 1.5 * max(self._ruptures))
         self.EA = self.strand_section.EA
         self._bound = [t.bind(self) for t in self.terms]
         # (position in the model's term list, bound term): the states and outputs follow that list
         self._section_terms = [(i, t) for i, t in enumerate(self._bound) if isinstance(t, SectionTerm)]
         self._other_terms = [(i, t) for i, t in enumerate(self._bound) if not isinstance(t, SectionTerm)]
         self._system = LinearSystem(self.assembly.banded(self.free))
+        self._first = FirstSolveCheck(self, check_tangents)
         self._groups = self._equation_groups()
         self._group_index = self._index_groups()
         self._metric = None  # the elastic tangent of the straight strand, in the solver's storage
@@ -210,7 +256,8 @@ class StrandModel:
         self._init = dict(
             strand=strand, length=length, mesh=self.mesh.p[0].copy(), physics=self.terms[: len(physics)],
             terms=self.terms[len(physics) :], supports=self.supports.describe(), element=element,
-            options=options, grading=grading, mu=mu, damage_load=damage_load,
+            options=options, grading=grading, mu=mu, damage_load=damage_load, axial=self.axial,
+            check_tangents=bool(check_tangents),
         )  # fmt: skip
 
     def __repr__(self) -> str:
@@ -218,7 +265,7 @@ class StrandModel:
         return (
             f"StrandModel({s!r}, length={self.length:g} m, {self.mesh.t.shape[1]} elements, "
             f"{self.assembly.N} dofs, slip={self.slip!r}, supports={self.supports.describe()}, "
-            f"terms=[{', '.join(map(repr, self.terms))}])"
+            f"axial={self.axial!r}, terms=[{', '.join(map(repr, self.terms))}])"
         )
 
     def __reduce__(self):
@@ -228,11 +275,13 @@ class StrandModel:
         kwargs = dict(
             mesh=a["mesh"], grading=a["grading"], physics=a["physics"], terms=a["terms"],
             supports=a["supports"], element=a["element"], options=a["options"], mu=a["mu"],
+            axial=a["axial"], check_tangents=a["check_tangents"],
         )  # fmt: skip
         return (_rebuild, (type(self), a["strand"], a["length"], kwargs), {"damage_load": self.damage_load})
 
     # --- set-up --------------------------------------------------------------
-    def _mesh(self, n_elements, mesh, grading):
+    def _nodes(self, n_elements, mesh, grading) -> np.ndarray:
+        """The node abscissae (m), checked (`_check_basis`)."""
         if mesh is not None:
             nodes = np.asarray(mesh.p[0] if isinstance(mesh, MeshLine) else mesh, dtype=float)
             if nodes.ndim != 1 or nodes.size < 3 or not np.all(np.isfinite(nodes)):
@@ -251,20 +300,43 @@ class StrandModel:
             )
             s = np.linspace(0.0, 1.0, n + 1)
             nodes = self.length * (s - grading * np.sin(2 * np.pi * s) / (2 * np.pi))
-        L = self.length
-        return MeshLine(nodes).with_boundaries(
-            {"left": lambda x: np.isclose(x[0], 0.0), "right": lambda x: np.isclose(x[0], L)}
+        self._check_basis(nodes, n_elements, mesh)
+        return np.ascontiguousarray(nodes, dtype=float)
+
+    def _check_basis(self, nodes, n_elements, mesh):
+        """Refuse a mesh whose Hermite basis would lose more than `BASIS_ERROR` of the curvature
+        (before anything is built: scikit-fem's inversion of it may fail outright)."""
+        h = np.diff(nodes)
+        reach = np.maximum(np.abs(nodes[:-1]), np.abs(nodes[1:])) / h
+        error = np.finfo(float).eps * float(np.max(reach)) ** 3
+        if error <= BASIS_ERROR:
+            return
+        k = int(np.argmax(reach))
+        largest = int(len(h) * (BASIS_ERROR / error) ** (1 / 3))
+        argument = "mesh" if mesh is not None else "n_elements" if n_elements is not None else "length"
+        raise InputError(
+            argument,
+            f"length = {self.length:g} m on {len(h)} elements: the element at x = {nodes[k + 1]:.4g} m is "
+            f"{h[k]:.3g} m long, 1/{reach[k]:.3g} of its distance from x = 0, and scikit-fem's Hermite "
+            f"basis of v and w (a polynomial in x) would give its curvature a relative error of about "
+            f"{error:.1g} (more than {BASIS_ERROR:g}); give at most about {largest} elements "
+            "(n_elements), or model a shorter specimen (the clamps' boundary layers span about sqrt(EI/N))",
         )
 
     def _boundary(self):
         offsets = {name: int(self.offsets[i]) for i, name in enumerate(FIELDS)}
-        fixed, values = self.supports.dofs(self.bases, offsets)
-        self.pull = int(offsets["u"] + self.bases["u"].get_dofs("right").nodal["u"][0])
+        seen: dict = {}  # each basis's end dofs, looked up once
+        fixed, values = self.supports.dofs(self.bases, offsets, seen)
+        self.pull = StrandSupports.index("right", "u", self.bases, offsets, seen)
+        self._left_u = StrandSupports.index("left", "u", self.bases, offsets, seen)
         if np.any(np.diff(fixed) == 0):
             raise InputError("supports", "fix a dof twice (both ends on one node?)")
         self.fixed, self.fixed_values = fixed, values
-        self.free = np.setdiff1d(np.arange(self.assembly.N), np.append(fixed, self.pull))
-        self._reaction_dofs = self.supports.indices(self.bases, offsets)
+        imposed = np.append(fixed, self.pull) if self.axial == "strain" else fixed
+        self.free = np.setdiff1d(np.arange(self.assembly.N), imposed)
+        self._reaction_dofs = self.supports.indices(self.bases, offsets, seen)
+        if self.axial == "strain":  # the imposed strain's reaction is the axial force at x = L
+            self._reaction_dofs["right"]["u"] = self.pull
 
     def _equation_groups(self):
         """Dofs of equations of one kind: per field, the values, and the slopes of v and w.
@@ -330,7 +402,7 @@ class StrandModel:
         kept = [t for t in self.terms if not t.damage]
         return type(self)(
             strand, self.length, mesh=self.mesh, physics=kept, supports=self.supports.describe(),
-            element=self.element, options=self.options,
+            axial=self.axial, element=self.element, options=self.options,
         )  # fmt: skip
 
     # --- fields ----------------------------------------------------------------
@@ -357,7 +429,7 @@ class StrandModel:
 
     def uniform(self, strain):
         """Dof vector of the uniform axial strain ``u = strain·x`` (the straight start), with the
-        supports' prescribed values."""
+        supports' prescribed values (and, under an imposed strain, ``u(L) = u(0) + strain·L``)."""
         U = np.zeros(self.assembly.N)
         u = self.bases["u"]
         if isinstance(u.elem, ElementLineP2):
@@ -366,10 +438,45 @@ class StrandModel:
             U[u.nodal_dofs[0]] = strain * self.mesh.p[0]
         return self._prescribed(U, strain)
 
-    def _prescribed(self, U, strain):
-        U[self.fixed] = self.fixed_values
-        U[self.pull] = strain * self.length + self.supports.left["u"]
+    def _prescribed(self, U, load, values=None):
+        """``U`` with the supports' values (``values``: those of a solve's ``prescribed``) and,
+        under an imposed strain ``load``, ``u(L)``."""
+        U[self.fixed] = self.fixed_values if values is None else values
+        if self.axial == "strain":
+            U[self.pull] = load * self.length + self.supports.left["u"]
         return U
+
+    def _start(self, load, values=None):
+        """The straight start of a solve: the uniform strain of the load (P / EA under a force),
+        with the supports' ``values``."""
+        strain = load if self.axial == "strain" else load / self.EA if self.axial == "force" else 0.0
+        return self._prescribed(self.uniform(strain), load, values)
+
+    def prescribed_values(self, prescribed) -> np.ndarray:
+        """The values of the held dofs (``fixed``'s order) with ``prescribed`` in place of the
+        supports' own: ``{"left": {dof: value}, "right": {...}}`` (m, rad) over the dofs the
+        supports hold at that end (not the axial load's u(L)); refused by name otherwise."""
+        values = self.fixed_values.copy()
+        if not isinstance(prescribed, dict) or not set(prescribed) <= {"left", "right"}:
+            raise InputError("prescribed", f"must be a dict over 'left' and 'right', got {prescribed!r:.80}")
+        for end, given in prescribed.items():
+            held = getattr(self.supports, end)
+            if not isinstance(given, dict):
+                raise InputError("prescribed", f"{end} end: must be a dict {{dof: value}}, got {given!r:.80}")
+            for dof, value in given.items():
+                if dof not in held:
+                    raise InputError(
+                        "prescribed",
+                        f"{end} end: {dof!r} is not held by the supports ({sorted(held)}); a solve "
+                        "moves only a held dof (hold it in supports=, at any value)",
+                    )
+                checked = StrandSupports.value(end, dof, value, "prescribed")
+                values[np.searchsorted(self.fixed, self._reaction_dofs[end][dof])] = checked
+        return values
+
+    def strain_of(self, U) -> float:
+        """The strand's mean axial strain ``(u(L) − u(0)) / L`` of the dofs ``U``."""
+        return float((U[self.pull] - U[self._left_u]) / self.length)
 
     def initial_state(self):
         """The terms' states at the start of a curve (all stick)."""
@@ -399,24 +506,32 @@ class StrandModel:
         return term.bind(self)
 
     # --- assembly ----------------------------------------------------------------
-    def _assemble(self, U, state, strain):
+    def _assemble(self, U, state, load, bound=None):
         """Residual, element matrices of the section terms, other tangents, the terms' outputs,
-        and the size of what each equation sums (for the force scales)."""
+        and the size of what each equation sums (for the force scales), at the axial ``load``
+        (the imposed strain, or the axial force at x = L, or 0); ``bound`` replaces the model's
+        bound terms (a surrogate, `_pass_fold`)."""
         state = self.initial_state() if state is None else state
+        strain = load if self.axial == "strain" else self.strain_of(U)
+        if bound is None:
+            section_terms, other_terms = self._section_terms, self._other_terms
+        else:
+            section_terms = [(i, t) for i, t in enumerate(bound) if isinstance(t, SectionTerm)]
+            other_terms = [(i, t) for i, t in enumerate(bound) if not isinstance(t, SectionTerm)]
         g = self.generalized_strains(U)
         S = D = None
         outputs: list[Any] = [None] * len(self._bound)  # each term's output dict, filled below
-        for i, t in self._section_terms:
+        for i, t in section_terms:
             St, Dt, outputs[i] = t.section(g, Step(strain, self.x, state[i]))
-            S, D = (St, Dt.copy()) if S is None else (S + St, D + Dt)
+            S, D = (St, Dt) if S is None else (S + St, D + Dt)  # new arrays: the terms' stay as given
         if S is not None:
             R, size = self.assembly.vector_and_magnitude(S.transpose(0, 2, 1))
         else:
             R, size = np.zeros(self.assembly.N), np.zeros(self.assembly.N)
-        densities = [outputs[i].get("energy") for i, _ in self._section_terms]
-        energy = None if any(e is None for e in densities) else float(np.sum(sum(densities) * self._dx))
-        extra = []
-        for i, t in self._other_terms:
+        densities = [outputs[i].get("energy") for i, _ in section_terms]
+        energy: Any = None if any(e is None for e in densities) else 0.0  # the other terms' part
+        extra, tangents = [], {}
+        for i, t in other_terms:
             step = Step(strain, self.x, state[i])
             Rt, Kt, outputs[i] = t.contribute(U, step)
             if Rt is not None:
@@ -435,10 +550,41 @@ class StrandModel:
                         f"not ({self.assembly.N}, {self.assembly.N})",
                     )
                 extra.append(Kt)
+                tangents[i] = Kt
             if energy is not None:
                 e = t.energy(U, step) if t.potential is not False else None
                 energy = None if e is None else energy + e
-        return dict(R=R, extra=extra, outputs=outputs, g=g, S=S, D=D, energy=energy, size=size)
+        # a sum is NaN or infinite where an entry is (one pass, no mask)
+        if not (math.isfinite(R.sum()) and (D is None or math.isfinite(D.sum()))) or any(
+            not math.isfinite((K.data if sp.issparse(K) else np.asarray(K)).sum()) for K in extra
+        ):
+            raise self._non_finite(U, state, load, section_terms, other_terms)
+        if self.axial == "force" and load != 0.0:  # the axial force at x = L: a dead load
+            R = R.copy()
+            R[self.pull] -= load
+            size[self.pull] += abs(load)
+            energy = None if energy is None else energy - load * float(U[self.pull])
+        if energy is not None:  # the section terms' part on demand (`_energy`): a converged step needs none
+            energy = _Energy(densities, self._dx, energy)
+        return dict(
+            R=R, extra=extra, outputs=outputs, g=g, S=S, D=D, energy=energy, size=size, strain=strain,
+            state=state, load=load, tangents=tangents,
+        )  # fmt: skip
+
+    def _non_finite(self, U, state, load, section_terms, other_terms):
+        """The `NonFiniteError` naming the terms whose residual or tangent is not finite at ``U``."""
+        strain = load if self.axial == "strain" else self.strain_of(U)
+        g = self.generalized_strains(U)
+        pieces = []
+        for group in (section_terms, other_terms):
+            for i, t in group:
+                step = Step(strain, self.x, state[i])
+                try:
+                    out = t.section(g, step)[:2] if isinstance(t, SectionTerm) else t.contribute(U, step)[:2]
+                except NonFiniteError as exc:  # a law inside the term named itself
+                    return exc
+                pieces.append((t, *out))
+        return non_finite(self, pieces, self._load_name(load))
 
     def _element_matrices(self, a):
         """The section terms' element matrices of an assembly ``a`` (None without section terms),
@@ -447,10 +593,12 @@ class StrandModel:
             a["Ke"] = self.section_matrices(a["D"]) if a["D"] is not None else None
         return a["Ke"]
 
-    def assemble(self, U, state=None):
+    def assemble(self, U, state=None, *, force: float = 0.0):
         """``(R, K, outputs)``: residual (N,), tangent (CSR, N × N) and the terms' outputs at ``U``
-        (the imposed strain is read from U at the pulled end; ``state`` as from a solve)."""
-        a = self._assemble(U, state, (U[self.pull] - self.supports.left["u"]) / self.length)
+        (an imposed strain is read from U at the pulled end; under ``axial="force"`` the axial
+        force at x = L is ``force``; ``state`` as from a solve)."""
+        load = (U[self.pull] - self.supports.left["u"]) / self.length if self.axial == "strain" else force
+        a = self._assemble(U, state, load)
         return a["R"], self._global_tangent(a), a["outputs"]
 
     def _global_tangent(self, a):
@@ -464,7 +612,7 @@ class StrandModel:
         """``(R, K)`` of one term alone at ``U`` (for `skcable.fe.check_tangent`): its residual
         (N,) and its tangent (CSR, N × N); ``state`` the term's state (default: its initial one)."""
         bound = self.bound(term)
-        strain = (U[self.pull] - self.supports.left["u"]) / self.length
+        strain = self.strain_of(U)
         step = Step(strain, self.x, bound.initial_state(self) if state is None else state)
         if isinstance(bound, SectionTerm):
             S, D, _ = bound.section(self.generalized_strains(U), step)
@@ -477,17 +625,32 @@ class StrandModel:
         """The dofs a solve moves (for `skcable.fe.check_tangent`)."""
         return self.free
 
-    def _band_of(self, a):
-        """The free–free tangent of an assembly in the solver's storage (section terms and the others)."""
+    def tangent_check_state(self) -> np.ndarray:
+        """A generic, non-trivial state for `skcable.fe.check_tangent` without ``U``: the uniform
+        strain 0.002 (the force EA·0.002 under ``axial="force"``, none under ``"none"``) with every
+        free dof moved by a random 1e-5·L (a seeded draw: the same state every time)."""
+        load = {"strain": 0.002, "force": 0.002 * self.EA, "none": 0.0}[self.axial]
+        U = self._start(load)
+        U[self.free] += 1e-5 * self.length * np.random.default_rng(1).standard_normal(self.free.size)
+        return U
+
+    def _band_of(self, a, upper: bool = False):
+        """The free–free tangent of an assembly in the solver's storage (section terms and the
+        others); ``upper``: its upper band alone (a symmetric tangent for the Cholesky solve)."""
         if self._system.accept(a["extra"]):
             self._metric = None  # rebuilt in the new storage
         system = self._system
-        ab = system.band()
+        if upper and system.is_banded:
+            ab = system.band_upper()
+            add, add_sparse = system.add_elements_upper, system.add_sparse_upper
+        else:
+            ab = system.band()
+            add, add_sparse = system.add_elements, system.add_sparse
         Ke = self._element_matrices(a)
         if Ke is not None:
-            system.add_elements(ab, Ke)
+            add(ab, Ke)
         for Kt in a["extra"]:
-            system.add_sparse(ab, Kt)
+            add_sparse(ab, Kt)
         return ab
 
     def _increment(self, a):
@@ -499,12 +662,14 @@ class StrandModel:
         """``-(K + mu K0)⁻¹ R`` by a Cholesky-like factorisation (raises LinAlgError when not positive
         definite); K0 is the tangent of the straight, unstrained strand (positive definite), built on
         first use."""
-        ab = self._band_of(a)
+        ab = self._band_of(a, upper=True)
+        banded = self._system.is_banded  # `_band_of` may have moved it to the sparse storage
         if mu != 0.0 and self._metric is None:
             straight = self._prescribed(np.zeros(self.assembly.N), 0.0)
-            self._metric = self._band_of(self._assemble(straight, self.initial_state(), 0.0))
+            self._metric = self._band_of(self._assemble(straight, self.initial_state(), 0.0), upper=True)
         dU = np.zeros(self.assembly.N)
-        dU[self.free] = self._system.solve_positive(ab, -a["R"][self.free], self._metric, mu)
+        solve = self._system.solve_positive_upper if banded else self._system.solve_positive
+        dU[self.free] = solve(ab, -a["R"][self.free], self._metric, mu)
         return dU
 
     # --- solution ----------------------------------------------------------------
@@ -513,11 +678,12 @@ class StrandModel:
         round-off floor divided by the tolerance where that is larger (module docstring)."""
         order, starts, free_order, free_starts, force, free_length = self._group_index
         scales = np.maximum.reduceat(a["size"][order], starts)
-        forces = float(np.max(scales[force], initial=0.0))  # the scales are >= 0; NaN stays NaN
+        # the scales are >= 0 (NaN stays NaN); ndarray methods: a Newton calls this per assembly
+        forces = float(scales[force].max(initial=0.0))
         floor = ROUND_OFF * forces / tol * free_length  # the moment groups' floor times the length
         residual = np.maximum.reduceat(np.abs(a["R"][free_order]), free_starts)
         worst = residual / np.maximum(np.maximum(scales[self._has_free], floor), 1e-300)
-        return float(np.max(worst, initial=0.0)) if math.isfinite(forces) else float("nan")  # NaN stays NaN
+        return float(worst.max(initial=0.0)) if math.isfinite(forces) else float("nan")  # NaN stays NaN
 
     def _solver(self, first, options: NewtonOptions) -> str:
         """'minimize', 'newton' or 'semismooth', from the terms' declarations and the options."""
@@ -535,33 +701,70 @@ class StrandModel:
             return "semismooth"
         return "minimize" if potential and search in ("auto", "energy") else "newton"
 
-    def _newton(self, U, strain, state, options: NewtonOptions):
-        U = self.uniform(strain) if U is None else self._prescribed(np.array(U, dtype=float), strain)
-        name = f"StrandModel: Newton at strain {strain:.6g}"
+    def _load_name(self, load) -> str:
+        if self.axial == "strain":
+            return f"at strain {load:.6g}"
+        return f"at axial force {load:.6g} N" if self.axial == "force" else "without axial load"
+
+    def _newton(self, U, strain, state, options: NewtonOptions, diagnose: bool = True, values=None):
+        if U is None:
+            U = self._start(strain, values)
+        else:
+            U = self._prescribed(np.array(U, dtype=float), strain, values)
+        name = f"StrandModel: Newton {self._load_name(strain)}"
+
+        first_check, non_finite_seen = self._first, []
 
         def assemble(x):
-            return self._assemble(x, state, strain)
+            try:
+                a = self._assemble(x, state, strain)
+            except NonFiniteError as exc:  # a trial is rejected (halved); keep the name for the error
+                non_finite_seen.append(exc)
+                raise
+            if first_check.pending:
+                first_check(x, state)
+            return a
 
         first = assemble(U)
         kind = self._solver(first, options)
         try:
             return self._run(kind, assemble, U, first, options, name, strain, state)
+        except NonFiniteError:
+            raise
         except ConvergenceError as exc:
             # a solve that crawled linearly to its iteration limit: name the terms whose tangent is off
             h = exc.history
             crawled = len(h) > 3 and linear_tail(np.divide(h[1:], h[:-1])) is not None
             linear = kind != "semismooth" and exc.last is not None and crawled
             suspects = self._suspects(exc.last, state) if linear else []
-            if not suspects:
+            off = f"; tangents off by check_tangent: {', '.join(suspects)}"
+            note = off if suspects else first_check.note()
+            if non_finite_seen:
+                note += f"; on the way, {non_finite_seen[-1].args[0]}"
+            if diagnose:
+                modes = self.explain(exc.last if exc.last is not None else U, strain, state)
+                note += f"; {modes}" if modes else ""
+            if not note:
                 raise
-            raise ConvergenceError(
-                f"{exc.args[0]}; tangents off by check_tangent: {', '.join(suspects)}", exc.history, exc.last
-            ) from None
+            raise _amended(exc, note) from None
+
+    def explain(self, U, load=None, state=None) -> str:
+        """What the tangent at ``U`` says about a failed solve: the dofs its null vectors move (a
+        missing support) or its negative modes (under compression: a load beyond buckling), ""
+        when it is regular and positive definite (`skcable.strand.fe.diagnosis.tangent_modes`).
+        ``load``: the solve's strain or force (read from ``U`` under an imposed strain, 0 by
+        default otherwise); ``state``: the terms' states."""
+        if load is None:
+            load = self.strain_of(np.asarray(U, dtype=float)) if self.axial == "strain" else 0.0
+        try:
+            return tangent_modes(self, self._assemble(np.asarray(U, dtype=float), state, load))
+        except (ConvergenceError, np.linalg.LinAlgError, ValueError):
+            return ""
 
     def _run(self, kind, assemble, U, first, options, name, strain, state):
         common = dict(
             norm=lambda a: self._norm(a, options.tol), tol=options.tol, atol=options.atol,
-            name=name, state=first, callback=options.callback,
+            name=name, state=first, callback=options.callback, rejects=(NonFiniteError,),
             absolute=lambda a: float(np.max(np.abs(a["R"][self.free]), initial=0.0)),
         )  # fmt: skip
         if kind == "minimize":  # every term has a potential: minimise it, shifted at folds
@@ -591,37 +794,116 @@ class StrandModel:
 
         settings = {"max_iter": max(options.max_iter, 40), "mu_max": options.mu_max} | settings
         return minimize(
-            assemble, U, energy=lambda a: a["energy"], gradient=gradient, solve=self._increment_positive,
+            assemble, U, energy=lambda a: a["energy"](), gradient=gradient, solve=self._increment_positive,
             **settings, **common,
         )  # fmt: skip
 
     def _semismooth(self, assemble, U, first, options, common):
-        """Newton for a model with non-smooth terms (contact, tensionless supports).
+        """Newton for a model with non-smooth terms (contact, tensionless supports, a kinked
+        section law).
 
-        First a semismooth Newton: full steps on the generalized derivative, which identify the
-        active set while the residual rises and falls, under a non-monotone line search
-        (`NONMONOTONE`) and no stagnation rule before twice the iteration limit. Where that does
-        not converge and every term has a potential (a convex penalty, a bed), the energy is
+        First a semismooth Newton with active sets (`skcable.fe.semismooth`, `_active`: full steps
+        while the active sets change, stopped at a cycle), which finds a stiff contact zone node by
+        node; then (steps on the generalized derivative) under a monotone line search, which a
+        kinked section law (Cardou's) passes in a few steps; where that stalls,
+        a model with a section law passes a fold of its path through a potential surrogate
+        (`_pass_fold`); then a semismooth Newton under a non-monotone line search
+        (`NONMONOTONE`), which identifies a contact's active set while the residual rises and
+        falls, with no stagnation rule before twice the iteration limit. Where that does not
+        converge and every term has a potential (a convex penalty, a bed), the energy is
         minimised instead: Armijo's rule on the energy takes the fraction of a first step that
         would push the strand deep into a bed (40 halvings), and the tangent's shift may grow to
-        1e6 times the elastic one. Both failing, the first failure is raised."""
-        try:
-            return newton(
-                assemble, U, increment=self._increment, max_iter=2 * options.max_iter, merit=self._merit,
-                line_search=options.line_search != "none", max_halvings=options.max_halvings,
-                stagnation_window=2 * options.max_iter, nonmonotone=NONMONOTONE, **common,
+        1e6 times the elastic one. All failing, the first failure is raised."""
+        search = options.line_search != "none"
+        try:  # full steps on the active sets (contact, a slipping law)
+            return semismooth(
+                assemble, U, increment=self._increment, active=self._active,
+                max_iter=max(4 * options.max_iter, 100), **common,
             )  # fmt: skip
-        except ConvergenceError as failed:
-            potential = all(t.symmetric and t.potential is not False for t in self._bound)
-            if first["energy"] is None or not potential:
-                raise
+        except ConvergenceError:
+            pass
+        run = functools.partial(
+            newton, assemble, increment=self._increment, max_iter=2 * options.max_iter, merit=self._merit,
+            line_search=search, max_halvings=options.max_halvings,
+        )  # fmt: skip
+        try:  # a monotone line search
+            return run(U, stagnation_window=2 * options.stagnation_window, **common)
+        except ConvergenceError as exc:
+            failed = exc
+        potential = first["energy"] is not None and all(
+            t.symmetric and t.potential is not False for t in self._bound
+        )
+        if not potential and any(hasattr(t, "frozen") for t in self._bound):
             try:
-                return self._minimize(
-                    assemble, U, options, common, halvings=40, mu_max=max(options.mu_max, 1e6),
-                    max_iter=max(4 * options.max_iter, 100),
-                )  # fmt: skip
+                return self._pass_fold(assemble, U, first, options, common, failed)
             except ConvergenceError:
-                raise failed from None
+                pass
+        if search:
+            try:
+                return run(U, stagnation_window=2 * options.max_iter, nonmonotone=NONMONOTONE, **common)
+            except ConvergenceError:
+                pass
+        if not potential:
+            raise failed
+        try:
+            return self._minimize(
+                assemble, U, options, common, halvings=40, mu_max=max(options.mu_max, 1e6),
+                max_iter=max(4 * options.max_iter, 100),
+            )  # fmt: skip
+        except ConvergenceError:
+            raise failed from None
+
+    def _active(self, a) -> tuple:
+        """The active sets of the non-smooth terms of an assembly ``a``, as a fingerprint: a
+        term's ``"active"`` (or ``"slipping"``) output where it gives one (a contact's pressed
+        points, a law's slipping ones), else the bytes of its tangent (a penalty's tangent is a
+        function of its active set)."""
+        keys: list = []
+        for i, t in enumerate(self._bound):
+            if t.smooth:
+                continue
+            out = a["outputs"][i] or {}
+            mask = out.get("active", out.get("slipping"))
+            if mask is not None:
+                keys.append(np.packbits(np.asarray(mask, dtype=bool)).tobytes())
+            else:
+                K = a["tangents"].get(i)
+                keys.append(None if K is None else sp.csr_matrix(K).data.tobytes())
+        return tuple(keys)
+
+    def _pass_fold(self, assemble, U, first, options, common, failed, rounds: int = 3):
+        """A model with a section law (no potential) whose Newton failed: where every term has a
+        potential surrogate (`HelicalWires.frozen`: the wires' composite curvature and the law's
+        points frozen at the current state), minimise the surrogate's energy (which passes a fold
+        of the path, as `_minimize` does) and polish the step with the model's own Newton from
+        there, refreezing at most ``rounds`` times; else raise ``failed``."""
+        load, state = first["load"], first["state"]
+        for _ in range(rounds):
+            start = assemble(U)
+            bound = [_surrogate(t, o) for t, o in zip(self._bound, start["outputs"], strict=True)]
+            if any(t is None for t in bound):
+                raise failed
+            surrogate = functools.partial(self._assemble, state=state, load=load, bound=bound)
+            try:
+                U = self._minimize(
+                    surrogate, U, options, {**common, "state": None}, halvings=40,
+                    mu_max=max(options.mu_max, 1e6), max_iter=max(4 * options.max_iter, 100),
+                ).x  # fmt: skip
+            except ConvergenceError as exc:
+                U = exc.last if exc.last is not None else U
+            try:
+                result = newton(
+                    assemble, U, increment=self._increment, max_iter=2 * options.max_iter,
+                    merit=self._merit, line_search=options.line_search != "none",
+                    max_halvings=options.max_halvings, stagnation_window=2 * options.max_iter,
+                    **{**common, "state": None},
+                )  # fmt: skip
+            except ConvergenceError as exc:
+                U = exc.last if exc.last is not None else U
+                continue
+            result.shifted = True  # the path passed a fold
+            return result
+        raise failed
 
     def _suspects(self, U, state) -> list[str]:
         """The terms whose tangent `skcable.fe.check_tangent` finds off at ``U``, worst first."""
@@ -636,14 +918,14 @@ class StrandModel:
         return [f"{t!r} ({e:.1e})" for e, t in sorted(errors, key=lambda p: -p[0]) if e > TANGENT_ERROR]
 
     def _warn_if_linear(self, result, tol, state, strain):
-        ratios = result.linear_rate(tol)
+        ratios = result.linear_rate(tol, full_steps=False) if result.iterations > 3 else None
         if ratios is None:
             return
         suspects = self._suspects(result.x, state)
         if not suspects:  # every tangent is right: a nearly singular tangent (a fold) converges linearly
             return
         warnings.warn(
-            f"StrandModel: Newton at strain {strain:.6g} converged linearly (ratios "
+            f"StrandModel: Newton {self._load_name(strain)} converged linearly (ratios "
             f"{', '.join(f'{q:.2f}' for q in ratios)}) where the tangent should give quadratic "
             f"convergence; tangents off by check_tangent: {', '.join(suspects)}",
             SlowConvergenceWarning,
@@ -651,18 +933,34 @@ class StrandModel:
         )
 
     def solve(
-        self, strain: float, guess=None, state=None, *, passes: int = 6, options=None, **newton_options
+        self,
+        strain: float | None = None,
+        guess=None,
+        state=None,
+        *,
+        force: float | None = None,
+        passes: int = 6,
+        options=None,
+        diagnose: bool = True,
+        prescribed=None,
+        **newton_options,
     ):
-        """Equilibrium at the imposed axial strain ``u(L) = strain·L``: a
-        [`StepResult`][skcable.strand.StepResult].
+        """Equilibrium under the model's axial load: a [`StepResult`][skcable.strand.StepResult].
 
-        ``guess``: starting dofs (default: the uniform strain). ``state``: the terms' states
-        (default: all stick). Each state is frozen within a Newton solve and updated from the
-        converged solution, the step re-solved until the states settle (``passes`` at most); a
-        state that cycles, or whose re-solve fails, is left as it was and the step is reported
-        as not ``settled``. Newton options: ``options`` (a `NewtonOptions`, default the model's)
-        and any of its fields as keywords (``tol``, ``atol``, ``max_iter``, ``line_search``,
-        ``callback``, ...).
+        ``strain``: the imposed axial strain ``u(L) = u(0) + strain·L`` (``axial="strain"``);
+        ``force``: the axial force at x = L (N, ``axial="force"``); neither under
+        ``axial="none"``. ``guess``: starting dofs (default: the uniform strain of the load).
+        ``state``: the terms' states (default: all stick). Each state is frozen within a Newton
+        solve and updated from the converged solution, the step re-solved until the states
+        settle (``passes`` at most); a state that cycles, or whose re-solve fails, is left as it
+        was and the step is reported as not ``settled``. Newton options: ``options`` (a
+        `NewtonOptions`, default the model's) and any of its fields as keywords (``tol``,
+        ``atol``, ``max_iter``, ``line_search``, ``callback``, ...). ``diagnose``: on failure,
+        read the tangent's singular or negative modes into the message (an eigendecomposition
+        of its free block; `capacity_curve` skips it for the steps it cuts back).
+        ``prescribed``: ``{"left": {dof: value}, "right": {...}}`` (m, rad), values of dofs the
+        supports hold, for this solve in place of theirs (an end turned or moved step by step:
+        `skcable.strand.bending_cycles`).
 
         Raises
         ------
@@ -671,14 +969,12 @@ class StrandModel:
         InputError
             A bad option, or a callback that raised (the iteration is named).
         """
-        strain = float(strain)
-        if not np.isfinite(strain):
-            raise InputError("strain", f"must be finite, got {strain!r}")
-        _plausible.strand_strain("strain", strain, [m.eps_rupture for m in self.strand.materials])
+        strain = self._load_of(strain, force)
         options = NewtonOptions.of(self.options if options is None else options, **newton_options)
         whole("passes", passes, 0)
         state = self.initial_state() if state is None else tuple(state)
-        result = self._newton(guess, strain, state, options)
+        values = None if prescribed is None else self.prescribed_values(prescribed)
+        result = self._newton(guess, strain, state, options, diagnose, values)
         settled, seen, assemblies, shifted = True, [state], result.assemblies, result.shifted
         for _ in range(passes):
             outputs = result.state["outputs"]
@@ -689,7 +985,7 @@ class StrandModel:
                 settled = False
                 break
             try:
-                retry = self._newton(result.x, strain, new, options)
+                retry = self._newton(result.x, strain, new, options, values=values)
             except ConvergenceError:
                 settled = False
                 break
@@ -701,10 +997,43 @@ class StrandModel:
             settled = False
         return self._step_result(strain, result, state, settled, assemblies, shifted)
 
-    def _step_result(self, strain, result, state, settled, assemblies, shifted=False):
+    def _load_of(self, strain, force) -> float:
+        """The load of a solve from `solve`'s ``strain`` and ``force``, checked against ``axial``."""
+        wanted = {"strain": "strain", "force": "force", "none": None}[self.axial]
+        for name, value in (("strain", strain), ("force", force)):
+            if value is not None and name != wanted:
+                needs = f"solve({wanted}=...)" if wanted else "solve() with no load"
+                raise InputError(name, f"the model's axial load is {self.axial!r}: {needs}")
+        if wanted is None:
+            return 0.0
+        value = strain if wanted == "strain" else force
+        if value is None:
+            raise InputError(wanted, f"the model's axial load is {self.axial!r}: give solve({wanted}=...)")
+        if isinstance(value, bool) or not isinstance(value, (int, float, np.integer, np.floating)):
+            raise InputError(wanted, f"must be a real number, got {value!r}")
+        value = float(value)
+        if not np.isfinite(value):
+            raise InputError(wanted, f"must be finite, got {value!r}")
+        if wanted == "strain":
+            if not -1.0 < value < 1.0:
+                raise InputError(
+                    "strain", f"must lie in (-1, 1): {value!r} stretches the strand to nothing or doubles it"
+                )
+            if abs(value) > self._plausible_strain:  # `_plausible.strand_strain`'s own bound, kept here
+                _plausible.strand_strain("strain", value, self._ruptures)
+        return value
+
+    def _step_result(self, load, result, state, settled, assemblies, shifted=False):
         a, U = result.state, result.x
         # the wire kinematics of the first term that reports them (HelicalWires, AnnexE, ...)
         wires = next((o for o in a["outputs"] if o and {"strain", "curvature", "kappa_m"} <= set(o)), None)
+        if wires is not None and wires["kappa_m"] is None:  # a law that sticks leaves these to the results
+            owner = next(t for t, o in zip(self._bound, a["outputs"], strict=True) if o is wires)
+            wires = dict(
+                wires,
+                kappa_m=owner.kappa_m(wires["axial"], derivative=False)[0],
+                curvature=owner.principal(a["g"]),
+            )
         shape = (2, *self.x.shape)
         zeros = np.zeros(shape)
         g, S, D = a["g"], a["S"], a["D"]
@@ -719,9 +1048,13 @@ class StrandModel:
                 N=S[0] if S is not None else zeros[0],
             )
         alive = ~self.layout.wire_broken[:, None, None]
+        if self.axial == "force":
+            force = load
+        else:  # the reaction of the imposed strain or of a support holding u(L); 0 where it is free
+            force = float(a["R"][self.pull]) if self.axial == "strain" or self.pull in self.fixed else 0.0
         return StepResult(
-            strain=strain,
-            force=float(a["R"][self.pull]),
+            strain=a["strain"],
+            force=force,
             x=self.x,
             curvature=wires["curvature"],
             kappa_m=wires["kappa_m"],
@@ -763,6 +1096,36 @@ class StrandModel:
     def capacity_curve(self, max_strain=None, n_steps=None, **kwargs):
         """Force–strain curve up to rupture (see [`capacity_curve`][skcable.strand.capacity_curve])."""
         return capacity_curve(self, max_strain, n_steps, **kwargs)
+
+
+class _Energy:
+    """A model's energy (J) at an assembly, its section terms' densities (arrays, or callables
+    that compute them) integrated on first use, plus the other terms' part."""
+
+    def __init__(self, densities, dx, rest: float):
+        self.densities, self.dx, self.rest = densities, dx, rest
+        self.value: float | None = None
+
+    def __call__(self) -> float:
+        if self.value is None:
+            total = sum(d() if callable(d) else d for d in self.densities)
+            self.value = float(np.sum(total * self.dx)) + self.rest
+        return self.value
+
+
+def _amended(exc: ConvergenceError, note: str) -> ConvergenceError:
+    """``exc`` with ``note`` added to its message (its history and last iterate kept)."""
+    out = ConvergenceError(exc.args[0] + note)
+    out.history, out.last = exc.history, exc.last
+    return out
+
+
+def _surrogate(term, output):
+    """A term's potential surrogate (`HelicalWires.frozen`), the term itself if it has a potential,
+    else None."""
+    if hasattr(term, "frozen"):
+        return term.frozen(output)
+    return term if term.symmetric and term.potential is not False else None
 
 
 def _rebuild(cls, strand, length, kwargs):

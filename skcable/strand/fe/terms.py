@@ -12,7 +12,8 @@ and return section forces :math:`S_a(g, x)` (the virtual-work conjugates of :mat
 their tangent :math:`D_{ab} = \partial S_a/\partial g_b`, 6 × 6 per point. The model sums them
 and assembles :math:`\int B^T S\,dx` and :math:`\int B^T D B\,dx` once for all of them
 (`skcable.fe.Assembly`). A section term has a potential when it returns its energy per length
-as ``output["energy"]``.
+as ``output["energy"]`` (an array, or a callable that computes it: asked for only where the
+solver needs it).
 
 **Other terms** give their residual ``R`` (N,) and tangent ``K = ∂R/∂U`` (sparse N × N) from the
 dof vector (`Term.contribute`): `FieldTerm` does it with scikit-fem forms on the named fields

@@ -7,16 +7,18 @@ Source: S. Pino Vidal, "Rigidez a flexión en cables: análisis numérico", Univ
 
 from __future__ import annotations
 
+import copy
 from functools import lru_cache
 
 import numpy as np
 from scipy.interpolate import PchipInterpolator
 from skfem import asm
 
+from skcable.errors import NonFiniteError
 from skcable.fe.assembly import contract
-from skcable.strand._bending import critical_curvature
+from skcable.strand._bending import CardouSection, critical_curvature
 from skcable.strand.fe.loads import unit_load
-from skcable.strand.fe.slip import SlipLaw, Stick, slip_law
+from skcable.strand.fe.slip import SlipLaw, SlipPoints, Stick, slip_law
 from skcable.strand.fe.terms import SectionTerm, Term
 
 __all__ = ["HelicalWires", "SinusoidalDamageLoads", "WireBending", "critical_curvature_table"]
@@ -52,7 +54,18 @@ class HelicalWires(SectionTerm):
               + N\,(e_{v'}e_{v'}^T + e_{w'}e_{w'}^T),
               \qquad N = \sum_j s_j\,\partial\varepsilon_j/\partial\varepsilon_a,
 
-    the material stiffness K_L and the geometric stiffness K_G (eq. 4.1). Every wire
+    the material stiffness K_L and the geometric stiffness K_G (eq. 4.1), for a kinematic slip
+    law (`Stick`, `ElementSlip`: the composite curvature κ_c is the law's). Under a section law
+    (`AxisSlip`, any `SlipLaw` with `SlipLaw.moment`) the bending about the centroid is the
+    law's moment instead: with :math:`\hat c = (1, v', -c_y, w', -c_z, 0)`,
+
+    .. math:: S = \sum_j s_j\,(\cos^2\alpha_j\,\hat c + R_j\sin\alpha_j\cos\alpha_j d_j\,e_{\varphi'})
+              + \sum_k \ell_k\,M_{c,k}(\kappa_k, \varepsilon_a),
+
+    :math:`\ell_k` the lever direction of principal axis k (in the v″, w″ components), the wires'
+    strains taken at :math:`\kappa_{c,k} = M_{c,k}/(EI_{stick} - EI_{slip})` (the curvature that
+    carries the law's moment elastically), and the tangent its exact derivative (not symmetric:
+    the term then has no potential). Every wire
     has its own material's σ and E_t (`Layer.material`: a steel core under aluminium
     layers), evaluated per material group; the centroid c(x) is modulus-weighted,
     :math:`\sum E_j A_j\cos^3\alpha_j (y_j, z_j) / \sum E_j A_j\cos^3\alpha_j`.
@@ -108,6 +121,7 @@ class HelicalWires(SectionTerm):
         self.levers = np.array([np.sin(angle), np.cos(angle)]).transpose(1, 0, 2, 3)
         self.kappa_grid, _, self._spline, self._slope = critical_curvature_table(s, self.slip.mu)
         self._curvature = self._slope.derivative()
+        self._cubics = np.ascontiguousarray(self._spline.c.transpose(1, 2, 0))  # (n - 1, axis, power)
         # the lever offsets from the centroid, and the centroid, per wire: fixed per model
         self._y = self.wire_y - self.centroid_y[None]
         self._z = self.wire_z - self.centroid_z[None]
@@ -115,26 +129,64 @@ class HelicalWires(SectionTerm):
         self._cy, self._cz = self.centroid_y[None], self.centroid_z[None]
         self._neg_c2 = -self.c2
         self._stick_constants(x.shape)
+        self._cardou = CardouSection(section, self.slip.mu)
+        self.slip.check(model)
+        # the composite curvatures and points of `frozen`
+        self._frozen: tuple[np.ndarray, SlipPoints] | None = None
+        if not self.slip.kinematic:  # a section law: a friction moment has no potential
+            self.symmetric, self.potential, self.smooth = False, False, bool(self.slip.smooth)
 
     def _stick_constants(self, shape):
         """What a law that sticks everywhere (`Stick`'s composite, no second derivatives) fixes per
         model: ∂κ_c/∂κ of the unit composite and the rows of ∂ε_j/∂g that do not depend on g."""
         kind = type(self.slip)
         self._sticks = (
-            kind.composite is Stick.composite and kind.second_derivatives is SlipLaw.second_derivatives
+            self.slip.kinematic
+            and kind.composite is Stick.composite
+            and kind.second_derivatives is SlipLaw.second_derivatives
         )
         self._P_stick = contract("kcen,ken,kden->cden", self.levers, np.ones((2, *shape)), self.levers)
         b = self._strain_gradients(np.zeros((6, *shape)), self._P_stick, np.zeros((2, *shape)), self._y.shape)
-        self._b_stick = b[[0, 2, 4, 5]]
+        self._b_stick = np.ascontiguousarray(b[[0, 2, 4, 5]])
+        # the products C_a C_b of the 10 pairs a <= b of the rows on the strains 0, 2, 4, 5, and which of
+        # `_section_stick`'s 21 rows each entry of D is: those pairs (0–9, in `triu_indices` order),
+        # v' times the axial row (10–13), w' times it (14–17), (1, 1), (3, 3), (1, 3) (18–20)
+        upper = np.triu_indices(4)
+        self._stick_pairs = np.ascontiguousarray(self._b_stick[upper[0]] * self._b_stick[upper[1]])
+        pair = {(int(a), int(b)): p for p, (a, b) in enumerate(zip(*upper, strict=True))}
+        reduced = {0: 0, 2: 1, 4: 2, 5: 3}
+        stick_map = np.empty((6, 6), dtype=np.intp)
+        for a in range(6):
+            for b in range(6):
+                if a in reduced and b in reduced:
+                    low, high = sorted((reduced[a], reduced[b]))
+                    stick_map[a, b] = pair[low, high]
+                elif {a, b} <= {1, 3}:
+                    stick_map[a, b] = 18 if a == b == 1 else 19 if a == b == 3 else 20
+                else:
+                    geometric, other = (a, b) if a in (1, 3) else (b, a)
+                    stick_map[a, b] = (10 if geometric == 1 else 14) + reduced[other]
+        self._stick_map = stick_map
+        self._no_slip = np.zeros((2, *shape), dtype=bool)
+        self._no_slip.flags.writeable = False
 
-    def kappa_m(self, axial_strain):
-        """Critical curvatures (2, ...) and their derivative with respect to the axial strain.
+    def kappa_m(self, axial_strain, derivative: bool = True):
+        """Critical curvatures (2, ...) and their derivative with respect to the axial strain
+        (None without ``derivative``: then the interpolant's cubic pieces evaluated here, on its
+        uniform grid, the same values to round-off, for the results of a law that sticks).
 
         A monotone C¹ interpolant (PCHIP) of the tabulated law: a piecewise-linear one
         has a derivative that jumps at every grid point, and Newton stalls on a kink.
         """
-        eps = np.clip(axial_strain, 0.0, self.kappa_grid[-1])
-        return self._spline(eps), self._slope(eps) * (axial_strain > 0)
+        grid = self.kappa_grid
+        eps = np.clip(axial_strain, 0.0, grid[-1])
+        if derivative:
+            return self._spline(eps), self._slope(eps) * (axial_strain > 0)
+        i = np.minimum((eps * ((len(grid) - 1) / grid[-1])).astype(np.intp), len(grid) - 2)
+        c = self._cubics[i]  # (..., 2, 4): the cubic of each point's interval, per axis
+        t = (eps - grid[i])[..., None]
+        value = ((c[..., 0] * t + c[..., 1]) * t + c[..., 2]) * t + c[..., 3]  # (..., 2)
+        return np.moveaxis(value, -1, 0), None
 
     def _kappa_m_of(self, axial_strain):
         """`kappa_m`, without the derivative (None) where the law sticks everywhere: no tangent
@@ -147,7 +199,14 @@ class HelicalWires(SectionTerm):
         return self.slip.initial_state((2, *model.x.shape))
 
     def next_state(self, output, state):
-        return self.slip.next_state(output["curvature"], output["kappa_m"], state)
+        if self._sticks:
+            return state
+        return self.slip.next_state(output["curvature"], output["points"], state)
+
+    def points(self, axial_strain, kappa_m=None) -> SlipPoints:
+        """What the slip law sees at the points of axial strain ``axial_strain`` (`SlipPoints`),
+        ``kappa_m`` the kinematic laws' tabulated one."""
+        return SlipPoints(self._cardou, axial_strain, self.kappa_grid[-1], kappa_m)
 
     def _curved_slip(self, D, s, g, axial, levers, k_principal, k_m, dk_m, d_km, state):
         """Stress times the second derivatives of the wire strains through the slip law:
@@ -201,11 +260,18 @@ class HelicalWires(SectionTerm):
 
     def section(self, g, step):
         axial = g[0] + 0.5 * (g[1] ** 2 + g[3] ** 2)
+        if self._sticks:  # the principal curvatures are for the results alone (`principal`)
+            return self._section_stick(g, axial)
         kappa = g[2:5:2]  # (v'', w'') components along y, z
         levers = self.levers
         k_principal = contract("kcen,cen->ken", levers, kappa)
+        if not self.slip.kinematic:
+            if self._frozen is not None:
+                return self._section_frozen(g, step, axial, kappa, k_principal)
+            return self._section_law(g, step, axial, kappa, k_principal)
         k_m, dk_m = self._kappa_m_of(axial)
         state = step.state
+        points = self.points(axial, k_m)
         kappa_c, P, q, d_km = self._slip_derivatives(kappa, k_principal, k_m, dk_m, state)
         y, z, c2 = self._y, self._z, self.c2
         eccentric = self._cy * kappa[0][None] + self._cz * kappa[1][None]
@@ -231,11 +297,183 @@ class HelicalWires(SectionTerm):
             stress=stress,
             curvature=k_principal,
             kappa_m=k_m,
-            slipping=self.slip.slipping(k_principal, k_m, state),
+            slipping=self.slip.slipping(k_principal, points, state),
             axial=axial,
             N=N,
             energy=energy,
+            points=points,
         )
+        return S, D, output
+
+    def principal(self, g) -> np.ndarray:
+        """The curvatures about the principal axes of the turning section (2, ne, nq) (1/m) at
+        generalized strains ``g``."""
+        return contract("kcen,cen->ken", self.levers, g[2:5:2])
+
+    def _section_stick(self, g, axial):
+        """`section` of a law that sticks everywhere: the strains are ``Σ_a C_a g̃_a`` over the
+        rows of ∂ε_j/∂g fixed per model (``C``: on ε_a, v″, w″, φ′), the forces and tangent their
+        4 × 4 sums, and the rows of v′ and w′ the axial row times v′ and w′ (∂ε_a/∂v′ = v′)."""
+        C = self._b_stick  # (4, nw, ne, nq)
+        reduced = np.array([axial, g[2], g[4], g[5]])
+        strain = contract("ajen,aen->jen", C, reduced)
+        stress, tangent = self.materials.stress_and_tangent(strain)
+        stress = stress * self._alive3  # a broken wire carries nothing (its area weight is zero too)
+        s = self.area_weight * stress
+        S4 = contract("jen,ajen->aen", s, C)
+        # the 10 distinct entries of the symmetric 4 × 4 Σ_j k_j C_a C_b (the products fixed per model)
+        D4 = contract("pjen,jen->pen", self._stick_pairs, self.area_weight * tangent)
+        N = S4[0]
+        v1, w1 = g[1], g[3]
+        S = np.empty_like(g)
+        S[0], S[2], S[4], S[5] = N, S4[1], S4[2], S4[3]
+        S[1], S[3] = N * v1, N * w1
+        # D from 21 rows in one gather (`_stick_map`): D4 on the rows and columns of ε_a, v″, w″,
+        # φ′; those of v′ and w′ the axial row times v′ and w′, with N on the diagonal (the
+        # geometric stiffness K_G)
+        first, D00 = D4[:4], D4[0]  # the axial row: pairs (0, 0), (0, 1), (0, 2), (0, 3)
+        rows = np.empty((21, *axial.shape))
+        rows[:10] = D4
+        np.multiply(first, v1, out=rows[10:14])
+        np.multiply(first, w1, out=rows[14:18])
+        rows[18] = D00 * v1 * v1 + N
+        rows[19] = D00 * w1 * w1 + N
+        rows[20] = D00 * v1 * w1
+        D = rows[self._stick_map]
+        output = dict(
+            strain=strain,
+            stress=stress,
+            curvature=None,  # Stick: for the results only, `principal` and `kappa_m` at the converged state
+            kappa_m=None,
+            slipping=self._no_slip,
+            axial=axial,
+            N=N,
+            energy=lambda: np.sum(self.area_weight * self.materials.energy(strain), axis=0),  # on demand
+        )
+        return S, D, output
+
+    def _section_law(self, g, step, axial, kappa, k_principal):
+        """`section` under a section law (the class docstring): the law's moment about the
+        centroid, the wires' strains at the composite curvature that carries it."""
+        levers, state = self.levers, step.state
+        points = self.points(axial)
+        M, dM_dk, dM_de = self._law_moment(k_principal, points, state)
+        EI, d_EI = points.EI_composite, points.d_EI_composite
+        composite = EI > 0.0  # an axis without composite bending: the wires have no lever about it
+        safe = np.where(composite, EI, 1.0)
+        k_c = np.where(composite, M / safe, k_principal)
+        kappa_c = contract("kcen,ken->cen", levers, k_c)
+        P = contract("kcen,ken,kden->cden", levers, np.where(composite, dM_dk / safe, 1.0), levers)
+        q = contract("kcen,ken->cen", levers, np.where(composite, (dM_de - k_c * d_EI) / safe, 0.0))
+        y, z, c2 = self._y, self._z, self.c2
+        eccentric = self._cy * kappa[0][None] + self._cz * kappa[1][None]
+        strain = (
+            c2 * (axial[None] - eccentric - y * kappa_c[0][None] - z * kappa_c[1][None])
+            + self.sc * g[5][None]
+        )
+        stress, tangent = self.materials.stress_and_tangent(strain)
+        stress = stress * self._alive3
+        s, k = self.area_weight * stress, self.area_weight * tangent
+        b = self._strain_gradients(g, P, q, strain.shape)  # ∂ε_j/∂g through the law
+        N = contract("jen,jen->en", s, self.c2)
+        n_b = contract("jen,ajen->aen", k * self.c2, b)  # ∂N/∂g
+        t_b = contract("jen,ajen->aen", k * self.sc, b)  # ∂(Σ s_j R_j sin α cos α d_j)/∂g
+        zero = np.zeros_like(axial)
+        c_hat = np.array([np.ones_like(axial), g[1], -self.centroid_y, g[3], -self.centroid_z, zero])
+        S = c_hat * N
+        S[5] = contract("jen,jen->en", s, self.sc)
+        D = contract("aen,ben->aben", c_hat, n_b)
+        D[5] += t_b
+        D[1, 1] += N  # the geometric stiffness K_G
+        D[3, 3] += N
+        moment = contract("kcen,ken->cen", levers, M)  # the law's moment in the (v'', w'') components
+        S[2] += moment[0]
+        S[4] += moment[1]
+        bending = contract("kcen,ken,kden->cden", levers, dM_dk, levers)
+        strain_row = contract("kcen,ken->cen", levers, dM_de)
+        E = np.array([np.ones_like(axial), g[1], zero, g[3], zero, zero])  # ∂ε_a/∂g
+        for c, row in ((0, 2), (1, 4)):
+            D[row, 2] += bending[c, 0]
+            D[row, 4] += bending[c, 1]
+            D[row] += strain_row[c] * E
+        output = dict(
+            strain=strain,
+            stress=stress,
+            curvature=k_principal,
+            kappa_m=self.slip.onset(points),
+            slipping=self.slip.slipping(k_principal, points, state),
+            axial=axial,
+            N=N,
+            points=points,
+            composite=k_c,
+        )
+        return S, D, output
+
+    def _law_moment(self, kappa, points, state):
+        """The slip law's ``(M_c, ∂M_c/∂κ, ∂M_c/∂ε_a)``, checked finite (`NonFiniteError` names the law)."""
+        out = self.slip.moment(kappa, points, state)
+        bad = ~(np.isfinite(out[0]) & np.isfinite(out[1]) & np.isfinite(out[2]))
+        if bad.any():
+            x = np.broadcast_to(self._model.x, bad.shape[1:])[np.any(bad, axis=0)]
+            raise NonFiniteError(
+                f"the slip law {self.slip!r} gave a moment or tangent that is not finite at "
+                f"{int(bad.sum())} of {bad.size} (axis, point) pairs, x = {x.min():.4g} to {x.max():.4g} m",
+                repr(self.slip),
+            )
+        return out
+
+    def frozen(self, output):
+        """A potential surrogate of this term under a section law, or None (a kinematic law has
+        its potential; a section law without `SlipLaw.energy` has none): the wires' strains at
+        the composite curvatures of ``output`` (an assembly's), frozen, and the law's moment at
+        its points there, frozen, with the law's potential ψ (``∂ψ/∂κ = M_c``). Its residual is
+        this term's at that assembly's state; it has the energy Σ ∫ A σ dε / cos α + Σ ψ and a
+        symmetric tangent, so a model whose path folds (a softening wire law) can minimise it
+        past the fold and polish the step with the section law from there."""
+        if self.slip.kinematic or type(self.slip).energy is SlipLaw.energy:
+            return None
+        out = copy.copy(self)
+        out._frozen = (output["composite"], output["points"])
+        out.symmetric, out.potential = True, None
+        return out
+
+    def _section_frozen(self, g, step, axial, kappa, k_principal):
+        """`section` of the surrogate of `frozen`."""
+        assert self._frozen is not None  # a surrogate of `frozen`
+        k_c, points = self._frozen
+        levers, state = self.levers, step.state
+        kappa_c = contract("kcen,ken->cen", levers, k_c)
+        eccentric = self._cy * kappa[0][None] + self._cz * kappa[1][None]
+        strain = (
+            self.c2 * (axial[None] - eccentric - self._y * kappa_c[0][None] - self._z * kappa_c[1][None])
+            + self.sc * g[5][None]
+        )
+        stress, tangent, density = self.materials.stress_tangent_energy(strain)
+        stress = stress * self._alive3
+        s, k = self.area_weight * stress, self.area_weight * tangent
+        frozen = np.zeros((2, 2, *axial.shape)), np.zeros((2, *axial.shape))  # κ_c depends on nothing
+        b = self._strain_gradients(g, *frozen, strain.shape)
+        S = contract("jen,ajen->aen", s, b)
+        D = contract("ajen,jen,bjen->aben", b, k, b)
+        N = contract("jen,jen->en", s, self.c2)
+        D[1, 1] += N
+        D[3, 3] += N
+        M, dM_dk, _ = self._law_moment(k_principal, points, state)
+        psi = self.slip.energy(k_principal, points, state)
+        moment = contract("kcen,ken->cen", levers, M)
+        S[2] += moment[0]
+        S[4] += moment[1]
+        bending = contract("kcen,ken,kden->cden", levers, dM_dk, levers)
+        D[2, 2] += bending[0, 0]
+        D[2, 4] += bending[0, 1]
+        D[4, 2] += bending[1, 0]
+        D[4, 4] += bending[1, 1]
+        energy = np.sum(self.area_weight * density, axis=0) + np.sum(psi, axis=0)
+        output = dict(
+            strain=strain, stress=stress, curvature=k_principal, kappa_m=self.slip.onset(points),
+            slipping=self.slip.slipping(k_principal, points, state), axial=axial, N=N, points=points,
+            composite=k_c, energy=energy,
+        )  # fmt: skip
         return S, D, output
 
 
@@ -257,11 +495,12 @@ class WireBending(SectionTerm):
         self._D = np.zeros((6, 6, ne, nq))
         self._D[2, 2] = self._D[4, 4] = self.EI
         self._D[5, 5] = self.GJ
+        self._D.flags.writeable = False  # shared by every assembly
+        self._stiffness = np.array([0.0, 0.0, self.EI, 0.0, self.EI, self.GJ])[:, None, None]
 
     def section(self, g, step):
-        S = np.zeros_like(g)
-        S[2], S[4], S[5] = self.EI * g[2], self.EI * g[4], self.GJ * g[5]
-        return S, self._D, {"energy": 0.5 * (S[2] * g[2] + S[4] * g[4] + S[5] * g[5])}
+        S = self._stiffness * g
+        return S, self._D, {"energy": lambda: 0.5 * np.sum(S * g, axis=0)}  # the energy on demand
 
 
 class SinusoidalDamageLoads(Term):

@@ -3,7 +3,7 @@ r"""A `skcable.mooring.Line` between two points in space, over a flat seabed, ei
 Ends :math:`\mathbf a` and :math:`\mathbf b` (m, z up), the seabed the plane ``z = -depth``
 (or none). The line hangs in the vertical plane through its ends: horizontal distance
 :math:`r = |\mathbf b_{xy} - \mathbf a_{xy}| > 0`, unit direction :math:`\mathbf e` from a to b.
-`skcable.mooring.geometry.solve_in_plane` solves it in that plane, from its lower end,
+`skcable.mooring.choice.solve_in_plane` solves it in that plane, from its lower end,
 with the model its position over the seabed takes (and the reason), and gives the forces at
 both ends and their Jacobian :math:`J = \partial(H_a, V_a, H_b, V_b)/\partial(r, z_a, z_b)`.
 The line's forces on its ends are
@@ -38,11 +38,9 @@ import numpy as np
 from skcable._checks import whole
 from skcable._show import Shown
 from skcable.errors import InputError
-from skcable.mooring.geometry import batchable, grounded_batch, is_grounded_scene, is_line, solve_in_plane
-from skcable.mooring.line3d import point
 from skcable.mooring.segments import LineSolution
 
-__all__ = ["LineBetween", "line_between", "solve_between", "solve_many_between"]
+__all__ = ["LineBetween", "plane_of"]
 
 
 class LineBetween(Shown):
@@ -59,7 +57,7 @@ class LineBetween(Shown):
     plane : PlaneLine
         The solution in the line's vertical plane (``model``, ``reason``, forces by end).
     model, reason : str
-        Which model the line took, and why (`skcable.mooring.geometry`).
+        Which model the line took, and why (`skcable.mooring.choice`).
     end_forces : ndarray, shape (2, 3)
         The line's forces on a and on b (N), global axes.
     tension_a, tension_b : float
@@ -150,7 +148,7 @@ class LineBetween(Shown):
 
     def stiffness(self) -> np.ndarray:
         """``K = -∂(F_a, F_b)/∂(a, b)`` (N/m), shape (6, 6): rows and columns ``(a_xyz, b_xyz)``, the
-        seabed fixed (an end resting on the seabed moves with it: `skcable.mooring.geometry`)."""
+        seabed fixed (an end resting on the seabed moves with it: `skcable.mooring.jacobians`)."""
         J = self.plane.jacobian()
         K = np.empty((6, 6))
         for i in (0, 1):
@@ -198,7 +196,7 @@ class LineBetween(Shown):
         )
 
 
-def _plane_of(a, b):
+def plane_of(a, b):
     """``(r, dz, az, e)`` of the vertical plane through float 3-vectors ``a`` and ``b``: the horizontal
     distance, the height of b above a, a's height (m) and the unit horizontal vector ``e`` from a
     to b; None where b lies on the vertical of a (the plane undefined)."""
@@ -208,101 +206,3 @@ def _plane_of(a, b):
     if not r > 1e-9 * max(1.0, abs(dx), abs(dy), abs(dz)):
         return None
     return r, dz, az, (dx / r, dy / r)
-
-
-def solve_between(line, a, b, depth, start=None, bvp=None) -> LineBetween:
-    """`line_between` on checked float 3-vectors (the horizontal distance checked here); a model
-    with its own ``solve_between`` (`skcable.mooring.rod.Rod`) solved by it."""
-    if not is_line(line):
-        return line.solve_between(a, b, depth, start)
-    weightless = [seg.w == 0.0 for seg in line.segments]
-    if all(weightless):  # no gravity: straight between its ends
-        from skcable.mooring.straight import weightless_between
-
-        return weightless_between(line, a, b)  # type: ignore[return-value]
-    plane_of = _plane_of(a, b)
-    if plane_of is None:  # its ends on one vertical: it hangs straight
-        from skcable.mooring.straight import vertical_between
-
-        return vertical_between(line, a, b, depth)  # type: ignore[return-value]
-    r, dz, az, e = plane_of
-    seabed = None if depth is None else -depth - az
-    plane = solve_in_plane(line, r, dz, seabed=seabed, start=None if start is None else start.plane, bvp=bvp)
-    return LineBetween(line, a, b, plane, r, e)
-
-
-#: Lines of one model a system solves together (`solve_many_between`) from this many: below it,
-#: a Python-float Newton per line is faster than one on arrays (`benchmarks/bench_line_batch.py`).
-BATCH = 32
-
-
-def solve_many_between(line, ends, depth, starts) -> list:
-    """Lines of one model ``line`` with their ends ``ends`` (pairs of checked float 3-vectors
-    ``(a, b)``) over the flat seabed ``z = -depth``, warm-started from ``starts`` (their
-    `LineBetween` solutions elsewhere): those whose anchor end a rests on the seabed with b above
-    it are solved together where there are `BATCH` of them and the model is one segment
-    (`skcable.mooring.geometry.grounded_batch`); a `LineBetween` per line, or None for the
-    caller's `solve_between`."""
-    out: list = [None] * len(ends)
-    if depth is None or len(ends) < BATCH or not batchable(line):
-        return out
-    picked, scenes, previous, geometry = [], [], [], []
-    for i, ((a, b), start) in enumerate(zip(ends, starts, strict=True)):
-        plane_of, plane = _plane_of(a, b), getattr(start, "plane", None)
-        if plane_of is None:  # left to `solve_between`, which refuses it by name
-            continue
-        r, dz, az, e = plane_of
-        if is_grounded_scene(r, dz, -depth - az, plane):
-            picked.append(i)
-            scenes.append((r, dz, -depth - az))
-            previous.append(plane)
-            geometry.append((a, b, r, e))
-    if len(picked) < BATCH:
-        return out
-    for i, plane, (a, b, r, e) in zip(picked, grounded_batch(line, scenes, previous), geometry, strict=True):
-        if plane is not None:
-            out[i] = LineBetween(line, a, b, plane, r, e)
-    return out
-
-
-def line_between(line, a, b, *, depth=None, start=None) -> LineBetween:
-    """Solve a `skcable.mooring.Line` between the points ``a`` and ``b`` over a flat seabed.
-
-    Parameters
-    ----------
-    line : Line
-        Segments from a to b; its ``friction`` acts on the seabed, its own ``seabed`` is not used.
-    a, b : array_like, shape (3,)
-        The ends (m), z up, either one higher, on or above the seabed, not on one vertical.
-    depth : float, optional
-        Water depth (m): the seabed is the plane ``z = -depth``; None: no seabed.
-    start : LineBetween, optional
-        An earlier solution of this line: its 2-D solution starts Newton's method where the
-        same model applies (the same solution to round-off).
-
-    Returns
-    -------
-    LineBetween
-        ``end_forces``, the 6 × 6 ``stiffness()``, ``model`` and ``reason``.
-
-    Examples
-    --------
-    >>> from skcable import mooring
-    >>> chain = mooring.Line([mooring.Segment(120.0, 2500.0, 1.2e9)])
-    >>> one = mooring.line_between(chain, [0, 0, -60], [100, 10, -30], depth=60.0)
-    >>> other = mooring.line_between(chain, [100, 10, -30], [0, 0, -60], depth=60.0)
-    >>> one.model, bool(abs(one.end_forces - other.end_forces[::-1]).max() < 1e-9)
-    ('grounded', True)
-    """
-    if not is_line(line):
-        raise InputError(
-            "line", f"must be a mooring.Line, got {type(line).__name__} (use line_3d for other models)"
-        )
-    a, b = point("a", a), point("b", b)
-    if depth is not None:
-        from skcable._checks import positive, scalar
-
-        depth = scalar("depth", positive("depth", depth))
-    if start is not None and not isinstance(start, LineBetween):
-        raise InputError("start", f"must be a LineBetween of this line, got {type(start).__name__}")
-    return solve_between(line, a, b, depth, start)

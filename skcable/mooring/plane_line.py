@@ -1,6 +1,6 @@
 """`PlaneLine`: a line solved between its two ends in its vertical plane, the forces by end.
 
-The result of `skcable.mooring.geometry.solve_in_plane`: the 2-D solution of the line as
+The result of `skcable.mooring.choice.solve_in_plane`: the 2-D solution of the line as
 seen from its lower end (any solution of the result protocol, `skcable.results`), mapped to the
 user's ends A and B, with the model it took and why, and the Jacobian of the end forces in the
 span and the ends' heights.
