@@ -30,6 +30,7 @@ scalar_math = SimpleNamespace(
     abs=abs,
     minimum=min,
     maximum=max,
+    where=lambda condition, yes, no: yes if condition else no,
 )
 
 

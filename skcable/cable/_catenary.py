@@ -41,13 +41,13 @@ from skcable.cable._hanging import RHO_LIMIT as _RHO_LIMIT
 from skcable.cable._hanging import Z_LIMIT, Z_MIN, excess, z_of_excess
 from skcable.cable._roots import find_root
 from skcable.cable._special import (
-    asinh_step_parts,
     ldexp_sum,
     log_cosh,
     power_product,
     sinhc_m1,
     z_minus_tanh_over_cube,
 )
+from skcable.cable.closure import positions
 from skcable.cable.solution import ACCEPT, ATTRIBUTE_OF, CableSolution, checked_closed_form, matrix_2x2
 from skcable.errors import ConvergenceError, InputError
 
@@ -268,31 +268,28 @@ class Catenary(CableSolution):
         return self.w + 0.0 * slope
 
     def _arc(self, s):
-        """``(s, q, d, p, r_q, r_p)``: the hyperbolic sines at A (``q = sinh u_A``) and at
-        ``s`` (``p``), their step ``d = s/a`` formed directly, and ``r = cosh``."""
+        """``s`` checked to lie in [0, length]."""
         s = real("s", s)
         require("s", (s >= 0) & (s <= self.length), "must lie in [0, length]", s)
-        xp = namespace(s, self.a)
-        q, d = -self.V_A / self.H, s / self.a
-        p = q + d
-        return s, q, d, p, xp.hypot(1.0, q), xp.hypot(1.0, p)
+        return s
 
     def xy(self, s):
         r"""Positions ``(..., 2)`` (m) at unstretched arc length ``s`` (m) from A, in [0, length].
 
         With :math:`q = \sinh u_A`, the arc from A to :math:`u` is :math:`a(\sinh u - q)`, so
-        :math:`\sinh u = q + s/a` and :math:`x = a(u - u_A)`, :math:`y = a(\cosh u - \cosh u_A)`
-        (Irvine, *Cable Structures*, 1981, §2.2, with EA infinite), taken through `asinh_step`
-        and rationalised as :math:`y = s\,(p + q)/(r_p + r_q)`: no cancellation for taut cables.
+        :math:`\sinh u = q + s/a` and :math:`x = a(u - u_A)`, :math:`y = a(\cosh u - \cosh u_A)`:
+        the hanging piece of the one closure with EA infinite (`skcable.cable.closure.positions`;
+        Irvine, *Cable Structures*, 1981, §2.2), free of cancellation for taut cables.
         """
-        s, q, d, p, rq, rp = self._arc(s)
-        A = asinh_step_parts(q, d, p, rq, rp)[1]
+        s = self._arc(s)
         with float_range("s", "xy(s)"):
-            return np.stack(np.broadcast_arrays(self.a * A, s * (p + q) / (rp + rq)), axis=-1)
+            x, y = positions(self.H, -self.V_A, self.w, math.inf, s, namespace(s, self.a))
+            return np.stack(np.broadcast_arrays(x, y), axis=-1)
 
     def T_of_s(self, s):
-        """Tension (N) at unstretched arc length ``s`` (m) from A: ``H cosh u``."""
-        return self.H * self._arc(s)[5]
+        """Tension (N) at unstretched arc length ``s`` (m) from A: ``sqrt(H² + (w s - V_A)²)``."""
+        s = self._arc(s)
+        return namespace(s, self.a).hypot(self.H, self.w * s - self.V_A)
 
     @cached_property
     def k_G(self):

@@ -10,10 +10,11 @@ Lagrangian coordinate ``s`` along the *unstretched* cable, ``s = 0`` at A,
            - \operatorname{asinh}\frac{T_v(0)}{H}\right], \qquad
     y(s) = \frac{w s^2/2 - V_A s}{EA} + \frac{T(s) - T(0)}{w}.
 
-The two closure conditions ``x(L0) = span`` and ``y(L0) = dh`` are solved
-for ``(H, V_A)`` by Newton's method with the analytic Jacobian and
-backtracking, started from the inextensible catenary of a length corrected
-for the mean stretch.
+The two closure conditions ``x(L0) = span`` and ``y(L0) = dh`` (the one closure of an elastic
+segment, `skcable.cable.closure`) are solved for ``(H, V_A)`` by Newton's method with the
+analytic Jacobian and backtracking, started from the inextensible catenary of a length
+corrected for the mean stretch; the solution is checked by other formulas than the solve's
+(`skcable.cable.closure.check`).
 """
 
 from __future__ import annotations
@@ -26,125 +27,17 @@ import numpy as np
 from skcable import _plausible
 from skcable._checks import broadcast, float_range, positive, real, require
 from skcable._newton2 import solve2
-from skcable._xp import namespace
+from skcable._xp import namespace, scalar_math
 from skcable.cable._answers import check_catenary
 from skcable.cable._catenary import finite_at, hanging
 from skcable.cable._extreme import outsized
 from skcable.cable._hanging import hanging_forces
 from skcable.cable._roots import find_root
-from skcable.cable._special import asinh_step, asinh_step_log, asinh_step_parts, sinhc_m1, sinhc_pair
+from skcable.cable.closure import check, closure, end_ratios, positions, stretched_length
 from skcable.cable.solution import ACCEPT, CableSolution, checked_closed_form
 from skcable.errors import InputError
 
 __all__ = ["ElasticCatenary", "elastic_catenary"]
-
-_NAN8 = (math.nan,) * 8
-
-
-def ratios(H, V_A, w, L):
-    r"""``(q, d, p, r_q, r_p)``: the vertical tension components at A and B over ``H``,
-    :math:`q = -V_A/H`, :math:`p = q + d`, their step :math:`d = wL/H` formed directly (never
-    as :math:`p - q`), and :math:`r = \sqrt{1 + (\cdot)^2}` (``T_A/H``, ``T_B/H``)."""
-    xp = namespace(H, V_A, w, L)
-    q, d = -V_A / H, w * L / H
-    p = q + d
-    return q, d, p, xp.hypot(1.0, q), xp.hypot(1.0, p)
-
-
-def _x_h_core(S, A, p, q, rr):
-    r""":math:`A - \sinh A/(r_p r_q)`, the geometric part of :math:`w\,\partial X/\partial H`, without
-    cancellation: below ``A = 2`` as :math:`S(p^2 + q^2 + p^2q^2)/((r_pr_q + 1)r_pr_q) - (\sinh A - A)`
-    (:math:`r_pr_q - 1` rationalised), above it directly (the loss is at most 4 ulps at ``A = 2``)."""
-
-    def small(S, A, p, q, rr):
-        p2, q2 = p * p, q * q
-        return S * (p2 + q2 + p2 * q2) / ((rr + 1.0) * rr) - A * sinhc_m1(A)
-
-    def large(S, A, p, q, rr):
-        return A - S / rr
-
-    if not isinstance(A, np.ndarray):
-        return small(S, A, p, q, rr) if A < 2.0 else large(S, A, p, q, rr)
-    out = np.empty(np.shape(A))
-    below = A < 2.0
-    out[below] = small(S[below], A[below], p[below], q[below], rr[below])
-    out[~below] = large(S[~below], A[~below], p[~below], q[~below], rr[~below])
-    return out
-
-
-def _closure_floats(span, dh, w, EA, L, H, V_A):
-    """`closure` on Python floats: the same formulas, written out."""
-    if not H > 0:
-        return _NAN8
-    q, d = -V_A / H, w * L / H
-    p = q + d
-    rq, rp = math.hypot(1.0, q), math.hypot(1.0, p)
-    S = d * (p + q) / (p * rq + q * rp) if p * q > 0 else p * rq - q * rp
-    A = math.asinh(S)
-    stretch, x_geo, compliance = H * L / EA, H / w * A, L / EA
-    rsum, rr = rp + rq, rp * rq
-    if A < 2.0:
-        p2, q2 = p * p, q * q
-        core = S * (p2 + q2 + p2 * q2) / ((rr + 1.0) * rr) - A * sinhc_pair(A)[0]
-    else:
-        core = A - S / rr
-    j_xv = d * (p + q) / (rsum * rr * w)
-    terms_y = L * (0.5 * w * L + abs(V_A)) / EA + L * (abs(p) + abs(q)) / rsum + abs(dh)
-    return (
-        stretch + x_geo - span,
-        L * (0.5 * w * L - V_A) / EA + L * (p + q) / rsum - dh,
-        compliance + core / w,
-        j_xv,
-        -j_xv,
-        -compliance - S / (rr * w),
-        stretch + x_geo + span,
-        terms_y,
-    )
-
-
-def closure(span, dh, w, EA, L, H, V_A):
-    r"""Irvine's closure :math:`X(H, V_A) - \mathrm{span}`, :math:`Y(H, V_A) - dh` (m), its Jacobian
-    in ``(H, V_A)`` (m/N) and the sizes of the two residuals' terms (m), whose few ulps are their
-    round-off.
-
-    In the ratios of `ratios`, with :math:`A = \operatorname{asinh} p - \operatorname{asinh} q`
-    from `asinh_step_parts` (d formed directly, so that taut steep lines keep their digits) and
-    :math:`S = \sinh A`:
-
-    .. math::
-        X = \frac{HL}{EA} + \frac{H}{w} A, \qquad
-        Y = \frac{L (wL/2 - V_A)}{EA} + L\,\frac{p + q}{r_p + r_q},
-
-    (:math:`(T_B - T_A)/w` rationalised), and
-    :math:`\partial X/\partial H = L/EA + (A - S/(r_pr_q))/w`,
-    :math:`\partial X/\partial V_A = -\partial Y/\partial H = d\,(p + q)/((r_p + r_q) r_p r_q w)`,
-    :math:`\partial Y/\partial V_A = -L/EA - S/(r_p r_q w)`. ``H <= 0`` gives NaN.
-    """
-    xp = namespace(span, dh, w, EA, L, H, V_A)
-    if xp is np:
-        H = np.where(H > 0, H, np.nan)
-    elif not H > 0:
-        return _NAN8
-    q, d, p, rq, rp = ratios(H, V_A, w, L)
-    S, A = asinh_step_parts(q, d, p, rq, rp)
-    stretch, x_geo, compliance = H * L / EA, H / w * A, L / EA
-    s_y = L * (0.5 * w * L - V_A) / EA
-    rsum, rr = rp + rq, rp * rq
-    rise = L * (p + q) / rsum  # (T_B - T_A)/w
-    j_xv = d * (p + q) / (rsum * rr * w)
-    j_xh = compliance + _x_h_core(S, A, p, q, rr) / w
-    j_yv = -compliance - S / (rr * w)
-    # the terms summed, and the operands of the differences w L/2 - V_A and p + q
-    terms_x = stretch + x_geo + span
-    terms_y = L * (0.5 * w * L + xp.abs(V_A)) / EA + L * (xp.abs(p) + xp.abs(q)) / rsum + xp.abs(dh)
-    return stretch + x_geo - span, s_y + rise - dh, j_xh, j_xv, -j_xv, j_yv, terms_x, terms_y
-
-
-def _closure_of(H, V_A, span, dh, w, EA, L):
-    """`closure` in the argument order of `solve2`."""
-    if type(H) is float and type(V_A) is float:
-        return _closure_floats(span, dh, w, EA, L, H, V_A)
-    return closure(span, dh, w, EA, L, H, V_A)
 
 
 def _inextensible(span, dh, w, length):
@@ -173,9 +66,11 @@ def _initial_guess(span, dh, w, EA, L0):
 
 
 def _solve(span, dh, w, EA, L0):
+    """``(H, V_A, history)``: Newton on the one closure (`skcable.cable.closure.closure`) in
+    ``(H, V_b)``, ``V_b = -V_A``, from `_initial_guess`."""
     H, V_A = _initial_guess(span, dh, w, EA, L0)
-    result = solve2(_closure_of, H, V_A, (span, dh, w, EA, L0), what="elastic_catenary")
-    return result.x, result.y, result.history
+    result = solve2(closure, H, -V_A, (span, dh, w, EA, L0), what="elastic_catenary")
+    return result.x, -result.y, result.history
 
 
 def inverse_2x2(j11, j12, j21, j22):
@@ -186,13 +81,13 @@ def inverse_2x2(j11, j12, j21, j22):
 
 def elastic_stiffness(s):
     """``∂(H, V_B)/∂(span, dh)`` of a free `ElasticCatenary`: the closure's Jacobian
-    in ``(H, V_A)`` inverted (implicit function theorem), ``V_B = wL - V_A``."""
-    _, _, j_xh, j_xv, j_yh, j_yv, _, _ = closure(s.span, s.dh, s.w, s.EA, s.length, s.H, s.V_A)
-    return inverse_2x2(j_xh, j_xv, j_yh, j_yv) * np.array([[1.0], [-1.0]])
+    in ``(H, V_b)`` inverted (implicit function theorem), ``V_B = wL + V_b``."""
+    _, _, j_xh, j_xv, j_yh, j_yv, _, _ = closure(s.H, -s.V_A, s.span, s.dh, s.w, s.EA, s.length)
+    return inverse_2x2(j_xh, j_xv, j_yh, j_yv)
 
 
 def _x_of_s_minus(s, x, H, V_A, w, EA):
-    return H * s / EA + H / w * asinh_step(-V_A / H, w * s / H) - x
+    return positions(H, -V_A, w, EA, s, namespace(s, H))[0] - x
 
 
 class ElasticCatenary(CableSolution):
@@ -220,7 +115,8 @@ class ElasticCatenary(CableSolution):
 
     @cached_property
     def _ratios(self):
-        return ratios(self.H, self.V_A, self.w, self.length)
+        """``(q, d, p, r_q, r_p)`` of the ends (`skcable.cable.closure.end_ratios`)."""
+        return end_ratios(self.H, -self.V_A, self.w, self.length, self._xp)
 
     @cached_property
     def T_A(self):
@@ -248,23 +144,15 @@ class ElasticCatenary(CableSolution):
         """Abscissa of the material point ``s`` (unstretched arc length from A)."""
         s = real("s", s)
         with float_range("s", "x(s)"):
-            x = self.H * s / self.EA + self.H / self.w * asinh_step(self._ratios[0], self.w * s / self.H)
+            x = positions(self.H, -self.V_A, self.w, self.EA, s, namespace(s, self.H))[0]
         return finite_at("s", x, "x(s)")
-
-    def _y_terms(self, s):
-        """The stretch and the inextensible part of ``y(s)``: ``(T(s) - T_A)/w`` as
-        ``s (p_s + q)/(r_s + r_q)`` with ``p_s = q + w s/H`` (the step formed directly)."""
-        q, rq = self._ratios[0], self._ratios[3]
-        p_s = q + self.w * s / self.H
-        shape = s * (p_s + q) / (namespace(p_s).hypot(1.0, p_s) + rq)
-        return s * (0.5 * self.w * s - self.V_A) / self.EA, shape
 
     def y_of_s(self, s):
         """Height above A of the material point ``s``."""
         s = real("s", s)
         with float_range("s", "y(s)"):
-            stretch, shape = self._y_terms(s)
-            return finite_at("s", stretch + shape, "y(s)")
+            y = positions(self.H, -self.V_A, self.w, self.EA, s, namespace(s, self.H))[1]
+            return finite_at("s", y, "y(s)")
 
     def s_of_x(self, x):
         """Material point at abscissa ``x`` in [0, span] (x(s) is increasing)."""
@@ -305,21 +193,8 @@ class ElasticCatenary(CableSolution):
 
     @cached_property
     def stretched_length(self):
-        r"""Length of the loaded cable, ``L0 + ∫ T/EA ds`` (Irvine 1981, §2.2).
-
-        :math:`\int_0^{L_0} T\,ds = \frac{H^2}{2w}\,(p r_p - q r_q + A)`, taken as
-        :math:`\frac{HL_0}{2}\,(K + A/d)` with :math:`K = (p r_p - q r_q)/d`, which is
-        :math:`r_p + q (p + q)/(r_p + r_q)` where p and q share a sign (no cancellation).
-        """
-        xp = self._xp
-        q, d, p, rq, rp = self._ratios
-        A = asinh_step_parts(q, d, p, rq, rp)[1]
-        same = p * q > 0
-        with np.errstate(invalid="ignore", divide="ignore"):
-            rationalised = rp + q * (p + q) / (rp + rq)
-            direct = (p * rp - q * rq) / d
-        K = xp.where(same, rationalised, direct) if xp is np else (rationalised if same else direct)
-        return self.length + 0.5 * self.H * self.length / self.EA * (K + A / d)
+        """Length of the loaded cable, ``L0 + ∫ T/EA ds`` (`skcable.cable.closure.stretched_length`)."""
+        return stretched_length(self.H, -self.V_A, self.w, self.EA, self.length, self._xp)
 
     @cached_property
     def _s_vertex(self):
@@ -355,20 +230,13 @@ class ElasticCatenary(CableSolution):
         return self.dh * self.x_of_s(s_star) / self.span - self.y_of_s(s_star)
 
     def _residuals(self):
-        """The closure evaluated by other formulas than the solve's (`asinh_step_log` for
-        the arc, ``(H/w)(p + q) tanh(A/2)`` for ``(T_B - T_A)/w``), so that neither can hide
-        the other's round-off, each over the size of its terms (its round-off); the end
-        tensions; the vertical balance; the length."""
+        """The closure evaluated by other formulas than the solve's (`skcable.cable.closure.check`),
+        so that neither can hide the other's round-off, each over the size of its terms (its
+        round-off); the end tensions; the vertical balance; the length."""
         xp = self._xp
-        q, d, p, rq, rp = self._ratios
-        A = asinh_step_log(q, d, p, rq, rp)
-        stretch, shape = self.H * self.length / self.EA, self.H / self.w * A
-        yield (stretch + shape - self.span) / (stretch + shape + self.span)  # terms all positive
-        L, w, V_A = self.length, self.w, self.V_A
-        half = self.H / w * xp.tanh(0.5 * A)
-        y_stretch, y_shape = L * (0.5 * w * L - V_A) / self.EA, half * (p + q)
-        operands = L * (0.5 * w * L + xp.abs(V_A)) / self.EA + half * (xp.abs(p) + xp.abs(q))
-        yield (y_stretch + y_shape - self.dh) / (operands + xp.abs(self.dh))
+        yield from check(
+            self.H, -self.V_A, self.w, self.EA, self.length, self.span, self.dh, xp, self._ratios
+        )
         weight = self.w * self.length
         # V_B is w·L - V_A: the sum cancels to round-off of the reactions
         yield (self.V_A + self.V_B - weight) / (xp.abs(self.V_A) + xp.abs(self.V_B) + weight)
@@ -376,25 +244,16 @@ class ElasticCatenary(CableSolution):
 
 
 def _checked_floats(e) -> bool:
-    """`ElasticCatenary._residuals` (and the finiteness of the vertex) written out on the floats
-    of one scene, each term within `ACCEPT`; the values it computes are kept on ``e``. False
-    where the general check must decide (it then raises the right error)."""
+    """`ElasticCatenary._residuals` (and the finiteness of the vertex) on the floats of one
+    scene, each term within `ACCEPT`; the values it computes are kept on ``e``. False where
+    the general check must decide (it then raises the right error)."""
     H, V_A, w, L, EA = e.H, e.V_A, e.w, e.length, e.EA
     try:
-        q, d = -V_A / H, w * L / H
-        p = q + d
-        rq, rp = math.hypot(1.0, q), math.hypot(1.0, p)
-        e_p = p + rp if p >= 0 else 1.0 / (rp - p)  # exp(asinh p), as in `asinh_step_log`
-        e_q = q + rq if q >= 0 else 1.0 / (rq - q)
-        A = math.log1p(d * (e_p + e_q) / ((rp + rq) * e_q))
-        stretch, shape = H * L / EA, H / w * A
-        half = H / w * math.tanh(0.5 * A)
-        y_stretch, operands = L * (0.5 * w * L - V_A) / EA, L * (0.5 * w * L + abs(V_A)) / EA
-        V_B, weight, T_A, T_B = w * L - V_A, w * L, H * rq, H * rp
+        ratios = end_ratios(H, -V_A, w, L)
+        V_B, weight, T_A, T_B = w * L - V_A, w * L, H * ratios[3], H * ratios[4]
         t_a, v_a, t_b, v_b = H / T_A, V_A / T_A, H / T_B, V_B / T_B
         terms = (
-            (stretch + shape - e.span) / (stretch + shape + e.span),
-            (y_stretch + half * (p + q) - e.dh) / (operands + half * (abs(p) + abs(q)) + abs(e.dh)),
+            *check(H, -V_A, w, EA, L, e.span, e.dh, scalar_math, ratios),
             (V_A + V_B - weight) / (abs(V_A) + abs(V_B) + weight),
             0.5 * ((1.0 - t_a) * (1.0 + t_a) - v_a * v_a),
             0.5 * ((1.0 - t_b) * (1.0 + t_b) - v_b * v_b),
@@ -407,9 +266,7 @@ def _checked_floats(e) -> bool:
         all(-ACCEPT <= t <= ACCEPT for t in terms) and -_INF < x_vertex < _INF and -_INF < y_vertex < _INF
     ):
         return False  # NaN too
-    e.__dict__.update(
-        _ratios=(q, d, p, rq, rp), V_B=V_B, T_A=T_A, T_B=T_B, x_vertex=x_vertex, y_vertex=y_vertex
-    )
+    e.__dict__.update(_ratios=ratios, V_B=V_B, T_A=T_A, T_B=T_B, x_vertex=x_vertex, y_vertex=y_vertex)
     return True
 
 

@@ -4,7 +4,8 @@ The closed forms and the line solvers check their arguments one by one (sign, fi
 a value beyond any physical magnitude (a span of 1e308 m, a subnormal EA) passes those checks
 and trips a later one, which names the argument *it* checks (``length`` where the catenary's
 ``cosh`` overflows, ``dh`` where ``span * seabed_slope`` does), or breaks the float arithmetic
-(``ZeroDivisionError`` where ``w`` is 1e-300). `outsized` re-raises both as an `InputError`
+(``ZeroDivisionError`` where ``w`` is 1e-300), or stops a Newton solve whose Jacobian's
+determinant overflows (`ConvergenceError`). `outsized` re-raises them as an `InputError`
 naming the argument whose magnitude lies beyond 10**±`EXTREME` (`extreme`, `blame_extreme`,
 which the conductor functions use alike); with no such argument the error passes as it was.
 """
@@ -13,7 +14,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from skcable.errors import InputError
+from skcable.errors import ConvergenceError, InputError
 
 __all__ = ["EXTREME", "extreme", "blame_extreme", "outsized"]
 
@@ -73,14 +74,14 @@ class blame_extreme:  # noqa: N801 - used like a function: ``with blame_extreme(
 
 
 class outsized(blame_extreme):  # noqa: N801 - used like a function: ``with outsized(span=..., ...):``
-    """`blame_extreme`, and an arithmetic error (`ARITHMETIC`) under the name of the outsized
-    argument (an `InputError`) when there is one; otherwise the error passes unchanged.
-    Costs nothing unless an error passes."""
+    """`blame_extreme`, and an arithmetic error (`ARITHMETIC`) or a solve that does not
+    converge (`ConvergenceError`) under the name of the outsized argument (an `InputError`) when
+    there is one; otherwise the error passes unchanged. Costs nothing unless an error passes."""
 
     __slots__ = ()
 
     def __exit__(self, kind, exc, traceback):
-        if kind is None or not issubclass(kind, (InputError, *ARITHMETIC)):
+        if kind is None or not issubclass(kind, (InputError, ConvergenceError, *ARITHMETIC)):
             return False
         # an argument whose domain holds 0 is outsized only when large: a tiny one is a zero
         values = {
@@ -91,7 +92,8 @@ class outsized(blame_extreme):  # noqa: N801 - used like a function: ``with outs
             name = extreme(**values)
             if name is None:
                 return False
+            fails = "the solve" if issubclass(kind, ConvergenceError) else "the float arithmetic"
             raise InputError(
-                name, f"is beyond any physical magnitude: the float arithmetic fails ({kind.__name__}: {exc})"
+                name, f"is beyond any physical magnitude: {fails} fails ({kind.__name__}: {exc})"
             ) from exc
         return blame_extreme(**values).__exit__(kind, exc, traceback)

@@ -56,6 +56,10 @@ def piecewise(z, small, series, direct):
     evaluated only where it is used (on scalars, only one is evaluated)."""
     if not isinstance(z, np.ndarray):
         return series(z) if small else direct(z)
+    if small.all():  # one branch everywhere: no indexing
+        return series(z)
+    if not small.any():
+        return direct(z)
     out = np.empty(z.shape)
     out[small] = series(z[small])
     out[~small] = direct(z[~small])
@@ -63,7 +67,10 @@ def piecewise(z, small, series, direct):
 
 
 def sinhc_m1(z):
-    """``sinh(z)/z - 1``, accurate for all real z (even function)."""
+    """``sinh(z)/z - 1``, accurate for all real z (even function); a Python float by
+    `sinhc_pair`'s unrolled series."""
+    if not isinstance(z, np.ndarray):
+        return _sinhc_m1_float(z)
     xp = namespace(z)
     return piecewise(
         z,
@@ -114,6 +121,20 @@ def sinhc_pair(z: float) -> tuple[float, float]:
     return s / z - 1.0, (z * math.cosh(z) - s) / (z * z)
 
 
+def _sinhc_m1_float(z: float) -> float:
+    """`sinhc_m1` of a Python float: `sinhc_pair`'s first value, without its second."""
+    if -_SERIES_BELOW < z < _SERIES_BELOW:
+        t = z * z
+        if t < 0.01:
+            return t * ((((_S4 * t + _S5) * t + _S6) * t + _S7) * t + _S8)
+        if t < 0.1:
+            return t * ((((((_S2 * t + _S3) * t + _S4) * t + _S5) * t + _S6) * t + _S7) * t + _S8)
+        return t * (
+            (((((((_S0 * t + _S1) * t + _S2) * t + _S3) * t + _S4) * t + _S5) * t + _S6) * t + _S7) * t + _S8
+        )
+    return math.sinh(z) / z - 1.0
+
+
 def z_minus_tanh(z):
     """``z - tanh(z)`` without cancellation: ``z**2 * dsinhc(z) / cosh(z)``."""
     return z * z * dsinhc(z) / namespace(z).cosh(z)
@@ -130,22 +151,6 @@ def z_minus_tanh_over_cube(z):
     )
 
 
-def asinh_diff(p, q):
-    """``asinh(p) - asinh(q)`` without cancellation when p and q are close.
-
-    Uses ``sinh(A - B) = p*sqrt(1+q**2) - q*sqrt(1+p**2)``, rationalised to
-    ``(p - q)(p + q) / (p*sqrt(1+q**2) + q*sqrt(1+p**2))`` when p and q have
-    the same sign (the only case where the difference cancels).
-    """
-    xp = namespace(p, q)
-    rp, rq = xp.sqrt(1.0 + p * p), xp.sqrt(1.0 + q * q)
-    same = p * q > 0
-    if xp is not np:
-        return xp.arcsinh((p - q) * (p + q) / (p * rq + q * rp) if same else p * rq - q * rp)
-    den = np.where(same, p * rq + q * rp, 1.0)
-    return np.arcsinh(np.where(same, (p - q) * (p + q) / den, p * rq - q * rp))
-
-
 def asinh_step_parts(q, d, p, rq, rp, xp=None):
     r"""``(S, A)``: ``A = asinh(q + d) - asinh(q)`` and ``S = sinh(A)``, from ``q``, the step
     ``d >= 0`` formed directly (``wL/H``, never a difference of rounded ratios), ``p = q + d``
@@ -156,7 +161,7 @@ def asinh_step_parts(q, d, p, rq, rp, xp=None):
     (the only case where it cancels) to :math:`d\,(p + q)/(p r_q + q r_p)`: every operation
     is then free of cancellation, and the result keeps its digits however small ``d`` is
     against ``|q|`` (a taut, steep line: ``d`` ~ 1e-12, ``|q|`` ~ 1). The difference of the
-    rounded ratios, `asinh_diff`, loses ``|q|/d`` ulps there. ``xp``: the back end, if the caller
+    rounded ratios loses ``|q|/d`` ulps there. ``xp``: the back end, if the caller
     knows it (`skcable._xp.namespace`).
     """
     xp = namespace(q, d, p) if xp is None else xp
@@ -190,26 +195,13 @@ def asinh_step(q, d):
     return asinh_step_parts(q, d, p, xp.hypot(1.0, q), xp.hypot(1.0, p))[1]
 
 
-def _exp_asinh(v, rv):
-    """``v + sqrt(1 + v²) = exp(asinh v)`` without cancellation (``rv = sqrt(1 + v²)``)."""
-    if not isinstance(v, np.ndarray) and not isinstance(rv, np.ndarray):
+def exp_asinh(v, rv, xp=None):
+    """``v + sqrt(1 + v²) = exp(asinh v)`` without cancellation (``rv = sqrt(1 + v²)``);
+    ``xp``: the back end, if the caller knows it (`skcable._xp.namespace`)."""
+    if xp is not np and (xp is not None or not isinstance(v, np.ndarray) and not isinstance(rv, np.ndarray)):
         return v + rv if v >= 0 else 1.0 / (rv - v)
     with np.errstate(divide="ignore"):
         return np.where(v >= 0, v + rv, 1.0 / (rv - v))
-
-
-def asinh_step_log(q, d, p, rq, rp):
-    r"""``asinh(q + d) - asinh(q)`` by another formula than `asinh_step_parts`, for the
-    residual checks (which must not share the solve's round-off).
-
-    With :math:`e_v = v + \sqrt{1 + v^2} = e^{\operatorname{asinh} v}`:
-    :math:`\alpha - \beta = \log(e_p/e_q) = \operatorname{log1p}\big(d\,(e_p + e_q)/((r_p +
-    r_q)\,e_q)\big)`, since :math:`e_p - e_q = d\,(e_p + e_q)/(r_p + r_q)`; each factor is a
-    sum of positive terms (``e_v`` for negative ``v`` as ``1/(r_v - v)``).
-    """
-    xp = namespace(q, d, p)
-    e_p, e_q = _exp_asinh(p, rp), _exp_asinh(q, rq)
-    return xp.log1p(d * (e_p + e_q) / ((rp + rq) * e_q))
 
 
 def log_cosh(x):

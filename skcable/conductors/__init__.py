@@ -11,8 +11,9 @@ One concern per module:
   thermal catenary;
 - `_spans`: the ruling span and the exact tension section over suspension insulators;
 - `_frequencies`: natural frequencies of a suspended cable, FE beside Irvine's closed forms;
-- `_lines`, `_grid`, `_closure_z`, `_parabola`, `_inputs`, `_reference`: whole lines at array
-  speed (the line path of `change_of_state`, in rows of `skcable.cable._scratch`);
+- `_lines`, `_solve_z`, `_parabola`, `_inputs`, `_reference`: whole lines at array speed (the
+  line path of `change_of_state`, in rows of `skcable.cable._scratch`; `_solve_z` the z-form
+  solve, checked by the one closure `skcable.cable.closure`);
 - `_rating`: conductor temperature from current and weather (IEEE 738, CIGRE 601);
 - `_strength`, `_fatigue`: residual strength, Poffenberger–Swart (and the clamp amplitude of a
   vibration loop), Wöhler curves and Miner;

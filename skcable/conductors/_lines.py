@@ -1,13 +1,15 @@
 """The change of state of a whole line: every span × every state in one vectorised solve.
 
 `skcable.conductors.change_of_state` comes here when ``span`` (or ``dh``) is an array. The
-reference state fixes each span's unstressed length :math:`L_0` (`_closure_z.length_z` at the
+reference state fixes each span's unstressed length :math:`L_0` (`_solve_z.length_z` at the
 given :math:`H_0`, or the bracketed search of the one-span path at a given sag); each state is
 the elastic catenary of length :math:`kL_0`, weight :math:`q/k`, stiffness :math:`EA\\,k` in the
 plane of the resultant load (`skcable.conductors.thermal_catenary`), solved by
-`_closure_z.solve_z` (one equation in the hyperbolic half-angle, from the parabolic change of
-state). Every element is checked by `_grid.closure_check` (the closure in H and the mean
-vertical tension by other formulas than the solve's); an element that fails the check is
+`_solve_z.solve_z` (one equation in the hyperbolic half-angle, from the parabolic change of
+state, cancellation-free and in place: the conductors' own solver, for speed at 10⁴ spans).
+Every element is checked by the one closure of an elastic segment, `skcable.cable.closure`
+(`check_into`: the closure in H and the mean vertical tension by other formulas than the
+solve's, in place); an element that fails the check is
 solved again by `skcable.cable.elastic_catenary` (its own Newton and checks), which raises if
 it cannot: no element is returned unchecked, none with H <= 0. The sag, the largest tension
 and the loaded length come from the check's end tensions and arc.
@@ -22,20 +24,66 @@ import numpy as np
 
 from skcable.cable._elastic import elastic_catenary_unchecked as elastic_catenary
 from skcable.cable._scratch import scratch
-from skcable.conductors import _closure_z, _grid
+from skcable.cable.closure import CHECK_ROWS, check_into, ratio_of_ends, stretched_length_into, tension_into
+from skcable.conductors import _solve_z
 from skcable.conductors._choice import choose
-from skcable.conductors._grid import closure_check, closure_terms, length_into, sag_into
 from skcable.conductors._inputs import renamed
 from skcable.conductors._parabola import parabola_states
 from skcable.conductors._reference import reference_length
 from skcable.errors import ConvergenceError, InputError
 
-__all__ = ["line_change_of_state", "reference_state", "CHUNK"]
+__all__ = ["line_change_of_state", "reference_state", "sag_into", "CHUNK"]
 
 #: Elements (spans × states) solved in one pass: its rows of scratch stay in the cache.
 CHUNK = 1 << 14
 _INPUTS = 6  # rows of a pass's data: a, h, w, EA, L and the mean vertical tension m
 _RESULTS = ("H", "H_plane", "sag", "T_max", "length")
+
+
+def sag_into(H, w, EA, a, h, rows, out):
+    r"""The sag (largest distance chord–cable along the load) into ``out``, from the end
+    tensions at A in ``rows`` (`skcable.cable.closure.check_into`'s rows 0 and 2; rows 4 to 9
+    are overwritten).
+
+    At the material point whose slope is the chord's, :math:`T_{v,s} = H h/a`, reached after
+    the unstressed length :math:`s = (T_{v,s} - T_{v,A})/w`:
+    :math:`x_s = Hs/EA + (H/w)\ln(p_s/p_A)`,
+    :math:`y_s = s(T_{v,s} + T_{v,A})(1/(2EA) + 1/(T_s + T_A))`, the sag
+    :math:`(h/a)x_s - y_s`.
+    """
+    tv_a, T_A = rows[0], rows[2]
+    tv_s, s, T_s, P_a, u, v = rows[4:]
+    with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
+        np.divide(h, a, out=tv_s)
+        tv_s *= H
+        np.subtract(tv_s, tv_a, out=s)
+        s /= w
+        np.multiply(H, H, out=u)
+        tension_into(tv_s, u, T_s, v)
+        np.abs(tv_a, out=P_a)
+        P_a += T_A
+        ratio_of_ends(tv_a, tv_s, P_a, v, u, out=out)  # p_s / p_A
+        out += 1.0
+        out *= s
+        out *= w
+        np.add(T_s, T_A, out=v)
+        out /= v
+        np.log1p(out, out=out)  # ln(p_s / p_A)
+        out *= H
+        out /= w
+        np.multiply(H, s, out=u)
+        u /= EA
+        out += u  # x_s
+        np.divide(h, a, out=u)
+        out *= u
+        np.reciprocal(v, out=v)
+        np.divide(0.5, EA, out=u)
+        v += u
+        tv_s += tv_a
+        tv_s *= s
+        tv_s *= v  # y_s
+        out -= tv_s
+    return out
 
 
 def _robust(span, dh, w, EA, L, bad, names):
@@ -51,7 +99,7 @@ def _checked(a, h, w, EA, L, H, m, rows, ok, names):
     bad = ~ok
     H[bad], m[bad] = _robust(a, h, w, EA, L, bad, names)
     with np.errstate(all="ignore"):
-        ok = closure_check(H, m, w, EA, L, a, h, rows)
+        ok = check_into(H, m, w, EA, L, a, h, rows)
     if not ok.all():  # elastic_catenary checks its own result: a failure here is a defect
         raise ConvergenceError("change_of_state: a state fails its closure check after the robust solve")
 
@@ -69,10 +117,10 @@ def reference_state(span, dh, w0, EA, value, name):
         reach = 0.5 * w0 * span / H0
     if not np.all(reach < 700.0):
         raise InputError("H0", "makes a span so slack that span·w0/(2 H0) exceeds 700 (cosh overflows)")
-    L0, m0, ok = _closure_z.length_z(span, dh, w0, EA, H0)
-    rows = np.empty((_grid.ROWS, span.size))
+    L0, m0, ok = _solve_z.length_z(span, dh, w0, EA, H0)
+    rows = np.empty((CHECK_ROWS, span.size))
     with np.errstate(all="ignore"):
-        ok &= closure_check(H0, m0, w0, EA, L0, span, dh, rows)
+        ok &= check_into(H0, m0, w0, EA, L0, span, dh, rows)
         ok &= (L0 > 0) & np.isfinite(L0)
     if not ok.all():  # the bracketed search of the one-span path, elementwise
         bad = ~ok
@@ -80,7 +128,7 @@ def reference_state(span, dh, w0, EA, value, name):
             L0[bad] = reference_length(span[bad], dh[bad], w0, EA, H0[bad], None)
             ref = elastic_catenary(span[bad], dh[bad], w0, EA, length=L0[bad])
         m0[bad] = 0.5 * w0 * L0[bad] - ref.V_A
-        closure_terms(H0, m0, w0, EA, L0, span, dh, rows)
+        check_into(H0, m0, w0, EA, L0, span, dh, rows)
     sag0 = sag_into(H0, w0, EA, span, dh, rows, np.empty(span.size))
     if not np.isfinite(sag0).all():
         raise ConvergenceError("change_of_state: non-finite sag0 for these data")
@@ -93,7 +141,7 @@ def _pass(spans, dhs, L0, states, out, names):
     ``(m, spans.size)``."""
     q, w_k, EA_k, k, dh_scale, wind_scale = states
     n, m = spans.size, k.size
-    with scratch(_INPUTS + len(_RESULTS) + max(_closure_z.ROWS, _grid.ROWS), m * n) as block:
+    with scratch(_INPUTS + len(_RESULTS) + max(_solve_z.ROWS, CHECK_ROWS), m * n) as block:
         a, h, w, EA, L, mm = block[:_INPUTS]
         H, H_plane, sag, T_max, length = block[_INPUTS : _INPUTS + len(_RESULTS)]
         work = block[_INPUTS + len(_RESULTS) :]
@@ -108,16 +156,16 @@ def _pass(spans, dhs, L0, states, out, names):
         np.copyto(EA.reshape(grid), EA_k[:, None])
         np.multiply(k[:, None], L0[None, :], out=L.reshape(grid))
         chord = np.sqrt(spans * spans + dhs * dhs)  # the plane turns about the chord
-        ok = _closure_z.solve_z(
+        ok = _solve_z.solve_z(
             a, h, w, EA, L, H_plane, mm, work, chord=np.broadcast_to(chord, grid).reshape(-1)
         )
-        rows = work[: _grid.ROWS]
+        rows = work[:CHECK_ROWS]
         with np.errstate(all="ignore"):
-            ok &= closure_check(H_plane, mm, w, EA, L, a, h, rows)
+            ok &= check_into(H_plane, mm, w, EA, L, a, h, rows)
         if not ok.all():
             _checked(a, h, w, EA, L, H_plane, mm, rows, ok, names)
         np.maximum(rows[2], rows[3], out=T_max)
-        length_into(H_plane, w, EA, L, rows, out=length)
+        stretched_length_into(H_plane, w, EA, L, rows, out=length)
         sag_into(H_plane, w, EA, a, h, rows, out=sag)
         if wind_scale is None:
             np.copyto(H, H_plane)

@@ -86,7 +86,7 @@ def parabolic_cubic(b, d, rtol=1e-8, out=None, rows=None):
 
     With ``c = d^(1/3)``, ``H = c/f`` and ``f³ - x f - 1 = 0``, ``x = b/c``; ``f`` is guessed
     as ``sqrt(x + 1/sqrt(1 + x))`` for ``x >= 0`` (within 1.6 %) and ``1/(y + (1 + y/3)^-2)``,
-    ``y = -x``, below (within 7.1 %; the guess of `skcable.conductors._closure_z`). The root
+    ``y = -x``, below (within 7.1 %; the guess of `skcable.conductors._solve_z`). The root
     exceeds ``max(0, -b)``, where the cubic is convex: from the guess, refined by two steps of
     Newton's method on ``f`` (within 3.2e-6), Newton's method on ``H`` steps above the root and
     then decreases to it, until every relative step is below ``rtol`` (quadratic convergence:

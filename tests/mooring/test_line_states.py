@@ -6,7 +6,8 @@ import numpy as np
 import pytest
 
 from skcable import cable, conductors
-from skcable.conductors import _closure_z, _grid
+from skcable.cable.closure import check_residual
+from skcable.conductors import _solve_z
 from skcable.errors import InputError
 
 KW = dict(EA=3.4e7, alpha=2.3e-5, w0=15.97, t0=15.0)
@@ -101,11 +102,11 @@ def test_spans_broadcast_with_dh_and_per_span_reference(grid):
 
 def test_the_independent_check_catches_a_wrong_tension():
     span, dh, w, EA = 400.0, 30.0, 16.0, 3e7
-    L, m, ok = _closure_z.length_z(np.array([span]), np.array([dh]), w, EA, np.array([2.5e4]))
+    L, m, ok = _solve_z.length_z(np.array([span]), np.array([dh]), w, EA, np.array([2.5e4]))
     assert ok.all()
-    res, bound = _grid.closure_residual(np.array([2.5e4]), m, w, EA, L, span, dh)
+    res, bound = check_residual(np.array([2.5e4]), m, w, EA, L, span, dh)
     assert res[0] <= bound[0]
-    res, bound = _grid.closure_residual(np.array([2.5e4 * (1 + 1e-9)]), m, w, EA, L, span, dh)
+    res, bound = check_residual(np.array([2.5e4 * (1 + 1e-9)]), m, w, EA, L, span, dh)
     assert res[0] > bound[0]
 
 

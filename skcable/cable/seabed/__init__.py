@@ -6,22 +6,23 @@ friction ``C_B`` on the grounded part (J.M. Jonkman, "Dynamics modeling and load
 of an offshore floating wind turbine", NREL, 2007; H.M. Irvine, "Cable Structures", MIT
 Press, 1981). One concern per module:
 
-- `closure`: the closure equations of the grounded line and their closed-form parts
-  (the part hanging from an anchor above the seabed, the vertical hanging length);
+- the closure equations of the grounded line and their closed-form parts (the part
+  hanging from an anchor above the seabed, the vertical hanging length) are those of every
+  elastic segment, `skcable.cable.closure` (`on_seabed`, `grounded_closure`);
 - the regimes: `free` (the line hangs clear of the seabed), `grounded` (it rests on the
   seabed and rises to B: the Newton solve of the closure) and `heap` (longer than its
   L-shape, ``H = 0``);
 - `solve`: `elastic_catenary`, which picks each element's regime and solves it;
 - `solution`: `SeabedCatenary`, the solution in every regime (maps, checks, stiffness);
-- the sloped seabed: `slope_closure` (its closure and Jacobian), `sloped`
+- the sloped seabed (its closure and Jacobian `skcable.cable.closure.on_slope`): `sloped`
   (`sloped_seabed_catenary`) and `sloped_solution` (`SlopedSeabedCatenary`).
 
-Data flow: ``solve`` → (``free`` | ``heap`` | ``grounded`` → ``closure``) → ``solution``;
-``sloped`` starts from ``solve`` in the slope's frame → ``slope_closure`` →
+Data flow: ``solve`` → (``free`` | ``heap`` | ``grounded`` → `skcable.cable.closure`) → ``solution``;
+``sloped`` starts from ``solve`` in the slope's frame → `skcable.cable.closure` →
 ``sloped_solution``.
 """
 
-from skcable.cable.seabed.closure import anchor_part, grounded_closure, hanging_length
+from skcable.cable.closure import anchor_part, grounded_closure, hanging_length
 from skcable.cable.seabed.sloped import sloped_seabed_catenary
 from skcable.cable.seabed.sloped_solution import SlopedSeabedCatenary
 from skcable.cable.seabed.solution import SeabedCatenary

@@ -9,12 +9,11 @@ With the anchor above the seabed the free line is solved and checked against the
 
 from __future__ import annotations
 
-import math
-
 import numpy as np
 
 from skcable._xp import namespace, scalar_math
 from skcable.cable._elastic import elastic_catenary as free_elastic_catenary
+from skcable.cable.closure import positions
 
 __all__ = ["free_part", "lifted"]
 
@@ -24,7 +23,8 @@ def lifted(span, dh, w, EA, L):
 
     At lift-off ``V_A = 0``, ``V_B = wL``: the height equation gives
     ``T + H = P = wL²/D`` with ``D = dh - wL²/(2EA)``, so ``H = (P - (wL)²/P)/2``;
-    the line is lifted where ``span`` reaches the lift-off ``X(H, wL)``. With
+    the line is lifted where ``span`` reaches the lift-off run ``X(H, wL)`` (the hanging piece
+    from ``V_b = 0``, `skcable.cable.closure.positions`). With
     ``D <= 0`` the line's own stretch exceeds ``dh`` and it always touches.
     """
     D = dh - w * L * L / (2.0 * EA)
@@ -35,15 +35,14 @@ def lifted(span, dh, w, EA, L):
         H = 0.5 * (P - (w * L) * (w * L / P))
         if not H > 0:
             return True, 0.0
-        X = H * L / EA + H / w * math.asinh(w * L / H)
-        return span >= X, H
+        return span >= positions(H, 0.0, w, EA, L)[0], H
     touches = np.asarray(D <= 0)
     with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
         P = w * L * L / np.where(touches, 1.0, D)
         H = 0.5 * (P - (w * L) * (w * L / P))
         ok = ~touches & (H > 0)
         H_safe = np.where(ok, H, 1.0)
-        X = H_safe * L / EA + H_safe / w * np.arcsinh(w * L / H_safe)
+        X = positions(H_safe, 0.0, w, EA, L, np)[0]
     return ~touches & (~ok | (span >= X)), np.where(ok, H, 0.0)
 
 

@@ -1,6 +1,6 @@
 r"""The grounded regime: the line rests on the seabed from the anchor (or from a first
 touchdown) and rises to the fairlead; its fairlead forces ``(H, V_B)`` solve the
-closure of `skcable.cable.seabed.closure` (J.M. Jonkman, "Dynamics modeling and
+closure of `skcable.cable.closure.on_seabed` (J.M. Jonkman, "Dynamics modeling and
 loads analysis of an offshore floating wind turbine", NREL, 2007).
 
 The iteration starts from the frictionless inextensible touchdown line (a monotone
@@ -12,71 +12,50 @@ the lengths that enter it). One scene runs on Python floats, arrays elementwise 
 
 from __future__ import annotations
 
-import math
-
 import numpy as np
 
 from skcable._newton2 import solve2
 from skcable._xp import namespace
 from skcable.cable._roots import find_root
-from skcable.cable.seabed.closure import anchor_part, grounded_closure
+from skcable.cable.closure import anchor_part, grounded_closure
 
-__all__ = ["solve_grounded", "solve_grounded_scalar"]
+__all__ = ["inextensible_guess", "solve_grounded"]
 
 
 def _touchdown_run(h, span, dh, L1):
     """``X(h) - span`` of the frictionless inextensible touchdown line, ``h = H/w`` (m):
     ``X(h) = L_1 - v + h asinh(v/h)``, ``v = sqrt(dh^2 + 2 dh h)``, increasing in ``h``."""
-    xp = namespace(h, span)
+    xp = namespace(h)
     v = xp.sqrt(dh * dh + 2.0 * dh * h)
     return L1 - v + h * xp.arcsinh(v / h) - span
 
 
-def _touchdown_run_scalar(h, span, dh, L1):
-    """`_touchdown_run` on Python floats."""
-    v = math.sqrt(dh * dh + 2.0 * dh * h)
-    return L1 - v + h * math.asinh(v / h) - span
-
-
-def inextensible_guess(span, dh, w, EA, L, H0):
-    """Frictionless inextensible touchdown line, lengthened by the strain of
-    the free solution (``H0``): ``h = H/w`` from the monotone `_touchdown_run`.
-    Returns the starting ``(H, V_B)`` (N), arrays."""
+def inextensible_guess(span, dh, w, EA, L, H0, xp=np):
+    """Frictionless inextensible touchdown line, lengthened by the strain of the free solution
+    (``H0``): ``h = H/w`` from the monotone `_touchdown_run`. Returns the starting ``(H, V_B)``
+    (N); Python floats (``xp`` `skcable._xp.scalar_math`) or arrays."""
     L1 = L * (1.0 + H0 / EA)
-    ok = L1 > dh * (1 + 1e-9)
-    h_max = np.where(ok, (L1 * L1 - dh * dh) / (2.0 * np.where(ok, dh, 1.0)), 1.0)
+    cap = w * L * (1 - 1e-9)
+    ok = L1 > dh * (1 + 1e-9)  # else dh > 0: every expression below stays finite
+    h_max = xp.where(ok, (L1 * L1 - dh * dh) / (2.0 * xp.where(ok, dh, 1.0)), 1.0)
     lo, hi = h_max * 1e-12, h_max
     f_lo, f_hi = _touchdown_run(lo, span, dh, L1), _touchdown_run(hi, span, dh, L1)
     inside = ok & (f_lo < 0) & (f_hi > 0)
-    h = np.where(f_lo >= 0, lo, hi)
-    if inside.any():
+    h = xp.where(f_lo >= 0, lo, hi)
+    if xp is not np and inside:  # a starting point only: Newton on the full equations refines it
+        h = find_root(_touchdown_run, lo, hi, (span, dh, L1), what="seabed guess", xtol=1e-9 * hi)[0]
+    elif xp is np and inside.any():
         idx = np.flatnonzero(inside)
         args = [v[idx] for v in (lo, hi, span, dh, L1)]
         if idx.size == 1:  # Brent's method on floats: the elementwise search costs ~10 ms a call
             args = [float(v[0]) for v in args]
-        # a starting point only: Newton on the full equations refines it
-        xtol = 1e-9 * float(args[1]) if idx.size == 1 else None  # the scalar path's (Brent's)
-        root, _ = find_root(_touchdown_run, args[0], args[1], tuple(args[2:]), what="seabed guess", xtol=xtol)
-        h[idx] = root
-    h = np.where(ok, h, H0 / w)
-    V = np.where(ok, np.sqrt(dh * dh + 2.0 * dh * h), w * L * (1 - 1e-9))
-    return w * h, np.minimum(V * w, w * L * (1 - 1e-9))
-
-
-def inextensible_guess_scalar(span, dh, w, EA, L, H0):
-    """`inextensible_guess` of one scene, on Python floats."""
-    L1 = L * (1.0 + H0 / EA)
-    cap = w * L * (1 - 1e-9)
-    if not L1 > dh * (1 + 1e-9):
-        return w * (H0 / w), min(cap * w, cap)
-    h_max = (L1 * L1 - dh * dh) / (2.0 * dh)
-    lo, hi = h_max * 1e-12, h_max
-    f_lo, f_hi = _touchdown_run_scalar(lo, span, dh, L1), _touchdown_run_scalar(hi, span, dh, L1)
-    h = lo if f_lo >= 0 else hi
-    if f_lo < 0 and f_hi > 0:  # a starting point only: Newton on the full equations refines it
-        h, _ = find_root(_touchdown_run_scalar, lo, hi, (span, dh, L1), what="seabed guess", xtol=1e-9 * hi)
-    V = math.sqrt(dh * dh + 2.0 * dh * h)
-    return w * h, min(V * w, cap)
+        xtol = 1e-9 * float(args[1]) if idx.size == 1 else None  # Brent's, as on floats
+        h[idx] = find_root(_touchdown_run, args[0], args[1], tuple(args[2:]), what="seabed guess", xtol=xtol)[
+            0
+        ]
+    h = xp.where(ok, h, H0 / w)
+    V = xp.where(ok, xp.sqrt(dh * dh + 2.0 * dh * h), cap)
+    return w * h, xp.minimum(V * w, cap)
 
 
 def _closure(H, V, span, dh, w, EA, L, mu_w, depth, size_x, size_z):
@@ -108,19 +87,14 @@ def _solve(span, dh, w, EA, L, mu_w, H, V, depth):
     return result.x, result.y, result.history
 
 
-def solve_grounded_scalar(span, dh, w, EA, L, mu_w, H0, depth):
-    """`solve_grounded` of one scene, on Python floats (the same iteration)."""
-    _, _, x1, s1, _ = anchor_part(H0, w, EA, depth)
-    H, V = inextensible_guess_scalar(span - x1, dh + depth, w, EA, L - s1, H0)
-    return _solve(span, dh, w, EA, L, mu_w, H, V, depth)
-
-
 def solve_grounded(span, dh, w, EA, L, mu_w, H0, depth):
-    """Newton with backtracking on the grounded closure (`skcable._newton2.solve2`), arrays of
-    contact elements, each to its round-off.
+    """Newton with backtracking on the grounded closure (`skcable._newton2.solve2`) from
+    `inextensible_guess`, to its round-off: one scene on Python floats, or arrays of contact
+    elements.
 
     Returns ``(H, V_B, history)``: the fairlead forces (N) and the largest scaled
     residual at each iteration."""
+    xp = namespace(span, H0)
     _, _, x1, s1, _ = anchor_part(H0, w, EA, depth)
-    H, V = inextensible_guess(span - x1, dh + depth, w, EA, L - s1, H0)
+    H, V = inextensible_guess(span - x1, dh + depth, w, EA, L - s1, H0, xp)
     return _solve(span, dh, w, EA, L, mu_w, H, V, depth)

@@ -1,7 +1,7 @@
 r"""The heap regime: a line longer than its L-shape lies with its slack in a heap on the seabed.
 
 With the vertical hanging lengths :math:`l = 2d/(1 + \sqrt{1 + 2 w d/EA})` over the heights
-``d`` of B and A above the seabed (`skcable.cable.seabed.closure.hanging_length`, the
+``d`` of B and A above the seabed (`skcable.cable.closure.hanging_length`, the
 root of :math:`d = l + w l^2/(2EA)`), a line with :math:`X \le L - l_A - l_B` has no
 solution with :math:`H > 0`: its slack lies on the seabed, :math:`H = 0`,
 :math:`V_B = w l_B`, :math:`\partial V_B/\partial Z = w/(1 + w l_B/EA)` (MoorPy's slack

@@ -15,8 +15,7 @@ import numpy as np
 from skcable._checks import nonnegative, positive, real, require
 from skcable.cable._elastic import elastic_catenary as free_elastic_catenary
 from skcable.cable._extreme import outsized
-from skcable.cable.seabed.closure import hanging_length
-from skcable.cable.seabed.slope_closure import sloped_closure
+from skcable.cable.closure import hanging_length, on_slope
 from skcable.cable.seabed.sloped_solution import SlopedSeabedCatenary
 from skcable.cable.seabed.solve import elastic_catenary
 from skcable.errors import ConvergenceError, InputError
@@ -31,7 +30,8 @@ def _scaled_closure(u, scene, scale, chord, history):
     if not (H > 0 and 0 <= L_B < scene[4]):
         return np.array([1e3 * chord, 1e3 * chord])
     span, dh, w, EA, L, m, mu = scene
-    r = np.array(sloped_closure(span, dh, w, EA, L, m, mu, H, L_B))
+    X, Z = on_slope(float(H), float(L_B), w, EA, L, m, mu)[:2]
+    r = np.array([X - span, Z - dh])
     history.append(float(np.max(np.abs(r)) / chord))
     return r / chord
 

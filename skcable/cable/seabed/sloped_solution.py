@@ -12,7 +12,7 @@ point ``s <= L_B`` lies at the stretched distance
     y = y_t + \frac{\sigma(V_t + w\sigma/2)}{EA} + \frac{T - T_t}{w}
 
 (H.M. Irvine, "Cable Structures", MIT Press, 1981). Its fairlead stiffness follows from the
-closure's Jacobian (`skcable.cable.seabed.slope_closure`) by the implicit function
+closure's Jacobian (`skcable.cable.closure.on_slope`) by the implicit function
 theorem: :math:`\partial(H, L_B)/\partial(\mathrm{span}, dh) = J^{-1}` and
 :math:`V_B = H\tan\alpha + w(L - L_B)`, so
 :math:`K = \begin{pmatrix}1 & 0\\ \tan\alpha & -w\end{pmatrix} J^{-1}`.
@@ -23,9 +23,8 @@ from __future__ import annotations
 import numpy as np
 
 from skcable._checks import real, require, whole
-from skcable.cable._special import asinh_step
 from skcable.cable.arc_samples import arc_samples, write_profile
-from skcable.cable.seabed.slope_closure import slope_frame, sloped_closure, sloped_jacobian
+from skcable.cable.closure import grounded, on_slope, positions, slope_frame, tensioned
 from skcable.errors import ConvergenceError
 from skcable.results import ProfileMixin
 
@@ -64,12 +63,10 @@ class SlopedSeabedCatenary(ProfileMixin):
         self._cos, self._sin = cos, sin
         self._k = k = w * (sin + friction * cos)  # tension gradient along the grounded line
         T_td = H / cos
-        ell = min(L_B, T_td / k) if k > 0 else L_B
-        self._slack = L_B - ell  # untensioned grounded length at the anchor
+        self._slack = L_B - tensioned(T_td, L_B, k)  # untensioned grounded length at the anchor
         self.T_touchdown = T_td
-        self.T_A = max(T_td - k * L_B, 0.0)
-        grounded = L_B + (T_td * ell - 0.5 * k * ell * ell) / EA
-        self.x_touchdown, self.y_touchdown = grounded * cos, grounded * sin
+        stretch, _, _, self.T_A = grounded(T_td, L_B, k, EA)
+        self.x_touchdown, self.y_touchdown = (L_B + stretch) * cos, (L_B + stretch) * sin
         self.V_touchdown = H * slope
         self.V_B = self.V_touchdown + w * (length - L_B)
         self.H_A = self.T_A * cos
@@ -88,8 +85,9 @@ class SlopedSeabedCatenary(ProfileMixin):
         """``(X - span, Z - dh)`` (m) of the grounded solution: what the solve drove to zero."""
         if self.length_on_seabed == 0.0:
             return 0.0, 0.0  # the free line: `elastic_catenary` checked its own residual
-        scene = (self.span, self.dh, self.w, self.EA, self.length, self.seabed_slope, self.friction)
-        return sloped_closure(*scene, self.H, self.length_on_seabed)
+        scene = (self.w, self.EA, self.length, self.seabed_slope, self.friction)
+        X, Z = on_slope(self.H, self.length_on_seabed, *scene)[:2]
+        return X - self.span, Z - self.dh
 
     def residual(self):
         """Largest closure residual over the chord."""
@@ -118,10 +116,8 @@ class SlopedSeabedCatenary(ProfileMixin):
         H, w, EA, V_t = self.H, self.w, self.EA, self.V_touchdown
         sigma = np.maximum(s - self.length_on_seabed, 0.0)
         V = V_t + w * sigma
-        T, T_t = np.hypot(H, V), self.T_touchdown
-        x = self.x_touchdown + H * sigma / EA + H / w * asinh_step(V_t / H, w * sigma / H)
-        y = self.y_touchdown + sigma * (V_t + 0.5 * w * sigma) / EA + sigma * (V + V_t) / (T + T_t)
-        return x, y, T, V
+        x, y = positions(H, V_t, w, EA, sigma, np)  # the hanging piece from the touchdown
+        return self.x_touchdown + x, self.y_touchdown + y, np.hypot(H, V), V
 
     def _maps(self, s):
         """``x, y, T, angle`` (m, N, rad) at unstretched arc length ``s`` (checked)."""
@@ -167,9 +163,8 @@ class SlopedSeabedCatenary(ProfileMixin):
         line just touches the slope)."""
         if self.free is not None:
             return np.asarray(self.free.stiffness(), dtype=float)
-        (X_H, X_L), (Z_H, Z_L) = sloped_jacobian(
-            self.w, self.EA, self.length, self.seabed_slope, self.friction, self.H, self.length_on_seabed
-        )
+        scene = (self.w, self.EA, self.length, self.seabed_slope, self.friction)
+        X_H, X_L, Z_H, Z_L = on_slope(self.H, self.length_on_seabed, *scene)[2:]
         det = X_H * Z_L - X_L * Z_H
         inverse = np.array([[Z_L, -X_L], [-Z_H, X_H]]) / det
         K = np.array([[1.0, 0.0], [self.seabed_slope, -self.w]]) @ inverse

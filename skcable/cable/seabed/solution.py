@@ -9,7 +9,7 @@ height ``seabed <= 0`` is, per element of the input, in one of three regimes (ch
 - **grounded**: it rests on the seabed from the anchor (or from a first touchdown, the
   anchor above the seabed) and rises tangentially to B, with Coulomb friction on the
   grounded part (J.M. Jonkman, "Dynamics modeling and loads analysis of an offshore
-  floating wind turbine", NREL, 2007; `skcable.cable.seabed.closure`);
+  floating wind turbine", NREL, 2007; `skcable.cable.closure`);
 - **heap**: longer than its L-shape, its slack lies in a heap, ``H = 0``
   (`skcable.cable.seabed.heap`).
 
@@ -29,9 +29,8 @@ from skcable._checks import real, require, whole
 from skcable._xp import namespace
 from skcable.cable._elastic import ElasticCatenary, elastic_stiffness, inverse_2x2
 from skcable.cable._roots import find_root
-from skcable.cable._special import asinh_step
+from skcable.cable.closure import grounded, grounded_closure, positions, stretched_length, tensioned
 from skcable.cable.seabed import heap as heap_state
-from skcable.cable.seabed.closure import grounded_closure, tensioned
 from skcable.cable.solution import CableSolution
 from skcable.errors import InputError
 
@@ -48,14 +47,9 @@ def _plus_zero(value, like):
     return value + 0.0 * like
 
 
-def _primitive(tv, H):
-    """``∫ sqrt(H² + tv²) d(tv)`` (N²)."""
-    return 0.5 * (tv * np.hypot(H, tv) + H * H * np.arcsinh(tv / H))
-
-
 def _left_run(s, x, H, V1, w, EA):
     """Abscissa of the point ``s`` on the part hanging from an anchor above the seabed, less ``x``."""
-    return H * s / EA + H / w * asinh_step(-V1 / H, w * s / H) - x
+    return positions(H, -V1, w, EA, s, namespace(s, H))[0] - x
 
 
 def _catenary_y_terms(hang, s):
@@ -161,14 +155,9 @@ class SeabedCatenary(CableSolution):
         return tensioned(self.H, self.length_on_seabed, self._mu_w) + 0.0 * self.H
 
     # -- the part hanging from an anchor above the seabed (empty otherwise) -----------
-    def _left_x(self, s):
-        H = self._Hr
-        return H * s / self.EA + H / self.w * asinh_step(-self._V1 / H, self.w * s / H)
-
-    def _left_y(self, s):
-        tv, tv_a = self.w * s - self._V1, -self._V1
-        rise = s * (tv + tv_a) / (np.hypot(self._Hr, tv) + np.hypot(self._Hr, tv_a))  # w s formed directly
-        return s * (0.5 * self.w * s - self._V1) / self.EA + rise
+    def _left(self, s):
+        """``(x, y)`` of the point ``s`` on the part hanging from an anchor above the seabed."""
+        return positions(self._Hr, -self._V1, self.w, self.EA, s, namespace(s, self._Hr, self._V1))
 
     @cached_property
     def x_landing(self):
@@ -177,7 +166,7 @@ class SeabedCatenary(CableSolution):
         return self._pick(partial(_times_zero, self.span), self._taut_x_landing)
 
     def _taut_x_landing(self):
-        return _out(self._left_x(self.length_to_seabed))
+        return _out(self._left(self.length_to_seabed)[0])
 
     @cached_property
     def x_touchdown(self):
@@ -186,9 +175,8 @@ class SeabedCatenary(CableSolution):
         return self._pick(partial(_plus_zero, self.span, self.H), self._taut_x_touchdown)
 
     def _taut_x_touchdown(self):
-        ell = tensioned(self.H, self.length_on_seabed, self._mu_w)
-        grounded = self.length_on_seabed + (self.H * ell - 0.5 * self._mu_w * ell * ell) / self.EA
-        return _out(self.x_landing + grounded)
+        stretch = grounded(self.H, self.length_on_seabed, self._mu_w, self.EA, self._xp)[0]
+        return _out(self.x_landing + self.length_on_seabed + stretch)
 
     @property
     def H_B(self):
@@ -220,10 +208,12 @@ class SeabedCatenary(CableSolution):
         return self._pick(partial(_plus_zero, heap, 0.0), self._taut_stretched_length)
 
     def _taut_stretched_length(self):
-        H, V1 = self._Hr, self._V1
-        left = self.length_to_seabed + (_primitive(0.0, H) - _primitive(-V1, H)) / (self.w * self.EA)
-        grounded = self.x_touchdown - self.x_landing
-        return _out(left + grounded + self._hanging.stretched_length)
+        left = 0.0 * self.H
+        if np.any(self._V1 > 0):  # the part hanging from an anchor above the seabed
+            with np.errstate(invalid="ignore", divide="ignore"):
+                hang = stretched_length(self._Hr, -self._V1, self.w, self.EA, self.length_to_seabed, self._xp)
+            left = self._xp.where(self._V1 > 0, hang, left)
+        return _out(left + self.x_touchdown - self.x_landing + self._hanging.stretched_length)
 
     def _at_b(self):
         """``span`` broadcast: where a heap state puts its vertex and lowest point."""
@@ -286,7 +276,7 @@ class SeabedCatenary(CableSolution):
         d = np.maximum(on - (L_B - ell), 0.0)
         ground = self.x_landing + on + (self.H_A * d + 0.5 * self._mu_w * d * d) / self.EA
         hang = self.x_touchdown + self._hanging.x_of_s(np.maximum(s - s1 - L_B, 0.0))
-        left = self._left_x(np.minimum(s, s1))
+        left = self._left(np.minimum(s, s1))[0]
         return _out(np.where(s <= s1, left, np.where(s <= s1 + L_B, ground, hang)))
 
     def _taut_y_of_s(self, s):
@@ -294,7 +284,7 @@ class SeabedCatenary(CableSolution):
         s = self._arc("s", s)
         s1, L_B = self.length_to_seabed, self.length_on_seabed
         hang = self._y_t + self._hanging.y_of_s(np.maximum(s - s1 - L_B, 0.0))
-        left = self._left_y(np.minimum(s, s1))
+        left = self._left(np.minimum(s, s1))[1]
         return _out(np.where(s <= s1, left, np.where(s <= s1 + L_B, self._y_t, hang)))
 
     def _arc(self, name, s):
@@ -371,7 +361,7 @@ class SeabedCatenary(CableSolution):
         scale = chord + xp.abs(stretch) + xp.abs(shape) + xp.abs(self._y_t)
         yield (self._y_t + stretch + shape - self.dh) / scale
         # the anchor part lands on the seabed
-        left = self._left_y(self.length_to_seabed)
+        left = self._left(self.length_to_seabed)[1]
         yield (left - self._y_t) * (self._V1 > 0) / (chord + xp.abs(self._y_t))
         weight = self.w * self.length
         # the seabed carries w·L_B: V_A + V_B + w·L_B = w·L

@@ -20,9 +20,9 @@ from skcable._checks import broadcast, float_range, nonnegative, positive, real,
 from skcable.cable._answers import check_catenary
 from skcable.cable._elastic import elastic_catenary as free_elastic_catenary
 from skcable.cable._extreme import outsized
-from skcable.cable.seabed.closure import anchor_part, hanging_length
+from skcable.cable.closure import anchor_part, hanging_length
 from skcable.cable.seabed.free import free_part, lifted
-from skcable.cable.seabed.grounded import solve_grounded, solve_grounded_scalar
+from skcable.cable.seabed.grounded import solve_grounded
 from skcable.cable.seabed.solution import SeabedCatenary
 from skcable.cable.solution import checked_closed_form
 from skcable.errors import InputError
@@ -86,7 +86,9 @@ def elastic_catenary(span, dh, w, EA, *, length, seabed=None, friction=0.0):
         Newton stalled; the error carries the residual history.
     """
     if seabed is None:
-        if friction is not None and np.any(np.asarray(friction) != 0.0):
+        if friction is not None and (
+            friction != 0.0 if type(friction) is float else np.any(np.asarray(friction) != 0.0)
+        ):
             raise InputError("friction", "applies to a line on the seabed: give seabed= as well")
         return free_elastic_catenary(span, dh, w, EA, length=length)
     span = positive("span", span)
@@ -177,9 +179,7 @@ def _seabed_catenary_array(span, dh, w, EA, L0, seabed, friction):
         args = [np.broadcast_to(v, shape)[taut] for v in (span, dh, w, EA, L0, friction * w, guess, depth)]
         if shape == ():  # one scene: the same Newton on Python floats
             args = [float(v[0]) for v in args]
-            Hc, Vc, history = solve_grounded_scalar(*args)
-        else:
-            Hc, Vc, history = solve_grounded(*args)
+        Hc, Vc, history = solve_grounded(*args)
         V1 = anchor_part(Hc, args[2], args[3], args[7])[0]
         H[taut], V_t[taut], V_1[taut] = Hc, 0.0, V1
         L_B[taut] = np.maximum(args[4] - V1 / args[2] - Vc / args[2], 0.0)
@@ -214,7 +214,7 @@ def _seabed_catenary_scalar(span, dh, w, EA, L0, seabed, friction):
     if heap:  # the heap state: H = 0, vertical parts at A and B, the slack between
         H, V_t, V_1, L_B = 0.0, 0.0, w * l_A, L0 - l_A - l_B
     elif contact:
-        H, Vc, history = solve_grounded_scalar(span, dh, w, EA, L0, friction * w, guess, depth)
+        H, Vc, history = solve_grounded(span, dh, w, EA, L0, friction * w, guess, depth)
         V_1 = anchor_part(H, w, EA, depth)[0]
         V_t, L_B = 0.0, max(L0 - V_1 / w - Vc / w, 0.0)
     y_t = seabed if contact else 0.0

@@ -1,6 +1,6 @@
 """`LineArrays`: the read-only per-segment and per-joint numbers of a `Line`.
 
-The closed form of a multi-segment line (`skcable.mooring.segments.closure`), its heap
+The closed form of a multi-segment line (`skcable.mooring.segments.state`), its heap
 state and its solution read a line through this view only. Arrays are read-only NumPy
 arrays; the ``*_list`` fields hold the same numbers as Python floats, for the scalar
 parts of the closed form (``math`` on floats is 5–20 times faster than NumPy on one number).

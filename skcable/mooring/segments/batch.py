@@ -2,18 +2,12 @@ r"""Many scenes of one single-segment line at once: Newton's method on arrays, o
 
 A mooring system's lines are often of one model (a spread mooring: the same chain from every
 anchor). Solving them one by one runs a Python-float Newton per line; here the closure of
-`skcable.mooring.segments.closure` for a line of **one segment** without attachments,
+`skcable.mooring.segments.state` for a line of **one segment** without attachments,
 from an anchor on a flat seabed (``contact``) or hanging free, is evaluated over the array of
 scenes, and `skcable._newton2.solve2` runs one Newton per element on its array back end
 (H.M. Irvine, "Cable Structures", MIT Press, 1981; J.M. Jonkman, "Dynamics modeling and loads
 analysis of an offshore floating wind turbine", NREL, 2007, for the grounded part with
-Coulomb friction):
-
-.. math::
-    X = \Delta x(H, V, L - a) + a + e_g, \qquad Z = \Delta y(H, V, L - a),
-
-with ``a = max(-(V - wL)/w, 0)`` the grounded length where the line touches down (``V < wL``)
-and ``e_g`` its stretch under the friction ``C_B w`` per unit length (`closure.grounded_piece`).
+Coulomb friction; `skcable.cable.closure.segment`).
 
 Each converged element is then taken as the scalar closed form at its ``(H, V)``
 (`closure_state`) and checked as `Line.solve` checks its solutions: its closure residual over
@@ -29,8 +23,9 @@ import math
 import numpy as np
 
 from skcable._newton2 import solve2
-from skcable.mooring.segments.closure import closure_state, grounded_piece, piece_terms
+from skcable.cable.closure import segment
 from skcable.mooring.segments.solution import CLOSURE_TOLERANCE, LineSolution
+from skcable.mooring.segments.state import closure_state
 
 __all__ = ["batchable", "solve_batch"]
 
@@ -44,8 +39,9 @@ def batchable(line) -> bool:
 
 class _Closure:
     """The closure ``(X - span, Z - dh)``, its Jacobian and the sizes of its terms over arrays of
-    ``(H, V)`` (the closure of `solve2`'s array back end; module docstring). Outside the closed
-    form's domain (``H <= 0``, the whole line on the seabed) the residual is NaN."""
+    ``(H, V)`` (the closure of `solve2`'s array back end): one segment of the one closure,
+    `skcable.cable.closure.segment`. Outside the closed form's domain (``H <= 0``, the whole
+    line on the seabed) the residual is NaN."""
 
     def __init__(self, line):
         arrays = line.arrays
@@ -53,22 +49,8 @@ class _Closure:
         self.contact, self.m = line.contact, line.friction * arrays.w_list[0]
 
     def __call__(self, H, V, span, dh, size1, size2):
-        L, w, EA, m = self.L, self.w, self.EA, self.m
-        below = V - w * L  # the vertical force at the anchor's end of the segment
-        touches = below < 0 if self.contact else np.zeros(np.shape(V), dtype=bool)
-        a = np.where(touches, -below / w, 0.0)  # grounded length
-        Vb = np.where(touches, 0.0, below)
-        dx, dy, x_h, x_v, y_h, y_v = piece_terms(
-            np, H, V, Vb, np.hypot(H, V), np.hypot(H, Vb), L - a, w, EA, np.where(touches, 0.0, 1.0)
-        )
-        # the grounded piece: tension H at the touchdown, falling by m per unit length to the anchor
-        da = np.where(a > 0, -1.0 / w, 0.0)  # ∂a/∂V
-        stretch, g_h, g_v = grounded_piece(np, H, 1.0, 0.0, a, da, m, EA)[:3]
-        X = dx + np.where(touches, a + stretch, 0.0)
-        outside = ~(H > 0) | (touches & ~(V > 0))
-        f1 = np.where(outside, np.nan, X - span)
-        jxh, jxv = x_h + np.where(touches, g_h, 0.0), x_v + np.where(touches, g_v, 0.0)
-        return f1, dy - dh, jxh, jxv, y_h, y_v, size1, size2
+        X, Z, *jac = segment(H, V, self.w, self.EA, self.L, self.m, self.contact, np)
+        return (X - span, Z - dh, *jac, size1, size2)
 
 
 def solve_batch(line, spans, dhs, starts) -> list:

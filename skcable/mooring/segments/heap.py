@@ -15,7 +15,7 @@ import numpy as np
 
 from skcable.cable._roots import find_root
 from skcable.errors import InputError
-from skcable.mooring.segments.closure import ClosureState
+from skcable.mooring.segments.state import ClosureState
 
 __all__ = ["heap_state", "vertical"]
 

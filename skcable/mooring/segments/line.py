@@ -6,7 +6,7 @@ weight in water per unstretched length ``w_i > 0`` and axial stiffness ``EA_i``
 (`skcable.mooring.segments.parts`). Joint ``j`` lies between segments ``j-1`` and
 ``j`` and may carry a point force ``P_j``. With no horizontal point load the horizontal
 tension ``H`` of the suspended part is the same in every segment; the closure
-``X(H, V) = span``, ``Z(H, V) = dh`` of `skcable.mooring.segments.closure` (H.M.
+``X(H, V) = span``, ``Z(H, V) = dh`` of `skcable.mooring.segments.state` (H.M.
 Irvine, "Cable Structures", MIT Press, 1981; J.M. Jonkman, "Dynamics modeling and loads
 analysis of an offshore floating wind turbine", NREL, 2007, for the grounded part) is
 solved by Newton's method with its analytic Jacobian, from a previous solution (a warm
@@ -32,11 +32,11 @@ from skcable.errors import ConvergenceError, InputError
 from skcable.mooring.bathymetry import Bathymetry
 from skcable.mooring.segments._answers import check_line
 from skcable.mooring.segments.arrays import line_arrays
-from skcable.mooring.segments.closure import closure_state
 from skcable.mooring.segments.heap import heap_state
 from skcable.mooring.segments.law import LawLineSolution, solve_law_line
 from skcable.mooring.segments.parts import Buoy, ClumpWeight, Segment
 from skcable.mooring.segments.solution import CLOSURE_TOLERANCE, LineSolution
+from skcable.mooring.segments.state import closure_state
 
 __all__ = ["Line"]
 

@@ -1,6 +1,6 @@
 r"""`LineSolution`: the equilibrium of a multi-segment `Line`, mapped along the line.
 
-The closed form at the converged fairlead forces (`skcable.mooring.segments.closure`)
+The closed form at the converged fairlead forces (`skcable.mooring.segments.state`)
 gives the grounded pieces from the anchor to the touchdown and the suspended pieces from
 the touchdown to B. Along a suspended piece from its lower end, at unstretched arc length
 ``sigma`` with ``V = V_b + w sigma`` (H.M. Irvine, "Cable Structures", MIT Press, 1981):
@@ -24,8 +24,8 @@ from functools import cached_property
 import numpy as np
 
 from skcable._checks import real, require, whole
-from skcable.cable._special import asinh_step_parts
 from skcable.cable.arc_samples import arc_samples, write_profile
+from skcable.cable.closure import positions, stretched_length
 from skcable.errors import ConvergenceError, InputError
 from skcable.results import ProfileMixin
 
@@ -37,23 +37,6 @@ CLOSURE_TOLERANCE = 1e-11
 
 _NO_GROUND = np.zeros(1)
 _NO_GROUND.flags.writeable = False
-
-
-def _tension_integral(Vt, Vb, H, Ls, w, heap):
-    r"""``∫ sqrt(H² + v²) dv`` (N²) from ``V_b`` to ``V_t = V_b + w L_s`` of a suspended piece:
-    :math:`	frac12[V_t T_t - V_b T_b + H^2(\operatorname{asinh}(V_t/H) - \operatorname{asinh}(V_b/H))]`,
-    the difference :math:`V_t T_t - V_b T_b = w L_s (V_t + V_b)(H^2 + V_t^2 + V_b^2)/(V_t T_t + V_b T_b)`
-    written without cancellation where ``V_t V_b > 0``, the asinh step from ``w L_s/H``;
-    ``(V_t|V_t| - V_b|V_b|)/2`` in a heap state (``H = 0``)."""
-    if heap:
-        return 0.5 * (Vt * np.abs(Vt) - Vb * np.abs(Vb))
-    Tt, Tb = np.hypot(H, Vt), np.hypot(H, Vb)
-    D = w * Ls
-    same = Vt * Vb > 0
-    with np.errstate(invalid="ignore", divide="ignore"):
-        rationalised = D * (Vt + Vb) * (H * H + Vt * Vt + Vb * Vb) / np.where(same, Vt * Tt + Vb * Tb, 1.0)
-    products = np.where(same, rationalised, Vt * Tt - Vb * Tb)
-    return 0.5 * (products + H * H * asinh_step_parts(Vb / H, D / H, Vt / H, Tb / H, Tt / H)[1])
 
 
 class LineSolution(ProfileMixin):
@@ -312,15 +295,8 @@ class LineSolution(ProfileMixin):
         if st.heap:  # vertical: x = span, the piece's tension rising linearly from Vb
             y = self._y_p0[piece] + sig * (1.0 + (Vb + 0.5 * w * sig) / EA)
             return self._x_p0[piece] + 0.0 * sig, y, V, V
-        T, Tb = np.hypot(H, V), np.hypot(H, Vb)
-        # the step w sig/H formed directly (asinh_step), and (T - T_b)/w = sig (V + V_b)/(T + T_b)
-        x = (
-            self._x_p0[piece]
-            + H * sig / EA
-            + H / w * asinh_step_parts(Vb / H, w * sig / H, V / H, Tb / H, T / H)[1]
-        )
-        y = self._y_p0[piece] + sig * (Vb + 0.5 * w * sig) / EA + sig * (V + Vb) / (T + Tb)
-        return x, y, T, V
+        x, y = positions(H, Vb, w, EA, sig, np)  # the one closure's hanging piece
+        return self._x_p0[piece] + x, self._y_p0[piece] + y, np.hypot(H, V), V
 
     def _grounded(self, s, seg):
         st = self._st
@@ -429,7 +405,10 @@ class LineSolution(ProfileMixin):
         ws, EAs, Ls = arrays.w[k:], arrays.EA[k:], st.L_s
         T_up[k:] = np.hypot(H, Vt)
         T_low[k:] = np.hypot(H, Vb)
-        stretched[k:] = Ls + _tension_integral(Vt, Vb, H, Ls, ws, st.heap) / (ws * EAs)
+        if st.heap:  # vertical: the tension rises linearly from V_b
+            stretched[k:] = Ls + 0.5 * (Vt * np.abs(Vt) - Vb * np.abs(Vb)) / (ws * EAs)
+        else:
+            stretched[k:] = stretched_length(H, Vb, ws, EAs, Ls, np)
         if st.contact:
             grounded[: k + 1] = st.l_g
             stretched[: k + 1] += self._g_str

@@ -20,7 +20,8 @@ grounded clump (``R_j`` the part of its weight the seabed carries), down to
 ``H_A = max(H - friction, 0)``; a grounded piece of length ``\ell`` under tension ``T_u`` at
 its upper end stretches by ``(T_u \ell - C_B w \ell^2/2)/EA`` (J.M. Jonkman, "Dynamics
 modeling and loads analysis of an offshore floating wind turbine", NREL, 2007, applied
-piece by piece).
+piece by piece). Each piece, hanging or grounded, is one segment of the one closure
+(`skcable.cable.closure`: `hanging`, `grounded`); this module composes them.
 
 `closure_state` evaluates all of it at ``(H, V)`` into a `ClosureState`: the closure
 ``(X, Z)``, its analytic Jacobian and the pieces the solution maps along the line.
@@ -32,10 +33,9 @@ from typing import Any
 
 import numpy as np
 
-from skcable._xp import scalar_math
-from skcable.cable._special import asinh_step_parts
+from skcable.cable.closure import grounded, hanging
 
-__all__ = ["ClosureState", "closure_state", "grounded_piece", "piece_terms", "sine_step"]
+__all__ = ["ClosureState", "closure_state"]
 
 
 class ClosureState:
@@ -134,103 +134,36 @@ def _split(arrays, contact, V, st):
 
 
 def _suspended(arrays, H, k, a, touchdown, V_top, V_bot, V_bot_k, V_top_k, st):
-    """Run, rise and their Jacobian of the suspended pieces ``k .. n-1`` (a tangent
-    touchdown inside piece ``k`` starts it at ``V = 0``, ``a`` from its lower end).
+    """Run, rise and their Jacobian of the suspended pieces ``k .. n-1``, each a hanging piece of
+    the one closure (`skcable.cable.closure.hanging`; a tangent touchdown inside piece ``k``
+    starts it at ``V_b = 0``, ``a`` from its lower end, its length growing with ``V``).
     Returns ``X, Z, jxh, jxv, jzh, jzv`` and keeps the pieces in ``st``."""
     n = arrays.n
-    xp: Any
-    Vt: Any
-    Vb: Any
-    Ls: Any
-    dVb: Any
     if k == n - 1:  # one suspended piece: Python floats
-        xp = scalar_math
-        Vt, Vb, Ls = V_top_k, (0.0 if touchdown else V_bot_k), arrays.L_list[k] - a
-        ws, EAs, dVb = arrays.w_list[k], arrays.EA_list[k], (0.0 if touchdown else 1.0)
-    else:
-        xp = np
-        Vt, Vb, Ls = V_top[k:], V_bot[k:].copy(), arrays.L[k:].copy()
-        ws, EAs, dVb = arrays.w[k:], arrays.EA[k:], np.ones(n - k)
-        if touchdown:
-            Vb[0], dVb[0] = 0.0, 0.0
-            Ls[0] -= a
-    Tt, Tb = xp.hypot(H, Vt), xp.hypot(H, Vb)
-    dx, dy, x_h, x_v, y_h, y_v = piece_terms(xp, H, Vt, Vb, Tt, Tb, Ls, ws, EAs, dVb)
+        Vb, Ls, w = (0.0 if touchdown else V_bot_k), arrays.L_list[k] - a, arrays.w_list[k]
+        dx, dy, x_h, y_h, y_v, x_l, y_l, Tb, Tt = hanging(H, Vb, w, arrays.EA_list[k], Ls)
+        x_v = y_h  # ∂x/∂V_b = ∂y/∂H
+        if touchdown:  # V_b = 0, L_s = V_t/w: the columns in V are those in L over w
+            x_v, y_v = x_l / w, y_l / w
+        st.Vb, st.L_s, st.Tt, st.Tb, st.dx, st.dy = Vb, Ls, Tt, Tb, dx, dy
+        return dx, dy, x_h, x_v, y_h, y_v
+    Vb, Ls, w = V_bot[k:].copy(), arrays.L[k:].copy(), arrays.w[k:]
+    if touchdown:
+        Vb[0] = 0.0
+        Ls[0] -= a
+    dx, dy, x_h, x_v, y_v, x_l, y_l, Tb, Tt = hanging(H, Vb, w, arrays.EA[k:], Ls, np)
+    y_h = x_v.copy()
+    if touchdown:
+        x_v[0], y_v[0] = x_l[0] / w[0], y_l[0] / w[0]
     st.Vb, st.L_s, st.Tt, st.Tb, st.dx, st.dy = Vb, Ls, Tt, Tb, dx, dy
-    if xp is np:
-        return tuple(float(v.sum()) for v in (dx, dy, x_h, x_v, y_h, y_v))
-    return dx, dy, x_h, x_v, y_h, y_v
-
-
-def sine_step(xp, d, qt, qb, rt, rb):
-    r"""``V_t/T_t - V_b/T_b`` of a piece from the step ``d = w L/H`` formed directly, with
-    ``q = V/H``, ``r = T/H`` at its ends: :math:`d\,c/((r_t + r_b) r_t r_b)`, where
-    :math:`c = 1 + r_t r_b - q_t q_b`, written as
-    :math:`1 + (1 + q_t^2 + q_b^2)/(r_t r_b + q_t q_b)` where :math:`q_t q_b > 0` (no cancellation)."""
-    both = qt * qb
-    if xp is not np:
-        c = 1.0 + ((1.0 + qt * qt + qb * qb) / (rt * rb + both) if both > 0 else rt * rb - both)
-    else:
-        c = 1.0 + np.where(both > 0, (1.0 + qt * qt + qb * qb) / (rt * rb + np.abs(both)), rt * rb - both)
-    return d * c / ((rt + rb) * rt * rb)
-
-
-def piece_terms(xp, H, Vt, Vb, Tt, Tb, Ls, ws, EAs, dVb):
-    r"""Run, rise and their Jacobian in ``(H, V)`` of suspended pieces (`xp`: `math` or NumPy).
-
-    ``Vt, Vb`` (N) the vertical force at the top and the bottom, ``Tt, Tb`` the tensions,
-    ``Ls`` the hanging length (m), ``dVb = ∂V_b/∂V`` (1, or 0 at a tangent touchdown). The
-    step :math:`d = w L_s/H` enters formed directly, never as ``V_t/H - V_b/H``
-    (`skcable.cable._special.asinh_step_parts`; :math:`T_t - T_b = w L_s (V_t + V_b)/(T_t + T_b)`,
-    `sine_step`), so a taut, light line keeps its digits. Returns ``dx, dy, ∂dx/∂H, ∂dx/∂V,
-    ∂dy/∂H, ∂dy/∂V``."""
-    qt, qb, rt, rb = Vt / H, Vb / H, Tt / H, Tb / H
-    d = ws * Ls / H
-    ad = asinh_step_parts(qb, d, qt, rb, rt, xp)[1]
-    sd = sine_step(xp, d, qt, qb, rt, rb)
-    rise = Ls * (Vt + Vb) / (Tt + Tb)  # (T_t - T_b)/w
-    dx = H * Ls / EAs + H / ws * ad
-    dy = Ls * (Vt + Vb) / (2.0 * EAs) + rise
-    x_h = Ls / EAs + (ad - sd) / ws
-    y_h = -H * rise / (Tt * Tb)  # H (T_b - T_t)/(T_t T_b w)
-    if xp is not np:
-        if dVb:
-            return dx, dy, x_h, y_h, y_h, sd / ws + Ls / EAs
-        return dx, dy, x_h, H / ws * (1.0 / EAs + 1.0 / Tt), y_h, Vt * (1.0 / Tt + 1.0 / EAs) / ws
-    x_v = np.where(dVb > 0, y_h, H / ws * (1.0 / EAs + 1.0 / Tt))
-    y_v = np.where(dVb > 0, sd / ws + Ls / EAs, Vt * (1.0 / Tt + 1.0 / EAs) / ws)
-    return dx, dy, x_h, x_v, y_h, y_v
-
-
-def grounded_piece(xp, T, dT_h, dT_v, l, dl_v, m, EA):
-    r"""Stretch of a grounded piece and its derivatives (`xp`: `math` or NumPy).
-
-    The piece of unstretched length ``l`` (m) lies on the seabed under the tension ``T`` (N) at
-    its upper end, falling by the friction ``m = C_B w`` (N/m) per unit length towards the
-    anchor, down to 0 where friction takes it all (J.M. Jonkman, "Dynamics modeling and loads
-    analysis of an offshore floating wind turbine", NREL, 2007):
-    :math:`e = (T\ell - m\ell^2/2)/EA` while :math:`T > m\ell`, else :math:`T^2/(2 m EA)`.
-    ``dT_h, dT_v, dl_v`` are the derivatives of ``T`` and ``l`` in the fairlead forces
-    ``(H, V)``. Returns ``e``, its derivatives in ``(H, V)`` plus ``∂l/∂V``, and the tension
-    at the lower end with its derivatives."""
-    if xp is not np:
-        if m == 0 or T - m * l > 0:
-            x_v = dl_v + (dT_v * l + T * dl_v - m * l * dl_v) / EA
-            return (T * l - 0.5 * m * l * l) / EA, dT_h * l / EA, x_v, T - m * l, dT_h, dT_v - m * dl_v
-        return 0.5 * T * T / (m * EA), T * dT_h / (m * EA), dl_v + T * dT_v / (m * EA), 0.0, 0.0, 0.0
-    taut = (m == 0) | (T - m * l > 0)  # the tension reaches the lower end
-    with np.errstate(divide="ignore", invalid="ignore"):
-        stretch = np.where(taut, (T * l - 0.5 * m * l * l) / EA, 0.5 * T * T / (m * EA))
-        x_h = np.where(taut, dT_h * l / EA, T * dT_h / (m * EA))
-        x_v = np.where(taut, dl_v + (dT_v * l + T * dl_v - m * l * dl_v) / EA, dl_v + T * dT_v / (m * EA))
-    lower = np.where(taut, T - m * l, 0.0), np.where(taut, dT_h, 0.0), np.where(taut, dT_v - m * dl_v, 0.0)
-    return (stretch, x_h, x_v, *lower)
+    return tuple(float(v.sum()) for v in (dx, dy, x_h, x_v, y_h, y_v))
 
 
 def _grounded(arrays, mu, H, k, a, vk, X, jxh, jxv, st):
     """Walk the grounded pieces ``k, k-1, .. 0`` from the touchdown towards the anchor,
     with the tension ``T`` and its derivatives ``(dT_h, dT_v)`` in ``(H, V)`` at the upper end
-    of each piece; adds their run to ``X`` and its derivatives. Returns ``X, jxh, jxv`` and
+    of each piece (each a grounded piece of the one closure, `skcable.cable.closure.grounded`);
+    adds their run to ``X`` and its derivatives. Returns ``X, jxh, jxv`` and
     keeps the pieces and ``H_A`` in ``st``."""
     Lf, wf, EAf = arrays.L_list, arrays.w_list, arrays.EA_list
     l_g = [*Lf[:k], a]
@@ -252,12 +185,15 @@ def _grounded(arrays, mu, H, k, a, vk, X, jxh, jxv, st):
         T_g[i] = T
         l = l_g[i]
         dl_v = -1.0 / wf[k] if (i == k and a > 0) else 0.0
-        stretch[i], x_h, x_v, T, dT_h, dT_v = grounded_piece(
-            scalar_math, T, dT_h, dT_v, l, dl_v, mu * wf[i], EAf[i]
-        )
+        m = mu * wf[i]
+        stretch[i], e_T, e_l, T_low = grounded(T, l, m, EAf[i])
         X += l + stretch[i]
-        jxh += x_h
-        jxv += x_v
+        jxh += e_T * dT_h
+        jxv += dl_v + e_T * dT_v + e_l * dl_v
+        if m == 0 or T_low > 0:  # the tension reaches the piece's lower end
+            T, dT_v = T_low, dT_v - m * dl_v
+        else:
+            T, dT_h, dT_v = 0.0, 0.0, 0.0
     st.l_g, st.T_g, st.R, st.stretch = l_g, T_g, R, stretch
     st.H_A = T
     return X, jxh, jxv
@@ -270,7 +206,7 @@ def closure_state(arrays, friction, contact, H, V):
     ``contact`` whether it may rest on a seabed through the anchor. Returns a
     `ClosureState`, or None where the whole line would lie on the seabed.
 
-    The suspended pieces are evaluated with NumPy over the segments, or with `math`
+    The suspended pieces are evaluated with NumPy over the segments, or on Python floats
     when a single piece hangs (`skcable._xp`: one formula, two back ends); the
     grounded pieces are walked from the touchdown to the anchor with Python floats
     (the tension at each piece's lower end depends on the piece above it)."""
