@@ -41,7 +41,9 @@ step from a start where full steps identify the active set and converge: its max
 rises while the active set changes. ``full_steps="after"`` then tries full Newton steps from
 the same start (its assembly reused) when the damped Newton fails; ``full_steps="first"`` tries
 them first (a start near the solution, a warm start, whose active set full steps identify in a
-few iterations where damped ones crawl) and the damped Newton where they fail. A full step is
+few iterations where damped ones crawl; full semismooth steps converge superlinearly near a
+solution: L. Qi, J. Sun, "A nonsmooth version of Newton's method", Math. Programming 58, 1993)
+and the damped Newton where they fail. A full step is
 halved only where its trial is inadmissible, one of ``rejects`` or not finite; the full steps
 stop where ``norm`` grows a thousandfold past the start, or after ``max_iter`` steps. Without a
 line search the Newton takes full steps already: no second attempt. ``rescue(failed)``, tried
@@ -348,7 +350,7 @@ def newton(
     full_steps = full_steps if line_search else "never"  # a Newton without line search takes them
     if full_steps == "never" and rescue is None and not polish:
         return damped(assemble, x0, state=state)
-    count = [0]
+    count = [0 if state is None else 1]  # the start counted, as the damped Newton counts it
 
     def counted(x):
         count[0] += 1
