@@ -52,11 +52,16 @@ class ConvergenceError(RuntimeError):
         The residual (or step) norm after every iteration, first to last.
     last : object or None
         The solver's last iterate, where it has one (what the failed solve reached).
+    attempts : list of list of float
+        The history of every attempt of a solve that tried more than one from its start (a
+        damped Newton, then full steps: `skcable.fe.newton`'s ``full_steps``), in the order
+        tried; empty otherwise.
     """
 
-    def __init__(self, message: str, history: Sequence[float] = (), last=None):
+    def __init__(self, message: str, history: Sequence[float] = (), last=None, attempts=()):
         self.history = [float(h) for h in history]
         self.last = last
+        self.attempts = [[float(h) for h in tried] for tried in attempts]
         tail = ", ".join(f"{h:.3e}" for h in self.history[-8:])
         more = f" (last {min(8, len(self.history))} of {len(self.history)}: {tail})" if self.history else ""
         super().__init__(message + more)

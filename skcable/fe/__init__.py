@@ -4,8 +4,9 @@
   last, batched products, a sparsity pattern computed once);
 - `skcable.fe.linear`: banded LAPACK solves, a sparse solve where a term breaks the band, the
   bordered solve of one global unknown;
-- `skcable.fe.newton`: one Newton–Raphson with line search, a stagnation stop and a result
-  carrying its history; `NewtonOptions`, the user's settings of it;
+- `skcable.fe.newton`: one Newton–Raphson with line search, a stagnation stop, full-step
+  fallbacks and a polish as options, and a result carrying its history; `NewtonOptions`, the
+  user's settings of it; `first_converged`, the retries from other starts;
 - `skcable.fe.terms`: the term protocol every model's physics follows;
 - `skcable.fe.check`: a term's tangent against central differences.
 
@@ -19,7 +20,7 @@ from __future__ import annotations
 from typing import TYPE_CHECKING
 
 from skcable._lazy import attach
-from skcable.fe.newton import NewtonOptions, NewtonResult, minimize, newton, semismooth
+from skcable.fe.newton import NewtonOptions, NewtonResult, first_converged, minimize, newton, semismooth
 
 if TYPE_CHECKING:  # what static tools see; at run time, `attach` below serves them
     from skcable.fe.assembly import Assembly
@@ -45,6 +46,7 @@ __all__ = [
     "NewtonResult",
     "SparseSystem",
     "check_tangent",
+    "first_converged",
     "minimize",
     "newton",
     "semismooth",

@@ -36,13 +36,38 @@ round-off floor of ``norm`` that the inner solves put on it, and a Newton that
 stops (no descent, stagnation) with ``norm <= floor`` returns its iterate with
 ``NewtonResult.at_floor`` set instead of raising.
 
+**Fallbacks.** A semismooth system (a contact's complementarity rows) can refuse every damped
+step from a start where full steps identify the active set and converge: its max-norm merit
+rises while the active set changes. ``full_steps="after"`` then tries full Newton steps from
+the same start (its assembly reused) when the damped Newton fails; ``full_steps="first"`` tries
+them first (a start near the solution, a warm start, whose active set full steps identify in a
+few iterations where damped ones crawl; full semismooth steps converge superlinearly near a
+solution: L. Qi, J. Sun, "A nonsmooth version of Newton's method", Math. Programming 58, 1993)
+and the damped Newton where they fail. A full step is
+halved only where its trial is inadmissible, one of ``rejects`` or not finite; the full steps
+stop where ``norm`` grows a thousandfold past the start, or after ``max_iter`` steps. Without a
+line search the Newton takes full steps already: no second attempt. ``rescue(failed)``, tried
+before the full steps "after", is the problem's own way on from where the damped Newton
+stopped (``failed.last``; a line on the seabed holds its contact nodes' active set): a
+`NewtonResult` whose history starts there, or None. When every attempt fails, the damped
+Newton's `ConvergenceError` is raised, its ``attempts`` holding every attempt's history in the
+order tried. Past ``tol``, ``polish`` full steps at most go on while ``norm`` falls below
+``polish_factor`` times the last: quadratic convergence takes the solution to its round-off
+floor for one or two more assemblies. ``callback`` sees every step of every attempt, numbered
+from 1 in each.
+
+`first_converged(attempts)` is the other retry: the same problem from other starts, or other
+problems (finer meshes, a node at a touchdown), in turn, the first one's error raised when all
+fail.
+
 `NewtonOptions` gathers the user's settings (tolerances, iterations, line search,
 callback, the shift limit of `minimize`) for the models that run these solvers.
 """
 
 from __future__ import annotations
 
-from collections.abc import Callable
+import functools
+from collections.abc import Callable, Iterable
 from dataclasses import dataclass, field, fields, replace
 from typing import Any
 
@@ -52,11 +77,15 @@ from skcable._checks import nonnegative, positive, whole
 from skcable.errors import ConvergenceError, InputError
 
 __all__ = [
-    "LINE_SEARCHES", "NewtonOptions", "NewtonResult", "linear_tail", "minimize", "newton", "semismooth",
+    "FULL_STEPS", "LINE_SEARCHES", "NewtonOptions", "NewtonResult", "first_converged", "linear_tail",
+    "minimize", "newton", "semismooth",
 ]  # fmt: skip
 
 #: ``line_search`` values: on (Armijo on the residual's merit), off (full steps), or on the energy
 LINE_SEARCHES = ("residual", "none", "energy", "auto")
+
+#: ``newton``'s ``full_steps`` values: no full-step attempt, one after a failed damped Newton, one first
+FULL_STEPS = ("never", "after", "first")
 
 
 @dataclass(frozen=True)
@@ -226,6 +255,10 @@ def newton(
     callback: Callable | None = None,
     nonmonotone: int = 0,
     watchdog: int = 0,
+    full_steps: str = "never",
+    rescue: Callable[[ConvergenceError], NewtonResult | None] | None = None,
+    polish: int = 0,
+    polish_factor: float = 0.1,
 ) -> NewtonResult:
     """Solve ``R(x) = 0`` from ``x0``; see the module docstring.
 
@@ -279,15 +312,197 @@ def newton(
         lands on the stiff side instead of halving back to the soft one, and a solve where the
         relaxed step leads nowhere pays one assembly more than without it.
 
+    full_steps : {"never", "after", "first"}
+        A second attempt by full Newton steps from ``x0`` (module docstring, *Fallbacks*):
+        ``"after"`` the damped Newton fails, or ``"first"`` (a start near the solution: a warm
+        start), the damped Newton where they fail. None where ``line_search`` is False.
+    rescue : callable, optional
+        ``rescue(failed)``: the problem's own way on from where the damped Newton stopped
+        (``failed.last``), tried before full steps ``"after"``: a `NewtonResult` whose history
+        starts at that iterate (joined to ``failed.history``), or None where it has none.
+    polish : int
+        Full Newton steps past ``tol`` at most, while ``norm`` falls below ``polish_factor``
+        times the last (a trial one of ``rejects`` stops them).
+    polish_factor : float
+        The fall of ``norm`` a polishing step must give.
+
     Raises
     ------
     ConvergenceError
         No descent, stagnation, or ``max_iter`` reached (above ``floor``, when given);
-        ``history`` holds ``norm`` per iteration.
+        ``history`` holds ``norm`` per iteration. With fallbacks, the damped Newton's error
+        when every attempt fails, ``attempts`` holding the history of each in the order tried.
     InputError
-        ``callback`` raised (the iteration is named).
+        ``callback`` raised (the iteration is named), or ``full_steps`` is none of
+        `FULL_STEPS`.
     """
-    merit = norm if merit is None else merit
+    if full_steps not in FULL_STEPS:
+        raise InputError("full_steps", f"must be one of {FULL_STEPS}, got {full_steps!r}")
+    update = _plain_update if update is None else update
+    damped = functools.partial(
+        _damped, norm=norm, increment=increment, tol=tol, max_iter=max_iter,
+        merit=norm if merit is None else merit, update=update, admissible=admissible,
+        max_halvings=max_halvings, stagnation_window=stagnation_window,
+        stagnation_factor=stagnation_factor, name=name, rejects=rejects, floor=floor, atol=atol,
+        absolute=absolute, line_search=line_search, callback=callback, nonmonotone=nonmonotone,
+        watchdog=watchdog,
+    )  # fmt: skip
+    full_steps = full_steps if line_search else "never"  # a Newton without line search takes them
+    if full_steps == "never" and rescue is None and not polish:
+        return damped(assemble, x0, state=state)
+    count = [0 if state is None else 1]  # the start counted, as the damped Newton counts it
+
+    def counted(x):
+        count[0] += 1
+        return assemble(x)
+
+    def converged(s, value):
+        return value < tol or (atol > 0 and absolute is not None and absolute(s) < atol)
+
+    x = np.array(x0, dtype=float)
+    start = counted(x) if state is None else state
+    problem = _Problem(counted, norm, increment, update, admissible, rejects, converged, callback, name)
+    full = functools.partial(problem.full_steps, x, start, max_iter, max_halvings)
+    result = _attempts(lambda: damped(counted, x, state=start), full, rescue, full_steps)
+    result = problem.polished(result, polish, polish_factor)
+    result.assemblies = count[0]
+    return result
+
+
+def _plain_update(x, dx, t):
+    """The trial ``x + t·dx`` (`newton`'s default ``update``)."""
+    return x + t * dx
+
+
+def _attempts(damped, full, rescue, order: str) -> NewtonResult:
+    """`newton`'s attempts (module docstring, *Fallbacks*): full steps first (``order`` "first"),
+    the damped Newton, the ``rescue`` from where it stopped, full steps (``order`` "after");
+    the first that converges, else the damped Newton's error with ``attempts`` set."""
+    tried = []
+    if order == "first":
+        try:
+            return full()
+        except ConvergenceError as exc:
+            tried.append(exc.history)
+    try:
+        return damped()
+    except ConvergenceError as exc:
+        failed = exc
+    tried.append(failed.history)
+    if rescue is not None:
+        rescued = rescue(failed)
+        if rescued is not None:
+            rescued.history = list(failed.history) + list(rescued.history[1:])
+            return rescued
+    if order == "after":
+        try:
+            return full()
+        except ConvergenceError as exc:
+            tried.append(exc.history)
+    failed.attempts = [list(h) for h in tried]
+    raise failed from None
+
+
+class _Problem:
+    """A problem's callables as `newton`'s fallbacks and polish use them."""
+
+    def __init__(self, assemble, norm, increment, update, admissible, rejects, converged, callback, name):
+        self.assemble, self.norm, self.increment, self.update = assemble, norm, increment, update
+        self.admissible, self.rejects, self.converged = admissible, rejects, converged
+        self.callback, self.name = callback, name
+
+    def trial(self, x, dx, t):
+        """``(trial x, its state)``, the state None where the trial is inadmissible or rejected."""
+        trial_x = self.update(x, dx, t)
+        if self.admissible is not None and not self.admissible(trial_x):
+            return trial_x, None
+        try:
+            return trial_x, self.assemble(trial_x)
+        except self.rejects:
+            return trial_x, None
+
+    def full_steps(self, x, state, max_iter: int, max_halvings: int) -> NewtonResult:
+        """Full Newton steps from ``x`` (``state`` its assembly), each halved (``max_halvings``
+        times at most) only where its trial is inadmissible, rejected or not finite; stopped where
+        ``norm`` grows a thousandfold past its start or no trial is found. The `NewtonResult`
+        once converged within ``max_iter`` steps, else a `ConvergenceError` with the history."""
+        history, steps = [self.norm(state)], []
+        for _ in range(max_iter):
+            if self.converged(state, history[-1]) or not history[-1] < 1e3 * history[0]:
+                break
+            dx, t = self.increment(state), 1.0
+            for _ in range(max_halvings):
+                trial_x, trial = self.trial(x, dx, t)
+                if trial is not None and np.isfinite(self.norm(trial)):
+                    break
+                t *= 0.5
+            else:
+                break
+            x, state = trial_x, trial
+            history.append(self.norm(state))
+            steps.append(t)
+            if self.callback is not None:
+                step = float(np.max(np.abs(t * dx), initial=0.0))
+                _callback(self.callback, len(history) - 1, history[-1], step)
+        if self.converged(state, history[-1]):
+            return NewtonResult(x, state, history, steps=steps)
+        raise ConvergenceError(f"{self.name}: full Newton steps did not converge", history, last=x)
+
+    def polished(self, result: NewtonResult, steps: int, factor: float) -> NewtonResult:
+        """``result`` taken on by full Newton steps past the tolerance, ``steps`` at most, while
+        ``norm`` falls below ``factor`` times the last; a trial one of ``rejects`` stops them."""
+        for _ in range(steps):
+            dx = self.increment(result.state)
+            trial_x = self.update(result.x, dx, 1.0)
+            try:
+                trial = self.assemble(trial_x)
+            except self.rejects:
+                break
+            value = self.norm(trial)
+            if not value < factor * self.norm(result.state):
+                break
+            result.x, result.state = trial_x, trial
+            result.history.append(value)
+            result.steps.append(1.0)
+            _callback(self.callback, len(result.history) - 1, value, float(np.max(np.abs(dx), initial=0.0)))
+        return result
+
+
+def first_converged(
+    attempts: Iterable[Callable[[], Any]], *, catch: tuple[type[Exception], ...] = (ConvergenceError,)
+):
+    """The result of the first of ``attempts`` (callables of no argument, called in turn: a
+    generator's are made only as they are reached) that raises none of ``catch``; where every one
+    does, the first one's error (the later ones only try to rescue it). Other exceptions pass at
+    once.
+
+    The retries of a solve from other starts or on other meshes: a line from the previous
+    solution interpolated, else from its closed form; a mooring from its start pushed along the
+    net load. A Newton's own fallbacks from the same start are `newton`'s options
+    (``full_steps``, ``rescue``).
+
+    Raises
+    ------
+    InputError
+        ``attempts`` is empty.
+    """
+    first = None
+    for attempt in attempts:
+        try:
+            return attempt()
+        except catch as exc:
+            first = exc if first is None else first
+    if first is None:
+        raise InputError("attempts", "must hold at least one attempt")
+    raise first from None
+
+
+def _damped(
+    assemble, x0, *, norm, increment, tol, max_iter, merit, update, admissible, max_halvings,
+    stagnation_window, stagnation_factor, name, state, rejects, floor, atol, absolute, line_search,
+    callback, nonmonotone, watchdog,
+) -> NewtonResult:  # fmt: skip
+    """`newton`'s damped iteration from ``x0`` (its docstring; the fallbacks aside)."""
 
     def converged(s, value):
         return value < tol or (atol > 0 and absolute is not None and absolute(s) < atol)
@@ -297,7 +512,6 @@ def newton(
             return NewtonResult(x, state, history, 1 + search.assemblies, at_floor=True, steps=steps)
         raise ConvergenceError(f"{name}: {message}", history, last=x)
 
-    update = (lambda x, dx, t: x + t * dx) if update is None else update
     search = _LineSearch(assemble, update, admissible, rejects, merit, lambda s: converged(s, norm(s)),
                          line_search, max_halvings)  # fmt: skip
     x = np.array(x0, dtype=float)

@@ -51,7 +51,7 @@ from skcable import _plausible
 from skcable._budget import Budget
 from skcable._show import Shown, counted, quantity
 from skcable.errors import ConvergenceError, InputError, PlausibilityWarning
-from skcable.fe import newton
+from skcable.fe import first_converged, newton
 from skcable.mooring._answers import equilibrium_findings
 from skcable.mooring.network import end_forces
 
@@ -495,43 +495,46 @@ _ONE_THREAD = 24
 
 def _first_run(solve, position, lines):
     """Newton from ``position``; where its line search finds no descent (the net load is not
-    smooth where lines lie slack in heaps: Newton's step from there need not descend), from the
-    start pushed along the net load (`_pushed_starts`), the first that converges; last, from
-    ``position`` with the restrained directions balanced before the free ones are pushed
-    (`_Newton.slack_step`: lines hanging vertically leave x, y and yaw free while roll and pitch
-    are unbalanced, and the push along the free directions found no descent)."""
+    smooth where lines lie slack in heaps: Newton's step from there need not descend), the first
+    of `_retries` that converges (`skcable.fe.first_converged`)."""
     try:
         return solve.run(position, lines)
     except ConvergenceError as err:
         if "no descent" not in str(err):
             raise
         history = err.history
-    for start in [*_pushed_starts(solve, position), *_carried_starts(solve, position)]:
-        try:
-            return solve.run(start)
-        except (ConvergenceError, InputError):
-            continue
     try:
-        solve.restrained_first = True
-        return solve.run(position, lines)
+        return first_converged(_retries(solve, position, lines), catch=(ConvergenceError, InputError))
     except (ConvergenceError, InputError):
-        pass
+        raise ConvergenceError(
+            "mooring equilibrium: the line search found no descent, from the start nor from it pushed "
+            "along the net load (the residual stalls: the loads may exceed what the mooring can hold, "
+            "or the start is too far)",
+            history,
+        ) from None
+
+
+def _retries(solve, position, lines):
+    """`_first_run`'s retries, each made as it is reached: from the start pushed along the net load
+    (`_pushed_starts`, `_carried_starts`); from ``position`` with the restrained directions
+    balanced before the free ones are pushed (`_Newton.slack_step`: lines hanging vertically leave
+    x, y and yaw free while roll and pitch are unbalanced, and the push along the free directions
+    found no descent); from the start and from it carried, each trial corrected (`_Newton.update`:
+    taut lines that must swing)."""
+    for start in [*_pushed_starts(solve, position), *_carried_starts(solve, position)]:
+        yield functools.partial(solve.run, start)
+    yield functools.partial(_flagged, solve, "restrained_first", position, lines)
+    for start in [position, *_carried_starts(solve, position)]:
+        yield functools.partial(_flagged, solve, "corrected", start)
+
+
+def _flagged(solve, flag, position, lines=None):
+    """``solve.run(position, lines)`` with ``solve``'s switch ``flag`` set for it."""
+    setattr(solve, flag, True)
+    try:
+        return solve.run(position, lines)
     finally:
-        solve.restrained_first = False
-    for start in [position, *_carried_starts(solve, position)]:  # taut lines that must swing
-        try:
-            solve.corrected = True
-            return solve.run(start)
-        except (ConvergenceError, InputError):
-            continue
-        finally:
-            solve.corrected = False
-    raise ConvergenceError(
-        "mooring equilibrium: the line search found no descent, from the start nor from it pushed along "
-        "the net load (the residual stalls: the loads may exceed what the mooring can hold, or the start "
-        "is too far)",
-        history,
-    )
+        setattr(solve, flag, False)
 
 
 def _carried_starts(solve, position) -> list:

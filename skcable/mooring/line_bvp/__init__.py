@@ -14,8 +14,8 @@ on a seabed of any shape with Coulomb friction. One concern per module:
 - `problem`: one discrete line — bases, properties at the quadrature points, the loads, the
   residual and its generalized Jacobian (every call of the assembly is there);
 - `start`: the closed-form start (elastic catenary, grounded where it dips below the seabed);
-- `iterate`: one solve — damped semismooth Newton, full steps, the polish (the full steps and
-  the polish shared with the line in space);
+- `iterate`: one solve — damped semismooth Newton, its rescue with the active set held, full
+  steps and the polish (`skcable.fe.newton`'s options, as the line in space's);
 - `slack`: Jonkman's slack stretch near the anchor;
 - `driver`: the continuation `LineBVPSolver` — levels, gradings, friction, fitting, checks;
 - `solution`: `LineBVPSolution`, the end forces, contact and fields;

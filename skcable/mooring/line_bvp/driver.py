@@ -51,8 +51,9 @@ and the best solution reached (``last``). The number of solves is bounded by the
 from the closed-form start (on a nearly L-shaped line the bend at the touchdown has the radius
 H/w, a thousandth of the length, and the interpolated bend of a coarser or differently graded
 mesh can start Newton farther off than the closed form does), else from the segment-wise one.
-Each retry is an alternative passed to `skcable.mooring.line_bvp.iterate.first_success`, which
-raises the first alternative's error when every one fails.
+Each retry is an alternative passed to `skcable.fe.first_converged`, which raises the first
+alternative's error when every one fails (a solve's own fallbacks from its start are
+`skcable.fe.newton`'s options: `skcable.mooring.line_bvp.iterate`).
 """
 
 from __future__ import annotations
@@ -63,8 +64,9 @@ import numpy as np
 
 from skcable._budget import Budget
 from skcable.errors import ConvergenceError, InputError
+from skcable.fe import first_converged
 from skcable.mooring.line_bvp.inputs import Scene
-from skcable.mooring.line_bvp.iterate import first_success, solve_on
+from skcable.mooring.line_bvp.iterate import solve_on
 from skcable.mooring.line_bvp.mesh import (
     COARSE,
     fixed_nodes,
@@ -169,10 +171,12 @@ class LineBVPSolver:
     def rerun(self, problem, solution) -> LineBVPSolution:
         """The line on ``problem``'s mesh from ``solution`` interpolated onto it, else from the
         closed-form start, else from the segment-wise one."""
-        return first_success(
-            lambda: self.run(problem, self.restart(solution, problem)),
-            lambda: self.run(problem, closed_form_start(problem)),
-            lambda: self.from_segments(problem),
+        return first_converged(
+            [
+                lambda: self.run(problem, self.restart(solution, problem)),
+                lambda: self.run(problem, closed_form_start(problem)),
+                lambda: self.from_segments(problem),
+            ]
         )
 
     def edges(self, solution):
@@ -328,13 +332,15 @@ class LineBVPSolver:
         problem = self.problem(n, mu=0.0)
         if self.scene.fit_touchdown:
             problem = self.problem(n, mu=0.0, nodes_at=start_nodes(start_form(problem), self.fixed, n))
-        solution = first_success(
-            lambda: self.run(problem, closed_form_start(problem)),
-            lambda: self.from_segments(problem),
-            lambda: self.switched(problem, closed_form_start(problem)),
+        solution = first_converged(
+            [
+                lambda: self.run(problem, closed_form_start(problem)),
+                lambda: self.from_segments(problem),
+                lambda: self.switched(problem, closed_form_start(problem)),
+            ]
         )
         if self.compressed(solution):
-            other = first_success(lambda: self.from_segments(problem), lambda: solution)
+            other = first_converged([lambda: self.from_segments(problem), lambda: solution])
             solution = solution if self.compressed(other) else other
         return solution
 
@@ -351,14 +357,16 @@ class LineBVPSolver:
     def with_friction(self, n, frictionless, graded):
         """The line with friction from the frictionless one (module docstring, 4): the solution,
         the end of the slack stretch and the points fitted. Three alternatives, in turn
-        (`first_success`): from the frictionless line on its mesh, with a node at its
+        (`first_converged`): from the frictionless line on its mesh, with a node at its
         touchdown too, from the segment-wise closed form with friction."""
         anchored = frictionless.problem.anchor_on_seabed
         s0 = slack_estimate(frictionless, self.scene.friction) if anchored else 0.0
-        solution, s0, fitted = first_success(
-            lambda: self.from_frictionless(n, frictionless, graded, s0, []),
-            lambda: self.from_frictionless(n, frictionless, graded, s0, self.edges(frictionless)),
-            lambda: self.from_closed_friction(n, frictionless, graded),
+        solution, s0, fitted = first_converged(
+            [
+                lambda: self.from_frictionless(n, frictionless, graded, s0, []),
+                lambda: self.from_frictionless(n, frictionless, graded, s0, self.edges(frictionless)),
+                lambda: self.from_closed_friction(n, frictionless, graded),
+            ]
         )
         if s0 == 0 and anchored:
             s0 = tension_zero(solution, 1e3 * self.scene.options.tol * solution.problem.load_scale)

@@ -30,8 +30,8 @@ import numpy as np
 
 from skcable._budget import Budget
 from skcable.errors import ConvergenceError
+from skcable.fe import first_converged
 from skcable.mooring.bathymetry import OffGrid
-from skcable.mooring.line_bvp.iterate import first_success
 from skcable.mooring.line_bvp.mesh import COARSE, nested_sizes
 from skcable.mooring.line_bvp_3d.fitting import landing, touchdown
 from skcable.mooring.line_bvp_3d.iterate import Solved, solve_on
@@ -127,7 +127,7 @@ class LineBVP3DSolver:
             attempts.append(lambda: self.nested(n, fitted))
         if touches and n > 2 * COARSE:
             attempts = [attempts[-1], *attempts[:-1]]
-        return first_success(*attempts)
+        return first_converged(attempts)
 
     def continued(self, n, fitted, z0) -> Solved:
         """The drag grown from zero to its full value in steps, each solve from the last."""
@@ -155,7 +155,7 @@ class LineBVP3DSolver:
                 attempts = [lambda p=problem, z=z0: self.run(p, z)]
                 if problem.terms:
                     attempts.append(lambda s=size, z=z0: self.continued(s, fitted, z))
-                solved = first_success(*attempts)
+                solved = first_converged(attempts)
             else:
                 solved = self.run(problem, restart(solved.problem, solved.z, problem))
         if solved is None:  # nested_sizes gives at least one size: never here
@@ -190,9 +190,11 @@ class LineBVP3DSolver:
         """The line with nodes at ``points``, from ``solved`` interpolated, else from scratch."""
         n = self.scene.n_elements
         problem = self.problem(n, points)
-        return first_success(
-            lambda: self.run(problem, restart(solved.problem, solved.z, problem), near=True),
-            lambda: self.level(n, points),
+        return first_converged(
+            [
+                lambda: self.run(problem, restart(solved.problem, solved.z, problem), near=True),
+                lambda: self.level(n, points),
+            ]
         )
 
     def checked(self, solved) -> LineBVP3DSolution:
