@@ -186,7 +186,8 @@ MAX_FRICTION = 5.0
 
 #: Each limit: (quantity, limit, reason, source). docs/howto.md prints this table.
 LIMITS = (
-    ("strain of a chain", "25 %", "offshore chain steels' minimum elongation at fracture is 17 % (R3) to 12 % (R5)",
+    ("strain of a chain", "25 %",
+     "offshore chain steels' minimum elongation at fracture is 17 % (R3) to 12 % (R5)",
      "Det Norske Veritas, DNV-OS-E302 Offshore Mooring Chain, 2008 (grades R3 to R5)"),
     ("strain of a wire rope or a conductor", "5 %",
      "steel and aluminium wires rupture at a few per cent (the strands' materials, docs/strand_sections.md)",
