@@ -20,8 +20,10 @@ Slices normal to the axis give the cylinder's volume below the plane exactly, at
 inclination: a vertical rod (:math:`h = 0`) has the submerged length of its axis (a step in
 :math:`f`), a horizontal one the circular segment of its section all along, and the volume is
 continuous in between. The segment's centroid lies off the axis within its section (by at most
-:math:`4r/3\pi`): the moment of that offset, of order :math:`r/L` of the rod's, is not held (the
-loads act on the axis, as on MoorDyn's nodes).
+:math:`4r/3\pi`): its moment is not held, the loads act on the axis, as on MoorDyn's nodes (a
+floating rod's pitch stiffness :math:`\rho g I_{WP}` leaves out :math:`W (z_G - z_B)`, 6 % of it for
+a rod of :math:`L/d = 4` floating half out, MoorDyn's ``AddedMass.txt``); its end caps take no
+pressure of their own.
 
 MoorDyn v2 (M. Hall and the MoorDyn contributors, FloatingArrayDesign/MoorDyn, the rod's node
 loads) takes at each node the blend
