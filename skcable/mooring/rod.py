@@ -10,19 +10,21 @@ attach to those points. As a line of the system (``add_line(rod, a, b)``) it giv
 :math:`\mathbf u = (\mathbf b - \mathbf a)/\ell` along the rod, :math:`\ell` its length. Its
 distributed loads act on its ends as a rigid body's: their resultant and their moment about
 either end are the loads' (a pin-jointed bar: the lever rule). The weight :math:`m g L` acts
-at the middle, half on each end; the buoyancy :math:`\rho g \tfrac{\pi}{4} d^2\,s` of the
-submerged length :math:`s` of the axis (all of it below the still water line ``z = 0``, none
-above it, the part below the crossing otherwise: the displaced volume of a slender cylinder cut
-by the surface) at the middle of that part, a fraction :math:`t_c` of ``L`` from A, shared as
-:math:`(1 - t_c,\, t_c)`. The axial force :math:`N = k\,(\ell - L)` holds the length: ``k`` is
+at the middle, half on each end; the buoyancy is that of the rod's displaced volume, its
+cross-sections' submerged area along its axis (`skcable.mooring.rod_waterline`: a disc normal to
+the axis cut by the still water line ``z = 0`` in a chord): all of :math:`\rho g \tfrac{\pi}{4}
+d^2 L` for a rod below the water line, none above it, for a vertical rod crossing it the
+submerged length of its axis, for a horizontal one the circular segment of its section, at the
+centre of that volume along the axis, shared on the ends by the lever rule. The axial force
+:math:`N = k\,(\ell - L)` holds the length: ``k`` is
 ``axial_stiffness`` (N/m), stiff enough that the rod's change of length under the loads is below
 the solver's tolerance on its ends (`Rod` takes it from the lines' stiffness; the equilibrium's
 ``RodBetween.stretch`` reports it). A rod does not touch the seabed: an end below it is refused.
 
 The stiffness :math:`K = -\partial(\mathbf F_a, \mathbf F_b)/\partial(\mathbf a, \mathbf b)` is
 the bar's, :math:`\pm\big(k\,\mathbf u\mathbf u^T + \tfrac{N}{\ell}(I - \mathbf u\mathbf u^T)\big)`,
-plus, for a rod crossing the surface at :math:`t^* = z_a/(z_a - z_b)` of its length, the change
-of its buoyancy with the heights of its ends.
+plus, for a rod crossing the surface, the change of its buoyancy with the heights of its ends and
+with its inclination (`skcable.mooring.rod_waterline.waterline_shares`).
 
 A rod of zero length (MoorDyn's connector rods) is a single point: the system holds no rod then
 (`skcable.mooring.moordyn`).
@@ -38,6 +40,7 @@ import numpy as np
 from skcable._checks import nonnegative, positive, scalar
 from skcable.errors import InputError
 from skcable.mooring.body import RigidBody, skew
+from skcable.mooring.rod_waterline import waterline_shares
 
 __all__ = ["Rod", "RodBetween", "RodBody", "Tie", "TieBetween", "rod_frame"]
 
@@ -93,26 +96,6 @@ class Rod:
         return f"Rod(length={self.length!r}, diameter={self.diameter!r}, mass={self.mass!r}{stiff})"
 
 
-def _buoyancy_shares(rod, za: float, zb: float) -> tuple[float, float, float, float, float, float]:
-    """``(f_a, f_b, dfa/dza, dfa/dzb, dfb/dza, dfb/dzb)``: the buoyancy (N, up) on ends a and b of
-    ``rod`` with its ends at heights ``za``, ``zb`` (module docstring), and its derivatives (N/m)."""
-    q = rod.buoyancy_per_length * rod.length
-    if za <= 0.0 and zb <= 0.0:
-        return 0.5 * q, 0.5 * q, 0.0, 0.0, 0.0, 0.0
-    if za >= 0.0 and zb >= 0.0:
-        return 0.0, 0.0, 0.0, 0.0, 0.0, 0.0
-    dz = za - zb
-    t = za / dz  # where the axis crosses z = 0, from a
-    dt_a, dt_b = -zb / dz**2, za / dz**2
-    if za < 0.0:  # [0, t] submerged: f_b = q t²/2, f_a = q (t - t²/2)
-        fb, dfb = 0.5 * q * t * t, q * t
-        fa, dfa = q * (t - 0.5 * t * t), q * (1.0 - t)
-    else:  # [t, 1] submerged: f_b = q (1 - t²)/2, f_a = q (1 - t)²/2
-        fb, dfb = 0.5 * q * (1.0 - t * t), -q * t
-        fa, dfa = 0.5 * q * (1.0 - t) ** 2, -q * (1.0 - t)
-    return fa, fb, dfa * dt_a, dfa * dt_b, dfb * dt_a, dfb * dt_b
-
-
 class RodBetween:
     """A rod with its ends at ``a`` and ``b`` (module docstring).
 
@@ -145,9 +128,10 @@ class RodBetween:
         self.u = d / self.length
         self.stretch = self.length - rod.length
         self.axial_force = rod.axial_stiffness * self.stretch
-        fa, fb, *self._dbuoyancy = _buoyancy_shares(rod, float(self.a[2]), float(self.b[2]))
+        shares = waterline_shares(rod.buoyancy_per_length * rod.length, 0.5 * rod.diameter, self.a, self.b)
+        self._dbuoyancy = shares.grad
         half = 0.5 * rod.weight
-        self.loads = np.array([[0.0, 0.0, fa - half], [0.0, 0.0, fb - half]])
+        self.loads = np.array([[0.0, 0.0, shares.fa - half], [0.0, 0.0, shares.fb - half]])
 
     @cached_property
     def end_forces(self) -> np.ndarray:
@@ -178,7 +162,7 @@ class RodBetween:
         """``K_ij = -∂F_i/∂p_j`` (N/m), 3 × 3, for ends ``i, j`` in (0: a, 1: b)."""
         del J
         K = (self._axial_block if i == j else -self._axial_block).copy()
-        K[2, 2] -= self._dbuoyancy[2 * i + j]
+        K[2] -= self._dbuoyancy[i, j]
         return K
 
     def b_values(self) -> list:
@@ -249,60 +233,72 @@ def rod_frame(direction) -> tuple[np.ndarray, float, float]:
 
 
 class RodBody(RigidBody):
-    r"""A rigid rod as a body of the equilibrium: 6 dofs, its reference point at end A, its body
-    y axis along it (`rod_frame`), end B at :math:`(0, L, 0)` in its axes.
+    r"""A rigid rod as a body of the equilibrium: 6 dofs, its body y axis along it (`rod_frame`),
+    its reference point at end A (``reference="a"``: a rod pinned there) or at its middle
+    (``"middle"``: a free rod), its ends at ``end_a`` and ``end_b`` in its axes (:math:`(0, L, 0)`
+    from A).
 
-    Its weight :math:`m g L` acts at its middle (its centre of gravity); its buoyancy, the
-    displaced volume of the submerged length of its axis (module docstring), acts on its ends A and
-    B as `RodBetween`'s does, changing with its pose where it crosses the still water line:
-    ``posed_loads`` gives that force and moment and their stiffness to the assembly
-    (`skcable.mooring.net_loads`). Its turning about its own axis changes nothing: a neutral
-    direction of the equilibrium (``neutral="hold"``).
+    Its weight :math:`m g L` acts at its middle (its centre of gravity); its buoyancy, that of its
+    displaced volume (module docstring), acts on its ends A and B as `RodBetween`'s does, changing
+    with its pose where it crosses the still water line: ``posed_loads`` gives that force and
+    moment and their stiffness to the assembly (`skcable.mooring.net_loads`). Its turning about
+    its own axis changes nothing: a neutral direction of the equilibrium (``neutral="hold"``). A
+    free rod's reference point is its middle, where its weight and (under water) its buoyancy act:
+    their net force has no moment about it, so the equilibrium's step along a direction nothing
+    restrains (a rod rising through the water) lifts it level instead of turning it about an end.
 
     Parameters
     ----------
     rod : Rod
         Its length, diameter, mass per length, water density and gravity.
+    reference : {"a", "middle"}
+        Where its reference point (its position's ``x, y, z``) lies.
     """
 
-    def __init__(self, rod):
-        self.rod = rod
+    def __init__(self, rod, reference="a"):
+        if reference not in ("a", "middle"):
+            raise InputError("reference", f"is {reference!r}: give 'a' or 'middle'")
+        self.rod, self.reference = rod, reference
+        half = 0.5 * rod.length
+        self.end_a = np.array([0.0, 0.0 if reference == "a" else -half, 0.0])
+        self.end_b = self.end_a + np.array([0.0, rod.length, 0.0])
         super().__init__(
             mass=rod.mass * rod.length,
-            center_of_gravity=(0.0, 0.5 * rod.length, 0.0),
+            center_of_gravity=(0.0, half if reference == "a" else 0.0, 0.0),
             rho=rod.rho,
             g=rod.g,
         )
-        self.end_b = np.array([0.0, rod.length, 0.0])
 
     def start(self, a, b) -> np.ndarray:
         """The position ``(x, y, z, roll, pitch, yaw)`` with its ends at ``a`` and ``b`` (m)."""
-        d = np.asarray(b, dtype=float) - np.asarray(a, dtype=float)
+        a, b = np.asarray(a, dtype=float), np.asarray(b, dtype=float)
+        d = b - a
         length = float(np.linalg.norm(d))
         if not length > 0 or abs(length - self.rod.length) > 1e-9 * self.rod.length:
             raise InputError("b", f"the rod's ends are {length:g} m apart, its length {self.rod.length:g} m")
         _, roll, yaw = rod_frame(d / length)
-        return np.array([*np.asarray(a, dtype=float), roll, 0.0, yaw])
+        return np.array([*(a if self.reference == "a" else 0.5 * (a + b)), roll, 0.0, yaw])
 
     def posed_loads(self, q) -> tuple[np.ndarray, np.ndarray]:
         """``(G (6,), K (6, 6))``: the buoyancy on the ends at the position ``q`` as (force, moment
-        about A) and its stiffness ``-∂/∂(x, rotation vector)``."""
-        r = self.rotation(q) @ self.end_b  # arm of B
-        za, zb = float(q[2]), float(q[2] + r[2])
-        fa, fb, *d = _buoyancy_shares(self.rod, za, zb)
-        f_b = np.array([0.0, 0.0, fb])
+        about the reference point) and its stiffness ``-∂/∂(x, rotation vector)``."""
+        R = self.rotation(q)
+        arms = (R @ self.end_a, R @ self.end_b)
+        x = np.asarray(q[:3], dtype=float)
+        rod = self.rod
+        shares = waterline_shares(
+            rod.buoyancy_per_length * rod.length, 0.5 * rod.diameter, x + arms[0], x + arms[1]
+        )
+        forces = (np.array([0.0, 0.0, shares.fa]), np.array([0.0, 0.0, shares.fb]))
         G = np.zeros(6)
-        G[2] = fa + fb
-        G[3:] = np.cross(r, f_b)
-        # -∂f_i/∂p_j (z by z) carried to the dofs by T_a = [I, 0], T_b = [I, -[r]x]
-        T = (np.hstack([np.eye(3), np.zeros((3, 3))]), np.hstack([np.eye(3), -skew(r)]))
-        K = np.zeros((6, 6))
-        for i in (0, 1):
-            for j in (0, 1):
-                Kp = np.zeros((3, 3))
-                Kp[2, 2] = -d[2 * i + j]
-                K += T[i].T @ Kp @ T[j]
-        K[3:, 3:] -= skew(f_b) @ skew(r)
+        G[2] = shares.fa + shares.fb
+        G[3:] = np.cross(arms[0], forces[0]) + np.cross(arms[1], forces[1])
+        # -∂f_i/∂p_j (f_i along z) carried to the dofs by T_i = [I, -[r_i]x]:
+        # -Σ_ij (T_i^T e_z) (∇_j f_i)^T T_j, and the arms' turning, -[f_i]x[r_i]x
+        T = np.stack([np.hstack([np.eye(3), -skew(r)]) for r in arms])
+        K = -np.einsum("ik,ijl,jlm->km", T[:, 2, :], shares.grad, T)
+        for f, r in zip(forces, arms, strict=True):
+            K[3:, 3:] -= skew(f) @ skew(r)
         return G, K
 
 

@@ -129,12 +129,12 @@ def _rod_body(source, model, rod, where_a, bodies, force) -> tuple:
     b = bodies[rod.owner].to_global(rod.b) if on_body else np.asarray(rod.b, dtype=float)
     rod_type = rod.type
     bar = Rod(float(np.linalg.norm(b - a)), rod_type.d, rod_type.mass, rho=system.rho, g=system.g)
-    body = RodBody(bar)
+    body = RodBody(bar, reference="middle" if kind == "free" else "a")
     held = kind != "free" and where_a[0] != "body"
     system.add_body(body, position=body.start(a, b), pinned=held)
     if held and where_a[0] == "held":
         model.held.append(body)
-    A = system.add_point((0.0, 0.0, 0.0), body=body, force=force)
+    A = system.add_point(body.end_a, body=body, force=force)
     B = system.add_point(body.end_b, body=body)
     if where_a[0] == "body":  # pinned to a free body: tied to the body's point
         model.ties.append((_add(model, where_a), A, bar))
