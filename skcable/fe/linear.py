@@ -90,9 +90,26 @@ class BandedSystem:
     def add_elements(self, ab: np.ndarray, Ke: np.ndarray) -> np.ndarray:
         """Add element matrices of the pattern (in its ravel order) into band storage ``ab``
         (in place, whatever its memory order)."""
-        summed = np.bincount(self._slot, weights=np.asarray(Ke).ravel()[self._keep], minlength=ab.size)
-        ab += summed.reshape(self.shape, order="F")
+        values, slot = self._entries(Ke, "band")
+        ab += np.bincount(slot, weights=values, minlength=ab.size).reshape(self.shape, order="F")
         return ab
+
+    def _entries(self, Ke, which: str) -> tuple[np.ndarray, np.ndarray]:
+        """``(values, slots)``: the entries of element matrices ``Ke`` (n_local, n_local,
+        n_elements) that go into the band (``which="band"``) or its upper part (``"upper"``),
+        and their slots there. Matrices laid out elements first in memory (a batched product's
+        ``(n_elements, n, n)`` seen transposed) are read where they lie, not copied to the
+        pattern's order: the same value goes to the same slot, in the same order."""
+        keep, slot = (self._keep, self._slot) if which == "band" else self._upper
+        Ke = np.asarray(Ke)
+        if Ke.ndim != 3 or not Ke.transpose(2, 0, 1).flags.c_contiguous:
+            return Ke.ravel()[keep], slot
+        cache = self.__dict__.setdefault("_by_element", {})
+        key = (which, Ke.shape)
+        if key not in cache:
+            i, j, e = np.unravel_index(np.flatnonzero(keep), Ke.shape)
+            cache[key] = np.ravel_multi_index((e, i, j), (Ke.shape[2], Ke.shape[0], Ke.shape[1]))
+        return Ke.transpose(2, 0, 1).ravel().take(cache[key]), slot
 
     def _free_entries(self, K):
         K = sp.coo_matrix(K)
@@ -129,10 +146,16 @@ class BandedSystem:
 
     def add_elements_upper(self, ab: np.ndarray, Ke: np.ndarray) -> np.ndarray:
         """Add the upper triangle of symmetric element matrices into an upper band ``ab``."""
-        keep, slot = self._upper
-        summed = np.bincount(slot, weights=np.asarray(Ke).ravel()[keep], minlength=ab.size)
-        ab += summed.reshape(ab.shape, order="F")
+        ab += self.upper_of(Ke)
         return ab
+
+    def upper_of(self, Ke: np.ndarray) -> np.ndarray:
+        """A new upper band ``(ku + 1, n)`` (Fortran order, as `band_upper`) holding the upper
+        triangle of the sum of symmetric element matrices ``Ke``."""
+        values, slot = self._entries(Ke, "upper")
+        return np.bincount(slot, weights=values, minlength=(self.ku + 1) * self.n).reshape(
+            (self.ku + 1, self.n), order="F"
+        )
 
     def add_sparse_upper(self, ab: np.ndarray, K) -> np.ndarray:
         """Add the free–free upper triangle of a symmetric sparse (N, N) matrix into ``ab`` (it must

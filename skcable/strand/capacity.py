@@ -225,7 +225,8 @@ class StepResult(Shown):
     @property
     def slip_fraction(self) -> float:
         """Fraction of the strand length in slip (about either axis)."""
-        return float(np.mean(np.any(self.slipping, axis=0)))
+        slipping = np.any(self.slipping, axis=0)
+        return np.count_nonzero(slipping) / slipping.size if slipping.size else float(np.mean(slipping))
 
     def to_vtk(
         self, path, *, wires: bool = False, scale: float = 1.0, radial_scale: float = 1.0, fields=None

@@ -90,15 +90,41 @@ def default_physics(slip="none", mu: float = 0.5, damage_load: str = "eccentrici
 
 @functools.lru_cache(maxsize=16)
 def _discretisation(nodes: bytes, length: float, element: str):
-    """``(mesh, bases, assembly)`` of the node abscissae ``nodes`` (float64 bytes): what depends on
-    the mesh alone, formed once for every model on it (a study's models share their mesh; none
-    of the three is changed by a model or a term)."""
+    """``(mesh, bases, assembly, kept)`` of the node abscissae ``nodes`` (float64 bytes): what
+    depends on the mesh alone, formed once for every model on it (a study's models share their
+    mesh; none of the three is changed by a model or a term); ``kept``: what models on the mesh
+    look up from it, kept for the next (`_MeshTables`)."""
     L = float(length)
     mesh = MeshLine(np.frombuffer(nodes, dtype=float).copy()).with_boundaries(
         {"left": lambda x: np.isclose(x[0], 0.0), "right": lambda x: np.isclose(x[0], L)}
     )
     bases = _bases(mesh, element)
-    return mesh, bases, Assembly(bases, STRAINS)
+    return mesh, bases, Assembly(bases, STRAINS), _MeshTables()
+
+
+class _MeshTables:
+    """What the models on one mesh derive from it and from their supports' free dofs alone,
+    formed by the first and read by the others (none changes them).
+
+    Attributes
+    ----------
+    ends : dict
+        Each basis's end dofs (`skcable.strand.fe.supports`'s ``seen``).
+    by_free : dict of bytes to tuple
+        Per set of free dofs (their bytes): the banded system of the tangent's free block and
+        the equation groups of the norm.
+    """
+
+    def __init__(self):
+        self.ends: dict = {}
+        self.by_free: dict = {}
+
+
+@functools.lru_cache(maxsize=16)
+def _strand_section(strand):
+    """``strand.section()``, formed once per strand for every model of it (its wire table,
+    materials and principal axes; a study's models share their strand, and nothing changes it)."""
+    return strand.section()
 
 
 def _bases(mesh: MeshLine, element: str) -> dict:
@@ -234,12 +260,14 @@ class StrandModel:
         if element not in ELEMENTS:
             raise InputError("element", f"must be one of {tuple(ELEMENTS)}, got {element!r}")
         nodes = self._nodes(n_elements, mesh, grading)
-        self.mesh, self.bases, self.assembly = _discretisation(nodes.tobytes(), self.length, element)
+        self.mesh, self.bases, self.assembly, self._kept = _discretisation(
+            nodes.tobytes(), self.length, element
+        )
         self.offsets = self.assembly.offsets
         self.x = np.asarray(self.bases["u"].global_coordinates())[0]  # (ne, nq)
         self._dx = self.bases["u"].dx
         self._boundary()
-        self.strand_section = strand.section()  # its wire table and materials, formed once per model
+        self.strand_section = _strand_section(strand)  # its wire table and materials, formed once per strand
         self._ruptures = [m.eps_rupture for m in strand.materials]
         self._plausible_strain = max(_plausible.MAX_STRAIN, 1.5 * max(self._ruptures))
         self.EA = self.strand_section.EA
@@ -247,12 +275,16 @@ class StrandModel:
         # (position in the model's term list, bound term): the states and outputs follow that list
         self._section_terms = [(i, t) for i, t in enumerate(self._bound) if isinstance(t, SectionTerm)]
         self._other_terms = [(i, t) for i, t in enumerate(self._bound) if not isinstance(t, SectionTerm)]
-        self._system = LinearSystem(self.assembly.banded(self.free))
+        key = self.free.tobytes()
+        if key not in self._kept.by_free:
+            self._kept.by_free[key] = (self.assembly.banded(self.free), self._equation_groups())
+        banded, self._groups = self._kept.by_free[key]
+        self._system = LinearSystem(banded)
         self._first = FirstSolveCheck(self, check_tangents)
-        self._groups = self._equation_groups()
         self._group_index = self._index_groups()
         self._metric = None  # the elastic tangent of the straight strand, in the solver's storage
         self.layout = self._layout()
+        self._alive_wires = ~self.layout.wire_broken[:, None, None]
         self._init = dict(
             strand=strand, length=length, mesh=self.mesh.p[0].copy(), physics=self.terms[: len(physics)],
             terms=self.terms[len(physics) :], supports=self.supports.describe(), element=element,
@@ -325,7 +357,7 @@ class StrandModel:
 
     def _boundary(self):
         offsets = {name: int(self.offsets[i]) for i, name in enumerate(FIELDS)}
-        seen: dict = {}  # each basis's end dofs, looked up once
+        seen = self._kept.ends  # each basis's end dofs, looked up once per mesh
         fixed, values = self.supports.dofs(self.bases, offsets, seen)
         self.pull = StrandSupports.index("right", "u", self.bases, offsets, seen)
         self._left_u = StrandSupports.index("left", "u", self.bases, offsets, seen)
@@ -333,7 +365,10 @@ class StrandModel:
             raise InputError("supports", "fix a dof twice (both ends on one node?)")
         self.fixed, self.fixed_values = fixed, values
         imposed = np.append(fixed, self.pull) if self.axial == "strain" else fixed
-        self.free = np.setdiff1d(np.arange(self.assembly.N), imposed)
+        free = np.ones(self.assembly.N, dtype=bool)
+        free[imposed] = False
+        self.free = np.flatnonzero(free)  # sorted, as `np.setdiff1d` gives them
+        self._nodal_dofs = np.array([offsets[name] + self.bases[name].nodal_dofs[0] for name in FIELDS])
         self._reaction_dofs = self.supports.indices(self.bases, offsets, seen)
         if self.axial == "strain":  # the imposed strain's reaction is the axial force at x = L
             self._reaction_dofs["right"]["u"] = self.pull
@@ -412,12 +447,11 @@ class StrandModel:
 
     def nodal_values(self, U):
         """Values of u, v, w, φ at the mesh nodes (their vertex dofs): dict of (n_nodes,) arrays."""
-        parts = self.split(U)
-        return {name: parts[name][self.bases[name].nodal_dofs[0]] for name in FIELDS}
+        return dict(zip(FIELDS, np.asarray(U)[self._nodal_dofs], strict=True))
 
     def generalized_strains(self, U):
         """g = (u′, v′, v″, w′, w″, φ′) at the quadrature points: (6, ne, nq)."""
-        return np.ascontiguousarray(self.assembly.interpolate(U).transpose(0, 2, 1))
+        return self.assembly.interpolate_by_element(U)
 
     def section_vector(self, S):
         """``∫ Σ_a S_a B_a dx`` (N,) from section forces S (6, ne, nq)."""
@@ -640,15 +674,15 @@ class StrandModel:
         if self._system.accept(a["extra"]):
             self._metric = None  # rebuilt in the new storage
         system = self._system
+        Ke = self._element_matrices(a)
         if upper and system.is_banded:
-            ab = system.band_upper()
-            add, add_sparse = system.add_elements_upper, system.add_sparse_upper
+            ab = system.band_upper() if Ke is None else system.upper_of(Ke)  # a new band
+            add_sparse = system.add_sparse_upper
         else:
             ab = system.band()
-            add, add_sparse = system.add_elements, system.add_sparse
-        Ke = self._element_matrices(a)
-        if Ke is not None:
-            add(ab, Ke)
+            add_sparse = system.add_sparse
+            if Ke is not None:
+                system.add_elements(ab, Ke)
         for Kt in a["extra"]:
             add_sparse(ab, Kt)
         return ab
@@ -1026,9 +1060,11 @@ class StrandModel:
     def _step_result(self, load, result, state, settled, assemblies, shifted=False):
         a, U = result.state, result.x
         # the wire kinematics of the first term that reports them (HelicalWires, AnnexE, ...)
-        wires = next((o for o in a["outputs"] if o and {"strain", "curvature", "kappa_m"} <= set(o)), None)
+        owner, wires = next(
+            ((t, o) for t, o in zip(self._bound, a["outputs"], strict=True) if o and _KINEMATICS <= o.keys()),
+            (None, None),
+        )
         if wires is not None and wires["kappa_m"] is None:  # a law that sticks leaves these to the results
-            owner = next(t for t, o in zip(self._bound, a["outputs"], strict=True) if o is wires)
             wires = dict(
                 wires,
                 kappa_m=owner.kappa_m(wires["axial"], derivative=False)[0],
@@ -1047,7 +1083,7 @@ class StrandModel:
                 axial=g[0] + 0.5 * (g[1] ** 2 + g[3] ** 2),
                 N=S[0] if S is not None else zeros[0],
             )
-        alive = ~self.layout.wire_broken[:, None, None]
+        alive = self._alive_wires
         if self.axial == "force":
             force = load
         else:  # the reaction of the imposed strain or of a support holding u(L); 0 where it is free
@@ -1130,6 +1166,10 @@ def _surrogate(term, output):
 
 def _rebuild(cls, strand, length, kwargs):
     return cls(strand, length, **kwargs)
+
+
+#: The outputs of a term that reports the wires' kinematics (`StrandModel._step_result`).
+_KINEMATICS = frozenset({"strain", "curvature", "kappa_m"})
 
 
 def _same(a, b) -> bool:
