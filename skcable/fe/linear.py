@@ -171,15 +171,15 @@ class BandedSystem:
         """`solve_positive` for upper bands (`band_upper`): ``ab`` is overwritten."""
         if shift is not None and mu != 0.0:
             ab = ab + mu * shift
-        c, info = lapack.dpbtrf(ab, lower=0, overwrite_ab=True)
-        if info != 0:
-            raise np.linalg.LinAlgError(f"not positive definite (LAPACK dpbtrf info = {info})")
         rhs = np.empty(self.n)
         rhs[self._free_rank] = b
-        x, info = lapack.dpbtrs(c, rhs, lower=0, overwrite_b=True)
+        # ``dpbsv``: ``dpbtrf`` then ``dpbtrs`` in one call (the same factor and solution)
+        _, x, info = lapack.dpbsv(ab, rhs, lower=0, overwrite_ab=True, overwrite_b=True)
+        if info > 0:
+            raise np.linalg.LinAlgError(f"not positive definite (LAPACK dpbsv info = {info})")
         if info != 0:
-            raise np.linalg.LinAlgError(f"LAPACK dpbtrs info = {info}")
-        return x[self._free_rank]
+            raise np.linalg.LinAlgError(f"LAPACK dpbsv info = {info}")
+        return x.take(self._free_rank)
 
     def solve_positive(self, ab: np.ndarray, b: np.ndarray, shift: np.ndarray | None = None, mu: float = 0.0):
         """Solve ``(A + mu·M) x = b`` by banded Cholesky (LAPACK ``dpbtrf``/``dpbtrs``) for a

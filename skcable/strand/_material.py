@@ -260,11 +260,16 @@ def _select(eps, elastic, plastic, on, on_elastic, on_line, on_blend):
     ``eps``'s shape when it is the only one."""
     values = [v for v, present in zip((on_elastic, on_line, on_blend), on, strict=True) if present]
     if len(values) == 1:
-        return np.full(eps.shape, values[0]) if np.isscalar(values[0]) else values[0]
-    if not on[0]:
-        return np.where(plastic, on_line, on_blend)
-    inner = np.where(plastic, on_line, on_blend) if on[1] and on[2] else (on_line if on[1] else on_blend)
-    return np.where(elastic, on_elastic, inner)
+        return values[0] if isinstance(values[0], np.ndarray) else np.full(eps.shape, values[0])
+    # two or three branches: the last one's array (a temporary of `_evaluate`, overwritten) with
+    # the others copied over it where they hold (the masks are disjoint: the same selection)
+    last = on_blend if on[2] else on_line
+    out = last if isinstance(last, np.ndarray) else np.full(eps.shape, last)
+    if on[1] and on[2]:
+        np.copyto(out, on_line, where=plastic)
+    if on[0]:
+        np.copyto(out, on_elastic, where=elastic)
+    return out
 
 
 #: Pino Vidal (2021), Table B.1 (MPa in the table, Pa here); density and thermal expansion:

@@ -395,6 +395,7 @@ class StrandModel:
         """The groups of `_equation_groups` as flat index arrays for ``np.maximum.reduceat``."""
         groups = self._groups
         self._has_free = np.array([free.size > 0 for _, free, _ in groups])
+        self._with_free = np.flatnonzero(self._has_free)
         order = np.concatenate([dofs for dofs, _, _ in groups])
         starts = np.cumsum([0] + [len(dofs) for dofs, _, _ in groups[:-1]])
         with_free = [free for _, free, _ in groups if free.size]
@@ -711,12 +712,13 @@ class StrandModel:
         """The largest residual of each group of equations over its force scale, or over its
         round-off floor divided by the tolerance where that is larger (module docstring)."""
         order, starts, free_order, free_starts, force, free_length = self._group_index
-        scales = np.maximum.reduceat(a["size"][order], starts)
+        scales = np.maximum.reduceat(a["size"].take(order), starts)
         # the scales are >= 0 (NaN stays NaN); ndarray methods: a Newton calls this per assembly
-        forces = float(scales[force].max(initial=0.0))
-        floor = ROUND_OFF * forces / tol * free_length  # the moment groups' floor times the length
-        residual = np.maximum.reduceat(np.abs(a["R"][free_order]), free_starts)
-        worst = residual / np.maximum(np.maximum(scales[self._has_free], floor), 1e-300)
+        forces = float(scales.take(force).max(initial=0.0))
+        # the moment groups' floor times the length, at least 1e-300 (max is exact in any order)
+        floor = np.maximum(ROUND_OFF * forces / tol * free_length, 1e-300)
+        residual = np.maximum.reduceat(np.abs(a["R"].take(free_order)), free_starts)
+        worst = residual / np.maximum(scales.take(self._with_free), floor)
         return float(worst.max(initial=0.0)) if math.isfinite(forces) else float("nan")  # NaN stays NaN
 
     def _solver(self, first, options: NewtonOptions) -> str:

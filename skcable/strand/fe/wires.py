@@ -203,12 +203,13 @@ class HelicalWires(SectionTerm):
         has a derivative that jumps at every grid point, and Newton stalls on a kink.
         """
         grid = self.kappa_grid
-        eps = np.clip(axial_strain, 0.0, grid[-1])
         if derivative:
+            eps = np.clip(axial_strain, 0.0, grid[-1])
             return self._spline(eps), self._slope(eps) * (axial_strain > 0)
+        eps = np.minimum(np.maximum(axial_strain, 0.0), grid[-1])  # `np.clip`, without its wrapper
         i = np.minimum((eps * ((len(grid) - 1) / grid[-1])).astype(np.intp), len(grid) - 2)
         c = np.take(self._cubics, i, axis=2)  # (4, 2, ...): the cubic of each point's interval, per axis
-        t = eps - grid[i]
+        t = eps - grid.take(i)
         return ((c[0] * t + c[1]) * t + c[2]) * t + c[3], None
 
     def _kappa_m_of(self, axial_strain):
