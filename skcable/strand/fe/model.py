@@ -669,16 +669,16 @@ class StrandModel:
         U[self.free] += 1e-5 * self.length * np.random.default_rng(1).standard_normal(self.free.size)
         return U
 
-    def _band_of(self, a, upper: bool = False):
+    def _band_of(self, a, lower: bool = False):
         """The free–free tangent of an assembly in the solver's storage (section terms and the
-        others); ``upper``: its upper band alone (a symmetric tangent for the Cholesky solve)."""
+        others); ``lower``: its lower band alone (a symmetric tangent for the Cholesky solve)."""
         if self._system.accept(a["extra"]):
             self._metric = None  # rebuilt in the new storage
         system = self._system
         Ke = self._element_matrices(a)
-        if upper and system.is_banded:
-            ab = system.band_upper() if Ke is None else system.upper_of(Ke)  # a new band
-            add_sparse = system.add_sparse_upper
+        if lower and system.is_banded:
+            ab = system.band_lower() if Ke is None else system.lower_of(Ke)  # a new band
+            add_sparse = system.add_sparse_lower
         else:
             ab = system.band()
             add_sparse = system.add_sparse
@@ -697,13 +697,13 @@ class StrandModel:
         """``-(K + mu K0)⁻¹ R`` by a Cholesky-like factorisation (raises LinAlgError when not positive
         definite); K0 is the tangent of the straight, unstrained strand (positive definite), built on
         first use."""
-        ab = self._band_of(a, upper=True)
+        ab = self._band_of(a, lower=True)
         banded = self._system.is_banded  # `_band_of` may have moved it to the sparse storage
         if mu != 0.0 and self._metric is None:
             straight = self._prescribed(np.zeros(self.assembly.N), 0.0)
-            self._metric = self._band_of(self._assemble(straight, self.initial_state(), 0.0), upper=True)
+            self._metric = self._band_of(self._assemble(straight, self.initial_state(), 0.0), lower=True)
         dU = np.zeros(self.assembly.N)
-        solve = self._system.solve_positive_upper if banded else self._system.solve_positive
+        solve = self._system.solve_positive_lower if banded else self._system.solve_positive
         dU[self.free] = solve(ab, -a["R"][self.free], self._metric, mu)
         return dU
 
