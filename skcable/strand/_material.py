@@ -201,13 +201,24 @@ class Material:
         over = eps - ey if on[1] else None  # beyond the bilinear yield, on the hardening line
         a, b, c, d = self._cubic
         stress = tangent = density = None
-        if law:
-            line = E_e * ey + E_p * over if over is not None else None
-            blend = ((a * t + b) * t + c) * t + d if on[2] else None
-            stress = np.copysign(
-                _select(eps, elastic, plastic, on, E_e * eps if on[0] else None, line, blend), strain
-            )
-            slope = (3 * a * t + 2 * b) * t + c if on[2] else None
+        if law:  # in place on temporaries: the operations of E_e ε_y + E_p (ε − ε_y), Horner's cubic
+            line = blend = slope = None
+            if over is not None:
+                line = np.multiply(E_p, over)
+                line += E_e * ey
+            if on[2]:
+                blend = np.multiply(a, t)  # ((a t + b) t + c) t + d
+                blend += b
+                blend *= t
+                blend += c
+                blend *= t
+                blend += d
+                slope = np.multiply(3 * a, t)  # (3 a t + 2 b) t + c
+                slope += 2 * b
+                slope *= t
+                slope += c
+            stress = _select(eps, elastic, plastic, on, E_e * eps if on[0] else None, line, blend)
+            np.copysign(stress, strain, out=stress)
             tangent = _select(eps, elastic, plastic, on, E_e, E_p, slope)
         if energy:
 

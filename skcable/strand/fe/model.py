@@ -448,7 +448,7 @@ class StrandModel:
 
     def nodal_values(self, U):
         """Values of u, v, w, φ at the mesh nodes (their vertex dofs): dict of (n_nodes,) arrays."""
-        return dict(zip(FIELDS, np.asarray(U)[self._nodal_dofs], strict=True))
+        return dict(zip(FIELDS, np.asarray(U).take(self._nodal_dofs), strict=True))
 
     def generalized_strains(self, U):
         """g = (u′, v′, v″, w′, w″, φ′) at the quadrature points: (6, ne, nq)."""
