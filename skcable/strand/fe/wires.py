@@ -160,6 +160,7 @@ class HelicalWires(SectionTerm):
         self.kappa_grid, _, self._spline, self._slope = critical_curvature_table(s, self.slip.mu)
         self._curvature = self._slope.derivative()
         self._cubics = np.ascontiguousarray(self._spline.c.transpose(0, 2, 1))  # (power, axis, n - 1)
+        self._slopes = np.ascontiguousarray(self._slope.c.transpose(0, 2, 1))
         # the lever offsets from the centroid, and the centroid, per wire: fixed per model
         self._y = self.wire_y - self.centroid_y[None]
         self._z = self.wire_z - self.centroid_z[None]
@@ -195,22 +196,26 @@ class HelicalWires(SectionTerm):
         self._no_slip.flags.writeable = False
 
     def kappa_m(self, axial_strain, derivative: bool = True):
-        """Critical curvatures (2, ...) and their derivative with respect to the axial strain
-        (None without ``derivative``: then the interpolant's cubic pieces evaluated here, on its
-        uniform grid, the same values to round-off, for the results of a law that sticks).
+        """Critical curvatures (2, ...) and, with ``derivative``, their derivative with respect to
+        the axial strain (else None): the interpolant's cubic pieces (and its derivative's)
+        evaluated here by Horner's rule on its uniform grid, one interval lookup for both (the
+        values of ``PchipInterpolator`` to round-off).
 
         A monotone C¹ interpolant (PCHIP) of the tabulated law: a piecewise-linear one
         has a derivative that jumps at every grid point, and Newton stalls on a kink.
         """
         grid = self.kappa_grid
-        if derivative:
-            eps = np.clip(axial_strain, 0.0, grid[-1])
-            return self._spline(eps), self._slope(eps) * (axial_strain > 0)
         eps = np.minimum(np.maximum(axial_strain, 0.0), grid[-1])  # `np.clip`, without its wrapper
-        i = np.minimum((eps * ((len(grid) - 1) / grid[-1])).astype(np.intp), len(grid) - 2)
-        c = np.take(self._cubics, i, axis=2)  # (4, 2, ...): the cubic of each point's interval, per axis
-        t = eps - grid.take(i)
-        return ((c[0] * t + c[1]) * t + c[2]) * t + c[3], None
+        # the interval of each point (a NaN strain takes the first: its value stays NaN)
+        inside = np.fmin(np.fmax(axial_strain, 0.0), grid[-1])
+        i = np.minimum((inside * ((len(grid) - 1) / grid[-1])).astype(np.intp), len(grid) - 2)
+        t = eps - grid.take(i, mode="clip")
+        c = np.take(self._cubics, i, axis=2, mode="clip")  # (4, 2, ...): each point's cubic, per axis
+        value = ((c[0] * t + c[1]) * t + c[2]) * t + c[3]
+        if not derivative:
+            return value, None
+        d = np.take(self._slopes, i, axis=2, mode="clip")  # (3, 2, ...): its derivative
+        return value, ((d[0] * t + d[1]) * t + d[2]) * (axial_strain > 0)
 
     def _kappa_m_of(self, axial_strain):
         """`kappa_m`, without the derivative (None) where the law sticks everywhere: no tangent
