@@ -308,9 +308,8 @@ class HelicalWires(SectionTerm):
             c2 * (axial[None] - eccentric - y * kappa_c[0][None] - z * kappa_c[1][None])
             + self.sc * g[5][None]
         )
-        stress, tangent, density = self.materials.stress_tangent_energy(strain)
+        stress, tangent = self.materials.stress_and_tangent(strain)
         stress = stress * self._alive3  # a broken wire carries nothing (its area weight is zero too)
-        energy = np.sum(self.area_weight * density, axis=0)
         b = self._strain_gradients(g, P, q, strain.shape)
         s = self.area_weight * stress
         k = self.area_weight * tangent
@@ -329,7 +328,7 @@ class HelicalWires(SectionTerm):
             slipping=self.slip.slipping(k_principal, points, state),
             axial=axial,
             N=N,
-            energy=energy,
+            energy=lambda: np.sum(self.area_weight * self.materials.energy(strain), axis=0),  # on demand
             points=points,
         )
         return S, D, output
