@@ -206,7 +206,7 @@ class Material:
             if over is not None:
                 line = np.multiply(E_p, over)
                 line += E_e * ey
-            if on[2]:
+            if t is not None:  # on[2]
                 blend = np.multiply(a, t)  # ((a t + b) t + c) t + d
                 blend += b
                 blend *= t

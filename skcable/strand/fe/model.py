@@ -35,6 +35,7 @@ from __future__ import annotations
 import functools
 import math
 import warnings
+from dataclasses import dataclass
 from typing import Any
 
 import numpy as np
@@ -134,6 +135,59 @@ def _bases(mesh: MeshLine, element: str) -> dict:
     ub = Basis(mesh, axial, intorder=ELEMENTS[element])
     vb = ub.with_element(ElementLineHermite())
     return {"u": ub, "v": vb, "w": vb, "phi": ub}
+
+
+@dataclass(slots=True, eq=False)
+class Assembled:
+    """One assembly of a strand model at a dof vector: what a Newton iteration, the norm, the
+    tangent and the step's results read (`StrandModel._assemble`).
+
+    Attributes
+    ----------
+    R : ndarray (N,)
+        The residual (N for the displacement dofs, N·m for the rotations and slopes), the
+        axial force at x = L subtracted under ``axial="force"``.
+    extra : list
+        The tangents (N × N, sparse or dense) of the terms that are not section terms.
+    outputs : list
+        Each term's output dict, in the model's term order (None where a term gives none).
+    g : ndarray (6, n_elements, n_quad)
+        The generalized strains (u′, v′, v″, w′, w″, φ′) at the quadrature points (1, 1/m).
+    S : ndarray (6, n_elements, n_quad) or None
+        The section terms' summed section forces (N, N·m), None without section terms.
+    D : ndarray (6, 6, n_elements, n_quad) or None
+        Their summed section tangent, None without section terms.
+    energy : _Energy or None
+        The model's energy (J) on demand, None where a term has no potential.
+    size : ndarray (N,)
+        The size of what each equation sums (the force scales of the norm).
+    strain : float
+        The strand's axial strain of the assembly (the imposed one, or read from the dofs).
+    state : tuple
+        The terms' states it was assembled with.
+    load : float
+        The axial load: the imposed strain, the axial force at x = L (N), or 0.
+    tangents : dict
+        ``extra`` by position in the term list (the active-set fingerprints of `_active`).
+    Ke : ndarray (n_local, n_local, n_elements) or None
+        The section terms' element matrices, formed on first use (`StrandModel._element_matrices`:
+        a Newton iterate that converges never needs them); ``formed`` tells whether they are.
+    """
+
+    R: np.ndarray
+    extra: list
+    outputs: list
+    g: np.ndarray
+    S: np.ndarray | None
+    D: np.ndarray | None
+    energy: Any
+    size: np.ndarray
+    strain: float
+    state: tuple
+    load: float
+    tangents: dict
+    Ke: np.ndarray | None = None
+    formed: bool = False
 
 
 class StrandModel:
@@ -601,7 +655,7 @@ class StrandModel:
             energy = None if energy is None else energy - load * float(U[self.pull])
         if energy is not None:  # the section terms' part on demand (`_energy`): a converged step needs none
             energy = _Energy(densities, self._dx, energy)
-        return dict(
+        return Assembled(
             R=R, extra=extra, outputs=outputs, g=g, S=S, D=D, energy=energy, size=size, strain=strain,
             state=state, load=load, tangents=tangents,
         )  # fmt: skip
@@ -624,9 +678,10 @@ class StrandModel:
     def _element_matrices(self, a):
         """The section terms' element matrices of an assembly ``a`` (None without section terms),
         formed on first use and kept in it: a Newton iterate that converges never needs them."""
-        if "Ke" not in a:
-            a["Ke"] = self.section_matrices(a["D"]) if a["D"] is not None else None
-        return a["Ke"]
+        if not a.formed:
+            a.Ke = self.section_matrices(a.D) if a.D is not None else None
+            a.formed = True
+        return a.Ke
 
     def assemble(self, U, state=None, *, force: float = 0.0):
         """``(R, K, outputs)``: residual (N,), tangent (CSR, N × N) and the terms' outputs at ``U``
@@ -634,12 +689,12 @@ class StrandModel:
         force at x = L is ``force``; ``state`` as from a solve)."""
         load = (U[self.pull] - self.supports.left["u"]) / self.length if self.axial == "strain" else force
         a = self._assemble(U, state, load)
-        return a["R"], self._global_tangent(a), a["outputs"]
+        return a.R, self._global_tangent(a), a.outputs
 
     def _global_tangent(self, a):
         Ke = self._element_matrices(a)
         K = self.assembly.matrix(Ke) if Ke is not None else 0
-        for Kt in a["extra"]:
+        for Kt in a.extra:
             K = K + Kt
         return K
 
@@ -672,7 +727,7 @@ class StrandModel:
     def _band_of(self, a, lower: bool = False):
         """The free–free tangent of an assembly in the solver's storage (section terms and the
         others); ``lower``: its lower band alone (a symmetric tangent for the Cholesky solve)."""
-        if self._system.accept(a["extra"]):
+        if self._system.accept(a.extra):
             self._metric = None  # rebuilt in the new storage
         system = self._system
         Ke = self._element_matrices(a)
@@ -684,13 +739,13 @@ class StrandModel:
             add_sparse = system.add_sparse
             if Ke is not None:
                 system.add_elements(ab, Ke)
-        for Kt in a["extra"]:
+        for Kt in a.extra:
             add_sparse(ab, Kt)
         return ab
 
     def _increment(self, a):
         dU = np.zeros(self.assembly.N)
-        dU[self.free] = self._system.solve(self._band_of(a), -a["R"][self.free])
+        dU[self.free] = self._system.solve(self._band_of(a), -a.R[self.free])
         return dU
 
     def _increment_positive(self, a, mu):
@@ -704,7 +759,7 @@ class StrandModel:
             self._metric = self._band_of(self._assemble(straight, self.initial_state(), 0.0), lower=True)
         dU = np.zeros(self.assembly.N)
         solve = self._system.solve_positive_lower if banded else self._system.solve_positive
-        dU[self.free] = solve(ab, -a["R"][self.free], self._metric, mu)
+        dU[self.free] = solve(ab, -a.R[self.free], self._metric, mu)
         return dU
 
     # --- solution ----------------------------------------------------------------
@@ -712,19 +767,19 @@ class StrandModel:
         """The largest residual of each group of equations over its force scale, or over its
         round-off floor divided by the tolerance where that is larger (module docstring)."""
         order, starts, free_order, free_starts, force, free_length = self._group_index
-        scales = np.maximum.reduceat(a["size"].take(order), starts)
+        scales = np.maximum.reduceat(a.size.take(order), starts)
         # the scales are >= 0 (NaN stays NaN); ndarray methods: a Newton calls this per assembly
         forces = float(scales.take(force).max(initial=0.0))
         # the moment groups' floor times the length, at least 1e-300 (max is exact in any order)
         floor = np.maximum(ROUND_OFF * forces / tol * free_length, 1e-300)
-        residual = np.maximum.reduceat(np.abs(a["R"].take(free_order)), free_starts)
+        residual = np.maximum.reduceat(np.abs(a.R.take(free_order)), free_starts)
         worst = residual / np.maximum(scales.take(self._with_free), floor)
         return float(worst.max(initial=0.0)) if math.isfinite(forces) else float("nan")  # NaN stays NaN
 
     def _solver(self, first, options: NewtonOptions) -> str:
         """'minimize', 'newton' or 'semismooth', from the terms' declarations and the options."""
         smooth = all(t.smooth for t in self._bound)
-        potential = first["energy"] is not None and all(
+        potential = first.energy is not None and all(
             t.symmetric and t.potential is not False for t in self._bound
         )
         search = options.line_search
@@ -801,7 +856,7 @@ class StrandModel:
         common = dict(
             norm=lambda a: self._norm(a, options.tol), tol=options.tol, atol=options.atol,
             name=name, state=first, callback=options.callback, rejects=(NonFiniteError,),
-            absolute=lambda a: float(np.max(np.abs(a["R"][self.free]), initial=0.0)),
+            absolute=lambda a: float(np.max(np.abs(a.R[self.free]), initial=0.0)),
         )  # fmt: skip
         if kind == "minimize":  # every term has a potential: minimise it, shifted at folds
             result = self._minimize(assemble, U, options, common)
@@ -819,18 +874,18 @@ class StrandModel:
 
     def _merit(self, a) -> float:
         """The residual's 2-norm over the free dofs: the smooth line-search merit."""
-        return float(np.sqrt(np.sum(a["R"][self.free] ** 2)))
+        return float(np.sqrt(np.sum(a.R[self.free] ** 2)))
 
     def _minimize(self, assemble, U, options, common, **settings):
         free, free_R = self.free, np.zeros(self.assembly.N)
 
         def gradient(a):
-            free_R[free] = a["R"][free]
+            free_R[free] = a.R[free]
             return free_R
 
         settings = {"max_iter": max(options.max_iter, 40), "mu_max": options.mu_max} | settings
         return minimize(
-            assemble, U, energy=lambda a: a["energy"](), gradient=gradient, solve=self._increment_positive,
+            assemble, U, energy=lambda a: a.energy(), gradient=gradient, solve=self._increment_positive,
             **settings, **common,
         )  # fmt: skip
 
@@ -866,7 +921,7 @@ class StrandModel:
             return run(U, stagnation_window=2 * options.stagnation_window, **common)
         except ConvergenceError as exc:
             failed = exc
-        potential = first["energy"] is not None and all(
+        potential = first.energy is not None and all(
             t.symmetric and t.potential is not False for t in self._bound
         )
         if not potential and any(hasattr(t, "frozen") for t in self._bound):
@@ -898,12 +953,12 @@ class StrandModel:
         for i, t in enumerate(self._bound):
             if t.smooth:
                 continue
-            out = a["outputs"][i] or {}
+            out = a.outputs[i] or {}
             mask = out.get("active", out.get("slipping"))
             if mask is not None:
                 keys.append(np.packbits(np.asarray(mask, dtype=bool)).tobytes())
             else:
-                K = a["tangents"].get(i)
+                K = a.tangents.get(i)
                 keys.append(None if K is None else sp.csr_matrix(K).data.tobytes())
         return tuple(keys)
 
@@ -913,10 +968,10 @@ class StrandModel:
         points frozen at the current state), minimise the surrogate's energy (which passes a fold
         of the path, as `_minimize` does) and polish the step with the model's own Newton from
         there, refreezing at most ``rounds`` times; else raise ``failed``."""
-        load, state = first["load"], first["state"]
+        load, state = first.load, first.state
         for _ in range(rounds):
             start = assemble(U)
-            bound = [_surrogate(t, o) for t, o in zip(self._bound, start["outputs"], strict=True)]
+            bound = [_surrogate(t, o) for t, o in zip(self._bound, start.outputs, strict=True)]
             if any(t is None for t in bound):
                 raise failed
             surrogate = functools.partial(self._assemble, state=state, load=load, bound=bound)
@@ -1013,7 +1068,7 @@ class StrandModel:
         result = self._newton(guess, strain, state, options, diagnose, values)
         settled, seen, assemblies, shifted = True, [state], result.assemblies, result.shifted
         for _ in range(passes):
-            outputs = result.state["outputs"]
+            outputs = result.state.outputs
             new = tuple(t.next_state(o, s) for t, o, s in zip(self._bound, outputs, state, strict=True))
             if _same(new, state):
                 break
@@ -1062,19 +1117,21 @@ class StrandModel:
     def _step_result(self, load, result, state, settled, assemblies, shifted=False):
         a, U = result.state, result.x
         # the wire kinematics of the first term that reports them (HelicalWires, AnnexE, ...)
-        owner, wires = next(
-            ((t, o) for t, o in zip(self._bound, a["outputs"], strict=True) if o and _KINEMATICS <= o.keys()),
-            (None, None),
-        )
-        if wires is not None and wires["kappa_m"] is None:  # a law that sticks leaves these to the results
+        owner: Any = None
+        wires: Any = None
+        for t, o in zip(self._bound, a.outputs, strict=True):
+            if o and _KINEMATICS <= o.keys():
+                owner, wires = t, o
+                break
+        if owner is not None and wires["kappa_m"] is None:  # a law that sticks leaves these to the results
             wires = dict(
                 wires,
                 kappa_m=owner.kappa_m(wires["axial"], derivative=False)[0],
-                curvature=owner.principal(a["g"]),
+                curvature=owner.principal(a.g),
             )
         shape = (2, *self.x.shape)
         zeros = np.zeros(shape)
-        g, S, D = a["g"], a["S"], a["D"]
+        g, S, D = a.g, a.S, a.D
         if wires is None:
             wires = dict(
                 curvature=np.array([g[2], g[4]]),
@@ -1089,9 +1146,9 @@ class StrandModel:
         if self.axial == "force":
             force = load
         else:  # the reaction of the imposed strain or of a support holding u(L); 0 where it is free
-            force = float(a["R"][self.pull]) if self.axial == "strain" or self.pull in self.fixed else 0.0
+            force = float(a.R[self.pull]) if self.axial == "strain" or self.pull in self.fixed else 0.0
         return StepResult(
-            strain=a["strain"],
+            strain=a.strain,
             force=force,
             x=self.x,
             curvature=wires["curvature"],
@@ -1114,13 +1171,13 @@ class StrandModel:
             assemblies=assemblies,
             shifted=shifted,
             outputs=self._outputs(a),
-            reactions=self._reactions(a["R"]),
+            reactions=self._reactions(a.R),
         )
 
     def _outputs(self, a) -> dict:
         """The terms' named point and cell data (`skcable.fe.terms`), names made unique."""
         out = {}
-        for t, o in zip(self._bound, a["outputs"], strict=True):
+        for t, o in zip(self._bound, a.outputs, strict=True):
             for kind in ("point_data", "cell_data"):
                 for name, value in ((o or {}).get(kind) or {}).items():
                     key = name if name not in out else f"{type(t).__name__}.{name}"
