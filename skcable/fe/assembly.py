@@ -138,6 +138,22 @@ class Assembly:
         """Generalized strains at the quadrature points: (n_strains, n_quad, n_elements)."""
         return np.einsum("aqie,ie->aqe", self.B, U[self.dofs])
 
+    @cached_property
+    def _interpolation(self) -> sp.csr_matrix:
+        """`interpolate` as one sparse operator from the dofs to the points, rows in scikit-fem's
+        order (strain, element, point), each row's entries in local-dof order (the sums of
+        `interpolate`, term by term, without its zero terms)."""
+        na, nq, _, ne = self.B.shape
+        a, q, i, e = np.nonzero(self.B)
+        rows = (a * ne + e) * nq + q
+        return sp.csr_matrix((self.B[a, q, i, e], (rows, self.dofs[i, e])), shape=(na * ne * nq, self.N))
+
+    def interpolate_by_element(self, U: np.ndarray) -> np.ndarray:
+        """`interpolate` in scikit-fem's layout, (n_strains, n_elements, n_quad) contiguous, by one
+        sparse product (no gather or transpose per call)."""
+        na, nq, _, ne = self.B.shape
+        return (self._interpolation @ np.asarray(U, dtype=float)).reshape(na, ne, nq)
+
     def local(self, a: int, s: np.ndarray) -> np.ndarray:
         """``∫ s B_a dx`` per element and local dof: (n_local, n_elements), from s (n_quad, n_elements)."""
         return np.einsum("qie,qe->ie", self.B[a], s * self.dx)
@@ -156,22 +172,48 @@ class Assembly:
         return self.gather(np.einsum("aqie,aqe->ie", self._abs_B, np.abs(S) * self.dx))
 
     def vector_and_magnitude(self, S: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-        """`vector` and `magnitude` of ``S`` in one contraction and one gather (a Newton iteration
-        needs both: the residual and its force scale); equal to the two calls to the last bit."""
-        weighted = np.empty((2, *S.shape))
-        np.multiply(S, self.dx, out=weighted[0])
+        """`vector` and `magnitude` of ``S`` in one sparse product and one gather (a Newton
+        iteration needs both: the residual and its force scale); equal to the two calls to the
+        last bit. ``S`` (n_strains, n_quad, n_elements) may be a transposed view of scikit-fem's
+        layout (n_strains, n_elements, n_quad): it is then read where it lies."""
+        na, nq, _, ne = self.B.shape
+        by_element = S.transpose(0, 2, 1).flags.c_contiguous
+        weighted = np.empty((2, na, ne, nq) if by_element else (2, na, nq, ne))
+        if by_element:
+            np.multiply(S.transpose(0, 2, 1), self._dx_by_element, out=weighted[0])
+        else:
+            np.multiply(S, self.dx, out=weighted[0])
         np.abs(weighted[0], out=weighted[1])  # |S| dx: dx > 0
-        local = np.einsum("kaqie,kaqe->kie", self._B_and_abs, weighted)
-        both = np.bincount(self._flat_dofs_twice, weights=local.ravel(), minlength=2 * self.N)
+        local = self._local_sums(by_element) @ weighted.ravel()
+        both = np.bincount(self._flat_dofs_twice, weights=local, minlength=2 * self.N)
         return both[: self.N], both[self.N :]
+
+    def _local_sums(self, by_element: bool) -> sp.csr_matrix:
+        """``∫ Σ_a S_a B_a dx`` and ``∫ Σ_a |S_a| |B_a| dx`` per element and local dof, row (k, i, e),
+        as a sparse operator on ``(S dx, |S| dx)`` laid out (k, a, e, q) (``by_element``) or
+        (k, a, q, e): each row's entries in (strain, point) order, the order of the contraction
+        ``einsum("kaqie,kaqe->kie")`` over the stacked ``(B, |B|)``, without its zero terms
+        (the same sums, to the last bit)."""
+        cache = self.__dict__.setdefault("_local_sum_ops", {})
+        if by_element not in cache:
+            na, nq, nl, ne = self.B.shape
+            k, a, q, i, e = np.nonzero(np.stack([self.B, self.B]))
+            rows = (k * nl + i) * ne + e
+            order = np.lexsort((q, a, rows))  # by row, then strain, then point
+            k, a, q, i, e, rows = (v[order] for v in (k, a, q, i, e, rows))
+            values = self.B[a, q, i, e]
+            values = np.where(k == 1, np.abs(values), values)
+            cols = ((k * na + a) * ne + e) * nq + q if by_element else ((k * na + a) * nq + q) * ne + e
+            indptr = np.concatenate([[0], np.cumsum(np.bincount(rows, minlength=2 * nl * ne))])
+            cache[by_element] = sp.csr_matrix(
+                (values, cols.astype(np.int32), indptr.astype(np.int32)),
+                shape=(2 * nl * ne, 2 * na * nq * ne),
+            )
+        return cache[by_element]
 
     @cached_property
     def _abs_B(self) -> np.ndarray:
         return np.abs(self.B)
-
-    @cached_property
-    def _B_and_abs(self) -> np.ndarray:
-        return np.stack([self.B, self._abs_B])
 
     @cached_property
     def _flat_dofs_twice(self) -> np.ndarray:
@@ -187,13 +229,29 @@ class Assembly:
         """The basis values laid out for batched products: (n_elements, n_quad, n_strains, n_local)."""
         return np.ascontiguousarray(self.B.transpose(3, 1, 0, 2))
 
+    @cached_property
+    def _B_batched_T(self) -> np.ndarray:
+        """``Bᵀ`` per element, contiguous for the batched product: (n_elements, n_local, n_quad·n_strains)."""
+        ne, nq, na, nl = self._B_batched.shape
+        return np.ascontiguousarray(self._B_batched.reshape(ne, nq * na, nl).transpose(0, 2, 1))
+
+    @cached_property
+    def _dx_by_element(self) -> np.ndarray:
+        """``dx`` in scikit-fem's layout (n_elements, n_quad), contiguous."""
+        return np.ascontiguousarray(self.dx.T)
+
     def element_matrices(self, D: np.ndarray) -> np.ndarray:
         """``∫ Bᵀ D B`` per element: (n_local, n_local, n_elements) from D (n_strains, n_strains,
-        n_quad, n_elements) (any memory layout: it is read through a transposed view)."""
+        n_quad, n_elements) (any memory layout: it is read through a transposed view; D dx is
+        formed in D's own memory order, the same products)."""
         Bb = self._B_batched
         ne, nq, na, nl = Bb.shape
-        DB = np.matmul((D * self.dx).transpose(3, 2, 0, 1), Bb)  # (e, q, a, j)
-        Ke = np.matmul(Bb.reshape(ne, nq * na, nl).transpose(0, 2, 1), DB.reshape(ne, nq * na, nl))
+        if D.strides[3] > D.strides[2]:  # scikit-fem's (.., n_elements, n_quad) in memory (a strand's)
+            weighted = (D.transpose(0, 1, 3, 2) * self._dx_by_element).transpose(0, 1, 3, 2)
+        else:
+            weighted = D * self.dx
+        DB = np.matmul(weighted.transpose(3, 2, 0, 1), Bb)  # (e, q, a, j)
+        Ke = np.matmul(self._B_batched_T, DB.reshape(ne, nq * na, nl))
         return Ke.transpose(1, 2, 0)
 
     # --- global matrices -----------------------------------------------------------------------

@@ -90,9 +90,26 @@ class BandedSystem:
     def add_elements(self, ab: np.ndarray, Ke: np.ndarray) -> np.ndarray:
         """Add element matrices of the pattern (in its ravel order) into band storage ``ab``
         (in place, whatever its memory order)."""
-        summed = np.bincount(self._slot, weights=np.asarray(Ke).ravel()[self._keep], minlength=ab.size)
-        ab += summed.reshape(self.shape, order="F")
+        values, slot = self._entries(Ke, "band")
+        ab += np.bincount(slot, weights=values, minlength=ab.size).reshape(self.shape, order="F")
         return ab
+
+    def _entries(self, Ke, which: str) -> tuple[np.ndarray, np.ndarray]:
+        """``(values, slots)``: the entries of element matrices ``Ke`` (n_local, n_local,
+        n_elements) that go into the band (``which="band"``) or its lower part (``"lower"``),
+        and their slots there. Matrices laid out elements first in memory (a batched product's
+        ``(n_elements, n, n)`` seen transposed) are read where they lie, not copied to the
+        pattern's order: the same value goes to the same slot, in the same order."""
+        keep, slot = (self._keep, self._slot) if which == "band" else self._lower
+        Ke = np.asarray(Ke)
+        if Ke.ndim != 3 or not Ke.transpose(2, 0, 1).flags.c_contiguous:
+            return Ke.ravel()[keep], slot
+        cache = self.__dict__.setdefault("_by_element", {})
+        key = (which, Ke.shape)
+        if key not in cache:
+            i, j, e = np.unravel_index(np.flatnonzero(keep), Ke.shape)
+            cache[key] = np.ravel_multi_index((e, i, j), (Ke.shape[2], Ke.shape[0], Ke.shape[1]))
+        return Ke.transpose(2, 0, 1).ravel().take(cache[key]), slot
 
     def _free_entries(self, K):
         K = sp.coo_matrix(K)
@@ -114,49 +131,56 @@ class BandedSystem:
         np.add.at(ab, (self.kl + self.ku + i - j, j), data)
         return ab
 
-    # --- the upper band alone, for a symmetric matrix (half the entries to sum) ---------------
+    # --- the lower band alone, for a symmetric matrix (half the entries to sum) ---------------
     @cached_property
-    def _upper(self) -> tuple[np.ndarray, np.ndarray]:
-        """``(keep, slot)``: which entries of the element matrices lie on or above the diagonal
-        of the free block, and where each goes in the (ku + 1, n) upper band (Fortran order)."""
+    def _lower(self) -> tuple[np.ndarray, np.ndarray]:
+        """``(keep, slot)``: which entries of the element matrices lie on or below the diagonal
+        of the free block, and where each goes in the (kl + 1, n) lower band (Fortran order)."""
         i, j = self.position[self.rows], self.position[self.cols]
-        keep = (i >= 0) & (j >= 0) & (i <= j)
-        return keep, (self.ku + i[keep] - j[keep]) + j[keep] * (self.ku + 1)
+        keep = (i >= 0) & (j >= 0) & (i >= j)
+        return keep, (i[keep] - j[keep]) + j[keep] * (self.kl + 1)
 
-    def band_upper(self) -> np.ndarray:
-        """An empty upper band ``(ku + 1, n)`` in Fortran order: LAPACK's ``dpbtrf`` storage."""
-        return np.zeros((self.ku + 1, self.n), order="F")
+    def band_lower(self) -> np.ndarray:
+        """An empty lower band ``(kl + 1, n)`` in Fortran order: LAPACK's ``dpbtrf`` storage of
+        the lower triangle (whose factorisation runs on unit strides: faster than the upper's)."""
+        return np.zeros((self.kl + 1, self.n), order="F")
 
-    def add_elements_upper(self, ab: np.ndarray, Ke: np.ndarray) -> np.ndarray:
-        """Add the upper triangle of symmetric element matrices into an upper band ``ab``."""
-        keep, slot = self._upper
-        summed = np.bincount(slot, weights=np.asarray(Ke).ravel()[keep], minlength=ab.size)
-        ab += summed.reshape(ab.shape, order="F")
+    def add_elements_lower(self, ab: np.ndarray, Ke: np.ndarray) -> np.ndarray:
+        """Add the lower triangle of symmetric element matrices into a lower band ``ab``."""
+        ab += self.lower_of(Ke)
         return ab
 
-    def add_sparse_upper(self, ab: np.ndarray, K) -> np.ndarray:
-        """Add the free–free upper triangle of a symmetric sparse (N, N) matrix into ``ab`` (it must
+    def lower_of(self, Ke: np.ndarray) -> np.ndarray:
+        """A new lower band ``(kl + 1, n)`` (Fortran order, as `band_lower`) holding the lower
+        triangle of the sum of symmetric element matrices ``Ke``."""
+        values, slot = self._entries(Ke, "lower")
+        return np.bincount(slot, weights=values, minlength=(self.kl + 1) * self.n).reshape(
+            (self.kl + 1, self.n), order="F"
+        )
+
+    def add_sparse_lower(self, ab: np.ndarray, K) -> np.ndarray:
+        """Add the free–free lower triangle of a symmetric sparse (N, N) matrix into ``ab`` (it must
         lie in the band, else `ValueError`)."""
         i, j, data = self._free_entries(K)
         if np.any(np.abs(i - j) > self.kl):
             raise ValueError("the matrix couples dofs farther apart than the band")
-        upper = i <= j
-        np.add.at(ab, (self.ku + i[upper] - j[upper], j[upper]), data[upper])
+        lower = i >= j
+        np.add.at(ab, (i[lower] - j[lower], j[lower]), data[lower])
         return ab
 
-    def solve_positive_upper(self, ab: np.ndarray, b: np.ndarray, shift=None, mu: float = 0.0):
-        """`solve_positive` for upper bands (`band_upper`): ``ab`` is overwritten."""
+    def solve_positive_lower(self, ab: np.ndarray, b: np.ndarray, shift=None, mu: float = 0.0):
+        """`solve_positive` for lower bands (`band_lower`): ``ab`` is overwritten."""
         if shift is not None and mu != 0.0:
             ab = ab + mu * shift
-        c, info = lapack.dpbtrf(ab, lower=0, overwrite_ab=True)
-        if info != 0:
-            raise np.linalg.LinAlgError(f"not positive definite (LAPACK dpbtrf info = {info})")
         rhs = np.empty(self.n)
         rhs[self._free_rank] = b
-        x, info = lapack.dpbtrs(c, rhs, lower=0, overwrite_b=True)
+        # ``dpbsv``: ``dpbtrf`` then ``dpbtrs`` in one call
+        _, x, info = lapack.dpbsv(ab, rhs, lower=1, overwrite_ab=True, overwrite_b=True)
+        if info > 0:
+            raise np.linalg.LinAlgError(f"not positive definite (LAPACK dpbsv info = {info})")
         if info != 0:
-            raise np.linalg.LinAlgError(f"LAPACK dpbtrs info = {info}")
-        return x[self._free_rank]
+            raise np.linalg.LinAlgError(f"LAPACK dpbsv info = {info}")
+        return x.take(self._free_rank)
 
     def solve_positive(self, ab: np.ndarray, b: np.ndarray, shift: np.ndarray | None = None, mu: float = 0.0):
         """Solve ``(A + mu·M) x = b`` by banded Cholesky (LAPACK ``dpbtrf``/``dpbtrs``) for a

@@ -201,13 +201,24 @@ class Material:
         over = eps - ey if on[1] else None  # beyond the bilinear yield, on the hardening line
         a, b, c, d = self._cubic
         stress = tangent = density = None
-        if law:
-            line = E_e * ey + E_p * over if over is not None else None
-            blend = ((a * t + b) * t + c) * t + d if on[2] else None
-            stress = np.copysign(
-                _select(eps, elastic, plastic, on, E_e * eps if on[0] else None, line, blend), strain
-            )
-            slope = (3 * a * t + 2 * b) * t + c if on[2] else None
+        if law:  # in place on temporaries: the operations of E_e ε_y + E_p (ε − ε_y), Horner's cubic
+            line = blend = slope = None
+            if over is not None:
+                line = np.multiply(E_p, over)
+                line += E_e * ey
+            if t is not None:  # on[2]
+                blend = np.multiply(a, t)  # ((a t + b) t + c) t + d
+                blend += b
+                blend *= t
+                blend += c
+                blend *= t
+                blend += d
+                slope = np.multiply(3 * a, t)  # (3 a t + 2 b) t + c
+                slope += 2 * b
+                slope *= t
+                slope += c
+            stress = _select(eps, elastic, plastic, on, E_e * eps if on[0] else None, line, blend)
+            np.copysign(stress, strain, out=stress)
             tangent = _select(eps, elastic, plastic, on, E_e, E_p, slope)
         if energy:
 
@@ -260,11 +271,16 @@ def _select(eps, elastic, plastic, on, on_elastic, on_line, on_blend):
     ``eps``'s shape when it is the only one."""
     values = [v for v, present in zip((on_elastic, on_line, on_blend), on, strict=True) if present]
     if len(values) == 1:
-        return np.full(eps.shape, values[0]) if np.isscalar(values[0]) else values[0]
-    if not on[0]:
-        return np.where(plastic, on_line, on_blend)
-    inner = np.where(plastic, on_line, on_blend) if on[1] and on[2] else (on_line if on[1] else on_blend)
-    return np.where(elastic, on_elastic, inner)
+        return values[0] if isinstance(values[0], np.ndarray) else np.full(eps.shape, values[0])
+    # two or three branches: the last one's array (a temporary of `_evaluate`, overwritten) with
+    # the others copied over it where they hold (the masks are disjoint: the same selection)
+    last = on_blend if on[2] else on_line
+    out = last if isinstance(last, np.ndarray) else np.full(eps.shape, last)
+    if on[1] and on[2]:
+        np.copyto(out, on_line, where=plastic)
+    if on[0]:
+        np.copyto(out, on_elastic, where=elastic)
+    return out
 
 
 #: Pino Vidal (2021), Table B.1 (MPa in the table, Pa here); density and thermal expansion:

@@ -112,11 +112,14 @@ class StrandLayout:
 
     def _per_wire(self, attribute: str):
         """The limit strain ``attribute`` ("eps_rupture" or "eps_y1") per wire when the wires
-        differ in it, else None (one scalar limit for every wire, ``getattr(self, attribute)``)."""
-        values = getattr(self, "wire_" + attribute)
-        if values is None or np.all(values == getattr(self, attribute)):
-            return None
-        return values
+        differ in it, else None (one scalar limit for every wire, ``getattr(self, attribute)``);
+        decided once per attribute (a curve asks at every step; the layout is frozen)."""
+        decided = self.__dict__.setdefault("_limits", {})
+        if attribute not in decided:
+            values = getattr(self, "wire_" + attribute)
+            same = values is None or np.all(values == getattr(self, attribute))
+            decided[attribute] = None if same else values
+        return decided[attribute]
 
     def peak(self, wire_strain: np.ndarray, attribute: str) -> tuple[float, float]:
         """``(peak, limit)``: the largest wire strain and the limit ``attribute``, or, when the
@@ -126,8 +129,8 @@ class StrandLayout:
         if not wire_strain.size:
             return 0.0, (getattr(self, attribute) if own is None else 1.0)
         if own is None:
-            return float(np.max(wire_strain)), getattr(self, attribute)
-        return float(np.max(wire_strain / own[:, None, None])), 1.0
+            return float(wire_strain.max()), getattr(self, attribute)
+        return float((wire_strain / own[:, None, None]).max()), 1.0
 
     def critical_wires(self, wire_strain: np.ndarray, attribute: str = "eps_rupture") -> np.ndarray:
         """Indices of the wires nearest their own limit ``attribute`` at these wire strains
@@ -225,7 +228,8 @@ class StepResult(Shown):
     @property
     def slip_fraction(self) -> float:
         """Fraction of the strand length in slip (about either axis)."""
-        return float(np.mean(np.any(self.slipping, axis=0)))
+        slipping = np.any(self.slipping, axis=0)
+        return np.count_nonzero(slipping) / slipping.size if slipping.size else float(np.mean(slipping))
 
     def to_vtk(
         self, path, *, wires: bool = False, scale: float = 1.0, radial_scale: float = 1.0, fields=None

@@ -163,10 +163,10 @@ def _describe(model, vectors: np.ndarray) -> str:
 
 
 def tangent_modes(model, a) -> str:
-    """Why the tangent of an assembly ``a`` stops Newton, if it is singular or not positive
-    definite: the dofs of its null vectors (a missing support) or its negative modes (a load
-    beyond buckling, under compression). "" when its free block is regular and positive
-    definite, or too large to decompose here."""
+    """Why the tangent of an assembly ``a`` (`skcable.strand.fe.model.Assembled`) stops Newton,
+    if it is singular or not positive definite: the dofs of its null vectors (a missing support)
+    or its negative modes (a load beyond buckling, under compression). "" when its free block is
+    regular and positive definite, or too large to decompose here."""
     n = model.free.size
     if n == 0 or n > LARGEST:
         return ""
@@ -196,7 +196,7 @@ def tangent_modes(model, a) -> str:
         )
     if negative.any():
         modes = _describe(model, vectors[:, negative])
-        S = a.get("S")
+        S = a.S
         compression = -float(np.min(S[0])) if S is not None else 0.0
         if compression > 0.0:
             out.append(

@@ -35,6 +35,7 @@ from __future__ import annotations
 import functools
 import math
 import warnings
+from dataclasses import dataclass
 from typing import Any
 
 import numpy as np
@@ -90,15 +91,41 @@ def default_physics(slip="none", mu: float = 0.5, damage_load: str = "eccentrici
 
 @functools.lru_cache(maxsize=16)
 def _discretisation(nodes: bytes, length: float, element: str):
-    """``(mesh, bases, assembly)`` of the node abscissae ``nodes`` (float64 bytes): what depends on
-    the mesh alone, formed once for every model on it (a study's models share their mesh; none
-    of the three is changed by a model or a term)."""
+    """``(mesh, bases, assembly, kept)`` of the node abscissae ``nodes`` (float64 bytes): what
+    depends on the mesh alone, formed once for every model on it (a study's models share their
+    mesh; none of the three is changed by a model or a term); ``kept``: what models on the mesh
+    look up from it, kept for the next (`_MeshTables`)."""
     L = float(length)
     mesh = MeshLine(np.frombuffer(nodes, dtype=float).copy()).with_boundaries(
         {"left": lambda x: np.isclose(x[0], 0.0), "right": lambda x: np.isclose(x[0], L)}
     )
     bases = _bases(mesh, element)
-    return mesh, bases, Assembly(bases, STRAINS)
+    return mesh, bases, Assembly(bases, STRAINS), _MeshTables()
+
+
+class _MeshTables:
+    """What the models on one mesh derive from it and from their supports' free dofs alone,
+    formed by the first and read by the others (none changes them).
+
+    Attributes
+    ----------
+    ends : dict
+        Each basis's end dofs (`skcable.strand.fe.supports`'s ``seen``).
+    by_free : dict of bytes to tuple
+        Per set of free dofs (their bytes): the banded system of the tangent's free block and
+        the equation groups of the norm.
+    """
+
+    def __init__(self):
+        self.ends: dict = {}
+        self.by_free: dict = {}
+
+
+@functools.lru_cache(maxsize=16)
+def _strand_section(strand):
+    """``strand.section()``, formed once per strand for every model of it (its wire table,
+    materials and principal axes; a study's models share their strand, and nothing changes it)."""
+    return strand.section()
 
 
 def _bases(mesh: MeshLine, element: str) -> dict:
@@ -108,6 +135,59 @@ def _bases(mesh: MeshLine, element: str) -> dict:
     ub = Basis(mesh, axial, intorder=ELEMENTS[element])
     vb = ub.with_element(ElementLineHermite())
     return {"u": ub, "v": vb, "w": vb, "phi": ub}
+
+
+@dataclass(slots=True, eq=False)
+class Assembled:
+    """One assembly of a strand model at a dof vector: what a Newton iteration, the norm, the
+    tangent and the step's results read (`StrandModel._assemble`).
+
+    Attributes
+    ----------
+    R : ndarray (N,)
+        The residual (N for the displacement dofs, N·m for the rotations and slopes), the
+        axial force at x = L subtracted under ``axial="force"``.
+    extra : list
+        The tangents (N × N, sparse or dense) of the terms that are not section terms.
+    outputs : list
+        Each term's output dict, in the model's term order (None where a term gives none).
+    g : ndarray (6, n_elements, n_quad)
+        The generalized strains (u′, v′, v″, w′, w″, φ′) at the quadrature points (1, 1/m).
+    S : ndarray (6, n_elements, n_quad) or None
+        The section terms' summed section forces (N, N·m), None without section terms.
+    D : ndarray (6, 6, n_elements, n_quad) or None
+        Their summed section tangent, None without section terms.
+    energy : _Energy or None
+        The model's energy (J) on demand, None where a term has no potential.
+    size : ndarray (N,)
+        The size of what each equation sums (the force scales of the norm).
+    strain : float
+        The strand's axial strain of the assembly (the imposed one, or read from the dofs).
+    state : tuple
+        The terms' states it was assembled with.
+    load : float
+        The axial load: the imposed strain, the axial force at x = L (N), or 0.
+    tangents : dict
+        ``extra`` by position in the term list (the active-set fingerprints of `_active`).
+    Ke : ndarray (n_local, n_local, n_elements) or None
+        The section terms' element matrices, formed on first use (`StrandModel._element_matrices`:
+        a Newton iterate that converges never needs them); ``formed`` tells whether they are.
+    """
+
+    R: np.ndarray
+    extra: list
+    outputs: list
+    g: np.ndarray
+    S: np.ndarray | None
+    D: np.ndarray | None
+    energy: Any
+    size: np.ndarray
+    strain: float
+    state: tuple
+    load: float
+    tangents: dict
+    Ke: np.ndarray | None = None
+    formed: bool = False
 
 
 class StrandModel:
@@ -234,12 +314,14 @@ class StrandModel:
         if element not in ELEMENTS:
             raise InputError("element", f"must be one of {tuple(ELEMENTS)}, got {element!r}")
         nodes = self._nodes(n_elements, mesh, grading)
-        self.mesh, self.bases, self.assembly = _discretisation(nodes.tobytes(), self.length, element)
+        self.mesh, self.bases, self.assembly, self._kept = _discretisation(
+            nodes.tobytes(), self.length, element
+        )
         self.offsets = self.assembly.offsets
         self.x = np.asarray(self.bases["u"].global_coordinates())[0]  # (ne, nq)
         self._dx = self.bases["u"].dx
         self._boundary()
-        self.strand_section = strand.section()  # its wire table and materials, formed once per model
+        self.strand_section = _strand_section(strand)  # its wire table and materials, formed once per strand
         self._ruptures = [m.eps_rupture for m in strand.materials]
         self._plausible_strain = max(_plausible.MAX_STRAIN, 1.5 * max(self._ruptures))
         self.EA = self.strand_section.EA
@@ -247,12 +329,16 @@ class StrandModel:
         # (position in the model's term list, bound term): the states and outputs follow that list
         self._section_terms = [(i, t) for i, t in enumerate(self._bound) if isinstance(t, SectionTerm)]
         self._other_terms = [(i, t) for i, t in enumerate(self._bound) if not isinstance(t, SectionTerm)]
-        self._system = LinearSystem(self.assembly.banded(self.free))
+        key = self.free.tobytes()
+        if key not in self._kept.by_free:
+            self._kept.by_free[key] = (self.assembly.banded(self.free), self._equation_groups())
+        banded, self._groups = self._kept.by_free[key]
+        self._system = LinearSystem(banded)
         self._first = FirstSolveCheck(self, check_tangents)
-        self._groups = self._equation_groups()
         self._group_index = self._index_groups()
         self._metric = None  # the elastic tangent of the straight strand, in the solver's storage
         self.layout = self._layout()
+        self._alive_wires = ~self.layout.wire_broken[:, None, None]
         self._init = dict(
             strand=strand, length=length, mesh=self.mesh.p[0].copy(), physics=self.terms[: len(physics)],
             terms=self.terms[len(physics) :], supports=self.supports.describe(), element=element,
@@ -325,7 +411,7 @@ class StrandModel:
 
     def _boundary(self):
         offsets = {name: int(self.offsets[i]) for i, name in enumerate(FIELDS)}
-        seen: dict = {}  # each basis's end dofs, looked up once
+        seen = self._kept.ends  # each basis's end dofs, looked up once per mesh
         fixed, values = self.supports.dofs(self.bases, offsets, seen)
         self.pull = StrandSupports.index("right", "u", self.bases, offsets, seen)
         self._left_u = StrandSupports.index("left", "u", self.bases, offsets, seen)
@@ -333,7 +419,10 @@ class StrandModel:
             raise InputError("supports", "fix a dof twice (both ends on one node?)")
         self.fixed, self.fixed_values = fixed, values
         imposed = np.append(fixed, self.pull) if self.axial == "strain" else fixed
-        self.free = np.setdiff1d(np.arange(self.assembly.N), imposed)
+        free = np.ones(self.assembly.N, dtype=bool)
+        free[imposed] = False
+        self.free = np.flatnonzero(free)  # sorted, as `np.setdiff1d` gives them
+        self._nodal_dofs = np.array([offsets[name] + self.bases[name].nodal_dofs[0] for name in FIELDS])
         self._reaction_dofs = self.supports.indices(self.bases, offsets, seen)
         if self.axial == "strain":  # the imposed strain's reaction is the axial force at x = L
             self._reaction_dofs["right"]["u"] = self.pull
@@ -360,6 +449,7 @@ class StrandModel:
         """The groups of `_equation_groups` as flat index arrays for ``np.maximum.reduceat``."""
         groups = self._groups
         self._has_free = np.array([free.size > 0 for _, free, _ in groups])
+        self._with_free = np.flatnonzero(self._has_free)
         order = np.concatenate([dofs for dofs, _, _ in groups])
         starts = np.cumsum([0] + [len(dofs) for dofs, _, _ in groups[:-1]])
         with_free = [free for _, free, _ in groups if free.size]
@@ -412,12 +502,11 @@ class StrandModel:
 
     def nodal_values(self, U):
         """Values of u, v, w, φ at the mesh nodes (their vertex dofs): dict of (n_nodes,) arrays."""
-        parts = self.split(U)
-        return {name: parts[name][self.bases[name].nodal_dofs[0]] for name in FIELDS}
+        return dict(zip(FIELDS, np.asarray(U).take(self._nodal_dofs), strict=True))
 
     def generalized_strains(self, U):
         """g = (u′, v′, v″, w′, w″, φ′) at the quadrature points: (6, ne, nq)."""
-        return np.ascontiguousarray(self.assembly.interpolate(U).transpose(0, 2, 1))
+        return self.assembly.interpolate_by_element(U)
 
     def section_vector(self, S):
         """``∫ Σ_a S_a B_a dx`` (N,) from section forces S (6, ne, nq)."""
@@ -566,7 +655,7 @@ class StrandModel:
             energy = None if energy is None else energy - load * float(U[self.pull])
         if energy is not None:  # the section terms' part on demand (`_energy`): a converged step needs none
             energy = _Energy(densities, self._dx, energy)
-        return dict(
+        return Assembled(
             R=R, extra=extra, outputs=outputs, g=g, S=S, D=D, energy=energy, size=size, strain=strain,
             state=state, load=load, tangents=tangents,
         )  # fmt: skip
@@ -589,9 +678,10 @@ class StrandModel:
     def _element_matrices(self, a):
         """The section terms' element matrices of an assembly ``a`` (None without section terms),
         formed on first use and kept in it: a Newton iterate that converges never needs them."""
-        if "Ke" not in a:
-            a["Ke"] = self.section_matrices(a["D"]) if a["D"] is not None else None
-        return a["Ke"]
+        if not a.formed:
+            a.Ke = self.section_matrices(a.D) if a.D is not None else None
+            a.formed = True
+        return a.Ke
 
     def assemble(self, U, state=None, *, force: float = 0.0):
         """``(R, K, outputs)``: residual (N,), tangent (CSR, N × N) and the terms' outputs at ``U``
@@ -599,12 +689,12 @@ class StrandModel:
         force at x = L is ``force``; ``state`` as from a solve)."""
         load = (U[self.pull] - self.supports.left["u"]) / self.length if self.axial == "strain" else force
         a = self._assemble(U, state, load)
-        return a["R"], self._global_tangent(a), a["outputs"]
+        return a.R, self._global_tangent(a), a.outputs
 
     def _global_tangent(self, a):
         Ke = self._element_matrices(a)
         K = self.assembly.matrix(Ke) if Ke is not None else 0
-        for Kt in a["extra"]:
+        for Kt in a.extra:
             K = K + Kt
         return K
 
@@ -634,42 +724,42 @@ class StrandModel:
         U[self.free] += 1e-5 * self.length * np.random.default_rng(1).standard_normal(self.free.size)
         return U
 
-    def _band_of(self, a, upper: bool = False):
+    def _band_of(self, a, lower: bool = False):
         """The free–free tangent of an assembly in the solver's storage (section terms and the
-        others); ``upper``: its upper band alone (a symmetric tangent for the Cholesky solve)."""
-        if self._system.accept(a["extra"]):
+        others); ``lower``: its lower band alone (a symmetric tangent for the Cholesky solve)."""
+        if self._system.accept(a.extra):
             self._metric = None  # rebuilt in the new storage
         system = self._system
-        if upper and system.is_banded:
-            ab = system.band_upper()
-            add, add_sparse = system.add_elements_upper, system.add_sparse_upper
+        Ke = self._element_matrices(a)
+        if lower and system.is_banded:
+            ab = system.band_lower() if Ke is None else system.lower_of(Ke)  # a new band
+            add_sparse = system.add_sparse_lower
         else:
             ab = system.band()
-            add, add_sparse = system.add_elements, system.add_sparse
-        Ke = self._element_matrices(a)
-        if Ke is not None:
-            add(ab, Ke)
-        for Kt in a["extra"]:
+            add_sparse = system.add_sparse
+            if Ke is not None:
+                system.add_elements(ab, Ke)
+        for Kt in a.extra:
             add_sparse(ab, Kt)
         return ab
 
     def _increment(self, a):
         dU = np.zeros(self.assembly.N)
-        dU[self.free] = self._system.solve(self._band_of(a), -a["R"][self.free])
+        dU[self.free] = self._system.solve(self._band_of(a), -a.R[self.free])
         return dU
 
     def _increment_positive(self, a, mu):
         """``-(K + mu K0)⁻¹ R`` by a Cholesky-like factorisation (raises LinAlgError when not positive
         definite); K0 is the tangent of the straight, unstrained strand (positive definite), built on
         first use."""
-        ab = self._band_of(a, upper=True)
+        ab = self._band_of(a, lower=True)
         banded = self._system.is_banded  # `_band_of` may have moved it to the sparse storage
         if mu != 0.0 and self._metric is None:
             straight = self._prescribed(np.zeros(self.assembly.N), 0.0)
-            self._metric = self._band_of(self._assemble(straight, self.initial_state(), 0.0), upper=True)
+            self._metric = self._band_of(self._assemble(straight, self.initial_state(), 0.0), lower=True)
         dU = np.zeros(self.assembly.N)
-        solve = self._system.solve_positive_upper if banded else self._system.solve_positive
-        dU[self.free] = solve(ab, -a["R"][self.free], self._metric, mu)
+        solve = self._system.solve_positive_lower if banded else self._system.solve_positive
+        dU[self.free] = solve(ab, -a.R[self.free], self._metric, mu)
         return dU
 
     # --- solution ----------------------------------------------------------------
@@ -677,18 +767,19 @@ class StrandModel:
         """The largest residual of each group of equations over its force scale, or over its
         round-off floor divided by the tolerance where that is larger (module docstring)."""
         order, starts, free_order, free_starts, force, free_length = self._group_index
-        scales = np.maximum.reduceat(a["size"][order], starts)
+        scales = np.maximum.reduceat(a.size.take(order), starts)
         # the scales are >= 0 (NaN stays NaN); ndarray methods: a Newton calls this per assembly
-        forces = float(scales[force].max(initial=0.0))
-        floor = ROUND_OFF * forces / tol * free_length  # the moment groups' floor times the length
-        residual = np.maximum.reduceat(np.abs(a["R"][free_order]), free_starts)
-        worst = residual / np.maximum(np.maximum(scales[self._has_free], floor), 1e-300)
+        forces = float(scales.take(force).max(initial=0.0))
+        # the moment groups' floor times the length, at least 1e-300 (max is exact in any order)
+        floor = np.maximum(ROUND_OFF * forces / tol * free_length, 1e-300)
+        residual = np.maximum.reduceat(np.abs(a.R.take(free_order)), free_starts)
+        worst = residual / np.maximum(scales.take(self._with_free), floor)
         return float(worst.max(initial=0.0)) if math.isfinite(forces) else float("nan")  # NaN stays NaN
 
     def _solver(self, first, options: NewtonOptions) -> str:
         """'minimize', 'newton' or 'semismooth', from the terms' declarations and the options."""
         smooth = all(t.smooth for t in self._bound)
-        potential = first["energy"] is not None and all(
+        potential = first.energy is not None and all(
             t.symmetric and t.potential is not False for t in self._bound
         )
         search = options.line_search
@@ -765,7 +856,7 @@ class StrandModel:
         common = dict(
             norm=lambda a: self._norm(a, options.tol), tol=options.tol, atol=options.atol,
             name=name, state=first, callback=options.callback, rejects=(NonFiniteError,),
-            absolute=lambda a: float(np.max(np.abs(a["R"][self.free]), initial=0.0)),
+            absolute=lambda a: float(np.max(np.abs(a.R[self.free]), initial=0.0)),
         )  # fmt: skip
         if kind == "minimize":  # every term has a potential: minimise it, shifted at folds
             result = self._minimize(assemble, U, options, common)
@@ -783,18 +874,18 @@ class StrandModel:
 
     def _merit(self, a) -> float:
         """The residual's 2-norm over the free dofs: the smooth line-search merit."""
-        return float(np.sqrt(np.sum(a["R"][self.free] ** 2)))
+        return float(np.sqrt(np.sum(a.R[self.free] ** 2)))
 
     def _minimize(self, assemble, U, options, common, **settings):
         free, free_R = self.free, np.zeros(self.assembly.N)
 
         def gradient(a):
-            free_R[free] = a["R"][free]
+            free_R[free] = a.R[free]
             return free_R
 
         settings = {"max_iter": max(options.max_iter, 40), "mu_max": options.mu_max} | settings
         return minimize(
-            assemble, U, energy=lambda a: a["energy"](), gradient=gradient, solve=self._increment_positive,
+            assemble, U, energy=lambda a: a.energy(), gradient=gradient, solve=self._increment_positive,
             **settings, **common,
         )  # fmt: skip
 
@@ -830,7 +921,7 @@ class StrandModel:
             return run(U, stagnation_window=2 * options.stagnation_window, **common)
         except ConvergenceError as exc:
             failed = exc
-        potential = first["energy"] is not None and all(
+        potential = first.energy is not None and all(
             t.symmetric and t.potential is not False for t in self._bound
         )
         if not potential and any(hasattr(t, "frozen") for t in self._bound):
@@ -862,12 +953,12 @@ class StrandModel:
         for i, t in enumerate(self._bound):
             if t.smooth:
                 continue
-            out = a["outputs"][i] or {}
+            out = a.outputs[i] or {}
             mask = out.get("active", out.get("slipping"))
             if mask is not None:
                 keys.append(np.packbits(np.asarray(mask, dtype=bool)).tobytes())
             else:
-                K = a["tangents"].get(i)
+                K = a.tangents.get(i)
                 keys.append(None if K is None else sp.csr_matrix(K).data.tobytes())
         return tuple(keys)
 
@@ -877,10 +968,10 @@ class StrandModel:
         points frozen at the current state), minimise the surrogate's energy (which passes a fold
         of the path, as `_minimize` does) and polish the step with the model's own Newton from
         there, refreezing at most ``rounds`` times; else raise ``failed``."""
-        load, state = first["load"], first["state"]
+        load, state = first.load, first.state
         for _ in range(rounds):
             start = assemble(U)
-            bound = [_surrogate(t, o) for t, o in zip(self._bound, start["outputs"], strict=True)]
+            bound = [_surrogate(t, o) for t, o in zip(self._bound, start.outputs, strict=True)]
             if any(t is None for t in bound):
                 raise failed
             surrogate = functools.partial(self._assemble, state=state, load=load, bound=bound)
@@ -977,7 +1068,7 @@ class StrandModel:
         result = self._newton(guess, strain, state, options, diagnose, values)
         settled, seen, assemblies, shifted = True, [state], result.assemblies, result.shifted
         for _ in range(passes):
-            outputs = result.state["outputs"]
+            outputs = result.state.outputs
             new = tuple(t.next_state(o, s) for t, o, s in zip(self._bound, outputs, state, strict=True))
             if _same(new, state):
                 break
@@ -1026,17 +1117,21 @@ class StrandModel:
     def _step_result(self, load, result, state, settled, assemblies, shifted=False):
         a, U = result.state, result.x
         # the wire kinematics of the first term that reports them (HelicalWires, AnnexE, ...)
-        wires = next((o for o in a["outputs"] if o and {"strain", "curvature", "kappa_m"} <= set(o)), None)
-        if wires is not None and wires["kappa_m"] is None:  # a law that sticks leaves these to the results
-            owner = next(t for t, o in zip(self._bound, a["outputs"], strict=True) if o is wires)
+        owner: Any = None
+        wires: Any = None
+        for t, o in zip(self._bound, a.outputs, strict=True):
+            if o and _KINEMATICS <= o.keys():
+                owner, wires = t, o
+                break
+        if owner is not None and wires["kappa_m"] is None:  # a law that sticks leaves these to the results
             wires = dict(
                 wires,
                 kappa_m=owner.kappa_m(wires["axial"], derivative=False)[0],
-                curvature=owner.principal(a["g"]),
+                curvature=owner.principal(a.g),
             )
         shape = (2, *self.x.shape)
         zeros = np.zeros(shape)
-        g, S, D = a["g"], a["S"], a["D"]
+        g, S, D = a.g, a.S, a.D
         if wires is None:
             wires = dict(
                 curvature=np.array([g[2], g[4]]),
@@ -1047,13 +1142,13 @@ class StrandModel:
                 axial=g[0] + 0.5 * (g[1] ** 2 + g[3] ** 2),
                 N=S[0] if S is not None else zeros[0],
             )
-        alive = ~self.layout.wire_broken[:, None, None]
+        alive = self._alive_wires
         if self.axial == "force":
             force = load
         else:  # the reaction of the imposed strain or of a support holding u(L); 0 where it is free
-            force = float(a["R"][self.pull]) if self.axial == "strain" or self.pull in self.fixed else 0.0
+            force = float(a.R[self.pull]) if self.axial == "strain" or self.pull in self.fixed else 0.0
         return StepResult(
-            strain=a["strain"],
+            strain=a.strain,
             force=force,
             x=self.x,
             curvature=wires["curvature"],
@@ -1076,13 +1171,13 @@ class StrandModel:
             assemblies=assemblies,
             shifted=shifted,
             outputs=self._outputs(a),
-            reactions=self._reactions(a["R"]),
+            reactions=self._reactions(a.R),
         )
 
     def _outputs(self, a) -> dict:
         """The terms' named point and cell data (`skcable.fe.terms`), names made unique."""
         out = {}
-        for t, o in zip(self._bound, a["outputs"], strict=True):
+        for t, o in zip(self._bound, a.outputs, strict=True):
             for kind in ("point_data", "cell_data"):
                 for name, value in ((o or {}).get(kind) or {}).items():
                     key = name if name not in out else f"{type(t).__name__}.{name}"
@@ -1130,6 +1225,10 @@ def _surrogate(term, output):
 
 def _rebuild(cls, strand, length, kwargs):
     return cls(strand, length, **kwargs)
+
+
+#: The outputs of a term that reports the wires' kinematics (`StrandModel._step_result`).
+_KINEMATICS = frozenset({"strain", "curvature", "kappa_m"})
 
 
 def _same(a, b) -> bool:

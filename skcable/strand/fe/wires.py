@@ -35,6 +35,44 @@ def critical_curvature_table(strand, mu: float):
     return grid, table, spline, spline.derivative()
 
 
+#: The rows of the stick section forces S (6) from the reduced ones S4 (ε_a, v″, w″, φ′): N on
+#: ε_a, v′ and w′ (the last two then times v′ and w′), the moments and the torque.
+_STICK_FORCES = np.array([0, 0, 1, 0, 2, 3])
+
+
+def _stick_map() -> np.ndarray:
+    """Which of `HelicalWires._section_stick`'s 21 rows each entry of the 6 × 6 section tangent
+    D is: the 10 pairs a <= b of the rows on the strains 0, 2, 4, 5 (0–9, in `triu_indices`
+    order), v′ times the axial row (10–13), w′ times it (14–17), (1, 1), (3, 3), (1, 3) (18–20)."""
+    pair = {(int(a), int(b)): p for p, (a, b) in enumerate(zip(*_STICK_PAIRS, strict=True))}
+    reduced = {0: 0, 2: 1, 4: 2, 5: 3}
+    stick_map = np.empty((6, 6), dtype=np.intp)
+    for a in range(6):
+        for b in range(6):
+            if a in reduced and b in reduced:
+                low, high = sorted((reduced[a], reduced[b]))
+                stick_map[a, b] = pair[low, high]
+            elif {a, b} <= {1, 3}:
+                stick_map[a, b] = 18 if a == b == 1 else 19 if a == b == 3 else 20
+            else:
+                geometric, other = (a, b) if a in (1, 3) else (b, a)
+                stick_map[a, b] = (10 if geometric == 1 else 14) + reduced[other]
+    stick_map.flags.writeable = False
+    return stick_map
+
+
+#: The 10 pairs a <= b of the 4 reduced strains (ε_a, v″, w″, φ′), in `triu_indices` order.
+_STICK_PAIRS = np.triu_indices(4)
+_STICK_MAP = _stick_map()
+
+
+@lru_cache(maxsize=32)
+def _cardou_section(section, mu: float) -> CardouSection:
+    """Cardou's law of ``section`` at friction ``mu``, formed once per section (the models of one
+    strand share it, `skcable.strand.fe.model`) and friction."""
+    return CardouSection(section, mu)
+
+
 class HelicalWires(SectionTerm):
     r"""Every wire a fibre on its helix: material and geometric stiffness, with a slip law.
 
@@ -121,7 +159,8 @@ class HelicalWires(SectionTerm):
         self.levers = np.array([np.sin(angle), np.cos(angle)]).transpose(1, 0, 2, 3)
         self.kappa_grid, _, self._spline, self._slope = critical_curvature_table(s, self.slip.mu)
         self._curvature = self._slope.derivative()
-        self._cubics = np.ascontiguousarray(self._spline.c.transpose(1, 2, 0))  # (n - 1, axis, power)
+        self._cubics = np.ascontiguousarray(self._spline.c.transpose(0, 2, 1))  # (power, axis, n - 1)
+        self._slopes = np.ascontiguousarray(self._slope.c.transpose(0, 2, 1))
         # the lever offsets from the centroid, and the centroid, per wire: fixed per model
         self._y = self.wire_y - self.centroid_y[None]
         self._z = self.wire_z - self.centroid_z[None]
@@ -129,7 +168,7 @@ class HelicalWires(SectionTerm):
         self._cy, self._cz = self.centroid_y[None], self.centroid_z[None]
         self._neg_c2 = -self.c2
         self._stick_constants(x.shape)
-        self._cardou = CardouSection(section, self.slip.mu)
+        self._cardou = _cardou_section(section, self.slip.mu)
         self.slip.check(model)
         # the composite curvatures and points of `frozen`
         self._frozen: tuple[np.ndarray, SlipPoints] | None = None
@@ -148,45 +187,35 @@ class HelicalWires(SectionTerm):
         self._P_stick = contract("kcen,ken,kden->cden", self.levers, np.ones((2, *shape)), self.levers)
         b = self._strain_gradients(np.zeros((6, *shape)), self._P_stick, np.zeros((2, *shape)), self._y.shape)
         self._b_stick = np.ascontiguousarray(b[[0, 2, 4, 5]])
-        # the products C_a C_b of the 10 pairs a <= b of the rows on the strains 0, 2, 4, 5, and which of
-        # `_section_stick`'s 21 rows each entry of D is: those pairs (0–9, in `triu_indices` order),
-        # v' times the axial row (10–13), w' times it (14–17), (1, 1), (3, 3), (1, 3) (18–20)
-        upper = np.triu_indices(4)
+        # the products C_a C_b of the 10 pairs a <= b of the rows on the strains 0, 2, 4, 5
+        # (`_STICK_PAIRS`); which of `_section_stick`'s 21 rows each entry of D is: `_STICK_MAP`
+        upper = _STICK_PAIRS
         self._stick_pairs = np.ascontiguousarray(self._b_stick[upper[0]] * self._b_stick[upper[1]])
-        pair = {(int(a), int(b)): p for p, (a, b) in enumerate(zip(*upper, strict=True))}
-        reduced = {0: 0, 2: 1, 4: 2, 5: 3}
-        stick_map = np.empty((6, 6), dtype=np.intp)
-        for a in range(6):
-            for b in range(6):
-                if a in reduced and b in reduced:
-                    low, high = sorted((reduced[a], reduced[b]))
-                    stick_map[a, b] = pair[low, high]
-                elif {a, b} <= {1, 3}:
-                    stick_map[a, b] = 18 if a == b == 1 else 19 if a == b == 3 else 20
-                else:
-                    geometric, other = (a, b) if a in (1, 3) else (b, a)
-                    stick_map[a, b] = (10 if geometric == 1 else 14) + reduced[other]
-        self._stick_map = stick_map
+        self._stick_map = _STICK_MAP
         self._no_slip = np.zeros((2, *shape), dtype=bool)
         self._no_slip.flags.writeable = False
 
     def kappa_m(self, axial_strain, derivative: bool = True):
-        """Critical curvatures (2, ...) and their derivative with respect to the axial strain
-        (None without ``derivative``: then the interpolant's cubic pieces evaluated here, on its
-        uniform grid, the same values to round-off, for the results of a law that sticks).
+        """Critical curvatures (2, ...) and, with ``derivative``, their derivative with respect to
+        the axial strain (else None): the interpolant's cubic pieces (and its derivative's)
+        evaluated here by Horner's rule on its uniform grid, one interval lookup for both (the
+        values of ``PchipInterpolator`` to round-off).
 
         A monotone C¹ interpolant (PCHIP) of the tabulated law: a piecewise-linear one
         has a derivative that jumps at every grid point, and Newton stalls on a kink.
         """
         grid = self.kappa_grid
-        eps = np.clip(axial_strain, 0.0, grid[-1])
-        if derivative:
-            return self._spline(eps), self._slope(eps) * (axial_strain > 0)
-        i = np.minimum((eps * ((len(grid) - 1) / grid[-1])).astype(np.intp), len(grid) - 2)
-        c = self._cubics[i]  # (..., 2, 4): the cubic of each point's interval, per axis
-        t = (eps - grid[i])[..., None]
-        value = ((c[..., 0] * t + c[..., 1]) * t + c[..., 2]) * t + c[..., 3]  # (..., 2)
-        return np.moveaxis(value, -1, 0), None
+        eps = np.minimum(np.maximum(axial_strain, 0.0), grid[-1])  # `np.clip`, without its wrapper
+        # the interval of each point (a NaN strain takes the first: its value stays NaN)
+        inside = np.fmin(np.fmax(axial_strain, 0.0), grid[-1])
+        i = np.minimum((inside * ((len(grid) - 1) / grid[-1])).astype(np.intp), len(grid) - 2)
+        t = eps - grid.take(i, mode="clip")
+        c = np.take(self._cubics, i, axis=2, mode="clip")  # (4, 2, ...): each point's cubic, per axis
+        value = ((c[0] * t + c[1]) * t + c[2]) * t + c[3]
+        if not derivative:
+            return value, None
+        d = np.take(self._slopes, i, axis=2, mode="clip")  # (3, 2, ...): its derivative
+        return value, ((d[0] * t + d[1]) * t + d[2]) * (axial_strain > 0)
 
     def _kappa_m_of(self, axial_strain):
         """`kappa_m`, without the derivative (None) where the law sticks everywhere: no tangent
@@ -279,9 +308,8 @@ class HelicalWires(SectionTerm):
             c2 * (axial[None] - eccentric - y * kappa_c[0][None] - z * kappa_c[1][None])
             + self.sc * g[5][None]
         )
-        stress, tangent, density = self.materials.stress_tangent_energy(strain)
+        stress, tangent = self.materials.stress_and_tangent(strain)
         stress = stress * self._alive3  # a broken wire carries nothing (its area weight is zero too)
-        energy = np.sum(self.area_weight * density, axis=0)
         b = self._strain_gradients(g, P, q, strain.shape)
         s = self.area_weight * stress
         k = self.area_weight * tangent
@@ -300,7 +328,7 @@ class HelicalWires(SectionTerm):
             slipping=self.slip.slipping(k_principal, points, state),
             axial=axial,
             N=N,
-            energy=energy,
+            energy=lambda: np.sum(self.area_weight * self.materials.energy(strain), axis=0),  # on demand
             points=points,
         )
         return S, D, output
@@ -321,24 +349,26 @@ class HelicalWires(SectionTerm):
         stress = stress * self._alive3  # a broken wire carries nothing (its area weight is zero too)
         s = self.area_weight * stress
         S4 = contract("jen,ajen->aen", s, C)
-        # the 10 distinct entries of the symmetric 4 × 4 Σ_j k_j C_a C_b (the products fixed per model)
-        D4 = contract("pjen,jen->pen", self._stick_pairs, self.area_weight * tangent)
         N = S4[0]
         v1, w1 = g[1], g[3]
-        S = np.empty_like(g)
-        S[0], S[2], S[4], S[5] = N, S4[1], S4[2], S4[3]
-        S[1], S[3] = N * v1, N * w1
-        # D from 21 rows in one gather (`_stick_map`): D4 on the rows and columns of ε_a, v″, w″,
-        # φ′; those of v′ and w′ the axial row times v′ and w′, with N on the diagonal (the
-        # geometric stiffness K_G)
-        first, D00 = D4[:4], D4[0]  # the axial row: pairs (0, 0), (0, 1), (0, 2), (0, 3)
+        S = S4[_STICK_FORCES]  # rows N, N, S_v″, N, S_w″, S_φ′ (a copy), then the rows of v′ and w′:
+        S[1] *= v1  # N v′
+        S[3] *= w1  # N w′
+        # D from 21 rows in one gather (`_stick_map`): rows 0–9 the 10 distinct entries of the
+        # symmetric 4 × 4 Σ_j k_j C_a C_b (the products fixed per model) on the rows and columns
+        # of ε_a, v″, w″, φ′; those of v′ and w′ the axial row (pairs (0, 0)–(0, 3)) times v′ and
+        # w′, with N on the diagonal (the geometric stiffness K_G)
         rows = np.empty((21, *axial.shape))
-        rows[:10] = D4
-        np.multiply(first, v1, out=rows[10:14])
-        np.multiply(first, w1, out=rows[14:18])
-        rows[18] = D00 * v1 * v1 + N
-        rows[19] = D00 * w1 * w1 + N
-        rows[20] = D00 * v1 * w1
+        np.einsum(
+            "pjen,jen->pen", self._stick_pairs, self.area_weight * tangent, out=rows[:10], optimize=False
+        )
+        np.multiply(rows[:4], v1, out=rows[10:14])
+        np.multiply(rows[:4], w1, out=rows[14:18])
+        np.multiply(rows[10], v1, out=rows[18])  # D_00 v′ v′ + N
+        rows[18] += N
+        np.multiply(rows[14], w1, out=rows[19])  # D_00 w′ w′ + N
+        rows[19] += N
+        np.multiply(rows[10], w1, out=rows[20])  # D_00 v′ w′
         D = rows[self._stick_map]
         output = dict(
             strain=strain,
