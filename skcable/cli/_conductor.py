@@ -117,7 +117,7 @@ def _rating(args) -> int:
 
 
 def _table_flags(p) -> None:
-    from skcable.cli._state import span_flags
+    from skcable.cli._state import model_flags, span_flags
 
     span_flags(p)
     p.add_argument("--alpha", type=finite, required=True, help="thermal expansion [1/K] (required)")
@@ -139,19 +139,7 @@ def _table_flags(p) -> None:
         help="a load case: its name, weight per length with ice [N/m] and transverse wind [N/m]; "
         "repeat for more (default: one case 'bare', W = --w0, no wind)",
     )  # fmt: skip
-    p.add_argument(
-        "--model",
-        default="catenary",
-        choices=("catenary", "parabola", "auto"),
-        help="elastic catenary with thermal strain, the classical parabolic cubic, or auto: the parabola "
-        "where its estimated error is within --rtol, else the catenary (default: catenary)",
-    )
-    p.add_argument(
-        "--rtol",
-        type=finite,
-        default=None,
-        help="tolerance of --model auto: relative error [-] (default: 1e-3)",
-    )
+    model_flags(p)
 
 
 def _rating_flags(p) -> None:

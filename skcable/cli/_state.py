@@ -87,6 +87,23 @@ def span_flags(p) -> None:
     p.add_argument("--EA", type=finite, required=True, help="axial stiffness [N], > 0 (required)")
 
 
+def model_flags(p) -> None:
+    """``--model`` and ``--rtol`` of a change of state (`skcable.conductors.change_of_state`)."""
+    p.add_argument(
+        "--model",
+        default="catenary",
+        choices=("catenary", "parabola", "auto"),
+        help="elastic catenary with thermal strain, the classical parabolic cubic, or auto: the parabola "
+        "where its estimated error is within --rtol, else the catenary (default: catenary)",
+    )
+    p.add_argument(
+        "--rtol",
+        type=finite,
+        default=None,
+        help="tolerance of --model auto: relative error [-] (default: 1e-3)",
+    )
+
+
 def register(sub, command) -> None:
     cs = command(
         sub,
@@ -119,17 +136,5 @@ def register(sub, command) -> None:
     cs.add_argument(
         "--wind", type=finite, nargs="+", default=[0.0], help="transverse wind per length [N/m] (default: 0)"
     )
-    cs.add_argument(
-        "--model",
-        default="catenary",
-        choices=("catenary", "parabola", "auto"),
-        help="elastic catenary with thermal strain, the classical parabolic cubic, or auto: the parabola "
-        "where its estimated error is within --rtol, else the catenary (default: catenary)",
-    )
-    cs.add_argument(
-        "--rtol",
-        type=finite,
-        default=None,
-        help="tolerance of --model auto: relative error [-] (default: 1e-3)",
-    )
+    model_flags(cs)
     cs.add_argument("--json", action="store_true", help="print one JSON object (default: a table per state)")

@@ -10,21 +10,7 @@ from scipy.optimize import brentq
 
 from skcable.errors import ConvergenceError, InputError
 from skcable.fe import NewtonResult, first_converged, newton
-
-
-def _problem(residual, derivative):
-    """``assemble``, ``norm`` and ``increment`` of a scalar equation ``residual(x) = 0``."""
-
-    def assemble(x):
-        return float(residual(x[0])), float(derivative(x[0]))
-
-    def norm(state):
-        return abs(state[0])
-
-    def increment(state):
-        return np.array([-state[0] / state[1]])
-
-    return assemble, norm, increment
+from tests.fe.scalar_problems import scalar_problem
 
 
 def _kinked(x):
@@ -39,7 +25,7 @@ def _kinked_slope(x):
     return 1.0 if x <= 0.0 else (7.0 if x > 0.5 else -1.0)
 
 
-KINKED = _problem(_kinked, _kinked_slope)
+KINKED = scalar_problem(_kinked, _kinked_slope)
 
 
 def test_the_damped_newton_stalls_where_full_steps_reach_the_root():
@@ -81,7 +67,7 @@ def test_when_both_fail_the_damped_error_is_raised_with_both_histories():
 def test_full_steps_first_fall_back_on_the_damped_newton():
     # arctan from x0 = 3: full Newton steps diverge (|x| grows once |x| > 1.3917: 3, -9.5, 124,
     # -2.4e4, ..., 1e146 at the eighth), the damped ones reach the root, 0
-    assemble, norm, increment = _problem(math.atan, lambda x: 1.0 / (1.0 + x * x))
+    assemble, norm, increment = scalar_problem(math.atan, lambda x: 1.0 / (1.0 + x * x))
     with pytest.raises(ConvergenceError):
         newton(
             assemble,
@@ -114,7 +100,7 @@ def test_a_failed_full_steps_first_raises_the_damped_error():
 
 
 def test_without_line_search_there_is_no_second_attempt():
-    assemble, norm, increment = _problem(math.atan, lambda x: 1.0 / (1.0 + x * x))
+    assemble, norm, increment = scalar_problem(math.atan, lambda x: 1.0 / (1.0 + x * x))
     calls = []
 
     def counted(x):
@@ -157,7 +143,7 @@ def test_the_rescue_goes_on_from_where_the_damped_newton_stopped():
 def test_the_polish_takes_the_root_to_its_round_off():
     # x² = 2 from 1.5 to 1e-5: Newton stops 2.1e-6 from √2; two more full steps take it to the
     # double nearest √2 (math.sqrt is correctly rounded), each residual below a tenth of the last
-    assemble, norm, increment = _problem(lambda x: x * x - 2.0, lambda x: 2.0 * x)
+    assemble, norm, increment = scalar_problem(lambda x: x * x - 2.0, lambda x: 2.0 * x)
     plain = newton(assemble, np.array([1.5]), norm=norm, increment=increment, tol=1e-5)
     assert abs(plain.x[0] - math.sqrt(2.0)) > 1e-6
     polished = newton(assemble, np.array([1.5]), norm=norm, increment=increment, tol=1e-5, polish=2)

@@ -7,21 +7,7 @@ import numpy as np
 from scipy.optimize import brentq
 
 from skcable.fe import newton
-
-
-def _problem(residual, derivative):
-    """``assemble``, ``norm`` and ``increment`` of a scalar equation ``residual(x) = 0``."""
-
-    def assemble(x):
-        return float(residual(x[0])), float(derivative(x[0]))
-
-    def norm(state):
-        return abs(state[0])
-
-    def increment(state):
-        return np.array([-state[0] / state[1]])
-
-    return assemble, norm, increment
+from tests.fe.scalar_problems import scalar_problem
 
 
 def test_a_relaxed_step_over_a_hardening_spring_saves_the_halving():
@@ -29,7 +15,7 @@ def test_a_relaxed_step_over_a_hardening_spring_saves_the_halving():
     # its residual larger than at rest (no Armijo decrease); the halved step lands on the soft
     # side again, and its full step overshoots once more
     c, F = 0.2, 1.5
-    assemble, norm, increment = _problem(lambda x: x + c * x**5 - F, lambda x: 1 + 5 * c * x**4)
+    assemble, norm, increment = scalar_problem(lambda x: x + c * x**5 - F, lambda x: 1 + 5 * c * x**4)
     root = brentq(lambda x: x + c * x**5 - F, 0.0, F, xtol=1e-15)
     assert norm(assemble(np.array([F]))) > norm(assemble(np.array([0.0])))  # the overshoot
     plain = newton(assemble, np.array([0.0]), norm=norm, increment=increment, tol=1e-13)
@@ -43,7 +29,7 @@ def test_a_relaxed_step_that_runs_off_is_undone_and_the_step_halved():
     # arctan from x0 = 3: the full Newton step overshoots to -9.5, where |atan| is larger, and the
     # full step from there runs off to +124 (Newton diverges from |x0| > 1.39); the watchdog
     # returns to 3 and halves
-    assemble, norm, increment = _problem(math.atan, lambda x: 1.0 / (1.0 + x * x))
+    assemble, norm, increment = scalar_problem(math.atan, lambda x: 1.0 / (1.0 + x * x))
     x0 = np.array([3.0])
     first = x0 + increment(assemble(x0))
     assert norm(assemble(first)) > norm(assemble(x0))
