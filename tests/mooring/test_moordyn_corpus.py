@@ -448,7 +448,11 @@ def test_the_command_runs_on_every_file_of_the_corpus(capsys):
 #: 6.4e14 N/m (MoorDyn's 6e-8 m gap); moved by one ulp of its dofs its equilibrium's net load
 #: scatters by 2e-8 to 7e-8. Read back, its tie starts closed (the pin where the file has it): one
 #: Newton step lands in that noise, and the steps after it only sample it, as many as chance gives
-#: (on main before the rods' water line, with the water density 1025 ± 0.03, 1 to 3 steps).
+#: (on main before the rods' water line, with the water density 1025 ± 0.03, 1 to 3 steps). The
+#: tie also brings the scaled Jacobian near the conditioning threshold of the equilibrium's Newton
+#: step: on the oldest numpy/scipy that pyproject.toml allows, the first step from the read-back
+#: start was the least-squares one, taken by the watchdog with no gain (0.6696 -> 0.6696), and the
+#: second landed in the noise (8e-9): the floor is reached within two steps.
 NOISE_FLOOR = {"MoorDyn/tests/Mooring/BodiesAndRods.dat": 1e-7}
 
 
@@ -457,7 +461,7 @@ def test_written_at_its_equilibrium_it_starts_there(name, tmp_path):
     """``write_moordyn(model, path, equilibrium=eq)``: read back, the same file but for the free
     points, bodies and turning rods, which start at the equilibrium: it takes no Newton step, or
     one (the positions written to their last digit; a file whose net load has a round-off floor
-    above the tolerance, one to that floor: `NOISE_FLOOR`), and its points stay there."""
+    above the tolerance, two at most to that floor: `NOISE_FLOOR`), and its points stay there."""
     model, eq = solved(name)
     path = mooring.write_moordyn(model, tmp_path / Path(name).name, equilibrium=eq)
     for aux in ("syrope.dat", "../owc.dat"):  # the files its line types name, beside it
@@ -473,8 +477,10 @@ def test_written_at_its_equilibrium_it_starts_there(name, tmp_path):
         warnings.simplefilter("always", PlausibilityWarning)
         eq2 = again.equilibrium()
     assert sorted(str(w.message) for w in caught) == sorted(FINDINGS[name])
-    if name in NOISE_FLOOR:  # one step to its noise floor, and within it after (`NOISE_FLOOR`)
-        assert len(eq2.history) > 1 and max(eq2.history[1:]) <= NOISE_FLOOR[name]
+    if name in NOISE_FLOOR:  # its noise floor within two steps, and within it after (`NOISE_FLOOR`)
+        reached = next((k for k, r in enumerate(eq2.history) if r <= NOISE_FLOOR[name]), None)
+        assert reached is not None and reached <= 2, eq2.history
+        assert max(eq2.history[reached:]) <= NOISE_FLOOR[name], eq2.history
     else:
         assert len(eq2.history) - 1 <= 1
     scale = max(1.0, max(float(np.abs(p.position).max()) for p in eq.points))
