@@ -43,15 +43,19 @@ the same start (its assembly reused) when the damped Newton fails; ``full_steps=
 them first (a start near the solution, a warm start, whose active set full steps identify in a
 few iterations where damped ones crawl; full semismooth steps converge superlinearly near a
 solution: L. Qi, J. Sun, "A nonsmooth version of Newton's method", Math. Programming 58, 1993)
-and the damped Newton where they fail. A full step is
-halved only where its trial is inadmissible, one of ``rejects`` or not finite; the full steps
-stop where ``norm`` grows a thousandfold past the start, or after ``max_iter`` steps. Without a
+and the damped Newton where they fail. A full step is halved only where its trial is
+inadmissible, one of ``rejects`` or not finite; the full steps stop where ``norm`` grows a
+thousandfold past the start, or after ``max_iter`` steps (``full_max_iter`` if given). Without a
 line search the Newton takes full steps already: no second attempt. ``rescue(failed)``, tried
 before the full steps "after", is the problem's own way on from where the damped Newton
 stopped (``failed.last``; a line on the seabed holds its contact nodes' active set): a
 `NewtonResult` whose history starts there, or None. When every attempt fails, the damped
 Newton's `ConvergenceError` is raised, its ``attempts`` holding every attempt's history in the
-order tried. Past ``tol``, ``polish`` full steps at most go on while ``norm`` falls below
+order tried. With ``active(state)``, a fingerprint of the non-smooth terms' active sets, the
+full-step attempt is the active-set iteration `semismooth` instead (a step that changes the
+active set is progress whatever the residual does; stopped at a cycle), tried also without a
+line search, ``full_max_iter`` steps at most (a strand's contact and slip laws). Past ``tol``,
+``polish`` full steps at most go on while ``norm`` falls below
 ``polish_factor`` times the last: quadratic convergence takes the solution to its round-off
 floor for one or two more assemblies. ``callback`` sees every step of every attempt, numbered
 from 1 in each.
@@ -259,6 +263,8 @@ def newton(
     rescue: Callable[[ConvergenceError], NewtonResult | None] | None = None,
     polish: int = 0,
     polish_factor: float = 0.1,
+    active: Callable[[Any], Any] | None = None,
+    full_max_iter: int | None = None,
 ) -> NewtonResult:
     """Solve ``R(x) = 0`` from ``x0``; see the module docstring.
 
@@ -325,6 +331,13 @@ def newton(
         times the last (a trial one of ``rejects`` stops them).
     polish_factor : float
         The fall of ``norm`` a polishing step must give.
+    active : callable, optional
+        ``active(state)``: a hashable fingerprint of the non-smooth terms' active sets. Given, the
+        full-step attempt is the active-set iteration `semismooth` (stopped at a cycle of the
+        active sets or where a step within one raises ``norm``), tried also where
+        ``line_search`` is False; its steps are ``x + dx`` (no ``update``, no ``admissible``).
+    full_max_iter : int, optional
+        Iterations at most of the full-step attempt (default ``max_iter``).
 
     Raises
     ------
@@ -333,11 +346,13 @@ def newton(
         ``history`` holds ``norm`` per iteration. With fallbacks, the damped Newton's error
         when every attempt fails, ``attempts`` holding the history of each in the order tried.
     InputError
-        ``callback`` raised (the iteration is named), or ``full_steps`` is none of
-        `FULL_STEPS`.
+        ``callback`` raised (the iteration is named), ``full_steps`` is none of
+        `FULL_STEPS`, or ``active`` is given with ``update`` or ``admissible``.
     """
     if full_steps not in FULL_STEPS:
         raise InputError("full_steps", f"must be one of {FULL_STEPS}, got {full_steps!r}")
+    if active is not None and (update is not None or admissible is not None):
+        raise InputError("active", "takes the steps x + dx: it cannot be given with update or admissible")
     update = _plain_update if update is None else update
     damped = functools.partial(
         _damped, norm=norm, increment=increment, tol=tol, max_iter=max_iter,
@@ -347,7 +362,8 @@ def newton(
         absolute=absolute, line_search=line_search, callback=callback, nonmonotone=nonmonotone,
         watchdog=watchdog,
     )  # fmt: skip
-    full_steps = full_steps if line_search else "never"  # a Newton without line search takes them
+    if not line_search and active is None:  # a Newton without line search takes full steps already
+        full_steps = "never"
     if full_steps == "never" and rescue is None and not polish:
         return damped(assemble, x0, state=state)
     count = [0 if state is None else 1]  # the start counted, as the damped Newton counts it
@@ -362,7 +378,15 @@ def newton(
     x = np.array(x0, dtype=float)
     start = counted(x) if state is None else state
     problem = _Problem(counted, norm, increment, update, admissible, rejects, converged, callback, name)
-    full = functools.partial(problem.full_steps, x, start, max_iter, max_halvings)
+    full_iter = max_iter if full_max_iter is None else full_max_iter
+    if active is None:
+        full = functools.partial(problem.full_steps, x, start, full_iter, max_halvings)
+    else:
+        full = functools.partial(
+            semismooth, counted, x, norm=norm, increment=increment, active=active, tol=tol,
+            max_iter=full_iter, name=name, state=start, atol=atol, absolute=absolute,
+            callback=callback, rejects=rejects,
+        )  # fmt: skip
     result = _attempts(lambda: damped(counted, x, state=start), full, rescue, full_steps)
     result = problem.polished(result, polish, polish_factor)
     result.assemblies = count[0]

@@ -182,3 +182,63 @@ def test_first_converged_makes_the_attempts_in_turn_and_raises_the_first_error()
 
 def _fails(message):
     raise ConvergenceError(message, [0.0])
+
+
+def _piece(state_x):
+    return 0 if state_x <= 0.0 else (1 if state_x <= 0.5 else 2)
+
+
+def _kinked_active(assemble):
+    """``assemble`` that keeps ``x`` in its state, and the active piece of `_kinked` as ``active``."""
+
+    def with_x(x):
+        return (*assemble(x), float(x[0]))
+
+    return with_x, lambda state: _piece(state[2])
+
+
+@pytest.mark.parametrize("line_search", [True, False])
+def test_active_makes_the_first_attempt_the_active_set_iteration(line_search):
+    assemble, norm, increment = KINKED
+    assemble, active = _kinked_active(assemble)
+    root = brentq(_kinked, 0.5, 1.0, xtol=1e-15)
+    result = newton(
+        assemble, np.array([0.0]), norm=norm, increment=increment, tol=1e-12, full_steps="first",
+        active=active, line_search=line_search,
+    )  # fmt: skip
+    assert abs(result.x[0] - root) < 1e-15 and math.isclose(root, 5.0 / 7.0, rel_tol=1e-14)
+    # the residual doubles on the step from 0 to 1 (the active piece changes: progress), then the
+    # step within the last piece lands on the root; the start reused, two steps assembled
+    assert result.history[:2] == [1.0, 2.0] and result.history[2] < 1e-12
+    assert result.assemblies == 1 + 2
+
+
+def test_full_max_iter_limits_the_active_set_iteration_and_the_damped_error_is_raised():
+    assemble, norm, increment = KINKED
+    assemble, active = _kinked_active(assemble)
+    with pytest.raises(ConvergenceError, match="no descent") as failed:
+        newton(
+            assemble, np.array([0.0]), norm=norm, increment=increment, tol=1e-12, full_steps="first",
+            active=active, full_max_iter=1,
+        )  # fmt: skip
+    # one step of the active-set iteration (|R| from 1 to 2), then the damped Newton's no descent
+    assert failed.value.attempts == [[1.0, 2.0], [1.0]]
+    # without a line search the active-set iteration is still tried first: its one step assembled,
+    # then the plain Newton's two from the start
+    plain = newton(
+        assemble, np.array([0.0]), norm=norm, increment=increment, tol=1e-12, full_steps="first",
+        active=active, full_max_iter=1, line_search=False,
+    )  # fmt: skip
+    assert abs(plain.x[0] - 5.0 / 7.0) < 1e-15 and plain.assemblies == 1 + 1 + 2
+    # without a line search the active-set iteration is still tried first: its one step assembled,
+    # then the plain Newton's two from the start
+    plain = newton(
+        assemble, np.array([0.0]), norm=norm, increment=increment, tol=1e-12, full_steps="first",
+        active=active, full_max_iter=1, line_search=False,
+    )  # fmt: skip
+    assert abs(plain.x[0] - 5.0 / 7.0) < 1e-15 and plain.assemblies == 1 + 1 + 2
+    with pytest.raises(InputError, match="active"):
+        newton(
+            assemble, np.array([0.0]), norm=norm, increment=increment, tol=1e-12, full_steps="first",
+            active=active, update=lambda x, dx, t: x + t * dx,
+        )  # fmt: skip

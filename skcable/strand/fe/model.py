@@ -45,9 +45,9 @@ from skfem import Basis, ElementLineHermite, ElementLineP2, MeshLine
 from skcable import _plausible
 from skcable._checks import positive, whole
 from skcable.errors import ConvergenceError, InputError, NonFiniteError, SlowConvergenceWarning
-from skcable.fe import Assembly, LinearSystem, NewtonOptions, minimize, newton
+from skcable.fe import Assembly, LinearSystem, NewtonOptions, first_converged, minimize, newton
 from skcable.fe.elements import ElementLinePpExact
-from skcable.fe.newton import linear_tail, semismooth
+from skcable.fe.newton import linear_tail
 from skcable.strand._bending import friction
 from skcable.strand.capacity import StepResult, StrandLayout, capacity_curve
 from skcable.strand.fe.diagnosis import FirstSolveCheck, non_finite, tangent_modes
@@ -893,8 +893,10 @@ class StrandModel:
         """Newton for a model with non-smooth terms (contact, tensionless supports, a kinked
         section law).
 
-        First a semismooth Newton with active sets (`skcable.fe.semismooth`, `_active`: full steps
-        while the active sets change, stopped at a cycle), which finds a stiff contact zone node by
+        The attempts of `skcable.fe.first_converged`. First `skcable.fe.newton` with
+        ``full_steps="first"`` and ``active=_active``: a semismooth Newton with active sets
+        (`skcable.fe.semismooth`: full steps while the active sets change, stopped at a cycle,
+        ``max(4·max_iter, 100)`` of them at most), which finds a stiff contact zone node by
         node; then (steps on the generalized derivative) under a monotone line search, which a
         kinked section law (Cardou's) passes in a few steps; where that stalls,
         a model with a section law passes a fold of its path through a potential surrogate
@@ -906,43 +908,38 @@ class StrandModel:
         would push the strand deep into a bed (40 halvings), and the tangent's shift may grow to
         1e6 times the elastic one. All failing, the first failure is raised."""
         search = options.line_search != "none"
-        try:  # full steps on the active sets (contact, a slipping law)
-            return semismooth(
-                assemble, U, increment=self._increment, active=self._active,
-                max_iter=max(4 * options.max_iter, 100), **common,
-            )  # fmt: skip
-        except ConvergenceError:
-            pass
         run = functools.partial(
-            newton, assemble, increment=self._increment, max_iter=2 * options.max_iter, merit=self._merit,
-            line_search=search, max_halvings=options.max_halvings,
+            newton, assemble, U, increment=self._increment, max_iter=2 * options.max_iter, merit=self._merit,
+            line_search=search, max_halvings=options.max_halvings, **common,
         )  # fmt: skip
-        try:  # a monotone line search
-            return run(U, stagnation_window=2 * options.stagnation_window, **common)
-        except ConvergenceError as exc:
-            failed = exc
         potential = first.energy is not None and all(
             t.symmetric and t.potential is not False for t in self._bound
         )
-        if not potential and any(hasattr(t, "frozen") for t in self._bound):
-            try:
-                return self._pass_fold(assemble, U, first, options, common, failed)
-            except ConvergenceError:
-                pass
-        if search:
-            try:
-                return run(U, stagnation_window=2 * options.max_iter, nonmonotone=NONMONOTONE, **common)
-            except ConvergenceError:
-                pass
-        if not potential:
-            raise failed
-        try:
-            return self._minimize(
-                assemble, U, options, common, halvings=40, mu_max=max(options.mu_max, 1e6),
-                max_iter=max(4 * options.max_iter, 100),
+        attempts = [  # full steps on the active sets (contact, a slipping law), then a monotone line search
+            lambda: run(
+                stagnation_window=2 * options.stagnation_window,
+                full_steps="first",
+                active=self._active,
+                full_max_iter=max(4 * options.max_iter, 100),
             )  # fmt: skip
-        except ConvergenceError:
-            raise failed from None
+        ]
+        if not potential and any(hasattr(t, "frozen") for t in self._bound):
+            attempts.append(lambda: self._pass_fold(assemble, U, first, options, common))
+        if search:
+            attempts.append(lambda: run(stagnation_window=2 * options.max_iter, nonmonotone=NONMONOTONE))
+        if potential:
+            attempts.append(
+                lambda: self._minimize(
+                    assemble,
+                    U,
+                    options,
+                    common,
+                    halvings=40,
+                    mu_max=max(options.mu_max, 1e6),
+                    max_iter=max(4 * options.max_iter, 100),
+                )  # fmt: skip
+            )
+        return first_converged(attempts)
 
     def _active(self, a) -> tuple:
         """The active sets of the non-smooth terms of an assembly ``a``, as a fingerprint: a
@@ -962,18 +959,18 @@ class StrandModel:
                 keys.append(None if K is None else sp.csr_matrix(K).data.tobytes())
         return tuple(keys)
 
-    def _pass_fold(self, assemble, U, first, options, common, failed, rounds: int = 3):
+    def _pass_fold(self, assemble, U, first, options, common, rounds: int = 3):
         """A model with a section law (no potential) whose Newton failed: where every term has a
         potential surrogate (`HelicalWires.frozen`: the wires' composite curvature and the law's
         points frozen at the current state), minimise the surrogate's energy (which passes a fold
         of the path, as `_minimize` does) and polish the step with the model's own Newton from
-        there, refreezing at most ``rounds`` times; else raise ``failed``."""
+        there, refreezing at most ``rounds`` times; else a `ConvergenceError`."""
         load, state = first.load, first.state
         for _ in range(rounds):
             start = assemble(U)
             bound = [_surrogate(t, o) for t, o in zip(self._bound, start.outputs, strict=True)]
             if any(t is None for t in bound):
-                raise failed
+                raise ConvergenceError(f"{common['name']}: a term has no potential surrogate", last=U)
             surrogate = functools.partial(self._assemble, state=state, load=load, bound=bound)
             try:
                 U = self._minimize(
@@ -994,7 +991,7 @@ class StrandModel:
                 continue
             result.shifted = True  # the path passed a fold
             return result
-        raise failed
+        raise ConvergenceError(f"{common['name']}: no fold passed in {rounds} rounds", last=U)
 
     def _suspects(self, U, state) -> list[str]:
         """The terms whose tangent `skcable.fe.check_tangent` finds off at ``U``, worst first."""
