@@ -393,3 +393,17 @@ def test_summaries_are_short():
         assert "\n" not in text and len(text) < 600, text
     assert f"{curve.K_Leq:.6g}" in repr(curve) and "ruptured" in repr(curve)
     assert f"{curve.steps[-1].strain:.6g}" in repr(curve.steps[-1])
+
+
+def test_an_amended_error_keeps_its_history_and_every_attempt():
+    """The strand model adds its diagnosis to a solve's `ConvergenceError` (`_amended`): the
+    damped Newton's history, its last iterate and every attempt's history stay on it."""
+    from skcable.strand.fe.model import _amended
+
+    err = ConvergenceError(
+        "no convergence", [1.0, 0.5], last=np.array([0.1, 0.2]), attempts=[[1.0, 0.5], [1.0, 2.0]]
+    )
+    out = _amended(err, "; a term's tangent is off")
+    assert out.args[0].startswith("no convergence") and out.args[0].endswith("; a term's tangent is off")
+    assert out.history == [1.0, 0.5] and out.attempts == [[1.0, 0.5], [1.0, 2.0]]
+    np.testing.assert_array_equal(out.last, [0.1, 0.2])

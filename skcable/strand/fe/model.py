@@ -1206,9 +1206,9 @@ class _Energy:
 
 
 def _amended(exc: ConvergenceError, note: str) -> ConvergenceError:
-    """``exc`` with ``note`` added to its message (its history and last iterate kept)."""
+    """``exc`` with ``note`` added to its message (its history, last iterate and attempts kept)."""
     out = ConvergenceError(exc.args[0] + note)
-    out.history, out.last = exc.history, exc.last
+    out.history, out.last, out.attempts = exc.history, exc.last, exc.attempts
     return out
 
 
