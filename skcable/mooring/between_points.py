@@ -32,6 +32,7 @@ from __future__ import annotations
 
 import math
 from functools import cached_property
+from typing import Protocol
 
 import numpy as np
 
@@ -40,7 +41,30 @@ from skcable._show import Shown
 from skcable.errors import InputError
 from skcable.mooring.segments import LineSolution
 
-__all__ = ["LineBetween", "plane_of"]
+__all__ = ["EndTensions", "LineBetween", "plane_of"]
+
+
+class _WithEndForces(Protocol):
+    @property
+    def end_forces(self) -> np.ndarray: ...
+
+
+class EndTensions:
+    """The end tensions of a line between two points from its ``end_forces`` (N, (2, 3): its
+    forces on a and on b): ``tension_a``, ``tension_b`` their norms, ``max_end_tension`` the
+    larger (N)."""
+
+    @property
+    def tension_a(self: _WithEndForces) -> float:
+        return float(np.linalg.norm(self.end_forces[0]))
+
+    @property
+    def tension_b(self: _WithEndForces) -> float:
+        return float(np.linalg.norm(self.end_forces[1]))
+
+    @property
+    def max_end_tension(self: _WithEndForces) -> float:
+        return max(float(np.linalg.norm(self.end_forces[0])), float(np.linalg.norm(self.end_forces[1])))
 
 
 class LineBetween(Shown):

@@ -39,6 +39,7 @@ import numpy as np
 
 from skcable._checks import nonnegative, positive, scalar
 from skcable.errors import InputError
+from skcable.mooring.between_points import EndTensions
 from skcable.mooring.body import RigidBody, skew
 from skcable.mooring.rod_waterline import waterline_shares
 
@@ -96,7 +97,7 @@ class Rod:
         return f"Rod(length={self.length!r}, diameter={self.diameter!r}, mass={self.mass!r}{stiff})"
 
 
-class RodBetween:
+class RodBetween(EndTensions):
     """A rod with its ends at ``a`` and ``b`` (module docstring).
 
     Attributes
@@ -138,19 +139,6 @@ class RodBetween:
         """The rod's forces on a and on b (N), (2, 3)."""
         pull = self.axial_force * self.u
         return np.array([pull + self.loads[0], -pull + self.loads[1]])
-
-    @property
-    def tension_a(self) -> float:
-        return float(np.linalg.norm(self.end_forces[0]))
-
-    @property
-    def tension_b(self) -> float:
-        return float(np.linalg.norm(self.end_forces[1]))
-
-    @property
-    def max_end_tension(self) -> float:
-        """The larger of the end forces' norms (N)."""
-        return max(self.tension_a, self.tension_b)
 
     @cached_property
     def _axial_block(self) -> np.ndarray:

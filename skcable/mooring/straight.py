@@ -47,6 +47,7 @@ import math
 import numpy as np
 
 from skcable.errors import InputError
+from skcable.mooring.between_points import EndTensions
 
 __all__ = ["VerticalBetween", "vertical_between", "weightless_between"]
 
@@ -158,7 +159,7 @@ def _taut_tension(hang: _Hanging, height: float) -> float | None:
     return T
 
 
-class VerticalBetween:
+class VerticalBetween(EndTensions):
     """A line solved with its ends on one vertical (module docstring); a `LineBetween` of
     zero horizontal distance: ``end_forces``, ``block(i, j)``, ``tension_a``, ``tension_b``,
     ``state`` (``"taut"``, ``"folded"`` or ``"on the seabed"``).
@@ -176,18 +177,6 @@ class VerticalBetween:
         self.length_on_seabed = float(grounded)
         self.model, self.reason = "vertical", ""  # said by `skcable.mooring.choice.solve_between`
         self.is_slack = state != "taut"
-
-    @property
-    def tension_a(self) -> float:
-        return float(np.linalg.norm(self.end_forces[0]))
-
-    @property
-    def tension_b(self) -> float:
-        return float(np.linalg.norm(self.end_forces[1]))
-
-    @property
-    def max_end_tension(self) -> float:
-        return max(self.tension_a, self.tension_b)
 
     @property
     def solution(self):
