@@ -117,16 +117,9 @@ def _rating(args) -> int:
 
 
 def _table_flags(p) -> None:
-    from skcable.cli._state import model_flags, span_flags
+    from skcable.cli._state import model_flags, reference_flags
 
-    span_flags(p)
-    p.add_argument("--alpha", type=finite, required=True, help="thermal expansion [1/K] (required)")
-    p.add_argument("--w0", type=finite, required=True, help="reference weight per length [N/m] (required)")
-    p.add_argument("--t0", type=finite, required=True, help="reference temperature [°C] (required)")
-    p.add_argument(
-        "--H0", type=finite, help="reference horizontal tension [N] (default: none; give --H0 or --sag0)"
-    )
-    p.add_argument("--sag0", type=finite, help="reference sag [m] (default: none; give --H0 or --sag0)")
+    reference_flags(p)
     p.add_argument(
         "--temperatures",
         type=finite,

@@ -87,6 +87,21 @@ def span_flags(p) -> None:
     p.add_argument("--EA", type=finite, required=True, help="axial stiffness [N], > 0 (required)")
 
 
+def reference_flags(p) -> None:
+    """A conductor's span and its reference state: `span_flags`, ``--alpha``, ``--w0``, ``--t0``
+    and ``--H0`` or ``--sag0``."""
+    span_flags(p)
+    p.add_argument("--alpha", type=finite, required=True, help="thermal expansion [1/K] (required)")
+    p.add_argument(
+        "--w0", type=finite, required=True, help="reference weight per unstressed length [N/m] (required)"
+    )
+    p.add_argument("--t0", type=finite, required=True, help="reference temperature [°C] (required)")
+    p.add_argument(
+        "--H0", type=finite, help="reference horizontal tension [N] (default: none; give --H0 or --sag0)"
+    )
+    p.add_argument("--sag0", type=finite, help="reference sag [m] (default: none; give --H0 or --sag0)")
+
+
 def model_flags(p) -> None:
     """``--model`` and ``--rtol`` of a change of state (`skcable.conductors.change_of_state`)."""
     p.add_argument(
@@ -112,16 +127,7 @@ def register(sub, command) -> None:
         "sag and tension of a span in other states (load, temperature, wind) at the unstressed length "
         "of a reference state (skcable.conductors.change_of_state)",
     )
-    span_flags(cs)
-    cs.add_argument("--alpha", type=finite, required=True, help="thermal expansion [1/K] (required)")
-    cs.add_argument(
-        "--w0", type=finite, required=True, help="reference weight per unstressed length [N/m] (required)"
-    )
-    cs.add_argument("--t0", type=finite, required=True, help="reference temperature [°C] (required)")
-    cs.add_argument(
-        "--H0", type=finite, help="reference horizontal tension [N] (default: none; give --H0 or --sag0)"
-    )
-    cs.add_argument("--sag0", type=finite, help="reference sag [m] (default: none; give --H0 or --sag0)")
+    reference_flags(cs)
     cs.add_argument(
         "--w",
         type=finite,
