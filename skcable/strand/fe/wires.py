@@ -272,6 +272,16 @@ class HelicalWires(SectionTerm):
         q = contract("kcen,ken->cen", levers, d_km * dk_m)  # dκc/dε_a
         return kappa_c, P, q, d_km
 
+    def _strains(self, g, axial, kappa, kappa_c):
+        """The wires' strains ``ε_j`` (nw, ne, nq): the axial strain less the bending of the
+        eccentric centroid (``kappa``) and of the wires about it (``kappa_c``, as the slip law
+        leaves it), along each wire (``cos² α_j``), plus the twist's share (``g[5]``)."""
+        eccentric = self._cy * kappa[0][None] + self._cz * kappa[1][None]
+        return (
+            self.c2 * (axial[None] - eccentric - self._y * kappa_c[0][None] - self._z * kappa_c[1][None])
+            + self.sc * g[5][None]
+        )
+
     def _strain_gradients(self, g, P, q, shape):
         """``b = ∂ε_j/∂g`` (6, nw, ne, nq), its first row ∂ε_j/∂ε_a, filled row by row in one array."""
         y, z, c2, cy, cz = self._y, self._z, self.c2, self._cy, self._cz
@@ -302,12 +312,7 @@ class HelicalWires(SectionTerm):
         state = step.state
         points = self.points(axial, k_m)
         kappa_c, P, q, d_km = self._slip_derivatives(kappa, k_principal, k_m, dk_m, state)
-        y, z, c2 = self._y, self._z, self.c2
-        eccentric = self._cy * kappa[0][None] + self._cz * kappa[1][None]
-        strain = (
-            c2 * (axial[None] - eccentric - y * kappa_c[0][None] - z * kappa_c[1][None])
-            + self.sc * g[5][None]
-        )
+        strain = self._strains(g, axial, kappa, kappa_c)
         stress, tangent = self.materials.stress_and_tangent(strain)
         stress = stress * self._alive3  # a broken wire carries nothing (its area weight is zero too)
         b = self._strain_gradients(g, P, q, strain.shape)
@@ -395,12 +400,7 @@ class HelicalWires(SectionTerm):
         kappa_c = contract("kcen,ken->cen", levers, k_c)
         P = contract("kcen,ken,kden->cden", levers, np.where(composite, dM_dk / safe, 1.0), levers)
         q = contract("kcen,ken->cen", levers, np.where(composite, (dM_de - k_c * d_EI) / safe, 0.0))
-        y, z, c2 = self._y, self._z, self.c2
-        eccentric = self._cy * kappa[0][None] + self._cz * kappa[1][None]
-        strain = (
-            c2 * (axial[None] - eccentric - y * kappa_c[0][None] - z * kappa_c[1][None])
-            + self.sc * g[5][None]
-        )
+        strain = self._strains(g, axial, kappa, kappa_c)
         stress, tangent = self.materials.stress_and_tangent(strain)
         stress = stress * self._alive3
         s, k = self.area_weight * stress, self.area_weight * tangent
@@ -473,11 +473,7 @@ class HelicalWires(SectionTerm):
         k_c, points = self._frozen
         levers, state = self.levers, step.state
         kappa_c = contract("kcen,ken->cen", levers, k_c)
-        eccentric = self._cy * kappa[0][None] + self._cz * kappa[1][None]
-        strain = (
-            self.c2 * (axial[None] - eccentric - self._y * kappa_c[0][None] - self._z * kappa_c[1][None])
-            + self.sc * g[5][None]
-        )
+        strain = self._strains(g, axial, kappa, kappa_c)
         stress, tangent, density = self.materials.stress_tangent_energy(strain)
         stress = stress * self._alive3
         s, k = self.area_weight * stress, self.area_weight * tangent
