@@ -200,10 +200,10 @@ class ArcProblem:
         asmb = self.assembly
         g = asmb.interpolate(z)
         ax, ay, X, T = g[_AX], g[_AY], g[_X], g[_T]
-        section = tension_section(ax, ay, T)
+        section = tension_section((ax, ay), T)
         if section is None:  # a collapsed tangent: reject this iterate
             return _REJECTED
-        n, ex, ey, D = section  # T e, the stretch and their tangent (skcable.bvp.section)
+        n, (ex, ey), D = section  # T e, the stretch and their tangent (skcable.bvp.section)
         Qx, Qy, dQx_dx, dQy_dx, dQx_dxp, dQy_dxp, dQx_dL, dQy_dL = arc_loads(self.loads, X, ax, L0, self.span)
         c = self.compliance
         S = np.stack([T * ex, T * ey, -Qx, -Qy, n - L0 * (1.0 + T * c)])

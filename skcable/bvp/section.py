@@ -1,9 +1,10 @@
 r"""The tension's part of the arc-length forms' section law, shared by the arc form and the line.
 
 Both arc-length forms (`skcable.bvp.arc`, on ``σ = s/L0``, and the mooring line of
-`skcable.mooring.line_bvp`, on the unstretched arc length itself) assemble a section law in the
-generalized strains ``g = (x', y', x, y, T)`` with `skcable.fe.Assembly`. Its tension part is
-the same in both: with ``a = (x', y')``, ``n = |a|`` and ``e = a/n``, the section force ``T e``
+`skcable.mooring.line_bvp`, on the unstretched arc length itself, in the plane and in space)
+assemble a section law in the generalized strains ``g = (a, r, T)`` (``(x', y', x, y, T)`` in the
+plane) with `skcable.fe.Assembly`. Its tension part is the same in all: with ``a = r'``,
+``n = |a|`` and ``e = a/n``, the section force ``T e``
 on the position derivatives and ``e·δa`` (the stretch ``n``'s variation) on the tension, with the
 tangent
 
@@ -20,27 +21,36 @@ from __future__ import annotations
 
 import numpy as np
 
-__all__ = ["STRAINS", "tension_section"]
-
-#: the generalized strains (field, derivative order) of both arc-length forms: x', y', x, y, T
-STRAINS = (("x", 1), ("y", 1), ("x", 0), ("y", 0), ("T", 0))
-AX, AY, X, Y, T_ = range(5)
+__all__ = ["STRAINS", "strains_of", "tension_section"]
 
 
-def tension_section(ax, ay, T):
-    """``(n, ex, ey, D)`` at the quadrature points from ``x'``, ``y'`` and ``T`` (arrays of one
-    shape ``P``): the stretch ``n = |a|``, the unit tangent ``e`` and the section tangent ``D``
-    (5, 5, *P) with its tension entries filled (module docstring), the others zero; None where
-    ``n`` has a zero (a collapsed tangent: the iterate is rejected)."""
-    n = np.sqrt(ax * ax + ay * ay)
+def strains_of(dim: int) -> tuple[tuple[str, int], ...]:
+    """The generalized strains (field, derivative order) of an arc-length form in ``dim``
+    dimensions: ``r'`` by coordinate, ``r``, ``T``."""
+    names = "xyz"[:dim]
+    return (*((c, 1) for c in names), *((c, 0) for c in names), ("T", 0))
+
+
+#: the generalized strains of the plane arc-length forms: x', y', x, y, T
+STRAINS = strains_of(2)
+
+
+def tension_section(a, T):
+    """``(n, e, D)`` at the quadrature points from ``a = dr/ds`` (``dim`` arrays of one shape
+    ``P``, 2 or 3) and ``T``: the stretch ``n = |a|``, the unit tangent ``e`` (dim, *P) and the
+    section tangent ``D`` (2 dim + 1, 2 dim + 1, *P) over the strains ``(a, r, T)`` with its
+    tension entries filled (module docstring), the others zero; None where ``n`` has a zero (a
+    collapsed tangent: the iterate is rejected)."""
+    dim = len(a)
+    n = np.sqrt(sum(a_i * a_i for a_i in a))
     if not np.all(n > 0):
         return None
-    ex, ey = ax / n, ay / n
-    D = np.zeros((5, 5, *n.shape))
+    e = np.array([a_i / n for a_i in a])
+    D = np.zeros((2 * dim + 1, 2 * dim + 1, *n.shape))
     Tn = T / n
-    D[AX, AX] = Tn * (1.0 - ex * ex)
-    D[AX, AY] = D[AY, AX] = -Tn * ex * ey
-    D[AY, AY] = Tn * (1.0 - ey * ey)
-    D[AX, T_] = D[T_, AX] = ex
-    D[AY, T_] = D[T_, AY] = ey
-    return n, ex, ey, D
+    for i in range(dim):
+        D[i, i] = Tn * (1.0 - e[i] * e[i])
+        for j in range(i + 1, dim):
+            D[i, j] = D[j, i] = -Tn * e[i] * e[j]
+        D[i, 2 * dim] = D[2 * dim, i] = e[i]
+    return n, e, D

@@ -186,7 +186,7 @@ def test_a_line_on_a_plane_bathymetry_matches_the_sloped_closed_form(slope, fric
 def statics(line):
     """The forces on the line, summed, over its weight: anchor, fairlead, seabed and distributed."""
     p = line.problem
-    f = p.loads(p.assembly.interpolate(line.dofs))[0]
+    f = -p.distributed_load(p.assembly.interpolate(line.dofs))[0]
     total = -line.force_on_anchor - line.force_on_fairlead + line.contact_force.sum(axis=0)
     total = total + line.anchor_seabed_force + np.sum(f * p.assembly.dx, axis=(1, 2))
     total[2] -= np.sum(p.point_values)

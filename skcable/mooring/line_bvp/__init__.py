@@ -9,10 +9,12 @@ on a seabed of any shape with Coulomb friction. One concern per module:
 - `contact`: the seabed and the semismooth (primal–dual active set) contact rows;
 - `mesh`: uniform, graded (equidistributed turning), fitted and nested meshes;
 - `discrete`: what the plane line and the line in space (`skcable.mooring.line_bvp_3d`) write
-  once, parametrised by the dimension: mesh, bases, dofs, merit, the generalized Jacobian's
-  banded solves and the ends' sensitivities (`DiscreteLine`);
-- `problem`: one discrete line — bases, properties at the quadrature points, the loads, the
-  residual and its generalized Jacobian (every call of the assembly is there);
+  once, parametrised by the dimension: the line law (section forces, loads, axial laws, residual
+  and tangent: every call of its assembly), mesh, bases, dofs, merit and its round-off floor, the
+  generalized Jacobian's banded solves and the ends' sensitivities (`DiscreteLine`);
+- `loads`: the cable terms' force and derivatives, checked, in the plane and in space;
+- `problem`: one discrete line in the plane — its properties, the scales, the point loads at any
+  arc length and its seabed's contact rows (with friction and the slack stretch);
 - `start`: the closed-form start (elastic catenary, grounded where it dips below the seabed);
 - `iterate`: one solve — damped semismooth Newton, its rescue with the active set held, full
   steps and the polish (`skcable.fe.newton`'s options, as the line in space's);

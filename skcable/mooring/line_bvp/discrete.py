@@ -1,9 +1,25 @@
-r"""The discrete line of the line BVP in the plane and in space: what the two write once.
+r"""The discrete line of the line BVP in the plane and in space: one line law, two contact models.
 
 Both solve the arc-length form on the unstretched arc length ``s ∈ [0, L]`` (J.M. Goicolea,
 "Cálculo de cables", UPM, 2012, eq. (3)) in ``dim`` dimensions: positions
-``r(s) = (x, y[, z])`` P2 per coordinate, tension ``T(s)`` discontinuous P1, the ends fixed.
-`DiscreteLine` holds what does not depend on the section law, the loads or the contact rows:
+``r(s) = (x, y[, z])`` P2 per coordinate (the last one up), tension ``T(s)`` discontinuous P1,
+``a = dr/ds``, ``n = |a|``, ``e = a/n``, the ends fixed. With the weight ``w(s)`` per unstretched
+length (N/m, downward; a buoyant segment has ``w < 0``), the force ``f(r, s, a, T)`` of the cable
+terms per unstretched length (`skcable.mooring.line_bvp.loads`), the point loads ``P_k``
+(downward) at nodes ``s_k`` and each segment's axial law ``ε(T)`` (`skcable.mooring.axial`; a
+constant ``EA``: ``T/EA``):
+
+.. math::
+    R_{\mathbf r} = \int_0^L \big(T\,\mathbf e\cdot\delta\mathbf r'
+        + (w\,\mathbf e_v - \mathbf f)\cdot\delta\mathbf r\big)\,ds
+        + \sum_k P_k\,\delta r_v(s_k) - \text{(contact)} = 0,
+    \qquad R_T = \int_0^L \big(n - 1 - \varepsilon(T)\big)\,\delta T\,ds = 0,
+
+``v`` the vertical coordinate. The section law over the strains ``(a, r, T)`` is
+``S = (T e, w e_v − f, n − 1 − ε)``; its tension part and tangent are
+`skcable.bvp.section.tension_section`'s, the loads' ``−(f_r, f_a, f_T)``, the stretch's
+``−ε'(T)``: unsymmetric where a term depends on the line's direction. `DiscreteLine` holds all
+of it and what does not depend on the contact rows:
 
 - the mesh (`skcable.mooring.line_bvp.mesh.line_nodes`), the bases and the assembly of the fields
   ``x, y[, z], T`` over the strains its subclass gives; the free dofs (every position dof but
@@ -21,28 +37,53 @@ Both solve the arc-length form on the unstretched arc length ``s ∈ [0, L]`` (J
   at a gap ``~ h_i``.
 
 `skcable.mooring.line_bvp.problem.LineProblem` (the plane, ``dim = 2``) and
-`skcable.mooring.line_bvp_3d.problem.LineProblem3D` (space, ``dim = 3``) add their section laws,
-loads, contact rows and reactions.
+`skcable.mooring.line_bvp_3d.problem.LineProblem3D` (space, ``dim = 3``) set the properties
+(``w_q``, the axial laws, the terms) and add their contact rows and reactions. Every call of the
+line law's assembly is in this module.
 """
 
 from __future__ import annotations
 
+from dataclasses import dataclass
 from typing import Any
 
 import numpy as np
 from skfem import Basis, ElementLineP1DG, ElementLineP2, MeshLine
 
 from skcable.bvp.elements import end_dofs
+from skcable.bvp.section import strains_of, tension_section
 from skcable.fe.assembly import Assembly
+from skcable.mooring.line_bvp.loads import TermLoad, term_load
 from skcable.mooring.line_bvp.mesh import joints_of, line_nodes
 
-__all__ = ["DiscreteLine"]
+__all__ = ["REJECTED", "DiscreteLine", "LineState"]
+
+EPS = float(np.finfo(float).eps)
+
+
+@dataclass
+class LineState:
+    """The residual ``F`` (contact rows in), ``R⁰`` (without), the element tangents ``Ke``, the
+    contact terms (None without contact), the merit and the iterate ``z`` itself (``F`` None:
+    rejected)."""
+
+    F: np.ndarray | None
+    R0: np.ndarray | None
+    Ke: np.ndarray | None
+    terms: Any
+    merit: float
+    z: np.ndarray | None = None
+
+
+#: the state of an iterate the line law refuses (a folded line: ``|a| = 0`` somewhere)
+REJECTED = LineState(None, None, None, None, np.inf)
 
 
 class DiscreteLine:
-    """Mesh, bases, dofs, merit, banded solves and end sensitivities of a line in ``dim``
-    dimensions (module docstring); a subclass sets ``load_scale``, ``length_scale``,
-    ``contact_rows`` (None without a seabed) and ``assemble``."""
+    """Mesh, bases, dofs, the line law, merit, banded solves and end sensitivities of a line in
+    ``dim`` dimensions (module docstring); a subclass sets the properties at the quadrature
+    points (``w_q``, ``compliance_q`` or ``laws`` and ``columns``), ``terms``, ``load_scale``,
+    ``length_scale`` and ``contact_rows`` (None without a seabed)."""
 
     #: 2 (the plane) or 3 (space)
     dim = 2
@@ -50,12 +91,23 @@ class DiscreteLine:
     contact_rows: Any = None
     load_scale = 1.0
     length_scale = 1.0
+    #: the cable terms besides the weight (`skcable.bvp.terms.CableTerm`)
+    terms: tuple | list = ()
+    #: the compliance ``1/EA`` at the quadrature points (m/N, (nq, ne)) where every segment's axial
+    #: law is a constant EA (0: inextensible), else None and ``laws`` per segment over ``columns``
+    compliance_q: np.ndarray | None = None
+    #: the weight per unstretched length at the quadrature points (N/m, downward; (nq, ne))
+    w_q: np.ndarray
+    laws: list = []
+    columns: list = []
 
-    def discretise(self, lengths, point_loads, n_elements, fitted, nodes_at, strains) -> np.ndarray:
+    def discretise(self, lengths, point_loads, n_elements, fitted, nodes_at) -> np.ndarray:
         """Build the mesh on segments of ``lengths`` (m) with nodes at the ``point_loads``' arc
-        lengths and at ``fitted`` (``nodes_at``: a given mesh), the bases, the assembly over
-        ``strains`` and the free dofs; the inner position nodes (the dofs of one coordinate)."""
+        lengths and at ``fitted`` (``nodes_at``: a given mesh), the bases, the assembly over the
+        strains ``(a, r, T)`` and the free dofs; the inner position nodes (the dofs of one
+        coordinate)."""
         dim = self.dim
+        strains = strains_of(dim)
         self.joints = joints_of(lengths)
         self.L = float(self.joints[-1])
         self.mesh = MeshLine(line_nodes(lengths, point_loads, n_elements, fitted, nodes_at))
@@ -144,3 +196,141 @@ class DiscreteLine:
         dz[ends, np.arange(self.dim)] = 1.0
         dz[self.free] = self.solve_many(state, -(J[self.free][:, ends]).toarray())
         return np.asarray(J[ends] @ dz), np.asarray(J[self.end_dofs("a")] @ dz), dz
+
+    # --- the line law: section forces, loads, residual and tangent -------------------------------
+    def strains(self, T, dynamic=False):
+        """``ε(T)`` and ``dε/dT`` at the quadrature points (``dynamic``: the laws' dynamic
+        compliance, for a stiffness about this state)."""
+        if self.compliance_q is not None and not dynamic:
+            return T * self.compliance_q, self.compliance_q
+        eps, k = np.zeros_like(T), np.zeros_like(T)
+        for law, cols in zip(self.laws, self.columns, strict=True):
+            if law is not None and cols.size:
+                eps[:, cols] = law.strain(T[:, cols])
+                k[:, cols] = law.dynamic_compliance(T[:, cols]) if dynamic else law.compliance(T[:, cols])
+        return eps, k
+
+    def term_load(self, g, terms=None) -> TermLoad:
+        """The cable terms' (``terms``, default all) force and derivatives at the quadrature
+        points, from the strains ``g`` (``(a, r, T)``); ``s`` the unstretched arc length from A."""
+        terms = self.terms if terms is None else terms
+        d = self.dim
+        return term_load(terms, g[d : 2 * d], self.assembly.x, g[:d], g[2 * d])
+
+    def distributed_load(self, g) -> tuple[np.ndarray, TermLoad | None]:
+        """``(p, forces)``: the load ``p = w e_v − f`` (dim, nq, ne) (N per unstretched m, the
+        section law's position rows) at the quadrature points from the strains ``g``, and the
+        terms' `TermLoad` (None without terms)."""
+        forces = self.term_load(g) if self.terms else None
+        p = np.zeros((self.dim, *g.shape[1:])) if forces is None else -forces.f
+        p[-1] = self.w_q if forces is None else self.w_q - forces.f[-1]
+        return p, forces
+
+    def add_term_tangent(self, D, forces: TermLoad) -> None:
+        """Add the derivatives of ``p = w e_v − f`` to the section tangent ``D`` (in place): rows
+        ``r`` by the strains ``r`` (``−∂f/∂r``), ``a`` (``−∂f/∂a``) and ``T`` (``−∂f/∂T``)."""
+        d = self.dim
+        r = slice(d, 2 * d)
+        if forces.df_dr is not None:
+            D[r, r] -= forces.df_dr
+        if forces.df_da is not None:
+            D[r, :d] -= forces.df_da
+        if forces.df_dT is not None:
+            D[r, 2 * d] -= forces.df_dT
+
+    def section(self, z, dynamic=False):
+        """``(S, D)``: the section forces (2 dim + 1, nq, ne) and their tangent at ``z`` (module
+        docstring), or None where the line folds (``|a| = 0`` somewhere)."""
+        g = self.assembly.interpolate(z)
+        d = self.dim
+        T = g[2 * d]
+        out = tension_section(g[:d], T)
+        if out is None:
+            return None
+        n, e, D = out
+        eps, k = self.strains(T, dynamic)
+        p, forces = self.distributed_load(g)
+        S = np.concatenate([T * e, p, (n - 1.0 - eps)[None]])
+        D[2 * d, 2 * d] = -k
+        if forces is not None:
+            self.add_term_tangent(D, forces)
+        return S, D
+
+    def internal(self, z, dynamic=False):
+        """``R⁰`` (no contact) and the element tangents, or None for a folded line."""
+        out = self.section(z, dynamic)
+        if out is None:
+            return None
+        S, D = out
+        R = self.assembly.vector(S)
+        np.add.at(R, self.point_rows, self.point_values)
+        return R, self.assembly.element_matrices(D)
+
+    def assemble(self, z, dynamic=False) -> LineState:
+        """The state at the iterate ``z``: the residual with the contact rows and its merit."""
+        out = self.internal(z, dynamic)
+        if out is None:
+            return REJECTED
+        R0, Ke = out
+        F, terms = R0.copy(), None
+        if self.contact_rows is not None:
+            terms = self.contact_rows.terms(z, R0)
+            self.contact_rows.rows(F, terms)
+        return LineState(F, R0, Ke, terms, self.merit(F), z)
+
+    def element_term_load(self, z) -> np.ndarray:
+        """``∫ -f ds`` (N) per element (dim, ne), in mesh order, at the iterate ``z``: the terms'
+        share of the load ``p``; zeros without terms."""
+        if not self.terms:
+            return np.zeros((self.dim, self.mesh.t.shape[1]))
+        f = self.term_load(self.assembly.interpolate(z)).f
+        return -np.sum(f * self.assembly.dx, axis=1)
+
+    def absolute(self, state, tol) -> float:
+        """The largest force row of ``F`` (N) where every stretch row meets ``tol`` (over
+        `length_scale`), else inf: the measure of ``atol``."""
+        if state.F is None:
+            return np.inf
+        stretch = np.abs(state.F[self._stretch_rows]) / self.length_scale
+        if not float(np.max(stretch, initial=0.0)) < tol:
+            return np.inf
+        return float(np.max(np.abs(state.F[self._force_rows]), initial=0.0))
+
+    def rounding(self, state) -> np.ndarray:
+        """``ε |J| |z|`` (per row): the residual's change when every dof of ``state`` moves by its
+        rounding, from the element matrices (no global matrix built)."""
+        Ke, extra = self.tangent(state)
+        size = np.abs(state.z)
+        rows = self.assembly.gather(np.einsum("ije,je->ie", np.abs(Ke), size[self.assembly.dofs]))
+        if extra is not None:
+            rows += abs(extra.tocsr()) @ size
+        return EPS * rows
+
+    def merit_floor(self, state) -> float:
+        """The round-off floor of the merit at ``state``: the merit of `rounding`, the first-order
+        change of ``F`` when every dof of the iterate moves by its own rounding.
+
+        A taut line's force rows are differences of tensions ``T`` far above the total load
+        ``W`` (``H/W`` of 1e4 and more), and each element's direction carries the rounding of
+        its end positions over its length, ``ε L/h``: the floor is about ``ε (L/h) T/W``, above
+        the default ``rtol`` = 1e-10 once ``T/W`` passes about 1e4 on 64 elements.
+        """
+        return 0.0 if state.z is None else self.merit(self.rounding(state))
+
+    # --- for skcable.fe.check_tangent ------------------------------------------------------------
+    def free_dofs(self):
+        """The dofs a solve moves."""
+        return self.free
+
+    def term_contribution(self, term, z, state=None):
+        """``(R, K)`` of the cable term ``term`` alone at ``z``: its residual ``−∫ f·δr`` over the
+        dofs and its tangent (sparse)."""
+        g = self.assembly.interpolate(np.asarray(z, dtype=float))
+        own = term if any(term is t for t in self.terms) else term.bind(self)
+        forces = self.term_load(g, (own,))
+        d = self.dim
+        S = np.zeros_like(g)
+        S[d : 2 * d] = -forces.f
+        D = np.zeros((2 * d + 1, 2 * d + 1, *g.shape[1:]))
+        self.add_term_tangent(D, forces)
+        return self.assembly.vector(S), self.assembly.matrix(D=D)

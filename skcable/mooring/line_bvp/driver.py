@@ -135,7 +135,8 @@ class LineBVPSolver:
         """One solve of ``problem`` from ``z0`` with the scene's Newton options, counted against
         the budget (the best solution so far remembered)."""
         self.budget.spend()
-        solution = solve_on(problem, z0, self.scene.options)
+        result = solve_on(problem, z0, self.scene.options)
+        solution = LineBVPSolution(problem, result.x, list(result.history), result.state)
         history = solution.history
         self.budget.record(history[-1] if len(history) else 0.0, solution)
         return solution

@@ -1,21 +1,24 @@
-"""One solve of one discrete line: semismooth Newton, its fallbacks, and the polish.
+"""One solve of one discrete line, in the plane or in space: semismooth Newton, its fallbacks, the polish.
 
 `solve_on(problem, z0, options)` runs `skcable.fe.newton` (damped by backtracking on the max-norm
-merit, unless ``options.line_search`` is ``"none"``) from ``z0`` with the user's Newton options
+merit, unless ``options.line_search`` is ``"none"``) from ``z0`` with the Newton options
 (`skcable.fe.NewtonOptions`: ``tol``, ``atol``, ``max_iter``, ``max_halvings``,
 ``stagnation_window``, ``callback``) and its fallbacks (`skcable.fe.newton`, *Fallbacks*). The
 max-norm merit of a semismooth system can refuse every damped step where full steps identify the
 active set and converge: full steps are tried from the same start (``full_steps="after"``)
-before the first failure is raised. Past ``tol``, full Newton steps go on while the merit still
-falls tenfold (``polish``, `POLISH` at most): quadratic convergence takes the solution to its
-round-off floor for one or two more assemblies. Where the damped Newton stops (no descent,
-stagnation) with the line on the seabed, `frozen_steps` goes on from where it stopped with the
-active set held (the ``rescue``): a node on the seabed with no push (``λ = g = 0``, a touchdown
-at a node) makes the semismooth Newton cycle between two active sets (the max-norm merit refuses
-both steps), and one of them, held, is a smooth system whose solution meets the contact
-conditions to ``tol``. ``callback(iteration, residual_norm, step_norm)`` sees every step of
-them all, numbered from 1 in each solve (the fallback starts again from the start); an exception
-it raises stops the solve as an `skcable.InputError` naming ``callback`` and the iteration.
+before the first failure is raised; from a start near the solution (a warm start, a refitted
+touchdown: ``near``) full steps come first, the damped ones where they fail. A trial off a
+seabed's grid (`skcable.mooring.bathymetry.OffGrid`) is a step too long. Past ``tol``, full
+Newton steps go on while the merit still halves (``polish``, `POLISH` at most):
+quadratic convergence takes the solution to its round-off floor for one or two more
+assemblies. Where the damped Newton stops (no descent, stagnation) with a plane line on the
+seabed, `frozen_steps` goes on from where it stopped with the active set held (the
+``rescue``): a node on the seabed with no push (``λ = g = 0``, a touchdown at a node) makes the
+semismooth Newton cycle between two active sets (the max-norm merit refuses both steps), and one
+of them, held, is a smooth system whose solution meets the contact conditions to ``tol``.
+``callback(iteration, residual_norm, step_norm)`` sees every step of them all, numbered from 1
+in each solve (the fallback starts again from the start); an exception it raises stops the solve
+as an `skcable.InputError` naming ``callback`` and the iteration.
 """
 
 from __future__ import annotations
@@ -24,12 +27,12 @@ import numpy as np
 
 from skcable.errors import ConvergenceError, InputError
 from skcable.fe import NewtonOptions, NewtonResult, newton
-from skcable.mooring.line_bvp.solution import LineBVPSolution
+from skcable.mooring.bathymetry import OffGrid
 
 __all__ = ["FROZEN_STEPS", "POLISH", "frozen_steps", "report", "solve_on"]
 
-#: Newton steps past rtol at most, while the merit falls tenfold
-POLISH = 2
+#: Newton steps past rtol at most, while the merit halves
+POLISH = 3
 
 #: full Newton steps at most per active set held (`frozen_steps`)
 FROZEN_STEPS = 8
@@ -106,11 +109,15 @@ def _rescue(problem, options: NewtonOptions):
     return rescue
 
 
-def solve_on(problem, z0, options: NewtonOptions) -> LineBVPSolution:
-    """The line of ``problem`` from the iterate ``z0``: damped Newton, else its rescue
-    (`frozen_steps`), else full steps (the damped one's error raised when all fail; no full steps
-    where the Newton takes them already, ``line_search="none"``), then the polish."""
-    result = newton(
+def solve_on(
+    problem, z0, options: NewtonOptions, near: bool = False, name: str = "solve_line_bvp"
+) -> NewtonResult:
+    """The line of ``problem`` from the iterate ``z0`` (module docstring): damped Newton, else its
+    rescue (`frozen_steps`, a plane line on the seabed), else full steps (the damped one's error
+    raised when all fail; none where the Newton takes them already, ``line_search="none"``), then
+    the polish; ``near``: full steps first. ``name`` names the solve in its errors."""
+    rescue = _rescue(problem, options) if hasattr(problem, "with_active_set") else None
+    return newton(
         problem.assemble,
         z0,
         norm=lambda state: state.merit,
@@ -119,15 +126,15 @@ def solve_on(problem, z0, options: NewtonOptions) -> LineBVPSolution:
         max_iter=options.max_iter,
         max_halvings=options.max_halvings,
         stagnation_window=options.stagnation_window,
-        name="solve_line_bvp",
+        name=name,
         floor=problem.merit_floor,
         atol=options.atol,
         absolute=lambda state: problem.absolute(state, options.tol),
         line_search=options.line_search != "none",
         callback=options.callback,
-        full_steps="after",
-        rescue=_rescue(problem, options),
+        rejects=(OffGrid,),
+        full_steps="first" if near else "after",
+        rescue=rescue,
         polish=POLISH,
-        polish_factor=0.1,
+        polish_factor=0.5,
     )
-    return LineBVPSolution(problem, result.x, list(result.history), result.state)

@@ -1,15 +1,17 @@
 r"""The cable terms of a line BVP: their forces and derivatives at any points of the line.
 
-A cable term (`skcable.bvp.terms.CableTerm`: `Buoyancy`, `WindDrag`, `CurrentDrag` or an
-analyst's own) sees the line's state (`skcable.bvp.terms.CableState`: the position ``r = (x,
-y)``, the unstretched arc length ``s`` from A, ``a = dr/ds`` and the tension ``T``) and returns
-the force ``f`` it puts on the line per unit unstretched length (N/m, y up) with ``∂f/∂r``,
-``∂f/∂a`` and ``∂f/∂T``. The line BVP is posed on the unstretched arc length itself, so ``f`` is
-its load per unit length as it is (the arc form of `skcable.bvp.arc` scales it by ``L0``):
-in the residual the line's load per unit unstretched length is
+A cable term (`skcable.bvp.terms.CableTerm`: `Buoyancy`, `WindDrag`, `CurrentDrag`, the
+current's drag on a line's segments or an analyst's own) sees the line's state
+(`skcable.bvp.terms.CableState`: the position ``r = (x, y[, z])``, the unstretched arc length
+``s`` from A, ``a = dr/ds`` and the tension ``T``) and returns the force ``f`` it puts on the line
+per unit unstretched length (N/m, the last coordinate up) with ``∂f/∂r``, ``∂f/∂a`` and
+``∂f/∂T``. The line BVP is posed on the unstretched arc length itself, so ``f`` is its load per
+unit length as it is (the arc form of `skcable.bvp.arc` scales it by ``L0``): in the residual
+the line's load per unit unstretched length is, ``v`` the vertical coordinate (y in the plane, z
+in space),
 
 .. math::
-    \mathbf p = (p_x, p_y) = (-f_x,\; w - f_y), \qquad
+    \mathbf p = -\mathbf f + w\,\mathbf e_v, \qquad
     \frac{\partial \mathbf p}{\partial \mathbf r} = -\frac{\partial \mathbf f}{\partial \mathbf r},\quad
     \frac{\partial \mathbf p}{\partial \mathbf a} = -\frac{\partial \mathbf f}{\partial \mathbf a},\quad
     \frac{\partial \mathbf p}{\partial T} = -\frac{\partial \mathbf f}{\partial T},
@@ -33,15 +35,15 @@ __all__ = ["TermLoad", "term_load"]
 
 @dataclass(frozen=True)
 class TermLoad:
-    """The terms' force per unit unstretched length (N/m, y up) at points of shape ``P`` and its
-    derivatives, summed over the terms (None where every term's vanishes).
+    """The terms' force per unit unstretched length (N/m, the last coordinate up) at points of
+    shape ``P`` and its derivatives, summed over the terms (None where every term's vanishes).
 
     Attributes
     ----------
-    f : ndarray (2, *P)
-    df_dr, df_da : ndarray (2, 2, *P) or None
+    f : ndarray (dim, *P)
+    df_dr, df_da : ndarray (dim, dim, *P) or None
         ``∂f_i/∂r_j`` (N/m²) and ``∂f_i/∂a_j`` (N/m).
-    df_dT : ndarray (2, *P) or None
+    df_dT : ndarray (dim, *P) or None
         ``∂f_i/∂T`` (1/m).
     """
 
@@ -69,11 +71,13 @@ def _add(total, term, name, value, shape):
     return value if total is None else total + value
 
 
-def term_load(terms, x, y, s, a, T) -> TermLoad:
-    """The terms' force and its derivatives at the state ``(x, y, s, a, T)`` (arrays of one shape
-    ``P``; ``a`` (2, *P)), summed (module docstring)."""
-    state = CableState(x, y, s, a, T)
-    vector, matrix = (2, *np.shape(x)), (2, 2, *np.shape(x))
+def term_load(terms, r, s, a, T) -> TermLoad:
+    """The terms' force and its derivatives at the state ``(r, s, a, T)`` (``r`` and ``a``: one
+    array of shape ``P`` per coordinate, 2 or 3; ``s``, ``T`` of shape ``P``), summed (module
+    docstring)."""
+    state = CableState.at(r, s, a, T)
+    dim, shape = len(r), np.shape(T)
+    vector, matrix = (dim, *shape), (dim, dim, *shape)
     f = np.zeros(vector)
     df_dr = df_da = df_dT = None
     for term in terms:

@@ -1,66 +1,35 @@
-r"""One discrete line: mesh, bases, properties at the quadrature points, residual and tangent.
+r"""One discrete line in the plane: its properties, its loads' scales and its seabed's contact rows.
 
-The arc-length form of `skcable.bvp.arc` (Goicolea 2012, eq. (3)) on the *unstretched*
-arc length ``s ∈ [0, L]`` itself: positions ``r(s) = (x, y)`` P2, tension ``T(s)``
-discontinuous P1, ``a = dr/ds``, ``n = |a|``, ``e = a/n``; the length is given (a mooring line),
-so there is no global unknown. With the weight ``w(s)`` per unstretched length (N/m, any sign: a
-buoyant segment has ``w < 0``) and the axial stiffness ``EA(s)`` per element:
+The line law of `skcable.mooring.line_bvp.discrete` (Goicolea 2012, eq. (3)) with ``dim = 2``:
+positions ``r(s) = (x, y)`` P2, y up, tension ``T(s)`` discontinuous P1 on the *unstretched*
+arc length ``s ∈ [0, L]``; the length is given (a mooring line), so there is no global unknown.
+Each segment has its weight (a number or a callable of ``s``) and a constant axial stiffness
+``EA`` (or none); the point loads ``P_k`` lie at any arc length. The contact rows
 
 .. math::
-    R_{\mathbf r} = \int_0^L T\,\mathbf e\cdot\delta\mathbf r'\,ds
-        + \int_0^L w\,\delta y\,ds - \int_0^L \mathbf f\cdot\delta\mathbf r\,ds
-        + \sum_k P_k\,\delta y(s_k)
-        - \sum_i \lambda_i (\mathbf n_i - \mu\,\mathbf t_i)\cdot\delta\mathbf r_i = 0,
-    \qquad R_T = \int_0^L \big(n - 1 - T/EA\big)\,\delta T\,ds = 0,
+    R_{\mathbf r} \mathrel{-}= \sum_i \lambda_i (\mathbf n_i - \mu\,\mathbf t_i)\cdot\delta\mathbf r_i
 
-``P_k`` the downward point loads (clump weights ``P > 0``, buoys ``P < 0``) at mesh nodes
-``s_k``, ``f(r, s, a, T)`` the force of the cable terms per unstretched length (y up:
-`skcable.mooring.line_bvp.loads`, whose derivatives enter the tangent); the contact rows (the
-``λ_i`` terms) are `skcable.mooring.line_bvp.contact`'s.
+are `skcable.mooring.line_bvp.contact`'s, with Coulomb friction fully mobilised where the line
+slides and none on the slack stretch near the anchor (Jonkman's model).
 
 Support reactions come from ``R⁰`` (the residual without contact) at the supports:
 ``H_A = -R⁰_x(A)``, ``V_A = R⁰_y(A)``, ``H_B = R⁰_x(B)``, ``V_B = R⁰_y(B)``.
-
-Every call of the assembly is in this module: `LineProblem.internal` (residual and element
-tangents), `LineProblem.load_vector` (the external loads) and the banded solves.
 """
 
 from __future__ import annotations
 
 import copy
-from dataclasses import dataclass, replace
+from dataclasses import replace
 
 import numpy as np
 
-from skcable.bvp.section import STRAINS, tension_section
 from skcable.errors import InputError
-from skcable.fe.check import sparse_of
-from skcable.mooring.line_bvp.contact import ContactRows, ContactTerms
-from skcable.mooring.line_bvp.discrete import DiscreteLine
-from skcable.mooring.line_bvp.loads import TermLoad, term_load
+from skcable.mooring.line_bvp.contact import ContactRows
+from skcable.mooring.line_bvp.discrete import DiscreteLine, LineState
+from skcable.mooring.line_bvp.loads import term_load
 from skcable.mooring.line_bvp.start import closed_form_start
 
-__all__ = ["STRAINS", "LineProblem", "LineState"]
-
-AX, AY, X, Y, T_ = range(5)  # the generalized strains of `STRAINS`: x', y', x, y, T
-EPS = float(np.finfo(float).eps)
-
-
-@dataclass
-class LineState:
-    """The residual ``F`` (contact rows in), ``R⁰`` (without), the element tangents ``Ke``, the
-    contact terms (None without contact), the merit and the iterate ``z`` itself (``F`` None:
-    rejected)."""
-
-    F: np.ndarray | None
-    R0: np.ndarray | None
-    Ke: np.ndarray | None
-    terms: ContactTerms | None
-    merit: float
-    z: np.ndarray | None = None
-
-
-REJECTED = LineState(None, None, None, None, np.inf)
+__all__ = ["LineProblem", "LineState"]
 
 
 class LineProblem(DiscreteLine):
@@ -109,7 +78,7 @@ class LineProblem(DiscreteLine):
         self.segments = segments
         self.point_loads = point_loads
         lengths = np.array([seg.length for seg in segments])
-        inner = self.discretise(lengths, point_loads, n_elements, fitted, nodes_at, STRAINS)
+        inner = self.discretise(lengths, point_loads, n_elements, fitted, nodes_at)
         self._properties()
         self.load_scale = float(
             np.sum(np.abs(self.w_q) * self.assembly.dx) + np.sum(np.abs(self.point_values))
@@ -147,7 +116,7 @@ class LineProblem(DiscreteLine):
         s = self.assembly.x
         share = s / self.L
         a = np.broadcast_to((np.array([self.span, self.dh]) / self.L)[:, None, None], (2, *s.shape))
-        return term_load(self.terms, share * self.span, share * self.dh, s, a, np.zeros_like(s)).f
+        return term_load(self.terms, (share * self.span, share * self.dh), s, a, np.zeros_like(s)).f
 
     def _properties(self):
         """Weight and compliance at the quadrature points (an element's segment by its midpoint);
@@ -189,43 +158,7 @@ class LineProblem(DiscreteLine):
             out[cols] = np.broadcast_to(seg.w(s[cols]), s[cols].shape) if callable(seg.w) else seg.w
         return out
 
-    # --- loads: the one place where external forces enter ---------------------------------
-    def distributed_load(self, g):
-        """The distributed load at the quadrature points: ``(p_x, p_y, forces)``, ``p`` (N per
-        unstretched m) in ``R ∋ ∫ p_x δx + p_y δy ds``: the dead weight ``(0, w)`` (``w``
-        downward positive) less the cable terms' force ``f`` (y up), ``forces`` their
-        `TermLoad` (None without terms), from the strains ``g`` at the quadrature points
-        (``(5, nq, ne)``: x', y', x, y, T)."""
-        if not self.terms:
-            return np.zeros_like(g[AX]), self.w_q, None
-        forces = self.term_load(g)
-        return -forces.f[0], self.w_q - forces.f[1], forces
-
-    def term_load(self, g, terms=None) -> TermLoad:
-        """The cable terms' (``terms``, default all) force and derivatives at the quadrature
-        points, from the strains ``g``; ``s`` the unstretched arc length from A."""
-        terms = self.terms if terms is None else terms
-        return term_load(terms, g[X], g[Y], self.assembly.x, g[AX : AY + 1], g[T_])
-
-    @staticmethod
-    def add_term_tangent(D, forces: TermLoad) -> None:
-        """Add the derivatives of ``p = -f`` (`distributed_load`) to the section tangent ``D``
-        (in place): rows x, y by the strains x, y (``∂f/∂r``), x', y' (``∂f/∂a``) and T."""
-        if forces.df_dr is not None:
-            D[X : Y + 1, X : Y + 1] -= forces.df_dr
-        if forces.df_da is not None:
-            D[X : Y + 1, AX : AY + 1] -= forces.df_da
-        if forces.df_dT is not None:
-            D[X : Y + 1, T_] -= forces.df_dT
-
-    def element_term_load(self, z) -> np.ndarray:
-        """``∫ -f ds`` (N) per element (2, ne), in mesh order, at the iterate ``z``: the terms'
-        share of the load ``p`` (`distributed_load`); zeros without terms."""
-        if not self.terms:
-            return np.zeros((2, self.mesh.t.shape[1]))
-        f = self.term_load(self.assembly.interpolate(z)).f
-        return -np.sum(f * self.assembly.dx, axis=1)
-
+    # --- the external loads ---------------------------------------------------------------
     def add_point_loads(self, R):
         """Add the point loads ``P_k δy(s_k)`` to the vector ``R`` (in place)."""
         np.add.at(R, self.point_rows, self.point_values)
@@ -273,43 +206,7 @@ class LineProblem(DiscreteLine):
                 self.external[N + self.contact],
             )
 
-    # --- residual and tangent -----------------------------------------------------------
-    def internal(self, z):
-        """``R⁰`` (no contact) and the element tangents, or None for a collapsed tangent."""
-        asmb = self.assembly
-        g = asmb.interpolate(z)
-        T = g[T_]
-        section = tension_section(g[AX], g[AY], T)
-        if section is None:
-            return None
-        n, ex, ey, D = section  # T e, the stretch and their tangent (skcable.bvp.section)
-        c = self.compliance_q
-        fx, fy, forces = self.distributed_load(g)
-        S = np.stack([T * ex, T * ey, fx, fy, n - 1.0 - T * c])
-        D[T_, T_] = -c
-        if forces is not None:
-            self.add_term_tangent(D, forces)
-        R = asmb.vector(S)
-        self.add_point_loads(R)
-        return R, asmb.element_matrices(D)
-
-    # --- one term alone (skcable.fe.check_tangent) ---------------------------------------------
-    def term_contribution(self, term, U, state=None):
-        """``(R, K)`` of the cable term ``term`` alone at the iterate ``U``: its residual ``-∫ f·δr``
-        over the dofs and its tangent (sparse)."""
-        asmb = self.assembly
-        g = asmb.interpolate(np.asarray(U, dtype=float))
-        forces = self.term_load(g, (term,))
-        S = np.zeros_like(g)
-        S[X : Y + 1] = -forces.f
-        D = np.zeros((5, 5, *g.shape[1:]))
-        self.add_term_tangent(D, forces)
-        return asmb.vector(S), sparse_of(asmb.matrix(asmb.element_matrices(D)), asmb.N)
-
-    def free_dofs(self):
-        """The dofs a solve moves (for `skcable.fe.check_tangent`)."""
-        return self.free
-
+    # --- for skcable.fe.check_tangent ---------------------------------------------------------
     def tangent_check_state(self):
         """The closed-form start of a solve (for `skcable.fe.check_tangent`)."""
         return closed_form_start(self)
@@ -351,46 +248,6 @@ class LineProblem(DiscreteLine):
         """Per contact node: slope, curvature, gap, multiplier λ, active flag, R⁰ rows."""
         assert self.contact_rows is not None, "a line without a seabed has no contact terms"
         return self.contact_rows.terms(z, R0)
-
-    def assemble(self, z):
-        """The state at the iterate ``z``: residual with the contact rows, its merit (the largest
-        force row over `load_scale`, stretch row over `length_scale`)."""
-        out = self.internal(z)
-        if out is None:
-            return REJECTED
-        R0, Ke = out
-        F = R0.copy()
-        terms = None
-        if self.contact_rows is not None:
-            terms = self.contact_rows.terms(z, R0)
-            self.contact_rows.rows(F, terms)
-        return LineState(F, R0, Ke, terms, self.merit(F), z)
-
-    def absolute(self, state, tol) -> float:
-        """The largest force row of ``F`` (N) where every stretch row meets ``tol`` (over
-        `length_scale`), else inf: the measure of ``atol``."""
-        if state.F is None:
-            return np.inf
-        stretch = np.abs(state.F[self._stretch_rows]) / self.length_scale
-        if not float(np.max(stretch, initial=0.0)) < tol:
-            return np.inf
-        return float(np.max(np.abs(state.F[self._force_rows]), initial=0.0))
-
-    def merit_floor(self, state) -> float:
-        """The round-off floor of the merit at ``state``: the merit of ``ε |J| |z|`` (``J`` the
-        generalized Jacobian, ``ε`` the machine epsilon), the first-order change of ``F`` when
-        every dof of the iterate ``z`` moves by its own rounding.
-
-        A taut line's force rows are differences of tensions ``T`` far above the total load
-        ``W`` (``H/W`` of 1e4 and more), and each element's direction carries the rounding of
-        its end positions over its length, ``ε L/h``: the floor is about ``ε (L/h) T/W``, above
-        the default ``rtol`` = 1e-10 once ``T/W`` passes about 1e4 on 64 elements. The merit
-        measured at the round-off floor of such lines is 0.13–0.44 of this bound.
-        """
-        if state.z is None:
-            return 0.0
-        rows = abs(self.jacobian(state)) @ np.abs(state.z) * EPS
-        return self.merit(rows)
 
     def reactions(self, R0):
         """``(H_A, V_A, H_B, V_B)`` (N) from the residual without contact at the supports."""

@@ -393,7 +393,7 @@ class LineBVPSolution(ProfileMixin):
             xd, yd, _ = self.fields()
             a = np.array([G @ xd, G @ yd])
             state = CableState(xy[:, 0], xy[:, 1], s, a, tension)
-            load = load + term_load(self.problem.terms, xy[:, 0], xy[:, 1], s, a, tension).f.T
+            load = load + term_load(self.problem.terms, (xy[:, 0], xy[:, 1]), s, a, tension).f.T
             outputs = {
                 name: np.moveaxis(v, 0, -1) if np.ndim(v) > 1 else v
                 for name, v in term_outputs(self.problem.terms, state).items()

@@ -13,21 +13,21 @@ Coulomb friction along the line. One concern per module:
   `Scene3D`;
 - `loads`: the current's drag on the segments as a cable term (`SegmentDrag`);
 - `contact`: the seabed's semismooth contact rows in 3-D;
-- `problem`: one discrete line — properties, the loads, the residual and its generalized
-  Jacobian (every call of the assembly), on the plane line's `skcable.mooring.line_bvp.discrete`
-  in three dimensions (mesh, bases, dofs, merit, banded solves, end sensitivities);
+- `problem`: one discrete line in space — its properties, the current's drag and the analyst's
+  terms bound to it, and its seabed's contact rows, on the line law of
+  `skcable.mooring.line_bvp.discrete` (the plane line's, in three dimensions);
 - `pointwise`: the fields at any arc length, through each element's own basis;
 - `start`: the closed form in the vertical plane of the ends;
-- `iterate`: one solve (damped semismooth Newton, and the plane line's full steps and polish,
-  `skcable.mooring.line_bvp.iterate`);
 - `fitting`: the touchdown and the landing from the balance of forces;
-- `driver`: the strategy `LineBVP3DSolver` — the current by steps, nested meshes, fitting, checks;
+- `driver`: the strategy `LineBVP3DSolver` — the current by steps, nested meshes, fitting,
+  checks; each solve the plane line's (`skcable.mooring.line_bvp.iterate`);
 - `check`: the equilibrium residual, by scikit-fem's own assembly;
 - `stiffness`: the 3 × 3 fairlead stiffness from the converged tangent, static or dynamic;
 - `solution`: `LineBVP3DSolution`;
 - `model`: `solve_line_bvp_3d` and `LineBVP3D`, a line model.
 
-Data flow one way: ``inputs → driver → (start, problem ⇄ contact, loads, pointwise) → iterate →
+Data flow one way: ``inputs → driver → (start, problem ⇄ contact, loads, pointwise) →
+(`skcable.mooring.line_bvp.iterate`) →
 fitting → solution → (check, stiffness)``.
 """
 

@@ -1,6 +1,7 @@
 r"""The strategy that takes a line in space from its closed-form start to the converged solution.
 
-`LineBVP3DSolver(scene).solve()` runs, each solve by `skcable.mooring.line_bvp_3d.iterate.solve_on`:
+`LineBVP3DSolver(scene).solve()` runs, each solve by `skcable.mooring.line_bvp.iterate.solve_on`
+(the plane line's: damped semismooth Newton, full steps, the polish):
 
 1. **A level** (`LineBVP3DSolver.level`): the line on the scene's mesh from the closed-form
    start (`skcable.mooring.line_bvp_3d.start`); where that fails,
@@ -26,15 +27,17 @@ counts against the scene's ``time_limit`` (`skcable._budget.Budget`): past it, a
 
 from __future__ import annotations
 
+from dataclasses import dataclass, field
+
 import numpy as np
 
 from skcable._budget import Budget
 from skcable.errors import ConvergenceError
-from skcable.fe import first_converged
+from skcable.fe import NewtonOptions, first_converged
 from skcable.mooring.bathymetry import OffGrid
+from skcable.mooring.line_bvp.iterate import solve_on
 from skcable.mooring.line_bvp.mesh import COARSE, nested_sizes
 from skcable.mooring.line_bvp_3d.fitting import landing, touchdown
-from skcable.mooring.line_bvp_3d.iterate import Solved, solve_on
 from skcable.mooring.line_bvp_3d.problem import LineProblem3D
 from skcable.mooring.line_bvp_3d.solution import LineBVP3DSolution
 from skcable.mooring.line_bvp_3d.start import closed_form_start, restart
@@ -43,6 +46,18 @@ __all__ = ["LineBVP3DSolver"]
 
 #: the smallest step of the current's continuation
 SMALLEST_STEP = 1.0 / 64.0
+#: halvings of a step at most where its trial collapses or leaves the seabed's grid
+HALVINGS = 12
+
+
+@dataclass
+class Solved:
+    """A converged solve: the problem, its iterate, the merit history and the state there."""
+
+    problem: object
+    z: np.ndarray
+    history: list = field(default_factory=list)
+    state: object = None
 
 
 class LineBVP3DSolver:
@@ -51,6 +66,9 @@ class LineBVP3DSolver:
     def __init__(self, scene):
         self.scene = scene
         self.budget = Budget(time_limit=getattr(scene, "time_limit", 60.0))
+        self.options = NewtonOptions(
+            tol=scene.rtol, max_iter=scene.max_iter, max_halvings=HALVINGS, stagnation_window=8
+        )
 
     def problem(self, n, fitted=(), drag_scale=1.0) -> LineProblem3D:
         """The discrete line on ``n`` elements, nodes at ``fitted``, the drag times ``drag_scale``."""
@@ -59,8 +77,9 @@ class LineBVP3DSolver:
     def run(self, problem, z0, near=False) -> Solved:
         """One solve, counted against the budget (the best so far remembered)."""
         self.budget.spend()
-        solved = solve_on(problem, z0, self.scene.rtol, self.scene.max_iter, near)
-        history = list(solved.history)
+        result = solve_on(problem, z0, self.options, near, name="solve_line_bvp_3d")
+        solved = Solved(problem, result.x, list(result.history), result.state)
+        history = solved.history
         self.budget.record(history[-1] if history else 0.0, solved)
         return solved
 

@@ -40,7 +40,7 @@ class _Balance:
     def __init__(self, problem, z, R0, side):
         self.problem, self.z, self.side = problem, z, side
         g = problem.assembly.interpolate(z)
-        f = problem.loads(g)[0]
+        f = -problem.distributed_load(g)[0]
         left, right = np.sort(problem.mesh.p[0, problem.mesh.t], axis=0)
         order = np.argsort(left)  # the elements along the line
         self.left, self.right = left[order], right[order]

@@ -1,67 +1,28 @@
-r"""One discrete line in space: mesh, bases, properties at the quadrature points, residual, tangent.
+r"""One discrete line in space: its properties, the current's drag, its seabed's contact rows.
 
-The 2-D line BVP's arc-length form (`skcable.mooring.line_bvp.problem`; J.M. Goicolea, "Cálculo
-de cables", UPM, 2012, eq. (3)) in three dimensions, on the unstretched arc length ``s ∈ [0, L]``:
-positions ``r(s) = (x, y, z)`` P2 (z up), tension ``T(s)`` discontinuous P1, ``a = dr/ds``,
-``n = |a|``, ``e = a/n``. With the distributed force ``f(r, a, T, s)`` per unstretched length
-(the weight ``(0, 0, −w)``, the current's drag, the analyst's cable terms: `skcable.bvp.terms`)
-and each segment's axial law ``ε(T)`` (`skcable.mooring.axial`):
-
-.. math::
-    R_{\mathbf r} = \int_0^L \big(T\,\mathbf e\cdot\delta\mathbf r' - \mathbf f\cdot\delta\mathbf r\big)\,ds
-        + \sum_k P_k\,\delta z(s_k) - \text{(contact)} = 0,
-    \qquad R_T = \int_0^L \big(n - 1 - \varepsilon(T)\big)\,\delta T\,ds = 0,
-
-``P_k`` the downward point loads at joints (clump weights ``P > 0``, buoys ``P < 0``); the
-contact rows are `skcable.mooring.line_bvp_3d.contact`'s. The generalized strains are
-``(x', y', z', x, y, z, T)``; the section law ``S = (T e, −f, n − 1 − ε)`` has the tangent
-
-.. math::
-    \frac{\partial (T\mathbf e)}{\partial \mathbf a} = \frac{T}{n}(I - \mathbf e\mathbf e^T),\quad
-    \frac{\partial (T\mathbf e)}{\partial T} = \mathbf e,\quad
-    \frac{\partial(-\mathbf f)}{\partial(\mathbf r, \mathbf a, T)}
-        = -(f_{\mathbf r}, f_{\mathbf a}, f_T),\quad
-    \frac{\partial(n - 1 - \varepsilon)}{\partial(\mathbf a, T)} = (\mathbf e^T, -\varepsilon'(T)),
-
-unsymmetric where the drag depends on the line's direction. Every call of the assembly is in
-this module.
+The line law of `skcable.mooring.line_bvp.discrete` (J.M. Goicolea, "Cálculo de cables", UPM,
+2012, eq. (3)) with ``dim = 3``: positions ``r(s) = (x, y, z)`` P2 (z up), tension ``T(s)``
+discontinuous P1 on the unstretched arc length ``s ∈ [0, L]``. The distributed force
+``f(r, a, T, s)`` per unstretched length is the current's drag (`SegmentDrag`) and the analyst's
+cable terms (`skcable.bvp.terms`), each bound to this line; each segment has its axial law
+``ε(T)`` (`skcable.mooring.axial`); the point loads ``P_k`` (downward: clump weights ``P > 0``,
+buoys ``P < 0``) lie at joints; the contact rows are
+`skcable.mooring.line_bvp_3d.contact`'s.
 """
 
 from __future__ import annotations
 
-from dataclasses import dataclass
 from functools import cached_property
 
 import numpy as np
 
 from skcable.bvp.terms import CableState
 from skcable.mooring.line_bvp.discrete import DiscreteLine
-from skcable.mooring.line_bvp_3d.contact import ContactRows3D, ContactTerms3D
+from skcable.mooring.line_bvp_3d.contact import ContactRows3D
 from skcable.mooring.line_bvp_3d.loads import SegmentDrag
 from skcable.mooring.line_bvp_3d.pointwise import LinePoints
 
-__all__ = ["STRAINS", "LineProblem3D", "LineState3D"]
-
-#: the generalized strains (field, derivative order): x', y', z', x, y, z, T
-STRAINS = (("x", 1), ("y", 1), ("z", 1), ("x", 0), ("y", 0), ("z", 0), ("T", 0))
-T_ = 6
-EPS = float(np.finfo(float).eps)
-
-
-@dataclass
-class LineState3D:
-    """The residual ``F`` (contact rows in), ``R⁰`` (without), the element tangents ``Ke``, the
-    contact terms, the merit and the iterate ``z`` (``F`` None: rejected)."""
-
-    F: np.ndarray | None
-    R0: np.ndarray | None
-    Ke: np.ndarray | None
-    terms: ContactTerms3D | None
-    merit: float
-    z: np.ndarray | None = None
-
-
-REJECTED = LineState3D(None, None, None, None, np.inf)
+__all__ = ["LineProblem3D"]
 
 
 class LineProblem3D(DiscreteLine):
@@ -89,7 +50,7 @@ class LineProblem3D(DiscreteLine):
         lengths = np.array([seg.length for seg in self.segments])
         self.point_loads = scene.point_loads
         self.fitted = tuple(float(p) for p in fitted)
-        inner = self.discretise(lengths, self.point_loads, n_elements, fitted, nodes_at, STRAINS)
+        inner = self.discretise(lengths, self.point_loads, n_elements, fitted, nodes_at)
         self._properties()
         self.terms = self._terms()
         self.load_scale = self._load_scale()
@@ -169,102 +130,6 @@ class LineProblem3D(DiscreteLine):
             self.friction,
         )
 
-    # --- the section law at the quadrature points ------------------------------------------
-    def strains(self, T, dynamic=False):
-        """``ε(T)`` and ``dε/dT`` at the quadrature points (``dynamic``: the laws' dynamic
-        compliance, for a stiffness about this state)."""
-        if self.compliance_q is not None and not dynamic:
-            return T * self.compliance_q, self.compliance_q
-        eps, k = np.zeros_like(T), np.zeros_like(T)
-        for law, cols in zip(self.laws, self.columns, strict=True):
-            if law is not None and cols.size:
-                eps[:, cols] = law.strain(T[:, cols])
-                k[:, cols] = law.dynamic_compliance(T[:, cols]) if dynamic else law.compliance(T[:, cols])
-        return eps, k
-
-    def loads(self, g):
-        """The distributed force at the quadrature points (3, nq, ne) (N per unstretched m) and
-        its derivatives ``(f_r, f_a, f_T)`` (None where they vanish), from the strains ``g``."""
-        f = np.zeros((3, *g.shape[1:]))
-        f[2] = -self.w_q
-        if not self.terms:
-            return f, None, None, None
-        state = CableState.at(g[3:6], self.assembly.x, g[0:3], g[T_])
-        df_dr, df_da, df_dT = np.zeros((3, 3, *f.shape[1:])), np.zeros((3, 3, *f.shape[1:])), None
-        for term in self.terms:
-            out = term.forces(state)
-            f = f + out.f
-            if out.df_dr is not None:
-                df_dr += out.df_dr
-            if out.df_da is not None:
-                df_da += out.df_da
-            if out.df_dT is not None:
-                df_dT = out.df_dT if df_dT is None else df_dT + out.df_dT
-        return f, df_dr, df_da, df_dT
-
-    def section(self, z, dynamic=False):
-        """``(S, D)``: the section forces (7, nq, ne) and their tangent (7, 7, nq, ne) at ``z``,
-        or None where the line folds (``|a| = 0`` somewhere)."""
-        g = self.assembly.interpolate(z)
-        a, T = g[0:3], g[T_]
-        n = np.sqrt(np.sum(a * a, axis=0))
-        if not np.all(n > 0):
-            return None
-        e = a / n
-        eps, k = self.strains(T, dynamic)
-        f, df_dr, df_da, df_dT = self.loads(g)
-        S = np.concatenate([T * e, -f, (n - 1.0 - eps)[None]])
-        D = np.zeros((7, 7, *n.shape))
-        Tn = T / n
-        D[:3, :3] = -Tn * np.einsum("i...,j...->ij...", e, e)
-        for i in range(3):
-            D[i, i] += Tn
-        D[:3, T_] = D[T_, :3] = e
-        D[T_, T_] = -k
-        if df_dr is not None:
-            D[3:6, 3:6] = -df_dr
-            D[3:6, 0:3] = -df_da
-        if df_dT is not None:
-            D[3:6, T_] = -df_dT
-        return S, D
-
-    # --- residual and tangent -----------------------------------------------------------------
-    def internal(self, z, dynamic=False):
-        """``R⁰`` (no contact) and the element tangents, or None for a folded line."""
-        out = self.section(z, dynamic)
-        if out is None:
-            return None
-        S, D = out
-        R = self.assembly.vector(S)
-        np.add.at(R, self.point_rows, self.point_values)
-        return R, self.assembly.element_matrices(D)
-
-    def assemble(self, z, dynamic=False) -> LineState3D:
-        """The state at the iterate ``z``: residual with the contact rows and its merit."""
-        out = self.internal(z, dynamic)
-        if out is None:
-            return REJECTED
-        R0, Ke = out
-        F, terms = R0.copy(), None
-        if self.contact_rows is not None:
-            terms = self.contact_rows.terms(z, R0)
-            self.contact_rows.rows(F, terms)
-        return LineState3D(F, R0, Ke, terms, self.merit(F), z)
-
-    def rounding(self, state) -> np.ndarray:
-        """``ε |J| |z|`` (per row): the residual's change when every dof of ``state`` moves by its
-        rounding, from the element matrices (no global matrix built)."""
-        Ke, extra = self.tangent(state)
-        size = np.abs(state.z)
-        rows = self.assembly.gather(np.einsum("ije,je->ie", np.abs(Ke), size[self.assembly.dofs]))
-        if extra is not None:
-            rows += abs(extra.tocsr()) @ size
-        return EPS * rows
-
-    def merit_floor(self, state) -> float:
-        """The merit of `rounding`: the round-off floor of the merit at ``state``."""
-        return 0.0 if state.z is None else self.merit(self.rounding(state))
-
     def reactions(self, R0):
         """``(S_A, S_B)``: the supports' reactions on the line at A and B (N, 3-vectors)."""
         return R0[self.end_dofs("a")], R0[self.end_dofs("b")]
@@ -294,22 +159,3 @@ class LineProblem3D(DiscreteLine):
         for term in self.terms:
             f = f + term.forces(state).f
         return f
-
-    # --- for skcable.fe.check_tangent ----------------------------------------------------------
-    def free_dofs(self):
-        return self.free
-
-    def term_contribution(self, term, z, state=None):
-        """``(R, K)`` of one cable term alone at ``z``: ``−∫ f·δr`` and its tangent."""
-        g = self.assembly.interpolate(z)
-        cable = CableState.at(g[3:6], self.assembly.x, g[0:3], g[T_])
-        out = term.bind(self).forces(cable) if term not in self.terms else term.forces(cable)
-        S = np.zeros((7, *g.shape[1:]))
-        S[3:6] = -out.f
-        D = np.zeros((7, 7, *g.shape[1:]))
-        for block, rows in ((out.df_dr, slice(3, 6)), (out.df_da, slice(0, 3))):
-            if block is not None:
-                D[3:6, rows] = -block
-        if out.df_dT is not None:
-            D[3:6, T_] = -out.df_dT
-        return self.assembly.vector(S), self.assembly.matrix(D=D)
