@@ -27,7 +27,7 @@ import numpy as np
 
 from skcable.errors import InputError
 from skcable.mooring.jacobians import of_own
-from skcable.mooring.plane_line import PlaneLine, on_seabed_tolerance
+from skcable.mooring.plane_line import PlaneLine, on_seabed_tolerance, segment_tensions
 
 __all__ = ["BVPLineView", "Resolver", "SeabedPlane", "SeabedSlope", "solve_bvp_line"]
 
@@ -89,8 +89,6 @@ class BVPLineView:
     def tensions(self):
         """One row per segment: ``segment, length, w, EA, T_lower, T_upper, T_max`` (SI); ``T_max``
         the largest tension on the segment's elements."""
-        import pandas as pd
-
         arrays = self.line.arrays
         s0, s1 = arrays.s_joint[:-1], arrays.s_joint[1:]
         inset = 1e-9 * self.length
@@ -99,17 +97,7 @@ class BVPLineView:
             float(np.max(self.T_of_s(np.linspace(a + inset, b - inset, 64))))
             for a, b in zip(s0, s1, strict=True)
         ]
-        return pd.DataFrame(
-            {
-                "segment": np.arange(arrays.n),
-                "length": arrays.L,
-                "w": arrays.w,
-                "EA": arrays.EA,
-                "T_lower": T_low,
-                "T_upper": T_up,
-                "T_max": T_max,
-            }
-        )
+        return segment_tensions(arrays, T_low, T_up, T_max)
 
     def __repr__(self):
         return f"BVPLineView({self.bvp!r})"
