@@ -96,6 +96,8 @@ class DiscreteLine:
     #: the compliance ``1/EA`` at the quadrature points (m/N, (nq, ne)) where every segment's axial
     #: law is a constant EA (0: inextensible), else None and ``laws`` per segment over ``columns``
     compliance_q: np.ndarray | None = None
+    #: each element's middle (m of arc length), in mesh order
+    middle: np.ndarray
     #: the weight per unstretched length at the quadrature points (N/m, downward; (nq, ne))
     w_q: np.ndarray
     laws: list = []
@@ -128,6 +130,15 @@ class DiscreteLine:
         self.point_rows = np.array([vertical + k for k in nearest], dtype=int)
         self.point_values = np.array([P for _, P in point_loads], dtype=float)
         return inner
+
+    def tension_points(self) -> np.ndarray:
+        """The arc lengths (m) of the tension dofs, each moved a hair (1e-9 of the way to its
+        element's middle) into its own element: where a clump at a joint makes the tension jump,
+        a closed form evaluated there gives each element's side."""
+        dofs, s_t = self.tbasis.element_dofs, self.tbasis.doflocs[0]
+        inside = np.empty_like(s_t)
+        inside[dofs] = s_t[dofs] + 1e-9 * (self.middle[None, :] - s_t[dofs])
+        return np.clip(inside, 0.0, self.L)
 
     def contact_stiffness(self, nodes) -> tuple[np.ndarray, np.ndarray]:
         """``(c_i, h_i)`` of the position nodes ``nodes``: the complementarity function's constant

@@ -40,6 +40,7 @@ from skcable.mooring.segments import Buoy, ClumpWeight, Line, Segment
 
 __all__ = [
     "closed_form_start",
+    "hanging",
     "on_dofs",
     "segmented_solution",
     "segmented_start",
@@ -73,17 +74,8 @@ def _uniform(problem):
     # an inextensible line starts inextensible: a stiff elastic start (EA = 1e6 wL) of a line
     # 1e-9 longer than its chord stretches by more than that excess, and starts H far off
     free, stiff = _free_line(span, dh, w, EA, L, c > 0), (EA if c > 0 else np.inf)
-    u_a = -free.V_A / free.H
-
-    def free_x(s):
-        return free.H * s / stiff + free.H / w * (np.arcsinh(u_a + w * s / free.H) - np.arcsinh(u_a))
-
-    def free_y(s):
-        t0, t1 = np.hypot(1.0, u_a), np.hypot(1.0, u_a + w * s / free.H)
-        return (free.H / w) * (t1 - t0) + (-free.V_A * s + 0.5 * w * s * s) / stiff
-
-    x, y = free_x(s_dof), free_y(s_dof)
-    T = np.hypot(free.H, -free.V_A + w * s_t)
+    free_x, free_y, free_T = hanging(free.H, free.V_A, w, stiff)
+    x, y, T = free_x(s_dof), free_y(s_dof), free_T(s_t)
     form = (float(free.H), w, float(free.V_A) / w, False)
     bed, heap = problem.seabed, False
     if bed is not None and w > 0 and np.any(y < bed(x)):
@@ -105,6 +97,34 @@ def _uniform(problem):
             pass
         y = np.maximum(y, bed(x))  # a curved seabed: the free line lifted onto it, if nothing better
     return x, y, T, form, heap
+
+
+def hanging(H, V_A, w, EA):
+    r"""``(x(s), y(s), T(s))``: the elastic catenary hanging from A = (0, 0) under ``w`` (N/m,
+    downward) with the horizontal force ``H`` and A's upward reaction ``V_A`` (N), stiffness
+    ``EA`` (N; inf: inextensible), as callables of the unstretched arc length ``s`` from A (H.M.
+    Irvine, "Cable Structures", MIT Press, 1981, ch. 2):
+
+    .. math::
+        x = \frac{H s}{EA} + \frac{H}{w}\Big(\operatorname{asinh}\frac{w s - V_A}{H}
+            - \operatorname{asinh}\frac{-V_A}{H}\Big),\quad
+        y = \frac{H}{w}\Big(\sqrt{1 + \big(\tfrac{w s - V_A}{H}\big)^2}
+            - \sqrt{1 + \big(\tfrac{V_A}{H}\big)^2}\Big) + \frac{w s^2/2 - V_A s}{EA},\quad
+        T = \sqrt{H^2 + (w s - V_A)^2}.
+    """
+    u_a = -V_A / H
+
+    def x(s):
+        return H * s / EA + H / w * (np.arcsinh(u_a + w * s / H) - np.arcsinh(u_a))
+
+    def y(s):
+        t0, t1 = np.hypot(1.0, u_a), np.hypot(1.0, u_a + w * s / H)
+        return (H / w) * (t1 - t0) + (-V_A * s + 0.5 * w * s * s) / EA
+
+    def T(s):
+        return np.hypot(H, -V_A + w * s)
+
+    return x, y, T
 
 
 class _Free(NamedTuple):
@@ -231,11 +251,7 @@ def on_dofs(problem, solution):
     """A closed-form ``solution`` (``x_of_s``, ``y_of_s``, ``T_of_s``) on the problem's dofs."""
     s_dof = problem.basis.doflocs[0]
     x, y = np.asarray(solution.x_of_s(s_dof), float), np.asarray(solution.y_of_s(s_dof), float)
-    # each tension dof from inside its element: a clump at a joint makes the tension jump there
-    dofs, s_t = problem.tbasis.element_dofs, problem.tbasis.doflocs[0]
-    inside = np.empty_like(s_t)
-    inside[dofs] = s_t[dofs] + 1e-9 * (problem.middle[None, :] - s_t[dofs])
-    T = np.asarray(solution.T_of_s(np.clip(inside, 0.0, problem.L)), float)
+    T = np.asarray(solution.T_of_s(problem.tension_points()), float)
     return _ends(problem, x, y, T)
 
 

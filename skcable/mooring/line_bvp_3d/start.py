@@ -33,6 +33,7 @@ from skcable.cable._catenary import catenary
 from skcable.cable._elastic import elastic_catenary as free_elastic
 from skcable.errors import ConvergenceError, InputError
 from skcable.mooring.bathymetry import Plane
+from skcable.mooring.line_bvp.start import hanging
 
 __all__ = ["closed_form_start", "frame_of", "plane_of", "restart", "uniform_line"]
 
@@ -89,19 +90,7 @@ def _in_plane(problem, r, dh, w, EA):
         stiff = np.inf
     else:
         free, stiff = free_elastic(r, dh, w, EA, length=L), EA
-    H, u_a = float(free.H), float(-free.V_A / free.H)
-
-    def x(s):
-        return H * s / stiff + H / w * (np.arcsinh(u_a + w * s / H) - np.arcsinh(u_a))
-
-    def y(s):
-        return (
-            H / w * (np.hypot(1.0, u_a + w * s / H) - np.hypot(1.0, u_a))
-            + (-free.V_A * s + 0.5 * w * s * s) / stiff
-        )
-
-    def T(s):
-        return np.hypot(H, -free.V_A + w * s)
+    x, y, T = hanging(float(free.H), float(free.V_A), w, stiff)
 
     if bed is None:
         return x, y, T
@@ -136,15 +125,6 @@ def _grounded(problem, profile, r, dh, w, EA):
         return None
 
 
-def _tension_points(problem):
-    """The arc lengths of the tension dofs, each moved a hair into its own element (a clump
-    makes the tension jump at a joint)."""
-    dofs, s_t = problem.tbasis.element_dofs, problem.tbasis.doflocs[0]
-    inside = np.empty_like(s_t)
-    inside[dofs] = s_t[dofs] + 1e-9 * (problem.middle[None, :] - s_t[dofs])
-    return np.clip(inside, 0.0, problem.L)
-
-
 def _ends(problem, X, Y, Z, T):
     for k, end in ((problem.end_a, problem.anchor), (problem.end_b, problem.fairlead)):
         X[k], Y[k], Z[k] = end
@@ -157,7 +137,7 @@ def closed_form_start(problem) -> np.ndarray:
     a = problem.anchor
     r, _, dh = plane_of(a, problem.fairlead)
     w, EA = uniform_line(problem)
-    s, s_t = problem.basis.doflocs[0], _tension_points(problem)
+    s, s_t = problem.basis.doflocs[0], problem.tension_points()
     if r == 0.0:  # a vertical line: straight, carrying the weight below each point
         z = a[2] + s * dh / problem.L
         T = np.maximum(w * s_t, 1e-6 * w * problem.L)
@@ -174,5 +154,5 @@ def restart(solution_problem, z, problem) -> np.ndarray:
     """The solution ``z`` of ``solution_problem`` interpolated onto ``problem``'s dofs (another
     mesh of the same line)."""
     state = solution_problem.state_at(z, problem.basis.doflocs[0])
-    T = solution_problem.tension_at(z, _tension_points(problem))
+    T = solution_problem.tension_at(z, problem.tension_points())
     return _ends(problem, state.x.copy(), state.y.copy(), state.z.copy(), T)
