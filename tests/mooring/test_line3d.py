@@ -481,3 +481,47 @@ def test_on_one_mesh_the_line_in_its_vertical_plane_solves_the_plane_lines_equat
     want = np.array([plane.H_A, -plane.V_A, -plane.H_B, -plane.V_B])
     got = np.array([*space.force_on_anchor[[0, 2]], *space.force_on_fairlead[[0, 2]]])
     np.testing.assert_allclose(got, want, rtol=0, atol=1e-13 * np.abs(want).max())
+
+
+@pytest.mark.parametrize("dim", [2, 3])
+def test_held_at_its_active_set_a_grounded_line_returns_to_its_solution(dim):
+    """The rescue of `skcable.mooring.line_bvp.iterate` (full steps with the contact nodes'
+    active set held, `DiscreteLine.with_active_set`) in the plane and in space: held, each
+    node's row is the one the set names; from the converged line of a grounded scene with
+    friction with every free dof moved by 1e-4 of the length
+    (the contact rows then far from converged), the steps held at the solution's own active set
+    meet the tolerance within its steps and land on the semismooth solve's dofs to 1e-9 of the
+    scale of each field."""
+    from skcable import mooring
+    from skcable.fe import NewtonOptions
+    from skcable.mooring.line_bvp.iterate import FROZEN_STEPS, frozen_steps
+
+    if dim == 2:
+        line = mooring.solve_line_bvp(800.0, 150.0, [(850.0, 1000.0, 5e8)], seabed=0.0, friction=0.3)
+    else:
+        line = solve_line_bvp_3d(
+            (0.0, 0.0, 0.0), (800.0, 0.0, 150.0), [(850.0, 1000.0, 5e8)], seabed=0.0, friction=0.3
+        )
+    problem, z = line.problem, line.dofs
+    active = problem.assemble(z).terms.active
+    held = problem.with_active_set(active)
+    # held, a node's complementarity row is c g where the set says active, λ where not
+    flipped = problem.with_active_set(~active).assemble(z)
+    rows = problem.contact_rows.nodes + (dim - 1) * problem.N
+    c = problem.contact_rows.stiffness
+    want = np.where(~active, c * flipped.terms.gap, flipped.terms.lam)
+    np.testing.assert_array_equal(flipped.F[rows], want)
+    moved = z.copy()
+    rng = np.random.default_rng(3)
+    moved[problem.free] += (
+        1e-4 * problem.L * rng.uniform(-1.0, 1.0, problem.free.size) * (problem.free < dim * problem.N)
+    )
+    assert problem.assemble(moved).merit > 1e3 * 1e-10
+    out = frozen_steps(held, moved, NewtonOptions(tol=1e-10, max_iter=FROZEN_STEPS))
+    assert out is not None
+    got, history = out[0], out[2]
+    assert len(history) - 1 <= FROZEN_STEPS
+    N = problem.N
+    positions, tensions = slice(0, dim * N), slice(dim * N, None)
+    for part in (positions, tensions):
+        np.testing.assert_allclose(got[part], z[part], rtol=0, atol=1e-9 * np.abs(z[part]).max())

@@ -44,7 +44,8 @@ line law's assembly is in this module.
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+import copy
+from dataclasses import dataclass, replace
 from typing import Any
 
 import numpy as np
@@ -148,6 +149,16 @@ class DiscreteLine:
         np.maximum.at(node_length, self.basis.element_dofs.ravel(), np.tile(element_length, 3))
         c = self.load_scale / self.L * node_length[nodes] / (self.L / element_length.size)
         return c, node_length[nodes]
+
+    def with_active_set(self, active):
+        """A copy of the problem whose contact nodes keep the active set ``active`` (bool per
+        contact node: ``c g = 0`` where True, ``λ = 0`` where False): a smooth system, whose
+        Newton converges quadratically where the semismooth one cycles between two active sets
+        at a node that is on the seabed with no push (``λ = g = 0``)."""
+        assert self.contact_rows is not None, "a line without a seabed has no active set"
+        other = copy.copy(self)
+        other.contact_rows = replace(self.contact_rows, frozen=np.array(active, dtype=bool))
+        return other
 
     def merit(self, F) -> float:
         """The largest free row of ``F``: force rows over `load_scale` (N), stretch rows over

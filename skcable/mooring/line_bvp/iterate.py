@@ -11,7 +11,7 @@ touchdown: ``near``) full steps come first, the damped ones where they fail. A t
 seabed's grid (`skcable.mooring.bathymetry.OffGrid`) is a step too long. Past ``tol``, full
 Newton steps go on while the merit still halves (``polish``, `POLISH` at most):
 quadratic convergence takes the solution to its round-off floor for one or two more
-assemblies. Where the damped Newton stops (no descent, stagnation) with a plane line on the
+assemblies. Where the damped Newton stops (no descent, stagnation) with the line on the
 seabed, `frozen_steps` goes on from where it stopped with the active set held (the
 ``rescue``): a node on the seabed with no push (``λ = g = 0``, a touchdown at a node) makes the
 semismooth Newton cycle between two active sets (the max-norm merit refuses both steps), and one
@@ -113,10 +113,9 @@ def solve_on(
     problem, z0, options: NewtonOptions, near: bool = False, name: str = "solve_line_bvp"
 ) -> NewtonResult:
     """The line of ``problem`` from the iterate ``z0`` (module docstring): damped Newton, else its
-    rescue (`frozen_steps`, a plane line on the seabed), else full steps (the damped one's error
+    rescue (`frozen_steps`, a line on the seabed), else full steps (the damped one's error
     raised when all fail; none where the Newton takes them already, ``line_search="none"``), then
     the polish; ``near``: full steps first. ``name`` names the solve in its errors."""
-    rescue = _rescue(problem, options) if hasattr(problem, "with_active_set") else None
     return newton(
         problem.assemble,
         z0,
@@ -134,7 +133,7 @@ def solve_on(
         callback=options.callback,
         rejects=(OffGrid,),
         full_steps="first" if near else "after",
-        rescue=rescue,
+        rescue=_rescue(problem, options),
         polish=POLISH,
         polish_factor=0.5,
     )

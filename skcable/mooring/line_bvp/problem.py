@@ -229,16 +229,6 @@ class LineProblem(DiscreteLine):
         other.contact_rows = replace(self.contact_rows, switch=switch)
         return other
 
-    def with_active_set(self, active):
-        """A copy of the problem whose contact nodes keep the active set ``active`` (bool per
-        contact node: ``c g = 0`` where True, ``λ = 0`` where False): a smooth system, whose
-        Newton converges quadratically where the semismooth one cycles between two active sets
-        at a node that is on the seabed with no push (``λ = g = 0``)."""
-        assert self.contact_rows is not None, "a line without a seabed has no active set"
-        other = copy.copy(self)
-        other.contact_rows = replace(self.contact_rows, frozen=np.array(active, dtype=bool))
-        return other
-
     def gaps(self, z):
         """Height of every contact node above the seabed (m)."""
         i = self.contact

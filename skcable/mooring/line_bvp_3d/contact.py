@@ -85,7 +85,9 @@ def sliding_direction(chord, normal):
 class ContactRows3D:
     """The contact rows of the position nodes ``nodes`` (x at ``nodes``, y at ``N + nodes``, z at
     ``2N + nodes``), their neighbours along the line ``prev``, ``next`` (position dofs in the x
-    field), the seabed, ``c_i`` (N/m) per node and the friction coefficient μ."""
+    field), the seabed, ``c_i`` (N/m) per node and the friction coefficient μ; ``frozen``: the
+    active set held fixed (`skcable.mooring.line_bvp.iterate.frozen_steps`), each node's row
+    ``c g = 0`` where True and ``λ = 0`` where False, whatever ``λ`` and ``g`` are."""
 
     nodes: np.ndarray
     prev: np.ndarray
@@ -94,6 +96,7 @@ class ContactRows3D:
     seabed: Bathymetry
     stiffness: np.ndarray
     mu: float
+    frozen: np.ndarray | None = None
 
     def terms(self, z, R0) -> ContactTerms3D:
         """Per contact node: gradient, Hessian, gap, multiplier, active flag, ``R⁰``, chord."""
@@ -105,7 +108,7 @@ class ContactRows3D:
         R = np.array([R0[i], R0[N + i], R0[2 * N + i]])
         nu = 1.0 + grad[0] * grad[0] + grad[1] * grad[1]
         lam = (R[2] - grad[0] * R[0] - grad[1] * R[1]) / nu
-        active = lam > self.stiffness * gap
+        active = lam > self.stiffness * gap if self.frozen is None else self.frozen
         chord = np.array([z[k * N + self.next] - z[k * N + self.prev] for k in range(3)])
         return ContactTerms3D(grad, hess, gap, lam, active, R, chord)
 
