@@ -53,6 +53,7 @@ from skfem import Basis, ElementLineP1DG, ElementLineP2, MeshLine
 
 from skcable.bvp.elements import end_dofs
 from skcable.bvp.section import strains_of, tension_section
+from skcable.errors import InputError
 from skcable.fe.assembly import Assembly
 from skcable.mooring.line_bvp.loads import TermLoad, term_load
 from skcable.mooring.line_bvp.mesh import joints_of, line_nodes
@@ -80,11 +81,25 @@ class LineState:
 REJECTED = LineState(None, None, None, None, np.inf)
 
 
+def _weights(w, s) -> np.ndarray:
+    """A segment's weight per unstretched length ``w`` (N/m: a number, or a callable of the arc
+    length) at the arc lengths ``s``; a callable's values checked (shape, finite)."""
+    if not callable(w):
+        return np.full(np.shape(s), w, dtype=float)
+    values = np.asarray(w(s), dtype=float)
+    try:
+        values = np.broadcast_to(values, np.shape(s))
+    except ValueError as exc:
+        raise InputError("w", f"the callable returned shape {values.shape}") from exc
+    if not np.all(np.isfinite(values)):
+        raise InputError("w", "the callable returned non-finite values")
+    return values
+
+
 class DiscreteLine:
-    """Mesh, bases, dofs, the line law, merit, banded solves and end sensitivities of a line in
-    ``dim`` dimensions (module docstring); a subclass sets the properties at the quadrature
-    points (``w_q``, ``compliance_q`` or ``laws`` and ``columns``), ``terms``, ``load_scale``,
-    ``length_scale`` and ``contact_rows`` (None without a seabed)."""
+    """Mesh, bases, dofs, properties, the line law, merit, banded solves and end sensitivities of
+    a line in ``dim`` dimensions (module docstring); a subclass sets ``segments``, ``terms``,
+    ``load_scale``, ``length_scale`` and ``contact_rows`` (None without a seabed)."""
 
     #: 2 (the plane) or 3 (space)
     dim = 2
@@ -97,10 +112,8 @@ class DiscreteLine:
     #: the compliance ``1/EA`` at the quadrature points (m/N, (nq, ne)) where every segment's axial
     #: law is a constant EA (0: inextensible), else None and ``laws`` per segment over ``columns``
     compliance_q: np.ndarray | None = None
-    #: each element's middle (m of arc length), in mesh order
-    middle: np.ndarray
-    #: the weight per unstretched length at the quadrature points (N/m, downward; (nq, ne))
-    w_q: np.ndarray
+    #: the segments, from the anchor (each with ``length``, ``w`` and ``law``)
+    segments: list
     laws: list = []
     columns: list = []
 
@@ -131,6 +144,38 @@ class DiscreteLine:
         self.point_rows = np.array([vertical + k for k in nearest], dtype=int)
         self.point_values = np.array([P for _, P in point_loads], dtype=float)
         return inner
+
+    def properties(self) -> None:
+        """Per element its segment (by its midpoint: `middle`, `owner`, and each segment's
+        elements `columns`); the weight per unstretched length at the quadrature points `w_q`
+        (N/m: each segment's number, or its callable of ``s`` checked); the axial laws `laws`
+        (one compliance array `compliance_q` where every law is a constant EA); the line's weight
+        `weight` and each element's `element_weight` (N, mesh order)."""
+        s_q, dx = self.assembly.x, self.assembly.dx
+        self.middle = self.mesh.p[0, self.mesh.t].mean(axis=0)
+        self.owner = np.clip(np.searchsorted(self.joints, self.middle) - 1, 0, len(self.segments) - 1)
+        self.columns = [np.flatnonzero(self.owner == k) for k in range(len(self.segments))]
+        self.w_q = np.empty_like(s_q)
+        for seg, cols in zip(self.segments, self.columns, strict=True):
+            self.w_q[:, cols] = _weights(seg.w, s_q[:, cols])
+        self.laws = [seg.law for seg in self.segments]
+        self.compliance_q = None
+        if all(law is None or law.kind == "constant" for law in self.laws):
+            c = np.array([0.0 if law is None else 1.0 / law.EA for law in self.laws])
+            self.compliance_q = np.broadcast_to(c[self.owner], dx.shape).copy()
+        self.element_weight = np.sum(self.w_q * dx, axis=0)
+        self.weight = float(np.sum(self.w_q * dx))
+
+    def weight_at(self, s) -> np.ndarray:
+        """The weight per unstretched length (N/m, downward) at arc lengths ``s`` (m): its
+        segment's (the upper one at a joint but the last), or the callable of s."""
+        s = np.atleast_1d(np.asarray(s, dtype=float))
+        owner = np.clip(np.searchsorted(self.joints, s, side="right") - 1, 0, len(self.segments) - 1)
+        out = np.empty_like(s)
+        for k, seg in enumerate(self.segments):
+            cols = owner == k
+            out[cols] = _weights(seg.w, s[cols])
+        return out
 
     def tension_points(self) -> np.ndarray:
         """The arc lengths (m) of the tension dofs, each moved a hair (1e-9 of the way to its

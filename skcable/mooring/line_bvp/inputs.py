@@ -20,6 +20,7 @@ from skcable._checks import nonnegative, positive, real, require, scalar, whole
 from skcable.bvp.terms import CableTerm
 from skcable.errors import InputError
 from skcable.fe import NewtonOptions
+from skcable.mooring.axial import ConstantEA
 from skcable.mooring.line_bvp.contact import Seabed, seabed_of
 
 __all__ = [
@@ -67,6 +68,11 @@ class BVPSegment:
             EA = _one("EA", positive("EA", self.EA))
             require("EA", EA < np.inf, "must be finite (None for an inextensible segment)", EA)
             object.__setattr__(self, "EA", EA)
+
+    @property
+    def law(self) -> ConstantEA | None:
+        """The axial law (`skcable.mooring.axial.ConstantEA`; None: inextensible)."""
+        return None if self.EA is None else ConstantEA(self.EA)
 
 
 def _one(name: str, value, alternative: str = ""):

@@ -79,7 +79,10 @@ class LineProblem(DiscreteLine):
         self.point_loads = point_loads
         lengths = np.array([seg.length for seg in segments])
         inner = self.discretise(lengths, point_loads, n_elements, fitted, nodes_at)
-        self._properties()
+        self.properties()
+        assert self.compliance_q is not None, "a plane line's segments have constant EA"
+        #: ∫ ds / EA over the line (m/N)
+        self.compliance = float(np.sum(self.compliance_q * self.assembly.dx))
         self.load_scale = float(
             np.sum(np.abs(self.w_q) * self.assembly.dx) + np.sum(np.abs(self.point_values))
         )
@@ -117,46 +120,6 @@ class LineProblem(DiscreteLine):
         share = s / self.L
         a = np.broadcast_to((np.array([self.span, self.dh]) / self.L)[:, None, None], (2, *s.shape))
         return term_load(self.terms, (share * self.span, share * self.dh), s, a, np.zeros_like(s)).f
-
-    def _properties(self):
-        """Weight and compliance at the quadrature points (an element's segment by its midpoint);
-        the line's weight, each element's and its integrated compliance."""
-        s_q = self.assembly.x
-        middle = self.mesh.p[0, self.mesh.t].mean(axis=0)
-        owner = np.clip(np.searchsorted(self.joints, middle) - 1, 0, len(self.segments) - 1)
-        self.w_q = np.empty_like(s_q)
-        self.compliance_q = np.empty_like(s_q)
-        for k, seg in enumerate(self.segments):
-            cols = owner == k
-            if callable(seg.w):
-                values = np.asarray(seg.w(s_q[:, cols]), dtype=float)
-                try:
-                    values = np.broadcast_to(values, s_q[:, cols].shape)
-                except ValueError as exc:
-                    raise InputError("w", f"the callable returned shape {values.shape}") from exc
-                if not np.all(np.isfinite(values)):
-                    raise InputError("w", "the callable returned non-finite values")
-                self.w_q[:, cols] = values
-            else:
-                self.w_q[:, cols] = seg.w
-            self.compliance_q[:, cols] = 0.0 if seg.EA is None else 1.0 / seg.EA
-        self.middle = middle
-        self.weight = float(np.sum(self.w_q * self.assembly.dx))
-        #: weight of each element (N), in mesh order
-        self.element_weight = np.sum(self.w_q * self.assembly.dx, axis=0)
-        #: ∫ ds / EA over the line (m/N)
-        self.compliance = float(np.sum(self.compliance_q * self.assembly.dx))
-
-    def weight_at(self, s):
-        """The weight per unstretched length (N/m, downward) at arc lengths ``s`` (m): its
-        segment's (the upper one at a joint but the last), or the callable of s."""
-        s = np.atleast_1d(np.asarray(s, dtype=float))
-        owner = np.clip(np.searchsorted(self.joints, s, side="right") - 1, 0, len(self.segments) - 1)
-        out = np.empty_like(s)
-        for k, seg in enumerate(self.segments):
-            cols = owner == k
-            out[cols] = np.broadcast_to(seg.w(s[cols]), s[cols].shape) if callable(seg.w) else seg.w
-        return out
 
     # --- the external loads ---------------------------------------------------------------
     def add_point_loads(self, R):

@@ -51,29 +51,13 @@ class LineProblem3D(DiscreteLine):
         self.point_loads = scene.point_loads
         self.fitted = tuple(float(p) for p in fitted)
         inner = self.discretise(lengths, self.point_loads, n_elements, fitted, nodes_at)
-        self._properties()
+        self.properties()
         self.terms = self._terms()
         self.load_scale = self._load_scale()
         self.length_scale = self.L
         self.contact_rows = self._contact_rows(inner) if self.seabed is not None else None
 
     # --- properties, terms, scales -------------------------------------------------------------
-    def _properties(self):
-        """Per element its segment (by its midpoint); weight and axial law at the quadrature
-        points (one compliance array where every law is a constant EA)."""
-        middle = self.mesh.p[0, self.mesh.t].mean(axis=0)
-        self.middle = middle
-        self.owner = np.clip(np.searchsorted(self.joints, middle) - 1, 0, len(self.segments) - 1)
-        w = np.array([seg.w for seg in self.segments])
-        self.w_q = np.broadcast_to(w[self.owner], self.assembly.dx.shape).copy()
-        self.laws = [seg.law for seg in self.segments]
-        self.columns = [np.flatnonzero(self.owner == k) for k in range(len(self.segments))]
-        self.compliance_q = None
-        if all(law is None or law.kind == "constant" for law in self.laws):
-            c = np.array([0.0 if law is None else 1.0 / law.EA for law in self.laws])
-            self.compliance_q = np.broadcast_to(c[self.owner], self.assembly.dx.shape).copy()
-        self.weight = float(np.sum(self.w_q * self.assembly.dx))
-
     def _terms(self):
         """The cable terms: the current's drag on the segments that have it, the analyst's."""
         sc, terms = self.scene, []
@@ -105,11 +89,6 @@ class LineProblem3D(DiscreteLine):
         a = np.array(np.broadcast_to((chord / self.L)[:, None, None], r.shape))
         state = CableState.at(r, self.assembly.x, a, np.full(share.shape, float(tension)))
         return sum((term.forces(state).f for term in self.terms), np.zeros_like(r))
-
-    def weight_at(self, s) -> np.ndarray:
-        """The weight per unstretched length (N/m, downward) at arc lengths ``s`` (m)."""
-        k = np.clip(np.searchsorted(self.joints, s, side="right") - 1, 0, len(self.segments) - 1)
-        return np.array([seg.w for seg in self.segments])[k]
 
     def _contact_rows(self, inner) -> ContactRows3D:
         """The contact rows of the inner position nodes, each with its neighbours along the line
