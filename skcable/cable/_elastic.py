@@ -275,34 +275,9 @@ _INF = math.inf
 
 @_plausible.answer(check_catenary)
 def elastic_catenary(span, dh, w, EA, *, length):
-    """Elastic (Irvine) catenary from A = (0, 0) to B = (span, dh).
-
-    Parameters
-    ----------
-    span, dh : float or array_like
-        Horizontal distance A→B (> 0) and height of B above A (m).
-    w : float or array_like
-        Weight per unit *unstretched* length (N/m), > 0.
-    EA : float or array_like
-        Axial stiffness (N), > 0.
-    length : float or array_like
-        Unstretched length (m), > 0; it may be shorter than the chord (the
-        cable then stretches to reach B).
-
-    Returns
-    -------
-    ElasticCatenary
-        ``H, V_A, V_B, T_A, T_B, length`` (unstretched), ``stretched_length``,
-        ``sag``, the lowest point ``x_low, y_low``, the vertex ``x_vertex,
-        y_vertex``, ``y(x), T(x), slope(x), residual()``, ``stiffness()``.
-
-    Raises
-    ------
-    InputError
-        A non-physical argument, named.
-    ConvergenceError
-        Newton stalled; the error carries the residual history.
-    """
+    """Elastic (Irvine) catenary from A = (0, 0) to B = (span, dh), free of any seabed: the
+    `ElasticCatenary` of `skcable.cable.elastic_catenary` without ``seabed`` (its parameters,
+    returns and errors)."""
     span = positive("span", span)
     dh = real("dh", dh)
     w = positive("w", w)

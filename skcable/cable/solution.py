@@ -27,6 +27,7 @@ from skcable._checks import whole
 from skcable._show import Shown, counted, quantity
 from skcable._xp import PicklesBackend, namespace
 from skcable.cable._special import largest_abs
+from skcable.cable.arc_samples import arc_samples
 from skcable.errors import ConvergenceError, InputError
 from skcable.results import ProfileMixin
 
@@ -178,12 +179,7 @@ class CableSolution(PicklesBackend, Shown):
         x = np.linspace(0.0, float(self.span), whole("n", n, 2))
         slope = np.asarray(self.slope(x), dtype=float)
         weight = np.broadcast_to(self.weight_per_length(x, slope), x.shape)
-        return {
-            "xy": np.column_stack([x, self.y(x)]),
-            "tension": np.asarray(self.T(x), dtype=float),
-            "angle": np.arctan(slope),
-            "load": np.column_stack([np.zeros_like(x), -weight]),
-        }
+        return arc_samples(x, self.y(x), self.T(x), np.arctan(slope), weight)
 
     def weight_per_length(self, x, slope):  # pragma: no cover - abstract
         """Downward distributed load per unit unstretched cable length (N/m) at ``x``."""
@@ -255,12 +251,12 @@ def _shown(solution) -> tuple[str, ...]:
     return tuple(name for name in _SHOWN if name in own or hasattr(cls, name))
 
 
-def checked(solution: CableSolution, history=()) -> CableSolution:
-    """Return ``solution`` if its residual is below `ACCEPT`, else raise."""
+def checked(solution, history=(), accept: float = ACCEPT):
+    """Return ``solution`` if its residual is below ``accept`` (`ACCEPT`), else raise."""
     residual = solution.residual()
-    if not residual <= ACCEPT:
+    if not residual <= accept:
         raise ConvergenceError(
-            f"{type(solution).__name__}: residual {residual:.3e} above {ACCEPT:.0e} after the solver stopped",
+            f"{type(solution).__name__}: residual {residual:.3e} above {accept:.0e} after the solver stopped",
             history,
         )
     return solution

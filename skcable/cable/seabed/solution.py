@@ -1,20 +1,6 @@
-r"""`SeabedCatenary`: the solution of one line on a flat seabed, in every regime.
-
-A line from the anchor A = (0, 0) to the fairlead B = (span, dh) over a flat seabed at
-height ``seabed <= 0`` is, per element of the input, in one of three regimes (chosen by
-`skcable.cable.seabed.solve`):
-
-- **free**: it hangs clear of the seabed, an elastic catenary (H.M. Irvine, "Cable
-  Structures", MIT Press, 1981);
-- **grounded**: it rests on the seabed from the anchor (or from a first touchdown, the
-  anchor above the seabed) and rises tangentially to B, with Coulomb friction on the
-  grounded part (J.M. Jonkman, "Dynamics modeling and loads analysis of an offshore
-  floating wind turbine", NREL, 2007; `skcable.cable.closure`);
-- **heap**: longer than its L-shape, its slack lies in a heap, ``H = 0``
-  (`skcable.cable.seabed.heap`).
-
-This module maps the solution along the line (arc length and abscissa), checks it
-(residuals) and gives its fairlead stiffness, the inverse of the closure's Jacobian
+"""`SeabedCatenary`: the solution of one line on a flat seabed in each of its regimes (free,
+grounded, heap: `skcable.cable.seabed`), mapped along the line (arc length and abscissa),
+checked (residuals), and its fairlead stiffness, the inverse of the closure's Jacobian
 (implicit function theorem).
 """
 
@@ -29,8 +15,10 @@ from skcable._checks import real, require, whole
 from skcable._xp import namespace
 from skcable.cable._elastic import ElasticCatenary, elastic_stiffness, inverse_2x2
 from skcable.cable._roots import find_root
+from skcable.cable.arc_samples import arc_samples
 from skcable.cable.closure import grounded, grounded_closure, positions, stretched_length, tensioned
 from skcable.cable.seabed import heap as heap_state
+from skcable.cable.seabed.heap import as_float as _out
 from skcable.cable.solution import CableSolution
 from skcable.errors import InputError
 
@@ -379,11 +367,7 @@ class SeabedCatenary(CableSolution):
             yield (T - xp.hypot(H, V)) / xp.maximum(T, self.H)
 
     def _taut_stiffness(self):
-        """Fairlead stiffness ``∂(H, V_B)/∂(span, dh)`` with A fixed, shape ``(*shape, 2, 2)``.
-
-        Rows ``(H, V_B)``, columns ``(span, dh)``: the inverse of the Jacobian of the
-        closure equations in ``(H, V_B)``, grounded or free, friction included.
-        """
+        """`stiffness` where the line is taut."""
         touches = (self.length_on_seabed > 0) | (self._V1 > 0)
         free = elastic_stiffness(self._hanging)
         depth = -self._y_t
@@ -395,41 +379,30 @@ class SeabedCatenary(CableSolution):
 
     # -- the heap state (H = 0): vertical parts at A and B, slack spread on the seabed ----
     def T_of_s(self, s):
-        """Tension (N) at unstretched arc length ``s`` from A, in [0, length].
-
-        In a heap state each vertical part carries the weight below it down to the
-        seabed (`skcable.cable.seabed.heap.heap_T_of_s`); the slack carries none."""
+        """Tension (N) at unstretched arc length ``s`` from A, in [0, length] (in a heap state
+        `skcable.cable.seabed.heap.heap_T_of_s`)."""
         s = self._arc("s", s)
         heap = partial(heap_state.heap_T_of_s, s, self.length_to_seabed, self.length_on_seabed, self.w)
         return self._pick(heap, partial(self._taut_T_of_s, s))
 
     def x_of_s(self, s):
-        """Abscissa of the material point ``s`` (unstretched arc length from A).
-
-        In a heap state the vertical parts lie at ``x = 0`` and ``x = span``; the
-        shape of the slack on the seabed is not determined by statics (it carries no
-        tension): it is drawn spread evenly from ``x_landing = 0`` to
-        ``x_touchdown = span``, ``x`` linear in ``s``."""
+        """Abscissa of the material point ``s`` (unstretched arc length from A; in a heap state
+        `skcable.cable.seabed.heap.heap_x_of_s`)."""
         s = self._arc("s", s)
         heap = partial(heap_state.heap_x_of_s, s, self.length_to_seabed, self.length_on_seabed, self.span)
         return self._pick(heap, partial(self._taut_x_of_s, s))
 
     def y_of_s(self, s):
-        """Height above A of the material point ``s`` (the seabed's height on it).
-
-        In a heap state the vertical parts hang under their own weight
-        (`skcable.cable.seabed.heap.heap_y_of_s`)."""
+        """Height above A of the material point ``s`` (the seabed's height on it; in a heap
+        state `skcable.cable.seabed.heap.heap_y_of_s`)."""
         s = self._arc("s", s)
         parts = (self.length_to_seabed, self.length_on_seabed, self.w, self.EA, self._y_t)
         heap = partial(heap_state.heap_y_of_s, s, *parts)
         return self._pick(heap, partial(self._taut_y_of_s, s))
 
     def s_of_x(self, x):
-        """Material point at abscissa ``x`` in [0, span].
-
-        In a heap state ``x = 0`` is A, ``x = span`` is B (the vertical parts
-        project to the ends) and the points between map to the slack spread evenly
-        on the seabed (see `x_of_s`)."""
+        """Material point at abscissa ``x`` in [0, span] (in a heap state
+        `skcable.cable.seabed.heap.heap_s_of_x`)."""
         x = real("x", x)
         require("x", (x >= 0) & (x <= self.span), "must lie in [0, span]", x)
         heap = partial(
@@ -438,10 +411,8 @@ class SeabedCatenary(CableSolution):
         return self._pick(heap, partial(self._taut_s_of_x, x))
 
     def slope(self, x):
-        """dy/dx at ``x`` (0 on the seabed).
-
-        In a heap state the line is vertical at ``x = span`` (and at ``x = 0`` with
-        the anchor above the seabed): no finite slope there, `InputError` (``x``)."""
+        """dy/dx at ``x`` (0 on the seabed; in a heap state `skcable.cable.seabed.heap.heap_slope`,
+        which refuses the vertical parts)."""
         x = real("x", x)
         require("x", (x >= 0) & (x <= self.span), "must lie in [0, span]", x)
         heap = partial(heap_state.heap_slope, x, self.span, self.heap, self._V1)
@@ -461,13 +432,7 @@ class SeabedCatenary(CableSolution):
         angle[-1] = 0.5 * np.pi
         if self._V1 > 0:
             angle[0] = -0.5 * np.pi
-        weight = np.full_like(x, float(self.w))
-        return {
-            "xy": np.column_stack([x, self.y(x)]),
-            "tension": np.asarray(self.T(x), dtype=float),
-            "angle": angle,
-            "load": np.column_stack([np.zeros_like(x), -weight]),
-        }
+        return arc_samples(x, self.y(x), self.T(x), angle, float(self.w))
 
     def _heap_residuals(self):
         """Residuals of a heap state (`skcable.cable.seabed.heap.heap_residuals`)."""
@@ -492,12 +457,9 @@ class SeabedCatenary(CableSolution):
         """Fairlead stiffness ``∂(H, V_B)/∂(span, dh)`` with A fixed, shape ``(*shape, 2, 2)``.
 
         Rows ``(H, V_B)``, columns ``(span, dh)``: the inverse of the Jacobian of the
-        closure equations in ``(H, V_B)``, grounded or free, friction included.
-
-        In a heap state (``H = 0``) ``V_B = w l_B`` with ``dh - seabed = l_B + w l_B^2/(2EA)``,
-        so ``∂V_B/∂dh = w/(1 + w l_B/EA)`` and the other three entries are 0. This is
-        the heap side's stiffness, one-sided at the boundary: the line becomes taut
-        again (``H > 0``) only when the span exceeds the slack's length on the seabed.
+        closure equations in ``(H, V_B)``, grounded or free, friction included. In a heap state
+        `skcable.cable.seabed.heap.heap_stiffness`, one-sided at the boundary: the line
+        becomes taut again (``H > 0``) only when the span exceeds the slack's length on the seabed.
         """
         if not self._any_heap:
             return self._taut_stiffness()
@@ -531,8 +493,3 @@ def _heap_where(heap, value, taut):
     if np.ndim(heap) == 0:
         return value if heap else taut
     return np.where(heap, value, taut)
-
-
-def _out(value):
-    """A 0-d result as a Python float (scalar in, scalar out)."""
-    return float(value) if np.ndim(value) == 0 else value
