@@ -12,20 +12,11 @@ In series with the elastic stiffness :math:`k_E = EA/S`:
 :math:`1/k = 1/k_G + 1/k_E` (Goicolea (2012), footnote 5).
 
 `fairlead_stiffness` gives the full 2×2 matrix :math:`\partial(H, V_B)/\partial(\mathrm{span}, dh)`
-with A fixed and the (unstretched) length constant. For the catenary, from
-:math:`S^2 = dh^2 + Q^2`, :math:`Q = 2a\sinh z`, :math:`V_B = (wS + w\,dh\coth z)/2`
-and :math:`\sinh m = dh/Q`:
-
-.. math::
-    K = \begin{pmatrix} k_G & k_G \sinh m/\cosh z \\
-        k_G \sinh m/\cosh z & \tfrac{w}{2}\coth z + k_G \sinh^2 m \, z/(\sinh z\cosh z)
-        \end{pmatrix};
-
-for the parabola the same steps on its length :math:`S(a, \mathrm{span}, dh)`;
-for the elastic catenary (H.M. Irvine, "Cable Structures", MIT Press, 1981)
-and the line on the seabed (J.M. Jonkman, "Dynamics modeling and loads
-analysis of an offshore floating wind turbine", NREL, 2007) the inverse of
-the Jacobian of the closure equations (implicit function theorem).
+with A fixed and the (unstretched) length constant, each solution's ``stiffness()``: in closed
+form for the catenary (`Catenary.stiffness`) and the parabola; for the elastic catenary (H.M.
+Irvine, "Cable Structures", MIT Press, 1981) and the line on the seabed (J.M. Jonkman,
+"Dynamics modeling and loads analysis of an offshore floating wind turbine", NREL, 2007) the
+inverse of the Jacobian of the closure equations (implicit function theorem).
 """
 
 from __future__ import annotations

@@ -1,12 +1,5 @@
-r"""A line on a sloped seabed ``y = x tan α`` through the anchor, in closed form.
-
-The grounded part lies straight along the slope from A, its tension growing towards the
-fairlead by :math:`dT/ds = w(\sin\alpha + \mu\cos\alpha)`; the suspended part leaves the
-seabed tangentially and hangs as an elastic catenary to B (H.M. Irvine, "Cable
-Structures", MIT Press, 1981; J.M. Jonkman, "Dynamics modeling and loads analysis of an
-offshore floating wind turbine", NREL, 2007, on a slope, as MoorPy's
-``catenary(..., alpha=...)``). See `sloped_seabed_catenary` for the closure.
-"""
+"""A line on a sloped seabed ``y = x tan α`` through the anchor, in closed form
+(`sloped_seabed_catenary`, which states the closure and its sources)."""
 
 from __future__ import annotations
 
