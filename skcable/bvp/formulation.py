@@ -2,9 +2,11 @@
 
 from __future__ import annotations
 
+from functools import partial
+
 import numpy as np
 
-from skcable._checks import exactly_one, nonnegative, positive, real, require, scalar, whole
+from skcable._checks import exactly_one, nonnegative, positive, positive_scalar, real, require, scalar, whole
 from skcable.bvp.arc import ArcProblem, ArcSolution, arc_guess
 from skcable.bvp.graph import BVPSolution, GraphProblem, initial_guess
 from skcable.cable.solution import ACCEPT
@@ -188,7 +190,7 @@ def solve_bvp(
     value = real(name, value) if name == "low" else positive(name, value)
     if name == "low":
         require("low", value < min(0.0, dh), "must lie below both supports, low < min(0, dh)", value)
-    rtol = float(positive("rtol", scalar("rtol", rtol)))
+    rtol = float(positive_scalar("rtol", rtol))
     max_iter = whole("max_iter", max_iter, 1)
     whole("n_elements", n_elements, 1)
     settings = dict(atol=float(nonnegative("atol", scalar("atol", atol))), callback=_callback(callback))
@@ -218,7 +220,7 @@ def _solve_graph(problem: GraphProblem, rtol: float, max_iter: int, settings: di
     """The graph form's Newton run from `initial_guess` and its checked solution."""
     dofs, H0 = initial_guess(problem)
     run = (rtol, max_iter, settings, lambda state: state.descent, "solve_bvp")
-    return _solved(problem, dofs, H0, *run, lambda *solved: BVPSolution(*solved, resolve))
+    return _solved(problem, dofs, H0, *run, partial(BVPSolution, resolver=resolve))
 
 
 def _solved(problem, start, unknown, rtol, max_iter, settings, merit, name, solution):

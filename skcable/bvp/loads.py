@@ -21,15 +21,10 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from skcable._checks import positive, scalar
+from skcable._checks import positive_scalar, scalar
 from skcable.errors import InputError
 
 __all__ = ["DeckLoad", "DistributedLoad", "PointLoad", "SelfWeight", "unstretched_measure"]
-
-
-def _positive_scalar(name, value) -> float:
-    """One finite number > 0 (a load intensity is one number, not an array)."""
-    return positive(name, scalar(name, value))
 
 
 def unstretched_measure(slope, H, EA):
@@ -49,7 +44,7 @@ class SelfWeight:
     w: float
 
     def __post_init__(self):
-        object.__setattr__(self, "w", _positive_scalar("w", self.w))
+        object.__setattr__(self, "w", positive_scalar("w", self.w))
 
     def graph_terms(self, x, slope, H, EA):
         f, df_ds, df_dh = unstretched_measure(slope, H, EA)
@@ -63,7 +58,7 @@ class DeckLoad:
     w: float
 
     def __post_init__(self):
-        object.__setattr__(self, "w", _positive_scalar("w", self.w))
+        object.__setattr__(self, "w", positive_scalar("w", self.w))
 
     def graph_terms(self, x, slope, H, EA):
         zero = np.zeros_like(slope)
