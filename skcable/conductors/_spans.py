@@ -85,12 +85,8 @@ def _spans(spans) -> np.ndarray:
 
 
 def ruling_span(spans) -> float:
-    r"""Ruling (equivalent) span of a level tension section (m).
-
-    :math:`L_r = \sqrt{\sum L_i^3 / \sum L_i}` (CIGRE TB 324, 2007; Kiessling
-    et al., "Overhead Power Lines", 2003): the single span whose parabolic
-    change of state is that of the section when the suspension strings equalise
-    the horizontal tension.
+    r"""Ruling (equivalent) span of a level tension section (m),
+    :math:`L_r = \sqrt{\sum L_i^3 / \sum L_i}` (module text).
 
     Parameters
     ----------

@@ -92,30 +92,16 @@ class ThermalCatenary(Shown):
         return self.curve.residual()
 
     def __repr__(self):
+        forces = dict.fromkeys(("H", "V_A", "V_B", "T_A", "T_B"), "N")
         shown = attributes(
-            self,
-            {
-                "k": "",
-                "H": "N",
-                "V_A": "N",
-                "V_B": "N",
-                "T_A": "N",
-                "T_B": "N",
-                "sag": "m",
-                "length": "m",
-                "stretched_length": "m",
-            },
+            self, {"k": "", **forces, **dict.fromkeys(("sag", "length", "stretched_length"), "m")}
         )
         where = f"{counted(np.shape(self.H), 'scene')}: " if np.ndim(self.H) else ""
         return f"ThermalCatenary({where}{shown})"
 
 
 def thermal_catenary(span, dh, w, EA, *, length, alpha, t, t0=0.0):
-    """Elastic catenary with thermal strain, A = (0, 0) to B = (span, dh).
-
-    An element of unstressed length ``ds0`` at ``t0`` stretches to
-    ``ds0 (1 + alpha (t - t0) + T/EA)`` (Irvine, "Cable Structures", 1981,
-    with a uniform thermal strain).
+    """Elastic catenary with thermal strain, A = (0, 0) to B = (span, dh) (module text).
 
     Parameters
     ----------
