@@ -264,15 +264,6 @@ class Catenary(CableSolution):
         with float_range("x", "T(x)"):
             return finite_at("x", self.H * xp.cosh(u), "T(x)")
 
-    def weight_per_length(self, x, slope):
-        return self.w + 0.0 * slope
-
-    def _arc(self, s):
-        """``s`` checked to lie in [0, length]."""
-        s = real("s", s)
-        require("s", (s >= 0) & (s <= self.length), "must lie in [0, length]", s)
-        return s
-
     def xy(self, s):
         r"""Positions ``(..., 2)`` (m) at unstretched arc length ``s`` (m) from A, in [0, length].
 

@@ -25,7 +25,7 @@ from functools import cached_property
 import numpy as np
 
 from skcable import _plausible
-from skcable._checks import broadcast, float_range, positive, real, require
+from skcable._checks import broadcast, float_range, positive, real
 from skcable._newton2 import solve2
 from skcable._xp import namespace, scalar_math
 from skcable.cable._answers import check_catenary
@@ -156,8 +156,7 @@ class ElasticCatenary(CableSolution):
 
     def s_of_x(self, x):
         """Material point at abscissa ``x`` in [0, span] (x(s) is increasing)."""
-        x = real("x", x)
-        require("x", (x >= 0) & (x <= self.span), "must lie in [0, span]", x)
+        x = self._abscissa(x)
         x_end = self.x_of_s(self.length)
         x = namespace(x, x_end).minimum(x, x_end)  # x(length) = span up to rounding
         # the parameters go in as arguments: the vectorised search passes them
@@ -179,9 +178,6 @@ class ElasticCatenary(CableSolution):
         """Tension at ``x`` (N)."""
         tv = self._tv(self.s_of_x(x))
         return namespace(tv).hypot(self.H, tv)
-
-    def weight_per_length(self, x, slope):
-        return self.w + 0.0 * slope
 
     def stiffness(self):
         """Fairlead stiffness ``∂(H, V_B)/∂(span, dh)`` with A fixed, shape ``(*shape, 2, 2)``.

@@ -220,8 +220,7 @@ class Parabola(CableSolution):
     def x_of_s(self, s):
         """Abscissa (m) of the point at arc length ``s`` (m) from A, in [0, length] (a root of
         the increasing `s_of_x`)."""
-        s = real("s", s)
-        require("s", (s >= 0) & (s <= self.length), "must lie in [0, length]", s)
+        s = self._arc(s)
         s = namespace(s).minimum(s, self.s_of_x(self.span))  # the length up to rounding
         args = (s, self.a, self.p_A)
         x, _ = find_root(_arc_length_minus, 0.0, self.span * (1.0 + 1e-9), args, what="x_of_s")

@@ -23,7 +23,7 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
-from skcable._checks import whole
+from skcable._checks import real, require, whole
 from skcable._show import Shown, counted, quantity
 from skcable._xp import PicklesBackend, namespace
 from skcable.cable._special import largest_abs
@@ -99,6 +99,18 @@ class CableSolution(PicklesBackend, Shown):
     def H_B(self):
         """Horizontal tension at B (N): ``H``, the same all along under vertical loads."""
         return self.H
+
+    def _arc(self, s):
+        """``s`` checked to lie in [0, length]."""
+        s = real("s", s)
+        require("s", (s >= 0) & (s <= self.length), "must lie in [0, length]", s)
+        return s
+
+    def _abscissa(self, x):
+        """``x`` checked to lie in [0, span]."""
+        x = real("x", x)
+        require("x", (x >= 0) & (x <= self.span), "must lie in [0, span]", x)
+        return x
 
     def xy(self, s):  # pragma: no cover - abstract
         """Positions ``(..., 2)`` (m) at unstretched arc length ``s`` (m) from A."""
@@ -181,9 +193,10 @@ class CableSolution(PicklesBackend, Shown):
         weight = np.broadcast_to(self.weight_per_length(x, slope), x.shape)
         return arc_samples(x, self.y(x), self.T(x), np.arctan(slope), weight)
 
-    def weight_per_length(self, x, slope):  # pragma: no cover - abstract
-        """Downward distributed load per unit unstretched cable length (N/m) at ``x``."""
-        raise NotImplementedError
+    def weight_per_length(self, x, slope):
+        """Downward distributed load per unit unstretched cable length (N/m) at ``x``: ``w``, the
+        weight of the forms under their own weight (the others say theirs)."""
+        return self.w + 0.0 * slope
 
     def to_vtk(self, path, n: int = 201, *, point_data=None):
         """Write the profile as a VTK polyline (see `skcable.io.cable_mesh`, which also takes the

@@ -11,7 +11,7 @@ from itertools import zip_longest
 
 import numpy as np
 
-from skcable._checks import real, require, whole
+from skcable._checks import whole
 from skcable._xp import namespace
 from skcable.cable._elastic import ElasticCatenary, elastic_stiffness, inverse_2x2
 from skcable.cable._roots import find_root
@@ -247,7 +247,6 @@ class SeabedCatenary(CableSolution):
 
     def _taut_T_of_s(self, s):
         """Tension (N) at unstretched arc length ``s`` from A, in [0, length]."""
-        s = self._arc("s", s)
         s1, L_B = self.length_to_seabed, self.length_on_seabed
         tv = self.w * np.maximum(s - s1 - L_B, 0.0) - self._hanging.V_A
         hang = np.where((s <= s1) & (s1 > 0), np.hypot(self.H, self.w * s - self._V1), np.hypot(self.H, tv))
@@ -258,7 +257,6 @@ class SeabedCatenary(CableSolution):
 
     def _taut_x_of_s(self, s):
         """Abscissa of the material point ``s`` (unstretched arc length from A)."""
-        s = self._arc("s", s)
         s1, L_B, ell = self.length_to_seabed, self.length_on_seabed, self._ell
         on = np.clip(s - s1, 0.0, L_B)
         d = np.maximum(on - (L_B - ell), 0.0)
@@ -269,23 +267,10 @@ class SeabedCatenary(CableSolution):
 
     def _taut_y_of_s(self, s):
         """Height above A of the material point ``s`` (the seabed's height on it)."""
-        s = self._arc("s", s)
         s1, L_B = self.length_to_seabed, self.length_on_seabed
         hang = self._y_t + self._hanging.y_of_s(np.maximum(s - s1 - L_B, 0.0))
         left = self._left(np.minimum(s, s1))[1]
         return _out(np.where(s <= s1, left, np.where(s <= s1 + L_B, self._y_t, hang)))
-
-    def _arc(self, name, s):
-        s = real(name, s)
-        require(name, (s >= 0) & (s <= self.length), "must lie in [0, length]", s)
-        return s
-
-    def _split(self, x):
-        x = real("x", x)
-        require("x", (x >= 0) & (x <= self.span), "must lie in [0, span]", x)
-        x_t = self.x_touchdown
-        grounded = x <= x_t
-        return x, grounded, np.clip(x - x_t, 0.0, self._hanging.span)
 
     def _left_s_of_x(self, x):
         """Material point on the anchor part at ``x < x_landing`` (NaN elsewhere)."""
@@ -305,7 +290,8 @@ class SeabedCatenary(CableSolution):
 
     def _taut_s_of_x(self, x):
         """Material point at abscissa ``x`` in [0, span]."""
-        x, grounded, xs = self._split(x)
+        x_t = self.x_touchdown
+        grounded, xs = x <= x_t, np.clip(x - x_t, 0.0, self._hanging.span)
         s1, L_B, ell = self.length_to_seabed, self.length_on_seabed, self._ell
         # on the seabed x - x_1 - a = d (1 + H_A/EA) + C_B w d^2 / (2 EA), s = s_1 + a + d
         a = L_B - ell
@@ -334,9 +320,6 @@ class SeabedCatenary(CableSolution):
     def T(self, x):
         """Tension at abscissa ``x`` (N)."""
         return self.T_of_s(self.s_of_x(x))
-
-    def weight_per_length(self, x, slope):
-        return self.w + 0.0 * slope
 
     # -- checks and stiffness -----------------------------------------------------------
     def _taut__residuals(self):
@@ -381,21 +364,21 @@ class SeabedCatenary(CableSolution):
     def T_of_s(self, s):
         """Tension (N) at unstretched arc length ``s`` from A, in [0, length] (in a heap state
         `skcable.cable.seabed.heap.heap_T_of_s`)."""
-        s = self._arc("s", s)
+        s = self._arc(s)
         heap = partial(heap_state.heap_T_of_s, s, self.length_to_seabed, self.length_on_seabed, self.w)
         return self._pick(heap, partial(self._taut_T_of_s, s))
 
     def x_of_s(self, s):
         """Abscissa of the material point ``s`` (unstretched arc length from A; in a heap state
         `skcable.cable.seabed.heap.heap_x_of_s`)."""
-        s = self._arc("s", s)
+        s = self._arc(s)
         heap = partial(heap_state.heap_x_of_s, s, self.length_to_seabed, self.length_on_seabed, self.span)
         return self._pick(heap, partial(self._taut_x_of_s, s))
 
     def y_of_s(self, s):
         """Height above A of the material point ``s`` (the seabed's height on it; in a heap
         state `skcable.cable.seabed.heap.heap_y_of_s`)."""
-        s = self._arc("s", s)
+        s = self._arc(s)
         parts = (self.length_to_seabed, self.length_on_seabed, self.w, self.EA, self._y_t)
         heap = partial(heap_state.heap_y_of_s, s, *parts)
         return self._pick(heap, partial(self._taut_y_of_s, s))
@@ -403,8 +386,7 @@ class SeabedCatenary(CableSolution):
     def s_of_x(self, x):
         """Material point at abscissa ``x`` in [0, span] (in a heap state
         `skcable.cable.seabed.heap.heap_s_of_x`)."""
-        x = real("x", x)
-        require("x", (x >= 0) & (x <= self.span), "must lie in [0, span]", x)
+        x = self._abscissa(x)
         heap = partial(
             heap_state.heap_s_of_x, x, self.length_to_seabed, self.length_on_seabed, self.span, self.length
         )
@@ -413,8 +395,7 @@ class SeabedCatenary(CableSolution):
     def slope(self, x):
         """dy/dx at ``x`` (0 on the seabed; in a heap state `skcable.cable.seabed.heap.heap_slope`,
         which refuses the vertical parts)."""
-        x = real("x", x)
-        require("x", (x >= 0) & (x <= self.span), "must lie in [0, span]", x)
+        x = self._abscissa(x)
         heap = partial(heap_state.heap_slope, x, self.span, self.heap, self._V1)
         return self._pick(heap, partial(self._taut_slope, x))
 
