@@ -326,14 +326,9 @@ class Conductor(Shown):
             on the iced diameter; broadcast together.
         ice_density, g : float
             Ice density (kg/m³) and gravity (m/s²), > 0.
-        model : {"catenary", "parabola", "auto"}
-            As in `skcable.conductors.change_of_state`: ``"auto"`` takes the parabola for a span
-            whose estimated error is within ``rtol``, else the exact catenary, and the result's
-            ``reason`` says which and why.
-        rtol : float, optional
-            The tolerance of ``model="auto"`` (the parabola's estimated relative error in H, sag,
-            T_max and length; default 1e-3), as in `skcable.conductors.change_of_state`; refused
-            with the other models.
+        model, rtol
+            As in `skcable.conductors.change_of_state` (the result's ``reason`` says which model
+            and why).
 
         Returns
         -------

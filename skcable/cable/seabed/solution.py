@@ -70,15 +70,11 @@ class SeabedCatenary(CableSolution):
     ``T(x)``, ``slope(x)`` the abscissa (the grounded part lies on the seabed).
 
     ``heap`` (bool, an array for array input) marks the state where the line is
-    longer than its L-shape and the slack lies in a heap on the seabed: ``H = H_A = 0``;
-    the part from B hangs vertically down to the seabed at ``x_touchdown = span``
-    over its unstretched length ``l_B`` (`hanging_length` of ``dh - seabed``),
-    ``V_B = T_B = w l_B``; with the anchor above the seabed the part from A hangs
-    likewise (``V_A = w l_A``, ``x_landing = 0``), else ``V_A = 0``; the rest,
-    ``length_on_seabed = L - l_A - l_B >= span``, carries no tension and does not
-    stretch (friction plays no part). Statics do not fix where that slack lies: the
-    maps draw it spread evenly along the seabed from the landing point to the
-    touchdown. ``suspended`` raises there (no catenary hangs).
+    longer than its L-shape and the slack lies in a heap on the seabed
+    (`skcable.cable.seabed.heap`): ``H = H_A = 0``, ``x_touchdown = span``,
+    ``V_B = T_B = w l_B``, ``V_A = w l_A`` (0 with the anchor on the seabed),
+    ``x_landing = 0``, ``length_on_seabed = L - l_A - l_B >= span``; ``suspended``
+    raises there (no catenary hangs).
     """
 
     def __init__(self, span, dh, w, EA, length, friction, seabed, H, V_t, L_B, V_1=0.0, y_t=0.0, heap=False):
