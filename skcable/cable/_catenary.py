@@ -345,10 +345,8 @@ def lowest_point_y(u_a, u_b, y_vertex, dh):
 
 
 def finite_at(name, value, what):
-    if isinstance(value, np.ndarray):
-        if not np.isfinite(value).all():
-            raise InputError(name, f"is so far outside the span that {what} overflows a float")
-    elif not math.isfinite(value):
+    """``value``, refused naming ``name`` unless finite (``what`` overflows)."""
+    if not (np.isfinite(value).all() if isinstance(value, np.ndarray) else math.isfinite(value)):
         raise InputError(name, f"is so far outside the span that {what} overflows a float")
     return value
 
@@ -599,12 +597,30 @@ def _range(value):
     return _MIN(value, axis=None), _MAX(value, axis=None)  # the ufuncs' reductions, unwrapped
 
 
-def _floats_of_shape(shape, *values):
-    """Each of ``values`` is a Python float or a float64 array of ``shape``."""
-    return all(
-        isinstance(v, float) or (type(v) is np.ndarray and v.dtype == np.float64 and v.shape == shape)
-        for v in values
-    )
+def _array_ranges(span, dh, w, value):
+    """``(min, max)`` of ``span``, ``value``, ``w`` and ``dh`` when ``span`` and ``value`` are
+    float64 arrays of one shape and ``dh``, ``w`` Python floats or float64 arrays of that shape
+    (the vectorised paths' data), else None."""
+    shape = span.shape
+    if not (span.dtype == value.dtype == np.float64 and span.size):
+        return None
+    for v in (value, dh, w):
+        if not (
+            isinstance(v, float) or (type(v) is np.ndarray and v.dtype == np.float64 and v.shape == shape)
+        ):
+            return None
+    return tuple(map(_range, (span, value, w, dh)))
+
+
+def _batch_solution(span, dh, w, constraint, done, extra=None):
+    """The `Catenary` of the vectorised pass ``done`` (`skcable.cable._catenary_batch`), or None
+    where its residual or a result the residual does not evaluate fails (the general path then
+    names the argument)."""
+    if done is None or not done[0] <= ACCEPT:
+        return None
+    results = done[1] if extra is None else {**done[1], **extra}
+    solution = Catenary._of_batch(span, dh, w, constraint, results, span.shape)
+    return solution if solution.finite_beyond_residual() else None
 
 
 def _H_on_arrays(span, dh, w, H):
@@ -619,10 +635,10 @@ def _H_on_arrays(span, dh, w, H):
     ``z = fl(fl(span/a)/2)`` lies between ``fl(fl(span_min/a_max)/2)`` and
     ``fl(fl(span_max/a_min)/2)``: the bounds of ``z`` are tested on these (where they are too
     wide, the general path tests every element)."""
-    shape = span.shape
-    if not (span.dtype == H.dtype == np.float64 and span.size and _floats_of_shape(shape, H, dh, w)):
+    ranges = _array_ranges(span, dh, w, H)
+    if ranges is None:
         return None
-    (span_lo, span_hi), (H_lo, H_hi), (w_lo, w_hi), (dh_lo, dh_hi) = map(_range, (span, H, w, dh))
+    (span_lo, span_hi), (H_lo, H_hi), (w_lo, w_hi), (dh_lo, dh_hi) = ranges
     if not (0.0 < span_lo and span_hi < _INF and 0.0 < H_lo and H_hi < _INF and 0.0 < w_lo and w_hi < _INF):
         return None
     if not -_INF < dh_lo <= dh_hi < _INF:
@@ -643,12 +659,7 @@ def _H_on_arrays(span, dh, w, H):
     z *= 0.5  # = 0.5 * span / a: halving is exact
     flat = [v if isinstance(v, float) else v.reshape(-1) for v in (span, dh, w, a, z, H)]
     with np.errstate(all="ignore"):  # a NaN or inf fails the residual: the general path then names it
-        done = _batch.of_H(*flat)
-        if done is None or not done[0] <= ACCEPT:
-            return None
-        results = {**done[1], "a": a, "z": z}
-        solution = Catenary._of_batch(span, dh, w, ("H", H[()]), results, shape)
-        return solution if solution.finite_beyond_residual() else None
+        return _batch_solution(span, dh, w, ("H", H[()]), _batch.of_H(*flat), {"a": a, "z": z})
 
 
 #: Bounds of the data the vectorised ``length=`` path takes: within them every square and
@@ -666,12 +677,10 @@ def _length_on_arrays(span, dh, w, length):
 
     The argument checks fused into two reductions an argument; the data held within
     `_NORMAL_RANGE` (else the general path)."""
-    shape = span.shape
-    if not (
-        span.dtype == length.dtype == np.float64 and span.size and _floats_of_shape(shape, length, dh, w)
-    ):
+    ranges = _array_ranges(span, dh, w, length)
+    if ranges is None:
         return None
-    (span_lo, span_hi), (L_lo, L_hi), (w_lo, w_hi), (dh_lo, dh_hi) = map(_range, (span, length, w, dh))
+    (span_lo, span_hi), (L_lo, L_hi), (w_lo, w_hi), (dh_lo, dh_hi) = ranges
     tiny, huge = _NORMAL_RANGE
     if not (tiny < span_lo and span_hi < huge and tiny < L_lo and L_hi < huge and 0.0 < w_lo and w_hi < _INF):
         return None
@@ -680,10 +689,7 @@ def _length_on_arrays(span, dh, w, length):
     s, d, wf, L = (v if isinstance(v, float) else v.reshape(-1) for v in (span, dh, w, length))
     with np.errstate(all="ignore"):  # a NaN or inf fails the residual: the general path then names it
         done = _batch.of_length(s, d, wf, L, (span_lo, span_hi))
-        if done is None or not done[0] <= ACCEPT:
-            return None
-        solution = Catenary._of_batch(span, dh, w, ("length", length[()]), done[1], shape)
-        return solution if solution.finite_beyond_residual() else None
+        return _batch_solution(span, dh, w, ("length", length[()]), done)
 
 
 def hanging(span, dh, w, length) -> Catenary:

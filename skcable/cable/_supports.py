@@ -151,25 +151,10 @@ class SlidingLoad:
     P: float
     length: float
 
-    @property
-    def H(self):
-        return self.arc.H
-
-    @property
-    def V_A(self):
-        return self.arc.V_A
-
-    V_B = V_A
-
-    @property
-    def T_A(self):
-        return self.arc.T_A
-
-    T_B = T_A
-
-    @property
-    def y_load(self):
-        return self.arc.dh
+    H = property(lambda self: self.arc.H)
+    V_A = V_B = property(lambda self: self.arc.V_A)
+    T_A = T_B = property(lambda self: self.arc.T_A)
+    y_load = property(lambda self: self.arc.dh)
 
     def residual(self) -> float:
         """Arc residual, load-point equilibrium and total length, relative."""

@@ -8,7 +8,7 @@ import numpy as np
 from skcable._checks import nonnegative, positive, real, require
 from skcable.cable._elastic import elastic_catenary as free_elastic_catenary
 from skcable.cable._extreme import outsized
-from skcable.cable.closure import hanging_length, on_slope
+from skcable.cable.closure import hanging_length, on_slope, slope_frame
 from skcable.cable.seabed.sloped_solution import SlopedSeabedCatenary
 from skcable.cable.seabed.solve import elastic_catenary
 from skcable.errors import ConvergenceError, InputError
@@ -123,8 +123,7 @@ def _sloped(span, dh, w, EA, L, m, mu):
         return SlopedSeabedCatenary(span, dh, w, EA, L, m, mu, free.H, 0.0, [0.0], free=free)
     chord = float(np.hypot(span, dh))
     # start: the flat line of the same data in the frame of the slope
-    cos = 1.0 / np.hypot(1.0, m)
-    sin = m * cos
+    cos, sin = slope_frame(m, np)
     along, across = span * cos + dh * sin, dh * cos - span * sin
     try:
         flat = elastic_catenary(along, across, w * cos, EA, length=L, seabed=0.0)
