@@ -126,9 +126,7 @@ def hanging(H, Vb, w, EA, L, xp=scalar_math):
         ``x, y, x_H, x_V, y_V, x_L, y_L, T_b, T_t``: the run and rise, ``∂x/∂H``,
         ``∂x/∂V_b`` (= ``∂y/∂H``), ``∂y/∂V_b``, ``∂x/∂L``, ``∂y/∂L`` and the end tensions (N).
     """
-    q, d = Vb / H, w * L / H
-    p = q + d
-    rq, rp = xp.hypot(1.0, q), xp.hypot(1.0, p)
+    q, d, p, rq, rp = end_ratios(H, Vb, w, L, xp)
     rsum, rr = rp + rq, rp * rq
     if xp is np:
         S, A = asinh_step_parts(q, d, p, rq, rp, np)
