@@ -14,15 +14,9 @@ hyperbolic angle at mid-span :math:`m`, where :math:`u_A = m - z`,
 .. math:: \sinh m = \frac{dh}{\mathrm{span}}\,\frac{z}{\sinh z}, \qquad
           S^2 - dh^2 = 4a^2\sinh^2 z, \qquad S = 2a\sinh z\cosh m.
 
-The "fourth equation" (the lecture notes "Cables") is one of: unstretched ``length``, ``sag``
-(largest vertical distance chord–cable), horizontal tension ``H``, ``low``
-(y of the vertex relative to A; it must lie below both supports, so the
-vertex lies inside the span and is the cable's lowest point) or ``T_max``
-(tension at the higher support, Goicolea (2012) §3.4.1: a counterweight over a
-pulley). Given the length,
-``sinh(z)/z = sqrt(S² − dh²)/span`` is solved by Newton's method on
-``log(sinh z / z)``, which is increasing and convex in z: started from an
-upper bound it converges monotonically, with no bracket and no fallback.
+The "fourth equation" (the lecture notes "Cables") is one of the constraints of `catenary`.
+Given the length, ``sinh(z)/z = sqrt(S² − dh²)/span`` is solved as `skcable.cable._hanging`
+says (Halley's method on ``log(sinh z / z)``, increasing and convex in z).
 """
 
 from __future__ import annotations
@@ -726,10 +720,8 @@ def catenary(span, dh, w, *, length=None, sag=None, H=None, low=None, T_max=None
     Returns
     -------
     Catenary
-        ``H, V_A, V_B, T_A, T_B, length, sag``, the lowest point of the cable
-        ``x_low, y_low`` (a support when the vertex lies outside the span),
-        the vertex ``x_vertex, y_vertex``, and ``y(x)``, ``T(x)``,
-        ``slope(x)``, ``residual()``; arrays when inputs are.
+        Its attributes (arrays when inputs are) and ``y(x)``, ``T(x)``, ``slope(x)``,
+        ``residual()``.
 
     Raises
     ------

@@ -366,12 +366,8 @@ def parabola(span, dh, w, *, length=None, sag=None, H=None, low=None, T_max=None
 
     Raises
     ------
-    InputError
-        A non-physical argument (named), not exactly one constraint, arrays
-        that do not broadcast, or data so extreme that a result would leave
-        the range of a float.
-    ConvergenceError
-        The length search stopped, or the residual exceeds 1e-9.
+    InputError, ConvergenceError
+        As `catenary` (here the length search is the solver that may stop).
 
     Examples
     --------
