@@ -59,18 +59,14 @@ def geometric_stiffness(solution, *, EA=None):
         Not a catenary or parabola, a bad ``EA``, or a stiffness beyond the
         range of a float.
     """
-    if _is_elastic(solution):
+    if isinstance(solution, (ElasticCatenary, SeabedCatenary)):
         if EA is not None:
             raise InputError("EA", "the elastic solution has its own EA; leave EA out")
         k = fairlead_stiffness(solution)[..., 0, 0]
         return _representable("solution", float(k) if k.ndim == 0 else k, "dH/dspan")
-    if isinstance(solution, (Catenary, Parabola)):
-        k_g = solution.k_G
-    else:
-        raise InputError(
-            "solution",
-            f"must be a Catenary, Parabola, ElasticCatenary or SeabedCatenary, got {type(solution).__name__}",
-        )
+    if not isinstance(solution, (Catenary, Parabola)):
+        raise _not_a_solution(solution)
+    k_g = solution.k_G
     _representable("solution", k_g, "k_G")
     if EA is None:
         return k_g
@@ -83,8 +79,9 @@ def geometric_stiffness(solution, *, EA=None):
     return small / (1.0 + small / large)
 
 
-def _is_elastic(solution):
-    return isinstance(solution, (ElasticCatenary, SeabedCatenary))
+def _not_a_solution(solution):
+    kinds = "a Catenary, Parabola, ElasticCatenary or SeabedCatenary"
+    return InputError("solution", f"must be {kinds}, got {type(solution).__name__}")
 
 
 def fairlead_stiffness(solution):
@@ -107,13 +104,9 @@ def fairlead_stiffness(solution):
     InputError
         Another kind of solution, or a stiffness beyond the range of a float.
     """
-    if callable(getattr(solution, "stiffness", None)):  # any solution of the result protocol
-        k = solution.stiffness()
-    else:
-        raise InputError(
-            "solution",
-            f"must be a Catenary, Parabola, ElasticCatenary or SeabedCatenary, got {type(solution).__name__}",
-        )
+    if not callable(getattr(solution, "stiffness", None)):  # any solution of the result protocol
+        raise _not_a_solution(solution)
+    k = solution.stiffness()
     if not np.isfinite(k).all():  # zeros are legitimate here (dh = 0 decouples H and V_B)
         raise InputError("solution", "gives the stiffness outside the range of a float (over- or underflow)")
     return k

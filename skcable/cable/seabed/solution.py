@@ -25,16 +25,6 @@ from skcable.errors import InputError
 __all__ = ["SeabedCatenary"]
 
 
-def _times_zero(value):
-    """``0 * value``: a zero of ``value``'s shape."""
-    return 0.0 * value
-
-
-def _plus_zero(value, like):
-    """``value`` broadcast to the shape of ``like``."""
-    return value + 0.0 * like
-
-
 def _left_run(s, x, H, V1, w, EA):
     """Abscissa of the point ``s`` on the part hanging from an anchor above the seabed, less ``x``."""
     return positions(H, -V1, w, EA, s, namespace(s, H))[0] - x
@@ -147,16 +137,13 @@ class SeabedCatenary(CableSolution):
     def x_landing(self):
         """Abscissa where the line from an anchor above the seabed lands on it (0 otherwise;
         0 in a heap state: the part from A hangs vertically)."""
-        return self._pick(partial(_times_zero, self.span), self._taut_x_landing)
-
-    def _taut_x_landing(self):
-        return _out(self._left(self.length_to_seabed)[0])
+        return self._pick(lambda: 0.0 * self.span, lambda: _out(self._left(self.length_to_seabed)[0]))
 
     @cached_property
     def x_touchdown(self):
         """Abscissa where the line leaves the seabed towards B (the grounded line stretched;
         ``span`` in a heap state)."""
-        return self._pick(partial(_plus_zero, self.span, self.H), self._taut_x_touchdown)
+        return self._pick(lambda: self.span + 0.0 * self.H, self._taut_x_touchdown)
 
     def _taut_x_touchdown(self):
         stretch = grounded(self.H, self.length_on_seabed, self._mu_w, self.EA, self._xp)[0]
@@ -189,7 +176,7 @@ class SeabedCatenary(CableSolution):
         """Stretched length of the whole line (anchor part, grounded, suspended)."""
         # heap: the vertical parts span the heights exactly, the slack does not stretch
         heap = self.length_on_seabed + self.dh - 2.0 * self._y_t
-        return self._pick(partial(_plus_zero, heap, 0.0), self._taut_stretched_length)
+        return self._pick(lambda: heap + 0.0, self._taut_stretched_length)
 
     def _taut_stretched_length(self):
         left = 0.0 * self.H
@@ -207,33 +194,21 @@ class SeabedCatenary(CableSolution):
         """The seabed's height broadcast: the height of a heap state's vertex and lowest point."""
         return self._y_t + 0.0 * self.H
 
-    def _taut_x_vertex(self):
-        return self.x_touchdown + self._hanging.x_vertex
-
-    def _taut_y_vertex(self):
-        return self._y_t + self._hanging.y_vertex
-
-    def _taut_x_low(self):
-        return self.x_touchdown + self._hanging.x_low
-
-    def _taut_y_low(self):
-        return self._y_t + self._hanging.y_low
-
     @property
     def x_vertex(self):
-        return self._pick(self._at_b, self._taut_x_vertex)
+        return self._pick(self._at_b, lambda: self.x_touchdown + self._hanging.x_vertex)
 
     @property
     def y_vertex(self):
-        return self._pick(self._on_seabed, self._taut_y_vertex)
+        return self._pick(self._on_seabed, lambda: self._y_t + self._hanging.y_vertex)
 
     @property
     def x_low(self):
-        return self._pick(self._at_b, self._taut_x_low)
+        return self._pick(self._at_b, lambda: self.x_touchdown + self._hanging.x_low)
 
     @property
     def y_low(self):
-        return self._pick(self._on_seabed, self._taut_y_low)
+        return self._pick(self._on_seabed, lambda: self._y_t + self._hanging.y_low)
 
     # -- along the line ---------------------------------------------------------------
     def _grounded_tension(self, s):
