@@ -38,13 +38,18 @@ def unstretched_measure(slope, H, EA):
 
 
 @dataclass(frozen=True)
-class SelfWeight:
-    """Weight ``w`` (N/m) per unit unstretched cable length, downward."""
+class _Uniform:
+    """A uniform load ``w`` (N/m), one number > 0."""
 
     w: float
 
     def __post_init__(self):
         object.__setattr__(self, "w", positive_scalar("w", self.w))
+
+
+@dataclass(frozen=True)
+class SelfWeight(_Uniform):
+    """Weight ``w`` (N/m) per unit unstretched cable length, downward."""
 
     def graph_terms(self, x, slope, H, EA):
         f, df_ds, df_dh = unstretched_measure(slope, H, EA)
@@ -52,13 +57,8 @@ class SelfWeight:
 
 
 @dataclass(frozen=True)
-class DeckLoad:
+class DeckLoad(_Uniform):
     """Load ``w`` (N/m) per unit horizontal length, downward (a deck on hangers)."""
-
-    w: float
-
-    def __post_init__(self):
-        object.__setattr__(self, "w", positive_scalar("w", self.w))
 
     def graph_terms(self, x, slope, H, EA):
         zero = np.zeros_like(slope)

@@ -1,9 +1,4 @@
-"""Common interface of every suspended-cable solution.
-
-Conventions: x to the right, y up, support A at (0, 0),
-support B at (span, dh); distributed loads w > 0 act downward; H > 0 is the
-horizontal tension; V_A, V_B are the upward support reactions. Any
-consistent unit system works (SI by default: m, N, N/m).
+"""Common interface of every suspended-cable solution (conventions: `skcable.cable`).
 
 Every solver broadcasts over its arguments: a solution holds scalars for
 scalar input, arrays for array input, and its methods broadcast ``x``

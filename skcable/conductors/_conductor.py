@@ -169,10 +169,8 @@ class Conductor(Shown):
         Returns
         -------
         Conductor
-            ``EA`` (N) of the intact wires' section, ``w`` (N/m) of every wire, ``alpha``
-            (1/K) the stiffness-weighted mean, ``diameter`` (m), ``rts`` as given,
-            ``rupture_force`` (N) the axial force at the first wire's rupture in straight
-            tension (wire laws); ``strand`` the (damaged) strand.
+            ``EA``, ``w``, ``alpha`` and ``rupture_force`` as the module text says, ``rts`` as
+            given; ``strand`` the (damaged) strand.
 
         Raises
         ------

@@ -378,10 +378,7 @@ def tension_section(
     Returns
     -------
     TensionSection
-        Each span's ``H, sag, V_A, V_B, T_max, span, dh``; each string's
-        ``swing, swing_angle, clamp_rise``; the ruling-span approximation
-        beside it (``ruling_span, H_ruling, sag_ruling``, ``H_gap``,
-        ``sag_gap``).
+        The spans and the strings, with the ruling-span approximation beside them.
 
     Raises
     ------
