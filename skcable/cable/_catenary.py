@@ -740,21 +740,13 @@ def catenary(span, dh, w, *, length=None, sag=None, H=None, low=None, T_max=None
     >>> round(float(c.H), 1), round(float(c.x_low), 2)
     (85819.2, 507.11)
     """
-    if length is not None and sag is None and H is None and low is None and T_max is None:
+    if length is not None and sag is H is low is T_max is None:  # the length alone
         solution = _length_on_floats(span, dh, w, length)  # one scene of Python numbers
-        if solution is None and type(span) is np.ndarray and type(length) is np.ndarray:
+        if solution is None and type(span) is type(length) is np.ndarray:
             solution = _length_on_arrays(span, dh, w, length)  # arrays of one shape
         if solution is not None:
             return solution
-    elif (
-        H is not None
-        and type(span) is np.ndarray
-        and type(H) is np.ndarray
-        and length is None
-        and sag is None
-        and low is None
-        and T_max is None
-    ):
+    elif H is not None and length is sag is low is T_max is None and type(span) is type(H) is np.ndarray:
         solution = _H_on_arrays(span, dh, w, H)  # arrays of one shape
         if solution is not None:
             return solution
