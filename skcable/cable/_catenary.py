@@ -33,7 +33,7 @@ from skcable._xp import namespace, power_of_two_near, scalar_math
 from skcable.cable import _catenary_batch as _batch
 from skcable.cable._hanging import RHO_LIMIT as _RHO_LIMIT
 from skcable.cable._hanging import Z_LIMIT, Z_MIN, excess, z_of_excess
-from skcable.cable._roots import find_root
+from skcable.cable._roots import LOG_XTOL, find_root
 from skcable.cable._special import (
     ldexp_sum,
     log_cosh,
@@ -425,12 +425,8 @@ def _z_from_sag(span, dh, sag):
         f"is too large: span/(2a) would exceed {_Z_MAX:g}, beyond the range this closed form evaluates",
         sag,
     )
-    logz, history = find_root(f, lo, hi, (s, ratio), what="catenary(sag=...)", xtol=_LOG_XTOL)
+    logz, history = find_root(f, lo, hi, (s, ratio), what="catenary(sag=...)", xtol=LOG_XTOL)
     return np.exp(logz), history
-
-
-#: Absolute tolerance of roots sought in log space: a relative one on the quantity.
-_LOG_XTOL = 4.0 * np.finfo(float).eps
 
 
 def _z_from_low(span, dh, low):
@@ -465,7 +461,7 @@ def _z_from_low(span, dh, low):
         f"is so deep below the supports that span/(2a) exceeds {_Z_LIMIT:g} (cosh overflows a float)",
         low,
     )
-    t, history = find_root(f, lo, hi, args, what="catenary(low=...)", xtol=_LOG_XTOL)
+    t, history = find_root(f, lo, hi, args, what="catenary(low=...)", xtol=LOG_XTOL)
     return z_p * xp.exp(t), history
 
 
@@ -518,7 +514,7 @@ def _z_from_T_max(span, dh, w, T_max, branch):
         hi,
         (s, log_target),
         what="catenary(T_max=...)",
-        xtol=_LOG_XTOL,
+        xtol=LOG_XTOL,
     )
     return 0.5 * xp.exp(-t), history
 

@@ -32,7 +32,7 @@ import numpy as np
 from skcable._checks import broadcast, exactly_one, float_range, positive, real, require
 from skcable._xp import namespace, power_of_two_near
 from skcable.cable._catenary import finite_at, lowest_point_y
-from skcable.cable._roots import find_root
+from skcable.cable._roots import LOG_XTOL, find_root
 from skcable.cable._special import asinh_step
 from skcable.cable.solution import CableSolution, checked_closed_form, matrix_2x2
 from skcable.errors import InputError
@@ -321,12 +321,9 @@ def _a_from_length(span, dh, length):
     # at lo the end slopes differ by 2·_DELTA_MAX: far more excess than asked
     lo = xp.log(span / (2.0 * _DELTA_MAX * a_guess))
     t, history = find_root(
-        f, lo, 40.0, (span, slope, excess, a_guess), what="parabola(length=...)", xtol=_LOG_XTOL
+        f, lo, 40.0, (span, slope, excess, a_guess), what="parabola(length=...)", xtol=LOG_XTOL
     )
     return a_guess * namespace(t).exp(t) * unit, history
-
-
-_LOG_XTOL = 4.0 * np.finfo(float).eps
 
 
 def _a_from_T_max(span, dh, tau, T_max):
