@@ -146,6 +146,11 @@ def scalar(name: str, value) -> float:
     return value
 
 
+def positive_scalar(name: str, value) -> float:
+    """`scalar`, raising unless it is > 0."""
+    return positive(name, scalar(name, value))
+
+
 def whole(name: str, value, low: int | None = None, high: int | None = None) -> int:
     """``value`` as an int, raising unless it is an integer (not a bool, not a float such as
     2.0) within ``[low, high]`` (either bound optional)."""

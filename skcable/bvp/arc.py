@@ -43,11 +43,11 @@ from scipy.optimize import elementwise
 from skfem import Basis, ElementLineP1DG, ElementLineP2, MeshLine
 
 from skcable._checks import positive, real, require
-from skcable.bvp.base import FiniteElementSolution
+from skcable.bvp.base import FiniteElementSolution, sampled_outputs
 from skcable.bvp.elements import end_dofs
 from skcable.bvp.loads import DeckLoad, DistributedLoad, PointLoad, SelfWeight
 from skcable.bvp.section import tension_section
-from skcable.bvp.terms import CableState, CableTerm, term_outputs
+from skcable.bvp.terms import CableState, CableTerm
 from skcable.cable._catenary import catenary
 from skcable.errors import ConvergenceError, InputError
 from skcable.fe.assembly import Assembly
@@ -567,10 +567,7 @@ class ArcSolution(FiniteElementSolution):
             Q = term_loads(terms, xy[:, 0], xy[:, 1], dx, dy, tension, self.L0, sigma)[0]
             loads = [loads[0] + Q[0], loads[1] + Q[1]]
             state = CableState(xy[:, 0], xy[:, 1], sigma * self.L0, np.array([dx, dy]) / self.L0, tension)
-            outputs = {
-                name: np.moveaxis(v, 0, -1) if np.ndim(v) > 1 else v
-                for name, v in term_outputs(terms, state).items()
-            }
+            outputs = sampled_outputs(terms, state)
         return {
             "xy": xy,
             "tension": self._problem.tbasis.probes(sigma.reshape(1, -1)) @ T,

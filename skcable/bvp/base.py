@@ -4,9 +4,20 @@ from __future__ import annotations
 
 from functools import cached_property
 
+import numpy as np
+
+from skcable.bvp.terms import term_outputs
 from skcable.cable.solution import CableSolution
 
-__all__ = ["FiniteElementSolution"]
+__all__ = ["FiniteElementSolution", "sampled_outputs"]
+
+
+def sampled_outputs(terms, state) -> dict:
+    """The cable terms' outputs at the samples of a profile (`skcable.bvp.terms.term_outputs`),
+    a vector as ``(n, 2)``."""
+    return {
+        name: np.moveaxis(v, 0, -1) if np.ndim(v) > 1 else v for name, v in term_outputs(terms, state).items()
+    }
 
 
 class FiniteElementSolution(CableSolution):

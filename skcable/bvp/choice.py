@@ -48,7 +48,7 @@ from __future__ import annotations
 
 import math
 
-from skcable._checks import exactly_one, positive, scalar
+from skcable._checks import exactly_one, positive_scalar, scalar
 from skcable.bvp import solve_bvp
 from skcable.bvp.loads import DeckLoad, PointLoad, SelfWeight
 from skcable.cable._catenary import catenary
@@ -131,11 +131,11 @@ def solve(
     >>> s.model, s.error_estimate < 1e-2  # a suspension bridge's main cable
     ('parabola', True)
     """
-    span = positive("span", scalar("span", span))
+    span = positive_scalar("span", span)
     dh = scalar("dh", dh)
-    rtol = positive("rtol", scalar("rtol", rtol))
+    rtol = positive_scalar("rtol", rtol)
     if EA is not None:
-        EA = positive("EA", scalar("EA", EA))
+        EA = positive_scalar("EA", EA)
     name, value = exactly_one(length=length, sag=sag, H=H, low=low, T_max=T_max)
     constraint = (name, scalar(name, value))
     loads = list(loads) if isinstance(loads, (list, tuple)) else [loads]

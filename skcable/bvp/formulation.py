@@ -2,9 +2,11 @@
 
 from __future__ import annotations
 
+from functools import partial
+
 import numpy as np
 
-from skcable._checks import exactly_one, nonnegative, positive, real, require, scalar, whole
+from skcable._checks import exactly_one, nonnegative, positive, positive_scalar, real, require, scalar, whole
 from skcable.bvp.arc import ArcProblem, ArcSolution, arc_guess
 from skcable.bvp.graph import BVPSolution, GraphProblem, initial_guess
 from skcable.cable.solution import ACCEPT
@@ -188,7 +190,7 @@ def solve_bvp(
     value = real(name, value) if name == "low" else positive(name, value)
     if name == "low":
         require("low", value < min(0.0, dh), "must lie below both supports, low < min(0, dh)", value)
-    rtol = float(positive("rtol", scalar("rtol", rtol)))
+    rtol = float(positive_scalar("rtol", rtol))
     max_iter = whole("max_iter", max_iter, 1)
     whole("n_elements", n_elements, 1)
     settings = dict(atol=float(nonnegative("atol", scalar("atol", atol))), callback=_callback(callback))
@@ -210,37 +212,25 @@ def _solve_arc(problem: ArcProblem, value, rtol: float, max_iter: int, settings:
     z, L0 = arc_guess(problem)
     if problem.fixed_length:
         L0 = float(value)
-    result = _newton(
-        problem,
-        z,
-        L0,
-        rtol=rtol,
-        max_iter=max_iter,
-        merit=lambda state: state.merit,
-        name="solve_bvp(formulation='arc')",
-        **settings,
-    )
-    size = len(z)
-    solution = ArcSolution(problem, result.x[:size], result.x[size], result.history, result.state)
-    return _checked(solution, rtol)
+    run = (rtol, max_iter, settings, lambda state: state.merit, "solve_bvp(formulation='arc')")
+    return _solved(problem, z, L0, *run, ArcSolution)
 
 
 def _solve_graph(problem: GraphProblem, rtol: float, max_iter: int, settings: dict) -> BVPSolution:
     """The graph form's Newton run from `initial_guess` and its checked solution."""
     dofs, H0 = initial_guess(problem)
+    run = (rtol, max_iter, settings, lambda state: state.descent, "solve_bvp")
+    return _solved(problem, dofs, H0, *run, partial(BVPSolution, resolver=resolve))
+
+
+def _solved(problem, start, unknown, rtol, max_iter, settings, merit, name, solution):
+    """Newton (`_newton`) from the field ``start`` and the global ``unknown`` (H or L0), and the
+    checked ``solution(problem, field, unknown, history, state)``."""
     result = _newton(
-        problem,
-        dofs,
-        H0,
-        rtol=rtol,
-        max_iter=max_iter,
-        merit=lambda state: state.descent,
-        name="solve_bvp",
-        **settings,
+        problem, start, unknown, rtol=rtol, max_iter=max_iter, merit=merit, name=name, **settings
     )
-    size = len(dofs)
-    solution = BVPSolution(problem, result.x[:size], result.x[size], result.history, result.state, resolve)
-    return _checked(solution, rtol)
+    size = len(start)
+    return _checked(solution(problem, result.x[:size], result.x[size], result.history, result.state), rtol)
 
 
 def resolve(solution, span, dh):

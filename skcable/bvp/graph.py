@@ -33,10 +33,10 @@ import numpy as np
 from skfem import Basis, MeshLine
 
 from skcable._checks import positive, real, require
-from skcable.bvp.base import FiniteElementSolution
+from skcable.bvp.base import FiniteElementSolution, sampled_outputs
 from skcable.bvp.elements import end_dofs, line_element
 from skcable.bvp.loads import PointLoad, unstretched_measure
-from skcable.bvp.terms import CableState, CableTerm, term_outputs
+from skcable.bvp.terms import CableState, CableTerm
 from skcable.cable._catenary import catenary
 from skcable.cable._parabola import parabola
 from skcable.errors import InputError
@@ -513,10 +513,7 @@ class BVPSolution(FiniteElementSolution):
             slope = np.tan(out["angle"])
             m = unstretched_measure(slope, self.H, self.EA)[0]
             state = CableState(x, y, None, np.array([np.ones_like(x), slope]) / m, out["tension"])
-            out["outputs"] = {
-                name: np.moveaxis(v, 0, -1) if np.ndim(v) > 1 else v
-                for name, v in term_outputs(problem.terms, state).items()
-            }
+            out["outputs"] = sampled_outputs(problem.terms, state)
         return out
 
     def weight_per_length(self, x, slope):

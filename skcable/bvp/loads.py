@@ -21,15 +21,10 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from skcable._checks import positive, scalar
+from skcable._checks import positive_scalar, scalar
 from skcable.errors import InputError
 
 __all__ = ["DeckLoad", "DistributedLoad", "PointLoad", "SelfWeight", "unstretched_measure"]
-
-
-def _positive_scalar(name, value) -> float:
-    """One finite number > 0 (a load intensity is one number, not an array)."""
-    return positive(name, scalar(name, value))
 
 
 def unstretched_measure(slope, H, EA):
@@ -43,13 +38,18 @@ def unstretched_measure(slope, H, EA):
 
 
 @dataclass(frozen=True)
-class SelfWeight:
-    """Weight ``w`` (N/m) per unit unstretched cable length, downward."""
+class _Uniform:
+    """A uniform load ``w`` (N/m), one number > 0."""
 
     w: float
 
     def __post_init__(self):
-        object.__setattr__(self, "w", _positive_scalar("w", self.w))
+        object.__setattr__(self, "w", positive_scalar("w", self.w))
+
+
+@dataclass(frozen=True)
+class SelfWeight(_Uniform):
+    """Weight ``w`` (N/m) per unit unstretched cable length, downward."""
 
     def graph_terms(self, x, slope, H, EA):
         f, df_ds, df_dh = unstretched_measure(slope, H, EA)
@@ -57,13 +57,8 @@ class SelfWeight:
 
 
 @dataclass(frozen=True)
-class DeckLoad:
+class DeckLoad(_Uniform):
     """Load ``w`` (N/m) per unit horizontal length, downward (a deck on hangers)."""
-
-    w: float
-
-    def __post_init__(self):
-        object.__setattr__(self, "w", _positive_scalar("w", self.w))
 
     def graph_terms(self, x, slope, H, EA):
         zero = np.zeros_like(slope)

@@ -14,15 +14,9 @@ hyperbolic angle at mid-span :math:`m`, where :math:`u_A = m - z`,
 .. math:: \sinh m = \frac{dh}{\mathrm{span}}\,\frac{z}{\sinh z}, \qquad
           S^2 - dh^2 = 4a^2\sinh^2 z, \qquad S = 2a\sinh z\cosh m.
 
-The "fourth equation" (the lecture notes "Cables") is one of: unstretched ``length``, ``sag``
-(largest vertical distance chord–cable), horizontal tension ``H``, ``low``
-(y of the vertex relative to A; it must lie below both supports, so the
-vertex lies inside the span and is the cable's lowest point) or ``T_max``
-(tension at the higher support, Goicolea (2012) §3.4.1: a counterweight over a
-pulley). Given the length,
-``sinh(z)/z = sqrt(S² − dh²)/span`` is solved by Newton's method on
-``log(sinh z / z)``, which is increasing and convex in z: started from an
-upper bound it converges monotonically, with no bracket and no fallback.
+The "fourth equation" (the lecture notes "Cables") is one of the constraints of `catenary`.
+Given the length, ``sinh(z)/z = sqrt(S² − dh²)/span`` is solved as `skcable.cable._hanging`
+says (Halley's method on ``log(sinh z / z)``, increasing and convex in z).
 """
 
 from __future__ import annotations
@@ -39,7 +33,7 @@ from skcable._xp import namespace, power_of_two_near, scalar_math
 from skcable.cable import _catenary_batch as _batch
 from skcable.cable._hanging import RHO_LIMIT as _RHO_LIMIT
 from skcable.cable._hanging import Z_LIMIT, Z_MIN, excess, z_of_excess
-from skcable.cable._roots import find_root
+from skcable.cable._roots import LOG_XTOL, find_root
 from skcable.cable._special import (
     ldexp_sum,
     log_cosh,
@@ -264,15 +258,6 @@ class Catenary(CableSolution):
         with float_range("x", "T(x)"):
             return finite_at("x", self.H * xp.cosh(u), "T(x)")
 
-    def weight_per_length(self, x, slope):
-        return self.w + 0.0 * slope
-
-    def _arc(self, s):
-        """``s`` checked to lie in [0, length]."""
-        s = real("s", s)
-        require("s", (s >= 0) & (s <= self.length), "must lie in [0, length]", s)
-        return s
-
     def xy(self, s):
         r"""Positions ``(..., 2)`` (m) at unstretched arc length ``s`` (m) from A, in [0, length].
 
@@ -354,10 +339,8 @@ def lowest_point_y(u_a, u_b, y_vertex, dh):
 
 
 def finite_at(name, value, what):
-    if isinstance(value, np.ndarray):
-        if not np.isfinite(value).all():
-            raise InputError(name, f"is so far outside the span that {what} overflows a float")
-    elif not math.isfinite(value):
+    """``value``, refused naming ``name`` unless finite (``what`` overflows)."""
+    if not (np.isfinite(value).all() if isinstance(value, np.ndarray) else math.isfinite(value)):
         raise InputError(name, f"is so far outside the span that {what} overflows a float")
     return value
 
@@ -442,12 +425,8 @@ def _z_from_sag(span, dh, sag):
         f"is too large: span/(2a) would exceed {_Z_MAX:g}, beyond the range this closed form evaluates",
         sag,
     )
-    logz, history = find_root(f, lo, hi, (s, ratio), what="catenary(sag=...)", xtol=_LOG_XTOL)
+    logz, history = find_root(f, lo, hi, (s, ratio), what="catenary(sag=...)", xtol=LOG_XTOL)
     return np.exp(logz), history
-
-
-#: Absolute tolerance of roots sought in log space: a relative one on the quantity.
-_LOG_XTOL = 4.0 * np.finfo(float).eps
 
 
 def _z_from_low(span, dh, low):
@@ -482,7 +461,7 @@ def _z_from_low(span, dh, low):
         f"is so deep below the supports that span/(2a) exceeds {_Z_LIMIT:g} (cosh overflows a float)",
         low,
     )
-    t, history = find_root(f, lo, hi, args, what="catenary(low=...)", xtol=_LOG_XTOL)
+    t, history = find_root(f, lo, hi, args, what="catenary(low=...)", xtol=LOG_XTOL)
     return z_p * xp.exp(t), history
 
 
@@ -535,7 +514,7 @@ def _z_from_T_max(span, dh, w, T_max, branch):
         hi,
         (s, log_target),
         what="catenary(T_max=...)",
-        xtol=_LOG_XTOL,
+        xtol=LOG_XTOL,
     )
     return 0.5 * xp.exp(-t), history
 
@@ -608,12 +587,30 @@ def _range(value):
     return _MIN(value, axis=None), _MAX(value, axis=None)  # the ufuncs' reductions, unwrapped
 
 
-def _floats_of_shape(shape, *values):
-    """Each of ``values`` is a Python float or a float64 array of ``shape``."""
-    return all(
-        isinstance(v, float) or (type(v) is np.ndarray and v.dtype == np.float64 and v.shape == shape)
-        for v in values
-    )
+def _array_ranges(span, dh, w, value):
+    """``(min, max)`` of ``span``, ``value``, ``w`` and ``dh`` when ``span`` and ``value`` are
+    float64 arrays of one shape and ``dh``, ``w`` Python floats or float64 arrays of that shape
+    (the vectorised paths' data), else None."""
+    shape = span.shape
+    if not (span.dtype == value.dtype == np.float64 and span.size):
+        return None
+    for v in (value, dh, w):
+        if not (
+            isinstance(v, float) or (type(v) is np.ndarray and v.dtype == np.float64 and v.shape == shape)
+        ):
+            return None
+    return tuple(map(_range, (span, value, w, dh)))
+
+
+def _batch_solution(span, dh, w, constraint, done, extra=None):
+    """The `Catenary` of the vectorised pass ``done`` (`skcable.cable._catenary_batch`), or None
+    where its residual or a result the residual does not evaluate fails (the general path then
+    names the argument)."""
+    if done is None or not done[0] <= ACCEPT:
+        return None
+    results = done[1] if extra is None else {**done[1], **extra}
+    solution = Catenary._of_batch(span, dh, w, constraint, results, span.shape)
+    return solution if solution.finite_beyond_residual() else None
 
 
 def _H_on_arrays(span, dh, w, H):
@@ -628,10 +625,10 @@ def _H_on_arrays(span, dh, w, H):
     ``z = fl(fl(span/a)/2)`` lies between ``fl(fl(span_min/a_max)/2)`` and
     ``fl(fl(span_max/a_min)/2)``: the bounds of ``z`` are tested on these (where they are too
     wide, the general path tests every element)."""
-    shape = span.shape
-    if not (span.dtype == H.dtype == np.float64 and span.size and _floats_of_shape(shape, H, dh, w)):
+    ranges = _array_ranges(span, dh, w, H)
+    if ranges is None:
         return None
-    (span_lo, span_hi), (H_lo, H_hi), (w_lo, w_hi), (dh_lo, dh_hi) = map(_range, (span, H, w, dh))
+    (span_lo, span_hi), (H_lo, H_hi), (w_lo, w_hi), (dh_lo, dh_hi) = ranges
     if not (0.0 < span_lo and span_hi < _INF and 0.0 < H_lo and H_hi < _INF and 0.0 < w_lo and w_hi < _INF):
         return None
     if not -_INF < dh_lo <= dh_hi < _INF:
@@ -652,12 +649,7 @@ def _H_on_arrays(span, dh, w, H):
     z *= 0.5  # = 0.5 * span / a: halving is exact
     flat = [v if isinstance(v, float) else v.reshape(-1) for v in (span, dh, w, a, z, H)]
     with np.errstate(all="ignore"):  # a NaN or inf fails the residual: the general path then names it
-        done = _batch.of_H(*flat)
-        if done is None or not done[0] <= ACCEPT:
-            return None
-        results = {**done[1], "a": a, "z": z}
-        solution = Catenary._of_batch(span, dh, w, ("H", H[()]), results, shape)
-        return solution if solution.finite_beyond_residual() else None
+        return _batch_solution(span, dh, w, ("H", H[()]), _batch.of_H(*flat), {"a": a, "z": z})
 
 
 #: Bounds of the data the vectorised ``length=`` path takes: within them every square and
@@ -675,12 +667,10 @@ def _length_on_arrays(span, dh, w, length):
 
     The argument checks fused into two reductions an argument; the data held within
     `_NORMAL_RANGE` (else the general path)."""
-    shape = span.shape
-    if not (
-        span.dtype == length.dtype == np.float64 and span.size and _floats_of_shape(shape, length, dh, w)
-    ):
+    ranges = _array_ranges(span, dh, w, length)
+    if ranges is None:
         return None
-    (span_lo, span_hi), (L_lo, L_hi), (w_lo, w_hi), (dh_lo, dh_hi) = map(_range, (span, length, w, dh))
+    (span_lo, span_hi), (L_lo, L_hi), (w_lo, w_hi), (dh_lo, dh_hi) = ranges
     tiny, huge = _NORMAL_RANGE
     if not (tiny < span_lo and span_hi < huge and tiny < L_lo and L_hi < huge and 0.0 < w_lo and w_hi < _INF):
         return None
@@ -689,10 +679,7 @@ def _length_on_arrays(span, dh, w, length):
     s, d, wf, L = (v if isinstance(v, float) else v.reshape(-1) for v in (span, dh, w, length))
     with np.errstate(all="ignore"):  # a NaN or inf fails the residual: the general path then names it
         done = _batch.of_length(s, d, wf, L, (span_lo, span_hi))
-        if done is None or not done[0] <= ACCEPT:
-            return None
-        solution = Catenary._of_batch(span, dh, w, ("length", length[()]), done[1], shape)
-        return solution if solution.finite_beyond_residual() else None
+        return _batch_solution(span, dh, w, ("length", length[()]), done)
 
 
 def hanging(span, dh, w, length) -> Catenary:
@@ -729,10 +716,8 @@ def catenary(span, dh, w, *, length=None, sag=None, H=None, low=None, T_max=None
     Returns
     -------
     Catenary
-        ``H, V_A, V_B, T_A, T_B, length, sag``, the lowest point of the cable
-        ``x_low, y_low`` (a support when the vertex lies outside the span),
-        the vertex ``x_vertex, y_vertex``, and ``y(x)``, ``T(x)``,
-        ``slope(x)``, ``residual()``; arrays when inputs are.
+        Its attributes (arrays when inputs are) and ``y(x)``, ``T(x)``, ``slope(x)``,
+        ``residual()``.
 
     Raises
     ------
@@ -751,21 +736,13 @@ def catenary(span, dh, w, *, length=None, sag=None, H=None, low=None, T_max=None
     >>> round(float(c.H), 1), round(float(c.x_low), 2)
     (85819.2, 507.11)
     """
-    if length is not None and sag is None and H is None and low is None and T_max is None:
+    if length is not None and sag is H is low is T_max is None:  # the length alone
         solution = _length_on_floats(span, dh, w, length)  # one scene of Python numbers
-        if solution is None and type(span) is np.ndarray and type(length) is np.ndarray:
+        if solution is None and type(span) is type(length) is np.ndarray:
             solution = _length_on_arrays(span, dh, w, length)  # arrays of one shape
         if solution is not None:
             return solution
-    elif (
-        H is not None
-        and type(span) is np.ndarray
-        and type(H) is np.ndarray
-        and length is None
-        and sag is None
-        and low is None
-        and T_max is None
-    ):
+    elif H is not None and length is sag is low is T_max is None and type(span) is type(H) is np.ndarray:
         solution = _H_on_arrays(span, dh, w, H)  # arrays of one shape
         if solution is not None:
             return solution

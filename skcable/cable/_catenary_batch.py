@@ -1,28 +1,15 @@
-r"""The vectorised catenary: many spans solved, evaluated and checked in passes that stay in cache.
+"""The vectorised catenary: many spans solved, evaluated and checked in passes that stay in cache.
 
 `skcable.cable.catenary` on float64 arrays of one shape comes here (``length=`` and ``H=``). The
 formulas are those of `skcable.cable._catenary` (H.M. Irvine, *Cable Structures*, 1981, §2.1;
-the lecture notes "Cables", Goicolea 2012, eq. 17): with :math:`z = \mathrm{span}/(2a)` and
-:math:`\sinh z/z = 1 + \rho`, :math:`\rho = \sqrt{S^2 - dh^2}/\mathrm{span} - 1`,
-
-.. math:: \sinh m = \frac{dh}{\mathrm{span}}\,\frac{z}{\sinh z}, \quad
-          V_{A,B} = \mp H\sinh(m \mp z), \quad T_{A,B} = H\cosh(m \mp z), \quad
-          S = 2a\sinh z\cosh m,
-
-and every element is checked by the residual of `skcable.cable._catenary.Catenary` (closure
-through the end tensions, vertical balance, end tensions along their components, the
-constraint met). What changes is the order of the work: the spans are taken in passes of at
-most `CHUNK` elements, and each pass runs the whole pipeline (the excess :math:`\rho`, the
-start, Halley's step, the forces, the residual) in the rows of one block of scratch. A new
-array of 10⁶ floats costs more than the arithmetic on it, and a row of `CHUNK` floats stays
-in the processor's cache from one operation to the next; the peak memory is the results'
-own plus one block.
-
-The root of :math:`g(z) = \log(\sinh z/z) - \operatorname{log1p}\rho` is started from the
-[4/4] Padé approximant of the inverted Maclaurin series (`skcable.cable._hanging.start`,
-within 2.5e-8 below :math:`\rho = 1`), so that one step of Halley's method (E. Halley, 1694;
-cubic convergence) brings it to round-off and the stop test (a relative change below 1e-7)
-passes at once; the few elements that need more steps take them alone.
+Goicolea 2012, eq. 17) and the root of ``sinh(z)/z = 1 + rho`` is found as in
+`skcable.cable._hanging` (the Padé start, then Halley's method), and every element is checked by
+the residual of `skcable.cable._catenary.Catenary`. What changes is the order of the work: the
+spans are taken in passes of at most `CHUNK` elements, and each pass runs the whole pipeline
+(the excess, the start, Halley's step, the forces, the residual) in the rows of one block of
+scratch. A new array of 10⁶ floats costs more than the arithmetic on it, and a row of `CHUNK`
+floats stays in the processor's cache from one operation to the next; the peak memory is the
+results' own plus one block.
 """
 
 from __future__ import annotations

@@ -25,7 +25,7 @@ from functools import cached_property
 import numpy as np
 
 from skcable import _plausible
-from skcable._checks import broadcast, float_range, positive, real, require
+from skcable._checks import broadcast, float_range, positive, real
 from skcable._newton2 import solve2
 from skcable._xp import namespace, scalar_math
 from skcable.cable._answers import check_catenary
@@ -156,8 +156,7 @@ class ElasticCatenary(CableSolution):
 
     def s_of_x(self, x):
         """Material point at abscissa ``x`` in [0, span] (x(s) is increasing)."""
-        x = real("x", x)
-        require("x", (x >= 0) & (x <= self.span), "must lie in [0, span]", x)
+        x = self._abscissa(x)
         x_end = self.x_of_s(self.length)
         x = namespace(x, x_end).minimum(x, x_end)  # x(length) = span up to rounding
         # the parameters go in as arguments: the vectorised search passes them
@@ -179,9 +178,6 @@ class ElasticCatenary(CableSolution):
         """Tension at ``x`` (N)."""
         tv = self._tv(self.s_of_x(x))
         return namespace(tv).hypot(self.H, tv)
-
-    def weight_per_length(self, x, slope):
-        return self.w + 0.0 * slope
 
     def stiffness(self):
         """Fairlead stiffness ``∂(H, V_B)/∂(span, dh)`` with A fixed, shape ``(*shape, 2, 2)``.
@@ -275,34 +271,9 @@ _INF = math.inf
 
 @_plausible.answer(check_catenary)
 def elastic_catenary(span, dh, w, EA, *, length):
-    """Elastic (Irvine) catenary from A = (0, 0) to B = (span, dh).
-
-    Parameters
-    ----------
-    span, dh : float or array_like
-        Horizontal distance A→B (> 0) and height of B above A (m).
-    w : float or array_like
-        Weight per unit *unstretched* length (N/m), > 0.
-    EA : float or array_like
-        Axial stiffness (N), > 0.
-    length : float or array_like
-        Unstretched length (m), > 0; it may be shorter than the chord (the
-        cable then stretches to reach B).
-
-    Returns
-    -------
-    ElasticCatenary
-        ``H, V_A, V_B, T_A, T_B, length`` (unstretched), ``stretched_length``,
-        ``sag``, the lowest point ``x_low, y_low``, the vertex ``x_vertex,
-        y_vertex``, ``y(x), T(x), slope(x), residual()``, ``stiffness()``.
-
-    Raises
-    ------
-    InputError
-        A non-physical argument, named.
-    ConvergenceError
-        Newton stalled; the error carries the residual history.
-    """
+    """Elastic (Irvine) catenary from A = (0, 0) to B = (span, dh), free of any seabed: the
+    `ElasticCatenary` of `skcable.cable.elastic_catenary` without ``seabed`` (its parameters,
+    returns and errors)."""
     span = positive("span", span)
     dh = real("dh", dh)
     w = positive("w", w)

@@ -31,8 +31,8 @@ from skcable._checks import positive, real, require, scalar, whole
 from skcable._newton2 import solve2
 from skcable._show import Shown, counted, quantity
 from skcable._xp import power_of_two_near
-from skcable.cable.solution import ACCEPT
-from skcable.errors import ConvergenceError, InputError
+from skcable.cable.solution import ACCEPT, checked
+from skcable.errors import InputError
 
 __all__ = ["Funicular", "FunicularVertical", "funicular", "funicular_vertical"]
 
@@ -52,19 +52,7 @@ def _closure(tx, ty, offsets, L, target, total):
     units = forces / norms[:, None]
     error = (units.T @ L - target) / total
     jac = np.einsum("j,jab->ab", L / norms, np.eye(2) - units[:, :, None] * units[:, None, :]) / total
-    return (
-        float(error[0]),
-        float(error[1]),
-        float(jac[0, 0]),
-        float(jac[0, 1]),
-        float(jac[1, 0]),
-        float(jac[1, 1]),
-        1.0,
-        1.0,
-        forces,
-        norms,
-        units,
-    )
+    return (*(float(v) for v in (*error, *jac.ravel())), 1.0, 1.0, forces, norms, units)
 
 
 def _finite(name, what, *arrays):
@@ -73,18 +61,30 @@ def _finite(name, what, *arrays):
             raise InputError(name, f"gives {what} outside the range of a float (the data are too extreme)")
 
 
-def _accept(solution, history, accept=ACCEPT):
-    residual = solution.residual()
-    if not residual <= accept:
-        raise ConvergenceError(
-            f"{type(solution).__name__}: residual {residual:.3e} above {accept:.0e} after the solver stopped",
-            history,
-        )
-    return solution
+def _pairs(loads, what):
+    """``loads`` as an array of shape (n, 2) of ``what`` pairs (n may be 0)."""
+    loads = np.atleast_1d(real("loads", loads))
+    if loads.size == 0:
+        return np.zeros((0, 2))
+    if loads.ndim == 1 and loads.size == 2:
+        loads = loads.reshape(1, 2)
+    if loads.ndim != 2 or loads.shape[1] != 2:
+        raise InputError("loads", f"must be {what} pairs, an array of shape (n, 2); got shape {loads.shape}")
+    return loads
+
+
+class _Polygon(Shown):
+    """What both polygons share: their VTK output."""
+
+    def to_vtk(self, path):
+        """Write the polygon as VTK (see `skcable.io.funicular_mesh`); returns the path."""
+        from skcable.io import funicular_mesh, write
+
+        return write(funicular_mesh(self), path)
 
 
 @dataclass(frozen=True)
-class Funicular(Shown):
+class Funicular(_Polygon):
     """Solution of `funicular`.
 
     Attributes
@@ -123,12 +123,6 @@ class Funicular(Shown):
             )
         )
         return f"Funicular({counted([len(self.T)], 'segment')}: {shown})"
-
-    def to_vtk(self, path):
-        """Write the polygon as VTK (see `skcable.io.funicular_mesh`); returns the path."""
-        from skcable.io import funicular_mesh, write
-
-        return write(funicular_mesh(self), path)
 
     def residual(self) -> float:
         """Largest relative residual: joint equilibrium (relative to the
@@ -198,15 +192,7 @@ def funicular(B, lengths, loads, *, tol: float = 1e-13, max_iter: int = 100) -> 
     B = real("B", B)
     require("B", np.shape(B) == (2,), "must be a point (x, y)", 0.0)
     lengths = positive("lengths", np.atleast_1d(real("lengths", lengths)))
-    loads = np.atleast_1d(real("loads", loads))
-    if loads.size == 0:
-        loads = np.zeros((0, 2))
-    if loads.ndim == 1 and loads.size == 2:
-        loads = loads.reshape(1, 2)
-    if loads.ndim != 2 or loads.shape[1] != 2:
-        raise InputError(
-            "loads", f"must be (Px, Py) pairs, an array of shape (n, 2); got shape {loads.shape}"
-        )
+    loads = _pairs(loads, "(Px, Py)")
     if lengths.ndim != 1 or len(lengths) != len(loads) + 1:
         raise InputError(
             "lengths", f"need one more segment than loads: {len(lengths)} segments, {len(loads)} loads"
@@ -248,11 +234,11 @@ def funicular(B, lengths, loads, *, tol: float = 1e-13, max_iter: int = 100) -> 
     require("loads", T > 0, "are so small that the segment forces underflow", T)
     angles = np.arctan2(forces[:, 1], forces[:, 0])
     solution = Funicular(T, angles, nodes, forces, loads, lengths, history)
-    return _accept(solution, history, max(ACCEPT, 2.0 * tol))
+    return checked(solution, history, max(ACCEPT, 2.0 * tol))
 
 
 @dataclass(frozen=True)
-class FunicularVertical(Shown):
+class FunicularVertical(_Polygon):
     """Solution of `funicular_vertical`.
 
     Attributes
@@ -289,12 +275,6 @@ class FunicularVertical(Shown):
             )
         )
         return f"FunicularVertical({counted([len(self.T)], 'segment')}: {shown})"
-
-    def to_vtk(self, path):
-        """Write the polygon as VTK (see `skcable.io.funicular_mesh`); returns the path."""
-        from skcable.io import funicular_mesh, write
-
-        return write(funicular_mesh(self), path)
 
     def residual(self) -> float:
         """Largest relative residual, each term divided by the size of what cancels in it.
@@ -371,13 +351,7 @@ def funicular_vertical(span, dh, loads, *, through=None, H=None) -> FunicularVer
     span = scalar("span", span)
     require("span", span > 0, "must be > 0", span)
     dh = scalar("dh", dh)
-    loads = np.atleast_1d(real("loads", loads))
-    if loads.size == 0:
-        loads = np.zeros((0, 2))
-    if loads.ndim == 1 and loads.size == 2:
-        loads = loads.reshape(1, 2)
-    if loads.ndim != 2 or loads.shape[1] != 2:
-        raise InputError("loads", f"must be (x, P) pairs, an array of shape (n, 2); got shape {loads.shape}")
+    loads = _pairs(loads, "(x, P)")
     if (through is None) == (H is None):
         raise InputError("constraint", "give exactly one of through=(x, y) and H")
     x, inverse = np.unique(loads[:, 0], return_inverse=True)  # sorted; coincident loads summed
@@ -426,4 +400,4 @@ def funicular_vertical(span, dh, loads, *, through=None, H=None) -> FunicularVer
     _finite("loads", "the reactions and tensions", V_A, V_B, T)
     require("loads", T > 0, "are so small that the tensions underflow", T)
     solution = FunicularVertical(H, V_A, V_B, T, nodes, np.column_stack([x, P]), constraint)
-    return _accept(solution, [])
+    return checked(solution, [])

@@ -32,7 +32,7 @@ import numpy as np
 from skcable._checks import broadcast, exactly_one, float_range, positive, real, require
 from skcable._xp import namespace, power_of_two_near
 from skcable.cable._catenary import finite_at, lowest_point_y
-from skcable.cable._roots import find_root
+from skcable.cable._roots import LOG_XTOL, find_root
 from skcable.cable._special import asinh_step
 from skcable.cable.solution import CableSolution, checked_closed_form, matrix_2x2
 from skcable.errors import InputError
@@ -220,8 +220,7 @@ class Parabola(CableSolution):
     def x_of_s(self, s):
         """Abscissa (m) of the point at arc length ``s`` (m) from A, in [0, length] (a root of
         the increasing `s_of_x`)."""
-        s = real("s", s)
-        require("s", (s >= 0) & (s <= self.length), "must lie in [0, length]", s)
+        s = self._arc(s)
         s = namespace(s).minimum(s, self.s_of_x(self.span))  # the length up to rounding
         args = (s, self.a, self.p_A)
         x, _ = find_root(_arc_length_minus, 0.0, self.span * (1.0 + 1e-9), args, what="x_of_s")
@@ -322,12 +321,9 @@ def _a_from_length(span, dh, length):
     # at lo the end slopes differ by 2·_DELTA_MAX: far more excess than asked
     lo = xp.log(span / (2.0 * _DELTA_MAX * a_guess))
     t, history = find_root(
-        f, lo, 40.0, (span, slope, excess, a_guess), what="parabola(length=...)", xtol=_LOG_XTOL
+        f, lo, 40.0, (span, slope, excess, a_guess), what="parabola(length=...)", xtol=LOG_XTOL
     )
     return a_guess * namespace(t).exp(t) * unit, history
-
-
-_LOG_XTOL = 4.0 * np.finfo(float).eps
 
 
 def _a_from_T_max(span, dh, tau, T_max):
@@ -367,12 +363,8 @@ def parabola(span, dh, w, *, length=None, sag=None, H=None, low=None, T_max=None
 
     Raises
     ------
-    InputError
-        A non-physical argument (named), not exactly one constraint, arrays
-        that do not broadcast, or data so extreme that a result would leave
-        the range of a float.
-    ConvergenceError
-        The length search stopped, or the residual exceeds 1e-9.
+    InputError, ConvergenceError
+        As `catenary` (here the length search is the solver that may stop).
 
     Examples
     --------

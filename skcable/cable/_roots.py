@@ -13,6 +13,11 @@ import numpy as np
 
 from skcable.errors import ConvergenceError
 
+__all__ = ["LOG_XTOL", "find_root"]
+
+#: The ``xtol`` of a root sought in log space: a few ulps of one, a relative tolerance on the quantity.
+LOG_XTOL = 4.0 * np.finfo(float).eps
+
 
 def find_root(f, lo, hi, args=(), *, what: str = "root", xtol: float | None = None):
     """Root of the monotone ``f(x, *args)`` in ``[lo, hi]``, elementwise.

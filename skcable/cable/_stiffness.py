@@ -12,20 +12,11 @@ In series with the elastic stiffness :math:`k_E = EA/S`:
 :math:`1/k = 1/k_G + 1/k_E` (Goicolea (2012), footnote 5).
 
 `fairlead_stiffness` gives the full 2×2 matrix :math:`\partial(H, V_B)/\partial(\mathrm{span}, dh)`
-with A fixed and the (unstretched) length constant. For the catenary, from
-:math:`S^2 = dh^2 + Q^2`, :math:`Q = 2a\sinh z`, :math:`V_B = (wS + w\,dh\coth z)/2`
-and :math:`\sinh m = dh/Q`:
-
-.. math::
-    K = \begin{pmatrix} k_G & k_G \sinh m/\cosh z \\
-        k_G \sinh m/\cosh z & \tfrac{w}{2}\coth z + k_G \sinh^2 m \, z/(\sinh z\cosh z)
-        \end{pmatrix};
-
-for the parabola the same steps on its length :math:`S(a, \mathrm{span}, dh)`;
-for the elastic catenary (H.M. Irvine, "Cable Structures", MIT Press, 1981)
-and the line on the seabed (J.M. Jonkman, "Dynamics modeling and loads
-analysis of an offshore floating wind turbine", NREL, 2007) the inverse of
-the Jacobian of the closure equations (implicit function theorem).
+with A fixed and the (unstretched) length constant, each solution's ``stiffness()``: in closed
+form for the catenary (`Catenary.stiffness`) and the parabola; for the elastic catenary (H.M.
+Irvine, "Cable Structures", MIT Press, 1981) and the line on the seabed (J.M. Jonkman,
+"Dynamics modeling and loads analysis of an offshore floating wind turbine", NREL, 2007) the
+inverse of the Jacobian of the closure equations (implicit function theorem).
 """
 
 from __future__ import annotations
@@ -68,18 +59,14 @@ def geometric_stiffness(solution, *, EA=None):
         Not a catenary or parabola, a bad ``EA``, or a stiffness beyond the
         range of a float.
     """
-    if _is_elastic(solution):
+    if isinstance(solution, (ElasticCatenary, SeabedCatenary)):
         if EA is not None:
             raise InputError("EA", "the elastic solution has its own EA; leave EA out")
         k = fairlead_stiffness(solution)[..., 0, 0]
         return _representable("solution", float(k) if k.ndim == 0 else k, "dH/dspan")
-    if isinstance(solution, (Catenary, Parabola)):
-        k_g = solution.k_G
-    else:
-        raise InputError(
-            "solution",
-            f"must be a Catenary, Parabola, ElasticCatenary or SeabedCatenary, got {type(solution).__name__}",
-        )
+    if not isinstance(solution, (Catenary, Parabola)):
+        raise _not_a_solution(solution)
+    k_g = solution.k_G
     _representable("solution", k_g, "k_G")
     if EA is None:
         return k_g
@@ -92,8 +79,9 @@ def geometric_stiffness(solution, *, EA=None):
     return small / (1.0 + small / large)
 
 
-def _is_elastic(solution):
-    return isinstance(solution, (ElasticCatenary, SeabedCatenary))
+def _not_a_solution(solution):
+    kinds = "a Catenary, Parabola, ElasticCatenary or SeabedCatenary"
+    return InputError("solution", f"must be {kinds}, got {type(solution).__name__}")
 
 
 def fairlead_stiffness(solution):
@@ -116,13 +104,9 @@ def fairlead_stiffness(solution):
     InputError
         Another kind of solution, or a stiffness beyond the range of a float.
     """
-    if callable(getattr(solution, "stiffness", None)):  # any solution of the result protocol
-        k = solution.stiffness()
-    else:
-        raise InputError(
-            "solution",
-            f"must be a Catenary, Parabola, ElasticCatenary or SeabedCatenary, got {type(solution).__name__}",
-        )
+    if not callable(getattr(solution, "stiffness", None)):  # any solution of the result protocol
+        raise _not_a_solution(solution)
+    k = solution.stiffness()
     if not np.isfinite(k).all():  # zeros are legitimate here (dh = 0 decouples H and V_B)
         raise InputError("solution", "gives the stiffness outside the range of a float (over- or underflow)")
     return k

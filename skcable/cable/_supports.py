@@ -19,7 +19,7 @@ from skcable import _plausible
 from skcable._checks import broadcast, float_range, positive, real, require, scalar
 from skcable._xp import namespace
 from skcable.cable._catenary import Catenary, catenary
-from skcable.cable._roots import find_root
+from skcable.cable._roots import LOG_XTOL, find_root
 from skcable.cable._special import asinh_step, log_cosh
 from skcable.cable.solution import ACCEPT
 from skcable.errors import ConvergenceError, InputError
@@ -151,25 +151,10 @@ class SlidingLoad:
     P: float
     length: float
 
-    @property
-    def H(self):
-        return self.arc.H
-
-    @property
-    def V_A(self):
-        return self.arc.V_A
-
-    V_B = V_A
-
-    @property
-    def T_A(self):
-        return self.arc.T_A
-
-    T_B = T_A
-
-    @property
-    def y_load(self):
-        return self.arc.dh
+    H = property(lambda self: self.arc.H)
+    V_A = V_B = property(lambda self: self.arc.V_A)
+    T_A = T_B = property(lambda self: self.arc.T_A)
+    y_load = property(lambda self: self.arc.dh)
 
     def residual(self) -> float:
         """Arc residual, load-point equilibrium and total length, relative."""
@@ -228,7 +213,7 @@ def sliding_load(span, w, length, P) -> SlidingLoad:
             raise InputError(
                 "length", "is so close to the span that the arcs cannot be found in floating point"
             )
-        t, history = find_root(f, lo, hi, logs, what="sliding_load", xtol=4.0 * np.finfo(float).eps)
+        t, history = find_root(f, lo, hi, logs, what="sliding_load", xtol=LOG_XTOL)
         a = half * math.exp(t)
         u_c = -float(_asinh_exp(logs[2] - logs[0] - t))
         h = half / a

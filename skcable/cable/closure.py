@@ -23,28 +23,11 @@ loads analysis of an offshore floating wind turbine", NREL, 2007).
 
 This module is that closure, once, for every model that closes a line on it: the cables'
 `elastic_catenary`, the lines on a seabed (`skcable.cable.seabed`), each segment of a
-multi-segment line and their batch (`skcable.mooring.segments`), and the check of the
-conductors' change of state (`skcable.conductors`, whose own solve in the hyperbolic
-half-angle is checked here):
-
-- `hanging`: the run and rise of a hanging piece and their Jacobian in ``(H, V_b)`` and ``L``;
-  `closure`: the same as the closure of a free segment in `skcable._newton2.solve2`'s form;
-  `positions`: the run and rise at any ``s``; `stretched_length`;
-- `grounded`: the stretch of a grounded piece under friction, `tensioned` its loaded length;
-  `anchor_part`, `hanging_length`: the parts hanging from an anchor above the seabed and
-  vertically (``H = 0``);
-- `segment`: the closure in the upper end's forces ``(H, V)`` of one segment hanging or
-  resting on a seabed through its anchor; `on_seabed` / `grounded_closure`: of one resting on
-  it from its anchor or from a first touchdown; `on_slope`: on a sloped seabed, in
-  ``(H, L_B)``;
-- `check`, `check_into`: the closure evaluated by other formulas than the solves' (the arc as
-  a logarithm, the rise through :math:`\tanh(A/2)`), so that a check never shares the round-off
-  of the solve it checks; `check_into` is its form in place on many spans (the conductors' 10⁴
-  spans × states, where a new array costs more than the arithmetic on it), with
-  `stretched_length_into` from its rows.
-
-Every function but the ``*_into`` ones takes Python floats or NumPy arrays, one source for both:
-``xp`` is the back end (`skcable._xp.namespace`: ``scalar_math`` for floats, ``numpy``).
+multi-segment line (`skcable.mooring.segments`) and the check of the conductors' change of
+state (`skcable.conductors`). `check` and `check_into` evaluate it by other formulas than the
+solves', so that a check never shares the round-off of the solve it checks. Every function but
+the ``*_into`` ones (in place on many spans) takes Python floats or NumPy arrays: ``xp`` is the
+back end (`skcable._xp.namespace`: ``scalar_math`` for floats, ``numpy``).
 """
 
 from __future__ import annotations
@@ -143,9 +126,7 @@ def hanging(H, Vb, w, EA, L, xp=scalar_math):
         ``x, y, x_H, x_V, y_V, x_L, y_L, T_b, T_t``: the run and rise, ``∂x/∂H``,
         ``∂x/∂V_b`` (= ``∂y/∂H``), ``∂y/∂V_b``, ``∂x/∂L``, ``∂y/∂L`` and the end tensions (N).
     """
-    q, d = Vb / H, w * L / H
-    p = q + d
-    rq, rp = xp.hypot(1.0, q), xp.hypot(1.0, p)
+    q, d, p, rq, rp = end_ratios(H, Vb, w, L, xp)
     rsum, rr = rp + rq, rp * rq
     if xp is np:
         S, A = asinh_step_parts(q, d, p, rq, rp, np)

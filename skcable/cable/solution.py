@@ -1,9 +1,4 @@
-"""Common interface of every suspended-cable solution.
-
-Conventions: x to the right, y up, support A at (0, 0),
-support B at (span, dh); distributed loads w > 0 act downward; H > 0 is the
-horizontal tension; V_A, V_B are the upward support reactions. Any
-consistent unit system works (SI by default: m, N, N/m).
+"""Common interface of every suspended-cable solution (conventions: `skcable.cable`).
 
 Every solver broadcasts over its arguments: a solution holds scalars for
 scalar input, arrays for array input, and its methods broadcast ``x``
@@ -23,10 +18,11 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
-from skcable._checks import whole
+from skcable._checks import real, require, whole
 from skcable._show import Shown, counted, quantity
 from skcable._xp import PicklesBackend, namespace
 from skcable.cable._special import largest_abs
+from skcable.cable.arc_samples import arc_samples
 from skcable.errors import ConvergenceError, InputError
 from skcable.results import ProfileMixin
 
@@ -98,6 +94,18 @@ class CableSolution(PicklesBackend, Shown):
     def H_B(self):
         """Horizontal tension at B (N): ``H``, the same all along under vertical loads."""
         return self.H
+
+    def _arc(self, s):
+        """``s`` checked to lie in [0, length]."""
+        s = real("s", s)
+        require("s", (s >= 0) & (s <= self.length), "must lie in [0, length]", s)
+        return s
+
+    def _abscissa(self, x):
+        """``x`` checked to lie in [0, span]."""
+        x = real("x", x)
+        require("x", (x >= 0) & (x <= self.span), "must lie in [0, span]", x)
+        return x
 
     def xy(self, s):  # pragma: no cover - abstract
         """Positions ``(..., 2)`` (m) at unstretched arc length ``s`` (m) from A."""
@@ -178,16 +186,12 @@ class CableSolution(PicklesBackend, Shown):
         x = np.linspace(0.0, float(self.span), whole("n", n, 2))
         slope = np.asarray(self.slope(x), dtype=float)
         weight = np.broadcast_to(self.weight_per_length(x, slope), x.shape)
-        return {
-            "xy": np.column_stack([x, self.y(x)]),
-            "tension": np.asarray(self.T(x), dtype=float),
-            "angle": np.arctan(slope),
-            "load": np.column_stack([np.zeros_like(x), -weight]),
-        }
+        return arc_samples(x, self.y(x), self.T(x), np.arctan(slope), weight)
 
-    def weight_per_length(self, x, slope):  # pragma: no cover - abstract
-        """Downward distributed load per unit unstretched cable length (N/m) at ``x``."""
-        raise NotImplementedError
+    def weight_per_length(self, x, slope):
+        """Downward distributed load per unit unstretched cable length (N/m) at ``x``: ``w``, the
+        weight of the forms under their own weight (the others say theirs)."""
+        return self.w + 0.0 * slope
 
     def to_vtk(self, path, n: int = 201, *, point_data=None):
         """Write the profile as a VTK polyline (see `skcable.io.cable_mesh`, which also takes the
@@ -255,12 +259,12 @@ def _shown(solution) -> tuple[str, ...]:
     return tuple(name for name in _SHOWN if name in own or hasattr(cls, name))
 
 
-def checked(solution: CableSolution, history=()) -> CableSolution:
-    """Return ``solution`` if its residual is below `ACCEPT`, else raise."""
+def checked(solution, history=(), accept: float = ACCEPT):
+    """Return ``solution`` if its residual is below ``accept`` (`ACCEPT`), else raise."""
     residual = solution.residual()
-    if not residual <= ACCEPT:
+    if not residual <= accept:
         raise ConvergenceError(
-            f"{type(solution).__name__}: residual {residual:.3e} above {ACCEPT:.0e} after the solver stopped",
+            f"{type(solution).__name__}: residual {residual:.3e} above {accept:.0e} after the solver stopped",
             history,
         )
     return solution

@@ -27,7 +27,7 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
-from skcable._checks import nonnegative, positive, scalar
+from skcable._checks import nonnegative, positive, positive_scalar
 from skcable.conductors._damping import foti_damping, self_damping
 from skcable.conductors._fatigue import WohlerCurve, clamp_amplitude, miner_damage, poffenberger_swart
 from skcable.conductors._wind import WIND_MODELS, wind_band, wind_power
@@ -143,8 +143,8 @@ def aeolian_amplitude(f, diameter, mass, tension, damping: Callable, *, model: s
     """
     single = np.ndim(f) == 0
     f = np.atleast_1d(positive("f", f)).astype(float)
-    diameter = positive("diameter", scalar("diameter", diameter))
-    mass, tension = positive("mass", scalar("mass", mass)), positive("tension", scalar("tension", tension))
+    diameter = positive_scalar("diameter", diameter)
+    mass, tension = positive_scalar("mass", mass), positive_scalar("tension", tension)
     if not callable(damping):
         raise InputError("damping", f"must be a callable damping(y, f) -> W/m, got {damping!r:.80}")
     wind_band(model)  # the model's name, checked
@@ -261,7 +261,7 @@ def _clamp_stiffness(clamp_EI, law, axis) -> float:
         if clamp_EI not in ("min", "max"):
             raise InputError("clamp_EI", f"must be 'min', 'max' or a stiffness in N·m², got {clamp_EI!r}")
         return float((law.EI_min if clamp_EI == "min" else law.EI_max)[axis])
-    return positive("clamp_EI", scalar("clamp_EI", clamp_EI))
+    return positive_scalar("clamp_EI", clamp_EI)
 
 
 def _life(f, sigma_a, hours_per_year, curve):
@@ -325,7 +325,7 @@ def aeolian_vibration(
     from skcable.conductors._conductor import STANDARD_GRAVITY, Conductor
     from skcable.strand import LayerSlipLaw
 
-    tension = positive("tension", scalar("tension", tension))
+    tension = positive_scalar("tension", tension)
     f = np.atleast_1d(positive("frequencies", frequencies)).astype(float)
     if not isinstance(wind, str) or wind not in WIND_MODELS:
         raise InputError("wind", f"must be one of {WIND_MODELS}, got {wind!r}")

@@ -17,7 +17,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from skcable._checks import positive, scalar
+from skcable._checks import positive_scalar
 from skcable.errors import InputError
 
 __all__ = ["MODELS", "RTOL", "Choice", "choose", "check_model"]
@@ -55,7 +55,7 @@ def check_model(model, rtol):
         if rtol is not None:
             raise InputError("rtol", f"applies to model='auto' only (the model is {model!r})")
         return model, None
-    return model, RTOL if rtol is None else positive("rtol", scalar("rtol", rtol))
+    return model, RTOL if rtol is None else positive_scalar("rtol", rtol)
 
 
 def choose(model, rtol, parabola_error, n) -> Choice:

@@ -51,7 +51,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from skcable._checks import broadcast, nonnegative, positive, real, scalar
+from skcable._checks import broadcast, nonnegative, positive_scalar, real, scalar
 from skcable._show import Shown
 from skcable.cable._elastic import elastic_catenary_unchecked as elastic_catenary
 from skcable.conductors._inputs import normal
@@ -64,12 +64,6 @@ __all__ = ["Conductor", "STANDARD_GRAVITY", "ICE_DENSITY"]
 STANDARD_GRAVITY = 9.80665
 #: Density of pure ice at 0 °C (kg/m³), the default for glaze ice.
 ICE_DENSITY = 917.0
-
-
-def _positive_scalar(name, value) -> float:
-    value = scalar(name, value)
-    positive(name, value)
-    return value
 
 
 @dataclass(frozen=True)
@@ -113,14 +107,14 @@ class Conductor(Shown):
 
     def __post_init__(self):
         values = dict(
-            EA=_positive_scalar("EA", self.EA),
-            w=_positive_scalar("w", self.w),
+            EA=positive_scalar("EA", self.EA),
+            w=positive_scalar("w", self.w),
             alpha=scalar("alpha", self.alpha),
-            diameter=_positive_scalar("diameter", self.diameter),
-            rts=None if self.rts is None else _positive_scalar("rts", self.rts),
+            diameter=positive_scalar("diameter", self.diameter),
+            rts=None if self.rts is None else positive_scalar("rts", self.rts),
             rupture_force=None
             if self.rupture_force is None
-            else _positive_scalar("rupture_force", self.rupture_force),
+            else positive_scalar("rupture_force", self.rupture_force),
         )
         if not isinstance(self.name, str):
             raise InputError("name", f"must be a str, got {self.name!r}")
@@ -175,10 +169,8 @@ class Conductor(Shown):
         Returns
         -------
         Conductor
-            ``EA`` (N) of the intact wires' section, ``w`` (N/m) of every wire, ``alpha``
-            (1/K) the stiffness-weighted mean, ``diameter`` (m), ``rts`` as given,
-            ``rupture_force`` (N) the axial force at the first wire's rupture in straight
-            tension (wire laws); ``strand`` the (damaged) strand.
+            ``EA``, ``w``, ``alpha`` and ``rupture_force`` as the module text says, ``rts`` as
+            given; ``strand`` the (damaged) strand.
 
         Raises
         ------
@@ -194,7 +186,7 @@ class Conductor(Shown):
             raise InputError(
                 "strand", f"must be a skcable.strand.Strand (e.g. strand.preset(...)), got {strand!r}"
             )
-        g = _positive_scalar("g", g)
+        g = positive_scalar("g", g)
         if damage is not None:
             if isinstance(damage, (int, np.integer)) and not isinstance(damage, (bool, np.bool_)):
                 strand = strand.damaged(int(damage))
@@ -225,11 +217,11 @@ class Conductor(Shown):
         rupture_force = float(axial_force(strand, first))
         label = strand.name if name is None else name
         return cls(
-            EA=section.EA if EA is None else _positive_scalar("EA", EA),
+            EA=section.EA if EA is None else positive_scalar("EA", EA),
             w=weight,
             alpha=alpha,
             diameter=strand.diameter,
-            rts=None if rts is None else _positive_scalar("rts", rts),
+            rts=None if rts is None else positive_scalar("rts", rts),
             name=label,
             strand=strand,
             rupture_force=rupture_force,
@@ -251,7 +243,7 @@ class Conductor(Shown):
         from skcable.strand._catalogue import entry
 
         item = entry(name)
-        g = _positive_scalar("g", g)
+        g = positive_scalar("g", g)
         base = cls.from_strand(preset(item.name), g=g)
         return cls(
             EA=base.EA, w=item.mass * g, alpha=base.alpha, diameter=item.diameter, rts=item.rts,
@@ -271,8 +263,8 @@ class Conductor(Shown):
 
     def _ice_load(self, thickness, density, g, *, names=("ice", "ice_density")):
         b = nonnegative(names[0], thickness)
-        density = _positive_scalar(names[1], density)
-        g = _positive_scalar("g", g)
+        density = positive_scalar(names[1], density)
+        g = positive_scalar("g", g)
         return density * g * np.pi * b * (self.diameter + b)
 
     def _wind_load(self, pressure, ice, *, names=("wind_pressure", "ice")):
@@ -332,14 +324,9 @@ class Conductor(Shown):
             on the iced diameter; broadcast together.
         ice_density, g : float
             Ice density (kg/m³) and gravity (m/s²), > 0.
-        model : {"catenary", "parabola", "auto"}
-            As in `skcable.conductors.change_of_state`: ``"auto"`` takes the parabola for a span
-            whose estimated error is within ``rtol``, else the exact catenary, and the result's
-            ``reason`` says which and why.
-        rtol : float, optional
-            The tolerance of ``model="auto"`` (the parabola's estimated relative error in H, sag,
-            T_max and length; default 1e-3), as in `skcable.conductors.change_of_state`; refused
-            with the other models.
+        model, rtol
+            As in `skcable.conductors.change_of_state` (the result's ``reason`` says which model
+            and why).
 
         Returns
         -------

@@ -176,14 +176,8 @@ def foti_damping(y, f, tension, mass, EI_max, kappa_0):
 
     Parameters
     ----------
-    y : float or array_like
-        Antinode amplitude, zero to peak (m), > 0.
-    f : float or array_like
-        Frequency (Hz), > 0.
-    tension : float or array_like
-        Conductor tension (N), > 0.
-    mass : float or array_like
-        Mass per unit length (kg/m), > 0.
+    y, f, tension, mass : float or array_like
+        As in `self_damping`.
     EI_max : float or array_like
         Stick bending stiffness of the linearised law (N·m²), > 0 (`StageLaw.EI_max`).
     kappa_0 : float or array_like

@@ -49,7 +49,7 @@ from scipy.optimize import brentq
 from skfem import Basis, BilinearForm, ElementLineP2, LinearForm, MeshLine
 
 from skcable import _plausible
-from skcable._checks import TINY, exactly_one, positive, real, scalar, whole
+from skcable._checks import TINY, exactly_one, positive_scalar, real, scalar, whole
 from skcable._eigen import BandPattern, dense, farthest_from_one, first_lobe_positive, lowest_modes
 from skcable._show import Shown, attributes, counted
 from skcable.cable._catenary import catenary
@@ -67,11 +67,11 @@ def irvine_frequencies(span, w, EA, H, *, n_modes=6, g=9.81):
     in-plane mode). See the module docstring for the formulas (Irvine, "Cable
     Structures", 1981, §3.2).
     """
-    span = _scalar_positive("span", span)
-    w = _scalar_positive("w", w)
-    EA = _scalar_positive("EA", EA)
-    H = _scalar_positive("H", H)
-    g = _scalar_positive("g", g)
+    span = positive_scalar("span", span)
+    w = positive_scalar("w", w)
+    EA = positive_scalar("EA", EA)
+    H = positive_scalar("H", H)
+    g = positive_scalar("g", g)
     n_modes = whole("n_modes", n_modes, 1)
     return _irvine(span, w, EA, H, n_modes, g, {"H": H})
 
@@ -202,11 +202,6 @@ class NaturalFrequencies(Shown):
         return f"NaturalFrequencies({counted([len(self.f_in_plane)], 'mode')}: {shown})"
 
 
-def _scalar_positive(name, value):
-    value = scalar(name, value)
-    return positive(name, value)
-
-
 @BilinearForm
 def _stiff(u, v, p):
     return u.grad[0] * v.grad[0]
@@ -294,18 +289,18 @@ def natural_frequencies(span, dh, w, EA, *, H=None, sag=None, n_modes=6, g=9.81)
         The static catenary did not converge, or the eigenpairs failed their
         checks (`skcable._eigen`).
     """
-    span = _scalar_positive("span", span)
+    span = positive_scalar("span", span)
     dh = scalar("dh", dh)
-    w = _scalar_positive("w", w)
+    w = positive_scalar("w", w)
     if w < TINY:  # a subnormal weight: its static catenary has no digits left
         raise InputError("w", f"must be at least the smallest normal float ({TINY:.3g} N/m), got {w!r}")
-    EA = _scalar_positive("EA", EA)
-    g = _scalar_positive("g", g)
+    EA = positive_scalar("EA", EA)
+    g = positive_scalar("g", g)
     n_modes = whole("n_modes", n_modes, 1)
     if n_modes > 60:
         raise InputError("n_modes", f"must be <= 60, got {n_modes}")
     name, value = exactly_one(H=H, sag=sag)
-    given = {name: _scalar_positive(name, value)}
+    given = {name: positive_scalar(name, value)}
     with blame_extreme(span=span, dh=dh, w=w, EA=EA, g=g, **given):  # the outsized argument, if one is
         static = catenary(span, dh, w, **given)
     H, sag = float(static.H), float(static.sag)

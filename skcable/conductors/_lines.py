@@ -32,7 +32,7 @@ from skcable.conductors._parabola import parabola_states
 from skcable.conductors._reference import reference_length
 from skcable.errors import ConvergenceError, InputError
 
-__all__ = ["line_change_of_state", "reference_state", "sag_into", "CHUNK"]
+__all__ = ["line_change_of_state", "reference_state", "sag_into", "check_finite", "CHUNK"]
 
 #: Elements (spans × states) solved in one pass: its rows of scratch stay in the cache.
 CHUNK = 1 << 14
@@ -189,11 +189,11 @@ def catenary_states(spans, dhs, L0, EA, w, wind, k, names):
         _pass(spans[part], dhs[part], L0[part], states, out[:, :, part], names)
     results = dict(zip(_RESULTS, out.transpose(0, 2, 1), strict=True))
     if not np.isfinite(out).all():  # one pass over the block; the name only on failure
-        _finite(results)
+        check_finite(results)
     return results
 
 
-def _finite(results):
+def check_finite(results):
     """Raise `ConvergenceError` naming the first result that is not finite everywhere."""
     for key, result in results.items():
         if not np.isfinite(result).all():
@@ -218,7 +218,7 @@ def line_change_of_state(span, dh, EA, alpha, w0, t0, ref, w, t, wind, k, model,
     choice = choose(model, rtol, None if par is None else par.error, spans.size)
     if par is not None:
         out = {key: getattr(par, key) for key in _RESULTS}
-        _finite(out if choice.parabola.all() else {k: v[choice.parabola] for k, v in out.items()})
+        check_finite(out if choice.parabola.all() else {k: v[choice.parabola] for k, v in out.items()})
         L0, H0_out, sag0_out = par.L0, par.H0, par.sag0
     exact = np.flatnonzero(~choice.parabola)
     if exact.size:

@@ -8,20 +8,10 @@ and CIGRE Technical Brochure 601, "Guide for thermal rating calculations of over
 optional dependency: ``pip install "skcable[rating]"``); nothing of them is written here.
 `ThermalRating` holds one linerate model (``linerate.IEEE738`` or ``linerate.Cigre601``) of a
 ``linerate.Span`` (its ``linerate.Conductor``: resistance, diameters, emissivity, absorptivity)
-under a ``linerate.Weather`` at a time, and answers:
-
-- `ThermalRating.temperature`: the steady-state conductor temperature at a current;
-- `ThermalRating.temperature_after`: the temperature after heating for a while (transient:
-  needs a ``linerate.ConductorWithHeatCapacity``);
-- `ThermalRating.ampacity`: the steady-state current at a maximum temperature.
-
-Then, with a `skcable.conductors.Conductor` for the mechanics, `sag_at_current` gives the sag and
-tension at the temperature a current heats the conductor to (`Conductor.change_of_state`), and
-`clearance_ampacity` the largest current that keeps the sag within a given value (the
-clearance to ground or to a crossing): the temperature at which the sag reaches it, by brentq
-on the change of state, and the steady-state ampacity at that temperature.
-
-linerate's bisections take a tolerance in °C or A; the defaults here are 1e-4 of those units.
+under a ``linerate.Weather`` at a time. With a `skcable.conductors.Conductor` for the mechanics,
+`sag_at_current` and `clearance_ampacity` join it to the change of state (the clearance to
+ground or to a crossing). linerate's bisections take a tolerance in °C or A; the defaults here
+are 1e-4 of those units.
 """
 
 from __future__ import annotations
@@ -29,7 +19,7 @@ from __future__ import annotations
 import numpy as np
 
 from skcable import _plausible
-from skcable._checks import positive, real, scalar
+from skcable._checks import positive, positive_scalar, real, scalar
 from skcable.errors import ConvergenceError, InputError
 
 __all__ = ["ThermalRating", "sag_at_current", "clearance_ampacity"]
@@ -207,8 +197,7 @@ def clearance_ampacity(
     from scipy.optimize import brentq
 
     rating = _rating(rating)
-    max_sag = scalar("max_sag", max_sag)
-    positive("max_sag", max_sag)
+    max_sag = positive_scalar("max_sag", max_sag)
     lo, hi = _bounds("bounds", bounds)
 
     def excess(t):

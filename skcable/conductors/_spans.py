@@ -85,12 +85,8 @@ def _spans(spans) -> np.ndarray:
 
 
 def ruling_span(spans) -> float:
-    r"""Ruling (equivalent) span of a level tension section (m).
-
-    :math:`L_r = \sqrt{\sum L_i^3 / \sum L_i}` (CIGRE TB 324, 2007; Kiessling
-    et al., "Overhead Power Lines", 2003): the single span whose parabolic
-    change of state is that of the section when the suspension strings equalise
-    the horizontal tension.
+    r"""Ruling (equivalent) span of a level tension section (m),
+    :math:`L_r = \sqrt{\sum L_i^3 / \sum L_i}` (module text).
 
     Parameters
     ----------
@@ -382,10 +378,7 @@ def tension_section(
     Returns
     -------
     TensionSection
-        Each span's ``H, sag, V_A, V_B, T_max, span, dh``; each string's
-        ``swing, swing_angle, clamp_rise``; the ruling-span approximation
-        beside it (``ruling_span, H_ruling, sag_ruling``, ``H_gap``,
-        ``sag_gap``).
+        The spans and the strings, with the ruling-span approximation beside them.
 
     Raises
     ------

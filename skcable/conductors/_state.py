@@ -51,9 +51,10 @@ from skcable.cable._elastic import elastic_catenary_unchecked as elastic_catenar
 from skcable.cable._extreme import blame_extreme
 from skcable.conductors._choice import check_model, choose
 from skcable.conductors._inputs import load_plane, normal, renamed, thermal_factor
+from skcable.conductors._lines import check_finite, line_change_of_state
 from skcable.conductors._parabola import parabola_states
 from skcable.conductors._reference import reference_length
-from skcable.errors import ConvergenceError, InputError
+from skcable.errors import InputError
 
 __all__ = ["ThermalCatenary", "thermal_catenary", "ChangeOfState", "change_of_state", "sag_tension_table"]
 
@@ -92,30 +93,16 @@ class ThermalCatenary(Shown):
         return self.curve.residual()
 
     def __repr__(self):
+        forces = dict.fromkeys(("H", "V_A", "V_B", "T_A", "T_B"), "N")
         shown = attributes(
-            self,
-            {
-                "k": "",
-                "H": "N",
-                "V_A": "N",
-                "V_B": "N",
-                "T_A": "N",
-                "T_B": "N",
-                "sag": "m",
-                "length": "m",
-                "stretched_length": "m",
-            },
+            self, {"k": "", **forces, **dict.fromkeys(("sag", "length", "stretched_length"), "m")}
         )
         where = f"{counted(np.shape(self.H), 'scene')}: " if np.ndim(self.H) else ""
         return f"ThermalCatenary({where}{shown})"
 
 
 def thermal_catenary(span, dh, w, EA, *, length, alpha, t, t0=0.0):
-    """Elastic catenary with thermal strain, A = (0, 0) to B = (span, dh).
-
-    An element of unstressed length ``ds0`` at ``t0`` stretches to
-    ``ds0 (1 + alpha (t - t0) + T/EA)`` (Irvine, "Cable Structures", 1981,
-    with a uniform thermal strain).
+    """Elastic catenary with thermal strain, A = (0, 0) to B = (span, dh) (module text).
 
     Parameters
     ----------
@@ -295,8 +282,6 @@ def _states(span, dh, EA, alpha, w0, t0, H0, sag0, w, t, wind, shape, lead, mode
     k = thermal_factor(alpha, t, t0)
     model, rtol = model
     if lead:
-        from skcable.conductors._lines import line_change_of_state
-
         ref = (H0 if H0 is not None else sag0, "H0" if H0 is not None else "sag0")
         out, choice = line_change_of_state(span, dh, EA, alpha, w0, t0, ref, w, t, wind, k, model, rtol)
         out.update(w=w, t=t, wind=wind, model=choice.model, reason=choice.reason, rtol=rtol)
@@ -323,15 +308,10 @@ def _states(span, dh, EA, alpha, w0, t0, H0, sag0, w, t, wind, shape, lead, mode
             sol = elastic_catenary(span_p, dh_p, q / k, EA * k, length=L0 * k)
         H_plane, sag = sol.H, sol.sag
         T_max, length = np.maximum(sol.T_A, sol.T_B), sol.stretched_length
-        for name, value in (("H", H_plane), ("sag", sag)):  # the solver's residual is checked inside
-            if not np.all(np.isfinite(value)):
-                raise ConvergenceError(f"change_of_state: non-finite {name}")
     H = H_plane * span / span_p
     blowout = np.arctan2(wind, w)
     out = dict(H=H, H_plane=H_plane, sag=sag, T_max=T_max, length=length, blowout=blowout)
-    for name, value in out.items():
-        if not np.all(np.isfinite(value)):
-            raise ConvergenceError(f"change_of_state: non-finite {name} for these data")
+    check_finite(out)
     out.update(w=w, t=t, wind=wind)
     if shape == ():
         out = {key: float(value) for key, value in out.items()}

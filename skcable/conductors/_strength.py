@@ -22,7 +22,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from skcable._checks import nonnegative, positive, scalar
+from skcable._checks import nonnegative, positive_scalar
 from skcable._show import Shown
 from skcable.errors import ConvergenceError, InputError
 
@@ -35,7 +35,7 @@ def layer_rrts(rts, broken, wire_strength) -> float:
     ``broken`` and ``wire_strength`` are per layer (any order, the same for both); the result
     must stay > 0.
     """
-    rts = positive("rts", scalar("rts", rts))
+    rts = positive_scalar("rts", rts)
     broken = np.atleast_1d(nonnegative("broken", broken))
     strength = np.atleast_1d(nonnegative("wire_strength", wire_strength))
     if broken.shape != strength.shape or broken.ndim != 1:
@@ -54,7 +54,7 @@ def wire_strengths(strand, rts) -> np.ndarray:
     """One wire's share of ``rts`` (N) per layer (core first): ``rts`` shared in proportion to
     each wire's ultimate axial force ``A cos(alpha) sigma_u`` (its material's
     ``stress_rupture``), over every wire of the intact strand."""
-    rts = positive("rts", scalar("rts", rts))
+    rts = positive_scalar("rts", rts)
     wires = strand.wires()
     force = wires.area * np.cos(wires.lay_angle) * strand.wire_materials().take("stress_rupture")
     share = rts * force / np.sum(force)
@@ -115,7 +115,7 @@ def residual_strength(strand, damage, *, rts, method: str = "layers", wire_stren
     """
     if method not in ("layers", "capacity"):
         raise InputError("method", f"must be 'layers' or 'capacity', got {method!r}")
-    rts = positive("rts", scalar("rts", rts))
+    rts = positive_scalar("rts", rts)
     damaged = (
         strand.damaged(damage) if isinstance(damage, (int, np.integer)) else strand.damaged(wires=damage)
     )

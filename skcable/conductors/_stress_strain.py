@@ -44,7 +44,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from skcable._checks import nonnegative, positive, real, scalar
+from skcable._checks import nonnegative, positive, positive_scalar, real, scalar
 from skcable.errors import ConvergenceError, InputError
 
 __all__ = [
@@ -102,7 +102,7 @@ class ComponentCurve:
         a = np.atleast_1d(real("coefficients", self.coefficients)).astype(float)
         if a.ndim != 1 or not 1 <= a.size <= 5:
             raise InputError("coefficients", f"must be 1 to 5 numbers a_0 ... a_4, got {a.size}")
-        top = positive("strain_max", scalar("strain_max", self.strain_max))
+        top = positive_scalar("strain_max", self.strain_max)
         slope = np.polynomial.Polynomial(a).deriv()
         grid = np.linspace(0.0, top, 2001)
         roots = np.asarray(slope.roots(), dtype=complex)
@@ -118,7 +118,7 @@ class ComponentCurve:
         values = dict(
             coefficients=tuple(float(v) for v in a),
             strain_max=top,
-            final_modulus=positive("final_modulus", scalar("final_modulus", self.final_modulus)),
+            final_modulus=positive_scalar("final_modulus", self.final_modulus),
             alpha=scalar("alpha", self.alpha),
             compression_limit=None
             if limit is None
@@ -213,7 +213,7 @@ class StressStrainModel:
         if not comps or not all(isinstance(c, ComponentCurve) for c in comps):
             raise InputError("components", "must be a non-empty sequence of ComponentCurve")
         object.__setattr__(self, "components", comps)
-        object.__setattr__(self, "area", positive("area", scalar("area", self.area)))
+        object.__setattr__(self, "area", positive_scalar("area", self.area))
         object.__setattr__(self, "t_ref", scalar("t_ref", self.t_ref))
         none = (None,) * len(comps)
         object.__setattr__(self, "initial_history", History(none, none, (0.0,) * len(comps), "initial"))
@@ -222,31 +222,23 @@ class StressStrainModel:
         """Each component's mechanical strain at conductor ``strain`` and temperature ``t``."""
         return [strain - c.alpha * (t - self.t_ref) for c in self.components]
 
-    def loads(self, strain, t, history=None):
-        """Each component's load (Pa over the whole area) at conductor ``strain``, ``t``."""
+    def _component_loads(self, strain, t, history):
+        """Each component's ``(load, slope)`` (Pa over the whole area) at conductor ``strain``, ``t``."""
         history = history or self.initial_history
         offsets = history.offset or (0.0,) * len(self.components)
-        return [
-            float(c.load(eps - o, p, k)[0])
-            for c, eps, p, k, o in zip(
-                self.components,
-                self.mechanical(strain, t),
-                history.permanent,
-                history.peak,
-                offsets,
-                strict=True,
-            )
-        ]
+        parts = zip(
+            self.components, self.mechanical(strain, t), history.permanent, history.peak, offsets, strict=True
+        )
+        return [c.load(eps - o, p, k) for c, eps, p, k, o in parts]
+
+    def loads(self, strain, t, history=None):
+        """Each component's load (Pa over the whole area) at conductor ``strain``, ``t``."""
+        return [float(load) for load, _ in self._component_loads(strain, t, history)]
 
     def stress(self, strain, t, history=None):
         """Conductor stress (Pa) and its slope dσ/dε at ``strain``, ``t``."""
-        history = history or self.initial_history
-        offsets = history.offset or (0.0,) * len(self.components)
         total = slope = 0.0
-        for c, eps, p, k, o in zip(
-            self.components, self.mechanical(strain, t), history.permanent, history.peak, offsets, strict=True
-        ):
-            load, d = c.load(eps - o, p, k)
+        for load, d in self._component_loads(strain, t, history):
             total, slope = total + load, slope + d
         return total, slope
 
@@ -395,8 +387,8 @@ def level_span_states(model, span, *, w0, t0, H0, cases, max_load, creep=None):
 
     if not isinstance(model, StressStrainModel):
         raise InputError("model", f"must be a StressStrainModel, got {model!r}")
-    span = positive("span", scalar("span", span))
-    w0, H0, t0 = positive("w0", scalar("w0", w0)), positive("H0", scalar("H0", H0)), scalar("t0", t0)
+    span = positive_scalar("span", span)
+    w0, H0, t0 = positive_scalar("w0", w0), positive_scalar("H0", H0), scalar("t0", t0)
     if not isinstance(cases, dict) or max_load not in cases:
         raise InputError(
             "max_load", f"must name one of the cases {list(cases) if isinstance(cases, dict) else cases}"

@@ -25,6 +25,7 @@ from skcable.cable.solution import matrix_2x2
 from skcable.errors import InputError
 
 __all__ = [
+    "as_float",
     "heap_T_of_s",
     "heap_residuals",
     "heap_s_of_x",
@@ -35,7 +36,7 @@ __all__ = [
 ]
 
 
-def _out(value):
+def as_float(value):
     """A 0-d result as a Python float (scalar in, scalar out)."""
     return float(value) if np.ndim(value) == 0 else value
 
@@ -50,14 +51,14 @@ def heap_T_of_s(s, s1, L_B, w):
     (``w (s_1 - s)`` from A, ``w sigma`` at ``sigma`` above the seabed on the part from B);
     the slack on the seabed carries none."""
     sigma = _sigma(s, s1, L_B)
-    return _out(np.where(s <= s1, w * (s1 - s), np.where(s <= s1 + L_B, 0.0, w * sigma)))
+    return as_float(np.where(s <= s1, w * (s1 - s), np.where(s <= s1 + L_B, 0.0, w * sigma)))
 
 
 def heap_x_of_s(s, s1, L_B, span):
     """Abscissa (m): the vertical parts at ``x = 0`` and ``x = span``, the slack spread
     evenly between, ``x`` linear in ``s``."""
     spread = np.clip(s - s1, 0.0, L_B) / L_B * span
-    return _out(spread + 0.0 * s)
+    return as_float(spread + 0.0 * s)
 
 
 def heap_y_of_s(s, s1, L_B, w, EA, y_t):
@@ -69,14 +70,14 @@ def heap_y_of_s(s, s1, L_B, w, EA, y_t):
     a = np.minimum(s, s1)
     below_A = 0.0 - (a + w * (s1 * a - 0.5 * a * a) / EA)
     above = y_t + sigma * (1.0 + 0.5 * w * sigma / EA)
-    return _out(np.where(s <= s1, below_A, np.where(s <= s1 + L_B, y_t, above)))
+    return as_float(np.where(s <= s1, below_A, np.where(s <= s1 + L_B, y_t, above)))
 
 
 def heap_s_of_x(x, s1, L_B, span, length):
     """Material point (m): ``x = 0`` is A, ``x = span`` is B (the vertical parts project to
     the ends), the points between map to the slack spread evenly on the seabed."""
     spread = s1 + x / span * L_B
-    return _out(np.where(x <= 0.0, 0.0, np.where(x >= span, length, spread)))
+    return as_float(np.where(x <= 0.0, 0.0, np.where(x >= span, length, spread)))
 
 
 def heap_slope(x, span, heap, V1):
@@ -86,7 +87,7 @@ def heap_slope(x, span, heap, V1):
     vertical = heap & ((x_b >= span) | ((x_b <= 0.0) & (V1 > 0)))
     if np.any(vertical):
         raise InputError("x", "the line hangs vertically there (slack in a heap, H = 0): no finite slope")
-    return _out(0.0 * x_b)
+    return as_float(0.0 * x_b)
 
 
 def heap_stiffness(w, EA, l_B):

@@ -1,12 +1,5 @@
-r"""A line on a sloped seabed ``y = x tan α`` through the anchor, in closed form.
-
-The grounded part lies straight along the slope from A, its tension growing towards the
-fairlead by :math:`dT/ds = w(\sin\alpha + \mu\cos\alpha)`; the suspended part leaves the
-seabed tangentially and hangs as an elastic catenary to B (H.M. Irvine, "Cable
-Structures", MIT Press, 1981; J.M. Jonkman, "Dynamics modeling and loads analysis of an
-offshore floating wind turbine", NREL, 2007, on a slope, as MoorPy's
-``catenary(..., alpha=...)``). See `sloped_seabed_catenary` for the closure.
-"""
+"""A line on a sloped seabed ``y = x tan α`` through the anchor, in closed form
+(`sloped_seabed_catenary`, which states the closure and its sources)."""
 
 from __future__ import annotations
 
@@ -15,7 +8,7 @@ import numpy as np
 from skcable._checks import nonnegative, positive, real, require
 from skcable.cable._elastic import elastic_catenary as free_elastic_catenary
 from skcable.cable._extreme import outsized
-from skcable.cable.closure import hanging_length, on_slope
+from skcable.cable.closure import hanging_length, on_slope, slope_frame
 from skcable.cable.seabed.sloped_solution import SlopedSeabedCatenary
 from skcable.cable.seabed.solve import elastic_catenary
 from skcable.errors import ConvergenceError, InputError
@@ -130,8 +123,7 @@ def _sloped(span, dh, w, EA, L, m, mu):
         return SlopedSeabedCatenary(span, dh, w, EA, L, m, mu, free.H, 0.0, [0.0], free=free)
     chord = float(np.hypot(span, dh))
     # start: the flat line of the same data in the frame of the slope
-    cos = 1.0 / np.hypot(1.0, m)
-    sin = m * cos
+    cos, sin = slope_frame(m, np)
     along, across = span * cos + dh * sin, dh * cos - span * sin
     try:
         flat = elastic_catenary(along, across, w * cos, EA, length=L, seabed=0.0)

@@ -25,15 +25,11 @@ import numpy as np
 from skcable._checks import real, require, whole
 from skcable.cable.arc_samples import arc_samples, write_profile
 from skcable.cable.closure import grounded, on_slope, positions, slope_frame, tensioned
+from skcable.cable.seabed.heap import as_float as _out
 from skcable.errors import ConvergenceError
 from skcable.results import ProfileMixin
 
 __all__ = ["SlopedSeabedCatenary"]
-
-
-def _out(value):
-    """A 0-d result as a Python float."""
-    return float(value) if np.ndim(value) == 0 else value
 
 
 class SlopedSeabedCatenary(ProfileMixin):

@@ -1,20 +1,6 @@
-r"""`SeabedCatenary`: the solution of one line on a flat seabed, in every regime.
-
-A line from the anchor A = (0, 0) to the fairlead B = (span, dh) over a flat seabed at
-height ``seabed <= 0`` is, per element of the input, in one of three regimes (chosen by
-`skcable.cable.seabed.solve`):
-
-- **free**: it hangs clear of the seabed, an elastic catenary (H.M. Irvine, "Cable
-  Structures", MIT Press, 1981);
-- **grounded**: it rests on the seabed from the anchor (or from a first touchdown, the
-  anchor above the seabed) and rises tangentially to B, with Coulomb friction on the
-  grounded part (J.M. Jonkman, "Dynamics modeling and loads analysis of an offshore
-  floating wind turbine", NREL, 2007; `skcable.cable.closure`);
-- **heap**: longer than its L-shape, its slack lies in a heap, ``H = 0``
-  (`skcable.cable.seabed.heap`).
-
-This module maps the solution along the line (arc length and abscissa), checks it
-(residuals) and gives its fairlead stiffness, the inverse of the closure's Jacobian
+"""`SeabedCatenary`: the solution of one line on a flat seabed in each of its regimes (free,
+grounded, heap: `skcable.cable.seabed`), mapped along the line (arc length and abscissa),
+checked (residuals), and its fairlead stiffness, the inverse of the closure's Jacobian
 (implicit function theorem).
 """
 
@@ -25,26 +11,18 @@ from itertools import zip_longest
 
 import numpy as np
 
-from skcable._checks import real, require, whole
+from skcable._checks import whole
 from skcable._xp import namespace
 from skcable.cable._elastic import ElasticCatenary, elastic_stiffness, inverse_2x2
 from skcable.cable._roots import find_root
+from skcable.cable.arc_samples import arc_samples
 from skcable.cable.closure import grounded, grounded_closure, positions, stretched_length, tensioned
 from skcable.cable.seabed import heap as heap_state
+from skcable.cable.seabed.heap import as_float as _out
 from skcable.cable.solution import CableSolution
 from skcable.errors import InputError
 
 __all__ = ["SeabedCatenary"]
-
-
-def _times_zero(value):
-    """``0 * value``: a zero of ``value``'s shape."""
-    return 0.0 * value
-
-
-def _plus_zero(value, like):
-    """``value`` broadcast to the shape of ``like``."""
-    return value + 0.0 * like
 
 
 def _left_run(s, x, H, V1, w, EA):
@@ -82,15 +60,11 @@ class SeabedCatenary(CableSolution):
     ``T(x)``, ``slope(x)`` the abscissa (the grounded part lies on the seabed).
 
     ``heap`` (bool, an array for array input) marks the state where the line is
-    longer than its L-shape and the slack lies in a heap on the seabed: ``H = H_A = 0``;
-    the part from B hangs vertically down to the seabed at ``x_touchdown = span``
-    over its unstretched length ``l_B`` (`hanging_length` of ``dh - seabed``),
-    ``V_B = T_B = w l_B``; with the anchor above the seabed the part from A hangs
-    likewise (``V_A = w l_A``, ``x_landing = 0``), else ``V_A = 0``; the rest,
-    ``length_on_seabed = L - l_A - l_B >= span``, carries no tension and does not
-    stretch (friction plays no part). Statics do not fix where that slack lies: the
-    maps draw it spread evenly along the seabed from the landing point to the
-    touchdown. ``suspended`` raises there (no catenary hangs).
+    longer than its L-shape and the slack lies in a heap on the seabed
+    (`skcable.cable.seabed.heap`): ``H = H_A = 0``, ``x_touchdown = span``,
+    ``V_B = T_B = w l_B``, ``V_A = w l_A`` (0 with the anchor on the seabed),
+    ``x_landing = 0``, ``length_on_seabed = L - l_A - l_B >= span``; ``suspended``
+    raises there (no catenary hangs).
     """
 
     def __init__(self, span, dh, w, EA, length, friction, seabed, H, V_t, L_B, V_1=0.0, y_t=0.0, heap=False):
@@ -163,16 +137,13 @@ class SeabedCatenary(CableSolution):
     def x_landing(self):
         """Abscissa where the line from an anchor above the seabed lands on it (0 otherwise;
         0 in a heap state: the part from A hangs vertically)."""
-        return self._pick(partial(_times_zero, self.span), self._taut_x_landing)
-
-    def _taut_x_landing(self):
-        return _out(self._left(self.length_to_seabed)[0])
+        return self._pick(lambda: 0.0 * self.span, lambda: _out(self._left(self.length_to_seabed)[0]))
 
     @cached_property
     def x_touchdown(self):
         """Abscissa where the line leaves the seabed towards B (the grounded line stretched;
         ``span`` in a heap state)."""
-        return self._pick(partial(_plus_zero, self.span, self.H), self._taut_x_touchdown)
+        return self._pick(lambda: self.span + 0.0 * self.H, self._taut_x_touchdown)
 
     def _taut_x_touchdown(self):
         stretch = grounded(self.H, self.length_on_seabed, self._mu_w, self.EA, self._xp)[0]
@@ -205,7 +176,7 @@ class SeabedCatenary(CableSolution):
         """Stretched length of the whole line (anchor part, grounded, suspended)."""
         # heap: the vertical parts span the heights exactly, the slack does not stretch
         heap = self.length_on_seabed + self.dh - 2.0 * self._y_t
-        return self._pick(partial(_plus_zero, heap, 0.0), self._taut_stretched_length)
+        return self._pick(lambda: heap + 0.0, self._taut_stretched_length)
 
     def _taut_stretched_length(self):
         left = 0.0 * self.H
@@ -223,33 +194,21 @@ class SeabedCatenary(CableSolution):
         """The seabed's height broadcast: the height of a heap state's vertex and lowest point."""
         return self._y_t + 0.0 * self.H
 
-    def _taut_x_vertex(self):
-        return self.x_touchdown + self._hanging.x_vertex
-
-    def _taut_y_vertex(self):
-        return self._y_t + self._hanging.y_vertex
-
-    def _taut_x_low(self):
-        return self.x_touchdown + self._hanging.x_low
-
-    def _taut_y_low(self):
-        return self._y_t + self._hanging.y_low
-
     @property
     def x_vertex(self):
-        return self._pick(self._at_b, self._taut_x_vertex)
+        return self._pick(self._at_b, lambda: self.x_touchdown + self._hanging.x_vertex)
 
     @property
     def y_vertex(self):
-        return self._pick(self._on_seabed, self._taut_y_vertex)
+        return self._pick(self._on_seabed, lambda: self._y_t + self._hanging.y_vertex)
 
     @property
     def x_low(self):
-        return self._pick(self._at_b, self._taut_x_low)
+        return self._pick(self._at_b, lambda: self.x_touchdown + self._hanging.x_low)
 
     @property
     def y_low(self):
-        return self._pick(self._on_seabed, self._taut_y_low)
+        return self._pick(self._on_seabed, lambda: self._y_t + self._hanging.y_low)
 
     # -- along the line ---------------------------------------------------------------
     def _grounded_tension(self, s):
@@ -259,7 +218,6 @@ class SeabedCatenary(CableSolution):
 
     def _taut_T_of_s(self, s):
         """Tension (N) at unstretched arc length ``s`` from A, in [0, length]."""
-        s = self._arc("s", s)
         s1, L_B = self.length_to_seabed, self.length_on_seabed
         tv = self.w * np.maximum(s - s1 - L_B, 0.0) - self._hanging.V_A
         hang = np.where((s <= s1) & (s1 > 0), np.hypot(self.H, self.w * s - self._V1), np.hypot(self.H, tv))
@@ -270,7 +228,6 @@ class SeabedCatenary(CableSolution):
 
     def _taut_x_of_s(self, s):
         """Abscissa of the material point ``s`` (unstretched arc length from A)."""
-        s = self._arc("s", s)
         s1, L_B, ell = self.length_to_seabed, self.length_on_seabed, self._ell
         on = np.clip(s - s1, 0.0, L_B)
         d = np.maximum(on - (L_B - ell), 0.0)
@@ -281,23 +238,10 @@ class SeabedCatenary(CableSolution):
 
     def _taut_y_of_s(self, s):
         """Height above A of the material point ``s`` (the seabed's height on it)."""
-        s = self._arc("s", s)
         s1, L_B = self.length_to_seabed, self.length_on_seabed
         hang = self._y_t + self._hanging.y_of_s(np.maximum(s - s1 - L_B, 0.0))
         left = self._left(np.minimum(s, s1))[1]
         return _out(np.where(s <= s1, left, np.where(s <= s1 + L_B, self._y_t, hang)))
-
-    def _arc(self, name, s):
-        s = real(name, s)
-        require(name, (s >= 0) & (s <= self.length), "must lie in [0, length]", s)
-        return s
-
-    def _split(self, x):
-        x = real("x", x)
-        require("x", (x >= 0) & (x <= self.span), "must lie in [0, span]", x)
-        x_t = self.x_touchdown
-        grounded = x <= x_t
-        return x, grounded, np.clip(x - x_t, 0.0, self._hanging.span)
 
     def _left_s_of_x(self, x):
         """Material point on the anchor part at ``x < x_landing`` (NaN elsewhere)."""
@@ -317,7 +261,8 @@ class SeabedCatenary(CableSolution):
 
     def _taut_s_of_x(self, x):
         """Material point at abscissa ``x`` in [0, span]."""
-        x, grounded, xs = self._split(x)
+        x_t = self.x_touchdown
+        grounded, xs = x <= x_t, np.clip(x - x_t, 0.0, self._hanging.span)
         s1, L_B, ell = self.length_to_seabed, self.length_on_seabed, self._ell
         # on the seabed x - x_1 - a = d (1 + H_A/EA) + C_B w d^2 / (2 EA), s = s_1 + a + d
         a = L_B - ell
@@ -346,9 +291,6 @@ class SeabedCatenary(CableSolution):
     def T(self, x):
         """Tension at abscissa ``x`` (N)."""
         return self.T_of_s(self.s_of_x(x))
-
-    def weight_per_length(self, x, slope):
-        return self.w + 0.0 * slope
 
     # -- checks and stiffness -----------------------------------------------------------
     def _taut__residuals(self):
@@ -379,11 +321,7 @@ class SeabedCatenary(CableSolution):
             yield (T - xp.hypot(H, V)) / xp.maximum(T, self.H)
 
     def _taut_stiffness(self):
-        """Fairlead stiffness ``∂(H, V_B)/∂(span, dh)`` with A fixed, shape ``(*shape, 2, 2)``.
-
-        Rows ``(H, V_B)``, columns ``(span, dh)``: the inverse of the Jacobian of the
-        closure equations in ``(H, V_B)``, grounded or free, friction included.
-        """
+        """`stiffness` where the line is taut."""
         touches = (self.length_on_seabed > 0) | (self._V1 > 0)
         free = elastic_stiffness(self._hanging)
         depth = -self._y_t
@@ -395,55 +333,40 @@ class SeabedCatenary(CableSolution):
 
     # -- the heap state (H = 0): vertical parts at A and B, slack spread on the seabed ----
     def T_of_s(self, s):
-        """Tension (N) at unstretched arc length ``s`` from A, in [0, length].
-
-        In a heap state each vertical part carries the weight below it down to the
-        seabed (`skcable.cable.seabed.heap.heap_T_of_s`); the slack carries none."""
-        s = self._arc("s", s)
+        """Tension (N) at unstretched arc length ``s`` from A, in [0, length] (in a heap state
+        `skcable.cable.seabed.heap.heap_T_of_s`)."""
+        s = self._arc(s)
         heap = partial(heap_state.heap_T_of_s, s, self.length_to_seabed, self.length_on_seabed, self.w)
         return self._pick(heap, partial(self._taut_T_of_s, s))
 
     def x_of_s(self, s):
-        """Abscissa of the material point ``s`` (unstretched arc length from A).
-
-        In a heap state the vertical parts lie at ``x = 0`` and ``x = span``; the
-        shape of the slack on the seabed is not determined by statics (it carries no
-        tension): it is drawn spread evenly from ``x_landing = 0`` to
-        ``x_touchdown = span``, ``x`` linear in ``s``."""
-        s = self._arc("s", s)
+        """Abscissa of the material point ``s`` (unstretched arc length from A; in a heap state
+        `skcable.cable.seabed.heap.heap_x_of_s`)."""
+        s = self._arc(s)
         heap = partial(heap_state.heap_x_of_s, s, self.length_to_seabed, self.length_on_seabed, self.span)
         return self._pick(heap, partial(self._taut_x_of_s, s))
 
     def y_of_s(self, s):
-        """Height above A of the material point ``s`` (the seabed's height on it).
-
-        In a heap state the vertical parts hang under their own weight
-        (`skcable.cable.seabed.heap.heap_y_of_s`)."""
-        s = self._arc("s", s)
+        """Height above A of the material point ``s`` (the seabed's height on it; in a heap
+        state `skcable.cable.seabed.heap.heap_y_of_s`)."""
+        s = self._arc(s)
         parts = (self.length_to_seabed, self.length_on_seabed, self.w, self.EA, self._y_t)
         heap = partial(heap_state.heap_y_of_s, s, *parts)
         return self._pick(heap, partial(self._taut_y_of_s, s))
 
     def s_of_x(self, x):
-        """Material point at abscissa ``x`` in [0, span].
-
-        In a heap state ``x = 0`` is A, ``x = span`` is B (the vertical parts
-        project to the ends) and the points between map to the slack spread evenly
-        on the seabed (see `x_of_s`)."""
-        x = real("x", x)
-        require("x", (x >= 0) & (x <= self.span), "must lie in [0, span]", x)
+        """Material point at abscissa ``x`` in [0, span] (in a heap state
+        `skcable.cable.seabed.heap.heap_s_of_x`)."""
+        x = self._abscissa(x)
         heap = partial(
             heap_state.heap_s_of_x, x, self.length_to_seabed, self.length_on_seabed, self.span, self.length
         )
         return self._pick(heap, partial(self._taut_s_of_x, x))
 
     def slope(self, x):
-        """dy/dx at ``x`` (0 on the seabed).
-
-        In a heap state the line is vertical at ``x = span`` (and at ``x = 0`` with
-        the anchor above the seabed): no finite slope there, `InputError` (``x``)."""
-        x = real("x", x)
-        require("x", (x >= 0) & (x <= self.span), "must lie in [0, span]", x)
+        """dy/dx at ``x`` (0 on the seabed; in a heap state `skcable.cable.seabed.heap.heap_slope`,
+        which refuses the vertical parts)."""
+        x = self._abscissa(x)
         heap = partial(heap_state.heap_slope, x, self.span, self.heap, self._V1)
         return self._pick(heap, partial(self._taut_slope, x))
 
@@ -461,13 +384,7 @@ class SeabedCatenary(CableSolution):
         angle[-1] = 0.5 * np.pi
         if self._V1 > 0:
             angle[0] = -0.5 * np.pi
-        weight = np.full_like(x, float(self.w))
-        return {
-            "xy": np.column_stack([x, self.y(x)]),
-            "tension": np.asarray(self.T(x), dtype=float),
-            "angle": angle,
-            "load": np.column_stack([np.zeros_like(x), -weight]),
-        }
+        return arc_samples(x, self.y(x), self.T(x), angle, float(self.w))
 
     def _heap_residuals(self):
         """Residuals of a heap state (`skcable.cable.seabed.heap.heap_residuals`)."""
@@ -492,12 +409,9 @@ class SeabedCatenary(CableSolution):
         """Fairlead stiffness ``∂(H, V_B)/∂(span, dh)`` with A fixed, shape ``(*shape, 2, 2)``.
 
         Rows ``(H, V_B)``, columns ``(span, dh)``: the inverse of the Jacobian of the
-        closure equations in ``(H, V_B)``, grounded or free, friction included.
-
-        In a heap state (``H = 0``) ``V_B = w l_B`` with ``dh - seabed = l_B + w l_B^2/(2EA)``,
-        so ``∂V_B/∂dh = w/(1 + w l_B/EA)`` and the other three entries are 0. This is
-        the heap side's stiffness, one-sided at the boundary: the line becomes taut
-        again (``H > 0``) only when the span exceeds the slack's length on the seabed.
+        closure equations in ``(H, V_B)``, grounded or free, friction included. In a heap state
+        `skcable.cable.seabed.heap.heap_stiffness`, one-sided at the boundary: the line
+        becomes taut again (``H > 0``) only when the span exceeds the slack's length on the seabed.
         """
         if not self._any_heap:
             return self._taut_stiffness()
@@ -531,8 +445,3 @@ def _heap_where(heap, value, taut):
     if np.ndim(heap) == 0:
         return value if heap else taut
     return np.where(heap, value, taut)
-
-
-def _out(value):
-    """A 0-d result as a Python float (scalar in, scalar out)."""
-    return float(value) if np.ndim(value) == 0 else value

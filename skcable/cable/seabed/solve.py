@@ -69,13 +69,10 @@ def elastic_catenary(span, dh, w, EA, *, length, seabed=None, friction=0.0):
         ``sag``, the lowest point ``x_low, y_low``, the vertex ``x_vertex,
         y_vertex``, ``y(x), T(x), slope(x), residual()``, ``stiffness()``.
     SeabedCatenary
-        With a ``seabed``: the same forces, maps and ``stiffness()``, plus
-        ``H_A``, ``length_on_seabed``, ``x_touchdown``, ``length_to_seabed``,
-        ``x_landing``, ``T_of_s(s)``, ``suspended``, ``heap``. A line longer than
-        its L-shape (``span <= L - l_A - l_B``, `hanging_length`) has no solution
-        with ``H > 0``: its slack lies in a heap on the seabed, returned as such
-        (``heap`` True, ``H = 0``, see `SeabedCatenary`; MoorPy's slack profiles
-        4 and 5).
+        With a ``seabed``: the same forces, maps and ``stiffness()``, plus the seabed's
+        (`SeabedCatenary`), in a heap state too (``heap`` True, ``H = 0``: a line longer
+        than its L-shape, ``span <= L - l_A - l_B``, `hanging_length`; MoorPy's slack
+        profiles 4 and 5).
 
     Raises
     ------
