@@ -68,7 +68,7 @@ import numpy as np
 from skcable._show import Shown
 from skcable.errors import InputError
 from skcable.strand._arguments import float_array, is_real_number, principal_axis, real_number
-from skcable.strand._section import Section
+from skcable.strand._section import Section, axis_pair, checked_section
 
 __all__ = ["BendingLaw", "CardouSection", "MAX_FRICTION", "critical_curvature", "friction"]
 
@@ -89,12 +89,6 @@ def friction(mu) -> float:
             f"Pino Vidal 2021 use 0.3 to 0.7), got {mu!r}",
         )
     return mu
-
-
-def _section(section) -> Section:
-    if not isinstance(section, Section):
-        raise InputError("section", f"must be a Section (strand.section()), got {section!r}")
-    return section
 
 
 def _rupture(strand) -> float:
@@ -267,7 +261,7 @@ def critical_curvature(section, mu: float, axial_strain) -> np.ndarray:
         About an axis without composite bending (`Section.composite_bending` False)
         the documented constant ``2 ε_rupture / d_max`` (see `BendingLaw`).
     """
-    section = _section(section)
+    section = checked_section(section)
     mu = friction(mu)
     return _law(section, mu, _strains(section, axial_strain, scalar=False))["kappa_m"]
 
@@ -304,7 +298,7 @@ class BendingLaw(Shown):
     """
 
     def __init__(self, section, *, mu: float, axial_strain: float):
-        self.section = _section(section)
+        self.section = checked_section(section)
         self.mu = friction(mu)
         self.axial_strain = float(_strains(section, axial_strain, scalar=True)[0])
         law = _law(section, self.mu, np.array([self.axial_strain]))
@@ -371,14 +365,11 @@ class BendingLaw(Shown):
         return out[()] if out.ndim == 0 else out
 
     def __repr__(self):
-        def pair(values, unit):
-            return f"({values[0]:.4g}, {values[1]:.4g}) {unit}"
-
         linear = [k + 1 for k in (0, 1) if self.linear[k]]
         note = f", linear about principal axis {' and '.join(map(str, linear))}" if linear else ""
         return (
             f"BendingLaw({self.section.strand.name or 'strand'!r}, mu={self.mu:g}, "
-            f"axial_strain={self.axial_strain:g}: EI_stick={pair(self.EI_stick, 'N·m²')}, "
-            f"EI_slip={pair(self.EI_slip, 'N·m²')}, M_rf={pair(self.M_rf, 'N·m')}, "
-            f"kappa_m={pair(self.kappa_m, '1/m')}{note})"
+            f"axial_strain={self.axial_strain:g}: EI_stick={axis_pair(self.EI_stick, 'N·m²')}, "
+            f"EI_slip={axis_pair(self.EI_slip, 'N·m²')}, M_rf={axis_pair(self.M_rf, 'N·m')}, "
+            f"kappa_m={axis_pair(self.kappa_m, '1/m')}{note})"
         )

@@ -33,7 +33,7 @@ from skcable.strand._arguments import name_text, real_number
 from skcable.strand._catalogue import ENTRIES, INCH, LAY_RATIO, aluminium_layers, entry, layer_counts
 from skcable.strand._material import Material, WireMaterials, material
 
-__all__ = ["Layer", "Strand", "Wires", "preset"]
+__all__ = ["Layer", "Strand", "Wires", "lay_rates", "preset"]
 
 
 @dataclass(frozen=True)
@@ -395,6 +395,14 @@ class Strand:
         return BendingLaw(self.section(), mu=mu, axial_strain=axial_strain)
 
 
+def lay_rates(strand: Strand, wires: Wires) -> np.ndarray:
+    """Every wire's lay rate dψ/dx = ±2π/p of its layer (rad/m), 0 for the core."""
+    helical = wires.layer > 0
+    lay_length = np.ones_like(wires.radius)
+    lay_length[helical] = strand.lay_lengths[wires.layer[helical] - 1]
+    return np.where(helical, wires.direction * 2 * pi / lay_length, 0.0)
+
+
 #: Pino Vidal (2021), Table 3.1: wire diameter (m), material, nominal strand diameter (m), lay angle (deg).
 _TABLE_3_1 = {
     "steel-9.5": (3.1e-3, "steel", 9.5e-3, 7.5),
@@ -415,22 +423,28 @@ _ACSR = {
     "acsr-drake": (3.454e-3, 4.442e-3, (10, 16)),  # 795 kcmil 26/7, outer diameter 28.14 mm
     "acsr-hawk": (2.675e-3, 3.439e-3, (10, 16)),  # 477 kcmil 26/7, outer diameter 21.79 mm
 }
-_ACSR_LAY_RATIO = {"steel": 19.0, "inner": 13.0, "outer": 11.0}
+
+
+def _stranded(name: str, core: tuple, specs: list, strand_material: Material) -> Strand:
+    """The strand of a stranding: the core ``(diameter, material)`` and the layers ``(count,
+    diameter, material)`` from the core outward, at the lay ratios `LAY_RATIO` (steel, inner,
+    outer) of the layer's outside diameter, the outer layer right-hand, alternating inward."""
+    layers, outside = [], core[0]
+    for k, (count, d, wire_material) in enumerate(specs):
+        outside = outside + 2 * d
+        kind = "steel" if wire_material.name == "steel" else ("outer" if k == len(specs) - 1 else "inner")
+        direction = 1 if (len(specs) - 1 - k) % 2 == 0 else -1
+        layers.append(
+            Layer(count, d, lay_length=LAY_RATIO[kind] * outside, direction=direction, material=wire_material)
+        )
+    return Strand(core[0], tuple(layers), strand_material, name=name, core_material=core[1])
 
 
 def _acsr(name: str) -> Strand:
     steel_d, al_d, counts = _ACSR[name]
     steel, aluminium = material("steel"), material("aluminium")
-    layers, outside = [], 3 * steel_d
     specs = [(6, steel_d, steel)] + [(n, al_d, aluminium) for n in counts]
-    for k, (count, d, wire_material) in enumerate(specs):
-        outside = 3 * steel_d if k == 0 else outside + 2 * d
-        ratio = _ACSR_LAY_RATIO["steel" if k == 0 else "outer" if k == len(specs) - 1 else "inner"]
-        direction = 1 if (len(specs) - 1 - k) % 2 == 0 else -1  # outer right-hand, alternating inward
-        layers.append(
-            Layer(count, d, lay_length=ratio * outside, direction=direction, material=wire_material)
-        )
-    return Strand(steel_d, tuple(layers), aluminium, name=name, core_material=steel)
+    return _stranded(name, (steel_d, steel), specs, aluminium)
 
 
 def catalogue_strand(name: str) -> Strand:
@@ -445,17 +459,8 @@ def catalogue_strand(name: str) -> Strand:
         specs = [(c, d_st, steel_m) for c in layer_counts(n_st)] + [
             (c, d_al, al_m) for c in aluminium_layers(n_al, n_st)
         ]
-        core_d, core_m = d_st, steel_m
-    else:
-        specs = [(c, d_al, al_m) for c in layer_counts(n_al)]
-        core_d, core_m = d_al, al_m
-    layers, outside = [], core_d
-    for k, (count, d, m) in enumerate(specs):
-        outside = outside + 2 * d
-        kind = "steel" if m is steel_m else ("outer" if k == len(specs) - 1 else "inner")
-        direction = 1 if (len(specs) - 1 - k) % 2 == 0 else -1
-        layers.append(Layer(count, d, lay_length=LAY_RATIO[kind] * outside, direction=direction, material=m))
-    return Strand(core_d, tuple(layers), al_m, name=e.name, core_material=core_m)
+        return _stranded(e.name, (d_st, steel_m), specs, al_m)
+    return _stranded(e.name, (d_al, al_m), [(c, d_al, al_m) for c in layer_counts(n_al)], al_m)
 
 
 def preset(name: str) -> Strand:

@@ -62,12 +62,24 @@ from skcable._show import Shown
 from skcable.errors import InputError
 from skcable.strand._arguments import principal_axis
 
-__all__ = ["Section"]
+__all__ = ["Section", "axis_pair", "checked_section"]
 
 #: a principal stick inertia at or below this fraction of the tensor's trace is a
 #: round-off of zero (all intact wires on one line); a discrete wire geometry has no
 #: genuine values this small
 _DEGENERATE = 1e-12
+
+
+def axis_pair(values, unit: str) -> str:
+    """Two values over principal axes 1, 2 as ``(v1, v2) unit`` (for the results' text)."""
+    return f"({values[0]:.4g}, {values[1]:.4g}) {unit}"
+
+
+def checked_section(section) -> Section:
+    """``section`` if it is a `Section`, else `InputError` naming ``section``."""
+    if not isinstance(section, Section):
+        raise InputError("section", f"must be a Section (strand.section()), got {section!r:.80}")
+    return section
 
 
 class Section(Shown):
@@ -270,12 +282,11 @@ class Section(Shown):
     def __repr__(self):
         w = self.wires
         y_c, z_c = self.centroid
-        stick, slip = self.I_stick, self.I_slip
         label = self.strand.name or "strand"
         return (
             f"Section({label!r}: {int(w.intact.sum())} of {w.intact.size} wires intact, "
             f"area={self.area:.4g} m², centroid=({y_c:.4g}, {z_c:.4g}) m, "
             f"principal axis 1 at {np.degrees(self.principal_angle):.4g}° from +y, "
-            f"I_stick=({stick[0]:.4g}, {stick[1]:.4g}) m⁴, I_slip=({slip[0]:.4g}, {slip[1]:.4g}) m⁴, "
+            f"I_stick={axis_pair(self.I_stick, 'm⁴')}, I_slip={axis_pair(self.I_slip, 'm⁴')}, "
             f"EA={self.EA:.4g} N)"
         )

@@ -63,6 +63,7 @@ import numpy as np
 
 from skcable.errors import InputError
 from skcable.strand._arguments import float_array, principal_axis
+from skcable.strand._section import axis_pair
 
 __all__ = ["StageLaw", "StageResponse", "CurvaturePath"]
 
@@ -335,11 +336,8 @@ class StageLaw:
         return value, (slope[()] if slope.ndim == 0 else slope)
 
     def __repr__(self):
-        def pair(values, unit):
-            return f"({values[0]:.4g}, {values[1]:.4g}) {unit}"
-
         return (
             f"{type(self).__name__}({self.name or 'law'!r}: {self.n_stages} stages, "
-            f"EI_max={pair(self.EI_max, 'N·m²')}, EI_min={pair(self.EI_min, 'N·m²')}, "
-            f"kappa_0={pair(self.kappa_0, '1/m')})"
+            f"EI_max={axis_pair(self.EI_max, 'N·m²')}, EI_min={axis_pair(self.EI_min, 'N·m²')}, "
+            f"kappa_0={axis_pair(self.kappa_0, '1/m')})"
         )

@@ -359,12 +359,11 @@ def strand_bending_frequencies(
     -------
     StrandFrequencies
     """
-    from skcable.strand._section import Section
+    from skcable.strand._arguments import principal_axis
+    from skcable.strand._section import checked_section
 
-    if not isinstance(section, Section):
-        raise InputError("section", f"must be a Section (strand.section()), got {section!r:.80}")
-    if isinstance(axis, (bool, np.bool_)) or not isinstance(axis, (int, np.integer)) or axis not in (0, 1):
-        raise InputError("axis", f"must be 0 (principal axis 1) or 1 (principal axis 2), got {axis!r}")
+    checked_section(section)
+    axis = principal_axis(axis)
     EI_stick, EI_slip = float(section.EI_stick[axis]), float(section.EI_slip[axis])
     kw = dict(ends=ends, n_modes=n_modes, n_elements=n_elements)
     stick = beam_frequencies(EI_stick, N, length, mass_per_length, **kw)
@@ -377,5 +376,5 @@ def strand_bending_frequencies(
         drop=1.0 - slip.f / stick.f,
         stick=stick,
         slip=slip,
-        axis=int(axis),
+        axis=axis,
     )

@@ -49,6 +49,7 @@ from skcable.fe import Assembly, LinearSystem, NewtonOptions, first_converged, m
 from skcable.fe.elements import ElementLinePpExact
 from skcable.fe.newton import linear_tail
 from skcable.strand._bending import friction
+from skcable.strand._geometry import lay_rates
 from skcable.strand.capacity import StepResult, StrandLayout, capacity_curve
 from skcable.strand.fe.diagnosis import FirstSolveCheck, non_finite, tangent_modes
 from skcable.strand.fe.slip import SlipLaw, slip_law
@@ -461,16 +462,13 @@ class StrandModel:
 
     def _layout(self) -> StrandLayout:
         w, materials = self.strand_section.wires, self.strand_section.materials
-        helical = w.layer > 0
-        lay_length = np.ones_like(w.radius)
-        lay_length[helical] = self.strand.lay_lengths[w.layer[helical] - 1]
         return StrandLayout(
             nodes=self.mesh.p[0].copy(),
             elements=self.mesh.t.copy(),
             x=self.x,
             dx=self._dx,
             wire_psi=w.psi,
-            wire_rate=np.where(helical, w.direction * 2 * np.pi / lay_length, 0.0),
+            wire_rate=lay_rates(self.strand, w),
             wire_radius=w.radius,
             wire_layer=w.layer,
             wire_broken=~w.intact,

@@ -17,6 +17,7 @@ from skfem import asm
 from skcable.errors import NonFiniteError
 from skcable.fe.assembly import contract
 from skcable.strand._bending import CardouSection, critical_curvature
+from skcable.strand._geometry import lay_rates
 from skcable.strand.fe.loads import unit_load
 from skcable.strand.fe.slip import SlipLaw, SlipPoints, Stick, slip_law
 from skcable.strand.fe.terms import SectionTerm, Term
@@ -136,9 +137,7 @@ class HelicalWires(SectionTerm):
         self.alive = w.intact
         cos, sin = np.cos(w.lay_angle), np.sin(w.lay_angle)
         helical = w.layer > 0
-        lay_length = np.ones_like(w.radius)
-        lay_length[helical] = s.lay_lengths[w.layer[helical] - 1]
-        rate = np.where(helical, w.direction * 2 * np.pi / lay_length, 0.0)
+        rate = lay_rates(s, w)
         x = model.x
         fibre_rate = rate if self.helical else 0.0 * rate
         psi = w.psi[:, None, None] + fibre_rate[:, None, None] * x[None]
@@ -551,10 +550,7 @@ class SinusoidalDamageLoads(Term):
         self.material = s.material
         self.broken = np.flatnonzero(~w.intact & (w.layer > 0))
         self.materials = model.strand_section.materials.subset(self.broken)
-        helical = w.layer > 0
-        lay_length = np.ones_like(w.radius)
-        lay_length[helical] = s.lay_lengths[w.layer[helical] - 1]
-        rate = np.where(helical, w.direction * 2 * np.pi / lay_length, 0.0)
+        rate = lay_rates(s, w)
         rows = []
         for j in self.broken:
             psi = w.psi[j] + rate[j] * model.x
