@@ -17,7 +17,7 @@ from typing import TYPE_CHECKING, NamedTuple
 import numpy as np
 
 from skcable import _plausible
-from skcable._checks import positive
+from skcable._checks import positive, whole
 from skcable._show import Shown, counted, quantity
 from skcable.errors import ConvergenceError, InputError
 from skcable.fe.continuation import StepControl
@@ -241,13 +241,12 @@ class StepResult(Shown):
         ``fields(step) -> (point_data, cell_data)`` adds the user's arrays. Returns the paths."""
         from pathlib import Path
 
-        from skcable.io import strand_mesh, wire_mesh, write
+        from skcable.io import write
 
         path = Path(path)
-        point_data, cell_data = (None, None) if fields is None else fields(self)
-        out = [write(strand_mesh(self, point_data=point_data, cell_data=cell_data), path)]
+        out = [write(_mesh(self, False, scale, radial_scale, fields), path)]
         if wires:
-            tubes = wire_mesh(self, scale=scale, radial_scale=radial_scale)
+            tubes = _mesh(self, True, scale, radial_scale, fields)
             out.append(write(tubes, path.with_name(path.stem + "_wires" + path.suffix)))
         return out
 
@@ -421,15 +420,9 @@ class CapacityCurve(Shown):
         """The strand (or, with ``wires``, its wires) at one step as a meshio mesh
         ([`strand_mesh`][skcable.io.strand_mesh], [`wire_mesh`][skcable.io.wire_mesh]);
         ``fields(step) -> (point_data, cell_data)`` adds the user's arrays to the axis."""
-        from skcable.io import strand_mesh, wire_mesh
-
         if not -len(self.steps) <= step < len(self.steps):
             raise InputError("step", f"must index one of the {len(self.steps)} steps, got {step!r}")
-        result = self.steps[step]
-        if wires:
-            return wire_mesh(result, scale=scale, radial_scale=radial_scale)
-        point_data, cell_data = (None, None) if fields is None else fields(result)
-        return strand_mesh(result, point_data=point_data, cell_data=cell_data)
+        return _mesh(self.steps[step], wires, scale, radial_scale, fields)
 
     def to_vtk(
         self, path, *, wires: bool = False, scale: float = 1.0, radial_scale: float = 1.0, fields=None
@@ -483,28 +476,21 @@ def capacity_curve(
 ) -> CapacityCurve:
     """Pull ``model`` step by step until a wire breaks (or ``max_strain``).
 
-    A model loaded by an axial force (``axial="force"``) is pulled by force instead: ``n_steps``
-    (default 60) equal increments of the force up to ``max_force`` (N, required), its curve's
-    strains the strand's mean axial strain ``(u(L) − u(0))/L`` at each step; past the largest
-    force the strand carries, no step converges (``on_failure`` as below).
-
-    ``n_steps`` (default 60) strain increments, whatever ``max_strain`` is: half of them up to
-    twice the yield strain and half from there to ``max_strain`` (default 1.5 eps_rupture), or,
-    for a ``max_strain`` below twice the yield strain, all of them equal (the curve
-    stops at the first wire rupture, interpolated to the strain where the
-    most strained wire reaches eps_rupture, and its last step is solved there). A step
-    that fails is halved; the cut increment is kept until two steps in a row converge
-    at it (then it doubles), down to 1/64 of the schedule's step. The slip state is
-    frozen in each Newton solve and updated between solves (at most ``state_passes``); the
-    step lengths follow `skcable.fe.continuation.StepControl`.
-    When a step still fails, ``on_failure="raise"`` (default) raises ConvergenceError;
-    ``on_failure="stop"`` returns the converged part with ``failure`` set.
-    ``callback(step, done)``, if given, is called after every converged step
-    with its `StepResult` and the fraction of the strain schedule done
-    (for progress bars). Newton options for every step: ``options`` (a
-    `skcable.fe.NewtonOptions`, default the model's) and any of its fields as keywords
-    (``tol``, ``atol``, ``max_iter``, ``line_search``; the per-iteration ``callback`` of
-    Newton is ``NewtonOptions.callback``, not this one).
+    ``n_steps`` (default 60) strain increments: half up to twice the yield strain, half growing
+    geometrically from there to ``max_strain`` (default 1.5 eps_rupture), or all equal for a
+    ``max_strain`` below twice the yield strain. The curve stops at the first wire rupture,
+    interpolated to the strain where the most strained wire reaches its eps_rupture, and its last
+    step is solved there. A model loaded by an axial force (``axial="force"``) is pulled by
+    ``n_steps`` equal increments of the force up to ``max_force`` (N, required), its strains the
+    mean axial strain ``(u(L) − u(0))/L``; past the largest force the strand carries, no step
+    converges. A step that fails is halved, down to 1/64 of the schedule's step
+    (`skcable.fe.continuation.StepControl`); the slip state is frozen in each Newton solve and
+    updated between solves (at most ``state_passes``). When a step still fails,
+    ``on_failure="raise"`` raises ConvergenceError and ``"stop"`` returns the converged part with
+    ``failure`` set. ``callback(step, done)`` is called after every converged step with its
+    `StepResult` and the fraction of the schedule done. Newton options for every step:
+    ``options`` (a `skcable.fe.NewtonOptions`, default the model's) and any of its fields as
+    keywords (its per-iteration ``callback`` is ``NewtonOptions.callback``, not this one).
     """
     from skcable.fe import NewtonOptions
 
@@ -556,10 +542,7 @@ def capacity_curve(
 
 
 def _schedule(model, max_strain, n_steps, state_passes, max_force=None) -> tuple[int, np.ndarray]:
-    """``n_steps`` checked (default 60) and the load goals of `capacity_curve` after 0: for an
-    imposed strain, half the steps uniform up to twice the yield strain, half growing
-    geometrically to ``max_strain`` (default 1.5 eps_rupture); for an axial force, equal steps up
-    to ``max_force``; ``max_strain``, ``max_force`` and ``state_passes`` checked on the way."""
+    """``n_steps`` and the load goals of `capacity_curve` after 0, the arguments checked."""
     materials = model.strand.materials
     axial = getattr(model, "axial", "strain")
     if axial == "none":
@@ -572,40 +555,23 @@ def _schedule(model, max_strain, n_steps, state_passes, max_force=None) -> tuple
         positive("max_force", max_force)
     elif max_force is not None:
         raise InputError("max_force", "the model is pulled by strain (axial='strain'): give max_strain")
-    if n_steps is None:
-        n_steps = 60
-    elif isinstance(n_steps, bool) or not isinstance(n_steps, (int, np.integer)):
-        raise InputError("n_steps", f"must be a whole number of steps (at least 4), got {n_steps!r}")
-    n_steps = int(n_steps)
-    if n_steps < 4:
-        raise InputError("n_steps", f"must be at least 4, got {n_steps!r}")
+    n_steps = 60 if n_steps is None else whole("n_steps", n_steps, 4)
     if max_strain is not None:
         positive("max_strain", max_strain)
         _plausible.strand_strain("max_strain", float(max_strain), [m.eps_rupture for m in materials])
-    if not (
-        isinstance(state_passes, (int, np.integer))
-        and not isinstance(state_passes, bool)
-        and state_passes >= 0
-    ):
-        raise InputError("state_passes", f"must be a whole number >= 0, got {state_passes!r}")
+    whole("state_passes", state_passes, 0)
     if axial == "force":
         return n_steps, np.linspace(0.0, float(max_force), n_steps + 1)[1:]
     top = float(max_strain) if max_strain is not None else 1.5 * min(m.eps_rupture for m in materials)
-    # half the steps, uniform, up to twice the yield strain (where slip and yield
-    # shape the curve and K_Leq is measured), half from there to rupture with
-    # geometrically growing increments (no jump in step size for Newton to absorb)
+    # half the steps uniform up to twice the yield strain (where slip and yield shape the curve
+    # and K_Leq is measured), half growing geometrically (no jump in step size for Newton)
     knee = 2.0 * min(m.eps_y for m in materials)
     if top <= knee:  # the whole range is the uniform part: n_steps equal increments
         return n_steps, np.linspace(0.0, top, n_steps + 1)[1:]
-    schedule = np.unique(
-        np.concatenate(
-            [
-                np.linspace(0.0, knee, n_steps // 2 + 1),
-                np.geomspace(knee, top, n_steps - n_steps // 2 + 1),  # increments grow gradually
-            ]
-        )
-    )[1:]
-    return n_steps, schedule
+    uniform = np.linspace(0.0, knee, n_steps // 2 + 1)
+    return n_steps, np.unique(np.concatenate([uniform, np.geomspace(knee, top, n_steps - n_steps // 2 + 1)]))[
+        1:
+    ]
 
 
 class _Path:
@@ -686,6 +652,16 @@ class _Path:
             steps[-1] = self._solve(loads[-1], guess, steps[-2].state if len(steps) > 1 else None)
         except ConvergenceError:
             pass  # keep the step beyond rupture: the curve itself ends at the rupture strain
+
+
+def _mesh(step, wires: bool, scale: float, radial_scale: float, fields):
+    """The meshio mesh of a step's axis (with the user's ``fields``) or, with ``wires``, its wires."""
+    from skcable.io import strand_mesh, wire_mesh
+
+    if wires:
+        return wire_mesh(step, scale=scale, radial_scale=radial_scale)
+    point_data, cell_data = (None, None) if fields is None else fields(step)
+    return strand_mesh(step, point_data=point_data, cell_data=cell_data)
 
 
 def _last_note(model, last, load, state) -> str:
