@@ -414,11 +414,9 @@ _TABLE_3_1 = {
 
 #: ACSR conductors of ASTM B232/B232M-17, "Standard Specification for Concentric-Lay-Stranded
 #: Aluminum Conductors, Coated-Steel Reinforced (ACSR)": code word -> (steel wire diameter (m),
-#: aluminium wire diameter (m), aluminium wires per layer from the core outward). The core is 1+6
-#: steel wires. Lay ratios (lay length / outside diameter of the layer) are not fixed by the
-#: code word; the standard bounds them (steel layer 16-26, inner aluminium layers 10-16, outer
-#: layer 10-13) and these presets take 19, 13 and 11; the outer layer is right-hand and the
-#: directions alternate inward (the standard's rule).
+#: aluminium wire diameter (m), aluminium wires per layer from the core outward) over a 1+6 steel
+#: core. The standard bounds the lay ratios (steel 16-26, inner aluminium 10-16, outer 10-13):
+#: `LAY_RATIO` takes 19, 13 and 11, the outer layer right-hand, alternating inward (its rule).
 _ACSR = {
     "acsr-drake": (3.454e-3, 4.442e-3, (10, 16)),  # 795 kcmil 26/7, outer diameter 28.14 mm
     "acsr-hawk": (2.675e-3, 3.439e-3, (10, 16)),  # 477 kcmil 26/7, outer diameter 21.79 mm
@@ -427,8 +425,7 @@ _ACSR = {
 
 def _stranded(name: str, core: tuple, specs: list, strand_material: Material) -> Strand:
     """The strand of a stranding: the core ``(diameter, material)`` and the layers ``(count,
-    diameter, material)`` from the core outward, at the lay ratios `LAY_RATIO` (steel, inner,
-    outer) of the layer's outside diameter, the outer layer right-hand, alternating inward."""
+    diameter, material)`` from the core outward, at the lay ratios of `_ACSR`."""
     layers, outside = [], core[0]
     for k, (count, d, wire_material) in enumerate(specs):
         outside = outside + 2 * d
@@ -470,12 +467,9 @@ def preset(name: str) -> Strand:
     ``"steel-12.7"`` or ``"aluminium-14.3"`` (equal wires, helix radius d, one material).
 
     Multi-material conductors, ACSR 26/7 of ASTM B232/B232M-17 (a 1+6 steel core under 10 and 16
-    aluminium wires): ``"acsr-drake"`` (795 kcmil, steel 3.454 mm, aluminium 4.442 mm wires,
-    28.14 mm) and ``"acsr-hawk"`` (477 kcmil, steel 2.675 mm, aluminium 3.439 mm, 21.79 mm). Lay
-    ratios 19 (steel), 13 (inner aluminium), 11 (outer), inside the standard's ranges; the
-    strand's ``material`` is aluminium, ``core_material`` and the first layer's steel (the wire
-    laws of Pino Vidal (2021), Table B.1, with the densities and expansion coefficients of
-    IEC 61089:1991).
+    aluminium wires): ``"acsr-drake"`` (795 kcmil) and ``"acsr-hawk"`` (477 kcmil), lay ratios 19,
+    13 and 11; the strand's ``material`` is aluminium, ``core_material`` and the first layer's
+    steel (`material`).
 
     Every size of the conductor catalogue (ACSR of ASTM B232, AAC of B231, AAAC of B399:
     ``"acsr-partridge"``, ``"aac-arbutus"``, ``"aaac-greeley"`` ...; see

@@ -44,15 +44,8 @@ $$
   M_k\frac{\sqrt{\kappa_0^2-\kappa_k^2}}{\kappa_0}.
 $$
 
-**In a finite element.** `StageLaw.update` is the law at many points at once: curvatures
-``(2, *points)`` (both principal axes) and the slip curvatures ``(2, n_stages, *points)`` of the
-last converged state give the moments, the tangent stiffnesses (exact, the law being piecewise
-linear), the new slip curvatures and the friction work of the step, :math:`\sum_k M_k
-|\Delta\kappa_{p,k}|` (J/m). A solver calls it from the converged state at every iterate and
-keeps the new state once the step has converged.
-
-Axes: arrays of two entries (or rows) are over principal axes 1 and 2; ``axis`` is the int 0
-(principal axis 1) or 1 (principal axis 2).
+**In a finite element.** `StageLaw.update` is the law at many points at once, from the last
+converged state; a solver keeps the new state once the step has converged. Axes as in `Section`.
 """
 
 from __future__ import annotations
@@ -70,8 +63,9 @@ __all__ = ["StageLaw", "StageResponse", "CurvaturePath"]
 
 class StageResponse(NamedTuple):
     """What `StageLaw.update` returns at every point: the moments (N·m), the tangent
-    stiffnesses dM/dκ (N·m²), the new slip curvatures (1/m) and the friction work of the step
-    (J/m), shapes ``(2, *points)``, ``(2, *points)``, ``(2, n_stages, *points)``, ``(2, *points)``."""
+    stiffnesses dM/dκ (N·m², exact: the law is piecewise linear), the new slip curvatures (1/m)
+    and the friction work of the step :math:`\\sum_k M_k|\\Delta\\kappa_{p,k}|` (J/m), shapes
+    ``(2, *points)``, ``(2, *points)``, ``(2, n_stages, *points)``, ``(2, *points)``."""
 
     moment: np.ndarray
     tangent: np.ndarray
@@ -126,14 +120,8 @@ class StageLaw:
 
     Attributes
     ----------
-    EI_min, EI_max : ndarray (2,)
-        Full-slip and stick stiffnesses (N·m²).
     stiffness, slip_moment, kappa_slip : ndarray (2, n)
         B_k (N·m²), M_k (N·m) and the knees κ_k = M_k/B_k (1/m) of each stage.
-    kappa_0, M_0 : ndarray (2,)
-        The single knee of the same stick and full-slip lines, ``sum M_k / sum B_k`` (1/m), and
-        ``EI_max κ_0`` (N·m): the bilinear law with the same asymptotes (Foti & Martinelli 2018's
-        limit curvature); 0 about an axis without stages.
 
     Examples
     --------
@@ -179,7 +167,8 @@ class StageLaw:
     @property
     def kappa_0(self) -> np.ndarray:
         """``sum M_k / sum B_k`` per principal axis (1/m): where the stick line meets the
-        full-slip line ``sum M_k + EI_min κ``; 0 about an axis without stages."""
+        full-slip line ``sum M_k + EI_min κ``, the knee of the bilinear law with the same
+        asymptotes (Foti & Martinelli 2018's limit curvature); 0 about an axis without stages."""
         total = self.stiffness.sum(axis=1)
         return np.where(total > 0, self.slip_moment.sum(axis=1) / np.where(total > 0, total, 1.0), 0.0)
 
@@ -230,10 +219,9 @@ class StageLaw:
         return np.zeros((2, self.n_stages, *tuple(shape)))
 
     def update(self, kappa, slip) -> StageResponse:
-        """The law at many points: from the slip curvatures ``slip`` (``(2, n_stages, *points)``,
-        the last converged state) to the curvatures ``kappa`` (``(2, *points)``, 1/m), the
-        return mapping of every stage (module text). Returns a `StageResponse`; ``slip`` is not
-        modified."""
+        """The return mapping of every stage (module text) from the slip curvatures ``slip``
+        ``(2, n_stages, *points)`` to the curvatures ``kappa`` ``(2, *points)`` (1/m): a
+        `StageResponse` (``slip`` is not modified)."""
         kappa = float_array("kappa", kappa)
         slip = float_array("slip", slip)
         if kappa.ndim < 1 or kappa.shape[0] != 2 or slip.shape != (2, self.n_stages, *kappa.shape[1:]):
