@@ -42,6 +42,7 @@ from skcable.errors import ConvergenceError, InputError, NonFiniteError, SlowCon
 from skcable.fe import Assembly, LinearSystem, NewtonOptions, first_converged, minimize, newton
 from skcable.fe.elements import ElementLinePpExact
 from skcable.fe.newton import linear_tail
+from skcable.strand._arguments import real_number
 from skcable.strand._bending import friction
 from skcable.strand._geometry import lay_rates
 from skcable.strand.capacity import StepResult, StrandLayout, capacity_curve
@@ -171,24 +172,20 @@ class StrandModel:
         Replaces the built-in physics (``slip``, ``mu`` and ``damage_load`` are then unused).
     supports : pair of end conditions, optional
         ``(left, right)``, each ``"clamped"``, ``"pinned"``, ``"sliding"``, ``"free"`` or a
-        dict ``{dof: value}`` over ``"u"``, ``"v"``, ``"w"``, ``"phi"``, ``"v'"``, ``"w'"``
-        (m, rad): `skcable.strand.fe.supports`. Default: both clamped.
+        dict ``{dof: value}`` (m, rad): `skcable.strand.fe.supports`. Default: both clamped.
     axial : {"strain", "force", "none"}
-        The axial load at x = L (`skcable.strand.fe.supports`): an imposed strain,
-        ``u(L) = u(0) + ε L`` (``solve(strain)``, the capacity curves of the thesis); an axial
-        force P (``solve(force=P)``, load control); or none (``solve()``: u at both ends is a
-        support like the others, a clamped–free strand is free at its tip).
+        The axial load at x = L (`skcable.strand.fe.supports`): an imposed strain
+        (``solve(strain)``, the capacity curves of the thesis), an axial force P
+        (``solve(force=P)``) or none (``solve()``).
     twist : {"clamped", "free"}
         Shortcut: ``"free"`` frees the twist at x = L (of the default or the given supports).
     element : {"P2", "P3"}
         The element of u and φ (v and w are cubic Hermite).
     options : NewtonOptions, optional
-        Default Newton settings of `solve` and `capacity_curve` (tolerances, iterations, line
-        search, callback); each call may override them.
+        Default Newton settings of `solve` and `capacity_curve`; each call may override them.
     check_tangents : bool
-        On the model's first solve, check the tangent of every term an analyst wrote against a
-        directional difference of its residual (`skcable.strand.fe.diagnosis`: two residual
-        evaluations per term, once; a `skcable.errors.TangentWarning` names a term that is off).
+        On the model's first solve, check the tangent of every term an analyst wrote
+        (`skcable.strand.fe.diagnosis`; a `skcable.errors.TangentWarning` names a term that is off).
 
     Attributes
     ----------
@@ -202,7 +199,7 @@ class StrandModel:
     assembly : skcable.fe.Assembly
         Basis values, weights and sparsity pattern, computed once.
     x : ndarray (n_elements, n_quad)
-        Quadrature points (m), scikit-fem's layout: what the terms see.
+        Quadrature points (m).
     fixed, fixed_values : ndarray
         The dofs the supports fix and their values (an imposed strain's dof excluded); ``pull``
         is the axial dof at x = L, ``free`` the dofs a solve moves.
@@ -1027,11 +1024,7 @@ class StrandModel:
         value = strain if wanted == "strain" else force
         if value is None:
             raise InputError(wanted, f"the model's axial load is {self.axial!r}: give solve({wanted}=...)")
-        if isinstance(value, bool) or not isinstance(value, (int, float, np.integer, np.floating)):
-            raise InputError(wanted, f"must be a real number, got {value!r}")
-        value = float(value)
-        if not np.isfinite(value):
-            raise InputError(wanted, f"must be finite, got {value!r}")
+        value = real_number(wanted, value)
         if wanted == "strain":
             if not -1.0 < value < 1.0:
                 raise InputError(
