@@ -144,9 +144,9 @@ class Strand:
         transformed (modular-ratio) inertias.
     broken : frozenset of (layer, index)
         Broken wires: layer number (1 = first helical layer; the core cannot
-        break) and wire index (0 to the layer's count - 1), integers only. A
-        set or list of pairs is accepted and stored as a frozenset; a pair
-        listed twice raises InputError.
+        break) and wire index (0 to the layer's count - 1), integers only (not
+        2.0). A set or list of pairs is stored as a frozenset; a pair listed
+        twice raises InputError.
     name : str
         Label (presets: ``"steel-9.5"`` ...).
     core_material : Material or None
@@ -209,12 +209,8 @@ class Strand:
         return WireMaterials(materials, np.repeat(per_layer, counts))
 
     def _wire_set(self, argument: str, wires) -> list[tuple[int, int]]:
-        """Validated (layer, index) pairs of ``wires`` (a set, list or tuple of pairs).
-
-        Layers count from 1 (the first helical layer; the core cannot break), indices
-        from 0 to the layer's count - 1. Non-integers (2.7, also 2.0), booleans,
-        out-of-range numbers and a pair listed twice raise InputError(argument).
-        """
+        """Validated (layer, index) pairs of ``wires`` (a set, list or tuple of pairs, as
+        ``broken`` takes them), or InputError naming ``argument``."""
         if isinstance(wires, (str, bytes)) or not isinstance(wires, (set, frozenset, list, tuple)):
             raise InputError(argument, f"must be a set or list of (layer, index) pairs, got {wires!r}")
         out = []

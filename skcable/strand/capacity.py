@@ -1,12 +1,6 @@
-"""Step results and capacity curves of a strand under imposed axial strain.
-
-``K_Leq`` (eq. 4.30) is the step-weighted mean slope over the linear-elastic
-range, i.e. the secant ``F(ε_e)/ε_e`` at the last step whose wires all stay
-below the blend start ε'_y of the material law; ``toughness`` is the area
-under the curve up to rupture (the first wire reaching ``eps_rupture``);
-``D_r = 1 - U_T/U_T0`` (eq. 4.31) against the undamaged strand with the same
-model settings.
-"""
+"""Step results and capacity curves of a strand under imposed axial strain: the equivalent
+stiffness ``K_Leq`` (Pino Vidal 2021, eq. 4.30), the toughness and the damage index ``D_r``
+(eq. 4.31) of `CapacityCurve`."""
 
 from __future__ import annotations
 
@@ -70,27 +64,19 @@ class StrandLayout:
 
     Attributes
     ----------
-    nodes : ndarray (n_nodes,)
-        Node abscissae (m).
-    elements : ndarray (2, n_elements)
-        Node indices of each element.
+    nodes, elements : ndarray (n_nodes,), (2, n_elements)
+        Node abscissae (m) and the node indices of each element.
     x, dx : ndarray (n_elements, n_quad)
         Quadrature points (m) and weights (m).
-    wire_psi, wire_rate, wire_radius, wire_layer, wire_broken : ndarray (n_wires,)
-        Angular position at x = 0 (rad), lay rate dψ/dx (rad/m, 0 for the core),
-        helix radius (m), layer (0 core) and whether the wire is broken.
-    wire_size : ndarray (n_wires,)
-        Each wire's own radius (m).
-    slip : str
-        Name of the slip law.
+    wire_psi, wire_rate, wire_radius, wire_layer, wire_broken, wire_size : ndarray (n_wires,)
+        Angular position at x = 0 (rad), lay rate dψ/dx (rad/m, 0 for the core), helix radius
+        (m), layer (0 core), whether the wire is broken, and its own radius (m).
+    slip, element : str
+        Name of the slip law; the element of u and φ ("P2" or "P3").
     eps_rupture, eps_y1 : float
-        The wire material's rupture strain and end of its linear branch (the smallest
-        among the materials of a multi-material strand).
+        The rupture strain and the end of the linear branch (the smallest among the materials).
     wire_eps_rupture, wire_eps_y1 : ndarray (n_wires,) or None
-        The same per wire, from each wire's own material (None: ``eps_rupture`` and
-        ``eps_y1`` for every wire).
-    element : str
-        The element of u and φ ("P2" or "P3").
+        The same per wire, from its own material (None: the scalars for every wire).
     """
 
     nodes: np.ndarray
@@ -276,11 +262,9 @@ class CapacityCurve(Shown):
     ruptured : bool
         Whether the curve ended at a wire's rupture strain.
     chatter_steps : list of int
-        Steps whose slip state did not settle (it cycled, or the re-solve with
-        the new state failed): the previous state was kept for that step.
+        Steps whose slip state did not settle (`StepResult.settled`).
     cutbacks : int
-        Step halvings the solver needed (a failed Newton solve retried with
-        half the strain increment).
+        Step halvings the solver needed.
     """
 
     model: StrandModel
@@ -350,7 +334,8 @@ class CapacityCurve(Shown):
 
     @property
     def K_Leq(self) -> float:
-        """Equivalent linear stiffness over [0, elastic_limit] (N), eq. 4.30: the secant there."""
+        """Equivalent linear stiffness over [0, elastic_limit] (N), eq. 4.30: the step-weighted
+        mean slope over the linear-elastic range, i.e. the secant there."""
         strain, force = self._elastic_end
         return force / strain
 
@@ -380,7 +365,8 @@ class CapacityCurve(Shown):
 
     @property
     def toughness(self) -> float:
-        """Area under the force–strain curve (N), up to rupture or the last step."""
+        """Area under the force–strain curve (N), up to rupture (the first wire reaching its
+        ``eps_rupture``) or the last step."""
         return float(np.trapezoid(self.force, self.strain))
 
     def columns(self) -> dict:
@@ -456,7 +442,8 @@ class CapacityCurve(Shown):
 
     @property
     def D_r(self) -> float:
-        """Damage index ``1 - U_T / U_T0`` (eq. 4.31); both curves must reach rupture."""
+        """Damage index ``1 - U_T / U_T0`` (eq. 4.31) against the undamaged strand with the same
+        model settings (`reference`); both curves must reach rupture."""
         if not (self.ruptured and self.reference.ruptured):
             raise ConvergenceError(f"D_r needs curves to rupture; this one stopped: {self.failure}")
         return 1.0 - self.toughness / self.reference.toughness

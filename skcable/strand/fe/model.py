@@ -269,9 +269,7 @@ class StrandModel:
         self._plausible_strain = max(_plausible.MAX_STRAIN, 1.5 * max(self._ruptures))
         self.EA = self.strand_section.EA
         self._bound = [t.bind(self) for t in self.terms]
-        # (position in the model's term list, bound term): the states and outputs follow that list
-        self._section_terms = [(i, t) for i, t in enumerate(self._bound) if isinstance(t, SectionTerm)]
-        self._other_terms = [(i, t) for i, t in enumerate(self._bound) if not isinstance(t, SectionTerm)]
+        self._section_terms, self._other_terms = _by_kind(self._bound)
         key = self.free.tobytes()
         if key not in self._kept.by_free:
             self._kept.by_free[key] = (self.assembly.banded(self.free), self._equation_groups())
@@ -538,11 +536,9 @@ class StrandModel:
         bound terms (a surrogate, `_pass_fold`)."""
         state = self.initial_state() if state is None else state
         strain = load if self.axial == "strain" else self.strain_of(U)
-        if bound is None:
-            section_terms, other_terms = self._section_terms, self._other_terms
-        else:
-            section_terms = [(i, t) for i, t in enumerate(bound) if isinstance(t, SectionTerm)]
-            other_terms = [(i, t) for i, t in enumerate(bound) if not isinstance(t, SectionTerm)]
+        section_terms, other_terms = (
+            (self._section_terms, self._other_terms) if bound is None else _by_kind(bound)
+        )
         g = self.generalized_strains(U)
         S = D = None
         outputs: list[Any] = [None] * len(self._bound)  # each term's output dict, filled below
@@ -1141,6 +1137,13 @@ def _surrogate(term, output):
     if hasattr(term, "frozen"):
         return term.frozen(output)
     return term if term.symmetric and term.potential is not False else None
+
+
+def _by_kind(bound) -> tuple[list, list]:
+    """The section terms and the others as ``(position in the term list, term)``: the states and
+    outputs follow the model's term list."""
+    section = [(i, t) for i, t in enumerate(bound) if isinstance(t, SectionTerm)]
+    return section, [(i, t) for i, t in enumerate(bound) if not isinstance(t, SectionTerm)]
 
 
 def _rebuild(cls, strand, length, kwargs):
