@@ -54,8 +54,9 @@ from typing import NamedTuple
 
 import numpy as np
 
+from skcable._checks import whole
 from skcable.errors import InputError
-from skcable.strand._arguments import float_array, principal_axis
+from skcable.strand._arguments import float_array, name_text, principal_axis
 from skcable.strand._section import axis_pair
 
 __all__ = ["StageLaw", "StageResponse", "CurvaturePath"]
@@ -145,9 +146,7 @@ class StageLaw:
                 raise InputError(key, f"must be >= 0, got {getattr(self, key).tolist()}")
         if np.any((self.stiffness == 0) & (self.slip_moment > 0)):
             raise InputError("slip_moment", "must be 0 for a stage without stiffness (it carries nothing)")
-        if not isinstance(name, str):
-            raise InputError("name", f"must be a str, got {name!r}")
-        self.name = name
+        self.name = name_text(name)
         carries = self.stiffness > 0
         self.kappa_slip = np.where(carries, self.slip_moment / np.where(carries, self.stiffness, 1.0), 0.0)
         if not np.all(np.isfinite(self.kappa_slip)):
@@ -284,8 +283,7 @@ class StageLaw:
         if amplitude.ndim:
             raise InputError("kappa_a", f"must be a single number for a loop, got shape {amplitude.shape}")
         a = float(amplitude)
-        if isinstance(n, (bool, np.bool_)) or not isinstance(n, (int, np.integer)) or n < 0:
-            raise InputError("n", f"must be an integer >= 0, got {n!r}")
+        whole("n", n, 0)
         knees = self.knees(axis)
         turns = a - 2.0 * knees[2.0 * knees < 2.0 * a]
         down = np.unique(np.concatenate([[a, -a], turns, np.linspace(a, -a, n + 2)]))[::-1]
