@@ -132,14 +132,8 @@ def _theta(section: Section, axis: int) -> np.ndarray:
 class CardouSection:
     r"""Cardou's law of one section and friction at any axial strains: its strain-independent
     per-wire factors (levers, capstan gains) formed once, the strain-dependent ones (secant
-    moduli, wire forces) per call, with their derivatives on request.
-
-    Parameters
-    ----------
-    section : Section
-        The strand section (``strand.section()``).
-    mu : float
-        Friction coefficient, >= 0.
+    moduli, wire forces) per call, with their derivatives on request; ``section`` and ``mu`` as
+    `BendingLaw` takes them.
 
     Notes
     -----
@@ -221,26 +215,10 @@ class CardouSection:
 
 
 def critical_curvature(section, mu: float, axial_strain) -> np.ndarray:
-    """Critical curvatures κ_m (1/m) of Cardou's law at many axial strains in one call.
-
-    Parameters
-    ----------
-    section : Section
-        The strand section (``strand.section()``).
-    mu : float
-        Friction coefficient, >= 0.
-    axial_strain : float or array_like
-        Axial strains of the strand, each in ``[0, eps_rupture)`` (at 0, κ_m = 0:
-        no tension, no friction); any shape, not empty.
-
-    Returns
-    -------
-    ndarray (2, *axial_strain.shape)
-        Row 0: about principal axis 1; row 1: about principal axis 2. Equal to
-        ``BendingLaw(section, mu=mu, axial_strain=e).kappa_m`` for each strain e.
-        About an axis without composite bending (`Section.composite_bending` False)
-        the documented constant ``2 ε_rupture / d_max`` (see `BendingLaw`).
-    """
+    """Critical curvatures κ_m (1/m) of Cardou's law at many axial strains in one call:
+    ``BendingLaw(section, mu=mu, axial_strain=e).kappa_m`` for each strain e of
+    ``axial_strain`` (any shape, not empty; at 0, κ_m = 0: no tension, no friction), as an
+    array (2, *axial_strain.shape) over principal axes 1, 2."""
     section = checked_section(section)
     mu = friction(mu)
     return CardouSection(section, mu)(_strains(section, axial_strain, scalar=False))["kappa_m"]

@@ -134,18 +134,14 @@ class LayerSlipLaw(StageLaw):
 
     Attributes
     ----------
-    mu : ndarray (n_layers,)
-        Friction coefficient per helical layer.
-    axial_strain, tension : float
-        The axial strain and the axial force of the intact wires (N).
+    mu, axial_strain, tension : ndarray (n_layers,), float, float
+        As given (one per layer; tension in N), the strain or the tension found from the other.
     wire_force : ndarray (n_wires,)
         Every wire's axial force (N), 0 for a broken one.
     pressure : ndarray (n_layers,)
         p_k, the pressure of the outer layers on one wire of each layer (N/m of wire).
     stiffness, slip_moment, kappa_slip : ndarray (2, n_layers)
-        Per principal axis and helical layer (from the core outward): B_k (N·m²), M_k (N·m),
-        κ_k = M_k/B_k (1/m); and `StageLaw`'s other attributes and methods (backbone, loops,
-        energy per cycle).
+        `StageLaw`'s, one stage per helical layer from the core outward.
     """
 
     def __init__(self, section, *, mu, axial_strain=None, tension=None, outer_friction: str = "foti"):
