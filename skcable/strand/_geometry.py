@@ -9,11 +9,7 @@ touches the core, ``R_1 = (d_core + d_1)/2``; layer k touches layer k-1,
 strand of equal wires). Lay angle alpha and lay length p are tied by
 ``tan(alpha) = 2 pi R / p``.
 
-Damage (the convention that reproduces the thesis's annex A):
-``damaged(n)`` breaks n adjacent wires of the outer layer placed
-symmetrically about +z, so that the net section stays symmetric about z;
-``damaged(wires=[(layer, index), ...])`` breaks any set of helical wires
-(layers from 1, indices from 0; the core cannot break).
+Damage: `Strand.damaged` (the convention that reproduces the thesis's annex A).
 
 Reference: S. Pino Vidal, "Rigidez a flexión en cables: análisis numérico",
 Universidad de Chile, 2021 (the thesis; its tables and equations are cited by
@@ -343,8 +339,9 @@ class Strand:
         n : int, optional
             Break n adjacent wires of the outer layer, placed symmetrically
             about +z (the outer layer is rotated so; Pino Vidal (2021), Table 3.2),
-            ``0 <= n < count`` of the outer layer. Only for a strand without broken
-            wires (the rotation would move them); ``n = 0`` returns the strand unrotated.
+            so that the net section stays symmetric about z; ``0 <= n < count`` of the
+            outer layer. Only for a strand without broken wires (the rotation would move
+            them); ``n = 0`` returns the strand unrotated.
         wires : list or set of (layer, index), optional
             Break exactly these wires (layer 1 is the first helical layer, indices
             from 0), without rotating anything, in addition to those already broken.

@@ -135,10 +135,9 @@ class StepResult(Shown):
     Attributes
     ----------
     strain, force : float
-        The strand's axial strain ``(u(L) − u(0))/L`` (the imposed one under
-        ``axial="strain"``) and the axial force at x = L (N): the imposed strain's reaction, the
-        applied force (``axial="force"``), or the reaction of a support holding u(L) (0 where
-        u(L) is free).
+        The strand's axial strain ``(u(L) − u(0))/L`` and the axial force at x = L (N): the
+        imposed strain's reaction, the applied force, or the reaction of a support holding u(L)
+        (0 where u(L) is free).
     x : ndarray (n_elements, n_quad)
         Quadrature points (m).
     curvature : ndarray (2, n_elements, n_quad)
@@ -172,18 +171,14 @@ class StepResult(Shown):
     assemblies : int
         Residual and tangent evaluations the step took.
     shifted : bool
-        The tangent was not positive definite on the way to this state and the solver shifted
-        it ([`minimize`][skcable.fe.newton.minimize]): the equilibrium path has a fold (a
-        snap under the imposed strain) between the previous step and this one.
+        The solver shifted a tangent that was not positive definite
+        ([`minimize`][skcable.fe.newton.minimize]): the path folds (snaps) before this step.
     outputs : dict of str to (str, ndarray)
-        The terms' named results (`skcable.fe.terms`): ``name -> (kind, values)`` with kind
-        ``"point_data"`` (values at the quadrature points (n_elements, n_quad) or at the nodes
-        (n_nodes,)) or ``"cell_data"`` (one value per element); the writers put them in every
-        VTK file.
+        The terms' named results: ``name -> (kind, values)``, kind ``"point_data"`` or
+        ``"cell_data"`` (`skcable.strand.fe.terms`); the writers put them in every VTK file.
     reactions : dict
         Support reactions ``{"left": {dof: value}, "right": {dof: value}}`` (N for u, v, w;
-        N·m for φ and the slopes), the fixed dofs' residual rows; the imposed strain's at x = L
-        is ``force``.
+        N·m for φ and the slopes); the imposed strain's at x = L is ``force``.
     """
 
     strain: float

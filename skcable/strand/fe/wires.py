@@ -43,8 +43,7 @@ _STICK_FORCES = np.array([0, 0, 1, 0, 2, 3])
 
 def _stick_map() -> np.ndarray:
     """Which of `HelicalWires._section_stick`'s 21 rows each entry of the 6 × 6 section tangent
-    D is: the 10 pairs a <= b of the rows on the strains 0, 2, 4, 5 (0–9, in `triu_indices`
-    order), v′ times the axial row (10–13), w′ times it (14–17), (1, 1), (3, 3), (1, 3) (18–20)."""
+    D is (the rows: that method's comment)."""
     pair = {(int(a), int(b)): p for p, (a, b) in enumerate(zip(*_STICK_PAIRS, strict=True))}
     reduced = {0: 0, 2: 1, 4: 2, 5: 3}
     stick_map = np.empty((6, 6), dtype=np.intp)
@@ -193,14 +192,10 @@ class HelicalWires(SectionTerm):
         self._no_slip.flags.writeable = False
 
     def kappa_m(self, axial_strain, derivative: bool = True):
-        """Critical curvatures (2, ...) and, with ``derivative``, their derivative with respect to
-        the axial strain (else None): the interpolant's cubic pieces (and its derivative's)
-        evaluated here by Horner's rule on its uniform grid, one interval lookup for both (the
-        values of ``PchipInterpolator`` to round-off).
-
-        A monotone C¹ interpolant (PCHIP) of the tabulated law: a piecewise-linear one
-        has a derivative that jumps at every grid point, and Newton stalls on a kink.
-        """
+        """Critical curvatures (2, ...) and, with ``derivative``, their derivative in the axial
+        strain (else None): the cubic pieces of the tabulated law's monotone C¹ interpolant
+        (PCHIP: a piecewise-linear one has kinks that stall Newton) by Horner's rule, one
+        interval lookup for both (``PchipInterpolator``'s values to round-off)."""
         grid = self.kappa_grid
         eps = np.minimum(np.maximum(axial_strain, 0.0), grid[-1])  # `np.clip`, without its wrapper
         # the interval of each point (a NaN strain takes the first: its value stays NaN)
