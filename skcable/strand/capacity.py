@@ -487,12 +487,10 @@ def capacity_curve(
         while path.eps < goal - 1e-15 and failure is None:
             step, target, cut, last = path.solve(control, goal, smallest)
             if step is None:
-                where = (
-                    f"strain {path.eps:.6g}"
-                    if getattr(model, "axial", "strain") == "strain"
-                    else (f"force {path.eps:.6g} N")
+                where = "strain {:.6g}" if getattr(model, "axial", "strain") == "strain" else "force {:.6g} N"
+                failure = (
+                    f"no convergence beyond {where.format(path.eps)} (increment cut to 1/64 of the step)"
                 )
-                failure = f"no convergence beyond {where} (increment cut to 1/64 of the step)"
                 failure += _softening_note(model, path.steps[-1] if path.steps else None)
                 failure += _last_note(model, last, target, path.state)
                 if on_failure == "raise":
@@ -618,13 +616,11 @@ class _Path:
     def _end_at_rupture(self, peak: float, rupture: float, U: np.ndarray) -> None:
         """End the curve where the most strained wire (relative to its own material's rupture
         strain) reaches its rupture strain, and solve the last step there."""
-        steps, strains, forces = self.steps, self.strains, self.forces
+        steps, loads = self.steps, self.loads
         before = self.layout.peak(steps[-2].wire_strain, "eps_rupture")[0] if len(steps) > 1 else 0.0
         t = (rupture - before) / (peak - before)
-        strains[-1] = strains[-2] + t * (strains[-1] - strains[-2])
-        forces[-1] = forces[-2] + t * (forces[-1] - forces[-2])
-        loads = self.loads
-        loads[-1] = loads[-2] + t * (loads[-1] - loads[-2])
+        for values in (self.strains, self.forces, loads):
+            values[-1] = values[-2] + t * (values[-1] - values[-2])
         self.ruptured = True
         # one last state everywhere: the last step is the equilibrium at the rupture strain
         # (the force of the curve stays the interpolated one; they differ by its error)
