@@ -273,10 +273,9 @@ class StrandModel:
         key = self.free.tobytes()
         if key not in self._kept.by_free:
             self._kept.by_free[key] = (self.assembly.banded(self.free), self._equation_groups())
-        banded, self._groups = self._kept.by_free[key]
+        banded, self._group_index = self._kept.by_free[key]
         self._system = LinearSystem(banded)
         self._first = FirstSolveCheck(self, check_tangents)
-        self._group_index = self._index_groups()
         self._metric = None  # the elastic tangent of the straight strand, in the solver's storage
         self.layout = self._layout()
         self._alive_wires = ~self.layout.wire_broken[:, None, None]
@@ -365,9 +364,9 @@ class StrandModel:
             self._reaction_dofs["right"]["u"] = self.pull
 
     def _equation_groups(self):
-        """Dofs of equations of one kind: per field, the values, and the slopes of v and w.
-
-        Returns a list of ``(all dofs, free dofs, is_moment)``."""
+        """The equations of one kind (per field, the values, and the slopes of v and w) as flat
+        index arrays for ``np.maximum.reduceat``: ``(order, starts, free_order, free_starts,
+        forces, free_length, with_free)``, the last three over the groups with free dofs."""
         free = np.zeros(self.assembly.N, dtype=bool)
         free[self.free] = True
         groups = []
@@ -380,21 +379,23 @@ class StrandModel:
             for k, dofs in enumerate(kinds):
                 dofs = offset + dofs
                 groups.append((dofs, dofs[free[dofs]], name == "phi" or k == 1))
-        return groups
-
-    def _index_groups(self):
-        """The groups of `_equation_groups` as flat index arrays for ``np.maximum.reduceat``."""
-        groups = self._groups
-        self._has_free = np.array([free.size > 0 for _, free, _ in groups])
-        self._with_free = np.flatnonzero(self._has_free)
+        has_free = np.array([free.size > 0 for _, free, _ in groups])
         order = np.concatenate([dofs for dofs, _, _ in groups])
         starts = np.cumsum([0] + [len(dofs) for dofs, _, _ in groups[:-1]])
         with_free = [free for _, free, _ in groups if free.size]
         free_order = np.concatenate(with_free)
         free_starts = np.cumsum([0] + [len(f) for f in with_free[:-1]])
         moment = np.array([is_moment for _, _, is_moment in groups])
-        length = np.where(moment, self.length, 1.0)[self._has_free]  # over the groups with free dofs
-        return order, starts, free_order, free_starts, np.flatnonzero(~moment), length
+        length = np.where(moment, self.length, 1.0)[has_free]
+        return (
+            order,
+            starts,
+            free_order,
+            free_starts,
+            np.flatnonzero(~moment),
+            length,
+            np.flatnonzero(has_free),
+        )
 
     def _layout(self) -> StrandLayout:
         w, materials = self.strand_section.wires, self.strand_section.materials
@@ -698,14 +699,14 @@ class StrandModel:
     def _norm(self, a, tol: float) -> float:
         """The largest residual of each group of equations over its force scale, or over its
         round-off floor divided by the tolerance where that is larger (module docstring)."""
-        order, starts, free_order, free_starts, force, free_length = self._group_index
+        order, starts, free_order, free_starts, force, free_length, with_free = self._group_index
         scales = np.maximum.reduceat(a.size.take(order), starts)
         # the scales are >= 0 (NaN stays NaN); ndarray methods: a Newton calls this per assembly
         forces = float(scales.take(force).max(initial=0.0))
         # the moment groups' floor times the length, at least 1e-300 (max is exact in any order)
         floor = np.maximum(ROUND_OFF * forces / tol * free_length, 1e-300)
         residual = np.maximum.reduceat(np.abs(a.R.take(free_order)), free_starts)
-        worst = residual / np.maximum(scales.take(self._with_free), floor)
+        worst = residual / np.maximum(scales.take(with_free), floor)
         return float(worst.max(initial=0.0)) if math.isfinite(forces) else float("nan")  # NaN stays NaN
 
     def _potential(self, first) -> bool:
