@@ -219,7 +219,8 @@ class StepResult(Shown):
         `skcable.io.write`) for ParaView: the axis with its point and cell data, the terms'
         outputs included ([`strand_mesh`][skcable.io.strand_mesh]). With ``wires``, also the
         wires as tubes ([`wire_mesh`][skcable.io.wire_mesh]) in ``<stem>_wires<suffix>``;
-        ``fields(step) -> (point_data, cell_data)`` adds the user's arrays. Returns the paths."""
+        ``fields(step) -> (point_data, cell_data)`` adds the user's arrays (dicts of name to
+        values at the nodes or quadrature points / per element, or None). Returns the paths."""
         from pathlib import Path
 
         from skcable.io import write
@@ -409,10 +410,8 @@ class CapacityCurve(Shown):
         self, path, *, wires: bool = False, scale: float = 1.0, radial_scale: float = 1.0, fields=None
     ):
         """Write every step as a ParaView time series ``path`` (``.pvd`` + one ``.vtu`` per step,
-        time = imposed axial strain), the terms' outputs included. With ``wires``, also
-        ``<stem>_wires.pvd``; ``fields(step) -> (point_data, cell_data)`` adds the user's arrays
-        (dicts of name to values at the nodes or quadrature points / per element, or None) to
-        every step. Returns the paths."""
+        time = the axial strain), with ``wires`` also ``<stem>_wires.pvd``, each step as
+        `StepResult.to_vtk` writes it (``fields`` included). Returns the paths."""
         from pathlib import Path
 
         from skcable.io import write_series
