@@ -295,20 +295,8 @@ class Strand:
 
     def wires(self) -> Wires:
         """Position, lay and state of every wire, core first."""
-        columns = {
-            k: [v]
-            for k, v in dict(
-                y=0.0,
-                z=0.0,
-                psi=0.0,
-                radius=0.0,
-                lay_angle=0.0,
-                direction=0,
-                diameter=self.core_diameter,
-                layer=0,
-                intact=True,
-            ).items()
-        }
+        core = dict(y=0.0, z=0.0, psi=0.0, radius=0.0, lay_angle=0.0, direction=0, layer=0, intact=True)
+        columns = {k: [v] for k, v in (core | {"diameter": self.core_diameter}).items()}
         for k, (layer, R, alpha) in enumerate(
             zip(self.layers, self.helix_radii, self.lay_angles, strict=True), 1
         ):
