@@ -39,12 +39,7 @@ def real_number(name: str, value, *, lower: float | None = None, strict: bool = 
 
 def principal_axis(value) -> int:
     """A principal-axis index: the int 0 (principal axis 1) or 1 (principal axis 2)."""
-    if not (
-        isinstance(value, (int, np.integer)) and not isinstance(value, (bool, np.bool_))
-    ) or value not in (
-        0,
-        1,
-    ):
+    if isinstance(value, (bool, np.bool_)) or not isinstance(value, (int, np.integer)) or value not in (0, 1):
         raise InputError(
             "axis", f"must be the int 0 (principal axis 1) or 1 (principal axis 2), got {value!r}"
         )

@@ -31,28 +31,18 @@ with this one M_rf. The thesis's Table 3.5 is not
 reproduced by these (nor by eq. 3.16 literally, `BendingLaw.kappa_m_eq_3_16`):
 docs/strand_sections.md shows both beside the table.
 
-**No composite bending about an axis.** When every intact wire lies on one
-line through the core centre (one helical wire left besides the core, two
-opposite ones, or none: `Section.composite_bending` is False), no wire has a
-lever about the principal axis along that line. The stick and slip stiffnesses
-about it coincide exactly, no wire has a friction lever (θ = 0, ``M_rf = 0``),
-and the law is linear, ``M = EI_slip κ``, whatever κ_m is: no interwire shear
-arises, so slip about that axis never starts. It is represented finitely by
-``BendingLaw.linear`` = True, ``M_rf = 0`` and
-``κ_m = 2 ε_rupture / d_max`` (with several materials, the smallest
-``2 ε_rupture,i / d_i`` over the intact wires), the curvature at which the thickest intact wire
-would break by its own bending alone: no slip about that axis within the
-range where the law means anything. That κ_m does not depend on μ or ε.
+**No composite bending about an axis** (every intact wire on one line through the core centre:
+`Section.composite_bending` False): no wire has a lever or a friction lever (θ = 0) about it, no
+interwire shear arises, and the law is linear, ``M = EI_slip κ`` (``BendingLaw.linear``), with
+``M_rf = 0`` and ``κ_m = 2 ε_rupture / d_max`` (the smallest ``2 ε_rupture,i / d_i`` over the
+intact wires): the curvature at which the thickest wire would break by its own bending, finite
+and independent of μ and ε.
 
-**Several materials** (a material per layer, `Layer.material`): every wire's
-secant modulus and stress are those of its own material at its strain, so
-``EI_stick = sum E_sec,i (A_i cos^3 α_i d_i^2 + I_w,i cos α_i)`` with d_i about
-the section's modulus-weighted centroid, and ``F_i = A_i σ_i(cos²α_i ε)``; the
-axial strain must stay below the smallest rupture strain of the materials.
+**Several materials** (`Layer.material`): every wire's secant modulus and stress are its own
+material's, ``EI_stick = sum E_sec,i (A_i cos^3 α_i d_i^2 + I_w,i cos α_i)`` about the
+modulus-weighted centroid, ``F_i = A_i σ_i(cos²α_i ε)``, below the smallest rupture strain.
 
-Axes: arrays of two entries are over principal axes 1 and 2 (index 0 is
-principal axis 1, as ``curvature_1`` in the CLI and the VTK files), and every
-``axis`` argument is the int 0 (principal axis 1) or 1 (principal axis 2).
+Axes as in `Section`: index 0 (an ``axis`` of 0) is principal axis 1.
 
 References: S. Pino Vidal, "Rigidez a flexión en cables: análisis numérico",
 Universidad de Chile, 2021; A. Cardou, "Stick-slip mechanical models for
@@ -68,7 +58,7 @@ import numpy as np
 from skcable._show import Shown
 from skcable.errors import InputError
 from skcable.strand._arguments import float_array, is_real_number, principal_axis, real_number
-from skcable.strand._section import Section
+from skcable.strand._section import Section, axis_pair, checked_section
 
 __all__ = ["BendingLaw", "CardouSection", "MAX_FRICTION", "critical_curvature", "friction"]
 
@@ -91,19 +81,8 @@ def friction(mu) -> float:
     return mu
 
 
-def _section(section) -> Section:
-    if not isinstance(section, Section):
-        raise InputError("section", f"must be a Section (strand.section()), got {section!r}")
-    return section
-
-
-def _rupture(strand) -> float:
-    """The smallest rupture strain among the strand's materials (its only one if it has one)."""
-    return min(m.eps_rupture for m in strand.materials)
-
-
 def _strains(section: Section, axial_strain, *, scalar: bool) -> np.ndarray:
-    top = _rupture(section.strand)
+    top = min(m.eps_rupture for m in section.strand.materials)
     if scalar:
         if not is_real_number(axial_strain):
             raise InputError(
@@ -153,14 +132,8 @@ def _theta(section: Section, axis: int) -> np.ndarray:
 class CardouSection:
     r"""Cardou's law of one section and friction at any axial strains: its strain-independent
     per-wire factors (levers, capstan gains) formed once, the strain-dependent ones (secant
-    moduli, wire forces) per call, with their derivatives on request.
-
-    Parameters
-    ----------
-    section : Section
-        The strand section (``strand.section()``).
-    mu : float
-        Friction coefficient, >= 0.
+    moduli, wire forces) per call, with their derivatives on request; ``section`` and ``mu`` as
+    `BendingLaw` takes them.
 
     Notes
     -----
@@ -241,42 +214,18 @@ class CardouSection:
         return out
 
 
-def _law(section: Section, mu: float, strain: np.ndarray) -> dict:
-    """EI_stick, EI_slip, M_rf, kappa_m (2, *strain.shape) of Cardou's law at every strain."""
-    return CardouSection(section, mu)(strain)
-
-
 def critical_curvature(section, mu: float, axial_strain) -> np.ndarray:
-    """Critical curvatures κ_m (1/m) of Cardou's law at many axial strains in one call.
-
-    Parameters
-    ----------
-    section : Section
-        The strand section (``strand.section()``).
-    mu : float
-        Friction coefficient, >= 0.
-    axial_strain : float or array_like
-        Axial strains of the strand, each in ``[0, eps_rupture)`` (at 0, κ_m = 0:
-        no tension, no friction); any shape, not empty.
-
-    Returns
-    -------
-    ndarray (2, *axial_strain.shape)
-        Row 0: about principal axis 1; row 1: about principal axis 2. Equal to
-        ``BendingLaw(section, mu=mu, axial_strain=e).kappa_m`` for each strain e.
-        About an axis without composite bending (`Section.composite_bending` False)
-        the documented constant ``2 ε_rupture / d_max`` (see `BendingLaw`).
-    """
-    section = _section(section)
+    """Critical curvatures κ_m (1/m) of Cardou's law at many axial strains in one call:
+    ``BendingLaw(section, mu=mu, axial_strain=e).kappa_m`` for each strain e of
+    ``axial_strain`` (any shape, not empty; at 0, κ_m = 0: no tension, no friction), as an
+    array (2, *axial_strain.shape) over principal axes 1, 2."""
+    section = checked_section(section)
     mu = friction(mu)
-    return _law(section, mu, _strains(section, axial_strain, scalar=False))["kappa_m"]
+    return CardouSection(section, mu)(_strains(section, axial_strain, scalar=False))["kappa_m"]
 
 
 class BendingLaw(Shown):
     """Stick/slip bending law of a strand section at friction ``mu`` and axial strain.
-
-    Arrays of two entries are over the principal axes: index 0 is principal
-    axis 1, index 1 is principal axis 2.
 
     Parameters
     ----------
@@ -304,10 +253,10 @@ class BendingLaw(Shown):
     """
 
     def __init__(self, section, *, mu: float, axial_strain: float):
-        self.section = _section(section)
+        self.section = checked_section(section)
         self.mu = friction(mu)
         self.axial_strain = float(_strains(section, axial_strain, scalar=True)[0])
-        law = _law(section, self.mu, np.array([self.axial_strain]))
+        law = CardouSection(section, self.mu)(np.array([self.axial_strain]))
         self.EI_stick, self.EI_slip, self.M_rf, self.kappa_m = (
             law[k][:, 0] for k in ("EI_stick", "EI_slip", "M_rf", "kappa_m")
         )
@@ -319,9 +268,8 @@ class BendingLaw(Shown):
         return self.EI_stick * self.kappa_m
 
     def theta(self, axis: int) -> np.ndarray:
-        """Angular position θ (rad) of every wire about the core centre from the neutral axis,
-        in [-π/2, π/2], positive on the side away from the net centroid (the module's
-        conventions); ``axis`` is the int 0 (principal axis 1) or 1 (principal axis 2)."""
+        """Angular position θ (rad) of every wire about the core centre from the neutral axis
+        ``axis``, in [-π/2, π/2], positive away from the net centroid (the module's conventions)."""
         return _theta(self.section, principal_axis(axis))
 
     @property
@@ -341,9 +289,7 @@ class BendingLaw(Shown):
         return np.where(self.linear, 0.0, out)
 
     def moment(self, kappa, axis: int):
-        """Bending moment (N·m) at curvature ``kappa`` (1/m, a number or an array of any
-        shape) about a principal axis: ``axis`` is the int 0 (principal axis 1) or 1
-        (principal axis 2)."""
+        """Bending moment (N·m) at curvature ``kappa`` (1/m, any shape) about principal axis ``axis``."""
         axis = principal_axis(axis)
         kappa = float_array("kappa", kappa)
         k_m, ei_stick, ei_slip = self.kappa_m[axis], self.EI_stick[axis], self.EI_slip[axis]
@@ -354,9 +300,7 @@ class BendingLaw(Shown):
         return out[()] if out.ndim == 0 else out
 
     def bending_stiffness(self, kappa, axis: int, kind: str = "secant"):
-        """``M/κ`` (``kind="secant"``) or ``dM/dκ`` (``"tangent"``) at ``kappa`` (N·m²)
-        about a principal axis: ``axis`` is the int 0 (principal axis 1) or 1 (principal
-        axis 2)."""
+        """``M/κ`` (``kind="secant"``) or ``dM/dκ`` (``"tangent"``) at ``kappa`` (N·m²) about ``axis``."""
         axis = principal_axis(axis)
         if kind not in ("secant", "tangent"):
             raise InputError("kind", f"must be 'secant' or 'tangent', got {kind!r}")
@@ -371,14 +315,11 @@ class BendingLaw(Shown):
         return out[()] if out.ndim == 0 else out
 
     def __repr__(self):
-        def pair(values, unit):
-            return f"({values[0]:.4g}, {values[1]:.4g}) {unit}"
-
         linear = [k + 1 for k in (0, 1) if self.linear[k]]
         note = f", linear about principal axis {' and '.join(map(str, linear))}" if linear else ""
         return (
             f"BendingLaw({self.section.strand.name or 'strand'!r}, mu={self.mu:g}, "
-            f"axial_strain={self.axial_strain:g}: EI_stick={pair(self.EI_stick, 'N·m²')}, "
-            f"EI_slip={pair(self.EI_slip, 'N·m²')}, M_rf={pair(self.M_rf, 'N·m')}, "
-            f"kappa_m={pair(self.kappa_m, '1/m')}{note})"
+            f"axial_strain={self.axial_strain:g}: EI_stick={axis_pair(self.EI_stick, 'N·m²')}, "
+            f"EI_slip={axis_pair(self.EI_slip, 'N·m²')}, M_rf={axis_pair(self.M_rf, 'N·m')}, "
+            f"kappa_m={axis_pair(self.kappa_m, '1/m')}{note})"
         )

@@ -147,12 +147,17 @@ def entry(name: str) -> CatalogueEntry:
 
 def layer_counts(total: int) -> list[int]:
     """Wires per helical layer of a concentric stranding of ``total`` wires (1 + 6 + 12 + ...)."""
-    counts, left, k = [], total - 1, 6
-    while left > 0:
-        counts.append(min(k, left))
-        left -= k
+    return [min(k, total - 1 - done) for k, done in _rings(total - 1, 6)]
+
+
+def _rings(wires: int, first: int):
+    """``(count, wires in the layers before)`` of concentric layers of ``first``, ``first + 6``,
+    ... wires until ``wires`` are laid."""
+    done, k = 0, first
+    while done < wires:
+        yield k, done
+        done += k
         k += 6
-    return counts
 
 
 def aluminium_layers(n: int, steel: int) -> list[int]:
@@ -165,9 +170,4 @@ def aluminium_layers(n: int, steel: int) -> list[int]:
     first = {26: 10, 45: 9, 54: 12}.get(n)
     if first is None:
         raise InputError("name", f"no layer rule for {n} aluminium wires over {steel} steel")
-    counts, left, k = [], n, first
-    while left > 0:
-        counts.append(k)
-        left -= k
-        k += 6
-    return counts
+    return [k for k, _ in _rings(n, first)]

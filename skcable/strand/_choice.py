@@ -116,12 +116,9 @@ class Analysis(Shown):
 def analyse(
     strand, length: float = 1.0, *, mu: float = 0.5, n_points: int = 200, **model_options
 ) -> Analysis:
-    """Capacity of ``strand`` with the cheapest adequate model (see the module text).
-
-    ``model_options`` go to `StrandModel` and
-    `capacity_curve` (``n_elements``,
-    ``n_steps``...); ``n_points`` samples the closed-form curve.
-    """
+    """Capacity of ``strand`` with the cheapest adequate model (the module text): ``model_options``
+    go to `StrandModel` and `capacity_curve` (``n_elements``, ``n_steps``...); ``n_points``
+    samples the closed-form curve."""
     from skcable.strand.fe.model import StrandModel
 
     positive("length", length)

@@ -9,11 +9,7 @@ touches the core, ``R_1 = (d_core + d_1)/2``; layer k touches layer k-1,
 strand of equal wires). Lay angle alpha and lay length p are tied by
 ``tan(alpha) = 2 pi R / p``.
 
-Damage (the convention that reproduces the thesis's annex A):
-``damaged(n)`` breaks n adjacent wires of the outer layer placed
-symmetrically about +z, so that the net section stays symmetric about z;
-``damaged(wires=[(layer, index), ...])`` breaks any set of helical wires
-(layers from 1, indices from 0; the core cannot break).
+Damage: `Strand.damaged` (the convention that reproduces the thesis's annex A).
 
 Reference: S. Pino Vidal, "Rigidez a flexión en cables: análisis numérico",
 Universidad de Chile, 2021 (the thesis; its tables and equations are cited by
@@ -33,7 +29,7 @@ from skcable.strand._arguments import name_text, real_number
 from skcable.strand._catalogue import ENTRIES, INCH, LAY_RATIO, aluminium_layers, entry, layer_counts
 from skcable.strand._material import Material, WireMaterials, material
 
-__all__ = ["Layer", "Strand", "Wires", "preset"]
+__all__ = ["Layer", "Strand", "Wires", "lay_rates", "preset"]
 
 
 @dataclass(frozen=True)
@@ -144,9 +140,9 @@ class Strand:
         transformed (modular-ratio) inertias.
     broken : frozenset of (layer, index)
         Broken wires: layer number (1 = first helical layer; the core cannot
-        break) and wire index (0 to the layer's count - 1), integers only. A
-        set or list of pairs is accepted and stored as a frozenset; a pair
-        listed twice raises InputError.
+        break) and wire index (0 to the layer's count - 1), integers only (not
+        2.0). A set or list of pairs is stored as a frozenset; a pair listed
+        twice raises InputError.
     name : str
         Label (presets: ``"steel-9.5"`` ...).
     core_material : Material or None
@@ -209,12 +205,8 @@ class Strand:
         return WireMaterials(materials, np.repeat(per_layer, counts))
 
     def _wire_set(self, argument: str, wires) -> list[tuple[int, int]]:
-        """Validated (layer, index) pairs of ``wires`` (a set, list or tuple of pairs).
-
-        Layers count from 1 (the first helical layer; the core cannot break), indices
-        from 0 to the layer's count - 1. Non-integers (2.7, also 2.0), booleans,
-        out-of-range numbers and a pair listed twice raise InputError(argument).
-        """
+        """Validated (layer, index) pairs of ``wires`` (a set, list or tuple of pairs, as
+        ``broken`` takes them), or InputError naming ``argument``."""
         if isinstance(wires, (str, bytes)) or not isinstance(wires, (set, frozenset, list, tuple)):
             raise InputError(argument, f"must be a set or list of (layer, index) pairs, got {wires!r}")
         out = []
@@ -303,20 +295,8 @@ class Strand:
 
     def wires(self) -> Wires:
         """Position, lay and state of every wire, core first."""
-        columns = {
-            k: [v]
-            for k, v in dict(
-                y=0.0,
-                z=0.0,
-                psi=0.0,
-                radius=0.0,
-                lay_angle=0.0,
-                direction=0,
-                diameter=self.core_diameter,
-                layer=0,
-                intact=True,
-            ).items()
-        }
+        core = dict(y=0.0, z=0.0, psi=0.0, radius=0.0, lay_angle=0.0, direction=0, layer=0, intact=True)
+        columns = {k: [v] for k, v in (core | {"diameter": self.core_diameter}).items()}
         for k, (layer, R, alpha) in enumerate(
             zip(self.layers, self.helix_radii, self.lay_angles, strict=True), 1
         ):
@@ -347,8 +327,9 @@ class Strand:
         n : int, optional
             Break n adjacent wires of the outer layer, placed symmetrically
             about +z (the outer layer is rotated so; Pino Vidal (2021), Table 3.2),
-            ``0 <= n < count`` of the outer layer. Only for a strand without broken
-            wires (the rotation would move them); ``n = 0`` returns the strand unrotated.
+            so that the net section stays symmetric about z; ``0 <= n < count`` of the
+            outer layer. Only for a strand without broken wires (the rotation would move
+            them); ``n = 0`` returns the strand unrotated.
         wires : list or set of (layer, index), optional
             Break exactly these wires (layer 1 is the first helical layer, indices
             from 0), without rotating anything, in addition to those already broken.
@@ -395,6 +376,14 @@ class Strand:
         return BendingLaw(self.section(), mu=mu, axial_strain=axial_strain)
 
 
+def lay_rates(strand: Strand, wires: Wires) -> np.ndarray:
+    """Every wire's lay rate dψ/dx = ±2π/p of its layer (rad/m), 0 for the core."""
+    helical = wires.layer > 0
+    lay_length = np.ones_like(wires.radius)
+    lay_length[helical] = strand.lay_lengths[wires.layer[helical] - 1]
+    return np.where(helical, wires.direction * 2 * pi / lay_length, 0.0)
+
+
 #: Pino Vidal (2021), Table 3.1: wire diameter (m), material, nominal strand diameter (m), lay angle (deg).
 _TABLE_3_1 = {
     "steel-9.5": (3.1e-3, "steel", 9.5e-3, 7.5),
@@ -406,31 +395,34 @@ _TABLE_3_1 = {
 
 #: ACSR conductors of ASTM B232/B232M-17, "Standard Specification for Concentric-Lay-Stranded
 #: Aluminum Conductors, Coated-Steel Reinforced (ACSR)": code word -> (steel wire diameter (m),
-#: aluminium wire diameter (m), aluminium wires per layer from the core outward). The core is 1+6
-#: steel wires. Lay ratios (lay length / outside diameter of the layer) are not fixed by the
-#: code word; the standard bounds them (steel layer 16-26, inner aluminium layers 10-16, outer
-#: layer 10-13) and these presets take 19, 13 and 11; the outer layer is right-hand and the
-#: directions alternate inward (the standard's rule).
+#: aluminium wire diameter (m), aluminium wires per layer from the core outward) over a 1+6 steel
+#: core. The standard bounds the lay ratios (steel 16-26, inner aluminium 10-16, outer 10-13):
+#: `LAY_RATIO` takes 19, 13 and 11, the outer layer right-hand, alternating inward (its rule).
 _ACSR = {
     "acsr-drake": (3.454e-3, 4.442e-3, (10, 16)),  # 795 kcmil 26/7, outer diameter 28.14 mm
     "acsr-hawk": (2.675e-3, 3.439e-3, (10, 16)),  # 477 kcmil 26/7, outer diameter 21.79 mm
 }
-_ACSR_LAY_RATIO = {"steel": 19.0, "inner": 13.0, "outer": 11.0}
+
+
+def _stranded(name: str, core: tuple, specs: list, strand_material: Material) -> Strand:
+    """The strand of a stranding: the core ``(diameter, material)`` and the layers ``(count,
+    diameter, material)`` from the core outward, at the lay ratios of `_ACSR`."""
+    layers, outside = [], core[0]
+    for k, (count, d, wire_material) in enumerate(specs):
+        outside = outside + 2 * d
+        kind = "steel" if wire_material.name == "steel" else ("outer" if k == len(specs) - 1 else "inner")
+        direction = 1 if (len(specs) - 1 - k) % 2 == 0 else -1
+        layers.append(
+            Layer(count, d, lay_length=LAY_RATIO[kind] * outside, direction=direction, material=wire_material)
+        )
+    return Strand(core[0], tuple(layers), strand_material, name=name, core_material=core[1])
 
 
 def _acsr(name: str) -> Strand:
     steel_d, al_d, counts = _ACSR[name]
     steel, aluminium = material("steel"), material("aluminium")
-    layers, outside = [], 3 * steel_d
     specs = [(6, steel_d, steel)] + [(n, al_d, aluminium) for n in counts]
-    for k, (count, d, wire_material) in enumerate(specs):
-        outside = 3 * steel_d if k == 0 else outside + 2 * d
-        ratio = _ACSR_LAY_RATIO["steel" if k == 0 else "outer" if k == len(specs) - 1 else "inner"]
-        direction = 1 if (len(specs) - 1 - k) % 2 == 0 else -1  # outer right-hand, alternating inward
-        layers.append(
-            Layer(count, d, lay_length=ratio * outside, direction=direction, material=wire_material)
-        )
-    return Strand(steel_d, tuple(layers), aluminium, name=name, core_material=steel)
+    return _stranded(name, (steel_d, steel), specs, aluminium)
 
 
 def catalogue_strand(name: str) -> Strand:
@@ -445,17 +437,8 @@ def catalogue_strand(name: str) -> Strand:
         specs = [(c, d_st, steel_m) for c in layer_counts(n_st)] + [
             (c, d_al, al_m) for c in aluminium_layers(n_al, n_st)
         ]
-        core_d, core_m = d_st, steel_m
-    else:
-        specs = [(c, d_al, al_m) for c in layer_counts(n_al)]
-        core_d, core_m = d_al, al_m
-    layers, outside = [], core_d
-    for k, (count, d, m) in enumerate(specs):
-        outside = outside + 2 * d
-        kind = "steel" if m is steel_m else ("outer" if k == len(specs) - 1 else "inner")
-        direction = 1 if (len(specs) - 1 - k) % 2 == 0 else -1
-        layers.append(Layer(count, d, lay_length=LAY_RATIO[kind] * outside, direction=direction, material=m))
-    return Strand(core_d, tuple(layers), al_m, name=e.name, core_material=core_m)
+        return _stranded(e.name, (d_st, steel_m), specs, al_m)
+    return _stranded(e.name, (d_al, al_m), [(c, d_al, al_m) for c in layer_counts(n_al)], al_m)
 
 
 def preset(name: str) -> Strand:
@@ -465,12 +448,9 @@ def preset(name: str) -> Strand:
     ``"steel-12.7"`` or ``"aluminium-14.3"`` (equal wires, helix radius d, one material).
 
     Multi-material conductors, ACSR 26/7 of ASTM B232/B232M-17 (a 1+6 steel core under 10 and 16
-    aluminium wires): ``"acsr-drake"`` (795 kcmil, steel 3.454 mm, aluminium 4.442 mm wires,
-    28.14 mm) and ``"acsr-hawk"`` (477 kcmil, steel 2.675 mm, aluminium 3.439 mm, 21.79 mm). Lay
-    ratios 19 (steel), 13 (inner aluminium), 11 (outer), inside the standard's ranges; the
-    strand's ``material`` is aluminium, ``core_material`` and the first layer's steel (the wire
-    laws of Pino Vidal (2021), Table B.1, with the densities and expansion coefficients of
-    IEC 61089:1991).
+    aluminium wires): ``"acsr-drake"`` (795 kcmil) and ``"acsr-hawk"`` (477 kcmil), lay ratios 19,
+    13 and 11; the strand's ``material`` is aluminium, ``core_material`` and the first layer's
+    steel (`material`).
 
     Every size of the conductor catalogue (ACSR of ASTM B232, AAC of B231, AAAC of B399:
     ``"acsr-partridge"``, ``"aac-arbutus"``, ``"aaac-greeley"`` ...; see

@@ -58,7 +58,7 @@ from skcable.errors import InputError
 from skcable.strand._arguments import float_array, is_real_number, real_number
 from skcable.strand._bending import BendingLaw
 from skcable.strand._choice import axial_force
-from skcable.strand._section import Section
+from skcable.strand._section import axis_pair, checked_section
 from skcable.strand._stages import StageLaw
 
 __all__ = ["LayerSlipLaw", "OUTER_FRICTION"]
@@ -134,23 +134,18 @@ class LayerSlipLaw(StageLaw):
 
     Attributes
     ----------
-    mu : ndarray (n_layers,)
-        Friction coefficient per helical layer.
-    axial_strain, tension : float
-        The axial strain and the axial force of the intact wires (N).
+    mu, axial_strain, tension : ndarray (n_layers,), float, float
+        As given (one per layer; tension in N), the strain or the tension found from the other.
     wire_force : ndarray (n_wires,)
         Every wire's axial force (N), 0 for a broken one.
     pressure : ndarray (n_layers,)
         p_k, the pressure of the outer layers on one wire of each layer (N/m of wire).
     stiffness, slip_moment, kappa_slip : ndarray (2, n_layers)
-        Per principal axis and helical layer (from the core outward): B_k (N·m²), M_k (N·m),
-        κ_k = M_k/B_k (1/m); and `StageLaw`'s other attributes and methods (backbone, loops,
-        energy per cycle).
+        `StageLaw`'s, one stage per helical layer from the core outward.
     """
 
     def __init__(self, section, *, mu, axial_strain=None, tension=None, outer_friction: str = "foti"):
-        if not isinstance(section, Section):
-            raise InputError("section", f"must be a Section (strand.section()), got {section!r:.80}")
+        checked_section(section)
         if outer_friction not in OUTER_FRICTION:
             raise InputError("outer_friction", f"must be one of {OUTER_FRICTION}, got {outer_friction!r}")
         strand = section.strand
@@ -201,14 +196,11 @@ class LayerSlipLaw(StageLaw):
         return stiffness, moment
 
     def __repr__(self):
-        def pair(values, unit):
-            return f"({values[0]:.4g}, {values[1]:.4g}) {unit}"
-
         knees = ", ".join(f"{value:.4g}" for value in self.kappa_slip[0])
         mu = f"{self.mu[0]:g}" if np.all(self.mu == self.mu[0]) else str(self.mu.tolist())
         return (
             f"LayerSlipLaw({self.section.strand.name or 'strand'!r}, mu={mu}, "
             f"axial_strain={self.axial_strain:.6g}, tension={self.tension:.6g} N: "
-            f"EI_max={pair(self.EI_max, 'N·m²')}, EI_min={pair(self.EI_min, 'N·m²')}, "
+            f"EI_max={axis_pair(self.EI_max, 'N·m²')}, EI_min={axis_pair(self.EI_min, 'N·m²')}, "
             f"knees about axis 1 [{knees}] 1/m by layer from the core)"
         )

@@ -162,8 +162,7 @@ class Material:
 
     def stress_and_tangent(self, strain: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
         """`stress` and `tangent` of a float array in one pass, without input checks (the
-        finite-element models' hot path: their strains are float arrays they computed);
-        `stress` and `tangent` check their input and call it."""
+        finite-element models' hot path)."""
         stress, tangent, _ = self._evaluate(strain, law=True, energy=False)
         return stress, tangent
 
@@ -283,10 +282,7 @@ def _select(eps, elastic, plastic, on, on_elastic, on_line, on_blend):
     return out
 
 
-#: Pino Vidal (2021), Table B.1 (MPa in the table, Pa here); density and thermal expansion:
-#: IEC 61089:1991, "Round wire concentric lay overhead electrical stranded conductors",
-#: Annex B (the same values in EN 50182:2001): zinc-coated steel 7780 kg/m³, 11.5e-6 /K;
-#: hard-drawn aluminium (1350) 2703 kg/m³, 23e-6 /K.
+#: Pino Vidal (2021), Table B.1 (MPa in the table, Pa here); density and thermal expansion: `material`.
 _PRESETS = {
     "steel": dict(
         E_e=196603.774e6,
@@ -328,10 +324,9 @@ def material(name: str) -> Material:
 class WireMaterials:
     """The material of every wire of a strand, grouped by material (one entry per wire, core first).
 
-    A strand of one material has one group; a conductor such as ACSR (a steel core under
-    aluminium layers) has two. Material laws are evaluated per group, one vectorised call per
-    material (never a Python loop over wires); a single-material strand calls its material's
-    law on the whole array, exactly as before per-wire materials existed.
+    A strand of one material has one group; ACSR (a steel core under aluminium layers) has two.
+    Material laws are evaluated by one vectorised call per group (a single-material strand: on the
+    whole array).
 
     Parameters
     ----------

@@ -8,36 +8,23 @@ I_\mathrm{stick} = \sum_i A_i d_i^2 \cos^3\alpha_i + \sum_i I_{w,i}\cos\alpha_i,
 \qquad I_\mathrm{slip} = \sum_i I_{w,i}\cos\alpha_i, \qquad I_w = \pi r^4/4,
 $$
 
-where d_i is the distance to the bending axis through the net centroid.
-``I_stick`` is the stick value (the wires act as one section; the thesis's
-"I máx") and ``I_slip`` the full-slip value (every wire bends about its own
-axis; "I mín"). Both are given about the two principal axes of the stick
-section: they are not a largest and a smallest principal inertia. The
-centroid uses plain wire areas (Table 3.2: ``z_c = -r/3`` for one broken
-wire, ``-r sqrt(12/25)`` for two). Principal axes diagonalise the stick
-tensor; principal axis 1 carries the larger stick inertia. ``EA = E sum A
-cos^3 alpha`` (Papailiou (1997), eq. 2.20 of the thesis).
+d_i the distance to the bending axis through the net centroid: the stick value (the wires act
+as one section; the thesis's "I máx") and the full-slip value (every wire bends about its own
+axis; "I mín"), both about the two principal axes of the stick section (not a largest and a
+smallest principal inertia). The centroid uses plain wire areas (Table 3.2: ``z_c = -r/3`` for
+one broken wire, ``-r sqrt(12/25)`` for two); principal axis 1 carries the larger stick inertia.
+``EA = E sum A cos^3 alpha`` (Papailiou (1997), eq. 2.20 of the thesis).
 
-**Several materials** (a material per layer, e.g. ACSR's steel core under
-aluminium layers): the section is the transformed section of composite beam
-theory, each wire's area scaled by its modular ratio ``n_i = E_i / E`` against
-the strand's reference material ``E = strand.material.E_e`` (J.M. Gere and
-S.P. Timoshenko, "Mechanics of Materials", §6.3, "transformed-section method").
-The centroid, the principal axes and the inertias are those of the areas
-``n_i A_i`` (so ``EI_stick = E I_stick = sum E_i A_i cos^3 alpha_i d_i^2 +
-sum E_i I_w,i cos alpha_i`` about the modulus-weighted centroid), ``EA = sum E_i
-A_i cos^3 alpha_i``, and the torsion terms use each wire's own E_i and G_i.
-With one material every ``n_i`` is exactly 1 and nothing changes.
+**Several materials** (e.g. ACSR's steel core under aluminium layers): the transformed section
+of composite beam theory (J.M. Gere and S.P. Timoshenko, "Mechanics of Materials", §6.3), each
+wire's area scaled by ``n_i = E_i / E`` against the strand's ``E = strand.material.E_e``
+(exactly 1 with one material): centroid, principal axes and inertias of the areas ``n_i A_i``,
+``EA = sum E_i A_i cos^3 alpha_i``, and the torsion terms with each wire's own E_i and G_i.
 
-Axes are numbered 1 and 2 (as in the CLI's and the VTK files' ``curvature_1``,
-``EI_stick_1_Nm2``); arrays over the axes and the ``axis`` arguments of the
-Python API index them from 0: index 0 is principal axis 1, index 1 is
-principal axis 2.
-
-If every intact wire lies on one line (one helical wire left besides the core,
-two opposite ones, or none), no wire has a lever about the principal axis along
-that line: there is no composite bending about it, ``I_stick == I_slip`` there
-exactly and `Section.composite_bending` is False for it.
+Axes are numbered 1 and 2 (the CLI's and the VTK files' ``curvature_1``); arrays over the axes
+and the ``axis`` arguments index them from 0: index 0 is principal axis 1. Where every intact
+wire lies on one line, no wire has a lever about the principal axis along it
+(`Section.composite_bending` False, ``I_stick == I_slip`` exactly).
 
 The thesis's annex A "Iyy" column is principal axis 1 here; its "Izz" column
 applies the lay factor cos^3 alpha to the core's parallel-axis term as well
@@ -62,7 +49,7 @@ from skcable._show import Shown
 from skcable.errors import InputError
 from skcable.strand._arguments import principal_axis
 
-__all__ = ["Section"]
+__all__ = ["Section", "axis_pair", "checked_section"]
 
 #: a principal stick inertia at or below this fraction of the tensor's trace is a
 #: round-off of zero (all intact wires on one line); a discrete wire geometry has no
@@ -70,47 +57,24 @@ __all__ = ["Section"]
 _DEGENERATE = 1e-12
 
 
+def axis_pair(values, unit: str) -> str:
+    """Two values over principal axes 1, 2 as ``(v1, v2) unit`` (for the results' text)."""
+    return f"({values[0]:.4g}, {values[1]:.4g}) {unit}"
+
+
+def checked_section(section) -> Section:
+    """``section`` if it is a `Section`, else `InputError` naming ``section``."""
+    if not isinstance(section, Section):
+        raise InputError("section", f"must be a Section (strand.section()), got {section!r:.80}")
+    return section
+
+
 class Section(Shown):
-    """Section properties of ``strand`` (SI units: m, m², m⁴, N, N·m²).
-
-    Arrays of two entries are over the principal axes: index 0 is principal
-    axis 1 (the larger stick inertia), index 1 is principal axis 2.
-
-    Parameters
-    ----------
-    strand : Strand
-        The strand (intact or with broken wires).
-
-    Attributes
-    ----------
-    area : float
-        Net area (intact wires), m².
-    centroid : (float, float)
-        (y_c, z_c) of the net section, plain areas (m).
-    principal_angle : float
-        Angle from +y to principal axis 1, toward +z (rad).
-    principal_axes : ndarray (2, 2)
-        Rows: unit vectors (y, z) of principal axes 1 and 2.
-    I_stick, I_slip : ndarray (2,)
-        Stick and full-slip second moments about principal axes 1 and 2,
-        lay factors included (m⁴). Not principal maxima and minima: both
-        entries of ``I_stick`` are stick values.
-        With several materials, those of the transformed section (each wire's
-        area and own inertia times ``E_i / E``, E the strand's ``material``).
-    composite_bending : ndarray of bool (2,)
-        False about a principal axis along which every intact wire lies (no
-        wire has a lever, ``I_stick == I_slip`` exactly).
-    EA, EI_stick, EI_slip : float, ndarray (2,), ndarray (2,)
-        The same times the elastic modulus E_e (N, N·m²).
-    axial_torsion_coupling, torsional_stiffness : float
-        ``sum E A R sin(alpha) cos^2(alpha)`` (signed by lay direction, N·m)
-        and ``sum E A R^2 sin^2(alpha) cos(alpha) + sum G J_w cos(alpha)``
-        (N·m²), from the wire strain ``cos^2(alpha) eps + R sin(alpha) cos(alpha) phi'``.
-    """
+    """Section properties of ``strand`` (intact or with broken wires; SI units: m, m², m⁴, N,
+    N·m²), each a property below (the module docstring)."""
 
     def __init__(self, strand):
-        # a strand is what gives its wires and material (no import of the geometry module:
-        # the strand builds its section, not the other way round)
+        # duck-typed: the geometry module builds sections, not the other way round
         if not (callable(getattr(strand, "wires", None)) and hasattr(strand, "material")):
             raise InputError("strand", f"must be a Strand (e.g. strand.preset('steel-9.5')), got {strand!r}")
         self.strand = strand
@@ -179,19 +143,13 @@ class Section(Shown):
 
     @property
     def composite_bending(self) -> np.ndarray:
-        """Per principal axis (index 0: axis 1), whether some intact wire has a lever about it.
-
-        False where every intact wire lies on the axis: bending about it is the
-        wires' own bending only, stick and slip coincide (``I_stick == I_slip``).
-        """
+        """Per principal axis, whether some intact wire has a lever about it (False: the wires'
+        own bending only, ``I_stick == I_slip``)."""
         return self._principal[2].copy()
 
     def lever(self, axis: int) -> np.ndarray:
-        """Signed distance (m) of every wire from a principal axis through the centroid.
-
-        ``axis`` is the int 0 for principal axis 1 or 1 for principal axis 2. The
-        sign is that of the component along the axis direction turned by +90°.
-        """
+        """Signed distance (m) of every wire from principal axis ``axis`` through the centroid,
+        positive along the axis direction turned by +90°."""
         t = self.principal_axes[principal_axis(axis)]
         normal = np.array([-t[1], t[0]])
         y_c, z_c = self.centroid
@@ -199,7 +157,8 @@ class Section(Shown):
 
     @property
     def I_stick(self) -> np.ndarray:
-        """Stick second moments about principal axes 1 and 2 (index 0, 1), m⁴."""
+        """Stick second moments about principal axes 1 and 2 (m⁴), lay factors included; of the
+        transformed section with several materials."""
         return self._principal[0] + self._own
 
     @property
@@ -230,7 +189,8 @@ class Section(Shown):
 
     @property
     def axial_torsion_coupling(self) -> float:
-        """``sum E A R sin(alpha) cos^2(alpha)``, signed by the lay direction (N·m)."""
+        """``sum E A R sin(alpha) cos^2(alpha)``, signed by the lay direction (N·m), from the wire
+        strain ``cos^2(alpha) eps + R sin(alpha) cos(alpha) phi'``."""
         w = self.wires
         return self.E * self._sum(
             w.direction * w.area * w.radius * np.sin(w.lay_angle) * np.cos(w.lay_angle) ** 2 * self._modular
@@ -270,12 +230,11 @@ class Section(Shown):
     def __repr__(self):
         w = self.wires
         y_c, z_c = self.centroid
-        stick, slip = self.I_stick, self.I_slip
         label = self.strand.name or "strand"
         return (
             f"Section({label!r}: {int(w.intact.sum())} of {w.intact.size} wires intact, "
             f"area={self.area:.4g} m², centroid=({y_c:.4g}, {z_c:.4g}) m, "
             f"principal axis 1 at {np.degrees(self.principal_angle):.4g}° from +y, "
-            f"I_stick=({stick[0]:.4g}, {stick[1]:.4g}) m⁴, I_slip=({slip[0]:.4g}, {slip[1]:.4g}) m⁴, "
+            f"I_stick={axis_pair(self.I_stick, 'm⁴')}, I_slip={axis_pair(self.I_slip, 'm⁴')}, "
             f"EA={self.EA:.4g} N)"
         )

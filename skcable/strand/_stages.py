@@ -44,15 +44,8 @@ $$
   M_k\frac{\sqrt{\kappa_0^2-\kappa_k^2}}{\kappa_0}.
 $$
 
-**In a finite element.** `StageLaw.update` is the law at many points at once: curvatures
-``(2, *points)`` (both principal axes) and the slip curvatures ``(2, n_stages, *points)`` of the
-last converged state give the moments, the tangent stiffnesses (exact, the law being piecewise
-linear), the new slip curvatures and the friction work of the step, :math:`\sum_k M_k
-|\Delta\kappa_{p,k}|` (J/m). A solver calls it from the converged state at every iterate and
-keeps the new state once the step has converged.
-
-Axes: arrays of two entries (or rows) are over principal axes 1 and 2; ``axis`` is the int 0
-(principal axis 1) or 1 (principal axis 2).
+**In a finite element.** `StageLaw.update` is the law at many points at once, from the last
+converged state; a solver keeps the new state once the step has converged. Axes as in `Section`.
 """
 
 from __future__ import annotations
@@ -61,16 +54,19 @@ from typing import NamedTuple
 
 import numpy as np
 
+from skcable._checks import whole
 from skcable.errors import InputError
-from skcable.strand._arguments import float_array, principal_axis
+from skcable.strand._arguments import float_array, name_text, principal_axis
+from skcable.strand._section import axis_pair
 
 __all__ = ["StageLaw", "StageResponse", "CurvaturePath"]
 
 
 class StageResponse(NamedTuple):
     """What `StageLaw.update` returns at every point: the moments (N·m), the tangent
-    stiffnesses dM/dκ (N·m²), the new slip curvatures (1/m) and the friction work of the step
-    (J/m), shapes ``(2, *points)``, ``(2, *points)``, ``(2, n_stages, *points)``, ``(2, *points)``."""
+    stiffnesses dM/dκ (N·m², exact: the law is piecewise linear), the new slip curvatures (1/m)
+    and the friction work of the step :math:`\\sum_k M_k|\\Delta\\kappa_{p,k}|` (J/m), shapes
+    ``(2, *points)``, ``(2, *points)``, ``(2, n_stages, *points)``, ``(2, *points)``."""
 
     moment: np.ndarray
     tangent: np.ndarray
@@ -125,14 +121,8 @@ class StageLaw:
 
     Attributes
     ----------
-    EI_min, EI_max : ndarray (2,)
-        Full-slip and stick stiffnesses (N·m²).
     stiffness, slip_moment, kappa_slip : ndarray (2, n)
         B_k (N·m²), M_k (N·m) and the knees κ_k = M_k/B_k (1/m) of each stage.
-    kappa_0, M_0 : ndarray (2,)
-        The single knee of the same stick and full-slip lines, ``sum M_k / sum B_k`` (1/m), and
-        ``EI_max κ_0`` (N·m): the bilinear law with the same asymptotes (Foti & Martinelli 2018's
-        limit curvature); 0 about an axis without stages.
 
     Examples
     --------
@@ -156,9 +146,7 @@ class StageLaw:
                 raise InputError(key, f"must be >= 0, got {getattr(self, key).tolist()}")
         if np.any((self.stiffness == 0) & (self.slip_moment > 0)):
             raise InputError("slip_moment", "must be 0 for a stage without stiffness (it carries nothing)")
-        if not isinstance(name, str):
-            raise InputError("name", f"must be a str, got {name!r}")
-        self.name = name
+        self.name = name_text(name)
         carries = self.stiffness > 0
         self.kappa_slip = np.where(carries, self.slip_moment / np.where(carries, self.stiffness, 1.0), 0.0)
         if not np.all(np.isfinite(self.kappa_slip)):
@@ -178,7 +166,8 @@ class StageLaw:
     @property
     def kappa_0(self) -> np.ndarray:
         """``sum M_k / sum B_k`` per principal axis (1/m): where the stick line meets the
-        full-slip line ``sum M_k + EI_min κ``; 0 about an axis without stages."""
+        full-slip line ``sum M_k + EI_min κ``, the knee of the bilinear law with the same
+        asymptotes (Foti & Martinelli 2018's limit curvature); 0 about an axis without stages."""
         total = self.stiffness.sum(axis=1)
         return np.where(total > 0, self.slip_moment.sum(axis=1) / np.where(total > 0, total, 1.0), 0.0)
 
@@ -229,10 +218,9 @@ class StageLaw:
         return np.zeros((2, self.n_stages, *tuple(shape)))
 
     def update(self, kappa, slip) -> StageResponse:
-        """The law at many points: from the slip curvatures ``slip`` (``(2, n_stages, *points)``,
-        the last converged state) to the curvatures ``kappa`` (``(2, *points)``, 1/m), the
-        return mapping of every stage (module text). Returns a `StageResponse`; ``slip`` is not
-        modified."""
+        """The return mapping of every stage (module text) from the slip curvatures ``slip``
+        ``(2, n_stages, *points)`` to the curvatures ``kappa`` ``(2, *points)`` (1/m): a
+        `StageResponse` (``slip`` is not modified)."""
         kappa = float_array("kappa", kappa)
         slip = float_array("slip", slip)
         if kappa.ndim < 1 or kappa.shape[0] != 2 or slip.shape != (2, self.n_stages, *kappa.shape[1:]):
@@ -295,8 +283,7 @@ class StageLaw:
         if amplitude.ndim:
             raise InputError("kappa_a", f"must be a single number for a loop, got shape {amplitude.shape}")
         a = float(amplitude)
-        if isinstance(n, (bool, np.bool_)) or not isinstance(n, (int, np.integer)) or n < 0:
-            raise InputError("n", f"must be an integer >= 0, got {n!r}")
+        whole("n", n, 0)
         knees = self.knees(axis)
         turns = a - 2.0 * knees[2.0 * knees < 2.0 * a]
         down = np.unique(np.concatenate([[a, -a], turns, np.linspace(a, -a, n + 2)]))[::-1]
@@ -335,11 +322,8 @@ class StageLaw:
         return value, (slope[()] if slope.ndim == 0 else slope)
 
     def __repr__(self):
-        def pair(values, unit):
-            return f"({values[0]:.4g}, {values[1]:.4g}) {unit}"
-
         return (
             f"{type(self).__name__}({self.name or 'law'!r}: {self.n_stages} stages, "
-            f"EI_max={pair(self.EI_max, 'N·m²')}, EI_min={pair(self.EI_min, 'N·m²')}, "
-            f"kappa_0={pair(self.kappa_0, '1/m')})"
+            f"EI_max={axis_pair(self.EI_max, 'N·m²')}, EI_min={axis_pair(self.EI_min, 'N·m²')}, "
+            f"kappa_0={axis_pair(self.kappa_0, '1/m')})"
         )

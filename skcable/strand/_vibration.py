@@ -30,13 +30,9 @@ interval :math:`\xi = x/\ell` with the tension ratio :math:`\kappa = N\ell^2/EI`
 any magnitudes whose frequencies a float holds give them; by shift-invert Lanczos on the
 band, checked by residual, mass orthonormality and a Sturm count (`skcable._eigen`).
 
-The strand's stiffness is that of its stick/slip bending law
-(`Section.EI_stick`, `Section.EI_slip`; Pino Vidal 2021, §3.1; Cardou 2013):
-`strand_bending_frequencies` gives the frequencies of both, for the intact or
-a damaged strand, so that the drop when the wires slip (small amplitudes
-vibrate at the stick stiffness, large ones tend to the slip stiffness) and
-when wires break can be read off. Those are the two bounds of a bilinear law:
-the frequency of a slipping strand at a given amplitude lies between them.
+`strand_bending_frequencies` gives the frequencies at the stick and at the slip stiffness of the
+strand's bending law (`Section.EI_stick`, `Section.EI_slip`; Pino Vidal 2021, §3.1; Cardou
+2013), intact or damaged: the two bounds between which a slipping strand's frequency lies.
 """
 
 from __future__ import annotations
@@ -70,10 +66,8 @@ def _scalar(name, value, check=positive):
 
 
 def pinned_beam_frequencies(EI, N, length, mass_per_length, *, n_modes=6):
-    r"""Closed-form frequencies (Hz) of a pinned–pinned beam under tension.
-
-    :math:`f_n = \frac{1}{2\pi}(n\pi/\ell)^2\sqrt{EI/m}\sqrt{1 + N\ell^2/(n^2\pi^2EI)}`
-    (S.S. Rao, "Vibration of Continuous Systems", Wiley, 2007, §11.6).
+    r"""Closed-form frequencies (Hz) of a pinned–pinned beam under tension, ``ω_n / 2π`` of the
+    module docstring (Rao 2007, §11.6).
 
     Parameters
     ----------
@@ -204,21 +198,13 @@ def _unit_beam(n_elements: int, ends: str) -> _UnitBeam:
 
 
 def beam_frequencies(EI, N, length, mass_per_length, *, ends="clamped", n_modes=6, n_elements=None):
-    r"""Bending frequencies of a tensioned beam, clamped or pinned at both ends.
-
-    Finite elements on scikit-fem (cubic Hermite, consistent mass) of
-    :math:`EI\,w'''' - N w'' + m\ddot w = 0`; see the module docstring.
+    r"""Bending frequencies of a tensioned beam, clamped or pinned at both ends: finite elements
+    on scikit-fem (cubic Hermite, consistent mass; the module docstring).
 
     Parameters
     ----------
-    EI : float
-        Bending stiffness (N m²), > 0.
-    N : float
-        Axial tension (N), >= 0.
-    length : float
-        Distance between the supports (m), > 0.
-    mass_per_length : float
-        Mass per length (kg/m), > 0.
+    EI, N, length, mass_per_length : float
+        As `pinned_beam_frequencies`.
     ends : {"clamped", "pinned"}
         Both ends clamped (no displacement, no rotation) or pinned (no
         displacement).
@@ -332,24 +318,16 @@ def strand_bending_frequencies(
 ):
     r"""Bending frequencies of a tensioned strand with its stick and slip stiffness.
 
-    The strand between two supports (clamps by default) under the tension
-    ``N`` vibrates as the tensioned beam of `beam_frequencies` with the
-    bending stiffness ``section.EI_stick[axis]`` (wires bonded: small
-    amplitudes) and ``section.EI_slip[axis]`` (wires slipping freely: the
-    limit of large amplitudes) of Cardou's stick/slip law (Pino Vidal 2021,
-    §3.1, eqs. 3.11–3.12). A damaged strand (``strand.damaged(n).section()``)
-    has its own, smaller stiffnesses and two distinct principal axes.
+    The tensioned beam of `beam_frequencies` with the bending stiffness ``section.EI_stick[axis]``
+    (wires bonded: small amplitudes) and ``section.EI_slip[axis]`` (wires slipping freely: the
+    limit of large amplitudes) of Cardou's law (Pino Vidal 2021, §3.1, eqs. 3.11–3.12).
 
     Parameters
     ----------
     section : Section
         ``strand.section()`` of an intact or damaged strand.
-    N : float
-        Axial tension (N), >= 0.
-    length : float
-        Distance between the supports (m), > 0.
-    mass_per_length : float
-        Mass per length of the strand (kg/m), > 0 (e.g. density × area).
+    N, length, mass_per_length : float
+        As `pinned_beam_frequencies` (the strand's mass per length, e.g. density × area).
     axis : {0, 1}
         Principal axis of bending (0: axis 1, 1: axis 2).
     ends, n_modes, n_elements
@@ -359,12 +337,11 @@ def strand_bending_frequencies(
     -------
     StrandFrequencies
     """
-    from skcable.strand._section import Section
+    from skcable.strand._arguments import principal_axis
+    from skcable.strand._section import checked_section
 
-    if not isinstance(section, Section):
-        raise InputError("section", f"must be a Section (strand.section()), got {section!r:.80}")
-    if isinstance(axis, (bool, np.bool_)) or not isinstance(axis, (int, np.integer)) or axis not in (0, 1):
-        raise InputError("axis", f"must be 0 (principal axis 1) or 1 (principal axis 2), got {axis!r}")
+    checked_section(section)
+    axis = principal_axis(axis)
     EI_stick, EI_slip = float(section.EI_stick[axis]), float(section.EI_slip[axis])
     kw = dict(ends=ends, n_modes=n_modes, n_elements=n_elements)
     stick = beam_frequencies(EI_stick, N, length, mass_per_length, **kw)
@@ -377,5 +354,5 @@ def strand_bending_frequencies(
         drop=1.0 - slip.f / stick.f,
         stick=stick,
         slip=slip,
-        axis=int(axis),
+        axis=axis,
     )

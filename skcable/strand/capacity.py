@@ -1,12 +1,6 @@
-"""Step results and capacity curves of a strand under imposed axial strain.
-
-``K_Leq`` (eq. 4.30) is the step-weighted mean slope over the linear-elastic
-range, i.e. the secant ``F(ε_e)/ε_e`` at the last step whose wires all stay
-below the blend start ε'_y of the material law; ``toughness`` is the area
-under the curve up to rupture (the first wire reaching ``eps_rupture``);
-``D_r = 1 - U_T/U_T0`` (eq. 4.31) against the undamaged strand with the same
-model settings.
-"""
+"""Step results and capacity curves of a strand under imposed axial strain: the equivalent
+stiffness ``K_Leq`` (Pino Vidal 2021, eq. 4.30), the toughness and the damage index ``D_r``
+(eq. 4.31) of `CapacityCurve`."""
 
 from __future__ import annotations
 
@@ -17,7 +11,7 @@ from typing import TYPE_CHECKING, NamedTuple
 import numpy as np
 
 from skcable import _plausible
-from skcable._checks import positive
+from skcable._checks import positive, whole
 from skcable._show import Shown, counted, quantity
 from skcable.errors import ConvergenceError, InputError
 from skcable.fe.continuation import StepControl
@@ -70,27 +64,19 @@ class StrandLayout:
 
     Attributes
     ----------
-    nodes : ndarray (n_nodes,)
-        Node abscissae (m).
-    elements : ndarray (2, n_elements)
-        Node indices of each element.
+    nodes, elements : ndarray (n_nodes,), (2, n_elements)
+        Node abscissae (m) and the node indices of each element.
     x, dx : ndarray (n_elements, n_quad)
         Quadrature points (m) and weights (m).
-    wire_psi, wire_rate, wire_radius, wire_layer, wire_broken : ndarray (n_wires,)
-        Angular position at x = 0 (rad), lay rate dψ/dx (rad/m, 0 for the core),
-        helix radius (m), layer (0 core) and whether the wire is broken.
-    wire_size : ndarray (n_wires,)
-        Each wire's own radius (m).
-    slip : str
-        Name of the slip law.
+    wire_psi, wire_rate, wire_radius, wire_layer, wire_broken, wire_size : ndarray (n_wires,)
+        Angular position at x = 0 (rad), lay rate dψ/dx (rad/m, 0 for the core), helix radius
+        (m), layer (0 core), whether the wire is broken, and its own radius (m).
+    slip, element : str
+        Name of the slip law; the element of u and φ ("P2" or "P3").
     eps_rupture, eps_y1 : float
-        The wire material's rupture strain and end of its linear branch (the smallest
-        among the materials of a multi-material strand).
+        The rupture strain and the end of the linear branch (the smallest among the materials).
     wire_eps_rupture, wire_eps_y1 : ndarray (n_wires,) or None
-        The same per wire, from each wire's own material (None: ``eps_rupture`` and
-        ``eps_y1`` for every wire).
-    element : str
-        The element of u and φ ("P2" or "P3").
+        The same per wire, from its own material (None: the scalars for every wire).
     """
 
     nodes: np.ndarray
@@ -149,10 +135,9 @@ class StepResult(Shown):
     Attributes
     ----------
     strain, force : float
-        The strand's axial strain ``(u(L) − u(0))/L`` (the imposed one under
-        ``axial="strain"``) and the axial force at x = L (N): the imposed strain's reaction, the
-        applied force (``axial="force"``), or the reaction of a support holding u(L) (0 where
-        u(L) is free).
+        The strand's axial strain ``(u(L) − u(0))/L`` and the axial force at x = L (N): the
+        imposed strain's reaction, the applied force, or the reaction of a support holding u(L)
+        (0 where u(L) is free).
     x : ndarray (n_elements, n_quad)
         Quadrature points (m).
     curvature : ndarray (2, n_elements, n_quad)
@@ -186,18 +171,14 @@ class StepResult(Shown):
     assemblies : int
         Residual and tangent evaluations the step took.
     shifted : bool
-        The tangent was not positive definite on the way to this state and the solver shifted
-        it ([`minimize`][skcable.fe.newton.minimize]): the equilibrium path has a fold (a
-        snap under the imposed strain) between the previous step and this one.
+        The solver shifted a tangent that was not positive definite
+        ([`minimize`][skcable.fe.newton.minimize]): the path folds (snaps) before this step.
     outputs : dict of str to (str, ndarray)
-        The terms' named results (`skcable.fe.terms`): ``name -> (kind, values)`` with kind
-        ``"point_data"`` (values at the quadrature points (n_elements, n_quad) or at the nodes
-        (n_nodes,)) or ``"cell_data"`` (one value per element); the writers put them in every
-        VTK file.
+        The terms' named results: ``name -> (kind, values)``, kind ``"point_data"`` or
+        ``"cell_data"`` (`skcable.strand.fe.terms`); the writers put them in every VTK file.
     reactions : dict
         Support reactions ``{"left": {dof: value}, "right": {dof: value}}`` (N for u, v, w;
-        N·m for φ and the slopes), the fixed dofs' residual rows; the imposed strain's at x = L
-        is ``force``.
+        N·m for φ and the slopes); the imposed strain's at x = L is ``force``.
     """
 
     strain: float
@@ -238,16 +219,16 @@ class StepResult(Shown):
         `skcable.io.write`) for ParaView: the axis with its point and cell data, the terms'
         outputs included ([`strand_mesh`][skcable.io.strand_mesh]). With ``wires``, also the
         wires as tubes ([`wire_mesh`][skcable.io.wire_mesh]) in ``<stem>_wires<suffix>``;
-        ``fields(step) -> (point_data, cell_data)`` adds the user's arrays. Returns the paths."""
+        ``fields(step) -> (point_data, cell_data)`` adds the user's arrays (dicts of name to
+        values at the nodes or quadrature points / per element, or None). Returns the paths."""
         from pathlib import Path
 
-        from skcable.io import strand_mesh, wire_mesh, write
+        from skcable.io import write
 
         path = Path(path)
-        point_data, cell_data = (None, None) if fields is None else fields(self)
-        out = [write(strand_mesh(self, point_data=point_data, cell_data=cell_data), path)]
+        out = [write(_mesh(self, False, scale, radial_scale, fields), path)]
         if wires:
-            tubes = wire_mesh(self, scale=scale, radial_scale=radial_scale)
+            tubes = _mesh(self, True, scale, radial_scale, fields)
             out.append(write(tubes, path.with_name(path.stem + "_wires" + path.suffix)))
         return out
 
@@ -277,11 +258,9 @@ class CapacityCurve(Shown):
     ruptured : bool
         Whether the curve ended at a wire's rupture strain.
     chatter_steps : list of int
-        Steps whose slip state did not settle (it cycled, or the re-solve with
-        the new state failed): the previous state was kept for that step.
+        Steps whose slip state did not settle (`StepResult.settled`).
     cutbacks : int
-        Step halvings the solver needed (a failed Newton solve retried with
-        half the strain increment).
+        Step halvings the solver needed.
     """
 
     model: StrandModel
@@ -351,7 +330,8 @@ class CapacityCurve(Shown):
 
     @property
     def K_Leq(self) -> float:
-        """Equivalent linear stiffness over [0, elastic_limit] (N), eq. 4.30: the secant there."""
+        """Equivalent linear stiffness over [0, elastic_limit] (N), eq. 4.30: the step-weighted
+        mean slope over the linear-elastic range, i.e. the secant there."""
         strain, force = self._elastic_end
         return force / strain
 
@@ -381,7 +361,8 @@ class CapacityCurve(Shown):
 
     @property
     def toughness(self) -> float:
-        """Area under the force–strain curve (N), up to rupture or the last step."""
+        """Area under the force–strain curve (N), up to rupture (the first wire reaching its
+        ``eps_rupture``) or the last step."""
         return float(np.trapezoid(self.force, self.strain))
 
     def columns(self) -> dict:
@@ -421,24 +402,16 @@ class CapacityCurve(Shown):
         """The strand (or, with ``wires``, its wires) at one step as a meshio mesh
         ([`strand_mesh`][skcable.io.strand_mesh], [`wire_mesh`][skcable.io.wire_mesh]);
         ``fields(step) -> (point_data, cell_data)`` adds the user's arrays to the axis."""
-        from skcable.io import strand_mesh, wire_mesh
-
         if not -len(self.steps) <= step < len(self.steps):
             raise InputError("step", f"must index one of the {len(self.steps)} steps, got {step!r}")
-        result = self.steps[step]
-        if wires:
-            return wire_mesh(result, scale=scale, radial_scale=radial_scale)
-        point_data, cell_data = (None, None) if fields is None else fields(result)
-        return strand_mesh(result, point_data=point_data, cell_data=cell_data)
+        return _mesh(self.steps[step], wires, scale, radial_scale, fields)
 
     def to_vtk(
         self, path, *, wires: bool = False, scale: float = 1.0, radial_scale: float = 1.0, fields=None
     ):
         """Write every step as a ParaView time series ``path`` (``.pvd`` + one ``.vtu`` per step,
-        time = imposed axial strain), the terms' outputs included. With ``wires``, also
-        ``<stem>_wires.pvd``; ``fields(step) -> (point_data, cell_data)`` adds the user's arrays
-        (dicts of name to values at the nodes or quadrature points / per element, or None) to
-        every step. Returns the paths."""
+        time = the axial strain), with ``wires`` also ``<stem>_wires.pvd``, each step as
+        `StepResult.to_vtk` writes it (``fields`` included). Returns the paths."""
         from pathlib import Path
 
         from skcable.io import write_series
@@ -463,7 +436,8 @@ class CapacityCurve(Shown):
 
     @property
     def D_r(self) -> float:
-        """Damage index ``1 - U_T / U_T0`` (eq. 4.31); both curves must reach rupture."""
+        """Damage index ``1 - U_T / U_T0`` (eq. 4.31) against the undamaged strand with the same
+        model settings (`reference`); both curves must reach rupture."""
         if not (self.ruptured and self.reference.ruptured):
             raise ConvergenceError(f"D_r needs curves to rupture; this one stopped: {self.failure}")
         return 1.0 - self.toughness / self.reference.toughness
@@ -483,28 +457,21 @@ def capacity_curve(
 ) -> CapacityCurve:
     """Pull ``model`` step by step until a wire breaks (or ``max_strain``).
 
-    A model loaded by an axial force (``axial="force"``) is pulled by force instead: ``n_steps``
-    (default 60) equal increments of the force up to ``max_force`` (N, required), its curve's
-    strains the strand's mean axial strain ``(u(L) − u(0))/L`` at each step; past the largest
-    force the strand carries, no step converges (``on_failure`` as below).
-
-    ``n_steps`` (default 60) strain increments, whatever ``max_strain`` is: half of them up to
-    twice the yield strain and half from there to ``max_strain`` (default 1.5 eps_rupture), or,
-    for a ``max_strain`` below twice the yield strain, all of them equal (the curve
-    stops at the first wire rupture, interpolated to the strain where the
-    most strained wire reaches eps_rupture, and its last step is solved there). A step
-    that fails is halved; the cut increment is kept until two steps in a row converge
-    at it (then it doubles), down to 1/64 of the schedule's step. The slip state is
-    frozen in each Newton solve and updated between solves (at most ``state_passes``); the
-    step lengths follow `skcable.fe.continuation.StepControl`.
-    When a step still fails, ``on_failure="raise"`` (default) raises ConvergenceError;
-    ``on_failure="stop"`` returns the converged part with ``failure`` set.
-    ``callback(step, done)``, if given, is called after every converged step
-    with its `StepResult` and the fraction of the strain schedule done
-    (for progress bars). Newton options for every step: ``options`` (a
-    `skcable.fe.NewtonOptions`, default the model's) and any of its fields as keywords
-    (``tol``, ``atol``, ``max_iter``, ``line_search``; the per-iteration ``callback`` of
-    Newton is ``NewtonOptions.callback``, not this one).
+    ``n_steps`` (default 60) strain increments: half up to twice the yield strain, half growing
+    geometrically from there to ``max_strain`` (default 1.5 eps_rupture), or all equal for a
+    ``max_strain`` below twice the yield strain. The curve stops at the first wire rupture,
+    interpolated to the strain where the most strained wire reaches its eps_rupture, and its last
+    step is solved there. A model loaded by an axial force (``axial="force"``) is pulled by
+    ``n_steps`` equal increments of the force up to ``max_force`` (N, required), its strains the
+    mean axial strain ``(u(L) − u(0))/L``; past the largest force the strand carries, no step
+    converges. A step that fails is halved, down to 1/64 of the schedule's step
+    (`skcable.fe.continuation.StepControl`); the slip state is frozen in each Newton solve and
+    updated between solves (at most ``state_passes``). When a step still fails,
+    ``on_failure="raise"`` raises ConvergenceError and ``"stop"`` returns the converged part with
+    ``failure`` set. ``callback(step, done)`` is called after every converged step with its
+    `StepResult` and the fraction of the schedule done. Newton options for every step:
+    ``options`` (a `skcable.fe.NewtonOptions`, default the model's) and any of its fields as
+    keywords (its per-iteration ``callback`` is ``NewtonOptions.callback``, not this one).
     """
     from skcable.fe import NewtonOptions
 
@@ -519,12 +486,10 @@ def capacity_curve(
         while path.eps < goal - 1e-15 and failure is None:
             step, target, cut, last = path.solve(control, goal, smallest)
             if step is None:
-                where = (
-                    f"strain {path.eps:.6g}"
-                    if getattr(model, "axial", "strain") == "strain"
-                    else (f"force {path.eps:.6g} N")
+                where = "strain {:.6g}" if getattr(model, "axial", "strain") == "strain" else "force {:.6g} N"
+                failure = (
+                    f"no convergence beyond {where.format(path.eps)} (increment cut to 1/64 of the step)"
                 )
-                failure = f"no convergence beyond {where} (increment cut to 1/64 of the step)"
                 failure += _softening_note(model, path.steps[-1] if path.steps else None)
                 failure += _last_note(model, last, target, path.state)
                 if on_failure == "raise":
@@ -556,10 +521,7 @@ def capacity_curve(
 
 
 def _schedule(model, max_strain, n_steps, state_passes, max_force=None) -> tuple[int, np.ndarray]:
-    """``n_steps`` checked (default 60) and the load goals of `capacity_curve` after 0: for an
-    imposed strain, half the steps uniform up to twice the yield strain, half growing
-    geometrically to ``max_strain`` (default 1.5 eps_rupture); for an axial force, equal steps up
-    to ``max_force``; ``max_strain``, ``max_force`` and ``state_passes`` checked on the way."""
+    """``n_steps`` and the load goals of `capacity_curve` after 0, the arguments checked."""
     materials = model.strand.materials
     axial = getattr(model, "axial", "strain")
     if axial == "none":
@@ -572,40 +534,23 @@ def _schedule(model, max_strain, n_steps, state_passes, max_force=None) -> tuple
         positive("max_force", max_force)
     elif max_force is not None:
         raise InputError("max_force", "the model is pulled by strain (axial='strain'): give max_strain")
-    if n_steps is None:
-        n_steps = 60
-    elif isinstance(n_steps, bool) or not isinstance(n_steps, (int, np.integer)):
-        raise InputError("n_steps", f"must be a whole number of steps (at least 4), got {n_steps!r}")
-    n_steps = int(n_steps)
-    if n_steps < 4:
-        raise InputError("n_steps", f"must be at least 4, got {n_steps!r}")
+    n_steps = 60 if n_steps is None else whole("n_steps", n_steps, 4)
     if max_strain is not None:
         positive("max_strain", max_strain)
         _plausible.strand_strain("max_strain", float(max_strain), [m.eps_rupture for m in materials])
-    if not (
-        isinstance(state_passes, (int, np.integer))
-        and not isinstance(state_passes, bool)
-        and state_passes >= 0
-    ):
-        raise InputError("state_passes", f"must be a whole number >= 0, got {state_passes!r}")
+    whole("state_passes", state_passes, 0)
     if axial == "force":
         return n_steps, np.linspace(0.0, float(max_force), n_steps + 1)[1:]
     top = float(max_strain) if max_strain is not None else 1.5 * min(m.eps_rupture for m in materials)
-    # half the steps, uniform, up to twice the yield strain (where slip and yield
-    # shape the curve and K_Leq is measured), half from there to rupture with
-    # geometrically growing increments (no jump in step size for Newton to absorb)
+    # half the steps uniform up to twice the yield strain (where slip and yield shape the curve
+    # and K_Leq is measured), half growing geometrically (no jump in step size for Newton)
     knee = 2.0 * min(m.eps_y for m in materials)
     if top <= knee:  # the whole range is the uniform part: n_steps equal increments
         return n_steps, np.linspace(0.0, top, n_steps + 1)[1:]
-    schedule = np.unique(
-        np.concatenate(
-            [
-                np.linspace(0.0, knee, n_steps // 2 + 1),
-                np.geomspace(knee, top, n_steps - n_steps // 2 + 1),  # increments grow gradually
-            ]
-        )
-    )[1:]
-    return n_steps, schedule
+    uniform = np.linspace(0.0, knee, n_steps // 2 + 1)
+    return n_steps, np.unique(np.concatenate([uniform, np.geomspace(knee, top, n_steps - n_steps // 2 + 1)]))[
+        1:
+    ]
 
 
 class _Path:
@@ -670,13 +615,11 @@ class _Path:
     def _end_at_rupture(self, peak: float, rupture: float, U: np.ndarray) -> None:
         """End the curve where the most strained wire (relative to its own material's rupture
         strain) reaches its rupture strain, and solve the last step there."""
-        steps, strains, forces = self.steps, self.strains, self.forces
+        steps, loads = self.steps, self.loads
         before = self.layout.peak(steps[-2].wire_strain, "eps_rupture")[0] if len(steps) > 1 else 0.0
         t = (rupture - before) / (peak - before)
-        strains[-1] = strains[-2] + t * (strains[-1] - strains[-2])
-        forces[-1] = forces[-2] + t * (forces[-1] - forces[-2])
-        loads = self.loads
-        loads[-1] = loads[-2] + t * (loads[-1] - loads[-2])
+        for values in (self.strains, self.forces, loads):
+            values[-1] = values[-2] + t * (values[-1] - values[-2])
         self.ruptured = True
         # one last state everywhere: the last step is the equilibrium at the rupture strain
         # (the force of the curve stays the interpolated one; they differ by its error)
@@ -686,6 +629,16 @@ class _Path:
             steps[-1] = self._solve(loads[-1], guess, steps[-2].state if len(steps) > 1 else None)
         except ConvergenceError:
             pass  # keep the step beyond rupture: the curve itself ends at the rupture strain
+
+
+def _mesh(step, wires: bool, scale: float, radial_scale: float, fields):
+    """The meshio mesh of a step's axis (with the user's ``fields``) or, with ``wires``, its wires."""
+    from skcable.io import strand_mesh, wire_mesh
+
+    if wires:
+        return wire_mesh(step, scale=scale, radial_scale=radial_scale)
+    point_data, cell_data = (None, None) if fields is None else fields(step)
+    return strand_mesh(step, point_data=point_data, cell_data=cell_data)
 
 
 def _last_note(model, last, load, state) -> str:

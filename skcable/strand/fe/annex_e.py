@@ -138,20 +138,16 @@ def annex_e_section(strand, *, slip, x, turning: bool = True):
     x : float or array_like
         Abscissae along the strand (m).
     turning : bool
-        True: the section turns with the lay, the centroid and the second
-        moments at x being those of the section at x = 0 turned by
-        ``d 2π x / p`` (from +z toward +y, as the wire angles ψ; p the lay
-        length, d the lay direction). False: the prismatic section of the
-        thesis (annex E), the section at x = 0 everywhere.
+        True: the section at x is the section at x = 0 turned by ``d 2π x / p`` (from +z toward
+        +y, as the wire angles ψ; p the lay length, d the lay direction). False: the prismatic
+        section of the thesis (annex E), the section at x = 0 everywhere.
 
     Returns
     -------
     D_E, D_G : ndarray (6, 6, *shape)
-        Elastic section matrix (N, N·m, N·m²) and geometric section matrix per
-        newton of axial force, rows and columns in the order of
-        `STRAINS`, ``g = (u', v', v'', w', w'', φ')``; ``shape`` is the
-        broadcast shape of ``x`` and ``slip``. See the module docstring for the
-        entries and the sign convention.
+        Elastic section matrix (N, N·m, N·m²) and geometric section matrix per newton of axial
+        force (module docstring), rows and columns in the order of `STRAINS`; ``shape`` is the
+        broadcast shape of ``x`` and ``slip``.
 
     Examples
     --------
@@ -296,13 +292,10 @@ _GAUSS = np.polynomial.legendre.leggauss(5)
 def annex_e_element(D, length):
     r"""Annex E's 12×12 element matrix ``∫ Bᵀ D B dx`` with the thesis's shape functions.
 
-    Linear u and θ_x, cubic Hermite v and w (eqs. 3.22–3.31), in the thesis's
-    degrees of freedom and order `THESIS_DOFS` (eq. E.1:
-    ``u_A, u_B, v_A, v_B, w_A, w_B, θ_xA, θ_xB, θ_yA, θ_yB, θ_zA, θ_zB``,
-    with ``θ_z = v'`` and ``θ_y = w'`` at the nodes), so that its entries
-    compare one to one with the printed ``K_E0101 … K_G1212``. The section
-    matrix is in the model's convention and mapped through ``T`` (module
-    docstring).
+    Linear u and θ_x, cubic Hermite v and w (eqs. 3.22–3.31), in the thesis's degrees of freedom
+    and order `THESIS_DOFS` (eq. E.1; ``θ_z = v'`` and ``θ_y = w'`` at the nodes), so that its
+    entries compare one to one with the printed ``K_E0101 … K_G1212``. The section matrix is in
+    the model's convention and mapped through ``T`` (module docstring).
 
     Parameters
     ----------
@@ -348,14 +341,11 @@ def annex_e_element(D, length):
 class AnnexE(SectionTerm):
     r"""The thesis's own formulation as a section term: annex E's element matrices (typos fixed).
 
-    Section forces ``S = (D_E + F D_G) g`` with the section matrices of E.1 (stick) or E.2
-    (slip) from `annex_e_section` and F the current axial force of the point
-    (`annex_e_forces` with ``F=None``): no membrane stretch couples u with v and w,
-    as in the thesis's internal force ``(K_E + K_G(F)) U``. The modulus is the wires'
-    elastic E_e (the annex's E): this term set is linear elastic, so its capacity curve is
-    a straight line whose slope is its K_Leq. Used alone, as the model's ``physics``:
-    ``StrandModel(s, physics=[AnnexE(slip="element")])`` (the wires' own bending is in the
-    annex's matrices already).
+    Section forces ``S = (D_E + F D_G) g`` of E.1 (stick) or E.2 (slip), F the current axial
+    force of the point (`annex_e_forces` with ``F=None``; no membrane stretch, as the thesis's
+    ``(K_E + K_G(F)) U``), with the wires' elastic E_e: a linear elastic term, whose capacity
+    curve is a straight line of slope K_Leq. Used alone, as the model's ``physics``:
+    ``StrandModel(s, physics=[AnnexE(slip="element")])`` (the wires' own bending is in it).
 
     Parameters
     ----------

@@ -2,14 +2,11 @@ r"""A strand bent back and forth: its loop over load steps, the energy it dissip
 and the friction work its layers do.
 
 `bending_cycles` drives one held dof of a [`StrandModel`][skcable.strand.StrandModel] whose slip
-law keeps a history ([`StageSlip`][skcable.strand.StageSlip]): an end rotation (``"v'"``, the
-reaction is the end moment) or an end displacement across the axis (``"v"``, the reaction is the
-transverse force), from the unbent strand (its axial load applied) to ``+a`` (the *backbone*),
-then ``cycles`` times down to ``−a`` and back to ``+a``. Every step commits the slip state
-(`StageSlip`), so the reaction traces the hysteresis loop; the result reports, per cycle, the
-energy the support puts in, :math:`W = \oint R\,dq` (J), beside the friction work the stages did
-in the same steps, :math:`\sum \int \sum_k M_k|\Delta\kappa_{p,k}|\,dx` (J): equal, by the
-balance of energy, once the loop closes.
+law keeps a history ([`StageSlip`][skcable.strand.StageSlip]) from the unbent strand to ``+a``
+(the *backbone*), then ``cycles`` times down to ``−a`` and back. Every step commits the slip
+state, so the reaction traces the hysteresis loop: per cycle, the energy the support puts in,
+:math:`W = \oint R\,dq` (J), equals by the balance of energy the friction work the stages did,
+:math:`\sum \int \sum_k M_k|\Delta\kappa_{p,k}|\,dx` (J), once the loop closes.
 
 **Exact loops** (``exact=True``, the default). The stick/slip law is piecewise linear, so the
 strand's response is linear between *events*, the loads at which a stage starts to slip at some
@@ -52,6 +49,7 @@ import scipy.sparse.linalg as spla
 from skcable._checks import whole
 from skcable._show import Shown, counted, quantity
 from skcable.errors import ConvergenceError, InputError, PlausibilityWarning
+from skcable.strand._arguments import real_number
 from skcable.strand.fe.stages import StageSlip
 from skcable.strand.fe.supports import StrandSupports
 from skcable.strand.fe.terms import FIELDS
@@ -162,11 +160,7 @@ class BendingCycles(Shown):
     def energy_per_cycle(self) -> np.ndarray:
         """``∮ R dq`` of each cycle (J): the energy the support puts in, which the strand
         dissipates (the trapezoidal rule over the vertices: exact with ``exact``)."""
-        out = []
-        for c in range(self.cycles):
-            q, R = self.loop(c)
-            out.append(float(np.sum(0.5 * (R[1:] + R[:-1]) * np.diff(q))))
-        return np.array(out)
+        return np.array([_area(*self.loop(c)) for c in range(self.cycles)])
 
     @property
     def friction_per_cycle(self) -> np.ndarray:
@@ -190,7 +184,7 @@ class BendingCycles(Shown):
             )
         R = R - R[0]
         q = q - q[0]
-        return float(8.0 * np.sum(0.5 * (R[1:] + R[:-1]) * np.diff(q)) - 4.0 * q[-1] * R[-1])
+        return 8.0 * _area(q, R) - float(4.0 * q[-1] * R[-1])
 
     def to_frame(self):
         """A pandas DataFrame of the vertices: drive, reaction, work, branch."""
@@ -202,17 +196,21 @@ class BendingCycles(Shown):
 
     def __repr__(self) -> str:
         unit = "rad" if self.dof in ("v'", "w'", "phi") else "m"
-        energy_unit = "J"
         shown = [
             quantity("amplitude", self.amplitude, unit),
-            quantity("energy_per_cycle", self.energy_per_cycle, energy_unit),
-            quantity("friction_per_cycle", self.friction_per_cycle, energy_unit),
+            quantity("energy_per_cycle", self.energy_per_cycle, "J"),
+            quantity("friction_per_cycle", self.friction_per_cycle, "J"),
             quantity("inexact", self.inexact),
             quantity("unloaded", self.unloaded),
         ]
         end = f"stopped: {self.failure}" if self.failure else "done"
         counts = f"{counted([self.cycles], 'cycle')}, {counted([self.drive.size], 'point')}"
         return f"BendingCycles({self.end} {self.dof}, {counts}, {end}: {', '.join(shown)})"
+
+
+def _area(q, R) -> float:
+    """``∫ R dq`` by the trapezoidal rule over the vertices (J)."""
+    return float(np.sum(0.5 * (R[1:] + R[:-1]) * np.diff(q)))
 
 
 class _Tracer:
@@ -399,11 +397,10 @@ def bending_cycles(
         hold ``dof`` at ``end`` (its value there is the centre of the swing).
     amplitude : float
         ``a`` > 0: the drive swings between ``±a`` (rad for a slope, m for a displacement).
-    dof : str
-        The driven dof, one the supports hold at ``end``: ``"v'"`` or ``"w'"`` (an end rotation),
-        ``"v"`` or ``"w"`` (an end moved across the axis), ...
-    end : {"left", "right"}
-        Where.
+    dof, end : str
+        The driven dof, one the supports hold at ``end`` ("left" or "right"): ``"v'"`` or
+        ``"w'"`` (an end rotation; the reaction is the end moment), ``"v"`` or ``"w"`` (an end
+        moved across the axis; the reaction is the transverse force), ...
     cycles : int
         Cycles ``+a → −a → +a`` after the backbone, >= 1.
     n_steps : int
@@ -462,11 +459,7 @@ def _checked_amplitude(model, amplitude, dof, end) -> float:
         raise InputError(
             "dof", f"{dof!r} is not held at the {end} end (it holds {sorted(held)}): hold it in supports="
         )
-    if isinstance(amplitude, bool) or not isinstance(amplitude, (int, float, np.integer, np.floating)):
-        raise InputError("amplitude", f"must be a real number > 0, got {amplitude!r}")
-    amplitude = float(amplitude)
-    if not (np.isfinite(amplitude) and amplitude > 0):
-        raise InputError("amplitude", f"must be finite and > 0, got {amplitude!r}")
+    amplitude = real_number("amplitude", amplitude, lower=0.0, strict=True)
     for value in (held[dof] + amplitude, held[dof] - amplitude):
         StrandSupports.value(end, dof, value, "amplitude")  # a slope within MAX_SLOPE
     return amplitude

@@ -4,13 +4,9 @@
   class of their own, a nonlinear `FieldTerm`, a slip law of their own inside `HelicalWires`)
   against a directional difference of its own residual (`skcable.fe.check.directional_check`:
   one direction, two steps, once per term, at the first iterate where the term's residual moves
-  at all): a `skcable.errors.TangentWarning` names the term and the ratio of its tangent to the
-  difference. ``StrandModel(..., check_tangents=False)`` skips it.
-- `non_finite`: the terms whose residual or tangent is not finite (`skcable.errors.NonFiniteError`
-  names them).
-- `tangent_modes`: a tangent that is singular or not positive definite, read from the smallest
-  eigenvalues of its free block: the dofs its null vectors move (a missing support), or its
-  negative modes under an axial compression (a load beyond buckling).
+  at all); ``StrandModel(..., check_tangents=False)`` skips it.
+- `non_finite`: the terms whose residual or tangent is not finite.
+- `tangent_modes`: a tangent that is singular or not positive definite.
 """
 
 from __future__ import annotations
@@ -38,8 +34,7 @@ LARGEST = 3000
 
 
 def _analysts(term) -> bool:
-    """Whether a term's tangent is an analyst's code: a class outside skcable, a nonlinear
-    `FieldTerm` (their forms), or a term whose slip law is their own."""
+    """Whether a term's tangent is an analyst's code (module docstring)."""
     if not type(term).__module__.startswith("skcable."):
         return True
     if isinstance(term, FieldTerm):

@@ -147,21 +147,18 @@ class TensionlessFoundation(Term):
 
 
 class RigidCylinder(Term):
-    r"""Contact with a rigid cylinder whose axis is normal to the plane of ``field`` (v: the
-        x–y plane, w: x–z), centred at ``center = (x_c, y_c)`` (m), of ``radius`` (m): a sheave, a
-        saddle, a clamp's groove, as a penalty.
+    r"""Contact with a rigid cylinder whose axis is normal to the plane of ``field`` (v: the x–y
+    plane, w: x–z), centred at ``center = (x_c, y_c)`` (m), of ``radius`` (m): a sheave, a
+    saddle, a clamp's groove, as a penalty. A point of the axis ``p = (x + u, v)`` that
+    penetrates the cylinder, ``g = |p − c| − r < 0``, is pushed out along ``n = (p − c)/|p − c|``
+    with ``k |g|`` per length (``k`` in N/m², up to 1e12):
 
-        A point of the axis ``p = (x + u, v)`` that penetrates the cylinder, ``g = |p − c| − r < 0``,
-        is pushed out along ``n = (p − c)/|p − c|`` with ``k |g|`` per length (``k`` in N/m², up to
-        1e12):
+    .. math:: R = \int k\,\min(g, 0)\,\mathbf n\cdot\delta\mathbf p\,dx, \qquad
+              K = \int k\,H(-g)\left[\mathbf n\mathbf n^T
+                  + \frac{g}{|\mathbf p - \mathbf c|}(I - \mathbf n\mathbf n^T)\right] dx,
 
-        .. math:: R = \int k\,\min(g, 0)\,\mathbf n\cdot\delta\mathbf p\,dx, \qquad
-                  K = \int k\,H(-g)\left[\mathbf n\mathbf n^T
-                      + rac{g}{|\mathbf p - \mathbf c|}(I - \mathbf n\mathbf n^T)
-    ight] dx,
-
-        the potential ``½ k min(g, 0)²``. ``smooth = False`` (semismooth Newton). Outputs:
-        ``contact_pressure`` (N/m) and ``gap`` (m) at the quadrature points.
+    the potential ``½ k min(g, 0)²``. ``smooth = False`` (semismooth Newton). Outputs:
+    ``contact_pressure`` (N/m) and ``gap`` (m) at the quadrature points.
     """
 
     smooth = False

@@ -10,21 +10,14 @@ and pulled at x = L, ``u(L) = u(0) + ε L`` (Pino Vidal 2021, §4.1, "fixed – 
 pinned, sliding, free, or any dof fixed at any value; the axial load at x = L is data too
 (``axial=``): an imposed strain, an axial force, or none.
 
-Pipeline: strand → mesh and bases → supports and terms → `skcable.fe.newton` (or
-`skcable.fe.minimize` when every term has a potential) per step →
-[`StepResult`][skcable.strand.StepResult] → [`CapacityCurve`][skcable.strand.CapacityCurve] →
-writers and plots.
-
 **Convergence.** A solve has converged when, for every group of equations of one kind (the
 axial, transverse and torsional forces, and the bending moments on the slopes of v and w), the
 largest residual over the free dofs is below ``tol`` times that group's force scale: the
 largest force flowing through its equations, ``∫ Σ|S_a||B_a| dx`` of the section terms plus the
-magnitude of every other term's contribution (loads, springs, foundations), at free and fixed
-dofs alike (so the reactions count). A transverse load of a hundredth of a newton per metre is
-then converged as tightly as the axial pull beside it. No group is asked for less than the
-round-off of its sums, ``100 ε`` times the model's largest force scale (times the length, for
-moments): a group with (nearly) nothing acting on it, whose residual is round-off alone, cannot
-stall a solve. ``atol`` (N) adds an absolute criterion.
+magnitude of every other term's contribution, at free and fixed dofs alike (so the reactions
+count): a transverse load of 0.01 N/m converges as tightly as the axial pull beside it. No group
+is asked for less than the round-off of its sums, `ROUND_OFF` times the model's largest force
+scale (times the length, for moments). ``atol`` (N) adds an absolute criterion.
 
 Source: S. Pino Vidal, "Rigidez a flexión en cables: análisis numérico", Universidad de Chile,
 2021, chapter 4.
@@ -36,6 +29,7 @@ import functools
 import math
 import warnings
 from dataclasses import dataclass
+from types import SimpleNamespace
 from typing import Any
 
 import numpy as np
@@ -48,7 +42,9 @@ from skcable.errors import ConvergenceError, InputError, NonFiniteError, SlowCon
 from skcable.fe import Assembly, LinearSystem, NewtonOptions, first_converged, minimize, newton
 from skcable.fe.elements import ElementLinePpExact
 from skcable.fe.newton import linear_tail
+from skcable.strand._arguments import real_number
 from skcable.strand._bending import friction
+from skcable.strand._geometry import lay_rates
 from skcable.strand.capacity import StepResult, StrandLayout, capacity_curve
 from skcable.strand.fe.diagnosis import FirstSolveCheck, non_finite, tangent_modes
 from skcable.strand.fe.slip import SlipLaw, slip_law
@@ -91,46 +87,25 @@ def default_physics(slip="none", mu: float = 0.5, damage_load: str = "eccentrici
 
 @functools.lru_cache(maxsize=16)
 def _discretisation(nodes: bytes, length: float, element: str):
-    """``(mesh, bases, assembly, kept)`` of the node abscissae ``nodes`` (float64 bytes): what
-    depends on the mesh alone, formed once for every model on it (a study's models share their
-    mesh; none of the three is changed by a model or a term); ``kept``: what models on the mesh
-    look up from it, kept for the next (`_MeshTables`)."""
+    """``(mesh, bases, assembly, kept)`` of the node abscissae ``nodes`` (float64 bytes), formed
+    once for every model on the mesh (none changes them); ``kept``: what the models derive from
+    the mesh and their free dofs alone, ``ends`` (each basis's end dofs) and ``by_free`` (per set
+    of free dofs: the banded free block and the equation groups)."""
     L = float(length)
     mesh = MeshLine(np.frombuffer(nodes, dtype=float).copy()).with_boundaries(
         {"left": lambda x: np.isclose(x[0], 0.0), "right": lambda x: np.isclose(x[0], L)}
     )
     bases = _bases(mesh, element)
-    return mesh, bases, Assembly(bases, STRAINS), _MeshTables()
-
-
-class _MeshTables:
-    """What the models on one mesh derive from it and from their supports' free dofs alone,
-    formed by the first and read by the others (none changes them).
-
-    Attributes
-    ----------
-    ends : dict
-        Each basis's end dofs (`skcable.strand.fe.supports`'s ``seen``).
-    by_free : dict of bytes to tuple
-        Per set of free dofs (their bytes): the banded system of the tangent's free block and
-        the equation groups of the norm.
-    """
-
-    def __init__(self):
-        self.ends: dict = {}
-        self.by_free: dict = {}
+    return mesh, bases, Assembly(bases, STRAINS), SimpleNamespace(ends={}, by_free={})
 
 
 @functools.lru_cache(maxsize=16)
 def _strand_section(strand):
-    """``strand.section()``, formed once per strand for every model of it (its wire table,
-    materials and principal axes; a study's models share their strand, and nothing changes it)."""
+    """``strand.section()``, formed once per strand for every model of it (nothing changes it)."""
     return strand.section()
 
 
 def _bases(mesh: MeshLine, element: str) -> dict:
-    if element not in ELEMENTS:
-        raise InputError("element", f"must be one of {tuple(ELEMENTS)}, got {element!r}")
     axial = ElementLineP2() if element == "P2" else ElementLinePpExact(3)
     ub = Basis(mesh, axial, intorder=ELEMENTS[element])
     vb = ub.with_element(ElementLineHermite())
@@ -139,40 +114,14 @@ def _bases(mesh: MeshLine, element: str) -> dict:
 
 @dataclass(slots=True, eq=False)
 class Assembled:
-    """One assembly of a strand model at a dof vector: what a Newton iteration, the norm, the
-    tangent and the step's results read (`StrandModel._assemble`).
-
-    Attributes
-    ----------
-    R : ndarray (N,)
-        The residual (N for the displacement dofs, N·m for the rotations and slopes), the
-        axial force at x = L subtracted under ``axial="force"``.
-    extra : list
-        The tangents (N × N, sparse or dense) of the terms that are not section terms.
-    outputs : list
-        Each term's output dict, in the model's term order (None where a term gives none).
-    g : ndarray (6, n_elements, n_quad)
-        The generalized strains (u′, v′, v″, w′, w″, φ′) at the quadrature points (1, 1/m).
-    S : ndarray (6, n_elements, n_quad) or None
-        The section terms' summed section forces (N, N·m), None without section terms.
-    D : ndarray (6, 6, n_elements, n_quad) or None
-        Their summed section tangent, None without section terms.
-    energy : _Energy or None
-        The model's energy (J) on demand, None where a term has no potential.
-    size : ndarray (N,)
-        The size of what each equation sums (the force scales of the norm).
-    strain : float
-        The strand's axial strain of the assembly (the imposed one, or read from the dofs).
-    state : tuple
-        The terms' states it was assembled with.
-    load : float
-        The axial load: the imposed strain, the axial force at x = L (N), or 0.
-    tangents : dict
-        ``extra`` by position in the term list (the active-set fingerprints of `_active`).
-    Ke : ndarray (n_local, n_local, n_elements) or None
-        The section terms' element matrices, formed on first use (`StrandModel._element_matrices`:
-        a Newton iterate that converges never needs them); ``formed`` tells whether they are.
-    """
+    """One assembly of a strand model at a dof vector (`StrandModel._assemble`): the residual
+    ``R`` (N, N·m; the axial force at x = L subtracted under ``axial="force"``), the tangents
+    ``extra`` of the terms that are not section terms (``tangents``: the same by term position),
+    each term's ``outputs``, the generalized strains ``g`` (6, ne, nq), the section terms' summed
+    forces ``S`` and tangent ``D`` (None without section terms), the ``energy`` (J, on demand; None
+    where a term has no potential), the ``size`` of what each equation sums (the force scales),
+    the axial ``strain``, the terms' ``state``, the axial ``load``, and the section terms' element
+    matrices ``Ke``, formed on first use (``formed``: a converging iterate never needs them)."""
 
     R: np.ndarray
     extra: list
@@ -212,12 +161,10 @@ class StrandModel:
     mu : float
         Friction coefficient when ``slip`` is a name.
     damage_load : {"eccentricity", "sinusoidal"}
-        How broken wires load the strand (include the mechanism once).
-        ``"eccentricity"``: every fibre on its helix, so the net section's centroid
-        turns with the lay and the axial force acts on a helical eccentricity.
-        ``"sinusoidal"``: the thesis's reading (Pino Vidal 2021 §2.4; Beltrán & De
-        Vico 2015): a prismatic section under the biaxial sinusoidal loads of the
-        broken wires ([`SinusoidalDamageLoads`][skcable.strand.SinusoidalDamageLoads]).
+        How broken wires load the strand (`DAMAGE_LOADS`): every fibre on its helix (the
+        axial force acts on the helical eccentricity of the net centroid), or the thesis's
+        reading, a prismatic section under the sinusoidal loads of the broken wires
+        ([`SinusoidalDamageLoads`][skcable.strand.SinusoidalDamageLoads]).
     terms : sequence of Term
         Terms added to the built-in physics (foundations, loads, springs, contact, an
         analyst's own).
@@ -225,24 +172,20 @@ class StrandModel:
         Replaces the built-in physics (``slip``, ``mu`` and ``damage_load`` are then unused).
     supports : pair of end conditions, optional
         ``(left, right)``, each ``"clamped"``, ``"pinned"``, ``"sliding"``, ``"free"`` or a
-        dict ``{dof: value}`` over ``"u"``, ``"v"``, ``"w"``, ``"phi"``, ``"v'"``, ``"w'"``
-        (m, rad): `skcable.strand.fe.supports`. Default: both clamped.
+        dict ``{dof: value}`` (m, rad): `skcable.strand.fe.supports`. Default: both clamped.
     axial : {"strain", "force", "none"}
-        The axial load at x = L (`skcable.strand.fe.supports`): an imposed strain,
-        ``u(L) = u(0) + ε L`` (``solve(strain)``, the capacity curves of the thesis); an axial
-        force P (``solve(force=P)``, load control); or none (``solve()``: u at both ends is a
-        support like the others, a clamped–free strand is free at its tip).
+        The axial load at x = L (`skcable.strand.fe.supports`): an imposed strain
+        (``solve(strain)``, the capacity curves of the thesis), an axial force P
+        (``solve(force=P)``) or none (``solve()``).
     twist : {"clamped", "free"}
         Shortcut: ``"free"`` frees the twist at x = L (of the default or the given supports).
     element : {"P2", "P3"}
         The element of u and φ (v and w are cubic Hermite).
     options : NewtonOptions, optional
-        Default Newton settings of `solve` and `capacity_curve` (tolerances, iterations, line
-        search, callback); each call may override them.
+        Default Newton settings of `solve` and `capacity_curve`; each call may override them.
     check_tangents : bool
-        On the model's first solve, check the tangent of every term an analyst wrote against a
-        directional difference of its residual (`skcable.strand.fe.diagnosis`: two residual
-        evaluations per term, once; a `skcable.errors.TangentWarning` names a term that is off).
+        On the model's first solve, check the tangent of every term an analyst wrote
+        (`skcable.strand.fe.diagnosis`; a `skcable.errors.TangentWarning` names a term that is off).
 
     Attributes
     ----------
@@ -256,7 +199,7 @@ class StrandModel:
     assembly : skcable.fe.Assembly
         Basis values, weights and sparsity pattern, computed once.
     x : ndarray (n_elements, n_quad)
-        Quadrature points (m), scikit-fem's layout: what the terms see.
+        Quadrature points (m).
     fixed, fixed_values : ndarray
         The dofs the supports fix and their values (an imposed strain's dof excluded); ``pull``
         is the axial dof at x = L, ``free`` the dofs a solve moves.
@@ -326,16 +269,13 @@ class StrandModel:
         self._plausible_strain = max(_plausible.MAX_STRAIN, 1.5 * max(self._ruptures))
         self.EA = self.strand_section.EA
         self._bound = [t.bind(self) for t in self.terms]
-        # (position in the model's term list, bound term): the states and outputs follow that list
-        self._section_terms = [(i, t) for i, t in enumerate(self._bound) if isinstance(t, SectionTerm)]
-        self._other_terms = [(i, t) for i, t in enumerate(self._bound) if not isinstance(t, SectionTerm)]
+        self._section_terms, self._other_terms = _by_kind(self._bound)
         key = self.free.tobytes()
         if key not in self._kept.by_free:
             self._kept.by_free[key] = (self.assembly.banded(self.free), self._equation_groups())
-        banded, self._groups = self._kept.by_free[key]
+        banded, self._group_index = self._kept.by_free[key]
         self._system = LinearSystem(banded)
         self._first = FirstSolveCheck(self, check_tangents)
-        self._group_index = self._index_groups()
         self._metric = None  # the elastic tangent of the straight strand, in the solver's storage
         self.layout = self._layout()
         self._alive_wires = ~self.layout.wire_broken[:, None, None]
@@ -358,11 +298,7 @@ class StrandModel:
         """Pickled as the data it was built from (the bases and tables are rebuilt; the name of
         the built-in physics kept)."""
         a = self._init
-        kwargs = dict(
-            mesh=a["mesh"], grading=a["grading"], physics=a["physics"], terms=a["terms"],
-            supports=a["supports"], element=a["element"], options=a["options"], mu=a["mu"],
-            axial=a["axial"], check_tangents=a["check_tangents"],
-        )  # fmt: skip
+        kwargs = {k: v for k, v in a.items() if k not in ("strand", "length", "damage_load")}
         return (_rebuild, (type(self), a["strand"], a["length"], kwargs), {"damage_load": self.damage_load})
 
     # --- set-up --------------------------------------------------------------
@@ -428,9 +364,9 @@ class StrandModel:
             self._reaction_dofs["right"]["u"] = self.pull
 
     def _equation_groups(self):
-        """Dofs of equations of one kind: per field, the values, and the slopes of v and w.
-
-        Returns a list of ``(all dofs, free dofs, is_moment)``."""
+        """The equations of one kind (per field, the values, and the slopes of v and w) as flat
+        index arrays for ``np.maximum.reduceat``: ``(order, starts, free_order, free_starts,
+        forces, free_length, with_free)``, the last three over the groups with free dofs."""
         free = np.zeros(self.assembly.N, dtype=bool)
         free[self.free] = True
         groups = []
@@ -443,34 +379,33 @@ class StrandModel:
             for k, dofs in enumerate(kinds):
                 dofs = offset + dofs
                 groups.append((dofs, dofs[free[dofs]], name == "phi" or k == 1))
-        return groups
-
-    def _index_groups(self):
-        """The groups of `_equation_groups` as flat index arrays for ``np.maximum.reduceat``."""
-        groups = self._groups
-        self._has_free = np.array([free.size > 0 for _, free, _ in groups])
-        self._with_free = np.flatnonzero(self._has_free)
+        has_free = np.array([free.size > 0 for _, free, _ in groups])
         order = np.concatenate([dofs for dofs, _, _ in groups])
         starts = np.cumsum([0] + [len(dofs) for dofs, _, _ in groups[:-1]])
         with_free = [free for _, free, _ in groups if free.size]
         free_order = np.concatenate(with_free)
         free_starts = np.cumsum([0] + [len(f) for f in with_free[:-1]])
         moment = np.array([is_moment for _, _, is_moment in groups])
-        length = np.where(moment, self.length, 1.0)[self._has_free]  # over the groups with free dofs
-        return order, starts, free_order, free_starts, np.flatnonzero(~moment), length
+        length = np.where(moment, self.length, 1.0)[has_free]
+        return (
+            order,
+            starts,
+            free_order,
+            free_starts,
+            np.flatnonzero(~moment),
+            length,
+            np.flatnonzero(has_free),
+        )
 
     def _layout(self) -> StrandLayout:
         w, materials = self.strand_section.wires, self.strand_section.materials
-        helical = w.layer > 0
-        lay_length = np.ones_like(w.radius)
-        lay_length[helical] = self.strand.lay_lengths[w.layer[helical] - 1]
         return StrandLayout(
             nodes=self.mesh.p[0].copy(),
             elements=self.mesh.t.copy(),
             x=self.x,
             dx=self._dx,
             wire_psi=w.psi,
-            wire_rate=np.where(helical, w.direction * 2 * np.pi / lay_length, 0.0),
+            wire_rate=lay_rates(self.strand, w),
             wire_radius=w.radius,
             wire_layer=w.layer,
             wire_broken=~w.intact,
@@ -602,11 +537,9 @@ class StrandModel:
         bound terms (a surrogate, `_pass_fold`)."""
         state = self.initial_state() if state is None else state
         strain = load if self.axial == "strain" else self.strain_of(U)
-        if bound is None:
-            section_terms, other_terms = self._section_terms, self._other_terms
-        else:
-            section_terms = [(i, t) for i, t in enumerate(bound) if isinstance(t, SectionTerm)]
-            other_terms = [(i, t) for i, t in enumerate(bound) if not isinstance(t, SectionTerm)]
+        section_terms, other_terms = (
+            (self._section_terms, self._other_terms) if bound is None else _by_kind(bound)
+        )
         g = self.generalized_strains(U)
         S = D = None
         outputs: list[Any] = [None] * len(self._bound)  # each term's output dict, filled below
@@ -766,22 +699,24 @@ class StrandModel:
     def _norm(self, a, tol: float) -> float:
         """The largest residual of each group of equations over its force scale, or over its
         round-off floor divided by the tolerance where that is larger (module docstring)."""
-        order, starts, free_order, free_starts, force, free_length = self._group_index
+        order, starts, free_order, free_starts, force, free_length, with_free = self._group_index
         scales = np.maximum.reduceat(a.size.take(order), starts)
         # the scales are >= 0 (NaN stays NaN); ndarray methods: a Newton calls this per assembly
         forces = float(scales.take(force).max(initial=0.0))
         # the moment groups' floor times the length, at least 1e-300 (max is exact in any order)
         floor = np.maximum(ROUND_OFF * forces / tol * free_length, 1e-300)
         residual = np.maximum.reduceat(np.abs(a.R.take(free_order)), free_starts)
-        worst = residual / np.maximum(scales.take(self._with_free), floor)
+        worst = residual / np.maximum(scales.take(with_free), floor)
         return float(worst.max(initial=0.0)) if math.isfinite(forces) else float("nan")  # NaN stays NaN
+
+    def _potential(self, first) -> bool:
+        """Whether every term has a potential (and the assembly ``first`` an energy)."""
+        return first.energy is not None and all(t.symmetric and t.potential is not False for t in self._bound)
 
     def _solver(self, first, options: NewtonOptions) -> str:
         """'minimize', 'newton' or 'semismooth', from the terms' declarations and the options."""
         smooth = all(t.smooth for t in self._bound)
-        potential = first.energy is not None and all(
-            t.symmetric and t.potential is not False for t in self._bound
-        )
+        potential = self._potential(first)
         search = options.line_search
         if search == "energy" and not potential:
             lacking = [repr(t) for t in self._bound if not t.symmetric or t.potential is False] or ["a term"]
@@ -861,16 +796,22 @@ class StrandModel:
         if kind == "minimize":  # every term has a potential: minimise it, shifted at folds
             result = self._minimize(assemble, U, options, common)
         elif kind == "newton":
-            result = newton(
-                assemble, U, increment=self._increment, max_iter=options.max_iter, merit=self._merit,
-                line_search=options.line_search != "none", max_halvings=options.max_halvings,
-                stagnation_window=options.stagnation_window, **common,
+            result = self._newton_steps(
+                assemble, U, options, common, max_iter=options.max_iter,
+                stagnation_window=options.stagnation_window,
             )  # fmt: skip
         else:
             result = self._semismooth(assemble, U, first, options, common)
         if kind != "semismooth":
             self._warn_if_linear(result, options.tol, state, strain)
         return result
+
+    def _newton_steps(self, assemble, U, options, common, **settings):
+        """`skcable.fe.newton` on the model's increments, merit and line-search options."""
+        return newton(
+            assemble, U, increment=self._increment, merit=self._merit, max_halvings=options.max_halvings,
+            line_search=options.line_search != "none", **settings, **common,
+        )  # fmt: skip
 
     def _merit(self, a) -> float:
         """The residual's 2-norm over the free dofs: the smooth line-search merit."""
@@ -889,32 +830,32 @@ class StrandModel:
             **settings, **common,
         )  # fmt: skip
 
+    def _minimize_deep(self, assemble, U, options, common):
+        """`_minimize` with 40 halvings of a step, a shift of up to 1e6 times the elastic tangent
+        and four times the iterations: for a step that may reach deep into a bed or past a fold."""
+        return self._minimize(
+            assemble, U, options, common, halvings=40, mu_max=max(options.mu_max, 1e6),
+            max_iter=max(4 * options.max_iter, 100),
+        )  # fmt: skip
+
     def _semismooth(self, assemble, U, first, options, common):
         """Newton for a model with non-smooth terms (contact, tensionless supports, a kinked
-        section law).
+        section law): the attempts of `skcable.fe.first_converged`, the first failure raised.
 
-        The attempts of `skcable.fe.first_converged`. First `skcable.fe.newton` with
-        ``full_steps="first"`` and ``active=_active``: a semismooth Newton with active sets
-        (`skcable.fe.semismooth`: full steps while the active sets change, stopped at a cycle,
-        ``max(4·max_iter, 100)`` of them at most), which finds a stiff contact zone node by
-        node; then (steps on the generalized derivative) under a monotone line search, which a
-        kinked section law (Cardou's) passes in a few steps; where that stalls,
-        a model with a section law passes a fold of its path through a potential surrogate
-        (`_pass_fold`); then a semismooth Newton under a non-monotone line search
-        (`NONMONOTONE`), which identifies a contact's active set while the residual rises and
-        falls, with no stagnation rule before twice the iteration limit. Where that does not
-        converge and every term has a potential (a convex penalty, a bed), the energy is
-        minimised instead: Armijo's rule on the energy takes the fraction of a first step that
-        would push the strand deep into a bed (40 halvings), and the tangent's shift may grow to
-        1e6 times the elastic one. All failing, the first failure is raised."""
+        1. Full steps on the active sets (`_active`, `skcable.fe.semismooth`), which find a stiff
+           contact zone node by node, then a monotone line search, which a kinked section law
+           (Cardou's) passes in a few steps;
+        2. a section law without potential: its fold passed by a potential surrogate (`_pass_fold`);
+        3. a non-monotone line search (`NONMONOTONE`), which identifies a contact's active set
+           while the residual rises and falls;
+        4. every term with a potential (a convex penalty, a bed): the energy minimised, Armijo's
+           rule taking the fraction of a step that would push the strand deep into a bed (40
+           halvings), the tangent's shift up to 1e6 times the elastic one."""
         search = options.line_search != "none"
         run = functools.partial(
-            newton, assemble, U, increment=self._increment, max_iter=2 * options.max_iter, merit=self._merit,
-            line_search=search, max_halvings=options.max_halvings, **common,
-        )  # fmt: skip
-        potential = first.energy is not None and all(
-            t.symmetric and t.potential is not False for t in self._bound
+            self._newton_steps, assemble, U, options, common, max_iter=2 * options.max_iter
         )
+        potential = self._potential(first)
         attempts = [  # full steps on the active sets (contact, a slipping law), then a monotone line search
             lambda: run(
                 stagnation_window=2 * options.stagnation_window,
@@ -928,17 +869,7 @@ class StrandModel:
         if search:
             attempts.append(lambda: run(stagnation_window=2 * options.max_iter, nonmonotone=NONMONOTONE))
         if potential:
-            attempts.append(
-                lambda: self._minimize(
-                    assemble,
-                    U,
-                    options,
-                    common,
-                    halvings=40,
-                    mu_max=max(options.mu_max, 1e6),
-                    max_iter=max(4 * options.max_iter, 100),
-                )  # fmt: skip
-            )
+            attempts.append(lambda: self._minimize_deep(assemble, U, options, common))
         return first_converged(attempts)
 
     def _active(self, a) -> tuple:
@@ -960,11 +891,9 @@ class StrandModel:
         return tuple(keys)
 
     def _pass_fold(self, assemble, U, first, options, common, rounds: int = 3):
-        """A model with a section law (no potential) whose Newton failed: where every term has a
-        potential surrogate (`HelicalWires.frozen`: the wires' composite curvature and the law's
-        points frozen at the current state), minimise the surrogate's energy (which passes a fold
-        of the path, as `_minimize` does) and polish the step with the model's own Newton from
-        there, refreezing at most ``rounds`` times; else a `ConvergenceError`."""
+        """A model with a section law whose Newton failed: minimise the energy of the terms'
+        potential surrogates (`HelicalWires.frozen`), which passes a fold of the path, and polish
+        the step with the model's own Newton from there, refreezing at most ``rounds`` times."""
         load, state = first.load, first.state
         for _ in range(rounds):
             start = assemble(U)
@@ -973,18 +902,13 @@ class StrandModel:
                 raise ConvergenceError(f"{common['name']}: a term has no potential surrogate", last=U)
             surrogate = functools.partial(self._assemble, state=state, load=load, bound=bound)
             try:
-                U = self._minimize(
-                    surrogate, U, options, {**common, "state": None}, halvings=40,
-                    mu_max=max(options.mu_max, 1e6), max_iter=max(4 * options.max_iter, 100),
-                ).x  # fmt: skip
+                U = self._minimize_deep(surrogate, U, options, {**common, "state": None}).x
             except ConvergenceError as exc:
                 U = exc.last if exc.last is not None else U
             try:
-                result = newton(
-                    assemble, U, increment=self._increment, max_iter=2 * options.max_iter,
-                    merit=self._merit, line_search=options.line_search != "none",
-                    max_halvings=options.max_halvings, stagnation_window=2 * options.max_iter,
-                    **{**common, "state": None},
+                result = self._newton_steps(
+                    assemble, U, options, {**common, "state": None}, max_iter=2 * options.max_iter,
+                    stagnation_window=2 * options.max_iter,
                 )  # fmt: skip
             except ConvergenceError as exc:
                 U = exc.last if exc.last is not None else U
@@ -1097,11 +1021,7 @@ class StrandModel:
         value = strain if wanted == "strain" else force
         if value is None:
             raise InputError(wanted, f"the model's axial load is {self.axial!r}: give solve({wanted}=...)")
-        if isinstance(value, bool) or not isinstance(value, (int, float, np.integer, np.floating)):
-            raise InputError(wanted, f"must be a real number, got {value!r}")
-        value = float(value)
-        if not np.isfinite(value):
-            raise InputError(wanted, f"must be finite, got {value!r}")
+        value = real_number(wanted, value)
         if wanted == "strain":
             if not -1.0 < value < 1.0:
                 raise InputError(
@@ -1218,6 +1138,13 @@ def _surrogate(term, output):
     if hasattr(term, "frozen"):
         return term.frozen(output)
     return term if term.symmetric and term.potential is not False else None
+
+
+def _by_kind(bound) -> tuple[list, list]:
+    """The section terms and the others as ``(position in the term list, term)``: the states and
+    outputs follow the model's term list."""
+    section = [(i, t) for i, t in enumerate(bound) if isinstance(t, SectionTerm)]
+    return section, [(i, t) for i, t in enumerate(bound) if not isinstance(t, SectionTerm)]
 
 
 def _rebuild(cls, strand, length, kwargs):

@@ -31,13 +31,10 @@ symmetric tangent): `Stick` (κ_c = κ) and the thesis's element rule `ElementSl
 element beyond κ_m anywhere: the lower bound, no friction moment). They see κ_m tabulated in
 ε_a (a monotone C¹ interpolant, `critical_curvature_table`).
 
-A law may keep a *state* (which elements slip, a load reversal): it is frozen within a Newton
-solve and updated from the converged curvatures between solves, until it settles
-(`SlipLaw.next_state`). A law with a history commits its state that way: `StageSlip`
-(`skcable.strand.fe.stages`), the layer-by-layer law with the slip of every stage at every
-point, traces hysteresis loops step by step. A section law written outside the library
-subclasses `SlipLaw` and implements `SlipLaw.moment`; a stateless law needs nothing else
-(``smooth = False`` where its moment has kinks: the model then takes semismooth Newton steps).
+A law may keep a *state* (which elements slip, a load reversal), frozen within a Newton solve and
+updated from the converged curvatures between solves (`SlipLaw.next_state`); `StageSlip`, the
+layer-by-layer law, commits its history that way. A section law of one's own subclasses
+`SlipLaw` and implements `SlipLaw.moment`.
 """
 
 from __future__ import annotations
@@ -56,19 +53,16 @@ __all__ = ["SlipLaw", "SlipPoints", "Stick", "AxisSlip", "ElementSlip", "slip_la
 class SlipPoints:
     """What a slip law sees at the quadrature points: the local axial strain and Cardou's law there.
 
-    Arrays of Cardou's law are (2, n_elements, n_quad) over principal axes 1, 2, evaluated at the
-    point's axial strain clipped to ``[0, top]`` (no tension, no friction: κ_m = M_rf = 0 at and
-    below zero); their derivatives with respect to the axial strain (per unit strain) vanish
-    outside that range. Each is computed on first use.
+    Arrays of Cardou's law are (2, n_elements, n_quad) over principal axes 1, 2, evaluated on
+    first use at the point's axial strain clipped to ``[0, top]`` (κ_m = M_rf = 0 at and below
+    zero); their derivatives in the axial strain vanish outside that range.
 
     Attributes
     ----------
     axial : ndarray (n_elements, n_quad)
         ε_a = u′ + ½(v′² + w′²).
-    section : skcable.strand.Section
-        The strand section.
-    mu : float
-        Friction coefficient.
+    section, mu : skcable.strand.Section, float
+        The strand section and the friction coefficient.
     EI_stick, EI_slip, M_rf, kappa_m : ndarray (2, n_elements, n_quad)
         `BendingLaw`'s stiffnesses (N·m²), friction moment (N·m) and critical curvature (1/m)
         at each point's axial strain.
@@ -194,8 +188,7 @@ class SlipLaw:
 
 
 class Stick(SlipLaw):
-    """No slip: the wires bend as one section at any curvature (kinematic: κ_c = κ; as a section
-    law, ``M_c = (EI_stick − EI_slip) κ``)."""
+    """No slip: the wires bend as one section at any curvature (κ_c = κ)."""
 
     name = "none"
     kinematic = True
@@ -215,9 +208,7 @@ class Stick(SlipLaw):
 
 class AxisSlip(SlipLaw):
     r"""Cardou's bilinear law at every quadrature point and principal axis (module docstring):
-    the composite moment ``(EI_stick − EI_slip) κ`` up to κ_m, the friction moment
-    ``sign(κ) M_rf`` beyond, so that the section moment is `BendingLaw.moment`. Stateless; its
-    moment has a kink at ±κ_m (``smooth = False``)."""
+    stateless, with a kink at ±κ_m (``smooth = False``)."""
 
     name = "axis"
     smooth = False
@@ -238,11 +229,9 @@ class AxisSlip(SlipLaw):
 
 
 class ElementSlip(SlipLaw):
-    """The thesis's element rule (Pino Vidal 2021, eq. 4.8): an element whose curvature
-    exceeds κ_m about either principal axis anywhere loses the composite bending
-    altogether; its wires bend about their own axes (a lower bound: no friction moment).
-    Kinematic; the state is one boolean per element.
-    """
+    """The thesis's element rule (Pino Vidal 2021, eq. 4.8): an element whose curvature exceeds
+    κ_m about either principal axis anywhere loses the composite bending altogether (a lower
+    bound: no friction moment). Kinematic; the state is one boolean per element."""
 
     name = "element"
     kinematic = True

@@ -1,24 +1,19 @@
 r"""The layer-by-layer stick/slip law in the strand finite element: a slip law with history.
 
 `StageSlip` makes a [`StageLaw`][skcable.strand.StageLaw] (a
-[`LayerSlipLaw`][skcable.strand.LayerSlipLaw]: one stage per helical layer, each slipping at
-its own curvature) the slip law of [`HelicalWires`][skcable.strand.HelicalWires]. Every stage
-is a Coulomb element (Iwan's parallel model: W.D. Iwan, J. Appl. Mech. 33, 1966): an elastic
-element of stiffness :math:`B_k` that slips at the moment :math:`M_k`. At every quadrature point
-and principal axis the state holds the slip curvature :math:`\kappa_{p,k}` of every stage as the
-last converged step left it, and at every Newton iterate the law maps the point's principal
-curvature κ from that state (the return mapping of `StageLaw.update`, exact for a curvature
-linear within the step):
+[`LayerSlipLaw`][skcable.strand.LayerSlipLaw]: one stage per helical layer) the slip law of
+[`HelicalWires`][skcable.strand.HelicalWires]. At every quadrature point and principal axis the
+state holds the slip curvature :math:`\kappa_{p,k}` of every stage as the last converged step
+left it, and at every Newton iterate the law maps the point's principal curvature κ from that
+state (the return mapping of `StageLaw.update`):
 
 $$
 m_k = \operatorname{clip}\big(B_k(\kappa - \kappa_{p,k}),\ -M_k,\ M_k\big), \qquad
 M_c = \sum_k m_k, \qquad \frac{\partial M_c}{\partial\kappa} = \sum_{k\ \text{sticking}} B_k .
 $$
 
-When the step has converged, the model keeps the new slip curvatures (`next_state`: the step
-is re-solved from them and starts converged), so the state is committed step by step and the
-law traces Masing's loops under any path of the structure. The friction work of a step,
-:math:`\sum_k M_k|\Delta\kappa_{p,k}|` per point and axis (J/m), is `StageSlip.work`.
+The model keeps the new slip curvatures of a converged step (`next_state`), so the state is
+committed step by step and the law traces Masing's loops under any path of the structure.
 
 **What the model adds.** M_c is the *composite* moment; the section moment is
 :math:`EI_w\kappa + M_c` with the wires' own bending :math:`EI_w` of `WireBending`, so the
@@ -50,7 +45,7 @@ MATCH = 1e-6
 
 class StageSlip(SlipLaw):
     """A `StageLaw` (a `LayerSlipLaw`) as the strand element's slip law, with its history (the
-    module's text): the state is the slip curvature of every stage at every point and axis.
+    module's text).
 
     Parameters
     ----------
@@ -61,10 +56,6 @@ class StageSlip(SlipLaw):
         The friction coefficient of the Cardou law the results report beside (``kappa_m`` of a
         `StepResult`: not used by this law); default the law's largest ``mu``, else 0.5.
 
-    Attributes
-    ----------
-    law : StageLaw
-        The law.
     """
 
     name = "stages"
@@ -128,12 +119,15 @@ class StageSlip(SlipLaw):
         EI_min = self.law.EI_min.reshape((2,) + (1,) * (kappa.ndim - 1))
         return response.moment - EI_min * kappa, response.tangent - EI_min, np.zeros_like(kappa)
 
+    def _stages(self, kappa, state):
+        """The checked ``state`` and the stages' B_k and M_k over the points of ``kappa``."""
+        extra = (slice(None), slice(None)) + (None,) * (kappa.ndim - 1)
+        return self._checked(kappa, state), self.law.stiffness[extra], self.law.slip_moment[extra]
+
     def energy(self, kappa, points, state):
         """The potential of `moment` at a fixed state (J/m): per stage ``½ B d²`` while it
         sticks, ``M (|d| − M/(2B))`` once it slips, ``d = κ − κ_p``."""
-        state = self._checked(kappa, state)
-        extra = (slice(None), slice(None)) + (None,) * (kappa.ndim - 1)
-        B, M = self.law.stiffness[extra], self.law.slip_moment[extra]
+        state, B, M = self._stages(kappa, state)
         d = np.abs(kappa[:, None] - state)
         safe = np.where(B > 0, B, 1.0)
         inside = B * d <= M
@@ -146,9 +140,7 @@ class StageSlip(SlipLaw):
 
     def slipping(self, kappa, points, state):
         """Points where a stage is on its slip limit about each axis (``|m_k| >= M_k`` to 1e-9)."""
-        state = self._checked(kappa, state)
-        extra = (slice(None), slice(None)) + (None,) * (kappa.ndim - 1)
-        B, M = self.law.stiffness[extra], self.law.slip_moment[extra]
+        state, B, M = self._stages(kappa, state)
         trial = np.abs(B * (kappa[:, None] - state))
         return np.any((M > 0) & (trial >= M * (1.0 - 1e-9)), axis=1)
 

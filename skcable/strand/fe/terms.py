@@ -1,37 +1,27 @@
 r"""The strand's term protocol: what a term of a strand model sees and gives.
 
 A [`StrandModel`][skcable.strand.StrandModel] is a mesh, its bases, its supports and a list of
-terms (`skcable.fe.terms`: each declares ``symmetric``, ``potential`` and ``smooth``, and may add
-named outputs to the results). There are two kinds:
+terms (`skcable.fe.terms`: each declares ``symmetric``, ``potential`` and ``smooth``). There are
+two kinds:
 
 **Section terms** (`SectionTerm`) see the generalized strains at the quadrature points,
 
 .. math:: g = (u',\ v',\ v'',\ w',\ w'',\ \varphi'),
 
 and return section forces :math:`S_a(g, x)` (the virtual-work conjugates of :math:`g_a`) and
-their tangent :math:`D_{ab} = \partial S_a/\partial g_b`, 6 × 6 per point. The model sums them
-and assembles :math:`\int B^T S\,dx` and :math:`\int B^T D B\,dx` once for all of them
-(`skcable.fe.Assembly`). A section term has a potential when it returns its energy per length
-as ``output["energy"]`` (an array, or a callable that computes it: asked for only where the
-solver needs it).
+their tangent :math:`D_{ab} = \partial S_a/\partial g_b`, 6 × 6 per point; the model assembles
+:math:`\int B^T S\,dx` and :math:`\int B^T D B\,dx` once for all of them. A section term has a
+potential when it returns its energy per length as ``output["energy"]`` (an array, or a callable
+asked for only where the solver needs it).
 
 **Other terms** give their residual ``R`` (N,) and tangent ``K = ∂R/∂U`` (sparse N × N) from the
-dof vector (`Term.contribute`): `FieldTerm` does it with scikit-fem forms on the named fields
-``u``, ``v``, ``w``, ``phi`` — a ``BilinearForm`` per (test, trial) pair for the tangent, a
-``LinearForm`` per field for an external load, and, for a nonlinear term, a ``LinearForm`` per
-field for its residual (its forms then see the current fields as ``w["u"]``, ``w["v"]``,
-``w["w"]``, ``w["phi"]``). A linear term is assembled once and reused; it has a potential only
-if its tangent is symmetric.
+dof vector (`Term.contribute`); `FieldTerm` does it with scikit-fem forms on the named fields.
 
-Arrays at the quadrature points have scikit-fem's layout ``(n_elements, n_quad)`` (``model.x``,
-``Step.x``). A term's output dict may hold ``"point_data"`` and ``"cell_data"``, dicts of named
-arrays (at the quadrature points ``(n_elements, n_quad)`` or the nodes ``(n_nodes,)``; per
-element ``(n_elements,)``): they reach ``StepResult.outputs`` and every VTK file of the step.
-
-The built-in physics (`skcable.strand.fe.wires`): `HelicalWires`, `WireBending`,
-`SinusoidalDamageLoads`; ready terms for analysts: foundations and springs
-(`skcable.strand.fe.foundations`), loads anywhere (`skcable.strand.fe.loads`). A term flagged
-``damage = True`` is left out of the intact reference twin used for the damage index D_r.
+Arrays at the quadrature points have scikit-fem's layout ``(n_elements, n_quad)``. A term's
+output dict may hold ``"point_data"`` and ``"cell_data"``, dicts of named arrays (at the
+quadrature points, at the nodes ``(n_nodes,)`` or per element ``(n_elements,)``): they reach
+``StepResult.outputs`` and every VTK file of the step. A term flagged ``damage = True`` is left
+out of the intact reference twin of the damage index D_r.
 
 Source: S. Pino Vidal, "Rigidez a flexión en cables: análisis numérico", Universidad de Chile,
 2021, chapters 3–4 (eqs. 4.1–4.8).
@@ -113,8 +103,7 @@ class SectionTerm(Term):
 class FieldAssembly:
     """`skcable.fe.Assembly` over some of a model's fields, mapped into the model's dof vector:
     the fast way for a nonlinear term to integrate ``∫ Σ S_a B_a`` and ``∫ Bᵀ D B`` over the
-    strains it needs (a foundation on v, a contact on u and v), on the model's own bases. Arrays
-    at the quadrature points have the model's layout (n_elements, n_quad).
+    strains it needs (a foundation on v, a contact on u and v).
 
     Parameters
     ----------
@@ -167,7 +156,8 @@ def _evaluate(model, value, name):
 
 
 class FieldTerm(Term):
-    """Any scikit-fem forms on the named fields ``u``, ``v``, ``w``, ``phi``.
+    """Any scikit-fem forms on the named fields ``u``, ``v``, ``w``, ``phi``; a linear term is
+    assembled once and has a potential if its tangent is symmetric.
 
     Parameters
     ----------

@@ -17,6 +17,7 @@ from skfem import asm
 from skcable.errors import NonFiniteError
 from skcable.fe.assembly import contract
 from skcable.strand._bending import CardouSection, critical_curvature
+from skcable.strand._geometry import lay_rates
 from skcable.strand.fe.loads import unit_load
 from skcable.strand.fe.slip import SlipLaw, SlipPoints, Stick, slip_law
 from skcable.strand.fe.terms import SectionTerm, Term
@@ -42,8 +43,7 @@ _STICK_FORCES = np.array([0, 0, 1, 0, 2, 3])
 
 def _stick_map() -> np.ndarray:
     """Which of `HelicalWires._section_stick`'s 21 rows each entry of the 6 × 6 section tangent
-    D is: the 10 pairs a <= b of the rows on the strains 0, 2, 4, 5 (0–9, in `triu_indices`
-    order), v′ times the axial row (10–13), w′ times it (14–17), (1, 1), (3, 3), (1, 3) (18–20)."""
+    D is (the rows: that method's comment)."""
     pair = {(int(a), int(b)): p for p, (a, b) in enumerate(zip(*_STICK_PAIRS, strict=True))}
     reduced = {0: 0, 2: 1, 4: 2, 5: 3}
     stick_map = np.empty((6, 6), dtype=np.intp)
@@ -136,9 +136,7 @@ class HelicalWires(SectionTerm):
         self.alive = w.intact
         cos, sin = np.cos(w.lay_angle), np.sin(w.lay_angle)
         helical = w.layer > 0
-        lay_length = np.ones_like(w.radius)
-        lay_length[helical] = s.lay_lengths[w.layer[helical] - 1]
-        rate = np.where(helical, w.direction * 2 * np.pi / lay_length, 0.0)
+        rate = lay_rates(s, w)
         x = model.x
         fibre_rate = rate if self.helical else 0.0 * rate
         psi = w.psi[:, None, None] + fibre_rate[:, None, None] * x[None]
@@ -157,9 +155,9 @@ class HelicalWires(SectionTerm):
         angle = lever_angle[:, None, None] + rotation[None]
         # unit lever directions (y, z) of principal axes 1, 2: (axis, yz, ne, nq)
         self.levers = np.array([np.sin(angle), np.cos(angle)]).transpose(1, 0, 2, 3)
-        self.kappa_grid, _, self._spline, self._slope = critical_curvature_table(s, self.slip.mu)
+        self.kappa_grid, _, spline, self._slope = critical_curvature_table(s, self.slip.mu)
         self._curvature = self._slope.derivative()
-        self._cubics = np.ascontiguousarray(self._spline.c.transpose(0, 2, 1))  # (power, axis, n - 1)
+        self._cubics = np.ascontiguousarray(spline.c.transpose(0, 2, 1))  # (power, axis, n - 1)
         self._slopes = np.ascontiguousarray(self._slope.c.transpose(0, 2, 1))
         # the lever offsets from the centroid, and the centroid, per wire: fixed per model
         self._y = self.wire_y - self.centroid_y[None]
@@ -184,26 +182,20 @@ class HelicalWires(SectionTerm):
             and kind.composite is Stick.composite
             and kind.second_derivatives is SlipLaw.second_derivatives
         )
-        self._P_stick = contract("kcen,ken,kden->cden", self.levers, np.ones((2, *shape)), self.levers)
-        b = self._strain_gradients(np.zeros((6, *shape)), self._P_stick, np.zeros((2, *shape)), self._y.shape)
+        P = contract("kcen,ken,kden->cden", self.levers, np.ones((2, *shape)), self.levers)
+        b = self._strain_gradients(np.zeros((6, *shape)), P, np.zeros((2, *shape)), self._y.shape)
         self._b_stick = np.ascontiguousarray(b[[0, 2, 4, 5]])
         # the products C_a C_b of the 10 pairs a <= b of the rows on the strains 0, 2, 4, 5
-        # (`_STICK_PAIRS`); which of `_section_stick`'s 21 rows each entry of D is: `_STICK_MAP`
         upper = _STICK_PAIRS
         self._stick_pairs = np.ascontiguousarray(self._b_stick[upper[0]] * self._b_stick[upper[1]])
-        self._stick_map = _STICK_MAP
         self._no_slip = np.zeros((2, *shape), dtype=bool)
         self._no_slip.flags.writeable = False
 
     def kappa_m(self, axial_strain, derivative: bool = True):
-        """Critical curvatures (2, ...) and, with ``derivative``, their derivative with respect to
-        the axial strain (else None): the interpolant's cubic pieces (and its derivative's)
-        evaluated here by Horner's rule on its uniform grid, one interval lookup for both (the
-        values of ``PchipInterpolator`` to round-off).
-
-        A monotone C¹ interpolant (PCHIP) of the tabulated law: a piecewise-linear one
-        has a derivative that jumps at every grid point, and Newton stalls on a kink.
-        """
+        """Critical curvatures (2, ...) and, with ``derivative``, their derivative in the axial
+        strain (else None): the cubic pieces of the tabulated law's monotone C¹ interpolant
+        (PCHIP: a piecewise-linear one has kinks that stall Newton) by Horner's rule, one
+        interval lookup for both (``PchipInterpolator``'s values to round-off)."""
         grid = self.kappa_grid
         eps = np.minimum(np.maximum(axial_strain, 0.0), grid[-1])  # `np.clip`, without its wrapper
         # the interval of each point (a NaN strain takes the first: its value stays NaN)
@@ -216,13 +208,6 @@ class HelicalWires(SectionTerm):
             return value, None
         d = np.take(self._slopes, i, axis=2, mode="clip")  # (3, 2, ...): its derivative
         return value, ((d[0] * t + d[1]) * t + d[2]) * (axial_strain > 0)
-
-    def _kappa_m_of(self, axial_strain):
-        """`kappa_m`, without the derivative (None) where the law sticks everywhere: no tangent
-        reads it then."""
-        if self._sticks:
-            return self._spline(np.clip(axial_strain, 0.0, self.kappa_grid[-1])), None
-        return self.kappa_m(axial_strain)
 
     def initial_state(self, model):
         return self.slip.initial_state((2, *model.x.shape))
@@ -261,11 +246,8 @@ class HelicalWires(SectionTerm):
         D += contract("en,aen,ben->aben", coef_ee.sum(axis=0), E, E)
 
     def _slip_derivatives(self, kappa, k_principal, k_m, dk_m, state):
-        """``(κ_c, ∂κ_c/∂κ (2, 2, ...), ∂κ_c/∂ε_a or None, ∂κ_c/∂κ_m)`` in (y, z) through the slip law;
-        a law that sticks everywhere (`Stick`'s composite) has κ_c from κ alone, P fixed, no q."""
+        """``(κ_c, ∂κ_c/∂κ (2, 2, ...), ∂κ_c/∂ε_a, ∂κ_c/∂κ_m)`` in (y, z) through a kinematic slip law."""
         levers = self.levers
-        if self._sticks:
-            return contract("kcen,ken->cen", levers, k_principal), self._P_stick, None, None
         clamped, d_clamp, d_km = self.slip.composite(k_principal, k_m, state)
         kappa_c = contract("kcen,ken->cen", levers, clamped)  # bending about the centroid seen by the wires
         P = contract("kcen,ken,kden->cden", levers, d_clamp, levers)  # dκc/dκ (2x2)
@@ -286,13 +268,10 @@ class HelicalWires(SectionTerm):
         """``b = ∂ε_j/∂g`` (6, nw, ne, nq), its first row ∂ε_j/∂ε_a, filled row by row in one array."""
         y, z, c2, cy, cz = self._y, self._z, self.c2, self._cy, self._cz
         b = np.empty((6, *shape))
-        if q is None:  # sticking everywhere
-            b[[0, 2, 4, 5]] = self._b_stick
-        else:
-            np.multiply(c2, 1.0 - y * q[0][None] - z * q[1][None], out=b[0])  # ∂ε_j/∂ε_a
-            b[2] = self._neg_c2 * (cy + y * P[0, 0][None] + z * P[1, 0][None])
-            b[4] = self._neg_c2 * (cz + y * P[0, 1][None] + z * P[1, 1][None])
-            b[5] = self.sc
+        np.multiply(c2, 1.0 - y * q[0][None] - z * q[1][None], out=b[0])  # ∂ε_j/∂ε_a
+        b[2] = self._neg_c2 * (cy + y * P[0, 0][None] + z * P[1, 0][None])
+        b[4] = self._neg_c2 * (cz + y * P[0, 1][None] + z * P[1, 1][None])
+        b[5] = self.sc
         np.multiply(b[0], g[1][None], out=b[1])
         np.multiply(b[0], g[3][None], out=b[3])
         return b
@@ -308,7 +287,7 @@ class HelicalWires(SectionTerm):
             if self._frozen is not None:
                 return self._section_frozen(g, step, axial, kappa, k_principal)
             return self._section_law(g, step, axial, kappa, k_principal)
-        k_m, dk_m = self._kappa_m_of(axial)
+        k_m, dk_m = self.kappa_m(axial)
         state = step.state
         points = self.points(axial, k_m)
         kappa_c, P, q, d_km = self._slip_derivatives(kappa, k_principal, k_m, dk_m, state)
@@ -318,13 +297,8 @@ class HelicalWires(SectionTerm):
         b = self._strain_gradients(g, P, q, strain.shape)
         s = self.area_weight * stress
         k = self.area_weight * tangent
-        S = contract("jen,ajen->aen", s, b)
-        D = contract("ajen,jen,bjen->aben", b, k, b)
-        N = contract("jen,jen->en", s, b[0])
-        D[1, 1] += N  # the geometric stiffness K_G
-        D[3, 3] += N
-        if not self._sticks:
-            self._curved_slip(D, s, g, axial, levers, k_principal, k_m, dk_m, d_km, state)
+        S, D, N = _fibres(s, k, b, contract("jen,jen->en", s, b[0]))
+        self._curved_slip(D, s, g, axial, levers, k_principal, k_m, dk_m, d_km, state)
         output = dict(
             strain=strain,
             stress=stress,
@@ -374,7 +348,7 @@ class HelicalWires(SectionTerm):
         np.multiply(rows[14], w1, out=rows[19])  # D_00 w′ w′ + N
         rows[19] += N
         np.multiply(rows[10], w1, out=rows[20])  # D_00 v′ w′
-        D = rows[self._stick_map]
+        D = rows[_STICK_MAP]
         output = dict(
             strain=strain,
             stress=stress,
@@ -416,16 +390,11 @@ class HelicalWires(SectionTerm):
         D[5] += t_b
         D[1, 1] += N  # the geometric stiffness K_G
         D[3, 3] += N
-        moment = contract("kcen,ken->cen", levers, M)  # the law's moment in the (v'', w'') components
-        S[2] += moment[0]
-        S[4] += moment[1]
-        bending = contract("kcen,ken,kden->cden", levers, dM_dk, levers)
+        self._add_moment(S, D, M, dM_dk)
         strain_row = contract("kcen,ken->cen", levers, dM_de)
         E = np.array([np.ones_like(axial), g[1], zero, g[3], zero, zero])  # ∂ε_a/∂g
-        for c, row in ((0, 2), (1, 4)):
-            D[row, 2] += bending[c, 0]
-            D[row, 4] += bending[c, 1]
-            D[row] += strain_row[c] * E
+        D[2] += strain_row[0] * E
+        D[4] += strain_row[1] * E
         output = dict(
             strain=strain,
             stress=stress,
@@ -438,6 +407,19 @@ class HelicalWires(SectionTerm):
             composite=k_c,
         )
         return S, D, output
+
+    def _add_moment(self, S, D, M, dM_dk) -> None:
+        """The law's moments ``M`` (2, ...) about the principal axes, in the (v″, w″) components,
+        added to ``S``, and their bending tangent ``dM_dk`` to ``D``."""
+        levers = self.levers
+        moment = contract("kcen,ken->cen", levers, M)
+        S[2] += moment[0]
+        S[4] += moment[1]
+        bending = contract("kcen,ken,kden->cden", levers, dM_dk, levers)
+        D[2, 2] += bending[0, 0]
+        D[2, 4] += bending[0, 1]
+        D[4, 2] += bending[1, 0]
+        D[4, 4] += bending[1, 1]
 
     def _law_moment(self, kappa, points, state):
         """The slip law's ``(M_c, ∂M_c/∂κ, ∂M_c/∂ε_a)``, checked finite (`NonFiniteError` names the law)."""
@@ -479,21 +461,10 @@ class HelicalWires(SectionTerm):
         s, k = self.area_weight * stress, self.area_weight * tangent
         frozen = np.zeros((2, 2, *axial.shape)), np.zeros((2, *axial.shape))  # κ_c depends on nothing
         b = self._strain_gradients(g, *frozen, strain.shape)
-        S = contract("jen,ajen->aen", s, b)
-        D = contract("ajen,jen,bjen->aben", b, k, b)
-        N = contract("jen,jen->en", s, self.c2)
-        D[1, 1] += N
-        D[3, 3] += N
+        S, D, N = _fibres(s, k, b, contract("jen,jen->en", s, self.c2))
         M, dM_dk, _ = self._law_moment(k_principal, points, state)
         psi = self.slip.energy(k_principal, points, state)
-        moment = contract("kcen,ken->cen", levers, M)
-        S[2] += moment[0]
-        S[4] += moment[1]
-        bending = contract("kcen,ken,kden->cden", levers, dM_dk, levers)
-        D[2, 2] += bending[0, 0]
-        D[2, 4] += bending[0, 1]
-        D[4, 2] += bending[1, 0]
-        D[4, 4] += bending[1, 1]
+        self._add_moment(S, D, M, dM_dk)
         energy = np.sum(self.area_weight * density, axis=0) + np.sum(psi, axis=0)
         output = dict(
             strain=strain, stress=stress, curvature=k_principal, kappa_m=self.slip.onset(points),
@@ -501,6 +472,16 @@ class HelicalWires(SectionTerm):
             composite=k_c, energy=energy,
         )  # fmt: skip
         return S, D, output
+
+
+def _fibres(s, k, b, N):
+    """``(S, D, N)`` of fibres of forces ``s`` and tangents ``k`` (nw, ne, nq) along the strain
+    gradients ``b`` (6, nw, ne, nq), with the geometric stiffness ``N`` on v′ and w′ (K_G)."""
+    S = contract("jen,ajen->aen", s, b)
+    D = contract("ajen,jen,bjen->aben", b, k, b)
+    D[1, 1] += N
+    D[3, 3] += N
+    return S, D, N
 
 
 class WireBending(SectionTerm):
@@ -551,10 +532,7 @@ class SinusoidalDamageLoads(Term):
         self.material = s.material
         self.broken = np.flatnonzero(~w.intact & (w.layer > 0))
         self.materials = model.strand_section.materials.subset(self.broken)
-        helical = w.layer > 0
-        lay_length = np.ones_like(w.radius)
-        lay_length[helical] = s.lay_lengths[w.layer[helical] - 1]
-        rate = np.where(helical, w.direction * 2 * np.pi / lay_length, 0.0)
+        rate = lay_rates(s, w)
         rows = []
         for j in self.broken:
             psi = w.psi[j] + rate[j] * model.x
