@@ -385,15 +385,21 @@ class CapacityCurve(Shown):
         }
 
     def to_csv(self, path):
-        """Write `columns` as CSV; returns the path."""
+        """Write `columns` as CSV (atomically: `skcable.io._atomic.atomic_path`), read it back and check
+        it holds the table to the digits written (17 significant, round-trip exact); returns the
+        path."""
         from pathlib import Path
 
+        from skcable.io._atomic import atomic_path
+
         path = Path(path)
-        path.parent.mkdir(parents=True, exist_ok=True)
         table = self.columns()
-        np.savetxt(
-            path, np.column_stack(list(table.values())), delimiter=",", header=",".join(table), comments=""
-        )
+        data = np.column_stack(list(table.values()))
+        with atomic_path(path) as temp:
+            np.savetxt(temp, data, delimiter=",", header=",".join(table), comments="", fmt="%.17g")
+        back = np.loadtxt(path, delimiter=",", skiprows=1, ndmin=2)
+        if back.shape != data.shape or not np.array_equal(back, data, equal_nan=True):
+            raise OSError(f"{str(path)!r} does not read back as the table written")
         return path
 
     def step_mesh(

@@ -141,9 +141,28 @@ def test_series_needs_pvd(tmp_path):
 def test_csv_matches_curve(tmp_path, curves):
     curve = curves[0]
     table = np.genfromtxt(curve.to_csv(tmp_path / "c.csv"), delimiter=",", names=True)
-    np.testing.assert_allclose(table["strain"], curve.strain)
-    np.testing.assert_allclose(table["force_N"], curve.force)
-    np.testing.assert_allclose(table["slip_fraction"], curve.slip_fraction)
+    # written to 17 significant digits: every double reads back as itself
+    np.testing.assert_array_equal(table["strain"], curve.strain)
+    np.testing.assert_array_equal(table["force_N"], curve.force)
+    np.testing.assert_array_equal(table["slip_fraction"], curve.slip_fraction)
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["c.csv"]
+
+
+def test_a_csv_write_that_fails_leaves_the_previous_file(tmp_path, curves, monkeypatch):
+    """Atomic: a write that fails half-way (here numpy's writer, after a partial line) leaves the
+    file as it was and no temporary file beside it."""
+    path = curves[0].to_csv(tmp_path / "c.csv")
+    before = path.read_bytes()
+
+    def broken(fname, *args, **kwargs):
+        Path(fname).write_text("strain,force_N\n0.1,")
+        raise OSError(28, "No space left on device")
+
+    monkeypatch.setattr(np, "savetxt", broken)
+    with pytest.raises(OSError, match="c.csv"):
+        curves[1].to_csv(path)
+    assert path.read_bytes() == before
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["c.csv"]
 
 
 # --- writers consume results: no import of the models, no import circle ------------------
