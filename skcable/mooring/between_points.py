@@ -41,7 +41,7 @@ from skcable._show import Shown
 from skcable.errors import InputError
 from skcable.mooring.segments import LineSolution
 
-__all__ = ["EndTensions", "LineBetween", "plane_of"]
+__all__ = ["EndTensions", "LineBetween", "StraightBetween", "plane_of", "segment_table"]
 
 
 class _WithEndForces(Protocol):
@@ -65,6 +65,56 @@ class EndTensions:
     @property
     def max_end_tension(self: _WithEndForces) -> float:
         return max(float(np.linalg.norm(self.end_forces[0])), float(np.linalg.norm(self.end_forces[1])))
+
+
+class StraightBetween(EndTensions):
+    """A solved line between ``a`` and ``b`` drawn on its chord, its stiffness from its 3 × 3
+    blocks ``block(i, j)`` (`skcable.mooring.straight`, `skcable.mooring.rod`): its own
+    ``solution``, no plane, nothing on the seabed."""
+
+    plane = None
+    is_slack = False
+    length_on_seabed = 0.0
+
+    @property
+    def solution(self):
+        return self
+
+    def b_values(self) -> list:
+        """The force on b (3) and ``K_bb`` (3 × 3, by rows), flat."""
+        return [*self.end_forces[1].tolist(), *self.block(1, 1).ravel().tolist()]
+
+    def stiffness(self) -> np.ndarray:
+        """``K = -∂(F_a, F_b)/∂(a, b)`` (N/m), (6, 6)."""
+        return np.block([[self.block(0, 0), self.block(0, 1)], [self.block(1, 0), self.block(1, 1)]])
+
+    def chord(self, n: int) -> np.ndarray:
+        """``n`` points (m) evenly spaced on the chord from a to b, (n, 3)."""
+        return self.a + np.outer(np.linspace(0.0, 1.0, int(n)), self.b - self.a)
+
+    def profile(self, n: int = 101) -> np.ndarray:
+        return self.profile_with_tension(n)[0]
+
+
+def segment_table(length, w, EA, T_lower, T_upper, grounded_length=0.0):
+    """The tension table of a line between two points, one row per segment from a to b:
+    ``segment, length, w, EA, T_lower, T_upper, T_max, grounded_length`` (SI; ``T_lower`` towards
+    a)."""
+    import pandas as pd
+
+    T_lower, T_upper = np.asarray(T_lower, dtype=float), np.asarray(T_upper, dtype=float)
+    return pd.DataFrame(
+        {
+            "segment": np.arange(len(T_lower)),
+            "length": length,
+            "w": w,
+            "EA": EA,
+            "T_lower": T_lower,
+            "T_upper": T_upper,
+            "T_max": np.maximum(T_lower, T_upper),
+            "grounded_length": grounded_length,
+        }
+    )
 
 
 class LineBetween(Shown):
