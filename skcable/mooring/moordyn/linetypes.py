@@ -43,7 +43,7 @@ __all__ = ["LineType", "RodType", "read_line_types", "read_rod_types"]
 WORKING_CURVE_POINTS = 30
 
 
-@dataclass(eq=False)
+@dataclass
 class LineType:
     """A line type: ``name``, ``d`` (m), ``mass`` (kg/m), the ``EA`` text and its ``law`` (None for
     a Syrope rope until its working curve is set), ``rest`` (the other columns, as written), the
@@ -54,23 +54,10 @@ class LineType:
     d: float
     mass: float
     EA: str
-    law: object
+    law: object = field(compare=False)
     rest: list
-    line: int
-    syrope: dict | None = None
-
-    def __eq__(self, other):
-        if not isinstance(other, LineType):
-            return NotImplemented
-        return (self.name, self.d, self.mass, self.EA, self.rest) == (
-            other.name,
-            other.d,
-            other.mass,
-            other.EA,
-            other.rest,
-        )
-
-    __hash__ = None  # type: ignore[assignment]
+    line: int = field(compare=False)
+    syrope: dict | None = field(default=None, compare=False)
 
     def weight(self, rho: float, g: float) -> float:
         """Weight in water per length (N/m): ``g (m - rho π d²/4)``."""

@@ -57,10 +57,6 @@ __all__ = ["read_moordyn"]
 
 _IDENTITY = np.eye(3)  # a body's axes as the file gives them (`BodyRecord.frame`)
 
-#: The rod's axial stiffness (`skcable.mooring.rod.Rod`) is this many times the file's stiffest
-#: line type's EA, over the rod's length: its change of length is that fraction of a line's strain.
-ROD_STIFFNESS = 1e4
-
 
 def decompose(word: str) -> tuple[str, str, str, str, str]:
     """MoorDyn's ``decomposeString``: ``(letters, digits, letters, digits, rest)`` of ``word``,
@@ -149,19 +145,35 @@ def _sequential(source, row, got: int, count: int, what: str) -> None:
         )
 
 
-def _body_kind(source, row, word) -> tuple[str, int | None]:
+#: MoorDyn's words of each attachment (``decomposeString``'s first letters, no number after them).
+_FIXED = ("ANCHOR", "FIXED", "FIX")
+_COUPLED = ("VESSEL", "VES", "COUPLED", "CPLD", "FAIRLEAD")
+_COUPLEDPINNED = ("VESSELPINNED", "VESPIN", "CPLDPIN", "COUPLEDPINNED")
+_FREE = ("FREE", "POINT", "CON", "CONNECT")
+
+
+def _attachment(source, row, word, what, plain, numbered, pinned=False) -> tuple[str, int | None]:
+    """``(kind, number)`` of the attachment ``word`` of a ``what`` row: a word of ``plain``
+    (``{kind: words}``) with no number (nor anything after it, but on a body's row), or one of
+    ``numbered`` with its body's or turbine's number (a rod's followed by ``PINNED``/``PIN`` where
+    ``pinned``)."""
     let1, num1, let2, _, rest = decompose(word)
-    if let1 in ("FREE", "POINT", "CON", "CONNECT") and not num1:
-        return "free", None
-    if let1 in ("ANCHOR", "FIXED", "FIX") and not num1:
-        return "fixed", None
-    if let1 in ("VESSEL", "VES", "COUPLED", "CPLD", "FAIRLEAD") and not num1:
-        return "coupled", None
-    if let1 in ("VESSELPINNED", "VESPIN", "CPLDPIN", "COUPLEDPINNED") and not num1:
-        return "coupledpinned", None
-    if let1 in ("TURBINE", "T") and num1 and not (let2 or rest):
-        return "turbine", int(num1)
-    raise source.error(row.line, word, f"unknown MoorDyn body attachment {word!r}")
+    if not (num1 or let2 or rest and what != "body"):
+        for kind, words in plain.items():
+            if let1 in words:
+                return kind, None
+    if let1 in numbered and num1 and not rest:
+        base = "body" if let1 in ("BODY", "B") else "turbine"
+        if not let2:
+            return base, int(num1)
+        if pinned and let2 in ("PINNED", "PIN"):
+            return base + "pinned", int(num1)
+    raise source.error(row.line, word, f"unknown MoorDyn {what} attachment {word!r}")
+
+
+def _body_kind(source, row, word) -> tuple[str, int | None]:
+    plain = {"free": _FREE, "fixed": _FIXED, "coupled": _COUPLED, "coupledpinned": _COUPLEDPINNED}
+    return _attachment(source, row, word, "body", plain, ("TURBINE", "T"))
 
 
 def _turbine(source, row, turbines, n) -> np.ndarray:
@@ -200,19 +212,8 @@ def _bodies(source, section, turbines) -> dict:
 
 
 def _point_kind(source, row, word) -> tuple[str, int | None]:
-    let1, num1, let2, _, rest = decompose(word)
-    plain = not (num1 or let2 or rest)
-    if let1 in ("ANCHOR", "FIXED", "FIX") and plain:
-        return "fixed", None
-    if let1 in ("VESSEL", "VES", "COUPLED", "CPLD", "FAIRLEAD") and plain:
-        return "coupled", None
-    if let1 in ("POINT", "CONNECT", "CON", "FREE") and plain:
-        return "free", None
-    if let1 in ("BODY", "B") and num1 and not (let2 or rest):
-        return "body", int(num1)
-    if let1 in ("TURBINE", "T") and num1 and not (let2 or rest):
-        return "turbine", int(num1)
-    raise source.error(row.line, word, f"unknown MoorDyn point attachment {word!r}")
+    plain = {"fixed": _FIXED, "coupled": _COUPLED, "free": _FREE}
+    return _attachment(source, row, word, "point", plain, ("BODY", "B", "TURBINE", "T"))
 
 
 def _points(source, section, turbines) -> dict:
@@ -237,25 +238,14 @@ def _points(source, section, turbines) -> dict:
 
 
 def _rod_kind(source, row, word) -> tuple[str, int | None]:
-    let1, num1, let2, _, rest = decompose(word)
-    plain = not (num1 or let2 or rest)
-    table = {
-        ("ANCHOR", "FIXED", "FIX"): "fixed",
-        ("PINNED", "PIN"): "pinned",
-        ("VESSEL", "VES", "COUPLED", "CPLD"): "coupled",
-        ("VESSELPINNED", "VESPIN", "CPLDPIN", "COUPLEDPINNED"): "coupledpinned",
-        ("POINT", "CON", "FREE"): "free",
+    plain = {
+        "fixed": _FIXED,
+        "pinned": ("PINNED", "PIN"),
+        "coupled": _COUPLED[:-1],  # no FAIRLEAD rod
+        "coupledpinned": _COUPLEDPINNED,
+        "free": ("POINT", "CON", "FREE"),
     }
-    for names, kind in table.items():
-        if let1 in names and plain:
-            return kind, None
-    if let1 in ("BODY", "TURBINE", "T", "B") and num1 and not rest:
-        base = "body" if let1 in ("BODY", "B") else "turbine"
-        if let2 in ("PINNED", "PIN"):
-            return base + "pinned", int(num1)
-        if not let2:
-            return base, int(num1)
-    raise source.error(row.line, word, f"unknown MoorDyn rod attachment {word!r}")
+    return _attachment(source, row, word, "rod", plain, ("BODY", "B", "TURBINE", "T"), pinned=True)
 
 
 def _rods(source, section, rod_types, turbines) -> dict:

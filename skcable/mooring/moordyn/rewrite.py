@@ -23,10 +23,10 @@ import math
 
 from skcable.mooring.body import rotation_matrix
 
-__all__ = ["rewritten_text"]
+__all__ = ["float_text", "rewritten_text"]
 
 
-def _fmt(value: float) -> str:
+def float_text(value: float) -> str:
     """The shortest text that reads back as the same float."""
     return repr(float(value))
 
@@ -53,7 +53,7 @@ def _row(raw: str, tokens, replace: dict) -> str:
 def _body_pose(record, state) -> list[str]:
     """The BODIES columns ``X0 .. y0`` of a body at its equilibrium ``state``."""
     roll, pitch, yaw = _angles(state.rotation @ record.frame)
-    return [*map(_fmt, state.offset), *(_fmt(math.degrees(a)) for a in (roll, pitch, yaw))]
+    return [*map(float_text, state.offset), *(float_text(math.degrees(a)) for a in (roll, pitch, yaw))]
 
 
 def _rod_ends(model, rod, eq) -> list[str] | None:
@@ -61,7 +61,7 @@ def _rod_ends(model, rod, eq) -> list[str] | None:
     gives them in; None for a rod the statics do not move."""
     if rod.points and rod.points[0] is rod.points[1] and rod.points[0].kind == "free":  # a connector
         where = eq.points[rod.points[0].index].position
-        return [*map(_fmt, where), *map(_fmt, where)]
+        return [*map(float_text, where), *map(float_text, where)]
     if getattr(rod, "body", None) is None:
         return None
     a, b = (eq.points[p.index].position for p in rod.points)
@@ -81,7 +81,7 @@ def _rod_ends(model, rod, eq) -> list[str] | None:
         a = rod.a
     else:  # a turbine's rod: relative to its turbine
         a, b = a - rod.offset, b - rod.offset
-    return [*map(_fmt, a), *map(_fmt, b)]
+    return [*map(float_text, a), *map(float_text, b)]
 
 
 def rewritten_text(model, eq) -> str:
@@ -101,7 +101,7 @@ def rewritten_text(model, eq) -> str:
         p = model.points[number]
         if p.kind == "free":
             changes[record.line] = {
-                k: _fmt(v) for k, v in zip((2, 3, 4), eq.points[p.index].position, strict=True)
+                k: float_text(v) for k, v in zip((2, 3, 4), eq.points[p.index].position, strict=True)
             }
     for record in model.bodies.values():
         if record.body is not None:
