@@ -12,7 +12,8 @@ import math
 import numpy as np
 
 from skcable import _plausible
-from skcable.mooring.network import end_forces
+from skcable.mooring.checks import anchor_forces
+from skcable.mooring.network import largest_end_tension
 from skcable.mooring.segments._answers import line_findings
 
 __all__ = ["equilibrium_findings"]
@@ -49,13 +50,8 @@ def _anchors(eq) -> list:
     """The uplift at each fixed point on the seabed (``z = -depth``) that holds a line."""
     if eq.depth is None:
         return []
-    totals: dict = {}
-    for handle, line in zip(eq.handles, eq.lines, strict=True):
-        for end, force in zip((handle.a, handle.b), end_forces(line), strict=True):
-            if end.kind == "fixed":
-                totals[end.index] = totals.get(end.index, 0.0) + force
     findings = []
-    for j, F in sorted(totals.items()):
+    for j, (F, _) in anchor_forces(eq).items():
         z = float(eq.points[j].position[2])
         if abs(z + eq.depth) > 1e-9 * eq.depth:
             continue  # not on the seabed: a fixed point in the water takes any direction
@@ -73,6 +69,5 @@ def equilibrium_findings(eq) -> list:
         segments = getattr(handle.model, "segments", None)
         if segments is None:
             continue
-        largest = float(np.linalg.norm(end_forces(line), axis=1).max())
-        findings += line_findings(line, segments, largest, f" on line {k}")
+        findings += line_findings(line, segments, largest_end_tension(line), f" on line {k}")
     return findings + _anchors(eq) + _bodies(eq)

@@ -145,14 +145,6 @@ class RigidBody(_Hydrostatics):
     def rotation(self, q) -> np.ndarray:
         return rotation_matrix(q[3], q[4], q[5])
 
-    def fairlead_positions(self, q, n: int) -> np.ndarray:
-        """Fairleads in global axes at position ``q``, shape (n, 3)."""
-        return q[:3] + self.fairleads @ self.rotation(q).T
-
-    def arms(self, q) -> np.ndarray:
-        """Fairleads relative to the reference point, in global axes (the moment arms)."""
-        return self.fairleads @ self.rotation(q).T
-
     def own_force(self, q) -> np.ndarray:
         """Weight, buoyancy and heave restoring as (force, moment) in global axes, shape (6,)."""
         R = self.rotation(q)
@@ -220,12 +212,6 @@ class PointBody(_Hydrostatics):
 
     def rotation(self, q) -> np.ndarray:
         return np.eye(3)
-
-    def fairlead_positions(self, q, n: int) -> np.ndarray:
-        return np.broadcast_to(q[:3], (n, 3)).copy()
-
-    def arms(self, q) -> np.ndarray:
-        return np.zeros((0, 3))
 
     def own_force(self, q) -> np.ndarray:
         out = self.weight + self.buoyancy

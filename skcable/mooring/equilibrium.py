@@ -53,7 +53,7 @@ from skcable._show import Shown, counted, quantity
 from skcable.errors import ConvergenceError, InputError, PlausibilityWarning
 from skcable.fe import first_converged, newton
 from skcable.mooring._answers import equilibrium_findings
-from skcable.mooring.network import end_forces
+from skcable.mooring.network import end_forces, largest_end_tension
 
 __all__ = ["MooringEquilibrium", "solve_equilibrium", "stiffness_eigenvalues"]
 
@@ -962,7 +962,7 @@ class MooringEquilibrium(Shown):
                 )
             )
             return f"MooringEquilibrium({counted([len(self.lines)], 'line')}: {shown}{note})"
-        ends = [np.linalg.norm(end_forces(line), axis=1).max() for line in self.lines]
+        ends = [largest_end_tension(line) for line in self.lines]
         shown = ", ".join(
             (
                 quantity("T_max", ends, "N"),
