@@ -118,6 +118,13 @@ def _check_names(target, vary):
         raise InputError("vary", f"must be one of {', '.join(VARIABLES)}, got {vary!r}")
 
 
+def _index(name, value, lo, hi, what) -> int:
+    """``value`` as an integer in ``[lo, hi]``, else `InputError` naming ``name``."""
+    if isinstance(value, bool) or not isinstance(value, (int, np.integer)) or not lo <= value <= hi:
+        raise InputError(name, f"must be {what} in [{lo}, {hi}], got {value!r}")
+    return int(value)
+
+
 def _segment_index(line, segment):
     if segment is None:
         if len(line.segments) != 1:
@@ -125,15 +132,7 @@ def _segment_index(line, segment):
                 "segment", f"the line has {len(line.segments)} segments: say which one's length varies"
             )
         return 0
-    if (
-        isinstance(segment, bool)
-        or not isinstance(segment, (int, np.integer))
-        or not 0 <= segment < len(line.segments)
-    ):
-        raise InputError(
-            "segment", f"must be a segment index in [0, {len(line.segments) - 1}], got {segment!r}"
-        )
-    return int(segment)
+    return _index("segment", segment, 0, len(line.segments) - 1, "a segment index")
 
 
 def _clump_joint(line, joint):
@@ -144,13 +143,7 @@ def _clump_joint(line, joint):
                 "joint", f"the line has {len(clumps)} clump weights: give the joint whose weight varies"
             )
         return clumps[0]
-    if (
-        isinstance(joint, bool)
-        or not isinstance(joint, (int, np.integer))
-        or not 0 < joint < len(line.segments)
-    ):
-        raise InputError("joint", f"must be an inner joint in [1, {len(line.segments) - 1}], got {joint!r}")
-    return int(joint)
+    return _index("joint", joint, 1, len(line.segments) - 1, "an inner joint")
 
 
 def _with_length(line, i, length) -> Line:
@@ -184,13 +177,6 @@ def _own(vary, line, anchor, fairlead, i, joint) -> float:
     if vary == "anchor_radius":
         return math.hypot(*(fairlead[:2] - anchor[:2]))
     return sum(a.weight for a in line.attachments if isinstance(a, ClumpWeight) and a.joint == joint)
-
-
-def _default_bounds(vary, line, anchor, fairlead, depth, i, joint):
-    """The bounds of the module docstring, widened to hold the line's own value (`_own`)."""
-    lo, hi = _formula_bounds(vary, line, anchor, fairlead, depth, i, joint)
-    own = _own(vary, line, anchor, fairlead, i, joint)
-    return min(lo, own), max(hi, own)
 
 
 def _formula_bounds(vary, line, anchor, fairlead, depth, i, joint):
@@ -415,8 +401,12 @@ class _Counted:
 
 
 def _bounds(bounds, vary, line, a, b, depth, i, j):
+    """The given ``bounds``, checked, or those of the module docstring, widened to hold the line's
+    own value (`_own`)."""
     if bounds is None:
-        return _default_bounds(vary, line, a, b, depth, i, j)
+        lo, hi = _formula_bounds(vary, line, a, b, depth, i, j)
+        own = _own(vary, line, a, b, i, j)
+        return min(lo, own), max(hi, own)
     try:
         lo, hi = (scalar("bounds", real("bounds", v)) for v in bounds)
     except (TypeError, ValueError):

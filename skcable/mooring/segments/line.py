@@ -47,6 +47,17 @@ def _height_left(V, line, H, dh):
     return -dh if st is None else st.Z - dh
 
 
+def _bracket_end(sign, scale, args) -> float:
+    """The end of the bracket of ``V`` on the side ``sign``: ``sign scale`` doubled until
+    ``sign (Z - dh) >= 0`` (`_height_left`)."""
+    V = sign * scale
+    while sign * _height_left(V, *args) < 0:
+        V *= 2.0
+        if sign * V > 1e12 * scale:
+            raise ConvergenceError("Line.solve: no bracket for the fairlead's vertical force")
+    return V
+
+
 def _closure(H, V, line, span, dh, sizes, state):
     """The closure ``(X - span, Z - dh)`` (m) of ``line`` at ``(H, V)``, its Jacobian and the
     ``sizes`` (m) of its terms, then the `ClosureState` (the closure of
@@ -226,16 +237,7 @@ class Line:
         arrays = self.arrays
         scale = float(arrays.abs_segment_weight + arrays.abs_joint_forces)
         args = (self, H, dh)
-        lo = -scale  # V < 0: the fairlead holds a buoyant line down
-        while _height_left(lo, *args) > 0:
-            lo *= 2.0
-            if lo < -1e12 * scale:
-                raise ConvergenceError("Line.solve: no bracket for the fairlead's vertical force")
-        hi = scale
-        while _height_left(hi, *args) < 0:
-            hi *= 2.0
-            if hi > 1e12 * scale:
-                raise ConvergenceError("Line.solve: no bracket for the fairlead's vertical force")
+        lo, hi = (_bracket_end(sign, scale, args) for sign in (-1.0, 1.0))  # V < 0: a buoyant line held down
         if _height_left(lo, *args) >= 0:
             return lo
         return find_root(_height_left, lo, hi, args, what="Line.solve, V at fixed H", xtol=1e-12 * hi)[0]
