@@ -161,8 +161,7 @@ class _Newton:
                 G = self.assemble(trial).G
             except (InputError, ConvergenceError):
                 return trial
-            fix = np.linalg.lstsq(self.jac / self.unit_pairs, G / self.units, rcond=_SINGULAR)[0] / self.units
-            trial = self._floored(trial + self.capped(fix))
+            trial = self._floored(trial + self.least_squares(self.jac, G / self.units))
         return trial
 
     def _floored(self, trial) -> np.ndarray:
@@ -176,9 +175,7 @@ class _Newton:
         that the loads press into it are held: their load is the pin's or the seabed's reaction, no
         residual."""
         self.budget.spend()
-        if len(self.floor_dofs):
-            position = position.copy()
-            position[self.floor_dofs] = np.maximum(position[self.floor_dofs], self.floor)
+        position = self._floored(position.copy())
         G, K, lines = self.system.evaluate(position, self.external, start=self.lines, without=self.without)
         contact = np.zeros(0, dtype=int)
         if len(self.floor_dofs):
@@ -225,6 +222,10 @@ class _Newton:
             return self.slack_step(state, pair, jac)
         return self.capped(np.linalg.solve(jac, state.G))
 
+    def least_squares(self, jac, r) -> np.ndarray:
+        """The least-squares step of the Jacobian ``jac`` for the scaled net load ``r``, capped."""
+        return self.capped(np.linalg.lstsq(jac / self.unit_pairs, r, rcond=_SINGULAR)[0] / self.units)
+
     def capped(self, dq) -> np.ndarray:
         """``dq`` scaled down to the step cap, where a dof exceeds it."""
         excess = float(np.max(np.abs(dq) / self.cap))
@@ -248,8 +249,7 @@ class _Newton:
             r - left.T @ (left @ r)
         )
         if restrained and any(_slack(line) for line in lines):
-            scaled = jac / self.unit_pairs  # the restrained directions first
-            return self.capped(np.linalg.lstsq(scaled, r, rcond=_SINGULAR)[0] / self.units)
+            return self.least_squares(jac, r)  # the restrained directions first
         if not np.linalg.norm(push) > 1e-12 * np.linalg.norm(r):  # no force along the free directions
             if not any(_slack(line) for line in lines) and self.neutral != "hold":
                 if any(_probe(self, state, d) != "restrained" for d in null):  # nothing takes them
@@ -258,8 +258,7 @@ class _Newton:
                     )
             # the others balanced first, the free ones stay (slack lines, lines whose stiffness
             # vanishes there but that hold them, neutral directions held): `check_unique` at the end
-            scaled = jac / self.unit_pairs
-            return self.capped(np.linalg.lstsq(scaled, r, rcond=_SINGULAR)[0] / self.units)
+            return self.least_squares(jac, r)
         direction = push / np.linalg.norm(push)  # scaled dofs, |direction| = 1
         out_of_reach = left.T @ (left @ r)  # the load measured along its left partner
         measure = out_of_reach / np.linalg.norm(out_of_reach)
@@ -745,15 +744,16 @@ class BodyState(Shown):
         self.rotation = R = body.rotation(q)
         self.heel = float(np.arccos(np.clip(R[2, 2], -1.0, 1.0)))
 
+    def _pose_shown(self) -> list:
+        """The shown ``offset``, ``angles`` and ``heel`` (`skcable._show.quantity`)."""
+        return [
+            quantity("offset", self.offset, "m"),
+            quantity("angles", self.angles, "rad"),
+            quantity("heel", self.heel, "rad"),
+        ]
+
     def __repr__(self):
-        shown = ", ".join(
-            (
-                quantity("offset", self.offset, "m"),
-                quantity("angles", self.angles, "rad"),
-                quantity("heel", self.heel, "rad"),
-            )
-        )
-        return f"BodyState(body {self.index}: {shown})"
+        return f"BodyState(body {self.index}: {', '.join(self._pose_shown())})"
 
 
 class PointState(Shown):
@@ -953,9 +953,7 @@ class MooringEquilibrium(Shown):
         if self.system.shortcut:
             shown = ", ".join(
                 (
-                    quantity("offset", self.offset, "m"),
-                    quantity("angles", self.angles, "rad"),
-                    quantity("heel", self.heel, "rad"),
+                    *self.bodies[0]._pose_shown(),
                     quantity("T_fairlead", [line.tension_at_fairlead for line in self.lines], "N"),
                     quantity("min_eigenvalue", self.eigenvalues[0], "N/m"),
                     quantity("iterations", len(self.history) - 1),
