@@ -136,30 +136,11 @@ def is_line(model) -> bool:
 
 # -- in the vertical plane of the ends ------------------------------------------------------------------
 def solve_in_plane(line, span, dh, *, seabed=None, seabed_slope=0.0, start=None, bvp=None) -> PlaneLine:
-    """Solve ``line`` (a `skcable.mooring.Line`) between its ends A = (0, 0) and B = (span, dh).
-
-    Parameters
-    ----------
-    line : Line
-        Its segments run from A to B; its own ``seabed`` is not used (``seabed`` below is),
-        its ``friction`` is.
-    span, dh : float
-        B relative to A (m), ``span > 0`` (checked by the caller).
-    seabed : float, optional
-        The seabed's height below A relative to A (m), at or below both ends; None: no seabed.
-    seabed_slope : float
-        ``tan α`` of a plane seabed, ``y = seabed + x tan α`` (0: flat).
-    start : PlaneLine, optional
-        A previous solution of this line: a warm start where the same model applies.
-    bvp : callable, optional
-        ``bvp(line, span, dh, seabed, reason, slope)`` → `PlaneLine` for the scenes no closed
-        form takes (`skcable.mooring.bvp_model.solve_bvp_line` by default).
-
-    Returns
-    -------
-    PlaneLine
-        With ``model`` and ``reason`` (module docstring).
-    """
+    """`line_in_plane` on checked arguments (``span > 0``, finite floats): a `PlaneLine` with
+    ``model`` and ``reason`` (module docstring). ``start``: a previous `PlaneLine` of this line, a
+    warm start where the same model applies; ``bvp(line, span, dh, seabed, reason, slope)`` →
+    `PlaneLine` for the scenes no closed form takes (`skcable.mooring.bvp_model.solve_bvp_line` by
+    default)."""
     bvp = solve_bvp_line if bvp is None else bvp
     refuse_weightless(line)
     if seabed is None:
@@ -277,10 +258,7 @@ def _free_clear(line, scene, start, tol):
     span, dh, seabed, slope = scene
     reverse = dh < 0
     variant = line.variant(reverse=reverse)
-    previous = start.solution if start is not None and start.key == ("free", reverse) else None
-    solution = (
-        variant.solve(span, abs(dh)) if previous is None else variant.solve(span, abs(dh), start=previous)
-    )
+    solution = variant.solve(span, abs(dh), start=_warm(start, ("free", reverse)))
     floor, m = (seabed - dh + span * slope, -slope) if reverse else (seabed, slope)
     if clearance(solution, floor, m) < -tol:
         return None
