@@ -120,13 +120,7 @@ class _Hanging:
 
     def lowest(self) -> float:
         """The least ``T_D`` that keeps the tension >= 0 along the line."""
-        least, W = 0.0, 0.0
-        for k in range(self.n):
-            if k:
-                W += self.P[k]
-            least = min(least, W, W + self.w[k] * self.L[k])
-            W += self.w[k] * self.L[k]
-        return -least
+        return -min(0.0, *(T for ends in self.tensions(0.0) for T in ends))
 
     def stretched(self, T_D: float) -> tuple[float, float]:
         """``(stretched length, compliance ∫c ds)`` with ``T_D`` at the bottom (m, m/N)."""

@@ -318,13 +318,10 @@ class Line:
         start : LineSolution or (float, float), optional
             A warm start: a previous solution of this line (typically at a nearby
             ``(span, dh)``, as in the Newton iterations of a moored body), or the pair
-            ``(H, V_B)`` (N, ``H > 0``). Newton's method starts from its fairlead forces
-            instead of from the uniform line of the same length, weight and compliance.
-            If it does not converge from there, the cold path runs (Newton from the
-            uniform line, then nested bracketing). This is no fallback of results:
-            the closure ``X(H, V) = span``, ``Z(H, V) = dh`` has one root, every path
-            polishes it to a relative residual below 1e-13 and the solution is
-            checked the same way, so warm and cold solutions agree to round-off.
+            ``(H, V_B)`` (N, ``H > 0``): Newton's method starts from its fairlead forces, the
+            cold path (module docstring) where it does not converge from there. No fallback of
+            results: the closure has one root, which every path polishes and checks the same
+            way, so that warm and cold solutions agree to round-off.
 
         Returns
         -------
