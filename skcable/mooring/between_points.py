@@ -126,16 +126,10 @@ class LineBetween(Shown):
         The ends (m), z up, in the order given.
     span, dh : float
         Horizontal distance (m, > 0) and height of b above a (m).
-    direction : ndarray, shape (3,)
-        Unit horizontal vector ``e`` from a towards b.
     plane : PlaneLine
         The solution in the line's vertical plane (``model``, ``reason``, forces by end).
     model, reason : str
         Which model the line took, and why (`skcable.mooring.choice`).
-    end_forces : ndarray, shape (2, 3)
-        The line's forces on a and on b (N), global axes.
-    tension_a, tension_b : float
-        The tensions at a and b (N).
     """
 
     def __init__(self, line, a, b, plane, span, direction):
