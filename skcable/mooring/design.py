@@ -360,16 +360,23 @@ def design_line(
         return quantity(target, line_between(model, anchor_x, b, depth=depth))
 
     lo, hi = _bounds(bounds, vary, line, a, b, depth, i, j)
-    span = math.hypot(*(b[:2] - a[:2]))
-    counter = _Counted(q, value, *checked_budget(max_iter, time_limit))
-    with _plausible.quiet():  # the samples are trials, not answers
-        x, bracket = counter.run(
-            _solve_bracketed, lo, hi, value, _tolerance(target, value, span), target, SAMPLES
-        )
+    x, bracket, calls = _search(q, value, target, (lo, hi), (a, b), SAMPLES, (max_iter, time_limit))
     model, anchor_x = build(x)
     solved = line_between(model, anchor_x, b, depth=depth)
     achieved = quantity(target, solved)
-    return Design(vary, target, value, x, achieved, model, anchor_x, solved, (lo, hi), bracket, counter.calls)
+    return Design(vary, target, value, x, achieved, model, anchor_x, solved, (lo, hi), bracket, calls)
+
+
+def _search(q, value, target, bounds, ends, samples, budget):
+    """``(x, bracket, solves)``: ``q(x) = value`` over ``bounds``, sampled, bracketed and closed by
+    Brent's method (module docstring) within the ``budget`` ``(max_iter, time_limit)``; ``ends``
+    the anchor and the fairlead (the span: the scale of a distance's tolerance)."""
+    a, b = ends
+    counter = _Counted(q, value, *checked_budget(*budget))
+    tol = _tolerance(target, value, math.hypot(*(b[:2] - a[:2])))
+    with _plausible.quiet():  # the samples are trials, not answers
+        x, bracket = counter.run(_solve_bracketed, *bounds, value, tol, target, samples)
+    return x, bracket, counter.calls
 
 
 class _Counted:
@@ -481,11 +488,8 @@ def design_pattern(
     a = first.a.position
     b = system.point_position(first.b)
     lo, hi = _bounds(bounds, vary, first.model, a, b, system.depth, i, j)
-    counter = _Counted(q, value, *checked_budget(max_iter, time_limit))
-    tol = _tolerance(target, value, math.hypot(*(b[:2] - a[:2])))
-    with _plausible.quiet():  # the samples are trials, not answers
-        x, bracket = counter.run(_solve_bracketed, lo, hi, value, tol, target, int(samples))
+    x, bracket, calls = _search(q, value, target, (lo, hi), (a, b), int(samples), (max_iter, time_limit))
     eq = solve(x)
     line = eq.lines[eq.line_indices.index(first.index)]
     achieved = quantity(target, line)
-    return Design(vary, target, value, x, achieved, line.line, line.a, eq, (lo, hi), bracket, counter.calls)
+    return Design(vary, target, value, x, achieved, line.line, line.a, eq, (lo, hi), bracket, calls)

@@ -147,7 +147,6 @@ class LineSolution(ProfileMixin):
         self._y_p0 = np.concatenate([[0.0], np.cumsum(dy)])[:-1]
         self._s_p0 = self._s0[k:-1].copy()
         self._s_p0[0] += st.a
-        self._Tt, self._Tb, self._dx, self._dy = st.Tt, st.Tb, dx, dy
         if arrays.n == 1:
             return  # the joints are set
         self.x_joints = np.concatenate([x_g0, self._x_p0[1:], [self._x_p0[-1] + dx[-1]]])
