@@ -75,10 +75,21 @@ class StraightBetween(EndTensions):
     plane = None
     is_slack = False
     length_on_seabed = 0.0
+    a: np.ndarray
+    b: np.ndarray
+    end_forces: np.ndarray
 
     @property
     def solution(self):
         return self
+
+    def block(self, i: int, j: int, J=None) -> np.ndarray:
+        """``K_ij = -∂F_i/∂p_j`` (N/m), 3 × 3, for ends ``i, j`` in (0: a, 1: b)."""
+        raise NotImplementedError
+
+    def profile_with_tension(self, n: int = 101) -> tuple[np.ndarray, np.ndarray]:
+        """``(points (n, 3), tension (n,))`` from a to b (m, N)."""
+        raise NotImplementedError
 
     def b_values(self) -> list:
         """The force on b (3) and ``K_bb`` (3 × 3, by rows), flat."""

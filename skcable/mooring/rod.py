@@ -131,12 +131,8 @@ class RodBetween(StraightBetween):
         self._dbuoyancy = shares.grad
         half = 0.5 * rod.weight
         self.loads = np.array([[0.0, 0.0, shares.fa - half], [0.0, 0.0, shares.fb - half]])
-
-    @cached_property
-    def end_forces(self) -> np.ndarray:
-        """The rod's forces on a and on b (N), (2, 3)."""
         pull = self.axial_force * self.u
-        return np.array([pull + self.loads[0], -pull + self.loads[1]])
+        self.end_forces = np.array([pull + self.loads[0], -pull + self.loads[1]])
 
     @cached_property
     def _axial_block(self) -> np.ndarray:
@@ -145,7 +141,6 @@ class RodBetween(StraightBetween):
         return self.line.axial_stiffness * uu + (self.axial_force / self.length) * (np.eye(3) - uu)
 
     def block(self, i: int, j: int, J=None) -> np.ndarray:
-        """``K_ij = -∂F_i/∂p_j`` (N/m), 3 × 3, for ends ``i, j`` in (0: a, 1: b)."""
         del J
         K = (self._axial_block if i == j else -self._axial_block).copy()
         K[2] -= self._dbuoyancy[i, j]

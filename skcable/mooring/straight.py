@@ -176,7 +176,6 @@ class VerticalBetween(StraightBetween):
         self.is_slack = state != "taut"
 
     def block(self, i: int, j: int, J=None) -> np.ndarray:
-        """``K_ij = -∂F_i/∂p_j`` (N/m), 3 × 3, ends ``i, j`` in (0: a, 1: b)."""
         del J
         return self._blocks[i][j].copy()
 
