@@ -138,11 +138,17 @@ class LineRecord:
     extra: list = field(default_factory=list)
 
 
-def _sequential(source, row, got: int, count: int, what: str) -> None:
-    if got != count + 1:
-        raise source.error(
-            row.line, "ID", f"{what} ID {got}: MoorDyn's IDs run 1, 2, 3, ... (expected {count + 1})"
-        )
+def _numbered(source, section, counts, what: str):
+    """``(row, ID)`` of each row of ``section`` (none where the file has none), its columns one of
+    the ``counts``, its ID the next of 1, 2, 3, ... as MoorDyn requires."""
+    for k, row in enumerate(() if section is None else section.rows):
+        source.columns(row, counts, section.name)
+        number = source.integer(row, 0, "ID")
+        if number != k + 1:
+            raise source.error(
+                row.line, "ID", f"{what} ID {number}: MoorDyn's IDs run 1, 2, 3, ... (expected {k + 1})"
+            )
+        yield row, number
 
 
 #: MoorDyn's words of each attachment (``decomposeString``'s first letters, no number after them).
@@ -189,10 +195,7 @@ def _turbine(source, row, turbines, n) -> np.ndarray:
 
 def _bodies(source, section, turbines) -> dict:
     out: dict = {}
-    for row in () if section is None else section.rows:
-        source.columns(row, (14,), "BODIES")
-        number = source.integer(row, 0, "ID")
-        _sequential(source, row, number, len(out), "body")
+    for row, number in _numbered(source, section, (14,), "body"):
         kind, owner = _body_kind(source, row, source.word(row, 1, "Attachment"))
         pose = np.array(
             [source.number(row, k, c) for k, c in enumerate(("X0", "Y0", "Z0", "r0", "p0", "y0"), start=2)]
@@ -219,10 +222,7 @@ def _point_kind(source, row, word) -> tuple[str, int | None]:
 def _points(source, section, turbines) -> dict:
     """The POINTS rows; a turbine's point placed in global axes (its turbine's position added)."""
     out: dict = {}
-    for row in () if section is None else section.rows:
-        source.columns(row, (9, 12), "POINTS")
-        number = source.integer(row, 0, "ID")
-        _sequential(source, row, number, len(out), "point")
+    for row, number in _numbered(source, section, (9, 12), "point"):
         kind, owner = _point_kind(source, row, source.word(row, 1, "Attachment"))
         xyz = np.array([source.number(row, k, c) for k, c in zip((2, 3, 4), "XYZ", strict=True)])
         mass, volume = source.number(row, 5, "Mass"), source.number(row, 6, "Volume")
@@ -251,10 +251,7 @@ def _rod_kind(source, row, word) -> tuple[str, int | None]:
 def _rods(source, section, rod_types, turbines) -> dict:
     """The RODS rows; a turbine's rod placed in global axes."""
     out: dict = {}
-    for row in () if section is None else section.rows:
-        source.columns(row, (11,), "RODS")
-        number = source.integer(row, 0, "ID")
-        _sequential(source, row, number, len(out), "rod")
+    for row, number in _numbered(source, section, (11,), "rod"):
         name = source.word(row, 1, "RodType")
         if name not in rod_types:
             raise source.error(row.line, name, f"no rod type {name!r} in ROD TYPES")
@@ -300,10 +297,7 @@ def _lines(source, section, points, rods, types) -> list:
         return out
     v1 = _is_v1_lines(section)
     order = (2, 3, 4, 5) if v1 else (4, 5, 2, 3)  # UnstrLen, NumSegs, end A, end B
-    for row in section.rows:
-        source.columns(row, (7,), "LINES")
-        number = source.integer(row, 0, "ID")
-        _sequential(source, row, number, len(out), "line")
+    for row, number in _numbered(source, section, (7,), "line"):
         name = source.word(row, 1, "LineType")
         if name not in types:
             raise source.error(row.line, name, f"no line type {name!r} in LINE TYPES")
