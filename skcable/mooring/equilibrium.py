@@ -52,6 +52,7 @@ from skcable._budget import Budget
 from skcable._show import Shown, counted, quantity
 from skcable.errors import ConvergenceError, InputError, PlausibilityWarning
 from skcable.fe import first_converged, newton
+from skcable.mooring import checks
 from skcable.mooring._answers import equilibrium_findings
 from skcable.mooring.network import end_forces, largest_end_tension
 
@@ -922,23 +923,17 @@ class MooringEquilibrium(Shown):
 
     def anchor_loads(self):
         """Each anchor's horizontal and vertical load and uplift angle (`skcable.mooring.checks`)."""
-        from skcable.mooring.checks import anchor_loads
-
-        return anchor_loads(self)
+        return checks.anchor_loads(self)
 
     def line_checks(self):
         """Each line's end tensions, grounded length, touchdown and angle at its lower end
         (`skcable.mooring.checks`)."""
-        from skcable.mooring.checks import line_checks
-
-        return line_checks(self)
+        return checks.line_checks(self)
 
     def segment_checks(self, safety_factor):
         """Each segment's largest tension against its MBL with ``safety_factor``
         (`skcable.mooring.checks`)."""
-        from skcable.mooring.checks import segment_checks
-
-        return segment_checks(self, safety_factor)
+        return checks.segment_checks(self, safety_factor)
 
     def to_vtk(self, path, n: int = 101):
         """Write the lines (tension as point data), the seabed patch and the bodies to a

@@ -41,6 +41,7 @@ import numpy as np
 from skcable import _plausible
 from skcable._checks import nonnegative, positive, real, scalar
 from skcable.errors import InputError
+from skcable.mooring import failure
 from skcable.mooring.between_points import LineBetween
 from skcable.mooring.body import PointBody, RigidBody, skew
 from skcable.mooring.choice import (
@@ -773,15 +774,11 @@ class MooringSystem:
         """The equilibrium without ``lines`` (a line failure) beside the intact one, under the same
         loads (``options``: those of `equilibrium`): a `skcable.mooring.failure.FailureCase`
         with ``intact``, ``damaged``, ``redistribution()`` and ``offsets()``."""
-        from skcable.mooring.failure import failure_case
-
-        return failure_case(self, lines, **options)
+        return failure.failure_case(self, lines, **options)
 
     def failure_cases(self, **options) -> list:
         """Each line failing alone (`failure`), from one intact equilibrium."""
-        from skcable.mooring.failure import failure_cases
-
-        return failure_cases(self, **options)
+        return failure.failure_cases(self, **options)
 
     def __repr__(self):
         return (
