@@ -47,6 +47,7 @@ from skcable._budget import Budget, checked_budget
 from skcable._checks import real, scalar
 from skcable._show import Shown
 from skcable.errors import ConvergenceError, InputError
+from skcable.mooring.choice import line_between
 from skcable.mooring.line3d import point
 from skcable.mooring.segments import ClumpWeight, Line, Segment
 
@@ -338,8 +339,6 @@ def design_line(
         Past ``max_iter`` solves or ``time_limit`` seconds (``history``: ``|q - value|`` of each
         solve; ``last``: the best ``x``); no line solves inside a bracket.
     """
-    from skcable.mooring.choice import line_between
-
     _check_names(target, vary)
     if not isinstance(line, Line):
         raise InputError("line", f"must be a mooring.Line, got {type(line).__name__}")

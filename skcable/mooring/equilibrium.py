@@ -54,7 +54,9 @@ from skcable.errors import ConvergenceError, InputError, PlausibilityWarning
 from skcable.fe import first_converged, newton
 from skcable.mooring import checks
 from skcable.mooring._answers import equilibrium_findings
+from skcable.mooring.axial import StrainTable
 from skcable.mooring.network import end_forces, largest_end_tension
+from skcable.mooring.segments import Line, Segment
 
 __all__ = ["MooringEquilibrium", "solve_equilibrium", "stiffness_eigenvalues"]
 
@@ -654,9 +656,6 @@ def _softened(system, factor, ties_only=False):
     """A copy of ``system`` whose lines and rods are ``factor`` times as stiff axially (their weights
     and geometry the same), or only its ties (a model with a ``stiffness``) with ``ties_only``; None
     where it has nothing to soften."""
-    from skcable.mooring.axial import StrainTable
-    from skcable.mooring.segments import Line, Segment
-
     models = {}
     for handle in system.mooring_lines:
         model = handle.model

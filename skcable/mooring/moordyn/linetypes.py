@@ -36,6 +36,7 @@ import numpy as np
 
 from skcable.errors import InputError
 from skcable.mooring import axial
+from skcable.mooring.moordyn.text import file_error
 
 __all__ = ["LineType", "RodType", "read_line_types", "read_rod_types"]
 
@@ -77,8 +78,6 @@ class RodType:
 def _curve(source, row, text, column) -> tuple[np.ndarray, np.ndarray]:
     """The ``(strain, tension)`` rows of the curve file ``text`` beside the input file, read as
     MoorDyn-C's ``read_curve`` reads them (rows after the first three lines)."""
-    from skcable.mooring.moordyn.text import file_error
-
     path = source.path.parent / text
     try:
         lines = Path(path).read_text(encoding="utf-8").splitlines()
@@ -198,8 +197,6 @@ class _Beside:
     """The location of a file for `_curve` (its ``path``, its ``error``)."""
 
     def __init__(self, path):
-        from skcable.mooring.moordyn.text import file_error
-
         self.path = Path(path)
         self.error = lambda line, column, reason: file_error(self.path, line, column, reason)
 

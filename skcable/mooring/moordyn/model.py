@@ -8,7 +8,7 @@ from typing import TYPE_CHECKING
 import numpy as np
 
 from skcable import _plausible
-from skcable.mooring.equilibrium import warn_implausible
+from skcable.mooring.equilibrium import MooringEquilibrium, warn_implausible
 
 if TYPE_CHECKING:
     from skcable.mooring.system import MooringSystem
@@ -87,8 +87,6 @@ class MoorDynModel:
             options.setdefault("neutral", "hold")
             options.setdefault("max_iter", 200)  # a free end of a line (a massless point) converges linearly
             return system.equilibrium(**options)
-        from skcable.mooring.equilibrium import MooringEquilibrium
-
         q = np.zeros(0)
         lines = system.solve_lines(q) if system.mooring_lines else []
         empty = np.zeros(0)

@@ -46,8 +46,10 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from skcable._checks import real
 from skcable.errors import InputError
 from skcable.mooring.body import rotation_matrix
+from skcable.mooring.moordyn.build import build_system
 from skcable.mooring.moordyn.linetypes import read_line_types, read_rod_types
 from skcable.mooring.moordyn.model import MoorDynModel
 from skcable.mooring.moordyn.options import read_options, water_depth
@@ -336,8 +338,6 @@ def read_moordyn(path, *, turbines=None) -> MoorDynModel:
         the wrong number of columns, an unknown attachment, a line naming a point or rod the file
         does not have, a byte that is not UTF-8, a value that is no number or overflows.
     """
-    from skcable.mooring.moordyn.build import build_system
-
     source = InputFile(path)
     sections = source.sections()
     if not any(name in sections for name in ("LINE TYPES", "BODIES", "RODS", "POINTS", "LINES")):
@@ -395,8 +395,6 @@ def read_moordyn(path, *, turbines=None) -> MoorDynModel:
 def _turbine_positions(turbines) -> dict | None:
     if turbines is None:
         return None
-    from skcable._checks import real
-
     items = turbines.items() if isinstance(turbines, dict) else enumerate(turbines, start=1)
     out = {}
     for n, xyz in items:

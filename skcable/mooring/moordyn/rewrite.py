@@ -21,7 +21,9 @@ from __future__ import annotations
 
 import math
 
+from skcable.errors import InputError
 from skcable.mooring.body import rotation_matrix
+from skcable.mooring.moordyn.text import tokens
 
 __all__ = ["float_text", "rewritten_text"]
 
@@ -87,14 +89,10 @@ def _rod_ends(model, rod, eq) -> list[str] | None:
 def rewritten_text(model, eq) -> str:
     """The text of the file ``model`` was read from, its free points, bodies and turning rods where
     the equilibrium ``eq`` (of ``model.system``; None: where the file puts them) has them."""
-    from skcable.mooring.moordyn.text import tokens
-
     lines = list(model.text)
     if eq is None:
         return "\n".join(lines) + "\n"
     if eq.system is not model.system:
-        from skcable.errors import InputError
-
         raise InputError("equilibrium", "is the equilibrium of another system than the model's")
     changes: dict = {}
     for number, record in model.records.get("points", {}).items():
