@@ -11,6 +11,7 @@ from skcable.mooring.body import RigidBody, rotation_matrix
 from skcable.mooring.moordyn.linetypes import working_curve
 from skcable.mooring.rod import Rod, RodBody, Tie
 from skcable.mooring.segments import Line, Segment
+from skcable.mooring.system import MooringSystem
 
 __all__ = ["build_system"]
 
@@ -22,8 +23,6 @@ ROD_STIFFNESS = 1e4
 def build_system(source, model, options, depth, records, extras) -> None:
     """Build ``model.system`` from the parsed ``records`` (bodies, rods, points, lines) and
     ``extras`` (turbine positions, Syrope initial tensions, external loads)."""
-    from skcable.mooring.system import MooringSystem
-
     bodies, rods, points, lines = records
     ic, loads = extras
     try:

@@ -3,15 +3,12 @@
 from __future__ import annotations
 
 from dataclasses import dataclass, field
-from typing import TYPE_CHECKING
 
 import numpy as np
 
 from skcable import _plausible
 from skcable.mooring.equilibrium import MooringEquilibrium, warn_implausible
-
-if TYPE_CHECKING:
-    from skcable.mooring.system import MooringSystem
+from skcable.mooring.system import MooringSystem
 
 __all__ = ["MoorDynModel"]
 

@@ -13,6 +13,7 @@ from skcable.mooring.moordyn.model import MoorDynModel
 from skcable.mooring.moordyn.options import IGNORED, USED
 from skcable.mooring.moordyn.rewrite import float_text, rewritten_text
 from skcable.mooring.segments import Line
+from skcable.mooring.system import MooringSystem
 
 __all__ = ["moordyn_text", "write_moordyn"]
 
@@ -41,8 +42,6 @@ class _Writer:
     """The tables of a MoorDyn v2 file from a system (see `write_moordyn`)."""
 
     def __init__(self, model, num_segs, diameter, equilibrium=None):
-        from skcable.mooring.system import MooringSystem
-
         self.model = model if isinstance(model, MoorDynModel) else MoorDynModel(model)
         self.system = system = self.model.system
         if not isinstance(system, MooringSystem):
