@@ -250,14 +250,10 @@ def moordyn_text(model, *, num_segs: int = 20, diameter=None, options=None, equi
 def write_moordyn(model, path, *, equilibrium=None, num_segs: int = 20, diameter=None, options=None) -> Path:
     """Write a system (or a `MoorDynModel`) as a MoorDyn input file, atomically; returns the path.
 
-    A `MoorDynModel` read from a file is written as that file, every section, option and column as
-    read, its free points, free bodies and turning rods where ``equilibrium`` (a
-    `skcable.mooring.MooringEquilibrium` of its system) puts them
-    (`skcable.mooring.moordyn.rewrite`): MoorDyn starts from rest there, and the file read back is
-    the same system at its equilibrium.
-
-    A system (or a model built on one) is written as a MoorDyn v2 file, its free points and bodies
-    at the ``equilibrium`` where one is given:
+    A `MoorDynModel` read from a file is written as that file, its free parts where
+    ``equilibrium`` (a `skcable.mooring.MooringEquilibrium` of its system) puts them
+    (`skcable.mooring.moordyn.rewrite`). A system (or a model built on one) is written as a
+    MoorDyn v2 file, its free points and bodies at the ``equilibrium`` where one is given.
 
     Each `skcable.mooring.Line` segment becomes a MoorDyn line (the joints of a multi-segment line
     free points with its clump weights as mass and its buoys as volume; an attachment at a line's
