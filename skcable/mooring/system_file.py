@@ -130,15 +130,10 @@ def _segment(types, where, spec):
 
 def _line(types, where, spec):
     segments = [_segment(types, f"{where}.segments", s) for s in spec["segments"]]
-    attachments: list[ClumpWeight | Buoy] = [
-        ClumpWeight(
-            _keys(f"{where}.clumps", c, {"joint", "weight"}, ("joint", "weight"))["joint"], c["weight"]
-        )
-        for c in spec.get("clumps", [])
-    ]
-    attachments += [
-        Buoy(_keys(f"{where}.buoys", c, {"joint", "buoyancy"}, ("joint", "buoyancy"))["joint"], c["buoyancy"])
-        for c in spec.get("buoys", [])
+    attachments = [
+        kind(_keys(f"{where}.{key}", c, {"joint", size}, ("joint", size))["joint"], c[size])
+        for key, kind, size in (("clumps", ClumpWeight, "weight"), ("buoys", Buoy, "buoyancy"))
+        for c in spec.get(key, [])
     ]
     friction = spec.get("friction", 0.0)
     return Line(segments, attachments, seabed=0.0 if friction else None, friction=friction)

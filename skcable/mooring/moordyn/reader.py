@@ -158,6 +158,17 @@ _FIXED = ("ANCHOR", "FIXED", "FIX")
 _COUPLED = ("VESSEL", "VES", "COUPLED", "CPLD", "FAIRLEAD")
 _COUPLEDPINNED = ("VESSELPINNED", "VESPIN", "CPLDPIN", "COUPLEDPINNED")
 _FREE = ("FREE", "POINT", "CON", "CONNECT")
+#: Each row's attachments with no number, ``{kind: words}``, and the words numbered by an owner.
+_BODY = {"free": _FREE, "fixed": _FIXED, "coupled": _COUPLED, "coupledpinned": _COUPLEDPINNED}
+_POINT = {"fixed": _FIXED, "coupled": _COUPLED, "free": _FREE}
+_ROD = {
+    "fixed": _FIXED,
+    "pinned": ("PINNED", "PIN"),
+    "coupled": _COUPLED[:-1],  # no FAIRLEAD rod
+    "coupledpinned": _COUPLEDPINNED,
+    "free": ("POINT", "CON", "FREE"),
+}
+_OWNERS = ("BODY", "B", "TURBINE", "T")
 
 
 def _attachment(source, row, word, what, plain, numbered, pinned=False) -> tuple[str, int | None]:
@@ -179,11 +190,6 @@ def _attachment(source, row, word, what, plain, numbered, pinned=False) -> tuple
     raise source.error(row.line, word, f"unknown MoorDyn {what} attachment {word!r}")
 
 
-def _body_kind(source, row, word) -> tuple[str, int | None]:
-    plain = {"free": _FREE, "fixed": _FIXED, "coupled": _COUPLED, "coupledpinned": _COUPLEDPINNED}
-    return _attachment(source, row, word, "body", plain, ("TURBINE", "T"))
-
-
 def _turbine(source, row, turbines, n) -> np.ndarray:
     if turbines is None or n not in turbines:
         raise source.error(
@@ -198,7 +204,9 @@ def _turbine(source, row, turbines, n) -> np.ndarray:
 def _bodies(source, section, turbines) -> dict:
     out: dict = {}
     for row, number in _numbered(source, section, (14,), "body"):
-        kind, owner = _body_kind(source, row, source.word(row, 1, "Attachment"))
+        kind, owner = _attachment(
+            source, row, source.word(row, 1, "Attachment"), "body", _BODY, ("TURBINE", "T")
+        )
         pose = np.array(
             [source.number(row, k, c) for k, c in enumerate(("X0", "Y0", "Z0", "r0", "p0", "y0"), start=2)]
         )
@@ -216,16 +224,11 @@ def _bodies(source, section, turbines) -> dict:
     return out
 
 
-def _point_kind(source, row, word) -> tuple[str, int | None]:
-    plain = {"fixed": _FIXED, "coupled": _COUPLED, "free": _FREE}
-    return _attachment(source, row, word, "point", plain, ("BODY", "B", "TURBINE", "T"))
-
-
 def _points(source, section, turbines) -> dict:
     """The POINTS rows; a turbine's point placed in global axes (its turbine's position added)."""
     out: dict = {}
     for row, number in _numbered(source, section, (9, 12), "point"):
-        kind, owner = _point_kind(source, row, source.word(row, 1, "Attachment"))
+        kind, owner = _attachment(source, row, source.word(row, 1, "Attachment"), "point", _POINT, _OWNERS)
         xyz = np.array([source.number(row, k, c) for k, c in zip((2, 3, 4), "XYZ", strict=True)])
         mass, volume = source.number(row, 5, "Mass"), source.number(row, 6, "Volume")
         if mass < 0 or volume < 0:
@@ -239,17 +242,6 @@ def _points(source, section, turbines) -> dict:
     return out
 
 
-def _rod_kind(source, row, word) -> tuple[str, int | None]:
-    plain = {
-        "fixed": _FIXED,
-        "pinned": ("PINNED", "PIN"),
-        "coupled": _COUPLED[:-1],  # no FAIRLEAD rod
-        "coupledpinned": _COUPLEDPINNED,
-        "free": ("POINT", "CON", "FREE"),
-    }
-    return _attachment(source, row, word, "rod", plain, ("BODY", "B", "TURBINE", "T"), pinned=True)
-
-
 def _rods(source, section, rod_types, turbines) -> dict:
     """The RODS rows; a turbine's rod placed in global axes."""
     out: dict = {}
@@ -257,7 +249,8 @@ def _rods(source, section, rod_types, turbines) -> dict:
         name = source.word(row, 1, "RodType")
         if name not in rod_types:
             raise source.error(row.line, name, f"no rod type {name!r} in ROD TYPES")
-        kind, owner = _rod_kind(source, row, source.word(row, 2, "Attachment"))
+        word = source.word(row, 2, "Attachment")
+        kind, owner = _attachment(source, row, word, "rod", _ROD, _OWNERS, pinned=True)
         ends = [source.number(row, k, c) for k, c in enumerate(("Xa", "Ya", "Za", "Xb", "Yb", "Zb"), start=3)]
         numsegs = source.integer(row, 9, "NumSegs")
         offset = _turbine(source, row, turbines, owner) if kind.startswith("turbine") else np.zeros(3)

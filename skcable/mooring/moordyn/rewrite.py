@@ -70,14 +70,10 @@ def _rod_ends(model, rod, eq) -> list[str] | None:
     if rod.kind == "bodypinned":  # in its body's axes at its equilibrium pose
         host = model.bodies[rod.owner]
         state = eq.bodies[model.system.bodies.index(host.body)] if host.body is not None else None
-        R, x = (
-            (state.rotation @ host.frame, state.offset)
-            if state is not None
-            else (
-                rotation_matrix(*host.pose[3:]),
-                host.pose[:3],
-            )
-        )
+        if state is not None:
+            R, x = state.rotation @ host.frame, state.offset
+        else:
+            R, x = rotation_matrix(*host.pose[3:]), host.pose[:3]
         a, b = R.T @ (a - x), R.T @ (b - x)
         b = b - (a - rod.a)  # its pin where the file has it on its body (the tie's gap taken out)
         a = rod.a

@@ -179,10 +179,8 @@ class Line:
                 n = len(segments)
                 segments = segments[::-1]
                 attachments = [type(a)(n - a.joint, abs(a.force)) for a in attachments]
-            if contact:
-                cache[key] = Line(segments, attachments, seabed=0.0, friction=self.friction)
-            else:
-                cache[key] = Line(segments, attachments)
+            seabed, friction = (0.0, self.friction) if contact else (None, 0.0)
+            cache[key] = Line(segments, attachments, seabed=seabed, friction=friction)
         return cache[key]
 
     def variant_with_seabed(self, seabed) -> Line:
