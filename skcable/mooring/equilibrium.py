@@ -136,7 +136,7 @@ class _Newton:
         self.unit_pairs = self.units[:, None] * self.units[None, :]  # a matrix in consistent units
         self.body_scale = system.force_scale(external)
         self.lines = None  # the lines of the last accepted state: warm starts of the trials
-        self.cap = None  # the step cap, from the start (`step_cap`)
+        self.cap = None  # the step cap, from the start (`MooringSystem.step_cap`)
         self.seen = 0.0  # the largest line tension of the run's iterates Newton stepped from (N)
         self.restrained_first = False  # `slack_step`: the restrained directions before the free ones
         self.corrected = False  # `update`: trials corrected by a step with the step's Jacobian
@@ -234,10 +234,6 @@ class _Newton:
         excess = float(np.max(np.abs(dq) / self.cap))
         return dq / excess if excess > 1.0 else dq
 
-    def step_cap(self, position) -> np.ndarray:
-        """A quarter of the shortest horizontal span of each body's or point's lines, 0.2 rad."""
-        return self.system.step_cap(position, self.without)
-
     def slack_step(self, state, pair, jac) -> np.ndarray:
         """The step along the free directions (``pair``: rows, the right and left null vectors of
         the scaled Jacobian) to where the lines take the net load no Newton step reaches (its
@@ -266,7 +262,7 @@ class _Newton:
         out_of_reach = left.T @ (left @ r)  # the load measured along its left partner
         measure = out_of_reach / np.linalg.norm(out_of_reach)
         ray = direction / self.units
-        cap = self.step_cap(position) if self.cap is None else self.cap
+        cap = self.system.step_cap(position, self.without) if self.cap is None else self.cap
         t = _ray_root(self, position, ray, measure, float(cap[0]), self.norm(state))
         return t * ray
 
@@ -282,7 +278,7 @@ class _Newton:
     def run(self, position, lines=None):
         """`skcable.fe.newton` from ``position`` (the ``lines`` as warm starts of the first solves)."""
         self.lines, self.seen = lines, 0.0
-        self.cap = self.step_cap(position)
+        self.cap = self.system.step_cap(position, self.without)
         return newton(
             self.assemble,
             position,
@@ -393,7 +389,7 @@ def _probe(solve, state, direction) -> str:
     ``direction`` (scaled dofs) that a move of 1e-4 of the step cap each way along it gives, over
     the force scale: below 1e-12 both ways, neutral; opposing the move both ways, restrained."""
     ray = direction / solve.units
-    cap = solve.cap if solve.cap is not None else solve.step_cap(state.position)
+    cap = solve.cap if solve.cap is not None else solve.system.step_cap(state.position, solve.without)
     lead = int(np.argmax(np.abs(ray)))
     t = 1e-4 * float(cap[lead]) / float(abs(ray[lead]))
     scale = max(solve.body_scale, state.tension, 1e-300)
@@ -553,7 +549,7 @@ def _carried_starts(solve, position) -> list:
         return []
     direction = r / np.linalg.norm(r)
     ray = direction / solve.units
-    cap = solve.step_cap(position)
+    cap = solve.system.step_cap(position, solve.without)
     try:
         t = _ray_root(solve, position, ray, direction, float(cap.min()), solve.norm(state))
     except ConvergenceError:
@@ -581,7 +577,7 @@ def _pushed_starts(solve, position) -> list:
     ray[horizontal] = G[horizontal]
     if not np.linalg.norm(ray) > 0:
         return []
-    cap = solve.step_cap(position)[horizontal]
+    cap = solve.system.step_cap(position, solve.without)[horizontal]
     size = float(np.min(cap / np.maximum(np.abs(ray[horizontal]), 1e-300)))
     return [position + push * size * ray for push in _PUSHES]
 
@@ -724,7 +720,7 @@ def _restarts(system, position, result, solve):
     scaled = result.state.K / units[:, None] / units[None, :]
     mode = np.linalg.eigh(0.5 * (scaled + scaled.T))[1][:, 0] / units
     mode[solve.held] = 0.0  # a pin holds these
-    cap = solve.step_cap(result.x)
+    cap = solve.system.step_cap(result.x, solve.without)
     size = float(np.min(cap / np.maximum(np.abs(mode), 1e-300)))
     starts += [result.x + size * mode, result.x - size * mode]
     return starts

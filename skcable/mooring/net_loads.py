@@ -25,21 +25,12 @@ from __future__ import annotations
 
 import numpy as np
 
-from skcable.mooring.body import RigidBody, rotation_matrix
+from skcable.mooring.body import RigidBody, rotation_matrix, skews
 
 __all__ = ["Assembler", "rotations"]
 
-#: ``[v]x`` flattened: ``skcable.mooring.body.skews(v).reshape(n, 9) = v @ _SKEW``.
-_SKEW = np.zeros((3, 9))
-for _i, _j, _k, _sign in (
-    (0, 1, 2, -1),
-    (0, 2, 1, 1),
-    (1, 0, 2, 1),
-    (1, 2, 0, -1),
-    (2, 0, 1, -1),
-    (2, 1, 0, 1),
-):
-    _SKEW[_k, 3 * _i + _j] = _sign
+#: ``[v]x`` flattened: ``skews(v).reshape(n, 9) = v @ _SKEW`` (``+ 0.0``: no signed zeros).
+_SKEW = skews(np.eye(3)).reshape(3, 9) + 0.0
 #: ``T = [I, -[r]x]`` flattened (3 x 6), its rotation columns: ``r @ _MINUS_SKEW_T``.
 _MINUS_SKEW_T = np.zeros((3, 18))
 _MINUS_SKEW_T.reshape(3, 3, 6)[:, :, 3:] = -_SKEW.reshape(3, 3, 3)
