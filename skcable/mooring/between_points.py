@@ -97,7 +97,7 @@ class StraightBetween(EndTensions):
 
     def stiffness(self) -> np.ndarray:
         """``K = -∂(F_a, F_b)/∂(a, b)`` (N/m), (6, 6)."""
-        return np.block([[self.block(0, 0), self.block(0, 1)], [self.block(1, 0), self.block(1, 1)]])
+        return np.block([[self.block(i, j) for j in (0, 1)] for i in (0, 1)])
 
     def chord(self, n: int) -> np.ndarray:
         """``n`` points (m) evenly spaced on the chord from a to b, (n, 3)."""
@@ -229,11 +229,7 @@ class LineBetween(Shown):
         """``K = -∂(F_a, F_b)/∂(a, b)`` (N/m), shape (6, 6): rows and columns ``(a_xyz, b_xyz)``, the
         seabed fixed (an end resting on the seabed moves with it: `skcable.mooring.jacobians`)."""
         J = self.plane.jacobian()
-        K = np.empty((6, 6))
-        for i in (0, 1):
-            for j in (0, 1):
-                K[3 * i : 3 * i + 3, 3 * j : 3 * j + 3] = self.block(i, j, J)
-        return K
+        return np.block([[self.block(i, j, J) for j in (0, 1)] for i in (0, 1)])
 
     def to_global(self, xy) -> np.ndarray:
         """Points ``(..., 2)`` of the line's plane (a at the origin, y up) in global axes."""
