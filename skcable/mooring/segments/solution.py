@@ -29,7 +29,7 @@ from skcable.cable.closure import positions, stretched_length
 from skcable.errors import ConvergenceError, InputError
 from skcable.results import ProfileMixin
 
-__all__ = ["CLOSURE_TOLERANCE", "LineSolution"]
+__all__ = ["CLOSURE_TOLERANCE", "LineSolution", "tension_table"]
 
 #: A solution closes its scene where the closure misses the end by less than this over the chord:
 #: every path of `Line.solve` (warm, cold, bracketed, batched, with nonlinear laws) checks it.
@@ -426,23 +426,27 @@ class LineSolution(ProfileMixin):
         ``T_lower``/``T_upper`` are the tensions at the segment's ends towards A and B,
         ``H_upper`` its horizontal tension at the upper end (``H`` where suspended, less
         the friction below the touchdown)."""
-        import pandas as pd
+        return tension_table(self.line.arrays, *self._segment_table)
 
-        arrays = self.line.arrays
-        T_low, T_up, H_seg, stretched, grounded = self._segment_table
-        return pd.DataFrame(
-            {
-                "segment": np.arange(arrays.n),
-                "length": arrays.L,
-                "w": arrays.w,
-                "EA": arrays.EA,
-                "T_lower": T_low,
-                "T_upper": T_up,
-                "H_upper": H_seg,
-                "stretched_length": stretched,
-                "grounded_length": grounded,
-            }
-        )
+
+def tension_table(arrays, T_lower, T_upper, H_upper, stretched, grounded):
+    """The table of `LineSolution.tensions` for a line of `LineArrays` ``arrays``, from its
+    per-segment columns (N, N, N, m, m)."""
+    import pandas as pd
+
+    return pd.DataFrame(
+        {
+            "segment": np.arange(arrays.n),
+            "length": arrays.L,
+            "w": arrays.w,
+            "EA": arrays.EA,
+            "T_lower": T_lower,
+            "T_upper": T_upper,
+            "H_upper": H_upper,
+            "stretched_length": stretched,
+            "grounded_length": grounded,
+        }
+    )
 
 
 def _out(value):
