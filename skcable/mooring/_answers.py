@@ -12,14 +12,15 @@ import math
 import numpy as np
 
 from skcable import _plausible
-from skcable.mooring.network import end_forces
+from skcable.mooring.checks import anchor_forces
+from skcable.mooring.network import largest_end_tension
 from skcable.mooring.segments._answers import line_findings
 
 __all__ = ["equilibrium_findings"]
 
 
 def _bodies(eq) -> list:
-    findings = []
+    found = []
     for state in eq.bodies:
         body = state.body
         points = [state.offset]
@@ -28,41 +29,31 @@ def _bodies(eq) -> list:
         cog = getattr(body, "center_of_gravity", None)
         if cog is not None:
             points.append(state.offset + state.rotation @ cog)
-        z = np.concatenate([np.atleast_2d(p)[:, 2] for p in points])
-        found = _plausible.body_height(
-            float(z.min()), float(state.offset[2]), body.volume, body.waterplane_area, f"body {state.index}"
+        z = float(np.concatenate([np.atleast_2d(p)[:, 2] for p in points]).min())
+        where = f"body {state.index}"
+        found.append(
+            _plausible.body_height(z, float(state.offset[2]), body.volume, body.waterplane_area, where)
         )
-        if found is not None:
-            findings.append(found)
-        found = _plausible.below_seabed(float(z.min()), eq.depth, f"a point of body {state.index}")
-        if found is not None:
-            findings.append(found)
-    for point in eq.points:
-        if point.kind == "free":
-            found = _plausible.below_seabed(float(point.position[2]), eq.depth, f"free point {point.index}")
-            if found is not None:
-                findings.append(found)
-    return findings
+        found.append(_plausible.below_seabed(z, eq.depth, f"a point of {where}"))
+    found += [
+        _plausible.below_seabed(float(p.position[2]), eq.depth, f"free point {p.index}")
+        for p in eq.points
+        if p.kind == "free"
+    ]
+    return [f for f in found if f is not None]
 
 
 def _anchors(eq) -> list:
-    """The uplift at each fixed point on the seabed (``z = -depth``) that holds a line."""
+    """The uplift at each fixed point on the seabed (``z = -depth``) that holds a line (a fixed
+    point in the water takes any direction)."""
     if eq.depth is None:
         return []
-    totals: dict = {}
-    for handle, line in zip(eq.handles, eq.lines, strict=True):
-        for end, force in zip((handle.a, handle.b), end_forces(line), strict=True):
-            if end.kind == "fixed":
-                totals[end.index] = totals.get(end.index, 0.0) + force
-    findings = []
-    for j, F in sorted(totals.items()):
-        z = float(eq.points[j].position[2])
-        if abs(z + eq.depth) > 1e-9 * eq.depth:
-            continue  # not on the seabed: a fixed point in the water takes any direction
-        found = _plausible.anchor_uplift(math.atan2(F[2], math.hypot(F[0], F[1])), f" at anchor point {j}")
-        if found is not None:
-            findings.append(found)
-    return findings
+    found = [
+        _plausible.anchor_uplift(math.atan2(F[2], math.hypot(F[0], F[1])), f" at anchor point {j}")
+        for j, (F, _) in anchor_forces(eq).items()
+        if not abs(float(eq.points[j].position[2]) + eq.depth) > 1e-9 * eq.depth
+    ]
+    return [f for f in found if f is not None]
 
 
 def equilibrium_findings(eq) -> list:
@@ -73,6 +64,5 @@ def equilibrium_findings(eq) -> list:
         segments = getattr(handle.model, "segments", None)
         if segments is None:
             continue
-        largest = float(np.linalg.norm(end_forces(line), axis=1).max())
-        findings += line_findings(line, segments, largest, f" on line {k}")
+        findings += line_findings(line, segments, largest_end_tension(line), f" on line {k}")
     return findings + _anchors(eq) + _bodies(eq)

@@ -175,20 +175,16 @@ class StrainTable(StrainLaw):
                 )
         self.table = (np.array(eps, dtype=float), np.array(T, dtype=float))
         self.interpolation = interpolation
+        self.breakpoints = self.table[1][1:]
         if interpolation == "linear":
             spline = make_interp_spline(self.table[1], self.table[0], k=1)
             self.curve = BSpline(spline.t, spline.c, 1, extrapolate=False)
-        else:
-            self.curve = PchipInterpolator(self.table[1], self.table[0], extrapolate=False)
-        self.slope = self.curve.derivative()
-        self.breakpoints = self.table[1][1:]
-        if (
-            interpolation == "linear"
-        ):  # the end segments' slopes (a spline's derivative at a knot is one side's)
-            slopes = np.diff(self.table[0]) / np.diff(self.table[1])
+            slopes = np.diff(self.table[0]) / np.diff(self.table[1])  # a knot's derivative is one side's
             self.ends = (float(slopes[0]), float(slopes[-1]))
         else:
-            self.ends = (float(self.slope(T[0])), float(self.slope(T[-1])))
+            self.curve = PchipInterpolator(self.table[1], self.table[0], extrapolate=False)
+            self.ends = (float(self.curve.derivative()(T[0])), float(self.curve.derivative()(T[-1])))
+        self.slope = self.curve.derivative()
 
     def strain(self, T):
         T = np.asarray(T, dtype=float)

@@ -41,7 +41,7 @@ from skcable._show import Shown
 from skcable.errors import InputError
 from skcable.mooring.segments import LineSolution
 
-__all__ = ["EndTensions", "LineBetween", "plane_of"]
+__all__ = ["EndTensions", "LineBetween", "StraightBetween", "plane_of", "segment_table"]
 
 
 class _WithEndForces(Protocol):
@@ -67,6 +67,67 @@ class EndTensions:
         return max(float(np.linalg.norm(self.end_forces[0])), float(np.linalg.norm(self.end_forces[1])))
 
 
+class StraightBetween(EndTensions):
+    """A solved line between ``a`` and ``b`` drawn on its chord, its stiffness from its 3 × 3
+    blocks ``block(i, j)`` (`skcable.mooring.straight`, `skcable.mooring.rod`): its own
+    ``solution``, no plane, nothing on the seabed."""
+
+    plane = None
+    is_slack = False
+    length_on_seabed = 0.0
+    a: np.ndarray
+    b: np.ndarray
+    end_forces: np.ndarray
+
+    @property
+    def solution(self):
+        return self
+
+    def block(self, i: int, j: int, J=None) -> np.ndarray:
+        """``K_ij = -∂F_i/∂p_j`` (N/m), 3 × 3, for ends ``i, j`` in (0: a, 1: b)."""
+        raise NotImplementedError
+
+    def profile_with_tension(self, n: int = 101) -> tuple[np.ndarray, np.ndarray]:
+        """``(points (n, 3), tension (n,))`` from a to b (m, N)."""
+        raise NotImplementedError
+
+    def b_values(self) -> list:
+        """The force on b (3) and ``K_bb`` (3 × 3, by rows), flat."""
+        return [*self.end_forces[1].tolist(), *self.block(1, 1).ravel().tolist()]
+
+    def stiffness(self) -> np.ndarray:
+        """``K = -∂(F_a, F_b)/∂(a, b)`` (N/m), (6, 6)."""
+        return np.block([[self.block(i, j) for j in (0, 1)] for i in (0, 1)])
+
+    def chord(self, n: int) -> np.ndarray:
+        """``n`` points (m) evenly spaced on the chord from a to b, (n, 3)."""
+        return self.a + np.outer(np.linspace(0.0, 1.0, int(n)), self.b - self.a)
+
+    def profile(self, n: int = 101) -> np.ndarray:
+        return self.profile_with_tension(n)[0]
+
+
+def segment_table(length, w, EA, T_lower, T_upper, grounded_length=0.0):
+    """The tension table of a line between two points, one row per segment from a to b:
+    ``segment, length, w, EA, T_lower, T_upper, T_max, grounded_length`` (SI; ``T_lower`` towards
+    a)."""
+    import pandas as pd
+
+    T_lower, T_upper = np.asarray(T_lower, dtype=float), np.asarray(T_upper, dtype=float)
+    return pd.DataFrame(
+        {
+            "segment": np.arange(len(T_lower)),
+            "length": length,
+            "w": w,
+            "EA": EA,
+            "T_lower": T_lower,
+            "T_upper": T_upper,
+            "T_max": np.maximum(T_lower, T_upper),
+            "grounded_length": grounded_length,
+        }
+    )
+
+
 class LineBetween(Shown):
     """A line solved between two points in space (module docstring).
 
@@ -76,16 +137,10 @@ class LineBetween(Shown):
         The ends (m), z up, in the order given.
     span, dh : float
         Horizontal distance (m, > 0) and height of b above a (m).
-    direction : ndarray, shape (3,)
-        Unit horizontal vector ``e`` from a towards b.
     plane : PlaneLine
         The solution in the line's vertical plane (``model``, ``reason``, forces by end).
     model, reason : str
         Which model the line took, and why (`skcable.mooring.choice`).
-    end_forces : ndarray, shape (2, 3)
-        The line's forces on a and on b (N), global axes.
-    tension_a, tension_b : float
-        The tensions at a and b (N).
     """
 
     def __init__(self, line, a, b, plane, span, direction):
@@ -174,11 +229,7 @@ class LineBetween(Shown):
         """``K = -∂(F_a, F_b)/∂(a, b)`` (N/m), shape (6, 6): rows and columns ``(a_xyz, b_xyz)``, the
         seabed fixed (an end resting on the seabed moves with it: `skcable.mooring.jacobians`)."""
         J = self.plane.jacobian()
-        K = np.empty((6, 6))
-        for i in (0, 1):
-            for j in (0, 1):
-                K[3 * i : 3 * i + 3, 3 * j : 3 * j + 3] = self.block(i, j, J)
-        return K
+        return np.block([[self.block(i, j, J) for j in (0, 1)] for i in (0, 1)])
 
     def to_global(self, xy) -> np.ndarray:
         """Points ``(..., 2)`` of the line's plane (a at the origin, y up) in global axes."""

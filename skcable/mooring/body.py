@@ -41,7 +41,7 @@ from skcable._checks import nonnegative, real, scalar
 from skcable.errors import InputError
 from skcable.mooring.line3d import point
 
-__all__ = ["PointBody", "RigidBody", "angular_velocity_map", "rotation_matrix", "skew"]
+__all__ = ["PointBody", "RigidBody", "angular_velocity_map", "rotation_matrix", "skew", "skews"]
 
 
 def skew(v) -> np.ndarray:
@@ -145,14 +145,6 @@ class RigidBody(_Hydrostatics):
     def rotation(self, q) -> np.ndarray:
         return rotation_matrix(q[3], q[4], q[5])
 
-    def fairlead_positions(self, q, n: int) -> np.ndarray:
-        """Fairleads in global axes at position ``q``, shape (n, 3)."""
-        return q[:3] + self.fairleads @ self.rotation(q).T
-
-    def arms(self, q) -> np.ndarray:
-        """Fairleads relative to the reference point, in global axes (the moment arms)."""
-        return self.fairleads @ self.rotation(q).T
-
     def own_force(self, q) -> np.ndarray:
         """Weight, buoyancy and heave restoring as (force, moment) in global axes, shape (6,)."""
         R = self.rotation(q)
@@ -183,17 +175,17 @@ class RigidBody(_Hydrostatics):
         """Sum of the line forces ``f_i`` at arms ``r_i`` (global) as (force, moment), and their
         stiffness ``[[K, -K[r]x], [[r]x K, -[f]x[r]x - [r]x K [r]x]]`` summed over the lines,
         from each fairlead's 3x3 stiffness ``K_i = -∂f_i/∂b_i``."""
-        skews, fskews = _skews(arms), _skews(forces)
-        F = np.concatenate([forces.sum(axis=0), np.einsum("nij,nj->i", skews, forces)])  # Σ r_i x f_i
+        rs, fs = skews(arms), skews(forces)
+        F = np.concatenate([forces.sum(axis=0), np.einsum("nij,nj->i", rs, forces)])  # Σ r_i x f_i
         K = np.zeros((6, 6))
         K[:3, :3] = stiffnesses.sum(axis=0)
-        K[:3, 3:] = -(stiffnesses @ skews).sum(axis=0)
-        K[3:, :3] = (skews @ stiffnesses).sum(axis=0)
-        K[3:, 3:] = (-fskews @ skews - skews @ stiffnesses @ skews).sum(axis=0)
+        K[:3, 3:] = -(stiffnesses @ rs).sum(axis=0)
+        K[3:, :3] = (rs @ stiffnesses).sum(axis=0)
+        K[3:, 3:] = (-fs @ rs - rs @ stiffnesses @ rs).sum(axis=0)
         return F, K
 
 
-def _skews(v) -> np.ndarray:
+def skews(v) -> np.ndarray:
     """`skew` of each row of ``v`` (n, 3), shape (n, 3, 3)."""
     out = np.zeros((len(v), 3, 3))
     out[:, 0, 1], out[:, 0, 2], out[:, 1, 2] = -v[:, 2], v[:, 1], -v[:, 0]
@@ -220,12 +212,6 @@ class PointBody(_Hydrostatics):
 
     def rotation(self, q) -> np.ndarray:
         return np.eye(3)
-
-    def fairlead_positions(self, q, n: int) -> np.ndarray:
-        return np.broadcast_to(q[:3], (n, 3)).copy()
-
-    def arms(self, q) -> np.ndarray:
-        return np.zeros((0, 3))
 
     def own_force(self, q) -> np.ndarray:
         out = self.weight + self.buoyancy

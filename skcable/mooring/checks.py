@@ -27,7 +27,7 @@ from skcable._checks import positive, scalar
 from skcable.errors import InputError
 from skcable.mooring.network import end_forces
 
-__all__ = ["anchor_loads", "line_checks", "segment_checks"]
+__all__ = ["anchor_forces", "anchor_loads", "line_checks", "segment_checks"]
 
 
 def anchor_loads(eq):
@@ -36,22 +36,26 @@ def anchor_loads(eq):
     uplift), ``uplift_angle`` (rad) and ``uplift_angle_deg``, a `pandas.DataFrame`."""
     import pandas as pd
 
-    totals: dict = {}
-    counts: dict = {}
-    for handle, line in zip(eq.handles, eq.lines, strict=True):
-        for end, force in zip((handle.a, handle.b), end_forces(line), strict=True):
-            if end.kind == "fixed":
-                totals[end.index] = totals.get(end.index, 0.0) + force
-                counts[end.index] = counts.get(end.index, 0) + 1
     rows = []
-    for j in sorted(totals):
-        F = totals[j]
+    for j, (F, count) in anchor_forces(eq).items():
         horizontal = math.hypot(F[0], F[1])
         angle = math.atan2(F[2], horizontal) + 0.0  # + 0.0: no -0
-        row = {"point": j, "lines": counts[j], "Fx": F[0], "Fy": F[1], "Fz": F[2], "horizontal": horizontal}
+        row = {"point": j, "lines": count, "Fx": F[0], "Fy": F[1], "Fz": F[2], "horizontal": horizontal}
         row.update(vertical=F[2], uplift_angle=angle, uplift_angle_deg=math.degrees(angle))
         rows.append(row)
     return pd.DataFrame(rows)
+
+
+def anchor_forces(eq) -> dict:
+    """``{fixed point: (F, n)}`` in the order of the points: the sum ``F`` (N, global axes) of the
+    forces of the ``n`` lines of the equilibrium ``eq`` that hold it."""
+    totals: dict = {}
+    for handle, line in zip(eq.handles, eq.lines, strict=True):
+        for end, force in zip((handle.a, handle.b), end_forces(line), strict=True):
+            if end.kind == "fixed":
+                F, n = totals.get(end.index, (0.0, 0))
+                totals[end.index] = (F + force, n + 1)
+    return dict(sorted(totals.items()))
 
 
 def _lower_angle(line, lower) -> float:

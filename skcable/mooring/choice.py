@@ -62,9 +62,10 @@ from functools import partial
 
 import numpy as np
 
-from skcable._checks import point
+from skcable._checks import point, positive, real, scalar
 from skcable.cable.seabed import elastic_catenary, sloped_seabed_catenary
 from skcable.errors import InputError
+from skcable.mooring.bathymetry import Plane
 from skcable.mooring.between_points import LineBetween, plane_of
 from skcable.mooring.bvp_model import solve_bvp_line
 from skcable.mooring.jacobians import of_free, of_grounded, of_own, of_sloped, touchdown_jacobian
@@ -73,7 +74,9 @@ from skcable.mooring.plane_line import MODELS, PlaneLine, on_seabed_tolerance, u
 from skcable.mooring.sea_line import LineInSea, bvp_model, relative_seabed
 from skcable.mooring.segments import Line
 from skcable.mooring.segments.batch import batchable, solve_batch
+from skcable.mooring.segments.law import GroundedLaw
 from skcable.mooring.slope import SlopeModel, clearance
+from skcable.mooring.straight import vertical_between, weightless_between
 
 __all__ = [
     "BATCH", "MODELS", "PlaneLine", "batchable", "grounded_batch", "is_grounded_scene", "is_line",
@@ -136,30 +139,11 @@ def is_line(model) -> bool:
 
 # -- in the vertical plane of the ends ------------------------------------------------------------------
 def solve_in_plane(line, span, dh, *, seabed=None, seabed_slope=0.0, start=None, bvp=None) -> PlaneLine:
-    """Solve ``line`` (a `skcable.mooring.Line`) between its ends A = (0, 0) and B = (span, dh).
-
-    Parameters
-    ----------
-    line : Line
-        Its segments run from A to B; its own ``seabed`` is not used (``seabed`` below is),
-        its ``friction`` is.
-    span, dh : float
-        B relative to A (m), ``span > 0`` (checked by the caller).
-    seabed : float, optional
-        The seabed's height below A relative to A (m), at or below both ends; None: no seabed.
-    seabed_slope : float
-        ``tan α`` of a plane seabed, ``y = seabed + x tan α`` (0: flat).
-    start : PlaneLine, optional
-        A previous solution of this line: a warm start where the same model applies.
-    bvp : callable, optional
-        ``bvp(line, span, dh, seabed, reason, slope)`` → `PlaneLine` for the scenes no closed
-        form takes (`skcable.mooring.bvp_model.solve_bvp_line` by default).
-
-    Returns
-    -------
-    PlaneLine
-        With ``model`` and ``reason`` (module docstring).
-    """
+    """`line_in_plane` on checked arguments (``span > 0``, finite floats): a `PlaneLine` with
+    ``model`` and ``reason`` (module docstring). ``start``: a previous `PlaneLine` of this line, a
+    warm start where the same model applies; ``bvp(line, span, dh, seabed, reason, slope)`` →
+    `PlaneLine` for the scenes no closed form takes (`skcable.mooring.bvp_model.solve_bvp_line` by
+    default)."""
     bvp = solve_bvp_line if bvp is None else bvp
     refuse_weightless(line)
     if seabed is None:
@@ -277,10 +261,7 @@ def _free_clear(line, scene, start, tol):
     span, dh, seabed, slope = scene
     reverse = dh < 0
     variant = line.variant(reverse=reverse)
-    previous = start.solution if start is not None and start.key == ("free", reverse) else None
-    solution = (
-        variant.solve(span, abs(dh)) if previous is None else variant.solve(span, abs(dh), start=previous)
-    )
+    solution = variant.solve(span, abs(dh), start=_warm(start, ("free", reverse)))
     floor, m = (seabed - dh + span * slope, -slope) if reverse else (seabed, slope)
     if clearance(solution, floor, m) < -tol:
         return None
@@ -325,8 +306,6 @@ def line_in_plane(line, span, dh, *, seabed=None, seabed_slope=0.0) -> PlaneLine
     >>> up.model, round(up.H_B, 6) == round(down.H_A, 6), round(up.V_A, 6) == round(down.V_B, 6)
     ('grounded (slope)', True, True)
     """
-    from skcable._checks import positive, real, scalar
-
     if not is_line(line):
         raise InputError("line", f"must be a mooring.Line, got {type(line).__name__}")
     span = scalar("span", positive("span", span))
@@ -407,15 +386,11 @@ def solve_between(line, a, b, depth, start=None, bvp=None):
     if not is_line(line):
         return line.solve_between(a, b, depth, start)
     if all(seg.w == 0.0 for seg in line.segments):  # no gravity: straight between its ends
-        from skcable.mooring.straight import weightless_between
-
         solved = weightless_between(line, a, b)
         solved.model, solved.reason = "weightless", "weightless (w = 0): straight between its ends"
         return solved
     plane = plane_of(a, b)
     if plane is None:  # its ends on one vertical: it hangs straight
-        from skcable.mooring.straight import vertical_between
-
         solved = vertical_between(line, a, b, depth)
         solved.model, solved.reason = (
             "vertical",
@@ -463,8 +438,6 @@ def line_between(line, a, b, *, depth=None, start=None) -> LineBetween:
         )
     a, b = point("a", a), point("b", b)
     if depth is not None:
-        from skcable._checks import positive, scalar
-
         depth = scalar("depth", positive("depth", depth))
     if start is not None and not isinstance(start, LineBetween):
         raise InputError("start", f"must be a LineBetween of this line, got {type(start).__name__}")
@@ -481,8 +454,6 @@ def solved_in_sea(model) -> bool:
 def _along_slope(line, anchor, fairlead, span):
     """The slope (-) of the line's `Plane` along it where the closed form on a slope holds
     (module docstring), else None."""
-    from skcable.mooring.bathymetry import Plane
-
     bed, segs = line.bathymetry, line.segments
     if not (isinstance(bed, Plane) and line.current is None and len(segs) == 1 and not line.attachments):
         return None
@@ -501,8 +472,6 @@ def _along_slope(line, anchor, fairlead, span):
 def _closed_form(line, anchor, fairlead, span, start, solve_in_space):
     """`LineInSea` by the closed form (module docstring), or None where a nonlinear law rests on
     the seabed (`GroundedLaw`)."""
-    from skcable.mooring.segments.law import GroundedLaw
-
     plain = line.variant_with_seabed(relative_seabed(line, anchor))
     try:
         solved = solve_in_space(plain, anchor, fairlead, span, start)

@@ -47,6 +47,7 @@ from skcable._budget import Budget, checked_budget
 from skcable._checks import real, scalar
 from skcable._show import Shown
 from skcable.errors import ConvergenceError, InputError
+from skcable.mooring.choice import line_between
 from skcable.mooring.line3d import point
 from skcable.mooring.segments import ClumpWeight, Line, Segment
 
@@ -118,6 +119,13 @@ def _check_names(target, vary):
         raise InputError("vary", f"must be one of {', '.join(VARIABLES)}, got {vary!r}")
 
 
+def _index(name, value, lo, hi, what) -> int:
+    """``value`` as an integer in ``[lo, hi]``, else `InputError` naming ``name``."""
+    if isinstance(value, bool) or not isinstance(value, (int, np.integer)) or not lo <= value <= hi:
+        raise InputError(name, f"must be {what} in [{lo}, {hi}], got {value!r}")
+    return int(value)
+
+
 def _segment_index(line, segment):
     if segment is None:
         if len(line.segments) != 1:
@@ -125,15 +133,7 @@ def _segment_index(line, segment):
                 "segment", f"the line has {len(line.segments)} segments: say which one's length varies"
             )
         return 0
-    if (
-        isinstance(segment, bool)
-        or not isinstance(segment, (int, np.integer))
-        or not 0 <= segment < len(line.segments)
-    ):
-        raise InputError(
-            "segment", f"must be a segment index in [0, {len(line.segments) - 1}], got {segment!r}"
-        )
-    return int(segment)
+    return _index("segment", segment, 0, len(line.segments) - 1, "a segment index")
 
 
 def _clump_joint(line, joint):
@@ -144,13 +144,7 @@ def _clump_joint(line, joint):
                 "joint", f"the line has {len(clumps)} clump weights: give the joint whose weight varies"
             )
         return clumps[0]
-    if (
-        isinstance(joint, bool)
-        or not isinstance(joint, (int, np.integer))
-        or not 0 < joint < len(line.segments)
-    ):
-        raise InputError("joint", f"must be an inner joint in [1, {len(line.segments) - 1}], got {joint!r}")
-    return int(joint)
+    return _index("joint", joint, 1, len(line.segments) - 1, "an inner joint")
 
 
 def _with_length(line, i, length) -> Line:
@@ -184,13 +178,6 @@ def _own(vary, line, anchor, fairlead, i, joint) -> float:
     if vary == "anchor_radius":
         return math.hypot(*(fairlead[:2] - anchor[:2]))
     return sum(a.weight for a in line.attachments if isinstance(a, ClumpWeight) and a.joint == joint)
-
-
-def _default_bounds(vary, line, anchor, fairlead, depth, i, joint):
-    """The bounds of the module docstring, widened to hold the line's own value (`_own`)."""
-    lo, hi = _formula_bounds(vary, line, anchor, fairlead, depth, i, joint)
-    own = _own(vary, line, anchor, fairlead, i, joint)
-    return min(lo, own), max(hi, own)
 
 
 def _formula_bounds(vary, line, anchor, fairlead, depth, i, joint):
@@ -352,8 +339,6 @@ def design_line(
         Past ``max_iter`` solves or ``time_limit`` seconds (``history``: ``|q - value|`` of each
         solve; ``last``: the best ``x``); no line solves inside a bracket.
     """
-    from skcable.mooring.choice import line_between
-
     _check_names(target, vary)
     if not isinstance(line, Line):
         raise InputError("line", f"must be a mooring.Line, got {type(line).__name__}")
@@ -374,16 +359,23 @@ def design_line(
         return quantity(target, line_between(model, anchor_x, b, depth=depth))
 
     lo, hi = _bounds(bounds, vary, line, a, b, depth, i, j)
-    span = math.hypot(*(b[:2] - a[:2]))
-    counter = _Counted(q, value, *checked_budget(max_iter, time_limit))
-    with _plausible.quiet():  # the samples are trials, not answers
-        x, bracket = counter.run(
-            _solve_bracketed, lo, hi, value, _tolerance(target, value, span), target, SAMPLES
-        )
+    x, bracket, calls = _search(q, value, target, (lo, hi), (a, b), SAMPLES, (max_iter, time_limit))
     model, anchor_x = build(x)
     solved = line_between(model, anchor_x, b, depth=depth)
     achieved = quantity(target, solved)
-    return Design(vary, target, value, x, achieved, model, anchor_x, solved, (lo, hi), bracket, counter.calls)
+    return Design(vary, target, value, x, achieved, model, anchor_x, solved, (lo, hi), bracket, calls)
+
+
+def _search(q, value, target, bounds, ends, samples, budget):
+    """``(x, bracket, solves)``: ``q(x) = value`` over ``bounds``, sampled, bracketed and closed by
+    Brent's method (module docstring) within the ``budget`` ``(max_iter, time_limit)``; ``ends``
+    the anchor and the fairlead (the span: the scale of a distance's tolerance)."""
+    a, b = ends
+    counter = _Counted(q, value, *checked_budget(*budget))
+    tol = _tolerance(target, value, math.hypot(*(b[:2] - a[:2])))
+    with _plausible.quiet():  # the samples are trials, not answers
+        x, bracket = counter.run(_solve_bracketed, *bounds, value, tol, target, samples)
+    return x, bracket, counter.calls
 
 
 class _Counted:
@@ -415,8 +407,12 @@ class _Counted:
 
 
 def _bounds(bounds, vary, line, a, b, depth, i, j):
+    """The given ``bounds``, checked, or those of the module docstring, widened to hold the line's
+    own value (`_own`)."""
     if bounds is None:
-        return _default_bounds(vary, line, a, b, depth, i, j)
+        lo, hi = _formula_bounds(vary, line, a, b, depth, i, j)
+        own = _own(vary, line, a, b, i, j)
+        return min(lo, own), max(hi, own)
     try:
         lo, hi = (scalar("bounds", real("bounds", v)) for v in bounds)
     except (TypeError, ValueError):
@@ -491,11 +487,8 @@ def design_pattern(
     a = first.a.position
     b = system.point_position(first.b)
     lo, hi = _bounds(bounds, vary, first.model, a, b, system.depth, i, j)
-    counter = _Counted(q, value, *checked_budget(max_iter, time_limit))
-    tol = _tolerance(target, value, math.hypot(*(b[:2] - a[:2])))
-    with _plausible.quiet():  # the samples are trials, not answers
-        x, bracket = counter.run(_solve_bracketed, lo, hi, value, tol, target, int(samples))
+    x, bracket, calls = _search(q, value, target, (lo, hi), (a, b), int(samples), (max_iter, time_limit))
     eq = solve(x)
     line = eq.lines[eq.line_indices.index(first.index)]
     achieved = quantity(target, line)
-    return Design(vary, target, value, x, achieved, line.line, line.a, eq, (lo, hi), bracket, counter.calls)
+    return Design(vary, target, value, x, achieved, line.line, line.a, eq, (lo, hi), bracket, calls)

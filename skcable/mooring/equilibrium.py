@@ -52,8 +52,11 @@ from skcable._budget import Budget
 from skcable._show import Shown, counted, quantity
 from skcable.errors import ConvergenceError, InputError, PlausibilityWarning
 from skcable.fe import first_converged, newton
+from skcable.mooring import checks
 from skcable.mooring._answers import equilibrium_findings
-from skcable.mooring.network import end_forces
+from skcable.mooring.axial import StrainTable
+from skcable.mooring.network import end_forces, largest_end_tension
+from skcable.mooring.segments import Line, Segment
 
 __all__ = ["MooringEquilibrium", "solve_equilibrium", "stiffness_eigenvalues"]
 
@@ -133,7 +136,7 @@ class _Newton:
         self.unit_pairs = self.units[:, None] * self.units[None, :]  # a matrix in consistent units
         self.body_scale = system.force_scale(external)
         self.lines = None  # the lines of the last accepted state: warm starts of the trials
-        self.cap = None  # the step cap, from the start (`step_cap`)
+        self.cap = None  # the step cap, from the start (`MooringSystem.step_cap`)
         self.seen = 0.0  # the largest line tension of the run's iterates Newton stepped from (N)
         self.restrained_first = False  # `slack_step`: the restrained directions before the free ones
         self.corrected = False  # `update`: trials corrected by a step with the step's Jacobian
@@ -161,8 +164,7 @@ class _Newton:
                 G = self.assemble(trial).G
             except (InputError, ConvergenceError):
                 return trial
-            fix = np.linalg.lstsq(self.jac / self.unit_pairs, G / self.units, rcond=_SINGULAR)[0] / self.units
-            trial = self._floored(trial + self.capped(fix))
+            trial = self._floored(trial + self.least_squares(self.jac, G / self.units))
         return trial
 
     def _floored(self, trial) -> np.ndarray:
@@ -176,9 +178,7 @@ class _Newton:
         that the loads press into it are held: their load is the pin's or the seabed's reaction, no
         residual."""
         self.budget.spend()
-        if len(self.floor_dofs):
-            position = position.copy()
-            position[self.floor_dofs] = np.maximum(position[self.floor_dofs], self.floor)
+        position = self._floored(position.copy())
         G, K, lines = self.system.evaluate(position, self.external, start=self.lines, without=self.without)
         contact = np.zeros(0, dtype=int)
         if len(self.floor_dofs):
@@ -225,14 +225,14 @@ class _Newton:
             return self.slack_step(state, pair, jac)
         return self.capped(np.linalg.solve(jac, state.G))
 
+    def least_squares(self, jac, r) -> np.ndarray:
+        """The least-squares step of the Jacobian ``jac`` for the scaled net load ``r``, capped."""
+        return self.capped(np.linalg.lstsq(jac / self.unit_pairs, r, rcond=_SINGULAR)[0] / self.units)
+
     def capped(self, dq) -> np.ndarray:
         """``dq`` scaled down to the step cap, where a dof exceeds it."""
         excess = float(np.max(np.abs(dq) / self.cap))
         return dq / excess if excess > 1.0 else dq
-
-    def step_cap(self, position) -> np.ndarray:
-        """A quarter of the shortest horizontal span of each body's or point's lines, 0.2 rad."""
-        return self.system.step_cap(position, self.without)
 
     def slack_step(self, state, pair, jac) -> np.ndarray:
         """The step along the free directions (``pair``: rows, the right and left null vectors of
@@ -248,8 +248,7 @@ class _Newton:
             r - left.T @ (left @ r)
         )
         if restrained and any(_slack(line) for line in lines):
-            scaled = jac / self.unit_pairs  # the restrained directions first
-            return self.capped(np.linalg.lstsq(scaled, r, rcond=_SINGULAR)[0] / self.units)
+            return self.least_squares(jac, r)  # the restrained directions first
         if not np.linalg.norm(push) > 1e-12 * np.linalg.norm(r):  # no force along the free directions
             if not any(_slack(line) for line in lines) and self.neutral != "hold":
                 if any(_probe(self, state, d) != "restrained" for d in null):  # nothing takes them
@@ -258,13 +257,12 @@ class _Newton:
                     )
             # the others balanced first, the free ones stay (slack lines, lines whose stiffness
             # vanishes there but that hold them, neutral directions held): `check_unique` at the end
-            scaled = jac / self.unit_pairs
-            return self.capped(np.linalg.lstsq(scaled, r, rcond=_SINGULAR)[0] / self.units)
+            return self.least_squares(jac, r)
         direction = push / np.linalg.norm(push)  # scaled dofs, |direction| = 1
         out_of_reach = left.T @ (left @ r)  # the load measured along its left partner
         measure = out_of_reach / np.linalg.norm(out_of_reach)
         ray = direction / self.units
-        cap = self.step_cap(position) if self.cap is None else self.cap
+        cap = self.system.step_cap(position, self.without) if self.cap is None else self.cap
         t = _ray_root(self, position, ray, measure, float(cap[0]), self.norm(state))
         return t * ray
 
@@ -280,7 +278,7 @@ class _Newton:
     def run(self, position, lines=None):
         """`skcable.fe.newton` from ``position`` (the ``lines`` as warm starts of the first solves)."""
         self.lines, self.seen = lines, 0.0
-        self.cap = self.step_cap(position)
+        self.cap = self.system.step_cap(position, self.without)
         return newton(
             self.assemble,
             position,
@@ -391,7 +389,7 @@ def _probe(solve, state, direction) -> str:
     ``direction`` (scaled dofs) that a move of 1e-4 of the step cap each way along it gives, over
     the force scale: below 1e-12 both ways, neutral; opposing the move both ways, restrained."""
     ray = direction / solve.units
-    cap = solve.cap if solve.cap is not None else solve.step_cap(state.position)
+    cap = solve.cap if solve.cap is not None else solve.system.step_cap(state.position, solve.without)
     lead = int(np.argmax(np.abs(ray)))
     t = 1e-4 * float(cap[lead]) / float(abs(ray[lead]))
     scale = max(solve.body_scale, state.tension, 1e-300)
@@ -551,7 +549,7 @@ def _carried_starts(solve, position) -> list:
         return []
     direction = r / np.linalg.norm(r)
     ray = direction / solve.units
-    cap = solve.step_cap(position)
+    cap = solve.system.step_cap(position, solve.without)
     try:
         t = _ray_root(solve, position, ray, direction, float(cap.min()), solve.norm(state))
     except ConvergenceError:
@@ -579,7 +577,7 @@ def _pushed_starts(solve, position) -> list:
     ray[horizontal] = G[horizontal]
     if not np.linalg.norm(ray) > 0:
         return []
-    cap = solve.step_cap(position)[horizontal]
+    cap = solve.system.step_cap(position, solve.without)[horizontal]
     size = float(np.min(cap / np.maximum(np.abs(ray[horizontal]), 1e-300)))
     return [position + push * size * ray for push in _PUSHES]
 
@@ -654,9 +652,6 @@ def _softened(system, factor, ties_only=False):
     """A copy of ``system`` whose lines and rods are ``factor`` times as stiff axially (their weights
     and geometry the same), or only its ties (a model with a ``stiffness``) with ``ties_only``; None
     where it has nothing to soften."""
-    from skcable.mooring.axial import StrainTable
-    from skcable.mooring.segments import Line, Segment
-
     models = {}
     for handle in system.mooring_lines:
         model = handle.model
@@ -725,7 +720,7 @@ def _restarts(system, position, result, solve):
     scaled = result.state.K / units[:, None] / units[None, :]
     mode = np.linalg.eigh(0.5 * (scaled + scaled.T))[1][:, 0] / units
     mode[solve.held] = 0.0  # a pin holds these
-    cap = solve.step_cap(result.x)
+    cap = solve.system.step_cap(result.x, solve.without)
     size = float(np.min(cap / np.maximum(np.abs(mode), 1e-300)))
     starts += [result.x + size * mode, result.x - size * mode]
     return starts
@@ -745,15 +740,16 @@ class BodyState(Shown):
         self.rotation = R = body.rotation(q)
         self.heel = float(np.arccos(np.clip(R[2, 2], -1.0, 1.0)))
 
+    def _pose_shown(self) -> list:
+        """The shown ``offset``, ``angles`` and ``heel`` (`skcable._show.quantity`)."""
+        return [
+            quantity("offset", self.offset, "m"),
+            quantity("angles", self.angles, "rad"),
+            quantity("heel", self.heel, "rad"),
+        ]
+
     def __repr__(self):
-        shown = ", ".join(
-            (
-                quantity("offset", self.offset, "m"),
-                quantity("angles", self.angles, "rad"),
-                quantity("heel", self.heel, "rad"),
-            )
-        )
-        return f"BodyState(body {self.index}: {shown})"
+        return f"BodyState(body {self.index}: {', '.join(self._pose_shown())})"
 
 
 class PointState(Shown):
@@ -922,23 +918,17 @@ class MooringEquilibrium(Shown):
 
     def anchor_loads(self):
         """Each anchor's horizontal and vertical load and uplift angle (`skcable.mooring.checks`)."""
-        from skcable.mooring.checks import anchor_loads
-
-        return anchor_loads(self)
+        return checks.anchor_loads(self)
 
     def line_checks(self):
         """Each line's end tensions, grounded length, touchdown and angle at its lower end
         (`skcable.mooring.checks`)."""
-        from skcable.mooring.checks import line_checks
-
-        return line_checks(self)
+        return checks.line_checks(self)
 
     def segment_checks(self, safety_factor):
         """Each segment's largest tension against its MBL with ``safety_factor``
         (`skcable.mooring.checks`)."""
-        from skcable.mooring.checks import segment_checks
-
-        return segment_checks(self, safety_factor)
+        return checks.segment_checks(self, safety_factor)
 
     def to_vtk(self, path, n: int = 101):
         """Write the lines (tension as point data), the seabed patch and the bodies to a
@@ -953,16 +943,14 @@ class MooringEquilibrium(Shown):
         if self.system.shortcut:
             shown = ", ".join(
                 (
-                    quantity("offset", self.offset, "m"),
-                    quantity("angles", self.angles, "rad"),
-                    quantity("heel", self.heel, "rad"),
+                    *self.bodies[0]._pose_shown(),
                     quantity("T_fairlead", [line.tension_at_fairlead for line in self.lines], "N"),
                     quantity("min_eigenvalue", self.eigenvalues[0], "N/m"),
                     quantity("iterations", len(self.history) - 1),
                 )
             )
             return f"MooringEquilibrium({counted([len(self.lines)], 'line')}: {shown}{note})"
-        ends = [np.linalg.norm(end_forces(line), axis=1).max() for line in self.lines]
+        ends = [largest_end_tension(line) for line in self.lines]
         shown = ", ".join(
             (
                 quantity("T_max", ends, "N"),

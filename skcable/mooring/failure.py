@@ -14,17 +14,14 @@ from collections.abc import Iterable
 import numpy as np
 
 from skcable.errors import InputError
-from skcable.mooring.network import end_forces
+from skcable.mooring.network import largest_end_tension
 
 __all__ = ["FailureCase", "failure_case", "failure_cases"]
 
 
 def _largest_tensions(eq) -> dict:
     """``{line index: the largest of its end tensions (N)}`` of an equilibrium."""
-    out = {}
-    for k, line in zip(eq.line_indices, eq.lines, strict=True):
-        out[k] = float(np.linalg.norm(end_forces(line), axis=1).max())
-    return out
+    return {k: largest_end_tension(line) for k, line in zip(eq.line_indices, eq.lines, strict=True)}
 
 
 class FailureCase:

@@ -26,19 +26,22 @@ __all__ = [
 ]
 
 
+def _rows_B(k) -> np.ndarray:
+    """``∂(H_B, V_B)/∂(span, y_A, y_B)`` from the fairlead stiffness ``k = ∂(H_B, V_B)/∂(span, dh)``."""
+    (k_hh, k_hv), (k_vh, k_vv) = np.asarray(k, dtype=float).tolist()
+    return np.array([[k_hh, -k_hv, k_hv], [k_vh, -k_vv, k_vv]])
+
+
 def free_jacobian(k) -> np.ndarray:
     """Nothing touches: ``H_A = H_B``, ``V_A = W - V_B``, a function of ``y_B - y_A``."""
-    (k_hh, k_hv), (k_vh, k_vv) = np.asarray(k, dtype=float).tolist()
-    return np.array(
-        [[k_hh, -k_hv, k_hv], [-k_vh, k_vv, -k_vv], [k_hh, -k_hv, k_hv], [k_vh, -k_vv, k_vv]], dtype=float
-    )
+    rows_B = _rows_B(k)
+    return np.vstack([rows_B[0], -rows_B[1], rows_B])
 
 
 def grounded_jacobian(k, friction, H_A) -> np.ndarray:
     """Grounded at A: ``V_A`` constant, ``H_A = max(H - C_B (W - V_B - P_A), 0)``; A and the seabed
     move together (the height columns opposite)."""
-    (k_hh, k_hv), (k_vh, k_vv) = np.asarray(k, dtype=float).tolist()
-    J = np.array([[0.0] * 3, [0.0] * 3, [k_hh, -k_hv, k_hv], [k_vh, -k_vv, k_vv]])
+    J = np.vstack([np.zeros((2, 3)), _rows_B(k)])
     if H_A > 0:
         J[0] = J[2] + friction * J[3]
     return J
@@ -79,8 +82,7 @@ def touchdown_jacobian(solution) -> np.ndarray:
 def sloped_jacobian(solution, k2) -> np.ndarray:
     """``∂(H_A, V_A, H_B, V_B)/∂(span, y_A, y_B)`` of a grounded `SlopedSeabedCatenary` (module
     docstring), from its fairlead stiffness ``k2``."""
-    (k_hh, k_hv), (k_vh, k_vv) = np.asarray(k2, dtype=float).tolist()
-    rows_B = np.array([[k_hh, -k_hv, k_hv], [k_vh, -k_vv, k_vv]])
+    rows_B = _rows_B(k2)
     m = float(solution.seabed_slope)
     cos = 1.0 / math.hypot(1.0, m)
     sin = m * cos

@@ -23,6 +23,7 @@ import numpy as np
 
 from skcable._checks import real, require
 from skcable.errors import InputError
+from skcable.mooring.segments.solution import tension_table
 from skcable.results import ProfileMixin
 
 __all__ = ["LyingLine", "lying_line"]
@@ -95,23 +96,9 @@ class LyingLine(ProfileMixin):
     def tensions(self):
         """One row per segment: ``segment, length, w, EA, T_lower, T_upper, H_upper,
         stretched_length, grounded_length`` (SI), as `skcable.mooring.LineSolution.tensions`."""
-        import pandas as pd
-
         arrays = self.line.arrays
         T = np.full(arrays.n, self.H)
-        return pd.DataFrame(
-            {
-                "segment": np.arange(arrays.n),
-                "length": arrays.L,
-                "w": arrays.w,
-                "EA": arrays.EA,
-                "T_lower": T,
-                "T_upper": T,
-                "H_upper": T,
-                "stretched_length": np.diff(self._x_joint),
-                "grounded_length": arrays.L,
-            }
-        )
+        return tension_table(arrays, T, T, T, np.diff(self._x_joint), arrays.L)
 
     def __repr__(self):
         state = "slack" if self.heap else "taut"

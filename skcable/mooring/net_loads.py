@@ -25,21 +25,12 @@ from __future__ import annotations
 
 import numpy as np
 
-from skcable.mooring.body import RigidBody, rotation_matrix
+from skcable.mooring.body import RigidBody, rotation_matrix, skews
 
-__all__ = ["Assembler", "cross", "rotations", "skews"]
+__all__ = ["Assembler", "rotations"]
 
-#: ``[v]x`` flattened: ``skews(v).reshape(n, 9) = v @ _SKEW``.
-_SKEW = np.zeros((3, 9))
-for _i, _j, _k, _sign in (
-    (0, 1, 2, -1),
-    (0, 2, 1, 1),
-    (1, 0, 2, 1),
-    (1, 2, 0, -1),
-    (2, 0, 1, -1),
-    (2, 1, 0, 1),
-):
-    _SKEW[_k, 3 * _i + _j] = _sign
+#: ``[v]x`` flattened: ``skews(v).reshape(n, 9) = v @ _SKEW`` (``+ 0.0``: no signed zeros).
+_SKEW = skews(np.eye(3)).reshape(3, 9) + 0.0
 #: ``T = [I, -[r]x]`` flattened (3 x 6), its rotation columns: ``r @ _MINUS_SKEW_T``.
 _MINUS_SKEW_T = np.zeros((3, 18))
 _MINUS_SKEW_T.reshape(3, 3, 6)[:, :, 3:] = -_SKEW.reshape(3, 3, 3)
@@ -55,22 +46,6 @@ def rotations(angles) -> np.ndarray:
     R[:, 1, 0], R[:, 1, 1], R[:, 1, 2] = c2 * s1, c1 * c3 + s1 * s2 * s3, c3 * s1 * s2 - c1 * s3
     R[:, 2, 0], R[:, 2, 1], R[:, 2, 2] = -s2, c2 * s3, c2 * c3
     return R
-
-
-def cross(a, b) -> np.ndarray:
-    """Row-wise cross products of ``(n, 3)`` arrays (`numpy.cross` without its axis handling)."""
-    out = np.empty_like(a)
-    out[:, 0] = a[:, 1] * b[:, 2] - a[:, 2] * b[:, 1]
-    out[:, 1] = a[:, 2] * b[:, 0] - a[:, 0] * b[:, 2]
-    out[:, 2] = a[:, 0] * b[:, 1] - a[:, 1] * b[:, 0]
-    return out
-
-
-def skews(v) -> np.ndarray:
-    """``[v]x`` of each row of ``v`` (n, 3), shape (n, 3, 3)."""
-    out = np.zeros((len(v), 3, 3))
-    out[:, 0, 1], out[:, 0, 2], out[:, 1, 2] = -v[:, 2], v[:, 1], -v[:, 0]
-    return out - out.transpose(0, 2, 1)
 
 
 class Assembler:

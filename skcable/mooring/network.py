@@ -25,7 +25,7 @@ from skcable.errors import InputError
 from skcable.mooring.body import PointBody, RigidBody
 from skcable.mooring.line3d import point
 
-__all__ = ["Layout", "MooringLine", "MooringPoint", "end_forces"]
+__all__ = ["Layout", "MooringLine", "MooringPoint", "end_forces", "largest_end_tension"]
 
 
 class MooringPoint:
@@ -118,7 +118,6 @@ class Layout:
                 start += 3
         self.n_dof = start
         self.units = None  # the dofs' consistent units (`MooringSystem.dof_units`), once asked
-        self.body_of = {id(b): i for i, b in enumerate(self.bodies)}
         # per body: its points (indices) and their positions in body axes
         self.body_points = [[p.index for p in self.points if p.body is b] for b in self.bodies]
         self.local = [
@@ -190,3 +189,8 @@ def end_forces(line) -> np.ndarray:
     return np.asarray(
         ends if ends is not None else [line.force_on_anchor, line.force_on_fairlead], dtype=float
     )
+
+
+def largest_end_tension(line) -> float:
+    """The larger of the tensions at the ends of a solved line (N): the norms of its `end_forces`."""
+    return float(np.linalg.norm(end_forces(line), axis=1).max())

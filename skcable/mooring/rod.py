@@ -39,7 +39,7 @@ import numpy as np
 
 from skcable._checks import nonnegative, positive, scalar
 from skcable.errors import InputError
-from skcable.mooring.between_points import EndTensions
+from skcable.mooring.between_points import StraightBetween, segment_table
 from skcable.mooring.body import RigidBody, skew
 from skcable.mooring.rod_waterline import waterline_shares
 
@@ -97,7 +97,7 @@ class Rod:
         return f"Rod(length={self.length!r}, diameter={self.diameter!r}, mass={self.mass!r}{stiff})"
 
 
-class RodBetween(EndTensions):
+class RodBetween(StraightBetween):
     """A rod with its ends at ``a`` and ``b`` (module docstring).
 
     Attributes
@@ -116,8 +116,6 @@ class RodBetween(EndTensions):
 
     model = "rod"
     reason = "a rigid rod: its weight and buoyancy on its ends, its length held by its axial stiffness"
-    plane = None
-    is_slack = False
 
     def __init__(self, rod, a, b):
         self.line, self.a, self.b = rod, np.array(a, dtype=float), np.array(b, dtype=float)
@@ -133,12 +131,8 @@ class RodBetween(EndTensions):
         self._dbuoyancy = shares.grad
         half = 0.5 * rod.weight
         self.loads = np.array([[0.0, 0.0, shares.fa - half], [0.0, 0.0, shares.fb - half]])
-
-    @cached_property
-    def end_forces(self) -> np.ndarray:
-        """The rod's forces on a and on b (N), (2, 3)."""
         pull = self.axial_force * self.u
-        return np.array([pull + self.loads[0], -pull + self.loads[1]])
+        self.end_forces = np.array([pull + self.loads[0], -pull + self.loads[1]])
 
     @cached_property
     def _axial_block(self) -> np.ndarray:
@@ -147,58 +141,21 @@ class RodBetween(EndTensions):
         return self.line.axial_stiffness * uu + (self.axial_force / self.length) * (np.eye(3) - uu)
 
     def block(self, i: int, j: int, J=None) -> np.ndarray:
-        """``K_ij = -∂F_i/∂p_j`` (N/m), 3 × 3, for ends ``i, j`` in (0: a, 1: b)."""
         del J
         K = (self._axial_block if i == j else -self._axial_block).copy()
         K[2] -= self._dbuoyancy[i, j]
         return K
 
-    def b_values(self) -> list:
-        """The force on b (3) and ``K_bb`` (3 × 3, by rows), flat."""
-        return [*self.end_forces[1].tolist(), *self.block(1, 1).ravel().tolist()]
-
-    def stiffness(self) -> np.ndarray:
-        """``K = -∂(F_a, F_b)/∂(a, b)`` (N/m), (6, 6)."""
-        K = np.empty((6, 6))
-        for i in (0, 1):
-            for j in (0, 1):
-                K[3 * i : 3 * i + 3, 3 * j : 3 * j + 3] = self.block(i, j)
-        return K
-
-    @property
-    def solution(self):
-        """The rod itself (it lies on no seabed)."""
-        return self
-
-    length_on_seabed = 0.0
-
     def profile_with_tension(self, n: int = 101) -> tuple[np.ndarray, np.ndarray]:
         """``(points (n, 3), axial force (n,))`` along the rod (m, N)."""
-        t = np.linspace(0.0, 1.0, int(n))
-        return self.a + np.outer(t, self.b - self.a), np.full(int(n), self.axial_force)
-
-    def profile(self, n: int = 101) -> np.ndarray:
-        return self.profile_with_tension(n)[0]
+        return self.chord(n), np.full(int(n), self.axial_force)
 
     def tensions(self):
-        """One row: ``segment, length, w, EA, T_lower, T_upper, T_max, grounded_length`` (SI): the
-        rod's length, its weight in water per length where submerged, its axial stiffness times
-        its length, and its axial force at both ends."""
-        import pandas as pd
-
+        """One row (`segment_table`): the rod's length, its weight in water per length where
+        submerged, its axial stiffness times its length, and its axial force at both ends."""
         rod, N = self.line, abs(self.axial_force)
-        return pd.DataFrame(
-            {
-                "segment": [0],
-                "length": [rod.length],
-                "w": [rod.mass * rod.g - rod.buoyancy_per_length],
-                "EA": [rod.axial_stiffness * rod.length],
-                "T_lower": [N],
-                "T_upper": [N],
-                "T_max": [N],
-                "grounded_length": [0.0],
-            }
-        )
+        w = rod.mass * rod.g - rod.buoyancy_per_length
+        return segment_table([rod.length], [w], [rod.axial_stiffness * rod.length], [N], [N])
 
     def __repr__(self):
         return (
@@ -308,15 +265,12 @@ class Tie:
         return f"Tie(stiffness={self.stiffness:g})"
 
 
-class TieBetween:
+class TieBetween(StraightBetween):
     """A `Tie` between ``a`` and ``b``: ``end_forces`` ``k (b - a)`` on a, its opposite on b;
     ``gap`` (m)."""
 
     model = "tie"
     reason = "a pin: the two points held together"
-    plane = None
-    is_slack = False
-    length_on_seabed = 0.0
 
     def __init__(self, tie, a, b):
         self.line, self.a, self.b = tie, np.array(a, dtype=float), np.array(b, dtype=float)
@@ -325,41 +279,14 @@ class TieBetween:
         self.gap = float(np.linalg.norm(self.b - self.a))
         self.span = float(math.hypot(*(self.b - self.a)[:2]))
 
-    @property
-    def max_end_tension(self) -> float:
-        return float(np.linalg.norm(self.end_forces[0]))
-
-    tension_a = tension_b = max_end_tension
-
-    @property
-    def solution(self):
-        return self
-
     def block(self, i: int, j: int, J=None) -> np.ndarray:
         del J
         k = self.line.stiffness
         return (k if i == j else -k) * np.eye(3)
 
-    def b_values(self) -> list:
-        return [*self.end_forces[1].tolist(), *self.block(1, 1).ravel().tolist()]
-
     def profile_with_tension(self, n: int = 101) -> tuple[np.ndarray, np.ndarray]:
-        t = np.linspace(0.0, 1.0, int(n))
-        return self.a + np.outer(t, self.b - self.a), np.full(int(n), self.max_end_tension)
+        return self.chord(n), np.full(int(n), self.max_end_tension)
 
     def tensions(self):
-        import pandas as pd
-
         T = self.max_end_tension
-        return pd.DataFrame(
-            {
-                "segment": [0],
-                "length": [0.0],
-                "w": [0.0],
-                "EA": [0.0],
-                "T_lower": [T],
-                "T_upper": [T],
-                "T_max": [T],
-                "grounded_length": [0.0],
-            }
-        )
+        return segment_table([0.0], [0.0], [0.0], [T], [T])

@@ -20,6 +20,7 @@ from __future__ import annotations
 import numpy as np
 
 from skcable._show import Shown
+from skcable.cable.seabed import sloped_seabed_catenary
 
 __all__ = ["SlopeModel", "SlopeSolution", "clearance"]
 
@@ -50,8 +51,6 @@ class SlopeModel:
         self.line, self.seabed_slope = line, float(seabed_slope)
 
     def solve(self, span, dh):
-        from skcable.cable.seabed import sloped_seabed_catenary
-
         seg = self.line.segments[0]
         solved = sloped_seabed_catenary(
             span, dh, seg.w, seg.EA, length=seg.length, seabed_slope=self.seabed_slope,

@@ -47,7 +47,7 @@ import math
 import numpy as np
 
 from skcable.errors import InputError
-from skcable.mooring.between_points import EndTensions
+from skcable.mooring.between_points import StraightBetween, segment_table
 
 __all__ = ["VerticalBetween", "vertical_between", "weightless_between"]
 
@@ -120,13 +120,7 @@ class _Hanging:
 
     def lowest(self) -> float:
         """The least ``T_D`` that keeps the tension >= 0 along the line."""
-        least, W = 0.0, 0.0
-        for k in range(self.n):
-            if k:
-                W += self.P[k]
-            least = min(least, W, W + self.w[k] * self.L[k])
-            W += self.w[k] * self.L[k]
-        return -least
+        return -min(0.0, *(T for ends in self.tensions(0.0) for T in ends))
 
     def stretched(self, T_D: float) -> tuple[float, float]:
         """``(stretched length, compliance ∫c ds)`` with ``T_D`` at the bottom (m, m/N)."""
@@ -144,28 +138,31 @@ def _taut_tension(hang: _Hanging, height: float) -> float | None:
     S, C = hang.stretched(lo)
     if S > height * (1.0 + 1e-14):
         return None
-    T = lo + (height - S) / C  # Newton from the bracket's low end: exact for ε = T/EA
+    # Newton from the bracket's low end: exact for ε = T/EA
+    return _tension_for(hang.stretched, height, lo + (height - S) / C, lo)
+
+
+def _tension_for(stretched, length: float, T: float, lo: float, bump: float = 1.0) -> float:
+    """The tension (N) at which ``stretched(T)[0]`` (increasing; ``[1]`` its derivative) meets
+    ``length`` (m), to 1e-14 of it: Newton's method from ``T``, safeguarded by bisection above
+    ``lo`` (below the root), at most 100 steps."""
     hi = math.inf
     for _ in range(100):
-        S, C = hang.stretched(T)
-        if abs(S - height) <= 1e-14 * height:
-            return T
-        if S > height:
-            hi = T
-        else:
-            lo = T
-        step = T + (height - S) / C
-        T = step if lo < step < hi else (lo + hi) / 2.0 if math.isfinite(hi) else 2.0 * T + 1.0
+        S, C = stretched(T)
+        if abs(S - length) <= 1e-14 * length:
+            break
+        lo, hi = (T, hi) if S < length else (lo, T)
+        step = T + (length - S) / C
+        T = step if lo < step < hi else (lo + hi) / 2.0 if math.isfinite(hi) else 2.0 * T + bump
     return T
 
 
-class VerticalBetween(EndTensions):
+class VerticalBetween(StraightBetween):
     """A line solved with its ends on one vertical (module docstring); a `LineBetween` of
     zero horizontal distance: ``end_forces``, ``block(i, j)``, ``tension_a``, ``tension_b``,
     ``state`` (``"taut"``, ``"folded"`` or ``"on the seabed"``).
     """
 
-    plane = None
     span = 0.0
 
     def __init__(self, line, a, b, state, forces, blocks, tensions_by_segment, grounded=0.0):
@@ -178,54 +175,21 @@ class VerticalBetween(EndTensions):
         self.model, self.reason = "vertical", ""  # said by `skcable.mooring.choice.solve_between`
         self.is_slack = state != "taut"
 
-    @property
-    def solution(self):
-        return self
-
     def block(self, i: int, j: int, J=None) -> np.ndarray:
-        """``K_ij = -∂F_i/∂p_j`` (N/m), 3 × 3, ends ``i, j`` in (0: a, 1: b)."""
         del J
         return self._blocks[i][j].copy()
 
-    def b_values(self) -> list:
-        return [*self.end_forces[1].tolist(), *self._blocks[1][1].ravel().tolist()]
-
-    def stiffness(self) -> np.ndarray:
-        K = np.empty((6, 6))
-        for i in (0, 1):
-            for j in (0, 1):
-                K[3 * i : 3 * i + 3, 3 * j : 3 * j + 3] = self._blocks[i][j]
-        return K
-
     def tensions(self):
-        """One row per segment from a to b: ``segment, length, w, EA, T_lower, T_upper, T_max,
-        grounded_length`` (SI; ``T_lower`` towards a)."""
-        import pandas as pd
-
+        """One row per segment from a to b (`segment_table`; ``T_lower`` towards a)."""
         arrays = self.line.arrays
         low, up = zip(*self._tensions, strict=True) if self._tensions else ((), ())
-        return pd.DataFrame(
-            {
-                "segment": np.arange(arrays.n),
-                "length": arrays.L,
-                "w": arrays.w,
-                "EA": arrays.EA,
-                "T_lower": np.array(low, dtype=float),
-                "T_upper": np.array(up, dtype=float),
-                "T_max": np.maximum(low, up),
-                "grounded_length": np.zeros(arrays.n),
-            }
-        )
+        return segment_table(arrays.L, arrays.w, arrays.EA, low, up)
 
     def profile_with_tension(self, n: int = 101) -> tuple[np.ndarray, np.ndarray]:
         """``(points (n, 3), tension (n,))`` from a to b, the points on the straight chord (a folded
         line's fold drawn at its ends' chord)."""
         t = np.linspace(0.0, 1.0, int(n))
-        T = np.interp(t, [0.0, 1.0], [self.tension_a, self.tension_b])
-        return self.a + np.outer(t, self.b - self.a), T
-
-    def profile(self, n: int = 101) -> np.ndarray:
-        return self.profile_with_tension(n)[0]
+        return self.chord(n), np.interp(t, [0.0, 1.0], [self.tension_a, self.tension_b])
 
     def __repr__(self):
         return (
@@ -415,14 +379,7 @@ def weightless_between(line, a, b) -> VerticalBetween:
     if S0 >= d:  # slack: no tension, no stiffness
         T, dT = 0.0, 0.0
     else:
-        T, lo, hi = (d - S0) / C0, 0.0, math.inf
-        for _ in range(100):
-            S, C = stretched(T)
-            if abs(S - d) <= 1e-14 * d:
-                break
-            lo, hi = (T, hi) if S < d else (lo, T)
-            step = T + (d - S) / C
-            T = step if lo < step < hi else (lo + hi) / 2.0 if math.isfinite(hi) else 2.0 * T
+        T = _tension_for(stretched, d, (d - S0) / C0, 0.0, bump=0.0)
         dT = 1.0 / stretched(T)[1]
     uu = np.outer(u, u)
     K = dT * uu + (T / d) * (np.eye(3) - uu)

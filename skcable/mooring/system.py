@@ -1,15 +1,10 @@
 r"""A mooring system: bodies, points and lines, their net loads and stiffness.
 
 Points are fixed (anchors), free (three dofs, with their own weight, buoyancy and force) or
-fixed to a body; lines connect any two points (`skcable.mooring.network`). A
-`skcable.mooring.Line` is solved over the system's flat seabed at ``z = -depth``, from whichever
-end is lower, with the model its position takes (`skcable.mooring.choice`); a `Line` in the
-sea (a current, a `skcable.mooring.bathymetry.Bathymetry`, a nonlinear axial law) from its fixed
-end, a or b, by the model `skcable.mooring.line_3d` picks (`skcable.mooring.choice`), its
-force and 3 x 3 stiffness at its moving end entering the sums below as a one-end line's do; any
-other line model is solved as given, its anchor A at the line's first point. The
-one-body constructor of earlier releases, ``MooringSystem(body, lines, anchors)``, builds such a
-system: one body, an anchor per line, the fairleads on the body, each line solved as given.
+fixed to a body; lines connect any two points (`skcable.mooring.network`), each solved by the
+model its position takes (`MooringSystem.add_line`, `skcable.mooring.choice`). The one-body
+constructor ``MooringSystem(body, lines, anchors)`` builds such a system: one body, an anchor per
+line, the fairleads on the body, each line solved as given.
 
 At the dofs :math:`\mathbf q` (bodies, then free points) the net generalised force is
 
@@ -46,6 +41,7 @@ import numpy as np
 from skcable import _plausible
 from skcable._checks import nonnegative, positive, real, scalar
 from skcable.errors import InputError
+from skcable.mooring import failure
 from skcable.mooring.between_points import LineBetween
 from skcable.mooring.body import PointBody, RigidBody, skew
 from skcable.mooring.choice import (
@@ -334,7 +330,7 @@ class MooringSystem:
             )
         return self._add_line(line, a, b, False)
 
-    # -- the one-body views of earlier releases ------------------------------------------------------
+    # -- the one-body views ----------------------------------------------------------------------------
     @property
     def body(self):
         """The system's body (a one-body system)."""
@@ -459,9 +455,7 @@ class MooringSystem:
             elif handle.sea is not None:
                 line = _solve_sea(handle, a, b, previous)
             else:
-                r = math.hypot(float(b[0] - a[0]), float(b[1] - a[1]))
-                if not (np.isfinite(b).all() and r > 1e-9 * max(1.0, float(np.abs(b - a).max()))):
-                    line = line_3d(model, a, b)  # raises, naming the point
+                r = _reach(model, a, b)
                 if handle.warm and previous is None:  # a line of the same model, solved just now
                     previous = latest.get(id(model))
                 line = solve_in_space(model, a, b, r, previous if handle.warm else None)
@@ -547,13 +541,10 @@ class MooringSystem:
         for handle, line in zip(handles, lines, strict=True):
             if handle.managed:
                 _managed_ends(handle, line, index, values, cross, self._assembler, arms)
-            elif handle.sea is not None:
-                moving = handle.a if line.reversed else handle.b
-                if moving.kind != "fixed":
-                    index.append(moving.index)
-                    values.append([*line.force_on_fairlead.tolist(), *line.stiffness().ravel().tolist()])
-            elif handle.b.kind != "fixed":
-                index.append(handle.b.index)
+                continue
+            moving = handle.a if handle.sea is not None and line.reversed else handle.b
+            if moving.kind != "fixed":  # a line in the sea or one solved as given: its moving end
+                index.append(moving.index)
                 values.append([*line.force_on_fairlead.tolist(), *line.stiffness().ravel().tolist()])
         ends = np.array(values, dtype=float).reshape(-1, 12)
         forces, stiffness = ends[:, :3], ends[:, 3:].reshape(-1, 3, 3)
@@ -783,15 +774,11 @@ class MooringSystem:
         """The equilibrium without ``lines`` (a line failure) beside the intact one, under the same
         loads (``options``: those of `equilibrium`): a `skcable.mooring.failure.FailureCase`
         with ``intact``, ``damaged``, ``redistribution()`` and ``offsets()``."""
-        from skcable.mooring.failure import failure_case
-
-        return failure_case(self, lines, **options)
+        return failure.failure_case(self, lines, **options)
 
     def failure_cases(self, **options) -> list:
         """Each line failing alone (`failure`), from one intact equilibrium."""
-        from skcable.mooring.failure import failure_cases
-
-        return failure_cases(self, **options)
+        return failure.failure_cases(self, **options)
 
     def __repr__(self):
         return (
@@ -805,12 +792,19 @@ def _solve_sea(handle, a, b, previous) -> LineInSeaBetween:
     warm-started from ``previous`` (its solution at other positions) or None."""
     placed, reverse = handle.sea
     anchor, moving = (b, a) if reverse else (a, b)
-    r = math.hypot(float(moving[0] - anchor[0]), float(moving[1] - anchor[1]))
-    if not (np.isfinite(moving).all() and r > 1e-9 * max(1.0, float(np.abs(moving - anchor).max()))):
-        line_3d(placed, anchor, moving)  # raises, naming the point
+    r = _reach(placed, anchor, moving)
     start = previous.sea if isinstance(previous, LineInSeaBetween) else None
     sea = solve_line_in_sea(placed, anchor, moving, r, start, solve_in_plane_of_ends)
     return LineInSeaBetween(handle.model, sea, reverse)
+
+
+def _reach(model, anchor, moving) -> float:
+    """The horizontal distance (m) from ``anchor`` to ``moving``; where it is no span (a moving end
+    not finite, or on the anchor's vertical) `line_3d` refuses it, naming the point."""
+    r = math.hypot(float(moving[0] - anchor[0]), float(moving[1] - anchor[1]))
+    if not (np.isfinite(moving).all() and r > 1e-9 * max(1.0, float(np.abs(moving - anchor).max()))):
+        line_3d(model, anchor, moving)  # raises, naming the point
+    return r
 
 
 def _managed_ends(handle, line, index, values, cross, assembler, arms):

@@ -43,6 +43,10 @@ from dataclasses import dataclass, field
 from pathlib import Path
 
 from skcable.errors import InputError
+from skcable.mooring.body import PointBody, RigidBody
+from skcable.mooring.library import component
+from skcable.mooring.segments import Buoy, ClumpWeight, Line, Segment
+from skcable.mooring.system import MooringSystem
 
 __all__ = ["SystemFile", "read_system"]
 
@@ -100,8 +104,6 @@ def _named(where, items, kind):
 
 
 def _types(data) -> dict:
-    from skcable.mooring.library import component
-
     out: dict[str, tuple] = {}
     for name, spec in data.get("types", {}).items():
         _keys(f"types.{name}", spec, _TYPE)
@@ -116,8 +118,6 @@ def _types(data) -> dict:
 
 
 def _segment(types, where, spec):
-    from skcable.mooring.segments import Segment
-
     _keys(where, spec, {"type", "length"}, ("type", "length"))
     kind = types.get(spec["type"])
     if kind is None:
@@ -129,26 +129,17 @@ def _segment(types, where, spec):
 
 
 def _line(types, where, spec):
-    from skcable.mooring.segments import Buoy, ClumpWeight, Line
-
     segments = [_segment(types, f"{where}.segments", s) for s in spec["segments"]]
-    attachments: list[ClumpWeight | Buoy] = [
-        ClumpWeight(
-            _keys(f"{where}.clumps", c, {"joint", "weight"}, ("joint", "weight"))["joint"], c["weight"]
-        )
-        for c in spec.get("clumps", [])
-    ]
-    attachments += [
-        Buoy(_keys(f"{where}.buoys", c, {"joint", "buoyancy"}, ("joint", "buoyancy"))["joint"], c["buoyancy"])
-        for c in spec.get("buoys", [])
+    attachments = [
+        kind(_keys(f"{where}.{key}", c, {"joint", size}, ("joint", size))["joint"], c[size])
+        for key, kind, size in (("clumps", ClumpWeight, "weight"), ("buoys", Buoy, "buoyancy"))
+        for c in spec.get(key, [])
     ]
     friction = spec.get("friction", 0.0)
     return Line(segments, attachments, seabed=0.0 if friction else None, friction=friction)
 
 
 def _bodies(system, data, out):
-    from skcable.mooring.body import PointBody, RigidBody
-
     for name, spec in _named("bodies", data.get("bodies", []), "body").items():
         _keys(f"bodies.{name}", spec, _BODY)
         own = {k: spec[k] for k in ("mass", "volume", "waterplane_area") if k in spec}
@@ -182,8 +173,6 @@ def _points(system, data, out):
 def read_system(path) -> SystemFile:
     """Read a mooring system from a TOML file (module docstring); returns a `SystemFile`."""
     import tomllib
-
-    from skcable.mooring.system import MooringSystem
 
     try:
         data = tomllib.loads(Path(path).read_text(encoding="utf-8"))

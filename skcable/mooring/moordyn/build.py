@@ -11,6 +11,7 @@ from skcable.mooring.body import RigidBody, rotation_matrix
 from skcable.mooring.moordyn.linetypes import working_curve
 from skcable.mooring.rod import Rod, RodBody, Tie
 from skcable.mooring.segments import Line, Segment
+from skcable.mooring.system import MooringSystem
 
 __all__ = ["build_system"]
 
@@ -22,8 +23,6 @@ ROD_STIFFNESS = 1e4
 def build_system(source, model, options, depth, records, extras) -> None:
     """Build ``model.system`` from the parsed ``records`` (bodies, rods, points, lines) and
     ``extras`` (turbine positions, Syrope initial tensions, external loads)."""
-    from skcable.mooring.system import MooringSystem
-
     bodies, rods, points, lines = records
     ic, loads = extras
     try:
@@ -199,8 +198,8 @@ def _rod_bars(source, model, rods) -> None:
     system = model.system
     stiffest = max((_nominal_EA(t.law) for t in model.line_types.values() if t.law is not None), default=0.0)
 
-    def stiffness(rod_type, length) -> float:
-        own = (rod_type.mass * system.g + system.rho * system.g * np.pi / 4 * rod_type.d**2) * length
+    def stiffness(d, mass, length) -> float:
+        own = (mass * system.g + system.rho * system.g * np.pi / 4 * d**2) * length
         return max(ROD_STIFFNESS * stiffest, 1e8 * own, 1.0) / length
 
     for rod in rods.values():
@@ -208,17 +207,11 @@ def _rod_bars(source, model, rods) -> None:
         if a is b or getattr(rod, "body", None) is not None or a.kind != "body":
             continue
         length = float(np.linalg.norm(rod.b - rod.a))
-        bar = Rod(length, rod.type.d, rod.type.mass, stiffness(rod.type, length), rho=system.rho, g=system.g)
+        k = stiffness(rod.type.d, rod.type.mass, length)
+        bar = Rod(length, rod.type.d, rod.type.mass, k, rho=system.rho, g=system.g)
         rod.handle = system.add_line(bar, a, b)
     for host, end, bar in model.ties:
-        system.add_line(Tie(stiffness(_Type(bar), bar.length)), host, end)
-
-
-class _Type:
-    """A rod's type from a `Rod` (its diameter and mass per length)."""
-
-    def __init__(self, rod):
-        self.d, self.mass = rod.diameter, rod.mass
+        system.add_line(Tie(stiffness(bar.diameter, bar.mass, bar.length)), host, end)
 
 
 def _nominal_EA(law) -> float:

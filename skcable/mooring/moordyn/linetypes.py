@@ -36,6 +36,7 @@ import numpy as np
 
 from skcable.errors import InputError
 from skcable.mooring import axial
+from skcable.mooring.moordyn.text import file_error
 
 __all__ = ["LineType", "RodType", "read_line_types", "read_rod_types"]
 
@@ -43,7 +44,7 @@ __all__ = ["LineType", "RodType", "read_line_types", "read_rod_types"]
 WORKING_CURVE_POINTS = 30
 
 
-@dataclass(eq=False)
+@dataclass
 class LineType:
     """A line type: ``name``, ``d`` (m), ``mass`` (kg/m), the ``EA`` text and its ``law`` (None for
     a Syrope rope until its working curve is set), ``rest`` (the other columns, as written), the
@@ -54,23 +55,10 @@ class LineType:
     d: float
     mass: float
     EA: str
-    law: object
+    law: object = field(compare=False)
     rest: list
-    line: int
-    syrope: dict | None = None
-
-    def __eq__(self, other):
-        if not isinstance(other, LineType):
-            return NotImplemented
-        return (self.name, self.d, self.mass, self.EA, self.rest) == (
-            other.name,
-            other.d,
-            other.mass,
-            other.EA,
-            other.rest,
-        )
-
-    __hash__ = None  # type: ignore[assignment]
+    line: int = field(compare=False)
+    syrope: dict | None = field(default=None, compare=False)
 
     def weight(self, rho: float, g: float) -> float:
         """Weight in water per length (N/m): ``g (m - rho π d²/4)``."""
@@ -90,8 +78,6 @@ class RodType:
 def _curve(source, row, text, column) -> tuple[np.ndarray, np.ndarray]:
     """The ``(strain, tension)`` rows of the curve file ``text`` beside the input file, read as
     MoorDyn-C's ``read_curve`` reads them (rows after the first three lines)."""
-    from skcable.mooring.moordyn.text import file_error
-
     path = source.path.parent / text
     try:
         lines = Path(path).read_text(encoding="utf-8").splitlines()
@@ -211,8 +197,6 @@ class _Beside:
     """The location of a file for `_curve` (its ``path``, its ``error``)."""
 
     def __init__(self, path):
-        from skcable.mooring.moordyn.text import file_error
-
         self.path = Path(path)
         self.error = lambda line, column, reason: file_error(self.path, line, column, reason)
 

@@ -3,15 +3,12 @@
 from __future__ import annotations
 
 from dataclasses import dataclass, field
-from typing import TYPE_CHECKING
 
 import numpy as np
 
 from skcable import _plausible
-from skcable.mooring.equilibrium import warn_implausible
-
-if TYPE_CHECKING:
-    from skcable.mooring.system import MooringSystem
+from skcable.mooring.equilibrium import MooringEquilibrium, warn_implausible
+from skcable.mooring.system import MooringSystem
 
 __all__ = ["MoorDynModel"]
 
@@ -87,8 +84,6 @@ class MoorDynModel:
             options.setdefault("neutral", "hold")
             options.setdefault("max_iter", 200)  # a free end of a line (a massless point) converges linearly
             return system.equilibrium(**options)
-        from skcable.mooring.equilibrium import MooringEquilibrium
-
         q = np.zeros(0)
         lines = system.solve_lines(q) if system.mooring_lines else []
         empty = np.zeros(0)

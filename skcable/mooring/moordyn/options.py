@@ -31,52 +31,47 @@ _WATER = (
 #: Options that MoorDyn-C (MoorDyn2.cpp, ``readOptionsLine``) or MoorDyn-F know and the statics
 #: leave aside, lower case, with the reason.
 IGNORED = {
-    "dtm": _DYNAMICS,
-    "dt": _DYNAMICS,
-    "cfl": _DYNAMICS,
-    "tscheme": _DYNAMICS,
-    "kbot": "the seabed's contact stiffness of the dynamics (the statics' seabed is rigid)",
-    "kb": "the seabed's contact stiffness of the dynamics (the statics' seabed is rigid)",
-    "cbot": "the seabed's damping (dynamics)",
-    "cb": "the seabed's damping (dynamics)",
-    "dtic": _IC,
-    "icdt": _IC,
-    "tmaxic": _IC,
-    "ictmax": _IC,
-    "cdscaleic": _IC,
-    "icdfac": _IC,
-    "threshic": _IC,
-    "icthresh": _IC,
-    "icgendynamic": _IC,
-    "gendynamicic": _IC,
-    "fileic": "an initial-conditions file of the dynamics (the statics start from the file's positions)",
-    "icfile": "an initial-conditions file of the dynamics (the statics start from the file's positions)",
-    "wavekin": _WATER,
-    "dtwave": _WATER,
-    "wavekin_rampt": _WATER,
-    "currents": _WATER,
-    "unifycurrentgrid": _WATER,
-    "waterkin": _WATER,
+    **dict.fromkeys(("dtm", "dt", "cfl", "tscheme"), _DYNAMICS),
+    **dict.fromkeys(
+        ("kbot", "kb"), "the seabed's contact stiffness of the dynamics (the statics' seabed is rigid)"
+    ),
+    **dict.fromkeys(("cbot", "cb"), "the seabed's damping (dynamics)"),
+    **dict.fromkeys(
+        (
+            "dtic",
+            "icdt",
+            "tmaxic",
+            "ictmax",
+            "cdscaleic",
+            "icdfac",
+            "threshic",
+            "icthresh",
+            "icgendynamic",
+            "gendynamicic",
+        ),
+        _IC,
+    ),
+    **dict.fromkeys(
+        ("fileic", "icfile"),
+        "an initial-conditions file of the dynamics (the statics start from the file's positions)",
+    ),
+    **dict.fromkeys(
+        ("wavekin", "dtwave", "wavekin_rampt", "currents", "unifycurrentgrid", "waterkin"), _WATER
+    ),
     "seafloorfile": "a 3-D seafloor file: the statics take the flat seabed at the water depth",
     "frictioncoefficient": (
         "seabed friction, whose static configuration depends on the history the dynamics follow: "
         "the statics lie without friction (as MoorPy's System)"
     ),
-    "fricdamp": "seabed friction (dynamics)",
-    "statdynfricscale": "seabed friction (dynamics)",
-    "writelog": _OUTPUT,
-    "writeunits": _OUTPUT,
-    "dtout": _OUTPUT,
-    "disableoutput": _OUTPUT,
-    "disableouttime": _OUTPUT,
-    "outswitch": _OUTPUT,
-    "echo": _OUTPUT,
-    "inertialf": "inertial forces of a moving reference frame (dynamics)",
-    "inertialf_rampt": "inertial forces of a moving reference frame (dynamics)",
-    "mu_kt": "seabed friction (dynamics)",
-    "mu_ka": "seabed friction (dynamics)",
-    "mc": "seabed friction (dynamics)",
-    "cv": "seabed friction (dynamics)",
+    **dict.fromkeys(
+        ("writelog", "writeunits", "dtout", "disableoutput", "disableouttime", "outswitch", "echo"), _OUTPUT
+    ),
+    **dict.fromkeys(
+        ("inertialf", "inertialf_rampt"), "inertial forces of a moving reference frame (dynamics)"
+    ),
+    **dict.fromkeys(
+        ("fricdamp", "statdynfricscale", "mu_kt", "mu_ka", "mc", "cv"), "seabed friction (dynamics)"
+    ),
 }
 #: The options the statics use, lower case: ``{name: what}``.
 USED = {

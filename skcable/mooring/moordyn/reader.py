@@ -46,8 +46,10 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from skcable._checks import real
 from skcable.errors import InputError
 from skcable.mooring.body import rotation_matrix
+from skcable.mooring.moordyn.build import build_system
 from skcable.mooring.moordyn.linetypes import read_line_types, read_rod_types
 from skcable.mooring.moordyn.model import MoorDynModel
 from skcable.mooring.moordyn.options import read_options, water_depth
@@ -56,10 +58,6 @@ from skcable.mooring.moordyn.text import InputFile
 __all__ = ["read_moordyn"]
 
 _IDENTITY = np.eye(3)  # a body's axes as the file gives them (`BodyRecord.frame`)
-
-#: The rod's axial stiffness (`skcable.mooring.rod.Rod`) is this many times the file's stiffest
-#: line type's EA, over the rod's length: its change of length is that fraction of a line's strain.
-ROD_STIFFNESS = 1e4
 
 
 def decompose(word: str) -> tuple[str, str, str, str, str]:
@@ -142,26 +140,54 @@ class LineRecord:
     extra: list = field(default_factory=list)
 
 
-def _sequential(source, row, got: int, count: int, what: str) -> None:
-    if got != count + 1:
-        raise source.error(
-            row.line, "ID", f"{what} ID {got}: MoorDyn's IDs run 1, 2, 3, ... (expected {count + 1})"
-        )
+def _numbered(source, section, counts, what: str):
+    """``(row, ID)`` of each row of ``section`` (none where the file has none), its columns one of
+    the ``counts``, its ID the next of 1, 2, 3, ... as MoorDyn requires."""
+    for k, row in enumerate(() if section is None else section.rows):
+        source.columns(row, counts, section.name)
+        number = source.integer(row, 0, "ID")
+        if number != k + 1:
+            raise source.error(
+                row.line, "ID", f"{what} ID {number}: MoorDyn's IDs run 1, 2, 3, ... (expected {k + 1})"
+            )
+        yield row, number
 
 
-def _body_kind(source, row, word) -> tuple[str, int | None]:
+#: MoorDyn's words of each attachment (``decomposeString``'s first letters, no number after them).
+_FIXED = ("ANCHOR", "FIXED", "FIX")
+_COUPLED = ("VESSEL", "VES", "COUPLED", "CPLD", "FAIRLEAD")
+_COUPLEDPINNED = ("VESSELPINNED", "VESPIN", "CPLDPIN", "COUPLEDPINNED")
+_FREE = ("FREE", "POINT", "CON", "CONNECT")
+#: Each row's attachments with no number, ``{kind: words}``, and the words numbered by an owner.
+_BODY = {"free": _FREE, "fixed": _FIXED, "coupled": _COUPLED, "coupledpinned": _COUPLEDPINNED}
+_POINT = {"fixed": _FIXED, "coupled": _COUPLED, "free": _FREE}
+_ROD = {
+    "fixed": _FIXED,
+    "pinned": ("PINNED", "PIN"),
+    "coupled": _COUPLED[:-1],  # no FAIRLEAD rod
+    "coupledpinned": _COUPLEDPINNED,
+    "free": ("POINT", "CON", "FREE"),
+}
+_OWNERS = ("BODY", "B", "TURBINE", "T")
+
+
+def _attachment(source, row, word, what, plain, numbered, pinned=False) -> tuple[str, int | None]:
+    """``(kind, number)`` of the attachment ``word`` of a ``what`` row: a word of ``plain``
+    (``{kind: words}``) with no number (nor anything after it, but on a body's row), or one of
+    ``numbered`` with its body's or turbine's number (a rod's followed by ``PINNED``/``PIN`` where
+    ``pinned``)."""
     let1, num1, let2, _, rest = decompose(word)
-    if let1 in ("FREE", "POINT", "CON", "CONNECT") and not num1:
-        return "free", None
-    if let1 in ("ANCHOR", "FIXED", "FIX") and not num1:
-        return "fixed", None
-    if let1 in ("VESSEL", "VES", "COUPLED", "CPLD", "FAIRLEAD") and not num1:
-        return "coupled", None
-    if let1 in ("VESSELPINNED", "VESPIN", "CPLDPIN", "COUPLEDPINNED") and not num1:
-        return "coupledpinned", None
-    if let1 in ("TURBINE", "T") and num1 and not (let2 or rest):
-        return "turbine", int(num1)
-    raise source.error(row.line, word, f"unknown MoorDyn body attachment {word!r}")
+    if not (num1 or let2 or rest and what != "body"):
+        for kind, words in plain.items():
+            if let1 in words:
+                return kind, None
+    if let1 in numbered and num1 and not rest:
+        base = "body" if let1 in ("BODY", "B") else "turbine"
+        if not let2:
+            return base, int(num1)
+        if pinned and let2 in ("PINNED", "PIN"):
+            return base + "pinned", int(num1)
+    raise source.error(row.line, word, f"unknown MoorDyn {what} attachment {word!r}")
 
 
 def _turbine(source, row, turbines, n) -> np.ndarray:
@@ -177,11 +203,10 @@ def _turbine(source, row, turbines, n) -> np.ndarray:
 
 def _bodies(source, section, turbines) -> dict:
     out: dict = {}
-    for row in () if section is None else section.rows:
-        source.columns(row, (14,), "BODIES")
-        number = source.integer(row, 0, "ID")
-        _sequential(source, row, number, len(out), "body")
-        kind, owner = _body_kind(source, row, source.word(row, 1, "Attachment"))
+    for row, number in _numbered(source, section, (14,), "body"):
+        kind, owner = _attachment(
+            source, row, source.word(row, 1, "Attachment"), "body", _BODY, ("TURBINE", "T")
+        )
         pose = np.array(
             [source.number(row, k, c) for k, c in enumerate(("X0", "Y0", "Z0", "r0", "p0", "y0"), start=2)]
         )
@@ -199,30 +224,11 @@ def _bodies(source, section, turbines) -> dict:
     return out
 
 
-def _point_kind(source, row, word) -> tuple[str, int | None]:
-    let1, num1, let2, _, rest = decompose(word)
-    plain = not (num1 or let2 or rest)
-    if let1 in ("ANCHOR", "FIXED", "FIX") and plain:
-        return "fixed", None
-    if let1 in ("VESSEL", "VES", "COUPLED", "CPLD", "FAIRLEAD") and plain:
-        return "coupled", None
-    if let1 in ("POINT", "CONNECT", "CON", "FREE") and plain:
-        return "free", None
-    if let1 in ("BODY", "B") and num1 and not (let2 or rest):
-        return "body", int(num1)
-    if let1 in ("TURBINE", "T") and num1 and not (let2 or rest):
-        return "turbine", int(num1)
-    raise source.error(row.line, word, f"unknown MoorDyn point attachment {word!r}")
-
-
 def _points(source, section, turbines) -> dict:
     """The POINTS rows; a turbine's point placed in global axes (its turbine's position added)."""
     out: dict = {}
-    for row in () if section is None else section.rows:
-        source.columns(row, (9, 12), "POINTS")
-        number = source.integer(row, 0, "ID")
-        _sequential(source, row, number, len(out), "point")
-        kind, owner = _point_kind(source, row, source.word(row, 1, "Attachment"))
+    for row, number in _numbered(source, section, (9, 12), "point"):
+        kind, owner = _attachment(source, row, source.word(row, 1, "Attachment"), "point", _POINT, _OWNERS)
         xyz = np.array([source.number(row, k, c) for k, c in zip((2, 3, 4), "XYZ", strict=True)])
         mass, volume = source.number(row, 5, "Mass"), source.number(row, 6, "Volume")
         if mass < 0 or volume < 0:
@@ -236,39 +242,15 @@ def _points(source, section, turbines) -> dict:
     return out
 
 
-def _rod_kind(source, row, word) -> tuple[str, int | None]:
-    let1, num1, let2, _, rest = decompose(word)
-    plain = not (num1 or let2 or rest)
-    table = {
-        ("ANCHOR", "FIXED", "FIX"): "fixed",
-        ("PINNED", "PIN"): "pinned",
-        ("VESSEL", "VES", "COUPLED", "CPLD"): "coupled",
-        ("VESSELPINNED", "VESPIN", "CPLDPIN", "COUPLEDPINNED"): "coupledpinned",
-        ("POINT", "CON", "FREE"): "free",
-    }
-    for names, kind in table.items():
-        if let1 in names and plain:
-            return kind, None
-    if let1 in ("BODY", "TURBINE", "T", "B") and num1 and not rest:
-        base = "body" if let1 in ("BODY", "B") else "turbine"
-        if let2 in ("PINNED", "PIN"):
-            return base + "pinned", int(num1)
-        if not let2:
-            return base, int(num1)
-    raise source.error(row.line, word, f"unknown MoorDyn rod attachment {word!r}")
-
-
 def _rods(source, section, rod_types, turbines) -> dict:
     """The RODS rows; a turbine's rod placed in global axes."""
     out: dict = {}
-    for row in () if section is None else section.rows:
-        source.columns(row, (11,), "RODS")
-        number = source.integer(row, 0, "ID")
-        _sequential(source, row, number, len(out), "rod")
+    for row, number in _numbered(source, section, (11,), "rod"):
         name = source.word(row, 1, "RodType")
         if name not in rod_types:
             raise source.error(row.line, name, f"no rod type {name!r} in ROD TYPES")
-        kind, owner = _rod_kind(source, row, source.word(row, 2, "Attachment"))
+        word = source.word(row, 2, "Attachment")
+        kind, owner = _attachment(source, row, word, "rod", _ROD, _OWNERS, pinned=True)
         ends = [source.number(row, k, c) for k, c in enumerate(("Xa", "Ya", "Za", "Xb", "Yb", "Zb"), start=3)]
         numsegs = source.integer(row, 9, "NumSegs")
         offset = _turbine(source, row, turbines, owner) if kind.startswith("turbine") else np.zeros(3)
@@ -310,10 +292,7 @@ def _lines(source, section, points, rods, types) -> list:
         return out
     v1 = _is_v1_lines(section)
     order = (2, 3, 4, 5) if v1 else (4, 5, 2, 3)  # UnstrLen, NumSegs, end A, end B
-    for row in section.rows:
-        source.columns(row, (7,), "LINES")
-        number = source.integer(row, 0, "ID")
-        _sequential(source, row, number, len(out), "line")
+    for row, number in _numbered(source, section, (7,), "line"):
         name = source.word(row, 1, "LineType")
         if name not in types:
             raise source.error(row.line, name, f"no line type {name!r} in LINE TYPES")
@@ -352,8 +331,6 @@ def read_moordyn(path, *, turbines=None) -> MoorDynModel:
         the wrong number of columns, an unknown attachment, a line naming a point or rod the file
         does not have, a byte that is not UTF-8, a value that is no number or overflows.
     """
-    from skcable.mooring.moordyn.build import build_system
-
     source = InputFile(path)
     sections = source.sections()
     if not any(name in sections for name in ("LINE TYPES", "BODIES", "RODS", "POINTS", "LINES")):
@@ -411,8 +388,6 @@ def read_moordyn(path, *, turbines=None) -> MoorDynModel:
 def _turbine_positions(turbines) -> dict | None:
     if turbines is None:
         return None
-    from skcable._checks import real
-
     items = turbines.items() if isinstance(turbines, dict) else enumerate(turbines, start=1)
     out = {}
     for n, xyz in items:

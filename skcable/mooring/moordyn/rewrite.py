@@ -21,12 +21,14 @@ from __future__ import annotations
 
 import math
 
+from skcable.errors import InputError
 from skcable.mooring.body import rotation_matrix
+from skcable.mooring.moordyn.text import tokens
 
-__all__ = ["rewritten_text"]
+__all__ = ["float_text", "rewritten_text"]
 
 
-def _fmt(value: float) -> str:
+def float_text(value: float) -> str:
     """The shortest text that reads back as the same float."""
     return repr(float(value))
 
@@ -53,7 +55,7 @@ def _row(raw: str, tokens, replace: dict) -> str:
 def _body_pose(record, state) -> list[str]:
     """The BODIES columns ``X0 .. y0`` of a body at its equilibrium ``state``."""
     roll, pitch, yaw = _angles(state.rotation @ record.frame)
-    return [*map(_fmt, state.offset), *(_fmt(math.degrees(a)) for a in (roll, pitch, yaw))]
+    return [*map(float_text, state.offset), *(float_text(math.degrees(a)) for a in (roll, pitch, yaw))]
 
 
 def _rod_ends(model, rod, eq) -> list[str] | None:
@@ -61,47 +63,39 @@ def _rod_ends(model, rod, eq) -> list[str] | None:
     gives them in; None for a rod the statics do not move."""
     if rod.points and rod.points[0] is rod.points[1] and rod.points[0].kind == "free":  # a connector
         where = eq.points[rod.points[0].index].position
-        return [*map(_fmt, where), *map(_fmt, where)]
+        return [*map(float_text, where), *map(float_text, where)]
     if getattr(rod, "body", None) is None:
         return None
     a, b = (eq.points[p.index].position for p in rod.points)
     if rod.kind == "bodypinned":  # in its body's axes at its equilibrium pose
         host = model.bodies[rod.owner]
         state = eq.bodies[model.system.bodies.index(host.body)] if host.body is not None else None
-        R, x = (
-            (state.rotation @ host.frame, state.offset)
-            if state is not None
-            else (
-                rotation_matrix(*host.pose[3:]),
-                host.pose[:3],
-            )
-        )
+        if state is not None:
+            R, x = state.rotation @ host.frame, state.offset
+        else:
+            R, x = rotation_matrix(*host.pose[3:]), host.pose[:3]
         a, b = R.T @ (a - x), R.T @ (b - x)
         b = b - (a - rod.a)  # its pin where the file has it on its body (the tie's gap taken out)
         a = rod.a
     else:  # a turbine's rod: relative to its turbine
         a, b = a - rod.offset, b - rod.offset
-    return [*map(_fmt, a), *map(_fmt, b)]
+    return [*map(float_text, a), *map(float_text, b)]
 
 
 def rewritten_text(model, eq) -> str:
     """The text of the file ``model`` was read from, its free points, bodies and turning rods where
     the equilibrium ``eq`` (of ``model.system``; None: where the file puts them) has them."""
-    from skcable.mooring.moordyn.text import tokens
-
     lines = list(model.text)
     if eq is None:
         return "\n".join(lines) + "\n"
     if eq.system is not model.system:
-        from skcable.errors import InputError
-
         raise InputError("equilibrium", "is the equilibrium of another system than the model's")
     changes: dict = {}
     for number, record in model.records.get("points", {}).items():
         p = model.points[number]
         if p.kind == "free":
             changes[record.line] = {
-                k: _fmt(v) for k, v in zip((2, 3, 4), eq.points[p.index].position, strict=True)
+                k: float_text(v) for k, v in zip((2, 3, 4), eq.points[p.index].position, strict=True)
             }
     for record in model.bodies.values():
         if record.body is not None:

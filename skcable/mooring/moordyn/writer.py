@@ -11,7 +11,9 @@ from skcable.errors import InputError
 from skcable.mooring.body import PointBody, RigidBody
 from skcable.mooring.moordyn.model import MoorDynModel
 from skcable.mooring.moordyn.options import IGNORED, USED
+from skcable.mooring.moordyn.rewrite import float_text, rewritten_text
 from skcable.mooring.segments import Line
+from skcable.mooring.system import MooringSystem
 
 __all__ = ["moordyn_text", "write_moordyn"]
 
@@ -23,11 +25,6 @@ def _rule(name: str) -> str:
     return f"{'-' * 22} {name} {'-' * max(3, 60 - len(name))}"
 
 
-def _fmt(value) -> str:
-    """The shortest text that reads back as the same float."""
-    return repr(float(value))
-
-
 def _default_columns(segment) -> list[str]:
     """``BA/-zeta EI Cd Ca CdAx CaAx`` of a segment: MoorDyn's usual damping and added mass, the
     segment's drag coefficients where it has them (``Cd`` on the frontal area ``d l`` as
@@ -35,7 +32,7 @@ def _default_columns(segment) -> list[str]:
     ``CdAx = cd_tangential/π``: MoorDyn's and MoorPy's tangential drag ``½ ρ CdAx π d |u_t| u_t``),
     else MoorDyn's chain defaults (1.6, 0.05)."""
     if segment.cd_normal > 0 or segment.cd_tangential > 0:
-        cd, cd_ax = _fmt(segment.cd_normal), _fmt(segment.cd_tangential / math.pi)
+        cd, cd_ax = float_text(segment.cd_normal), float_text(segment.cd_tangential / math.pi)
     else:
         cd, cd_ax = "1.6", "0.05"
     return ["-1", "0", cd, "1", cd_ax, "0.5"]
@@ -45,8 +42,6 @@ class _Writer:
     """The tables of a MoorDyn v2 file from a system (see `write_moordyn`)."""
 
     def __init__(self, model, num_segs, diameter, equilibrium=None):
-        from skcable.mooring.system import MooringSystem
-
         self.model = model if isinstance(model, MoorDynModel) else MoorDynModel(model)
         self.system = system = self.model.system
         if not isinstance(system, MooringSystem):
@@ -80,9 +75,9 @@ class _Writer:
                 hint if raw is not None and hint not in self.types.values() else f"type{len(self.types) + 1}"
             )
             rest = list(raw.rest) if raw is not None and name == hint else _default_columns(segment)
-            EA_text = raw.EA if raw is not None and name == hint else _fmt(segment.EA)
+            EA_text = raw.EA if raw is not None and name == hint else float_text(segment.EA)
             self.types[key] = name
-            self.type_rows.append([name, _fmt(d), _fmt(mass), EA_text, *rest])
+            self.type_rows.append([name, float_text(d), float_text(mass), EA_text, *rest])
         return self.types[key]
 
     def bodies(self):
@@ -97,17 +92,17 @@ class _Writer:
                 ids[id(body)] = ("point", body)
                 continue
             ids[id(body)] = len(self.body_rows) + 1
-            cg = "|".join(_fmt(v) for v in body.center_of_gravity)
+            cg = "|".join(float_text(v) for v in body.center_of_gravity)
             pose = [*q[:3], *np.degrees(q[3:])]
             self.body_rows.append(
                 [
                     str(ids[id(body)]),
                     "free",
-                    *map(_fmt, pose),
-                    _fmt(body.mass),
+                    *map(float_text, pose),
+                    float_text(body.mass),
                     cg,
                     "0",
-                    _fmt(body.volume),
+                    float_text(body.volume),
                     "0",
                     "0",
                 ]
@@ -116,7 +111,15 @@ class _Writer:
 
     def point_row(self, kind, xyz, mass, volume):
         self.point_rows.append(
-            [str(len(self.point_rows) + 1), kind, *map(_fmt, xyz), _fmt(mass), _fmt(volume), "0", "0"]
+            [
+                str(len(self.point_rows) + 1),
+                kind,
+                *map(float_text, xyz),
+                float_text(mass),
+                float_text(volume),
+                "0",
+                "0",
+            ]
         )
         return len(self.point_rows)
 
@@ -172,7 +175,7 @@ class _Writer:
                         name,
                         str(joints[i]),
                         str(joints[i + 1]),
-                        _fmt(segment.length),
+                        float_text(segment.length),
                         str(segs),
                         "-",
                     ]
@@ -188,7 +191,7 @@ class _Writer:
         for index, (mass, volume) in self.extra.items():
             if mass or volume:
                 row = self.point_rows[ids[index] - 1]
-                row[5], row[6] = _fmt(float(row[5]) + mass), _fmt(float(row[6]) + volume)
+                row[5], row[6] = float_text(float(row[5]) + mass), float_text(float(row[6]) + volume)
 
 
 _TYPE_COLUMNS = (
@@ -234,8 +237,11 @@ def moordyn_text(model, *, num_segs: int = 20, diameter=None, options=None, equi
     out += _table("LINES", *_LINE_COLUMNS, writer.line_rows)
     out.append(_rule("OPTIONS"))
     if system.depth is not None:
-        out.append(f"{_fmt(system.depth)}  WtrDpth  water depth (m)")
-    out += [f"{_fmt(system.rho)}  rho  water density (kg/m^3)", f"{_fmt(system.g)}  g  gravity (m/s^2)"]
+        out.append(f"{float_text(system.depth)}  WtrDpth  water depth (m)")
+    out += [
+        f"{float_text(system.rho)}  rho  water density (kg/m^3)",
+        f"{float_text(system.g)}  g  gravity (m/s^2)",
+    ]
     out += [f"{value}  {key}" for key, value in settings.items()]
     out += [_rule("OUTPUTS"), *model.outputs, "END", _rule("need this line"), ""]
     return "\n".join(out)
@@ -244,14 +250,10 @@ def moordyn_text(model, *, num_segs: int = 20, diameter=None, options=None, equi
 def write_moordyn(model, path, *, equilibrium=None, num_segs: int = 20, diameter=None, options=None) -> Path:
     """Write a system (or a `MoorDynModel`) as a MoorDyn input file, atomically; returns the path.
 
-    A `MoorDynModel` read from a file is written as that file, every section, option and column as
-    read, its free points, free bodies and turning rods where ``equilibrium`` (a
-    `skcable.mooring.MooringEquilibrium` of its system) puts them
-    (`skcable.mooring.moordyn.rewrite`): MoorDyn starts from rest there, and the file read back is
-    the same system at its equilibrium.
-
-    A system (or a model built on one) is written as a MoorDyn v2 file, its free points and bodies
-    at the ``equilibrium`` where one is given:
+    A `MoorDynModel` read from a file is written as that file, its free parts where
+    ``equilibrium`` (a `skcable.mooring.MooringEquilibrium` of its system) puts them
+    (`skcable.mooring.moordyn.rewrite`). A system (or a model built on one) is written as a
+    MoorDyn v2 file, its free points and bodies at the ``equilibrium`` where one is given.
 
     Each `skcable.mooring.Line` segment becomes a MoorDyn line (the joints of a multi-segment line
     free points with its clump weights as mass and its buoys as volume; an attachment at a line's
@@ -267,8 +269,6 @@ def write_moordyn(model, path, *, equilibrium=None, num_segs: int = 20, diameter
     from skcable.io._atomic import write_text
 
     if isinstance(model, MoorDynModel) and model.text and options is None:
-        from skcable.mooring.moordyn.rewrite import rewritten_text
-
         return write_text(Path(path), rewritten_text(model, equilibrium))
     text = moordyn_text(model, num_segs=num_segs, diameter=diameter, options=options, equilibrium=equilibrium)
     return write_text(Path(path), text)

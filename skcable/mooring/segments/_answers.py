@@ -1,12 +1,7 @@
 """The plausibility of a line's answer (`skcable._plausible` holds the limits and their sources):
-
-- each segment's strain against what its material survives (`Segment.material`);
-- the uplift angle at an anchor on the seabed against what a drag anchor takes;
-- a body clear of the water that keeps its buoyancy, a body's point or a free point below the
-  seabed.
-
-Each function returns its findings, ``(quantity, reason)`` pairs (`skcable._plausible.warn_all`
-warns them); an equilibrium with a finding is not ``stable`` (not physically admissible).
+each segment's strain against what its material survives (`Segment.material`), and for
+`Line.solve` the uplift angle at its anchor on the seabed; the findings are ``(quantity, reason)``
+pairs, as `skcable.mooring._answers`'s for a system.
 
 **Strain.** The tension anywhere on a line differs from its largest end tension by at most the
 weights and point loads along it, so that bound through each segment's law is checked first (no

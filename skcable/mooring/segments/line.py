@@ -47,6 +47,17 @@ def _height_left(V, line, H, dh):
     return -dh if st is None else st.Z - dh
 
 
+def _bracket_end(sign, scale, args) -> float:
+    """The end of the bracket of ``V`` on the side ``sign``: ``sign scale`` doubled until
+    ``sign (Z - dh) >= 0`` (`_height_left`)."""
+    V = sign * scale
+    while sign * _height_left(V, *args) < 0:
+        V *= 2.0
+        if sign * V > 1e12 * scale:
+            raise ConvergenceError("Line.solve: no bracket for the fairlead's vertical force")
+    return V
+
+
 def _closure(H, V, line, span, dh, sizes, state):
     """The closure ``(X - span, Z - dh)`` (m) of ``line`` at ``(H, V)``, its Jacobian and the
     ``sizes`` (m) of its terms, then the `ClosureState` (the closure of
@@ -168,10 +179,8 @@ class Line:
                 n = len(segments)
                 segments = segments[::-1]
                 attachments = [type(a)(n - a.joint, abs(a.force)) for a in attachments]
-            if contact:
-                cache[key] = Line(segments, attachments, seabed=0.0, friction=self.friction)
-            else:
-                cache[key] = Line(segments, attachments)
+            seabed, friction = (0.0, self.friction) if contact else (None, 0.0)
+            cache[key] = Line(segments, attachments, seabed=seabed, friction=friction)
         return cache[key]
 
     def variant_with_seabed(self, seabed) -> Line:
@@ -226,16 +235,7 @@ class Line:
         arrays = self.arrays
         scale = float(arrays.abs_segment_weight + arrays.abs_joint_forces)
         args = (self, H, dh)
-        lo = -scale  # V < 0: the fairlead holds a buoyant line down
-        while _height_left(lo, *args) > 0:
-            lo *= 2.0
-            if lo < -1e12 * scale:
-                raise ConvergenceError("Line.solve: no bracket for the fairlead's vertical force")
-        hi = scale
-        while _height_left(hi, *args) < 0:
-            hi *= 2.0
-            if hi > 1e12 * scale:
-                raise ConvergenceError("Line.solve: no bracket for the fairlead's vertical force")
+        lo, hi = (_bracket_end(sign, scale, args) for sign in (-1.0, 1.0))  # V < 0: a buoyant line held down
         if _height_left(lo, *args) >= 0:
             return lo
         return find_root(_height_left, lo, hi, args, what="Line.solve, V at fixed H", xtol=1e-12 * hi)[0]
@@ -316,13 +316,10 @@ class Line:
         start : LineSolution or (float, float), optional
             A warm start: a previous solution of this line (typically at a nearby
             ``(span, dh)``, as in the Newton iterations of a moored body), or the pair
-            ``(H, V_B)`` (N, ``H > 0``). Newton's method starts from its fairlead forces
-            instead of from the uniform line of the same length, weight and compliance.
-            If it does not converge from there, the cold path runs (Newton from the
-            uniform line, then nested bracketing). This is no fallback of results:
-            the closure ``X(H, V) = span``, ``Z(H, V) = dh`` has one root, every path
-            polishes it to a relative residual below 1e-13 and the solution is
-            checked the same way, so warm and cold solutions agree to round-off.
+            ``(H, V_B)`` (N, ``H > 0``): Newton's method starts from its fairlead forces, the
+            cold path (module docstring) where it does not converge from there. No fallback of
+            results: the closure has one root, which every path polishes and checks the same
+            way, so that warm and cold solutions agree to round-off.
 
         Returns
         -------

@@ -29,7 +29,7 @@ from skcable.cable.closure import positions, stretched_length
 from skcable.errors import ConvergenceError, InputError
 from skcable.results import ProfileMixin
 
-__all__ = ["CLOSURE_TOLERANCE", "LineSolution"]
+__all__ = ["CLOSURE_TOLERANCE", "LineSolution", "tension_table"]
 
 #: A solution closes its scene where the closure misses the end by less than this over the chord:
 #: every path of `Line.solve` (warm, cold, bracketed, batched, with nonlinear laws) checks it.
@@ -147,7 +147,6 @@ class LineSolution(ProfileMixin):
         self._y_p0 = np.concatenate([[0.0], np.cumsum(dy)])[:-1]
         self._s_p0 = self._s0[k:-1].copy()
         self._s_p0[0] += st.a
-        self._Tt, self._Tb, self._dx, self._dy = st.Tt, st.Tb, dx, dy
         if arrays.n == 1:
             return  # the joints are set
         self.x_joints = np.concatenate([x_g0, self._x_p0[1:], [self._x_p0[-1] + dx[-1]]])
@@ -427,23 +426,27 @@ class LineSolution(ProfileMixin):
         ``T_lower``/``T_upper`` are the tensions at the segment's ends towards A and B,
         ``H_upper`` its horizontal tension at the upper end (``H`` where suspended, less
         the friction below the touchdown)."""
-        import pandas as pd
+        return tension_table(self.line.arrays, *self._segment_table)
 
-        arrays = self.line.arrays
-        T_low, T_up, H_seg, stretched, grounded = self._segment_table
-        return pd.DataFrame(
-            {
-                "segment": np.arange(arrays.n),
-                "length": arrays.L,
-                "w": arrays.w,
-                "EA": arrays.EA,
-                "T_lower": T_low,
-                "T_upper": T_up,
-                "H_upper": H_seg,
-                "stretched_length": stretched,
-                "grounded_length": grounded,
-            }
-        )
+
+def tension_table(arrays, T_lower, T_upper, H_upper, stretched, grounded):
+    """The table of `LineSolution.tensions` for a line of `LineArrays` ``arrays``, from its
+    per-segment columns (N, N, N, m, m)."""
+    import pandas as pd
+
+    return pd.DataFrame(
+        {
+            "segment": np.arange(arrays.n),
+            "length": arrays.L,
+            "w": arrays.w,
+            "EA": arrays.EA,
+            "T_lower": T_lower,
+            "T_upper": T_upper,
+            "H_upper": H_upper,
+            "stretched_length": stretched,
+            "grounded_length": grounded,
+        }
+    )
 
 
 def _out(value):
