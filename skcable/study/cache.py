@@ -51,34 +51,12 @@ _TEMP_AGE = 600.0  # s after which a temporary file is a killed writer's (writes
 
 
 def canonical(value):
-    """``value`` as it reads back from JSON (how parameters and results are compared).
-
-    Parameters
-    ----------
-    value : object
-        JSON-able data (other objects become their ``str``).
-
-    Returns
-    -------
-    object
-        The JSON round trip of ``value``.
-    """
+    """``value`` as it reads back from JSON, other objects as their ``str`` (how cases are compared)."""
     return json.loads(json.dumps(value, sort_keys=True, default=str))
 
 
 def checksum(entry: dict) -> str:
-    """SHA-256 of an entry's fields but ``checksum`` (sorted keys, compact JSON).
-
-    Parameters
-    ----------
-    entry : dict
-        A cache entry.
-
-    Returns
-    -------
-    str
-        64 hexadecimal digits.
-    """
+    """SHA-256 (64 hexadecimal digits) of an entry's fields but ``checksum`` (sorted keys, compact JSON)."""
     body = {k: v for k, v in entry.items() if k != "checksum"}
     text = json.dumps(body, sort_keys=True, separators=(",", ":"))
     return hashlib.sha256(text.encode()).hexdigest()
@@ -132,36 +110,15 @@ class Cache:
         self.locks.reclaim_all()
 
     def entry_path(self, key: str) -> Path:
-        """The entry file of ``key``: ``<folder>/<key>.json``.
-
-        Parameters
-        ----------
-        key : str
-            A case's key.
-
-        Returns
-        -------
-        Path
-        """
+        """The entry file of ``key``: ``<folder>/<key>.json``."""
         return self.folder / f"{key}.json"
 
     def read(self, key: str, case: dict) -> dict | None:
-        """The verified result of ``case``, or None.
+        """The verified result record of ``case`` (as `skcable.study.tasks.evaluate` returns it), or None.
 
-        Parameters
-        ----------
-        key : str
-            The case's key.
-        case : dict
-            The case's parameters (the entry must hold the same).
-
-        Returns
-        -------
-        dict or None
-            The result record (as `skcable.study.tasks.evaluate` returns it); None when
-            there is no entry or it cannot be used (then a `CacheWarning` names the file and
-            the reason, once per file and run, for the first `WARN_EACH` files; `close`
-            counts the others in one more warning).
+        None when there is no entry or it cannot be used (then a `CacheWarning` names the file and
+        the reason, once per file and run, for the first `WARN_EACH` files; `close` counts the
+        others in one more warning).
         """
         path = self.entry_path(key)
         problem: str | None
@@ -217,17 +174,7 @@ class Cache:
         return entry["result"], None
 
     def write(self, key: str, case: dict, result: dict) -> None:
-        """Write the entry of ``case`` atomically (replacing any older one).
-
-        Parameters
-        ----------
-        key : str
-            The case's key.
-        case : dict
-            The case's parameters.
-        result : dict
-            Its result record (JSON-able, as `skcable.study.tasks.evaluate` returns it).
-        """
+        """Write the entry of ``case`` and its ``result`` record atomically (replacing any older one)."""
         entry = {
             "schema": SCHEMA,
             "schema_version": SCHEMA_VERSION,

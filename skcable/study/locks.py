@@ -40,18 +40,9 @@ _HOST = socket.gethostname()
 
 
 def pid_alive(pid) -> bool:
-    """Whether a process of this id runs on this host.
-
-    Parameters
-    ----------
-    pid : object
-        A process id as read from a lock (anything else is "not alive").
-
-    Returns
-    -------
-    bool
-        True if the process exists (ours to signal or not); always True on Windows, where
-        ``os.kill(pid, 0)`` would end it (a lock's age decides there).
+    """Whether a process of this id (as read from a lock; anything else is "not alive") runs on
+    this host, ours to signal or not. Always True on Windows, where ``os.kill(pid, 0)`` would
+    end it (a lock's age decides there).
     """
     if os.name == "nt":
         return True
@@ -124,32 +115,11 @@ class CaseLocks:
         self._heart: threading.Thread | None = None
 
     def path(self, key: str) -> Path:
-        """The lock file of ``key``: ``<folder>/<key>.lock``.
-
-        Parameters
-        ----------
-        key : str
-            A case's key.
-
-        Returns
-        -------
-        Path
-        """
+        """The lock file of ``key``: ``<folder>/<key>.lock``."""
         return self.folder / f"{key}.lock"
 
     def acquire(self, key: str) -> bool:
-        """Lock ``key`` for this run.
-
-        Parameters
-        ----------
-        key : str
-            The case's key.
-
-        Returns
-        -------
-        bool
-            True if this run holds the lock now; False if a live run holds it.
-        """
+        """Lock ``key`` for this run: True if this run holds the lock now, False if a live run holds it."""
         path = self.path(key)
         token = secrets.token_hex(8)
         text = json.dumps({"host": _HOST, "pid": os.getpid(), "token": token})
@@ -163,18 +133,8 @@ class CaseLocks:
         return False
 
     def reclaim(self, path: Path) -> bool:
-        """Remove the lock at ``path`` if it is stale (see the module's notes).
-
-        Parameters
-        ----------
-        path : Path
-            A lock file.
-
-        Returns
-        -------
-        bool
-            True if no lock is left there (it was stale, or it is gone); False if a live
-            run holds it.
+        """Remove the lock at ``path`` if it is stale (see the module's notes): True if no lock is
+        left there (it was stale, or it is gone), False if a live run holds it.
         """
         try:
             seen = path.stat()
@@ -203,13 +163,7 @@ class CaseLocks:
         return owner.get("host") == _HOST and not pid_alive(owner.get("pid"))
 
     def release(self, key: str) -> None:
-        """Remove this run's lock on ``key`` (a lock another run took over is left alone).
-
-        Parameters
-        ----------
-        key : str
-            A case's key.
-        """
+        """Remove this run's lock on ``key`` (a lock another run took over is left alone)."""
         token = self.held.pop(key, None)
         if token is None:
             return

@@ -41,12 +41,7 @@ class StudyTable(pd.DataFrame):
         return StudyTable
 
     def summary(self) -> str:
-        """The header line, at most 10 rows and 8 columns, and a line giving the table's size.
-
-        Returns
-        -------
-        str
-        """
+        """The header line, at most 10 rows and 8 columns, and a line giving the table's size."""
         model = str(self.attrs.get("model", "")).rsplit(".", 1)[-1]
         head = f"skcable study{' of ' + model if model else ''}: {len(self)} cases"
         if "status" in self.columns:
@@ -64,12 +59,13 @@ class StudyTable(pd.DataFrame):
 def make_table(
     cases: list[dict], keys: list[str], results: dict, model: str = "", from_cache: int = 0
 ) -> StudyTable:
-    """The table of a study, one row per case in the cases' order.
+    """The `StudyTable` of a study, one row per case in the cases' order (a case listed twice gets
+    two rows).
 
     Parameters
     ----------
     cases : list of dict
-        The cases (a case listed twice gets two rows).
+        The cases.
     keys : list of str
         Their keys, in the same order.
     results : dict
@@ -78,10 +74,6 @@ def make_table(
         The model's name (``attrs["model"]``).
     from_cache : int
         Cases read from the cache (``attrs["from_cache"]``).
-
-    Returns
-    -------
-    StudyTable
     """
     rows = []
     for case, key in zip(cases, keys, strict=True):
