@@ -20,14 +20,13 @@ from typing import TYPE_CHECKING
 import numpy as np
 
 from skcable.errors import InputError
-from skcable.io._atomic import atomic_path, writable_file
+from skcable.io._vtk import write_mesh
 
 if TYPE_CHECKING:
     import meshio
 
 __all__ = ["mode_shape_mesh", "write_mode_shapes"]
 
-_SUFFIXES = (".vtu", ".vtk")
 #: The unit of the mass-normalised shapes (φᵀMφ = 1), at the end of every array's name.
 UNIT = "_m_per_sqrt_kg"
 
@@ -85,17 +84,6 @@ def mode_shape_mesh(result) -> meshio.Mesh:
 
 
 def write_mode_shapes(result, path) -> Path:
-    """Write `mode_shape_mesh` of ``result`` to ``path`` (``.vtu`` or ``.vtk``), atomically.
-
-    The file appears whole or not at all (`skcable.io._atomic.atomic_path`);
-    returns the path. The path is checked before the mesh is built: a missing parent
-    folder is refused (never created), as is one that takes no new file, with
-    ``InputError("path", ...)`` naming the path as given.
-    """
-    import meshio
-
-    path = writable_file("path", path, _SUFFIXES, create_parents=False)
-    mesh = mode_shape_mesh(result)
-    with atomic_path(path, create_parents=False) as temp:
-        meshio.write(temp, mesh)
-    return path
+    """Write `mode_shape_mesh` of ``result`` to ``path`` (``.vtu`` or ``.vtk``), atomically
+    (`skcable.io._vtk.write_mesh`: the path checked before the mesh is built); returns the path."""
+    return write_mesh(lambda: mode_shape_mesh(result), path)

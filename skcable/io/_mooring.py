@@ -20,14 +20,13 @@ import numpy as np
 
 from skcable._checks import whole
 from skcable.errors import InputError
-from skcable.io._atomic import atomic_path, writable_file
+from skcable.io._vtk import write_mesh
 
 if TYPE_CHECKING:
     import meshio
 
 __all__ = ["lines_mesh", "mooring_mesh", "write_lines", "write_mooring"]
 
-_SUFFIXES = (".vtu", ".vtk")
 # VTK's hexahedron: the bottom face counter-clockwise, then the top face
 _BOX = np.array([[0, 0, 0], [1, 0, 0], [1, 1, 0], [0, 1, 0], [0, 0, 1], [1, 0, 1], [1, 1, 1], [0, 1, 1]])
 
@@ -83,13 +82,7 @@ def lines_mesh(lines, n: int = 101) -> meshio.Mesh:
 def write_lines(lines, path, n: int = 101) -> Path:
     """Write `lines_mesh` of ``lines`` to ``path`` (``.vtu`` or ``.vtk``), atomically (see
     `write_mooring`)."""
-    import meshio
-
-    path = writable_file("path", path, _SUFFIXES, create_parents=False)
-    mesh = lines_mesh(lines, n)
-    with atomic_path(path, create_parents=False) as temp:
-        meshio.write(temp, mesh)
-    return path
+    return write_mesh(lambda: lines_mesh(lines, n), path)
 
 
 class _Cells:
@@ -163,11 +156,5 @@ def write_mooring(result, path, n: int = 101) -> Path:
     """Write `mooring_mesh` of ``result`` to ``path`` (``.vtu`` or ``.vtk``), atomically: the
     file appears whole or not at all. The path is checked before the mesh is built: a
     missing parent folder is refused (never created), as is one that takes no new file, with
-    ``InputError("path", ...)`` naming the path as given."""
-    import meshio
-
-    path = writable_file("path", path, _SUFFIXES, create_parents=False)
-    mesh = mooring_mesh(result, n)
-    with atomic_path(path, create_parents=False) as temp:
-        meshio.write(temp, mesh)
-    return path
+    ``InputError("path", ...)`` naming the path as given (`skcable.io._vtk.write_mesh`)."""
+    return write_mesh(lambda: mooring_mesh(result, n), path)

@@ -30,6 +30,8 @@ if TYPE_CHECKING:
 
 __all__ = ["cable_mesh", "funicular_mesh", "write", "write_series"]
 
+#: The formats of the writers of one mesh for ParaView.
+VTK_SUFFIXES = (".vtu", ".vtk")
 #: The most points of a profile (an integer ``n``): beyond, the arrays would not fit in memory.
 MAX_POINTS = 10**8
 
@@ -122,9 +124,9 @@ def _suffixes() -> tuple[str, ...]:
     return tuple(meshio.extension_to_filetypes)
 
 
-def write(mesh: meshio.Mesh, path) -> Path:
-    """Write one mesh (format from the suffix: ``.vtu``, ``.vtk``, ...), atomically; returns
-    the path.
+def write_mesh(build, path, suffixes=VTK_SUFFIXES) -> Path:
+    """Check ``path`` (a file with one of ``suffixes``), then write the mesh ``build()`` returns
+    there, atomically; returns the path.
 
     Raises
     ------
@@ -134,10 +136,17 @@ def write(mesh: meshio.Mesh, path) -> Path:
     """
     import meshio
 
-    path = writable_file("path", path, _suffixes(), create_parents=False)
+    path = writable_file("path", path, suffixes, create_parents=False)
+    mesh = build()
     with atomic_path(path, create_parents=False) as temp:
         meshio.write(temp, mesh)
     return path
+
+
+def write(mesh: meshio.Mesh, path) -> Path:
+    """Write one mesh (format from the suffix: ``.vtu``, ``.vtk``, ...), atomically; returns
+    the path, checked as by `write_mesh`."""
+    return write_mesh(lambda: mesh, path, _suffixes())
 
 
 def write_series(meshes, times, path) -> Path:
