@@ -319,22 +319,16 @@ def newton(
         relaxed step leads nowhere pays one assembly more than without it.
 
     full_steps : {"never", "after", "first"}
-        A second attempt by full Newton steps from ``x0`` (module docstring, *Fallbacks*):
-        ``"after"`` the damped Newton fails, or ``"first"`` (a start near the solution: a warm
-        start), the damped Newton where they fail. None where ``line_search`` is False.
+        The full-step attempt from ``x0`` (module docstring, *Fallbacks*); none where
+        ``line_search`` is False.
     rescue : callable, optional
-        ``rescue(failed)``: the problem's own way on from where the damped Newton stopped
-        (``failed.last``), tried before full steps ``"after"``: a `NewtonResult` whose history
-        starts at that iterate (joined to ``failed.history``), or None where it has none.
-    polish : int
+        ``rescue(failed)`` (*Fallbacks*): a `NewtonResult` whose history starts at
+        ``failed.last`` (joined to ``failed.history``), or None.
+    polish, polish_factor : int, float
         Full Newton steps past ``tol`` at most, while ``norm`` falls below ``polish_factor``
         times the last (a trial one of ``rejects`` stops them).
-    polish_factor : float
-        The fall of ``norm`` a polishing step must give.
     active : callable, optional
-        ``active(state)``: a hashable fingerprint of the non-smooth terms' active sets. Given, the
-        full-step attempt is the active-set iteration `semismooth` (stopped at a cycle of the
-        active sets or where a step within one raises ``norm``), tried also where
+        ``active(state)`` (*Fallbacks*): the full-step attempt is `semismooth`, tried also where
         ``line_search`` is False; its steps are ``x + dx`` (no ``update``, no ``admissible``).
     full_max_iter : int, optional
         Iterations at most of the full-step attempt (default ``max_iter``).

@@ -1,19 +1,8 @@
-"""Where a study's cases are computed: in this process, on Dask, or serially until Dask pays.
+"""Where a study's cases run: in this process (`Serial`), on Dask (`Dask`), serially until Dask pays (`Auto`).
 
 An executor maps `skcable.study.tasks.evaluate` over a batch of ``(key, case)`` pairs and
-hands each result to a ``finish(key, result)`` callback as it ends:
-
-- `Serial` computes them one after the other in this process;
-- `Dask` computes them on a ``dask.distributed`` cluster: a running scheduler's, or a local
-  cluster started on first use (single-threaded worker processes; worker threads where the
-  program cannot start worker processes, see `skcable.study.spawn`);
-- `Auto` computes serially and moves the rest of the study to a local cluster of processes
-  once the cases left are predicted to take longer serially than on the cluster, start-up
-  included (`dask_pays`). A small study never starts a cluster, so it is never slower
-  than the serial run.
-
-The figures behind `CLUSTER_COST` and `EFFICIENCY` come from ``benchmarks/bench_study.py``
-(docs/studies.md).
+hands each result to a ``finish(key, result)`` callback as it ends. The figures behind
+`CLUSTER_COST` and `EFFICIENCY` come from ``benchmarks/bench_study.py`` (docs/studies.md).
 """
 
 from __future__ import annotations
@@ -169,7 +158,9 @@ class Serial:
 
 
 class Dask:
-    """Computes the cases on a Dask cluster, connected or started on first use.
+    """Computes the cases on a ``dask.distributed`` cluster: a running scheduler's, or a local
+    cluster started on first use (single-threaded worker processes; worker threads where the
+    program cannot start worker processes, see `skcable.study.spawn`).
 
     Parameters
     ----------
@@ -268,9 +259,10 @@ class Auto:
     After each case (from the second on) `dask_pays` is asked with the median time of the
     cases computed so far (the first left out: it carries the imports) and the cluster's
     workers, at most the cores other work leaves free (`free_cores`): on a busy machine the
-    workers would only take turns with the others. Where worker
-    processes cannot start (`skcable.study.spawn.main_problem`) the study stays serial,
-    with one `WorkerWarning` saying what to add.
+    workers would only take turns with the others. A small study never starts a cluster, so
+    it is never slower than the serial run. Where worker processes cannot start
+    (`skcable.study.spawn.main_problem`) the study stays serial, with one `WorkerWarning`
+    saying what to add.
 
     Parameters
     ----------

@@ -179,14 +179,13 @@ def write_table(table: StudyTable, path: Path) -> None:
 def run_file(
     path, *, scheduler=None, executor="auto", n_workers=None, progress=True, output=None, cache=None
 ):
-    """Run the study a TOML file describes and write its table.
-
-    Every path is checked before computing; the table is written atomically.
+    """Run the study a TOML file describes (`load_study`) and write its table atomically; every
+    path is checked before computing.
 
     Parameters
     ----------
     path : path
-        The study file (`load_study`).
+        The study file.
     scheduler, executor, n_workers, progress
         As for `skcable.study.run`.
     output : path, optional

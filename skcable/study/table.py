@@ -23,17 +23,13 @@ __all__ = ["StudyTable", "make_table"]
 
 
 class StudyTable(pd.DataFrame):
-    """A study's table: a pandas DataFrame that prints as a short summary.
+    """A study's table (module docstring): a pandas DataFrame that prints as a short summary.
 
     ``repr`` (what a prompt shows) is `summary`: a header with the number of cases, ok and
     failed, then at most 10 rows and 8 columns, without ``time_s`` and ``key``. The full
-    table: ``table.to_string()``; everything else is the DataFrame's.
-
-    Attributes
-    ----------
-    attrs : dict
-        ``model`` (the model's name), ``from_cache`` (cases read from the cache) and
-        ``executor`` (where the others ran) after `skcable.study.run`.
+    table: ``table.to_string()``; ``attrs`` holds ``model`` (the model's name),
+    ``from_cache`` (cases read from the cache) and ``executor`` (where the others ran) after
+    `skcable.study.run`.
     """
 
     @property
