@@ -110,15 +110,8 @@ class _Cells:
 
 
 def mooring_mesh(result, n: int = 101) -> meshio.Mesh:
-    """Lines, seabed patch, bodies and free points of a `MooringEquilibrium` (module docstring).
-
-    Parameters
-    ----------
-    result : MooringEquilibrium
-        A solved mooring system.
-    n : int
-        Points per line, >= 2.
-    """
+    """Lines (``n`` points each, >= 2), seabed patch, bodies and free points of a solved
+    `MooringEquilibrium` (module docstring)."""
     import meshio
 
     points, tension, segments, line_id = _polylines(result.lines, n)

@@ -95,18 +95,7 @@ def _owner(raw: bytes) -> dict | None:
 
 
 class CaseLocks:
-    """The locks one run holds in a cache folder.
-
-    Parameters
-    ----------
-    folder : path
-        The cache folder (it exists).
-
-    Attributes
-    ----------
-    held : dict
-        Key -> token of the locks this run holds.
-    """
+    """The locks one run holds in an existing cache folder; ``held`` maps key -> token of each."""
 
     def __init__(self, folder):
         self.folder = Path(folder)
