@@ -75,22 +75,10 @@ def _malformed(result) -> bool:
 class Cache:
     """A folder of verified entries, one per case key, and the locks of the cases in progress.
 
-    Opening a cache removes what killed runs left: temporary files older than 10 minutes and
-    stale locks (`skcable.study.locks`).
-
-    Parameters
-    ----------
-    folder : path
-        The cache folder (created if missing).
-    model : callable
-        The study's model function: its name and code fingerprint are checked on reading.
-
-    Attributes
-    ----------
-    locks : CaseLocks
-        The locks this run holds.
-    fingerprint : str
-        The code fingerprint entries are written with and checked against.
+    ``folder`` is created if missing; ``model`` is the study's model function, whose name and
+    code ``fingerprint`` (the attribute) entries are written with and checked against; ``locks``
+    (a `CaseLocks`) are the locks this run holds. Opening a cache removes what killed runs
+    left: temporary files older than 10 minutes and stale locks (`skcable.study.locks`).
     """
 
     def __init__(self, folder, model: Callable):

@@ -55,21 +55,10 @@ class StudyTable(pd.DataFrame):
 def make_table(
     cases: list[dict], keys: list[str], results: dict, model: str = "", from_cache: int = 0
 ) -> StudyTable:
-    """The `StudyTable` of a study, one row per case in the cases' order (a case listed twice gets
-    two rows).
-
-    Parameters
-    ----------
-    cases : list of dict
-        The cases.
-    keys : list of str
-        Their keys, in the same order.
-    results : dict
-        Key -> result record (`skcable.study.tasks.evaluate`'s shape).
-    model : str
-        The model's name (``attrs["model"]``).
-    from_cache : int
-        Cases read from the cache (``attrs["from_cache"]``).
+    """The `StudyTable` of a study, one row per case of ``cases`` in their order (a case listed
+    twice gets two rows): ``keys`` are their keys in the same order, ``results`` maps key ->
+    result record (`skcable.study.tasks.evaluate`'s shape); ``model`` (the model's name) and
+    ``from_cache`` (cases read from the cache) go to ``attrs``.
     """
     rows = []
     for case, key in zip(cases, keys, strict=True):
