@@ -30,6 +30,8 @@ import threading
 import time
 from pathlib import Path
 
+from skcable.io._atomic import create_text
+
 __all__ = ["HEARTBEAT", "STALE_AFTER", "CaseLocks", "pid_alive"]
 
 #: A lock not refreshed for this long (s) belongs to a run that died.
@@ -64,9 +66,7 @@ def _temp_name(path: Path) -> Path:
 def _create(path: Path, text: str) -> bool:
     """Create ``path`` holding ``text``, whole; False if it exists."""
     temp = _temp_name(path)
-    fd = os.open(temp, os.O_WRONLY | os.O_CREAT | os.O_EXCL, 0o666)
-    with os.fdopen(fd, "w", encoding="utf-8") as handle:
-        handle.write(text)
+    create_text(temp, text)
     try:
         os.link(temp, path)
         return True
@@ -78,11 +78,9 @@ def _create(path: Path, text: str) -> bool:
         with contextlib.suppress(OSError):
             temp.unlink()
     try:
-        fd = os.open(path, os.O_WRONLY | os.O_CREAT | os.O_EXCL, 0o666)
+        create_text(path, text)
     except FileExistsError:
         return False
-    with os.fdopen(fd, "w", encoding="utf-8") as handle:
-        handle.write(text)
     return True
 
 
