@@ -80,8 +80,7 @@ def lines_mesh(lines, n: int = 101) -> meshio.Mesh:
 
 
 def write_lines(lines, path, n: int = 101) -> Path:
-    """Write `lines_mesh` of ``lines`` to ``path`` (``.vtu`` or ``.vtk``), atomically (see
-    `write_mooring`)."""
+    """Write `lines_mesh` of ``lines`` to ``path`` as `write_mooring` writes its mesh."""
     return write_mesh(lambda: lines_mesh(lines, n), path)
 
 
@@ -146,8 +145,6 @@ def mooring_mesh(result, n: int = 101) -> meshio.Mesh:
 
 
 def write_mooring(result, path, n: int = 101) -> Path:
-    """Write `mooring_mesh` of ``result`` to ``path`` (``.vtu`` or ``.vtk``), atomically: the
-    file appears whole or not at all. The path is checked before the mesh is built: a
-    missing parent folder is refused (never created), as is one that takes no new file, with
-    ``InputError("path", ...)`` naming the path as given (`skcable.io._vtk.write_mesh`)."""
+    """Write `mooring_mesh` of ``result`` to ``path`` (``.vtu`` or ``.vtk``), atomically, the path
+    checked before the mesh is built (`skcable.io._vtk.write_mesh`); returns the path."""
     return write_mesh(lambda: mooring_mesh(result, n), path)
