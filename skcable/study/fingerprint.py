@@ -78,18 +78,14 @@ def package_fingerprint() -> str:
     return hashlib.sha256(text.encode()).hexdigest()
 
 
-def _outside_skcable(model: Callable) -> bool:
-    module = str(getattr(model, "__module__", "") or "")
-    return module != "skcable" and not module.startswith("skcable.")
-
-
 def code_fingerprint(model: Callable) -> str:
     """The fingerprint of the code that computes a case of ``model``: `package_fingerprint`,
     combined with the source of ``model`` when it is defined outside skcable and its source can
     be read (64 hexadecimal digits).
     """
     fingerprint = package_fingerprint()
-    if not _outside_skcable(model):
+    module = str(getattr(model, "__module__", "") or "")
+    if module == "skcable" or module.startswith("skcable."):
         return fingerprint
     try:
         source = inspect.getsource(model)
