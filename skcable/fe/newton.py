@@ -226,6 +226,15 @@ def linear_tail(ratios) -> list[float] | None:
     return tail
 
 
+def _convergence(tol, atol, absolute):
+    """The test ``converged(state, norm)``: ``norm < tol``, or ``absolute(state) < atol`` where given."""
+
+    def converged(s, value):
+        return value < tol or (atol > 0 and absolute is not None and absolute(s) < atol)
+
+    return converged
+
+
 def _callback(callback, iteration, current, step):
     if callback is None:
         return
@@ -366,8 +375,7 @@ def newton(
         count[0] += 1
         return assemble(x)
 
-    def converged(s, value):
-        return value < tol or (atol > 0 and absolute is not None and absolute(s) < atol)
+    converged = _convergence(tol, atol, absolute)
 
     x = np.array(x0, dtype=float)
     start = counted(x) if state is None else state
@@ -521,9 +529,7 @@ def _damped(
     callback, nonmonotone, watchdog,
 ) -> NewtonResult:  # fmt: skip
     """`newton`'s damped iteration from ``x0`` (its docstring; the fallbacks aside)."""
-
-    def converged(s, value):
-        return value < tol or (atol > 0 and absolute is not None and absolute(s) < atol)
+    converged = _convergence(tol, atol, absolute)
 
     def stop(message):
         if floor is not None and history[-1] <= floor(state):
@@ -610,9 +616,7 @@ def semismooth(
     ``atol``/``absolute``, ``callback``, ``rejects`` (a rejected step stops the iteration) as in
     `newton`.
     """
-
-    def converged(s, value):
-        return value < tol or (atol > 0 and absolute is not None and absolute(s) < atol)
+    converged = _convergence(tol, atol, absolute)
 
     x = np.array(x0, dtype=float)
     state = assemble(x) if state is None else state
@@ -742,9 +746,7 @@ def minimize(
     step is halved) as in `newton`. The energy of a state is asked for only where a test needs
     it (a Newton step that converges at once needs none): a model may compute it on demand.
     """
-
-    def converged(s, value):
-        return value < tol or (atol > 0 and absolute is not None and absolute(s) < atol)
+    converged = _convergence(tol, atol, absolute)
 
     def finite(value):
         if not np.isfinite(value):
