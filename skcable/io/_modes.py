@@ -32,28 +32,19 @@ UNIT = "_m_per_sqrt_kg"
 
 
 def mode_shape_mesh(result) -> meshio.Mesh:
-    """Static profile and mode shapes of a natural-frequency result as a polyline.
+    """Static profile and mode shapes of a natural-frequency result as a polyline (module docstring).
 
-    Parameters
-    ----------
-    result : NaturalFrequencies
-        Reads ``x``, ``y`` (static profile, m), ``modes_in_plane``,
-        ``modes_out_of_plane`` ((n_modes, n_points) each).
-
-    Returns
-    -------
-    meshio.Mesh
-        Points ``(x, y, 0)``; line cells joining them in order. Point data
-        ``in_plane_<k>_m_per_sqrt_kg`` = ``(0, φ_k, 0)`` and
-        ``out_of_plane_<k>_m_per_sqrt_kg`` = ``(0, 0, φ_k)`` for k = 1..n_modes,
-        mode k of each family being the k-th frequency of ``f_in_plane``, ``f_out_of_plane`` (not stored:
-        meshio writes no field data to VTU/VTK files).
+    Reads ``x``, ``y`` (static profile, m), ``modes_in_plane`` and ``modes_out_of_plane``
+    ((n_modes, n_points) each). Points ``(x, y, 0)``, line cells joining them in order; point
+    data ``in_plane_<k>_m_per_sqrt_kg`` = ``(0, φ_k, 0)`` and ``out_of_plane_<k>_m_per_sqrt_kg``
+    = ``(0, 0, φ_k)`` for k = 1..n_modes, mode k of each family the k-th frequency of
+    ``f_in_plane``, ``f_out_of_plane`` (not stored: meshio writes no field data to VTU/VTK files).
 
     Raises
     ------
     InputError
-        ``result`` lacks one of those attributes, or their shapes disagree, or
-        a value is not finite.
+        ``result`` lacks one of those attributes, or their shapes disagree, or a value is not
+        finite.
     """
     import meshio
 
