@@ -20,7 +20,7 @@ from typing import TYPE_CHECKING
 import numpy as np
 
 from skcable.errors import InputError
-from skcable.io._vtk import write_mesh
+from skcable.io._vtk import polyline, write_mesh
 
 if TYPE_CHECKING:
     import meshio
@@ -58,8 +58,7 @@ def mode_shape_mesh(result) -> meshio.Mesh:
         raise InputError("result", f"must be a natural_frequencies() result ({exc})") from None
     if x.ndim != 1 or x.size < 2 or y.shape != x.shape:
         raise InputError("result", f"x and y must be 1-D of the same size >= 2, got {x.shape}, {y.shape}")
-    points = np.column_stack([x, y, np.zeros_like(x)])
-    segments = np.column_stack([np.arange(x.size - 1), np.arange(1, x.size)])
+    points, cells = polyline(np.column_stack([x, y]))
     point_data = {}
     for name, (shapes, component) in fields.items():
         if shapes.ndim != 2 or shapes.shape[1] != x.size:
@@ -71,7 +70,7 @@ def mode_shape_mesh(result) -> meshio.Mesh:
     for name, value in [("points", points), *point_data.items()]:
         if not np.all(np.isfinite(value)):
             raise InputError("result", f"{name} holds a value that is not finite")
-    return meshio.Mesh(points, [("line", segments)], point_data=point_data)
+    return meshio.Mesh(points, cells, point_data=point_data)
 
 
 def write_mode_shapes(result, path) -> Path:

@@ -36,7 +36,7 @@ VTK_SUFFIXES = (".vtu", ".vtk")
 MAX_POINTS = 10**8
 
 
-def _polyline(points_2d) -> tuple[np.ndarray, list]:
+def polyline(points_2d) -> tuple[np.ndarray, list]:
     """3-component points (z = 0) and the line cells joining them in order."""
     points = np.column_stack([points_2d, np.zeros(len(points_2d))])
     segments = np.column_stack([np.arange(len(points) - 1), np.arange(1, len(points))])
@@ -74,7 +74,7 @@ def cable_mesh(solution, n: int = 201, *, point_data=None) -> meshio.Mesh:
         raise InputError("solution", "write one scene at a time: this solution holds an array of scenes")
     n = whole("n", n, 2, MAX_POINTS)
     samples = solution.samples(n)
-    points, cells = _polyline(samples["xy"])
+    points, cells = polyline(samples["xy"])
     angle = samples["angle"]
     zero = np.zeros_like(angle)
     data = {
@@ -106,7 +106,7 @@ def funicular_mesh(solution) -> meshio.Mesh:
     """
     import meshio
 
-    points, cells = _polyline(solution.nodes)
+    points, cells = polyline(solution.nodes)
     loads = np.zeros((len(points), 3))
     joint = np.asarray(solution.loads, dtype=float)
     if hasattr(solution, "forces"):  # funicular(): load vectors (Px, Py), y up
