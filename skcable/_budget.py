@@ -1,6 +1,6 @@
 """A search's budget: at most ``max_calls`` evaluations and ``time_limit`` seconds, the best point
-remembered, and the `ConvergenceError` of a search that runs out (issue 31: every iteration has a
-bound; what it reached is kept).
+remembered, and the `ConvergenceError` of a search that runs out (every iteration has a bound;
+what it reached is kept).
 
 An iteration calls `Budget.spend` before each evaluation (raising `Budget.Spent`, which no
 ``except ConvergenceError`` of a strategy's alternatives takes) and `Budget.record` after it; the

@@ -14,8 +14,9 @@ from __future__ import annotations
 
 import importlib
 import sys
-import warnings
 from collections.abc import Callable, Iterable, Mapping
+
+from skcable._moved import serve
 
 __all__ = ["attach"]
 
@@ -54,13 +55,7 @@ def attach(
             setattr(sys.modules[package], name, value)
             return value
         if name in moved:
-            path, _, attribute = moved[name].rpartition(".")
-            warnings.warn(
-                f"{package}.{name} is deprecated: use {moved[name]} (the old name goes in the next release)",
-                DeprecationWarning,
-                stacklevel=2,
-            )
-            return getattr(importlib.import_module(path), attribute)
+            return serve(f"{package}.{name}", moved[name])
         raise AttributeError(f"module {package!r} has no attribute {name!r}")
 
     def __dir__() -> list[str]:

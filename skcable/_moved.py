@@ -25,7 +25,7 @@ import types
 import warnings
 from collections.abc import Sequence
 
-__all__ = ["MODULES", "NAMES", "install", "names_moved_from"]
+__all__ = ["MODULES", "NAMES", "install", "names_moved_from", "serve"]
 
 #: old module path -> new module path (a longer old path wins over its prefix)
 MODULES = {
@@ -168,12 +168,20 @@ def names_moved_from(package: str) -> dict[str, str]:
     return {name: f"{new}.{name}" for new, names in NAMES.get(package, {}).items() for name in names}
 
 
-def _deprecated(old: str, new: str) -> None:
+def _deprecated(old: str, new: str, stacklevel: int = 3) -> None:
     warnings.warn(
         f"{old} is deprecated: use {new} (the old name goes in the next release)",
         DeprecationWarning,
-        stacklevel=3,
+        stacklevel=stacklevel,
     )
+
+
+def serve(old: str, new: str) -> object:
+    """The object at the dotted path ``new``, served under its old name ``old`` with a
+    `DeprecationWarning` pointed at the caller of the module ``__getattr__`` that asks."""
+    _deprecated(old, new, stacklevel=4)
+    path, _, attribute = new.rpartition(".")
+    return getattr(importlib.import_module(path), attribute)
 
 
 def new_module_of(old: str) -> str | None:
@@ -191,9 +199,7 @@ def _stand_in(old: str, new: types.ModuleType) -> types.ModuleType:
 
     def __getattr__(name: str) -> object:
         if name in moved:
-            _deprecated(f"{old}.{name}", moved[name])
-            path, _, attribute = moved[name].rpartition(".")
-            return getattr(importlib.import_module(path), attribute)
+            return serve(f"{old}.{name}", moved[name])
         return getattr(new, name)
 
     stand_in.__getattr__ = __getattr__  # type: ignore[method-assign]  # PEP 562 on a module object

@@ -285,7 +285,7 @@ def line_strain(strain, material=None, quantity: str = "strain", where: str = ""
     limit = STRAIN_LIMITS[material]
     if not isinstance(strain, float) and np.size(strain) == 0:
         return None
-    largest = strain if isinstance(strain, float) else float(np.max(strain))
+    largest = _largest(strain)
     if not largest > limit:
         return None
     kind = f"{material}" if material is not None else "line of unknown material (give Segment(material=))"
@@ -371,7 +371,7 @@ def friction(mu, argument: str = "friction") -> None:
     """Warn where a friction coefficient ``mu`` exceeds `MAX_FRICTION`."""
     if not isinstance(mu, float) and np.size(mu) == 0:
         return
-    largest = mu if isinstance(mu, float) else float(np.max(mu))
+    largest = _largest(mu)
     if not largest > MAX_FRICTION:
         return
     _warn(

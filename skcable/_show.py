@@ -34,22 +34,9 @@ LISTED = 8
 
 
 def quantity(name: str, value, unit: str = "", digits: int = 6) -> str:
-    """``name=value unit``: a number, the list of a short array's values, or a long one's range.
-
-    Parameters
-    ----------
-    name : str
-        The attribute's name.
-    value : float or array_like
-        Its value (a boolean or integer prints as a number).
-    unit : str
-        The unit (SI), empty for a dimensionless number.
-    digits : int
-        Significant digits.
-
-    Returns
-    -------
-    str
+    """``name=value unit``: a number (a boolean or integer prints as a number) with ``digits``
+    significant digits, the list of a short array's values, or a long one's range; no unit for a
+    dimensionless number.
     """
     values = np.asarray(value, dtype=float)
     if values.ndim == 0:

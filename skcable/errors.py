@@ -30,12 +30,8 @@ __all__ = [
 
 
 class InputError(ValueError):
-    """An argument is outside the domain where the problem has a solution.
-
-    Attributes
-    ----------
-    argument : str
-        Name of the offending argument, as spelled in the public API.
+    """An argument is outside the domain where the problem has a solution; ``argument`` is its name
+    as spelled in the public API.
     """
 
     def __init__(self, argument: str, reason: str):
@@ -68,12 +64,8 @@ class ConvergenceError(RuntimeError):
 
 
 class NonFiniteError(ConvergenceError):
-    """A term (or a law inside it) produced a value that is not finite; the message names it.
-
-    Attributes
-    ----------
-    source : str
-        What produced it (the term's or the law's repr).
+    """A term (or a law inside it) produced a value that is not finite; the message names it, and
+    ``source`` says what produced it (the term's or the law's repr).
     """
 
     def __init__(self, message: str, source: str = ""):
@@ -82,12 +74,8 @@ class NonFiniteError(ConvergenceError):
 
 
 class PlausibilityWarning(UserWarning):
-    """Data that solve but are unlikely to be meant (a unit slip, say).
-
-    Attributes
-    ----------
-    argument : str
-        Name of the suspicious argument, as spelled in the public API.
+    """Data that solve but are unlikely to be meant (a unit slip, say); ``argument`` is the
+    suspicious argument's name as spelled in the public API.
     """
 
     def __init__(self, argument: str, reason: str):

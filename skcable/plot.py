@@ -248,6 +248,14 @@ def _line_frame(line):
     return np.asarray(start, dtype=float), np.asarray(line.direction, dtype=float)
 
 
+def _numbered_lines(result) -> list:
+    """``(number in the system, line)`` of each line of ``result``; `InputError` if it has none."""
+    lines = list(result.lines)
+    if not lines:
+        raise InputError("result", "has no lines to plot")
+    return list(zip(getattr(result, "line_indices", range(len(lines))), lines, strict=True))
+
+
 def _largest_tension(line) -> float:
     ends = getattr(line, "end_forces", None)
     ends = np.array([line.force_on_anchor, line.force_on_fairlead]) if ends is None else ends
@@ -260,13 +268,9 @@ def mooring_profiles(result, ax=None, *, n: int = 201, depth=None):
     seabed (``result.depth``, or ``depth``) as a line. Reads ``result.lines`` (each line's
     ``profile(n)``, its first end and ``direction``, its end forces)."""
     ax = _axes(ax)
-    lines = list(result.lines)
-    if not lines:
-        raise InputError("result", "has no lines to plot")
     depth = getattr(result, "depth", None) if depth is None else depth
-    numbers = getattr(result, "line_indices", range(len(lines)))
     reach = 0.0
-    for i, line in zip(numbers, lines, strict=True):
+    for i, line in _numbered_lines(result):
         xyz = line.profile(n)
         start, e = _line_frame(line)
         r = (xyz[:, :2] - start[:2]) @ e[:2]
@@ -287,12 +291,8 @@ def mooring_plan(result, ax=None, *, n: int = 101):
     points (circles) and each body's points (joined around its reference point, a cross), in m.
     Reads ``result.lines`` (``profile(n)``), ``result.points`` and ``result.bodies``."""
     ax = _axes(ax)
-    lines = list(result.lines)
-    if not lines:
-        raise InputError("result", "has no lines to plot")
     depth = getattr(result, "depth", None)
-    numbers = getattr(result, "line_indices", range(len(lines)))
-    for i, line in zip(numbers, lines, strict=True):
+    for i, line in _numbered_lines(result):
         xyz = line.profile(n)
         ax.plot(xyz[:, 0], xyz[:, 1], color=f"C{i % 10}", lw=1.2, label=f"line {i}")
         if depth is not None:

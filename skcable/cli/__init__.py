@@ -20,10 +20,8 @@ functions, so that ``skcable --help`` imports no model; shared: ``_args``
 paths), ``_status`` (exit statuses), ``_main`` (the parser and `main`).
 
 Errors are one line on stderr naming the flag, never a traceback; the exit
-status says what happened (`EXIT_STATUS`, also in ``skcable --help``).
-Output paths are checked before computing (a missing parent folder is refused,
-never created; an earlier file is not overwritten without ``--force``) and files
-are written atomically.
+status says what happened (`EXIT_STATUS`, also in ``skcable --help``). Output paths
+are checked before computing and files are written atomically (``_output``).
 """
 
 from skcable.cli._main import main, parser

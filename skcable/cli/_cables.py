@@ -42,11 +42,6 @@ def vtk_path(args):
     return output_file("--vtk", args.vtk, args.force) if args.vtk else None
 
 
-def write_vtk(solution, path) -> str:
-    """The solution's ``to_vtk`` (`skcable.io.write`: atomic, the path checked)."""
-    return str(solution.to_vtk(path))
-
-
 def _closed_form(args) -> int:
     from skcable import cable
     from skcable.cli._status import EXIT_OK
@@ -61,7 +56,7 @@ def _closed_form(args) -> int:
         sol = solver(args.span, args.dh, args.w, **constraint)
     values = {k: float(getattr(sol, k)) for k, _, _ in _FIELDS} | {"residual": sol.residual()}
     if vtk:
-        values["vtk"] = write_vtk(sol, vtk)
+        values["vtk"] = str(sol.to_vtk(vtk))
     if args.json:
         print_json(values)
         return EXIT_OK
@@ -97,7 +92,7 @@ def _funicular(args) -> int:
     if not np.isfinite(np.concatenate([values["T"], values["angles_deg"], np.ravel(values["nodes"])])).all():
         raise RuntimeError("the funicular polygon came out with a non-finite value")
     if vtk:
-        values["vtk"] = write_vtk(sol, vtk)
+        values["vtk"] = str(sol.to_vtk(vtk))
     if args.json:
         print_json(values)
         return EXIT_OK
@@ -105,12 +100,9 @@ def _funicular(args) -> int:
     table([("segment", range(1, n + 1)), ("T [N]", values["T"]), ("angle [deg]", values["angles_deg"])])
     x, y = zip(*values["nodes"], strict=True)
     table([("joint", ["A", *range(1, n), "B"]), ("x [m]", x), ("y [m]", y)])
-    quantities([("residual", values["residual"], "(largest relative residual)")] + _written(values))
+    written = [("vtk", values["vtk"], "")] if "vtk" in values else []
+    quantities([("residual", values["residual"], "(largest relative residual)"), *written])
     return EXIT_OK
-
-
-def _written(values: dict) -> list:
-    return [("vtk", values["vtk"], "")] if "vtk" in values else []
 
 
 def _closed_form_flags(p, name: str) -> None:

@@ -93,43 +93,23 @@ def register(sub, command) -> None:
     )
     p.add_argument("--span", type=finite, required=True, help="horizontal distance A-B [m], > 0 (required)")
     p.add_argument("--dh", type=finite, required=True, help="height of B above A [m] (required)")
-    p.add_argument(
-        "--length",
-        type=finite,
-        nargs="+",
-        required=True,
-        help="unstretched length of each segment from the anchor to the fairlead [m], > 0 (required)",
+    per_segment = (
+        (
+            "--length",
+            "unstretched length of each segment from the anchor to the fairlead [m], > 0 (required)",
+        ),
+        ("--w", "weight in water per unstretched metre [N/m], > 0: one value, or one per segment (required)"),
+        ("--EA", "axial stiffness [N], > 0: one value, or one per segment (required)"),
     )
-    p.add_argument(
-        "--w",
-        type=finite,
-        nargs="+",
-        required=True,
-        help="weight in water per unstretched metre [N/m], > 0: one value, or one per segment (required)",
-    )
-    p.add_argument(
-        "--EA",
-        type=finite,
-        nargs="+",
-        required=True,
-        help="axial stiffness [N], > 0: one value, or one per segment (required)",
-    )
-    p.add_argument(
-        "--clump",
-        type=finite,
-        nargs=2,
-        action="append",
-        metavar=("JOINT", "WEIGHT"),
-        help="clump weight [N] at a joint (0 the anchor, n the fairlead); repeat for more (default: none)",
-    )
-    p.add_argument(
-        "--buoy",
-        type=finite,
-        nargs=2,
-        action="append",
-        metavar=("JOINT", "BUOYANCY"),
-        help="buoy (net upward force [N]) at a joint; repeat for more (default: none)",
-    )
+    for flag, text in per_segment:
+        p.add_argument(flag, type=finite, nargs="+", required=True, help=text)
+    attached = (
+        ("--clump", "WEIGHT", "clump weight [N] at a joint (0 the anchor, n the fairlead); repeat for more "
+         "(default: none)"),
+        ("--buoy", "BUOYANCY", "buoy (net upward force [N]) at a joint; repeat for more (default: none)"),
+    )  # fmt: skip
+    for flag, what, text in attached:
+        p.add_argument(flag, type=finite, nargs=2, action="append", metavar=("JOINT", what), help=text)
     p.add_argument(
         "--seabed",
         type=finite,

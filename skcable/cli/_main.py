@@ -136,7 +136,8 @@ def _run(top, argv) -> tuple[int, str | None, object]:
             warnings.simplefilter("error", PlausibilityWarning)
         return args.handler(args), None, args
     except PlausibilityWarning as exc:  # --strict
-        return EXIT_USAGE, f"{warning_message(args, _Caught(exc))} (--strict)", args
+        caught = warnings.WarningMessage(exc, PlausibilityWarning, "", 0)  # as `main` records one
+        return EXIT_USAGE, f"{warning_message(args, caught)} (--strict)", args
     except Usage as exc:
         return EXIT_USAGE, str(exc), args
     except InputError as exc:
@@ -145,13 +146,6 @@ def _run(top, argv) -> tuple[int, str | None, object]:
         return EXIT_NO_CONVERGENCE, f"no convergence: {exc}", args
     except (KeyboardInterrupt, Exception) as exc:  # noqa: BLE001 - no traceback, see EXIT_STATUS
         return (*_failure(args, exc), args)
-
-
-class _Caught:
-    """A raised `PlausibilityWarning` as `warning_message` reads a caught one."""
-
-    def __init__(self, exc):
-        self.message = exc
 
 
 def main(argv=None) -> int:

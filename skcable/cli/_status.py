@@ -15,8 +15,8 @@ __all__ = [
 ]
 
 EXIT_OK, EXIT_CASES_FAILED, EXIT_USAGE, EXIT_NO_CONVERGENCE, EXIT_ERROR, EXIT_INTERRUPTED = 0, 1, 2, 3, 4, 130
-#: Solved, with plausibility warnings: 5, since 3 already means "did not converge" (issue 31 asked
-#: for 3; a script's test of 3 keeps its meaning).
+#: Solved, with plausibility warnings: 5, since 3 already means "did not converge" (a script's
+#: test of 3 keeps its meaning).
 EXIT_WARNINGS = 5
 #: Exit statuses of ``skcable``.
 EXIT_STATUS = {

@@ -3,6 +3,7 @@ properties and its force-strain curve to rupture (Pino Vidal 2021, ch. 4)."""
 
 from __future__ import annotations
 
+import math
 import sys
 
 from skcable.cli._args import finite, whole
@@ -11,18 +12,18 @@ from skcable.cli._output import output_dir, print_json, quantities
 __all__ = ["curve_files", "mesh_flags", "register", "run_curve", "stopped", "summary", "write_staged"]
 
 _PRESETS = ("steel-9.5", "aluminium-10.1", "steel-12.7", "aluminium-14.3")
-#: The section's printed fields: (key, unit).
-_SECTION_UNITS = {
-    "area_m2": "m²",
-    "centroid_y_m": "m",
-    "centroid_z_m": "m",
-    "principal_angle_deg": "deg",
-    "EA_N": "N",
-    "EI_stick_1_Nm2": "N·m²",
-    "EI_stick_2_Nm2": "N·m²",
-    "EI_slip_1_Nm2": "N·m²",
-    "EI_slip_2_Nm2": "N·m²",
-}
+#: The section's printed fields: (key, unit, value of a `skcable.strand.Section`).
+_SECTION = (
+    ("area_m2", "m²", lambda s: s.area),
+    ("centroid_y_m", "m", lambda s: s.centroid[0]),
+    ("centroid_z_m", "m", lambda s: s.centroid[1]),
+    ("principal_angle_deg", "deg", lambda s: math.degrees(s.principal_angle)),
+    ("EA_N", "N", lambda s: s.EA),
+    ("EI_stick_1_Nm2", "N·m²", lambda s: s.EI_stick[0]),
+    ("EI_stick_2_Nm2", "N·m²", lambda s: s.EI_stick[1]),
+    ("EI_slip_1_Nm2", "N·m²", lambda s: s.EI_slip[0]),
+    ("EI_slip_2_Nm2", "N·m²", lambda s: s.EI_slip[1]),
+)
 #: The curve summary's units, by key.
 _CURVE_UNITS = {
     "K_Leq_N": "N",
@@ -46,23 +47,11 @@ def _strand(args):
 
 
 def _section(args) -> int:
-    import numpy as np
-
     from skcable.cli._status import EXIT_OK
 
     section = _strand(args).section()
-    values = {
-        "area_m2": float(section.area),
-        "centroid_y_m": float(section.centroid[0]),
-        "centroid_z_m": float(section.centroid[1]),
-        "principal_angle_deg": float(np.degrees(section.principal_angle)),
-        "EA_N": float(section.EA),
-        "EI_stick_1_Nm2": float(section.EI_stick[0]),
-        "EI_stick_2_Nm2": float(section.EI_stick[1]),
-        "EI_slip_1_Nm2": float(section.EI_slip[0]),
-        "EI_slip_2_Nm2": float(section.EI_slip[1]),
-    }
-    print_json(values) if args.json else quantities((k, v, _SECTION_UNITS[k]) for k, v in values.items())
+    values = {key: float(value(section)) for key, _, value in _SECTION}
+    print_json(values) if args.json else quantities((key, values[key], unit) for key, unit, _ in _SECTION)
     return EXIT_OK
 
 

@@ -60,13 +60,11 @@ def _run(args) -> int:
         "mass_kg_per_m": result.mass,
         "diameter_m": result.diameter,
         "EI_clamp_Nm2": result.EI_clamp,
-        **({} if result.life_years is None else {"damage_per_year": result.damage_per_year}),
-        **(
-            {}
-            if result.life_years is None or result.life_years == float("inf")
-            else {"life_years": result.life_years}
-        ),
     }
+    if result.life_years is not None:
+        values["damage_per_year"] = result.damage_per_year
+        if result.life_years != float("inf"):
+            values["life_years"] = result.life_years
     print_json(values) if args.json else _print(values)
     return EXIT_OK
 

@@ -111,11 +111,15 @@ class BandedSystem:
             cache[key] = np.ravel_multi_index((e, i, j), (Ke.shape[2], Ke.shape[0], Ke.shape[1]))
         return Ke.transpose(2, 0, 1).ravel().take(cache[key]), slot
 
-    def _free_entries(self, K):
+    def _free_entries(self, K, inside: bool = False):
+        """Free–free ``(i, j, data)`` of ``K`` in banded indices; ``inside``: in the band or `ValueError`."""
         K = sp.coo_matrix(K)
         i, j = self.position[K.row], self.position[K.col]
         keep = (i >= 0) & (j >= 0) & (K.data != 0)
-        return i[keep], j[keep], K.data[keep]
+        i, j = i[keep], j[keep]
+        if inside and np.any(np.abs(i - j) > self.kl):
+            raise ValueError("the matrix couples dofs farther apart than the band")
+        return i, j, K.data[keep]
 
     def fits(self, K) -> bool:
         """Whether the free–free entries of the sparse (N, N) matrix ``K`` lie in the band."""
@@ -125,9 +129,7 @@ class BandedSystem:
     def add_sparse(self, ab: np.ndarray, K) -> np.ndarray:
         """Add the free–free entries of a sparse (N, N) matrix into ``ab``; they must lie in the band
         (`fits`), else `ValueError`."""
-        i, j, data = self._free_entries(K)
-        if np.any(np.abs(i - j) > self.kl):
-            raise ValueError("the matrix couples dofs farther apart than the band")
+        i, j, data = self._free_entries(K, inside=True)
         np.add.at(ab, (self.kl + self.ku + i - j, j), data)
         return ab
 
@@ -161,9 +163,7 @@ class BandedSystem:
     def add_sparse_lower(self, ab: np.ndarray, K) -> np.ndarray:
         """Add the free–free lower triangle of a symmetric sparse (N, N) matrix into ``ab`` (it must
         lie in the band, else `ValueError`)."""
-        i, j, data = self._free_entries(K)
-        if np.any(np.abs(i - j) > self.kl):
-            raise ValueError("the matrix couples dofs farther apart than the band")
+        i, j, data = self._free_entries(K, inside=True)
         lower = i >= j
         np.add.at(ab, (i[lower] - j[lower], j[lower]), data[lower])
         return ab

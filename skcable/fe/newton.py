@@ -226,6 +226,15 @@ def linear_tail(ratios) -> list[float] | None:
     return tail
 
 
+def _convergence(tol, atol, absolute):
+    """The test ``converged(state, norm)``: ``norm < tol``, or ``absolute(state) < atol`` where given."""
+
+    def converged(s, value):
+        return value < tol or (atol > 0 and absolute is not None and absolute(s) < atol)
+
+    return converged
+
+
 def _callback(callback, iteration, current, step):
     if callback is None:
         return
@@ -319,22 +328,16 @@ def newton(
         relaxed step leads nowhere pays one assembly more than without it.
 
     full_steps : {"never", "after", "first"}
-        A second attempt by full Newton steps from ``x0`` (module docstring, *Fallbacks*):
-        ``"after"`` the damped Newton fails, or ``"first"`` (a start near the solution: a warm
-        start), the damped Newton where they fail. None where ``line_search`` is False.
+        The full-step attempt from ``x0`` (module docstring, *Fallbacks*); none where
+        ``line_search`` is False.
     rescue : callable, optional
-        ``rescue(failed)``: the problem's own way on from where the damped Newton stopped
-        (``failed.last``), tried before full steps ``"after"``: a `NewtonResult` whose history
-        starts at that iterate (joined to ``failed.history``), or None where it has none.
-    polish : int
+        ``rescue(failed)`` (*Fallbacks*): a `NewtonResult` whose history starts at
+        ``failed.last`` (joined to ``failed.history``), or None.
+    polish, polish_factor : int, float
         Full Newton steps past ``tol`` at most, while ``norm`` falls below ``polish_factor``
         times the last (a trial one of ``rejects`` stops them).
-    polish_factor : float
-        The fall of ``norm`` a polishing step must give.
     active : callable, optional
-        ``active(state)``: a hashable fingerprint of the non-smooth terms' active sets. Given, the
-        full-step attempt is the active-set iteration `semismooth` (stopped at a cycle of the
-        active sets or where a step within one raises ``norm``), tried also where
+        ``active(state)`` (*Fallbacks*): the full-step attempt is `semismooth`, tried also where
         ``line_search`` is False; its steps are ``x + dx`` (no ``update``, no ``admissible``).
     full_max_iter : int, optional
         Iterations at most of the full-step attempt (default ``max_iter``).
@@ -372,8 +375,7 @@ def newton(
         count[0] += 1
         return assemble(x)
 
-    def converged(s, value):
-        return value < tol or (atol > 0 and absolute is not None and absolute(s) < atol)
+    converged = _convergence(tol, atol, absolute)
 
     x = np.array(x0, dtype=float)
     start = counted(x) if state is None else state
@@ -527,9 +529,7 @@ def _damped(
     callback, nonmonotone, watchdog,
 ) -> NewtonResult:  # fmt: skip
     """`newton`'s damped iteration from ``x0`` (its docstring; the fallbacks aside)."""
-
-    def converged(s, value):
-        return value < tol or (atol > 0 and absolute is not None and absolute(s) < atol)
+    converged = _convergence(tol, atol, absolute)
 
     def stop(message):
         if floor is not None and history[-1] <= floor(state):
@@ -616,9 +616,7 @@ def semismooth(
     ``atol``/``absolute``, ``callback``, ``rejects`` (a rejected step stops the iteration) as in
     `newton`.
     """
-
-    def converged(s, value):
-        return value < tol or (atol > 0 and absolute is not None and absolute(s) < atol)
+    converged = _convergence(tol, atol, absolute)
 
     x = np.array(x0, dtype=float)
     state = assemble(x) if state is None else state
@@ -748,9 +746,7 @@ def minimize(
     step is halved) as in `newton`. The energy of a state is asked for only where a test needs
     it (a Newton step that converges at once needs none): a model may compute it on demand.
     """
-
-    def converged(s, value):
-        return value < tol or (atol > 0 and absolute is not None and absolute(s) < atol)
+    converged = _convergence(tol, atol, absolute)
 
     def finite(value):
         if not np.isfinite(value):

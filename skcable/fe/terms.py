@@ -33,17 +33,9 @@ _T = TypeVar("_T", bound="Term")
 
 
 class Term:
-    """Base of every term of every model (module docstring).
-
-    Attributes
-    ----------
-    symmetric : bool
-        The tangent is symmetric.
-    potential : bool or None
-        The residual is the gradient of the term's energy. None: the term says so by giving
-        an energy (a number, not None) when asked.
-    smooth : bool
-        The residual is continuously differentiable (False: semismooth Newton).
+    """Base of every term of every model: the declarations ``symmetric``, ``smooth`` and
+    ``potential`` (None: the term says so by giving an energy, a number, not None, when asked)
+    mean what the module docstring says.
     """
 
     symmetric: bool = True

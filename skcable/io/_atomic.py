@@ -24,7 +24,7 @@ from pathlib import Path
 
 from skcable.errors import InputError
 
-__all__ = ["TEMP_GLOB", "atomic_path", "writable_dir", "writable_file", "write_text"]
+__all__ = ["TEMP_GLOB", "atomic_path", "create_text", "writable_dir", "writable_file", "write_text"]
 
 #: Glob of the temporary files `atomic_path` creates (left behind only by a kill).
 TEMP_GLOB = ".*.tmp*"
@@ -64,11 +64,16 @@ def write_text(path, text: str) -> Path:
     """Write ``text`` (UTF-8) to ``path`` atomically; returns the path."""
     path = Path(path)
     with atomic_path(path) as temp:
-        # O_EXCL: the random name is ours alone; the umask sets the permissions as for open()
-        fd = os.open(temp, os.O_WRONLY | os.O_CREAT | os.O_EXCL, 0o666)
-        with os.fdopen(fd, "w", encoding="utf-8") as handle:
-            handle.write(text)
+        create_text(temp, text)  # the random name is ours alone
     return path
+
+
+def create_text(path, text: str) -> None:
+    """Create the file ``path`` holding ``text`` (UTF-8); `FileExistsError` if it exists (O_EXCL).
+    The umask sets the permissions, as for ``open()``."""
+    fd = os.open(path, os.O_WRONLY | os.O_CREAT | os.O_EXCL, 0o666)
+    with os.fdopen(fd, "w", encoding="utf-8") as handle:
+        handle.write(text)
 
 
 def _sync_dir(folder: Path) -> None:

@@ -20,41 +20,31 @@ from typing import TYPE_CHECKING
 import numpy as np
 
 from skcable.errors import InputError
-from skcable.io._atomic import atomic_path, writable_file
+from skcable.io._vtk import polyline, write_mesh
 
 if TYPE_CHECKING:
     import meshio
 
 __all__ = ["mode_shape_mesh", "write_mode_shapes"]
 
-_SUFFIXES = (".vtu", ".vtk")
 #: The unit of the mass-normalised shapes (φᵀMφ = 1), at the end of every array's name.
 UNIT = "_m_per_sqrt_kg"
 
 
 def mode_shape_mesh(result) -> meshio.Mesh:
-    """Static profile and mode shapes of a natural-frequency result as a polyline.
+    """Static profile and mode shapes of a natural-frequency result as a polyline (module docstring).
 
-    Parameters
-    ----------
-    result : NaturalFrequencies
-        Reads ``x``, ``y`` (static profile, m), ``modes_in_plane``,
-        ``modes_out_of_plane`` ((n_modes, n_points) each).
-
-    Returns
-    -------
-    meshio.Mesh
-        Points ``(x, y, 0)``; line cells joining them in order. Point data
-        ``in_plane_<k>_m_per_sqrt_kg`` = ``(0, φ_k, 0)`` and
-        ``out_of_plane_<k>_m_per_sqrt_kg`` = ``(0, 0, φ_k)`` for k = 1..n_modes,
-        mode k of each family being the k-th frequency of ``f_in_plane``, ``f_out_of_plane`` (not stored:
-        meshio writes no field data to VTU/VTK files).
+    Reads ``x``, ``y`` (static profile, m), ``modes_in_plane`` and ``modes_out_of_plane``
+    ((n_modes, n_points) each). Points ``(x, y, 0)``, line cells joining them in order; point
+    data ``in_plane_<k>_m_per_sqrt_kg`` = ``(0, φ_k, 0)`` and ``out_of_plane_<k>_m_per_sqrt_kg``
+    = ``(0, 0, φ_k)`` for k = 1..n_modes, mode k of each family the k-th frequency of
+    ``f_in_plane``, ``f_out_of_plane`` (not stored: meshio writes no field data to VTU/VTK files).
 
     Raises
     ------
     InputError
-        ``result`` lacks one of those attributes, or their shapes disagree, or
-        a value is not finite.
+        ``result`` lacks one of those attributes, or their shapes disagree, or a value is not
+        finite.
     """
     import meshio
 
@@ -68,8 +58,7 @@ def mode_shape_mesh(result) -> meshio.Mesh:
         raise InputError("result", f"must be a natural_frequencies() result ({exc})") from None
     if x.ndim != 1 or x.size < 2 or y.shape != x.shape:
         raise InputError("result", f"x and y must be 1-D of the same size >= 2, got {x.shape}, {y.shape}")
-    points = np.column_stack([x, y, np.zeros_like(x)])
-    segments = np.column_stack([np.arange(x.size - 1), np.arange(1, x.size)])
+    points, cells = polyline(np.column_stack([x, y]))
     point_data = {}
     for name, (shapes, component) in fields.items():
         if shapes.ndim != 2 or shapes.shape[1] != x.size:
@@ -81,21 +70,10 @@ def mode_shape_mesh(result) -> meshio.Mesh:
     for name, value in [("points", points), *point_data.items()]:
         if not np.all(np.isfinite(value)):
             raise InputError("result", f"{name} holds a value that is not finite")
-    return meshio.Mesh(points, [("line", segments)], point_data=point_data)
+    return meshio.Mesh(points, cells, point_data=point_data)
 
 
 def write_mode_shapes(result, path) -> Path:
-    """Write `mode_shape_mesh` of ``result`` to ``path`` (``.vtu`` or ``.vtk``), atomically.
-
-    The file appears whole or not at all (`skcable.io._atomic.atomic_path`);
-    returns the path. The path is checked before the mesh is built: a missing parent
-    folder is refused (never created), as is one that takes no new file, with
-    ``InputError("path", ...)`` naming the path as given.
-    """
-    import meshio
-
-    path = writable_file("path", path, _SUFFIXES, create_parents=False)
-    mesh = mode_shape_mesh(result)
-    with atomic_path(path, create_parents=False) as temp:
-        meshio.write(temp, mesh)
-    return path
+    """Write `mode_shape_mesh` of ``result`` to ``path`` (``.vtu`` or ``.vtk``), atomically
+    (`skcable.io._vtk.write_mesh`: the path checked before the mesh is built); returns the path."""
+    return write_mesh(lambda: mode_shape_mesh(result), path)

@@ -20,14 +20,13 @@ import numpy as np
 
 from skcable._checks import whole
 from skcable.errors import InputError
-from skcable.io._atomic import atomic_path, writable_file
+from skcable.io._vtk import write_mesh
 
 if TYPE_CHECKING:
     import meshio
 
 __all__ = ["lines_mesh", "mooring_mesh", "write_lines", "write_mooring"]
 
-_SUFFIXES = (".vtu", ".vtk")
 # VTK's hexahedron: the bottom face counter-clockwise, then the top face
 _BOX = np.array([[0, 0, 0], [1, 0, 0], [1, 1, 0], [0, 1, 0], [0, 0, 1], [1, 0, 1], [1, 1, 1], [0, 1, 1]])
 
@@ -81,15 +80,8 @@ def lines_mesh(lines, n: int = 101) -> meshio.Mesh:
 
 
 def write_lines(lines, path, n: int = 101) -> Path:
-    """Write `lines_mesh` of ``lines`` to ``path`` (``.vtu`` or ``.vtk``), atomically (see
-    `write_mooring`)."""
-    import meshio
-
-    path = writable_file("path", path, _SUFFIXES, create_parents=False)
-    mesh = lines_mesh(lines, n)
-    with atomic_path(path, create_parents=False) as temp:
-        meshio.write(temp, mesh)
-    return path
+    """Write `lines_mesh` of ``lines`` to ``path`` as `write_mooring` writes its mesh."""
+    return write_mesh(lambda: lines_mesh(lines, n), path)
 
 
 class _Cells:
@@ -117,15 +109,8 @@ class _Cells:
 
 
 def mooring_mesh(result, n: int = 101) -> meshio.Mesh:
-    """Lines, seabed patch, bodies and free points of a `MooringEquilibrium` (module docstring).
-
-    Parameters
-    ----------
-    result : MooringEquilibrium
-        A solved mooring system.
-    n : int
-        Points per line, >= 2.
-    """
+    """Lines (``n`` points each, >= 2), seabed patch, bodies and free points of a solved
+    `MooringEquilibrium` (module docstring)."""
     import meshio
 
     points, tension, segments, line_id = _polylines(result.lines, n)
@@ -160,14 +145,6 @@ def mooring_mesh(result, n: int = 101) -> meshio.Mesh:
 
 
 def write_mooring(result, path, n: int = 101) -> Path:
-    """Write `mooring_mesh` of ``result`` to ``path`` (``.vtu`` or ``.vtk``), atomically: the
-    file appears whole or not at all. The path is checked before the mesh is built: a
-    missing parent folder is refused (never created), as is one that takes no new file, with
-    ``InputError("path", ...)`` naming the path as given."""
-    import meshio
-
-    path = writable_file("path", path, _SUFFIXES, create_parents=False)
-    mesh = mooring_mesh(result, n)
-    with atomic_path(path, create_parents=False) as temp:
-        meshio.write(temp, mesh)
-    return path
+    """Write `mooring_mesh` of ``result`` to ``path`` (``.vtu`` or ``.vtk``), atomically, the path
+    checked before the mesh is built (`skcable.io._vtk.write_mesh`); returns the path."""
+    return write_mesh(lambda: mooring_mesh(result, n), path)

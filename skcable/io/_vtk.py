@@ -30,11 +30,13 @@ if TYPE_CHECKING:
 
 __all__ = ["cable_mesh", "funicular_mesh", "write", "write_series"]
 
+#: The formats of the writers of one mesh for ParaView.
+VTK_SUFFIXES = (".vtu", ".vtk")
 #: The most points of a profile (an integer ``n``): beyond, the arrays would not fit in memory.
 MAX_POINTS = 10**8
 
 
-def _polyline(points_2d) -> tuple[np.ndarray, list]:
+def polyline(points_2d) -> tuple[np.ndarray, list]:
     """3-component points (z = 0) and the line cells joining them in order."""
     points = np.column_stack([points_2d, np.zeros(len(points_2d))])
     segments = np.column_stack([np.arange(len(points) - 1), np.arange(1, len(points))])
@@ -72,7 +74,7 @@ def cable_mesh(solution, n: int = 201, *, point_data=None) -> meshio.Mesh:
         raise InputError("solution", "write one scene at a time: this solution holds an array of scenes")
     n = whole("n", n, 2, MAX_POINTS)
     samples = solution.samples(n)
-    points, cells = _polyline(samples["xy"])
+    points, cells = polyline(samples["xy"])
     angle = samples["angle"]
     zero = np.zeros_like(angle)
     data = {
@@ -104,7 +106,7 @@ def funicular_mesh(solution) -> meshio.Mesh:
     """
     import meshio
 
-    points, cells = _polyline(solution.nodes)
+    points, cells = polyline(solution.nodes)
     loads = np.zeros((len(points), 3))
     joint = np.asarray(solution.loads, dtype=float)
     if hasattr(solution, "forces"):  # funicular(): load vectors (Px, Py), y up
@@ -122,9 +124,9 @@ def _suffixes() -> tuple[str, ...]:
     return tuple(meshio.extension_to_filetypes)
 
 
-def write(mesh: meshio.Mesh, path) -> Path:
-    """Write one mesh (format from the suffix: ``.vtu``, ``.vtk``, ...), atomically; returns
-    the path.
+def write_mesh(build, path, suffixes=VTK_SUFFIXES) -> Path:
+    """Check ``path`` (a file with one of ``suffixes``), then write the mesh ``build()`` returns
+    there, atomically; returns the path.
 
     Raises
     ------
@@ -134,10 +136,17 @@ def write(mesh: meshio.Mesh, path) -> Path:
     """
     import meshio
 
-    path = writable_file("path", path, _suffixes(), create_parents=False)
+    path = writable_file("path", path, suffixes, create_parents=False)
+    mesh = build()
     with atomic_path(path, create_parents=False) as temp:
         meshio.write(temp, mesh)
     return path
+
+
+def write(mesh: meshio.Mesh, path) -> Path:
+    """Write one mesh (format from the suffix: ``.vtu``, ``.vtk``, ...), atomically; returns
+    the path, checked as by `write_mesh`."""
+    return write_mesh(lambda: mesh, path, _suffixes())
 
 
 def write_series(meshes, times, path) -> Path:

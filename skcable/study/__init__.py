@@ -11,23 +11,19 @@ summary):
 ``sag`` reports the sag it reached as ``sag_result``).
 
 - **Where it runs.** ``executor="auto"`` (the default) computes serially and moves the rest
-  of the study to a local Dask cluster of processes only once the cases left are predicted
-  to take longer serially than on the cluster, start-up included: a small study is never
-  slower than the serial run. ``executor="dask"`` starts the cluster at once;
-  ``scheduler=`` uses a running ``dask.distributed`` scheduler. Dask and distributed are
-  the optional extra ``skcable[cluster]``; without them a study runs serially and gives
-  the same table.
-- **Never hangs.** Worker processes re-import the program's main script; a script that
-  starts its study outside ``if __name__ == "__main__":``, or a program read from
-  standard input, cannot have them. The study then runs serially (``"auto"``) or on worker
-  threads (``"dask"``), with one `WorkerWarning` saying what to add (`skcable.study.spawn`).
+  of the study to a local Dask cluster of processes only once that is predicted to finish
+  sooner, start-up included: a small study is never slower than the serial run
+  (`skcable.study.executors`). Dask and distributed are the optional extra
+  ``skcable[cluster]``; without them a study runs serially and gives the same table.
+- **Never hangs.** A program whose worker processes cannot re-import it (a script that
+  starts its study outside ``if __name__ == "__main__":``, a program read from standard
+  input) runs serially or on worker threads, with one `WorkerWarning` saying what to add
+  (`skcable.study.spawn`).
 - **Failures** (bad parameters, no convergence) are rows with their error; the study goes on.
-- **The cache** (``cache=``): every finished case is written to ``<cache>/<key>.json`` as
-  it ends, verified when read (schema, checksum, parameters, model and the fingerprint of
-  the code that computed it: an entry made by other code is recomputed with a
-  `CacheWarning`), written atomically; cases in progress are locked so that runs sharing a
-  cache split the work, and a dead run's locks are taken over. An interrupted study resumes
-  (`skcable.study.cache`, `skcable.study.locks`).
+- **The cache** (``cache=``): every finished case is written atomically as it ends and
+  verified when read (an entry made by other code is recomputed with a `CacheWarning`); runs
+  sharing a cache split the work, and an interrupted study resumes (`skcable.study.cache`,
+  `skcable.study.locks`).
 - **Study files** (TOML) describe a study for ``skcable study run`` (`load_study`, `run_file`).
 
 Modules: `tasks` (the model functions, one case evaluated), `cases` (grids, samples, keys),

@@ -51,34 +51,12 @@ _TEMP_AGE = 600.0  # s after which a temporary file is a killed writer's (writes
 
 
 def canonical(value):
-    """``value`` as it reads back from JSON (how parameters and results are compared).
-
-    Parameters
-    ----------
-    value : object
-        JSON-able data (other objects become their ``str``).
-
-    Returns
-    -------
-    object
-        The JSON round trip of ``value``.
-    """
+    """``value`` as it reads back from JSON, other objects as their ``str`` (how cases are compared)."""
     return json.loads(json.dumps(value, sort_keys=True, default=str))
 
 
 def checksum(entry: dict) -> str:
-    """SHA-256 of an entry's fields but ``checksum`` (sorted keys, compact JSON).
-
-    Parameters
-    ----------
-    entry : dict
-        A cache entry.
-
-    Returns
-    -------
-    str
-        64 hexadecimal digits.
-    """
+    """SHA-256 (64 hexadecimal digits) of an entry's fields but ``checksum`` (sorted keys, compact JSON)."""
     body = {k: v for k, v in entry.items() if k != "checksum"}
     text = json.dumps(body, sort_keys=True, separators=(",", ":"))
     return hashlib.sha256(text.encode()).hexdigest()
@@ -97,22 +75,10 @@ def _malformed(result) -> bool:
 class Cache:
     """A folder of verified entries, one per case key, and the locks of the cases in progress.
 
-    Opening a cache removes what killed runs left: temporary files older than 10 minutes and
-    stale locks (`skcable.study.locks`).
-
-    Parameters
-    ----------
-    folder : path
-        The cache folder (created if missing).
-    model : callable
-        The study's model function: its name and code fingerprint are checked on reading.
-
-    Attributes
-    ----------
-    locks : CaseLocks
-        The locks this run holds.
-    fingerprint : str
-        The code fingerprint entries are written with and checked against.
+    ``folder`` is created if missing; ``model`` is the study's model function, whose name and
+    code ``fingerprint`` (the attribute) entries are written with and checked against; ``locks``
+    (a `CaseLocks`) are the locks this run holds. Opening a cache removes what killed runs
+    left: temporary files older than 10 minutes and stale locks (`skcable.study.locks`).
     """
 
     def __init__(self, folder, model: Callable):
@@ -132,36 +98,15 @@ class Cache:
         self.locks.reclaim_all()
 
     def entry_path(self, key: str) -> Path:
-        """The entry file of ``key``: ``<folder>/<key>.json``.
-
-        Parameters
-        ----------
-        key : str
-            A case's key.
-
-        Returns
-        -------
-        Path
-        """
+        """The entry file of ``key``: ``<folder>/<key>.json``."""
         return self.folder / f"{key}.json"
 
     def read(self, key: str, case: dict) -> dict | None:
-        """The verified result of ``case``, or None.
+        """The verified result record of ``case`` (as `skcable.study.tasks.evaluate` returns it), or None.
 
-        Parameters
-        ----------
-        key : str
-            The case's key.
-        case : dict
-            The case's parameters (the entry must hold the same).
-
-        Returns
-        -------
-        dict or None
-            The result record (as `skcable.study.tasks.evaluate` returns it); None when
-            there is no entry or it cannot be used (then a `CacheWarning` names the file and
-            the reason, once per file and run, for the first `WARN_EACH` files; `close`
-            counts the others in one more warning).
+        None when there is no entry or it cannot be used (then a `CacheWarning` names the file and
+        the reason, once per file and run, for the first `WARN_EACH` files; `close` counts the
+        others in one more warning).
         """
         path = self.entry_path(key)
         problem: str | None
@@ -217,17 +162,7 @@ class Cache:
         return entry["result"], None
 
     def write(self, key: str, case: dict, result: dict) -> None:
-        """Write the entry of ``case`` atomically (replacing any older one).
-
-        Parameters
-        ----------
-        key : str
-            The case's key.
-        case : dict
-            The case's parameters.
-        result : dict
-            Its result record (JSON-able, as `skcable.study.tasks.evaluate` returns it).
-        """
+        """Write the entry of ``case`` and its ``result`` record atomically (replacing any older one)."""
         entry = {
             "schema": SCHEMA,
             "schema_version": SCHEMA_VERSION,

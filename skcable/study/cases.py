@@ -113,63 +113,25 @@ def sample(n: int, *, seed: int = 0, fixed: dict | None = None, **ranges) -> lis
 
 
 def model_name(model: Callable) -> str:
-    """``module.qualname`` of a model function (how cache entries name their model).
-
-    Parameters
-    ----------
-    model : callable
-        The model function.
-
-    Returns
-    -------
-    str
-        E.g. ``"skcable.study.cable_solve"``.
-    """
+    """``module.qualname`` of a model function, e.g. ``"skcable.study.cable_solve"`` (how entries name it)."""
     return f"{getattr(model, '__module__', '?')}.{getattr(model, '__qualname__', repr(model))}"
 
 
 def case_key(model: Callable, case: dict) -> str:
-    """The cache name of a case: a hash of the model's name and the case's parameters.
-
-    Parameters
-    ----------
-    model : callable
-        The model function.
-    case : dict
-        The case's parameters.
-
-    Returns
-    -------
-    str
-        16 hexadecimal digits of SHA-1 (``<cache>/<key>.json`` holds the case's result).
+    """The cache name of a case: 16 hexadecimal digits of the SHA-1 of the model's name and the
+    case's parameters (``<cache>/<key>.json`` holds the case's result).
     """
     text = json.dumps([model_name(model), case], sort_keys=True, default=str)
     return hashlib.sha1(text.encode()).hexdigest()[:16]
 
 
 def describe(case: dict) -> str:
-    """A case as ``name=value, ...`` (how a failed case is named to the user).
-
-    Parameters
-    ----------
-    case : dict
-        The case's parameters.
-
-    Returns
-    -------
-    str
-        The parameters in the case's order.
-    """
+    """A case as ``name=value, ...`` in the case's order (how a failed case is named to the user)."""
     return ", ".join(f"{k}={v}" for k, v in case.items())
 
 
 def parameters(model: Callable) -> tuple[list[str] | None, list[str]]:
     """What a model's signature takes.
-
-    Parameters
-    ----------
-    model : callable
-        The model function.
 
     Returns
     -------
@@ -194,15 +156,8 @@ def parameters(model: Callable) -> tuple[list[str] | None, list[str]]:
 def check_cases(model: Callable, cases: list[dict]) -> None:
     """Refuse the cases the model cannot take, before any is computed.
 
-    A misspelt or missing parameter would otherwise fail every case the same way after
-    the study had been scheduled.
-
-    Parameters
-    ----------
-    model : callable
-        The model function.
-    cases : list of dict
-        The cases.
+    A misspelt or missing parameter would otherwise fail every case the same way after the
+    study had been scheduled.
 
     Raises
     ------

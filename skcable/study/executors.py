@@ -1,19 +1,8 @@
-"""Where a study's cases are computed: in this process, on Dask, or serially until Dask pays.
+"""Where a study's cases run: in this process (`Serial`), on Dask (`Dask`), serially until Dask pays (`Auto`).
 
 An executor maps `skcable.study.tasks.evaluate` over a batch of ``(key, case)`` pairs and
-hands each result to a ``finish(key, result)`` callback as it ends:
-
-- `Serial` computes them one after the other in this process;
-- `Dask` computes them on a ``dask.distributed`` cluster: a running scheduler's, or a local
-  cluster started on first use (single-threaded worker processes; worker threads where the
-  program cannot start worker processes, see `skcable.study.spawn`);
-- `Auto` computes serially and moves the rest of the study to a local cluster of processes
-  once the cases left are predicted to take longer serially than on the cluster, start-up
-  included (`dask_pays`). A small study never starts a cluster, so it is never slower
-  than the serial run.
-
-The figures behind `CLUSTER_COST` and `EFFICIENCY` come from ``benchmarks/bench_study.py``
-(docs/studies.md).
+hands each result to a ``finish(key, result)`` callback as it ends. The figures behind
+`CLUSTER_COST` and `EFFICIENCY` come from ``benchmarks/bench_study.py`` (docs/studies.md).
 """
 
 from __future__ import annotations
@@ -64,26 +53,14 @@ class WorkerWarning(RuntimeWarning):
 
 
 def dask_available() -> bool:
-    """Whether ``distributed`` (the optional extra ``skcable[cluster]``) is installed.
-
-    Looks for it without importing it (an import takes about a second, which a serial study
-    need not pay).
-
-    Returns
-    -------
-    bool
+    """Whether ``distributed`` (the optional extra ``skcable[cluster]``) is installed, looked for
+    without importing it (an import takes about a second, which a serial study need not pay).
     """
     return importlib.util.find_spec("distributed") is not None
 
 
 def usable_cores() -> int:
-    """The CPU cores this process may run on (its affinity where the system tells it).
-
-    Returns
-    -------
-    int
-        >= 1.
-    """
+    """The CPU cores (>= 1) this process may run on (its affinity where the system tells it)."""
     try:
         return max(1, len(os.sched_getaffinity(0)))
     except (AttributeError, OSError):
@@ -91,13 +68,7 @@ def usable_cores() -> int:
 
 
 def start_method() -> str:
-    """How a local cluster starts its worker processes (``distributed.worker.multiprocessing-method``).
-
-    Returns
-    -------
-    str
-        ``"spawn"`` (Dask's default), ``"forkserver"`` or ``"fork"``.
-    """
+    """How a local cluster starts workers: ``"spawn"`` (Dask's default), ``"forkserver"`` or ``"fork"``."""
     import dask
     import distributed  # noqa: F401 - registers its configuration
 
@@ -105,16 +76,11 @@ def start_method() -> str:
 
 
 def free_cores() -> int:
-    """The usable cores that other work leaves free, this process's own included.
+    """The usable cores (>= 1) that other work leaves free, this process's own included.
 
     The 1-minute load average counts the runnable processes, this one among them (it is
     computing a case when asked): ``usable_cores() - (load - 1)``, rounded, between 1 and the
     usable cores. Where the system has no load average, the usable cores.
-
-    Returns
-    -------
-    int
-        >= 1.
     """
     cores = usable_cores()
     try:
@@ -125,12 +91,7 @@ def free_cores() -> int:
 
 
 def check_scheduler(scheduler) -> None:
-    """Refuse an address no Dask scheduler can have, before any computing.
-
-    Parameters
-    ----------
-    scheduler : str
-        An address such as ``tcp://host:8786``.
+    """Refuse an address no Dask scheduler can have (such as ``tcp://host:8786``), before any computing.
 
     Raises
     ------
@@ -168,11 +129,6 @@ def dask_pays(case_time: float, left: int, workers: int) -> bool:
         Workers that can run at once (`Auto` gives the cluster's workers, at most
         `free_cores`).
 
-    Returns
-    -------
-    bool
-        True when the cluster's prediction is the shorter.
-
     Examples
     --------
     >>> dask_pays(0.2, 14, 2), dask_pays(0.2, 1000, 2), dask_pays(60.0, 1, 2)
@@ -191,17 +147,8 @@ class Serial:
     description = "serial"
 
     def map(self, model, todo, finish) -> None:
-        """Compute a batch of cases, handing each result on as it ends.
-
-        Parameters
-        ----------
-        model : callable
-            The model function.
-        todo : list of (str, dict)
-            ``(key, case)`` pairs.
-        finish : callable
-            Called as ``finish(key, result)`` after each case, with the record of
-            `skcable.study.tasks.evaluate`.
+        """Compute the ``(key, case)`` pairs of ``todo`` with ``model``, calling ``finish(key, result)``
+        after each case with the record of `skcable.study.tasks.evaluate`.
         """
         for key, case in todo:
             finish(key, tasks.evaluate(model, case))
@@ -211,7 +158,9 @@ class Serial:
 
 
 class Dask:
-    """Computes the cases on a Dask cluster, connected or started on first use.
+    """Computes the cases on a ``dask.distributed`` cluster: a running scheduler's, or a local
+    cluster started on first use (single-threaded worker processes; worker threads where the
+    program cannot start worker processes, see `skcable.study.spawn`).
 
     Parameters
     ----------
@@ -232,15 +181,8 @@ class Dask:
         self.description = f"dask, {where}"
 
     def map(self, model, todo, finish) -> None:
-        """Compute a batch of cases on the cluster, handing each result on as it ends.
-
-        A case whose task is lost (a worker died, the model could not be sent) is recorded
-        as failed with the error, like a case that raised.
-
-        Parameters
-        ----------
-        model, todo, finish
-            As for `Serial.map`.
+        """`Serial.map` on the cluster. A case whose task is lost (a worker died, the model could not
+        be sent) is recorded as failed with the error, like a case that raised.
         """
         from distributed import as_completed
 
@@ -259,16 +201,8 @@ class Dask:
             finish(futures[future], result)
 
     def connect(self):
-        """The client of the cluster, connected (or the local cluster started) on the first call.
-
-        Returns
-        -------
-        distributed.Client
-
-        Raises
-        ------
-        InputError
-            ``scheduler``: no scheduler answers at the address.
+        """The ``distributed.Client`` of the cluster, connected (or the local cluster started) on the
+        first call; `InputError` (``scheduler``) when no scheduler answers at the address.
         """
         if self.client is not None:
             return self.client
@@ -325,9 +259,10 @@ class Auto:
     After each case (from the second on) `dask_pays` is asked with the median time of the
     cases computed so far (the first left out: it carries the imports) and the cluster's
     workers, at most the cores other work leaves free (`free_cores`): on a busy machine the
-    workers would only take turns with the others. Where worker
-    processes cannot start (`skcable.study.spawn.main_problem`) the study stays serial,
-    with one `WorkerWarning` saying what to add.
+    workers would only take turns with the others. A small study never starts a cluster, so
+    it is never slower than the serial run. Where worker processes cannot start
+    (`skcable.study.spawn.main_problem`) the study stays serial, with one `WorkerWarning`
+    saying what to add.
 
     Parameters
     ----------
@@ -349,13 +284,7 @@ class Auto:
         return "serial" if self.dask is None else f"serial, then {self.dask.description}"
 
     def map(self, model, todo, finish) -> None:
-        """Compute a batch of cases, serially until `dask_pays`, then on a local cluster.
-
-        Parameters
-        ----------
-        model, todo, finish
-            As for `Serial.map`.
-        """
+        """`Serial.map`, serially until `dask_pays`, then on a local cluster."""
         todo, done = list(todo), 0
         while done < len(todo) and self.dask is None:
             key, case = todo[done]

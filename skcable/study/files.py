@@ -150,24 +150,13 @@ def load_study(path) -> dict:
 
 
 def check_output(name: str, path) -> Path:
-    """``path`` as a Path if a study table can be written there.
-
-    Parameters
-    ----------
-    name : str
-        The argument's name, for the error (``"output"``, ``"out"``, ...).
-    path : path
-        A ``.csv`` or ``.parquet`` file.
-
-    Returns
-    -------
-    Path
+    """``path`` as a Path if a study table (``.csv`` or ``.parquet``) can be written there.
 
     Raises
     ------
     InputError
-        ``name``: a folder, an unknown extension, an unwritable place, or a ``.parquet``
-        without pyarrow.
+        ``name`` (the argument's name: ``"output"``, ``"out"``, ...): a folder, an unknown
+        extension, an unwritable place, or a ``.parquet`` without pyarrow.
     """
     path = writable_file(name, path, TABLE_SUFFIXES)
     if path.suffix.lower() == ".parquet":
@@ -179,13 +168,7 @@ def check_output(name: str, path) -> Path:
 
 
 def write_table(table: StudyTable, path: Path) -> None:
-    """Write ``table`` to ``path`` atomically: Parquet for ``.parquet``, CSV otherwise (no index).
-
-    Parameters
-    ----------
-    table : StudyTable
-    path : Path
-    """
+    """Write ``table`` to ``path`` atomically: Parquet for ``.parquet``, CSV otherwise (no index)."""
     with atomic_path(path) as temp:
         if path.suffix.lower() == ".parquet":
             table.to_parquet(temp, index=False)
@@ -196,14 +179,13 @@ def write_table(table: StudyTable, path: Path) -> None:
 def run_file(
     path, *, scheduler=None, executor="auto", n_workers=None, progress=True, output=None, cache=None
 ):
-    """Run the study a TOML file describes and write its table.
-
-    Every path is checked before computing; the table is written atomically.
+    """Run the study a TOML file describes (`load_study`) and write its table atomically; every
+    path is checked before computing.
 
     Parameters
     ----------
     path : path
-        The study file (`load_study`).
+        The study file.
     scheduler, executor, n_workers, progress
         As for `skcable.study.run`.
     output : path, optional

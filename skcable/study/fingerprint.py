@@ -38,18 +38,9 @@ DEPENDENCIES = ("numpy", "scipy", "scikit-fem")
 
 
 def tree_fingerprint(root) -> str:
-    """SHA-256 of the files under ``root``: relative paths and contents, in sorted order.
-
-    Parameters
-    ----------
-    root : path
-        A folder (``__pycache__`` folders, ``.pyc`` files and hidden files and folders are
-        left out: they are made from the sources or are not part of them).
-
-    Returns
-    -------
-    str
-        64 hexadecimal digits.
+    """SHA-256 (64 hexadecimal digits) of the files under the folder ``root``: relative paths and
+    contents, in sorted order (``__pycache__`` folders, ``.pyc`` files and hidden files and
+    folders are left out: they are made from the sources or are not part of them).
     """
     root = Path(root)
     digest = hashlib.sha256()
@@ -78,12 +69,8 @@ def _versions() -> str:
 
 @functools.cache
 def package_fingerprint() -> str:
-    """The fingerprint of skcable's own code and of the libraries under its numerics.
-
-    Returns
-    -------
-    str
-        64 hexadecimal digits, computed on the first call and reused by the process.
+    """The fingerprint of skcable's own code and of the libraries under its numerics (64
+    hexadecimal digits, computed on the first call and reused by the process).
     """
     import skcable
 
@@ -91,27 +78,14 @@ def package_fingerprint() -> str:
     return hashlib.sha256(text.encode()).hexdigest()
 
 
-def _outside_skcable(model: Callable) -> bool:
-    module = str(getattr(model, "__module__", "") or "")
-    return module != "skcable" and not module.startswith("skcable.")
-
-
 def code_fingerprint(model: Callable) -> str:
-    """The fingerprint of the code that computes a case of ``model``.
-
-    Parameters
-    ----------
-    model : callable
-        The model function.
-
-    Returns
-    -------
-    str
-        `package_fingerprint`, combined with the source of ``model`` when it is defined
-        outside skcable and its source can be read (64 hexadecimal digits).
+    """The fingerprint of the code that computes a case of ``model``: `package_fingerprint`,
+    combined with the source of ``model`` when it is defined outside skcable and its source can
+    be read (64 hexadecimal digits).
     """
     fingerprint = package_fingerprint()
-    if not _outside_skcable(model):
+    module = str(getattr(model, "__module__", "") or "")
+    if module == "skcable" or module.startswith("skcable."):
         return fingerprint
     try:
         source = inspect.getsource(model)

@@ -30,6 +30,8 @@ import threading
 import time
 from pathlib import Path
 
+from skcable.io._atomic import create_text
+
 __all__ = ["HEARTBEAT", "STALE_AFTER", "CaseLocks", "pid_alive"]
 
 #: A lock not refreshed for this long (s) belongs to a run that died.
@@ -40,18 +42,9 @@ _HOST = socket.gethostname()
 
 
 def pid_alive(pid) -> bool:
-    """Whether a process of this id runs on this host.
-
-    Parameters
-    ----------
-    pid : object
-        A process id as read from a lock (anything else is "not alive").
-
-    Returns
-    -------
-    bool
-        True if the process exists (ours to signal or not); always True on Windows, where
-        ``os.kill(pid, 0)`` would end it (a lock's age decides there).
+    """Whether a process of this id (as read from a lock; anything else is "not alive") runs on
+    this host, ours to signal or not. Always True on Windows, where ``os.kill(pid, 0)`` would
+    end it (a lock's age decides there).
     """
     if os.name == "nt":
         return True
@@ -73,9 +66,7 @@ def _temp_name(path: Path) -> Path:
 def _create(path: Path, text: str) -> bool:
     """Create ``path`` holding ``text``, whole; False if it exists."""
     temp = _temp_name(path)
-    fd = os.open(temp, os.O_WRONLY | os.O_CREAT | os.O_EXCL, 0o666)
-    with os.fdopen(fd, "w", encoding="utf-8") as handle:
-        handle.write(text)
+    create_text(temp, text)
     try:
         os.link(temp, path)
         return True
@@ -87,11 +78,9 @@ def _create(path: Path, text: str) -> bool:
         with contextlib.suppress(OSError):
             temp.unlink()
     try:
-        fd = os.open(path, os.O_WRONLY | os.O_CREAT | os.O_EXCL, 0o666)
+        create_text(path, text)
     except FileExistsError:
         return False
-    with os.fdopen(fd, "w", encoding="utf-8") as handle:
-        handle.write(text)
     return True
 
 
@@ -104,18 +93,7 @@ def _owner(raw: bytes) -> dict | None:
 
 
 class CaseLocks:
-    """The locks one run holds in a cache folder.
-
-    Parameters
-    ----------
-    folder : path
-        The cache folder (it exists).
-
-    Attributes
-    ----------
-    held : dict
-        Key -> token of the locks this run holds.
-    """
+    """The locks one run holds in an existing cache folder; ``held`` maps key -> token of each."""
 
     def __init__(self, folder):
         self.folder = Path(folder)
@@ -124,32 +102,11 @@ class CaseLocks:
         self._heart: threading.Thread | None = None
 
     def path(self, key: str) -> Path:
-        """The lock file of ``key``: ``<folder>/<key>.lock``.
-
-        Parameters
-        ----------
-        key : str
-            A case's key.
-
-        Returns
-        -------
-        Path
-        """
+        """The lock file of ``key``: ``<folder>/<key>.lock``."""
         return self.folder / f"{key}.lock"
 
     def acquire(self, key: str) -> bool:
-        """Lock ``key`` for this run.
-
-        Parameters
-        ----------
-        key : str
-            The case's key.
-
-        Returns
-        -------
-        bool
-            True if this run holds the lock now; False if a live run holds it.
-        """
+        """Lock ``key`` for this run: True if this run holds the lock now, False if a live run holds it."""
         path = self.path(key)
         token = secrets.token_hex(8)
         text = json.dumps({"host": _HOST, "pid": os.getpid(), "token": token})
@@ -163,18 +120,8 @@ class CaseLocks:
         return False
 
     def reclaim(self, path: Path) -> bool:
-        """Remove the lock at ``path`` if it is stale (see the module's notes).
-
-        Parameters
-        ----------
-        path : Path
-            A lock file.
-
-        Returns
-        -------
-        bool
-            True if no lock is left there (it was stale, or it is gone); False if a live
-            run holds it.
+        """Remove the lock at ``path`` if it is stale (see the module's notes): True if no lock is
+        left there (it was stale, or it is gone), False if a live run holds it.
         """
         try:
             seen = path.stat()
@@ -203,13 +150,7 @@ class CaseLocks:
         return owner.get("host") == _HOST and not pid_alive(owner.get("pid"))
 
     def release(self, key: str) -> None:
-        """Remove this run's lock on ``key`` (a lock another run took over is left alone).
-
-        Parameters
-        ----------
-        key : str
-            A case's key.
-        """
+        """Remove this run's lock on ``key`` (a lock another run took over is left alone)."""
         token = self.held.pop(key, None)
         if token is None:
             return

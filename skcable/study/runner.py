@@ -92,21 +92,18 @@ def run(
         Keyword arguments per case (see `grid` and `sample`); a case the model's
         signature cannot take (misspelt or missing parameter) is refused before computing.
     executor : {"auto", "dask", "serial"}
-        ``"serial"``: in this process. ``"dask"``: on a local Dask cluster of ``n_workers``
-        single-threaded processes (threads where the program cannot start processes, with a
-        `WorkerWarning`), or on ``scheduler``'s. ``"auto"`` (default): on ``scheduler``'s
-        cluster if one is given; otherwise serially, moving the rest of the study to a local
-        cluster of processes once the cases left are predicted to take longer serially than
-        on the cluster, start-up included (`skcable.study.executors.dask_pays`), so that a
-        small study is never slower than the serial run.
+        ``"serial"``: in this process (`skcable.study.executors.Serial`). ``"dask"``: on a
+        local Dask cluster of ``n_workers`` single-threaded processes, or on ``scheduler``'s
+        (`skcable.study.executors.Dask`). ``"auto"`` (default): on ``scheduler``'s cluster if
+        one is given; otherwise serially until a local cluster pays
+        (`skcable.study.executors.Auto`).
     scheduler : str, optional
         Address of a running ``dask.distributed`` scheduler (``tcp://host:8786``).
     n_workers : int, optional
         Workers of the local cluster (default 2), >= 1; not with ``scheduler``.
     cache : path, optional
         Folder of finished cases (`skcable.study.cache`): finished cases are read, not
-        rerun (an interrupted study resumes); an entry made by other code is recomputed with
-        a `CacheWarning`; runs sharing the folder split the cases between them.
+        rerun (an interrupted study resumes); runs sharing the folder split the cases.
     progress : bool
         A progress bar (stderr); with Dask, the dashboard link is printed too.
 

@@ -63,19 +63,8 @@ def _is_guard(test: ast.expr) -> str | None:
 
 
 def guarded(source: str, line: int) -> bool:
-    """Whether ``line`` of ``source`` lies in the ``__name__ == "__main__"`` branch of an ``if``.
-
-    Parameters
-    ----------
-    source : str
-        Python source text.
-    line : int
-        A line number (1-based).
-
-    Returns
-    -------
-    bool
-        True inside the guarded branch; False elsewhere, or if the source does not parse.
+    """Whether ``line`` (1-based) of ``source`` lies in the ``__name__ == "__main__"`` branch of an
+    ``if`` (False elsewhere, or if the source does not parse).
 
     Examples
     --------
@@ -115,17 +104,8 @@ def _unguarded_line(main, path: str) -> int | None:
 
 
 def main_problem(method: str = "spawn") -> str | None:
-    """Why worker processes cannot start from this program, or None if they can.
-
-    Parameters
-    ----------
-    method : str
-        The multiprocessing start method of the workers (``"fork"`` re-imports nothing).
-
-    Returns
-    -------
-    str or None
-        One sentence saying what is wrong and what to add.
+    """Why worker processes started by ``method`` (``"fork"`` re-imports nothing) cannot start from
+    this program, in one sentence saying what is wrong and what to add; None if they can.
     """
     main = sys.modules.get("__main__")
     path = getattr(main, "__file__", None)
@@ -153,16 +133,10 @@ def _unguarded(main, path: str) -> str | None:
 
 
 def reimporting_main() -> bool:
-    """Whether this process is a spawned worker re-importing the program's main module.
-
-    A study started then is the parent's, started again by its unguarded script: it must
-    not run.
-
-    Returns
-    -------
-    bool
-        True while module code run as ``__mp_main__`` (the name multiprocessing gives the
-        main module it re-imports in a child) is on the stack.
+    """Whether this process is a spawned worker re-importing the program's main module: module
+    code run as ``__mp_main__`` (the name multiprocessing gives the main module it re-imports in
+    a child) is on the stack. A study started then is the parent's, started again by its
+    unguarded script: it must not run.
     """
     return any(
         frame.f_code.co_name == "<module>" and frame.f_globals.get("__name__") == "__mp_main__"

@@ -23,17 +23,13 @@ __all__ = ["StudyTable", "make_table"]
 
 
 class StudyTable(pd.DataFrame):
-    """A study's table: a pandas DataFrame that prints as a short summary.
+    """A study's table (module docstring): a pandas DataFrame that prints as a short summary.
 
     ``repr`` (what a prompt shows) is `summary`: a header with the number of cases, ok and
     failed, then at most 10 rows and 8 columns, without ``time_s`` and ``key``. The full
-    table: ``table.to_string()``; everything else is the DataFrame's.
-
-    Attributes
-    ----------
-    attrs : dict
-        ``model`` (the model's name), ``from_cache`` (cases read from the cache) and
-        ``executor`` (where the others ran) after `skcable.study.run`.
+    table: ``table.to_string()``; ``attrs`` holds ``model`` (the model's name),
+    ``from_cache`` (cases read from the cache) and ``executor`` (where the others ran) after
+    `skcable.study.run`.
     """
 
     @property
@@ -41,12 +37,7 @@ class StudyTable(pd.DataFrame):
         return StudyTable
 
     def summary(self) -> str:
-        """The header line, at most 10 rows and 8 columns, and a line giving the table's size.
-
-        Returns
-        -------
-        str
-        """
+        """The header line, at most 10 rows and 8 columns, and a line giving the table's size."""
         model = str(self.attrs.get("model", "")).rsplit(".", 1)[-1]
         head = f"skcable study{' of ' + model if model else ''}: {len(self)} cases"
         if "status" in self.columns:
@@ -64,24 +55,10 @@ class StudyTable(pd.DataFrame):
 def make_table(
     cases: list[dict], keys: list[str], results: dict, model: str = "", from_cache: int = 0
 ) -> StudyTable:
-    """The table of a study, one row per case in the cases' order.
-
-    Parameters
-    ----------
-    cases : list of dict
-        The cases (a case listed twice gets two rows).
-    keys : list of str
-        Their keys, in the same order.
-    results : dict
-        Key -> result record (`skcable.study.tasks.evaluate`'s shape).
-    model : str
-        The model's name (``attrs["model"]``).
-    from_cache : int
-        Cases read from the cache (``attrs["from_cache"]``).
-
-    Returns
-    -------
-    StudyTable
+    """The `StudyTable` of a study, one row per case of ``cases`` in their order (a case listed
+    twice gets two rows): ``keys`` are their keys in the same order, ``results`` maps key ->
+    result record (`skcable.study.tasks.evaluate`'s shape); ``model`` (the model's name) and
+    ``from_cache`` (cases read from the cache) go to ``attrs``.
     """
     rows = []
     for case, key in zip(cases, keys, strict=True):

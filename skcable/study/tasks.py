@@ -180,56 +180,25 @@ def _plain(name: str, value):
 
 
 def first_line(exc: BaseException) -> str:
-    """``"<ExceptionType>: <message>"``, cut at the first line break (how a table records an error).
-
-    Parameters
-    ----------
-    exc : BaseException
-        The error.
-
-    Returns
-    -------
-    str
-        One line.
-    """
+    """``"<ExceptionType>: <message>"``, cut at the first line break (how a table records an error)."""
     return (f"{type(exc).__name__}: {exc}".splitlines() or [type(exc).__name__])[0]
 
 
 def failure(error: str, time_s: float = 0.0) -> dict:
-    """The record of a case that failed with ``error`` (the shape `evaluate` returns).
-
-    Parameters
-    ----------
-    error : str
-        One line naming the error.
-    time_s : float
-        Seconds spent before the failure.
-
-    Returns
-    -------
-    dict
-        ``{"outputs": {}, "status": "failed", "error": error, "time_s": time_s}``.
-    """
+    """The record of a case that failed with ``error`` after ``time_s`` s (the shape `evaluate` returns)."""
     return {"outputs": {}, "status": "failed", "error": error, "time_s": time_s}
 
 
 def evaluate(model: Callable[..., dict], case: dict) -> dict:
     """Run ``model(**case)`` once; never raises.
 
-    Parameters
-    ----------
-    model : callable
-        A model function: keyword arguments in, a dict of scalars (number, string, bool or
-        None) out.
-    case : dict
-        The keyword arguments.
-
     Returns
     -------
     dict
         ``outputs`` (the model's dict, numpy scalars unwrapped), ``status`` (``"ok"``, or
-        ``"failed"`` when the model raised or returned something else than scalars),
-        ``error`` (the error's first line, ``""`` when ok) and ``time_s`` (wall seconds).
+        ``"failed"`` when the model raised or returned something else than scalars: number,
+        string, bool or None), ``error`` (the error's first line, ``""`` when ok) and
+        ``time_s`` (wall seconds).
     """
     start = time.perf_counter()
     try:
