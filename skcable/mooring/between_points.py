@@ -41,7 +41,7 @@ from skcable._show import Shown
 from skcable.errors import InputError
 from skcable.mooring.segments import LineSolution
 
-__all__ = ["EndTensions", "LineBetween", "StraightBetween", "plane_of", "segment_table"]
+__all__ = ["EndTensions", "LineBetween", "StraightBetween", "plane_of"]
 
 
 class _WithEndForces(Protocol):
@@ -105,27 +105,6 @@ class StraightBetween(EndTensions):
 
     def profile(self, n: int = 101) -> np.ndarray:
         return self.profile_with_tension(n)[0]
-
-
-def segment_table(length, w, EA, T_lower, T_upper, grounded_length=0.0):
-    """The tension table of a line between two points, one row per segment from a to b:
-    ``segment, length, w, EA, T_lower, T_upper, T_max, grounded_length`` (SI; ``T_lower`` towards
-    a)."""
-    import pandas as pd
-
-    T_lower, T_upper = np.asarray(T_lower, dtype=float), np.asarray(T_upper, dtype=float)
-    return pd.DataFrame(
-        {
-            "segment": np.arange(len(T_lower)),
-            "length": length,
-            "w": w,
-            "EA": EA,
-            "T_lower": T_lower,
-            "T_upper": T_upper,
-            "T_max": np.maximum(T_lower, T_upper),
-            "grounded_length": grounded_length,
-        }
-    )
 
 
 class LineBetween(Shown):

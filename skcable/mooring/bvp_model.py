@@ -27,7 +27,8 @@ import numpy as np
 
 from skcable.errors import InputError
 from skcable.mooring.jacobians import of_own
-from skcable.mooring.plane_line import PlaneLine, on_seabed_tolerance, segment_tensions
+from skcable.mooring.plane_line import PlaneLine, on_seabed_tolerance
+from skcable.mooring.segments.solution import segment_table
 
 __all__ = ["BVPLineView", "Resolver", "SeabedPlane", "SeabedSlope", "solve_bvp_line"]
 
@@ -97,7 +98,7 @@ class BVPLineView:
             float(np.max(self.T_of_s(np.linspace(a + inset, b - inset, 64))))
             for a, b in zip(s0, s1, strict=True)
         ]
-        return segment_tensions(arrays, T_low, T_up, T_max)
+        return segment_table(arrays.L, arrays.w, arrays.EA, T_low, T_up, T_max=T_max)
 
     def __repr__(self):
         return f"BVPLineView({self.bvp!r})"

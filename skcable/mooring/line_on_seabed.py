@@ -23,7 +23,7 @@ import numpy as np
 
 from skcable._checks import real, require
 from skcable.errors import InputError
-from skcable.mooring.segments.solution import tension_table
+from skcable.mooring.segments.solution import segment_table
 from skcable.results import ProfileMixin
 
 __all__ = ["LyingLine", "lying_line"]
@@ -98,7 +98,10 @@ class LyingLine(ProfileMixin):
         stretched_length, grounded_length`` (SI), as `skcable.mooring.LineSolution.tensions`."""
         arrays = self.line.arrays
         T = np.full(arrays.n, self.H)
-        return tension_table(arrays, T, T, T, np.diff(self._x_joint), arrays.L)
+        return segment_table(
+            arrays.L, arrays.w, arrays.EA, T, T,
+            H_upper=T, stretched_length=np.diff(self._x_joint), grounded_length=arrays.L,
+        )  # fmt: skip
 
     def __repr__(self):
         state = "slack" if self.heap else "taut"

@@ -13,9 +13,10 @@ import math
 import numpy as np
 
 from skcable.errors import ConvergenceError
+from skcable.mooring.segments.solution import segment_table
 from skcable.results import ProfileMixin
 
-__all__ = ["MODELS", "ON_SEABED", "PlaneLine", "on_seabed_tolerance", "segment_tensions", "uniform"]
+__all__ = ["MODELS", "ON_SEABED", "PlaneLine", "on_seabed_tolerance", "uniform"]
 
 #: The models a line between two ends may take.
 MODELS = ("free", "grounded", "grounded (slope)", "touchdown between the ends", "on the seabed", "bvp")
@@ -123,7 +124,7 @@ class PlaneLine(ProfileMixin):
             stop = start + float(self.solution.length_on_seabed)
             s0, s1 = arrays.s_joint[:-1], arrays.s_joint[1:]
             grounded = np.clip(np.minimum(s1, stop) - np.maximum(s0, start), 0.0, None)
-        out = segment_tensions(arrays, T_low, T_up, T_max, grounded)
+        out = segment_table(arrays.L, arrays.w, arrays.EA, T_low, T_up, T_max=T_max, grounded_length=grounded)
         if not self.reversed:
             return out
         out = out.iloc[::-1].reset_index(drop=True)
@@ -136,20 +137,6 @@ class PlaneLine(ProfileMixin):
             f"PlaneLine(span={self.span:g}, dh={self.dh:g}, model={self.model!r}: H_A={self.H_A:.9g}, "
             f"V_A={self.V_A:.9g}, H_B={self.H_B:.9g}, V_B={self.V_B:.9g})"
         )
-
-
-def segment_tensions(arrays, T_lower, T_upper, T_max, grounded_length=None):
-    """The per-segment table of a line's tensions (a `pandas.DataFrame`, one row per segment of
-    ``arrays``, the line's `skcable.mooring.segments.arrays` from its lower end): ``segment,
-    length, w, EA`` (SI), ``T_lower``, ``T_upper``, ``T_max`` (N) and, where given,
-    ``grounded_length`` (m)."""
-    import pandas as pd
-
-    columns = {"segment": np.arange(arrays.n), "length": arrays.L, "w": arrays.w, "EA": arrays.EA}
-    columns.update(T_lower=T_lower, T_upper=T_upper, T_max=T_max)
-    if grounded_length is not None:
-        columns["grounded_length"] = grounded_length
-    return pd.DataFrame(columns)
 
 
 def uniform(variant) -> bool:

@@ -39,9 +39,10 @@ import numpy as np
 
 from skcable._checks import nonnegative, positive, scalar
 from skcable.errors import InputError
-from skcable.mooring.between_points import StraightBetween, segment_table
+from skcable.mooring.between_points import StraightBetween
 from skcable.mooring.body import RigidBody, skew
 from skcable.mooring.rod_waterline import waterline_shares
+from skcable.mooring.segments.solution import segment_table
 
 __all__ = ["Rod", "RodBetween", "RodBody", "Tie", "TieBetween", "rod_frame"]
 
@@ -151,11 +152,13 @@ class RodBetween(StraightBetween):
         return self.chord(n), np.full(int(n), self.axial_force)
 
     def tensions(self):
-        """One row (`segment_table`): the rod's length, its weight in water per length where
-        submerged, its axial stiffness times its length, and its axial force at both ends."""
+        """One row (`skcable.mooring.segments.solution.segment_table`): the rod's length, its
+        weight in water per length where submerged, its axial stiffness times its length, and its
+        axial force at both ends."""
         rod, N = self.line, abs(self.axial_force)
         w = rod.mass * rod.g - rod.buoyancy_per_length
-        return segment_table([rod.length], [w], [rod.axial_stiffness * rod.length], [N], [N])
+        EA = rod.axial_stiffness * rod.length
+        return segment_table([rod.length], [w], [EA], [N], [N], T_max=[N], grounded_length=0.0)
 
     def __repr__(self):
         return (
@@ -289,4 +292,4 @@ class TieBetween(StraightBetween):
 
     def tensions(self):
         T = self.max_end_tension
-        return segment_table([0.0], [0.0], [0.0], [T], [T])
+        return segment_table([0.0], [0.0], [0.0], [T], [T], T_max=[T], grounded_length=0.0)

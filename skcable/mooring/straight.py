@@ -47,7 +47,8 @@ import math
 import numpy as np
 
 from skcable.errors import InputError
-from skcable.mooring.between_points import StraightBetween, segment_table
+from skcable.mooring.between_points import StraightBetween
+from skcable.mooring.segments.solution import segment_table
 
 __all__ = ["VerticalBetween", "vertical_between", "weightless_between"]
 
@@ -180,10 +181,13 @@ class VerticalBetween(StraightBetween):
         return self._blocks[i][j].copy()
 
     def tensions(self):
-        """One row per segment from a to b (`segment_table`; ``T_lower`` towards a)."""
+        """One row per segment from a to b (`skcable.mooring.segments.solution.segment_table`;
+        ``T_lower`` towards a; ``T_max`` the larger end's: a straight segment's tension is
+        monotonic along it)."""
         arrays = self.line.arrays
         low, up = zip(*self._tensions, strict=True) if self._tensions else ((), ())
-        return segment_table(arrays.L, arrays.w, arrays.EA, low, up)
+        T_max = np.maximum(np.asarray(low, dtype=float), np.asarray(up, dtype=float))
+        return segment_table(arrays.L, arrays.w, arrays.EA, low, up, T_max=T_max, grounded_length=0.0)
 
     def profile_with_tension(self, n: int = 101) -> tuple[np.ndarray, np.ndarray]:
         """``(points (n, 3), tension (n,))`` from a to b, the points on the straight chord (a folded

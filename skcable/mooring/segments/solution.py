@@ -29,7 +29,7 @@ from skcable.cable.closure import positions, stretched_length
 from skcable.errors import ConvergenceError, InputError
 from skcable.results import ProfileMixin
 
-__all__ = ["CLOSURE_TOLERANCE", "LineSolution", "tension_table"]
+__all__ = ["CLOSURE_TOLERANCE", "LineSolution", "segment_table"]
 
 #: A solution closes its scene where the closure misses the end by less than this over the chord:
 #: every path of `Line.solve` (warm, cold, bracketed, batched, with nonlinear laws) checks it.
@@ -426,27 +426,25 @@ class LineSolution(ProfileMixin):
         ``T_lower``/``T_upper`` are the tensions at the segment's ends towards A and B,
         ``H_upper`` its horizontal tension at the upper end (``H`` where suspended, less
         the friction below the touchdown)."""
-        return tension_table(self.line.arrays, *self._segment_table)
+        arrays = self.line.arrays
+        T_lower, T_upper, H_upper, stretched, grounded = self._segment_table
+        return segment_table(
+            arrays.L, arrays.w, arrays.EA, T_lower, T_upper,
+            H_upper=H_upper, stretched_length=stretched, grounded_length=grounded,
+        )  # fmt: skip
 
 
-def tension_table(arrays, T_lower, T_upper, H_upper, stretched, grounded):
-    """The table of `LineSolution.tensions` for a line of `LineArrays` ``arrays``, from its
-    per-segment columns (N, N, N, m, m)."""
+def segment_table(length, w, EA, T_lower, T_upper, **columns):
+    """The per-segment tension table of a line (a `pandas.DataFrame`, one row per segment from
+    its anchor, or end a): ``segment``, ``length`` (m), ``w`` (N/m), ``EA`` (N), ``T_lower`` and
+    ``T_upper`` (N, at the segment's ends towards the anchor and the fairlead), then ``columns``
+    in their order (SI: ``T_max``, ``H_upper`` in N; ``stretched_length``, ``grounded_length`` in
+    m)."""
     import pandas as pd
 
-    return pd.DataFrame(
-        {
-            "segment": np.arange(arrays.n),
-            "length": arrays.L,
-            "w": arrays.w,
-            "EA": arrays.EA,
-            "T_lower": T_lower,
-            "T_upper": T_upper,
-            "H_upper": H_upper,
-            "stretched_length": stretched,
-            "grounded_length": grounded,
-        }
-    )
+    T_lower, T_upper = np.asarray(T_lower, dtype=float), np.asarray(T_upper, dtype=float)
+    table = {"segment": np.arange(T_lower.size), "length": length, "w": w, "EA": EA}
+    return pd.DataFrame({**table, "T_lower": T_lower, "T_upper": T_upper, **columns})
 
 
 def _out(value):
