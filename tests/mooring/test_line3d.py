@@ -525,3 +525,21 @@ def test_held_at_its_active_set_a_grounded_line_returns_to_its_solution(dim):
     positions, tensions = slice(0, dim * N), slice(dim * N, None)
     for part in (positions, tensions):
         np.testing.assert_allclose(got[part], z[part], rtol=0, atol=1e-9 * np.abs(z[part]).max())
+
+
+def test_the_line_in_space_checks_its_terms_as_the_plane_line_does():
+    """One check of the cable terms (`skcable.mooring.line_bvp.inputs.terms_of`): a number or a
+    list holding one is an `InputError` naming ``terms`` (a number raised numpy's TypeError
+    before), and one term alone is taken as the list of it, in the plane and in space alike."""
+    from skcable import mooring
+    from skcable.bvp.terms import Buoyancy
+
+    for bad in (5.0, [5.0]):
+        with pytest.raises(InputError, match="terms"):
+            solve_line_bvp_3d((0.0, 0.0, 0.0), (500.0, 0.0, 100.0), [(600.0, 1000.0, 5e8)], terms=bad)
+        with pytest.raises(InputError, match="terms"):
+            mooring.solve_line_bvp(500.0, 100.0, [(600.0, 1000.0, 5e8)], terms=bad)
+    term = Buoyancy(0.01)
+    one = solve_line_bvp_3d((0.0, 0.0, 0.0), (500.0, 0.0, 100.0), [(600.0, 1000.0, 5e8)], terms=term)
+    listed = solve_line_bvp_3d((0.0, 0.0, 0.0), (500.0, 0.0, 100.0), [(600.0, 1000.0, 5e8)], terms=[term])
+    np.testing.assert_array_equal(one.force_on_fairlead, listed.force_on_fairlead)

@@ -15,10 +15,10 @@ import numpy as np
 from skcable import _plausible
 from skcable._checks import nonnegative, point, positive, scalar, whole
 from skcable.bvp.current import Current, current_of
-from skcable.bvp.terms import CableTerm
 from skcable.errors import InputError
 from skcable.mooring.axial import StrainLaw, strain_law
 from skcable.mooring.bathymetry import Bathymetry, bathymetry_of
+from skcable.mooring.line_bvp.inputs import terms_of
 
 __all__ = ["LineSegment", "Scene3D", "attachments_of", "checked_options", "point", "scene", "segments_of"]
 
@@ -157,14 +157,6 @@ class Scene3D:
         return [(float(self.joints[k]), P) for k, P in self.attachments]
 
 
-def _terms(terms) -> tuple:
-    out = tuple(terms)
-    for term in out:
-        if not isinstance(term, CableTerm):
-            raise InputError("terms", f"each term is a cable term (skcable.bvp.CableTerm), got {term!r}")
-    return out
-
-
 def checked_options(segments, options: dict) -> dict:
     """The arguments of `solve_line_bvp_3d` but the ends, checked: the segments (`segments_of`),
     the attachments, seabed, friction, current, density, terms and solver options."""
@@ -184,7 +176,7 @@ def checked_options(segments, options: dict) -> dict:
         friction=friction,
         current=current,
         rho_water=scalar("rho_water", positive("rho_water", options["rho_water"])),
-        terms=_terms(options["terms"]),
+        terms=terms_of(options["terms"]),
         n_elements=whole("n_elements", options["n_elements"], 1),
         fit_touchdown=whole("fit_touchdown", options["fit_touchdown"], 0, 10),
         rtol=scalar("rtol", positive("rtol", options["rtol"])),
