@@ -309,9 +309,11 @@ def test_bad_segments_are_named():
         sloped_seabed_catenary(SPAN, DH, W, EA, length=L, seabed_slope=0.5)
 
 
-def test_generalized_jacobian_agrees_with_central_differences():
-    # a curved seabed (b'' != 0), friction, some nodes active and some not; the perturbation
-    # keeps every node on its side of the switch λ = c·g, where F is smooth
+@pytest.mark.parametrize("slack_end", [0.0, 60.0])
+def test_generalized_jacobian_agrees_with_central_differences(slack_end):
+    # a curved seabed (b'' != 0), friction (with a slack stretch: there friction holds the
+    # nodes' own tangential weight), some nodes active and some not; the perturbation keeps
+    # every node on its side of the switch λ = c·g, where F is smooth
     from skcable.mooring.line_bvp.contact import seabed_of
     from skcable.mooring.line_bvp.inputs import segments_of
     from skcable.mooring.line_bvp.problem import LineProblem
@@ -321,8 +323,10 @@ def test_generalized_jacobian_agrees_with_central_differences():
         return -2.0 + 1.5 * np.sin(x / 40.0)
 
     problem = LineProblem(
-        300.0, 60.0, segments_of([(340.0, 500.0, 2e8)]), [], seabed_of(bed, None, 300.0), 0.15, 12
-    )
+        300.0, 60.0, segments_of([(340.0, 500.0, 2e8)]), [], seabed_of(bed, None, 300.0), 0.15, 12,
+        slack_end=slack_end,
+    )  # fmt: skip
+    assert (problem.contact_rows.held is not None) == (slack_end > 0)
     z = closed_form_start(problem)
     rng = np.random.default_rng(5)
     z = z + 0.01 * rng.standard_normal(z.size)

@@ -6,7 +6,8 @@ on a seabed of any shape with Coulomb friction. One concern per module:
 
 - `inputs`: the segments (`BVPSegment`), the point loads and every argument, checked into a
   `Scene`;
-- `contact`: the seabed and the semismooth (primal–dual active set) contact rows;
+- `contact`: the seabed and the semismooth (primal–dual active set) contact rows with Coulomb
+  friction, one set for the plane line and the line in space;
 - `mesh`: uniform, graded (equidistributed turning), fitted and nested meshes;
 - `discrete`: what the plane line and the line in space (`skcable.mooring.line_bvp_3d`) write
   once, parametrised by the dimension: the line law (section forces, loads, axial laws, residual

@@ -103,7 +103,7 @@ class DiscreteLine:
 
     #: 2 (the plane) or 3 (space)
     dim = 2
-    #: the seabed's contact rows (``ContactRows`` in the plane, ``ContactRows3D`` in space), or None
+    #: the seabed's contact rows (`skcable.mooring.line_bvp.contact.ContactRows`), or None
     contact_rows: Any = None
     load_scale = 1.0
     length_scale = 1.0
@@ -185,6 +185,17 @@ class DiscreteLine:
         inside = np.empty_like(s_t)
         inside[dofs] = s_t[dofs] + 1e-9 * (self.middle[None, :] - s_t[dofs])
         return np.clip(inside, 0.0, self.L)
+
+    def along_line(self, inner) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        """``(nodes, prev, next)``: the position nodes ``inner`` (dofs of one coordinate) sorted
+        along the line, and each one's neighbours along it (the chord of the contact rows'
+        sliding direction)."""
+        s = self.basis.doflocs[0]
+        order = np.argsort(s, kind="stable")
+        rank = np.empty_like(order)
+        rank[order] = np.arange(order.size)
+        nodes = inner[np.argsort(s[inner], kind="stable")]
+        return nodes, order[rank[nodes] - 1], order[rank[nodes] + 1]
 
     def contact_stiffness(self, nodes) -> tuple[np.ndarray, np.ndarray]:
         """``(c_i, h_i)`` of the position nodes ``nodes``: the complementarity function's constant

@@ -95,7 +95,9 @@ class LineProblem(DiscreteLine):
             self.start_weight = (self.weight - float(np.sum(f[1] * self.assembly.dx))) / self.L
         self.length_scale = self.L
         self.stiffness = self.load_scale / self.L  # c of the complementarity function (N/m)
-        self.contact = inner if seabed is not None else np.zeros(0, dtype=int)
+        self.contact, self.contact_prev, self.contact_next = self.along_line(
+            inner if seabed is not None else np.zeros(0, dtype=int)
+        )
         self.external = self.load_vector()
         self._contact_rows()
 
@@ -159,15 +161,14 @@ class LineProblem(DiscreteLine):
         )
         self.contact_rows = None
         if self.contact.size:
+            # on the slack stretch friction holds the node's own tangential weight
+            held = None
+            if self.slack_end > 0:
+                held = (1.0 - self.sliding_share) * self.external[N + self.contact]
             self.contact_rows = ContactRows(
-                self.contact,
-                N,
-                seabed,
-                self.stiffness_nodes,
-                self.mu_nodes,
-                self.sliding_share,
-                self.external[N + self.contact],
-            )
+                self.contact, self.contact_prev, self.contact_next, N, 2, seabed,
+                self.stiffness_nodes, self.mu_nodes, held,
+            )  # fmt: skip
 
     # --- for skcable.fe.check_tangent ---------------------------------------------------------
     def tangent_check_state(self):
@@ -198,7 +199,8 @@ class LineProblem(DiscreteLine):
         return z[self.N + i] - self.seabed(z[i])
 
     def contact_terms(self, z, R0):
-        """Per contact node: slope, curvature, gap, multiplier λ, active flag, R⁰ rows."""
+        """Per contact node (`skcable.mooring.line_bvp.contact.ContactTerms`): gradient, Hessian,
+        gap, multiplier λ, active flag, R⁰, chord."""
         assert self.contact_rows is not None, "a line without a seabed has no contact terms"
         return self.contact_rows.terms(z, R0)
 

@@ -93,25 +93,26 @@ class LineBVPSolution(ProfileMixin):
         self.friction = problem.friction
         H_A, V_A, H_B, V_B = (float(v) for v in problem.reactions(state.R0))
         self.H, self.V_B, self.H_B = H_B, V_B, H_B
-        i, N = problem.contact, problem.N
-        order = np.argsort(problem.basis.doflocs[0][i], kind="stable")
-        i = i[order]
+        i, N = problem.contact, problem.N  # along the line
         self.contact_s = problem.basis.doflocs[0][i]
         self.contact_xy = np.column_stack([z[i], z[N + i]])
         self.anchor_on_seabed = problem.anchor_on_seabed
         if i.size:
-            H_A, V_A = self._contact(order, H_A, V_A)
+            H_A, V_A = self._contact(H_A, V_A)
         else:
             self.normal_force, self.gap = np.zeros(0), np.zeros(0)
             self.contact_force, self.in_contact = np.zeros((0, 2)), np.zeros(0, dtype=bool)
         self.H_A, self.V_A = H_A, V_A
 
-    def _contact(self, order, H_A, V_A):
+    def _contact(self, H_A, V_A):
         """The seabed's forces per contact node (the anchor's node first, when A lies on the
         seabed, whose push the seabed takes from the anchor); the anchor's reaction."""
         problem = self.problem
-        assert problem.contact_rows is not None and self.state.terms is not None, "a line on a seabed"
-        bp, gap, lam, active, mu, held = problem.contact_rows.forces(self.state.terms, order)
+        rows, terms = problem.contact_rows, self.state.terms
+        assert rows is not None and terms is not None, "a line on a seabed"
+        normal, friction = rows.forces(terms)
+        bp, gap, lam, active = terms.slope, terms.gap, terms.lam, terms.active
+        force = (normal + friction).T
         if self.anchor_on_seabed:
             # the seabed under the anchor takes the anchor's downward push, friction included
             slope = float(problem.seabed.slope(np.array([0.0]))[0])
@@ -121,11 +122,9 @@ class LineBVPSolution(ProfileMixin):
             self.contact_xy = np.vstack([[0.0, 0.0], self.contact_xy])
             bp, gap = np.concatenate([[slope], bp]), np.concatenate([[0.0], gap])
             lam, active = np.concatenate([[lam_a], lam]), np.concatenate([[lam_a > 0], active])
-            mu, held = np.concatenate([[mu_a], mu]), np.concatenate([[0.0], held])
+            force = np.vstack([lam_a * np.array([-slope - mu_a, 1.0 - mu_a * slope]), force])
         self.normal_force = lam * np.sqrt(1.0 + bp * bp)
-        self.contact_force = lam[:, None] * np.column_stack([-bp - mu, 1.0 - mu * bp]) + held[
-            :, None
-        ] * np.column_stack([np.ones_like(bp), bp])
+        self.contact_force = force
         self.gap, self.in_contact = gap, active
         return H_A, V_A
 

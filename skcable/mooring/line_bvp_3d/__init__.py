@@ -12,9 +12,9 @@ Coulomb friction along the line. One concern per module:
 - `inputs`: the segments (`LineSegment`), the attachments and every argument, checked into a
   `Scene3D`;
 - `loads`: the current's drag on the segments as a cable term (`SegmentDrag`);
-- `contact`: the seabed's semismooth contact rows in 3-D;
 - `problem`: one discrete line in space — its properties, the current's drag and the analyst's
-  terms bound to it, and its seabed's contact rows, on the line law of
+  terms bound to it, and its seabed's contact rows (the plane line's,
+  `skcable.mooring.line_bvp.contact`, in three dimensions), on the line law of
   `skcable.mooring.line_bvp.discrete` (the plane line's, in three dimensions);
 - `pointwise`: the fields at any arc length, through each element's own basis;
 - `start`: the closed form in the vertical plane of the ends;
@@ -26,7 +26,7 @@ Coulomb friction along the line. One concern per module:
 - `solution`: `LineBVP3DSolution`;
 - `model`: `solve_line_bvp_3d` and `LineBVP3D`, a line model.
 
-Data flow one way: ``inputs → driver → (start, problem ⇄ contact, loads, pointwise) →
+Data flow one way: ``inputs → driver → (start, problem, loads, pointwise) →
 (`skcable.mooring.line_bvp.iterate`) →
 fitting → solution → (check, stiffness)``.
 """

@@ -7,7 +7,7 @@ discontinuous P1 on the unstretched arc length ``s ∈ [0, L]``. The distributed
 cable terms (`skcable.bvp.terms`), each bound to this line; each segment has its axial law
 ``ε(T)`` (`skcable.mooring.axial`); the point loads ``P_k`` (downward: clump weights ``P > 0``,
 buoys ``P < 0``) lie at joints; the contact rows are
-`skcable.mooring.line_bvp_3d.contact`'s.
+`skcable.mooring.line_bvp.contact`'s (the plane line's, in space).
 """
 
 from __future__ import annotations
@@ -17,8 +17,8 @@ from functools import cached_property
 import numpy as np
 
 from skcable.bvp.terms import CableState
+from skcable.mooring.line_bvp.contact import ContactRows
 from skcable.mooring.line_bvp.discrete import DiscreteLine
-from skcable.mooring.line_bvp_3d.contact import ContactRows3D
 from skcable.mooring.line_bvp_3d.loads import SegmentDrag
 from skcable.mooring.line_bvp_3d.pointwise import LinePoints
 
@@ -90,24 +90,13 @@ class LineProblem3D(DiscreteLine):
         state = CableState.at(r, self.assembly.x, a, np.full(share.shape, float(tension)))
         return sum((term.forces(state).f for term in self.terms), np.zeros_like(r))
 
-    def _contact_rows(self, inner) -> ContactRows3D:
+    def _contact_rows(self, inner) -> ContactRows:
         """The contact rows of the inner position nodes, each with its neighbours along the line
         and ``c_i`` (the load per length times the node's element length over the mean one)."""
-        s = self.basis.doflocs[0]
-        order = np.argsort(s, kind="stable")
-        rank = np.empty_like(order)
-        rank[order] = np.arange(order.size)
-        nodes = inner[np.argsort(s[inner], kind="stable")]
+        nodes, prev, next_ = self.along_line(inner)
         stiffness = self.contact_stiffness(nodes)[0]
-        return ContactRows3D(
-            nodes,
-            order[rank[nodes] - 1],
-            order[rank[nodes] + 1],
-            self.N,
-            self.seabed,
-            stiffness,
-            self.friction,
-        )
+        mu = np.full(nodes.size, self.friction)
+        return ContactRows(nodes, prev, next_, self.N, 3, self.seabed, stiffness, mu)
 
     def reactions(self, R0):
         """``(S_A, S_B)``: the supports' reactions on the line at A and B (N, 3-vectors)."""

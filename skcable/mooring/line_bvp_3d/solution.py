@@ -32,7 +32,7 @@ from skcable._checks import real, require, whole
 from skcable._show import Shown
 from skcable.bvp.terms import CableState, term_outputs
 from skcable.errors import ConvergenceError
-from skcable.mooring.line_bvp_3d.contact import anchor_split_3d, sliding_direction
+from skcable.mooring.line_bvp.contact import anchor_split_3d, sliding_direction
 from skcable.mooring.line_bvp_3d.stiffness import FairleadStiffness, fairlead_stiffness_3d
 
 __all__ = ["LineBVP3DSolution"]
