@@ -6,7 +6,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field
 from functools import cached_property
-from typing import TYPE_CHECKING, NamedTuple
+from typing import Any, NamedTuple, Protocol
 
 import numpy as np
 
@@ -16,8 +16,22 @@ from skcable._show import Shown, counted, quantity
 from skcable.errors import ConvergenceError, InputError
 from skcable.fe.continuation import StepControl
 
-if TYPE_CHECKING:  # pragma: no cover
-    from skcable.strand.fe.model import StrandModel
+
+class PulledModel(Protocol):
+    """What a capacity curve asks of its model (`skcable.strand.fe.StrandModel` has it; named
+    here, not imported, so that the curve does not import the model that imports it)."""
+
+    EA: float
+    layout: Any
+    strand: Any
+    options: Any
+
+    def initial_state(self) -> Any: ...
+
+    def solve(self, *args, **kwargs) -> Any: ...
+
+    def twin(self) -> PulledModel: ...
+
 
 __all__ = ["CapacityCurve", "Restick", "StepResult", "StrandLayout", "capacity_curve", "restick"]
 
@@ -263,7 +277,7 @@ class CapacityCurve(Shown):
         Step halvings the solver needed.
     """
 
-    model: StrandModel
+    model: PulledModel
     strain: np.ndarray
     force: np.ndarray
     slip_fraction: np.ndarray

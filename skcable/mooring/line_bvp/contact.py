@@ -44,7 +44,7 @@ callable ``seabed_slope`` if given, central differences of ``b`` otherwise, and 
 **The anchor on the seabed.** With the anchor on the seabed, A is a contact node as well: the
 seabed takes its push ``λ_A = max(n_A·R⁰_A/|n_A|², 0)`` (friction included) and the anchor the
 rest, so that a line grounded at A has ``V_A = 0`` and ``H_A = H - μ·(normal forces)`` as in
-Jonkman's closed form (`anchor_split`, `anchor_split_3d`).
+Jonkman's closed form (`anchor_split`, in the plane and in space).
 """
 
 from __future__ import annotations
@@ -64,7 +64,6 @@ __all__ = [
     "ContactTerms",
     "Seabed",
     "anchor_split",
-    "anchor_split_3d",
     "seabed_of",
     "sliding_direction",
 ]
@@ -417,22 +416,17 @@ class ContactRows:
         return normal, friction
 
 
-def anchor_split(H_A, V_A, slope, mu_a):
-    """The anchor's reaction ``(H_A, V_A)`` (N) with the seabed under it taking its push,
-    friction ``mu_a`` included: ``λ_A = max(n·R⁰_A / |n|², 0)``, ``R⁰_x(A) = -H_A``; returns
-    ``(H_A, V_A, λ_A)``."""
-    lam_a = max((V_A + slope * H_A) / (1.0 + slope * slope), 0.0)
-    return H_A + lam_a * (-slope - mu_a), V_A - lam_a * (1.0 - mu_a * slope), lam_a
+def anchor_split(S, grad, chord, mu):
+    """The anchor's reaction on the line ``S`` (dim,) (N) with the seabed under it taking its
+    push, in the plane (``dim = 2``) or in space (3): ``λ_A = max(n·S/|n|², 0)`` with
+    ``n = (−∇b, 1)``, friction ``μ N_A`` against ``ŝ`` (``chord`` projected on the seabed: the
+    chord from the anchor to its neighbour; in the plane ``(1, b')``, towards the fairlead).
 
-
-def anchor_split_3d(S, grad, chord, mu):
-    """The anchor's reaction on the line ``S`` (3,) (N) with the seabed under it taking its push:
-    ``λ_A = max(n·S/|n|², 0)``, friction ``μ N_A`` against ``ŝ`` (the chord from the anchor to
-    its neighbour projected on the seabed); returns ``(S − λ_A (n − μ|n| ŝ), λ_A (n − μ|n| ŝ))``:
-    what the anchor and the seabed under it carry."""
-    n = np.array([-grad[0], -grad[1], 1.0])
+    Returns ``(S − C, C, λ_A)``, ``C = λ_A (n − μ|n| ŝ)``: what the anchor carries, what the
+    seabed under it carries (N), and the multiplier."""
+    n = np.array([*(-np.asarray(grad, dtype=float)), 1.0])
     nu = float(n @ n)
     lam = max(float(n @ S) / nu, 0.0)
     s_hat = sliding_direction(np.asarray(chord, dtype=float)[:, None], n[:, None])[0][:, 0]
     seabed = lam * (n - mu * np.sqrt(nu) * s_hat)
-    return S - seabed, seabed
+    return S - seabed, seabed, lam

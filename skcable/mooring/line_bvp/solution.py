@@ -4,7 +4,6 @@ from __future__ import annotations
 
 from collections.abc import Callable
 from functools import cached_property
-from typing import TYPE_CHECKING
 
 import numpy as np
 from scipy.optimize import brentq
@@ -18,9 +17,6 @@ from skcable.mooring.line_bvp.loads import term_load
 from skcable.mooring.line_bvp.problem import LineProblem, LineState
 from skcable.mooring.line_bvp.stiffness import fairlead_stiffness
 from skcable.results import ProfileMixin
-
-if TYPE_CHECKING:  # pragma: no cover
-    from skcable.mooring.line_bvp.model import LineBVP
 
 __all__ = ["LineBVPSolution"]
 
@@ -82,7 +78,7 @@ class LineBVPSolution(ProfileMixin):
     #: the solver that made it; `stiffness` needs it where the line has a slack stretch)
     slack_solver: Callable[[float], LineBVPSolution] | None = None
     #: the `LineBVP` model that solved it (None from `solve_line_bvp`)
-    model: LineBVP | None = None
+    model: object | None = None
 
     def __init__(self, problem: LineProblem, z, history, state: LineState):
         self.problem, self.dofs, self.state = problem, z, state
@@ -117,12 +113,13 @@ class LineBVPSolution(ProfileMixin):
             # the seabed under the anchor takes the anchor's downward push, friction included
             slope = float(problem.seabed.slope(np.array([0.0]))[0])
             mu_a = problem.friction if problem.slack_end == 0 else 0.0  # the anchor holds a slack stretch
-            H_A, V_A, lam_a = anchor_split(H_A, V_A, slope, mu_a)
+            S_A, seabed, lam_a = anchor_split(np.array([-H_A, V_A]), [slope], (1.0, slope), mu_a)
+            H_A, V_A = -float(S_A[0]), float(S_A[1])
             self.contact_s = np.concatenate([[0.0], self.contact_s])
             self.contact_xy = np.vstack([[0.0, 0.0], self.contact_xy])
             bp, gap = np.concatenate([[slope], bp]), np.concatenate([[0.0], gap])
             lam, active = np.concatenate([[lam_a], lam]), np.concatenate([[lam_a > 0], active])
-            force = np.vstack([lam_a * np.array([-slope - mu_a, 1.0 - mu_a * slope]), force])
+            force = np.vstack([seabed, force])
         self.normal_force = lam * np.sqrt(1.0 + bp * bp)
         self.contact_force = force
         self.gap, self.in_contact = gap, active

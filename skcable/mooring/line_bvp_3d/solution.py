@@ -32,7 +32,7 @@ from skcable._checks import real, require, whole
 from skcable._show import Shown
 from skcable.bvp.terms import CableState, term_outputs
 from skcable.errors import ConvergenceError
-from skcable.mooring.line_bvp.contact import anchor_split_3d, sliding_direction
+from skcable.mooring.line_bvp.contact import anchor_split
 from skcable.mooring.line_bvp_3d.stiffness import FairleadStiffness, fairlead_stiffness_3d
 
 __all__ = ["LineBVP3DSolution"]
@@ -85,7 +85,7 @@ class LineBVP3DSolution(Shown):
             bed, a = problem.seabed, self.anchor
             grad = bed.gradient(a[0], a[1])
             chord = self.xyz(np.array(min(problem.L, self.mesh_size))) - a
-            S_A, self.anchor_seabed_force = anchor_split_3d(S_A, grad, chord, problem.friction)
+            S_A, self.anchor_seabed_force, _ = anchor_split(S_A, grad, chord, problem.friction)
         self.force_on_anchor, self.force_on_fairlead = -S_A, -S_B
         self.T_A, self.T_B = float(np.linalg.norm(S_A)), float(np.linalg.norm(S_B))
 
@@ -113,12 +113,9 @@ class LineBVP3DSolution(Shown):
         i = rows.nodes
         self.contact_s = problem.basis.doflocs[0][i]
         self.contact_xyz = np.column_stack([z[i], z[N + i], z[2 * N + i]])
-        g = terms.grad
-        n = np.array([-g[0], -g[1], np.ones_like(g[0])])
-        size = np.sqrt(np.sum(n * n, axis=0))
-        s_hat = sliding_direction(terms.chord, n)[0]
-        self.normal_force = terms.lam * size
-        self.contact_force = (terms.lam * n - problem.friction * self.normal_force * s_hat).T
+        normal, friction = rows.forces(terms)
+        self.normal_force = terms.lam * np.sqrt(terms.friction[1])  # λ|n|, signed off the seabed
+        self.contact_force = (normal + friction).T
         self.gap, self.in_contact = terms.gap, terms.active
         self.s_touchdown = float(self.contact_s[self.in_contact].max()) if self.in_contact.any() else 0.0
 
