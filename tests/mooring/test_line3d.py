@@ -543,3 +543,65 @@ def test_the_line_in_space_checks_its_terms_as_the_plane_line_does():
     one = solve_line_bvp_3d((0.0, 0.0, 0.0), (500.0, 0.0, 100.0), [(600.0, 1000.0, 5e8)], terms=term)
     listed = solve_line_bvp_3d((0.0, 0.0, 0.0), (500.0, 0.0, 100.0), [(600.0, 1000.0, 5e8)], terms=[term])
     np.testing.assert_array_equal(one.force_on_fairlead, listed.force_on_fairlead)
+
+
+def test_on_one_mesh_a_weight_along_the_line_and_a_load_inside_a_segment_are_the_plane_lines():
+    """One segment type (`skcable.mooring.line_bvp.inputs.LineSegment`, the plane line's
+    `BVPSegment` too): a weight that varies along the arc length (a callable) and a point load
+    inside a segment (``point_loads``, by arc length) in space, in the plane x-z, on the plane
+    line's uniform mesh, give the plane line's end forces to round-off (measured 2.3e-14 of the
+    largest)."""
+    from skcable import mooring
+
+    assert mooring.BVPSegment is LineSegment
+
+    def w(s):
+        return 900.0 + 0.3 * s
+
+    segments = [(300.0, w, 5e8), (250.0, 400.0, 2e8), (300.0, w, 5e8)]
+    common = dict(point_loads=[(420.0, 2e4)], n_elements=48, fit_touchdown=0)
+    plane = mooring.solve_line_bvp(700.0, 250.0, segments, **common)
+    space = solve_line_bvp_3d((0.0, 0.0, 0.0), (700.0, 0.0, 250.0), segments, **common)
+    np.testing.assert_array_equal(plane.problem.mesh.p, space.problem.mesh.p)
+    want = np.array([plane.H_A, -plane.V_A, -plane.H_B, -plane.V_B])
+    got = np.array([*space.force_on_anchor[[0, 2]], *space.force_on_fairlead[[0, 2]]])
+    np.testing.assert_allclose(got, want, rtol=0, atol=1e-13 * np.abs(want).max())
+    # statics: the ends carry the whole weight, ∫ w ds over the outer segments by hand, the clump
+    outer = 900.0 * 600.0 + 0.3 * (300.0**2 + 850.0**2 - 550.0**2) / 2.0
+    np.testing.assert_allclose(-(got[1] + got[3]), outer + 250.0 * 400.0 + 2e4, rtol=1e-12)
+
+
+def test_a_clump_resting_on_a_sloping_seabed_solves_in_the_plane_as_in_space():
+    """A clump weight inside a segment, resting on a seabed that slopes along the line, on 256
+    elements: the plane line's uniform start hangs above the seabed there (3 cm at its lowest)
+    and its one level stagnated (a `ConvergenceError` before); it now goes by nested meshes, as
+    the line in space does, and the two lines' end forces (graded meshes in the plane, uniform
+    in space) agree to their discretisation errors (measured 1.4e-10 of the largest)."""
+    from skcable import mooring
+
+    segments = [(300.0, 1000.0, 5e8), (250.0, 400.0, 2e8), (300.0, 1000.0, 5e8)]
+    common = dict(point_loads=[(420.0, 2e4)], n_elements=256)
+    plane = mooring.solve_line_bvp(800.0, 150.0, segments, seabed=lambda x: -0.02 * x, **common)
+    space = solve_line_bvp_3d(
+        (0.0, 0.0, 0.0), (800.0, 0.0, 150.0), segments, seabed=Plane(0.0, (-0.02, 0.0)), **common
+    )
+    assert 420.0 < plane.s_touchdown  # the clump rests on the seabed
+    want = np.array([plane.H_A, -plane.V_A, -plane.H_B, -plane.V_B])
+    got = np.array([*space.force_on_anchor[[0, 2]], *space.force_on_fairlead[[0, 2]]])
+    np.testing.assert_allclose(got, want, rtol=0, atol=1e-8 * np.abs(want).max())
+
+
+def test_the_plane_line_refuses_what_only_the_line_in_space_models_by_name():
+    """The plane line has no current and a constant EA: a segment with drag coefficients or a
+    strain law is refused naming ``segments``; a `ConstantEA` is its number (the same line)."""
+    from skcable import mooring
+    from skcable.mooring.axial import ConstantEA
+
+    with pytest.raises(InputError, match="segments.*current"):
+        mooring.solve_line_bvp(500.0, 100.0, [LineSegment(600.0, 1000.0, 5e8, 0.1, 1.2)])
+    with pytest.raises(InputError, match="segments.*strain law"):
+        law = StrainFunction(lambda T: T / 5e8, lambda T: 0 * T + 2e-9)
+        mooring.LineBVP([LineSegment(600.0, 1000.0, law)])
+    by_law = mooring.solve_line_bvp(500.0, 100.0, [(600.0, 1000.0, ConstantEA(5e8))])
+    by_number = mooring.solve_line_bvp(500.0, 100.0, [(600.0, 1000.0, 5e8)])
+    assert (by_law.H, by_law.V_B) == (by_number.H, by_number.V_B)

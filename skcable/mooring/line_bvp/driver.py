@@ -4,9 +4,10 @@ r"""The continuation that takes a line from its closed-form start to the converg
 each solve (`skcable.mooring.line_bvp.iterate.solve_on`) starts from the last stage's solution:
 
 1. **Levels** (`LineBVPSolver.solve`). A mesh of more than ``2·COARSE`` elements whose start
-   touches the seabed is reached by nested solves, from `COARSE`-odd elements up, each finished
-   solution starting the doubled mesh (the active set moves by a few nodes per Newton iteration,
-   so a fine mesh does not find its contact set from the coarse start). A level that fails from
+   touches the seabed (or, on a seabed, whose one level fails) is reached by nested solves, from
+   `COARSE`-odd elements up, each finished solution starting the doubled mesh (the active set
+   moves by a few nodes per Newton iteration, so a fine mesh does not find its contact set from
+   the coarse start). A level that fails from
    the coarser solution is solved from scratch; a coarse level that fails even so is skipped
    (the next level starts from scratch); the finest level's failure is final.
 2. **First solve** (`LineBVPSolver.first`): frictionless, on a mesh graded by the closed-form
@@ -266,12 +267,15 @@ class LineBVPSolver:
         return None
 
     def levels(self) -> LineBVPSolution:
-        """One level, or nested levels (module docstring, 1), checked."""
+        """One level, or nested levels (module docstring, 1), checked: nested first where the
+        start touches the seabed, else where one level fails (the uniform start above a sloping
+        seabed while the line's clump weight rests on it), as the line in space does."""
         n, bed = self.scene.n_elements, self.scene.seabed
         if n > 2 * COARSE and bed is not None:
             probe = self.problem(n, mu=0.0)
             if np.any(probe.gaps(closed_form_start(probe)) <= 0):
                 return self.checked(self.nested(n))
+            return self.checked(first_converged([lambda: self.level(n), lambda: self.nested(n)]))
         return self.checked(self.level(n))
 
     def nested(self, n) -> LineBVPSolution:

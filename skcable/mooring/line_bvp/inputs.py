@@ -1,11 +1,12 @@
 """The scene of one line BVP, checked: segments, point loads, seabed, friction, cable terms and
 the Newton options.
 
-`BVPSegment` is one segment; `scene` checks every argument of `solve_line_bvp` (each refusal an
-`skcable.InputError` naming the argument as the public API spells it) and returns a `Scene`,
-which the solver (`skcable.mooring.line_bvp.driver`) takes as it is. `terms_of` checks the cable
-terms (`skcable.bvp.terms`), `newton_options_of` the Newton options (`skcable.fe.NewtonOptions`,
-with the line BVP's own defaults, `LINE_OPTIONS`).
+`LineSegment` (also named `BVPSegment`) is one segment, in the plane and in space; `scene`
+checks every argument of `solve_line_bvp` (each refusal an `skcable.InputError` naming the
+argument as the public API spells it) and returns a `Scene`, which the solver
+(`skcable.mooring.line_bvp.driver`) takes as it is. `terms_of` checks the cable terms
+(`skcable.bvp.terms`), `newton_options_of` the Newton options (`skcable.fe.NewtonOptions`, with
+the line BVP's own defaults, `LINE_OPTIONS`).
 """
 
 from __future__ import annotations
@@ -20,12 +21,13 @@ from skcable._checks import nonnegative, positive, real, require, scalar, whole
 from skcable.bvp.terms import CableTerm
 from skcable.errors import InputError
 from skcable.fe import NewtonOptions
-from skcable.mooring.axial import ConstantEA
+from skcable.mooring.axial import ConstantEA, StrainLaw, strain_law
 from skcable.mooring.line_bvp.contact import Seabed, seabed_of
 
 __all__ = [
     "LINE_OPTIONS",
     "BVPSegment",
+    "LineSegment",
     "Scene",
     "newton_options_of",
     "magnitudes",
@@ -41,38 +43,64 @@ LINE_OPTIONS = NewtonOptions(tol=1e-10, max_iter=50, line_search="residual", sta
 
 
 @dataclass(frozen=True)
-class BVPSegment:
-    """One segment of a line for `solve_line_bvp`, listed from the anchor A.
+class LineSegment:
+    """One segment of a line BVP, in the plane (`solve_line_bvp`) or in space
+    (`skcable.mooring.line_bvp_3d.solve_line_bvp_3d`), listed from the anchor A.
 
     Attributes
     ----------
     length : float
         Unstretched length (m), > 0.
     w : float or callable
-        Weight per unit unstretched length (N/m, downward; negative for a
-        buoyant segment), or a callable of the arc length ``s`` from A (m,
-        over the whole line) returning it: a weight that varies continuously.
-    EA : float or None
-        Axial stiffness (N), > 0; ``None`` for an inextensible segment.
+        Weight in water per unstretched length (N/m, downward; negative for a buoyant segment),
+        or a callable of the arc length ``s`` from A (m, over the whole line) returning it: a
+        weight that varies continuously.
+    EA : float, StrainLaw or None
+        Axial stiffness (N), > 0 and finite; or a `skcable.mooring.axial.StrainLaw` (in space);
+        ``None`` for an inextensible segment.
+    diameter : float or None
+        Hydrodynamic diameter (m) for a current's drag (in space); None: no drag.
+    cd_normal, cd_tangential : float
+        Drag coefficients normal and along the line (Morison), >= 0; a positive one needs the
+        diameter.
     """
 
     length: float
     w: float | Callable
-    EA: float | None = None
+    EA: StrainLaw | float | None = None
+    diameter: float | None = None
+    cd_normal: float = 0.0
+    cd_tangential: float = 0.0
 
     def __post_init__(self):
         object.__setattr__(self, "length", _one("length", positive("length", self.length)))
         if not callable(self.w):
             object.__setattr__(self, "w", _one("w", real("w", self.w), " (or a callable of s)"))
-        if self.EA is not None:
+        if not (self.EA is None or isinstance(self.EA, StrainLaw) or callable(self.EA)):
             EA = _one("EA", positive("EA", self.EA))
             require("EA", EA < np.inf, "must be finite (None for an inextensible segment)", EA)
             object.__setattr__(self, "EA", EA)
+        strain_law(self.EA)  # a callable refused by name
+        for name in ("cd_normal", "cd_tangential"):
+            object.__setattr__(self, name, scalar(name, nonnegative(name, getattr(self, name))))
+        if self.diameter is not None:
+            object.__setattr__(self, "diameter", scalar("diameter", positive("diameter", self.diameter)))
+        elif self.cd_normal > 0 or self.cd_tangential > 0:
+            raise InputError("diameter", "a segment with drag coefficients needs its diameter (m)")
 
     @property
-    def law(self) -> ConstantEA | None:
-        """The axial law (`skcable.mooring.axial.ConstantEA`; None: inextensible)."""
-        return None if self.EA is None else ConstantEA(self.EA)
+    def law(self) -> StrainLaw | None:
+        """The axial law (`skcable.mooring.axial`: `ConstantEA` for a number; None: inextensible)."""
+        return strain_law(self.EA)
+
+    @property
+    def drags(self) -> bool:
+        """Whether a current drags this segment."""
+        return self.diameter is not None and (self.cd_normal > 0 or self.cd_tangential > 0)
+
+
+#: the plane line's name of `LineSegment` (the same class)
+BVPSegment = LineSegment
 
 
 def _one(name: str, value, alternative: str = ""):
@@ -82,24 +110,48 @@ def _one(name: str, value, alternative: str = ""):
     return value
 
 
-def segments_of(segments) -> list[BVPSegment]:
-    """The segments as a list of `BVPSegment` (``(length, w[, EA])`` tuples converted)."""
-    if isinstance(segments, BVPSegment):
+def segments_of(segments) -> list[LineSegment]:
+    """The segments as a list of `LineSegment` (``(length, w[, EA[, diameter, cd_normal,
+    cd_tangential]])`` tuples converted)."""
+    if isinstance(segments, LineSegment):
         segments = [segments]
     try:
         items = list(segments)
     except TypeError as exc:
-        raise InputError("segments", "give a list of BVPSegment or (length, w, EA) tuples") from exc
+        raise InputError("segments", "give a list of LineSegment or (length, w, EA) tuples") from exc
     if not items:
         raise InputError("segments", "give at least one segment")
     out = []
     for item in items:
-        if isinstance(item, BVPSegment):
+        if isinstance(item, LineSegment):
             out.append(item)
-        elif isinstance(item, (tuple, list)) and len(item) in (2, 3):
-            out.append(BVPSegment(*item))
+        elif isinstance(item, (tuple, list)) and 2 <= len(item) <= 6:
+            out.append(LineSegment(*item))
         else:
-            raise InputError("segments", f"each segment is a BVPSegment or (length, w[, EA]), got {item!r}")
+            raise InputError(
+                "segments", f"each segment is a LineSegment or (length, w[, EA, ...]), got {item!r}"
+            )
+    return out
+
+
+def plane_segments(segments) -> list[LineSegment]:
+    """`segments_of` for the plane line: a constant ``EA`` (a number; `ConstantEA` taken as its
+    number) and no drag, which the plane line has no current for; anything else refused."""
+    out = []
+    for seg in segments_of(segments):
+        if seg.drags:
+            raise InputError(
+                "segments",
+                "the plane line BVP has no current to drag a segment: solve it with solve_line_bvp_3d",
+            )
+        if isinstance(seg.EA, ConstantEA):
+            seg = LineSegment(seg.length, seg.w, seg.EA.EA, seg.diameter)
+        elif isinstance(seg.EA, StrainLaw):
+            raise InputError(
+                "segments", f"the plane line BVP takes a constant EA (N), got {seg.EA!r}: a strain law "
+                "is solved by solve_line_bvp_3d"
+            )  # fmt: skip
+        out.append(seg)
     return out
 
 
@@ -222,7 +274,7 @@ def scene(
     for name, value in (("span", span), ("dh", dh)):
         if not isinstance(value, float):
             raise InputError(name, "solve_line_bvp solves one scene: give scalar span and dh")
-    segs = segments_of(segments)
+    segs = plane_segments(segments)
     bed = seabed_of(seabed, seabed_slope, span)
     friction = nonnegative("friction", friction)
     _plausible.friction(friction)

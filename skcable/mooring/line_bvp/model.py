@@ -10,9 +10,9 @@ from skcable.mooring.line_bvp.driver import LineBVPSolver
 from skcable.mooring.line_bvp.inputs import (
     magnitudes,
     newton_options_of,
+    plane_segments,
     point_loads_of,
     scene,
-    segments_of,
     terms_of,
 )
 from skcable.mooring.line_bvp.solution import LineBVPSolution
@@ -197,7 +197,7 @@ class LineBVP:
         options=None,
         **newton_options,
     ):
-        self.segments = segments_of(segments)
+        self.segments = plane_segments(segments)
         if seabed is None and seabed_slope is not None:
             raise InputError("seabed_slope", "applies to a seabed: give seabed= as well")
         if not (seabed is None or callable(seabed)):

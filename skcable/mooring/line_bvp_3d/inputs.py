@@ -1,6 +1,7 @@
 """The scene of one line in space, checked: segments, attachments, seabed, current, options.
 
-`LineSegment` is one segment (length, weight, axial law, diameter and drag coefficients);
+`LineSegment` is one segment (length, weight, axial law, diameter and drag coefficients), the
+plane line's (`skcable.mooring.line_bvp.inputs`);
 `scene` checks every argument of `solve_line_bvp_3d` (each refusal an `skcable.InputError`
 naming the argument as the public API spells it) and returns a `Scene3D`, which the solver
 (`skcable.mooring.line_bvp_3d.driver`) takes as it is.
@@ -16,84 +17,10 @@ from skcable import _plausible
 from skcable._checks import nonnegative, point, positive, scalar, whole
 from skcable.bvp.current import Current, current_of
 from skcable.errors import InputError
-from skcable.mooring.axial import StrainLaw, strain_law
 from skcable.mooring.bathymetry import Bathymetry, bathymetry_of
-from skcable.mooring.line_bvp.inputs import terms_of
+from skcable.mooring.line_bvp.inputs import LineSegment, point_loads_of, segments_of, terms_of
 
 __all__ = ["LineSegment", "Scene3D", "attachments_of", "checked_options", "point", "scene", "segments_of"]
-
-
-@dataclass(frozen=True)
-class LineSegment:
-    """One segment of a line in space, listed from the anchor.
-
-    Attributes
-    ----------
-    length : float
-        Unstretched length (m), > 0.
-    w : float
-        Weight in water per unstretched length (N/m, downward; negative: a buoyant segment).
-    EA : StrainLaw, float or None
-        Axial law: a `skcable.mooring.axial.StrainLaw`, a stiffness EA (N, `ConstantEA`), or None
-        (inextensible).
-    diameter : float or None
-        Hydrodynamic diameter (m) for the current's drag; None: no drag.
-    cd_normal, cd_tangential : float
-        Drag coefficients normal and along the line (Morison), >= 0; a positive one needs the
-        diameter.
-    """
-
-    length: float
-    w: float
-    EA: StrainLaw | float | None = None
-    diameter: float | None = None
-    cd_normal: float = 0.0
-    cd_tangential: float = 0.0
-
-    def __post_init__(self):
-        object.__setattr__(self, "length", scalar("length", positive("length", self.length)))
-        object.__setattr__(self, "w", scalar("w", self.w))
-        object.__setattr__(self, "EA", strain_law(self.EA))
-        for name in ("cd_normal", "cd_tangential"):
-            object.__setattr__(self, name, scalar(name, nonnegative(name, getattr(self, name))))
-        if self.diameter is not None:
-            object.__setattr__(self, "diameter", scalar("diameter", positive("diameter", self.diameter)))
-        elif self.cd_normal > 0 or self.cd_tangential > 0:
-            raise InputError("diameter", "a segment with drag coefficients needs its diameter (m)")
-
-    @property
-    def law(self) -> StrainLaw | None:
-        """The axial law (None: inextensible)."""
-        return self.EA  # type: ignore[return-value]
-
-    @property
-    def drags(self) -> bool:
-        """Whether the current drags this segment."""
-        return self.diameter is not None and (self.cd_normal > 0 or self.cd_tangential > 0)
-
-
-def segments_of(segments) -> list[LineSegment]:
-    """The segments as a list of `LineSegment` (``(length, w[, EA[, diameter, cd_normal,
-    cd_tangential]])`` tuples converted)."""
-    if isinstance(segments, LineSegment):
-        segments = [segments]
-    try:
-        items = list(segments)
-    except TypeError as exc:
-        raise InputError("segments", "give a list of LineSegment or (length, w, EA) tuples") from exc
-    if not items:
-        raise InputError("segments", "give at least one segment")
-    out = []
-    for item in items:
-        if isinstance(item, LineSegment):
-            out.append(item)
-        elif isinstance(item, (tuple, list)) and 2 <= len(item) <= 6:
-            out.append(LineSegment(*item))
-        else:
-            raise InputError(
-                "segments", f"each segment is a LineSegment or (length, w[, EA, ...]), got {item!r}"
-            )
-    return out
 
 
 def attachments_of(attachments, n_segments: int) -> list[tuple[int, float]]:
@@ -130,6 +57,7 @@ class Scene3D:
     fairlead: np.ndarray
     segments: list
     attachments: list
+    loads: list
     seabed: Bathymetry | None
     friction: float
     current: Current | None
@@ -153,13 +81,14 @@ class Scene3D:
 
     @property
     def point_loads(self) -> list[tuple[float, float]]:
-        """The attachments as ``(s, P)``: arc length of their joint (m), downward force (N)."""
-        return [(float(self.joints[k]), P) for k, P in self.attachments]
+        """Every point load as ``(s, P)``: the attachments at the arc length of their joint, then
+        the point loads given by arc length (m); downward force (N)."""
+        return [(float(self.joints[k]), P) for k, P in self.attachments] + self.loads
 
 
 def checked_options(segments, options: dict) -> dict:
     """The arguments of `solve_line_bvp_3d` but the ends, checked: the segments (`segments_of`),
-    the attachments, seabed, friction, current, density, terms and solver options."""
+    the attachments, the point loads, seabed, friction, current, density, terms and solver options."""
     segs = segments_of(segments)
     bed = bathymetry_of(options["seabed"])
     friction = scalar("friction", nonnegative("friction", options["friction"]))
@@ -172,6 +101,7 @@ def checked_options(segments, options: dict) -> dict:
     return dict(
         segments=segs,
         attachments=attachments_of(options["attachments"], len(segs)),
+        loads=point_loads_of(options.get("point_loads", ()), sum(seg.length for seg in segs)),
         seabed=bed,
         friction=friction,
         current=current,

@@ -11,6 +11,7 @@ __all__ = ["LineBVP3D", "solve_line_bvp_3d"]
 
 _DEFAULTS = dict(
     attachments=(),
+    point_loads=(),
     seabed=None,
     friction=0.0,
     current=None,
@@ -30,6 +31,7 @@ def solve_line_bvp_3d(
     segments,
     *,
     attachments=(),
+    point_loads=(),
     seabed=None,
     friction: float = 0.0,
     current=None,
@@ -50,10 +52,14 @@ def solve_line_bvp_3d(
         The ends (m), z up (the water's surface at z = 0 for the current's depths).
     segments : list of LineSegment or tuples
         From the anchor: ``LineSegment(length, w, EA, diameter, cd_normal, cd_tangential)``
-        (`skcable.mooring.line_bvp_3d.inputs.LineSegment`; ``EA`` a stiffness or a strain law).
+        (`skcable.mooring.line_bvp.inputs.LineSegment`, the plane line's; ``w`` a number or a
+        callable of the arc length, ``EA`` a stiffness or a strain law).
     attachments : sequence
         Point loads at the inner joints: ``(joint, P)`` (``P`` downward, N; negative: a buoy) or
         `skcable.mooring.ClumpWeight` / `skcable.mooring.Buoy`.
+    point_loads : sequence of (s, P)
+        Point loads anywhere inside the line, as for `skcable.mooring.solve_line_bvp`: at the
+        arc length ``0 < s < L`` (m) from the anchor, ``P`` downward (N).
     seabed : float, Bathymetry or (height, gradient), optional
         The seabed (`skcable.mooring.bathymetry.bathymetry_of`): a flat height (m), a `Plane`, a
         `DepthFunction`, a `Grid`.
@@ -104,9 +110,9 @@ def solve_line_bvp_3d(
     True
     """
     options = dict(
-        attachments=attachments, seabed=seabed, friction=friction, current=current, rho_water=rho_water,
-        terms=terms, n_elements=n_elements, fit_touchdown=fit_touchdown, rtol=rtol, max_iter=max_iter,
-        time_limit=time_limit,
+        attachments=attachments, point_loads=point_loads, seabed=seabed, friction=friction,
+        current=current, rho_water=rho_water, terms=terms, n_elements=n_elements,
+        fit_touchdown=fit_touchdown, rtol=rtol, max_iter=max_iter, time_limit=time_limit,
     )  # fmt: skip
     return LineBVP3DSolver(scene(anchor, fairlead, checked_options(segments, options))).solve()
 
@@ -120,8 +126,8 @@ class LineBVP3D:
     segments : list of LineSegment or tuples
         As for `solve_line_bvp_3d`.
     **options
-        ``attachments``, ``seabed``, ``friction``, ``current``, ``rho_water``, ``terms``,
-        ``n_elements``, ``fit_touchdown``, ``rtol``, ``max_iter``, ``time_limit``: as for
+        ``attachments``, ``point_loads``, ``seabed``, ``friction``, ``current``, ``rho_water``,
+        ``terms``, ``n_elements``, ``fit_touchdown``, ``rtol``, ``max_iter``, ``time_limit``: as for
         `solve_line_bvp_3d`.
     """
 

@@ -206,7 +206,7 @@ class LineBVP3DSolution(Shown):
     @property
     def residual_bound(self) -> float:
         """The bound `check` holds the residual to (N/m): ``1e-8 w`` or its round-off floor."""
-        w = max(abs(seg.w) for seg in self.problem.segments)
+        w = float(np.abs(self.problem.w_q).max())
         return max(1e-8 * w, self._residual[1])
 
     def check(self) -> None:
