@@ -4,8 +4,8 @@
 the arc-length form on the unstretched arc length, positions P2 and tension P1-DG, optionally
 on a seabed of any shape with Coulomb friction. One concern per module:
 
-- `inputs`: the segments (`BVPSegment`), the point loads and every argument, checked into a
-  `Scene`;
+- `inputs`: the segments (`LineSegment`, also `BVPSegment`, the line in space's too), the point
+  loads and every argument, checked into a `Scene`;
 - `contact`: the seabed and the semismooth (primal–dual active set) contact rows with Coulomb
   friction, one set for the plane line and the line in space;
 - `mesh`: uniform, graded (equidistributed turning), fitted and nested meshes;
@@ -14,6 +14,9 @@ on a seabed of any shape with Coulomb friction. One concern per module:
   and tangent: every call of its assembly), mesh, bases, dofs, merit and its round-off floor, the
   generalized Jacobian's banded solves and the ends' sensitivities (`DiscreteLine`);
 - `loads`: the cable terms' force and derivatives, checked, in the plane and in space;
+- `pointwise`: the fields at any arc length, through each element's own basis (`LinePoints`);
+- `fields`: what the solutions in the plane and in space share: the state, tension, tangent,
+  weight, segment end tensions and samples at any arc length (`LineFields`);
 - `problem`: one discrete line in the plane — its properties, the scales, the point loads at any
   arc length and its seabed's contact rows (with friction and the slack stretch);
 - `start`: the closed-form start (elastic catenary, grounded where it dips below the seabed);
@@ -25,7 +28,8 @@ on a seabed of any shape with Coulomb friction. One concern per module:
 - `stiffness`: the fairlead stiffness from the converged tangent (implicit function theorem);
 - `model`: `solve_line_bvp` and `LineBVP`, a line model for `line_3d` and `MooringSystem`.
 
-Data flow one way: ``inputs → driver → (mesh, start, problem ⇄ contact) → iterate → solution``.
+Data flow one way: ``inputs → driver → (mesh, start, problem ⇄ contact) → iterate → solution
+(fields, pointwise)``.
 """
 
 from skcable.mooring.line_bvp.driver import LineBVPSolver

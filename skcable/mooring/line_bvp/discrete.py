@@ -46,6 +46,7 @@ from __future__ import annotations
 
 import copy
 from dataclasses import dataclass, replace
+from functools import cached_property
 from typing import Any
 
 import numpy as np
@@ -53,10 +54,12 @@ from skfem import Basis, ElementLineP1DG, ElementLineP2, MeshLine
 
 from skcable.bvp.elements import end_dofs
 from skcable.bvp.section import strains_of, tension_section
+from skcable.bvp.terms import CableState
 from skcable.errors import InputError
 from skcable.fe.assembly import Assembly
 from skcable.mooring.line_bvp.loads import TermLoad, term_load
 from skcable.mooring.line_bvp.mesh import joints_of, line_nodes
+from skcable.mooring.line_bvp.pointwise import LinePoints
 
 __all__ = ["REJECTED", "DiscreteLine", "LineState"]
 
@@ -185,6 +188,36 @@ class DiscreteLine:
         inside = np.empty_like(s_t)
         inside[dofs] = s_t[dofs] + 1e-9 * (self.middle[None, :] - s_t[dofs])
         return np.clip(inside, 0.0, self.L)
+
+    # --- the fields at any arc length ------------------------------------------------------
+    @cached_property
+    def points(self) -> LinePoints:
+        """The point evaluation of the fields (`skcable.mooring.line_bvp.pointwise`)."""
+        return LinePoints(self.mesh, self.basis, self.tbasis)
+
+    def state_at(self, z, s) -> CableState:
+        """The line's state (`skcable.bvp.terms.CableState`, in ``dim`` dimensions) of the dofs
+        ``z`` at arc lengths ``s`` (1-D, m)."""
+        s = np.asarray(s, dtype=float).ravel()
+        N, d = self.N, self.dim
+        r, a, cells = self.points.fields(z[: d * N].reshape(d, N), s)
+        return CableState.at(r, s, a, self.points.tension(z[d * N :], s, cells))
+
+    def tension_at(self, z, s) -> np.ndarray:
+        """The tension (N) of the dofs ``z`` at arc lengths ``s`` (1-D, m): the value of the
+        element holding each."""
+        return self.points.tension(z[self.dim * self.N :], np.asarray(s, dtype=float).ravel())
+
+    def forces_at(self, z, s) -> np.ndarray:
+        """The distributed force (dim, n) (N per unstretched m, the last row up) of the dofs
+        ``z`` at arc lengths ``s`` (m): the weight and the cable terms' force (point loads and the
+        seabed's forces not included)."""
+        state = self.state_at(z, s)
+        f = np.zeros((self.dim, state.T.size))
+        f[-1] = -self.weight_at(state.s)
+        if self.terms:
+            f = f + term_load(self.terms, state.position, state.s, state.a, state.T).f
+        return f
 
     def along_line(self, inner) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
         """``(nodes, prev, next)``: the position nodes ``inner`` (dofs of one coordinate) sorted

@@ -8,12 +8,9 @@ from functools import cached_property
 import numpy as np
 from scipy.optimize import brentq
 
-from skcable._checks import real, require, whole
-from skcable.bvp.terms import CableState, term_outputs
 from skcable.errors import ConvergenceError
-from skcable.fe.probes import gradient_probes
 from skcable.mooring.line_bvp.contact import anchor_split
-from skcable.mooring.line_bvp.loads import term_load
+from skcable.mooring.line_bvp.fields import LineFields
 from skcable.mooring.line_bvp.problem import LineProblem, LineState
 from skcable.mooring.line_bvp.stiffness import fairlead_stiffness
 from skcable.results import ProfileMixin
@@ -21,7 +18,7 @@ from skcable.results import ProfileMixin
 __all__ = ["LineBVPSolution"]
 
 
-class LineBVPSolution(ProfileMixin):
+class LineBVPSolution(LineFields, ProfileMixin):
     """Solution of `solve_line_bvp`; a `skcable.results.CableResult`.
 
     Attributes
@@ -79,6 +76,7 @@ class LineBVPSolution(ProfileMixin):
     slack_solver: Callable[[float], LineBVPSolution] | None = None
     #: the `LineBVP` model that solved it (None from `solve_line_bvp`)
     model: object | None = None
+    problem: LineProblem
 
     def __init__(self, problem: LineProblem, z, history, state: LineState):
         self.problem, self.dofs, self.state = problem, z, state
@@ -140,12 +138,6 @@ class LineBVPSolution(ProfileMixin):
         stiff = [seg.EA for seg in self.problem.segments if seg.EA is not None]
         return float(min(stiff)) if stiff else None
 
-    @property
-    def weight(self):
-        """Total weight of the line and its point loads (N, downward)."""
-        p = self.problem
-        return p.weight + float(np.sum(p.point_values))
-
     def fields(self):
         """The dofs of ``x``, ``y`` (P2, m) and ``T`` (P1-DG, N)."""
         N = self.problem.N
@@ -153,26 +145,16 @@ class LineBVPSolution(ProfileMixin):
 
     def xy(self, s):
         """Position (x, y) (m) at unstretched arc length ``s`` from A, array ``(..., 2)``."""
-        s = np.asarray(real("s", s), dtype=float)
-        require("s", (s >= 0) & (s <= self.length), "must lie in [0, length]", s)
-        probes = self.basis.probes(s.reshape(1, -1))
-        xd, yd, _ = self.fields()
-        return np.stack([probes @ xd, probes @ yd], axis=-1).reshape(*s.shape, 2)
+        return self.positions(s)
 
     def tension(self, s):
         """Tension (N) at unstretched arc length ``s`` (P1-DG: the value of the element containing s)."""
-        s = np.asarray(real("s", s), dtype=float)
-        require("s", (s >= 0) & (s <= self.length), "must lie in [0, length]", s)
-        T = self.fields()[2]
-        return (self.problem.tbasis.probes(s.reshape(1, -1)) @ T).reshape(s.shape)[()]
+        return self.T_of_s(s)
 
     def angle(self, s):
-        """Angle of the line to the horizontal (rad) at ``s``."""
-        s = np.atleast_1d(np.asarray(real("s", s), dtype=float))
-        require("s", (s >= 0) & (s <= self.length), "must lie in [0, length]", s)
-        G = gradient_probes(self.basis, s.reshape(1, -1))
-        xd, yd, _ = self.fields()
-        return np.arctan2(G @ yd, G @ xd)
+        """Angle of the line to the horizontal (rad) at ``s`` (an array, 1-D at least)."""
+        a = self.state_at(np.atleast_1d(self.arc(s))).a
+        return np.arctan2(a[1], a[0])
 
     def weight_before(self, s):
         """Weight of the line over [0, s] and of the point loads before s (N)."""
@@ -318,12 +300,6 @@ class LineBVPSolution(ProfileMixin):
         """Height above A (m) at unstretched arc length ``s`` (m) from A."""
         return self.xy(s)[..., 1]
 
-    def T_of_s(self, s):
-        """The tension field (N) at unstretched arc length ``s`` (m): P1-DG, the value of the
-        element containing s, accurate to O(h²) at the nodes; the end tensions `T_A`, `T_B`
-        (the support reactions) are the accurate values at the ends."""
-        return self.tension(s)
-
     def stiffness(self) -> np.ndarray:
         """Fairlead stiffness ``∂(H_B, V_B)/∂(span, dh)`` (N/m), 2 × 2, rows (H_B, V_B), columns
         (span, dh), the anchor fixed: from the converged tangent by the implicit function
@@ -351,11 +327,11 @@ class LineBVPSolution(ProfileMixin):
         import pandas as pd
 
         joints = self.problem.joints
+        T_l, T_u = self.end_tensions(self.T_A, self.T_B)
         inside = 1e-9 * np.diff(joints)
-        lower, upper = joints[:-1] + inside, joints[1:] - inside
-        T_l, T_u = np.atleast_1d(self.tension(lower)), np.atleast_1d(self.tension(upper))
-        H_l, H_u = T_l * np.cos(self.angle(lower)), T_u * np.cos(self.angle(upper))
-        T_l[0], H_l[0], T_u[-1], H_u[-1] = self.T_A, self.H_A, self.T_B, self.H_B
+        H_l = T_l * np.cos(self.angle(joints[:-1] + inside))
+        H_u = T_u * np.cos(self.angle(joints[1:] - inside))
+        H_l[0], H_u[-1] = self.H_A, self.H_B
         grounded = np.clip(
             np.minimum(joints[1:], self.s_touchdown) - np.maximum(joints[:-1], self.s_landing), 0, None
         )
@@ -378,23 +354,16 @@ class LineBVPSolution(ProfileMixin):
         y up (the weight and the cable terms' force; point loads and the seabed's forces not
         included), and ``outputs``, what the cable terms name (`CableTerm.outputs`: their
         force ``<Term>_force_N_per_m`` (n, 2) at least; empty without terms)."""
-        s = np.linspace(0.0, self.length, whole("n", n, 2))
-        weight = np.asarray(self.problem.weight_at(s), dtype=float)
-        xy = self.xy(s)
-        tension = np.asarray(self.tension(s), dtype=float)
-        load = np.column_stack([np.zeros_like(s), -weight])
-        outputs = {}
-        if self.problem.terms:
-            G = gradient_probes(self.basis, s.reshape(1, -1))
-            xd, yd, _ = self.fields()
-            a = np.array([G @ xd, G @ yd])
-            state = CableState(xy[:, 0], xy[:, 1], s, a, tension)
-            load = load + term_load(self.problem.terms, (xy[:, 0], xy[:, 1]), s, a, tension).f.T
-            outputs = {
-                name: np.moveaxis(v, 0, -1) if np.ndim(v) > 1 else v
-                for name, v in term_outputs(self.problem.terms, state).items()
-            }
-        return {"xy": xy, "tension": tension, "angle": self.angle(s), "load": load, "outputs": outputs}
+        s, state, load, outputs = self.sampled(n)
+        a = state.a
+        xy, tension = state.position.T, np.asarray(state.T, dtype=float)
+        return {
+            "xy": xy,
+            "tension": tension,
+            "angle": np.arctan2(a[1], a[0]),
+            "load": load,
+            "outputs": outputs,
+        }
 
     def to_frame(self, n: int = 201):
         """``n`` profile samples evenly spaced in unstretched arc length (pandas DataFrame):

@@ -9,21 +9,21 @@ current's drag ``½ρ C_d d |v_n| v_n`` normal and tangential, the analyst's); t
 (`skcable.mooring.bathymetry`: a plane, a depth function, a grid) as unilateral contact with
 Coulomb friction along the line. One concern per module:
 
-- `inputs`: the segments (`LineSegment`), the attachments and every argument, checked into a
+- `inputs`: the segments (`LineSegment`, the plane line's), the attachments and every argument, checked into a
   `Scene3D`;
 - `loads`: the current's drag on the segments as a cable term (`SegmentDrag`);
 - `problem`: one discrete line in space — its properties, the current's drag and the analyst's
   terms bound to it, and its seabed's contact rows (the plane line's,
   `skcable.mooring.line_bvp.contact`, in three dimensions), on the line law of
   `skcable.mooring.line_bvp.discrete` (the plane line's, in three dimensions);
-- `pointwise`: the fields at any arc length, through each element's own basis;
 - `start`: the closed form in the vertical plane of the ends;
 - `fitting`: the touchdown and the landing from the balance of forces;
 - `driver`: the strategy `LineBVP3DSolver` — the current by steps, nested meshes, fitting,
   checks; each solve the plane line's (`skcable.mooring.line_bvp.iterate`);
 - `check`: the equilibrium residual, by scikit-fem's own assembly;
 - `stiffness`: the 3 × 3 fairlead stiffness from the converged tangent, static or dynamic;
-- `solution`: `LineBVP3DSolution`;
+- `solution`: `LineBVP3DSolution` (its fields the plane line's,
+  `skcable.mooring.line_bvp.fields`);
 - `model`: `solve_line_bvp_3d` and `LineBVP3D`, a line model.
 
 Data flow one way: ``inputs → driver → (start, problem, loads, pointwise) →

@@ -12,15 +12,12 @@ buoys ``P < 0``) lie at joints; the contact rows are
 
 from __future__ import annotations
 
-from functools import cached_property
-
 import numpy as np
 
 from skcable.bvp.terms import CableState
 from skcable.mooring.line_bvp.contact import ContactRows
 from skcable.mooring.line_bvp.discrete import DiscreteLine
 from skcable.mooring.line_bvp_3d.loads import SegmentDrag
-from skcable.mooring.line_bvp_3d.pointwise import LinePoints
 
 __all__ = ["LineProblem3D"]
 
@@ -101,29 +98,3 @@ class LineProblem3D(DiscreteLine):
     def reactions(self, R0):
         """``(S_A, S_B)``: the supports' reactions on the line at A and B (N, 3-vectors)."""
         return R0[self.end_dofs("a")], R0[self.end_dofs("b")]
-
-    # --- fields at any arc length ----------------------------------------------------------
-    def state_at(self, z, s) -> CableState:
-        """The line's state (`CableState`, 3-D) at arc lengths ``s`` (1-D, m)."""
-        s = np.asarray(s, dtype=float).ravel()
-        N = self.N
-        r, a, cells = self.points.fields(z[: 3 * N].reshape(3, N), s)
-        return CableState.at(r, s, a, self.points.tension(z[3 * N :], s, cells))
-
-    def tension_at(self, z, s) -> np.ndarray:
-        """The tension (N) at arc lengths ``s`` (1-D, m): the value of the element holding each."""
-        return self.points.tension(z[3 * self.N :], np.asarray(s, dtype=float).ravel())
-
-    @cached_property
-    def points(self) -> LinePoints:
-        """The point evaluation of the fields (`skcable.mooring.line_bvp_3d.pointwise`)."""
-        return LinePoints(self.mesh, self.basis, self.tbasis)
-
-    def forces_at(self, z, s) -> np.ndarray:
-        """The distributed force (3, n) (N per unstretched m) at arc lengths ``s`` (m)."""
-        state = self.state_at(z, s)
-        f = np.zeros((3, state.T.size))
-        f[2] = -self.weight_at(state.s)
-        for term in self.terms:
-            f = f + term.forces(state).f
-        return f

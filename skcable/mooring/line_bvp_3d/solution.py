@@ -28,11 +28,12 @@ from functools import cached_property
 
 import numpy as np
 
-from skcable._checks import real, require, whole
+from skcable._checks import whole
 from skcable._show import Shown
-from skcable.bvp.terms import CableState, term_outputs
 from skcable.errors import ConvergenceError
 from skcable.mooring.line_bvp.contact import anchor_split
+from skcable.mooring.line_bvp.fields import LineFields
+from skcable.mooring.line_bvp_3d.problem import LineProblem3D
 from skcable.mooring.line_bvp_3d.stiffness import FairleadStiffness, fairlead_stiffness_3d
 
 __all__ = ["LineBVP3DSolution"]
@@ -40,7 +41,7 @@ __all__ = ["LineBVP3DSolution"]
 EPS = float(np.finfo(float).eps)
 
 
-class LineBVP3DSolution(Shown):
+class LineBVP3DSolution(LineFields, Shown):
     """Solution of `skcable.mooring.line_bvp_3d.solve_line_bvp_3d`.
 
     Attributes
@@ -73,6 +74,7 @@ class LineBVP3DSolution(Shown):
     """
 
     model: object | None = None
+    problem: LineProblem3D
 
     def __init__(self, problem, z, history, state):
         self.problem, self.dofs, self.state = problem, z, state
@@ -119,17 +121,10 @@ class LineBVP3DSolution(Shown):
         self.gap, self.in_contact = terms.gap, terms.active
         self.s_touchdown = float(self.contact_s[self.in_contact].max()) if self.in_contact.any() else 0.0
 
-    # --- fields ---------------------------------------------------------------------------------
-    def _s(self, s):
-        s = np.asarray(real("s", s), dtype=float)
-        require("s", (s >= 0) & (s <= self.length), "must lie in [0, length]", s)
-        return s
-
+    # --- fields (`skcable.mooring.line_bvp.fields.LineFields`: state_at, tangent, T_of_s, weight) -----
     def xyz(self, s) -> np.ndarray:
         """Position (m) at unstretched arc lengths ``s`` from the anchor: ``(*s.shape, 3)``."""
-        s = self._s(s)
-        state = self.problem.state_at(self.dofs, s.ravel())
-        return np.stack([state.x, state.y, state.z], axis=-1).reshape(*s.shape, 3)
+        return self.positions(s)
 
     def profile(self, n: int = 101) -> np.ndarray:
         """The line at ``n`` points evenly spaced in unstretched arc length: ``(n, 3)`` (m)."""
@@ -143,15 +138,12 @@ class LineBVP3DSolution(Shown):
 
     def tensions(self):
         """One row per segment (pandas DataFrame): ``segment, length, T_lower, T_upper``
-        (N; the tension field just inside the segment at its ends, the support reactions at the
-        line's ends) and ``grounded_length`` (m, of its contact nodes' span on the seabed)."""
+        (N; `LineFields.end_tensions`) and ``grounded_length`` (m, of its contact nodes' span on
+        the seabed)."""
         import pandas as pd
 
         joints = self.problem.joints
-        inside = 1e-9 * np.diff(joints)
-        T_l = np.atleast_1d(self.T_of_s(joints[:-1] + inside))
-        T_u = np.atleast_1d(self.T_of_s(joints[1:] - inside))
-        T_l[0], T_u[-1] = self.T_A, self.T_B
+        T_l, T_u = self.end_tensions(self.T_A, self.T_B)
         grounded = np.zeros(joints.size - 1)
         if self.in_contact.any():
             on = self.contact_s[self.in_contact]
@@ -166,25 +158,6 @@ class LineBVP3DSolution(Shown):
                 "grounded_length": grounded,
             }
         )
-
-    def T_of_s(self, s):
-        """The tension field (N) at unstretched arc lengths ``s`` (m): P1-DG, the value of the
-        element containing ``s``; `T_A` and `T_B` (the supports' reactions) are the accurate
-        end values."""
-        s = self._s(s)
-        T = self.problem.tension_at(self.dofs, s)
-        return T.reshape(s.shape)[()]
-
-    def tangent(self, s) -> np.ndarray:
-        """The unit tangent towards the fairlead at ``s``: ``(*s.shape, 3)``."""
-        s = self._s(s)
-        a = self.problem.state_at(self.dofs, s.ravel()).a
-        return (a / np.sqrt(np.sum(a * a, axis=0))).T.reshape(*s.shape, 3)
-
-    @property
-    def weight(self) -> float:
-        """The weight of the line and its point loads (N, downward)."""
-        return self.problem.weight + float(np.sum(self.problem.point_values))
 
     # --- checks -----------------------------------------------------------------------------------
     @cached_property
@@ -244,15 +217,13 @@ class LineBVP3DSolution(Shown):
         """The line at ``n`` points evenly spaced in unstretched arc length: ``s`` (m), ``xyz``
         (n, 3) (m), ``tension`` (N), ``tangent`` (n, 3), ``load`` (n, 3) (N/m, the distributed
         force: weight, drag, the terms') and ``outputs`` (the terms' named point data, (n, 3))."""
-        s = np.linspace(0.0, self.length, whole("n", n, 2))
-        state = self.problem.state_at(self.dofs, s)
-        outputs = {k: np.asarray(v).T for k, v in term_outputs(self.problem.terms, state).items()}
+        s, state, load, outputs = self.sampled(n)
         return {
             "s": s,
-            "xyz": np.column_stack([state.x, state.y, state.z]),
+            "xyz": state.position.T,
             "tension": np.asarray(state.T, dtype=float),
             "tangent": (state.a / np.sqrt(np.sum(state.a * state.a, axis=0))).T,
-            "load": self.problem.forces_at(self.dofs, s).T,
+            "load": load,
             "outputs": outputs,
         }
 
@@ -274,10 +245,6 @@ class LineBVP3DSolution(Shown):
         }
         data.update(samples["outputs"])
         return write(meshio.Mesh(points, [("line", cells)], point_data=data), path)
-
-    def state_at(self, s) -> CableState:
-        """The line's `CableState` at arc lengths ``s`` (m)."""
-        return self.problem.state_at(self.dofs, self._s(s).ravel())
 
     def __repr__(self):
         Fa, Fb = self.force_on_anchor, self.force_on_fairlead
