@@ -80,3 +80,10 @@ def test_the_line_bvps_stop_at_their_time_limit():
     with pytest.raises(InputError) as bad:
         mooring.solve_line_bvp(800.0, 150.0, segments, time_limit=-1.0)
     assert bad.value.argument == "time_limit"
+    # the line model takes it too, for each of its solves
+    model = mooring.LineBVP(segments, seabed=0.0, time_limit=1e-9)
+    with pytest.raises(ConvergenceError, match=r"solve_line_bvp .*time_limit = 1e-09 s"):
+        model.solve(800.0, 150.0)
+    with pytest.raises(InputError) as bad:
+        mooring.LineBVP(segments, time_limit=0.0)
+    assert bad.value.argument == "time_limit"

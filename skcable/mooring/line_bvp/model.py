@@ -3,7 +3,7 @@
 from __future__ import annotations
 
 from skcable import _plausible
-from skcable._checks import nonnegative, scalar, whole
+from skcable._checks import nonnegative, positive, scalar, whole
 from skcable.cable._extreme import outsized
 from skcable.errors import InputError
 from skcable.mooring.line_bvp.driver import LineBVPSolver
@@ -135,22 +135,14 @@ def solve_line_bvp(
     The continuation (levels, gradings, friction, touchdown fitting, the slack stretch and the
     retries) is `skcable.mooring.line_bvp.driver.LineBVPSolver`'s.
     """
-    checked = scene(
-        span,
-        dh,
-        segments,
-        seabed=seabed,
-        seabed_slope=seabed_slope,
-        friction=friction,
-        point_loads=point_loads,
-        n_elements=n_elements,
-        fit_touchdown=fit_touchdown,
-        options=newton_options_of(options, rtol=rtol, max_iter=max_iter, **newton_options),
-        terms=terms,
-        time_limit=time_limit,
-    )
-    with outsized(**magnitudes(checked)):  # a refusal or a float failure inside names the outsized one
-        return LineBVPSolver(checked).solve()
+    model = LineBVP(
+        segments, seabed=seabed, seabed_slope=seabed_slope, friction=friction, point_loads=point_loads,
+        n_elements=n_elements, fit_touchdown=fit_touchdown, rtol=rtol, max_iter=max_iter, terms=terms,
+        options=options, time_limit=time_limit, **newton_options,
+    )  # fmt: skip
+    solution = model.solve(span, dh)
+    solution.model = None  # no model of the caller's: no warm start from it
+    return solution
 
 
 class LineBVP:
@@ -164,8 +156,10 @@ class LineBVP:
 
     Parameters
     ----------
-    segments, seabed, seabed_slope, friction, point_loads, n_elements, fit_touchdown, rtol, max_iter
+    segments, seabed, seabed_slope, friction, point_loads, n_elements, fit_touchdown, rtol
         As for `solve_line_bvp`.
+    max_iter, time_limit
+        As for `solve_line_bvp` (``time_limit`` bounds each `solve`).
     terms, options, **newton_options
         As for `solve_line_bvp`: the cable terms and the Newton options of every solve. The
         terms act in the line's own vertical plane, x from the anchor towards the fairlead: in
@@ -195,6 +189,7 @@ class LineBVP:
         max_iter: int | None = None,
         terms=(),
         options=None,
+        time_limit: float = 60.0,
         **newton_options,
     ):
         self.segments = plane_segments(segments)
@@ -214,6 +209,8 @@ class LineBVP:
         self.options = newton_options_of(options, rtol=rtol, max_iter=max_iter, **newton_options)
         #: the cable terms (`skcable.bvp.terms`)
         self.terms = terms_of(terms)
+        #: seconds at most for each solve
+        self.time_limit = scalar("time_limit", positive("time_limit", time_limit))
 
     @property
     def rtol(self) -> float:
@@ -262,6 +259,7 @@ class LineBVP:
             fit_touchdown=self.fit_touchdown,
             options=self.options,
             terms=self.terms,
+            time_limit=self.time_limit,
         )
         solver = LineBVPSolver(checked)
         if start is not None and not (isinstance(start, LineBVPSolution) and start.model is self):
