@@ -74,10 +74,12 @@ def test_a_current_lifts_the_line_off_the_seabed_as_shooting_says():
     assert np.max(np.abs([line.H_A, -line.V_A] - F0)) < 1e-6 * scale
     assert np.max(np.abs([line.H_B, line.V_B] - FL)) < 1e-6 * scale
     assert line.H_A - line.H_B > 0.1 * line.H_B  # the drag loads the anchor more than the fairlead
-    # the exact tangent: a full step squares the residual (1e-4 → 7e-9 → 2e-14 measured, the last
-    # at the round-off floor)
+    # the exact tangent: a full step squares the residual (1e-4 → 7e-9 → 3e-14 measured, the last
+    # at the round-off floor, which a polish step may halve): the last step that lands above the
+    # floor (1e-12) squares its merit
     h = line.history
-    assert h[-1] < 1e-12 and h[-2] < 10 * h[-3] ** 2
+    k = max(i for i in range(len(h) - 1) if h[i + 1] > 1e-12)
+    assert h[-1] < 1e-12 and h[k + 1] < 10 * h[k] ** 2
 
 
 # --- a grounded line in a stratified sea ---------------------------------------------------------

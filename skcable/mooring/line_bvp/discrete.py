@@ -117,6 +117,9 @@ class DiscreteLine:
     compliance_q: np.ndarray | None = None
     #: the segments, from the anchor (each with ``length``, ``w`` and ``law``)
     segments: list
+    #: the ends (dim,) (m): the anchor and the fairlead
+    anchor: np.ndarray
+    fairlead: np.ndarray
     laws: list = []
     columns: list = []
 
@@ -290,6 +293,15 @@ class DiscreteLine:
         k), in ``free`` order): one banded LU factorisation (LAPACK ``dgbsv``) of the generalized
         Jacobian at ``state``."""
         return self.system.solve(self._band(state), rhs)
+
+    def with_ends(self, positions, T) -> np.ndarray:
+        """The dofs ``[x, y(, z), T]`` of the nodal ``positions`` (dim rows, m; changed in place)
+        and the tensions ``T`` (N), the ends put exactly at the anchor and the fairlead
+        (``anchor``, ``fairlead``: (dim,), m, set by the subclass)."""
+        for k, end in ((self.end_a, self.anchor), (self.end_b, self.fairlead)):
+            for row, value in zip(positions, end, strict=True):
+                row[k] = value
+        return np.concatenate([*positions, T])
 
     def end_dofs(self, end) -> np.ndarray:
         """The ``dim`` position dofs of the anchor (``"a"``) or the fairlead (``"b"``)."""

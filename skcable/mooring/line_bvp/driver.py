@@ -88,6 +88,7 @@ from skcable.mooring.line_bvp.solution import LineBVPSolution
 from skcable.mooring.line_bvp.start import (
     closed_form_start,
     on_dofs,
+    restart,
     segmented_solution,
     segmented_start,
     slack_end_of,
@@ -148,12 +149,6 @@ class LineBVPSolver:
             "solve_line_bvp (the measure: the last merit of a solve)", "solves", stage, *args
         )
 
-    def restart(self, solution, problem):
-        """``solution`` interpolated onto ``problem``'s dofs."""
-        xy = solution.xy(problem.basis.doflocs[0])
-        tension = solution.tension(np.clip(problem.tbasis.doflocs[0], 0.0, self.length))
-        return np.concatenate([xy[:, 0], xy[:, 1], tension])
-
     def switched(self, problem, z0) -> LineBVPSolution:
         """One solve of ``problem`` from ``z0`` with its contact nodes switching by the line's
         tension (`LineProblem.with_tension_switch`); a `ConvergenceError` without contact."""
@@ -175,7 +170,7 @@ class LineBVPSolver:
         closed-form start, else from the segment-wise one."""
         return first_converged(
             [
-                lambda: self.run(problem, self.restart(solution, problem)),
+                lambda: self.run(problem, restart(solution.problem, solution.dofs, problem)),
                 lambda: self.run(problem, closed_form_start(problem)),
                 lambda: self.from_segments(problem),
             ]
@@ -234,7 +229,7 @@ class LineBVPSolver:
         sc, old = self.scene, previous.problem
         nodes = np.sort(old.mesh.p[0])
         problem = self.problem(nodes.size - 1, _with(old.slack_end), old.slack_end, sc.friction, nodes)
-        z0 = self.restart(previous, problem)
+        z0 = restart(previous.problem, previous.dofs, problem)
         share = problem.basis.doflocs[0] / self.length
         z0[: problem.N] += (sc.span - previous.span) * share
         z0[problem.N : 2 * problem.N] += (sc.dh - previous.dh) * share

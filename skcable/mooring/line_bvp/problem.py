@@ -71,6 +71,7 @@ class LineProblem(DiscreteLine):
         terms=(),
     ):
         self.span, self.dh, self.seabed, self.friction = span, dh, seabed, friction
+        self.anchor, self.fairlead = np.zeros(2), np.array([span, dh], dtype=float)
         self.slack_end = float(slack_end)
         self.terms = tuple(terms)
         if self.terms and self.slack_end > 0:

@@ -174,12 +174,6 @@ def start_form(problem):
     return _uniform(problem)[3]
 
 
-def _ends(problem, x, y, T):
-    x[problem.end_a], y[problem.end_a] = 0.0, 0.0
-    x[problem.end_b], y[problem.end_b] = problem.span, problem.dh
-    return np.concatenate([x, y, T])
-
-
 def closed_form_start(problem):
     """The first iterate on ``problem``'s dofs: ``[x, y, T]``, the ends at A and B exactly; the
     heap refused (module docstring)."""
@@ -190,7 +184,7 @@ def closed_form_start(problem):
         segmented = segmented_start(problem)  # raises where mooring.Line finds the heap
         if segmented is not None:
             return segmented
-    return _ends(problem, x, y, T)
+    return problem.with_ends([x, y], T)
 
 
 def _line(problem, friction=None):
@@ -252,7 +246,7 @@ def on_dofs(problem, solution):
     s_dof = problem.basis.doflocs[0]
     x, y = np.asarray(solution.x_of_s(s_dof), float), np.asarray(solution.y_of_s(s_dof), float)
     T = np.asarray(solution.T_of_s(problem.tension_points()), float)
-    return _ends(problem, x, y, T)
+    return problem.with_ends([x, y], T)
 
 
 def segmented_start(problem):
@@ -260,3 +254,12 @@ def segmented_start(problem):
     problem's dofs, or None where there is none (`segmented_solution`)."""
     solution = segmented_solution(problem)
     return None if solution is None else on_dofs(problem, solution)
+
+
+def restart(old, z, problem) -> np.ndarray:
+    """The solution ``z`` of the discrete line ``old`` interpolated onto ``problem``'s dofs
+    (another mesh of the same line, in the plane or in space): positions at its nodes, tensions
+    just inside its elements (`DiscreteLine.tension_points`: each side of a jump its own), the
+    ends exact."""
+    state = old.state_at(z, problem.basis.doflocs[0])
+    return problem.with_ends(state.position, old.tension_at(z, problem.tension_points()))

@@ -37,10 +37,11 @@ from skcable.fe import NewtonOptions, first_converged
 from skcable.mooring.bathymetry import OffGrid
 from skcable.mooring.line_bvp.iterate import solve_on
 from skcable.mooring.line_bvp.mesh import COARSE, nested_sizes
+from skcable.mooring.line_bvp.start import restart
 from skcable.mooring.line_bvp_3d.fitting import landing, touchdown
 from skcable.mooring.line_bvp_3d.problem import LineProblem3D
 from skcable.mooring.line_bvp_3d.solution import LineBVP3DSolution
-from skcable.mooring.line_bvp_3d.start import closed_form_start, restart
+from skcable.mooring.line_bvp_3d.start import closed_form_start
 
 __all__ = ["LineBVP3DSolver"]
 

@@ -35,7 +35,7 @@ from skcable.errors import ConvergenceError, InputError
 from skcable.mooring.bathymetry import Plane
 from skcable.mooring.line_bvp.start import hanging
 
-__all__ = ["closed_form_start", "frame_of", "plane_of", "restart", "uniform_line"]
+__all__ = ["closed_form_start", "frame_of", "plane_of", "uniform_line"]
 
 
 def plane_of(anchor, fairlead):
@@ -125,12 +125,6 @@ def _grounded(problem, profile, r, dh, w, EA):
         return None
 
 
-def _ends(problem, X, Y, Z, T):
-    for k, end in ((problem.end_a, problem.anchor), (problem.end_b, problem.fairlead)):
-        X[k], Y[k], Z[k] = end
-    return np.concatenate([X, Y, Z, T])
-
-
 def closed_form_start(problem) -> np.ndarray:
     """The first iterate on ``problem``'s dofs, ``[x, y, z, T]``, the ends exact (module
     docstring)."""
@@ -141,18 +135,10 @@ def closed_form_start(problem) -> np.ndarray:
     if r == 0.0:  # a vertical line: straight, carrying the weight below each point
         z = a[2] + s * dh / problem.L
         T = np.maximum(w * s_t, 1e-6 * w * problem.L)
-        return _ends(problem, np.full(s.size, a[0]), np.full(s.size, a[1]), z, T)
+        return problem.with_ends([np.full(s.size, a[0]), np.full(s.size, a[1]), z], T)
     e, up, load = frame_of(problem, w)
     chord = problem.fairlead - a
     x, y, T = _in_plane(problem, float(chord @ e), float(chord @ up), load, EA)
     xs, ys = np.asarray(x(s), dtype=float), np.asarray(y(s), dtype=float)
     X, Y, Z = (a[k] + xs * e[k] + ys * up[k] for k in range(3))
-    return _ends(problem, X, Y, Z, np.asarray(T(s_t), dtype=float))
-
-
-def restart(solution_problem, z, problem) -> np.ndarray:
-    """The solution ``z`` of ``solution_problem`` interpolated onto ``problem``'s dofs (another
-    mesh of the same line)."""
-    state = solution_problem.state_at(z, problem.basis.doflocs[0])
-    T = solution_problem.tension_at(z, problem.tension_points())
-    return _ends(problem, state.x.copy(), state.y.copy(), state.z.copy(), T)
+    return problem.with_ends([X, Y, Z], np.asarray(T(s_t), dtype=float))
