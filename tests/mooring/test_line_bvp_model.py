@@ -141,3 +141,33 @@ def test_a_spread_mooring_of_bvp_lines_equals_the_closed_form_one():
     np.testing.assert_allclose(*tensions, rtol=1e-7)
     K, K_closed = ours.stiffness(), theirs.stiffness()
     np.testing.assert_allclose(K, K_closed, rtol=0, atol=1e-7 * np.abs(K_closed).max())
+
+
+def test_the_nested_solves_retry_from_scratch_and_skip_a_failing_coarse_level():
+    """`skcable.mooring.line_bvp.mesh.solve_nested`, the plane line's and the line in space's:
+    with levels that fail where told, the calls are the documented policy's: a level that fails
+    from the coarser solution is solved from scratch, a coarse one that fails even so is skipped
+    (the next starts from scratch), and the finest level's failure is raised."""
+    from skcable.errors import ConvergenceError
+    from skcable.mooring.line_bvp.mesh import nested_sizes, solve_nested
+
+    assert nested_sizes(256) == [32, 64, 128, 256]
+
+    def levels(failing):
+        calls = []
+
+        def level(size, coarser):
+            calls.append((size, coarser))
+            if (size, coarser is None) in failing:
+                raise ConvergenceError(f"level {size}", [])
+            return size
+
+        return calls, level
+
+    calls, level = levels({(64, False), (64, True)})
+    assert solve_nested(256, level) == 256
+    assert calls == [(32, None), (64, 32), (64, None), (128, None), (256, 128)]
+    calls, level = levels({(256, False), (256, True)})
+    with pytest.raises(ConvergenceError, match="level 256"):
+        solve_nested(256, level)
+    assert calls[-2:] == [(256, 128), (256, None)]

@@ -7,9 +7,9 @@ each solve (`skcable.mooring.line_bvp.iterate.solve_on`) starts from the last st
    touches the seabed (or, on a seabed, whose one level fails) is reached by nested solves, from
    `COARSE`-odd elements up, each finished solution starting the doubled mesh (the active set
    moves by a few nodes per Newton iteration, so a fine mesh does not find its contact set from
-   the coarse start). A level that fails from
-   the coarser solution is solved from scratch; a coarse level that fails even so is skipped
-   (the next level starts from scratch); the finest level's failure is final.
+   the coarse start; `skcable.mooring.line_bvp.mesh.solve_nested`, the line in space's too). A
+   level that fails from the coarser solution is solved from scratch; a coarse level that fails
+   even so is skipped (the next level starts from scratch); the finest level's failure is final.
 2. **First solve** (`LineBVPSolver.first`): frictionless, on a mesh graded by the closed-form
    start's angle (`skcable.mooring.line_bvp.mesh.start_nodes`), from that start
    (`skcable.mooring.line_bvp.start.closed_form_start`, the uniform line), else from the
@@ -73,7 +73,7 @@ from skcable.mooring.line_bvp.mesh import (
     fixed_nodes,
     graded_nodes,
     joints_of,
-    nested_sizes,
+    solve_nested,
     start_nodes,
 )
 from skcable.mooring.line_bvp.problem import LineProblem
@@ -275,24 +275,7 @@ class LineBVPSolver:
 
     def nested(self, n) -> LineBVPSolution:
         """Nested levels up to ``n`` elements, each from the last (module docstring, 1)."""
-        solution = None
-        for size in nested_sizes(n):
-            try:
-                solution = self.level(size, solution)
-            except ConvergenceError:
-                if solution is None and size == n:
-                    raise
-                if solution is None:
-                    continue  # this coarse level failed from scratch: the next one starts so
-                if size == n:
-                    solution = self.level(size)  # from scratch, its failure final
-                else:
-                    try:
-                        solution = self.level(size)
-                    except ConvergenceError:
-                        solution = None
-        assert solution is not None, "the finest level returns or raises"
-        return solution
+        return solve_nested(n, self.level)
 
     def level(self, n, start=None) -> LineBVPSolution:
         """The line on ``n`` elements, from scratch or from ``start`` (the finished solution on

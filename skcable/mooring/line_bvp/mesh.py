@@ -5,7 +5,9 @@ r"""Meshes of the unstretched arc length: uniform, graded by the line's turning,
   of a slack stretch);
 - `start_nodes`: the first solve's grading, from the closed-form start's angle;
 - `graded_nodes`: each later solve's grading, from the last solution's angle;
-- `nested_sizes`: the element counts of nested solves, from `COARSE` elements up.
+- `nested_sizes`: the element counts of nested solves, from `COARSE` elements up, and
+  `solve_nested`, the nested solves themselves (each level from the coarser one, else from
+  scratch).
 
 The gradings equidistribute a monitor function (W. Huang, R.D. Russell, "Adaptive Moving Mesh
 Methods", Springer, 2011, ch. 2): ``1 + L |dθ/ds|`` (θ the line's angle to the horizontal), or
@@ -19,6 +21,7 @@ import numpy as np
 from scipy.optimize import brentq
 
 from skcable._checks import positive, require
+from skcable.errors import ConvergenceError
 
 __all__ = [
     "COARSE",
@@ -32,6 +35,7 @@ __all__ = [
     "line_nodes",
     "nested_sizes",
     "smoothed",
+    "solve_nested",
     "start_nodes",
     "with_fitted",
 ]
@@ -220,3 +224,28 @@ def nested_sizes(n_elements):
     while sizes[-1] // 2 >= COARSE:
         sizes.append(sizes[-1] // 2)
     return sizes[::-1]
+
+
+def solve_nested(n_elements, level):
+    """The line on ``n_elements`` by nested solves (`nested_sizes`): ``level(size, coarser)``
+    solves one mesh from the coarser mesh's solution, or from scratch (``coarser`` None). A level
+    that fails from the coarser solution is solved from scratch; a coarse level that fails even
+    so is skipped (the next one starts from scratch); the finest level's failure is final (its
+    `skcable.ConvergenceError` raised)."""
+    solution = None
+    for size in nested_sizes(n_elements):
+        finest = size == n_elements
+        try:
+            solution = level(size, solution)
+        except ConvergenceError:
+            if solution is None and not finest:
+                continue
+            if solution is None:
+                raise
+            try:
+                solution = level(size, None)
+            except ConvergenceError:
+                if finest:
+                    raise
+                solution = None
+    return solution

@@ -8,9 +8,11 @@ r"""The strategy that takes a line in space from its closed-form start to the co
 2. **the current by steps** (`LineBVP3DSolver.continued`): the line in still water, then the
    drag grown to its full value in steps (a quarter first, halved where a step fails, down to
    1/64), each from the last; where that fails too (or a fine mesh's start touches the seabed),
-3. **nested meshes** (`LineBVP3DSolver.nested`): from `skcable.mooring.line_bvp.mesh.COARSE`
+3. **nested meshes** (`LineBVP3DSolver.nested`, by the plane line's
+   `skcable.mooring.line_bvp.mesh.solve_nested`): from `skcable.mooring.line_bvp.mesh.COARSE`
    elements up, each solution interpolated onto the doubled mesh (the active set moves by a
-   few nodes per Newton iteration, so a fine mesh does not find its contact set from the start).
+   few nodes per Newton iteration, so a fine mesh does not find its contact set from the start),
+   a level that fails so solved from scratch, a coarse one that fails even so skipped.
 4. **Fitting** (`LineBVP3DSolver.fitted`): a node at the touchdown and the landing the balance of
    forces gives (`skcable.mooring.line_bvp_3d.fitting`), ``fit_touchdown`` passes while they move
    more than 1e-9 of the length. A warm start (`LineBVP3DSolver.solve` from a solution at
@@ -36,7 +38,7 @@ from skcable.errors import ConvergenceError
 from skcable.fe import NewtonOptions, first_converged
 from skcable.mooring.bathymetry import OffGrid
 from skcable.mooring.line_bvp.iterate import solve_on
-from skcable.mooring.line_bvp.mesh import COARSE, nested_sizes
+from skcable.mooring.line_bvp.mesh import COARSE, solve_nested
 from skcable.mooring.line_bvp.start import restart
 from skcable.mooring.line_bvp_3d.fitting import landing, touchdown
 from skcable.mooring.line_bvp_3d.problem import LineProblem3D
@@ -165,22 +167,21 @@ class LineBVP3DSolver:
         return solved
 
     def nested(self, n, fitted=()) -> Solved:
-        """Nested meshes up to ``n`` elements (module docstring, 3), the coarsest from its
-        closed-form start (by steps of the current where it needs them)."""
-        solved: Solved | None = None
-        for size in nested_sizes(n):
+        """Nested meshes up to ``n`` elements (module docstring, 3; `solve_nested`): each from
+        the coarser one interpolated, else from its closed-form start (by steps of the current
+        where it needs them)."""
+
+        def level(size, coarser):
             problem = self.problem(size, fitted)
-            if solved is None:
-                z0 = closed_form_start(problem)
-                attempts = [lambda p=problem, z=z0: self.run(p, z)]
-                if problem.terms:
-                    attempts.append(lambda s=size, z=z0: self.continued(s, fitted, z))
-                solved = first_converged(attempts)
-            else:
-                solved = self.run(problem, restart(solved.problem, solved.z, problem))
-        if solved is None:  # nested_sizes gives at least one size: never here
-            raise ConvergenceError("solve_line_bvp_3d: no nested mesh to solve", [])
-        return solved
+            if coarser is not None:
+                return self.run(problem, restart(coarser.problem, coarser.z, problem))
+            z0 = closed_form_start(problem)
+            attempts = [lambda: self.run(problem, z0)]
+            if problem.terms:
+                attempts.append(lambda: self.continued(size, fitted, z0))
+            return first_converged(attempts)
+
+        return solve_nested(n, level)
 
     def fitted(self, solved) -> Solved:
         """Nodes at the touchdown and the landing, moved until they settle (module docstring, 4):
