@@ -15,6 +15,8 @@ on a seabed of any shape with Coulomb friction. One concern per module:
   generalized Jacobian's banded solves and the ends' sensitivities (`DiscreteLine`);
 - `loads`: the cable terms' force and derivatives, checked, in the plane and in space;
 - `pointwise`: the fields at any arc length, through each element's own basis (`LinePoints`);
+- `fitting`: the touchdown and the landing from the balance of forces, in the plane and in
+  space;
 - `fields`: what the solutions in the plane and in space share: the state, tension, tangent,
   weight, segment end tensions and samples at any arc length (`LineFields`);
 - `problem`: one discrete line in the plane — its properties, the scales, the point loads at any

@@ -2,7 +2,7 @@ r"""The fields of a discrete line in space at any arc length, through each eleme
 
 scikit-fem's ``Basis.probes`` (and `skcable.fe.probes.gradient_probes`) builds a sparse matrix
 per call through its generic mapping and basis machinery: a few hundred microseconds, which the
-touchdown's root search (`skcable.mooring.line_bvp_3d.fitting`) pays at every evaluation.
+touchdown's root search (`skcable.mooring.line_bvp.fitting`) pays at every evaluation.
 `LinePoints` does the same evaluation directly, vectorised over the points, with the same
 arithmetic: the element holding ``s`` found as scikit-fem's ``MeshLine.element_finder`` finds
 it (the element to the right of a node, the last at the line's end), the reference coordinate

@@ -6,11 +6,11 @@ from collections.abc import Callable
 from functools import cached_property
 
 import numpy as np
-from scipy.optimize import brentq
 
 from skcable.errors import ConvergenceError
 from skcable.mooring.line_bvp.contact import anchor_split
 from skcable.mooring.line_bvp.fields import LineFields
+from skcable.mooring.line_bvp.fitting import landing, touchdown
 from skcable.mooring.line_bvp.problem import LineProblem, LineState
 from skcable.mooring.line_bvp.stiffness import fairlead_stiffness
 from skcable.results import ProfileMixin
@@ -191,26 +191,6 @@ class LineBVPSolution(LineFields, ProfileMixin):
         per_element = self.problem.element_term_load(self.dofs)[:, order]
         return np.concatenate([np.zeros((2, 1)), np.cumsum(per_element, axis=1)], axis=1)
 
-    def _transition(self, balance, near, required=True):
-        """Root of ``balance(s)`` between the mesh nodes around ``near`` (a contact node); None
-        where it changes sign nowhere there and the root is not ``required``."""
-        s_nodes = self.mesh.p[0]
-        h = np.max(np.diff(s_nodes))
-        grid = s_nodes[(s_nodes >= near - 2 * h) & (s_nodes <= near + 2 * h)]
-        values = np.array([balance(s) for s in grid])
-        zero = np.flatnonzero(values == 0.0)
-        if zero.size:
-            return float(grid[zero[0]])
-        change = np.flatnonzero(np.sign(values[:-1]) != np.sign(values[1:]))
-        if not change.size and not required:
-            return None
-        if not change.size:
-            raise ConvergenceError(
-                "solve_line_bvp: no sign change of the vertical balance near the contact edge", self.history
-            )
-        k = int(change[np.argmin(np.abs(grid[change] - near))])
-        return float(brentq(balance, grid[k], grid[k + 1], xtol=1e-12 * self.length))
-
     def seabed_slope_at(self, s):
         """The seabed's slope ``b'`` under the line at arc length ``s`` (m)."""
         x = self.xy(np.array(s))[0]
@@ -218,43 +198,37 @@ class LineBVPSolution(LineFields, ProfileMixin):
 
     @cached_property
     def _touchdown(self):
-        """(s, x) of the last touchdown: ``V_B - (W - W(s)) = H b'(x(s))`` (the suspended part's
-        vertical balance, the line leaving the seabed tangentially; with cable terms ``W`` is
-        the vertical load `load_before` and ``H`` the horizontal force there, ``H_B - (P_x(L)
-        - P_x(s))``). Where only the anchor's node presses on the seabed, the touchdown may lie
-        before the first node: it is sought there (0 where the balance has no root near the
-        anchor)."""
+        """(s, x) of the last touchdown: where the suspended part's tension is tangent to the
+        seabed (`skcable.mooring.line_bvp.fitting.touchdown`; without cable terms the vertical
+        balance ``V_B - (W - W(s)) = H_B b'(x(s))``). Where only the anchor's node presses on the
+        seabed, the touchdown may lie before the first node: it is sought there (0 where the
+        balance has no root near the anchor)."""
         anchor_only = self.anchor_on_seabed and self.in_contact.size and self.in_contact[0]
-        if not (self.touches_beyond_anchor() or anchor_only):
+        beyond = self.touches_beyond_anchor()
+        if not (beyond or anchor_only):
             return 0.0, 0.0
-        total_x, total = self.load_before(self.length)
-
-        def balance(s):
-            before_x, before = self.load_before(s)
-            H = self.H - (total_x - before_x)
-            return self.V_B - (total - before) - H * self.seabed_slope_at(s)
-
-        if self.touches_beyond_anchor():
-            s_td = self._transition(balance, self.contact_s[self.in_contact][-1])
-        else:
-            s_td = self._transition(balance, 0.0, required=False) or 0.0
+        s_td = touchdown(self.problem, self.dofs, self.state, from_anchor=not beyond)
+        if s_td is None and beyond:
+            raise ConvergenceError(
+                "solve_line_bvp: no sign change of the vertical balance near the contact edge", self.history
+            )
+        s_td = 0.0 if s_td is None else s_td
         return s_td, float(self.xy(np.array(s_td))[0])
 
     @cached_property
     def s_landing(self):
         """Where a line hanging from an anchor above the seabed first lands on it: the unstretched
-        arc length from A (m) where ``W(s) - V_A = H_A b'(x(s))`` (the balance of the part
-        hanging from A; with cable terms ``W`` is the vertical load `load_before` and the
-        horizontal force there ``H_A + P_x(s)``); 0 when A lies on the seabed or nothing
-        touches."""
+        arc length from A (m) where the part hanging from A meets the seabed tangentially
+        (`skcable.mooring.line_bvp.fitting.landing`: ``W(s) - V_A = H_A b'(x(s))`` without
+        cable terms); 0 when A lies on the seabed or nothing touches."""
         if self.anchor_on_seabed or not self.in_contact.any():
             return 0.0
-
-        def balance(s):
-            before_x, before = self.load_before(s)
-            return before - self.V_A - (self.H_A + before_x) * self.seabed_slope_at(s)
-
-        return self._transition(balance, self.contact_s[self.in_contact][0])
+        found = landing(self.problem, self.dofs, self.state)
+        if found is None:
+            raise ConvergenceError(
+                "solve_line_bvp: no sign change of the vertical balance near the contact edge", self.history
+            )
+        return found
 
     @property
     def s_touchdown(self):

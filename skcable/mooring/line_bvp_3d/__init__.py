@@ -17,7 +17,6 @@ Coulomb friction along the line. One concern per module:
   `skcable.mooring.line_bvp.contact`, in three dimensions), on the line law of
   `skcable.mooring.line_bvp.discrete` (the plane line's, in three dimensions);
 - `start`: the closed form in the vertical plane of the ends;
-- `fitting`: the touchdown and the landing from the balance of forces;
 - `driver`: the strategy `LineBVP3DSolver` — the current by steps, nested meshes, fitting,
   checks; each solve the plane line's (`skcable.mooring.line_bvp.iterate`);
 - `check`: the equilibrium residual, by scikit-fem's own assembly;
@@ -26,9 +25,8 @@ Coulomb friction along the line. One concern per module:
   `skcable.mooring.line_bvp.fields`);
 - `model`: `solve_line_bvp_3d` and `LineBVP3D`, a line model.
 
-Data flow one way: ``inputs → driver → (start, problem, loads, pointwise) →
-(`skcable.mooring.line_bvp.iterate`) →
-fitting → solution → (check, stiffness)``.
+Data flow one way: ``inputs → driver → (start, problem, loads) →
+(`skcable.mooring.line_bvp`: iterate, fitting, fields) → solution → (check, stiffness)``.
 """
 
 from skcable.mooring.line_bvp_3d.driver import LineBVP3DSolver

@@ -14,7 +14,7 @@ r"""The strategy that takes a line in space from its closed-form start to the co
    few nodes per Newton iteration, so a fine mesh does not find its contact set from the start),
    a level that fails so solved from scratch, a coarse one that fails even so skipped.
 4. **Fitting** (`LineBVP3DSolver.fitted`): a node at the touchdown and the landing the balance of
-   forces gives (`skcable.mooring.line_bvp_3d.fitting`), ``fit_touchdown`` passes while they move
+   forces gives (`skcable.mooring.line_bvp.fitting`), ``fit_touchdown`` passes while they move
    more than 1e-9 of the length. A warm start (`LineBVP3DSolver.solve` from a solution at
    nearby ends) keeps its start's nodes: where the touchdown has hardly moved, one pass finds
    it settled and the first solve is the last.
@@ -37,10 +37,10 @@ from skcable._budget import Budget
 from skcable.errors import ConvergenceError
 from skcable.fe import NewtonOptions, first_converged
 from skcable.mooring.bathymetry import OffGrid
+from skcable.mooring.line_bvp.fitting import landing, touchdown
 from skcable.mooring.line_bvp.iterate import solve_on
 from skcable.mooring.line_bvp.mesh import COARSE, solve_nested
 from skcable.mooring.line_bvp.start import restart
-from skcable.mooring.line_bvp_3d.fitting import landing, touchdown
 from skcable.mooring.line_bvp_3d.problem import LineProblem3D
 from skcable.mooring.line_bvp_3d.solution import LineBVP3DSolution
 from skcable.mooring.line_bvp_3d.start import closed_form_start
@@ -109,7 +109,7 @@ class LineBVP3DSolver:
     def warm(self, start: LineBVP3DSolution) -> tuple[LineProblem3D, np.ndarray]:
         """The problem and the first iterate of a warm start: ``start``'s line moved (`moved`), on
         a mesh with nodes at the touchdown and the landing of the moved line (the balance of
-        `skcable.mooring.line_bvp_3d.fitting` on it, its supports' reactions moved with it), else at
+        `skcable.mooring.line_bvp.fitting` on it, its supports' reactions moved with it), else at
         ``start``'s."""
         z, points = self.moved(start), list(start.problem.fitted)
         if points and self.scene.fit_touchdown:

@@ -1,22 +1,22 @@
-r"""Where a line in space leaves the seabed: the touchdown and the landing from the balance of forces.
+r"""Where a line leaves the seabed: the touchdown and the landing from the balance of forces.
 
 Nodal contact puts the touchdown at a node, up to half an element from where the line leaves
 the seabed, an error in the end forces of order (that distance)² that jumps with the mesh. The
-driver puts a node at the touchdown instead (`skcable.mooring.line_bvp_3d.driver`), found from the
-equilibrium of the suspended part: the tension vector at ``s``,
+drivers put a node at the touchdown instead (`skcable.mooring.line_bvp.driver`,
+`skcable.mooring.line_bvp_3d.driver`), found from the equilibrium of the suspended part, in the
+plane or in space: the tension vector at ``s``,
 
 .. math:: \mathbf F(s) = \mathbf S_B + \int_s^L \mathbf f\,ds - \sum_{s_k > s} P_k\,\mathbf e_z,
 
 (``S_B`` the fairlead's reaction on the line, ``f`` the distributed force, ``P_k`` the point
-loads) is tangent to the seabed where the line leaves it, ``n(r(s))·F(s) = 0`` with
-``n = (−b_x, −b_y, 1)``: in 2-D the plane line's vertical balance ``V_B − W(s, L) = H b'``
-(`skcable.mooring.line_bvp.solution`). The landing of a line hanging from an anchor above the
-seabed is the same balance of the part ``[0, s]``, ``F(s) = −S_A − ∫_0^s f ds + Σ_{s_k < s} P_k
-e_z``. The integrals are the element integrals of the solution's forces and, in the element of
-``s``, a Gauss–Legendre rule of `ORDER` points; the root is bracketed between the mesh nodes
-around the last (first) node on the seabed and found as the root of the balance's Chebyshev
-interpolant over the element, kept where the balance changes sign within 1e-13 of the length of
-it (else by Brent's method to that tolerance).
+loads, ``e_z`` up) is tangent to the seabed where the line leaves it, ``n(r(s))·F(s) = 0`` with
+``n = (−∇b, 1)``: in the plane the vertical balance ``V_B − W(s, L) = H b'``. The landing of a
+line hanging from an anchor above the seabed is the same balance of the part ``[0, s]``,
+``F(s) = −S_A − ∫_0^s f ds + Σ_{s_k < s} P_k e_z``. The integrals are the element integrals of
+the solution's forces and, in the element of ``s``, a Gauss–Legendre rule of `ORDER` points; the
+root is bracketed between the mesh nodes around the last (first) node on the seabed and found as
+the root of the balance's Chebyshev interpolant over the element, kept where the balance changes
+sign within 1e-13 of the length of it (else by Brent's method to that tolerance).
 """
 
 from __future__ import annotations
@@ -41,44 +41,45 @@ class _Balance:
         self.problem, self.z, self.side = problem, z, side
         g = problem.assembly.interpolate(z)
         f = -problem.distributed_load(g)[0]
+        dim = problem.dim
         left, right = np.sort(problem.mesh.p[0, problem.mesh.t], axis=0)
         order = np.argsort(left)  # the elements along the line
         self.left, self.right = left[order], right[order]
-        element_force = np.sum(f * problem.assembly.dx, axis=1)[:, order]  # (3, ne)
-        zero = np.zeros((3, 1))
+        element_force = np.sum(f * problem.assembly.dx, axis=1)[:, order]  # (dim, ne)
+        zero = np.zeros((dim, 1))
         # the elements' forces beyond element k (side b: k+1…) or before it (side a: …k−1)
         self.beyond = np.concatenate([np.cumsum(element_force[:, ::-1], axis=1)[:, ::-1], zero], axis=1)[
             :, 1:
         ]
         self.before = np.concatenate([zero, np.cumsum(element_force, axis=1)], axis=1)[:, :-1]
-        S_A, S_B = problem.reactions(R0)
+        S_A, S_B = R0[problem.end_dofs("a")], R0[problem.end_dofs("b")]
         self.end = S_B if side == "b" else -S_A
         self.loads_s = np.array([s_p for s_p, _ in problem.point_loads], dtype=float)
         self.loads_P = np.array([P for _, P in problem.point_loads], dtype=float)
 
     def forces(self, s) -> np.ndarray:
-        """``F(s)`` (3, n) (N), the tension vector at the arc lengths ``s`` (1-D) towards the
+        """``F(s)`` (dim, n) (N), the tension vector at the arc lengths ``s`` (1-D) towards the
         fairlead."""
         k = np.clip(np.searchsorted(self.right, s), 0, self.right.size - 1)
         lo, hi = (s, self.right[k]) if self.side == "b" else (self.left[k], s)
         half = 0.5 * np.maximum(hi - lo, 0.0)
         points = (0.5 * (lo + hi))[:, None] + half[:, None] * _X  # (n, ORDER)
-        f = self.problem.forces_at(self.z, points.ravel()).reshape(3, *points.shape)
+        f = self.problem.forces_at(self.z, points.ravel()).reshape(-1, *points.shape)
         partial = np.einsum("knq,nq->kn", f, half[:, None] * _W)
         if self.side == "b":
             F = self.end[:, None] + self.beyond[:, k] + partial
-            F[2] -= np.sum(np.where(self.loads_s[:, None] > s, self.loads_P[:, None], 0.0), axis=0)
+            F[-1] -= np.sum(np.where(self.loads_s[:, None] > s, self.loads_P[:, None], 0.0), axis=0)
         else:
             F = self.end[:, None] - self.before[:, k] - partial
-            F[2] += np.sum(np.where(self.loads_s[:, None] < s, self.loads_P[:, None], 0.0), axis=0)
+            F[-1] += np.sum(np.where(self.loads_s[:, None] < s, self.loads_P[:, None], 0.0), axis=0)
         return F
 
     def values(self, s) -> np.ndarray:
         """``n(r(s))·F(s)`` (N) at the arc lengths ``s`` (1-D)."""
-        state = self.problem.state_at(self.z, s)
-        grad = self.problem.seabed.gradient(state.x, state.y)
+        r = self.problem.state_at(self.z, s).position
+        grad = self.problem.seabed.gradient(*r[:-1])
         F = self.forces(s)
-        return F[2] - grad[0] * F[0] - grad[1] * F[1]
+        return F[-1] - np.sum(grad * F[:-1], axis=0)
 
     def __call__(self, s) -> float:
         return float(self.values(np.array([float(s)]))[0])
@@ -120,12 +121,17 @@ def _interpolated_root(balance, a, b, xtol):
     return float(np.clip(lo - v_lo * (hi - lo) / (v_hi - v_lo), lo, hi))
 
 
-def touchdown(problem, z, state):
+def touchdown(problem, z, state, from_anchor=False):
     """The arc length (m) where the line leaves the seabed for the last time towards the
-    fairlead (module docstring); None without contact or without a sign change near it."""
-    if state.terms is None or not np.any(state.terms.active):
+    fairlead (module docstring), sought near its last node on the seabed, or near the anchor
+    where ``from_anchor`` (the anchor's node alone presses on the seabed); None without contact
+    or without a sign change near it."""
+    active = state.terms is not None and np.any(state.terms.active)
+    if not (active or from_anchor):
         return None
-    near = float(problem.basis.doflocs[0][problem.contact_rows.nodes[state.terms.active]].max())
+    near = 0.0
+    if active:
+        near = float(problem.basis.doflocs[0][problem.contact_rows.nodes[state.terms.active]].max())
     return _root(_Balance(problem, z, state.R0, "b"), near, np.sort(problem.mesh.p[0]), problem.L)
 
 
@@ -135,7 +141,7 @@ def landing(problem, z, state):
     if state.terms is None or not np.any(state.terms.active):
         return None
     a = problem.anchor
-    if abs(a[2] - float(problem.seabed.height(a[0], a[1]))) <= 1e-9 * problem.L:
+    if abs(a[-1] - float(problem.seabed.height(*a[:-1]))) <= 1e-12 * problem.L:  # as the solutions
         return None
     near = float(problem.basis.doflocs[0][problem.contact_rows.nodes[state.terms.active]].min())
     return _root(_Balance(problem, z, state.R0, "a"), near, np.sort(problem.mesh.p[0]), problem.L)
