@@ -171,3 +171,27 @@ def test_the_nested_solves_retry_from_scratch_and_skip_a_failing_coarse_level():
     with pytest.raises(ConvergenceError, match="level 256"):
         solve_nested(256, level)
     assert calls[-2:] == [(256, 128), (256, None)]
+
+
+def test_the_plane_line_is_checked_by_an_assembly_of_its_own():
+    """The plane line's equilibrium residual (`skcable.mooring.line_bvp.check`, the line in
+    space's: scikit-fem's own ``asm``, not the solve's assembly) lies within its bound on a
+    grounded line with friction and on a line with a clump and a sloping seabed (measured 2.5e-9
+    and 4.1e-9 N/m, the bound 1e-5), and the check fails where the line is not in equilibrium:
+    one node of the suspended part moved up by 1e-6 of the length (52 and 35 N/m measured)
+    raises naming ``solve_line_bvp``."""
+    from skcable.errors import ConvergenceError
+
+    segments = [(300.0, 1000.0, 5e8), (250.0, 400.0, 2e8), (300.0, 1000.0, 5e8)]
+    lines = [
+        mooring.solve_line_bvp(800.0, 150.0, [(850.0, 1000.0, 5e8)], seabed=0.0, friction=0.5, n_elements=80),
+        mooring.solve_line_bvp(800.0, 150.0, segments, seabed=lambda x: -0.02 * x, point_loads=[(420, 2e4)]),
+    ]
+    for line in lines:
+        assert line.equilibrium_residual <= line.residual_bound <= 1e-8 * 1000.0
+        z, s = line.dofs.copy(), line.problem.basis.doflocs[0]
+        k = int(np.argmin(np.abs(s - 0.9 * line.length)))  # a node of the suspended part
+        z[line.problem.N + k] += 1e-6 * line.length  # moved up
+        moved = LineBVPSolution(line.problem, z, line.history, line.state)
+        with pytest.raises(ConvergenceError, match="solve_line_bvp: the equilibrium residual"):
+            moved.check()

@@ -493,6 +493,7 @@ class LineBVPSolver:
                 ),
                 solution.history,
             )
+        solution.check()
         solution.slack_solver = partial(self.at_slack_end, solution) if s0 > 0 else None
         return solution
 

@@ -1,4 +1,4 @@
-"""The fields of a converged line BVP at any arc length, in the plane and in space.
+r"""The fields of a converged line BVP at any arc length, in the plane and in space.
 
 `LineFields` is what the plane line's solution (`skcable.mooring.line_bvp.solution`) and the line
 in space's (`skcable.mooring.line_bvp_3d.solution`) share: the arc lengths checked, the state
@@ -6,15 +6,40 @@ in space's (`skcable.mooring.line_bvp_3d.solution`) share: the arc lengths check
 the tension field, the weight, the tensions at the segments' ends and the samples the writers
 read. Each solution adds its view of the ends: ``H`` and ``V`` in the plane, force vectors in
 space.
+
+**The equilibrium residual.** The converged discrete line satisfies its weak equations to
+round-off. What it reports is that, as a field: ``ρ`` in the position space (P2, zero at the
+supports) with
+
+.. math:: \int_0^L \boldsymbol\rho\cdot\delta\mathbf r\,ds
+          = \int_0^L \Big(\frac{d(T\mathbf t)}{ds} + \mathbf q\Big)\cdot\delta\mathbf r\,ds
+          = -\int_0^L \big(T\,\mathbf t\cdot\delta\mathbf r' - \mathbf f\cdot\delta\mathbf r\big)\,ds
+            - \sum_k P_k\,\delta r_{v,k} + \sum_i \mathbf C_i\cdot\delta\mathbf r_i
+
+for every test field ``δr`` vanishing at the ends (``q`` all the forces on the line: ``f`` per
+length, the point loads, the seabed's forces ``C_i`` at the contact nodes; the inter-element
+jumps of ``T t`` included), evaluated at every quadrature point: the Galerkin projection of
+``d(T t)/ds + q``. It is assembled by scikit-fem's own ``asm`` (not the solve's assembly, whose
+round-off it must not share) and solved with the consistent mass matrix. `LineFields.check`
+bounds it by ``1e-8 w`` (``w`` the largest weight per length), or by its round-off floor where
+that is larger: 64 times the change of the rows when every dof moves by its rounding,
+``ε |J| |z|`` (N), per unit of the mass matrix's row (a taut line's tension over a short
+element, positions far from the origin). Beside it, `strong_residual` is the
+pointwise ``|d(T t)/ds + q|`` inside the elements: not round-off but the discretisation's error
+(it falls as the mesh is refined), an error indicator.
 """
 
 from __future__ import annotations
+
+from functools import cached_property
 
 import numpy as np
 
 from skcable._checks import real, require, whole
 from skcable.bvp.terms import CableState, term_outputs
-from skcable.mooring.line_bvp.discrete import DiscreteLine
+from skcable.errors import ConvergenceError
+from skcable.mooring.line_bvp.check import equilibrium_field, strong_residual
+from skcable.mooring.line_bvp.discrete import DiscreteLine, LineState
 
 __all__ = ["LineFields"]
 
@@ -26,6 +51,10 @@ class LineFields:
     problem: DiscreteLine
     dofs: np.ndarray
     length: float
+    state: LineState
+    history: list
+    #: the public function that solves it, for messages
+    solver = "a line BVP"
 
     def arc(self, s) -> np.ndarray:
         """``s`` (m) as an array, checked to lie on the line ``[0, length]``."""
@@ -84,3 +113,38 @@ class LineFields:
         terms = self.problem.terms
         outputs = {k: np.moveaxis(np.asarray(v), -1, 0) for k, v in term_outputs(terms, state).items()}
         return s, state, load, outputs
+
+    # --- the equilibrium residual (module docstring) ------------------------------------------
+    @cached_property
+    def _residual(self):
+        return equilibrium_field(self)
+
+    @property
+    def equilibrium_residual(self) -> float:
+        """The largest ``|ρ|`` (N/m) over the quadrature points (module docstring)."""
+        return float(np.max(self._residual[0]))
+
+    @property
+    def residual_field(self) -> np.ndarray:
+        """``|ρ|`` (N/m) at every quadrature point, (n_elements, n_points)."""
+        return self._residual[0]
+
+    @property
+    def residual_bound(self) -> float:
+        """The bound `check` holds the residual to (N/m): ``1e-8 w`` or its round-off floor."""
+        return max(1e-8 * float(np.abs(self.problem.w_q).max()), self._residual[1])
+
+    def check(self) -> None:
+        """Raise `skcable.ConvergenceError` where `equilibrium_residual` exceeds `residual_bound`."""
+        if not self.equilibrium_residual <= self.residual_bound:
+            raise ConvergenceError(
+                f"{self.solver}: the equilibrium residual {self.equilibrium_residual:.3g} N/m exceeds "
+                f"{self.residual_bound:.3g} N/m",
+                self.history,
+            )
+
+    @cached_property
+    def strong_residual(self) -> np.ndarray:
+        """``|d(T t)/ds + q|`` (N/m) inside the elements at the quadrature points, (nq, ne): the
+        discretisation's error (module docstring)."""
+        return strong_residual(self)

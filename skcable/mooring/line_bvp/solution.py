@@ -77,6 +77,7 @@ class LineBVPSolution(LineFields, ProfileMixin):
     #: the `LineBVP` model that solved it (None from `solve_line_bvp`)
     model: object | None = None
     problem: LineProblem
+    solver = "solve_line_bvp"
 
     def __init__(self, problem: LineProblem, z, history, state: LineState):
         self.problem, self.dofs, self.state = problem, z, state

@@ -1,25 +1,7 @@
-r"""The solution of a line in space: end forces, contact, fields, equilibrium residual, stiffness.
+"""The solution of a line in space: end forces, contact, fields, equilibrium residual, stiffness.
 
-**The equilibrium residual.** The converged discrete line satisfies its weak equations to
-round-off. What it reports is that, as a field: ``ρ`` in the position space (P2, zero at the
-supports) with
-
-.. math:: \int_0^L \boldsymbol\rho\cdot\delta\mathbf r\,ds
-          = \int_0^L \Big(\frac{d(T\mathbf t)}{ds} + \mathbf q\Big)\cdot\delta\mathbf r\,ds
-          = -\int_0^L \big(T\,\mathbf t\cdot\delta\mathbf r' - \mathbf f\cdot\delta\mathbf r\big)\,ds
-            - \sum_k P_k\,\delta z_k + \sum_i \mathbf C_i\cdot\delta\mathbf r_i
-
-for every test field ``δr`` vanishing at the ends (``q`` all the forces on the line: ``f`` per
-length, the point loads, the seabed's forces ``C_i`` at the contact nodes; the inter-element
-jumps of ``T t`` included), evaluated at every quadrature point: the Galerkin projection of
-``d(T t)/ds + q``. It is assembled by scikit-fem's own ``asm`` (not the solve's assembly, whose
-round-off it must not share) and solved with the consistent mass matrix. `LineBVP3DSolution.check`
-bounds it by ``1e-8 w`` (``w`` the largest weight per length), or by its round-off floor where
-that is larger: 64 times the change of the rows when every dof moves by its rounding,
-``ε |J| |z|`` (N), per unit of the mass matrix's row (a taut line's tension over a short
-element, positions far from the origin). Beside it, `strong_residual` is the
-pointwise ``|d(T t)/ds + q|`` inside the elements: not round-off but the discretisation's error
-(it falls as the mesh is refined), an error indicator.
+Its fields, equilibrium residual and check are the plane line's
+(`skcable.mooring.line_bvp.fields`).
 """
 
 from __future__ import annotations
@@ -30,7 +12,6 @@ import numpy as np
 
 from skcable._checks import whole
 from skcable._show import Shown
-from skcable.errors import ConvergenceError
 from skcable.mooring.line_bvp.contact import anchor_split
 from skcable.mooring.line_bvp.fields import LineFields
 from skcable.mooring.line_bvp_3d.problem import LineProblem3D
@@ -75,6 +56,7 @@ class LineBVP3DSolution(LineFields, Shown):
 
     model: object | None = None
     problem: LineProblem3D
+    solver = "solve_line_bvp_3d"
 
     def __init__(self, problem, z, history, state):
         self.problem, self.dofs, self.state = problem, z, state
@@ -158,46 +140,6 @@ class LineBVP3DSolution(LineFields, Shown):
                 "grounded_length": grounded,
             }
         )
-
-    # --- checks -----------------------------------------------------------------------------------
-    @cached_property
-    def _residual(self):
-        from skcable.mooring.line_bvp_3d.check import equilibrium_field
-
-        return equilibrium_field(self)
-
-    @property
-    def equilibrium_residual(self) -> float:
-        """The largest ``|ρ|`` (N/m) over the quadrature points (module docstring)."""
-        return float(np.max(self._residual[0]))
-
-    @property
-    def residual_field(self) -> np.ndarray:
-        """``|ρ|`` (N/m) at every quadrature point, (n_elements, n_points)."""
-        return self._residual[0]
-
-    @property
-    def residual_bound(self) -> float:
-        """The bound `check` holds the residual to (N/m): ``1e-8 w`` or its round-off floor."""
-        w = float(np.abs(self.problem.w_q).max())
-        return max(1e-8 * w, self._residual[1])
-
-    def check(self) -> None:
-        """Raise `skcable.ConvergenceError` where `equilibrium_residual` exceeds `residual_bound`."""
-        if not self.equilibrium_residual <= self.residual_bound:
-            raise ConvergenceError(
-                f"solve_line_bvp_3d: the equilibrium residual {self.equilibrium_residual:.3g} N/m exceeds "
-                f"{self.residual_bound:.3g} N/m",
-                self.history,
-            )
-
-    @cached_property
-    def strong_residual(self) -> np.ndarray:
-        """``|d(T t)/ds + q|`` (N/m) inside the elements at the quadrature points, (nq, ne): the
-        discretisation's error (module docstring)."""
-        from skcable.mooring.line_bvp_3d.check import strong_residual
-
-        return strong_residual(self)
 
     # --- stiffness ----------------------------------------------------------------------------
     @cached_property

@@ -1,12 +1,12 @@
-r"""The equilibrium residual of a solved line in space, by an assembly independent of the solve's.
+r"""The equilibrium residual of a solved line BVP, by an assembly independent of the solve's.
 
 `equilibrium_field` assembles the weak residual of the converged fields with scikit-fem's own
 ``asm`` and forms (``LinearForm``, ``BilinearForm``) from the fields interpolated by scikit-fem
 (``Basis.interpolate``), not the solve's `skcable.fe.Assembly`, and returns the Galerkin
 projection ``ρ`` of ``d(T t)/ds + q`` at the quadrature points with its round-off floor
-(`skcable.mooring.line_bvp_3d.solution`); `strong_residual` the pointwise ``|d(T t)/ds + q|``
-inside the elements, ``d(T t)/ds = T' t + T (I − t tᵀ) r''/|r'|`` (``r''`` constant in a P2
-element).
+(`skcable.mooring.line_bvp.fields`), in the plane or in space; `strong_residual` the pointwise
+``|d(T t)/ds + q|`` inside the elements, ``d(T t)/ds = T' t + T (I − t tᵀ) r''/|r'|``
+(``r''`` constant in a P2 element).
 """
 
 from __future__ import annotations
@@ -34,15 +34,15 @@ def _mass(u, v, w):
 def _fields(solution):
     """``(r, a, T, T', f)`` at the quadrature points in scikit-fem's layout (…, ne, nq)."""
     problem, z = solution.problem, solution.dofs
-    basis, N = problem.basis, problem.N
-    fields = [basis.interpolate(z[k * N : (k + 1) * N]) for k in range(3)]
-    tension = problem.tbasis.interpolate(z[3 * N :])
+    basis, N, dim = problem.basis, problem.N, problem.dim
+    fields = [basis.interpolate(z[k * N : (k + 1) * N]) for k in range(dim)]
+    tension = problem.tbasis.interpolate(z[dim * N :])
     r = np.array([np.asarray(f) for f in fields])
     a = np.array([f.grad[0] for f in fields])
     T, dT = np.asarray(tension), tension.grad[0]
     s = np.asarray(basis.global_coordinates())[0]
     f = np.zeros_like(r)
-    f[2] = -problem.w_q.T
+    f[-1] = -problem.w_q.T
     state = CableState.at(r, s, a, T)
     for term in problem.terms:
         f = f + term.forces(state).f
@@ -55,23 +55,25 @@ def equilibrium_field(solution):
     import scipy.sparse.linalg as spla
 
     problem = solution.problem
-    basis, N = problem.basis, problem.N
+    basis, N, dim = problem.basis, problem.N, problem.dim
     _, a, T, _, f = _fields(solution)
     e = a / np.sqrt(np.sum(a * a, axis=0))
-    R = np.array([asm(_weak, basis, Te=T * e[k], f=f[k]) for k in range(3)])
-    np.add.at(R[2], problem.point_rows - 2 * N, problem.point_values)
-    if problem.contact_rows is not None:
-        R[:, problem.contact_rows.nodes] -= solution.contact_force.T
+    R = np.array([asm(_weak, basis, Te=T * e[k], f=f[k]) for k in range(dim)])
+    np.add.at(R[-1], problem.point_rows - (dim - 1) * N, problem.point_values)
+    rows, terms = problem.contact_rows, solution.state.terms
+    if rows is not None:
+        normal, friction = rows.forces(terms)  # the seabed's forces at its nodes
+        R[:, rows.nodes] -= normal + friction
     inner = problem.free[problem.free < N]
     M = asm(_mass, basis).tocsr()
     block = M[inner][:, inner].tocsc()
-    rho = np.zeros((3, N))
+    rho = np.zeros((dim, N))
     rho[:, inner] = spla.spsolve(block, -R[:, inner].T).T
-    at_points = np.array([np.asarray(basis.interpolate(rho[k])) for k in range(3)])
+    at_points = np.array([np.asarray(basis.interpolate(rho[k])) for k in range(dim)])
     # the floor: every dof moved by its rounding changes the rows by ε |J| |z| (N), over the mass
-    rows = problem.rounding(solution.state)[: 3 * N].reshape(3, N)
+    rounding = problem.rounding(solution.state)[: dim * N].reshape(dim, N)
     lumped = np.asarray(abs(M).sum(axis=1)).ravel()
-    floor = 64.0 * float(np.max(np.sqrt(np.sum(rows[:, inner] ** 2, axis=0)) / lumped[inner]))
+    floor = 64.0 * float(np.max(np.sqrt(np.sum(rounding[:, inner] ** 2, axis=0)) / lumped[inner]))
     return np.sqrt(np.sum(at_points * at_points, axis=0)), floor
 
 
@@ -81,10 +83,13 @@ def strong_residual(solution) -> np.ndarray:
     _, a, T, dT, f = _fields(solution)
     problem, z = solution.problem, solution.dofs
     # r'' per element of P2, from its end and middle values: 4 (r_0 − 2 r_m + r_1)/h²
-    dofs, N = problem.basis.element_dofs, problem.N
+    dofs, N, dim = problem.basis.element_dofs, problem.N, problem.dim
     h = np.diff(problem.mesh.p[0, problem.mesh.t], axis=0)[0]
     da = np.array(
-        [4.0 * (zk[dofs[0]] - 2.0 * zk[dofs[2]] + zk[dofs[1]]) / (h * h) for zk in z[: 3 * N].reshape(3, N)]
+        [
+            4.0 * (zk[dofs[0]] - 2.0 * zk[dofs[2]] + zk[dofs[1]]) / (h * h)
+            for zk in z[: dim * N].reshape(dim, N)
+        ]
     )
     da = np.broadcast_to(da[:, :, None], a.shape)
     n = np.sqrt(np.sum(a * a, axis=0))
