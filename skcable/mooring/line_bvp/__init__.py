@@ -17,6 +17,7 @@ on a seabed of any shape with Coulomb friction. One concern per module:
 - `pointwise`: the fields at any arc length, through each element's own basis (`LinePoints`);
 - `fitting`: the touchdown and the landing from the balance of forces, in the plane and in
   space;
+- `check`: the equilibrium residual of a solution by scikit-fem's own assembly;
 - `fields`: what the solutions in the plane and in space share: the state, tension, tangent,
   weight, segment end tensions and samples at any arc length (`LineFields`);
 - `problem`: one discrete line in the plane — its properties, the scales, the point loads at any

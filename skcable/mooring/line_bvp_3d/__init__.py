@@ -9,8 +9,8 @@ current's drag ``½ρ C_d d |v_n| v_n`` normal and tangential, the analyst's); t
 (`skcable.mooring.bathymetry`: a plane, a depth function, a grid) as unilateral contact with
 Coulomb friction along the line. One concern per module:
 
-- `inputs`: the segments (`LineSegment`, the plane line's), the attachments and every argument, checked into a
-  `Scene3D`;
+- `inputs`: the segments (`LineSegment`, the plane line's), the attachments and every argument,
+  checked into a `Scene3D`;
 - `loads`: the current's drag on the segments as a cable term (`SegmentDrag`);
 - `problem`: one discrete line in space — its properties, the current's drag and the analyst's
   terms bound to it, and its seabed's contact rows (the plane line's,
@@ -19,14 +19,13 @@ Coulomb friction along the line. One concern per module:
 - `start`: the closed form in the vertical plane of the ends;
 - `driver`: the strategy `LineBVP3DSolver` — the current by steps, nested meshes, fitting,
   checks; each solve the plane line's (`skcable.mooring.line_bvp.iterate`);
-- `check`: the equilibrium residual, by scikit-fem's own assembly;
 - `stiffness`: the 3 × 3 fairlead stiffness from the converged tangent, static or dynamic;
 - `solution`: `LineBVP3DSolution` (its fields the plane line's,
   `skcable.mooring.line_bvp.fields`);
 - `model`: `solve_line_bvp_3d` and `LineBVP3D`, a line model.
 
 Data flow one way: ``inputs → driver → (start, problem, loads) →
-(`skcable.mooring.line_bvp`: iterate, fitting, fields) → solution → (check, stiffness)``.
+(`skcable.mooring.line_bvp`: iterate, fitting, fields, check) → solution → stiffness``.
 """
 
 from skcable.mooring.line_bvp_3d.driver import LineBVP3DSolver
