@@ -156,7 +156,7 @@ class DiscreteLine:
         elements `columns`); the weight per unstretched length at the quadrature points `w_q`
         (N/m: each segment's number, or its callable of ``s`` checked); the axial laws `laws`
         (one compliance array `compliance_q` where every law is a constant EA); the line's weight
-        `weight` and each element's `element_weight` (N, mesh order)."""
+        `weight` (N)."""
         s_q, dx = self.assembly.x, self.assembly.dx
         self.middle = self.mesh.p[0, self.mesh.t].mean(axis=0)
         self.owner = np.clip(np.searchsorted(self.joints, self.middle) - 1, 0, len(self.segments) - 1)
@@ -169,7 +169,6 @@ class DiscreteLine:
         if all(law is None or law.kind == "constant" for law in self.laws):
             c = np.array([0.0 if law is None else 1.0 / law.EA for law in self.laws])
             self.compliance_q = np.broadcast_to(c[self.owner], dx.shape).copy()
-        self.element_weight = np.sum(self.w_q * dx, axis=0)
         self.weight = float(np.sum(self.w_q * dx))
 
     def weight_at(self, s) -> np.ndarray:
@@ -400,14 +399,6 @@ class DiscreteLine:
             terms = self.contact_rows.terms(z, R0)
             self.contact_rows.rows(F, terms)
         return LineState(F, R0, Ke, terms, self.merit(F), z)
-
-    def element_term_load(self, z) -> np.ndarray:
-        """``∫ -f ds`` (N) per element (dim, ne), in mesh order, at the iterate ``z``: the terms'
-        share of the load ``p``; zeros without terms."""
-        if not self.terms:
-            return np.zeros((self.dim, self.mesh.t.shape[1]))
-        f = self.term_load(self.assembly.interpolate(z)).f
-        return -np.sum(f * self.assembly.dx, axis=1)
 
     def absolute(self, state, tol) -> float:
         """The largest force row of ``F`` (N) where every stretch row meets ``tol`` (over

@@ -24,7 +24,7 @@ from __future__ import annotations
 import numpy as np
 from scipy.optimize import brentq
 
-__all__ = ["ORDER", "landing", "touchdown"]
+__all__ = ["ORDER", "LineBalance", "landing", "touchdown"]
 
 #: Gauss–Legendre points of the integral over the part of an element
 ORDER = 8
@@ -33,9 +33,13 @@ SAMPLES = 12
 _X, _W = np.polynomial.legendre.leggauss(ORDER)
 
 
-class _Balance:
-    """``n(r(s))·F(s)`` of a solved line from its fairlead (``side = "b"``) or anchor (``"a"``),
-    vectorised over the arc lengths (`values`; a scalar call for Brent's method)."""
+class LineBalance:
+    """The balance of a solved line from its fairlead (``side = "b"``) or anchor (``"a"``): the
+    tension vector `forces` ``F(s)`` (module docstring) and ``n(r(s))·F(s)`` (`values`; a scalar
+    call for Brent's method), vectorised over the arc lengths. Without the residual without
+    contact ``R0`` the end's reaction is left out: from the anchor, ``F(s)`` is then the load on
+    ``[0, s]``, ``Σ_{s_k < s} P_k e_z − ∫_0^s f ds`` (the weight and the point loads up, the
+    cable terms' force against)."""
 
     def __init__(self, problem, z, R0, side):
         self.problem, self.z, self.side = problem, z, side
@@ -52,8 +56,10 @@ class _Balance:
             :, 1:
         ]
         self.before = np.concatenate([zero, np.cumsum(element_force, axis=1)], axis=1)[:, :-1]
-        S_A, S_B = R0[problem.end_dofs("a")], R0[problem.end_dofs("b")]
-        self.end = S_B if side == "b" else -S_A
+        if R0 is None:
+            self.end = np.zeros(dim)
+        else:
+            self.end = R0[problem.end_dofs("b")] if side == "b" else -R0[problem.end_dofs("a")]
         self.loads_s = np.array([s_p for s_p, _ in problem.point_loads], dtype=float)
         self.loads_P = np.array([P for _, P in problem.point_loads], dtype=float)
 
@@ -132,7 +138,7 @@ def touchdown(problem, z, state, from_anchor=False):
     near = 0.0
     if active:
         near = float(problem.basis.doflocs[0][problem.contact_rows.nodes[state.terms.active]].max())
-    return _root(_Balance(problem, z, state.R0, "b"), near, np.sort(problem.mesh.p[0]), problem.L)
+    return _root(LineBalance(problem, z, state.R0, "b"), near, np.sort(problem.mesh.p[0]), problem.L)
 
 
 def landing(problem, z, state):
@@ -144,4 +150,4 @@ def landing(problem, z, state):
     if abs(a[-1] - float(problem.seabed.height(*a[:-1]))) <= 1e-12 * problem.L:  # as the solutions
         return None
     near = float(problem.basis.doflocs[0][problem.contact_rows.nodes[state.terms.active]].min())
-    return _root(_Balance(problem, z, state.R0, "a"), near, np.sort(problem.mesh.p[0]), problem.L)
+    return _root(LineBalance(problem, z, state.R0, "a"), near, np.sort(problem.mesh.p[0]), problem.L)

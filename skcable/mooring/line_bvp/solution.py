@@ -10,7 +10,7 @@ import numpy as np
 from skcable.errors import ConvergenceError
 from skcable.mooring.line_bvp.contact import anchor_split
 from skcable.mooring.line_bvp.fields import LineFields
-from skcable.mooring.line_bvp.fitting import landing, touchdown
+from skcable.mooring.line_bvp.fitting import LineBalance, landing, touchdown
 from skcable.mooring.line_bvp.problem import LineProblem, LineState
 from skcable.mooring.line_bvp.stiffness import fairlead_stiffness
 from skcable.results import ProfileMixin
@@ -157,40 +157,16 @@ class LineBVPSolution(LineFields, ProfileMixin):
         a = self.state_at(np.atleast_1d(self.arc(s))).a
         return np.arctan2(a[1], a[0])
 
-    def weight_before(self, s):
-        """Weight of the line over [0, s] and of the point loads before s (N)."""
-        p = self.problem
-        s_nodes = self.mesh.p[0]
-        k = int(np.clip(np.searchsorted(s_nodes, s) - 1, 0, len(s_nodes) - 2))
-        fraction = (s - s_nodes[k]) / (s_nodes[k + 1] - s_nodes[k])
-        before = self._cumulative_weight
-        points = sum(P for s_p, P in p.point_loads if s_p < s)
-        return before[k] + fraction * (before[k + 1] - before[k]) + points
-
     @cached_property
-    def _cumulative_weight(self):
-        order = np.argsort(self.mesh.p[0, self.mesh.t].mean(axis=0))
-        return np.concatenate([[0.0], np.cumsum(self.problem.element_weight[order])])
+    def _from_anchor(self) -> LineBalance:
+        return LineBalance(self.problem, self.dofs, None, "a")
 
     def load_before(self, s):
-        """``(P_x, P_y)`` (N): the load on the line over [0, s] in the residual's sense (weight
-        and point loads downward, `weight_before`, less the cable terms' force ``∫_0^s f``, y
-        up), per element interpolated linearly in s as `weight_before` is."""
-        if not self.problem.terms:
-            return 0.0, self.weight_before(s)
-        s_nodes = self.mesh.p[0]
-        k = int(np.clip(np.searchsorted(s_nodes, s) - 1, 0, len(s_nodes) - 2))
-        fraction = (s - s_nodes[k]) / (s_nodes[k + 1] - s_nodes[k])
-        before = self._cumulative_terms
-        terms = before[:, k] + fraction * (before[:, k + 1] - before[:, k])
-        return float(terms[0]), float(terms[1] + self.weight_before(s))
-
-    @cached_property
-    def _cumulative_terms(self):
-        """``∫ -f ds`` (N) of the cable terms from A to each mesh node (2, nodes), in order."""
-        order = np.argsort(self.mesh.p[0, self.mesh.t].mean(axis=0))
-        per_element = self.problem.element_term_load(self.dofs)[:, order]
-        return np.concatenate([np.zeros((2, 1)), np.cumsum(per_element, axis=1)], axis=1)
+        """``(P_x, P_y)`` (N): the load on the line over [0, s] in the residual's sense, y up: the
+        weight and the point loads before s, less the cable terms' force ``∫_0^s f``
+        (`skcable.mooring.line_bvp.fitting.LineBalance` from the anchor)."""
+        F = self._from_anchor.forces(np.array([float(s)]))[:, 0]
+        return float(F[0]), float(F[1])
 
     def seabed_slope_at(self, s):
         """The seabed's slope ``b'`` under the line at arc length ``s`` (m)."""
