@@ -195,3 +195,26 @@ def test_the_plane_line_is_checked_by_an_assembly_of_its_own():
         moved = LineBVPSolution(line.problem, z, line.history, line.state)
         with pytest.raises(ConvergenceError, match="solve_line_bvp: the equilibrium residual"):
             moved.check()
+
+
+def test_a_spurious_frictionless_line_stops_the_slack_estimate_by_name():
+    """`skcable.mooring.line_bvp.slack.slack_estimate` on a frictionless solution that pushes at
+    its fairlead (H < 0: a spurious branch; seen as H = −23.9 N in the plane survey's scene 1:71
+    before the sloped start) raises a `ConvergenceError` with the solve's history, not scipy's
+    bare ValueError from a bracket with no sign change."""
+    from types import SimpleNamespace
+
+    from skcable.errors import ConvergenceError
+    from skcable.mooring.line_bvp.slack import slack_estimate
+
+    spurious = SimpleNamespace(
+        H=-23.9,
+        s_touchdown=50.0,
+        history=[1e-3, 1e-12],
+        touches_beyond_anchor=lambda: True,
+        seabed_slope_at=lambda s: -0.008,
+        load_before=lambda s: (0.0, 70.0 * s),
+    )
+    with pytest.raises(ConvergenceError, match="H = -23.9 N") as err:
+        slack_estimate(spurious, 1.0)
+    assert err.value.history == [1e-3, 1e-12]

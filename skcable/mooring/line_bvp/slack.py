@@ -82,6 +82,12 @@ def slack_estimate(solution, friction):
     s_td = solution.s_touchdown
     slope = solution.seabed_slope_at(s_td)
     pull = solution.H * np.sqrt(1.0 + slope * slope) / friction  # the tension at the touchdown / μ
+    if not pull > 0:  # a frictionless line pushing at its fairlead: a spurious branch, no estimate
+        raise ConvergenceError(
+            f"solve_line_bvp: the frictionless line has H = {solution.H:.3g} N, no slack stretch to "
+            "estimate from it",
+            solution.history,
+        )
 
     def before(s):
         return solution.load_before(s)[1]

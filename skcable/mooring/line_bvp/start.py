@@ -34,7 +34,7 @@ import numpy as np
 from skcable import _plausible
 from skcable.cable._catenary import catenary
 from skcable.cable._elastic import elastic_catenary as free_catenary
-from skcable.cable.seabed import elastic_catenary
+from skcable.cable.seabed import elastic_catenary, sloped_seabed_catenary
 from skcable.errors import ConvergenceError, InputError
 from skcable.mooring.segments import Buoy, ClumpWeight, Line, Segment
 
@@ -174,9 +174,39 @@ def start_form(problem):
     return _uniform(problem)[3]
 
 
+def _on_slope(problem):
+    """The start on a straight seabed sloping along the line through A (``b(0) = 0``, the slope
+    the same at A and under B): Jonkman's line on the slope
+    (`skcable.cable.seabed.sloped_seabed_catenary`, the line in space's start there) of the
+    uniform line, on the problem's dofs; None elsewhere or where it has no such form. The flat
+    grounded start lifted onto a slope can leave Newton no descent (71 of the 97 lines that the
+    plane line failed and the line in space solved in ``benchmarks/line_bvp_planes.py``)."""
+    bed, w, L = problem.seabed, problem.start_weight, problem.L
+    if bed is None or bed.flat is not None or not w > 0:
+        return None
+    if abs(float(bed(np.array([0.0]))[0])) > 1e-12 * L:
+        return None
+    k0, k1 = (float(k) for k in bed.slope(np.array([0.0, problem.span])))
+    if abs(k0 - k1) > 1e-12 * max(1.0, abs(k0)):
+        return None
+    EA = L / problem.compliance if problem.compliance > 0 else 1e9 * w * L
+    try:
+        with _plausible.quiet():  # a start, not an answer
+            line = sloped_seabed_catenary(problem.span, problem.dh, w, EA, length=L, seabed_slope=k0)
+    except (InputError, ConvergenceError):
+        return None
+    xy = line.xy(problem.basis.doflocs[0])
+    x, y = np.array(xy[..., 0], dtype=float), np.array(xy[..., 1], dtype=float)
+    return problem.with_ends([x, y], np.asarray(line.T_of_s(problem.tension_points()), dtype=float))
+
+
 def closed_form_start(problem):
-    """The first iterate on ``problem``'s dofs: ``[x, y, T]``, the ends at A and B exactly; the
-    heap refused (module docstring)."""
+    """The first iterate on ``problem``'s dofs: ``[x, y, T]``, the ends at A and B exactly; on a
+    straight slope through A, the line on the slope (`_on_slope`); the heap refused (module
+    docstring)."""
+    sloped = _on_slope(problem)
+    if sloped is not None:
+        return sloped
     x, y, T, _, heap = _uniform(problem)
     if heap:
         if _exact(problem):
