@@ -8,19 +8,18 @@ In space the anchor is at (0, 0, 0), the fairlead at (span, 0, dh), the seabed
 ``Plane(height, (slope, 0))``; the plane's ``(H_A, V_A, H_B, V_B)`` are space's
 ``force_on_anchor[[0, 2]] = (H_A, -V_A)`` and ``force_on_fairlead[[0, 2]] = (-H_B, -V_B)``.
 
-`test_the_two_line_bvps_agree_on_the_surveys_scenes` holds ten scenes both solve to 1e-6 of the
+`test_the_two_line_bvps_agree_on_the_surveys_scenes` holds eleven scenes both solve to 1e-6 of the
 largest end force (the survey's threshold): seabeds sloping along the line (through the anchor
 or below it), a flat seabed below the anchor, clump weights and buoys inside segments resting on
 the seabed, weights varying along the line, friction; measured differences 1.2e-9 to 4.1e-7.
 Two of them (2:109, 2:216) the plane line failed until its start on a straight slope through the
 anchor became the closed form on the slope (`skcable.cable.sloped_seabed_catenary`, the line in
-space's), not the flat grounded line lifted onto it.
+space's), not the flat grounded line lifted onto it; one (3:172) until its first solve tried the
+uniform mesh where the mesh graded by the start fails.
 
 The scenes marked ``xfail(strict=True)`` are the survey's findings, each with the driver's stage
 that fails (a fix turns them into passes, which strict marks report):
 
-- the plane line's first solve on the mesh graded by that start fails, with no uniform-mesh
-  alternative (3:172);
 - the line in space, on a uniform mesh, does not resolve the bend where a line hanging from an
   anchor above the seabed lands on it: the discrete line is in compression (5:126);
 - the line in space has one start and no alternative (the plane line's start switching its
@@ -116,15 +115,12 @@ AGREE = {
     # a clump inside a segment of varying weight on a falling slope, 256 elements: failed in the
     # plane before the start on the slope; 4.1e-7
     "2:216": Scene(957.8803706286196, 117.91940084553283, [(1105.5958054292175, (16.2524378320634, 0.13837515399400696, 1867.2228002823872, 5.37955773199594), 128055193.51766175)], [(895.782892664207, 300.1613144017629)], (0.0, -0.07971569413192899), 0.0, 256),  # noqa: E501
+    # a slope below the anchor (-0.066), chain under a wire, 256 elements: the plane line failed on
+    # the mesh graded by its start until its first solve tried the uniform mesh too; 5.5e-8
+    "3:172": Scene(82.10856427503789, -2.8448158683969957, [(60.020823250453645, 983.8269844162455, 11349329.112749042), (25.048564461609107, 81.90826461628382, 166365802.86941996)], [], (-2.9490473395742454, -0.06564492858565593), 0.0, 256),  # noqa: E501
 }
 
 FAILS = [
-    pytest.param(
-        Scene(82.10856427503789, -2.8448158683969957, [(60.020823250453645, 983.8269844162455, 11349329.112749042), (25.048564461609107, 81.90826461628382, 166365802.86941996)], [], (-2.9490473395742454, -0.06564492858565593), 0.0, 256),  # noqa: E501
-        id="3:172", marks=pytest.mark.xfail(strict=True, raises=ConvergenceError, reason=(
-            "plane: the first solve on the mesh graded by the start (start_nodes) finds no descent and "
-            "LineBVPSolver.first has no uniform-mesh alternative (on a uniform first mesh it solves)")),
-    ),
     pytest.param(
         Scene(1922.2092475036493, 294.044509228659, [(494.89192333352344, 68.20312556629979, 66833930.27339349), (1775.8071179684848, 95.12563810673794, 912014998.0684423)], [(179.4679801391432, -28960.905299920803), (2103.0070315166067, 4535.555820946291)], (-55.54105296310373, 0.0), 0.0, 64),  # noqa: E501
         id="5:126", marks=pytest.mark.xfail(strict=True, raises=ConvergenceError, reason=(

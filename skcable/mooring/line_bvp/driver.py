@@ -310,17 +310,20 @@ class LineBVPSolver:
         """The frictionless line from the closed-form start, on a mesh graded by it when the
         touchdown is fitted; from the segment-wise closed form where that fails, or where it
         leaves the discrete line in compression (a spurious branch: a clump weight at the bottom
-        of a U-shaped line under a uniform start) and the segment-wise start does not."""
-        problem = self.problem(n, mu=0.0)
+        of a U-shaped line under a uniform start) and the segment-wise start does not; on the
+        uniform mesh where every start fails on the graded one (the survey's scene 3:172,
+        `benchmarks/line_bvp_planes.py`)."""
+        uniform = problem = self.problem(n, mu=0.0)
         if self.scene.fit_touchdown:
             problem = self.problem(n, mu=0.0, nodes_at=start_nodes(start_form(problem), self.fixed, n))
-        solution = first_converged(
-            [
-                lambda: self.run(problem, closed_form_start(problem)),
-                lambda: self.from_segments(problem),
-                lambda: self.switched(problem, closed_form_start(problem)),
-            ]
-        )
+        attempts = [
+            lambda: self.run(problem, closed_form_start(problem)),
+            lambda: self.from_segments(problem),
+            lambda: self.switched(problem, closed_form_start(problem)),
+        ]
+        if problem is not uniform:  # the start's grading can leave Newton no descent: the uniform mesh
+            attempts.append(lambda: self.run(uniform, closed_form_start(uniform)))
+        solution = first_converged(attempts)
         if self.compressed(solution):
             other = first_converged([lambda: self.from_segments(problem), lambda: solution])
             solution = solution if self.compressed(other) else other
