@@ -231,7 +231,7 @@ class LineBVPSolver:
         sc, old = self.scene, previous.problem
         nodes = np.sort(old.mesh.p[0])
         problem = self.problem(nodes.size - 1, _with(old.slack_end), old.slack_end, sc.friction, nodes)
-        dz = old.end_sensitivities(previous.state)[2]  # ∂z/∂r_B, the active set held
+        dz = previous.sensitivity[2]  # ∂z/∂r_B, the active set held (its stiffness's too)
         z = previous.dofs + dz @ np.array([sc.span - previous.span, sc.dh - previous.dh])
         return self.run(problem, restart(old, z, problem))
 

@@ -69,13 +69,13 @@ class LineFields:
     def positions(self, s) -> np.ndarray:
         """Position (m) at unstretched arc lengths ``s`` from the anchor: ``(*s.shape, dim)``."""
         s = self.arc(s)
-        state = self.state_at(s)
+        state = self.problem.state_at(self.dofs, s.ravel())
         return state.position.T.reshape(*s.shape, -1)
 
     def tangent(self, s) -> np.ndarray:
         """The unit tangent towards the fairlead at ``s``: ``(*s.shape, dim)``."""
         s = self.arc(s)
-        a = self.state_at(s).a
+        a = self.problem.state_at(self.dofs, s.ravel()).a
         return (a / np.sqrt(np.sum(a * a, axis=0))).T.reshape(*s.shape, -1)
 
     def T_of_s(self, s):
@@ -113,6 +113,13 @@ class LineFields:
         terms = self.problem.terms
         outputs = {k: np.moveaxis(np.asarray(v), -1, 0) for k, v in term_outputs(terms, state).items()}
         return s, state, load, outputs
+
+    @cached_property
+    def sensitivity(self):
+        """``(K_B, K_A, dz)``: the static sensitivities to the fairlead's position at the
+        converged state (`skcable.mooring.line_bvp.discrete.DiscreteLine.end_sensitivities`),
+        computed once: the static stiffness and a warm start's predictor read them."""
+        return self.problem.end_sensitivities(self.state)
 
     # --- the equilibrium residual (module docstring) ------------------------------------------
     @cached_property

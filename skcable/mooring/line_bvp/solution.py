@@ -154,7 +154,7 @@ class LineBVPSolution(LineFields, ProfileMixin):
 
     def angle(self, s):
         """Angle of the line to the horizontal (rad) at ``s`` (an array, 1-D at least)."""
-        a = self.state_at(np.atleast_1d(self.arc(s))).a
+        a = self.problem.state_at(self.dofs, np.atleast_1d(self.arc(s)).ravel()).a
         return np.arctan2(a[1], a[0])
 
     @cached_property

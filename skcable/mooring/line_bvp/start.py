@@ -179,8 +179,9 @@ def _on_slope(problem):
     the same at A and under B): Jonkman's line on the slope
     (`skcable.cable.seabed.sloped_seabed_catenary`, the line in space's start there) of the
     uniform line, on the problem's dofs; None elsewhere or where it has no such form. The flat
-    grounded start lifted onto a slope can leave Newton no descent (71 of the 97 lines that the
-    plane line failed and the line in space solved in ``benchmarks/line_bvp_planes.py``)."""
+    grounded start lifted onto a slope can leave Newton no descent (35 of the 44 lines that the
+    plane line failed and the line in space solved in ``benchmarks/line_bvp_planes.py``, seeds
+    1–3, solve from this start)."""
     bed, w, L = problem.seabed, problem.start_weight, problem.L
     if bed is None or bed.flat is not None or not w > 0:
         return None

@@ -48,10 +48,10 @@ def _slack_dof(solution) -> int:
 def fairlead_stiffness(solution, slack_solver=None) -> np.ndarray:
     """``∂(H_B, V_B)/∂(span, dh)`` (N/m) of ``solution`` (module docstring); ``slack_solver(s0)``
     re-solves its line with the slack stretch ending at ``s0`` (needed where it has one)."""
-    K, _, dz = solution.problem.end_sensitivities(solution.state)
+    K, _, dz = solution.sensitivity  # computed once per solution (a warm start reads it too)
     s0 = solution.problem.slack_end
     if s0 == 0:
-        return K
+        return K.copy()  # the solution keeps its own
     if slack_solver is None:
         raise InputError("solution", "its slack stretch needs the solver that made it for the stiffness")
     step = SLACK_STEP * solution.length

@@ -6,8 +6,6 @@ Its fields, equilibrium residual and check are the plane line's
 
 from __future__ import annotations
 
-from functools import cached_property
-
 import numpy as np
 
 from skcable._checks import whole
@@ -142,13 +140,6 @@ class LineBVP3DSolution(LineFields, Shown):
         )
 
     # --- stiffness ----------------------------------------------------------------------------
-    @cached_property
-    def sensitivity(self):
-        """``(K_B, K_A, dz)``: the static sensitivities to the fairlead's position at the
-        converged state (`skcable.mooring.line_bvp.discrete.DiscreteLine.end_sensitivities`),
-        computed once: the static `stiffness` and a warm start's predictor read them."""
-        return self.problem.end_sensitivities(self.state)
-
     def stiffness(self, kind: str = "static") -> FairleadStiffness:
         """The fairlead stiffness ``∂S_B/∂r_B`` (N/m, 3 × 3, global axes; `kind` ``"static"`` or
         ``"dynamic"``: `skcable.mooring.line_bvp_3d.stiffness`)."""
