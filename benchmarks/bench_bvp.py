@@ -16,6 +16,8 @@ Run:  python benchmarks/bench_bvp.py                 (chart + CSV + 10k-element 
       python benchmarks/bench_bvp.py --large         (only the 10k-element timing)
       python benchmarks/bench_bvp.py --stability     (where each formulation converges)
       python benchmarks/bench_bvp.py --seabed        (solve_line_bvp on a seabed: error and time)
+      python benchmarks/bench_bvp.py --warm          (warm starts against cold solves, plane and
+                                                      space; the cost of the equilibrium check)
 Output: benchmarks/out/bvp_accuracy_time.csv, docs/img/bvp_accuracy_time.png
 """
 
@@ -25,6 +27,7 @@ import argparse
 import csv
 import sys
 import time
+from functools import partial
 from pathlib import Path
 
 import numpy as np
@@ -298,15 +301,76 @@ def seabed(args):
                 )
 
 
+def warm(args):
+    """Warm starts against solves from scratch over a sweep of ten fairlead steps, for the plane
+    line and the line in space (`LineBVP.solve(start=)`, `LineBVP3D.solve(start=)`): time per
+    step (median of the repeats) and the largest difference of the fairlead's force between the
+    two sweeps' last solutions, over its largest component; then
+    the cost of the equilibrium check of the last solution (`skcable.mooring.line_bvp.check`,
+    which every solve runs) against the time of a solve from scratch."""
+    from skcable.mooring import LineBVP
+    from skcable.mooring.line_bvp.check import equilibrium_field
+    from skcable.mooring.line_bvp_3d import LineBVP3D
+
+    segments = [(300.0, 1000.0, 5e8), (250.0, 400.0, 2e8), (300.0, 1000.0, 5e8)]
+    chain = [(850.0, 1000.0, 5e8)]
+
+    def plane_ends(k):
+        return (800.0 + 0.5 * k, 150.0 + 0.2 * k)
+
+    def space_ends(k):
+        return ((0.0, 0.0, 0.0), (800.0 + 0.5 * k, 0.3 * k, 150.0 + 0.2 * k))
+
+    lines = [
+        ("plane, 3 segments on a slope", LineBVP(segments, seabed=lambda x: -0.02 * x), plane_ends),
+        ("plane, chain, friction 0.5", LineBVP(chain, seabed=0.0, friction=0.5, n_elements=80), plane_ends),
+        ("space, 3 segments on a flat seabed", LineBVP3D(segments, seabed=0.0), space_ends),
+    ]
+
+    def force(solution):
+        if hasattr(solution, "force_on_fairlead"):
+            return np.asarray(solution.force_on_fairlead)
+        return np.array([solution.H_B, solution.V_B])
+
+    def sweep(model, ends, from_last):
+        solution = model.solve(*ends(0))
+        for k in range(1, 11):
+            solution = model.solve(*ends(k), start=solution if from_last else None)
+        return solution
+
+    def per_step(model, ends, from_last):
+        runs = [_timed(partial(sweep, model, ends, from_last)) for _ in range(args.repeats // 6 or 1)]
+        return np.median(runs) / 10
+
+    print("| line | warm: ms per step | cold: ms per step | warm/cold | fairlead force, warm vs cold |")
+    print("|---|---|---|---|---|")
+    for label, model, ends in lines:
+        w_sol, c_sol = sweep(model, ends, True), sweep(model, ends, False)
+        t_w, t_c = per_step(model, ends, True), per_step(model, ends, False)
+        gap = np.max(np.abs(force(w_sol) - force(c_sol))) / np.max(np.abs(force(c_sol)))
+        print(f"| {label} | {t_w * 1e3:.1f} | {t_c * 1e3:.1f} | {t_w / t_c:.2f} | {gap:.1e} |")
+    print()
+    print("| line | equilibrium check, ms | solve from scratch, ms | share |")
+    print("|---|---|---|---|")
+    for label, model, ends in lines:
+        solution = model.solve(*ends(0))
+        t_check = np.median([_timed(partial(equilibrium_field, solution)) for _ in range(args.repeats)])
+        t_solve = np.median([_timed(partial(model.solve, *ends(0))) for _ in range(args.repeats // 3 or 1)])
+        print(f"| {label} | {t_check * 1e3:.2f} | {t_solve * 1e3:.1f} | {t_check / t_solve:.1%} |")
+
+
 def main(argv=None):
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--stability", action="store_true", help="map where each formulation converges")
     parser.add_argument("--large", action="store_true", help="only the 10,000-element timings")
     parser.add_argument("--seabed", action="store_true", help="solve_line_bvp on a seabed: error, time")
+    parser.add_argument("--warm", action="store_true", help="warm against cold starts; check cost")
     parser.add_argument("--repeats", type=int, default=30, help="runs of each 10,000-element case")
     args = parser.parse_args(argv)
     if args.seabed:
         return seabed(args)
+    if args.warm:
+        return warm(args)
     (stability if args.stability else large if args.large else accuracy_time)(args)
 
 

@@ -329,6 +329,17 @@ def test_bad_inputs_are_refused_by_name():
         solve_line_bvp_3d((0.0, 0.0), B, [LineSegment(**CHAIN)])
     with pytest.raises(InputError, match="spam"):
         LineBVP3D([LineSegment(**CHAIN)], spam=1)
+    for bad, why in [
+        ([(500.0, 1e4)], "inside the line"),  # at the fairlead: a support, not a point load
+        ([(0.0, 1e4)], "inside the line"),
+        ([(100.0, float("nan"))], "point_loads"),
+        ([(100.0,)], r"\(s, P\)"),
+        (3.0, "sequence"),
+        ([(100.0, [1e4, 2e4])], "two numbers"),
+    ]:
+        with pytest.raises(InputError, match=why) as refused:
+            solve_line_bvp_3d(A, B, [LineSegment(**CHAIN)], point_loads=bad)
+        assert refused.value.argument == "point_loads"
 
 
 def test_vtk_repr_and_pickle(tmp_path):
@@ -605,3 +616,31 @@ def test_the_plane_line_refuses_what_only_the_line_in_space_models_by_name():
     by_law = mooring.solve_line_bvp(500.0, 100.0, [(600.0, 1000.0, ConstantEA(5e8))])
     by_number = mooring.solve_line_bvp(500.0, 100.0, [(600.0, 1000.0, 5e8)])
     assert (by_law.H, by_law.V_B) == (by_number.H, by_number.V_B)
+
+
+def test_the_line_in_space_grades_its_mesh_by_its_turning_as_the_plane_line_does():
+    """`skcable.mooring.line_bvp.mesh.graded_nodes`, which the line in space uses where its uniform
+    mesh ends in compression: for one line solved in the plane and in space (on one uniform mesh),
+    the nodes graded by the turning of the unit tangent in space are those graded by the plane's
+    angle, within 1e-6 of the length (the two differ by the finite differences of an angle and of
+    a unit vector, to the second order of the angle step: measured 6.1e-8); turned by 30° about
+    the vertical and moved, the line in space grades its mesh alike to round-off (measured
+    4.3e-14: the turning of a tangent does not depend on the frame)."""
+    from skcable import mooring
+    from skcable.mooring.line_bvp.mesh import fixed_nodes, graded_nodes
+
+    mesh = dict(n_elements=48, fit_touchdown=0)
+    plane = mooring.solve_line_bvp(700.0, 250.0, SEGMENTS, point_loads=[(300.0, 2e4)], **mesh)
+    space = solve_line_bvp_3d((0.0, 0.0, 0.0), (700.0, 0.0, 250.0), SEGMENTS, attachments=[(1, 2e4)], **mesh)
+    c, s = np.cos(np.pi / 6), np.sin(np.pi / 6)
+    B_turned = (10.0 + 700.0 * c, -5.0 + 700.0 * s, 250.0)
+    turned = solve_line_bvp_3d((10.0, -5.0, 0.0), B_turned, SEGMENTS, attachments=[(1, 2e4)], **mesh)
+    fixed = fixed_nodes(plane.problem.joints, [(300.0, 2e4)])
+    L = plane.problem.L
+    want = graded_nodes(plane.problem, plane.dofs, 48, fixed)[0]
+    h = np.diff(want)
+    assert h.max() > 2.0 * h.min(), "the test needs a mesh the line's turning grades"
+    got = graded_nodes(space.problem, space.dofs, 48, fixed)[0]
+    np.testing.assert_allclose(got, want, rtol=0, atol=1e-6 * L)
+    again = graded_nodes(turned.problem, turned.dofs, 48, fixed)[0]
+    np.testing.assert_allclose(again, got, rtol=0, atol=1e-12 * L)

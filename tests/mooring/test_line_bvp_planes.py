@@ -8,25 +8,22 @@ In space the anchor is at (0, 0, 0), the fairlead at (span, 0, dh), the seabed
 ``Plane(height, (slope, 0))``; the plane's ``(H_A, V_A, H_B, V_B)`` are space's
 ``force_on_anchor[[0, 2]] = (H_A, -V_A)`` and ``force_on_fairlead[[0, 2]] = (-H_B, -V_B)``.
 
-`test_the_two_line_bvps_agree_on_the_surveys_scenes` holds eleven scenes both solve to 1e-6 of the
-largest end force (the survey's threshold): seabeds sloping along the line (through the anchor
+`test_the_two_line_bvps_agree_on_the_surveys_scenes` holds thirteen scenes both solve to 1e-6 of
+the largest end force (the survey's threshold): seabeds sloping along the line (through the anchor
 or below it), a flat seabed below the anchor, clump weights and buoys inside segments resting on
-the seabed, weights varying along the line, friction; measured differences 1.2e-9 to 4.1e-7.
-Two of them (2:109, 2:216) the plane line failed until its start on a straight slope through the
-anchor became the closed form on the slope (`skcable.cable.sloped_seabed_catenary`, the line in
-space's), not the flat grounded line lifted onto it; one (3:172) until its first solve tried the
-uniform mesh where the mesh graded by the start fails.
+the seabed, weights varying along the line, friction; measured differences 3.9e-12 to 4.1e-7.
+Each comment says what a driver failed before its fix: two (2:109, 2:216) the plane line failed
+until its start on a straight slope through the anchor became the closed form on the slope
+(`skcable.cable.sloped_seabed_catenary`, the line in space's), not the flat grounded line lifted
+onto it; one (3:172) until its first solve tried the uniform mesh where the mesh graded by the
+start fails; one (3:234) both failed until each tried the lifted line as well; one (5:126) the
+line in space ended in compression until it graded its mesh by the line's turning.
 
-The scenes marked ``xfail(strict=True)`` are the survey's findings, each with the driver's stage
-that fails (a fix turns them into passes, which strict marks report):
-
-- the line in space, on a uniform mesh, does not resolve the bend where a line hanging from an
-  anchor above the seabed lands on it: the discrete line is in compression (5:126);
-- the line in space has one start and no alternative (the plane line's start switching its
-  contact nodes by the tension, `LineBVPSolver.switched`): it fails on every mesh (3:234);
-- the plane line's grading by the line's turning leaves the low arch (0.14 m over 40 m) a buoy
-  lifts off the grounded stretch in elements of 3 m: 1.6e-5 of the largest force off, where the
-  line in space is within 1.6e-8 of its own 4-times-finer solution (1:162).
+The scene marked ``xfail(strict=True)`` is the survey's open finding, with the driver's stage
+that fails (a fix turns it into a pass, which the strict mark reports): the plane line's grading
+by the line's turning leaves the low arch (0.14 m over 40 m) a buoy lifts off the grounded
+stretch in elements of 3 m: 1.6e-5 of the largest force off, where the line in space is within
+1.6e-8 of its own 4-times-finer solution (1:162).
 """
 
 from __future__ import annotations
@@ -36,7 +33,6 @@ from typing import NamedTuple
 import numpy as np
 import pytest
 
-from skcable.errors import ConvergenceError
 from skcable.mooring import solve_line_bvp
 from skcable.mooring.bathymetry import Plane
 from skcable.mooring.line_bvp_3d import solve_line_bvp_3d
@@ -118,21 +114,18 @@ AGREE = {
     # a slope below the anchor (-0.066), chain under a wire, 256 elements: the plane line failed on
     # the mesh graded by its start until its first solve tried the uniform mesh too; 5.5e-8
     "3:172": Scene(82.10856427503789, -2.8448158683969957, [(60.020823250453645, 983.8269844162455, 11349329.112749042), (25.048564461609107, 81.90826461628382, 166365802.86941996)], [], (-2.9490473395742454, -0.06564492858565593), 0.0, 256),  # noqa: E501
+    # an anchor above a flat seabed, a rope landing on it, a buoy and a clump, 64 elements: the line
+    # in space ended in compression on its uniform mesh (the landing's bend in one element) until
+    # it graded its mesh by the line's turning as the plane line does; 4.6e-9
+    "5:126": Scene(1922.2092475036493, 294.044509228659, [(494.89192333352344, 68.20312556629979, 66833930.27339349), (1775.8071179684848, 95.12563810673794, 912014998.0684423)], [(179.4679801391432, -28960.905299920803), (2103.0070315166067, 4535.555820946291)], (-55.54105296310373, 0.0), 0.0, 64),  # noqa: E501
+    # a slope through the anchor, a weight varying +-47 %, a clump and a buoy of 73 and 92 kN: the
+    # plane line failed from its start on the slope until it tried the uniform line lifted onto
+    # the slope (switching by the tension); the line in space as well, on a mesh graded by that
+    # start; 3.9e-12
+    "3:234": Scene(720.8246891133476, 8.720188995417637, [(439.0475516232507, 875.5899328081308, 4594667007.771147), (103.57758309135652, (18.114687470739305, 0.47041778674158746, 1025.8479702200998, 1.4959240795939381), 1773500123.6117845), (234.86477799393015, 17.556572754682215, 836344294.352262)], [(171.49602873003803, 73063.35138591191), (516.707081104585, -92301.2053935098)], (0.0, -0.06787518350727702), 0.0, 64),  # noqa: E501
 }
 
 FAILS = [
-    pytest.param(
-        Scene(1922.2092475036493, 294.044509228659, [(494.89192333352344, 68.20312556629979, 66833930.27339349), (1775.8071179684848, 95.12563810673794, 912014998.0684423)], [(179.4679801391432, -28960.905299920803), (2103.0070315166067, 4535.555820946291)], (-55.54105296310373, 0.0), 0.0, 64),  # noqa: E501
-        id="5:126", marks=pytest.mark.xfail(strict=True, raises=ConvergenceError, reason=(
-            "space: the uniform 64-element mesh does not resolve the landing's bend: 'the discrete line is "
-            "in compression' (at 256 elements it solves, 8.5e-8 from the plane line at 64)")),
-    ),
-    pytest.param(
-        Scene(720.8246891133476, 8.720188995417637, [(439.0475516232507, 875.5899328081308, 4594667007.771147), (103.57758309135652, (18.114687470739305, 0.47041778674158746, 1025.8479702200998, 1.4959240795939381), 1773500123.6117845), (234.86477799393015, 17.556572754682215, 836344294.352262)], [(171.49602873003803, 73063.35138591191), (516.707081104585, -92301.2053935098)], (0.0, -0.06787518350727702), 0.0, 64),  # noqa: E501
-        id="3:234", marks=pytest.mark.xfail(strict=True, raises=ConvergenceError, reason=(
-            "space: its one start fails (no descent) on every mesh (32 to 1024 elements) and it has no "
-            "alternative; the plane line solves it by its tension-switched start (1.4e-9 from 256)")),
-    ),
     pytest.param(
         Scene(223.77074608392488, 62.89939084796257, [(32.886601379985, 20.61441103459703, 101380166.73397306), (137.12177586509273, 70.56314386521404, 106087226.46505192), (115.33259716669528, 72.59828653715647, 656273823.9351658)], [(68.91374051347343, -257.34741739282975), (126.65004318711226, 644.0422954003168)], (-15.257891045677004, 0.0), 0.0, 256),  # noqa: E501
         id="1:162", marks=pytest.mark.xfail(strict=True, raises=AssertionError, reason=(

@@ -241,6 +241,25 @@ class DiscreteLine:
         c = self.load_scale / self.L * node_length[nodes] / (self.L / element_length.size)
         return c, node_length[nodes]
 
+    def with_tension_switch(self, z):
+        """A copy of the problem whose contact nodes switch to active at ``λ > max(c_i, T/h_i) g``,
+        ``T`` the largest tension of the iterate ``z`` and ``h_i`` the node's element length: the
+        force that bends a line of tension T down by the gap g over an element; None without
+        contact.
+
+        The switch ``c_i`` (the load per length) is the one for lines whose weight bends them:
+        on a taut line (``T/h`` 1e7 times it) a start's residual force of 1e-8 of T at the first
+        node past the anchor, 7 cm above the seabed, made it active, and the row ``c g = 0``
+        pulled it down onto the seabed in one step (the merit went from 3e-3 to 8e3)."""
+        if self.contact_rows is None:
+            return None
+        tension = float(np.max(np.abs(z[self.dim * self.N :])))
+        stiffness, node_length = self.contact_stiffness(self.contact_rows.nodes)
+        other = copy.copy(self)
+        switch = np.maximum(stiffness, tension / node_length)
+        other.contact_rows = replace(self.contact_rows, switch=switch)
+        return other
+
     def with_active_set(self, active):
         """A copy of the problem whose contact nodes keep the active set ``active`` (bool per
         contact node: ``c g = 0`` where True, ``λ = 0`` where False): a smooth system, whose
@@ -250,6 +269,12 @@ class DiscreteLine:
         other = copy.copy(self)
         other.contact_rows = replace(self.contact_rows, frozen=np.array(active, dtype=bool))
         return other
+
+    def compressed(self, z, tol) -> bool:
+        """Whether the tension of the dofs ``z`` falls below ``-1e3 tol`` of `load_scale` (N)
+        anywhere: the discrete line in compression (its bends not resolved, or a spurious
+        branch), ``tol`` Newton's tolerance on the scaled residual."""
+        return bool(np.min(z[self.dim * self.N :]) < -1e3 * tol * self.load_scale)
 
     def merit(self, F) -> float:
         """The largest free row of ``F``: force rows over `load_scale` (N), stretch rows over

@@ -16,7 +16,10 @@ each solve (`skcable.mooring.line_bvp.iterate.solve_on`) starts from the last st
    segment-wise closed form (`skcable.mooring.line_bvp.start.segmented_start`), else from the
    first start with the contact nodes switching by the line's tension (`LineBVPSolver.switched`:
    a taut line's residual forces at its start can exceed the switch of a line bent by its
-   weight).
+   weight); on a straight slope through the anchor, whose start is the line on the slope, else
+   from the uniform line lifted onto it (`skcable.mooring.line_bvp.start.lifted_start`), fixed
+   and switching; else
+   from the closed-form start on the uniform mesh.
 3. **Passes of grading** (`LineBVPSolver.graded`): the mesh graded by the last solution's angle
    (`skcable.mooring.line_bvp.mesh.graded_nodes`), again while the elements of the bends could
    shrink no more than ``REFINEMENT`` times at one pass (the start then puts the touchdown a
@@ -70,8 +73,10 @@ from skcable.mooring.line_bvp.inputs import Scene
 from skcable.mooring.line_bvp.iterate import solve_on
 from skcable.mooring.line_bvp.mesh import (
     COARSE,
+    GRADE_PASSES,
     fixed_nodes,
     graded_nodes,
+    grading_passes,
     joints_of,
     solve_nested,
     start_nodes,
@@ -87,7 +92,9 @@ from skcable.mooring.line_bvp.slack import (
 from skcable.mooring.line_bvp.solution import LineBVPSolution
 from skcable.mooring.line_bvp.start import (
     closed_form_start,
+    lifted_start,
     on_dofs,
+    on_slope,
     restart,
     segmented_solution,
     segmented_start,
@@ -96,9 +103,6 @@ from skcable.mooring.line_bvp.start import (
 )
 
 __all__ = ["GRADE_PASSES", "LineBVPSolver"]
-
-#: gradings of the mesh at most
-GRADE_PASSES = 10
 
 
 def _with(s0, fitted=()):
@@ -183,9 +187,8 @@ class LineBVPSolver:
         return [solution.s_touchdown] + ([solution.s_landing] if solution.s_landing > 0 else [])
 
     def compressed(self, solution) -> bool:
-        """Whether the discrete line is in compression beyond ``1e3 rtol`` of the total load."""
-        floor = -1e3 * self.scene.options.tol * solution.problem.load_scale
-        return bool(np.min(solution.fields()[2]) < floor)
+        """Whether the discrete line is in compression (`DiscreteLine.compressed`)."""
+        return solution.problem.compressed(solution.dofs, self.scene.options.tol)
 
     # --- the stages ---------------------------------------------------------------------------
     def solve(self) -> LineBVPSolution:
@@ -300,7 +303,7 @@ class LineBVPSolver:
         frictionless line) is too coarse for it: where its own grading asks for elements more
         than ``REFINEMENT`` times smaller somewhere (a heavy chain whose friction holds a light
         rope: the bend at the touchdown tightened from 0.4 m to 6 cm of radius)."""
-        if not (self.scene.fit_touchdown and graded_nodes(solution, n, self.fixed)[1]):
+        if not (self.scene.fit_touchdown and graded_nodes(solution.problem, solution.dofs, n, self.fixed)[1]):
             return solution
         s0, fitted, mu = solution.problem.slack_end, self.edges(solution), self.scene.friction
         solution, graded = self.graded(n, solution, fitted, s0, mu)
@@ -310,9 +313,11 @@ class LineBVPSolver:
         """The frictionless line from the closed-form start, on a mesh graded by it when the
         touchdown is fitted; from the segment-wise closed form where that fails, or where it
         leaves the discrete line in compression (a spurious branch: a clump weight at the bottom
-        of a U-shaped line under a uniform start) and the segment-wise start does not; on the
-        uniform mesh where every start fails on the graded one (the survey's scene 3:172,
-        `benchmarks/line_bvp_planes.py`)."""
+        of a U-shaped line under a uniform start) and the segment-wise start does not; on a
+        straight slope through the anchor, from the uniform line lifted onto it (its contact
+        nodes switching by the tension too) where the line on the slope fails (the survey's
+        scene 3:234, `benchmarks/line_bvp_planes.py`); on the uniform mesh where every start
+        fails on the graded one (its scene 3:172)."""
         uniform = problem = self.problem(n, mu=0.0)
         if self.scene.fit_touchdown:
             problem = self.problem(n, mu=0.0, nodes_at=start_nodes(start_form(problem), self.fixed, n))
@@ -321,6 +326,9 @@ class LineBVPSolver:
             lambda: self.from_segments(problem),
             lambda: self.switched(problem, closed_form_start(problem)),
         ]
+        if on_slope(problem):  # the line on the slope can leave Newton no descent: the lifted one
+            attempts.append(lambda: self.run(problem, lifted_start(problem)))
+            attempts.append(lambda: self.switched(problem, lifted_start(problem)))
         if problem is not uniform:  # the start's grading can leave Newton no descent: the uniform mesh
             attempts.append(lambda: self.run(uniform, closed_form_start(uniform)))
         solution = first_converged(attempts)
@@ -331,13 +339,12 @@ class LineBVPSolver:
 
     def graded(self, n, solution, fitted, s0, mu):
         """Passes of grading by the last solution's angle (module docstring, 3): the solution and
-        the last graded nodes."""
-        for _ in range(GRADE_PASSES):
-            graded, capped = graded_nodes(solution, n, self.fixed)
-            solution = self.rerun(self.problem(n, _with(s0, fitted), s0, mu, graded), solution)
-            if not (capped or self.compressed(solution)):
-                break
-        return solution, graded
+        the last graded nodes (`skcable.mooring.line_bvp.mesh.grading_passes`)."""
+
+        def resolve(nodes, last):
+            return self.rerun(self.problem(n, _with(s0, fitted), s0, mu, nodes), last)
+
+        return grading_passes(solution, n, self.fixed, resolve, self.compressed)
 
     def with_friction(self, n, frictionless, graded):
         """The line with friction from the frictionless one (module docstring, 4): the solution,

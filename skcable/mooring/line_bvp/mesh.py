@@ -4,7 +4,8 @@ r"""Meshes of the unstretched arc length: uniform, graded by the line's turning,
   or given (a graded mesh), with nodes put at fitted points (the touchdown, the landing, the end
   of a slack stretch);
 - `start_nodes`: the first solve's grading, from the closed-form start's angle;
-- `graded_nodes`: each later solve's grading, from the last solution's angle;
+- `graded_nodes`: each later solve's grading, from the last solution's turning, and
+  `grading_passes`, the passes of grading (either line's);
 - `nested_sizes`: the element counts of nested solves, from `COARSE` elements up, and
   `solve_nested`, the nested solves themselves (each level from the coarser one, else from
   scratch).
@@ -25,11 +26,13 @@ from skcable.errors import ConvergenceError
 
 __all__ = [
     "COARSE",
+    "GRADE_PASSES",
     "GROWTH",
     "REFINEMENT",
     "TAIL_RATIO",
     "equidistributed",
     "fixed_nodes",
+    "grading_passes",
     "graded_nodes",
     "joints_of",
     "line_nodes",
@@ -44,6 +47,8 @@ __all__ = [
 COARSE = 32
 #: how much finer an element may get at one grading
 REFINEMENT = 4.0
+#: gradings of the mesh at most
+GRADE_PASSES = 10
 #: growth of the element size per length away from small elements (neighbours differ by 1.5 at most)
 GROWTH = 0.5
 #: the monitor's tail term only on lines whose cos θ (= H/T on a catenary) varies more than tenfold
@@ -97,13 +102,15 @@ def with_fitted(nodes, fitted, joints, point_loads) -> np.ndarray:
     return nodes
 
 
-def graded_nodes(solution, n_elements, fixed, refinement=REFINEMENT):
+def graded_nodes(line, z, n_elements, fixed, refinement=REFINEMENT):
     """Mesh nodes (unstretched arc length, m) equidistributing
-    ``1 + L max(|dθ/ds|, |d ln cos θ/ds|)`` over the line, no element smaller than
-    ``1/refinement`` of the solution's element there; and whether that bound held anywhere
-    (another pass would refine further).
+    ``1 + L max(|dθ/ds|, |d ln cos θ/ds|)`` over the discrete ``line`` (in the plane or in
+    space) at its dofs ``z``, no element smaller than ``1/refinement`` of ``line``'s element
+    there; and whether that bound held anywhere (another pass would refine further).
 
-    θ(s) is the solution's angle to the horizontal (``solution.angle``, on ``solution.mesh``), so
+    θ(s) is the line's angle to the horizontal (from its tangent `DiscreteLine.state_at`), and
+    ``|dθ/ds|`` its turning: in space the turning of its unit tangent ``|dt/ds|`` (the drag of
+    a current bends it out of its vertical plane) and ``cos θ = |t_h|``. So
     the density is one per length plus the turning of the line per length: a slack line's
     elements gather where it bends, near its touchdown or its lowest point, instead of lying on
     the seabed where it is straight. Where the line is steeper than 45° the second term,
@@ -120,15 +127,21 @@ def graded_nodes(solution, n_elements, fixed, refinement=REFINEMENT):
     element) of the ``n_elements``.
     """
     L = float(fixed[-1])
-    old = np.sort(solution.mesh.p[0])
+    old = np.sort(line.mesh.p[0])
     h_old = np.diff(old)
-    cells = 16  # per element of the solution: its turning is measured inside each element, so
+    cells = 16  # per element of the line: its turning is measured inside each element, so
     # that the kink of a point load or a joint (a node of every mesh) draws no elements
     fraction = (np.arange(cells) + 0.5) / cells
     inside = old[:-1, None] + fraction[None, :] * h_old[:, None]  # (ne, cells)
-    theta = np.unwrap(solution.angle(inside.ravel()).reshape(inside.shape), axis=1)
-    turning = np.abs(np.gradient(theta, axis=1)) / (h_old[:, None] / cells)
-    cosine = np.log(np.maximum(np.abs(np.cos(theta)), 1e-12))
+    a = line.state_at(z, inside.ravel()).a
+    if line.dim == 2:
+        theta = np.unwrap(np.arctan2(a[1], a[0]).reshape(inside.shape), axis=1)
+        turning = np.abs(np.gradient(theta, axis=1)) / (h_old[:, None] / cells)
+        cosine = np.log(np.maximum(np.abs(np.cos(theta)), 1e-12))
+    else:
+        t = (a / np.linalg.norm(a, axis=0)).reshape(line.dim, *inside.shape)
+        turning = np.linalg.norm(np.gradient(t, axis=2), axis=0) / (h_old[:, None] / cells)
+        cosine = np.log(np.maximum(np.linalg.norm(t[:-1], axis=0), 1e-12))
     stretching = np.abs(np.gradient(cosine, axis=1)) / (h_old[:, None] / cells)
     ds = np.repeat(h_old / cells, cells)
     if np.sum(stretching.ravel() * ds) <= TAIL_RATIO:  # cos θ = H/T varies less than tenfold
@@ -151,6 +164,23 @@ def graded_nodes(solution, n_elements, fixed, refinement=REFINEMENT):
     rate = smoothed(s, rate, n_elements)
     mass = np.concatenate([[0.0], np.cumsum(rate * ds)])
     return equidistributed(fixed, s, mass, n_elements), capped
+
+
+def grading_passes(solution, n_elements, fixed, resolve, compressed, passes=None):
+    """Passes of grading by the last solution's turning (`graded_nodes`), either line's:
+    ``resolve(nodes, solution)`` solves the line on the graded ``nodes`` from ``solution``; again
+    while the elements of the bends could shrink no more than `REFINEMENT` times at one pass (a
+    start farther refined would put the touchdown more than a node or two off: nodal contact
+    moves a few nodes per Newton iteration) or while ``compressed(solution)`` (its bends not
+    resolved); `GRADE_PASSES` at most. ``(solution, nodes)``: the last solution and its graded
+    nodes (those of the last pass, without fitted points)."""
+    nodes = None
+    for _ in range(GRADE_PASSES if passes is None else passes):
+        nodes, capped = graded_nodes(solution.problem, solution.dofs, n_elements, fixed)
+        solution = resolve(nodes, solution)
+        if not (capped or compressed(solution)):
+            break
+    return solution, nodes
 
 
 def smoothed(s, rate, n_elements, growth=None):

@@ -18,9 +18,6 @@ Support reactions come from ``R⁰`` (the residual without contact) at the suppo
 
 from __future__ import annotations
 
-import copy
-from dataclasses import replace
-
 import numpy as np
 
 from skcable.errors import InputError
@@ -175,24 +172,6 @@ class LineProblem(DiscreteLine):
     def tangent_check_state(self):
         """The closed-form start of a solve (for `skcable.fe.check_tangent`)."""
         return closed_form_start(self)
-
-    def with_tension_switch(self, z):
-        """A copy of the problem whose contact nodes switch to active at ``λ > max(c_i, T/h_i) g``,
-        ``T`` the largest tension of the iterate ``z`` and ``h_i`` the node's element length: the
-        force that bends a line of tension T down by the gap g over an element; None without
-        contact.
-
-        The switch ``c_i`` (the load per length) is the one for lines whose weight bends them:
-        on a taut line (``T/h`` 1e7 times it) a start's residual force of 1e-8 of T at the first
-        node past the anchor, 7 cm above the seabed, made it active, and the row ``c g = 0``
-        pulled it down onto the seabed in one step (the merit went from 3e-3 to 8e3)."""
-        if self.contact_rows is None:
-            return None
-        tension = float(np.max(np.abs(z[2 * self.N :])))
-        other = copy.copy(self)
-        switch = np.maximum(self.stiffness_nodes, tension / self.node_length)
-        other.contact_rows = replace(self.contact_rows, switch=switch)
-        return other
 
     def gaps(self, z):
         """Height of every contact node above the seabed (m)."""

@@ -41,7 +41,9 @@ from skcable.mooring.segments import Buoy, ClumpWeight, Line, Segment
 __all__ = [
     "closed_form_start",
     "hanging",
+    "lifted_start",
     "on_dofs",
+    "on_slope",
     "segmented_solution",
     "segmented_start",
     "slack_end_of",
@@ -203,11 +205,25 @@ def _on_slope(problem):
 
 def closed_form_start(problem):
     """The first iterate on ``problem``'s dofs: ``[x, y, T]``, the ends at A and B exactly; on a
-    straight slope through A, the line on the slope (`_on_slope`); the heap refused (module
-    docstring)."""
+    straight slope through A, the line on the slope (`_on_slope`), elsewhere `lifted_start`;
+    the heap refused (module docstring)."""
     sloped = _on_slope(problem)
     if sloped is not None:
         return sloped
+    return lifted_start(problem)
+
+
+def on_slope(problem) -> bool:
+    """Whether `closed_form_start` is the line on a straight slope through A (`_on_slope`)."""
+    return _on_slope(problem) is not None
+
+
+def lifted_start(problem):
+    """The first iterate of the uniform line, free or grounded on a flat seabed at the anchor's
+    level and lifted onto the seabed (module docstring), on ``problem``'s dofs; the heap refused.
+    On a straight slope through A it is the alternative to the line on the slope: a varying
+    weight, a clump and a buoy can leave Newton no descent from that one (the survey's scene
+    3:234, ``benchmarks/line_bvp_planes.py``)."""
     x, y, T, _, heap = _uniform(problem)
     if heap:
         if _exact(problem):

@@ -17,8 +17,8 @@ Coulomb friction along the line. One concern per module:
   `skcable.mooring.line_bvp.contact`, in three dimensions), on the line law of
   `skcable.mooring.line_bvp.discrete` (the plane line's, in three dimensions);
 - `start`: the closed form in the vertical plane of the ends;
-- `driver`: the strategy `LineBVP3DSolver` — the current by steps, nested meshes, fitting,
-  checks; each solve the plane line's (`skcable.mooring.line_bvp.iterate`);
+- `driver`: the strategy `LineBVP3DSolver` — the starts, the current by steps, nested and graded
+  meshes, fitting, checks; each solve the plane line's (`skcable.mooring.line_bvp.iterate`);
 - `stiffness`: the 3 × 3 fairlead stiffness from the converged tangent, static or dynamic;
 - `solution`: `LineBVP3DSolution` (its fields the plane line's,
   `skcable.mooring.line_bvp.fields`);

@@ -3,8 +3,11 @@ r"""The strategy that takes a line in space from its closed-form start to the co
 `LineBVP3DSolver(scene).solve()` runs, each solve by `skcable.mooring.line_bvp.iterate.solve_on`
 (the plane line's: damped semismooth Newton, full steps, the polish):
 
-1. **A level** (`LineBVP3DSolver.level`): the line on the scene's mesh from the closed-form
-   start (`skcable.mooring.line_bvp_3d.start`); where that fails,
+1. **A level** (`LineBVP3DSolver.level`): the line on the scene's uniform mesh from its
+   closed-form starts (`LineBVP3DSolver.starts`, the plane line's first solve's): the start
+   (`skcable.mooring.line_bvp_3d.start`), on a seabed with the contact nodes switching by the
+   tension, on a plane seabed through the anchor from the flat grounded line lifted onto it
+   too; where those fail,
 2. **the current by steps** (`LineBVP3DSolver.continued`): the line in still water, then the
    drag grown to its full value in steps (a quarter first, halved where a step fails, down to
    1/64), each from the last; where that fails too (or a fine mesh's start touches the seabed),
@@ -12,13 +15,20 @@ r"""The strategy that takes a line in space from its closed-form start to the co
    `skcable.mooring.line_bvp.mesh.solve_nested`): from `skcable.mooring.line_bvp.mesh.COARSE`
    elements up, each solution interpolated onto the doubled mesh (the active set moves by a
    few nodes per Newton iteration, so a fine mesh does not find its contact set from the start),
-   a level that fails so solved from scratch, a coarse one that fails even so skipped.
-4. **Fitting** (`LineBVP3DSolver.fitted`): a node at the touchdown and the landing the balance of
+   a level that fails so solved from scratch, a coarse one that fails even so skipped; on a
+   seabed, where every one of these fails, the starts on a mesh graded by the start's turning
+   (`LineBVP3DSolver.from_graded_start`, the plane line's first mesh).
+4. **Grading** (`LineBVP3DSolver.graded`): a line in compression on its mesh (the bend where it
+   lands on the seabed from an anchor above it, in one element of the uniform mesh), or on the
+   mesh graded by its start, is solved again on meshes graded by its own turning, pass by pass
+   (`skcable.mooring.line_bvp.mesh.grading_passes`, the plane line's). A line the uniform mesh
+   solves keeps it: a warm start and a solve from scratch then give the same line to round-off.
+5. **Fitting** (`LineBVP3DSolver.fitted`): a node at the touchdown and the landing the balance of
    forces gives (`skcable.mooring.line_bvp.fitting`), ``fit_touchdown`` passes while they move
    more than 1e-9 of the length. A warm start (`LineBVP3DSolver.solve` from a solution at
    nearby ends) keeps its start's nodes: where the touchdown has hardly moved, one pass finds
    it settled and the first solve is the last.
-5. **Checks** (`LineBVP3DSolver.checked`): every number finite, the line not in compression
+6. **Checks** (`LineBVP3DSolver.checked`): every number finite, the line not in compression
    (a slack stretch on the seabed near the anchor is not modelled in 3-D), and its equilibrium
    residual within its bound (`skcable.mooring.line_bvp_3d.solution.LineBVP3DSolution.check`).
 
@@ -39,11 +49,18 @@ from skcable.fe import NewtonOptions, first_converged
 from skcable.mooring.bathymetry import OffGrid
 from skcable.mooring.line_bvp.fitting import landing, touchdown
 from skcable.mooring.line_bvp.iterate import solve_on
-from skcable.mooring.line_bvp.mesh import COARSE, solve_nested
+from skcable.mooring.line_bvp.mesh import (
+    COARSE,
+    REFINEMENT,
+    fixed_nodes,
+    graded_nodes,
+    grading_passes,
+    solve_nested,
+)
 from skcable.mooring.line_bvp.start import restart
 from skcable.mooring.line_bvp_3d.problem import LineProblem3D
 from skcable.mooring.line_bvp_3d.solution import LineBVP3DSolution
-from skcable.mooring.line_bvp_3d.start import closed_form_start
+from skcable.mooring.line_bvp_3d.start import closed_form_start, on_slope
 
 __all__ = ["LineBVP3DSolver"]
 
@@ -58,7 +75,7 @@ class Solved:
     """A converged solve: the problem, its iterate, the merit history and the state there."""
 
     problem: object
-    z: np.ndarray
+    dofs: np.ndarray
     history: list = field(default_factory=list)
     state: object = None
 
@@ -69,13 +86,16 @@ class LineBVP3DSolver:
     def __init__(self, scene):
         self.scene = scene
         self.budget = Budget(time_limit=getattr(scene, "time_limit", 60.0))
+        #: the nodes every mesh keeps (joints, point loads)
+        self.fixed = fixed_nodes(scene.joints, scene.point_loads)
         self.options = NewtonOptions(
             tol=scene.rtol, max_iter=scene.max_iter, max_halvings=HALVINGS, stagnation_window=8
         )
 
-    def problem(self, n, fitted=(), drag_scale=1.0) -> LineProblem3D:
-        """The discrete line on ``n`` elements, nodes at ``fitted``, the drag times ``drag_scale``."""
-        return LineProblem3D(self.scene, n, fitted=fitted, drag_scale=drag_scale)
+    def problem(self, n, fitted=(), drag_scale=1.0, nodes_at=None) -> LineProblem3D:
+        """The discrete line on ``n`` elements (on the mesh ``nodes_at`` where given), nodes at
+        ``fitted``, the drag times ``drag_scale``."""
+        return LineProblem3D(self.scene, n, fitted=fitted, nodes_at=nodes_at, drag_scale=drag_scale)
 
     def run(self, problem, z0, near=False) -> Solved:
         """One solve, counted against the budget (the best so far remembered)."""
@@ -101,7 +121,7 @@ class LineBVP3DSolver:
             except ConvergenceError:
                 solved = None
         if solved is None:
-            solved = self.level(self.scene.n_elements)
+            solved = self.graded(self.level(self.scene.n_elements))
         if self.scene.seabed is not None and self.scene.fit_touchdown:
             solved = self.fitted(solved)
         return self.checked(solved)
@@ -118,7 +138,7 @@ class LineBVP3DSolver:
             except OffGrid:  # the moved line off the seabed's grid: keep the start's nodes
                 guess = []
             points = guess if len(guess) == len(points) else points
-        problem = self.problem(self.scene.n_elements, points)
+        problem = self.problem(self.scene.n_elements, points, nodes_at=start.problem.nodes_at)
         if problem.fitted != start.problem.fitted:
             z = restart(start.problem, z, problem)
         return problem, z
@@ -137,19 +157,40 @@ class LineBVP3DSolver:
         return z
 
     def level(self, n, fitted=()) -> Solved:
-        """The line on ``n`` elements from the closed-form start, by steps of the current, or on
-        nested meshes (module docstring, 1–3)."""
+        """The line on ``n`` elements from the closed-form starts (`starts`), by steps of the
+        current, on nested meshes, or on a mesh graded by the start (module docstring, 1–3)."""
         problem = self.problem(n, fitted)
         z0 = closed_form_start(problem)
         touches = problem.contact_rows is not None and np.any(problem.contact_rows.terms(z0, 0 * z0).gap <= 0)
-        attempts = [lambda: self.run(problem, z0)]
+        attempts = self.starts(problem, z0)
         if problem.terms:
             attempts.append(lambda: self.continued(n, fitted, z0))
         if n > 2 * COARSE:
             attempts.append(lambda: self.nested(n, fitted))
         if touches and n > 2 * COARSE:
             attempts = [attempts[-1], *attempts[:-1]]
+        if problem.contact_rows is not None:
+            attempts.append(lambda: self.from_graded_start(n, fitted))
         return first_converged(attempts)
+
+    def starts(self, problem, z0) -> list:
+        """The solves of ``problem`` from its closed-form starts, in turn (the plane line's first
+        solve's): from ``z0`` (`closed_form_start`); on a seabed, with the contact nodes switching
+        by the tension (`switched`); on a plane seabed through the anchor, from the flat grounded
+        line lifted onto it, fixed and switching (``closed_form_start(sloped=False)``)."""
+        attempts = [lambda: self.run(problem, z0)]
+        if problem.contact_rows is not None:
+            attempts.append(lambda: self.switched(problem, z0))
+        if on_slope(problem):  # the line on the slope can leave Newton no descent: the lifted one
+            lifted = closed_form_start(problem, sloped=False)
+            attempts += [lambda: self.run(problem, lifted), lambda: self.switched(problem, lifted)]
+        return attempts
+
+    def switched(self, problem, z0) -> Solved:
+        """One solve of ``problem`` from ``z0`` with its contact nodes switching by the line's
+        tension (`DiscreteLine.with_tension_switch`, the plane line's alternative: a taut line's
+        residual forces at its start can exceed the switch of a line bent by its weight)."""
+        return self.run(problem.with_tension_switch(z0), z0)
 
     def continued(self, n, fitted, z0) -> Solved:
         """The drag grown from zero to its full value in steps, each solve from the last."""
@@ -158,7 +199,7 @@ class LineBVP3DSolver:
         while scale < 1.0:
             trial = min(1.0, scale + step)
             try:
-                solved = self.run(self.problem(n, fitted, drag_scale=trial), solved.z)
+                solved = self.run(self.problem(n, fitted, drag_scale=trial), solved.dofs)
                 scale = trial
             except ConvergenceError:
                 step *= 0.5
@@ -174,7 +215,7 @@ class LineBVP3DSolver:
         def level(size, coarser):
             problem = self.problem(size, fitted)
             if coarser is not None:
-                return self.run(problem, restart(coarser.problem, coarser.z, problem))
+                return self.run(problem, restart(coarser.problem, coarser.dofs, problem))
             z0 = closed_form_start(problem)
             attempts = [lambda: self.run(problem, z0)]
             if problem.terms:
@@ -184,7 +225,7 @@ class LineBVP3DSolver:
         return solve_nested(n, level)
 
     def fitted(self, solved) -> Solved:
-        """Nodes at the touchdown and the landing, moved until they settle (module docstring, 4):
+        """Nodes at the touchdown and the landing, moved until they settle (module docstring, 5):
         from the nodes ``solved``'s mesh has (a warm start's: its start's touchdown), none
         left where the line no longer touches."""
         L, placed = solved.problem.L, list(solved.problem.fitted)
@@ -202,29 +243,77 @@ class LineBVP3DSolver:
     def edges(solved) -> list[float]:
         """The landing and the touchdown of ``solved`` where it has them (m of arc length)."""
         found = (
-            landing(solved.problem, solved.z, solved.state),
-            touchdown(solved.problem, solved.z, solved.state),
+            landing(solved.problem, solved.dofs, solved.state),
+            touchdown(solved.problem, solved.dofs, solved.state),
         )
         return [p for p in found if p is not None]
 
     def refit(self, solved, points) -> Solved:
-        """The line with nodes at ``points``, from ``solved`` interpolated, else from scratch."""
+        """The line with nodes at ``points`` on ``solved``'s mesh (graded or uniform), from
+        ``solved`` interpolated, else from scratch (on the uniform mesh)."""
         n = self.scene.n_elements
-        problem = self.problem(n, points)
+        problem = self.problem(n, points, nodes_at=solved.problem.nodes_at)
         return first_converged(
             [
-                lambda: self.run(problem, restart(solved.problem, solved.z, problem), near=True),
+                lambda: self.run(problem, restart(solved.problem, solved.dofs, problem), near=True),
                 lambda: self.level(n, points),
             ]
         )
 
+    def graded(self, solved) -> Solved:
+        """Where ``solved`` is in compression (its mesh does not resolve its bends) or on a mesh
+        graded by its start (`from_graded_start`, whose elements are graded for the start's
+        shape, not the line's): the line on meshes graded by its turning, pass by pass, as the
+        plane line's (module docstring, 4; `skcable.mooring.line_bvp.mesh.grading_passes`), from
+        ``solved``, else from the mesh graded by the start; ``solved`` as it is where both fail
+        (the check then refuses it in compression)."""
+        if not (self.compressed(solved) or solved.problem.nodes_at is not None):
+            return solved
+        n = self.scene.n_elements
+
+        def resolve(nodes, last):
+            problem = self.problem(n, last.problem.fitted, nodes_at=nodes)
+            return self.run(problem, restart(last.problem, last.dofs, problem), near=True)
+
+        def passes(first):
+            last = grading_passes(first, n, self.fixed, resolve, self.compressed)[0]
+            if self.compressed(last):
+                raise ConvergenceError("solve_line_bvp_3d: in compression on every graded mesh", last.history)
+            return last
+
+        try:
+            return first_converged([lambda: passes(solved), lambda: passes(self.from_graded_start(n))])
+        except ConvergenceError:
+            return solved
+
+    def from_graded_start(self, n, fitted=()) -> Solved:
+        """The line from the closed-form starts (`starts`) on a mesh graded by the start's
+        turning (the plane line's first mesh; `skcable.mooring.line_bvp.mesh.graded_nodes` of the start on the
+        uniform mesh), its elements at most `REFINEMENT` times finer than the uniform mesh's,
+        else ``REFINEMENT²`` times: the uniform mesh of a line that lands on the seabed from an
+        anchor above it leaves the bend of the landing in one or two elements, and its solve
+        ends in compression or fails."""
+        uniform = self.problem(n, fitted)
+        z0 = closed_form_start(uniform)
+
+        def graded_by_start(refinement):
+            nodes = graded_nodes(uniform, z0, n, self.fixed, refinement)[0]
+            problem = self.problem(n, fitted, nodes_at=nodes)
+            return first_converged(self.starts(problem, closed_form_start(problem)))
+
+        return first_converged([lambda: graded_by_start(REFINEMENT), lambda: graded_by_start(REFINEMENT**2)])
+
+    def compressed(self, solved) -> bool:
+        """Whether the discrete line is in compression (`DiscreteLine.compressed`)."""
+        return solved.problem.compressed(solved.dofs, self.scene.rtol)
+
     def checked(self, solved) -> LineBVP3DSolution:
-        """The solution, once its checks hold (module docstring, 5)."""
-        problem, z = solved.problem, solved.z
+        """The solution, once its checks hold (module docstring, 6)."""
+        problem, z = solved.problem, solved.dofs
         if not (np.all(np.isfinite(z)) and np.all(np.isfinite(solved.state.R0))):
             raise ConvergenceError("solve_line_bvp_3d: non-finite result", solved.history)
         T = z[3 * problem.N :]
-        if np.min(T) < -1e3 * self.scene.rtol * problem.load_scale:
+        if self.compressed(solved):
             grounded = problem.contact_rows is not None and self.scene.friction > 0
             raise ConvergenceError(
                 f"solve_line_bvp_3d: the discrete line is in compression (min T = {np.min(T):.3g} N): "

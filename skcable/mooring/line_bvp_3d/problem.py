@@ -47,6 +47,8 @@ class LineProblem3D(DiscreteLine):
         lengths = np.array([seg.length for seg in self.segments])
         self.point_loads = scene.point_loads
         self.fitted = tuple(float(p) for p in fitted)
+        #: the graded mesh's nodes (without the fitted ones), or None: uniform
+        self.nodes_at = None if nodes_at is None else np.asarray(nodes_at, dtype=float)
         inner = self.discretise(lengths, self.point_loads, n_elements, fitted, nodes_at)
         self.properties()
         self.terms = self._terms()

@@ -35,7 +35,7 @@ from skcable.errors import ConvergenceError, InputError
 from skcable.mooring.bathymetry import Plane
 from skcable.mooring.line_bvp.start import hanging
 
-__all__ = ["closed_form_start", "frame_of", "plane_of", "uniform_line"]
+__all__ = ["closed_form_start", "frame_of", "on_slope", "plane_of", "uniform_line"]
 
 
 def plane_of(anchor, fairlead):
@@ -82,8 +82,10 @@ def frame_of(problem, w):
     return across / np.linalg.norm(across), up, size
 
 
-def _in_plane(problem, r, dh, w, EA):
-    """``(x(s), y(s), T(s))`` callables of the line in its plane (A at (0, 0))."""
+def _in_plane(problem, r, dh, w, EA, sloped=True):
+    """``(x(s), y(s), T(s))`` callables of the line in its plane (A at (0, 0)); ``sloped``: on
+    a plane seabed through the anchor, the line on the slope (else the flat grounded line
+    lifted onto it)."""
     L, bed = problem.L, problem.seabed
     if np.isinf(EA):
         free = catenary(r, dh, w, length=L)
@@ -98,13 +100,20 @@ def _in_plane(problem, r, dh, w, EA):
     s = np.linspace(0.0, L, 65)
     if np.all(y(s) >= profile(x(s)) - problem.anchor[2]):
         return x, y, T
-    grounded = _grounded(problem, profile, r, dh, w, EA)
+    grounded = _grounded(problem, profile, r, dh, w, EA, sloped)
     if grounded is not None:
         x, y, T = grounded
     return x, lambda s: np.maximum(y(s), profile(x(s)) - problem.anchor[2]), T
 
 
-def _grounded(problem, profile, r, dh, w, EA):
+def on_slope(problem) -> bool:
+    """Whether the start's grounded closed form is the line on the slope: a `Plane` seabed
+    through the anchor."""
+    bed, a = problem.seabed, problem.anchor
+    return isinstance(bed, Plane) and abs(float(bed.height(a[0], a[1])) - a[2]) <= 1e-9 * problem.L
+
+
+def _grounded(problem, profile, r, dh, w, EA, sloped=True):
     """The grounded closed form in the plane (module docstring), or None where it fails."""
     from skcable.cable.seabed import elastic_catenary as grounded_elastic
     from skcable.cable.seabed import sloped_seabed_catenary
@@ -113,7 +122,7 @@ def _grounded(problem, profile, r, dh, w, EA):
     EA = 1e9 * w * L if np.isinf(EA) else EA
     level = float(profile(np.array(0.0))) - a[2]
     try:
-        if isinstance(problem.seabed, Plane) and abs(level) <= 1e-9 * L:
+        if sloped and isinstance(problem.seabed, Plane) and abs(level) <= 1e-9 * L:
             m = float(profile.slope(np.array(0.0)))
             line = sloped_seabed_catenary(r, dh, w, EA, length=L, seabed_slope=m, friction=problem.friction)
             return (lambda s: line.xy(s)[..., 0]), (lambda s: line.xy(s)[..., 1]), line.T_of_s
@@ -125,9 +134,11 @@ def _grounded(problem, profile, r, dh, w, EA):
         return None
 
 
-def closed_form_start(problem) -> np.ndarray:
+def closed_form_start(problem, sloped=True) -> np.ndarray:
     """The first iterate on ``problem``'s dofs, ``[x, y, z, T]``, the ends exact (module
-    docstring)."""
+    docstring); ``sloped=False``: on a plane seabed through the anchor, the flat grounded line
+    lifted onto it instead of the line on the slope (the alternative where Newton finds no
+    descent from that one, as the plane line's `skcable.mooring.line_bvp.start.lifted_start`)."""
     a = problem.anchor
     r, _, dh = plane_of(a, problem.fairlead)
     w, EA = uniform_line(problem)
@@ -138,7 +149,7 @@ def closed_form_start(problem) -> np.ndarray:
         return problem.with_ends([np.full(s.size, a[0]), np.full(s.size, a[1]), z], T)
     e, up, load = frame_of(problem, w)
     chord = problem.fairlead - a
-    x, y, T = _in_plane(problem, float(chord @ e), float(chord @ up), load, EA)
+    x, y, T = _in_plane(problem, float(chord @ e), float(chord @ up), load, EA, sloped)
     xs, ys = np.asarray(x(s), dtype=float), np.asarray(y(s), dtype=float)
     X, Y, Z = (a[k] + xs * e[k] + ys * up[k] for k in range(3))
     return problem.with_ends([X, Y, Z], np.asarray(T(s_t), dtype=float))
