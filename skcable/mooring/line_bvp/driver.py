@@ -228,9 +228,7 @@ class LineBVPSolver:
     def moved(self, previous) -> LineBVPSolution:
         """``previous`` solved again at this scene's fairlead on its own mesh (its slack stretch
         kept), from its dofs moved along their tangent ``∂z/∂r_B`` (the active set held,
-        `DiscreteLine.end_sensitivities`, as the line in space's warm start): 14–17 % fewer
-        Newton iterations than the shape moved in proportion to the arc length on two swept
-        lines."""
+        `DiscreteLine.end_sensitivities`, as the line in space's warm start)."""
         sc, old = self.scene, previous.problem
         nodes = np.sort(old.mesh.p[0])
         problem = self.problem(nodes.size - 1, _with(old.slack_end), old.slack_end, sc.friction, nodes)

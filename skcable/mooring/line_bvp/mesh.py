@@ -166,21 +166,33 @@ def graded_nodes(line, z, n_elements, fixed, refinement=REFINEMENT):
     return equidistributed(fixed, s, mass, n_elements), capped
 
 
-def grading_passes(solution, n_elements, fixed, resolve, compressed, passes=None):
+def grading_passes(solution, n_elements, fixed, resolve, compressed, passes=None, keep=False):
     """Passes of grading by the last solution's turning (`graded_nodes`), either line's:
     ``resolve(nodes, solution)`` solves the line on the graded ``nodes`` from ``solution``; again
     while the elements of the bends could shrink no more than `REFINEMENT` times at one pass (a
     start farther refined would put the touchdown more than a node or two off: nodal contact
     moves a few nodes per Newton iteration) or while ``compressed(solution)`` (its bends not
     resolved); `GRADE_PASSES` at most. ``(solution, nodes)``: the last solution and its graded
-    nodes (those of the last pass, without fitted points)."""
+    nodes (those of the last pass, without fitted points; where the first pass failed, the
+    nodes of ``solution``'s own mesh).
+
+    A pass that fails raises its `skcable.ConvergenceError` (the caller's fallbacks, nested
+    meshes for the plane line, may grade better); with ``keep``, it ends the passes with the last
+    solution instead, where that is not in compression (a converged line, on a mesh graded less
+    than it could be)."""
     nodes = None
     for _ in range(GRADE_PASSES if passes is None else passes):
-        nodes, capped = graded_nodes(solution.problem, solution.dofs, n_elements, fixed)
-        solution = resolve(nodes, solution)
+        graded, capped = graded_nodes(solution.problem, solution.dofs, n_elements, fixed)
+        try:
+            solution = resolve(graded, solution)
+        except ConvergenceError:
+            if not keep or compressed(solution):
+                raise
+            break
+        nodes = graded
         if not (capped or compressed(solution)):
             break
-    return solution, nodes
+    return solution, (np.sort(solution.problem.mesh.p[0]) if nodes is None else nodes)
 
 
 def smoothed(s, rate, n_elements, growth=None):

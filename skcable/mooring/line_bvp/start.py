@@ -195,7 +195,9 @@ def _on_slope(problem):
     EA = L / problem.compliance if problem.compliance > 0 else 1e9 * w * L
     try:
         with _plausible.quiet():  # a start, not an answer
-            line = sloped_seabed_catenary(problem.span, problem.dh, w, EA, length=L, seabed_slope=k0)
+            line = sloped_seabed_catenary(
+                problem.span, problem.dh, w, EA, length=L, seabed_slope=k0, friction=problem.friction
+            )
     except (InputError, ConvergenceError):
         return None
     xy = line.xy(problem.basis.doflocs[0])
@@ -243,7 +245,9 @@ def _line(problem, friction=None):
         return None
     joints = problem.joints
     stiff = 1e9 * abs(problem.weight)
-    segments = [Segment(seg.length, seg.w, stiff if seg.EA is None else seg.EA) for seg in problem.segments]
+    segments = [
+        Segment(seg.length, seg.w, stiff if seg.law is None else seg.law.EA) for seg in problem.segments
+    ]
     attachments = []
     for s, P in problem.point_loads:
         k = int(np.argmin(np.abs(joints - s)))

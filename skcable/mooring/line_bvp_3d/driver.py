@@ -19,8 +19,9 @@ r"""The strategy that takes a line in space from its closed-form start to the co
    seabed, where every one of these fails, the starts on a mesh graded by the start's turning
    (`LineBVP3DSolver.from_graded_start`, the plane line's first mesh).
 4. **Grading** (`LineBVP3DSolver.graded`): a line in compression on its mesh (the bend where it
-   lands on the seabed from an anchor above it, in one element of the uniform mesh), or on the
-   mesh graded by its start, is solved again on meshes graded by its own turning, pass by pass
+   lands on the seabed from an anchor above it, in one element of the uniform mesh; the mesh
+   with a node at its touchdown too, after fitting, then fitted again), or on the mesh graded
+   by its start, is solved again on meshes graded by its own turning, pass by pass
    (`skcable.mooring.line_bvp.mesh.grading_passes`, the plane line's). A line the uniform mesh
    solves keeps it: a warm start and a solve from scratch then give the same line to round-off.
 5. **Fitting** (`LineBVP3DSolver.fitted`): a node at the touchdown and the landing the balance of
@@ -60,7 +61,7 @@ from skcable.mooring.line_bvp.mesh import (
 from skcable.mooring.line_bvp.start import restart
 from skcable.mooring.line_bvp_3d.problem import LineProblem3D
 from skcable.mooring.line_bvp_3d.solution import LineBVP3DSolution
-from skcable.mooring.line_bvp_3d.start import closed_form_start, on_slope
+from skcable.mooring.line_bvp_3d.start import closed_form_start, on_slope, segmented_start
 
 __all__ = ["LineBVP3DSolver"]
 
@@ -122,8 +123,12 @@ class LineBVP3DSolver:
                 solved = None
         if solved is None:
             solved = self.graded(self.level(self.scene.n_elements))
-        if self.scene.seabed is not None and self.scene.fit_touchdown:
+        fit = self.scene.seabed is not None and self.scene.fit_touchdown
+        if fit:
             solved = self.fitted(solved)
+        if self.compressed(solved):  # a node at the touchdown left a bend in one element: graded, refitted
+            solved = self.graded(solved)
+            solved = self.fitted(solved) if fit else solved
         return self.checked(solved)
 
     def warm(self, start: LineBVP3DSolution) -> tuple[LineProblem3D, np.ndarray]:
@@ -176,11 +181,15 @@ class LineBVP3DSolver:
     def starts(self, problem, z0) -> list:
         """The solves of ``problem`` from its closed-form starts, in turn (the plane line's first
         solve's): from ``z0`` (`closed_form_start`); on a seabed, with the contact nodes switching
-        by the tension (`switched`); on a plane seabed through the anchor, from the flat grounded
-        line lifted onto it, fixed and switching (``closed_form_start(sloped=False)``)."""
+        by the tension (`switched`); from the segment-wise closed form where there is one
+        (`segmented_start`); on a plane seabed through the anchor, from the flat grounded line
+        lifted onto it, fixed and switching (``closed_form_start(sloped=False)``)."""
         attempts = [lambda: self.run(problem, z0)]
         if problem.contact_rows is not None:
             attempts.append(lambda: self.switched(problem, z0))
+        segmented = segmented_start(problem)
+        if segmented is not None:
+            attempts.append(lambda: self.run(problem, segmented))
         if on_slope(problem):  # the line on the slope can leave Newton no descent: the lifted one
             lifted = closed_form_start(problem, sloped=False)
             attempts += [lambda: self.run(problem, lifted), lambda: self.switched(problem, lifted)]
@@ -276,7 +285,7 @@ class LineBVP3DSolver:
             return self.run(problem, restart(last.problem, last.dofs, problem), near=True)
 
         def passes(first):
-            last = grading_passes(first, n, self.fixed, resolve, self.compressed)[0]
+            last = grading_passes(first, n, self.fixed, resolve, self.compressed, keep=True)[0]
             if self.compressed(last):
                 raise ConvergenceError("solve_line_bvp_3d: in compression on every graded mesh", last.history)
             return last

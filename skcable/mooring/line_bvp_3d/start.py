@@ -1,22 +1,29 @@
-r"""The closed-form start of a line in space: the 2-D closed form in the vertical plane of its ends.
+r"""The closed-form starts of a line in space: the plane line's, in the vertical plane of its ends.
 
 Anchor ``a`` and fairlead ``b``: the vertical plane through them has the horizontal unit
 vector ``e = (b − a)_h/r``, ``r = |(b − a)_h|``, and ``dh = b_z − a_z``. The line of the mean
-weight ``w̄ = (W + ΣP)/L`` and the mean compliance (each segment's law at the weight of the line,
-`skcable.mooring.axial.StrainLaw.secant_EA`) hangs in that plane as
+weight ``w̄ = (W + ΣP)/L`` (``W/L`` where a buoy makes that negative) and the mean compliance
+(each segment's law at the weight of the line, `skcable.mooring.axial.StrainLaw.secant_EA`),
+seen in that plane by `InPlane` (its seabed the profile under the chord,
+`skcable.mooring.bathymetry.Bathymetry.along`), takes the plane line's starts
+(`skcable.mooring.line_bvp.start`):
 
-- Irvine's elastic catenary (H.M. Irvine, "Cable Structures", MIT Press, 1981, ch. 2;
-  `skcable.cable.elastic_catenary`; an inextensible line: the catenary) where it stays above
-  the seabed;
-- else, on a plane seabed under an anchor that lies on it, the sloped closed form
-  (`skcable.cable.seabed.sloped_seabed_catenary`, Jonkman's line on the slope along
-  ``e``), and on any other seabed Jonkman's grounded line on a flat seabed at the anchor's level
-  (J.M. Jonkman, NREL, 2007; `skcable.cable.seabed.elastic_catenary`), lifted onto the
-  seabed where it dips below it;
+- `closed_form_start`: Irvine's elastic catenary (H.M. Irvine, "Cable Structures", MIT Press,
+  1981, ch. 2; an inextensible line: the catenary) where it stays above the seabed; on a straight
+  slope through the anchor the line on the slope (`skcable.cable.seabed.sloped_seabed_catenary`,
+  Jonkman's line on the slope, with the scene's friction); elsewhere Jonkman's grounded line on a
+  flat seabed at the anchor's level (J.M. Jonkman, NREL, 2007), lifted onto the seabed where it
+  dips below it; a line whose slack would lie in a heap on a flat seabed refused
+  (``InputError("length")``);
+- ``closed_form_start(sloped=False)``: the lifted line on a straight slope too
+  (`skcable.mooring.line_bvp.start.lifted_start`);
+- `segmented_start`: the multi-segment closed form `skcable.mooring.Line` of the segments with
+  their clump weights and buoys at the joints, on a flat seabed (`skcable.mooring.line_bvp.start
+  .segmented_start`), for segments of constant weight and stiffness.
 
-and is mapped into space by ``r = a + x e + y e_z``. Exact for one uniform segment without
-current on a flat or plane seabed (up to the discretisation); the Newton iteration takes it
-from there. A vertical line (``r = 0``) starts straight.
+Each is mapped into space by ``r = a + x e + y e_z``: exact for one uniform segment without
+current on a flat or plane seabed (up to the discretisation); the Newton iteration takes it from
+there. A vertical line (``r = 0``) starts straight.
 
 **In a current** without a seabed the start smears the drag as MoorPy does: the mean force per
 length on the straight chord, ``f̄ = (1/L) ∫ f ds − w̄ e_z``, is taken as a uniform load, under
@@ -29,13 +36,21 @@ from __future__ import annotations
 
 import numpy as np
 
-from skcable.cable._catenary import catenary
-from skcable.cable._elastic import elastic_catenary as free_elastic
-from skcable.errors import ConvergenceError, InputError
+from skcable.errors import InputError
 from skcable.mooring.bathymetry import Plane
-from skcable.mooring.line_bvp.start import hanging
+from skcable.mooring.line_bvp import start as plane_start
+from skcable.mooring.line_bvp.contact import Seabed
 
-__all__ = ["closed_form_start", "frame_of", "on_slope", "plane_of", "uniform_line"]
+__all__ = [
+    "InPlane",
+    "closed_form_start",
+    "frame_of",
+    "in_plane",
+    "on_slope",
+    "plane_of",
+    "segmented_start",
+    "uniform_line",
+]
 
 
 def plane_of(anchor, fairlead):
@@ -82,30 +97,6 @@ def frame_of(problem, w):
     return across / np.linalg.norm(across), up, size
 
 
-def _in_plane(problem, r, dh, w, EA, sloped=True):
-    """``(x(s), y(s), T(s))`` callables of the line in its plane (A at (0, 0)); ``sloped``: on
-    a plane seabed through the anchor, the line on the slope (else the flat grounded line
-    lifted onto it)."""
-    L, bed = problem.L, problem.seabed
-    if np.isinf(EA):
-        free = catenary(r, dh, w, length=L)
-        stiff = np.inf
-    else:
-        free, stiff = free_elastic(r, dh, w, EA, length=L), EA
-    x, y, T = hanging(float(free.H), float(free.V_A), w, stiff)
-
-    if bed is None:
-        return x, y, T
-    profile = bed.along(problem.anchor[:2], plane_of(problem.anchor, problem.fairlead)[1])
-    s = np.linspace(0.0, L, 65)
-    if np.all(y(s) >= profile(x(s)) - problem.anchor[2]):
-        return x, y, T
-    grounded = _grounded(problem, profile, r, dh, w, EA, sloped)
-    if grounded is not None:
-        x, y, T = grounded
-    return x, lambda s: np.maximum(y(s), profile(x(s)) - problem.anchor[2]), T
-
-
 def on_slope(problem) -> bool:
     """Whether the start's grounded closed form is the line on the slope: a `Plane` seabed
     through the anchor."""
@@ -113,43 +104,87 @@ def on_slope(problem) -> bool:
     return isinstance(bed, Plane) and abs(float(bed.height(a[0], a[1])) - a[2]) <= 1e-9 * problem.L
 
 
-def _grounded(problem, profile, r, dh, w, EA, sloped=True):
-    """The grounded closed form in the plane (module docstring), or None where it fails."""
-    from skcable.cable.seabed import elastic_catenary as grounded_elastic
-    from skcable.cable.seabed import sloped_seabed_catenary
+class InPlane:
+    """A line in space seen in the plane of its start (`frame_of`): what the plane line's starts
+    (`skcable.mooring.line_bvp.start`) read of a `skcable.mooring.line_bvp.problem.LineProblem`.
 
-    L, a = problem.L, problem.anchor
-    EA = 1e9 * w * L if np.isinf(EA) else EA
-    level = float(profile(np.array(0.0))) - a[2]
-    try:
-        if sloped and isinstance(problem.seabed, Plane) and abs(level) <= 1e-9 * L:
-            m = float(profile.slope(np.array(0.0)))
-            line = sloped_seabed_catenary(r, dh, w, EA, length=L, seabed_slope=m, friction=problem.friction)
-            return (lambda s: line.xy(s)[..., 0]), (lambda s: line.xy(s)[..., 1]), line.T_of_s
-        line = grounded_elastic(r, dh, w, EA, length=L, seabed=min(level, 0.0))
-        if np.any(line.heap):
-            return None
-        return line.x_of_s, line.y_of_s, line.T_of_s
-    except (InputError, ConvergenceError):
-        return None
+    The span and height of the fairlead in the plane (``e``, ``up``), the uniform line's load
+    ``w`` and stiffness ``EA`` (`uniform_line`), the seabed under the chord relative to the
+    anchor (a plane `Seabed` of the profile, flat where the bathymetry is), the segments, point
+    loads and friction; `with_ends` maps the plane's ``[x, y]`` back into space."""
+
+    terms = ()
+
+    def __init__(self, problem, e, up, w, EA):
+        self.space, self.e, self.up = problem, e, up
+        a = problem.anchor
+        chord = problem.fairlead - a
+        self.span, self.dh, self.L = float(chord @ e), float(chord @ up), problem.L
+        self.start_weight = w
+        self.compliance = 0.0 if np.isinf(EA) else problem.L / EA
+        self.basis, self.tbasis = problem.basis, problem.tbasis
+        self.segments, self.joints, self.weight = problem.segments, problem.joints, problem.weight
+        self.point_loads, self.friction = problem.point_loads, problem.friction
+        self.seabed = None
+        bed = problem.seabed
+        if bed is not None and up[2] == 1.0:
+            profile = bed.along(a[:2], e[:2])
+            flat = getattr(bed, "flat", None)
+            self.seabed = Seabed(
+                function=lambda x: profile(x) - a[2],
+                slope_fn=profile.slope,
+                flat=None if flat is None else flat - a[2],
+                step=1e-6 * problem.L,
+            )
+
+    @property
+    def constant(self) -> bool:
+        """Whether every segment's stiffness is constant (what `skcable.mooring.Line` takes)."""
+        return all(seg.law is None or seg.law.kind == "constant" for seg in self.segments)
+
+    def tension_points(self) -> np.ndarray:
+        """The tension dofs' arc lengths (`DiscreteLine.tension_points`)."""
+        return self.space.tension_points()
+
+    def with_ends(self, xy, T) -> np.ndarray:
+        """The dofs in space of ``[x, y]`` in the plane and ``T``, the ends exact."""
+        x, y = (np.asarray(c, dtype=float) for c in xy)
+        a = self.space.anchor
+        return self.space.with_ends([a[k] + x * self.e[k] + y * self.up[k] for k in range(3)], T)
+
+
+def in_plane(problem) -> InPlane:
+    """``problem`` seen in the plane of its start (`InPlane`)."""
+    w, EA = uniform_line(problem)
+    e, up, load = frame_of(problem, w)
+    return InPlane(problem, e, up, load, EA)
 
 
 def closed_form_start(problem, sloped=True) -> np.ndarray:
     """The first iterate on ``problem``'s dofs, ``[x, y, z, T]``, the ends exact (module
-    docstring); ``sloped=False``: on a plane seabed through the anchor, the flat grounded line
-    lifted onto it instead of the line on the slope (the alternative where Newton finds no
-    descent from that one, as the plane line's `skcable.mooring.line_bvp.start.lifted_start`)."""
+    docstring): the plane line's `skcable.mooring.line_bvp.start.closed_form_start` in the plane
+    of the ends; ``sloped=False``: its `lifted_start` (on a plane seabed through the anchor, the
+    flat grounded line lifted onto it instead of the line on the slope)."""
     a = problem.anchor
     r, _, dh = plane_of(a, problem.fairlead)
-    w, EA = uniform_line(problem)
-    s, s_t = problem.basis.doflocs[0], problem.tension_points()
     if r == 0.0:  # a vertical line: straight, carrying the weight below each point
+        w, _ = uniform_line(problem)
+        s, s_t = problem.basis.doflocs[0], problem.tension_points()
         z = a[2] + s * dh / problem.L
         T = np.maximum(w * s_t, 1e-6 * w * problem.L)
         return problem.with_ends([np.full(s.size, a[0]), np.full(s.size, a[1]), z], T)
-    e, up, load = frame_of(problem, w)
-    chord = problem.fairlead - a
-    x, y, T = _in_plane(problem, float(chord @ e), float(chord @ up), load, EA, sloped)
-    xs, ys = np.asarray(x(s), dtype=float), np.asarray(y(s), dtype=float)
-    X, Y, Z = (a[k] + xs * e[k] + ys * up[k] for k in range(3))
-    return problem.with_ends([X, Y, Z], np.asarray(T(s_t), dtype=float))
+    view = in_plane(problem)
+    return plane_start.closed_form_start(view) if sloped else plane_start.lifted_start(view)
+
+
+def segmented_start(problem):
+    """The start from the multi-segment closed form (`skcable.mooring.Line`, the plane line's
+    `segmented_start`) in the vertical plane of the ends, or None where it does not describe the
+    line (varying weights or strain laws, point loads between joints, a seabed that is not flat,
+    a current without seabed, a vertical line)."""
+    if plane_of(problem.anchor, problem.fairlead)[0] == 0.0:
+        return None
+    view = in_plane(problem)
+    if not view.constant or view.up[2] != 1.0:
+        return None
+    return plane_start.segmented_start(view)
