@@ -644,3 +644,19 @@ def test_the_line_in_space_grades_its_mesh_by_its_turning_as_the_plane_line_does
     np.testing.assert_allclose(got, want, rtol=0, atol=1e-6 * L)
     again = graded_nodes(turned.problem, turned.dofs, 48, fixed)[0]
     np.testing.assert_allclose(again, got, rtol=0, atol=1e-12 * L)
+
+
+def test_a_line_whose_slack_lies_in_a_heap_is_refused_in_space_as_in_the_plane():
+    """400 m of chain between an anchor on a flat seabed 100 m down and a fairlead 200 m off: its
+    L-shape is 300 m long, so the slack lies in a heap (H = 0), which the arc-length form has no
+    tension to solve for. Both lines refuse it by name, from the one closed-form start
+    (`skcable.mooring.line_bvp.start`; the line in space's in the vertical plane of its ends),
+    as `skcable.cable.elastic_catenary(seabed=)` returns that state."""
+    from skcable import cable, mooring
+
+    assert cable.elastic_catenary(200.0, 100.0, 1000.0, 5e8, length=400.0, seabed=0.0).heap
+    with pytest.raises(InputError, match="heap") as plane:
+        mooring.solve_line_bvp(200.0, 100.0, [(400.0, 1000.0, 5e8)], seabed=0.0)
+    with pytest.raises(InputError, match="heap") as space:
+        solve_line_bvp_3d((0.0, 0.0, -100.0), (200.0, 0.0, 0.0), [(400.0, 1000.0, 5e8)], seabed=-100.0)
+    assert plane.value.argument == space.value.argument == "length"
