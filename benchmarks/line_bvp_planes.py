@@ -29,6 +29,9 @@ Outcomes:
   that driver's forces moved the most (a discretisation error), ``persists`` where they do not;
 - plane fails only, space fails only, both fail: an exception (`ConvergenceError`,
   `InputError`, any other) from one, both;
+- both refuse: both raise an `InputError` naming the same argument (a scene without equilibrium,
+  such as a line the seabed rising from the anchor pushes into compression, which both refuse
+  by naming ``friction``: a loud failure, right for the scene);
 - out of scope: the plane line holds a slack stretch near the anchor by friction (or refuses
   the scene because of one: ``InputError("point_loads")``, ``InputError("friction")``), or fails
   where the anchor lies on the seabed and the line in space names the slack stretch it does not
@@ -67,7 +70,9 @@ from skcable.mooring.line_bvp_3d import solve_line_bvp_3d  # noqa: E402
 
 #: end forces within this share of the largest: the two agree
 TOLERANCE = 1e-6
-OUTCOMES = ("agree", "disagree", "plane fails only", "space fails only", "both fail", "out of scope")
+OUTCOMES = (
+    "agree", "disagree", "plane fails only", "space fails only", "both fail", "both refuse", "out of scope",
+)  # fmt: skip
 #: where the two disagree, both are solved again on these many times the elements, in turn (`refined`)
 REFINE = (4, 16)
 #: weight per unit length (N/m) of the three kinds of segment (each drawn within ±20 %)
@@ -286,6 +291,11 @@ def _timed(solve):
     return out, time.perf_counter() - start, ""
 
 
+def _refused(message) -> str:
+    """The argument an `InputError` message names (``InputError(friction): ...``), else ``""``."""
+    return message.split(")", 1)[0].removeprefix("InputError(") if message.startswith("InputError(") else ""
+
+
 def _slack(sc, plane, m_plane, m_space) -> bool:
     """Whether the scene is out of scope: the plane line holds a slack stretch near the anchor
     by friction, or refuses the scene for one (``InputError("point_loads")``, the stretch ends
@@ -341,7 +351,9 @@ def classify(sc):
     space, t_space, m_space = _timed(sc.solve_space)
     difference: float | str = ""
     verdict: tuple = ("", "", "", "", "")
-    if _slack(sc, plane, m_plane, m_space):
+    if _refused(m_plane) and _refused(m_plane) == _refused(m_space):
+        outcome = "both refuse"
+    elif _slack(sc, plane, m_plane, m_space):
         outcome = "out of scope"
     elif plane is None and space is None:
         outcome = "both fail"

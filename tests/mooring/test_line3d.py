@@ -660,3 +660,51 @@ def test_a_line_whose_slack_lies_in_a_heap_is_refused_in_space_as_in_the_plane()
     with pytest.raises(InputError, match="heap") as space:
         solve_line_bvp_3d((0.0, 0.0, -100.0), (200.0, 0.0, 0.0), [(400.0, 1000.0, 5e8)], seabed=-100.0)
     assert plane.value.argument == space.value.argument == "length"
+
+
+#: a chain at the anchor under a light rope, on a seabed rising from the anchor at tan α = 0.0965
+#: (the survey's scene 1:43, `benchmarks/line_bvp_planes.py`, which both lines failed as
+#: "in compression: give more elements")
+RISING = dict(
+    segments=[
+        (160.79387729255396, 1166.4576289746321, 1.7786e8),
+        (260.92682156281796, 75.34616514177478, 1.28e8),
+    ],
+    span=393.7672111241806,
+    dh=92.47974466075216,
+    slope=0.09654431846687947,
+)
+
+
+@pytest.mark.parametrize("mu", [0.0, 0.05, 0.2])
+def test_a_line_the_seabed_rising_from_the_anchor_pushes_into_compression_is_refused_by_name(mu):
+    """The chain lying on the seabed from the anchor slides down the slope unless friction holds
+    it: along the seabed ``dT/ds = w (sin α − μ cos α)``, so with ``μ < tan α`` its weight pushes
+    it against the anchor and the line has no equilibrium in tension, on any mesh. Both lines
+    refuse it by naming ``friction`` (`skcable.mooring.line_bvp.check.refuse_sliding`); with
+    ``μ > tan α`` friction holds a slack stretch near the anchor, which the plane line models
+    and the line in space names."""
+    from skcable import mooring
+
+    sc = RISING
+    m = sc["slope"]
+    common = dict(friction=mu, n_elements=64)
+    bed = dict(seabed=lambda x: m * np.asarray(x), seabed_slope=lambda x: np.full(np.shape(x), m))
+    B = (sc["span"], 0.0, sc["dh"])
+
+    def plane():
+        return mooring.solve_line_bvp(sc["span"], sc["dh"], sc["segments"], **bed, **common)
+
+    def space():
+        return solve_line_bvp_3d((0.0, 0.0, 0.0), B, sc["segments"], seabed=Plane(0.0, (m, 0.0)), **common)
+
+    if mu < m:
+        for solve in (plane, space):
+            with pytest.raises(InputError, match="slide down") as refused:
+                solve()
+            assert refused.value.argument == "friction"
+    else:
+        line = plane()
+        assert line.problem.slack_end > 0 and line.equilibrium_residual <= line.residual_bound
+        with pytest.raises(ConvergenceError, match="slack stretch"):
+            space()

@@ -6,7 +6,8 @@ r"""The equilibrium residual of a solved line BVP, by an assembly independent of
 projection ``ρ`` of ``d(T t)/ds + q`` at the quadrature points with its round-off floor
 (`skcable.mooring.line_bvp.fields`), in the plane or in space; `strong_residual` the pointwise
 ``|d(T t)/ds + q|`` inside the elements, ``d(T t)/ds = T' t + T (I − t tᵀ) r''/|r'|``
-(``r''`` constant in a P2 element).
+(``r''`` constant in a P2 element). `refuse_sliding` refuses a line whose compression lies on
+the seabed from the anchor (it has no equilibrium in tension).
 """
 
 from __future__ import annotations
@@ -15,8 +16,9 @@ import numpy as np
 from skfem import BilinearForm, LinearForm, asm
 
 from skcable.bvp.terms import CableState
+from skcable.errors import InputError
 
-__all__ = ["equilibrium_field", "strong_residual"]
+__all__ = ["equilibrium_field", "refuse_sliding", "strong_residual"]
 
 EPS = float(np.finfo(float).eps)
 
@@ -97,3 +99,23 @@ def strong_residual(solution) -> np.ndarray:
     bend = da - np.sum(t * da, axis=0) * t  # (I − t tᵀ) r''
     r = dT * t + T * bend / n + f
     return np.sqrt(np.sum(r * r, axis=0))
+
+
+def refuse_sliding(problem, z, tol, friction) -> None:
+    """Raise ``InputError("friction")`` where the discrete line ``z`` of ``problem`` is in
+    compression on the seabed from the anchor (`DiscreteLine.sliding_to_anchor`) and the seabed
+    rises there more steeply than ``friction`` holds (``tan α > μ``): the scene has no
+    equilibrium with the line in tension, whatever the mesh; ``tol`` Newton's tolerance. (Where
+    ``tan α ≤ μ`` friction can hold a slack stretch near the anchor, which the plane line models.)"""
+    slope = problem.sliding_to_anchor(z, tol)
+    if slope is None or not slope > friction:
+        return
+    T = z[problem.dim * problem.N :]
+    raise InputError(
+        "friction",
+        f"μ = {friction:g} does not hold the line lying on the seabed from the anchor, which rises "
+        f"along it (tan α = {slope:.3g} there): its weight along the slope pushes it against the "
+        f"anchor (min T = {np.min(T):.3g} N in the discrete line), and it would slide down; the scene "
+        "has no equilibrium with the line in tension (more friction, a shorter line or a seabed "
+        "that does not rise from the anchor)",
+    )

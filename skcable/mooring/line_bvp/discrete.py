@@ -108,6 +108,8 @@ class DiscreteLine:
     dim = 2
     #: the seabed's contact rows (`skcable.mooring.line_bvp.contact.ContactRows`), or None
     contact_rows: Any = None
+    #: the seabed (its ``height`` of the horizontal coordinates, m), or None
+    seabed: Any = None
     load_scale = 1.0
     length_scale = 1.0
     #: the cable terms besides the weight (`skcable.bvp.terms.CableTerm`)
@@ -275,6 +277,30 @@ class DiscreteLine:
         anywhere: the discrete line in compression (its bends not resolved, or a spurious
         branch), ``tol`` Newton's tolerance on the scaled residual."""
         return bool(np.min(z[self.dim * self.N :]) < -1e3 * tol * self.load_scale)
+
+    def sliding_to_anchor(self, z, tol) -> float | None:
+        """Where the discrete line's compression (`compressed`) lies on the seabed from the anchor
+        (every tension point below ``-1e3 tol`` of `load_scale` within 1e-6 of the length of the
+        seabed, the first one among them, the anchor on the seabed): the slope ``tan α`` of the
+        line at the anchor; else None.
+
+        Such a line has no equilibrium in tension: along the seabed ``dT/ds = w (sin α −
+        μ cos α)`` on the part that slides, so a stretch on a seabed rising from the anchor more
+        steeply than friction holds (``tan α > μ``) pushes on the anchor with its weight; the
+        solve finds the compression that equilibrium asks for, not a mesh's error."""
+        if self.seabed is None:
+            return None
+        s = self.tension_points()
+        below = z[self.dim * self.N :] < -1e3 * tol * self.load_scale
+        if not below[0]:
+            return None
+        state = self.state_at(z, np.concatenate([[0.0], s[below]]))
+        r, d = state.position, self.dim - 1
+        gap = r[d] - self.seabed.height(*r[:d])
+        if not np.all(np.abs(gap) <= 1e-6 * self.L):
+            return None
+        a = state.a[:, 0]
+        return float(a[d] / np.linalg.norm(a[:d]))
 
     def merit(self, F) -> float:
         """The largest free row of ``F``: force rows over `load_scale` (N), stretch rows over

@@ -38,7 +38,9 @@ each solve (`skcable.mooring.line_bvp.iterate.solve_on`) starts from the last st
    (`LineBVPSolver.secant_slack`); with friction, graded and fitted once more where the mesh is
    too coarse for the line with friction (`LineBVPSolver.regraded`).
 6. **Checks** (`LineBVPSolver.checked`): the friction that holds a slack stretch on a slope is
-   at most μN, every number finite, the discrete line not in compression.
+   at most μN, every number finite, the discrete line not in compression (where the compression
+   lies on the seabed from the anchor, ``InputError("friction")``: the line has no equilibrium
+   in tension, `skcable.mooring.line_bvp.check.refuse_sliding`).
 7. **Refusal** (`LineBVPSolver.solve`): a failure where the segment-wise closed form's slack
    stretch ends at a clump weight on the seabed becomes ``InputError("point_loads")``
    (`LineBVPSolver.clump_at_slack_end`).
@@ -69,6 +71,7 @@ import numpy as np
 from skcable._budget import Budget
 from skcable.errors import ConvergenceError, InputError
 from skcable.fe import first_converged
+from skcable.mooring.line_bvp.check import refuse_sliding
 from skcable.mooring.line_bvp.inputs import Scene
 from skcable.mooring.line_bvp.iterate import solve_on
 from skcable.mooring.line_bvp.mesh import (
@@ -489,7 +492,8 @@ class LineBVPSolver:
         if not all(np.isfinite(values)) or not np.all(np.isfinite(solution.dofs)):
             raise ConvergenceError("solve_line_bvp: non-finite result", solution.history)
         T = solution.fields()[2]
-        if np.min(T) < -1e3 * self.scene.options.tol * problem.load_scale:
+        if self.compressed(solution):
+            refuse_sliding(problem, solution.dofs, self.scene.options.tol, friction)
             raise ConvergenceError(
                 "solve_line_bvp: the discrete line is in compression "
                 f"(min T = {np.min(T):.3g} N, H = {solution.H:.3g} N): "

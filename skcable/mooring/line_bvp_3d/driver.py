@@ -30,7 +30,9 @@ r"""The strategy that takes a line in space from its closed-form start to the co
    nearby ends) keeps its start's nodes: where the touchdown has hardly moved, one pass finds
    it settled and the first solve is the last.
 6. **Checks** (`LineBVP3DSolver.checked`): every number finite, the line not in compression
-   (a slack stretch on the seabed near the anchor is not modelled in 3-D), and its equilibrium
+   (a slack stretch on the seabed near the anchor is not modelled in 3-D; a line in compression
+   on the seabed from the anchor has no equilibrium in tension: ``InputError("friction")``,
+   `skcable.mooring.line_bvp.check.refuse_sliding`), and its equilibrium
    residual within its bound (`skcable.mooring.line_bvp_3d.solution.LineBVP3DSolution.check`).
 
 A failure raises the first attempt's `skcable.ConvergenceError`, with its history. Every solve
@@ -48,6 +50,7 @@ from skcable._budget import Budget
 from skcable.errors import ConvergenceError
 from skcable.fe import NewtonOptions, first_converged
 from skcable.mooring.bathymetry import OffGrid
+from skcable.mooring.line_bvp.check import refuse_sliding
 from skcable.mooring.line_bvp.fitting import landing, touchdown
 from skcable.mooring.line_bvp.iterate import solve_on
 from skcable.mooring.line_bvp.mesh import (
@@ -323,6 +326,7 @@ class LineBVP3DSolver:
             raise ConvergenceError("solve_line_bvp_3d: non-finite result", solved.history)
         T = z[3 * problem.N :]
         if self.compressed(solved):
+            refuse_sliding(problem, z, self.scene.rtol, self.scene.friction)
             grounded = problem.contact_rows is not None and self.scene.friction > 0
             raise ConvergenceError(
                 f"solve_line_bvp_3d: the discrete line is in compression (min T = {np.min(T):.3g} N): "
