@@ -708,3 +708,38 @@ def test_a_line_the_seabed_rising_from_the_anchor_pushes_into_compression_is_ref
         assert line.problem.slack_end > 0 and line.equilibrium_residual <= line.residual_bound
         with pytest.raises(ConvergenceError, match="slack stretch"):
             space()
+
+
+def test_a_line_whose_friction_would_take_more_than_its_pull_fails_saying_so():
+    """70 m of rope hanging from an anchor 2 m above a seabed falling at 0.084, 41 m of it lying
+    on the seabed (the survey's scene 1:83, `benchmarks/line_bvp_planes.py`): without friction
+    the seabed carries about 1000 N of it while the pull at the touchdown is 67 N, so friction
+    fully mobilised at μ = 0.6 would take the whole pull before the landing and the line rests
+    with friction partly mobilised, which Jonkman's model does not describe. Both lines fail, and
+    say so with their history; at μ = 0.05 (μN below the pull) both solve."""
+    from skcable import mooring
+
+    def w(s):
+        return 22.46914539818281 * (
+            1 + 0.19493681225993587 * np.sin(2 * np.pi * s / 68.37579951177868 + 4.7464916805)
+        )
+
+    segments = [(69.95813778856333, w, 1042166171.4004604)]
+    span, dh, level, m = 55.378995773288224, 13.0605082376325, -2.139077440408955, -0.08378586867495089
+    bed = dict(seabed=lambda x: level + m * np.asarray(x), seabed_slope=lambda x: np.full(np.shape(x), m))
+
+    def plane(mu):
+        return mooring.solve_line_bvp(span, dh, segments, friction=mu, n_elements=64, **bed)
+
+    def space(mu):
+        B = (span, 0.0, dh)
+        return solve_line_bvp_3d(
+            (0.0, 0.0, 0.0), B, segments, seabed=Plane(level, (m, 0.0)), friction=mu, n_elements=64
+        )
+
+    for solve in (plane, space):
+        with pytest.raises(ConvergenceError, match="partly mobilised") as failed:
+            solve(0.6)
+        assert failed.value.history and "times the pull at its touchdown" in str(failed.value)
+        line = solve(0.05)
+        assert line.equilibrium_residual <= line.residual_bound

@@ -7,7 +7,9 @@ projection ``ρ`` of ``d(T t)/ds + q`` at the quadrature points with its round-o
 (`skcable.mooring.line_bvp.fields`), in the plane or in space; `strong_residual` the pointwise
 ``|d(T t)/ds + q|`` inside the elements, ``d(T t)/ds = T' t + T (I − t tᵀ) r''/|r'|``
 (``r''`` constant in a P2 element). `refuse_sliding` refuses a line whose compression lies on
-the seabed from the anchor (it has no equilibrium in tension).
+the seabed from the anchor (it has no equilibrium in tension); `partial_friction` says in a
+failure's message where friction, fully mobilised, may take more than a line's pull (the model
+does not describe that line).
 """
 
 from __future__ import annotations
@@ -16,9 +18,9 @@ import numpy as np
 from skfem import BilinearForm, LinearForm, asm
 
 from skcable.bvp.terms import CableState
-from skcable.errors import InputError
+from skcable.errors import ConvergenceError, InputError
 
-__all__ = ["equilibrium_field", "refuse_sliding", "strong_residual"]
+__all__ = ["equilibrium_field", "partial_friction", "refuse_sliding", "strong_residual"]
 
 EPS = float(np.finfo(float).eps)
 
@@ -118,4 +120,36 @@ def refuse_sliding(problem, z, tol, friction) -> None:
         f"anchor (min T = {np.min(T):.3g} N in the discrete line), and it would slide down; the scene "
         "has no equilibrium with the line in tension (more friction, a shorter line or a seabed "
         "that does not rise from the anchor)",
+    )
+
+
+def partial_friction(frictionless, friction, failed) -> ConvergenceError:
+    """``failed`` (the solve with friction's `skcable.ConvergenceError`), its message saying
+    where, on ``frictionless`` (the same line solved without friction, its anchor above the
+    seabed), ``μ`` times the seabed's normal force exceeds the tension at the touchdown:
+    friction fully mobilised along the grounded stretch (J.M. Jonkman, NREL, 2007: the model of
+    both lines) may then take the whole pull before the landing, and the line rest with its
+    friction partly mobilised, a state that depends on how it was laid and that this model does
+    not describe. A diagnosis, not a proof (such a line may still have a solution with friction
+    fully mobilised, its touchdown moved): the error stays a `ConvergenceError`, with ``failed``'s
+    history and last iterate."""
+    on = frictionless.in_contact
+    if not (friction > 0 and on.any()):
+        return failed
+    normal = float(np.sum(frictionless.normal_force[on]))
+    s_touchdown = float(np.max(frictionless.contact_s[on]))
+    pull = float(frictionless.T_of_s(np.array([s_touchdown]))[0])
+    if not friction * normal > pull:
+        return failed
+    message = str(failed).rsplit(" (last ", 1)[0] if failed.history else str(failed)
+    taken = friction * normal
+    return ConvergenceError(
+        f"{message}; fully mobilised (μ = {friction:g}), friction would take μN = {taken:.4g} N "
+        f"on the stretch the line lies on the seabed, {taken / pull:.3g} times the pull at its "
+        f"touchdown without friction ({pull:.4g} N): with its anchor above the "
+        "seabed the line may rest with friction partly mobilised, which this model (Coulomb friction "
+        "fully mobilised along the line) does not describe; friction=0 gives the line without it",
+        failed.history,
+        last=failed.last,
+        attempts=failed.attempts,
     )

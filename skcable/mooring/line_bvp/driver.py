@@ -43,7 +43,8 @@ each solve (`skcable.mooring.line_bvp.iterate.solve_on`) starts from the last st
    in tension, `skcable.mooring.line_bvp.check.refuse_sliding`).
 7. **Refusal** (`LineBVPSolver.solve`): a failure where the segment-wise closed form's slack
    stretch ends at a clump weight on the seabed becomes ``InputError("point_loads")``
-   (`LineBVPSolver.clump_at_slack_end`).
+   (`LineBVPSolver.clump_at_slack_end`); one with friction and the anchor above the seabed says
+   where friction fully mobilised may take more than the pull (`LineBVPSolver.with_diagnosis`).
 
 **A warm start** (`LineBVPSolver.solve_from`, `LineBVP.solve(start=)`): the previous solution,
 moved to the new fairlead on its own mesh (`LineBVPSolver.moved`), is the start of one level
@@ -64,6 +65,7 @@ alternative's error when every one fails (a solve's own fallbacks from its start
 
 from __future__ import annotations
 
+from dataclasses import replace
 from functools import partial
 
 import numpy as np
@@ -71,7 +73,7 @@ import numpy as np
 from skcable._budget import Budget
 from skcable.errors import ConvergenceError, InputError
 from skcable.fe import first_converged
-from skcable.mooring.line_bvp.check import refuse_sliding
+from skcable.mooring.line_bvp.check import partial_friction, refuse_sliding
 from skcable.mooring.line_bvp.inputs import Scene
 from skcable.mooring.line_bvp.iterate import solve_on
 from skcable.mooring.line_bvp.mesh import (
@@ -204,10 +206,10 @@ class LineBVPSolver:
         """`solve` without the budget's conversion (a stage of `solve_from` too)."""
         try:
             return self.levels()
-        except ConvergenceError:
+        except ConvergenceError as failed:
             clump = self.clump_at_slack_end()
             if clump is None:
-                raise
+                raise self.with_diagnosis(failed) from None
             raise InputError(
                 "point_loads",
                 f"the slack stretch near the anchor ends at the point load at s = {clump:.6g} m, which "
@@ -238,6 +240,22 @@ class LineBVPSolver:
         dz = previous.sensitivity[2]  # ∂z/∂r_B, the active set held (its stiffness's too)
         z = previous.dofs + dz @ np.array([sc.span - previous.span, sc.dh - previous.dh])
         return self.run(problem, restart(old, z, problem))
+
+    def with_diagnosis(self, failed) -> ConvergenceError:
+        """``failed``, the failure of a line with friction and its anchor above the seabed, saying
+        where friction fully mobilised may take more than its pull, by the line solved without
+        friction (`skcable.mooring.line_bvp.check.partial_friction`); as it is elsewhere, or
+        where the line without friction fails too."""
+        sc = self.scene
+        if not (sc.friction > 0 and sc.seabed is not None):
+            return failed
+        if abs(float(sc.seabed(np.array([0.0]))[0])) <= 1e-12 * self.length:  # the anchor on it
+            return failed
+        try:
+            frictionless = LineBVPSolver(replace(sc, friction=0.0)).unbounded()
+        except ConvergenceError:
+            return failed
+        return partial_friction(frictionless, sc.friction, failed)
 
     def clump_at_slack_end(self):
         """The arc length (m) of the downward point load where the segment-wise closed form's

@@ -35,14 +35,16 @@ r"""The strategy that takes a line in space from its closed-form start to the co
    `skcable.mooring.line_bvp.check.refuse_sliding`), and its equilibrium
    residual within its bound (`skcable.mooring.line_bvp_3d.solution.LineBVP3DSolution.check`).
 
-A failure raises the first attempt's `skcable.ConvergenceError`, with its history. Every solve
+A failure raises the first attempt's `skcable.ConvergenceError`, with its history; with friction
+and the anchor above the seabed, saying where friction fully mobilised may take more than the
+pull (`LineBVP3DSolver.with_diagnosis`). Every solve
 counts against the scene's ``time_limit`` (`skcable._budget.Budget`): past it, a
 `ConvergenceError` with the last merit of every solve and the best solution reached (``last``).
 """
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 
 import numpy as np
 
@@ -50,7 +52,7 @@ from skcable._budget import Budget
 from skcable.errors import ConvergenceError
 from skcable.fe import NewtonOptions, first_converged
 from skcable.mooring.bathymetry import OffGrid
-from skcable.mooring.line_bvp.check import refuse_sliding
+from skcable.mooring.line_bvp.check import partial_friction, refuse_sliding
 from skcable.mooring.line_bvp.fitting import landing, touchdown
 from skcable.mooring.line_bvp.iterate import solve_on
 from skcable.mooring.line_bvp.mesh import (
@@ -117,7 +119,31 @@ class LineBVP3DSolver:
         return self.budget.run(what, "solves", self.unbounded, start)
 
     def unbounded(self, start: LineBVP3DSolution | None = None) -> LineBVP3DSolution:
-        """`solve` without the budget's conversion."""
+        """`solve` without the budget's conversion; a failure with friction and the anchor above
+        the seabed diagnosed (`with_diagnosis`)."""
+        try:
+            return self.strategy(start)
+        except ConvergenceError as failed:
+            raise self.with_diagnosis(failed) from None
+
+    def with_diagnosis(self, failed) -> ConvergenceError:
+        """``failed``, the failure of a line with friction and its anchor above the seabed, saying
+        where friction fully mobilised may take more than its pull, by the line solved without
+        friction (`skcable.mooring.line_bvp.check.partial_friction`); as it is elsewhere, or
+        where the line without friction fails too."""
+        sc, a = self.scene, self.scene.anchor
+        if not (sc.friction > 0 and sc.seabed is not None):
+            return failed
+        if abs(a[2] - float(sc.seabed.height(a[0], a[1]))) <= 1e-12 * sc.length:  # the anchor on it
+            return failed
+        try:
+            frictionless = LineBVP3DSolver(replace(sc, friction=0.0)).unbounded()
+        except ConvergenceError:
+            return failed
+        return partial_friction(frictionless, sc.friction, failed)
+
+    def strategy(self, start: LineBVP3DSolution | None = None) -> LineBVP3DSolution:
+        """The strategy of the module docstring, from ``start`` where given."""
         solved = None
         if start is not None:
             try:
