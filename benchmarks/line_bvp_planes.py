@@ -431,7 +431,12 @@ def report(rows, seeds, count):
     both_fail = [r for r in rows if r["outcome"] == "both fail"]
     if both_fail:
         above = sum(r["friction"] > 0 and r["kind"] in ("below", "slope below") for r in both_fail)
-        lines += [f"both fail: {above} of {len(both_fail)} with friction and the anchor above the seabed", ""]
+        said = sum("fully mobilised (μ" in r["plane_message"] for r in both_fail)
+        lines += [
+            f"both fail: {above} of {len(both_fail)} with friction and the anchor above the seabed; the "
+            f"plane line says in {said} that friction fully mobilised may take more than the pull",
+            "",
+        ]
     for column, values in (
         ("kind", ("slope", "slope below", "below", "free")),
         ("loads", ("none", "clump", "buoy", "both")),
