@@ -10,16 +10,18 @@ each solve (`skcable.mooring.line_bvp.iterate.solve_on`) starts from the last st
    the coarse start; `skcable.mooring.line_bvp.mesh.solve_nested`, the line in space's too). A
    level that fails from the coarser solution is solved from scratch; a coarse level that fails
    even so is skipped (the next level starts from scratch); the finest level's failure is final.
-2. **First solve** (`LineBVPSolver.first`): frictionless, on a mesh graded by the closed-form
-   start's angle (`skcable.mooring.line_bvp.mesh.start_nodes`), from that start
+2. **First solve** (`LineBVPSolver.first_attempts`): frictionless, on a mesh graded by the
+   closed-form start's angle (`skcable.mooring.line_bvp.mesh.start_nodes`), from that start
    (`skcable.mooring.line_bvp.start.closed_form_start`, the uniform line), else from the
    segment-wise closed form (`skcable.mooring.line_bvp.start.segmented_start`), else from the
    first start with the contact nodes switching by the line's tension (`LineBVPSolver.switched`:
    a taut line's residual forces at its start can exceed the switch of a line bent by its
    weight); on a straight slope through the anchor, whose start is the line on the slope, else
    from the uniform line lifted onto it (`skcable.mooring.line_bvp.start.lifted_start`), fixed
-   and switching; else
-   from the closed-form start on the uniform mesh.
+   and switching; with clump weights, else from the uniform line under their weight smeared
+   (`skcable.mooring.line_bvp.start.smeared_start`); else from the closed-form and the smeared
+   starts on the uniform mesh. Where the stages after it fail from the first solve that converges, they go on
+   from the next (`LineBVPSolver.level`).
 3. **Passes of grading** (`LineBVPSolver.graded`): the mesh graded by the last solution's angle
    (`skcable.mooring.line_bvp.mesh.graded_nodes`), again while the elements of the bends could
    shrink no more than ``REFINEMENT`` times at one pass (the start then puts the touchdown a
@@ -104,6 +106,7 @@ from skcable.mooring.line_bvp.start import (
     segmented_solution,
     segmented_start,
     slack_end_of,
+    smeared_start,
     start_form,
 )
 
@@ -300,18 +303,35 @@ class LineBVPSolver:
 
     def level(self, n, start=None) -> LineBVPSolution:
         """The line on ``n`` elements, from scratch or from ``start`` (the finished solution on
-        a coarser mesh): stages 2–5."""
-        if start is None:
-            solution, s0, fitted = self.first(n), 0.0, []
-        else:
-            solution, s0, fitted = start, start.problem.slack_end, self.edges(start)
-        mu_now = self.scene.friction if start is not None else 0.0
+        a coarser mesh): stages 2–5. From scratch, where the stages after the first solve fail
+        from it (a spurious branch that grading cannot take to the line), they go on from the
+        next of the first solve's starts (`first_attempts`) that converges; the first failure is
+        raised where none leads to the line."""
+        if start is not None:
+            return self.stages(n, start, start.problem.slack_end, self.edges(start), from_scratch=False)
+        failures = []
+        for attempt in self.first_attempts(n):
+            try:
+                solution = attempt()
+            except ConvergenceError as failed:
+                failures.append(failed)
+                continue
+            try:
+                return self.stages(n, solution, 0.0, [], from_scratch=True)
+            except ConvergenceError as failed:
+                failures.append(failed)
+        raise failures[0]
+
+    def stages(self, n, solution, s0, fitted, from_scratch) -> LineBVPSolution:
+        """Stages 3–5 from ``solution`` (a first solve, else a coarser mesh's finished line with
+        its slack stretch's end ``s0`` and its ``fitted`` points)."""
+        mu_now = 0.0 if from_scratch else self.scene.friction
         graded = None
         if self.scene.fit_touchdown:
             solution, graded = self.graded(n, solution, fitted, s0, mu_now)
-        elif start is not None:
+        elif not from_scratch:
             solution = self.rerun(self.problem(n, _with(s0), s0), solution)
-        if start is None and self.scene.friction > 0:
+        if from_scratch and self.scene.friction > 0:
             solution, s0, fitted = self.with_friction(n, solution, graded)
             solution = self.fitted(n, solution, s0, fitted, graded)
             return self.regraded(n, solution)
@@ -328,29 +348,42 @@ class LineBVPSolver:
         solution, graded = self.graded(n, solution, fitted, s0, mu)
         return self.fitted(n, solution, s0, fitted, graded)
 
-    def first(self, n) -> LineBVPSolution:
-        """The frictionless line from the closed-form start, on a mesh graded by it when the
-        touchdown is fitted; from the segment-wise closed form where that fails, or where it
-        leaves the discrete line in compression (a spurious branch: a clump weight at the bottom
-        of a U-shaped line under a uniform start) and the segment-wise start does not; on a
-        straight slope through the anchor, from the uniform line lifted onto it (its contact
-        nodes switching by the tension too) where the line on the slope fails (the survey's
-        scene 3:234, `benchmarks/line_bvp_planes.py`); on the uniform mesh where every start
-        fails on the graded one (its scene 3:172)."""
+    def first_attempts(self, n) -> list:
+        """The frictionless line's first solves (module docstring, 2), in turn: from the
+        closed-form start, on a mesh graded by it when the touchdown is fitted; from the
+        segment-wise closed form; from the first start with the contact nodes switching by the
+        tension; on a straight slope through the anchor, from the uniform line lifted onto it
+        (switching too) where the line on the slope fails (the survey's scene 3:234,
+        `benchmarks/line_bvp_planes.py`); with clump weights, from the uniform line under their
+        weight smeared (`skcable.mooring.line_bvp.start.smeared_start`); on the uniform mesh
+        where every start fails on the graded one, from the closed-form start (its scene 3:172)
+        and the smeared one (its scene 2:40). Each solve that leaves the
+        discrete line in compression (a spurious branch: a clump weight at the bottom of a
+        U-shaped line under a uniform start) gives way to the segment-wise start's where that one
+        does not."""
         uniform = problem = self.problem(n, mu=0.0)
         if self.scene.fit_touchdown:
             problem = self.problem(n, mu=0.0, nodes_at=start_nodes(start_form(problem), self.fixed, n))
-        attempts = [
+        solves = [
             lambda: self.run(problem, closed_form_start(problem)),
             lambda: self.from_segments(problem),
             lambda: self.switched(problem, closed_form_start(problem)),
         ]
         if on_slope(problem):  # the line on the slope can leave Newton no descent: the lifted one
-            attempts.append(lambda: self.run(problem, lifted_start(problem)))
-            attempts.append(lambda: self.switched(problem, lifted_start(problem)))
+            solves.append(lambda: self.run(problem, lifted_start(problem)))
+            solves.append(lambda: self.switched(problem, lifted_start(problem)))
+        if smeared_start(problem) is not None:  # clump weights that hold the line down
+            solves.append(lambda: self.run(problem, smeared_start(problem)))
         if problem is not uniform:  # the start's grading can leave Newton no descent: the uniform mesh
-            attempts.append(lambda: self.run(uniform, closed_form_start(uniform)))
-        solution = first_converged(attempts)
+            solves.append(lambda: self.run(uniform, closed_form_start(uniform)))
+            if smeared_start(uniform) is not None:
+                solves.append(lambda: self.run(uniform, smeared_start(uniform)))
+        return [partial(self.uncompressed, solve, problem) for solve in solves]
+
+    def uncompressed(self, solve, problem) -> LineBVPSolution:
+        """``solve()``, or where it leaves the discrete line in compression, the segment-wise
+        start's solve of ``problem`` where that one does not."""
+        solution = solve()
         if self.compressed(solution):
             other = first_converged([lambda: self.from_segments(problem), lambda: solution])
             solution = solution if self.compressed(other) else other

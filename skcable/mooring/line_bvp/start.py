@@ -47,6 +47,7 @@ __all__ = [
     "segmented_solution",
     "segmented_start",
     "slack_end_of",
+    "smeared_start",
     "start_form",
 ]
 
@@ -60,13 +61,14 @@ class _Heap(Exception):
     """The uniform line's grounded closed form is a heap."""
 
 
-def _uniform(problem):
-    """``(x, y, T, form, heap)``: the uniform start on the problem's dofs; ``form = (H, w, s_v,
-    grounded)``, the catenary's horizontal force, weight and vertical force ``w (s - s_v)``
-    (zero where grounded); ``heap`` whether the grounded uniform line is a heap (then x, y, T
-    and form are the free line's, lifted onto the seabed)."""
+def _uniform(problem, w=None):
+    """``(x, y, T, form, heap)``: the uniform start on the problem's dofs (under ``w`` N/m where
+    given, else `LineProblem.start_weight`); ``form = (H, w, s_v, grounded)``, the catenary's
+    horizontal force, weight and vertical force ``w (s - s_v)`` (zero where grounded); ``heap``
+    whether the grounded uniform line is a heap (then x, y, T and form are the free line's,
+    lifted onto the seabed)."""
     span, dh, L = problem.span, problem.dh, problem.L
-    w = problem.start_weight
+    w = problem.start_weight if w is None else w
     if not (w > 0 or (problem.terms and w < 0)):
         what = "weight less the cable terms' vertical force" if problem.terms else "weight"
         raise InputError("segments", f"the line's mean {what} must be > 0 (downward), got {w:g} N/m")
@@ -218,6 +220,22 @@ def closed_form_start(problem):
 def on_slope(problem) -> bool:
     """Whether `closed_form_start` is the line on a straight slope through A (`_on_slope`)."""
     return _on_slope(problem) is not None
+
+
+def smeared_start(problem):
+    """The first iterate of the uniform line under the mean weight with the point loads smeared
+    along it, ``start_weight + ΣP/L`` (the line in space's start's weight), lifted onto the
+    seabed as `lifted_start`; None without point loads or where they make it light (buoys):
+    the start of a line whose clump weights hold it down far from where its own weight does."""
+    total = float(sum(P for _, P in problem.point_loads))
+    w = problem.start_weight + total / problem.L
+    if total == 0.0 or not w > 0 or problem.terms:
+        return None
+    try:
+        x, y, T, _, _ = _uniform(problem, w)
+    except InputError:  # the smeared line's own refusal (a flat seabed's heap) is not the line's
+        return None
+    return problem.with_ends([x, y], T)
 
 
 def lifted_start(problem):
