@@ -123,16 +123,23 @@ def refuse_sliding(problem, z, tol, friction) -> None:
     )
 
 
-def partial_friction(frictionless, friction, failed) -> ConvergenceError:
+def partial_friction(failed, friction, without_friction) -> ConvergenceError:
     """``failed`` (the solve with friction's `skcable.ConvergenceError`), its message saying
-    where, on ``frictionless`` (the same line solved without friction, its anchor above the
-    seabed), ``μ`` times the seabed's normal force exceeds the tension at the touchdown:
-    friction fully mobilised along the grounded stretch (J.M. Jonkman, NREL, 2007: the model of
-    both lines) may then take the whole pull before the landing, and the line rest with its
-    friction partly mobilised, a state that depends on how it was laid and that this model does
-    not describe. A diagnosis, not a proof (such a line may still have a solution with friction
-    fully mobilised, its touchdown moved): the error stays a `ConvergenceError`, with ``failed``'s
-    history and last iterate."""
+    where, on the same line solved without friction (``without_friction()``, None where the
+    anchor lies on the seabed: there the plane line models the slack stretch), ``μ`` times the
+    seabed's normal force exceeds the tension at the touchdown: friction fully mobilised along
+    the grounded stretch (J.M. Jonkman, NREL, 2007: the model of both lines) may then take the
+    whole pull before the landing, and the line rest with its friction partly mobilised, a state
+    that depends on how it was laid and that this model does not describe. A diagnosis, not a
+    proof (such a line may still have a solution with friction fully mobilised, its touchdown
+    moved): the error stays a `ConvergenceError`, with ``failed``'s history and last iterate;
+    ``failed`` as it is where the line without friction fails too."""
+    if without_friction is None or not friction > 0:
+        return failed
+    try:
+        frictionless = without_friction()
+    except ConvergenceError:
+        return failed
     on = frictionless.in_contact
     if not (friction > 0 and on.any()):
         return failed

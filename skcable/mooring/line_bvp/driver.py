@@ -245,20 +245,12 @@ class LineBVPSolver:
         return self.run(problem, restart(old, z, problem))
 
     def with_diagnosis(self, failed) -> ConvergenceError:
-        """``failed``, the failure of a line with friction and its anchor above the seabed, saying
-        where friction fully mobilised may take more than its pull, by the line solved without
-        friction (`skcable.mooring.line_bvp.check.partial_friction`); as it is elsewhere, or
-        where the line without friction fails too."""
+        """``failed``, saying where friction fully mobilised may take more than the line's pull
+        with its anchor above the seabed (`skcable.mooring.line_bvp.check.partial_friction`)."""
         sc = self.scene
-        if not (sc.friction > 0 and sc.seabed is not None):
-            return failed
-        if abs(float(sc.seabed(np.array([0.0]))[0])) <= 1e-12 * self.length:  # the anchor on it
-            return failed
-        try:
-            frictionless = LineBVPSolver(replace(sc, friction=0.0)).unbounded()
-        except ConvergenceError:
-            return failed
-        return partial_friction(frictionless, sc.friction, failed)
+        above = sc.seabed is not None and abs(float(sc.seabed(np.array([0.0]))[0])) > 1e-12 * self.length
+        frictionless = LineBVPSolver(replace(sc, friction=0.0)).unbounded
+        return partial_friction(failed, sc.friction, frictionless if above else None)
 
     def clump_at_slack_end(self):
         """The arc length (m) of the downward point load where the segment-wise closed form's

@@ -127,20 +127,12 @@ class LineBVP3DSolver:
             raise self.with_diagnosis(failed) from None
 
     def with_diagnosis(self, failed) -> ConvergenceError:
-        """``failed``, the failure of a line with friction and its anchor above the seabed, saying
-        where friction fully mobilised may take more than its pull, by the line solved without
-        friction (`skcable.mooring.line_bvp.check.partial_friction`); as it is elsewhere, or
-        where the line without friction fails too."""
+        """``failed``, saying where friction fully mobilised may take more than the line's pull
+        with its anchor above the seabed (`skcable.mooring.line_bvp.check.partial_friction`)."""
         sc, a = self.scene, self.scene.anchor
-        if not (sc.friction > 0 and sc.seabed is not None):
-            return failed
-        if abs(a[2] - float(sc.seabed.height(a[0], a[1]))) <= 1e-12 * sc.length:  # the anchor on it
-            return failed
-        try:
-            frictionless = LineBVP3DSolver(replace(sc, friction=0.0)).unbounded()
-        except ConvergenceError:
-            return failed
-        return partial_friction(frictionless, sc.friction, failed)
+        above = sc.seabed is not None and abs(a[2] - float(sc.seabed.height(a[0], a[1]))) > 1e-12 * sc.length
+        frictionless = LineBVP3DSolver(replace(sc, friction=0.0)).unbounded
+        return partial_friction(failed, sc.friction, frictionless if above else None)
 
     def strategy(self, start: LineBVP3DSolution | None = None) -> LineBVP3DSolution:
         """The strategy of the module docstring, from ``start`` where given."""
