@@ -18,10 +18,11 @@ each solve (`skcable.mooring.line_bvp.iterate.solve_on`) starts from the last st
    a taut line's residual forces at its start can exceed the switch of a line bent by its
    weight); on a straight slope through the anchor, whose start is the line on the slope, else
    from the uniform line lifted onto it (`skcable.mooring.line_bvp.start.lifted_start`), fixed
-   and switching; with clump weights, else from the uniform line under their weight smeared
-   (`skcable.mooring.line_bvp.start.smeared_start`); else from the closed-form and the smeared
-   starts on the uniform mesh. Where the stages after it fail from the first solve that converges, they go on
-   from the next (`LineBVPSolver.level`).
+   and switching; else from the closed-form start on the uniform mesh; with clump weights, else
+   from the uniform line under their weight smeared
+   (`skcable.mooring.line_bvp.start.smeared_start`), on the graded mesh, then on the uniform one.
+   As a last resort (the requested mesh only), where the stages after it fail from the first
+   solve that converges, they go on from the next (`LineBVPSolver.level`).
 3. **Passes of grading** (`LineBVPSolver.graded`): the mesh graded by the last solution's angle
    (`skcable.mooring.line_bvp.mesh.graded_nodes`), again while the elements of the bends could
    shrink no more than ``REFINEMENT`` times at one pass (the start then puts the touchdown a
@@ -282,23 +283,26 @@ class LineBVPSolver:
         start touches the seabed, else where one level fails (the uniform start above a sloping
         seabed while the line's clump weight rests on it), as the line in space does."""
         n, bed = self.scene.n_elements, self.scene.seabed
+        every_start = partial(self.level, n, every_start=True)  # the last resort (`level`)
         if n > 2 * COARSE and bed is not None:
             probe = self.problem(n, mu=0.0)
             if np.any(probe.gaps(closed_form_start(probe)) <= 0):
-                return self.checked(self.nested(n))
-            return self.checked(first_converged([lambda: self.level(n), lambda: self.nested(n)]))
-        return self.checked(self.level(n))
+                return self.checked(first_converged([lambda: self.nested(n), every_start]))
+            return self.checked(first_converged([lambda: self.level(n), lambda: self.nested(n), every_start]))
+        return self.checked(every_start())
 
     def nested(self, n) -> LineBVPSolution:
         """Nested levels up to ``n`` elements, each from the last (module docstring, 1)."""
         return solve_nested(n, self.level)
 
-    def level(self, n, start=None) -> LineBVPSolution:
+    def level(self, n, start=None, every_start=False) -> LineBVPSolution:
         """The line on ``n`` elements, from scratch or from ``start`` (the finished solution on
-        a coarser mesh): stages 2–5. From scratch, where the stages after the first solve fail
-        from it (a spurious branch that grading cannot take to the line), they go on from the
-        next of the first solve's starts (`first_attempts`) that converges; the first failure is
-        raised where none leads to the line."""
+        a coarser mesh): stages 2–5, from the first of the first solve's starts that converges
+        (`first_attempts`). With ``every_start``, where the stages after it fail (a spurious
+        branch that grading cannot take to the line), they go on from the next start that
+        converges, the first failure raised where none leads to the line: the last resort of
+        `levels` only (on a coarse mesh of nested solves a level that fails is better skipped
+        than solved on another branch, which the finer levels would follow)."""
         if start is not None:
             return self.stages(n, start, start.problem.slack_end, self.edges(start), from_scratch=False)
         failures = []
@@ -311,6 +315,8 @@ class LineBVPSolver:
             try:
                 return self.stages(n, solution, 0.0, [], from_scratch=True)
             except ConvergenceError as failed:
+                if not every_start:
+                    raise
                 failures.append(failed)
         raise failures[0]
 
@@ -346,10 +352,10 @@ class LineBVPSolver:
         segment-wise closed form; from the first start with the contact nodes switching by the
         tension; on a straight slope through the anchor, from the uniform line lifted onto it
         (switching too) where the line on the slope fails (the survey's scene 3:234,
-        `benchmarks/line_bvp_planes.py`); with clump weights, from the uniform line under their
-        weight smeared (`skcable.mooring.line_bvp.start.smeared_start`); on the uniform mesh
-        where every start fails on the graded one, from the closed-form start (its scene 3:172)
-        and the smeared one (its scene 2:40). Each solve that leaves the
+        `benchmarks/line_bvp_planes.py`); on the uniform mesh where every start fails on the
+        graded one (its scene 3:172); with clump weights, from the uniform line under their
+        weight smeared (`skcable.mooring.line_bvp.start.smeared_start`), on the graded mesh,
+        then on the uniform one (its scene 2:40). Each solve that leaves the
         discrete line in compression (a spurious branch: a clump weight at the bottom of a
         U-shaped line under a uniform start) gives way to the segment-wise start's where that one
         does not."""
@@ -364,11 +370,11 @@ class LineBVPSolver:
         if on_slope(problem):  # the line on the slope can leave Newton no descent: the lifted one
             solves.append(lambda: self.run(problem, lifted_start(problem)))
             solves.append(lambda: self.switched(problem, lifted_start(problem)))
-        if smeared_start(problem) is not None:  # clump weights that hold the line down
-            solves.append(lambda: self.run(problem, smeared_start(problem)))
         if problem is not uniform:  # the start's grading can leave Newton no descent: the uniform mesh
             solves.append(lambda: self.run(uniform, closed_form_start(uniform)))
-            if smeared_start(uniform) is not None:
+        if smeared_start(problem) is not None:  # clump weights that hold the line down
+            solves.append(lambda: self.run(problem, smeared_start(problem)))
+            if problem is not uniform:
                 solves.append(lambda: self.run(uniform, smeared_start(uniform)))
         return [partial(self.uncompressed, solve, problem) for solve in solves]
 
