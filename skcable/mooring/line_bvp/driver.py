@@ -173,9 +173,13 @@ class LineBVPSolver:
     def from_segments(self, problem) -> LineBVPSolution:
         """The line of ``problem`` from the segment-wise closed-form start (`segmented_start`);
         a `ConvergenceError` where there is none."""
-        z0 = segmented_start(problem)
+        return self.from_start(problem, segmented_start(problem))
+
+    def from_start(self, problem, z0) -> LineBVPSolution:
+        """One solve of ``problem`` from ``z0``; a `ConvergenceError` where there is no such
+        start (None)."""
         if z0 is None:
-            raise ConvergenceError("solve_line_bvp: no segment-wise closed form of this line", [])
+            raise ConvergenceError("solve_line_bvp: no such closed-form start of this line", [])
         return self.run(problem, z0)
 
     def rerun(self, problem, solution) -> LineBVPSolution:
@@ -372,10 +376,10 @@ class LineBVPSolver:
             solves.append(lambda: self.switched(problem, lifted_start(problem)))
         if problem is not uniform:  # the start's grading can leave Newton no descent: the uniform mesh
             solves.append(lambda: self.run(uniform, closed_form_start(uniform)))
-        if smeared_start(problem) is not None:  # clump weights that hold the line down
-            solves.append(lambda: self.run(problem, smeared_start(problem)))
+        if any(P > 0 for _, P in self.scene.point_loads):  # clump weights that hold the line down
+            solves.append(lambda: self.from_start(problem, smeared_start(problem)))
             if problem is not uniform:
-                solves.append(lambda: self.run(uniform, smeared_start(uniform)))
+                solves.append(lambda: self.from_start(uniform, smeared_start(uniform)))
         return [partial(self.uncompressed, solve, problem) for solve in solves]
 
     def uncompressed(self, solve, problem) -> LineBVPSolution:

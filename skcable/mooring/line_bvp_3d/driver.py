@@ -208,13 +208,18 @@ class LineBVP3DSolver:
         attempts = [lambda: self.run(problem, z0)]
         if problem.contact_rows is not None:
             attempts.append(lambda: self.switched(problem, z0))
-        segmented = segmented_start(problem)
-        if segmented is not None:
-            attempts.append(lambda: self.run(problem, segmented))
+        attempts.append(lambda: self.from_start(problem, segmented_start(problem)))
         if on_slope(problem):  # the line on the slope can leave Newton no descent: the lifted one
-            lifted = closed_form_start(problem, sloped=False)
-            attempts += [lambda: self.run(problem, lifted), lambda: self.switched(problem, lifted)]
+            attempts.append(lambda: self.run(problem, closed_form_start(problem, sloped=False)))
+            attempts.append(lambda: self.switched(problem, closed_form_start(problem, sloped=False)))
         return attempts
+
+    def from_start(self, problem, z0) -> Solved:
+        """One solve of ``problem`` from ``z0``; a `ConvergenceError` where there is no such
+        start (None)."""
+        if z0 is None:
+            raise ConvergenceError("solve_line_bvp_3d: no segment-wise closed form of this line", [])
+        return self.run(problem, z0)
 
     def switched(self, problem, z0) -> Solved:
         """One solve of ``problem`` from ``z0`` with its contact nodes switching by the line's
