@@ -5,6 +5,7 @@ with a clump and a nonlinear axial law, a tabulated current), the sloped closed 
 the stiffness, a vertical tether's series compliance for the dynamic stiffness, and statics."""
 
 import pickle
+import re
 
 import numpy as np
 import pytest
@@ -737,9 +738,18 @@ def test_a_line_whose_friction_would_take_more_than_its_pull_fails_saying_so():
             (0.0, 0.0, 0.0), B, segments, seabed=Plane(level, (m, 0.0)), friction=mu, n_elements=64
         )
 
+    # the seabed's normal force on the line without friction: the weight of its grounded stretch
+    # (between the landing and the touchdown, by the balance of forces) times cos α
+    free = plane(0.0)
+    grounded = free.load_before(free.s_touchdown)[1] - free.load_before(free.s_landing)[1]
+    normal = grounded / np.hypot(1.0, m)
+    assert 900.0 < normal < 1100.0 and free.tension(np.array([free.s_touchdown - 1e-6]))[0] < 70.0
     for solve in (plane, space):
         with pytest.raises(ConvergenceError, match="partly mobilised") as failed:
             solve(0.6)
         assert failed.value.history and "times the pull at its touchdown" in str(failed.value)
+        said = float(re.search(r"μN = ([0-9.e+]+) N", str(failed.value)).group(1))
+        # the nodal multipliers against the integral of the weight: measured 3e-5, the message has 4 digits
+        assert said == pytest.approx(0.6 * normal, rel=2e-4)
         line = solve(0.05)
         assert line.equilibrium_residual <= line.residual_bound

@@ -17,15 +17,19 @@ on a seabed of any shape with Coulomb friction. One concern per module:
 - `pointwise`: the fields at any arc length, through each element's own basis (`LinePoints`);
 - `fitting`: the touchdown and the landing from the balance of forces, in the plane and in
   space;
-- `check`: the equilibrium residual of a solution by scikit-fem's own assembly;
+- `check`: the equilibrium residual of a solution by scikit-fem's own assembly, the refusal of a
+  line with no equilibrium in tension and the diagnosis of a failure with friction;
 - `fields`: what the solutions in the plane and in space share: the state, tension, tangent,
   weight, segment end tensions and samples at any arc length (`LineFields`);
 - `problem`: one discrete line in the plane — its properties, the scales, the point loads at any
   arc length and its seabed's contact rows (with friction and the slack stretch);
-- `start`: the closed-form start (elastic catenary, grounded where it dips below the seabed);
+- `start`: the closed-form starts (elastic catenary, grounded where it dips below the seabed,
+  on a slope, lifted, segment-wise, smeared), the line in space's too;
 - `iterate`: one solve — damped semismooth Newton, its rescue with the active set held, full
   steps and the polish (`skcable.fe.newton`'s options, as the line in space's);
 - `slack`: Jonkman's slack stretch near the anchor;
+- `solver`: what the two drivers share (`LineSolver`: the alternative solves, the compression
+  test, the friction diagnosis);
 - `driver`: the continuation `LineBVPSolver` — levels, gradings, friction, fitting, checks;
 - `solution`: `LineBVPSolution`, the end forces, contact and fields;
 - `stiffness`: the fairlead stiffness from the converged tangent (implicit function theorem);

@@ -23,6 +23,9 @@ from skcable.errors import ConvergenceError, InputError
 __all__ = ["equilibrium_field", "partial_friction", "refuse_sliding", "strong_residual"]
 
 EPS = float(np.finfo(float).eps)
+#: how much steeper than μ the seabed must rise at the anchor (the line's discrete tangent there,
+#: a slope) for `refuse_sliding` to refuse: a flat seabed's round-off slope never does
+SLOPE_TOL = 1e-6
 
 
 @LinearForm
@@ -106,11 +109,11 @@ def strong_residual(solution) -> np.ndarray:
 def refuse_sliding(problem, z, tol, friction) -> None:
     """Raise ``InputError("friction")`` where the discrete line ``z`` of ``problem`` is in
     compression on the seabed from the anchor (`DiscreteLine.sliding_to_anchor`) and the seabed
-    rises there more steeply than ``friction`` holds (``tan α > μ``): the scene has no
+    rises there more steeply than ``friction`` holds (``tan α > μ`` + `SLOPE_TOL`): the scene has no
     equilibrium with the line in tension, whatever the mesh; ``tol`` Newton's tolerance. (Where
     ``tan α ≤ μ`` friction can hold a slack stretch near the anchor, which the plane line models.)"""
     slope = problem.sliding_to_anchor(z, tol)
-    if slope is None or not slope > friction:
+    if slope is None or not slope > friction + SLOPE_TOL:
         return
     T = z[problem.dim * problem.N :]
     raise InputError(
@@ -146,7 +149,7 @@ def partial_friction(failed, friction, without_friction) -> ConvergenceError:
     normal = float(np.sum(frictionless.normal_force[on]))
     s_touchdown = float(np.max(frictionless.contact_s[on]))
     pull = float(frictionless.T_of_s(np.array([s_touchdown]))[0])
-    if not friction * normal > pull:
+    if not (pull > 0 and friction * normal > pull):
         return failed
     message = str(failed).rsplit(" (last ", 1)[0] if failed.history else str(failed)
     taken = friction * normal

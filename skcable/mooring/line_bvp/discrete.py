@@ -300,7 +300,8 @@ class DiscreteLine:
         if not np.all(np.abs(gap) <= 1e-6 * self.L):
             return None
         a = state.a[:, 0]
-        return float(a[d] / np.linalg.norm(a[:d]))
+        across = float(np.linalg.norm(a[:d]))
+        return float(a[d] / across) if across > 0 else None  # vertical at the anchor: off the seabed
 
     def merit(self, F) -> float:
         """The largest free row of ``F``: force rows over `load_scale` (N), stretch rows over

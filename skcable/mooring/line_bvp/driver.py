@@ -68,7 +68,6 @@ alternative's error when every one fails (a solve's own fallbacks from its start
 
 from __future__ import annotations
 
-from dataclasses import replace
 from functools import partial
 
 import numpy as np
@@ -76,7 +75,7 @@ import numpy as np
 from skcable._budget import Budget
 from skcable.errors import ConvergenceError, InputError
 from skcable.fe import first_converged
-from skcable.mooring.line_bvp.check import partial_friction, refuse_sliding
+from skcable.mooring.line_bvp.check import refuse_sliding
 from skcable.mooring.line_bvp.inputs import Scene
 from skcable.mooring.line_bvp.iterate import solve_on
 from skcable.mooring.line_bvp.mesh import (
@@ -98,6 +97,7 @@ from skcable.mooring.line_bvp.slack import (
     tension_zero,
 )
 from skcable.mooring.line_bvp.solution import LineBVPSolution
+from skcable.mooring.line_bvp.solver import LineSolver
 from skcable.mooring.line_bvp.start import (
     closed_form_start,
     lifted_start,
@@ -119,7 +119,7 @@ def _with(s0, fitted=()):
     return list(fitted) + ([s0] if s0 > 0 else [])
 
 
-class LineBVPSolver:
+class LineBVPSolver(LineSolver):
     """The solver of one line BVP: the continuation of the module docstring over a `Scene`.
 
     Parameters
@@ -146,6 +146,16 @@ class LineBVPSolver:
             fitted=fitted, slack_end=slack_end, nodes_at=nodes_at, terms=sc.terms,
         )  # fmt: skip
 
+    @property
+    def tolerance(self) -> float:
+        """Newton's tolerance on the scaled residual."""
+        return self.scene.options.tol
+
+    def anchor_above_seabed(self) -> bool:
+        """Whether the scene has a seabed and the anchor lies above it (by 1e-12 of the length)."""
+        bed = self.scene.seabed
+        return bed is not None and abs(float(bed(np.array([0.0]))[0])) > 1e-12 * self.length
+
     def run(self, problem, z0) -> LineBVPSolution:
         """One solve of ``problem`` from ``z0`` with the scene's Newton options, counted against
         the budget (the best solution so far remembered)."""
@@ -162,25 +172,10 @@ class LineBVPSolver:
             "solve_line_bvp (the measure: the last merit of a solve)", "solves", stage, *args
         )
 
-    def switched(self, problem, z0) -> LineBVPSolution:
-        """One solve of ``problem`` from ``z0`` with its contact nodes switching by the line's
-        tension (`LineProblem.with_tension_switch`); a `ConvergenceError` without contact."""
-        other = problem.with_tension_switch(z0)
-        if other is None:
-            raise ConvergenceError("solve_line_bvp: no contact rows to switch by tension", [])
-        return self.run(other, z0)
-
     def from_segments(self, problem) -> LineBVPSolution:
         """The line of ``problem`` from the segment-wise closed-form start (`segmented_start`);
         a `ConvergenceError` where there is none."""
         return self.from_start(problem, segmented_start(problem))
-
-    def from_start(self, problem, z0) -> LineBVPSolution:
-        """One solve of ``problem`` from ``z0``; a `ConvergenceError` where there is no such
-        start (None)."""
-        if z0 is None:
-            raise ConvergenceError("solve_line_bvp: no such closed-form start of this line", [])
-        return self.run(problem, z0)
 
     def rerun(self, problem, solution) -> LineBVPSolution:
         """The line on ``problem``'s mesh from ``solution`` interpolated onto it, else from the
@@ -198,10 +193,6 @@ class LineBVPSolver:
         if not (self.scene.fit_touchdown and solution.s_touchdown > 0):
             return []
         return [solution.s_touchdown] + ([solution.s_landing] if solution.s_landing > 0 else [])
-
-    def compressed(self, solution) -> bool:
-        """Whether the discrete line is in compression (`DiscreteLine.compressed`)."""
-        return solution.problem.compressed(solution.dofs, self.scene.options.tol)
 
     # --- the stages ---------------------------------------------------------------------------
     def solve(self) -> LineBVPSolution:
@@ -248,14 +239,6 @@ class LineBVPSolver:
         dz = previous.sensitivity[2]  # ∂z/∂r_B, the active set held (its stiffness's too)
         z = previous.dofs + dz @ np.array([sc.span - previous.span, sc.dh - previous.dh])
         return self.run(problem, restart(old, z, problem))
-
-    def with_diagnosis(self, failed) -> ConvergenceError:
-        """``failed``, saying where friction fully mobilised may take more than the line's pull
-        with its anchor above the seabed (`skcable.mooring.line_bvp.check.partial_friction`)."""
-        sc = self.scene
-        above = sc.seabed is not None and abs(float(sc.seabed(np.array([0.0]))[0])) > 1e-12 * self.length
-        frictionless = LineBVPSolver(replace(sc, friction=0.0)).unbounded
-        return partial_friction(failed, sc.friction, frictionless if above else None)
 
     def clump_at_slack_end(self):
         """The arc length (m) of the downward point load where the segment-wise closed form's

@@ -166,7 +166,7 @@ def graded_nodes(line, z, n_elements, fixed, refinement=REFINEMENT):
     return equidistributed(fixed, s, mass, n_elements), capped
 
 
-def grading_passes(solution, n_elements, fixed, resolve, compressed, passes=None, keep=False):
+def grading_passes(solution, n_elements, fixed, resolve, compressed, keep=False):
     """Passes of grading by the last solution's turning (`graded_nodes`), either line's:
     ``resolve(nodes, solution)`` solves the line on the graded ``nodes`` from ``solution``; again
     while the elements of the bends could shrink no more than `REFINEMENT` times at one pass (a
@@ -181,7 +181,7 @@ def grading_passes(solution, n_elements, fixed, resolve, compressed, passes=None
     solution instead, where that is not in compression (a converged line, on a mesh graded less
     than it could be)."""
     nodes = None
-    for _ in range(GRADE_PASSES if passes is None else passes):
+    for _ in range(GRADE_PASSES):
         graded, capped = graded_nodes(solution.problem, solution.dofs, n_elements, fixed)
         try:
             solution = resolve(graded, solution)

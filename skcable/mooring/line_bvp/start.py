@@ -178,6 +178,18 @@ def start_form(problem):
     return _uniform(problem)[3]
 
 
+def _straight_slope(problem) -> float | None:
+    """The slope of a straight seabed through A along the line (``b(0) = 0``, the slope the same
+    at A and under B) under a line of positive start weight, else None."""
+    bed, L = problem.seabed, problem.L
+    if bed is None or bed.flat is not None or not problem.start_weight > 0:
+        return None
+    if abs(float(bed(np.array([0.0]))[0])) > 1e-12 * L:
+        return None
+    k0, k1 = (float(k) for k in bed.slope(np.array([0.0, problem.span])))
+    return k0 if abs(k0 - k1) <= 1e-12 * max(1.0, abs(k0)) else None
+
+
 def _on_slope(problem):
     """The start on a straight seabed sloping along the line through A (``b(0) = 0``, the slope
     the same at A and under B): Jonkman's line on the slope
@@ -186,14 +198,10 @@ def _on_slope(problem):
     grounded start lifted onto a slope can leave Newton no descent (35 of the 44 lines that the
     plane line failed and the line in space solved in ``benchmarks/line_bvp_planes.py``, seeds
     1–3, solve from this start)."""
-    bed, w, L = problem.seabed, problem.start_weight, problem.L
-    if bed is None or bed.flat is not None or not w > 0:
+    k0 = _straight_slope(problem)
+    if k0 is None:
         return None
-    if abs(float(bed(np.array([0.0]))[0])) > 1e-12 * L:
-        return None
-    k0, k1 = (float(k) for k in bed.slope(np.array([0.0, problem.span])))
-    if abs(k0 - k1) > 1e-12 * max(1.0, abs(k0)):
-        return None
+    w, L = problem.start_weight, problem.L
     EA = L / problem.compliance if problem.compliance > 0 else 1e9 * w * L
     try:
         with _plausible.quiet():  # a start, not an answer
@@ -218,8 +226,9 @@ def closed_form_start(problem):
 
 
 def on_slope(problem) -> bool:
-    """Whether `closed_form_start` is the line on a straight slope through A (`_on_slope`)."""
-    return _on_slope(problem) is not None
+    """Whether the seabed is straight through A along the line, where `closed_form_start` is the
+    line on the slope (`_on_slope`, unless that has no closed form)."""
+    return _straight_slope(problem) is not None
 
 
 def smeared_start(problem):

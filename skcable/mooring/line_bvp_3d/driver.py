@@ -4,10 +4,10 @@ r"""The strategy that takes a line in space from its closed-form start to the co
 (the plane line's: damped semismooth Newton, full steps, the polish):
 
 1. **A level** (`LineBVP3DSolver.level`): the line on the scene's uniform mesh from its
-   closed-form starts (`LineBVP3DSolver.starts`, the plane line's first solve's): the start
+   closed-form starts (`LineBVP3DSolver.starts`, the plane line's alternatives): the start
    (`skcable.mooring.line_bvp_3d.start`), on a seabed with the contact nodes switching by the
-   tension, on a plane seabed through the anchor from the flat grounded line lifted onto it
-   too; where those fail,
+   tension, the segment-wise closed form, on a plane seabed through the anchor the flat grounded
+   line lifted onto it too; where those fail,
 2. **the current by steps** (`LineBVP3DSolver.continued`): the line in still water, then the
    drag grown to its full value in steps (a quarter first, halved where a step fails, down to
    1/64), each from the last; where that fails too (or a fine mesh's start touches the seabed),
@@ -44,7 +44,7 @@ counts against the scene's ``time_limit`` (`skcable._budget.Budget`): past it, a
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field, replace
+from dataclasses import dataclass, field
 
 import numpy as np
 
@@ -52,7 +52,7 @@ from skcable._budget import Budget
 from skcable.errors import ConvergenceError
 from skcable.fe import NewtonOptions, first_converged
 from skcable.mooring.bathymetry import OffGrid
-from skcable.mooring.line_bvp.check import partial_friction, refuse_sliding
+from skcable.mooring.line_bvp.check import refuse_sliding
 from skcable.mooring.line_bvp.fitting import landing, touchdown
 from skcable.mooring.line_bvp.iterate import solve_on
 from skcable.mooring.line_bvp.mesh import (
@@ -63,6 +63,7 @@ from skcable.mooring.line_bvp.mesh import (
     grading_passes,
     solve_nested,
 )
+from skcable.mooring.line_bvp.solver import LineSolver
 from skcable.mooring.line_bvp.start import restart
 from skcable.mooring.line_bvp_3d.problem import LineProblem3D
 from skcable.mooring.line_bvp_3d.solution import LineBVP3DSolution
@@ -86,7 +87,7 @@ class Solved:
     state: object = None
 
 
-class LineBVP3DSolver:
+class LineBVP3DSolver(LineSolver):
     """The solver of one line in space: the strategy of the module docstring over a `Scene3D`."""
 
     def __init__(self, scene):
@@ -97,6 +98,18 @@ class LineBVP3DSolver:
         self.options = NewtonOptions(
             tol=scene.rtol, max_iter=scene.max_iter, max_halvings=HALVINGS, stagnation_window=8
         )
+
+    name = "solve_line_bvp_3d"
+
+    @property
+    def tolerance(self) -> float:
+        """Newton's tolerance on the scaled residual."""
+        return self.scene.rtol
+
+    def anchor_above_seabed(self) -> bool:
+        """Whether the scene has a seabed and the anchor lies above it (by 1e-12 of the length)."""
+        sc, a = self.scene, self.scene.anchor
+        return sc.seabed is not None and abs(a[2] - float(sc.seabed.height(a[0], a[1]))) > 1e-12 * sc.length
 
     def problem(self, n, fitted=(), drag_scale=1.0, nodes_at=None) -> LineProblem3D:
         """The discrete line on ``n`` elements (on the mesh ``nodes_at`` where given), nodes at
@@ -125,14 +138,6 @@ class LineBVP3DSolver:
             return self.strategy(start)
         except ConvergenceError as failed:
             raise self.with_diagnosis(failed) from None
-
-    def with_diagnosis(self, failed) -> ConvergenceError:
-        """``failed``, saying where friction fully mobilised may take more than the line's pull
-        with its anchor above the seabed (`skcable.mooring.line_bvp.check.partial_friction`)."""
-        sc, a = self.scene, self.scene.anchor
-        above = sc.seabed is not None and abs(a[2] - float(sc.seabed.height(a[0], a[1]))) > 1e-12 * sc.length
-        frictionless = LineBVP3DSolver(replace(sc, friction=0.0)).unbounded
-        return partial_friction(failed, sc.friction, frictionless if above else None)
 
     def strategy(self, start: LineBVP3DSolution | None = None) -> LineBVP3DSolution:
         """The strategy of the module docstring, from ``start`` where given."""
@@ -200,8 +205,9 @@ class LineBVP3DSolver:
         return first_converged(attempts)
 
     def starts(self, problem, z0) -> list:
-        """The solves of ``problem`` from its closed-form starts, in turn (the plane line's first
-        solve's): from ``z0`` (`closed_form_start`); on a seabed, with the contact nodes switching
+        """The solves of ``problem`` from its closed-form starts, in turn (the plane line's
+        alternatives, the segment-wise one after the switched one here): from ``z0``
+        (`closed_form_start`); on a seabed, with the contact nodes switching
         by the tension (`switched`); from the segment-wise closed form where there is one
         (`segmented_start`); on a plane seabed through the anchor, from the flat grounded line
         lifted onto it, fixed and switching (``closed_form_start(sloped=False)``)."""
@@ -213,19 +219,6 @@ class LineBVP3DSolver:
             attempts.append(lambda: self.run(problem, closed_form_start(problem, sloped=False)))
             attempts.append(lambda: self.switched(problem, closed_form_start(problem, sloped=False)))
         return attempts
-
-    def from_start(self, problem, z0) -> Solved:
-        """One solve of ``problem`` from ``z0``; a `ConvergenceError` where there is no such
-        start (None)."""
-        if z0 is None:
-            raise ConvergenceError("solve_line_bvp_3d: no segment-wise closed form of this line", [])
-        return self.run(problem, z0)
-
-    def switched(self, problem, z0) -> Solved:
-        """One solve of ``problem`` from ``z0`` with its contact nodes switching by the line's
-        tension (`DiscreteLine.with_tension_switch`, the plane line's alternative: a taut line's
-        residual forces at its start can exceed the switch of a line bent by its weight)."""
-        return self.run(problem.with_tension_switch(z0), z0)
 
     def continued(self, n, fitted, z0) -> Solved:
         """The drag grown from zero to its full value in steps, each solve from the last."""
@@ -337,10 +330,6 @@ class LineBVP3DSolver:
             return first_converged(self.starts(problem, closed_form_start(problem)))
 
         return first_converged([lambda: graded_by_start(REFINEMENT), lambda: graded_by_start(REFINEMENT**2)])
-
-    def compressed(self, solved) -> bool:
-        """Whether the discrete line is in compression (`DiscreteLine.compressed`)."""
-        return solved.problem.compressed(solved.dofs, self.scene.rtol)
 
     def checked(self, solved) -> LineBVP3DSolution:
         """The solution, once its checks hold (module docstring, 6)."""

@@ -111,12 +111,13 @@ class InPlane:
     The span and height of the fairlead in the plane (``e``, ``up``), the uniform line's load
     ``w`` and stiffness ``EA`` (`uniform_line`), the seabed under the chord relative to the
     anchor (a plane `Seabed` of the profile, flat where the bathymetry is), the segments, point
-    loads and friction; `with_ends` maps the plane's ``[x, y]`` back into space."""
-
-    terms = ()
+    loads, friction and cable terms; `with_ends` maps the plane's ``[x, y]`` back into space."""
 
     def __init__(self, problem, e, up, w, EA):
         self.space, self.e, self.up = problem, e, up
+        #: the line's cable terms (the current's drag among them): a line they load is not the
+        #: uniform closed form's, whose heap is then no verdict on it
+        self.terms = tuple(problem.terms)
         a = problem.anchor
         chord = problem.fairlead - a
         self.span, self.dh, self.L = float(chord @ e), float(chord @ up), problem.L

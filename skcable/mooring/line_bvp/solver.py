@@ -1,0 +1,93 @@
+"""What the two line BVP drivers share: the alternative solves, the compression test and the
+friction diagnosis of a failure.
+
+`LineSolver` is the base of `skcable.mooring.line_bvp.driver.LineBVPSolver` (the plane line) and
+`skcable.mooring.line_bvp_3d.driver.LineBVP3DSolver` (the line in space). Each driver gives its
+scene (``friction``, a dataclass), its time budget (`skcable._budget.Budget`), its one solve
+``run(problem, z0)`` counted against the budget, its strategy ``unbounded()``, Newton's
+tolerance and whether its anchor lies above the seabed; the base gives the rest once.
+"""
+
+from __future__ import annotations
+
+import time
+from dataclasses import replace
+from typing import Any
+
+from skcable._budget import Budget
+from skcable.errors import ConvergenceError
+from skcable.mooring.line_bvp.check import partial_friction
+
+__all__ = ["LineSolver"]
+
+
+class LineSolver:
+    """The mechanisms both line BVP drivers share (module docstring)."""
+
+    #: the public entry's name, in messages
+    name = "solve_line_bvp"
+    scene: Any
+    budget: Budget
+
+    def __init__(self, scene):
+        """Each driver sets up its own (its scene, budget and meshes)."""
+        raise NotImplementedError
+
+    @property
+    def tolerance(self) -> float:
+        """Newton's tolerance on the scaled residual."""
+        raise NotImplementedError
+
+    def anchor_above_seabed(self) -> bool:
+        """Whether the scene has a seabed and its anchor lies above it."""
+        raise NotImplementedError
+
+    def run(self, problem, z0):
+        """One solve of ``problem`` from ``z0``, counted against the budget."""
+        raise NotImplementedError
+
+    def unbounded(self):
+        """The strategy from scratch, without the budget's conversion."""
+        raise NotImplementedError
+
+    def from_start(self, problem, z0):
+        """One solve of ``problem`` from ``z0``; a `ConvergenceError` where there is no such
+        start (None)."""
+        if z0 is None:
+            raise ConvergenceError(f"{self.name}: no such closed-form start of this line", [])
+        return self.run(problem, z0)
+
+    def switched(self, problem, z0):
+        """One solve of ``problem`` from ``z0`` with its contact nodes switching by the line's
+        tension (`DiscreteLine.with_tension_switch`: a taut line's residual forces at its start
+        can exceed the switch of a line bent by its weight); a `ConvergenceError` without
+        contact."""
+        other = problem.with_tension_switch(z0)
+        if other is None:
+            raise ConvergenceError(f"{self.name}: no contact rows to switch by tension", [])
+        return self.run(other, z0)
+
+    def compressed(self, solved) -> bool:
+        """Whether the discrete line of ``solved`` (its ``problem`` and ``dofs``) is in
+        compression (`DiscreteLine.compressed`)."""
+        return solved.problem.compressed(solved.dofs, self.tolerance)
+
+    def with_diagnosis(self, failed: ConvergenceError) -> ConvergenceError:
+        """``failed``, saying where friction fully mobilised may take more than the line's pull
+        with its anchor above the seabed (`skcable.mooring.line_bvp.check.partial_friction`),
+        from the same line solved without friction by this driver, within what is left of the
+        budget (its own record of solves: the failure's ``last`` stays this line's)."""
+        if not (self.scene.friction > 0 and self.anchor_above_seabed()):
+            return failed
+        other = type(self)(replace(self.scene, friction=0.0))
+        other.budget = Budget(time_limit=max(0.0, self.budget.deadline - time.monotonic()))
+
+        def frictionless():
+            try:
+                return other.unbounded()
+            except Budget.Spent:
+                raise ConvergenceError(
+                    f"{self.name}: no time left for the line without friction", []
+                ) from None
+
+        return partial_friction(failed, self.scene.friction, frictionless)
