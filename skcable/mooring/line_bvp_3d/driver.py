@@ -255,12 +255,11 @@ class LineBVP3DSolver(LineSolver):
     def fitted(self, solved) -> Solved:
         """Nodes at the touchdown and the landing, moved until they settle (module docstring, 5):
         from the nodes ``solved``'s mesh has (a warm start's: its start's touchdown), none
-        left where the line no longer touches. Where a pass fails, or the passes end in
-        compression (a refit from scratch on the uniform mesh can: the survey's scene 2:243,
-        `benchmarks/line_bvp_planes.py`), the last line not in compression is kept: it is
-        converged, its touchdown between nodes."""
+        left where the line no longer touches. A line not in compression is kept where a pass
+        fails or ends in compression (its refit from scratch on the uniform mesh can: the
+        survey's scene 2:243, `benchmarks/line_bvp_planes.py`): it is converged, its touchdown
+        between nodes."""
         L, placed = solved.problem.L, list(solved.problem.fitted)
-        kept = None if self.compressed(solved) else solved
         for _ in range(self.scene.fit_touchdown):
             points = self.edges(solved)
             settled = len(points) == len(placed) and all(
@@ -269,13 +268,15 @@ class LineBVP3DSolver(LineSolver):
             if settled:
                 break
             try:
-                solved, placed = self.refit(solved, points), points
+                refitted = self.refit(solved, points)
             except ConvergenceError:
-                if kept is None:
+                if self.compressed(solved):
                     raise
-                return kept
-            kept = kept if self.compressed(solved) else solved
-        return kept if self.compressed(solved) and kept is not None else solved
+                break
+            if self.compressed(refitted) and not self.compressed(solved):
+                break
+            solved, placed = refitted, points
+        return solved
 
     @staticmethod
     def edges(solved) -> list[float]:
