@@ -255,10 +255,7 @@ class LineBVP3DSolver(LineSolver):
     def fitted(self, solved) -> Solved:
         """Nodes at the touchdown and the landing, moved until they settle (module docstring, 5):
         from the nodes ``solved``'s mesh has (a warm start's: its start's touchdown), none
-        left where the line no longer touches. A line not in compression is kept where a pass
-        fails or ends in compression (its refit from scratch on the uniform mesh can: the
-        survey's scene 2:243, `benchmarks/line_bvp_planes.py`): it is converged, its touchdown
-        between nodes."""
+        left where the line no longer touches."""
         L, placed = solved.problem.L, list(solved.problem.fitted)
         for _ in range(self.scene.fit_touchdown):
             points = self.edges(solved)
@@ -267,15 +264,7 @@ class LineBVP3DSolver(LineSolver):
             )
             if settled:
                 break
-            try:
-                refitted = self.refit(solved, points)
-            except ConvergenceError:
-                if self.compressed(solved):
-                    raise
-                break
-            if self.compressed(refitted) and not self.compressed(solved):
-                break
-            solved, placed = refitted, points
+            solved, placed = self.refit(solved, points), points
         return solved
 
     @staticmethod
