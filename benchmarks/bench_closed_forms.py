@@ -34,6 +34,7 @@ from skcable import cable
 
 sys.path.insert(0, str(Path(__file__).parent))
 from _peers import available, moorpy_H, opensees_catenary_cable_H, pycatenary_H  # noqa: E402
+from _tables import markdown_table  # noqa: E402
 
 SPAN, DH, W, EA, L0 = 800.0, -20.0, 20.0, 1e12, 801.409
 
@@ -210,8 +211,7 @@ def main(argv=None):
         own, ref = r[2], times.get(baseline.get(r[0], r[0]))
         ratio = f"{float(own) / float(ref):.2f}" if own != "not installed" else ""
         table.append((*r, ratio))
-    lines = ["| " + " | ".join(header) + " |", "|" + "---|" * len(header)]
-    lines += ["| " + " | ".join(r) + " |" for r in table]
+    lines = markdown_table(header, table)
     print("\n".join(lines))
     if not args.no_write:
         moorpy = times.get("MoorPy catenary()", "")

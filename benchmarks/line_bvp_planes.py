@@ -62,6 +62,9 @@ import numpy as np
 
 ROOT = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT))
+sys.path.insert(0, str(Path(__file__).parent))
+from _tables import counts_table, markdown_table  # noqa: E402
+
 from skcable import mooring  # noqa: E402
 from skcable.cable import sloped_seabed_catenary  # noqa: E402
 from skcable.errors import ConvergenceError, InputError  # noqa: E402
@@ -401,12 +404,7 @@ def run(seeds, count, progress=False):
 
 
 def _table(rows, column, values):
-    counts = Counter((r[column], r["outcome"]) for r in rows)
-    lines = [f"| {column} | " + " | ".join(OUTCOMES) + " |", "|---|" + "---|" * len(OUTCOMES)]
-    for value in values:
-        cells = " | ".join(str(counts.get((value, o), 0)) for o in OUTCOMES)
-        lines.append(f"| {value} | {cells} |")
-    return lines
+    return counts_table(column, values, OUTCOMES, Counter((r[column], r["outcome"]) for r in rows))
 
 
 def report(rows, seeds, count):
@@ -415,9 +413,7 @@ def report(rows, seeds, count):
     lines = [
         f"{len(seeds)} seeds ({' '.join(map(str, seeds))}) x {count} scenes:",
         "",
-        "| " + " | ".join(OUTCOMES) + " |",
-        "|" + "---|" * len(OUTCOMES),
-        "| " + " | ".join(str(counts.get(o, 0)) for o in OUTCOMES) + " |",
+        *markdown_table(OUTCOMES, [[counts.get(o, 0) for o in OUTCOMES]]),
         "",
     ]
     scope = [r for r in rows if r["outcome"] == "out of scope"]

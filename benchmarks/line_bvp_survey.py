@@ -39,6 +39,9 @@ import numpy as np
 
 ROOT = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT))
+sys.path.insert(0, str(Path(__file__).parent))
+from _tables import counts_table, markdown_table  # noqa: E402
+
 from skcable.errors import InputError  # noqa: E402
 from tests.mooring.line_scenes import exact_one_segment, scenes, tolerance  # noqa: E402
 
@@ -104,18 +107,13 @@ def report(rows, seeds, count):
     lines = [
         f"{len(seeds)} seeds x {count} scenes, {len(rows)} that `mooring.Line` solves or finds a heap in:",
         "",
-        "| " + " | ".join(OUTCOMES) + " |",
-        "|" + "---|" * len(OUTCOMES),
-        "| " + " | ".join(str(counts.get(o, 0)) for o in OUTCOMES) + " |",
+        *markdown_table(OUTCOMES, [[counts.get(o, 0) for o in OUTCOMES]]),
         "",
         f"64-element solve: median {1e3 * np.median(times):.1f} ms, 90th percentile "
         f"{1e3 * np.quantile(times, 0.9):.1f} ms (this machine, one process).",
     ]
     by_regime = Counter((r[3], r[5]) for r in rows)
-    lines += ["", "| regime | " + " | ".join(OUTCOMES) + " |", "|---|" + "---|" * len(OUTCOMES)]
-    for regime in ("taut", "mid", "slack"):
-        cells = " | ".join(str(by_regime.get((regime, o), 0)) for o in OUTCOMES)
-        lines.append(f"| {regime} | {cells} |")
+    lines += ["", *counts_table("regime", ("taut", "mid", "slack"), OUTCOMES, by_regime)]
     bad = [r for r in rows if r[5] in ("wrong", "failed")]
     for r in bad[:10]:
         lines.append(f"- {r[5]}: seed {r[0]} scene {r[1]} ({r[2]}, {r[3]}, {r[4]} segments): {r[8] or r[6]}")
