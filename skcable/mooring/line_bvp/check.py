@@ -144,7 +144,7 @@ def partial_friction(failed, friction, without_friction) -> ConvergenceError:
     except ConvergenceError:
         return failed
     on = frictionless.in_contact
-    if not (friction > 0 and on.any()):
+    if not on.any():
         return failed
     normal = float(np.sum(frictionless.normal_force[on]))
     s_touchdown = float(np.max(frictionless.contact_s[on]))

@@ -272,16 +272,20 @@ class DiscreteLine:
         other.contact_rows = replace(self.contact_rows, frozen=np.array(active, dtype=bool))
         return other
 
+    def in_compression(self, z, tol) -> np.ndarray:
+        """Per tension dof of ``z`` (`tension_points`), whether it is below ``-1e3 tol`` of
+        `load_scale` (N), ``tol`` Newton's tolerance on the scaled residual."""
+        return z[self.dim * self.N :] < -1e3 * tol * self.load_scale
+
     def compressed(self, z, tol) -> bool:
-        """Whether the tension of the dofs ``z`` falls below ``-1e3 tol`` of `load_scale` (N)
-        anywhere: the discrete line in compression (its bends not resolved, or a spurious
-        branch), ``tol`` Newton's tolerance on the scaled residual."""
-        return bool(np.min(z[self.dim * self.N :]) < -1e3 * tol * self.load_scale)
+        """Whether the discrete line of the dofs ``z`` is in compression anywhere
+        (`in_compression`): its bends not resolved, or a spurious branch."""
+        return bool(np.any(self.in_compression(z, tol)))
 
     def sliding_to_anchor(self, z, tol) -> float | None:
-        """Where the discrete line's compression (`compressed`) lies on the seabed from the anchor
-        (every tension point below ``-1e3 tol`` of `load_scale` within 1e-6 of the length of the
-        seabed, the first one among them, the anchor on the seabed): the slope ``tan α`` of the
+        """Where the discrete line's compression (`in_compression`) lies on the seabed from the
+        anchor (every tension point in compression within 1e-6 of the length of the seabed, the
+        first one among them, the anchor on the seabed): the slope ``tan α`` of the
         line at the anchor; else None.
 
         Such a line has no equilibrium in tension: along the seabed ``dT/ds = w (sin α −
@@ -291,7 +295,7 @@ class DiscreteLine:
         if self.seabed is None:
             return None
         s = self.tension_points()
-        below = z[self.dim * self.N :] < -1e3 * tol * self.load_scale
+        below = self.in_compression(z, tol)
         if not below[0]:
             return None
         state = self.state_at(z, np.concatenate([[0.0], s[below]]))
