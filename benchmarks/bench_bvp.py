@@ -18,6 +18,8 @@ Run:  python benchmarks/bench_bvp.py                 (chart + CSV + 10k-element 
       python benchmarks/bench_bvp.py --seabed        (solve_line_bvp on a seabed: error and time)
       python benchmarks/bench_bvp.py --warm          (warm starts against cold solves, plane and
                                                       space; the cost of the equilibrium check)
+      python benchmarks/bench_bvp.py --space-mesh    (the line in space on a seabed, its graded
+                                                      and uniform meshes: error against time)
 Output: benchmarks/out/bvp_accuracy_time.csv, docs/img/bvp_accuracy_time.png
 """
 
@@ -359,18 +361,67 @@ def warm(args):
         print(f"| {label} | {t_check * 1e3:.2f} | {t_solve * 1e3:.1f} | {t_check / t_solve:.1%} |")
 
 
+def space_mesh(args):
+    """The line in space on a seabed (`LineBVP3D`, its ``mesh``), on meshes graded as the plane
+    line's (the default) and uniform: the end forces' error over the largest against the plane
+    line's on 2048 graded elements (the other driver, `LineBVP`), and the time per solve (median
+    of the repeats), by number of elements. Three scenes in the vertical plane x-z: a rope landing
+    on a flat seabed 27 m below its anchor (``benchmarks/line_bvp_planes.py``'s scene 1:180, its
+    weight varying ±16 %); chain, wire and chain anchored on a flat seabed (``--warm``'s line); two
+    segments on a falling slope through the anchor with a clump (scene 3:140)."""
+    from skcable.mooring import LineBVP
+    from skcable.mooring.bathymetry import Plane
+    from skcable.mooring.line_bvp_3d import LineBVP3D
+
+    def varying(s):
+        return 16.355186173293895 * (
+            1 + 0.15633141545904777 * np.sin(2 * np.pi * s / 625.231210775148 + 1.828396669699145)
+        )
+
+    slope = -0.031951459312359695
+    scenes = [  # (label, span, dh, segments, plane seabed options, space seabed, point loads)
+        ("landing from 27 m above a flat seabed", 1673.3775969545588, 68.78822221302812,
+         [(1770.4204098171263, varying, 84360307.05301091)], {"seabed": -26.786311588569824},
+         -26.786311588569824, []),
+        ("chain-wire-chain anchored on a flat seabed", 800.0, 150.0,
+         [(300.0, 1000.0, 5e8), (250.0, 400.0, 2e8), (300.0, 1000.0, 5e8)], {"seabed": 0.0}, 0.0, []),
+        ("two segments and a clump on a slope of -0.032", 1175.4443507194756, 818.6305574786969,
+         [(1548.0073463380697, 80.6837038178888, 6026221207.206553),
+          (450.94426865580664, 68.63531752172263, 164908758.06173596)],
+         {"seabed": lambda x: slope * np.asarray(x), "seabed_slope": lambda x: np.full(np.shape(x), slope)},
+         Plane(0.0, (slope, 0.0)), [(1113.9380968528765, 2128.104285596925)]),
+    ]  # fmt: skip
+    print("| scene | mesh | elements | end forces off | ms per solve |")
+    print("|---|---|---|---|---|")
+    for label, span, dh, segments, plane_bed, space_bed, loads in scenes:
+        ref = LineBVP(segments, point_loads=loads, n_elements=2048, **plane_bed).solve(span, dh)
+        want = np.array([ref.H_A, -ref.V_A, -ref.H_B, -ref.V_B])
+        for mesh in ("graded", "uniform"):
+            for n in (64, 256, 1024):
+                model = LineBVP3D(segments, point_loads=loads, seabed=space_bed, n_elements=n, mesh=mesh)
+                ends = ((0.0, 0.0, 0.0), (span, 0.0, dh))
+                line = model.solve(*ends)
+                got = np.array([*line.force_on_anchor[[0, 2]], *line.force_on_fairlead[[0, 2]]])
+                off = np.abs(got - want).max() / np.abs(want).max()
+                t = np.median([_timed(partial(model.solve, *ends)) for _ in range(args.repeats // 6 or 1)])
+                print(f"| {label} | {mesh} | {n} | {off:.1e} | {t * 1e3:.0f} |")
+
+
 def main(argv=None):
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--stability", action="store_true", help="map where each formulation converges")
     parser.add_argument("--large", action="store_true", help="only the 10,000-element timings")
     parser.add_argument("--seabed", action="store_true", help="solve_line_bvp on a seabed: error, time")
     parser.add_argument("--warm", action="store_true", help="warm against cold starts; check cost")
+    parser.add_argument("--space-mesh", action="store_true", help="the line in space: graded or uniform")
     parser.add_argument("--repeats", type=int, default=30, help="runs of each 10,000-element case")
     args = parser.parse_args(argv)
     if args.seabed:
         return seabed(args)
     if args.warm:
         return warm(args)
+    if args.space_mesh:
+        return space_mesh(args)
     (stability if args.stability else large if args.large else accuracy_time)(args)
 
 

@@ -1,9 +1,10 @@
 """Differential survey of the two line BVPs in a vertical plane: `solve_line_bvp` against
 `solve_line_bvp_3d` solved in the plane x-z, over seeded scenes.
 
-The two share one discrete line law (`skcable.mooring.line_bvp.discrete`) but not their drivers
-(`skcable.mooring.line_bvp.driver`: graded and nested meshes, the slack stretch with friction;
-`skcable.mooring.line_bvp_3d.driver`: uniform and nested meshes), so a scene one solves and the
+The two share one discrete line law (`skcable.mooring.line_bvp.discrete`) and, on a seabed, the
+grading of their meshes, but not their drivers (`skcable.mooring.line_bvp.driver`: its first
+solves, nested meshes, the slack stretch with friction; `skcable.mooring.line_bvp_3d.driver`: its
+starts, the current by steps, the uniform mesh where the graded ones fail), so a scene one solves and the
 other does not is a driver's failure, and two answers farther apart than both discretisations
 allow is a bug in one of them. The scenes cover what ``benchmarks/line_bvp_survey.py`` (against
 the closed form) does not: a seabed sloping along the line (``b(x) = h + slope x``, slopes

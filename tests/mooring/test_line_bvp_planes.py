@@ -1,14 +1,16 @@
 """The plane line BVP and the line in space in its vertical plane: scenes of the differential survey
 ``benchmarks/line_bvp_planes.py`` (``--show SEED:SCENE`` prints each as Python).
 
-`skcable.mooring.solve_line_bvp` (graded meshes) and `skcable.mooring.line_bvp_3d.solve_line_bvp_3d`
-(uniform meshes) share one line law but not their drivers: on a scene both solve, their end forces
-are two independent discretisations of the same line, and agree to their discretisation errors.
+`skcable.mooring.solve_line_bvp` and `skcable.mooring.line_bvp_3d.solve_line_bvp_3d` share one
+line law and their meshes' grading (on a seabed, graded by the closed-form start, then by the
+line's turning) but not their drivers (the plane's first solve, friction and slack stretch; space's
+starts, current and fitting): on a scene both solve, their end forces agree to the discretisation
+errors of their meshes.
 In space the anchor is at (0, 0, 0), the fairlead at (span, 0, dh), the seabed
 ``Plane(height, (slope, 0))``; the plane's ``(H_A, V_A, H_B, V_B)`` are space's
 ``force_on_anchor[[0, 2]] = (H_A, -V_A)`` and ``force_on_fairlead[[0, 2]] = (-H_B, -V_B)``.
 
-`test_the_two_line_bvps_agree_on_the_surveys_scenes` holds thirteen scenes both solve to 1e-6 of
+`test_the_two_line_bvps_agree_on_the_surveys_scenes` holds sixteen scenes both solve to 1e-6 of
 the largest end force (the survey's threshold): seabeds sloping along the line (through the anchor
 or below it), a flat seabed below the anchor, clump weights and buoys inside segments resting on
 the seabed, weights varying along the line, friction; measured differences 3.9e-12 to 4.1e-7.
@@ -17,7 +19,10 @@ until its start on a straight slope through the anchor became the closed form on
 (`skcable.cable.sloped_seabed_catenary`, the line in space's), not the flat grounded line lifted
 onto it; one (3:172) until its first solve tried the uniform mesh where the mesh graded by the
 start fails; one (3:234) both failed until each tried the lifted line as well; one (5:126) the
-line in space ended in compression until it graded its mesh by the line's turning.
+line in space ended in compression until it graded its mesh by the line's turning; three (1:180,
+2:217, 3:140) the line in space was 1.9e-3 to 1.4e-2 off on its uniform mesh until it graded its
+meshes on a seabed as the plane line does (the survey's refinement of the uniform mesh moved it
+to the plane line's answer: 6.0e-5 to 9.2e-7 off on four times the elements).
 
 The scene marked ``xfail(strict=True)`` is the survey's open finding, with the driver's stage
 that fails (a fix turns it into a pass, which the strict mark reports): the plane line's grading
@@ -123,6 +128,17 @@ AGREE = {
     # the slope (switching by the tension); the line in space as well, on a mesh graded by that
     # start; 3.9e-12
     "3:234": Scene(720.8246891133476, 8.720188995417637, [(439.0475516232507, 875.5899328081308, 4594667007.771147), (103.57758309135652, (18.114687470739305, 0.47041778674158746, 1025.8479702200998, 1.4959240795939381), 1773500123.6117845), (234.86477799393015, 17.556572754682215, 836344294.352262)], [(171.49602873003803, 73063.35138591191), (516.707081104585, -92301.2053935098)], (0.0, -0.06787518350727702), 0.0, 64),  # noqa: E501
+    # a flat seabed 27 m below the anchor, a weight varying +-16 %, 64 elements: the line in space
+    # was 1.4e-2 of the largest force off on its uniform mesh (the landing's bend in one element;
+    # on 4 times the elements 6.0e-5) until it graded its mesh from the start as the plane line
+    # does; 4.8e-8
+    "1:180": Scene(1673.3775969545588, 68.78822221302812, [(1770.4204098171263, (16.355186173293895, 0.15633141545904777, 625.231210775148, 1.828396669699145), 84360307.05301091)], [], (-26.786311588569824, 0.0), 0.0, 64),  # noqa: E501
+    # chain, wire and rope on a flat seabed 1.4 m below the anchor, a clump on the chain, 256
+    # elements: 4.8e-3 apart on space's uniform mesh (1.9e-4 on 4 times the elements); 3.4e-12
+    "2:217": Scene(68.96862436925545, 2.822418904908874, [(17.667384016282316, 1180.8983179455745, 751321758.3370379), (42.740976814273395, 17.463870785674974, 754941478.673899), (12.561449108879362, 75.93188160646692, 8095573296.873058)], [(14.709064337621031, 1040.3926644059325)], (-1.370537941300455, 0.0), 0.0, 256),  # noqa: E501
+    # a falling slope (-0.032) through the anchor, a clump on the second segment, 64 elements:
+    # 1.9e-3 apart on space's uniform mesh (9.2e-7 on 4 times the elements); 4.9e-10
+    "3:140": Scene(1175.4443507194756, 818.6305574786969, [(1548.0073463380697, 80.6837038178888, 6026221207.206553), (450.94426865580664, 68.63531752172263, 164908758.06173596)], [(1113.9380968528765, 2128.104285596925)], (0.0, -0.031951459312359695), 0.0, 64),  # noqa: E501
 }
 
 FAILS = [
@@ -150,3 +166,28 @@ def test_the_surveys_findings_solve_in_both_and_agree(sc):
     `TOLERANCE`; one driver fails it, or both solve it farther apart."""
     want, got = end_forces(sc)
     np.testing.assert_allclose(got, want, rtol=0, atol=TOLERANCE * np.abs(want).max())
+
+
+def test_the_uniform_mesh_converges_to_the_graded_meshes_answer():
+    """Scene 1:180 on the line in space's uniform mesh (``mesh="uniform"``, a line landing on a
+    flat seabed 27 m below its anchor): off the plane line's answer on its graded mesh by 1.4e-2
+    of the largest end force at 64 elements, 6.0e-5 at 256 and 9.8e-7 at 1024, converging to it,
+    while the line in space on its graded 64 elements is within 4.8e-8
+    (`test_the_two_line_bvps_agree_on_the_surveys_scenes`)."""
+    sc = AGREE["1:180"]
+    want, _ = end_forces(sc)
+    segments = [(length, varying(*w), EA) for length, w, EA in sc.segments]
+    off = []
+    for n in (64, 256, 1024):
+        line = solve_line_bvp_3d(
+            (0.0, 0.0, 0.0),
+            (sc.span, 0.0, sc.dh),
+            segments,
+            seabed=sc.seabed[0],
+            n_elements=n,
+            mesh="uniform",
+        )
+        assert line.problem.nodes_at is None  # uniform (but for the fitted nodes)
+        got = np.array([*line.force_on_anchor[[0, 2]], *line.force_on_fairlead[[0, 2]]])
+        off.append(np.abs(got - want).max() / np.abs(want).max())
+    assert off[0] > 1e-3 > off[1] > TOLERANCE > off[2]

@@ -3,32 +3,41 @@ r"""The strategy that takes a line in space from its closed-form start to the co
 `LineBVP3DSolver(scene).solve()` runs, each solve by `skcable.mooring.line_bvp.iterate.solve_on`
 (the plane line's: damped semismooth Newton, full steps, the polish):
 
-1. **A level** (`LineBVP3DSolver.level`): the line on the scene's uniform mesh from its
-   closed-form starts (`LineBVP3DSolver.starts`, the plane line's alternatives): the start
+1. **On a seabed, with ``fit_touchdown`` (and ``mesh="graded"``, the default), meshes graded as
+   the plane line's**
+   (`LineBVP3DSolver.from_graded_start`, then `LineBVP3DSolver.graded`): the first mesh graded by
+   the closed-form start's turning (`skcable.mooring.line_bvp.mesh.graded_nodes` of the start on
+   the uniform mesh, its elements at most `REFINEMENT` times finer than the uniform mesh's, else
+   ``REFINEMENT²`` times), the line solved there from its closed-form starts (2), then on meshes
+   graded by its own turning, pass by pass (`skcable.mooring.line_bvp.mesh.grading_passes`, the
+   plane line's): its in-plane case then takes the plane line's meshes, and their answers agree
+   (the uniform mesh left the bend where the line lands on the seabed in one or two elements:
+   the differential survey `benchmarks/line_bvp_planes.py` found end forces up to 2 % off at 64
+   elements). Each mesh is a function of the ends alone, the start's and then the line's: a
+   warm start (`LineBVP3DSolver.solve` from a solution at nearby ends) solves the same meshes
+   from its start moved (`LineBVP3DSolver.moved`), so it gives the solve from scratch to
+   round-off. Where this fails or ends in compression, or without a seabed (or with
+   ``mesh="uniform"``),
+2. **a level on the uniform mesh** (`LineBVP3DSolver.level`): the line from its closed-form
+   starts (`LineBVP3DSolver.starts`, the plane line's alternatives): the start
    (`skcable.mooring.line_bvp_3d.start`), on a seabed with the contact nodes switching by the
    tension, the segment-wise closed form, on a plane seabed through the anchor the flat grounded
    line lifted onto it too; where those fail,
-2. **the current by steps** (`LineBVP3DSolver.continued`): the line in still water, then the
+3. **the current by steps** (`LineBVP3DSolver.continued`): the line in still water, then the
    drag grown to its full value in steps (a quarter first, halved where a step fails, down to
    1/64), each from the last; where that fails too (or a fine mesh's start touches the seabed),
-3. **nested meshes** (`LineBVP3DSolver.nested`, by the plane line's
+4. **nested meshes** (`LineBVP3DSolver.nested`, by the plane line's
    `skcable.mooring.line_bvp.mesh.solve_nested`): from `skcable.mooring.line_bvp.mesh.COARSE`
    elements up, each solution interpolated onto the doubled mesh (the active set moves by a
    few nodes per Newton iteration, so a fine mesh does not find its contact set from the start),
    a level that fails so solved from scratch, a coarse one that fails even so skipped; on a
-   seabed, where every one of these fails, the starts on a mesh graded by the start's turning
-   (`LineBVP3DSolver.from_graded_start`, the plane line's first mesh).
-4. **Grading** (`LineBVP3DSolver.graded`): a line in compression on its mesh (the bend where it
-   lands on the seabed from an anchor above it, in one element of the uniform mesh; the mesh
-   with a node at its touchdown too, after fitting, then fitted again), or on the mesh graded
-   by its start, is solved again on meshes graded by its own turning, pass by pass
-   (`skcable.mooring.line_bvp.mesh.grading_passes`, the plane line's). A line the uniform mesh
-   solves keeps it: a warm start and a solve from scratch then give the same line to round-off.
+   seabed, where every one of these fails, the starts on the mesh graded by the start (1). A
+   line in compression on the uniform mesh is graded by its turning as in 1. Without a seabed
+   the uniform mesh is kept, and a warm start solves on its start's mesh.
 5. **Fitting** (`LineBVP3DSolver.fitted`): a node at the touchdown and the landing the balance of
    forces gives (`skcable.mooring.line_bvp.fitting`), ``fit_touchdown`` passes while they move
-   more than 1e-9 of the length. A warm start (`LineBVP3DSolver.solve` from a solution at
-   nearby ends) keeps its start's nodes: where the touchdown has hardly moved, one pass finds
-   it settled and the first solve is the last.
+   more than 1e-9 of the length; a line in compression after it (a node at the touchdown left a
+   bend in one element) graded again and fitted again.
 6. **Checks** (`LineBVP3DSolver.checked`): every number finite, the line not in compression
    (a slack stretch on the seabed near the anchor is not modelled in 3-D; a line in compression
    on the seabed from the anchor has no equilibrium in tension: ``InputError("friction")``,
@@ -51,7 +60,6 @@ import numpy as np
 from skcable._budget import Budget
 from skcable.errors import ConvergenceError
 from skcable.fe import NewtonOptions, first_converged
-from skcable.mooring.bathymetry import OffGrid
 from skcable.mooring.line_bvp.check import refuse_sliding
 from skcable.mooring.line_bvp.fitting import landing, touchdown
 from skcable.mooring.line_bvp.iterate import solve_on
@@ -106,6 +114,13 @@ class LineBVP3DSolver(LineSolver):
         """Newton's tolerance on the scaled residual."""
         return self.scene.rtol
 
+    @property
+    def graded_first(self) -> bool:
+        """Whether the line is solved on meshes graded by the start and the line first (module
+        docstring, 1): on a seabed, with ``fit_touchdown`` and ``mesh="graded"``."""
+        sc = self.scene
+        return sc.seabed is not None and sc.fit_touchdown > 0 and sc.mesh == "graded"
+
     def anchor_above_seabed(self) -> bool:
         """Whether the scene has a seabed and the anchor lies above it (by 1e-12 of the length)."""
         sc, a = self.scene, self.scene.anchor
@@ -141,15 +156,27 @@ class LineBVP3DSolver(LineSolver):
 
     def strategy(self, start: LineBVP3DSolution | None = None) -> LineBVP3DSolution:
         """The strategy of the module docstring, from ``start`` where given."""
-        solved = None
-        if start is not None:
+        fit = self.scene.seabed is not None and self.scene.fit_touchdown
+        n, solved = self.scene.n_elements, None
+        if self.graded_first:  # graded by the start, then by the line (module docstring, 1)
+            try:
+                first = self.from_graded_start(n, start=start)
+                solved = self.graded(first, or_from_start=start is not None)
+            except ConvergenceError:
+                solved = None
+        elif start is not None:
             try:
                 solved = self.run(*self.warm(start), near=True)
             except ConvergenceError:
                 solved = None
-        if solved is None:
-            solved = self.graded(self.level(self.scene.n_elements))
-        fit = self.scene.seabed is not None and self.scene.fit_touchdown
+        if solved is None or (self.graded_first and self.compressed(solved)):
+            kept = solved  # a line in compression on the graded meshes, for the checks' verdict
+            try:
+                solved = self.graded(self.level(n))
+            except ConvergenceError:
+                if kept is None:
+                    raise
+                solved = kept
         if fit:
             solved = self.fitted(solved)
         if self.compressed(solved):  # a node at the touchdown left a bend in one element: graded, refitted
@@ -158,21 +185,10 @@ class LineBVP3DSolver(LineSolver):
         return self.checked(solved)
 
     def warm(self, start: LineBVP3DSolution) -> tuple[LineProblem3D, np.ndarray]:
-        """The problem and the first iterate of a warm start: ``start``'s line moved (`moved`), on
-        a mesh with nodes at the touchdown and the landing of the moved line (the balance of
-        `skcable.mooring.line_bvp.fitting` on it, its supports' reactions moved with it), else at
-        ``start``'s."""
-        z, points = self.moved(start), list(start.problem.fitted)
-        if points and self.scene.fit_touchdown:
-            try:
-                guess = self.edges(Solved(start.problem, z, [], start.problem.assemble(z)))
-            except OffGrid:  # the moved line off the seabed's grid: keep the start's nodes
-                guess = []
-            points = guess if len(guess) == len(points) else points
-        problem = self.problem(self.scene.n_elements, points, nodes_at=start.problem.nodes_at)
-        if problem.fitted != start.problem.fitted:
-            z = restart(start.problem, z, problem)
-        return problem, z
+        """The problem and the first iterate of a warm start on the uniform mesh (module
+        docstring, 2–4): ``start``'s line moved (`moved`) on ``start``'s mesh, without its fitted
+        nodes (fitting puts them anew, as it does from scratch)."""
+        return self.problem(self.scene.n_elements, nodes_at=start.problem.nodes_at), self.moved(start)
 
     def moved(self, start: LineBVP3DSolution) -> np.ndarray:
         """``start``'s line on its mesh, moved to the new ends: along its tangent ``∂z/∂r_B``
@@ -189,10 +205,10 @@ class LineBVP3DSolver(LineSolver):
 
     def level(self, n, fitted=()) -> Solved:
         """The line on ``n`` elements from the closed-form starts (`starts`), by steps of the
-        current, on nested meshes, or on a mesh graded by the start (module docstring, 1–3)."""
+        current, on nested meshes, or on a mesh graded by the start (module docstring, 2–4)."""
         problem = self.problem(n, fitted)
         z0 = closed_form_start(problem)
-        touches = problem.contact_rows is not None and np.any(problem.contact_rows.terms(z0, 0 * z0).gap <= 0)
+        touches = self.touches(problem)
         attempts = self.starts(problem, z0)
         if problem.terms:
             attempts.append(lambda: self.continued(n, fitted, z0))
@@ -200,7 +216,7 @@ class LineBVP3DSolver(LineSolver):
             attempts.append(lambda: self.nested(n, fitted))
         if touches and n > 2 * COARSE:
             attempts = [attempts[-1], *attempts[:-1]]
-        if problem.contact_rows is not None:
+        if problem.contact_rows is not None and not self.graded_first:  # else tried before (`strategy`)
             attempts.append(lambda: self.from_graded_start(n, fitted))
         return first_converged(attempts)
 
@@ -220,14 +236,15 @@ class LineBVP3DSolver(LineSolver):
             attempts.append(lambda: self.switched(problem, closed_form_start(problem, sloped=False)))
         return attempts
 
-    def continued(self, n, fitted, z0) -> Solved:
-        """The drag grown from zero to its full value in steps, each solve from the last."""
-        solved = self.run(self.problem(n, fitted, drag_scale=0.0), z0)
+    def continued(self, n, fitted, z0, nodes_at=None) -> Solved:
+        """The drag grown from zero to its full value in steps, each solve from the last (on the
+        mesh ``nodes_at`` where given)."""
+        solved = self.run(self.problem(n, fitted, drag_scale=0.0, nodes_at=nodes_at), z0)
         scale, step = 0.0, 0.25
         while scale < 1.0:
             trial = min(1.0, scale + step)
             try:
-                solved = self.run(self.problem(n, fitted, drag_scale=trial), solved.dofs)
+                solved = self.run(self.problem(n, fitted, drag_scale=trial, nodes_at=nodes_at), solved.dofs)
                 scale = trial
             except ConvergenceError:
                 step *= 0.5
@@ -236,7 +253,7 @@ class LineBVP3DSolver(LineSolver):
         return solved
 
     def nested(self, n, fitted=()) -> Solved:
-        """Nested meshes up to ``n`` elements (module docstring, 3; `solve_nested`): each from
+        """Nested meshes up to ``n`` elements (module docstring, 4; `solve_nested`): each from
         the coarser one interpolated, else from its closed-form start (by steps of the current
         where it needs them)."""
 
@@ -288,13 +305,14 @@ class LineBVP3DSolver(LineSolver):
             ]
         )
 
-    def graded(self, solved) -> Solved:
+    def graded(self, solved, or_from_start=True) -> Solved:
         """Where ``solved`` is in compression (its mesh does not resolve its bends) or on a mesh
         graded by its start (`from_graded_start`, whose elements are graded for the start's
         shape, not the line's): the line on meshes graded by its turning, pass by pass, as the
-        plane line's (module docstring, 4; `skcable.mooring.line_bvp.mesh.grading_passes`), from
-        ``solved``, else from the mesh graded by the start; ``solved`` as it is where both fail
-        (the check then refuses it in compression)."""
+        plane line's (module docstring, 1; `skcable.mooring.line_bvp.mesh.grading_passes`), from
+        ``solved``, else (``or_from_start``: where ``solved`` is not that mesh's cold solve) from
+        the mesh graded by the start; ``solved`` as it is where both fail (the check then refuses
+        it in compression)."""
         if not (self.compressed(solved) or solved.problem.nodes_at is not None):
             return solved
         n = self.scene.n_elements
@@ -309,27 +327,70 @@ class LineBVP3DSolver(LineSolver):
                 raise ConvergenceError("solve_line_bvp_3d: in compression on every graded mesh", last.history)
             return last
 
+        alternatives = [lambda: passes(solved)]
+        if or_from_start:
+            alternatives.append(lambda: passes(self.from_graded_start(n)))
         try:
-            return first_converged([lambda: passes(solved), lambda: passes(self.from_graded_start(n))])
+            return first_converged(alternatives)
         except ConvergenceError:
             return solved
 
-    def from_graded_start(self, n, fitted=()) -> Solved:
-        """The line from the closed-form starts (`starts`) on a mesh graded by the start's
-        turning (the plane line's first mesh; `skcable.mooring.line_bvp.mesh.graded_nodes` of the start on the
-        uniform mesh), its elements at most `REFINEMENT` times finer than the uniform mesh's,
-        else ``REFINEMENT²`` times: the uniform mesh of a line that lands on the seabed from an
-        anchor above it leaves the bend of the landing in one or two elements, and its solve
-        ends in compression or fails."""
-        uniform = self.problem(n, fitted)
-        z0 = closed_form_start(uniform)
+    def from_graded_start(self, n, fitted=(), start: LineBVP3DSolution | None = None) -> Solved:
+        """The line on a mesh graded by the closed-form start's turning (the plane line's first
+        mesh; `skcable.mooring.line_bvp.mesh.graded_nodes` of the start on the uniform mesh), its
+        elements at most `REFINEMENT` times finer than the uniform mesh's, else ``REFINEMENT²``
+        times: the uniform mesh of a line that lands on the seabed from an anchor above it leaves
+        the bend of the landing in one or two elements, and its solve ends in compression or
+        fails. On that mesh: from a warm ``start`` (a solution at other ends) moved (`moved`)
+        where given; from the closed-form starts (`starts`); by steps of the current where the
+        line has terms (`continued`); above ``2·COARSE`` elements, by nested meshes each graded
+        by the start (`skcable.mooring.line_bvp.mesh.solve_nested`; first where the start touches
+        the seabed: the active set moves by a few nodes per Newton iteration). The mesh depends
+        on the ends alone, whichever of these solves it."""
+
+        def graded_problem(size, refinement):
+            uniform = self.problem(size, fitted)
+            nodes = graded_nodes(uniform, closed_form_start(uniform), size, self.fixed, refinement)[0]
+            return self.problem(size, fitted, nodes_at=nodes)
+
+        def from_starts(problem, size):
+            z0 = closed_form_start(problem)
+            attempts = self.starts(problem, z0)
+            if problem.terms:
+                attempts.append(lambda: self.continued(size, fitted, z0, nodes_at=problem.nodes_at))
+            return first_converged(attempts)
 
         def graded_by_start(refinement):
-            nodes = graded_nodes(uniform, z0, n, self.fixed, refinement)[0]
-            problem = self.problem(n, fitted, nodes_at=nodes)
-            return first_converged(self.starts(problem, closed_form_start(problem)))
+            problem = graded_problem(n, refinement)
+            attempts = [lambda: from_starts(problem, n)]
+            if n > 2 * COARSE:
+
+                def level(size, coarser):
+                    at = problem if size == n else graded_problem(size, refinement)
+                    if coarser is None:
+                        return from_starts(at, size)
+                    return self.run(at, restart(coarser.problem, coarser.dofs, at))
+
+                def nested():
+                    return solve_nested(n, level)
+
+                attempts.insert(0 if self.touches(problem) else 1, nested)
+            if start is not None:
+                moved = self.moved(start)
+                attempts.insert(
+                    0, lambda: self.run(problem, restart(start.problem, moved, problem), near=True)
+                )
+            return first_converged(attempts)
 
         return first_converged([lambda: graded_by_start(REFINEMENT), lambda: graded_by_start(REFINEMENT**2)])
+
+    @staticmethod
+    def touches(problem) -> bool:
+        """Whether ``problem``'s closed-form start touches its seabed."""
+        if problem.contact_rows is None:
+            return False
+        z0 = closed_form_start(problem)
+        return bool(np.any(problem.contact_rows.terms(z0, 0 * z0).gap <= 0))
 
     def checked(self, solved) -> LineBVP3DSolution:
         """The solution, once its checks hold (module docstring, 6)."""

@@ -20,7 +20,20 @@ from skcable.errors import InputError
 from skcable.mooring.bathymetry import Bathymetry, bathymetry_of
 from skcable.mooring.line_bvp.inputs import LineSegment, point_loads_of, segments_of, terms_of
 
-__all__ = ["LineSegment", "Scene3D", "attachments_of", "checked_options", "point", "scene", "segments_of"]
+__all__ = [
+    "MESHES",
+    "LineSegment",
+    "Scene3D",
+    "attachments_of",
+    "checked_options",
+    "mesh_of",
+    "point",
+    "scene",
+    "segments_of",
+]
+
+#: the meshes of a line on a seabed (`solve_line_bvp_3d`'s ``mesh``)
+MESHES = ("graded", "uniform")
 
 
 def attachments_of(attachments, n_segments: int) -> list[tuple[int, float]]:
@@ -65,6 +78,7 @@ class Scene3D:
     terms: tuple
     n_elements: int
     fit_touchdown: int
+    mesh: str
     rtol: float
     max_iter: int
     time_limit: float = 60.0
@@ -109,10 +123,18 @@ def checked_options(segments, options: dict) -> dict:
         terms=terms_of(options["terms"]),
         n_elements=whole("n_elements", options["n_elements"], 1),
         fit_touchdown=whole("fit_touchdown", options["fit_touchdown"], 0, 10),
+        mesh=mesh_of(options.get("mesh", "graded")),
         rtol=scalar("rtol", positive("rtol", options["rtol"])),
         max_iter=whole("max_iter", options["max_iter"], 1),
         time_limit=scalar("time_limit", positive("time_limit", options.get("time_limit", 60.0))),
     )
+
+
+def mesh_of(mesh) -> str:
+    """``mesh``, checked: ``"graded"`` or ``"uniform"`` (`solve_line_bvp_3d`)."""
+    if not (isinstance(mesh, str) and mesh in MESHES):
+        raise InputError("mesh", f"must be one of {MESHES}, got {mesh!r}")
+    return mesh
 
 
 def scene(anchor, fairlead, checked: dict) -> Scene3D:
