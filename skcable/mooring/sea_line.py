@@ -208,7 +208,13 @@ def relative_seabed(line, anchor):
 def bvp_model(line, n_elements: int = BVP_ELEMENTS, anchor_z: float = 0.0):
     """The `skcable.mooring.line_bvp_3d.LineBVP3D` of ``line`` on ``n_elements`` (its seabed placed at
     the anchor's height ``anchor_z`` where it is a float), and its end attachments ``(P_0, P_n)``
-    (N); cached on the line (a warm start needs the same model)."""
+    (N); cached on the line (a warm start needs the same model).
+
+    Its mesh is uniform (``mesh="uniform"``): the line's anchor lies on the seabed, where that mesh
+    resolves the touchdown (2.8e-8 of the end forces for a 500 m chain on 96 elements, 8.5e-10
+    graded), its error estimate (the line on half the elements) says what it costs, and a
+    system's warm starts stay on it (graded meshes took a 12-line system on grounded chains 3.0
+    times as long to its equilibrium: ``python benchmarks/bench_line3d.py``, scene 9)."""
     from skcable.mooring.line_bvp_3d import LineBVP3D, LineSegment
 
     cache = line.__dict__.setdefault("_bvp_models", {})
@@ -225,7 +231,7 @@ def bvp_model(line, n_elements: int = BVP_ELEMENTS, anchor_z: float = 0.0):
         seabed = anchor_z + line.seabed
     model = LineBVP3D(
         segments, attachments=inner, seabed=seabed, friction=line.friction, current=line.current,
-        rho_water=line.rho_water, n_elements=n_elements,
+        rho_water=line.rho_water, n_elements=n_elements, mesh="uniform",
     )  # fmt: skip
     cache[key] = model, (float(line.joint_forces[0]), float(line.joint_forces[n]))
     return cache[key]

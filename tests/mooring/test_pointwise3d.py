@@ -2,8 +2,9 @@
 
 `LinePoints` against scikit-fem's own ``probes`` (and the repo's `gradient_probes`, built on
 scikit-fem's basis): the same numbers to the bit, at nodes, joints, the ends and inside
-elements of a fitted mesh. A warm-started grounded line (its touchdown node carried over, its
-start moved along the tangent) against the same line solved from scratch at the same ends.
+elements of a fitted mesh. A warm-started grounded line (the same meshes, graded by the start
+and by the line, solved from its start moved along the tangent; on the uniform mesh too) against
+the same line solved from scratch at the same ends.
 """
 
 from __future__ import annotations
@@ -66,6 +67,8 @@ def test_warm_start_on_the_seabed_is_the_cold_solve(move, monkeypatch):
     def from_scratch(*args, **kwargs):
         raise AssertionError("the warm start fell back to a solve from scratch")
 
+    # the closed-form starts (`starts`) and the uniform mesh (`level`) are the cold paths
+    monkeypatch.setattr(LineBVP3DSolver, "starts", from_scratch)
     monkeypatch.setattr(LineBVP3DSolver, "level", from_scratch)
     warm = model.solve(ANCHOR, fairlead, start=start)
     scale = np.linalg.norm(cold.force_on_fairlead)
@@ -74,3 +77,18 @@ def test_warm_start_on_the_seabed_is_the_cold_solve(move, monkeypatch):
     assert np.max(np.abs(warm.force_on_anchor - cold.force_on_anchor)) <= 1e-11 * scale
     assert warm.problem.fitted == pytest.approx(cold.problem.fitted, abs=1e-9 * model.length)
     assert warm.equilibrium_residual <= warm.residual_bound
+
+
+@pytest.mark.parametrize("move", [(1.0, 0.5, 0.2), (-4.0, 2.0, -1.0)])
+def test_warm_start_on_the_uniform_mesh_is_the_cold_solve(move):
+    """``mesh="uniform"``: a warm start solves the uniform mesh from its start moved (its fitted
+    nodes dropped, then fitted anew, as from scratch): the cold solve to round-off."""
+    model = grounded_model(mesh="uniform")
+    start = model.solve(ANCHOR, FAIRLEAD)
+    assert start.problem.fitted and start.problem.nodes_at is None
+    fairlead = FAIRLEAD + np.array(move)
+    cold = model.solve(ANCHOR, fairlead)
+    warm = model.solve(ANCHOR, fairlead, start=start)
+    scale = np.linalg.norm(cold.force_on_fairlead)
+    assert np.max(np.abs(warm.force_on_fairlead - cold.force_on_fairlead)) <= 1e-11 * scale
+    assert np.max(np.abs(warm.force_on_anchor - cold.force_on_anchor)) <= 1e-11 * scale

@@ -3,21 +3,22 @@ r"""The strategy that takes a line in space from its closed-form start to the co
 `LineBVP3DSolver(scene).solve()` runs, each solve by `skcable.mooring.line_bvp.iterate.solve_on`
 (the plane line's: damped semismooth Newton, full steps, the polish):
 
-1. **On a seabed, with ``fit_touchdown`` (and ``mesh="graded"``, the default), meshes graded as
-   the plane line's**
-   (`LineBVP3DSolver.from_graded_start`, then `LineBVP3DSolver.graded`): the first mesh graded by
-   the closed-form start's turning (`skcable.mooring.line_bvp.mesh.graded_nodes` of the start on
-   the uniform mesh, its elements at most `REFINEMENT` times finer than the uniform mesh's, else
-   ``REFINEMENT²`` times), the line solved there from its closed-form starts (2), then on meshes
-   graded by its own turning, pass by pass (`skcable.mooring.line_bvp.mesh.grading_passes`, the
-   plane line's): its in-plane case then takes the plane line's meshes, and their answers agree
-   (the uniform mesh left the bend where the line lands on the seabed in one or two elements:
-   the differential survey `benchmarks/line_bvp_planes.py` found end forces up to 2 % off at 64
-   elements). Each mesh is a function of the ends alone, the start's and then the line's: a
-   warm start (`LineBVP3DSolver.solve` from a solution at nearby ends) solves the same meshes
-   from its start moved (`LineBVP3DSolver.moved`), so it gives the solve from scratch to
-   round-off. Where this fails or ends in compression, or without a seabed (or with
-   ``mesh="uniform"``),
+1. **On a seabed, with ``fit_touchdown`` (and ``mesh="graded"``, the default), meshes graded as the
+   plane line's** (`LineBVP3DSolver.from_graded_start`, then `LineBVP3DSolver.graded`): the first
+   mesh graded by the closed-form start's turning (`skcable.mooring.line_bvp.mesh.graded_nodes` of
+   the start on the uniform mesh, its elements at most `REFINEMENT` times finer than the uniform
+   mesh's, else ``REFINEMENT²`` times), the line solved there from its closed-form starts (2), then
+   on meshes graded by its own turning, pass by pass
+   (`skcable.mooring.line_bvp.mesh.grading_passes`, the plane line's): graded as the plane line's
+   meshes are (whose first mesh is graded by its start's angle in closed form,
+   `skcable.mooring.line_bvp.mesh.start_nodes`), so that in its vertical plane the two answers
+   agree to their discretisation errors (the uniform mesh left the bend where the line lands on the
+   seabed in one or two elements: the differential survey `benchmarks/line_bvp_planes.py` found end
+   forces up to 2 % off at 64 elements). Each mesh is a function of the ends alone, the start's and
+   then the line's: a warm start (`LineBVP3DSolver.solve` from a solution at nearby ends) solves
+   the same meshes from its start moved (`LineBVP3DSolver.moved`), so it gives the solve from
+   scratch to round-off wherever the solve from scratch converges on the first of them. Where this
+   fails or ends in compression, or without a seabed, or with ``mesh="uniform"``,
 2. **a level on the uniform mesh** (`LineBVP3DSolver.level`): the line from its closed-form
    starts (`LineBVP3DSolver.starts`, the plane line's alternatives): the start
    (`skcable.mooring.line_bvp_3d.start`), on a seabed with the contact nodes switching by the
@@ -31,9 +32,10 @@ r"""The strategy that takes a line in space from its closed-form start to the co
    elements up, each solution interpolated onto the doubled mesh (the active set moves by a
    few nodes per Newton iteration, so a fine mesh does not find its contact set from the start),
    a level that fails so solved from scratch, a coarse one that fails even so skipped; on a
-   seabed, where every one of these fails, the starts on the mesh graded by the start (1). A
-   line in compression on the uniform mesh is graded by its turning as in 1. Without a seabed
-   the uniform mesh is kept, and a warm start solves on its start's mesh.
+   seabed without the graded meshes of 1 (``mesh="uniform"`` or no ``fit_touchdown``), where
+   every one of these fails, the starts on the mesh graded by the start (1). A line in
+   compression on the uniform mesh is graded by its turning as in 1. Without a seabed the
+   uniform mesh is kept, and a warm start solves on its start's mesh.
 5. **Fitting** (`LineBVP3DSolver.fitted`): a node at the touchdown and the landing the balance of
    forces gives (`skcable.mooring.line_bvp.fitting`), ``fit_touchdown`` passes while they move
    more than 1e-9 of the length; a line in compression after it (a node at the touchdown left a
@@ -44,7 +46,8 @@ r"""The strategy that takes a line in space from its closed-form start to the co
    `skcable.mooring.line_bvp.check.refuse_sliding`), and its equilibrium
    residual within its bound (`skcable.mooring.line_bvp_3d.solution.LineBVP3DSolution.check`).
 
-A failure raises the first attempt's `skcable.ConvergenceError`, with its history; with friction
+A failure raises the uniform level's `skcable.ConvergenceError` (2–4: the first attempt's of
+those), with its history, where the graded meshes failed too; with friction
 and the anchor above the seabed, saying where friction fully mobilised may take more than the
 pull (`LineBVP3DSolver.with_diagnosis`). Every solve
 counts against the scene's ``time_limit`` (`skcable._budget.Budget`): past it, a
@@ -60,6 +63,7 @@ import numpy as np
 from skcable._budget import Budget
 from skcable.errors import ConvergenceError
 from skcable.fe import NewtonOptions, first_converged
+from skcable.mooring.bathymetry import OffGrid
 from skcable.mooring.line_bvp.check import refuse_sliding
 from skcable.mooring.line_bvp.fitting import landing, touchdown
 from skcable.mooring.line_bvp.iterate import solve_on
@@ -117,7 +121,8 @@ class LineBVP3DSolver(LineSolver):
     @property
     def graded_first(self) -> bool:
         """Whether the line is solved on meshes graded by the start and the line first (module
-        docstring, 1): on a seabed, with ``fit_touchdown`` and ``mesh="graded"``."""
+        docstring, 1): on a seabed, with ``fit_touchdown`` and ``mesh="graded"`` (a start clear
+        of the seabed is no sign: clump weights can take the line down to it)."""
         sc = self.scene
         return sc.seabed is not None and sc.fit_touchdown > 0 and sc.mesh == "graded"
 
@@ -172,23 +177,36 @@ class LineBVP3DSolver(LineSolver):
         if solved is None or (self.graded_first and self.compressed(solved)):
             kept = solved  # a line in compression on the graded meshes, for the checks' verdict
             try:
-                solved = self.graded(self.level(n))
+                solved = self.graded(self.level(n), or_from_start=not self.graded_first)
             except ConvergenceError:
                 if kept is None:
                     raise
+            if kept is not None and (solved is kept or self.compressed(solved)):
                 solved = kept
         if fit:
             solved = self.fitted(solved)
         if self.compressed(solved):  # a node at the touchdown left a bend in one element: graded, refitted
-            solved = self.graded(solved)
+            solved = self.graded(solved, or_from_start=not self.graded_first)
             solved = self.fitted(solved) if fit else solved
         return self.checked(solved)
 
     def warm(self, start: LineBVP3DSolution) -> tuple[LineProblem3D, np.ndarray]:
         """The problem and the first iterate of a warm start on the uniform mesh (module
-        docstring, 2–4): ``start``'s line moved (`moved`) on ``start``'s mesh, without its fitted
-        nodes (fitting puts them anew, as it does from scratch)."""
-        return self.problem(self.scene.n_elements, nodes_at=start.problem.nodes_at), self.moved(start)
+        docstring, 2–4): ``start``'s line moved (`moved`), on ``start``'s mesh with nodes at the
+        touchdown and the landing of the moved line (the balance of
+        `skcable.mooring.line_bvp.fitting` on it, its supports' reactions moved with it), else at
+        ``start``'s."""
+        z, points = self.moved(start), list(start.problem.fitted)
+        if points and self.scene.fit_touchdown:
+            try:
+                guess = self.edges(Solved(start.problem, z, [], start.problem.assemble(z)))
+            except OffGrid:  # the moved line off the seabed's grid: keep the start's nodes
+                guess = []
+            points = guess if len(guess) == len(points) else points
+        problem = self.problem(self.scene.n_elements, points, nodes_at=start.problem.nodes_at)
+        if problem.fitted != start.problem.fitted:
+            z = restart(start.problem, z, problem)
+        return problem, z
 
     def moved(self, start: LineBVP3DSolution) -> np.ndarray:
         """``start``'s line on its mesh, moved to the new ends: along its tangent ``∂z/∂r_B``
@@ -205,7 +223,8 @@ class LineBVP3DSolver(LineSolver):
 
     def level(self, n, fitted=()) -> Solved:
         """The line on ``n`` elements from the closed-form starts (`starts`), by steps of the
-        current, on nested meshes, or on a mesh graded by the start (module docstring, 2–4)."""
+        current, on nested meshes, or (without the graded meshes first, `graded_first`) on a
+        mesh graded by the start (module docstring, 2–4)."""
         problem = self.problem(n, fitted)
         z0 = closed_form_start(problem)
         touches = self.touches(problem)
@@ -271,8 +290,7 @@ class LineBVP3DSolver(LineSolver):
 
     def fitted(self, solved) -> Solved:
         """Nodes at the touchdown and the landing, moved until they settle (module docstring, 5):
-        from the nodes ``solved``'s mesh has (a warm start's: its start's touchdown), none
-        left where the line no longer touches."""
+        from the nodes ``solved``'s mesh has, none left where the line no longer touches."""
         L, placed = solved.problem.L, list(solved.problem.fitted)
         for _ in range(self.scene.fit_touchdown):
             points = self.edges(solved)
@@ -295,12 +313,14 @@ class LineBVP3DSolver(LineSolver):
 
     def refit(self, solved, points) -> Solved:
         """The line with nodes at ``points`` on ``solved``'s mesh (graded or uniform), from
-        ``solved`` interpolated, else from scratch (on the uniform mesh)."""
+        ``solved`` interpolated, else from the closed-form starts on that mesh, else (a graded
+        mesh's last resort) from scratch on the uniform mesh."""
         n = self.scene.n_elements
         problem = self.problem(n, points, nodes_at=solved.problem.nodes_at)
         return first_converged(
             [
                 lambda: self.run(problem, restart(solved.problem, solved.dofs, problem), near=True),
+                lambda: first_converged(self.starts(problem, closed_form_start(problem))),
                 lambda: self.level(n, points),
             ]
         )

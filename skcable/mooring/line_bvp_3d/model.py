@@ -81,13 +81,13 @@ def solve_line_bvp_3d(
         Passes putting a node at the touchdown and the landing (0: nodal contact only, on the
         uniform mesh).
     mesh : {"graded", "uniform"}
-        On a seabed with ``fit_touchdown``: ``"graded"``, the ``n_elements`` graded by the
-        closed-form start's turning, then by the line's, pass by pass (the plane line's meshes:
-        the bend where the line lands on the seabed resolved, 1e-9 to 1e-7 of the end forces
-        at 64 elements); ``"uniform"``, equal elements per segment, graded only where the line
-        ends in compression on them (faster by about a third, its end forces up to 2 % off
-        where a line lands on the seabed from an anchor above it:
-        ``python benchmarks/bench_bvp.py --space-mesh``). Without a seabed, uniform.
+        On a seabed, with ``fit_touchdown``: ``"graded"``, the
+        ``n_elements`` graded by the closed-form start's turning, then by the line's, pass by
+        pass (as the plane line's: the bend where the line lands on the seabed resolved, 1e-9
+        to 1e-7 of the end forces at 64 elements); ``"uniform"``, equal elements per segment,
+        graded only where the line ends in compression on them (faster by about a third, its
+        end forces up to 2 % off where a line lands on the seabed from an anchor above it:
+        ``python benchmarks/bench_bvp.py --space-mesh``). Otherwise uniform.
     rtol : float
         Newton's tolerance on the scaled residual (forces over the total load, stretches over
         the length).
@@ -178,5 +178,6 @@ class LineBVP3D:
         o = self.options
         return (
             f"LineBVP3D({len(self.segments)} segments, length={self.length:g} m, seabed={o['seabed']!r}, "
-            f"friction={o['friction']:g}, current={o['current']!r}, n_elements={o['n_elements']})"
+            f"friction={o['friction']:g}, current={o['current']!r}, n_elements={o['n_elements']}, "
+            f"mesh={o['mesh']!r})"
         )
