@@ -227,7 +227,7 @@ class LineBVP3DSolver(LineSolver):
         mesh graded by the start (module docstring, 2–4)."""
         problem = self.problem(n, fitted)
         z0 = closed_form_start(problem)
-        touches = self.touches(problem)
+        touches = self.touches(problem, z0)
         attempts = self.starts(problem, z0)
         if problem.terms:
             attempts.append(lambda: self.continued(n, fitted, z0))
@@ -373,16 +373,19 @@ class LineBVP3DSolver(LineSolver):
             nodes = graded_nodes(uniform, closed_form_start(uniform), size, self.fixed, refinement)[0]
             return self.problem(size, fitted, nodes_at=nodes)
 
-        def from_starts(problem, size):
-            z0 = closed_form_start(problem)
+        def from_starts(problem, size, z0=None):
+            z0 = closed_form_start(problem) if z0 is None else z0
             attempts = self.starts(problem, z0)
             if problem.terms:
                 attempts.append(lambda: self.continued(size, fitted, z0, nodes_at=problem.nodes_at))
             return first_converged(attempts)
 
+        moved = None if start is None else self.moved(start)
+
         def graded_by_start(refinement):
             problem = graded_problem(n, refinement)
-            attempts = [lambda: from_starts(problem, n)]
+            z0 = closed_form_start(problem)
+            attempts = [lambda: from_starts(problem, n, z0)]
             if n > 2 * COARSE:
 
                 def level(size, coarser):
@@ -394,9 +397,8 @@ class LineBVP3DSolver(LineSolver):
                 def nested():
                     return solve_nested(n, level)
 
-                attempts.insert(0 if self.touches(problem) else 1, nested)
+                attempts.insert(0 if self.touches(problem, z0) else 1, nested)
             if start is not None:
-                moved = self.moved(start)
                 attempts.insert(
                     0, lambda: self.run(problem, restart(start.problem, moved, problem), near=True)
                 )
@@ -405,12 +407,11 @@ class LineBVP3DSolver(LineSolver):
         return first_converged([lambda: graded_by_start(REFINEMENT), lambda: graded_by_start(REFINEMENT**2)])
 
     @staticmethod
-    def touches(problem) -> bool:
-        """Whether ``problem``'s closed-form start touches its seabed."""
-        if problem.contact_rows is None:
-            return False
-        z0 = closed_form_start(problem)
-        return bool(np.any(problem.contact_rows.terms(z0, 0 * z0).gap <= 0))
+    def touches(problem, z0) -> bool:
+        """Whether ``z0``, ``problem``'s closed-form start, touches its seabed."""
+        return problem.contact_rows is not None and bool(
+            np.any(problem.contact_rows.terms(z0, 0 * z0).gap <= 0)
+        )
 
     def checked(self, solved) -> LineBVP3DSolution:
         """The solution, once its checks hold (module docstring, 6)."""
