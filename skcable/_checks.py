@@ -166,6 +166,16 @@ def whole(name: str, value, low: int | None = None, high: int | None = None) -> 
     return int(value)
 
 
+def one_of(name: str, value, choices, alternative: str = "") -> str:
+    """``value`` where it is one of the strings ``choices``, raising `InputError` naming ``name``
+    otherwise (``alternative``: what else the caller takes, said in the message); a value of any
+    other type, unhashable ones included, is refused."""
+    if isinstance(value, str) and value in choices:
+        return value
+    listed = ", ".join(repr(choice) for choice in choices)
+    raise InputError(name, f"must be one of {listed}{alternative}, got {value!r}")
+
+
 def require(name: str, ok, reason: str, value) -> None:
     """Raise ``InputError(name, reason)`` where the boolean ``ok`` is False."""
     if ok is True or (not isinstance(ok, np.ndarray) and ok):

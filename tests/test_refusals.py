@@ -5,7 +5,7 @@ InputError naming its argument (or ConvergenceError)."""
 import numpy as np
 import pytest
 
-from skcable import cli, conductors, mooring, strand
+from skcable import cli, conductors, mooring, strand, study
 from skcable.errors import ConvergenceError, InputError
 
 
@@ -83,3 +83,17 @@ def test_cli_frequencies_out_of_range_is_no_internal_error(capsys):
     status = cli.main([*args, "--n-modes", "2"])
     assert status in (cli.EXIT_USAGE, cli.EXIT_NO_CONVERGENCE)
     assert len(capsys.readouterr().err.strip().splitlines()) == 1
+
+
+def test_a_choice_given_as_an_unhashable_value_names_its_argument(tmp_path):
+    # a list where a name is expected: looked up in a dict, it escaped as a bare TypeError
+    _named("element", lambda: strand.StrandModel(strand.preset("steel-9.5"), 0.3, element=["P2"]))
+    spec = tmp_path / "study.toml"
+    spec.write_text('model = ["catenary"]\n[grid]\nspan = [100.0]\n')
+    _named("model", lambda: study.load_study(spec))
+    _named(
+        "mesh",
+        lambda: mooring.line_bvp_3d.solve_line_bvp_3d(
+            (0, 0, 0), (50, 0, 10), [(60, 10, 1e8)], mesh=["graded"]
+        ),
+    )

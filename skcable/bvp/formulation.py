@@ -6,7 +6,17 @@ from functools import partial
 
 import numpy as np
 
-from skcable._checks import exactly_one, nonnegative, positive, positive_scalar, real, require, scalar, whole
+from skcable._checks import (
+    exactly_one,
+    nonnegative,
+    one_of,
+    positive,
+    positive_scalar,
+    real,
+    require,
+    scalar,
+    whole,
+)
 from skcable.bvp.arc import ArcProblem, ArcSolution, arc_guess
 from skcable.bvp.graph import BVPSolution, GraphProblem, initial_guess
 from skcable.cable.solution import ACCEPT
@@ -17,8 +27,7 @@ __all__ = ["solve_bvp"]
 
 
 def _choose_formulation(formulation, loads):
-    if formulation not in ("auto", "graph", "arc"):
-        raise InputError("formulation", f"must be 'auto', 'graph' or 'arc', got {formulation!r}")
+    one_of("formulation", formulation, ("auto", "graph", "arc"))
     if formulation != "auto":
         return formulation
     from skcable.bvp.terms import CableTerm

@@ -21,7 +21,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from skcable._checks import positive_scalar, scalar
+from skcable._checks import one_of, positive_scalar, scalar
 from skcable.errors import InputError
 
 __all__ = ["DeckLoad", "DistributedLoad", "PointLoad", "SelfWeight", "unstretched_measure"]
@@ -80,8 +80,7 @@ class DistributedLoad:
     per: str = "cable"
 
     def __post_init__(self):
-        if not isinstance(self.per, str) or self.per not in ("cable", "horizontal"):
-            raise InputError("per", f"must be 'cable' or 'horizontal', got {self.per!r}")
+        one_of("per", self.per, ("cable", "horizontal"))
         if self.qx is None and self.qy is None:
             raise InputError("qy", "give qy, qx or both")
         for name in ("qx", "qy"):

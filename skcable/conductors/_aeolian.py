@@ -27,7 +27,7 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
-from skcable._checks import nonnegative, positive, positive_scalar
+from skcable._checks import nonnegative, one_of, positive, positive_scalar
 from skcable.conductors._damping import foti_damping, self_damping
 from skcable.conductors._fatigue import WohlerCurve, clamp_amplitude, miner_damage, poffenberger_swart
 from skcable.conductors._wind import WIND_MODELS, wind_band, wind_power
@@ -327,8 +327,7 @@ def aeolian_vibration(
 
     tension = positive_scalar("tension", tension)
     f = np.atleast_1d(positive("frequencies", frequencies)).astype(float)
-    if not isinstance(wind, str) or wind not in WIND_MODELS:
-        raise InputError("wind", f"must be one of {WIND_MODELS}, got {wind!r}")
+    one_of("wind", wind, WIND_MODELS)
     conductor = Conductor.from_strand(strand, damage=damage)
     mass, diameter = conductor.w / STANDARD_GRAVITY, conductor.diameter
     law = LayerSlipLaw(conductor.strand.section(), mu=mu, tension=tension)

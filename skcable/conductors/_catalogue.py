@@ -11,12 +11,11 @@ def catalogue(kind: str | None = None):
     ``source`` (standard, table, code word); ``kind`` selects one kind."""
     import pandas as pd
 
-    from skcable.errors import InputError
+    from skcable._checks import one_of
     from skcable.strand._catalogue import ENTRIES
 
-    kinds = sorted({e.kind for e in ENTRIES.values()})
-    if kind is not None and kind not in kinds:
-        raise InputError("kind", f"must be one of {kinds} or None, got {kind!r}")
+    if kind is not None:
+        one_of("kind", kind, sorted({e.kind for e in ENTRIES.values()}), " or None")
     rows = [
         dict(
             name=e.name,

@@ -17,7 +17,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from skcable._checks import positive_scalar
+from skcable._checks import one_of, positive_scalar
 from skcable.errors import InputError
 
 __all__ = ["MODELS", "RTOL", "Choice", "choose", "check_model"]
@@ -49,8 +49,7 @@ class Choice:
 def check_model(model, rtol):
     """``(model, rtol)`` checked: a model of `MODELS`, and ``rtol`` a positive number for
     ``"auto"`` (`RTOL` when None), refused for the others (it would be ignored)."""
-    if not isinstance(model, str) or model not in MODELS:
-        raise InputError("model", f"must be one of {MODELS}, got {model!r}")
+    one_of("model", model, MODELS)
     if model != "auto":
         if rtol is not None:
             raise InputError("rtol", f"applies to model='auto' only (the model is {model!r})")

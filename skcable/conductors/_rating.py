@@ -19,7 +19,7 @@ from __future__ import annotations
 import numpy as np
 
 from skcable import _plausible
-from skcable._checks import positive, positive_scalar, real, scalar
+from skcable._checks import one_of, positive, positive_scalar, real, scalar
 from skcable.errors import ConvergenceError, InputError
 
 __all__ = ["ThermalRating", "sag_at_current", "clearance_ampacity"]
@@ -61,8 +61,7 @@ class ThermalRating:
 
     def __init__(self, span, weather, time, *, standard: str = "ieee738"):
         linerate = _linerate()
-        if not isinstance(standard, str) or standard not in _STANDARDS:
-            raise InputError("standard", f"must be one of {_STANDARDS}, got {standard!r}")
+        one_of("standard", standard, _STANDARDS)
         if weather is None:
             raise InputError(
                 "weather",

@@ -22,7 +22,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from skcable._checks import nonnegative, positive_scalar
+from skcable._checks import nonnegative, one_of, positive_scalar
 from skcable._show import Shown
 from skcable.errors import ConvergenceError, InputError
 
@@ -113,8 +113,7 @@ def residual_strength(strand, damage, *, rts, method: str = "layers", wire_stren
         Passed to `skcable.strand.StrandModel` for the capacity method (``length``,
         ``n_elements``...).
     """
-    if method not in ("layers", "capacity"):
-        raise InputError("method", f"must be 'layers' or 'capacity', got {method!r}")
+    one_of("method", method, ("layers", "capacity"))
     rts = positive_scalar("rts", rts)
     damaged = (
         strand.damaged(damage) if isinstance(damage, (int, np.integer)) else strand.damaged(wires=damage)

@@ -29,7 +29,7 @@ import functools
 
 import numpy as np
 
-from skcable._checks import broadcast, nonnegative, positive, scalar
+from skcable._checks import broadcast, nonnegative, one_of, positive, scalar
 from skcable.errors import InputError
 
 __all__ = ["WIND_MODELS", "wind_band", "wind_power"]
@@ -76,9 +76,7 @@ def _table(model: str):
 
 
 def _model(model) -> str:
-    if not isinstance(model, str) or model not in WIND_MODELS:
-        raise InputError("model", f"must be one of {WIND_MODELS}, got {model!r}")
-    return model
+    return one_of("model", model, WIND_MODELS)
 
 
 def wind_band(model: str = "cigre") -> tuple[float, float]:

@@ -77,7 +77,7 @@ from typing import Any
 
 import numpy as np
 
-from skcable._checks import nonnegative, positive, whole
+from skcable._checks import nonnegative, one_of, positive, whole
 from skcable.errors import ConvergenceError, InputError
 
 __all__ = [
@@ -352,8 +352,7 @@ def newton(
         ``callback`` raised (the iteration is named), ``full_steps`` is none of
         `FULL_STEPS`, or ``active`` is given with ``update`` or ``admissible``.
     """
-    if full_steps not in FULL_STEPS:
-        raise InputError("full_steps", f"must be one of {FULL_STEPS}, got {full_steps!r}")
+    one_of("full_steps", full_steps, FULL_STEPS)
     if active is not None and (update is not None or admissible is not None):
         raise InputError("active", "takes the steps x + dx: it cannot be given with update or admissible")
     update = _plain_update if update is None else update

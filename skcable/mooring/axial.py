@@ -44,7 +44,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from skcable import _plausible
-from skcable._checks import positive, real
+from skcable._checks import one_of, positive, real
 from skcable.cable._special import asinh_step
 from skcable.errors import InputError
 
@@ -155,8 +155,7 @@ class StrainTable(StrainLaw):
     def __init__(self, strain, tension, *, interpolation: str = "pchip"):
         from scipy.interpolate import BSpline, PchipInterpolator, make_interp_spline
 
-        if interpolation not in ("pchip", "linear"):
-            raise InputError("interpolation", f"must be 'pchip' or 'linear', got {interpolation!r}")
+        one_of("interpolation", interpolation, ("pchip", "linear"))
 
         eps, T = real("strain", strain), real("tension", tension)
         for name, values in (("strain", eps), ("tension", T)):

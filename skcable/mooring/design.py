@@ -44,7 +44,7 @@ import numpy as np
 
 from skcable import _plausible
 from skcable._budget import Budget, checked_budget
-from skcable._checks import real, scalar
+from skcable._checks import one_of, real, scalar
 from skcable._show import Shown
 from skcable.errors import ConvergenceError, InputError
 from skcable.mooring.choice import line_between
@@ -113,10 +113,8 @@ class Design(Shown):
 
 
 def _check_names(target, vary):
-    if target not in TARGETS:
-        raise InputError("target", f"must be one of {', '.join(TARGETS)}, got {target!r}")
-    if vary not in VARIABLES:
-        raise InputError("vary", f"must be one of {', '.join(VARIABLES)}, got {vary!r}")
+    one_of("target", target, TARGETS)
+    one_of("vary", vary, VARIABLES)
 
 
 def _index(name, value, lo, hi, what) -> int:

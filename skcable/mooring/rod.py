@@ -37,7 +37,7 @@ from functools import cached_property
 
 import numpy as np
 
-from skcable._checks import nonnegative, positive, scalar
+from skcable._checks import nonnegative, one_of, positive, scalar
 from skcable.errors import InputError
 from skcable.mooring.between_points import StraightBetween
 from skcable.mooring.body import RigidBody, skew
@@ -204,8 +204,7 @@ class RodBody(RigidBody):
     """
 
     def __init__(self, rod, reference="a"):
-        if reference not in ("a", "middle"):
-            raise InputError("reference", f"is {reference!r}: give 'a' or 'middle'")
+        one_of("reference", reference, ("a", "middle"))
         self.rod, self.reference = rod, reference
         half = 0.5 * rod.length
         self.end_a = np.array([0.0, 0.0 if reference == "a" else -half, 0.0])

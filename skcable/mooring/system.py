@@ -39,7 +39,7 @@ from typing import Any
 import numpy as np
 
 from skcable import _plausible
-from skcable._checks import nonnegative, positive, real, scalar
+from skcable._checks import nonnegative, one_of, positive, real, scalar
 from skcable.errors import InputError
 from skcable.mooring import failure
 from skcable.mooring.between_points import LineBetween
@@ -709,8 +709,7 @@ class MooringSystem:
         if isinstance(max_iter, bool) or not isinstance(max_iter, (int, np.integer)) or max_iter < 1:
             raise InputError("max_iter", f"must be an integer >= 1, got {max_iter!r}")
         time_limit = scalar("time_limit", positive("time_limit", time_limit))
-        if neutral not in ("raise", "hold"):
-            raise InputError("neutral", f"must be 'raise' or 'hold', got {neutral!r}")
+        one_of("neutral", neutral, ("raise", "hold"))
         return solve_equilibrium(
             self,
             q,

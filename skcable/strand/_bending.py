@@ -55,6 +55,7 @@ from __future__ import annotations
 
 import numpy as np
 
+from skcable._checks import one_of
 from skcable._show import Shown
 from skcable.errors import InputError
 from skcable.strand._arguments import float_array, is_real_number, principal_axis, real_number
@@ -302,8 +303,7 @@ class BendingLaw(Shown):
     def bending_stiffness(self, kappa, axis: int, kind: str = "secant"):
         """``M/κ`` (``kind="secant"``) or ``dM/dκ`` (``"tangent"``) at ``kappa`` (N·m²) about ``axis``."""
         axis = principal_axis(axis)
-        if kind not in ("secant", "tangent"):
-            raise InputError("kind", f"must be 'secant' or 'tangent', got {kind!r}")
+        one_of("kind", kind, ("secant", "tangent"))
         kappa = float_array("kappa", kappa)
         size = np.abs(kappa)
         stick = size <= self.kappa_m[axis]

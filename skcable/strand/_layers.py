@@ -54,6 +54,7 @@ from __future__ import annotations
 
 import numpy as np
 
+from skcable._checks import one_of
 from skcable.errors import InputError
 from skcable.strand._arguments import float_array, is_real_number, real_number
 from skcable.strand._bending import BendingLaw
@@ -146,8 +147,7 @@ class LayerSlipLaw(StageLaw):
 
     def __init__(self, section, *, mu, axial_strain=None, tension=None, outer_friction: str = "foti"):
         checked_section(section)
-        if outer_friction not in OUTER_FRICTION:
-            raise InputError("outer_friction", f"must be one of {OUTER_FRICTION}, got {outer_friction!r}")
+        one_of("outer_friction", outer_friction, OUTER_FRICTION)
         strand = section.strand
         n_layers = len(strand.layers)
         self.section, self.outer_friction = section, outer_friction

@@ -54,7 +54,7 @@ from typing import NamedTuple
 
 import numpy as np
 
-from skcable._checks import whole
+from skcable._checks import one_of, whole
 from skcable.errors import InputError
 from skcable.strand._arguments import float_array, name_text, principal_axis
 from skcable.strand._section import axis_pair
@@ -199,8 +199,7 @@ class StageLaw:
         ``kappa`` (N·m²) about ``axis``; at a knee, the stick side (a stage that slips at 0
         never sticks)."""
         axis = principal_axis(axis)
-        if kind not in ("secant", "tangent"):
-            raise InputError("kind", f"must be 'secant' or 'tangent', got {kind!r}")
+        one_of("kind", kind, ("secant", "tangent"))
         kappa = float_array("kappa", kappa)
         size = np.abs(kappa)
         stick = (size[..., None] <= self.kappa_slip[axis]) & (self.slip_moment[axis] > 0)

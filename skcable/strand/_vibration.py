@@ -45,7 +45,7 @@ import numpy as np
 from skfem import Basis, BilinearForm, ElementLineHermite, MeshLine
 from skfem.helpers import dd, ddot
 
-from skcable._checks import TINY, nonnegative, positive, scalar, whole
+from skcable._checks import TINY, nonnegative, one_of, positive, scalar, whole
 from skcable._eigen import BandPattern, farthest_from_one, first_lobe_positive, lowest_modes
 from skcable._show import Shown, attributes, counted
 from skcable.errors import InputError
@@ -227,8 +227,7 @@ def beam_frequencies(EI, N, length, mass_per_length, *, ends="clamped", n_modes=
     """
     EI, length, m = _scalar("EI", EI), _scalar("length", length), _scalar("mass_per_length", mass_per_length)
     N = _scalar("N", N, nonnegative)
-    if not isinstance(ends, str) or ends not in _ENDS:
-        raise InputError("ends", f"must be one of {_ENDS}, got {ends!r}")
+    one_of("ends", ends, _ENDS)
     n_modes = whole("n_modes", n_modes, 1, 40)
     if n_elements is None:
         n_elements = max(96, 16 * n_modes)

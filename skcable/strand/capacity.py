@@ -11,7 +11,7 @@ from typing import Any, NamedTuple, Protocol
 import numpy as np
 
 from skcable import _plausible
-from skcable._checks import positive, whole
+from skcable._checks import one_of, positive, whole
 from skcable._show import Shown, counted, quantity
 from skcable.errors import ConvergenceError, InputError
 from skcable.fe.continuation import StepControl
@@ -495,8 +495,7 @@ def capacity_curve(
     """
     from skcable.fe import NewtonOptions
 
-    if on_failure not in ("raise", "stop"):
-        raise InputError("on_failure", f"must be 'raise' or 'stop', got {on_failure!r}")
+    one_of("on_failure", on_failure, ("raise", "stop"))
     solve_options = NewtonOptions.of(model.options if options is None else options, **newton_options)
     n_steps, schedule = _schedule(model, max_strain, n_steps, state_passes, max_force)
     path = _Path(model, state_passes, solve_options)

@@ -25,6 +25,7 @@ from __future__ import annotations
 import tomllib
 from pathlib import Path
 
+from skcable._checks import one_of
 from skcable.errors import InputError
 from skcable.io._atomic import atomic_path, writable_dir, writable_file
 from skcable.study.cases import grid, parameters, sample
@@ -134,9 +135,7 @@ def load_study(path) -> dict:
     """
     path = Path(path)
     spec = _read(path)
-    name = spec.get("model")
-    if name not in MODELS:
-        raise InputError("model", f"must be one of {', '.join(MODELS)}, got {name!r}")
+    name = one_of("model", spec.get("model"), MODELS)
     model = MODELS[name]
     cases = _cases(spec, model, name, path.name)
     for key in ("output", "cache"):

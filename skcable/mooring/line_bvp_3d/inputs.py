@@ -14,7 +14,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from skcable import _plausible
-from skcable._checks import nonnegative, point, positive, scalar, whole
+from skcable._checks import nonnegative, one_of, point, positive, scalar, whole
 from skcable.bvp.current import Current, current_of
 from skcable.errors import InputError
 from skcable.mooring.bathymetry import Bathymetry, bathymetry_of
@@ -132,9 +132,7 @@ def checked_options(segments, options: dict) -> dict:
 
 def mesh_of(mesh) -> str:
     """``mesh``, checked: ``"graded"`` or ``"uniform"`` (`solve_line_bvp_3d`)."""
-    if not (isinstance(mesh, str) and mesh in MESHES):
-        raise InputError("mesh", f"must be one of {MESHES}, got {mesh!r}")
-    return mesh
+    return one_of("mesh", mesh, MESHES)
 
 
 def scene(anchor, fairlead, checked: dict) -> Scene3D:

@@ -21,7 +21,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from skcable.errors import ConvergenceError, InputError
+from skcable._checks import one_of
+from skcable.errors import ConvergenceError
 
 __all__ = ["KINDS", "FairleadStiffness", "fairlead_stiffness_3d"]
 
@@ -57,8 +58,7 @@ class FairleadStiffness:
 
 def fairlead_stiffness_3d(solution, kind: str = "static") -> FairleadStiffness:
     """The fairlead stiffness of a `LineBVP3DSolution` (module docstring)."""
-    if kind not in KINDS:
-        raise InputError("kind", f"must be one of {KINDS}, got {kind!r}")
+    one_of("kind", kind, KINDS)
     problem = solution.problem
     if kind == "dynamic":
         K_B, K_A, _ = problem.end_sensitivities(problem.assemble(solution.dofs, dynamic=True))

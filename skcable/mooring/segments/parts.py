@@ -10,7 +10,7 @@ from __future__ import annotations
 import numpy as np
 
 from skcable import _plausible
-from skcable._checks import nonnegative, positive, real, scalar
+from skcable._checks import nonnegative, one_of, positive, real, scalar
 from skcable.errors import InputError
 from skcable.mooring.axial import ConstantEA, StrainLaw
 
@@ -92,11 +92,7 @@ class Segment:
         self.cd_tangential = scalar("cd_tangential", nonnegative("cd_tangential", cd_tangential))
         if self.diameter is None and (self.cd_normal > 0 or self.cd_tangential > 0):
             raise InputError("diameter", "a segment with drag coefficients needs its diameter (m)")
-        if material is not None and material not in _plausible.MATERIALS:
-            raise InputError(
-                "material", f"must be one of {', '.join(_plausible.MATERIALS)}, got {material!r}"
-            )
-        self.material = material
+        self.material = None if material is None else one_of("material", material, _plausible.MATERIALS)
         _plausible.stiffness(self.nominal_EA, abs(self.w), self.length)
 
     @property

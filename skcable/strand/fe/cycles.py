@@ -46,7 +46,7 @@ from dataclasses import dataclass
 import numpy as np
 import scipy.sparse.linalg as spla
 
-from skcable._checks import whole
+from skcable._checks import one_of, whole
 from skcable._show import Shown, counted, quantity
 from skcable.errors import ConvergenceError, InputError, PlausibilityWarning
 from skcable.strand._arguments import real_number
@@ -423,8 +423,7 @@ def bending_cycles(
     amplitude = _checked_amplitude(model, amplitude, dof, end)
     whole("cycles", cycles, 1)
     whole("n_steps", n_steps, 1)
-    if on_failure not in ("raise", "stop"):
-        raise InputError("on_failure", f"must be 'raise' or 'stop', got {on_failure!r}")
+    one_of("on_failure", on_failure, ("raise", "stop"))
     from skcable.fe import NewtonOptions
 
     options = NewtonOptions.of(model.options if options is None else options, **newton_options)
@@ -452,8 +451,7 @@ def bending_cycles(
 
 
 def _checked_amplitude(model, amplitude, dof, end) -> float:
-    if end not in ("left", "right"):
-        raise InputError("end", f"must be 'left' or 'right', got {end!r}")
+    one_of("end", end, ("left", "right"))
     held = getattr(model.supports, end)
     if dof not in held:
         raise InputError(

@@ -9,7 +9,7 @@ import numpy as np
 import scipy.sparse as sp
 from skfem import BilinearForm
 
-from skcable._checks import nonnegative, positive, real
+from skcable._checks import nonnegative, one_of, positive, real
 from skcable.errors import InputError
 from skcable.strand.fe.terms import FIELDS, FieldAssembly, FieldTerm, Term
 
@@ -61,9 +61,8 @@ class NodalSpring(Term):
     N/m for u, v, w; N·m/rad for phi."""
 
     def __init__(self, x: float, k: float, field: str = "v"):
-        if field not in FIELDS:
-            raise InputError("field", f"must be one of {FIELDS}, got {field!r}")
-        self.x, self.k, self.field = float(real("x", x)), float(positive("k", k)), field
+        self.x, self.k = float(real("x", x)), float(positive("k", k))
+        self.field = one_of("field", field, FIELDS)
 
     def __repr__(self):
         return f"NodalSpring(x={self.x:g}, k={self.k:g}, field={self.field!r})"

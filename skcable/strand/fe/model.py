@@ -37,7 +37,7 @@ import scipy.sparse as sp
 from skfem import Basis, ElementLineHermite, ElementLineP2, MeshLine
 
 from skcable import _plausible
-from skcable._checks import positive, whole
+from skcable._checks import one_of, positive, whole
 from skcable.errors import ConvergenceError, InputError, NonFiniteError, SlowConvergenceWarning
 from skcable.fe import Assembly, LinearSystem, NewtonOptions, first_converged, minimize, newton
 from skcable.fe.elements import ElementLinePpExact
@@ -78,8 +78,7 @@ BASIS_ERROR = 1e-5
 def default_physics(slip="none", mu: float = 0.5, damage_load: str = "eccentricity") -> list:
     """The built-in terms: helical wires with a slip law, the wires' own bending and torsion,
     and (``damage_load="sinusoidal"``) the sinusoidal damage loads on a prismatic section."""
-    if damage_load not in DAMAGE_LOADS:
-        raise InputError("damage_load", f"must be one of {DAMAGE_LOADS}, got {damage_load!r}")
+    one_of("damage_load", damage_load, DAMAGE_LOADS)
     sinusoidal = damage_load == "sinusoidal"
     terms = [HelicalWires(slip, mu, helical=not sinusoidal), WireBending()]
     return terms + [SinusoidalDamageLoads()] if sinusoidal else terms
@@ -253,9 +252,7 @@ class StrandModel:
                 "this slip law needs a single helical layer (1x7-type strands); a strand of several "
                 "layers takes the layer-by-layer law, StageSlip(LayerSlipLaw(...))",
             )
-        self.element = element
-        if element not in ELEMENTS:
-            raise InputError("element", f"must be one of {tuple(ELEMENTS)}, got {element!r}")
+        self.element = one_of("element", element, ELEMENTS)
         nodes = self._nodes(n_elements, mesh, grading)
         self.mesh, self.bases, self.assembly, self._kept = _discretisation(
             nodes.tobytes(), self.length, element

@@ -38,7 +38,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from skcable._checks import real
+from skcable._checks import one_of, real
 from skcable.errors import InputError
 
 __all__ = ["AXIAL_LOADS", "DOFS", "END_CONDITIONS", "StrandSupports"]
@@ -120,10 +120,8 @@ class StrandSupports:
     @classmethod
     def of(cls, supports=None, twist: str = "clamped", axial: str = "strain") -> StrandSupports:
         """From the model's ``supports=(left, right)``, its ``twist`` shortcut and its ``axial`` load."""
-        if twist not in ("clamped", "free"):
-            raise InputError("twist", f"must be 'clamped' or 'free', got {twist!r}")
-        if axial not in AXIAL_LOADS:
-            raise InputError("axial", f"must be one of {AXIAL_LOADS}, got {axial!r}")
+        one_of("twist", twist, ("clamped", "free"))
+        one_of("axial", axial, AXIAL_LOADS)
         if supports is None:
             supports = ("clamped", "clamped")
         if isinstance(supports, (str, Mapping)) or len(supports) != 2:
