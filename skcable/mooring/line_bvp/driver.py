@@ -327,7 +327,9 @@ class LineBVPSolver(LineSolver):
         frictionless line) is too coarse for it: where its own grading asks for elements more
         than ``REFINEMENT`` times smaller somewhere (a heavy chain whose friction holds a light
         rope: the bend at the touchdown tightened from 0.4 m to 6 cm of radius)."""
-        if not (self.scene.fit_touchdown and graded_nodes(solution.problem, solution.dofs, n, self.fixed)[1]):
+        if not self.scene.fit_touchdown:
+            return solution
+        if not graded_nodes(solution.problem, solution.dofs, n, self.fixed, arches=self.arches)[1]:
             return solution
         s0, fitted, mu = solution.problem.slack_end, self.edges(solution), self.scene.friction
         solution, graded = self.graded(n, solution, fitted, s0, mu)
@@ -381,7 +383,7 @@ class LineBVPSolver(LineSolver):
         def resolve(nodes, last):
             return self.rerun(self.problem(n, _with(s0, fitted), s0, mu, nodes), last)
 
-        return grading_passes(solution, n, self.fixed, resolve, self.compressed)
+        return grading_passes(solution, n, self.fixed, resolve, self.compressed, arches=self.arches)
 
     def with_friction(self, n, frictionless, graded):
         """The line with friction from the frictionless one (module docstring, 4): the solution,

@@ -4,7 +4,8 @@ r"""Meshes of the unstretched arc length: uniform, graded by the line's turning,
   or given (a graded mesh), with nodes put at fitted points (the touchdown, the landing, the end
   of a slack stretch);
 - `start_nodes`: the first solve's grading, from the closed-form start's angle;
-- `graded_nodes`: each later solve's grading, from the last solution's turning, and
+- `graded_nodes`: each later solve's grading, from the last solution's turning, with nodes at
+  the ends of the arch each buoy resting on the seabed lifts (`arch_ends`), and
   `grading_passes`, the passes of grading (either line's);
 - `nested_sizes`: the element counts of nested solves, from `COARSE` elements up, and
   `solve_nested`, the nested solves themselves (each level from the coarser one, else from
@@ -30,6 +31,7 @@ __all__ = [
     "GROWTH",
     "REFINEMENT",
     "TAIL_RATIO",
+    "arch_ends",
     "equidistributed",
     "fixed_nodes",
     "grading_passes",
@@ -102,7 +104,46 @@ def with_fitted(nodes, fitted, joints, point_loads) -> np.ndarray:
     return nodes
 
 
-def graded_nodes(line, z, n_elements, fixed, refinement=REFINEMENT):
+def arch_ends(line, z) -> np.ndarray:
+    """The ends of the arch that each buoy (a point load ``P < 0``) lifts off the seabed, where
+    the discrete ``line`` at its dofs ``z`` rests on the seabed on both sides of that arch
+    (m, unstretched arc length; empty without a seabed or such a buoy).
+
+    A line lying on the seabed leaves it only where the buoy's lift carries its weight: the arch
+    is ``|P|/w`` long, ``s ± |P|/(2 w)`` about the buoy at ``s`` (vertical balance of the lifted
+    length; the line leaves the seabed tangent to it, so no reaction is concentrated there).
+    Nodal contact resolves it only with nodes at its ends: an element longer than the arch holds
+    the buoy down (H 8 % low on a light line with a small buoy on 64 elements). "Rests" means
+    the nearest node beyond each end (a node at the end excluded), away from the buoy, lies on
+    the seabed within ``1e-8 L``: where the buoy floats free, or the line lands within its arch,
+    the mesh is left alone. So it is where the arch lies inside the line under one weight, with
+    no joint or other point load in it (a clump inside it, or another weight, moves its ends)."""
+    buoys = [(s, -P) for s, P in line.point_loads if P < 0]
+    if line.seabed is None or not buoys:
+        return np.empty(0)
+    s_b, lift = np.array(buoys, dtype=float).T
+    half = 0.5 * lift / line.weight_at(s_b)
+    low, high = s_b - half, s_b + half
+    nodes = np.sort(line.mesh.p[0])
+    apart = 1e-9 * line.L  # a node at an end (a mesh graded by a line with its arch) is not beyond it
+    before = nodes[np.maximum(np.searchsorted(nodes, low - apart, side="right") - 1, 0)]
+    after = nodes[np.minimum(np.searchsorted(nodes, high + apart), nodes.size - 1)]
+    r = line.state_at(z, np.concatenate([before, after])).position
+    gap = r[-1] - line.seabed.height(*r[:-1])
+    rests = np.all(gap.reshape(2, -1) <= 1e-8 * line.L, axis=0)
+    others = np.concatenate([line.joints, [s for s, _ in line.point_loads]])
+    alone = [
+        0 < a
+        and b < line.L
+        and np.ptp(line.weight_at([a, s, b])) == 0
+        and not np.any((others > a) & (others < b) & (others != s))
+        for a, s, b in zip(low, s_b, high, strict=True)
+    ]
+    keep = rests & np.array(alone, dtype=bool)
+    return np.concatenate([low[keep], high[keep]])
+
+
+def graded_nodes(line, z, n_elements, fixed, refinement=REFINEMENT, arches=True):
     """Mesh nodes (unstretched arc length, m) equidistributing
     ``1 + L max(|dθ/ds|, |d ln cos θ/ds|)`` over the discrete ``line`` (in the plane or in
     space) at its dofs ``z``, no element smaller than ``1/refinement`` of ``line``'s element
@@ -123,10 +164,14 @@ def graded_nodes(line, z, n_elements, fixed, refinement=REFINEMENT):
     whose ``cos θ`` varies more than tenfold (``ln`` of the ratio above ``TAIL_RATIO``): taut
     and ordinary lines keep the turning monitor. The bound keeps each solve's
     start (the previous solution interpolated) within a node or two of its contact set. Each
-    stretch between the ``fixed`` nodes (joints and point loads) gets its share (at least one
-    element) of the ``n_elements``.
+    stretch between the ``fixed`` nodes (joints and point loads, and the `arch_ends` of buoys
+    resting on the seabed, where ``arches``: a solved line's, not a start's) gets its share (at
+    least one element) of the ``n_elements``.
     """
     L = float(fixed[-1])
+    ends = arch_ends(line, z) if arches else np.empty(0)
+    ends = ends[np.abs(ends[:, None] - fixed[None, :]).min(axis=1, initial=np.inf) > 1e-6 * L]
+    fixed = np.unique(np.concatenate([fixed, ends]))
     old = np.sort(line.mesh.p[0])
     h_old = np.diff(old)
     cells = 16  # per element of the line: its turning is measured inside each element, so
@@ -166,7 +211,7 @@ def graded_nodes(line, z, n_elements, fixed, refinement=REFINEMENT):
     return equidistributed(fixed, s, mass, n_elements), capped
 
 
-def grading_passes(solution, n_elements, fixed, resolve, compressed, keep=False):
+def grading_passes(solution, n_elements, fixed, resolve, compressed, keep=False, arches=True):
     """Passes of grading by the last solution's turning (`graded_nodes`), either line's:
     ``resolve(nodes, solution)`` solves the line on the graded ``nodes`` from ``solution``; again
     while the elements of the bends could shrink no more than `REFINEMENT` times at one pass (a
@@ -179,10 +224,10 @@ def grading_passes(solution, n_elements, fixed, resolve, compressed, keep=False)
     A pass that fails raises its `skcable.ConvergenceError` (the caller's fallbacks, nested
     meshes for the plane line, may grade better); with ``keep``, it ends the passes with the last
     solution instead, where that is not in compression (a converged line, on a mesh graded less
-    than it could be)."""
+    than it could be). ``arches``: with nodes at the `arch_ends` of buoys (`graded_nodes`)."""
     nodes = None
     for _ in range(GRADE_PASSES):
-        graded, capped = graded_nodes(solution.problem, solution.dofs, n_elements, fixed)
+        graded, capped = graded_nodes(solution.problem, solution.dofs, n_elements, fixed, arches=arches)
         try:
             solution = resolve(graded, solution)
         except ConvergenceError:

@@ -38,6 +38,15 @@ class LineSolver:
         """Newton's tolerance on the scaled residual."""
         raise NotImplementedError
 
+    @property
+    def arches(self) -> bool:
+        """Whether the meshes graded by the line take nodes at the ends of the arches buoys lift
+        off the seabed (`skcable.mooring.line_bvp.mesh.arch_ends`): without friction only (with
+        friction, a buoy can lie in the slack stretch it holds, where the line's tension is zero
+        and no arch ``|P|/w`` long stands; a mesh with nodes there left the plane line's stage with
+        friction stagnating in the differential survey, its scene 1:159)."""
+        return self.scene.friction == 0
+
     def anchor_above_seabed(self) -> bool:
         """Whether the scene has a seabed and its anchor lies above it."""
         raise NotImplementedError

@@ -342,7 +342,7 @@ class LineBVP3DSolver(LineSolver):
             return self.run(problem, restart(last.problem, last.dofs, problem), near=True)
 
         def passes(first):
-            last = grading_passes(first, n, self.fixed, resolve, self.compressed, keep=True)[0]
+            last = grading_passes(first, n, self.fixed, resolve, self.compressed, True, self.arches)[0]
             if self.compressed(last):
                 raise ConvergenceError("solve_line_bvp_3d: in compression on every graded mesh", last.history)
             return last
@@ -370,7 +370,8 @@ class LineBVP3DSolver(LineSolver):
 
         def graded_problem(size, refinement):
             uniform = self.problem(size, fitted)
-            nodes = graded_nodes(uniform, closed_form_start(uniform), size, self.fixed, refinement)[0]
+            z0 = closed_form_start(uniform)  # not an equilibrium: no arches of buoys
+            nodes = graded_nodes(uniform, z0, size, self.fixed, refinement, arches=False)[0]
             return self.problem(size, fitted, nodes_at=nodes)
 
         def from_starts(problem, size, z0=None):
