@@ -331,8 +331,10 @@ class LineBVP3DSolver(LineSolver):
         shape, not the line's): the line on meshes graded by its turning, pass by pass, as the
         plane line's (module docstring, 1; `skcable.mooring.line_bvp.mesh.grading_passes`), from
         ``solved``, else (``or_from_start``: where ``solved`` is not that mesh's cold solve) from
-        the mesh graded by the start; ``solved`` as it is where both fail (the check then refuses
-        it in compression)."""
+        the mesh graded by the start, else (with buoys, without friction) from ``solved`` without
+        nodes at the buoys' arch ends (`skcable.mooring.line_bvp.mesh.arch_ends`: a clump just
+        past an arch's end bends the line there to a radius of centimetres, scene 2:136 of the
+        survey); ``solved`` as it is where all fail (the check then refuses it in compression)."""
         if not (self.compressed(solved) or solved.problem.nodes_at is not None):
             return solved
         n = self.scene.n_elements
@@ -341,8 +343,8 @@ class LineBVP3DSolver(LineSolver):
             problem = self.problem(n, last.problem.fitted, nodes_at=nodes)
             return self.run(problem, restart(last.problem, last.dofs, problem), near=True)
 
-        def passes(first):
-            last = grading_passes(first, n, self.fixed, resolve, self.compressed, True, self.arches)[0]
+        def passes(first, arches=self.arches):
+            last = grading_passes(first, n, self.fixed, resolve, self.compressed, True, arches)[0]
             if self.compressed(last):
                 raise ConvergenceError("solve_line_bvp_3d: in compression on every graded mesh", last.history)
             return last
@@ -350,6 +352,8 @@ class LineBVP3DSolver(LineSolver):
         alternatives = [lambda: passes(solved)]
         if or_from_start:
             alternatives.append(lambda: passes(self.from_graded_start(n)))
+        if self.arches and any(P < 0 for _, P in self.scene.point_loads):
+            alternatives.append(lambda: passes(solved, arches=False))
         try:
             return first_converged(alternatives)
         except ConvergenceError:
