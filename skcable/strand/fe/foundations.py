@@ -61,8 +61,8 @@ class NodalSpring(Term):
     N/m for u, v, w; N·m/rad for phi."""
 
     def __init__(self, x: float, k: float, field: str = "v"):
-        self.x, self.k = float(real("x", x)), float(positive("k", k))
         self.field = one_of("field", field, FIELDS)
+        self.x, self.k = float(real("x", x)), float(positive("k", k))
 
     def __repr__(self):
         return f"NodalSpring(x={self.x:g}, k={self.k:g}, field={self.field!r})"
