@@ -70,7 +70,7 @@ alternative's error when every one fails (a solve's own fallbacks from its start
 
 from __future__ import annotations
 
-from functools import partial
+from functools import cache, partial
 
 import numpy as np
 
@@ -373,16 +373,24 @@ class LineBVPSolver(LineSolver):
             if problem is not uniform:
                 solves.append(lambda: self.from_start(uniform, smeared_start(uniform)))
         attempts = [partial(self.uncompressed, solve, problem) for solve in solves]
-        if self.scene.fit_touchdown:  # the line in space's first mesh
-            nodes = graded_nodes(uniform, closed_form_start(uniform), n, self.fixed, arches=False)[0]
-            by_start = self.problem(n, mu=0.0, nodes_at=nodes)
+        if self.scene.fit_touchdown:  # the line in space's first mesh, built where these run
+
+            @cache
+            def by_start():
+                nodes = graded_nodes(uniform, closed_form_start(uniform), n, self.fixed, arches=False)[0]
+                return self.problem(n, mu=0.0, nodes_at=nodes)
+
             for solve in (
-                lambda: self.run(by_start, closed_form_start(by_start)),
-                lambda: self.from_segments(by_start),
-                lambda: self.switched(by_start, closed_form_start(by_start)),
+                lambda: self.run(by_start(), closed_form_start(by_start())),
+                lambda: self.from_segments(by_start()),
+                lambda: self.switched(by_start(), closed_form_start(by_start())),
             ):
-                attempts.append(partial(self.uncompressed, solve, by_start))
+                attempts.append(partial(self.on_problem, solve, by_start))
         return attempts
+
+    def on_problem(self, solve, problem) -> LineBVPSolution:
+        """`uncompressed` on the problem ``problem()`` builds (where the attempt runs)."""
+        return self.uncompressed(solve, problem())
 
     def uncompressed(self, solve, problem) -> LineBVPSolution:
         """``solve()``, or where it leaves the discrete line in compression, the segment-wise
