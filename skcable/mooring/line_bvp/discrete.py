@@ -207,6 +207,17 @@ class DiscreteLine:
         r, a, cells = self.points.fields(z[: d * N].reshape(d, N), s)
         return CableState.at(r, s, a, self.points.tension(z[d * N :], s, cells))
 
+    def gaps(self, z) -> np.ndarray:
+        """Height (m) above the seabed of every contact node of the dofs ``z`` (none without
+        contact rows)."""
+        if self.contact_rows is None:
+            return np.zeros(0)
+        return self.heights(z[self.contact_rows.at])
+
+    def heights(self, r) -> np.ndarray:
+        """Height (m) above the seabed of the points ``r`` (dim, n) (m, the last row up)."""
+        return r[-1] - self.seabed.height(*r[:-1])
+
     def tension_at(self, z, s) -> np.ndarray:
         """The tension (N) of the dofs ``z`` at arc lengths ``s`` (1-D, m): the value of the
         element holding each."""
@@ -299,11 +310,9 @@ class DiscreteLine:
         if not below[0]:
             return None
         state = self.state_at(z, np.concatenate([[0.0], s[below]]))
-        r, d = state.position, self.dim - 1
-        gap = r[d] - self.seabed.height(*r[:d])
-        if not np.all(np.abs(gap) <= 1e-6 * self.L):
+        if not np.all(np.abs(self.heights(state.position)) <= 1e-6 * self.L):
             return None
-        a = state.a[:, 0]
+        a, d = state.a[:, 0], self.dim - 1
         across = float(np.linalg.norm(a[:d]))
         return float(a[d] / across) if across > 0 else None  # vertical at the anchor: off the seabed
 

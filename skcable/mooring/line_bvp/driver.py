@@ -275,7 +275,7 @@ class LineBVPSolver(LineSolver):
         every_start = partial(self.level, n, every_start=True)  # the last resort (`level`)
         if n > 2 * COARSE and bed is not None:
             probe = self.problem(n, mu=0.0)
-            if np.any(probe.gaps(closed_form_start(probe)) <= 0):
+            if self.touches(probe, closed_form_start(probe)):
                 return self.checked(first_converged([lambda: self.nested(n), every_start]))
             return self.checked(first_converged([lambda: self.level(n), lambda: self.nested(n), every_start]))
         return self.checked(every_start())

@@ -128,8 +128,7 @@ def arch_ends(line, z) -> np.ndarray:
     apart = 1e-9 * line.L  # a node at an end (a mesh graded by a line with its arch) is not beyond it
     before = nodes[np.maximum(np.searchsorted(nodes, low - apart, side="right") - 1, 0)]
     after = nodes[np.minimum(np.searchsorted(nodes, high + apart), nodes.size - 1)]
-    r = line.state_at(z, np.concatenate([before, after])).position
-    gap = r[-1] - line.seabed.height(*r[:-1])
+    gap = line.heights(line.state_at(z, np.concatenate([before, after])).position)
     rests = np.all(gap.reshape(2, -1) <= 1e-8 * line.L, axis=0)
     others = np.concatenate([line.joints, [s for s, _ in line.point_loads]])
     alone = [

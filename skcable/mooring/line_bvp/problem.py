@@ -173,11 +173,6 @@ class LineProblem(DiscreteLine):
         """The closed-form start of a solve (for `skcable.fe.check_tangent`)."""
         return closed_form_start(self)
 
-    def gaps(self, z):
-        """Height of every contact node above the seabed (m)."""
-        i = self.contact
-        return z[self.N + i] - self.seabed(z[i])
-
     def contact_terms(self, z, R0):
         """Per contact node (`skcable.mooring.line_bvp.contact.ContactTerms`): gradient, Hessian,
         gap, multiplier λ, active flag, R⁰, chord."""

@@ -14,6 +14,8 @@ import time
 from dataclasses import replace
 from typing import Any
 
+import numpy as np
+
 from skcable._budget import Budget
 from skcable.errors import ConvergenceError
 from skcable.mooring.line_bvp.check import partial_friction
@@ -46,6 +48,12 @@ class LineSolver:
         and no arch ``|P|/w`` long stands; a mesh with nodes there left the plane line's stage with
         friction stagnating in the differential survey, its scene 1:159)."""
         return self.scene.friction == 0
+
+    @staticmethod
+    def touches(problem, z0) -> bool:
+        """Whether ``z0``, ``problem``'s closed-form start, touches its seabed (where nested
+        meshes go first: the active set moves by a few nodes per Newton iteration)."""
+        return bool(np.any(problem.gaps(z0) <= 0))
 
     def anchor_above_seabed(self) -> bool:
         """Whether the scene has a seabed and its anchor lies above it."""

@@ -411,13 +411,6 @@ class LineBVP3DSolver(LineSolver):
 
         return first_converged([lambda: graded_by_start(REFINEMENT), lambda: graded_by_start(REFINEMENT**2)])
 
-    @staticmethod
-    def touches(problem, z0) -> bool:
-        """Whether ``z0``, ``problem``'s closed-form start, touches its seabed."""
-        return problem.contact_rows is not None and bool(
-            np.any(problem.contact_rows.terms(z0, 0 * z0).gap <= 0)
-        )
-
     def checked(self, solved) -> LineBVP3DSolution:
         """The solution, once its checks hold (module docstring, 6)."""
         problem, z = solved.problem, solved.dofs
