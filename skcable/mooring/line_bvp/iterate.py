@@ -11,7 +11,8 @@ touchdown: ``near``) full steps come first, the damped ones where they fail. A t
 seabed's grid (`skcable.mooring.bathymetry.OffGrid`) is a step too long. Past ``tol``, full
 Newton steps go on while the merit still halves (``polish``, `POLISH` at most):
 quadratic convergence takes the solution to its round-off floor for one or two more
-assemblies. Where the damped Newton stops (no descent, stagnation) with the line on the
+assemblies; where full steps cycle between two active sets there, the polish goes on with the
+active set held (`held_polish`). Where the damped Newton stops (no descent, stagnation) with the line on the
 seabed, `frozen_steps` goes on from where it stopped with the active set held (the
 ``rescue``): a node on the seabed with no push (``λ = g = 0``, a touchdown at a node) makes the
 semismooth Newton cycle between two active sets (the max-norm merit refuses both steps), and one
@@ -23,19 +24,26 @@ as an `skcable.InputError` naming ``callback`` and the iteration.
 
 from __future__ import annotations
 
+from dataclasses import replace
+
 import numpy as np
 
 from skcable.errors import ConvergenceError, InputError
 from skcable.fe import NewtonOptions, NewtonResult, newton
 from skcable.mooring.bathymetry import OffGrid
 
-__all__ = ["FROZEN_STEPS", "POLISH", "frozen_steps", "report", "solve_on"]
+__all__ = ["FROZEN_STEPS", "HELD_POLISH", "POLISH", "frozen_steps", "held_polish", "report", "solve_on"]
 
 #: Newton steps past rtol at most, while the merit halves
 POLISH = 3
 
 #: full Newton steps at most per active set held (`frozen_steps`)
 FROZEN_STEPS = 8
+
+#: the merit past which a converged solve's polish goes on with its active set held
+#: (`held_polish`), in round-off floors (the solution's check allows 64 times the rounding too,
+#: `LineFields.check`)
+HELD_POLISH = 64.0
 
 
 def report(callback, iteration: int, merit: float, step) -> None:
@@ -115,8 +123,9 @@ def solve_on(
     """The line of ``problem`` from the iterate ``z0`` (module docstring): damped Newton, else its
     rescue (`frozen_steps`, a line on the seabed), else full steps (the damped one's error
     raised when all fail; none where the Newton takes them already, ``line_search="none"``), then
-    the polish; ``near``: full steps first. ``name`` names the solve in its errors."""
-    return newton(
+    the polish (`held_polish` after it); ``near``: full steps first. ``name`` names the solve in
+    its errors."""
+    result = newton(
         problem.assemble,
         z0,
         norm=lambda state: state.merit,
@@ -137,3 +146,30 @@ def solve_on(
         polish=POLISH,
         polish_factor=0.5,
     )
+    return held_polish(problem, result, options)
+
+
+def held_polish(problem, result: NewtonResult, options: NewtonOptions) -> NewtonResult:
+    """``result`` taken on to its round-off floor with the contact nodes' active set held
+    (`frozen_steps`, `POLISH` steps at most), where the polish stopped above ``HELD_POLISH`` times
+    that floor (`DiscreteLine.merit_floor`); ``result`` as it is where no held set gets there.
+
+    A node on the seabed with no push (``λ = g = 0``) makes full semismooth steps cycle between
+    two active sets past ``tol`` too: the polish stops where the first of them raises the merit,
+    and the solve returns at ``tol``, not at round-off. On a graded mesh that residual force, over
+    an element of a fraction of a millimetre, is a residual per length far above the solution's
+    check (`LineFields.check`, round-off): survey scene 2:243 on 128 elements stopped at a merit
+    of 2.6e-11, and the check refused its 0.036 N/m against 1.2e-4 N/m
+    (`benchmarks/line_bvp_planes.py`); one step with the active set held takes it to 1.6e-15."""
+    state = result.state
+    if state.terms is None:
+        return result
+    target = HELD_POLISH * problem.merit_floor(state)
+    if not 0.0 < target < state.merit:
+        return result
+    out = frozen_steps(problem, result.x, replace(options, tol=target, atol=0.0), POLISH)
+    if out is None:
+        return result
+    z, held, history = out
+    steps = [*result.steps, *[1.0] * (len(history) - 1)]
+    return NewtonResult(z, held, [*result.history, *history[1:]], result.assemblies, steps=steps)
