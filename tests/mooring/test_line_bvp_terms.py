@@ -18,6 +18,7 @@ from scipy.optimize import fsolve
 
 from skcable import bvp, cable, fe, mooring
 from skcable.errors import ConvergenceError, InputError
+from skcable.mooring.line_bvp_3d import LineBVP3D, solve_line_bvp_3d
 
 RHO, G = 1025.0, 9.81
 
@@ -406,6 +407,26 @@ def test_the_line_bvp_on_a_seabed_hands_its_newton_options_on():
     assert info.value.argument == "atol"
 
 
+def test_the_line_in_space_takes_the_plane_lines_newton_options():
+    """`solve_line_bvp_3d` and `LineBVP3D` take the plane line's Newton options (one set of
+    options for the line BVP): the callback sees every step, the last solve's merits being the
+    solution's history; a tighter tolerance is met; a loose ``atol`` (N) stops the solves early."""
+    ends = ((0.0, 0.0, 0.0), (GSPAN, 0.0, GDH))
+    calls = []
+    line = solve_line_bvp_3d(*ends, SCENE[2], seabed=0.0, callback=lambda *a: calls.append(a))
+    last = calls[-line.iterations :]
+    assert [k for k, _, _ in last] == list(range(1, line.iterations + 1))
+    assert [r for _, r, _ in last] == line.history[1:]
+    assert len(calls) > line.iterations  # the strategy's earlier solves are seen too
+    tight = solve_line_bvp_3d(*ends, SCENE[2], seabed=0.0, options=fe.NewtonOptions(tol=1e-13))
+    assert tight.history[-1] < 1e-13
+    loose = LineBVP3D(SCENE[2], seabed=0.0, atol=1e6, fit_touchdown=0).solve(*ends)
+    assert loose.iterations <= 1 + 2  # the solve, and the polish's full steps
+    # the in-plane line in space and the plane line on the seabed agree, with their own options
+    plane = mooring.solve_line_bvp(*SCENE, seabed=0.0, options=fe.NewtonOptions(tol=1e-13))
+    assert abs(tight.force_on_fairlead[2] + plane.V_B) < 1e-6 * plane.T_B
+
+
 def test_a_raising_callback_is_reraised_naming_the_iteration():
     def stop(k, r, step):
         if k == 2:
@@ -449,9 +470,12 @@ def test_options_are_honoured():
     ],
 )
 def test_bad_options_are_refused_naming_them(given, argument):
+    ends = ((0.0, 0.0, 0.0), (GSPAN, 0.0, GDH))
     for make in (
         lambda: mooring.solve_line_bvp(*SCENE, seabed=0.0, **given),
         lambda: mooring.LineBVP(SCENE[2], **given),
+        lambda: solve_line_bvp_3d(*ends, SCENE[2], seabed=0.0, **given),
+        lambda: LineBVP3D(SCENE[2], **given),
     ):
         with pytest.raises(InputError) as info:
             make()

@@ -79,7 +79,6 @@ from skcable.errors import ConvergenceError, InputError
 from skcable.fe import first_converged
 from skcable.mooring.line_bvp.check import refuse_sliding
 from skcable.mooring.line_bvp.inputs import Scene
-from skcable.mooring.line_bvp.iterate import solve_on
 from skcable.mooring.line_bvp.mesh import (
     COARSE,
     GRADE_PASSES,
@@ -137,6 +136,8 @@ class LineBVPSolver(LineSolver):
         #: the nodes every mesh keeps (joints, point loads)
         self.fixed = fixed_nodes(joints_of(lengths), scene.point_loads)
         self.budget = Budget(time_limit=scene.time_limit)
+        #: the Newton options of every solve (the scene's: `solve_line_bvp`'s ``options``)
+        self.options = scene.options
 
     # --- the pieces: a problem, a solve, a solve on a new mesh --------------------------------
     def problem(self, n, fitted=(), slack_end=0.0, mu=None, nodes_at=None) -> LineProblem:
@@ -148,25 +149,13 @@ class LineBVPSolver(LineSolver):
             fitted=fitted, slack_end=slack_end, nodes_at=nodes_at, terms=sc.terms,
         )  # fmt: skip
 
-    @property
-    def tolerance(self) -> float:
-        """Newton's tolerance on the scaled residual."""
-        return self.scene.options.tol
-
     def anchor_above_seabed(self) -> bool:
         """Whether the scene has a seabed and the anchor lies above it (by 1e-12 of the length)."""
         bed = self.scene.seabed
         return bed is not None and abs(float(bed(np.array([0.0]))[0])) > 1e-12 * self.length
 
-    def run(self, problem, z0) -> LineBVPSolution:
-        """One solve of ``problem`` from ``z0`` with the scene's Newton options, counted against
-        the budget (the best solution so far remembered)."""
-        self.budget.spend()
-        result = solve_on(problem, z0, self.scene.options)
-        solution = LineBVPSolution(problem, result.x, list(result.history), result.state)
-        history = solution.history
-        self.budget.record(history[-1] if len(history) else 0.0, solution)
-        return solution
+    #: what a solve gives (`LineSolver.run`)
+    result = LineBVPSolution
 
     def bounded(self, stage, *args) -> LineBVPSolution:
         """``stage(*args)``; past the budget, its `ConvergenceError` (module docstring)."""
@@ -425,7 +414,7 @@ class LineBVPSolver(LineSolver):
             ]
         )
         if s0 == 0 and anchored:
-            s0 = tension_zero(solution, 1e3 * self.scene.options.tol * solution.problem.load_scale)
+            s0 = tension_zero(solution, 1e3 * self.tolerance * solution.problem.load_scale)
         return solution, s0, fitted
 
     def from_frictionless(self, n, frictionless, graded, s0, fitted):
@@ -450,7 +439,7 @@ class LineBVPSolver(LineSolver):
         """Nodes at the touchdown and landing, and the end of the slack stretch, moved until they
         settle (module docstring, 5)."""
         fit = self.scene.fit_touchdown
-        slack_tol = self.scene.options.tol * solution.problem.load_scale
+        slack_tol = self.tolerance * solution.problem.load_scale
         edge_passes = 0
         tried: list[tuple[float, float]] = []  # (end, tension past it) of the settled solves
         for _ in range(fit + SLACK_PASSES):
@@ -537,7 +526,7 @@ class LineBVPSolver(LineSolver):
     def checked(self, solution) -> LineBVPSolution:
         """The solution, once its checks hold (module docstring, 6)."""
         problem, friction = solution.problem, self.scene.friction
-        slack_tol = self.scene.options.tol * problem.load_scale
+        slack_tol = self.tolerance * problem.load_scale
         s0 = problem.slack_end
         if s0 > 0:
             # the friction that holds the slack stretch (its tangential force) is at most μN
@@ -556,7 +545,7 @@ class LineBVPSolver(LineSolver):
             raise ConvergenceError("solve_line_bvp: non-finite result", solution.history)
         T = solution.fields()[2]
         if self.compressed(solution):
-            refuse_sliding(problem, solution.dofs, self.scene.options.tol, friction)
+            refuse_sliding(problem, solution.dofs, self.tolerance, friction)
             raise ConvergenceError(
                 "solve_line_bvp: the discrete line is in compression "
                 f"(min T = {np.min(T):.3g} N, H = {solution.H:.3g} N): "

@@ -3,14 +3,16 @@ friction diagnosis of a failure.
 
 `LineSolver` is the base of `skcable.mooring.line_bvp.driver.LineBVPSolver` (the plane line) and
 `skcable.mooring.line_bvp_3d.driver.LineBVP3DSolver` (the line in space). Each driver gives its
-scene (``friction``, a dataclass), its time budget (`skcable._budget.Budget`), its one solve
-``run(problem, z0)`` counted against the budget, its strategy ``unbounded()``, Newton's
-tolerance and whether its anchor lies above the seabed; the base gives the rest once.
+scene (``friction``, a dataclass), its Newton options (`skcable.fe.NewtonOptions`), its time
+budget (`skcable._budget.Budget`), the type of a solve's ``result``, its strategy
+``unbounded()`` and whether its anchor lies above the seabed; the base gives the rest once,
+its one solve ``run(problem, z0)`` among them.
 """
 
 from __future__ import annotations
 
 import time
+from collections.abc import Callable
 from dataclasses import replace
 from typing import Any
 
@@ -18,7 +20,9 @@ import numpy as np
 
 from skcable._budget import Budget
 from skcable.errors import ConvergenceError
+from skcable.fe import NewtonOptions
 from skcable.mooring.line_bvp.check import partial_friction
+from skcable.mooring.line_bvp.iterate import solve_on
 
 __all__ = ["LineSolver"]
 
@@ -28,8 +32,11 @@ class LineSolver:
 
     #: the public entry's name, in messages
     name = "solve_line_bvp"
+    #: the type of a solve's result, built from ``(problem, dofs, history, state)``
+    result: Callable[..., Any]
     scene: Any
     budget: Budget
+    options: NewtonOptions
 
     def __init__(self, scene):
         """Each driver sets up its own (its scene, budget and meshes)."""
@@ -37,8 +44,8 @@ class LineSolver:
 
     @property
     def tolerance(self) -> float:
-        """Newton's tolerance on the scaled residual."""
-        raise NotImplementedError
+        """Newton's tolerance on the scaled residual (``options.tol``)."""
+        return self.options.tol
 
     @property
     def arches(self) -> bool:
@@ -59,9 +66,17 @@ class LineSolver:
         """Whether the scene has a seabed and its anchor lies above it."""
         raise NotImplementedError
 
-    def run(self, problem, z0):
-        """One solve of ``problem`` from ``z0``, counted against the budget."""
-        raise NotImplementedError
+    def run(self, problem, z0, near: bool = False):
+        """One solve of ``problem`` from ``z0`` with the driver's Newton options
+        (`skcable.mooring.line_bvp.iterate.solve_on`; ``near``: full steps first), counted
+        against the budget, the best solve so far remembered: a ``result`` of the problem, the
+        iterate, its merit history and its state."""
+        self.budget.spend()
+        out = solve_on(problem, z0, self.options, near, name=self.name)
+        solved = self.result(problem, out.x, list(out.history), out.state)
+        history = solved.history
+        self.budget.record(history[-1] if len(history) else 0.0, solved)
+        return solved
 
     def unbounded(self):
         """The strategy from scratch, without the budget's conversion."""

@@ -62,11 +62,10 @@ import numpy as np
 
 from skcable._budget import Budget
 from skcable.errors import ConvergenceError
-from skcable.fe import NewtonOptions, first_converged
+from skcable.fe import first_converged
 from skcable.mooring.bathymetry import OffGrid
 from skcable.mooring.line_bvp.check import refuse_sliding
 from skcable.mooring.line_bvp.fitting import landing, touchdown
-from skcable.mooring.line_bvp.iterate import solve_on
 from skcable.mooring.line_bvp.mesh import (
     COARSE,
     REFINEMENT,
@@ -85,8 +84,6 @@ __all__ = ["LineBVP3DSolver"]
 
 #: the smallest step of the current's continuation
 SMALLEST_STEP = 1.0 / 64.0
-#: halvings of a step at most where its trial collapses or leaves the seabed's grid
-HALVINGS = 12
 
 
 @dataclass
@@ -107,16 +104,10 @@ class LineBVP3DSolver(LineSolver):
         self.budget = Budget(time_limit=getattr(scene, "time_limit", 60.0))
         #: the nodes every mesh keeps (joints, point loads)
         self.fixed = fixed_nodes(scene.joints, scene.point_loads)
-        self.options = NewtonOptions(
-            tol=scene.rtol, max_iter=scene.max_iter, max_halvings=HALVINGS, stagnation_window=8
-        )
+        #: the Newton options of every solve (the scene's: `solve_line_bvp_3d`'s ``options``)
+        self.options = scene.options
 
     name = "solve_line_bvp_3d"
-
-    @property
-    def tolerance(self) -> float:
-        """Newton's tolerance on the scaled residual."""
-        return self.scene.rtol
 
     @property
     def graded_first(self) -> bool:
@@ -136,14 +127,8 @@ class LineBVP3DSolver(LineSolver):
         ``fitted``, the drag times ``drag_scale``."""
         return LineProblem3D(self.scene, n, fitted=fitted, nodes_at=nodes_at, drag_scale=drag_scale)
 
-    def run(self, problem, z0, near=False) -> Solved:
-        """One solve, counted against the budget (the best so far remembered)."""
-        self.budget.spend()
-        result = solve_on(problem, z0, self.options, near, name="solve_line_bvp_3d")
-        solved = Solved(problem, result.x, list(result.history), result.state)
-        history = solved.history
-        self.budget.record(history[-1] if history else 0.0, solved)
-        return solved
+    #: what a solve gives (`LineSolver.run`)
+    result = Solved
 
     def solve(self, start: LineBVP3DSolution | None = None) -> LineBVP3DSolution:
         """The line (module docstring); from ``start`` (a solution of the same line at other
@@ -418,7 +403,7 @@ class LineBVP3DSolver(LineSolver):
             raise ConvergenceError("solve_line_bvp_3d: non-finite result", solved.history)
         T = z[3 * problem.N :]
         if self.compressed(solved):
-            refuse_sliding(problem, z, self.scene.rtol, self.scene.friction)
+            refuse_sliding(problem, z, self.tolerance, self.scene.friction)
             grounded = problem.contact_rows is not None and self.scene.friction > 0
             raise ConvergenceError(
                 f"solve_line_bvp_3d: the discrete line is in compression (min T = {np.min(T):.3g} N): "

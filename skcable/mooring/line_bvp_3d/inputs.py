@@ -17,8 +17,16 @@ from skcable import _plausible
 from skcable._checks import nonnegative, one_of, point, positive, scalar, whole
 from skcable.bvp.current import Current, current_of
 from skcable.errors import InputError
+from skcable.fe import NewtonOptions
 from skcable.mooring.bathymetry import Bathymetry, bathymetry_of
-from skcable.mooring.line_bvp.inputs import LineSegment, point_loads_of, segments_of, terms_of
+from skcable.mooring.line_bvp.inputs import (
+    LINE_OPTIONS,
+    LineSegment,
+    newton_options_of,
+    point_loads_of,
+    segments_of,
+    terms_of,
+)
 
 __all__ = [
     "MESHES",
@@ -79,9 +87,18 @@ class Scene3D:
     n_elements: int
     fit_touchdown: int
     mesh: str
-    rtol: float
-    max_iter: int
+    options: NewtonOptions = LINE_OPTIONS
     time_limit: float = 60.0
+
+    @property
+    def rtol(self) -> float:
+        """Newton's tolerance on the scaled residual (``options.tol``)."""
+        return self.options.tol
+
+    @property
+    def max_iter(self) -> int:
+        """Newton iterations at most per solve (``options.max_iter``)."""
+        return self.options.max_iter
 
     @property
     def length(self) -> float:
@@ -102,7 +119,10 @@ class Scene3D:
 
 def checked_options(segments, options: dict) -> dict:
     """The arguments of `solve_line_bvp_3d` but the ends, checked: the segments (`segments_of`),
-    the attachments, the point loads, seabed, friction, current, density, terms and solver options."""
+    the attachments, the point loads, seabed, friction, current, density, terms and solver options
+    (the Newton options as the plane line's, `skcable.mooring.line_bvp.inputs.newton_options_of`:
+    ``options``, ``rtol``, ``max_iter`` and the other fields of `skcable.fe.NewtonOptions` in
+    ``newton_options``)."""
     segs = segments_of(segments)
     bed = bathymetry_of(options["seabed"])
     friction = scalar("friction", nonnegative("friction", options["friction"]))
@@ -124,8 +144,12 @@ def checked_options(segments, options: dict) -> dict:
         n_elements=whole("n_elements", options["n_elements"], 1),
         fit_touchdown=whole("fit_touchdown", options["fit_touchdown"], 0, 10),
         mesh=mesh_of(options.get("mesh", "graded")),
-        rtol=scalar("rtol", positive("rtol", options["rtol"])),
-        max_iter=whole("max_iter", options["max_iter"], 1),
+        options=newton_options_of(
+            options.get("options"),
+            rtol=options.get("rtol"),
+            max_iter=options.get("max_iter"),
+            **options.get("newton_options", {}),
+        ),
         time_limit=scalar("time_limit", positive("time_limit", options.get("time_limit", 60.0))),
     )
 

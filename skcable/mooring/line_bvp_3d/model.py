@@ -2,12 +2,18 @@
 
 from __future__ import annotations
 
+from dataclasses import fields
+
 from skcable.errors import InputError
+from skcable.fe import NewtonOptions
 from skcable.mooring.line_bvp_3d.driver import LineBVP3DSolver
 from skcable.mooring.line_bvp_3d.inputs import checked_options, scene
 from skcable.mooring.line_bvp_3d.solution import LineBVP3DSolution
 
 __all__ = ["LineBVP3D", "solve_line_bvp_3d"]
+
+#: the Newton options `LineBVP3D` takes as keywords (`skcable.fe.NewtonOptions`'s fields)
+NEWTON_FIELDS = frozenset(f.name for f in fields(NewtonOptions))
 
 _DEFAULTS = dict(
     attachments=(),
@@ -20,9 +26,10 @@ _DEFAULTS = dict(
     n_elements=64,
     fit_touchdown=3,
     mesh="graded",
-    rtol=1e-10,
-    max_iter=50,
+    rtol=None,
+    max_iter=None,
     time_limit=60.0,
+    options=None,
 )
 
 
@@ -41,9 +48,11 @@ def solve_line_bvp_3d(
     n_elements: int = 64,
     fit_touchdown: int = 3,
     mesh: str = "graded",
-    rtol: float = 1e-10,
-    max_iter: int = 50,
+    rtol: float | None = None,
+    max_iter: int | None = None,
     time_limit: float = 60.0,
+    options=None,
+    **newton_options,
 ) -> LineBVP3DSolution:
     """A line in space from ``anchor`` to ``fairlead`` by finite elements, in a current, on a
     seabed of any shape (see `skcable.mooring.line_bvp_3d`).
@@ -90,13 +99,24 @@ def solve_line_bvp_3d(
         ``python benchmarks/bench_bvp.py --space-mesh``). Otherwise uniform.
     rtol : float
         Newton's tolerance on the scaled residual (forces over the total load, stretches over
-        the length).
+        the length; default 1e-10, ``tol`` of `skcable.fe.NewtonOptions`).
     max_iter : int
-        Newton iterations at most per solve.
+        Newton iterations at most per solve (default 50).
     time_limit : float
         Seconds at most for the whole strategy (default 60): past them a `ConvergenceError`
         whose ``history`` holds the last merit of every solve and whose ``last`` is the best
         solution reached.
+    options : NewtonOptions, optional
+        The Newton options of every solve, as for `skcable.mooring.solve_line_bvp` (the line
+        BVP's defaults ``tol=1e-10, max_iter=50, line_search="residual",
+        stagnation_window=8``).
+    **newton_options
+        Any field of `skcable.fe.NewtonOptions`, over ``options``, as for
+        `skcable.mooring.solve_line_bvp`: ``atol``, ``line_search`` (``"energy"`` refused),
+        ``callback(iteration, residual_norm, step_norm)`` (after every step of every solve,
+        numbered from 1 in each; the last solve's merits are the solution's ``history``),
+        ``max_halvings``, ``stagnation_window``, ``tol``. An unknown name is an `InputError`
+        naming it.
 
     Returns
     -------
@@ -124,6 +144,7 @@ def solve_line_bvp_3d(
         attachments=attachments, point_loads=point_loads, seabed=seabed, friction=friction,
         current=current, rho_water=rho_water, terms=terms, n_elements=n_elements,
         fit_touchdown=fit_touchdown, mesh=mesh, rtol=rtol, max_iter=max_iter, time_limit=time_limit,
+        options=options, newton_options=newton_options,
     )  # fmt: skip
     return LineBVP3DSolver(scene(anchor, fairlead, checked_options(segments, options))).solve()
 
@@ -138,18 +159,21 @@ class LineBVP3D:
         As for `solve_line_bvp_3d`.
     **options
         ``attachments``, ``point_loads``, ``seabed``, ``friction``, ``current``, ``rho_water``,
-        ``terms``, ``n_elements``, ``fit_touchdown``, ``mesh``, ``rtol``, ``max_iter``, ``time_limit``: as for
+        ``terms``, ``n_elements``, ``fit_touchdown``, ``mesh``, ``rtol``, ``max_iter``,
+        ``time_limit``, ``options`` and the fields of `skcable.fe.NewtonOptions`: as for
         `solve_line_bvp_3d`.
     """
 
     def __init__(self, segments, **options):
+        newton = {k: options.pop(k) for k in list(options) if k in NEWTON_FIELDS - set(_DEFAULTS)}
         unknown = set(options) - set(_DEFAULTS)
         if unknown:
             raise InputError(
-                sorted(unknown)[0], f"is not an option of LineBVP3D (options are {sorted(_DEFAULTS)})"
+                sorted(unknown)[0],
+                f"is not an option of LineBVP3D (options are {sorted({*_DEFAULTS, *NEWTON_FIELDS})})",
             )
-        self.options = {**_DEFAULTS, **options}
-        self.checked = checked_options(segments, self.options)
+        self.options = {**_DEFAULTS, **options, **newton}
+        self.checked = checked_options(segments, {**_DEFAULTS, **options, "newton_options": newton})
         self.segments = self.checked["segments"]
 
     @property
