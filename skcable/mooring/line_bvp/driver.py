@@ -77,7 +77,6 @@ import numpy as np
 from skcable._budget import Budget
 from skcable.errors import ConvergenceError, InputError
 from skcable.fe import first_converged
-from skcable.mooring.line_bvp.check import refuse_sliding
 from skcable.mooring.line_bvp.inputs import Scene
 from skcable.mooring.line_bvp.mesh import (
     COARSE,
@@ -543,19 +542,9 @@ class LineBVPSolver(LineSolver):
         values = (solution.H, solution.V_B, solution.H_A, solution.V_A)
         if not all(np.isfinite(values)) or not np.all(np.isfinite(solution.dofs)):
             raise ConvergenceError("solve_line_bvp: non-finite result", solution.history)
-        T = solution.fields()[2]
-        if self.compressed(solution):
-            refuse_sliding(problem, solution.dofs, self.tolerance, friction)
-            raise ConvergenceError(
-                "solve_line_bvp: the discrete line is in compression "
-                f"(min T = {np.min(T):.3g} N, H = {solution.H:.3g} N): "
-                + (
-                    "fully mobilised friction with the anchor above the seabed"
-                    if friction > 0 and not problem.anchor_on_seabed
-                    else f"{problem.mesh.t.shape[1]} elements do not resolve its bends; give more"
-                ),
-                solution.history,
-            )
+        above = friction > 0 and not problem.anchor_on_seabed
+        why = "fully mobilised friction with the anchor above the seabed" if above else ""
+        self.refuse_compressed(solution, why, also=f", H = {solution.H:.3g} N")
         solution.check()
         solution.slack_solver = partial(self.at_slack_end, solution) if s0 > 0 else None
         return solution

@@ -1,5 +1,5 @@
-"""What the two line BVP drivers share: the alternative solves, the compression test and the
-friction diagnosis of a failure.
+"""What the two line BVP drivers share: one solve, the alternative solves, the compression test
+and refusal, and the friction diagnosis of a failure.
 
 `LineSolver` is the base of `skcable.mooring.line_bvp.driver.LineBVPSolver` (the plane line) and
 `skcable.mooring.line_bvp_3d.driver.LineBVP3DSolver` (the line in space). Each driver gives its
@@ -21,7 +21,7 @@ import numpy as np
 from skcable._budget import Budget
 from skcable.errors import ConvergenceError
 from skcable.fe import NewtonOptions
-from skcable.mooring.line_bvp.check import partial_friction
+from skcable.mooring.line_bvp.check import partial_friction, refuse_sliding
 from skcable.mooring.line_bvp.iterate import solve_on
 
 __all__ = ["LineSolver"]
@@ -103,6 +103,24 @@ class LineSolver:
         """Whether the discrete line of ``solved`` (its ``problem`` and ``dofs``) is in
         compression (`DiscreteLine.compressed`)."""
         return solved.problem.compressed(solved.dofs, self.tolerance)
+
+    def refuse_compressed(self, solved, why: str = "", also: str = "") -> None:
+        """Where the discrete line of ``solved`` is in compression (`compressed`): an
+        ``InputError("friction")`` where that compression lies on a seabed rising from the
+        anchor more steeply than friction holds (no equilibrium in tension,
+        `skcable.mooring.line_bvp.check.refuse_sliding`), else a `ConvergenceError` with its
+        least tension (and ``also``) and ``why``: by default, its elements do not resolve its
+        bends."""
+        if not self.compressed(solved):
+            return
+        problem, z = solved.problem, solved.dofs
+        refuse_sliding(problem, z, self.tolerance, self.scene.friction)
+        T = z[problem.dim * problem.N :]
+        why = why or f"{problem.mesh.t.shape[1]} elements do not resolve its bends; give more"
+        raise ConvergenceError(
+            f"{self.name}: the discrete line is in compression (min T = {np.min(T):.3g} N{also}): {why}",
+            solved.history,
+        )
 
     def with_diagnosis(self, failed: ConvergenceError) -> ConvergenceError:
         """``failed``, saying where friction fully mobilised may take more than the line's pull

@@ -64,7 +64,6 @@ from skcable._budget import Budget
 from skcable.errors import ConvergenceError
 from skcable.fe import first_converged
 from skcable.mooring.bathymetry import OffGrid
-from skcable.mooring.line_bvp.check import refuse_sliding
 from skcable.mooring.line_bvp.fitting import landing, touchdown
 from skcable.mooring.line_bvp.mesh import (
     COARSE,
@@ -401,20 +400,12 @@ class LineBVP3DSolver(LineSolver):
         problem, z = solved.problem, solved.dofs
         if not (np.all(np.isfinite(z)) and np.all(np.isfinite(solved.state.R0))):
             raise ConvergenceError("solve_line_bvp_3d: non-finite result", solved.history)
-        T = z[3 * problem.N :]
-        if self.compressed(solved):
-            refuse_sliding(problem, z, self.tolerance, self.scene.friction)
-            grounded = problem.contact_rows is not None and self.scene.friction > 0
-            raise ConvergenceError(
-                f"solve_line_bvp_3d: the discrete line is in compression (min T = {np.min(T):.3g} N): "
-                + (
-                    "friction holds a slack stretch on the seabed, which the 3-D line does not model "
-                    "(solve_line_bvp does, in the plane)"
-                    if grounded
-                    else f"{problem.mesh.t.shape[1]} elements do not resolve its bends; give more"
-                ),
-                solved.history,
-            )
+        grounded = problem.contact_rows is not None and self.scene.friction > 0
+        slack = (
+            "friction holds a slack stretch on the seabed, which the 3-D line does not model "
+            "(solve_line_bvp does, in the plane)"
+        )
+        self.refuse_compressed(solved, slack if grounded else "")
         solution = LineBVP3DSolution(problem, z, solved.history, solved.state)
         solution.check()
         return solution
