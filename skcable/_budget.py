@@ -3,7 +3,8 @@ remembered, and the `ConvergenceError` of a search that runs out (every iteratio
 what it reached is kept).
 
 An iteration calls `Budget.spend` before each evaluation (raising `Budget.Spent`, which no
-``except ConvergenceError`` of a strategy's alternatives takes) and `Budget.record` after it; the
+``except ConvergenceError`` of a strategy's alternatives takes) and `Budget.record` after it (its
+measure, and a rank where a finer point beats a smaller measure); the
 entry point runs the search by `Budget.run`, which turns `Budget.Spent` into `Budget.error` (a
 `ConvergenceError` whose ``history`` is every recorded measure and whose ``last`` is the best
 point reached) and gives any other `ConvergenceError` of the search the best point reached as
@@ -46,6 +47,7 @@ class Budget:
         self.calls = 0
         self.history: list[float] = []
         self.best: tuple[float, object] = (math.inf, None)
+        self.best_rank: object = None
 
     def spend(self) -> None:
         """Count one evaluation; `Spent` past the count or the deadline."""
@@ -53,11 +55,17 @@ class Budget:
             raise Budget.Spent
         self.calls += 1
 
-    def record(self, measure: float, point) -> None:
-        """Remember an evaluation's ``measure`` (smaller is better) and its ``point``."""
+    def record(self, measure: float, point, rank=0) -> None:
+        """Remember an evaluation's ``measure`` (smaller is better) and its ``point``: the best
+        point is the one of the highest ``rank`` (any ordered value: a line BVP's solve free of
+        compression, then on a finer mesh, then later), of the smallest measure among equal
+        ranks."""
         self.history.append(float(measure))
-        if measure < self.best[0]:
-            self.best = (float(measure), point)
+        better = measure < self.best[0]
+        if self.best_rank is not None and rank != self.best_rank:
+            better = rank > self.best_rank
+        if better:
+            self.best, self.best_rank = (float(measure), point), rank
 
     def run(self, what: str, unit: str, search, *args):
         """``search(*args)`` within the budget (module docstring)."""

@@ -41,9 +41,10 @@ from typing import NamedTuple
 import numpy as np
 import pytest
 
-from skcable.mooring import solve_line_bvp
+from skcable.errors import ConvergenceError
+from skcable.mooring import LineBVPSolution, solve_line_bvp
 from skcable.mooring.bathymetry import Plane
-from skcable.mooring.line_bvp_3d import solve_line_bvp_3d
+from skcable.mooring.line_bvp_3d import LineBVP3DSolution, solve_line_bvp_3d
 
 #: the survey's threshold of agreement, of the largest end force
 TOLERANCE = 1e-6
@@ -72,8 +73,8 @@ def varying(w0, amplitude, wavelength, phase):
     return w
 
 
-def end_forces(sc: Scene):
-    """The plane line's end forces and space's, mapped to the plane's (module docstring)."""
+def solvers(sc: Scene):
+    """``(plane, space)``: the scene's solves, callables of no argument (module docstring)."""
     segments = [(length, varying(*w) if isinstance(w, tuple) else w, EA) for length, w, EA in sc.segments]
     common = dict(point_loads=sc.point_loads, friction=sc.friction, n_elements=sc.n_elements)
     plane_bed: dict = {}
@@ -87,12 +88,28 @@ def end_forces(sc: Scene):
                 seabed=lambda x: height + slope * np.asarray(x),
                 seabed_slope=lambda x: np.full(np.shape(x), slope),
             )
-    plane = solve_line_bvp(sc.span, sc.dh, segments, **plane_bed, **common)
-    space = solve_line_bvp_3d((0.0, 0.0, 0.0), (sc.span, 0.0, sc.dh), segments, seabed=space_bed, **common)
+    ends = (0.0, 0.0, 0.0), (sc.span, 0.0, sc.dh)
+    return (
+        lambda: solve_line_bvp(sc.span, sc.dh, segments, **plane_bed, **common),
+        lambda: solve_line_bvp_3d(*ends, segments, seabed=space_bed, **common),
+    )
+
+
+def plane_forces(plane):
+    """The plane line's ``(H_A, V_A, H_B, V_B)`` as space's (module docstring)."""
+    return np.array([plane.H_A, -plane.V_A, -plane.H_B, -plane.V_B])
+
+
+def space_forces(space):
+    """The line in space's end forces in its vertical plane (module docstring)."""
     assert abs(space.force_on_fairlead[1]) <= 1e-12 * space.T_B  # it stays in its plane
-    want = np.array([plane.H_A, -plane.V_A, -plane.H_B, -plane.V_B])
-    got = np.array([*space.force_on_anchor[[0, 2]], *space.force_on_fairlead[[0, 2]]])
-    return want, got
+    return np.array([*space.force_on_anchor[[0, 2]], *space.force_on_fairlead[[0, 2]]])
+
+
+def end_forces(sc: Scene):
+    """The plane line's end forces and space's, mapped to the plane's (module docstring)."""
+    plane, space = solvers(sc)
+    return plane_forces(plane()), space_forces(space())
 
 
 # fmt: off
@@ -170,6 +187,12 @@ BUOY_ON_CHAIN = Scene(1422.863283919122, 35.392739838920384, [(935.5786615511254
 #: scene 2:136: chain, wire and rope on a flat seabed, a 549 N buoy and a 688 N clump 0.55 m apart on
 #: the chain, 64 elements
 CLUMP_PAST_ARCH = Scene(125.81753795867601, 2.8498245385887344, [(19.448596158559198, 1055.4548292387067, 231228562.49157917), (44.252384437742585, 16.948186939103618, 19227949.56835867), (65.38018979633495, 89.2398842920646, 10183143.715478364)], [(4.217218385186116, -549.0474605264737), (4.765073772586564, 687.8583198756432)], (-0.42775369174513617, 0.0), 0.0, 64)  # noqa: E501
+#: scene 1:121: a chain lying down a slope of -0.039 from its anchor and rising 58 m almost
+#: vertically to its fairlead, its weight varying ±6 %, H = 54 N (``H/w`` = 4.7 cm), 256 elements
+STANDING = Scene(716.4516934026433, 30.28559916504399, [(774.9085126795632, (1146.6478036881588, 0.05865373120637953, 426.2507574631828, 3.1430826863416947), 58046976.96603248)], [], (0.0, -0.0393226704244585), 0.0, 256)  # noqa: E501
+#: scene 3:34: three segments, two of varying weight, a clump, on a slope of -0.076 through the
+#: anchor, 64 elements: the line in space ends in compression (the plane line solves it)
+SPACE_IN_COMPRESSION = Scene(1877.7795139969624, -84.61294874641233, [(520.0167112478808, 16.166116867964334, 4421865115.867061), (836.3738428092635, (17.200888381359942, 0.44334913330059644, 3539.867878397045, 3.5343588328418454), 264487313.8282214), (585.1610455735785, (19.79383818376042, 0.4589848800843584, 575.5423282269782, 2.39758898623215), 55040395.60102722)], [(1082.7444877803132, 1115.5051458202772)], (0.0, -0.07626227801550656), 0.0, 64)  # noqa: E501
 # fmt: on
 
 
@@ -228,17 +251,31 @@ def test_a_clump_just_past_a_buoys_arch_is_graded_without_the_arch():
     them too, and agrees with its 1024-element solution within 1e-5 of the largest end force
     (measured 3.2e-6)."""
 
-    def space_forces(n):
-        sc = CLUMP_PAST_ARCH
-        line = solve_line_bvp_3d(
-            (0.0, 0.0, 0.0),
-            (sc.span, 0.0, sc.dh),
-            sc.segments,
-            point_loads=sc.point_loads,
-            seabed=sc.seabed[0],
-            n_elements=n,
-        )
-        return np.array([*line.force_on_anchor[[0, 2]], *line.force_on_fairlead[[0, 2]]])
+    def on(n):
+        return space_forces(solvers(CLUMP_PAST_ARCH._replace(n_elements=n))[1]())
 
-    reference = space_forces(1024)
-    np.testing.assert_allclose(space_forces(64), reference, rtol=0, atol=1e-5 * np.abs(reference).max())
+    reference = on(1024)
+    np.testing.assert_allclose(on(64), reference, rtol=0, atol=1e-5 * np.abs(reference).max())
+
+
+def test_a_failed_solve_keeps_the_line_on_its_finest_mesh():
+    """Scene 1:121 on 256 elements (`STANDING`): the bend where the chain leaves the seabed has a
+    radius of 4.7 cm, and the plane line's grading pass to elements of 4 mm there stagnates, so
+    its solve fails. The failure keeps what converged (``error.last``): the line on the finest
+    mesh reached, free of compression, whose end forces agree with the line in space's on 256
+    elements (which keeps its last converged graded mesh) within 1e-6 of the largest (measured
+    7e-10). Before, ``last`` was the failed Newton's iterate, without its mesh (the line in
+    space's failures: the same, or its driver's private record of a solve)."""
+    plane, space = solvers(STANDING)
+    with pytest.raises(ConvergenceError) as failed:
+        plane()
+    kept = failed.value.last
+    assert isinstance(kept, LineBVPSolution) and kept.problem.mesh.t.shape[1] >= STANDING.n_elements
+    assert not kept.problem.compressed(kept.dofs, 1e-10)
+    want = space_forces(space())
+    np.testing.assert_allclose(plane_forces(kept), want, rtol=0, atol=1e-6 * np.abs(want).max())
+    # the line in space keeps its solution too: scene 3:34 converged in compression only
+    with pytest.raises(ConvergenceError, match="in compression") as failed:
+        solvers(SPACE_IN_COMPRESSION)[1]()
+    kept = failed.value.last
+    assert isinstance(kept, LineBVP3DSolution) and kept.problem.compressed(kept.dofs, 1e-10)

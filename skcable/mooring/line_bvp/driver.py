@@ -56,8 +56,9 @@ moved to the new fairlead on its own mesh (`LineBVPSolver.moved`), is the start 
 (stages 3 and 5, with friction from the start); from scratch where that fails.
 
 **Bounded.** Every solve counts against the scene's ``time_limit`` (`skcable._budget.Budget`):
-past it `solve` and `solve_from` raise a `ConvergenceError` with the last merit of every solve
-and the best solution reached (``last``). The number of solves is bounded by the stages.
+past it `solve` and `solve_from` raise a `ConvergenceError` with the last merit of every solve.
+The number of solves is bounded by the stages. A failure keeps what converged: its ``last`` is
+the solve on the finest mesh reached (`LineSolver.bounded`).
 
 **Retries.** Every solve on a new mesh starts from the last solution interpolated onto it, else
 from the closed-form start (on a nearly L-shaped line the bend at the touchdown has the radius
@@ -155,12 +156,6 @@ class LineBVPSolver(LineSolver):
 
     #: what a solve gives (`LineSolver.run`)
     result = LineBVPSolution
-
-    def bounded(self, stage, *args) -> LineBVPSolution:
-        """``stage(*args)``; past the budget, its `ConvergenceError` (module docstring)."""
-        return self.budget.run(
-            "solve_line_bvp (the measure: the last merit of a solve)", "solves", stage, *args
-        )
 
     def from_segments(self, problem) -> LineBVPSolution:
         """The line of ``problem`` from the segment-wise closed-form start (`segmented_start`);

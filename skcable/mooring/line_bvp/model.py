@@ -85,8 +85,7 @@ def solve_line_bvp(
         by its stages (`skcable.mooring.line_bvp.driver`).
     time_limit : float
         Seconds at most for the whole continuation (default 60): past them a
-        `ConvergenceError` whose ``history`` holds the last merit of every solve and whose
-        ``last`` is the best solution reached.
+        `ConvergenceError` whose ``history`` holds the last merit of every solve.
     terms : CableTerm or list of CableTerm
         Loads that see the line's whole state, with their tangents (`skcable.bvp.terms`:
         `Buoyancy` varying with depth, `CurrentDrag`, `WindDrag`, or an analyst's own
@@ -129,6 +128,8 @@ def solve_line_bvp(
         Newton stalled (``history`` holds the merit per iteration); the end
         of a slack stretch not found; the discrete line in compression (its
         bends not resolved by the mesh: the message says so, and more ``n_elements`` solve it).
+        Its ``last`` keeps what converged: the `LineBVPSolution` on the finest mesh reached (of
+        the nested levels and grading passes, not checked), None where no solve converged.
 
     Notes
     -----

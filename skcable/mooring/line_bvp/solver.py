@@ -69,13 +69,33 @@ class LineSolver:
     def run(self, problem, z0, near: bool = False):
         """One solve of ``problem`` from ``z0`` with the driver's Newton options
         (`skcable.mooring.line_bvp.iterate.solve_on`; ``near``: full steps first), counted
-        against the budget, the best solve so far remembered: a ``result`` of the problem, the
-        iterate, its merit history and its state."""
+        against the budget, the best solve so far remembered (free of compression, then on the
+        finest mesh, then the latest): a ``result`` of the problem, the iterate, its merit
+        history and its state."""
         self.budget.spend()
         out = solve_on(problem, z0, self.options, near, name=self.name)
         solved = self.result(problem, out.x, list(out.history), out.state)
         history = solved.history
-        self.budget.record(history[-1] if len(history) else 0.0, solved)
+        # what a failure keeps: free of compression, then the finest mesh, then the latest solve
+        rank = (not self.compressed(solved), problem.mesh.t.shape[1], self.budget.calls)
+        self.budget.record(history[-1] if len(history) else 0.0, solved, rank)
+        return solved
+
+    def bounded(self, stage, *args):
+        """``stage(*args)`` within the budget (past it, its `ConvergenceError`); a failure's
+        ``last`` is what converged (`kept`, not checked): the budget's best solve, the last on
+        the finest mesh of those free of compression (of all, where none is; `run`), None where no
+        solve converged (a failed Newton's own iterate means nothing without its mesh)."""
+        what = f"{self.name} (the measure: the last merit of a solve)"
+        try:
+            return self.budget.run(what, "solves", stage, *args)
+        except ConvergenceError as failed:
+            best = self.budget.best[1]
+            failed.last = None if best is None else self.kept(best)
+            raise
+
+    def kept(self, solved):
+        """``solved`` as the public solution a failure keeps (`bounded`)."""
         return solved
 
     def unbounded(self):

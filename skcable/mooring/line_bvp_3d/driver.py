@@ -51,7 +51,8 @@ those), with its history, where the graded meshes failed too; with friction
 and the anchor above the seabed, saying where friction fully mobilised may take more than the
 pull (`LineBVP3DSolver.with_diagnosis`). Every solve
 counts against the scene's ``time_limit`` (`skcable._budget.Budget`): past it, a
-`ConvergenceError` with the last merit of every solve and the best solution reached (``last``).
+`ConvergenceError` with the last merit of every solve. A failure keeps what converged: its
+``last`` is the solve on the finest mesh reached (`LineSolver.bounded`).
 """
 
 from __future__ import annotations
@@ -132,8 +133,11 @@ class LineBVP3DSolver(LineSolver):
     def solve(self, start: LineBVP3DSolution | None = None) -> LineBVP3DSolution:
         """The line (module docstring); from ``start`` (a solution of the same line at other
         ends, moved to these) where given, from scratch where that fails; within the budget."""
-        what = "solve_line_bvp_3d (the measure: the last merit of a solve)"
-        return self.budget.run(what, "solves", self.unbounded, start)
+        return self.bounded(self.unbounded, start)
+
+    def kept(self, solved) -> LineBVP3DSolution:
+        """``solved`` as the solution a failure keeps (`LineSolver.bounded`), not checked."""
+        return LineBVP3DSolution(solved.problem, solved.dofs, solved.history, solved.state)
 
     def unbounded(self, start: LineBVP3DSolution | None = None) -> LineBVP3DSolution:
         """`solve` without the budget's conversion; a failure with friction and the anchor above

@@ -104,8 +104,7 @@ def solve_line_bvp_3d(
         Newton iterations at most per solve (default 50).
     time_limit : float
         Seconds at most for the whole strategy (default 60): past them a `ConvergenceError`
-        whose ``history`` holds the last merit of every solve and whose ``last`` is the best
-        solution reached.
+        whose ``history`` holds the last merit of every solve.
     options : NewtonOptions, optional
         The Newton options of every solve, as for `skcable.mooring.solve_line_bvp` (the line
         BVP's defaults ``tol=1e-10, max_iter=50, line_search="residual",
@@ -128,7 +127,9 @@ def solve_line_bvp_3d(
         Bad data, named.
     ConvergenceError
         No solve converged (``history`` holds the merit per iteration); the line in compression;
-        its equilibrium residual above its bound.
+        its equilibrium residual above its bound. Its ``last`` keeps what converged: the
+        `LineBVP3DSolution` on the finest mesh reached (not checked), None where no solve
+        converged.
 
     Examples
     --------
