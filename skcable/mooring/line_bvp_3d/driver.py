@@ -58,6 +58,7 @@ counts against the scene's ``time_limit`` (`skcable._budget.Budget`): past it, a
 from __future__ import annotations
 
 from dataclasses import dataclass, field
+from functools import cache, partial
 
 import numpy as np
 
@@ -210,22 +211,36 @@ class LineBVP3DSolver(LineSolver):
         return z
 
     def level(self, n, fitted=()) -> Solved:
-        """The line on ``n`` elements from the closed-form starts (`starts`), by steps of the
-        current, on nested meshes, or (without the graded meshes first, `graded_first`) on a
-        mesh graded by the start (module docstring, 2–4)."""
-        problem = self.problem(n, fitted)
-        z0 = closed_form_start(problem)
-        touches = self.touches(problem, z0)
-        attempts = self.starts(problem, z0)
-        if problem.terms:
-            attempts.append(lambda: self.continued(n, fitted, z0))
-        if n > 2 * COARSE:
-            attempts.append(lambda: self.nested(n, fitted))
-        if touches and n > 2 * COARSE:
-            attempts = [attempts[-1], *attempts[:-1]]
+        """The line on ``n`` elements from the closed-form starts, by steps of the current, on
+        nested meshes (`on_mesh`), or (without the graded meshes first, `graded_first`) on a mesh
+        graded by the start (module docstring, 2–4)."""
+        problem, attempts = self.on_mesh(n, fitted)
         if problem.contact_rows is not None and not self.graded_first:  # else tried before (`strategy`)
             attempts.append(lambda: self.from_graded_start(n, fitted))
         return first_converged(attempts)
+
+    def on_mesh(self, n, fitted=(), mesh=None) -> tuple[LineProblem3D, list]:
+        """``(problem, attempts)``: the line on ``mesh(n)`` (the uniform mesh by default) from
+        its closed-form starts (`from_starts`) and, above ``2·COARSE`` elements, on the nested
+        meshes ``mesh(size)`` (`nested`; first where the start touches the seabed: the active set
+        moves by a few nodes per Newton iteration, so a fine mesh does not find its contact set
+        from the start), in turn."""
+        mesh = mesh or (lambda size: self.problem(size, fitted))
+        problem = mesh(n)
+        z0 = closed_form_start(problem)
+        attempts = [lambda: first_converged(self.from_starts(problem, n, fitted, z0))]
+        if n > 2 * COARSE:
+            attempts.insert(0 if self.touches(problem, z0) else 1, lambda: self.nested(n, fitted, mesh))
+        return problem, attempts
+
+    def from_starts(self, problem, size, fitted, z0) -> list:
+        """The solves of ``problem`` (on ``size`` elements, nodes at ``fitted``) from its
+        closed-form starts (`starts`), then, where the line has terms, by steps of the current
+        (`continued`), in turn."""
+        attempts = self.starts(problem, z0)
+        if problem.terms:
+            attempts.append(lambda: self.continued(size, fitted, z0, nodes_at=problem.nodes_at))
+        return attempts
 
     def starts(self, problem, z0) -> list:
         """The solves of ``problem`` from its closed-form starts, in turn (the plane line's
@@ -259,20 +274,17 @@ class LineBVP3DSolver(LineSolver):
                     raise
         return solved
 
-    def nested(self, n, fitted=()) -> Solved:
-        """Nested meshes up to ``n`` elements (module docstring, 4; `solve_nested`): each from
-        the coarser one interpolated, else from its closed-form start (by steps of the current
-        where it needs them)."""
+    def nested(self, n, fitted=(), mesh=None) -> Solved:
+        """Nested meshes ``mesh(size)`` (uniform by default) up to ``n`` elements (module
+        docstring, 4; `solve_nested`): each from the coarser one interpolated, else from its
+        closed-form starts (`from_starts`)."""
+        mesh = mesh or (lambda size: self.problem(size, fitted))
 
         def level(size, coarser):
-            problem = self.problem(size, fitted)
+            problem = mesh(size)
             if coarser is not None:
                 return self.run(problem, restart(coarser.problem, coarser.dofs, problem))
-            z0 = closed_form_start(problem)
-            attempts = [lambda: self.run(problem, z0)]
-            if problem.terms:
-                attempts.append(lambda: self.continued(size, fitted, z0))
-            return first_converged(attempts)
+            return first_converged(self.from_starts(problem, size, fitted, closed_form_start(problem)))
 
         return solve_nested(n, level)
 
@@ -366,31 +378,10 @@ class LineBVP3DSolver(LineSolver):
             nodes = graded_nodes(uniform, z0, size, self.fixed, refinement, arches=False)[0]
             return self.problem(size, fitted, nodes_at=nodes)
 
-        def from_starts(problem, size, z0=None):
-            z0 = closed_form_start(problem) if z0 is None else z0
-            attempts = self.starts(problem, z0)
-            if problem.terms:
-                attempts.append(lambda: self.continued(size, fitted, z0, nodes_at=problem.nodes_at))
-            return first_converged(attempts)
-
         moved = None if start is None else self.moved(start)
 
         def graded_by_start(refinement):
-            problem = graded_problem(n, refinement)
-            z0 = closed_form_start(problem)
-            attempts = [lambda: from_starts(problem, n, z0)]
-            if n > 2 * COARSE:
-
-                def level(size, coarser):
-                    at = problem if size == n else graded_problem(size, refinement)
-                    if coarser is None:
-                        return from_starts(at, size)
-                    return self.run(at, restart(coarser.problem, coarser.dofs, at))
-
-                def nested():
-                    return solve_nested(n, level)
-
-                attempts.insert(0 if self.touches(problem, z0) else 1, nested)
+            problem, attempts = self.on_mesh(n, fitted, cache(partial(graded_problem, refinement=refinement)))
             if start is not None:
                 attempts.insert(
                     0, lambda: self.run(problem, restart(start.problem, moved, problem), near=True)
