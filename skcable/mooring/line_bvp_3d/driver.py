@@ -31,7 +31,9 @@ r"""The strategy that takes a line in space from its closed-form start to the co
    `skcable.mooring.line_bvp.mesh.solve_nested`): from `skcable.mooring.line_bvp.mesh.COARSE`
    elements up, each solution interpolated onto the doubled mesh (the active set moves by a
    few nodes per Newton iteration, so a fine mesh does not find its contact set from the start),
-   a level that fails so solved from scratch, a coarse one that fails even so skipped; on a
+   a level that fails so solved from scratch (its closed-form starts and the current by steps,
+   2–3, `LineBVP3DSolver.from_starts`), a coarse one that fails even so skipped; the meshes
+   graded by the start (1) nest the same way (`LineBVP3DSolver.on_mesh`); on a
    seabed without the graded meshes of 1 (``mesh="uniform"`` or no ``fit_touchdown``), where
    every one of these fails, the starts on the mesh graded by the start (1). A line in
    compression on the uniform mesh is graded by its turning as in 1. Without a seabed the

@@ -91,16 +91,6 @@ class Scene3D:
     time_limit: float = 60.0
 
     @property
-    def rtol(self) -> float:
-        """Newton's tolerance on the scaled residual (``options.tol``)."""
-        return self.options.tol
-
-    @property
-    def max_iter(self) -> int:
-        """Newton iterations at most per solve (``options.max_iter``)."""
-        return self.options.max_iter
-
-    @property
     def length(self) -> float:
         """Unstretched length of the line (m)."""
         return float(sum(seg.length for seg in self.segments))
