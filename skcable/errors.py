@@ -47,7 +47,9 @@ class ConvergenceError(RuntimeError):
     history : list of float
         The residual (or step) norm after every iteration, first to last.
     last : object or None
-        The solver's last iterate, where it has one (what the failed solve reached).
+        The solver's last iterate, where it has one (what the failed solve reached); for a
+        search that keeps what converged, its best point (a line BVP: its solution on the
+        finest mesh reached, not checked).
     attempts : list of list of float
         The history of every attempt of a solve that tried more than one from its start (a
         damped Newton, then full steps: `skcable.fe.newton`'s ``full_steps``), in the order

@@ -270,7 +270,9 @@ def test_a_failed_solve_keeps_the_line_on_its_finest_mesh():
     with pytest.raises(ConvergenceError) as failed:
         plane()
     kept = failed.value.last
-    assert isinstance(kept, LineBVPSolution) and kept.problem.mesh.t.shape[1] >= STANDING.n_elements
+    elements = kept.problem.mesh.t.shape[1]
+    assert isinstance(kept, LineBVPSolution) and elements >= STANDING.n_elements
+    assert f"error.last: the line that converged on {elements} elements" in str(failed.value)
     assert not kept.problem.compressed(kept.dofs, 1e-10)
     want = space_forces(space())
     np.testing.assert_allclose(plane_forces(kept), want, rtol=0, atol=1e-6 * np.abs(want).max())

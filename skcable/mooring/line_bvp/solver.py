@@ -85,13 +85,20 @@ class LineSolver:
         """``stage(*args)`` within the budget (past it, its `ConvergenceError`); a failure's
         ``last`` is what converged (`kept`, not checked): the budget's best solve, the last on
         the finest mesh of those free of compression (of all, where none is; `run`), None where no
-        solve converged (a failed Newton's own iterate means nothing without its mesh)."""
+        solve converged (a failed Newton's own iterate means nothing without its mesh); the message
+        says so."""
         what = f"{self.name} (the measure: the last merit of a solve)"
         try:
             return self.budget.run(what, "solves", stage, *args)
         except ConvergenceError as failed:
             best = self.budget.best[1]
-            failed.last = None if best is None else self.kept(best)
+            failed.last = None
+            if best is not None:
+                failed.last = kept = self.kept(best)
+                elements = kept.problem.mesh.t.shape[1]
+                failed.args = (
+                    f"{failed}; error.last: the line that converged on {elements} elements (not checked)",
+                )
             raise
 
     def kept(self, solved):
