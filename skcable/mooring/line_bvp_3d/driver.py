@@ -276,11 +276,10 @@ class LineBVP3DSolver(LineSolver):
                     raise
         return solved
 
-    def nested(self, n, fitted=(), mesh=None) -> Solved:
-        """Nested meshes ``mesh(size)`` (uniform by default) up to ``n`` elements (module
+    def nested(self, n, fitted, mesh) -> Solved:
+        """Nested meshes ``mesh(size)`` (nodes at ``fitted``) up to ``n`` elements (module
         docstring, 4; `solve_nested`): each from the coarser one interpolated, else from its
         closed-form starts (`from_starts`)."""
-        mesh = mesh or (lambda size: self.problem(size, fitted))
 
         def level(size, coarser):
             problem = mesh(size)
