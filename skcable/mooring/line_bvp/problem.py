@@ -173,12 +173,6 @@ class LineProblem(DiscreteLine):
         """The closed-form start of a solve (for `skcable.fe.check_tangent`)."""
         return closed_form_start(self)
 
-    def contact_terms(self, z, R0):
-        """Per contact node (`skcable.mooring.line_bvp.contact.ContactTerms`): gradient, Hessian,
-        gap, multiplier λ, active flag, R⁰, chord."""
-        assert self.contact_rows is not None, "a line without a seabed has no contact terms"
-        return self.contact_rows.terms(z, R0)
-
     def reactions(self, R0):
         """``(H_A, V_A, H_B, V_B)`` (N) from the residual without contact at the supports."""
         N = self.N

@@ -37,13 +37,6 @@ class SegmentDrag(CableTerm):
         self.cn, self.ct = np.asarray(cd_normal, dtype=float), np.asarray(cd_tangential, dtype=float)
         self.rho, self.scale = float(rho), float(scale)
 
-    def with_scale(self, scale: float) -> SegmentDrag:
-        """The same drag times ``scale``."""
-        other = SegmentDrag.__new__(SegmentDrag)
-        other.__dict__.update(self.__dict__)
-        other.scale = float(scale)
-        return other
-
     def owner(self, s) -> np.ndarray:
         """The segment of each arc length ``s`` (the upper one at a joint but the last)."""
         n = self.joints.size - 1
