@@ -32,7 +32,16 @@ from skcable.errors import ConvergenceError, InputError
 from skcable.fe import NewtonOptions, NewtonResult, newton
 from skcable.mooring.bathymetry import OffGrid
 
-__all__ = ["FROZEN_STEPS", "HELD_POLISH", "POLISH", "frozen_steps", "held_polish", "report", "solve_on"]
+__all__ = [
+    "FROZEN_STEPS",
+    "HELD_FROM",
+    "HELD_POLISH",
+    "POLISH",
+    "frozen_steps",
+    "held_polish",
+    "report",
+    "solve_on",
+]
 
 #: Newton steps past rtol at most, while the merit halves
 POLISH = 3
@@ -44,6 +53,10 @@ FROZEN_STEPS = 8
 #: (`held_polish`), in round-off floors (the solution's check allows 64 times the rounding too,
 #: `LineFields.check`)
 HELD_POLISH = 64.0
+#: the merit, in Newton's tolerances, below which `held_polish` does not look (at 1e-3 of the
+#: default tolerance, 1e-13, a line's floor is 5e-14 or more, and 64 floors are above it:
+#: the floor, a quarter of a Newton iteration, is not computed after every solve)
+HELD_FROM = 1e-3
 
 
 def report(callback, iteration: int, merit: float, step) -> None:
@@ -152,7 +165,8 @@ def solve_on(
 def held_polish(problem, result: NewtonResult, options: NewtonOptions) -> NewtonResult:
     """``result`` taken on to its round-off floor with the contact nodes' active set held
     (`frozen_steps`, `POLISH` steps at most), where the polish stopped above ``HELD_POLISH`` times
-    that floor (`DiscreteLine.merit_floor`); ``result`` as it is where no held set gets there.
+    that floor (`DiscreteLine.merit_floor`) and above ``HELD_FROM`` times ``options.tol``;
+    ``result`` as it is where no held set gets there.
 
     A node on the seabed with no push (``λ = g = 0``) makes full semismooth steps cycle between
     two active sets past ``tol`` too: the polish stops where the first of them raises the merit,
@@ -162,7 +176,7 @@ def held_polish(problem, result: NewtonResult, options: NewtonOptions) -> Newton
     of 2.6e-11, and the check refused its 0.036 N/m against 1.2e-4 N/m
     (`benchmarks/line_bvp_planes.py`); one step with the active set held takes it to 1.6e-15."""
     state = result.state
-    if state.terms is None:
+    if state.terms is None or not state.merit > HELD_FROM * options.tol:  # the floor not worth its cost
         return result
     target = HELD_POLISH * problem.merit_floor(state)
     if not 0.0 < target < state.merit:
