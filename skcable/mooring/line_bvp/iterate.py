@@ -12,8 +12,8 @@ seabed's grid (`skcable.mooring.bathymetry.OffGrid`) is a step too long. Past ``
 Newton steps go on while the merit still halves (``polish``, `POLISH` at most):
 quadratic convergence takes the solution to its round-off floor for one or two more
 assemblies; where full steps cycle between two active sets there, the polish goes on with the
-active set held (`held_polish`). Where the damped Newton stops (no descent, stagnation) with the line on the
-seabed, `frozen_steps` goes on from where it stopped with the active set held (the
+active set held (`held_polish`). Where the damped Newton stops (no descent, stagnation) with
+the line on the seabed, `frozen_steps` goes on from where it stopped with the active set held (the
 ``rescue``): a node on the seabed with no push (``λ = g = 0``, a touchdown at a node) makes the
 semismooth Newton cycle between two active sets (the max-norm merit refuses both steps), and one
 of them, held, is a smooth system whose solution meets the contact conditions to ``tol``.
@@ -53,9 +53,9 @@ FROZEN_STEPS = 8
 #: (`held_polish`), in round-off floors (the solution's check allows 64 times the rounding too,
 #: `LineFields.check`)
 HELD_POLISH = 64.0
-#: the merit, in Newton's tolerances, below which `held_polish` does not look (at 1e-3 of the
-#: default tolerance, 1e-13, a line's floor is 5e-14 or more, and 64 floors are above it:
-#: the floor, a quarter of a Newton iteration, is not computed after every solve)
+#: the merit, in Newton's tolerances, below which `held_polish` does not look: the floor costs
+#: a pass over the element matrices, not worth it after every solve (at 1e-3 of the default
+#: tolerance, 1e-13, 64 floors lie above it wherever the floor exceeds 1.6e-15)
 HELD_FROM = 1e-3
 
 
