@@ -78,6 +78,7 @@ import numpy as np
 from skcable._budget import Budget
 from skcable.errors import ConvergenceError, InputError
 from skcable.fe import first_converged
+from skcable.mooring.line_bvp import start as closed_forms
 from skcable.mooring.line_bvp.inputs import Scene
 from skcable.mooring.line_bvp.mesh import (
     COARSE,
@@ -101,9 +102,7 @@ from skcable.mooring.line_bvp.solution import LineBVPSolution
 from skcable.mooring.line_bvp.solver import LineSolver
 from skcable.mooring.line_bvp.start import (
     closed_form_start,
-    lifted_start,
     on_dofs,
-    on_slope,
     restart,
     segmented_solution,
     segmented_start,
@@ -149,13 +148,10 @@ class LineBVPSolver(LineSolver):
             fitted=fitted, slack_end=slack_end, nodes_at=nodes_at, terms=sc.terms,
         )  # fmt: skip
 
-    def anchor_above_seabed(self) -> bool:
-        """Whether the scene has a seabed and the anchor lies above it (by 1e-12 of the length)."""
-        bed = self.scene.seabed
-        return bed is not None and abs(float(bed(np.array([0.0]))[0])) > 1e-12 * self.length
-
     #: what a solve gives (`LineSolver.run`)
     result = LineBVPSolution
+    #: the closed-form starts (`LineSolver.starts`)
+    start_forms = closed_forms
 
     def from_segments(self, problem) -> LineBVPSolution:
         """The line of ``problem`` from the segment-wise closed-form start (`segmented_start`);
@@ -322,11 +318,9 @@ class LineBVPSolver(LineSolver):
 
     def first_attempts(self, n) -> list:
         """The frictionless line's first solves (module docstring, 2), in turn: from the
-        closed-form start, on a mesh graded by it when the touchdown is fitted; from the
-        segment-wise closed form; from the first start with the contact nodes switching by the
-        tension; on a straight slope through the anchor, from the uniform line lifted onto it
-        (switching too) where the line on the slope fails (the survey's scene 3:234,
-        `benchmarks/line_bvp_planes.py`); on the uniform mesh where every start fails on the
+        closed-form starts (`LineSolver.starts`: the start, the segment-wise closed form,
+        switching, and on a straight slope through the anchor the lifted line), on a mesh graded
+        by the start when the touchdown is fitted; on the uniform mesh where every start fails on the
         graded one (its scene 3:172); with clump weights, from the uniform line under their
         weight smeared (`skcable.mooring.line_bvp.start.smeared_start`), on the graded mesh,
         then on the uniform one (its scene 2:40); with a fitted touchdown, on the line in space's
@@ -341,14 +335,7 @@ class LineBVPSolver(LineSolver):
         uniform = problem = self.problem(n, mu=0.0)
         if self.scene.fit_touchdown:
             problem = self.problem(n, mu=0.0, nodes_at=start_nodes(start_form(problem), self.fixed, n))
-        solves = [
-            lambda: self.run(problem, closed_form_start(problem)),
-            lambda: self.from_segments(problem),
-            lambda: self.switched(problem, closed_form_start(problem)),
-        ]
-        if on_slope(problem):  # the line on the slope can leave Newton no descent: the lifted one
-            solves.append(lambda: self.run(problem, lifted_start(problem)))
-            solves.append(lambda: self.switched(problem, lifted_start(problem)))
+        solves = self.starts(problem)
         if problem is not uniform:  # the start's grading can leave Newton no descent: the uniform mesh
             solves.append(lambda: self.run(uniform, closed_form_start(uniform)))
         if any(P > 0 for _, P in self.scene.point_loads):  # clump weights that hold the line down
@@ -363,17 +350,13 @@ class LineBVPSolver(LineSolver):
                 nodes = graded_nodes(uniform, closed_form_start(uniform), n, self.fixed, arches=False)[0]
                 return self.problem(n, mu=0.0, nodes_at=nodes)
 
-            for solve in (
-                lambda: self.run(by_start(), closed_form_start(by_start())),
-                lambda: self.from_segments(by_start()),
-                lambda: self.switched(by_start(), closed_form_start(by_start())),
-            ):
-                attempts.append(partial(self.on_problem, solve, by_start))
+            attempts += [partial(self.on_problem, k, by_start) for k in range(3)]
         return attempts
 
-    def on_problem(self, solve, problem) -> LineBVPSolution:
-        """`uncompressed` on the problem ``problem()`` builds (where the attempt runs)."""
-        return self.uncompressed(solve, problem())
+    def on_problem(self, k, problem) -> LineBVPSolution:
+        """`uncompressed` of the ``k``-th of the solves from the closed-form starts (`starts`)
+        on the problem ``problem()`` builds (where the attempt runs)."""
+        return self.uncompressed(self.starts(problem())[k], problem())
 
     def uncompressed(self, solve, problem) -> LineBVPSolution:
         """``solve()``, or where it leaves the discrete line in compression, the segment-wise

@@ -4,9 +4,10 @@ and refusal, and the friction diagnosis of a failure.
 `LineSolver` is the base of `skcable.mooring.line_bvp.driver.LineBVPSolver` (the plane line) and
 `skcable.mooring.line_bvp_3d.driver.LineBVP3DSolver` (the line in space). Each driver gives its
 scene (``friction``, a dataclass), its Newton options (`skcable.fe.NewtonOptions`), its time
-budget (`skcable._budget.Budget`), the type of a solve's ``result``, its strategy
-``unbounded()`` and whether its anchor lies above the seabed; the base gives the rest once,
-its one solve ``run(problem, z0)`` among them.
+budget (`skcable._budget.Budget`), its ``problem(n)`` on ``n`` elements, its closed forms
+``start_forms`` (a module), the type of a solve's ``result`` and its strategy ``unbounded()``;
+the base gives the rest once: its one solve ``run(problem, z0)`` and the list of solves from the
+closed-form starts, ``starts(problem)``, among them.
 """
 
 from __future__ import annotations
@@ -14,6 +15,8 @@ from __future__ import annotations
 import time
 from collections.abc import Callable
 from dataclasses import replace
+from functools import cache, partial
+from types import ModuleType
 from typing import Any
 
 import numpy as np
@@ -23,6 +26,7 @@ from skcable.errors import ConvergenceError
 from skcable.fe import NewtonOptions
 from skcable.mooring.line_bvp.check import partial_friction, refuse_sliding
 from skcable.mooring.line_bvp.iterate import solve_on
+from skcable.mooring.line_bvp.mesh import COARSE
 
 __all__ = ["LineSolver"]
 
@@ -34,6 +38,10 @@ class LineSolver:
     name = "solve_line_bvp"
     #: the type of a solve's result, built from ``(problem, dofs, history, state)``
     result: Callable[..., Any]
+    #: the closed-form starts of the driver's line: its ``closed_form_start``, ``lifted_start``,
+    #: ``segmented_start`` and ``on_slope`` (`skcable.mooring.line_bvp.start`,
+    #: `skcable.mooring.line_bvp_3d.start`)
+    start_forms: ModuleType
     scene: Any
     budget: Budget
     options: NewtonOptions
@@ -62,9 +70,15 @@ class LineSolver:
         meshes go first: the active set moves by a few nodes per Newton iteration)."""
         return bool(np.any(problem.gaps(z0) <= 0))
 
-    def anchor_above_seabed(self) -> bool:
-        """Whether the scene has a seabed and its anchor lies above it."""
+    def problem(self, n: int, *args, **kwargs):
+        """The driver's discrete line on ``n`` elements."""
         raise NotImplementedError
+
+    def anchor_above_seabed(self) -> bool:
+        """Whether the scene has a seabed and its anchor lies above it (by 1e-12 of the length:
+        ``DiscreteLine.anchor_on_seabed``)."""
+        problem = self.problem(COARSE)
+        return problem.seabed is not None and not problem.anchor_on_seabed
 
     def run(self, problem, z0, near: bool = False):
         """One solve of ``problem`` from ``z0`` with the driver's Newton options
@@ -115,6 +129,26 @@ class LineSolver:
         if z0 is None:
             raise ConvergenceError(f"{self.name}: no such closed-form start of this line", [])
         return self.run(problem, z0)
+
+    def starts(self, problem, z0=None) -> list:
+        """The solves of ``problem`` from its closed-form starts (``start_forms``), in turn: from
+        ``z0`` (by default its ``closed_form_start``); from the segment-wise closed form
+        (``segmented_start``, where there is one); from ``z0`` with the contact nodes switching
+        by the tension (`switched`, on a seabed); on a straight slope through the anchor
+        (``on_slope``), whose ``closed_form_start`` is the line on the slope, from the uniform
+        line lifted onto it (``lifted_start``: the line on the slope can leave Newton no descent,
+        the survey's scene 3:234, ``benchmarks/line_bvp_planes.py``), fixed and switching."""
+        forms = self.start_forms
+        first = cache(partial(forms.closed_form_start, problem)) if z0 is None else (lambda: z0)
+        attempts = [
+            lambda: self.run(problem, first()),
+            lambda: self.from_start(problem, forms.segmented_start(problem)),
+            lambda: self.switched(problem, first()),
+        ]
+        if forms.on_slope(problem):
+            lifted = cache(partial(forms.lifted_start, problem))
+            attempts += [lambda: self.run(problem, lifted()), lambda: self.switched(problem, lifted())]
+        return attempts
 
     def switched(self, problem, z0):
         """One solve of ``problem`` from ``z0`` with its contact nodes switching by the line's

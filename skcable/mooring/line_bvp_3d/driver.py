@@ -20,10 +20,10 @@ r"""The strategy that takes a line in space from its closed-form start to the co
    scratch to round-off wherever the solve from scratch converges on the first of them. Where this
    fails or ends in compression, or without a seabed, or with ``mesh="uniform"``,
 2. **a level on the uniform mesh** (`LineBVP3DSolver.level`): the line from its closed-form
-   starts (`LineBVP3DSolver.starts`, the plane line's alternatives): the start
-   (`skcable.mooring.line_bvp_3d.start`), on a seabed with the contact nodes switching by the
-   tension, the segment-wise closed form, on a plane seabed through the anchor the flat grounded
-   line lifted onto it too; where those fail,
+   starts (`LineSolver.starts`, the plane line's list, of the starts
+   `skcable.mooring.line_bvp_3d.start`): the start, the segment-wise closed form, on a seabed the
+   start with the contact nodes switching by the tension, on a plane seabed through the anchor
+   the flat grounded line lifted onto it too; where those fail,
 3. **the current by steps** (`LineBVP3DSolver.continued`): the line in still water, then the
    drag grown to its full value in steps (a quarter first, halved where a step fails, down to
    1/64), each from the last; where that fails too (or a fine mesh's start touches the seabed),
@@ -79,9 +79,10 @@ from skcable.mooring.line_bvp.mesh import (
 )
 from skcable.mooring.line_bvp.solver import LineSolver
 from skcable.mooring.line_bvp.start import restart
+from skcable.mooring.line_bvp_3d import start as closed_forms
 from skcable.mooring.line_bvp_3d.problem import LineProblem3D
 from skcable.mooring.line_bvp_3d.solution import LineBVP3DSolution
-from skcable.mooring.line_bvp_3d.start import closed_form_start, on_slope, segmented_start
+from skcable.mooring.line_bvp_3d.start import closed_form_start
 
 __all__ = ["LineBVP3DSolver"]
 
@@ -120,11 +121,6 @@ class LineBVP3DSolver(LineSolver):
         sc = self.scene
         return sc.seabed is not None and sc.fit_touchdown > 0 and sc.mesh == "graded"
 
-    def anchor_above_seabed(self) -> bool:
-        """Whether the scene has a seabed and the anchor lies above it (by 1e-12 of the length)."""
-        sc, a = self.scene, self.scene.anchor
-        return sc.seabed is not None and abs(a[2] - float(sc.seabed.height(a[0], a[1]))) > 1e-12 * sc.length
-
     def problem(self, n, fitted=(), drag_scale=1.0, nodes_at=None) -> LineProblem3D:
         """The discrete line on ``n`` elements (on the mesh ``nodes_at`` where given), nodes at
         ``fitted``, the drag times ``drag_scale``."""
@@ -132,6 +128,8 @@ class LineBVP3DSolver(LineSolver):
 
     #: what a solve gives (`LineSolver.run`)
     result = Solved
+    #: the closed-form starts (`LineSolver.starts`)
+    start_forms = closed_forms
 
     def solve(self, start: LineBVP3DSolution | None = None) -> LineBVP3DSolution:
         """The line (module docstring); from ``start`` (a solution of the same line at other
@@ -244,22 +242,6 @@ class LineBVP3DSolver(LineSolver):
             attempts.append(lambda: self.continued(size, fitted, z0, nodes_at=problem.nodes_at))
         return attempts
 
-    def starts(self, problem, z0) -> list:
-        """The solves of ``problem`` from its closed-form starts, in turn (the plane line's
-        alternatives, the segment-wise one after the switched one here): from ``z0``
-        (`closed_form_start`); on a seabed, with the contact nodes switching
-        by the tension (`switched`); from the segment-wise closed form where there is one
-        (`segmented_start`); on a plane seabed through the anchor, from the flat grounded line
-        lifted onto it, fixed and switching (``closed_form_start(sloped=False)``)."""
-        attempts = [lambda: self.run(problem, z0)]
-        if problem.contact_rows is not None:
-            attempts.append(lambda: self.switched(problem, z0))
-        attempts.append(lambda: self.from_start(problem, segmented_start(problem)))
-        if on_slope(problem):  # the line on the slope can leave Newton no descent: the lifted one
-            attempts.append(lambda: self.run(problem, closed_form_start(problem, sloped=False)))
-            attempts.append(lambda: self.switched(problem, closed_form_start(problem, sloped=False)))
-        return attempts
-
     def continued(self, n, fitted, z0, nodes_at=None) -> Solved:
         """The drag grown from zero to its full value in steps, each solve from the last (on the
         mesh ``nodes_at`` where given)."""
@@ -321,7 +303,7 @@ class LineBVP3DSolver(LineSolver):
         return first_converged(
             [
                 lambda: self.run(problem, restart(solved.problem, solved.dofs, problem), near=True),
-                lambda: first_converged(self.starts(problem, closed_form_start(problem))),
+                lambda: first_converged(self.starts(problem)),
                 lambda: self.level(n, points),
             ]
         )

@@ -55,6 +55,11 @@ class LineProblem3D(DiscreteLine):
         self.load_scale = self._load_scale()
         self.length_scale = self.L
         self.contact_rows = self._contact_rows(inner) if self.seabed is not None else None
+        a, bed = self.anchor, self.seabed
+        #: A lies on the seabed (to 1e-12 of the length): the seabed, not the anchor, carries its push
+        self.anchor_on_seabed = (
+            bed is not None and abs(a[2] - float(bed.height(a[0], a[1]))) <= 1e-12 * self.L
+        )
 
     # --- properties, terms, scales -------------------------------------------------------------
     def _terms(self):

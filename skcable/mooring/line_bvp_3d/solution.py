@@ -79,8 +79,7 @@ class LineBVP3DSolution(LineFields, Shown):
     @property
     def anchor_on_seabed(self) -> bool:
         """Whether the anchor lies on the seabed (to 1e-12 of the length)."""
-        bed, a = self.problem.seabed, self.anchor
-        return bed is not None and abs(a[2] - float(bed.height(a[0], a[1]))) <= 1e-12 * self.length
+        return self.problem.anchor_on_seabed
 
     def _contact(self):
         problem, terms = self.problem, self.state.terms

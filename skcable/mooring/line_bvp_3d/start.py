@@ -15,7 +15,7 @@ seen in that plane by `InPlane` (its seabed the profile under the chord,
   flat seabed at the anchor's level (J.M. Jonkman, NREL, 2007), lifted onto the seabed where it
   dips below it; a line whose slack would lie in a heap on a flat seabed refused
   (``InputError("length")``);
-- ``closed_form_start(sloped=False)``: the lifted line on a straight slope too
+- `lifted_start`: the lifted line on a straight slope too
   (`skcable.mooring.line_bvp.start.lifted_start`);
 - `segmented_start`: the multi-segment closed form `skcable.mooring.Line` of the segments with
   their clump weights and buoys at the joints, on a flat seabed (`skcable.mooring.line_bvp.start
@@ -46,6 +46,7 @@ __all__ = [
     "closed_form_start",
     "frame_of",
     "in_plane",
+    "lifted_start",
     "on_slope",
     "plane_of",
     "segmented_start",
@@ -161,21 +162,32 @@ def in_plane(problem) -> InPlane:
     return InPlane(problem, e, up, load, EA)
 
 
-def closed_form_start(problem, sloped=True) -> np.ndarray:
+def closed_form_start(problem) -> np.ndarray:
     """The first iterate on ``problem``'s dofs, ``[x, y, z, T]``, the ends exact (module
     docstring): the plane line's `skcable.mooring.line_bvp.start.closed_form_start` in the plane
-    of the ends; ``sloped=False``: its `lifted_start` (on a plane seabed through the anchor, the
-    flat grounded line lifted onto it instead of the line on the slope)."""
+    of the ends."""
+    return _in_space(problem, plane_start.closed_form_start)
+
+
+def lifted_start(problem) -> np.ndarray:
+    """`closed_form_start`'s alternative on a plane seabed through the anchor: the flat grounded
+    line lifted onto it instead of the line on the slope (the plane line's
+    `skcable.mooring.line_bvp.start.lifted_start` in the plane of the ends)."""
+    return _in_space(problem, plane_start.lifted_start)
+
+
+def _in_space(problem, start) -> np.ndarray:
+    """The plane line's closed form ``start`` of ``problem`` seen in the plane of its ends; a
+    vertical line (``r = 0``) straight, carrying the weight below each point."""
     a = problem.anchor
     r, _, dh = plane_of(a, problem.fairlead)
-    if r == 0.0:  # a vertical line: straight, carrying the weight below each point
+    if r == 0.0:
         w, _ = uniform_line(problem)
         s, s_t = problem.basis.doflocs[0], problem.tension_points()
         z = a[2] + s * dh / problem.L
         T = np.maximum(w * s_t, 1e-6 * w * problem.L)
         return problem.with_ends([np.full(s.size, a[0]), np.full(s.size, a[1]), z], T)
-    view = in_plane(problem)
-    return plane_start.closed_form_start(view) if sloped else plane_start.lifted_start(view)
+    return start(in_plane(problem))
 
 
 def segmented_start(problem):
