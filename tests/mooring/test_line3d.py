@@ -785,3 +785,75 @@ def test_a_rope_in_a_strong_current_on_a_seabed_is_graded_by_steps_of_the_curren
     scale = np.abs(uniform.force_on_fairlead).max()
     assert np.abs(graded.force_on_fairlead - uniform.force_on_fairlead).max() <= 1e-8 * scale
     assert np.abs(graded.force_on_anchor - uniform.force_on_anchor).max() <= 1e-8 * scale
+
+
+def _scene_3d(anchor, fairlead, segments, **options):
+    """The checked `Scene3D` that `solve_line_bvp_3d` solves."""
+    from skcable.mooring.line_bvp_3d.inputs import scene
+
+    return scene(anchor, fairlead, LineBVP3D(segments, **options).checked)
+
+
+def test_a_line_hangs_in_its_vertical_plane_only_where_nothing_pushes_it_out():
+    """`plane_scene`: the chord at 30° azimuth (``E``), a seabed sloping along it by 0.05 from
+    30 m below the anchor: the plane line's span is the chord's horizontal length, its height the
+    chord's, its seabed ``b(x) = −30 − 0.05 x`` relative to the anchor (the plane's formula). A
+    seabed sloping across the chord by 1e-3, a current, a strain law that is not a constant
+    stiffness, a grid seabed, or a vertical line: None (the line in space is not the plane
+    line's there)."""
+    from skcable.bvp.current import UniformCurrent
+    from skcable.mooring.line_bvp_3d.vertical_plane import plane_scene
+
+    along = Plane(A[2] - 30.0, -0.05 * E, origin=A[:2])
+    seg = [LineSegment(500.0, 600.0, 4e8, diameter=0.1, cd_normal=1.2)]
+    plane = plane_scene(_scene_3d(A, B, seg, seabed=along), 10.0)
+    assert plane.span == pytest.approx(400.0, rel=1e-15) and plane.dh == pytest.approx(180.0, rel=1e-15)
+    x = np.array([0.0, 123.0, 399.0])
+    np.testing.assert_allclose(plane.seabed(x), -30.0 - 0.05 * x, rtol=0, atol=1e-12)
+    np.testing.assert_allclose(plane.seabed.slope(x), -0.05, rtol=0, atol=1e-15)
+    assert plane.time_limit == 10.0 and plane.segments[0].length == 500.0
+    across = Plane(A[2] - 30.0, -0.05 * E + 1e-3 * np.array([-E[1], E[0]]), origin=A[:2])
+    grid = Grid(np.linspace(-100, 600, 8), np.linspace(-100, 600, 8), np.full((8, 8), A[2] - 30.0))
+    law = StrainTable([0.0, 0.01, 0.02], [0.0, 2e6, 6e6])
+    for space in (
+        _scene_3d(A, B, seg, seabed=across),
+        _scene_3d(A, B, seg, current=UniformCurrent((0.5, 0.0))),
+        _scene_3d(A, B, [LineSegment(500.0, 600.0, law)]),
+        _scene_3d(A, B, seg, seabed=grid),
+        _scene_3d(A, A + np.array([0.0, 0.0, 180.0]), seg),
+    ):
+        assert plane_scene(space, 10.0) is None
+
+
+def test_where_its_strategy_fails_the_line_in_space_takes_the_plane_lines_solve(monkeypatch):
+    """Where the line in space's own strategy fails (made to, here), a line in the vertical plane
+    of its ends is solved by the plane line's strategy, then in space on that mesh from it: its end
+    forces are the plane line's (`solve_line_bvp`, solved apart on the same scene) to round-off
+    (the two discretise one line on one mesh), out of the plane none; a line off that plane (a
+    seabed sloping across the chord) fails as before, and so does ``mesh="uniform"``."""
+    from skcable import mooring
+    from skcable.mooring.line_bvp_3d.driver import LineBVP3DSolver
+
+    def fails(self, start=None):
+        raise ConvergenceError("solve_line_bvp_3d: made to fail", [1.0])
+
+    monkeypatch.setattr(LineBVP3DSolver, "strategy", fails)
+    along = Plane(A[2] - 30.0, -0.05 * E, origin=A[:2])
+    segments = [(500.0, 600.0, 4e8)]
+    want = mooring.solve_line_bvp(
+        400.0, 180.0, segments, seabed=lambda x: -30.0 - 0.05 * np.asarray(x),
+        seabed_slope=lambda x: np.full(np.shape(x), -0.05), n_elements=48,
+    )  # fmt: skip
+    space = solve_line_bvp_3d(A, B, segments, seabed=along, n_elements=48)
+    assert space.s_touchdown > 0  # on the seabed
+    h_a, h_b = space.force_on_anchor[:2] @ E, space.force_on_fairlead[:2] @ E
+    got = np.array([h_a, space.force_on_anchor[2], h_b, space.force_on_fairlead[2]])
+    expected = np.array([want.H_A, -want.V_A, -want.H_B, -want.V_B])
+    np.testing.assert_allclose(got, expected, rtol=0, atol=1e-12 * np.abs(expected).max())
+    side = np.array([-E[1], E[0]])
+    assert abs(space.force_on_fairlead[:2] @ side) <= 1e-12 * space.T_B
+    across = Plane(A[2] - 30.0, -0.05 * E + 1e-3 * side, origin=A[:2])
+    for options in (dict(seabed=across), dict(seabed=along, mesh="uniform")):
+        with pytest.raises(ConvergenceError, match="made to fail") as failed:
+            solve_line_bvp_3d(A, B, segments, n_elements=48, **options)
+        assert "plane line" not in str(failed.value)

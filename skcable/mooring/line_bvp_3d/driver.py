@@ -47,9 +47,17 @@ r"""The strategy that takes a line in space from its closed-form start to the co
    on the seabed from the anchor has no equilibrium in tension: ``InputError("friction")``,
    `skcable.mooring.line_bvp.check.refuse_sliding`), and its equilibrium
    residual within its bound (`skcable.mooring.line_bvp_3d.solution.LineBVP3DSolution.check`).
+7. **In its vertical plane** (`LineBVP3DSolver.in_vertical_plane`): where 1–6 fail, a line that
+   hangs in the vertical plane of its ends (no current or cable terms; no seabed, or a `Plane`
+   sloping along the chord; constant stiffnesses: `skcable.mooring.line_bvp_3d.vertical_plane`)
+   and does not ask for the uniform mesh on a seabed is solved by the plane line's strategy
+   (`skcable.mooring.line_bvp.driver`) within what is left of the budget, then in space on its
+   mesh from it (one discrete line: Newton takes a step or two), fitted (5) and checked (6). In
+   the differential survey this solves scenes 2:191 and 3:34, which end in compression in space.
 
 A failure raises the uniform level's `skcable.ConvergenceError` (2–4: the first attempt's of
-those), with its history, where the graded meshes failed too; with friction
+those), with its history, where the graded meshes failed too, and says where the plane line's
+strategy failed too (7); with friction
 and the anchor above the seabed, saying where friction fully mobilised may take more than the
 pull (`LineBVP3DSolver.with_diagnosis`). Every solve
 counts against the scene's ``time_limit`` (`skcable._budget.Budget`): past it, a
@@ -59,15 +67,17 @@ counts against the scene's ``time_limit`` (`skcable._budget.Budget`): past it, a
 
 from __future__ import annotations
 
+import time
 from dataclasses import dataclass, field
 from functools import cache, partial
 
 import numpy as np
 
 from skcable._budget import Budget
-from skcable.errors import ConvergenceError
+from skcable.errors import ConvergenceError, InputError
 from skcable.fe import first_converged
 from skcable.mooring.bathymetry import OffGrid
+from skcable.mooring.line_bvp.driver import LineBVPSolver
 from skcable.mooring.line_bvp.fitting import landing, touchdown
 from skcable.mooring.line_bvp.mesh import (
     COARSE,
@@ -83,6 +93,7 @@ from skcable.mooring.line_bvp_3d import start as closed_forms
 from skcable.mooring.line_bvp_3d.problem import LineProblem3D
 from skcable.mooring.line_bvp_3d.solution import LineBVP3DSolution
 from skcable.mooring.line_bvp_3d.start import closed_form_start
+from skcable.mooring.line_bvp_3d.vertical_plane import in_space, plane_scene
 
 __all__ = ["LineBVP3DSolver"]
 
@@ -141,12 +152,61 @@ class LineBVP3DSolver(LineSolver):
         return LineBVP3DSolution(solved.problem, solved.dofs, solved.history, solved.state)
 
     def unbounded(self, start: LineBVP3DSolution | None = None) -> LineBVP3DSolution:
-        """`solve` without the budget's conversion; a failure with friction and the anchor above
-        the seabed diagnosed (`with_diagnosis`)."""
+        """`solve` without the budget's conversion; where the strategy fails, the line in the
+        vertical plane of its ends by the plane line's (`in_vertical_plane`); a failure with
+        friction and the anchor above the seabed diagnosed (`with_diagnosis`)."""
         try:
             return self.strategy(start)
         except ConvergenceError as failed:
-            raise self.with_diagnosis(failed) from None
+            try:
+                solution = self.in_vertical_plane()
+            except ConvergenceError as plane:
+                failed.args = (f"{failed}; {plane}",)
+                solution = None
+            if solution is None:
+                raise self.with_diagnosis(failed) from None
+            return solution
+
+    def in_vertical_plane(self) -> LineBVP3DSolution | None:
+        """The line that hangs in the vertical plane of its ends (module docstring, 7;
+        `skcable.mooring.line_bvp_3d.vertical_plane.plane_scene`) solved by the plane line's
+        strategy (`skcable.mooring.line_bvp.driver.LineBVPSolver`) within what is left of the
+        budget, then in space on that mesh from it, fitted and checked; None where the line
+        does not hang in that plane (or asks for the uniform mesh, `plane_meshes`), a
+        `ConvergenceError` saying why where that fails (the plane line refusing or failing, a
+        slack stretch)."""
+        left = self.budget.deadline - time.monotonic()
+        plane = plane_scene(self.scene, left) if left > 0 and self.plane_meshes else None
+        if plane is None:
+            return None
+        try:
+            solution = LineBVPSolver(plane).solve()
+        except (ConvergenceError, InputError) as failed:
+            reason = str(failed.args[0]).split("; error.last")[0]
+            raise ConvergenceError(
+                f"in the vertical plane of its ends the plane line's strategy failed too ({reason})",
+                getattr(failed, "history", []),
+            ) from None
+        old = solution.problem
+        if old.slack_end > 0:
+            raise ConvergenceError(
+                "in the vertical plane of its ends friction holds a slack stretch on the seabed, "
+                "which the 3-D line does not model (solve_line_bvp does)",
+                solution.history,
+            )
+        nodes = np.sort(old.mesh.p[0])
+        edges = [p for p in (solution.s_landing, solution.s_touchdown) if p > 0]
+        problem = self.problem(nodes.size - 1, edges if self.scene.fit_touchdown else (), nodes_at=nodes)
+        solved = self.run(problem, in_space(problem, old, solution.dofs), near=True)
+        return self.checked(self.fitted(solved) if self.scene.fit_touchdown else solved)
+
+    @property
+    def plane_meshes(self) -> bool:
+        """Whether the plane line's meshes are the scene's (`in_vertical_plane`): not where the
+        scene asks for the uniform mesh on a seabed with a fitted touchdown (the plane line's are
+        graded there)."""
+        sc = self.scene
+        return not (sc.mesh == "uniform" and sc.seabed is not None and sc.fit_touchdown > 0)
 
     def strategy(self, start: LineBVP3DSolution | None = None) -> LineBVP3DSolution:
         """The strategy of the module docstring, from ``start`` where given."""

@@ -39,7 +39,7 @@ import numpy as np
 from skcable.errors import InputError
 from skcable.mooring.bathymetry import Plane
 from skcable.mooring.line_bvp import start as plane_start
-from skcable.mooring.line_bvp.contact import Seabed
+from skcable.mooring.line_bvp_3d.vertical_plane import plane_seabed
 
 __all__ = [
     "InPlane",
@@ -111,7 +111,7 @@ class InPlane:
 
     The span and height of the fairlead in the plane (``e``, ``up``), the uniform line's load
     ``w`` and stiffness ``EA`` (`uniform_line`), the seabed under the chord relative to the
-    anchor (a plane `Seabed` of the profile, flat where the bathymetry is), the segments, point
+    anchor (`plane_seabed`: the profile, flat where the bathymetry is), the segments, point
     loads, friction and cable terms; `with_ends` maps the plane's ``[x, y]`` back into space."""
 
     def __init__(self, problem, e, up, w, EA):
@@ -130,14 +130,7 @@ class InPlane:
         self.seabed = None
         bed = problem.seabed
         if bed is not None and up[2] == 1.0:
-            profile = bed.along(a[:2], e[:2])
-            flat = getattr(bed, "flat", None)
-            self.seabed = Seabed(
-                function=lambda x: profile(x) - a[2],
-                slope_fn=profile.slope,
-                flat=None if flat is None else flat - a[2],
-                step=1e-6 * problem.L,
-            )
+            self.seabed = plane_seabed(bed, a, e, problem.L)
 
     @property
     def constant(self) -> bool:
