@@ -469,20 +469,6 @@ class LineBVPSolver(LineSolver):
             solution = self.rerun(problem, solution)
         return solution
 
-    def moved_edges(self, solution, fitted, look):
-        """The touchdown and landing of ``solution`` where they moved more than 1e-9 of the
-        length from the nodes ``fitted`` (and ``look``): ``(fitted, moved, settled)``, settled
-        when they moved less than 1e-6 of it (the tension past the slack stretch's end is worth a
-        bracket only then)."""
-        if not look:
-            return fitted, False, True
-        L, edges, moved = self.length, self.edges(solution), np.inf
-        if len(edges) == len(fitted):
-            moved = max((abs(a - b) for a, b in zip(edges, fitted, strict=True)), default=0.0)
-        if moved > 1e-9 * L:
-            return edges, True, moved <= 1e-6 * L
-        return fitted, False, True
-
     def moved_slack_end(self, solution, s0, tried, settled, tol):
         """The next end of the slack stretch (`next_slack_end`) where the tension past the one
         ``solution`` was solved with exceeds ``tol``, or where ``s0`` is not yet that one:

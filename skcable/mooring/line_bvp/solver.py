@@ -80,6 +80,24 @@ class LineSolver:
         problem = self.problem(COARSE)
         return problem.seabed is not None and not problem.anchor_on_seabed
 
+    def edges(self, solved) -> list[float]:
+        """The touchdown and the landing of ``solved`` to put nodes at (m of arc length)."""
+        raise NotImplementedError
+
+    def moved_edges(self, solved, fitted, look=True):
+        """The touchdown and landing of ``solved`` (`edges`) where they moved more than 1e-9 of
+        the length from the nodes ``fitted`` (and ``look``): ``(fitted, moved, settled)``,
+        settled when they moved less than 1e-6 of it (the plane line's tension past its slack
+        stretch's end is worth a bracket only then)."""
+        if not look:
+            return fitted, False, True
+        L, edges, moved = solved.problem.L, self.edges(solved), np.inf
+        if len(edges) == len(fitted):
+            moved = max((abs(a - b) for a, b in zip(edges, fitted, strict=True)), default=0.0)
+        if moved > 1e-9 * L:
+            return edges, True, moved <= 1e-6 * L
+        return fitted, False, True
+
     def run(self, problem, z0, near: bool = False):
         """One solve of ``problem`` from ``z0`` with the driver's Newton options
         (`skcable.mooring.line_bvp.iterate.solve_on`; ``near``: full steps first), counted

@@ -334,19 +334,15 @@ class LineBVP3DSolver(LineSolver):
     def fitted(self, solved) -> Solved:
         """Nodes at the touchdown and the landing, moved until they settle (module docstring, 5):
         from the nodes ``solved``'s mesh has, none left where the line no longer touches."""
-        L, placed = solved.problem.L, list(solved.problem.fitted)
+        placed = list(solved.problem.fitted)
         for _ in range(self.scene.fit_touchdown):
-            points = self.edges(solved)
-            settled = len(points) == len(placed) and all(
-                abs(a - b) <= 1e-9 * L for a, b in zip(points, placed, strict=True)
-            )
-            if settled:
+            placed, moved, _ = self.moved_edges(solved, placed)
+            if not moved:
                 break
-            solved, placed = self.refit(solved, points), points
+            solved = self.refit(solved, placed)
         return solved
 
-    @staticmethod
-    def edges(solved) -> list[float]:
+    def edges(self, solved) -> list[float]:
         """The landing and the touchdown of ``solved`` where it has them (m of arc length)."""
         found = (
             landing(solved.problem, solved.dofs, solved.state),
