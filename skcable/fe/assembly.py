@@ -290,9 +290,3 @@ class Assembly:
         with ``add_elements(ab, Ke)`` (``Ke`` as `element_matrices` returns)."""
         rows, cols = self.pattern
         return BandedSystem(self.N, free, rows, cols, self._location)
-
-    # --- fields ----------------------------------------------------------------------------------
-    def field_of(self, name: str) -> slice:
-        """The slice of the global vector that holds field ``name``."""
-        k = self.fields.index(name)
-        return slice(int(self.offsets[k]), int(self.offsets[k + 1]))

@@ -147,11 +147,6 @@ class BandedSystem:
         the lower triangle (whose factorisation runs on unit strides: faster than the upper's)."""
         return np.zeros((self.kl + 1, self.n), order="F")
 
-    def add_elements_lower(self, ab: np.ndarray, Ke: np.ndarray) -> np.ndarray:
-        """Add the lower triangle of symmetric element matrices into a lower band ``ab``."""
-        ab += self.lower_of(Ke)
-        return ab
-
     def lower_of(self, Ke: np.ndarray) -> np.ndarray:
         """A new lower band ``(kl + 1, n)`` (Fortran order, as `band_lower`) holding the lower
         triangle of the sum of symmetric element matrices ``Ke``."""

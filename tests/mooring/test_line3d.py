@@ -857,3 +857,29 @@ def test_where_its_strategy_fails_the_line_in_space_takes_the_plane_lines_solve(
         with pytest.raises(ConvergenceError, match="made to fail") as failed:
             solve_line_bvp_3d(A, B, segments, n_elements=48, **options)
         assert "plane line" not in str(failed.value)
+
+
+def test_the_line_in_spaces_touchdown_and_landing_are_the_plane_lines():
+    """`s_touchdown` and `s_landing` of the line in space are where the hanging part's force is
+    tangent to the seabed (`skcable.mooring.line_bvp.fields.LineFields`), as the plane line's:
+    without fitting (``fit_touchdown=0``, uniform meshes of 64 elements), a line landing on a
+    slope below its anchor and a line anchored on a flat seabed give the plane line's within 1e-9
+    of the length (one discrete line, measured 1e-12). The last contact node, which the line in
+    space reported before, lies 1.4 m and 0.17 m past the touchdown."""
+    from skcable import mooring
+
+    for span, dh, segment, height, slope in (
+        (400.0, 180.0, (500.0, 600.0, 4e8), -30.0, -0.05),
+        (800.0, 150.0, (850.0, 1000.0, 5e8), 0.0, 0.0),
+    ):
+        plane = mooring.solve_line_bvp(
+            span, dh, [segment], seabed=lambda x, h=height, b=slope: h + b * np.asarray(x),
+            seabed_slope=lambda x, b=slope: np.full(np.shape(x), b), n_elements=64, fit_touchdown=0,
+        )  # fmt: skip
+        space = solve_line_bvp_3d(
+            (0.0, 0.0, 0.0), (span, 0.0, dh), [segment], seabed=Plane(height, (slope, 0.0)),
+            n_elements=64, fit_touchdown=0,
+        )  # fmt: skip
+        assert plane.s_touchdown > 0 and abs(space.s_touchdown - plane.s_touchdown) <= 1e-9 * plane.length
+        assert abs(space.s_landing - plane.s_landing) <= 1e-9 * plane.length
+        assert space.length_on_seabed == space.s_touchdown - space.s_landing

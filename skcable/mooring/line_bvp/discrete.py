@@ -110,6 +110,8 @@ class DiscreteLine:
     contact_rows: Any = None
     #: the seabed (its ``height`` of the horizontal coordinates, m), or None
     seabed: Any = None
+    #: whether the anchor lies on the seabed (to 1e-12 of the length): each problem sets it
+    anchor_on_seabed: bool = False
     load_scale = 1.0
     length_scale = 1.0
     #: the cable terms besides the weight (`skcable.bvp.terms.CableTerm`)

@@ -40,6 +40,7 @@ from skcable.bvp.terms import CableState, term_outputs
 from skcable.errors import ConvergenceError
 from skcable.mooring.line_bvp.check import equilibrium_field, strong_residual
 from skcable.mooring.line_bvp.discrete import DiscreteLine, LineState
+from skcable.mooring.line_bvp.fitting import landing, touchdown
 
 __all__ = ["LineFields"]
 
@@ -53,8 +54,65 @@ class LineFields:
     length: float
     state: LineState
     history: list
+    #: the contact nodes' arc lengths (m) and which lie on the seabed (the final active set)
+    contact_s: np.ndarray
+    in_contact: np.ndarray
     #: the public function that solves it, for messages
     solver = "a line BVP"
+
+    # --- where the line meets the seabed -------------------------------------------------------
+    @property
+    def anchor_on_seabed(self) -> bool:
+        """Whether the anchor lies on the seabed (to 1e-12 of the length:
+        ``problem.anchor_on_seabed``)."""
+        return bool(self.problem.anchor_on_seabed)
+
+    @cached_property
+    def s_touchdown(self) -> float:
+        """Where the line leaves the seabed for the last time towards the fairlead: the
+        unstretched arc length from the anchor (m) where the suspended part's tension is tangent
+        to the seabed (`skcable.mooring.line_bvp.fitting.touchdown`; without cable terms the
+        vertical balance ``V_B - (W - W(s)) = H_B b'(x(s))``), a point between mesh nodes, not
+        the last contact node; 0 without contact. Where only the anchor's node presses on the
+        seabed, the touchdown may lie before the first node: it is sought there (0 where the
+        balance has no root near the anchor)."""
+        anchor_only = self.anchor_on_seabed and self.in_contact.size and self.in_contact[0]
+        beyond = self.touches_beyond_anchor()
+        if not (beyond or anchor_only):
+            return 0.0
+        s_td = touchdown(self.problem, self.dofs, self.state, from_anchor=not beyond)
+        if s_td is None and beyond:
+            raise ConvergenceError(
+                f"{self.solver}: no sign change of the vertical balance near the contact edge", self.history
+            )
+        return 0.0 if s_td is None else s_td
+
+    @cached_property
+    def s_landing(self) -> float:
+        """Where a line hanging from an anchor above the seabed first lands on it: the unstretched
+        arc length from the anchor (m) where the part hanging from it meets the seabed
+        tangentially (`skcable.mooring.line_bvp.fitting.landing`: ``W(s) - V_A = H_A b'(x(s))``
+        without cable terms); 0 where the anchor lies on the seabed or nothing touches."""
+        if self.anchor_on_seabed or not self.in_contact.any():
+            return 0.0
+        found = landing(self.problem, self.dofs, self.state)
+        if found is None:
+            raise ConvergenceError(
+                f"{self.solver}: no sign change of the vertical balance near the contact edge", self.history
+            )
+        return found
+
+    @property
+    def length_on_seabed(self) -> float:
+        """``s_touchdown - s_landing`` (m): the unstretched length between the first landing and
+        the last touchdown (a free stretch over a bump in between included); 0 without contact."""
+        if not self.in_contact.any():
+            return 0.0
+        return self.s_touchdown - self.s_landing
+
+    def touches_beyond_anchor(self) -> bool:
+        """Whether a node other than the anchor's lies on the seabed."""
+        return bool(self.in_contact[self.contact_s > 0].any())
 
     def arc(self, s) -> np.ndarray:
         """``s`` (m) as an array, checked to lie on the line ``[0, length]``."""

@@ -7,10 +7,9 @@ from functools import cached_property
 
 import numpy as np
 
-from skcable.errors import ConvergenceError
 from skcable.mooring.line_bvp.contact import anchor_split
 from skcable.mooring.line_bvp.fields import LineFields
-from skcable.mooring.line_bvp.fitting import LineBalance, landing, touchdown
+from skcable.mooring.line_bvp.fitting import LineBalance
 from skcable.mooring.line_bvp.problem import LineProblem, LineState
 from skcable.mooring.line_bvp.stiffness import fairlead_stiffness
 from skcable.results import ProfileMixin
@@ -91,7 +90,6 @@ class LineBVPSolution(LineFields, ProfileMixin):
         i, N = problem.contact, problem.N  # along the line
         self.contact_s = problem.basis.doflocs[0][i]
         self.contact_xy = np.column_stack([z[i], z[N + i]])
-        self.anchor_on_seabed = problem.anchor_on_seabed
         if i.size:
             H_A, V_A = self._contact(H_A, V_A)
         else:
@@ -173,57 +171,10 @@ class LineBVPSolution(LineFields, ProfileMixin):
         x = self.xy(np.array(s))[0]
         return float(self.problem.seabed.slope(np.array([x]))[0])
 
-    @cached_property
-    def _touchdown(self):
-        """(s, x) of the last touchdown: where the suspended part's tension is tangent to the
-        seabed (`skcable.mooring.line_bvp.fitting.touchdown`; without cable terms the vertical
-        balance ``V_B - (W - W(s)) = H_B b'(x(s))``). Where only the anchor's node presses on the
-        seabed, the touchdown may lie before the first node: it is sought there (0 where the
-        balance has no root near the anchor)."""
-        anchor_only = self.anchor_on_seabed and self.in_contact.size and self.in_contact[0]
-        beyond = self.touches_beyond_anchor()
-        if not (beyond or anchor_only):
-            return 0.0, 0.0
-        s_td = touchdown(self.problem, self.dofs, self.state, from_anchor=not beyond)
-        if s_td is None and beyond:
-            raise ConvergenceError(
-                "solve_line_bvp: no sign change of the vertical balance near the contact edge", self.history
-            )
-        s_td = 0.0 if s_td is None else s_td
-        return s_td, float(self.xy(np.array(s_td))[0])
-
-    @cached_property
-    def s_landing(self):
-        """Where a line hanging from an anchor above the seabed first lands on it: the unstretched
-        arc length from A (m) where the part hanging from A meets the seabed tangentially
-        (`skcable.mooring.line_bvp.fitting.landing`: ``W(s) - V_A = H_A b'(x(s))`` without
-        cable terms); 0 when A lies on the seabed or nothing touches."""
-        if self.anchor_on_seabed or not self.in_contact.any():
-            return 0.0
-        found = landing(self.problem, self.dofs, self.state)
-        if found is None:
-            raise ConvergenceError(
-                "solve_line_bvp: no sign change of the vertical balance near the contact edge", self.history
-            )
-        return found
-
-    @property
-    def s_touchdown(self):
-        return self._touchdown[0]
-
     @property
     def x_touchdown(self):
-        return self._touchdown[1]
-
-    @property
-    def length_on_seabed(self):
-        if not self.in_contact.any():
-            return 0.0
-        return self.s_touchdown - self.s_landing
-
-    def touches_beyond_anchor(self):
-        """Whether a node other than the anchor's lies on the seabed."""
-        return bool(self.in_contact[self.contact_s > 0].any())
+        s_td = self.s_touchdown
+        return float(self.xy(np.array(s_td))[0]) if s_td > 0 else 0.0
 
     def tension_profile(self):
         """The P1-DG tension per element, sorted along the line: (s_left, s_right, T_left, T_right)."""

@@ -42,8 +42,12 @@ class LineBVP3DSolution(LineFields, Shown):
         The seabed's force on the line at each contact node, friction included (N).
     in_contact : ndarray of bool
         The nodes on the seabed (the final active set).
-    s_touchdown : float
-        The arc length (m) of the last contact node towards the fairlead (0 without contact).
+    s_touchdown, s_landing, length_on_seabed : float
+        Where the line leaves the seabed for the last time towards the fairlead, where a line
+        hanging from an anchor above the seabed first lands on it (unstretched arc lengths from
+        the anchor, m: where the hanging part's force is tangent to the seabed, between mesh
+        nodes, as the plane line's; `skcable.mooring.line_bvp.fields.LineFields`), and the
+        length between them; 0 without contact.
     history, iterations
         Newton's merit per iteration of the last solve.
     problem, state
@@ -76,11 +80,6 @@ class LineBVP3DSolution(LineFields, Shown):
         """The shortest element (m)."""
         return float(np.min(np.diff(np.sort(self.problem.mesh.p[0]))))
 
-    @property
-    def anchor_on_seabed(self) -> bool:
-        """Whether the anchor lies on the seabed (to 1e-12 of the length)."""
-        return self.problem.anchor_on_seabed
-
     def _contact(self):
         problem, terms = self.problem, self.state.terms
         self.anchor_seabed_force = np.zeros(3)
@@ -88,7 +87,6 @@ class LineBVP3DSolution(LineFields, Shown):
             self.contact_s, self.contact_xyz = np.zeros(0), np.zeros((0, 3))
             self.normal_force, self.gap = np.zeros(0), np.zeros(0)
             self.contact_force, self.in_contact = np.zeros((0, 3)), np.zeros(0, dtype=bool)
-            self.s_touchdown = 0.0
             return
         rows, N, z = problem.contact_rows, problem.N, self.dofs
         i = rows.nodes
@@ -98,7 +96,6 @@ class LineBVP3DSolution(LineFields, Shown):
         self.normal_force = terms.lam * np.sqrt(terms.friction[1])  # λ|n|, signed off the seabed
         self.contact_force = (normal + friction).T
         self.gap, self.in_contact = terms.gap, terms.active
-        self.s_touchdown = float(self.contact_s[self.in_contact].max()) if self.in_contact.any() else 0.0
 
     # --- fields (`skcable.mooring.line_bvp.fields.LineFields`: state_at, tangent, T_of_s, weight) -----
     def xyz(self, s) -> np.ndarray:
