@@ -553,7 +553,16 @@ def _what(r) -> str:
 
 def _cause(message: str) -> str:
     """The kind of a solver's error, without its numbers."""
-    for cause in ("compression", "stagnates", "no descent", "no convergence", "singular", "slack stretch"):
+    causes = (
+        "compression",
+        "stagnates",
+        "no descent",
+        "no convergence",
+        "singular",
+        "slack stretch",
+        "no sign change",
+    )
+    for cause in causes:
         if cause in message:
             return cause
     return message.split(":")[0] or "solved"

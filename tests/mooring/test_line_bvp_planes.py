@@ -287,7 +287,7 @@ def test_a_failed_solve_keeps_the_line_on_its_finest_mesh():
     np.testing.assert_allclose(plane_forces(kept), want, rtol=0, atol=1e-6 * np.abs(want).max())
     # the line in space keeps its solution too: scene 3:223 converged in compression only, and
     # the plane line fails it as well (the line in space's last resort, in its vertical plane)
-    with pytest.raises(ConvergenceError, match="in compression") as failed:
+    with pytest.raises(ConvergenceError) as failed:
         solvers(SPACE_IN_COMPRESSION)[1]()
     assert "the plane line's strategy failed too" in str(failed.value)
     kept = failed.value.last

@@ -169,12 +169,6 @@ class LineBVPSolver(LineSolver):
             ]
         )
 
-    def edges(self, solution):
-        """The touchdown and the landing to put nodes at (none without fitting or contact)."""
-        if not (self.scene.fit_touchdown and solution.s_touchdown > 0):
-            return []
-        return [solution.s_touchdown] + ([solution.s_landing] if solution.s_landing > 0 else [])
-
     # --- the stages ---------------------------------------------------------------------------
     def solve(self) -> LineBVPSolution:
         """The line on the scene's mesh: one level, or nested levels (module docstring, 1); a

@@ -42,7 +42,13 @@ from skcable.mooring.line_bvp.check import equilibrium_field, strong_residual
 from skcable.mooring.line_bvp.discrete import DiscreteLine, LineState
 from skcable.mooring.line_bvp.fitting import landing, touchdown
 
-__all__ = ["LineFields"]
+__all__ = ["NO_EDGE", "LineFields"]
+
+#: the failure where the balance of the hanging part has no root near the contact edge
+NO_EDGE = (
+    "no sign change of the vertical balance near the contact edge (its elements there may not "
+    "resolve where the line leaves the seabed: give more)"
+)
 
 
 class LineFields:
@@ -82,9 +88,7 @@ class LineFields:
             return 0.0
         s_td = touchdown(self.problem, self.dofs, self.state, from_anchor=not beyond)
         if s_td is None and beyond:
-            raise ConvergenceError(
-                f"{self.solver}: no sign change of the vertical balance near the contact edge", self.history
-            )
+            raise ConvergenceError(f"{self.solver}: {NO_EDGE}", self.history)
         return 0.0 if s_td is None else s_td
 
     @cached_property
@@ -97,9 +101,7 @@ class LineFields:
             return 0.0
         found = landing(self.problem, self.dofs, self.state)
         if found is None:
-            raise ConvergenceError(
-                f"{self.solver}: no sign change of the vertical balance near the contact edge", self.history
-            )
+            raise ConvergenceError(f"{self.solver}: {NO_EDGE}", self.history)
         return found
 
     @property

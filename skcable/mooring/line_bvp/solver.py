@@ -81,8 +81,17 @@ class LineSolver:
         return problem.seabed is not None and not problem.anchor_on_seabed
 
     def edges(self, solved) -> list[float]:
-        """The touchdown and the landing of ``solved`` to put nodes at (m of arc length)."""
-        raise NotImplementedError
+        """The touchdown and the landing of ``solved`` to put nodes at (m of arc length): its
+        solution's (`kept`; `edges_of`)."""
+        return self.edges_of(self.kept(solved))
+
+    def edges_of(self, solution) -> list[float]:
+        """The ``s_touchdown`` and ``s_landing`` of ``solution`` (either line's), where the
+        hanging parts' forces are tangent to the seabed
+        (`skcable.mooring.line_bvp.fields.LineFields`); none without fitting or contact."""
+        if not (self.scene.fit_touchdown and solution.s_touchdown > 0):
+            return []
+        return [solution.s_touchdown] + ([solution.s_landing] if solution.s_landing > 0 else [])
 
     def moved_edges(self, solved, fitted, look=True):
         """The touchdown and landing of ``solved`` (`edges`) where they moved more than 1e-9 of

@@ -78,7 +78,6 @@ from skcable.errors import ConvergenceError, InputError
 from skcable.fe import first_converged
 from skcable.mooring.bathymetry import OffGrid
 from skcable.mooring.line_bvp.driver import LineBVPSolver
-from skcable.mooring.line_bvp.fitting import landing, touchdown
 from skcable.mooring.line_bvp.mesh import (
     COARSE,
     REFINEMENT,
@@ -195,8 +194,7 @@ class LineBVP3DSolver(LineSolver):
                 solution.history,
             )
         nodes = np.sort(old.mesh.p[0])
-        edges = [p for p in (solution.s_landing, solution.s_touchdown) if p > 0]
-        problem = self.problem(nodes.size - 1, edges if self.scene.fit_touchdown else (), nodes_at=nodes)
+        problem = self.problem(nodes.size - 1, self.edges_of(solution), nodes_at=nodes)
         solved = self.run(problem, in_space(problem, old, solution.dofs), near=True)
         return self.checked(self.fitted(solved) if self.scene.fit_touchdown else solved)
 
@@ -249,7 +247,7 @@ class LineBVP3DSolver(LineSolver):
         if points and self.scene.fit_touchdown:
             try:
                 guess = self.edges(Solved(start.problem, z, [], start.problem.assemble(z)))
-            except OffGrid:  # the moved line off the seabed's grid: keep the start's nodes
+            except (OffGrid, ConvergenceError):  # off the seabed's grid, or no balance: the start's nodes
                 guess = []
             points = guess if len(guess) == len(points) else points
         problem = self.problem(self.scene.n_elements, points, nodes_at=start.problem.nodes_at)
@@ -341,14 +339,6 @@ class LineBVP3DSolver(LineSolver):
                 break
             solved = self.refit(solved, placed)
         return solved
-
-    def edges(self, solved) -> list[float]:
-        """The landing and the touchdown of ``solved`` where it has them (m of arc length)."""
-        found = (
-            landing(solved.problem, solved.dofs, solved.state),
-            touchdown(solved.problem, solved.dofs, solved.state),
-        )
-        return [p for p in found if p is not None]
 
     def refit(self, solved, points) -> Solved:
         """The line with nodes at ``points`` on ``solved``'s mesh (graded or uniform), from
