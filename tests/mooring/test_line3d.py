@@ -830,7 +830,9 @@ def test_where_its_strategy_fails_the_line_in_space_takes_the_plane_lines_solve(
     of its ends is solved by the plane line's strategy, then in space on that mesh from it: its end
     forces are the plane line's (`solve_line_bvp`, solved apart on the same scene) to round-off
     (the two discretise one line on one mesh), out of the plane none; a line off that plane (a
-    seabed sloping across the chord) fails as before, and so does ``mesh="uniform"``."""
+    seabed sloping across the chord) fails as before, and so does a scene whose meshes the plane
+    line would grade otherwise (``mesh="uniform"`` on a seabed; no seabed, where the line in space
+    keeps its uniform mesh)."""
     from skcable import mooring
     from skcable.mooring.line_bvp_3d.driver import LineBVP3DSolver
 
@@ -853,7 +855,7 @@ def test_where_its_strategy_fails_the_line_in_space_takes_the_plane_lines_solve(
     side = np.array([-E[1], E[0]])
     assert abs(space.force_on_fairlead[:2] @ side) <= 1e-12 * space.T_B
     across = Plane(A[2] - 30.0, -0.05 * E + 1e-3 * side, origin=A[:2])
-    for options in (dict(seabed=across), dict(seabed=along, mesh="uniform")):
+    for options in (dict(seabed=across), dict(seabed=along, mesh="uniform"), dict(seabed=None)):
         with pytest.raises(ConvergenceError, match="made to fail") as failed:
             solve_line_bvp_3d(A, B, segments, n_elements=48, **options)
         assert "plane line" not in str(failed.value)
@@ -883,3 +885,17 @@ def test_the_line_in_spaces_touchdown_and_landing_are_the_plane_lines():
         assert plane.s_touchdown > 0 and abs(space.s_touchdown - plane.s_touchdown) <= 1e-9 * plane.length
         assert abs(space.s_landing - plane.s_landing) <= 1e-9 * plane.length
         assert space.length_on_seabed == space.s_touchdown - space.s_landing
+
+
+def test_a_slack_stretch_is_refused_as_such_where_the_touchdown_has_no_balance():
+    """Two segments landing on a gentle slope with friction 0.2 on 24 elements: friction holds a
+    slack stretch near the anchor, which the line in space does not model; its solve ends in
+    compression there, and the balance that places the touchdown has no root near the contact
+    edge. The refusal names the slack stretch (the fitting stops where it finds no root, and the
+    checks say why), not the missing root."""
+    with pytest.raises(ConvergenceError, match="slack stretch") as failed:
+        solve_line_bvp_3d(
+            (0.0, 0.0, 0.0), (700.0, 0.0, 150.0), [(300.0, 1000.0, 5e8), (500.0, 800.0, 5e8)],
+            seabed=Plane(-20.0, (0.02, 0.0)), friction=0.2, n_elements=24,
+        )  # fmt: skip
+    assert "no sign change" not in str(failed.value).split(";")[0]

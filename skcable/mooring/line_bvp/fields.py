@@ -202,13 +202,16 @@ class LineFields:
         return max(1e-8 * float(np.abs(self.problem.w_q).max()), self._residual[1])
 
     def check(self) -> None:
-        """Raise `skcable.ConvergenceError` where `equilibrium_residual` exceeds `residual_bound`."""
+        """Raise `skcable.ConvergenceError` where `equilibrium_residual` exceeds `residual_bound`,
+        or where the touchdown or the landing has no balance (`s_touchdown`, `s_landing`: a
+        returned solution gives them)."""
         if not self.equilibrium_residual <= self.residual_bound:
             raise ConvergenceError(
                 f"{self.solver}: the equilibrium residual {self.equilibrium_residual:.3g} N/m exceeds "
                 f"{self.residual_bound:.3g} N/m",
                 self.history,
             )
+        self.s_touchdown, self.s_landing  # noqa: B018 (computed here: each raises where it has no root)
 
     @cached_property
     def strong_residual(self) -> np.ndarray:

@@ -50,10 +50,11 @@ r"""The strategy that takes a line in space from its closed-form start to the co
 7. **In its vertical plane** (`LineBVP3DSolver.in_vertical_plane`): where 1–6 fail, a line that
    hangs in the vertical plane of its ends (no current or cable terms; no seabed, or a `Plane`
    sloping along the chord; constant stiffnesses: `skcable.mooring.line_bvp_3d.vertical_plane`)
-   and does not ask for the uniform mesh on a seabed is solved by the plane line's strategy
-   (`skcable.mooring.line_bvp.driver`) within what is left of the budget, then in space on its
-   mesh from it (one discrete line: Newton takes a step or two), fitted (5) and checked (6). In
-   the differential survey this solves scenes 2:191 and 3:34, which end in compression in space.
+   on meshes the plane line grades alike (`LineBVP3DSolver.plane_meshes`) is solved by the
+   plane line's strategy (`skcable.mooring.line_bvp.driver`) within what is left of the budget,
+   then in space on its mesh from it (one discrete line: Newton takes a step or two), fitted (5)
+   and checked (6). In the differential survey this solves scenes 2:191 and 3:34, which end in
+   compression in space.
 
 A failure raises the uniform level's `skcable.ConvergenceError` (2–4: the first attempt's of
 those), with its history, where the graded meshes failed too, and says where the plane line's
@@ -162,6 +163,9 @@ class LineBVP3DSolver(LineSolver):
             except ConvergenceError as plane:
                 failed.args = (f"{failed}; {plane}",)
                 solution = None
+            except Budget.Spent:  # the plane line took what was left: this failure, not the budget's
+                failed.args = (f"{failed}; no time was left to solve it in the vertical plane of its ends",)
+                solution = None
             if solution is None:
                 raise self.with_diagnosis(failed) from None
             return solution
@@ -200,11 +204,12 @@ class LineBVP3DSolver(LineSolver):
 
     @property
     def plane_meshes(self) -> bool:
-        """Whether the plane line's meshes are the scene's (`in_vertical_plane`): not where the
-        scene asks for the uniform mesh on a seabed with a fitted touchdown (the plane line's are
-        graded there)."""
+        """Whether the plane line's meshes are the scene's (`in_vertical_plane`): uniform without
+        fitting, graded on a seabed with ``mesh="graded"``; not where the scene asks for uniform
+        meshes, on a seabed (``mesh="uniform"``) or without one, with a fitted touchdown (the plane
+        line grades its meshes by the start there)."""
         sc = self.scene
-        return not (sc.mesh == "uniform" and sc.seabed is not None and sc.fit_touchdown > 0)
+        return sc.fit_touchdown == 0 or (sc.seabed is not None and sc.mesh == "graded")
 
     def strategy(self, start: LineBVP3DSolution | None = None) -> LineBVP3DSolution:
         """The strategy of the module docstring, from ``start`` where given."""
@@ -334,7 +339,10 @@ class LineBVP3DSolver(LineSolver):
         from the nodes ``solved``'s mesh has, none left where the line no longer touches."""
         placed = list(solved.problem.fitted)
         for _ in range(self.scene.fit_touchdown):
-            placed, moved, _ = self.moved_edges(solved, placed)
+            try:
+                placed, moved, _ = self.moved_edges(solved, placed)
+            except ConvergenceError:  # no balance near the contact edge: the checks say why (a
+                break  # line in compression, a slack stretch) or refuse it (`LineFields.check`)
             if not moved:
                 break
             solved = self.refit(solved, placed)
