@@ -39,7 +39,7 @@ import numpy as np
 from skcable.errors import InputError
 from skcable.mooring.bathymetry import Plane
 from skcable.mooring.line_bvp import start as plane_start
-from skcable.mooring.line_bvp_3d.vertical_plane import plane_seabed
+from skcable.mooring.line_bvp_3d.vertical_plane import plane_of, plane_seabed
 
 __all__ = [
     "InPlane",
@@ -52,15 +52,6 @@ __all__ = [
     "segmented_start",
     "uniform_line",
 ]
-
-
-def plane_of(anchor, fairlead):
-    """``(r, e, dh)``: the horizontal distance (m), the unit horizontal direction (2,) from the
-    anchor to the fairlead (x where they are on one vertical) and the height (m)."""
-    d = np.asarray(fairlead, dtype=float) - np.asarray(anchor, dtype=float)
-    r = float(np.hypot(d[0], d[1]))
-    e = d[:2] / r if r > 0 else np.array([1.0, 0.0])
-    return r, e, float(d[2])
 
 
 def uniform_line(problem):

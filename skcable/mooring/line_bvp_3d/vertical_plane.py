@@ -1,7 +1,7 @@
 r"""A line in space that hangs in the vertical plane of its ends, as the plane line's scene.
 
 Anchor ``a`` and fairlead ``b`` span the vertical plane of the horizontal unit vector
-``e = (b − a)_h/r`` (`skcable.mooring.line_bvp_3d.start.plane_of`). A line whose loads all lie
+``e = (b − a)_h/r`` (`plane_of`). A line whose loads all lie
 in that plane, and whose seabed does not slope across it, hangs in it: without a current and
 cable terms, on no seabed, or on a `skcable.mooring.bathymetry.Plane` whose gradient is along
 ``e`` (``∇b · e⊥ = 0``), with segments of constant stiffness (the plane line's). Its plane
@@ -20,7 +20,16 @@ from skcable.mooring.bathymetry import Bathymetry, Plane
 from skcable.mooring.line_bvp.contact import Seabed
 from skcable.mooring.line_bvp.inputs import Scene
 
-__all__ = ["in_space", "plane_scene", "plane_seabed"]
+__all__ = ["in_space", "plane_of", "plane_scene", "plane_seabed"]
+
+
+def plane_of(anchor, fairlead):
+    """``(r, e, dh)``: the horizontal distance (m), the unit horizontal direction (2,) from the
+    anchor to the fairlead (x where they are on one vertical) and the height (m)."""
+    d = np.asarray(fairlead, dtype=float) - np.asarray(anchor, dtype=float)
+    r = float(np.hypot(d[0], d[1]))
+    e = d[:2] / r if r > 0 else np.array([1.0, 0.0])
+    return r, e, float(d[2])
 
 
 def plane_seabed(bed: Bathymetry, anchor, e, length: float) -> Seabed:
@@ -43,14 +52,12 @@ def plane_scene(scene, time_limit: float) -> Scene | None:
     plane of its ends (module docstring), solved within ``time_limit`` (s); None where the line
     does not hang in that plane (a current or cable terms, a seabed that is not a `Plane`
     sloping along the chord, a strain law that is not a constant stiffness) or is vertical."""
-    a, b = scene.anchor, scene.fairlead
-    chord = b - a
-    r = float(np.hypot(chord[0], chord[1]))
+    a = scene.anchor
+    r, e, dh = plane_of(a, scene.fairlead)
     if not r > 0 or scene.current is not None or scene.terms:
         return None
     if not all(seg.law is None or seg.law.kind == "constant" for seg in scene.segments):
         return None
-    e = chord[:2] / r
     bed = scene.seabed
     seabed = None
     if bed is not None:
@@ -62,7 +69,7 @@ def plane_scene(scene, time_limit: float) -> Scene | None:
         seabed = plane_seabed(bed, a, e, scene.length)
     return Scene(
         span=r,
-        dh=float(chord[2]),
+        dh=dh,
         segments=scene.segments,
         point_loads=scene.point_loads,
         seabed=seabed,
@@ -78,9 +85,7 @@ def in_space(problem, old, z) -> np.ndarray:
     """The plane line ``old``'s dofs ``z`` on ``problem``'s dofs (a line in space on the same
     ends): positions ``a + x e + y e_z`` at its nodes, tensions just inside its elements
     (`skcable.mooring.line_bvp.start.restart`'s interpolation), the ends exact."""
-    a = problem.anchor
-    chord = problem.fairlead - a
-    e = np.array([chord[0], chord[1], 0.0]) / float(np.hypot(chord[0], chord[1]))
+    a, (_, e, _) = problem.anchor, plane_of(problem.anchor, problem.fairlead)
     x, y = old.state_at(z, problem.basis.doflocs[0]).position
-    position = [a[k] + x * e[k] + (y if k == 2 else 0.0) for k in range(3)]
+    position = [a[0] + x * e[0], a[1] + x * e[1], a[2] + y]
     return problem.with_ends(position, old.tension_at(z, problem.tension_points()))
