@@ -885,6 +885,8 @@ def test_the_line_in_spaces_touchdown_and_landing_are_the_plane_lines():
         assert plane.s_touchdown > 0 and abs(space.s_touchdown - plane.s_touchdown) <= 1e-9 * plane.length
         assert abs(space.s_landing - plane.s_landing) <= 1e-9 * plane.length
         assert space.length_on_seabed == space.s_touchdown - space.s_landing
+        last_node = float(space.contact_s[space.in_contact].max())  # what it reported before
+        assert last_node - space.s_touchdown > 0.1  # measured 1.37 m and 0.17 m
 
 
 def test_a_slack_stretch_is_refused_as_such_where_the_touchdown_has_no_balance():
