@@ -353,3 +353,71 @@ def test_a_byte_that_is_not_utf8_is_named_where_it_is_read(tmp_path):
         data.replace(b"(m^3)   (m^2)  (-)", b"(m\xb33)   (m^2)  (-)", 1)
     )  # a Latin-1 cube in the units
     assert len(mooring.read_moordyn(path).system.points) == 7
+
+
+# -- EA as a strain–tension curve file (MoorDyn-C's ``read_curve``: three header lines, then
+# ``strain tension`` rows, read beside the input file; ``moordyn::interp`` between the rows) ----
+CURVE_HEADER = "strain–tension curve of the chain\nStrain Tension\n(-) (N)\n"
+
+
+def _with_chain_curve(tmp_path, rows, ea="chain.txt"):
+    """`FILE` with the chain's EA column ``ea`` and the curve file ``chain.txt`` of ``rows``."""
+    (tmp_path / "chain.txt").write_text(CURVE_HEADER + "".join(f"{e!r} {t!r}\n" for e, t in rows))
+    path = tmp_path / "curve.dat"
+    path.write_text(FILE.replace("1.2326e9", ea))
+    return path
+
+
+def test_an_ea_curve_file_is_the_law_moordyn_interpolates(tmp_path):
+    """The chain's EA as a curve file: its strain at any tension within the file's rows is the
+    straight line between them (numpy's interp of the file's numbers); a curve that is the
+    straight line ``T = EA ε`` gives the equilibrium of the file with the number EA (1.2326e9 N)."""
+    rows = [(0.0, 0.0), (0.002, 1.0e6), (0.005, 4.0e6), (0.01, 1.2e7)]
+    model = mooring.read_moordyn(_with_chain_curve(tmp_path, rows))
+    law = model.system.mooring_lines[0].model.segments[0].law
+    eps, T = np.array(rows).T
+    probe = np.linspace(0.0, T[-1], 37)
+    np.testing.assert_allclose(law.strain(probe), np.interp(probe, T, eps), rtol=1e-13, atol=1e-16)
+
+    straight = mooring.read_moordyn(_with_chain_curve(tmp_path, [(0.0, 0.0), (0.01, 1.2326e7)]))
+    number = tmp_path / "number.dat"
+    number.write_text(FILE)
+    eq, reference = straight.system.equilibrium(), mooring.read_moordyn(number).system.equilibrium()
+    for p, q in zip(eq.points, reference.points, strict=True):
+        np.testing.assert_allclose(p.position, q.position, rtol=0, atol=1e-8 * 600.0)
+
+
+@pytest.mark.parametrize(
+    "rows, reason",
+    [
+        ([(0.0, 0.0)], "fewer than two curve points"),
+        ([(0.0, 0.0), (0.01, 2.0e5), (0.005, 3.0e5)], "must increase strictly"),
+        ([(-0.001, 0.0), (0.01, 2.0e5)], "not at or above (0, 0)"),
+        ([(0.0, 1.0e4), (0.01, 2.0e5)], "below it MoorDyn holds the first tension"),
+        ([(0.002, 1.0e4), (0.01, 2.0e5)], "below it MoorDyn holds the first tension"),
+        ([(0.001, 0.0), (0.01, 2.0e5)], "below it MoorDyn's tension is zero"),
+        ([(0.0, 0.0), (0.01, float("inf"))], "is not finite"),
+    ],
+)
+def test_a_curve_moordyn_would_misread_is_refused_naming_the_file(tmp_path, rows, reason):
+    """A curve with fewer than two points, not increasing, not from (0, 0) or with a number
+    that is not finite is refused, the message naming the input file's line (or the curve
+    file's row) and the reason. Below its first row MoorDyn's ``interp`` holds the first
+    tension: a curve from (0, T₀ > 0) is a rope taut when slack, one from (ε₀ > 0, 0) a rope
+    slack up to ε₀."""
+    with pytest.raises(InputError) as err:
+        mooring.read_moordyn(_with_chain_curve(tmp_path, rows))
+    message = str(err.value)
+    assert reason in message and ("curve.dat, line 6" in message or "chain.txt" in message), message
+
+
+def test_a_missing_or_garbled_curve_file_is_named(tmp_path):
+    """A curve file that is not there, or a row of it that is not two numbers, is refused naming
+    the file (and the row: MoorDyn's rows start after three header lines)."""
+    path = _with_chain_curve(tmp_path, [(0.0, 0.0), (0.01, 2.0e5)], ea="none.txt")
+    with pytest.raises(InputError, match=r"curve\.dat, line 6.*the curve file 'none\.txt' cannot be read"):
+        mooring.read_moordyn(path)
+    (tmp_path / "chain.txt").write_text(CURVE_HEADER + "0 0\n0.01 two\n")
+    path.write_text(FILE.replace("1.2326e9", "chain.txt"))
+    with pytest.raises(InputError, match=r"chain\.txt, line 5.*is not two numbers"):
+        mooring.read_moordyn(path)

@@ -106,18 +106,22 @@ def _curve(source, row, text, column) -> tuple[np.ndarray, np.ndarray]:
 def _table(source, row, text, column) -> axial.StrainTable:
     """A strain–tension file as a `StrainTable` from (0, 0), linear between its points."""
     strain, tension = _curve(source, row, text, column)
-    if strain[0] != 0.0 or tension[0] != 0.0:
-        if not (strain[0] > 0.0 and tension[0] > 0.0):
-            raise source.error(
-                row.line,
-                column,
-                f"the curve {text!r} starts at ({strain[0]:g}, {tension[0]:g}), not at or above (0, 0)",
-            )
+    start = f"the curve {text!r} starts at ({strain[0]:g}, {tension[0]:g})"
+    if strain[0] < 0.0 or tension[0] < 0.0:
+        raise source.error(row.line, column, f"{start}, not at or above (0, 0)")
+    if tension[0] > 0.0:
         raise source.error(
             row.line,
             column,
-            f"the curve {text!r} starts at ({strain[0]:g}, {tension[0]:g}): below it MoorDyn holds the "
-            "first tension (a rope taut when slack), which no static law means; start it at (0, 0)",
+            f"{start}: below it MoorDyn holds the first tension (a rope taut when slack), which no "
+            "static law means; start it at (0, 0)",
+        )
+    if strain[0] > 0.0:
+        raise source.error(
+            row.line,
+            column,
+            f"{start}: below it MoorDyn's tension is zero (a rope slack up to that strain), which a "
+            "law of the strain by the tension cannot hold; start it at (0, 0)",
         )
     try:
         return axial.StrainTable(strain, tension, interpolation="linear")
