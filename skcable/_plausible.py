@@ -23,6 +23,8 @@ iteration inside it are not answers):
 
 - a strain no material of its kind survives (`STRAIN_LIMITS`: chain, wire rope, synthetic rope,
   conductor; a line of unknown material is held to the loosest);
+- a tension beyond the last point of a line's strain–tension table (`beyond_table`: the law
+  there extrapolates the data);
 - an anchor on the seabed pulled up beyond what a drag anchor takes (`ANCHOR_UPLIFT`);
 - a body above the water that keeps its buoyancy, or below the seabed.
 
@@ -47,6 +49,7 @@ __all__ = [
     "STRAIN_LIMITS",
     "anchor_uplift",
     "answer",
+    "beyond_table",
     "quiet",
     "body_height",
     "conductor",
@@ -207,6 +210,10 @@ LIMITS = (
      "the hydrostatics keep the buoyancy ρ g V whatever the heave: a body out of the water has none",
      "J.N. Newman, Marine Hydrodynamics, MIT Press, 1977, ch. 6 (linear hydrostatics about the waterline)"),
     ("a body or a point below the seabed", "z < -depth", "no line or body sits inside the seabed", "-"),
+    ("tension beyond a strain–tension table", "its last point",
+     "past it the law continues the table's end slope, which no point of the data backs (MoorDyn "
+     "holds the last tension there: a rope that yields)",
+     "MoorDyn-C, moordyn::interp (M. Hall et al., MoorDyn v2, NREL)"),
     ("conductor temperature", "-60 to 250 °C",
      "the coldest design ambient to the hottest rated operation (high-temperature conductors); "
      "a value near 273 + t is in kelvin",
@@ -294,6 +301,19 @@ def line_strain(strain, material=None, quantity: str = "strain", where: str = ""
         f"is a strain of {_percent(largest)}{where}, beyond the {_percent(limit)} a {kind} survives: no "
         "real line is in this state (too short a line, too large a load, or EA too small or in other "
         "units?)",
+    )
+
+
+def beyond_table(tension: float, last: float, where: str = ""):
+    """``("tension", reason)`` where a line's largest ``tension`` (N) exceeds the ``last`` (N)
+    point of its strain–tension table (`skcable.mooring.axial.StrainTable`), else None."""
+    if not tension > last:
+        return None
+    return (
+        "tension",
+        f"is {tension:.6g} N{where}, beyond the last point of its strain–tension table ({last:.6g} "
+        "N): there the law continues the table's end slope, which no point of the data backs "
+        "(MoorDyn holds the last tension there); extend the table",
     )
 
 

@@ -197,6 +197,26 @@ def test_a_segment_is_held_to_its_materials_strain(material, strain, warns):
         assert named[0].message.argument == "strain" and (material or "unknown") in str(named[0].message)
 
 
+@pytest.mark.parametrize("last_strain, warns", [(0.005, True), (0.02, False)])
+def test_a_tension_beyond_the_strain_tension_table_warns(last_strain, warns):
+    """A line stretched 1 % on a table that ends at 0.5 % is solved on the table's end slope, which
+    no point of the data backs (MoorDyn holds the last tension there): it warns, naming its
+    tension; on a table that reaches 2 % it does not."""
+    EA, span, strain = 1e8, 100.0, 0.01
+    law = mooring.axial.StrainTable([0.0, last_strain], [0.0, EA * last_strain], interpolation="linear")
+    line = mooring.Line([mooring.Segment(span / (1 + strain), 10.0, law)])
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        r = line.solve(span, 0.0)
+    assert r.T_B / EA == pytest.approx(strain, rel=1e-3)  # a taut, nearly straight line: T = EA strain
+    named = [w for w in caught if issubclass(w.category, PlausibilityWarning)]
+    assert [w.message.argument for w in named] == (["tension"] if warns else [])
+    if warns:
+        assert _ratio(named[0]) == pytest.approx(r.T_B, rel=1e-5) and f"({EA * last_strain:.6g} N)" in str(
+            named[0].message
+        )
+
+
 def test_an_anchor_on_the_seabed_pulled_up(capsys):
     args = ["line", "--span", "900", "--dh", "150", "--length", "850", "--w", "1000", "--EA", "5e8"]
     status = cli.main([*args, "--seabed", "0"])

@@ -1,11 +1,12 @@
 """The plausibility of a line's answer (`skcable._plausible` holds the limits and their sources):
-each segment's strain against what its material survives (`Segment.material`), and for
+each segment's strain against what its material survives (`Segment.material`), its tension
+against the last point of its strain–tension table, and for
 `Line.solve` the uplift angle at its anchor on the seabed; the findings are ``(quantity, reason)``
 pairs, as `skcable.mooring._answers`'s for a system.
 
-**Strain.** The tension anywhere on a line differs from its largest end tension by at most the
-weights and point loads along it, so that bound through each segment's law is checked first (no
-table); only where it exceeds a limit are the segments' own largest tensions read
+**Strain and tables.** The tension anywhere on a line differs from its largest end tension by at
+most the weights and point loads along it, so that bound (through each segment's law) is checked
+first (no table); only where it exceeds a limit are the segments' own largest tensions read
 (``tensions()``: at a segment's end for the closed forms, sampled on a BVP's elements).
 """
 
@@ -48,29 +49,39 @@ def _material_of_row(segments, length, w):
     return None
 
 
+def _last_tensions(segments) -> np.ndarray:
+    """Each segment's last tension (N) of its strain–tension table (`StrainTable`), inf without
+    one."""
+    tables = (getattr(getattr(seg, "law", None), "table", (None, [np.inf])) for seg in segments)
+    return np.array([float(table[1][-1]) for table in tables])
+
+
 def line_findings(solution, segments, largest_end: float, where: str = "") -> list:
-    """The strain findings of one solved line: ``segments`` its model's, ``largest_end`` its
-    largest end tension (N)."""
+    """The strain and table findings of one solved line: ``segments`` its model's,
+    ``largest_end`` its largest end tension (N)."""
     load = sum(abs(seg.w) * seg.length for seg in segments)
     load += float(np.sum(np.abs(getattr(getattr(solution, "line", None), "joint_forces", 0.0))))
-    bound = _strains(segments, largest_end + load)
-    if not np.any(bound > _limits(segments)):
+    bound = largest_end + load
+    strained = np.any(_strains(segments, bound) > _limits(segments))
+    if not (strained or np.any(bound > _last_tensions(segments))):
         return []
     table = solution.tensions()
     T = table["T_max"] if "T_max" in table else np.maximum(table["T_lower"], table["T_upper"])
-    worst = None
+    worst, beyond = None, None
     for length, w, tension in zip(table["length"], table["w"], T, strict=True):
         seg = _material_of_row(segments, float(length), float(w))
         if seg is None:
             continue
-        material = getattr(seg, "material", None)
-        strain, limit = _strain(seg, float(tension)), _plausible.STRAIN_LIMITS[material]
+        material, tension = getattr(seg, "material", None), float(tension)
+        strain, limit = _strain(seg, tension), _plausible.STRAIN_LIMITS[material]
         if strain > limit and (worst is None or strain / limit > worst[0] / worst[1]):
             worst = (strain, limit, material)
-    if worst is None:
-        return []
-    found = _plausible.line_strain(worst[0], worst[2], "strain", where)
-    return [] if found is None else [found]
+        last = float(_last_tensions([seg])[0])
+        if tension > last and (beyond is None or tension / last > beyond[0] / beyond[1]):
+            beyond = (tension, last)
+    found = [] if worst is None else [_plausible.line_strain(worst[0], worst[2], "strain", where)]
+    found += [] if beyond is None else [_plausible.beyond_table(*beyond, where)]
+    return [f for f in found if f is not None]
 
 
 def check_line(solution) -> None:
