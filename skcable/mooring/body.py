@@ -23,7 +23,8 @@ NREL): weight :math:`mg` at the centre of gravity :math:`R\,\mathbf r_G`, buoyan
 moments give the hydrostatic restoring in roll and pitch,
 :math:`\rho g V\,\overline{GM}` to first order), and the heave restoring
 :math:`-\rho g A_{WP}\, z` (J.N. Newman, "Marine Hydrodynamics", MIT Press, 1977,
-ch. 6). Their stiffness about the current position,
+ch. 6). Their stiffness about the current position (assembled with the lines' in
+`skcable.mooring.net_loads`),
 :math:`-\partial(\mathbf F, \mathbf M)/\partial(\mathbf x, \delta\boldsymbol\theta)`, is
 
 .. math:: K_{\theta\theta} = -[\mathbf W]_\times[R\mathbf r_G]_\times
@@ -155,34 +156,11 @@ class RigidBody(_Hydrostatics):
         out[3:] = skew(R @ self.center_of_gravity) @ self.weight + skew(R @ self.metacentre) @ self.buoyancy
         return out
 
-    def own_stiffness(self, q) -> np.ndarray:
-        """``-∂(own force, moment)/∂(x, rotation vector)``, shape (6, 6)."""
-        R = self.rotation(q)
-        K = np.zeros((6, 6))
-        K[2, 2] = self.heave_stiffness
-        K[3:, 3:] = -skew(self.weight) @ skew(R @ self.center_of_gravity) - skew(self.buoyancy) @ skew(
-            R @ self.metacentre
-        )
-        return K
-
     def rate_map(self, q) -> np.ndarray:
         """``∂(x, rotation vector)/∂q``: identity on translations, `angular_velocity_map` on angles."""
         M = np.eye(6)
         M[3:, 3:] = angular_velocity_map(q[3], q[4], q[5])
         return M
-
-    def add_lines(self, arms, forces, stiffnesses) -> tuple[np.ndarray, np.ndarray]:
-        """Sum of the line forces ``f_i`` at arms ``r_i`` (global) as (force, moment), and their
-        stiffness ``[[K, -K[r]x], [[r]x K, -[f]x[r]x - [r]x K [r]x]]`` summed over the lines,
-        from each fairlead's 3x3 stiffness ``K_i = -∂f_i/∂b_i``."""
-        rs, fs = skews(arms), skews(forces)
-        F = np.concatenate([forces.sum(axis=0), np.einsum("nij,nj->i", rs, forces)])  # Σ r_i x f_i
-        K = np.zeros((6, 6))
-        K[:3, :3] = stiffnesses.sum(axis=0)
-        K[:3, 3:] = -(stiffnesses @ rs).sum(axis=0)
-        K[3:, :3] = (rs @ stiffnesses).sum(axis=0)
-        K[3:, 3:] = (-fs @ rs - rs @ stiffnesses @ rs).sum(axis=0)
-        return F, K
 
 
 def skews(v) -> np.ndarray:
@@ -218,13 +196,5 @@ class PointBody(_Hydrostatics):
         out[2] -= self.heave_stiffness * q[2]
         return out
 
-    def own_stiffness(self, q) -> np.ndarray:
-        K = np.zeros((3, 3))
-        K[2, 2] = self.heave_stiffness
-        return K
-
     def rate_map(self, q) -> np.ndarray:
         return np.eye(3)
-
-    def add_lines(self, arms, forces, stiffnesses) -> tuple[np.ndarray, np.ndarray]:
-        return forces.sum(axis=0), stiffnesses.sum(axis=0)

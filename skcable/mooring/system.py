@@ -24,9 +24,9 @@ from each line's end stiffness :math:`K_{ij} = -\partial\mathbf f_i/\partial\mat
     - \sum_{\text{body ends}} [\mathbf f_e]_\times[\mathbf r_e]_\times + K_\text{own},
 
 the term :math:`-[\mathbf f]_\times[\mathbf r]_\times` from the arm turning under a force (it
-makes ``K`` unsymmetric where the forces have a net moment). A body's own ends are summed as
-`RigidBody.add_lines` does, vectorised over them; the coupling of two moving ends of one line
-(a shared line, a bridle) is added block by block. The equilibrium ``G = 0`` is solved by
+makes ``K`` unsymmetric where the forces have a net moment). A body's own ends and own loads are
+summed vectorised over the bodies (`skcable.mooring.net_loads`); the coupling of two moving ends of
+one line (a shared line, a bridle) is added block by block. The equilibrium ``G = 0`` is solved by
 `skcable.mooring.equilibrium`.
 """
 

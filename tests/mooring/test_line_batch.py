@@ -92,6 +92,10 @@ def test_a_spread_mooring_solved_together_balances_and_matches_line_by_line(monk
     scale = max(max(np.abs(F).max() for F in forces), abs(body.weight[2]) + body.buoyancy[2])
     net = balance(eq, forces, {("body", 0): np.r_[force[body], 0, 0, 0]})[("body", 0)]
     assert np.abs(net[:3]).max() < 1e-9 * scale and np.abs(net[3:]).max() < 1e-9 * scale * 20.0
+    # the body's own loads (`RigidBody.own_force`) at its tilted equilibrium are the reference's
+    own = balance(eq, [np.zeros((2, 3))] * len(forces))[("body", 0)]
+    assert np.abs(eq.bodies[0].angles).max() > 1e-4  # tilted: the moments of weight and buoyancy
+    np.testing.assert_allclose(body.own_force(eq.bodies[0].position), own, rtol=1e-12, atol=1e-12 * scale)
     monkeypatch.setattr("skcable.mooring.system.BATCH", 10**9)  # line by line
     alone = system.equilibrium(force=force)
     np.testing.assert_allclose(eq.position, alone.position, rtol=0, atol=1e-9 * np.abs(alone.position).max())
