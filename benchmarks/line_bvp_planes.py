@@ -132,10 +132,7 @@ class Scene:
         height, slope = self.seabed
         if slope == 0.0:
             return dict(seabed=height)
-        return dict(
-            seabed=lambda x: height + slope * np.asarray(x),
-            seabed_slope=lambda x: np.full(np.shape(x), slope),
-        )
+        return dict(seabed=height, seabed_slope=slope)  # the straight seabed b(x) = height + slope x
 
     def solve_plane(self):
         return mooring.solve_line_bvp(
@@ -164,9 +161,7 @@ class Scene:
             bed_plane, bed_space = f", seabed={self.seabed[0]!r}", f", seabed={self.seabed[0]!r}"
         else:
             h, k = self.seabed
-            bed_plane = (
-                f", seabed=lambda x: {h!r} + {k!r} * x, seabed_slope=lambda x: np.full(np.shape(x), {k!r})"
-            )
+            bed_plane = f", seabed={h!r}, seabed_slope={k!r}"
             bed_space = f", seabed=Plane({h!r}, ({k!r}, 0.0))"
         loads = list(self.point_loads)
         common = f"point_loads={loads!r}, friction={self.friction!r}, n_elements={self.n_elements}"

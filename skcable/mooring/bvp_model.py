@@ -30,7 +30,7 @@ from skcable.mooring.jacobians import of_own
 from skcable.mooring.plane_line import PlaneLine, on_seabed_tolerance
 from skcable.mooring.segments.solution import segment_table
 
-__all__ = ["BVPLineView", "Resolver", "SeabedPlane", "SeabedSlope", "solve_bvp_line"]
+__all__ = ["BVPLineView", "Resolver", "solve_bvp_line"]
 
 #: Central-difference step of the BVP line's stiffness, relative to the chord.
 STEP = 1e-4
@@ -118,36 +118,15 @@ def _options(seabed, seabed_slope, friction, loads) -> dict:
     return dict(seabed=seabed, seabed_slope=seabed_slope, friction=friction, point_loads=loads)
 
 
-@dataclass(frozen=True)
-class SeabedPlane:
-    """The BVP's seabed ``y = base + slope x`` (m, relative to the lower end), a picklable callable."""
-
-    base: float
-    slope: float
-
-    def __call__(self, x):
-        return self.base + self.slope * np.asarray(x)
-
-
-@dataclass(frozen=True)
-class SeabedSlope:
-    """The slope ``dy/dx`` of a `SeabedPlane`, a picklable callable."""
-
-    slope: float
-
-    def __call__(self, x):
-        return self.slope + 0.0 * np.asarray(x)
-
-
 def _plane_seabed(low, slope, d_low, d_span=0.0):
     """The BVP's seabed relative to the lower end after it moves up by ``d_low``: None, 0 (the
-    end on it, moving with it), a height or a plane ``b(x)`` with its slope."""
+    end on it, moving with it), a height, or a height and a slope (`solve_line_bvp`'s straight
+    seabed)."""
     if low is None or low == 0.0 and slope == 0.0:
         return low, None
     if slope == 0.0:
         return low - d_low, None
-    base = 0.0 if low == 0.0 else low - d_low
-    return SeabedPlane(base, slope), SeabedSlope(slope)
+    return (0.0 if low == 0.0 else low - d_low), slope
 
 
 @dataclass(frozen=True)

@@ -26,7 +26,10 @@ end, so over a flat seabed the line is solved from its lower end (`Line.variant`
   seabed"``, `skcable.mooring.line_on_seabed`);
 - on a slope, an end on it and one uniform segment: `skcable.cable.sloped_seabed_catenary` from
   that end (``"grounded (slope)"``, or ``"free"`` where it leaves the slope upwards); neither end
-  on it: the free line where it clears the slope (`skcable.mooring.slope.clearance`);
+  on it: the free line where it clears the slope (`skcable.mooring.slope.clearance`); a
+  frictionless uniform segment longer than the slope holds taut is refused
+  (`skcable.cable.seabed.refuse_slack_on_slope`: its slack heaps at the slope's foot), a shorter
+  one that touches down is the line BVP from its closed form (`skcable.cable.seabed.slope_touchdown`);
 - anything else (several segments or attachments touching down, a buoy on the grounded part, a
   second touchdown, a line lying along a slope with a buoy): the plane line BVP (``"bvp"``,
   `skcable.mooring.bvp_model`).
@@ -63,7 +66,7 @@ from functools import partial
 import numpy as np
 
 from skcable._checks import point, positive, real, scalar
-from skcable.cable.seabed import elastic_catenary, sloped_seabed_catenary
+from skcable.cable.seabed import elastic_catenary, refuse_slack_on_slope, sloped_seabed_catenary
 from skcable.errors import InputError
 from skcable.mooring.bathymetry import Plane
 from skcable.mooring.between_points import LineBetween, plane_of
@@ -234,6 +237,9 @@ def solve_on_slope(line, scene, on_A, on_B, start, bvp) -> PlaneLine:
         free = _free_clear(line, scene, start, on_seabed_tolerance(span, dh, seabed))
         if free is not None:
             return free
+        seg = line.segments[0]
+        if line.friction == 0 and uniform(line):  # no taut state beyond this length (in A's frame)
+            refuse_slack_on_slope(span, dh, seg.w, seg.EA, seg.length, seabed=seabed, seabed_slope=slope)
         return bvp(
             line, *scene[:3], "the line touches down on the slope between its ends (no closed form)", slope
         )

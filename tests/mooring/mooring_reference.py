@@ -165,6 +165,59 @@ def sloped_line(span, dh, w, EA, L, slope, friction, start):
     return float(T_A * cos), float(-T_A * sin), float(H), float(H * m + w * (L - L_B))
 
 
+def _hang(H, Vb, w, EA, s):
+    """Run and rise (m) of an elastic catenary piece of length ``s`` with the horizontal force ``H``
+    and the vertical force ``Vb`` at its start (along its direction of travel), at 30 digits."""
+    Vt = Vb + w * s
+    run = H * s / EA + H / w * (mp.asinh(Vt / H) - mp.asinh(Vb / H))
+    rise = (mp.hypot(H, Vt) - mp.hypot(H, Vb)) / w + (Vt * Vt - Vb * Vb) / (2 * EA * w)
+    return run, rise
+
+
+def slope_touchdown_line(span, dh, w, EA, L, seabed, slope, start):
+    """One frictionless segment from A to B, both above the plane seabed ``y = seabed + x tan α``
+    (``tan α > 0``), touching down on it between them: hanging from A to a tangent touchdown,
+    lying straight with ``dT/ds = w sin α``, hanging tangentially to B. ``(H_1, s_1, ℓ, H_2)``
+    from ``start = (H_2, ℓ, s_1)``."""
+    span, dh, w, EA, L, b, m = (mp.mpf(v) for v in (span, dh, w, EA, L, seabed, slope))
+    cos = 1 / mp.sqrt(1 + m * m)
+    sin = m * cos
+
+    def parts(H2, ell, s1):
+        T1 = H2 / cos - w * sin * ell
+        H1 = T1 * cos
+        x1, y1 = _hang(H1, H1 * m - w * s1, w, EA, s1)  # A to the first touchdown
+        G = ell + (T1 * ell + w * sin * ell * ell / 2) / EA
+        x2, y2 = _hang(H2, H2 * m, w, EA, L - s1 - ell)  # the second touchdown to B
+        return H1, x1, y1, G, x2, y2
+
+    def f(H2, ell, s1):
+        _, x1, y1, G, x2, y2 = parts(H2, ell, s1)
+        return y1 - b - m * x1, x1 + G * cos + x2 - span, y1 + G * sin + y2 - dh
+
+    H2, ell, s1 = mp.findroot(f, tuple(mp.mpf(v) for v in start), solver="mdnewton")
+    return float(parts(H2, ell, s1)[0]), float(s1), float(ell), float(H2)
+
+
+def taut_length_on_slope(span, dh, w, EA, seabed, slope, start):
+    """The length (m) at which that line's tension at its first touchdown is zero: a vertical
+    part from A onto the slope, ``ℓ`` on it from zero tension, the rest hanging to B;
+    ``start = (ℓ, s_2)``."""
+    span, dh, w, EA, b, m = (mp.mpf(v) for v in (span, dh, w, EA, seabed, slope))
+    cos = 1 / mp.sqrt(1 + m * m)
+    sin = m * cos
+    vertical = mp.findroot(lambda v: v + w * v * v / (2 * EA) + b, -b)
+
+    def f(ell, s2):
+        H2 = w * sin * ell * cos
+        G = ell + w * sin * ell * ell / (2 * EA)
+        x2, y2 = _hang(H2, H2 * m, w, EA, s2)
+        return G * cos + x2 - span, b + G * sin + y2 - dh
+
+    ell, s2 = mp.findroot(f, tuple(mp.mpf(v) for v in start), solver="mdnewton")
+    return float(vertical + ell + s2)
+
+
 def grounded_multi(span, dh, segments, start):
     """A frictionless line of segments (from A) resting on the seabed through A up to a tangent
     touchdown inside one of its heavy segments, then suspended to B: ``(H, V_B, grounded)``."""

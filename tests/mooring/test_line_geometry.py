@@ -13,12 +13,15 @@ import math
 import numpy as np
 import pytest
 
-from skcable import mooring
-from skcable.errors import InputError
+from skcable import cable, mooring
+from skcable.errors import ConvergenceError, InputError
+from skcable.mooring.bathymetry import Plane
 from tests.mooring.mooring_reference import (
     free_line,
     grounded_multi,
+    slope_touchdown_line,
     sloped_line,
+    taut_length_on_slope,
     touchdown_line,
 )
 
@@ -79,6 +82,107 @@ def test_sloped_mirror_of_moorpy():
     moorpy = pytest.importorskip("moorpy.Catenary")
     fAH, fAV, fBH, fBV, _ = moorpy.catenary(60, 40, 80, 1e12, 100.0, CB=0, alpha=10, Tol=1e-5, MaxIter=50)
     np.testing.assert_allclose([up.H_A, -up.V_A, -up.H_B, -up.V_B], [fAH, fAV, fBH, fBV], rtol=1e-5)
+
+
+def test_neither_end_on_a_slope_hangs_free_where_it_clears_it():
+    """Both ends above a 6° slope, the line clear of it: the free elastic catenary (the 30-digit
+    closure), from either end."""
+    t = math.tan(math.radians(6.0))
+    line = mooring.Line([mooring.Segment(400.0, W, EA)])
+    for dh, seabed in ((60.0, -60.0), (-60.0, -140.0)):  # the lower end 60 m, then 40 m above it
+        r = mooring.line_in_plane(line, 380.0, dh, seabed=seabed, seabed_slope=t)
+        assert r.model == "free" and "clear of it" in r.reason
+        H, V_A, V_B = free_line(380.0, dh, [(400.0, W, EA)], (r.H_B, r.V_B))
+        np.testing.assert_allclose([r.H_A, r.V_A, r.H_B, r.V_B], [H, V_A, H, V_B], rtol=1e-10)
+
+
+#: a chain between ends 40 m and 60.06 m above a 6° slope, 380 m apart: the longest it holds taut
+SLOPE_SCENE = dict(span=380.0, dh=60.0, seabed=-40.0, slope=math.tan(math.radians(6.0)))
+
+
+def test_a_line_touching_down_on_a_slope_between_its_ends_is_its_closed_form():
+    """A frictionless line that sags onto a slope between its ends hangs, lies on it (its tension
+    growing uphill by the weight's component) and rises: the 30-digit closure
+    (`tests.mooring.mooring_reference.slope_touchdown_line`) gives its state. The closed form
+    `slope_touchdown` (the BVP's start) is that closure's root; the line BVP `line_in_plane`
+    takes, from either end, converges to it within its discretisation (before this start both
+    line BVPs stagnated from the flat line lifted onto the slope); the slope's reaction on the
+    line is normal to it (no friction): the ends' forces and the weight leave no net force along
+    the slope."""
+    span, dh, b, t = SLOPE_SCENE.values()
+    for L in (420.0, 440.0, 450.0):
+        closed = cable.seabed.slope_touchdown(span, dh, W, EA, L, seabed=b, seabed_slope=t)
+        H2 = closed.H_low + W * closed.lying * t / (1.0 + t * t)  # T grows by w ℓ sin α: H by w ℓ sin α cos α
+        ref = slope_touchdown_line(span, dh, W, EA, L, b, t, (H2, closed.lying, closed.s_low))
+        np.testing.assert_allclose([closed.H_low, closed.s_low, closed.lying], ref[:3], rtol=1e-9)
+        line = mooring.Line([mooring.Segment(L, W, EA)])
+        for r, H_A, H_B in (
+            (mooring.line_in_plane(line, span, dh, seabed=b, seabed_slope=t), ref[0], ref[3]),
+            (
+                mooring.line_in_plane(line, span, -dh, seabed=b - dh + span * t, seabed_slope=-t),
+                ref[3],
+                ref[0],
+            ),
+        ):
+            assert r.model == "bvp" and "touches down on the slope between its ends" in r.reason
+            np.testing.assert_allclose([r.H_A, r.H_B], [H_A, H_B], rtol=2e-6)
+        r = mooring.line_in_plane(line, span, dh, seabed=b, seabed_slope=t)
+        x, y = r.xy(np.linspace(0.0, L, 4001)).T
+        assert (y - b - t * x).min() > -1e-6 * L
+        net = np.array([r.H_B - r.H_A, r.V_A + r.V_B - W * L])
+        assert abs(net @ np.array([1.0, t])) < 1e-6 * W * L and net[1] < 0.0
+
+
+def test_a_line_longer_than_a_frictionless_slope_holds_taut_is_refused():
+    """The longest line the slope holds taut between its ends (`taut_length_on_slope`) is the
+    30-digit closure's, where its tension at the lower touchdown is zero; just beyond it the slack
+    has no taut state (it heaps at the slope's foot): `line_in_plane`, `solve_line_bvp` and
+    `solve_line_bvp_3d` refuse it as ``InputError("length")``, naming the end it heaps under,
+    where before they stagnated; 2 % shorter, the line is solved."""
+    span, dh, b, t = SLOPE_SCENE.values()
+    longest = cable.seabed.taut_length_on_slope(span, dh, W, EA, seabed=b, seabed_slope=t)
+    assert longest == pytest.approx(taut_length_on_slope(span, dh, W, EA, b, t, (320.0, 90.0)), rel=1e-10)
+    L = longest * (1.0 + 1e-6)
+    line = mooring.Line([mooring.Segment(L, W, EA)])
+    heaps = r"length: .* longer than the 456\.675 m a frictionless slope holds taut.* below {}"
+    with pytest.raises(InputError, match=heaps.format("A")):
+        mooring.line_in_plane(line, span, dh, seabed=b, seabed_slope=t)
+    with pytest.raises(InputError, match=heaps.format("B")):
+        mooring.line_in_plane(line, span, -dh, seabed=b - dh + span * t, seabed_slope=-t)
+    with pytest.raises(InputError, match=heaps.format("A")):
+        mooring.solve_line_bvp(span, dh, [mooring.BVPSegment(L, W, EA)], seabed=b, seabed_slope=t)
+    with pytest.raises(InputError, match=heaps.format("A")):
+        mooring.solve_line_bvp_3d(
+            (0.0, 0.0, 0.0), (span, 0.0, dh), [mooring.BVPSegment(L, W, EA)], seabed=Plane(b, (t, 0.0))
+        )
+    shorter = mooring.Line([mooring.Segment(0.98 * longest, W, EA)])
+    assert mooring.line_in_plane(shorter, span, dh, seabed=b, seabed_slope=t).H_A > 0
+
+
+def test_a_failure_over_a_slope_says_where_the_line_may_be_longer_than_it_holds_taut():
+    """Two segments (a chain, then a rope of 0.6 its weight) over that slope: no closed form, so
+    no refusal; 440 m (shorter than the slope holds taut as a uniform line of their mean weight)
+    solves, lying on the slope without piercing it; 480 m does not, and the failure says the
+    uniform line of its mean weight would be longer than the slope holds taut (a diagnosis)."""
+    span, dh, b, t = SLOPE_SCENE.values()
+    # the uniform line of their mean weight 0.8 W and their compliance in series, 1.5 L/EA
+    longest = cable.seabed.taut_length_on_slope(span, dh, 0.8 * W, EA / 1.5, seabed=b, seabed_slope=t)
+
+    def segments(L):
+        return [mooring.BVPSegment(0.5 * L, W, EA), mooring.BVPSegment(0.5 * L, 0.6 * W, 0.5 * EA)]
+
+    r = mooring.solve_line_bvp(span, dh, segments(440.0), seabed=b, seabed_slope=t)
+    x, y = r.xy(np.linspace(0.0, 440.0, 4001)).T
+    assert r.H_A > 0 and (y - b - t * x).min() > -1e-6 * 440.0
+    with pytest.raises(ConvergenceError, match=f"longer than the {longest:.6g} m this frictionless slope"):
+        mooring.solve_line_bvp(span, dh, segments(480.0), seabed=b, seabed_slope=t)
+
+
+def test_both_ends_on_a_slope_is_refused():
+    t = math.tan(math.radians(6.0))
+    line = mooring.Line([mooring.Segment(400.0, W, EA)])
+    with pytest.raises(InputError, match="seabed_slope.*both ends on the sloped seabed"):
+        mooring.line_in_plane(line, 380.0, 380.0 * t, seabed=0.0, seabed_slope=t)
 
 
 def test_sloped_friction_and_stiffness():

@@ -15,7 +15,9 @@ Press, 1981). One concern per module:
 - `solve`: `elastic_catenary`, which picks each element's regime and solves it;
 - `solution`: `SeabedCatenary`, the solution in every regime (maps, checks, stiffness);
 - the sloped seabed (its closure and Jacobian `skcable.cable.closure.on_slope`): `sloped`
-  (`sloped_seabed_catenary`) and `sloped_solution` (`SlopedSeabedCatenary`).
+  (`sloped_seabed_catenary`; below both ends and without friction, `slope_touchdown`, the line
+  that touches down between them, and `taut_length_on_slope`, the longest one the slope holds
+  taut) and `sloped_solution` (`SlopedSeabedCatenary`).
 
 Data flow: ``solve`` → (``free`` | ``heap`` | ``grounded`` → `skcable.cable.closure`) → ``solution``;
 ``sloped`` starts from ``solve`` in the slope's frame → `skcable.cable.closure` →
@@ -23,17 +25,27 @@ Data flow: ``solve`` → (``free`` | ``heap`` | ``grounded`` → `skcable.cable.
 """
 
 from skcable.cable.closure import anchor_part, grounded_closure, hanging_length
-from skcable.cable.seabed.sloped import sloped_seabed_catenary
+from skcable.cable.seabed.sloped import (
+    SlopeTouchdown,
+    refuse_slack_on_slope,
+    slope_touchdown,
+    sloped_seabed_catenary,
+    taut_length_on_slope,
+)
 from skcable.cable.seabed.sloped_solution import SlopedSeabedCatenary
 from skcable.cable.seabed.solution import SeabedCatenary
 from skcable.cable.seabed.solve import elastic_catenary
 
 __all__ = [
     "SeabedCatenary",
+    "SlopeTouchdown",
     "SlopedSeabedCatenary",
     "anchor_part",
     "elastic_catenary",
     "grounded_closure",
     "hanging_length",
+    "refuse_slack_on_slope",
+    "slope_touchdown",
     "sloped_seabed_catenary",
+    "taut_length_on_slope",
 ]

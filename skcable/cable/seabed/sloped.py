@@ -1,19 +1,34 @@
-"""A line on a sloped seabed ``y = x tan α`` through the anchor, in closed form
-(`sloped_seabed_catenary`, which states the closure and its sources)."""
+"""A line on a sloped seabed in closed form: through the anchor, ``y = x tan α``
+(`sloped_seabed_catenary`, which states the closure and its sources); below both ends and without
+friction, the line touching down between them (`slope_touchdown`) and the longest one the slope
+holds taut (`taut_length_on_slope`, `refuse_slack_on_slope`)."""
 
 from __future__ import annotations
 
+import math
+from typing import TYPE_CHECKING, NamedTuple
+
 import numpy as np
 
-from skcable._checks import nonnegative, positive, real, require
+from skcable._checks import nonnegative, positive, real, require, scalar
 from skcable.cable._elastic import elastic_catenary as free_elastic_catenary
 from skcable.cable._extreme import outsized
-from skcable.cable.closure import hanging_length, on_slope, slope_frame
+from skcable.cable.closure import hanging, hanging_length, on_slope, slope_frame
 from skcable.cable.seabed.sloped_solution import SlopedSeabedCatenary
 from skcable.cable.seabed.solve import elastic_catenary
 from skcable.errors import ConvergenceError, InputError
 
-__all__ = ["SlopedSeabedCatenary", "sloped_seabed_catenary"]
+if TYPE_CHECKING:
+    from collections.abc import Callable
+
+__all__ = [
+    "SlopeTouchdown",
+    "SlopedSeabedCatenary",
+    "refuse_slack_on_slope",
+    "slope_touchdown",
+    "sloped_seabed_catenary",
+    "taut_length_on_slope",
+]
 
 
 def _scaled_closure(u, scene, scale, chord, history):
@@ -161,3 +176,197 @@ def _sloped(span, dh, w, EA, L, m, mu):
             "on this slope (friction < seabed_slope)",
         )
     return SlopedSeabedCatenary(span, dh, w, EA, L, m, mu, float(H), float(L_B), history)
+
+
+def taut_length_on_slope(span, dh, w, EA, *, seabed, seabed_slope) -> float:
+    r"""The longest line a frictionless straight slope holds taut between two ends above it (m).
+
+    A = (0, 0) and B = (span, dh) above the seabed ``y = seabed + x tan α`` (``seabed < 0``, B
+    above it), one uniform segment (``w``, ``EA``). A line that touches down between its ends
+    lies straight on the slope, where without friction its tension grows uphill by
+    :math:`dT/ds = w\sin\alpha` per unstretched length (the weight's component along the
+    slope); it leaves the slope tangentially at both ends of that stretch. The longer the
+    line, the lower the tension where it lands on the slope's lower side; at this length it
+    is zero there: the part from the lower end hangs vertically (``H = 0``) onto the foot of
+    the slope below it, of length :math:`l_v` with :math:`l_v + w l_v^2/(2EA) = d`, ``d``
+    the end's height above the slope (Irvine 1981 at ``H = 0``,
+    `skcable.cable.closure.hanging_length`); a stretch ``ℓ`` lies on the slope from the foot,
+    its tension rising from zero to :math:`T_2 = w\ell\sin\alpha`, stretched to
+    :math:`G = \ell + w\ell^2\sin\alpha/(2EA)`; the rest, :math:`s_2`, hangs from there
+    with :math:`H_2 = T_2\cos\alpha` and the vertical force :math:`H_2\tan\alpha` to the
+    other end (Irvine's elastic catenary, `skcable.cable.closure.hanging`: run ``x``, rise
+    ``z``):
+
+    .. math::
+        G\cos\alpha + x(H_2, s_2) = \Delta x, \qquad
+        G\sin\alpha + z(H_2, s_2) = \Delta y, \qquad L^* = l_v + \ell + s_2,
+
+    ``Δx, Δy`` the other end from the foot. A longer line has no taut equilibrium: its slack
+    slides down to the foot and lies there in a heap (``H = 0`` at the lower end), as a line
+    longer than its L-shape on a flat seabed (Jonkman 2007). For each ``ℓ`` the run fixes
+    :math:`s_2` (``x`` grows with it), and the rise's mismatch falls from :math:`+\infty`
+    (``ℓ → 0``) to below zero (the landing under the other end): both roots by Brent's method.
+
+    Parameters
+    ----------
+    span, dh : float
+        B relative to A (m), ``span > 0``.
+    w, EA : float
+        Weight per unstretched length (N/m) and axial stiffness (N, ``inf``: inextensible), > 0.
+    seabed : float
+        The seabed under A relative to A (m), < 0.
+    seabed_slope : float
+        ``tan α`` (rise per unit x towards B), nonzero; B above the seabed.
+
+    Returns
+    -------
+    float
+        ``L*`` (m), unstretched.
+    """
+    from scipy.optimize import brentq
+
+    span, dh, w = (scalar(name, check(name, v)) for name, check, v in _SCENE(span, dh, w))
+    EA = math.inf if EA == math.inf else scalar("EA", positive("EA", EA))
+    b, m = (
+        scalar("seabed", real("seabed", seabed)),
+        scalar("seabed_slope", real("seabed_slope", seabed_slope)),
+    )
+    require("seabed", b < 0.0, "must lie below A (< 0)", b)
+    require("seabed_slope", m != 0.0, "must be nonzero (a flat seabed's limit is its L-shape)", m)
+    require("dh", dh > b + m * span, "must put B above the seabed", dh)
+    if m < 0:  # the foot lies under B: the same line seen from B
+        span, dh, b, m = span, -dh, b + m * span - dh, -m
+    cos, sin = slope_frame(m)
+    lying_end = span / cos  # the stretched length that lands under the other end
+    top = brentq(lambda ell: ell + w * sin * ell * ell / (2.0 * EA) - lying_end, 0.0, lying_end)
+
+    def lying(ell):
+        return ell + w * sin * ell * ell / (2.0 * EA), w * sin * cos * ell
+
+    def hanging_part(ell):
+        """``s_2`` of the run, and the rise's mismatch (m)."""
+        G, H2 = lying(ell)
+        run = span - G * cos
+        if run <= 0.0:
+            return 0.0, b + G * sin - dh
+        hi = span
+        while hanging(H2, H2 * m, w, EA, hi)[0] < run:
+            hi *= 2.0
+        s2 = brentq(lambda s: hanging(H2, H2 * m, w, EA, s)[0] - run, 0.0, hi, xtol=1e-13 * span, rtol=1e-15)
+        return s2, b + G * sin + hanging(H2, H2 * m, w, EA, s2)[1] - dh
+
+    lo = top * 1e-9
+    while hanging_part(lo)[1] <= 0.0:  # the mismatch is +inf at 0: a smaller ℓ
+        lo *= 1e-3
+    ell = brentq(lambda e: hanging_part(e)[1], lo, top, xtol=1e-13 * span, rtol=1e-15)
+    return float(hanging_length(-b, w, EA) + ell + hanging_part(ell)[0])
+
+
+def _SCENE(span, dh, w):
+    """The checks of ``span``, ``dh`` and ``w``: ``(name, check, value)``."""
+    return (("span", positive, span), ("dh", real, dh), ("w", positive, w))
+
+
+def refuse_slack_on_slope(span, dh, w, EA, length, *, seabed, seabed_slope) -> None:
+    """``InputError("length")`` where a frictionless uniform line between two ends above a straight
+    slope is longer than `taut_length_on_slope`: it has no taut equilibrium, its slack lies in a
+    heap at the foot of the slope."""
+    longest = taut_length_on_slope(span, dh, w, EA, seabed=seabed, seabed_slope=seabed_slope)
+    if length > longest:
+        end = "A" if seabed_slope > 0 else "B"
+        raise InputError(
+            "length",
+            f"{length:.6g} m is longer than the {longest:.6g} m a frictionless slope holds taut between "
+            f"two ends above it: the slack slides down to the foot of the slope below {end} and lies "
+            f"there in a heap (H = 0 at {end}), a state without tension that no solver here takes; "
+            f"at most {longest:.6g} m hangs taut",
+        )
+
+
+class SlopeTouchdown(NamedTuple):
+    """A line touching down on a frictionless straight slope between two ends above it
+    (`slope_touchdown`), from the end on the slope's lower side: the horizontal force ``H_low``
+    of its part hanging from there (N), that part's length ``s_low``, the length ``lying`` on the
+    slope (m, unstretched), and whether that end is B (``from_b``: the arc lengths run from B)."""
+
+    H_low: float
+    s_low: float
+    lying: float
+    from_b: bool
+
+
+def _touchdown_closure(span, dh, w, EA, L, b, m) -> Callable:
+    """The residual (over ``L``) of the three-part line at ``(H_2, ℓ, s_1)`` (`slope_touchdown`),
+    a large one off ``H_2 > 0, ℓ > 0, s_1 > 0, s_1 + ℓ < L`` and a positive tension at the
+    lower touchdown."""
+    cos, sin = slope_frame(m)
+
+    def residual(u):
+        H2, ell, s1 = u
+        T1 = H2 / cos - w * sin * ell
+        if not (H2 > 0 and ell > 0 and s1 > 0 and s1 + ell < L and T1 > 0):
+            return np.full(3, 1e3)
+        H1 = T1 * cos
+        run, rise = on_slope(H2, ell, w, EA, L - s1, m, 0.0)[:2]  # the lower touchdown to the far end
+        x, z = hanging(H1, -H1 * m, w, EA, s1)[:2]  # the lower touchdown to the near end, mirrored
+        return np.array([-z - (b + m * x), x + run - span, -z + rise - dh]) / L
+
+    return residual
+
+
+def slope_touchdown(span, dh, w, EA, length, *, seabed, seabed_slope) -> SlopeTouchdown | None:
+    r"""The uniform line from A = (0, 0) to B = (span, dh) that touches down between its ends on
+    the frictionless straight slope ``y = seabed + x tan α`` below both, or None where it has no
+    such state (it clears the slope, or heaps at its foot: `taut_length_on_slope`) or where the
+    continuation below does not reach it.
+
+    From the end on the slope's lower side (A where ``tan α > 0``), the line hangs to a tangent
+    touchdown with the horizontal force :math:`H_1` and the tension :math:`T_1 = H_1/\cos\alpha`,
+    lies straight on the slope over ``ℓ``, its tension growing uphill to
+    :math:`T_2 = T_1 + w\ell\sin\alpha` (no friction: the weight's component along the slope),
+    and hangs tangentially from there with :math:`H_2 = T_2\cos\alpha`
+    to the other end. The closure in :math:`(H_2, \ell, s_1)`: the first touchdown on the slope
+    and the other end reached (the hanging parts Irvine's elastic catenary,
+    `skcable.cable.closure.hanging`; the lying part and the part past it Jonkman's line on a slope
+    without friction, `skcable.cable.closure.on_slope`).
+    Solved by MINPACK's ``hybr`` along a continuation in the slope, from the flat seabed's
+    three-part line (`elastic_catenary` with ``seabed``, exact at ``tan α = 0``), in steps of at
+    most a quarter of it, halved where one fails.
+
+    Parameters
+    ----------
+    span, dh, w, EA, length : float
+        As `taut_length_on_slope`, and the unstretched length (m).
+    seabed, seabed_slope : float
+        The seabed under A relative to A (m, < 0) and ``tan α`` (nonzero), B above it.
+    """
+    from scipy.optimize import root
+
+    longest = taut_length_on_slope(span, dh, w, EA, seabed=seabed, seabed_slope=seabed_slope)  # checks
+    length = scalar("length", positive("length", length))
+    if length >= longest:
+        return None
+    from_b = seabed_slope < 0
+    if from_b:  # the slope's lower side under B: the same line seen from B
+        span, dh, seabed, seabed_slope = span, -dh, seabed + seabed_slope * span - dh, -seabed_slope
+    try:
+        flat = elastic_catenary(span, dh, w, EA, length=length, seabed=seabed)
+    except (InputError, ConvergenceError):
+        return None
+    if not (0.0 < flat.length_on_seabed < length and flat.H > 0 and flat.V_A > 0):
+        return None  # no three-part line on the flat seabed to continue from
+    u = np.array([float(flat.H), float(flat.length_on_seabed), float(flat.V_A) / w])
+    done, step = 0.0, 0.25
+    while done < 1.0:
+        trial = min(1.0, done + step)
+        residual = _touchdown_closure(span, dh, w, EA, length, seabed, trial * seabed_slope)
+        sol = root(residual, u, method="hybr", options={"xtol": 1e-14})
+        if np.max(np.abs(residual(sol.x))) <= 1e-12:
+            u, done, step = sol.x, trial, min(2.0 * step, 0.25)
+        else:
+            step *= 0.5
+            if step < 1.0 / 256.0:
+                return None
+    H2, ell, s1 = (float(v) for v in u)
+    cos, sin = slope_frame(seabed_slope)
+    return SlopeTouchdown((H2 / cos - w * sin * ell) * cos, s1, ell, from_b)

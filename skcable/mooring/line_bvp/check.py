@@ -7,9 +7,12 @@ projection ``ρ`` of ``d(T t)/ds + q`` at the quadrature points with its round-o
 (`skcable.mooring.line_bvp.fields`), in the plane or in space; `strong_residual` the pointwise
 ``|d(T t)/ds + q|`` inside the elements, ``d(T t)/ds = T' t + T (I − t tᵀ) r''/|r'|``
 (``r''`` constant in a P2 element). `refuse_sliding` refuses a line whose compression lies on
-the seabed from the anchor (it has no equilibrium in tension); `partial_friction` says in a
-failure's message where friction, fully mobilised, may take more than a line's pull (the model
-does not describe that line).
+the seabed from the anchor (it has no equilibrium in tension); `refuse_slack_on_slope` one
+longer than a frictionless straight slope holds taut between two ends above it (its slack heaps
+at the slope's foot: `skcable.cable.seabed.taut_length_on_slope`, exact for one uniform segment);
+`partial_friction` says in a failure's message where friction, fully mobilised, may take more
+than a line's pull (the model does not describe that line), `slack_on_slope` where a line over
+such a slope may be longer than it holds taut.
 """
 
 from __future__ import annotations
@@ -18,9 +21,18 @@ import numpy as np
 from skfem import BilinearForm, LinearForm, asm
 
 from skcable.bvp.terms import CableState
+from skcable.cable.seabed import refuse_slack_on_slope as refuse_uniform_slack
+from skcable.cable.seabed import taut_length_on_slope
 from skcable.errors import ConvergenceError, InputError
 
-__all__ = ["equilibrium_field", "partial_friction", "refuse_sliding", "strong_residual"]
+__all__ = [
+    "equilibrium_field",
+    "partial_friction",
+    "refuse_slack_on_slope",
+    "refuse_sliding",
+    "slack_on_slope",
+    "strong_residual",
+]
 
 EPS = float(np.finfo(float).eps)
 #: how much steeper than μ the seabed must rise at the anchor (the line's discrete tangent there,
@@ -159,6 +171,60 @@ def partial_friction(failed, friction, without_friction) -> ConvergenceError:
         f"touchdown without friction ({pull:.4g} N): with its anchor above the "
         "seabed the line may rest with friction partly mobilised, which this model (Coulomb friction "
         "fully mobilised along the line) does not describe; friction=0 gives the line without it",
+        failed.history,
+        last=failed.last,
+        attempts=failed.attempts,
+    )
+
+
+def refuse_slack_on_slope(scene) -> None:
+    """``InputError("length")`` where the plane line's ``scene`` (`skcable.mooring.line_bvp.inputs.Scene`)
+    is one uniform segment without friction, point loads or cable terms between two ends above a
+    straight sloped seabed (``Seabed.straight``) and longer than that slope holds taut
+    (`skcable.cable.seabed.refuse_slack_on_slope`): it has no equilibrium in tension, and the
+    solve would stagnate on its slack."""
+    bed, segments = scene.seabed, scene.segments
+    if bed is None or bed.straight is None or scene.friction > 0 or scene.point_loads or scene.terms:
+        return
+    level, slope = bed.straight
+    L = sum(seg.length for seg in segments)
+    w = segments[0].w
+    if len(segments) != 1 or slope == 0.0 or callable(w) or not w > 0 or not level < -1e-12 * L:
+        return
+    law = segments[0].law
+    EA = np.inf if law is None else float(law.EA)
+    refuse_uniform_slack(scene.span, scene.dh, float(w), EA, L, seabed=level, seabed_slope=slope)
+
+
+def _taut_length(problem) -> float | None:
+    """The longest uniform line of ``problem``'s mean weight and compliance that its straight
+    seabed sloping below both ends holds taut without friction (m), or None where the seabed is
+    not such a slope (`Seabed.straight`) or the line is not heavy."""
+    bed, L = problem.seabed, problem.L
+    straight = getattr(bed, "straight", None)
+    if straight is None or straight[1] == 0.0 or not straight[0] < -1e-12 * L or not problem.start_weight > 0:
+        return None
+    EA = L / problem.compliance if problem.compliance > 0 else np.inf
+    return taut_length_on_slope(
+        problem.span, problem.dh, problem.start_weight, EA, seabed=straight[0], seabed_slope=straight[1]
+    )
+
+
+def slack_on_slope(failed, problem) -> ConvergenceError:
+    """``failed``, saying where the frictionless line of ``problem`` over a straight slope below
+    both ends is longer than its uniform line of the same mean weight and compliance could hang
+    taut there (`skcable.cable.seabed.taut_length_on_slope`; `refuse_slack_on_slope` refuses one
+    uniform segment): its slack may slide to the slope's foot and heap there, a state without
+    tension that the solve cannot reach. A diagnosis, not a proof (segments of other weights hang
+    otherwise): the error stays a `ConvergenceError`, with ``failed``'s history and last iterate."""
+    longest = _taut_length(problem)
+    if longest is None or not problem.L > longest:
+        return failed
+    message = str(failed).rsplit(" (last ", 1)[0] if failed.history else str(failed)
+    return ConvergenceError(
+        f"{message}; its uniform line (its mean weight, {problem.start_weight:.4g} N/m) is longer than "
+        f"the {longest:.6g} m this frictionless slope holds taut between its ends: the line may have no "
+        "taut state, its slack sliding down to the slope's foot to lie there in a heap",
         failed.history,
         last=failed.last,
         attempts=failed.attempts,

@@ -72,12 +72,15 @@ __all__ = [
 @dataclass(frozen=True)
 class Seabed:
     """The seabed ``y = b(x)`` (m), with its slope and curvature at any x; as a seabed of the
-    contact rows, ``height``, ``gradient`` (1, n) and ``hessian`` (1, 1, n) of x."""
+    contact rows, ``height``, ``gradient`` (1, n) and ``hessian`` (1, 1, n) of x. ``straight``:
+    ``(b(0), b')`` (m, -) of a seabed known to be a straight line (a flat one's ``(flat, 0)``),
+    None for a callable's."""
 
     function: Callable
     slope_fn: Callable | None
     flat: float | None
     step: float
+    straight: tuple[float, float] | None = None
 
     def __call__(self, x):
         if self.flat is not None:
@@ -127,7 +130,9 @@ class Seabed:
 
 
 def seabed_of(seabed, seabed_slope, span) -> Seabed | None:
-    """The `Seabed` of ``seabed=`` (a height or a callable ``b(x)``) and ``seabed_slope=``."""
+    """The `Seabed` of ``seabed=`` (a height or a callable ``b(x)``) and ``seabed_slope=`` (with
+    a height: a number, the straight seabed ``b(x) = seabed + seabed_slope x``; with a callable:
+    a callable of x returning db/dx)."""
     if seabed is None:
         if seabed_slope is not None:
             raise InputError("seabed_slope", "applies to a seabed: give seabed= as well")
@@ -135,14 +140,32 @@ def seabed_of(seabed, seabed_slope, span) -> Seabed | None:
     step = 1e-5 * span
     if callable(seabed):
         if seabed_slope is not None and not callable(seabed_slope):
-            raise InputError("seabed_slope", "must be a callable of x returning db/dx")
+            raise InputError("seabed_slope", "must be a callable of x returning db/dx with a callable seabed")
         return Seabed(seabed, seabed_slope, None, step)
-    if seabed_slope is not None:
-        raise InputError("seabed_slope", "a flat seabed (a number) has no slope to give")
     if isinstance(seabed, (np.ndarray, list, tuple)) and np.size(seabed) != 1:
         raise InputError("seabed", "a height (m) or a callable b(x); one scene at a time")
-    flat = float(np.asarray(real("seabed", seabed)))
-    return Seabed(_Level(flat), None, flat, step)
+    level = float(np.asarray(real("seabed", seabed)))
+    slope = 0.0 if seabed_slope is None else seabed_slope
+    if callable(slope) or np.size(slope) != 1:
+        raise InputError("seabed_slope", "with a seabed height (a number), a slope dy/dx (a number)")
+    slope = float(np.asarray(real("seabed_slope", slope)))
+    if slope == 0.0:
+        return Seabed(_Level(level), None, level, step, (level, 0.0))
+    return Seabed(_Straight(level, slope), _Straight(slope, 0.0), None, step, (level, slope))
+
+
+class _Straight:
+    """The height ``b(x) = level + slope x`` of a straight seabed (m), or its slope (``level`` the
+    slope, ``slope`` 0): a callable that pickles."""
+
+    def __init__(self, level: float, slope: float):
+        self.level, self.slope = level, slope
+
+    def __call__(self, x):
+        return self.level + self.slope * np.asarray(x, dtype=float)
+
+    def __repr__(self):
+        return f"{self.level:g} + {self.slope:g} x"
 
 
 class _Level:

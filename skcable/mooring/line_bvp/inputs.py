@@ -22,6 +22,7 @@ from skcable.bvp.terms import CableTerm
 from skcable.errors import InputError
 from skcable.fe import NewtonOptions
 from skcable.mooring.axial import ConstantEA, StrainLaw, strain_law
+from skcable.mooring.line_bvp.check import refuse_slack_on_slope
 from skcable.mooring.line_bvp.contact import Seabed, seabed_of
 
 __all__ = [
@@ -291,6 +292,8 @@ def scene(
     whole("fit_touchdown", fit_touchdown, 0, 10)
     terms = terms_of(terms)
     time_limit = scalar("time_limit", positive("time_limit", time_limit))
-    return Scene(
+    checked = Scene(
         span, dh, segs, loads, bed, friction, int(n_elements), int(fit_touchdown), options, terms, time_limit
     )
+    refuse_slack_on_slope(checked)  # no equilibrium in tension: its slack heaps at the slope's foot
+    return checked

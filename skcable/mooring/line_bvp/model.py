@@ -50,10 +50,13 @@ def solve_line_bvp(
         (N/m, or a callable of the arc length s from A) and axial stiffness
         (N, None for inextensible). Joints are mesh nodes.
     seabed : float or callable, optional
-        Seabed height ``b`` relative to A (m): a number (flat) or a callable
-        ``b(x)`` (array in, array out). A must lie on or above it, B above it.
-    seabed_slope : callable, optional
-        ``b'(x)``; central differences of ``b`` (step 1e-5 span) otherwise.
+        Seabed height ``b`` relative to A (m): a number (flat, or straight with
+        ``seabed_slope``) or a callable ``b(x)`` (array in, array out). A must lie
+        on or above it, B above it.
+    seabed_slope : float or callable, optional
+        With a number ``seabed``, the slope ``tan α`` of the straight seabed
+        ``b(x) = seabed + x tan α``; with a callable, ``b'(x)`` (central
+        differences of ``b``, step 1e-5 span, otherwise).
     friction : float
         Coulomb coefficient μ of the grounded line, fully mobilised towards
         the anchor (Jonkman's model); needs a seabed.

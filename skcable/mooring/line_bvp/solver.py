@@ -24,7 +24,7 @@ import numpy as np
 from skcable._budget import Budget
 from skcable.errors import ConvergenceError
 from skcable.fe import NewtonOptions
-from skcable.mooring.line_bvp.check import partial_friction, refuse_sliding
+from skcable.mooring.line_bvp.check import partial_friction, refuse_sliding, slack_on_slope
 from skcable.mooring.line_bvp.iterate import solve_on
 from skcable.mooring.line_bvp.mesh import COARSE
 
@@ -214,8 +214,12 @@ class LineSolver:
         """``failed``, saying where friction fully mobilised may take more than the line's pull
         with its anchor above the seabed (`skcable.mooring.line_bvp.check.partial_friction`),
         from the same line solved without friction by this driver, within what is left of the
-        budget (its own record of solves: the failure's ``last`` stays this line's)."""
-        if not (self.scene.friction > 0 and self.anchor_above_seabed()):
+        budget (its own record of solves: the failure's ``last`` stays this line's); without
+        friction, where the line over a straight slope below both ends may be longer than it
+        holds taut (`skcable.mooring.line_bvp.check.slack_on_slope`)."""
+        if self.scene.friction == 0:  # over a slope below both ends: maybe longer than it holds taut
+            return slack_on_slope(failed, self.problem(COARSE))
+        if not self.anchor_above_seabed():
             return failed
         other = type(self)(replace(self.scene, friction=0.0))
         other.budget = Budget(time_limit=max(0.0, self.budget.deadline - time.monotonic()))

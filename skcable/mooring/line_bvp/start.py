@@ -34,7 +34,7 @@ import numpy as np
 from skcable import _plausible
 from skcable.cable._catenary import catenary
 from skcable.cable._elastic import elastic_catenary as free_catenary
-from skcable.cable.seabed import elastic_catenary, sloped_seabed_catenary
+from skcable.cable.seabed import elastic_catenary, slope_touchdown, sloped_seabed_catenary
 from skcable.errors import ConvergenceError, InputError
 from skcable.mooring.segments import Buoy, ClumpWeight, Line, Segment
 
@@ -178,16 +178,88 @@ def start_form(problem):
     return _uniform(problem)[3]
 
 
-def _straight_slope(problem) -> float | None:
-    """The slope of a straight seabed through A along the line (``b(0) = 0``, the slope the same
-    at A and under B) under a line of positive start weight, else None."""
+def _straight(problem) -> tuple[float, float] | None:
+    """``(b(0), b')`` of a sloped seabed known to be straight (`Seabed.straight`) or that looks
+    straight (the slope the same at A and under B, and the height under B the line's through
+    them) under a line of positive start weight, else None: a start's guess, not a claim."""
     bed, L = problem.seabed, problem.L
     if bed is None or bed.flat is not None or not problem.start_weight > 0:
         return None
-    if abs(float(bed(np.array([0.0]))[0])) > 1e-12 * L:
-        return None
+    if bed.straight is not None:
+        return bed.straight
+    b0, b1 = (float(b) for b in bed(np.array([0.0, problem.span])))
     k0, k1 = (float(k) for k in bed.slope(np.array([0.0, problem.span])))
-    return k0 if abs(k0 - k1) <= 1e-12 * max(1.0, abs(k0)) else None
+    if abs(k0 - k1) > 1e-12 * max(1.0, abs(k0)) or abs(b0 + k0 * problem.span - b1) > 1e-12 * L:
+        return None
+    return b0, k0
+
+
+def _straight_slope(problem) -> float | None:
+    """The slope of a straight seabed through A along the line (``b(0) = 0``; `_straight`) under
+    a line of positive start weight, else None."""
+    line = _straight(problem)
+    if line is None or abs(line[0]) > 1e-12 * problem.L:
+        return None
+    return line[1]
+
+
+def _start_stiffness(problem) -> float:
+    """The uniform line's axial stiffness (N) for a closed-form start: its mean compliance's, an
+    inextensible line's ``1e9 w L``."""
+    w, L = problem.start_weight, problem.L
+    return L / problem.compliance if problem.compliance > 0 else 1e9 * w * L
+
+
+def _slope_touchdown(problem):
+    """The start on a straight seabed sloping along the line below both ends (`_straight`): the
+    uniform line touching down between them on the slope without friction
+    (`skcable.cable.seabed.slope_touchdown`: it hangs, lies on the slope and rises, its tension
+    growing uphill by the weight's component), on the problem's dofs; None elsewhere or where it
+    has no such state. The flat line at the anchor's level lifted onto the slope can leave Newton
+    stagnating (a chain 440 m long between ends 40 m and 60 m above a 6° slope, 380 m apart,
+    ``tests/mooring/test_line_geometry.py``)."""
+    line = _straight(problem)
+    L = problem.L
+    if line is None or not line[0] < -1e-12 * L or line[1] == 0.0:
+        return None
+    span, dh, w, EA = problem.span, problem.dh, problem.start_weight, _start_stiffness(problem)
+    try:
+        with _plausible.quiet():  # a start, not an answer
+            touchdown = slope_touchdown(span, dh, w, EA, L, seabed=line[0], seabed_slope=line[1])
+    except (InputError, ConvergenceError):
+        return None
+    if touchdown is None:
+        return None
+    s, s_t = problem.basis.doflocs[0], problem.tension_points()
+    if touchdown.from_b:  # its arc lengths and frame from B: x' = span - x, y' = y - dh
+        x, y, _ = _three_parts(touchdown, w, EA, line[1], L - s)
+        T = _three_parts(touchdown, w, EA, line[1], L - s_t)[2]
+        return problem.with_ends([span - x, dh + y], T)
+    x, y, _ = _three_parts(touchdown, w, EA, line[1], s)
+    return problem.with_ends([x, y], _three_parts(touchdown, w, EA, line[1], s_t)[2])
+
+
+def _three_parts(touchdown, w, EA, slope, s):
+    """``(x, y, T)`` at the arc lengths ``s`` (m) from the end on the slope's lower side of the
+    `skcable.cable.seabed.SlopeTouchdown` ``touchdown`` (that end at the origin, the slope rising
+    by ``|slope|`` away from it): hanging (`hanging`), lying straight with ``dT/ds = w sin α``,
+    hanging again."""
+    m = abs(slope)
+    cos, sin = 1.0 / np.hypot(1.0, m), m / np.hypot(1.0, m)
+    H1, s1, ell = touchdown.H_low, touchdown.s_low, touchdown.lying
+    T1 = H1 / cos
+    near = hanging(H1, w * s1 - H1 * m, w, EA)
+    x1, y1 = float(near[0](s1)), float(near[1](s1))
+    u = np.clip(s - s1, 0.0, ell)
+    G = u + (T1 * u + 0.5 * w * sin * u * u) / EA
+    H2 = (T1 + w * sin * ell) * cos
+    G2 = ell + (T1 * ell + 0.5 * w * sin * ell * ell) / EA
+    far = hanging(H2, -H2 * m, w, EA)
+    r = np.maximum(s - s1 - ell, 0.0)
+    x = np.where(s <= s1, near[0](s), np.where(r > 0, x1 + G2 * cos + far[0](r), x1 + G * cos))
+    y = np.where(s <= s1, near[1](s), np.where(r > 0, y1 + G2 * sin + far[1](r), y1 + G * sin))
+    T = np.where(s <= s1, near[2](s), np.where(r > 0, far[2](r), T1 + w * sin * u))
+    return x, y, T
 
 
 def _on_slope(problem):
@@ -201,8 +273,7 @@ def _on_slope(problem):
     k0 = _straight_slope(problem)
     if k0 is None:
         return None
-    w, L = problem.start_weight, problem.L
-    EA = L / problem.compliance if problem.compliance > 0 else 1e9 * w * L
+    w, L, EA = problem.start_weight, problem.L, _start_stiffness(problem)
     try:
         with _plausible.quiet():  # a start, not an answer
             line = sloped_seabed_catenary(
@@ -217,11 +288,13 @@ def _on_slope(problem):
 
 def closed_form_start(problem):
     """The first iterate on ``problem``'s dofs: ``[x, y, T]``, the ends at A and B exactly; on a
-    straight slope through A, the line on the slope (`_on_slope`), elsewhere `lifted_start`;
-    the heap refused (module docstring)."""
-    sloped = _on_slope(problem)
-    if sloped is not None:
-        return sloped
+    straight slope through A, the line on the slope (`_on_slope`); on one below both ends, where
+    the line touches down on it, the line touching down (`_slope_touchdown`); elsewhere
+    `lifted_start`; the heap refused (module docstring)."""
+    for sloped in (_on_slope, _slope_touchdown):
+        start = sloped(problem)
+        if start is not None:
+            return start
     return lifted_start(problem)
 
 

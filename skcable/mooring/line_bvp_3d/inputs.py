@@ -18,7 +18,8 @@ from skcable._checks import nonnegative, one_of, point, positive, scalar, whole
 from skcable.bvp.current import Current, current_of
 from skcable.errors import InputError
 from skcable.fe import NewtonOptions
-from skcable.mooring.bathymetry import Bathymetry, bathymetry_of
+from skcable.mooring.bathymetry import Bathymetry, Plane, bathymetry_of
+from skcable.mooring.line_bvp.check import refuse_slack_on_slope
 from skcable.mooring.line_bvp.inputs import (
     LINE_OPTIONS,
     LineSegment,
@@ -27,6 +28,7 @@ from skcable.mooring.line_bvp.inputs import (
     segments_of,
     terms_of,
 )
+from skcable.mooring.line_bvp_3d.vertical_plane import plane_scene
 
 __all__ = [
     "MESHES",
@@ -163,4 +165,8 @@ def scene(anchor, fairlead, checked: dict) -> Scene3D:
             )
         if not b[2] > float(bed.height(b[0], b[1])):
             raise InputError("fairlead", "must lie above the seabed")
-    return Scene3D(anchor=a, fairlead=b, **checked)
+    out = Scene3D(anchor=a, fairlead=b, **checked)
+    plane = plane_scene(out, out.time_limit) if isinstance(bed, Plane) else None
+    if plane is not None:  # in its vertical plane: the plane line's refusals of the data hold
+        refuse_slack_on_slope(plane)
+    return out

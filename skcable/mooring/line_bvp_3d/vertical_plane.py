@@ -39,11 +39,15 @@ def plane_seabed(bed: Bathymetry, anchor, e, length: float) -> Seabed:
     a = np.asarray(anchor, dtype=float)
     profile = bed.along(a[:2], e[:2])
     flat = getattr(bed, "flat", None)
+    straight = None
+    if isinstance(bed, Plane):  # a plane is straight along any line
+        straight = (float(profile(np.zeros(1))[0]) - a[2], float(bed.slope @ np.asarray(e[:2], dtype=float)))
     return Seabed(
         function=lambda x: profile(x) - a[2],
         slope_fn=profile.slope,
         flat=None if flat is None else flat - a[2],
         step=1e-6 * length,
+        straight=straight,
     )
 
 
