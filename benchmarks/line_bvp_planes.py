@@ -16,8 +16,11 @@ friction 0 mostly (0.3 to 1 on a fifth of the seabed scenes). A scene whose unif
 mean weight, its segments' EA in series) has no equilibrium on the seabed by Jonkman's closed
 form on the slope (a heap; without friction, a slack end on a rising slope, which slides) is
 shortened towards 1.02 chords, else drawn again (`_has_equilibrium`): the point loads and the
-varying weights can still take a scene out of equilibrium, which both then fail. Both solvers
-run with their own defaults otherwise (``fit_touchdown`` 2 in the plane, 3 in space).
+varying weights can still take a scene out of equilibrium, which both then fail (the uniform
+line longer than a frictionless slope below both ends holds taut, `taut_length_on_slope`, is not
+redrawn: the solvers' diagnosis names it). Both solvers run with their own defaults otherwise
+(``fit_touchdown`` 3 in both); the plane line takes the sloped seabed as two numbers
+(``seabed=h, seabed_slope=slope``).
 
 In space the anchor is at (0, 0, 0), the fairlead at (span, 0, dh), the seabed
 ``Plane(h, (slope, 0))``; the plane's end forces ``(H_A, V_A, H_B, V_B)`` are space's

@@ -57,6 +57,12 @@ FACTORIES = [
         ),
         id="sloped",
     ),
+    pytest.param(
+        lambda span, dh: cable.seabed.touchdown_on_slope(
+            span, dh, W, 2e5, length=LENGTH, seabed=-15.0, seabed_slope=0.1
+        ),
+        id="slope-touchdown",
+    ),
     # LineSolution (a multi-segment Line) is checked in tests/mooring/test_lines_protocol.py: its
     # tensions() has no H_lower column (one more column would move the pinned tables' shape)
     # the finite-element solutions (graph and arc forms): their tensions along the cable are the
@@ -109,6 +115,10 @@ def applied_load(result) -> float:
         return W * result.span
     if isinstance(result, LineBVPSolution):  # the seabed carries part of the weight
         return W * result.length - float(np.sum(result.contact_force[:, 1]))
+    if isinstance(result, cable.seabed.SlopeTouchdownLine):
+        # the frictionless slope's reaction is normal to it, w cos(alpha) per length: its vertical
+        # part w cos^2(alpha) over the lying length
+        return W * result.length - W * result.length_on_seabed / (1.0 + result.seabed_slope**2)
     if isinstance(result, cable.SlopedSeabedCatenary):
         # the grounded part's balance: the seabed's vertical force is W L_B - (T_t - T_A) sin(alpha)
         sin = result.seabed_slope / math.hypot(1.0, result.seabed_slope)

@@ -15,7 +15,7 @@ One concern per module (the packages split further, see their docstrings):
   contact of any shape with friction);
 - `line_bvp_3d`: a line in space as an arc-length BVP (current drag, bathymetry, axial laws);
 - `choice`: the model a `Line` takes in its scene, and why, for every scene: in the vertical
-  plane of its ends (free, grounded, touchdown between the ends, lying on the seabed, on a
+  plane of its ends (free, grounded, touchdown between the ends or on a slope, lying on the seabed, on a
   slope, or the line BVP), between two points in space, in the sea (closed form or the 3-D
   line BVP), in a system; `line_in_plane` and `line_between`;
 - the models it chooses among and their results: `plane_line` (the solved line in its plane,

@@ -27,9 +27,9 @@ end, so over a flat seabed the line is solved from its lower end (`Line.variant`
 - on a slope, an end on it and one uniform segment: `skcable.cable.sloped_seabed_catenary` from
   that end (``"grounded (slope)"``, or ``"free"`` where it leaves the slope upwards); neither end
   on it: the free line where it clears the slope (`skcable.mooring.slope.clearance`); a
-  frictionless uniform segment longer than the slope holds taut is refused
-  (`skcable.cable.seabed.refuse_slack_on_slope`: its slack heaps at the slope's foot), a shorter
-  one that touches down is the line BVP from its closed form (`skcable.cable.seabed.slope_touchdown`);
+  frictionless uniform segment that touches down between them hangs, lies on it and rises
+  (``"touchdown on the slope"``, `skcable.cable.seabed.touchdown_on_slope`), refused beyond the
+  length the slope holds taut (its slack heaps at the slope's foot);
 - anything else (several segments or attachments touching down, a buoy on the grounded part, a
   second touchdown, a line lying along a slope with a buoy): the plane line BVP (``"bvp"``,
   `skcable.mooring.bvp_model`).
@@ -66,8 +66,8 @@ from functools import partial
 import numpy as np
 
 from skcable._checks import point, positive, real, scalar
-from skcable.cable.seabed import elastic_catenary, refuse_slack_on_slope, sloped_seabed_catenary
-from skcable.errors import InputError
+from skcable.cable.seabed import elastic_catenary, sloped_seabed_catenary, touchdown_on_slope
+from skcable.errors import ConvergenceError, InputError
 from skcable.mooring.bathymetry import Plane
 from skcable.mooring.between_points import LineBetween, plane_of
 from skcable.mooring.bvp_model import solve_bvp_line
@@ -237,12 +237,10 @@ def solve_on_slope(line, scene, on_A, on_B, start, bvp) -> PlaneLine:
         free = _free_clear(line, scene, start, on_seabed_tolerance(span, dh, seabed))
         if free is not None:
             return free
-        seg = line.segments[0]
-        if line.friction == 0 and uniform(line):  # no taut state beyond this length (in A's frame)
-            refuse_slack_on_slope(span, dh, seg.w, seg.EA, seg.length, seabed=seabed, seabed_slope=slope)
-        return bvp(
-            line, *scene[:3], "the line touches down on the slope between its ends (no closed form)", slope
-        )
+        if line.friction == 0 and uniform(line):
+            return _touchdown_on_slope(line, scene, bvp)
+        reason = "the line touches down on the slope between its ends (no closed form)"
+        return bvp(line, *scene[:3], reason, slope)
     reverse = on_B
     variant = line.variant(reverse=reverse)
     if not uniform(variant):
@@ -260,6 +258,31 @@ def solve_on_slope(line, scene, on_A, on_B, start, bvp) -> PlaneLine:
     reason = "an end on the sloped seabed: the line rests on the slope up to a touchdown (closed form)"
     jacobian = partial(of_sloped, solution)
     return _plane(scene, solution, reverse, "grounded (slope)", reason, ("slope",), jacobian, variant)
+
+
+def _touchdown_on_slope(line, scene, bvp) -> PlaneLine:
+    """One uniform frictionless segment that touches down on the slope between its ends: refused
+    beyond the length the slope holds taut, else its closed form (`touchdown_on_slope`), else
+    (where its continuation does not reach it) the line BVP from the same start."""
+    span, dh, seabed, slope = scene
+    seg = line.segments[0]
+    try:
+        solution = touchdown_on_slope(
+            span, dh, seg.w, seg.EA, length=seg.length, seabed=seabed, seabed_slope=slope
+        )
+    except (ConvergenceError, InputError) as failed:  # the continuation, or a touch below its sampling
+        if isinstance(failed, InputError) and failed.argument != "seabed":
+            raise
+        reason = f"the line touches down on the slope between its ends (its closed form: {failed})"
+        return bvp(line, *scene[:3], reason, slope)
+    reason = (
+        "neither end on the sloped seabed and the line touching down between them: it hangs, lies on "
+        "it and rises (closed form)"
+    )
+    key, jacobian = ("touchdown (slope)",), partial(of_own, solution)
+    return _plane(
+        scene, solution, False, "touchdown on the slope", reason, key, jacobian, line.variant(reverse=False)
+    )
 
 
 def _free_clear(line, scene, start, tol):

@@ -19,7 +19,15 @@ from skcable.results import ProfileMixin
 __all__ = ["MODELS", "ON_SEABED", "PlaneLine", "on_seabed_tolerance", "uniform"]
 
 #: The models a line between two ends may take.
-MODELS = ("free", "grounded", "grounded (slope)", "touchdown between the ends", "on the seabed", "bvp")
+MODELS = (
+    "free",
+    "grounded",
+    "grounded (slope)",
+    "touchdown between the ends",
+    "touchdown on the slope",
+    "on the seabed",
+    "bvp",
+)
 #: An end within this fraction of the scene's size (span, heights, at least 1 m) lies on the seabed.
 ON_SEABED = 1e-9
 

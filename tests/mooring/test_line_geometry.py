@@ -100,37 +100,64 @@ def test_neither_end_on_a_slope_hangs_free_where_it_clears_it():
 SLOPE_SCENE = dict(span=380.0, dh=60.0, seabed=-40.0, slope=math.tan(math.radians(6.0)))
 
 
+def _slope_ends(L, span, dh, b, t, start):
+    """``(H_A, V_A, H_B, V_B)`` of the 30-digit closure of the line touching down on the slope
+    (`tests.mooring.mooring_reference.slope_touchdown_line`, A on the slope's lower side) and its
+    unknowns, from ``start = (H_2, ℓ, s_1)``."""
+    H1, s1, ell, H2 = slope_touchdown_line(span, dh, W, EA, L, b, t, start)
+    return np.array([H1, W * s1 - H1 * t, H2, H2 * t + W * (L - s1 - ell)]), (H2, ell, s1)
+
+
 def test_a_line_touching_down_on_a_slope_between_its_ends_is_its_closed_form():
     """A frictionless line that sags onto a slope between its ends hangs, lies on it (its tension
     growing uphill by the weight's component) and rises: the 30-digit closure
-    (`tests.mooring.mooring_reference.slope_touchdown_line`) gives its state. The closed form
-    `slope_touchdown` (the BVP's start) is that closure's root; the line BVP `line_in_plane`
-    takes, from either end, converges to it within its discretisation (before this start both
-    line BVPs stagnated from the flat line lifted onto the slope); the slope's reaction on the
-    line is normal to it (no friction): the ends' forces and the weight leave no net force along
-    the slope."""
+    (`tests.mooring.mooring_reference.slope_touchdown_line`) gives its state. `line_in_plane`
+    takes it in closed form (`touchdown_on_slope`), from either end, within 1e-9; the line BVPs
+    (`solve_line_bvp`, either way up), started from it, converge to it within their
+    discretisation (before, both stagnated from the flat line lifted onto the slope); the slope's
+    reaction is normal to it (no friction): the ends' forces and the weight leave no net force
+    along the slope; the Jacobian is the closure's, by its central differences."""
     span, dh, b, t = SLOPE_SCENE.values()
+    mirrored = dict(seabed=b - dh + span * t, seabed_slope=-t)  # seen from B: the slope falls
     for L in (420.0, 440.0, 450.0):
         closed = cable.seabed.slope_touchdown(span, dh, W, EA, L, seabed=b, seabed_slope=t)
         H2 = closed.H_low + W * closed.lying * t / (1.0 + t * t)  # T grows by w ℓ sin α: H by w ℓ sin α cos α
-        ref = slope_touchdown_line(span, dh, W, EA, L, b, t, (H2, closed.lying, closed.s_low))
-        np.testing.assert_allclose([closed.H_low, closed.s_low, closed.lying], ref[:3], rtol=1e-9)
+        ends, unknowns = _slope_ends(L, span, dh, b, t, (H2, closed.lying, closed.s_low))
+        np.testing.assert_allclose([closed.s_low, closed.lying], [unknowns[2], unknowns[1]], rtol=1e-9)
         line = mooring.Line([mooring.Segment(L, W, EA)])
-        for r, H_A, H_B in (
-            (mooring.line_in_plane(line, span, dh, seabed=b, seabed_slope=t), ref[0], ref[3]),
+        r = mooring.line_in_plane(line, span, dh, seabed=b, seabed_slope=t)
+        down = mooring.line_in_plane(line, span, -dh, **mirrored)
+        assert r.model == down.model == "touchdown on the slope"
+        np.testing.assert_allclose([r.H_A, r.V_A, r.H_B, r.V_B], ends, rtol=1e-9)
+        np.testing.assert_allclose([down.H_A, down.V_A, down.H_B, down.V_B], ends[[2, 3, 0, 1]], rtol=1e-9)
+        for bvp, want in (
             (
-                mooring.line_in_plane(line, span, -dh, seabed=b - dh + span * t, seabed_slope=-t),
-                ref[3],
-                ref[0],
+                mooring.solve_line_bvp(span, dh, [mooring.BVPSegment(L, W, EA)], seabed=b, seabed_slope=t),
+                ends,
+            ),
+            (
+                mooring.solve_line_bvp(span, -dh, [mooring.BVPSegment(L, W, EA)], **mirrored),
+                ends[[2, 3, 0, 1]],
             ),
         ):
-            assert r.model == "bvp" and "touches down on the slope between its ends" in r.reason
-            np.testing.assert_allclose([r.H_A, r.H_B], [H_A, H_B], rtol=2e-6)
-        r = mooring.line_in_plane(line, span, dh, seabed=b, seabed_slope=t)
+            got = [bvp.H_A, bvp.V_A, bvp.H_B, bvp.V_B]
+            np.testing.assert_allclose(got, want, rtol=0, atol=2e-6 * np.abs(want).max())
         x, y = r.xy(np.linspace(0.0, L, 4001)).T
-        assert (y - b - t * x).min() > -1e-6 * L
+        assert (y - b - t * x).min() > -1e-9 * L and (y - b - t * x).min() < 1e-9 * L  # on the slope
         net = np.array([r.H_B - r.H_A, r.V_A + r.V_B - W * L])
-        assert abs(net @ np.array([1.0, t])) < 1e-6 * W * L and net[1] < 0.0
+        assert abs(net @ np.array([1.0, t])) < 1e-9 * W * L and net[1] < 0.0
+    h = 1e-3  # m: the closure's central differences in the span and the ends' heights
+    moves = [(h, 0.0, 0.0), (0.0, -h, -h), (0.0, h, 0.0)]  # span; A up (dh and the seabed down); B up
+    columns = [
+        (
+            _slope_ends(L, span + a, dh + c, b + d, t, unknowns)[0]
+            - _slope_ends(L, span - a, dh - c, b - d, t, unknowns)[0]
+        )
+        / (2 * h)
+        for a, c, d in moves
+    ]
+    J = np.array(columns).T
+    np.testing.assert_allclose(r.jacobian(), J, rtol=0, atol=1e-5 * np.abs(J).max())
 
 
 def test_a_line_longer_than_a_frictionless_slope_holds_taut_is_refused():
@@ -155,8 +182,21 @@ def test_a_line_longer_than_a_frictionless_slope_holds_taut_is_refused():
         mooring.solve_line_bvp_3d(
             (0.0, 0.0, 0.0), (span, 0.0, dh), [mooring.BVPSegment(L, W, EA)], seabed=Plane(b, (t, 0.0))
         )
+    with pytest.raises(InputError, match=heaps.format("A")):
+        cable.seabed.touchdown_on_slope(span, dh, W, EA, length=L, seabed=b, seabed_slope=t)
+    with pytest.raises(InputError, match="seabed: the free line does not dip below the slope"):
+        cable.seabed.touchdown_on_slope(span, dh, W, EA, length=390.0, seabed=b, seabed_slope=t)
     shorter = mooring.Line([mooring.Segment(0.98 * longest, W, EA)])
     assert mooring.line_in_plane(shorter, span, dh, seabed=b, seabed_slope=t).H_A > 0
+    # 1e-3 short of it the line is nearly slack where it lands: solved so, or a failure saying so
+    try:
+        r = mooring.solve_line_bvp(
+            span, dh, [mooring.BVPSegment(0.999 * longest, W, EA)], seabed=b, seabed_slope=t
+        )
+    except ConvergenceError as failed:
+        assert "nearly slack where it lands on the slope's lower side" in str(failed)
+    else:
+        assert 0 < r.H_A < 0.02 * r.H_B
 
 
 def test_a_failure_over_a_slope_says_where_the_line_may_be_longer_than_it_holds_taut():

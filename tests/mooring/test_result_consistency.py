@@ -146,6 +146,13 @@ PLANE = {
     "touchdown between the ends": lambda: mooring.line_in_plane(
         mooring.Line([mooring.Segment(130.0, 100.0, 1e9)]), 100.0, 5.0, seabed=-20.0
     ),
+    "touchdown on the slope": lambda: mooring.line_in_plane(
+        mooring.Line([mooring.Segment(440.0, 2456.82, 1.2326e9)]),
+        380.0,
+        60.0,
+        seabed=-40.0,
+        seabed_slope=0.105,
+    ),
     "on the seabed": lambda: mooring.line_in_plane(
         mooring.Line([mooring.Segment(300.0, 100.0, 1e8)]), 300.5, 0.0, seabed=0.0
     ),

@@ -15,9 +15,10 @@ Press, 1981). One concern per module:
 - `solve`: `elastic_catenary`, which picks each element's regime and solves it;
 - `solution`: `SeabedCatenary`, the solution in every regime (maps, checks, stiffness);
 - the sloped seabed (its closure and Jacobian `skcable.cable.closure.on_slope`): `sloped`
-  (`sloped_seabed_catenary`; below both ends and without friction, `slope_touchdown`, the line
-  that touches down between them, and `taut_length_on_slope`, the longest one the slope holds
-  taut) and `sloped_solution` (`SlopedSeabedCatenary`).
+  (`sloped_seabed_catenary`; below both ends and without friction, `taut_length_on_slope`, the
+  longest line the slope holds taut) and `sloped_solution` (`SlopedSeabedCatenary`);
+  `touchdown` (`slope_touchdown`, `touchdown_on_slope`, `SlopeTouchdownLine`): below both ends
+  and without friction, the line that touches down between them.
 
 Data flow: ``solve`` → (``free`` | ``heap`` | ``grounded`` → `skcable.cable.closure`) → ``solution``;
 ``sloped`` starts from ``solve`` in the slope's frame → `skcable.cable.closure` →
@@ -25,20 +26,21 @@ Data flow: ``solve`` → (``free`` | ``heap`` | ``grounded`` → `skcable.cable.
 """
 
 from skcable.cable.closure import anchor_part, grounded_closure, hanging_length
-from skcable.cable.seabed.sloped import (
-    SlopeTouchdown,
-    refuse_slack_on_slope,
-    slope_touchdown,
-    sloped_seabed_catenary,
-    taut_length_on_slope,
-)
+from skcable.cable.seabed.sloped import refuse_slack_on_slope, sloped_seabed_catenary, taut_length_on_slope
 from skcable.cable.seabed.sloped_solution import SlopedSeabedCatenary
 from skcable.cable.seabed.solution import SeabedCatenary
 from skcable.cable.seabed.solve import elastic_catenary
+from skcable.cable.seabed.touchdown import (
+    SlopeTouchdown,
+    SlopeTouchdownLine,
+    slope_touchdown,
+    touchdown_on_slope,
+)
 
 __all__ = [
     "SeabedCatenary",
     "SlopeTouchdown",
+    "SlopeTouchdownLine",
     "SlopedSeabedCatenary",
     "anchor_part",
     "elastic_catenary",
@@ -48,4 +50,5 @@ __all__ = [
     "slope_touchdown",
     "sloped_seabed_catenary",
     "taut_length_on_slope",
+    "touchdown_on_slope",
 ]

@@ -1,12 +1,11 @@
 """A line on a sloped seabed in closed form: through the anchor, ``y = x tan α``
 (`sloped_seabed_catenary`, which states the closure and its sources); below both ends and without
-friction, the line touching down between them (`slope_touchdown`) and the longest one the slope
-holds taut (`taut_length_on_slope`, `refuse_slack_on_slope`)."""
+friction, the longest line the slope holds taut (`taut_length_on_slope`, `refuse_slack_on_slope`;
+the line shorter than that which touches down between them: `skcable.cable.seabed.slope_touchdown`)."""
 
 from __future__ import annotations
 
 import math
-from typing import TYPE_CHECKING, NamedTuple
 
 import numpy as np
 
@@ -18,17 +17,7 @@ from skcable.cable.seabed.sloped_solution import SlopedSeabedCatenary
 from skcable.cable.seabed.solve import elastic_catenary
 from skcable.errors import ConvergenceError, InputError
 
-if TYPE_CHECKING:
-    from collections.abc import Callable
-
-__all__ = [
-    "SlopeTouchdown",
-    "SlopedSeabedCatenary",
-    "refuse_slack_on_slope",
-    "slope_touchdown",
-    "sloped_seabed_catenary",
-    "taut_length_on_slope",
-]
+__all__ = ["SlopedSeabedCatenary", "refuse_slack_on_slope", "sloped_seabed_catenary", "taut_length_on_slope"]
 
 
 def _scaled_closure(u, scene, scale, chord, history):
@@ -281,92 +270,3 @@ def refuse_slack_on_slope(span, dh, w, EA, length, *, seabed, seabed_slope) -> N
             f"there in a heap (H = 0 at {end}), a state without tension that no solver here takes; "
             f"at most {longest:.6g} m hangs taut",
         )
-
-
-class SlopeTouchdown(NamedTuple):
-    """A line touching down on a frictionless straight slope between two ends above it
-    (`slope_touchdown`), from the end on the slope's lower side: the horizontal force ``H_low``
-    of its part hanging from there (N), that part's length ``s_low``, the length ``lying`` on the
-    slope (m, unstretched), and whether that end is B (``from_b``: the arc lengths run from B)."""
-
-    H_low: float
-    s_low: float
-    lying: float
-    from_b: bool
-
-
-def _touchdown_closure(span, dh, w, EA, L, b, m) -> Callable:
-    """The residual (over ``L``) of the three-part line at ``(H_2, ℓ, s_1)`` (`slope_touchdown`),
-    a large one off ``H_2 > 0, ℓ > 0, s_1 > 0, s_1 + ℓ < L`` and a positive tension at the
-    lower touchdown."""
-    cos, sin = slope_frame(m)
-
-    def residual(u):
-        H2, ell, s1 = u
-        T1 = H2 / cos - w * sin * ell
-        if not (H2 > 0 and ell > 0 and s1 > 0 and s1 + ell < L and T1 > 0):
-            return np.full(3, 1e3)
-        H1 = T1 * cos
-        run, rise = on_slope(H2, ell, w, EA, L - s1, m, 0.0)[:2]  # the lower touchdown to the far end
-        x, z = hanging(H1, -H1 * m, w, EA, s1)[:2]  # the lower touchdown to the near end, mirrored
-        return np.array([-z - (b + m * x), x + run - span, -z + rise - dh]) / L
-
-    return residual
-
-
-def slope_touchdown(span, dh, w, EA, length, *, seabed, seabed_slope) -> SlopeTouchdown | None:
-    r"""The uniform line from A = (0, 0) to B = (span, dh) that touches down between its ends on
-    the frictionless straight slope ``y = seabed + x tan α`` below both, or None where it has no
-    such state (it clears the slope, or heaps at its foot: `taut_length_on_slope`) or where the
-    continuation below does not reach it.
-
-    From the end on the slope's lower side (A where ``tan α > 0``), the line hangs to a tangent
-    touchdown with the horizontal force :math:`H_1` and the tension :math:`T_1 = H_1/\cos\alpha`,
-    lies straight on the slope over ``ℓ``, its tension growing uphill to
-    :math:`T_2 = T_1 + w\ell\sin\alpha` (no friction: the weight's component along the slope),
-    and hangs tangentially from there with :math:`H_2 = T_2\cos\alpha`
-    to the other end. The closure in :math:`(H_2, \ell, s_1)`: the first touchdown on the slope
-    and the other end reached (the hanging parts Irvine's elastic catenary,
-    `skcable.cable.closure.hanging`; the lying part and the part past it Jonkman's line on a slope
-    without friction, `skcable.cable.closure.on_slope`).
-    Solved by MINPACK's ``hybr`` along a continuation in the slope, from the flat seabed's
-    three-part line (`elastic_catenary` with ``seabed``, exact at ``tan α = 0``), in steps of at
-    most a quarter of it, halved where one fails.
-
-    Parameters
-    ----------
-    span, dh, w, EA, length : float
-        As `taut_length_on_slope`, and the unstretched length (m).
-    seabed, seabed_slope : float
-        The seabed under A relative to A (m, < 0) and ``tan α`` (nonzero), B above it.
-    """
-    from scipy.optimize import root
-
-    longest = taut_length_on_slope(span, dh, w, EA, seabed=seabed, seabed_slope=seabed_slope)  # checks
-    length = scalar("length", positive("length", length))
-    if length >= longest:
-        return None
-    from_b = seabed_slope < 0
-    if from_b:  # the slope's lower side under B: the same line seen from B
-        span, dh, seabed, seabed_slope = span, -dh, seabed + seabed_slope * span - dh, -seabed_slope
-    try:
-        flat = elastic_catenary(span, dh, w, EA, length=length, seabed=seabed)
-    except (InputError, ConvergenceError):
-        return None
-    if not (0.0 < flat.length_on_seabed < length and flat.H > 0 and flat.V_A > 0):
-        return None  # no three-part line on the flat seabed to continue from
-    u = np.array([float(flat.H), float(flat.length_on_seabed), float(flat.V_A) / w])
-    done, step = 0.0, 0.25
-    while done < 1.0:
-        trial = min(1.0, done + step)
-        residual = _touchdown_closure(span, dh, w, EA, length, seabed, trial * seabed_slope)
-        sol = root(residual, u, method="hybr", options={"xtol": 1e-14})
-        if np.max(np.abs(residual(sol.x))) <= 1e-12:
-            u, done, step = sol.x, trial, min(2.0 * step, 0.25)
-        else:
-            step *= 0.5
-            if step < 1.0 / 256.0:
-                return None
-    H2, ell, s1 = (float(v) for v in u)
-    cos, sin = slope_frame(seabed_slope)
-    return SlopeTouchdown((H2 / cos - w * sin * ell) * cos, s1, ell, from_b)

@@ -35,6 +35,9 @@ __all__ = [
 ]
 
 EPS = float(np.finfo(float).eps)
+#: how close to the longest length a frictionless slope holds taut (a fraction of it) a failing
+#: line is said to be nearly slack there (`slack_on_slope`)
+NEARLY_SLACK = 0.02
 #: how much steeper than μ the seabed must rise at the anchor (the line's discrete tangent there,
 #: a slope) for `refuse_sliding` to refuse: a flat seabed's round-off slope never does
 SLOPE_TOL = 1e-6
@@ -215,17 +218,24 @@ def slack_on_slope(failed, problem) -> ConvergenceError:
     both ends is longer than its uniform line of the same mean weight and compliance could hang
     taut there (`skcable.cable.seabed.taut_length_on_slope`; `refuse_slack_on_slope` refuses one
     uniform segment): its slack may slide to the slope's foot and heap there, a state without
-    tension that the solve cannot reach. A diagnosis, not a proof (segments of other weights hang
+    tension that the solve cannot reach; or within `NEARLY_SLACK` of that length, nearly slack
+    where it lands on the slope's lower side. A diagnosis, not a proof (segments of other weights hang
     otherwise): the error stays a `ConvergenceError`, with ``failed``'s history and last iterate."""
     longest = _taut_length(problem)
-    if longest is None or not problem.L > longest:
+    if longest is None or not problem.L > (1.0 - NEARLY_SLACK) * longest:
         return failed
     message = str(failed).rsplit(" (last ", 1)[0] if failed.history else str(failed)
-    return ConvergenceError(
-        f"{message}; its uniform line (its mean weight, {problem.start_weight:.4g} N/m) is longer than "
-        f"the {longest:.6g} m this frictionless slope holds taut between its ends: the line may have no "
-        "taut state, its slack sliding down to the slope's foot to lie there in a heap",
-        failed.history,
-        last=failed.last,
-        attempts=failed.attempts,
-    )
+    uniform = f"its uniform line (its mean weight, {problem.start_weight:.4g} N/m)"
+    if problem.L > longest:
+        why = (
+            f"{uniform} is longer than the {longest:.6g} m this frictionless slope holds taut between its "
+            "ends: the line may have no taut state, its slack sliding down to the slope's foot to lie there "
+            "in a heap"
+        )
+    else:
+        why = (
+            f"{uniform} is within {100.0 * (1.0 - problem.L / longest):.2g} % of the {longest:.6g} m this "
+            "frictionless slope holds taut between its ends: it is nearly slack where it lands on the "
+            "slope's lower side, which Newton may not resolve"
+        )
+    return ConvergenceError(f"{message}; {why}", failed.history, last=failed.last, attempts=failed.attempts)

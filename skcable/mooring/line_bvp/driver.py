@@ -16,9 +16,10 @@ each solve (`skcable.mooring.line_bvp.iterate.solve_on`) starts from the last st
    segment-wise closed form (`skcable.mooring.line_bvp.start.segmented_start`), else from the
    first start with the contact nodes switching by the line's tension (`LineBVPSolver.switched`:
    a taut line's residual forces at its start can exceed the switch of a line bent by its
-   weight); on a straight slope through the anchor, whose start is the line on the slope, else
-   from the uniform line lifted onto it (`skcable.mooring.line_bvp.start.lifted_start`), fixed
-   and switching; else from the closed-form start on the uniform mesh; with clump weights, else
+   weight); on a straight slope through the anchor, whose start is the line on the slope, or
+   below it, whose start is the line touching down on it, else from the uniform line lifted onto
+   it (`skcable.mooring.line_bvp.start.lifted_start`), fixed and switching; else from the
+   closed-form start on the uniform mesh; with clump weights, else
    from the uniform line under their weight smeared
    (`skcable.mooring.line_bvp.start.smeared_start`), on the graded mesh, then on the uniform one;
    else on the line in space's first mesh (graded by the discrete start's turning,

@@ -162,9 +162,10 @@ class LineSolver:
         ``z0`` (by default its ``closed_form_start``); from the segment-wise closed form
         (``segmented_start``, where there is one); from ``z0`` with the contact nodes switching
         by the tension (`switched`, on a seabed); on a straight slope through the anchor
-        (``on_slope``), whose ``closed_form_start`` is the line on the slope, from the uniform
-        line lifted onto it (``lifted_start``: the line on the slope can leave Newton no descent,
-        the survey's scene 3:234, ``benchmarks/line_bvp_planes.py``), fixed and switching."""
+        (``on_slope``), whose ``closed_form_start`` is the line on the slope, or on one below A
+        (the line touching down on it), from the uniform line lifted onto it (``lifted_start``:
+        the line on the slope can leave Newton no descent, the survey's scene 3:234,
+        ``benchmarks/line_bvp_planes.py``), fixed and switching."""
         forms = self.start_forms
         first = cache(partial(forms.closed_form_start, problem)) if z0 is None else (lambda: z0)
         attempts = [

@@ -34,7 +34,7 @@ import numpy as np
 from skcable import _plausible
 from skcable.cable._catenary import catenary
 from skcable.cable._elastic import elastic_catenary as free_catenary
-from skcable.cable.seabed import elastic_catenary, slope_touchdown, sloped_seabed_catenary
+from skcable.cable.seabed import SlopeTouchdownLine, elastic_catenary, slope_touchdown, sloped_seabed_catenary
 from skcable.errors import ConvergenceError, InputError
 from skcable.mooring.segments import Buoy, ClumpWeight, Line, Segment
 
@@ -230,36 +230,9 @@ def _slope_touchdown(problem):
         return None
     if touchdown is None:
         return None
-    s, s_t = problem.basis.doflocs[0], problem.tension_points()
-    if touchdown.from_b:  # its arc lengths and frame from B: x' = span - x, y' = y - dh
-        x, y, _ = _three_parts(touchdown, w, EA, line[1], L - s)
-        T = _three_parts(touchdown, w, EA, line[1], L - s_t)[2]
-        return problem.with_ends([span - x, dh + y], T)
-    x, y, _ = _three_parts(touchdown, w, EA, line[1], s)
-    return problem.with_ends([x, y], _three_parts(touchdown, w, EA, line[1], s_t)[2])
-
-
-def _three_parts(touchdown, w, EA, slope, s):
-    """``(x, y, T)`` at the arc lengths ``s`` (m) from the end on the slope's lower side of the
-    `skcable.cable.seabed.SlopeTouchdown` ``touchdown`` (that end at the origin, the slope rising
-    by ``|slope|`` away from it): hanging (`hanging`), lying straight with ``dT/ds = w sin α``,
-    hanging again."""
-    m = abs(slope)
-    cos, sin = 1.0 / np.hypot(1.0, m), m / np.hypot(1.0, m)
-    H1, s1, ell = touchdown.H_low, touchdown.s_low, touchdown.lying
-    T1 = H1 / cos
-    near = hanging(H1, w * s1 - H1 * m, w, EA)
-    x1, y1 = float(near[0](s1)), float(near[1](s1))
-    u = np.clip(s - s1, 0.0, ell)
-    G = u + (T1 * u + 0.5 * w * sin * u * u) / EA
-    H2 = (T1 + w * sin * ell) * cos
-    G2 = ell + (T1 * ell + 0.5 * w * sin * ell * ell) / EA
-    far = hanging(H2, -H2 * m, w, EA)
-    r = np.maximum(s - s1 - ell, 0.0)
-    x = np.where(s <= s1, near[0](s), np.where(r > 0, x1 + G2 * cos + far[0](r), x1 + G * cos))
-    y = np.where(s <= s1, near[1](s), np.where(r > 0, y1 + G2 * sin + far[1](r), y1 + G * sin))
-    T = np.where(s <= s1, near[2](s), np.where(r > 0, far[2](r), T1 + w * sin * u))
-    return x, y, T
+    closed = SlopeTouchdownLine(span, dh, w, EA, L, line[0], line[1], touchdown)
+    xy = closed.xy(problem.basis.doflocs[0])
+    return problem.with_ends([xy[..., 0], xy[..., 1]], closed.T_of_s(problem.tension_points()))
 
 
 def _on_slope(problem):
@@ -299,9 +272,11 @@ def closed_form_start(problem):
 
 
 def on_slope(problem) -> bool:
-    """Whether the seabed is straight through A along the line, where `closed_form_start` is the
-    line on the slope (`_on_slope`, unless that has no closed form)."""
-    return _straight_slope(problem) is not None
+    """Whether the seabed is a straight slope (`_straight`) through A or below it, where
+    `closed_form_start` is the line on the slope or touching down on it unless those have no
+    closed form, and `lifted_start` its alternative."""
+    line = _straight(problem)
+    return line is not None and line[1] != 0.0 and line[0] <= 1e-12 * problem.L
 
 
 def smeared_start(problem):
@@ -323,9 +298,9 @@ def smeared_start(problem):
 def lifted_start(problem):
     """The first iterate of the uniform line, free or grounded on a flat seabed at the anchor's
     level and lifted onto the seabed (module docstring), on ``problem``'s dofs; the heap refused.
-    On a straight slope through A it is the alternative to the line on the slope: a varying
-    weight, a clump and a buoy can leave Newton no descent from that one (the survey's scene
-    3:234, ``benchmarks/line_bvp_planes.py``)."""
+    On a straight slope (`on_slope`) it is the alternative to the line on the slope or touching
+    down on it: a varying weight, a clump and a buoy can leave Newton no descent from that one
+    (the survey's scene 3:234, ``benchmarks/line_bvp_planes.py``)."""
     x, y, T, _, heap = _uniform(problem)
     if heap:
         if _exact(problem):

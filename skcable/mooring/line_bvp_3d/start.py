@@ -11,11 +11,12 @@ seen in that plane by `InPlane` (its seabed the profile under the chord,
 - `closed_form_start`: Irvine's elastic catenary (H.M. Irvine, "Cable Structures", MIT Press,
   1981, ch. 2; an inextensible line: the catenary) where it stays above the seabed; on a straight
   slope through the anchor the line on the slope (`skcable.cable.seabed.sloped_seabed_catenary`,
-  Jonkman's line on the slope, with the scene's friction); elsewhere Jonkman's grounded line on a
-  flat seabed at the anchor's level (J.M. Jonkman, NREL, 2007), lifted onto the seabed where it
-  dips below it; a line whose slack would lie in a heap on a flat seabed refused
-  (``InputError("length")``);
-- `lifted_start`: the lifted line on a straight slope too
+  Jonkman's line on the slope, with the scene's friction); on one below the anchor, the line
+  touching down on it (`skcable.cable.seabed.slope_touchdown`); elsewhere
+  Jonkman's grounded line on a flat seabed at the anchor's level (J.M. Jonkman, NREL, 2007),
+  lifted onto the seabed where it dips below it; a line whose slack would lie in a heap on a flat
+  seabed refused (``InputError("length")``);
+- `lifted_start`: the lifted line on a sloped plane seabed too
   (`skcable.mooring.line_bvp.start.lifted_start`);
 - `segmented_start`: the multi-segment closed form `skcable.mooring.Line` of the segments with
   their clump weights and buoys at the joints, on a flat seabed (`skcable.mooring.line_bvp.start
@@ -90,10 +91,9 @@ def frame_of(problem, w):
 
 
 def on_slope(problem) -> bool:
-    """Whether the start's grounded closed form is the line on the slope: a `Plane` seabed
-    through the anchor."""
-    bed, a = problem.seabed, problem.anchor
-    return isinstance(bed, Plane) and abs(float(bed.height(a[0], a[1])) - a[2]) <= 1e-9 * problem.L
+    """Whether the start's grounded closed form is the line on the slope or touching down on it:
+    a sloped `Plane` seabed (the plane line's `skcable.mooring.line_bvp.start.on_slope`)."""
+    return isinstance(problem.seabed, Plane) and bool(np.any(problem.seabed.slope))
 
 
 class InPlane:
@@ -154,9 +154,9 @@ def closed_form_start(problem) -> np.ndarray:
 
 
 def lifted_start(problem) -> np.ndarray:
-    """`closed_form_start`'s alternative on a plane seabed through the anchor: the flat grounded
-    line lifted onto it instead of the line on the slope (the plane line's
-    `skcable.mooring.line_bvp.start.lifted_start` in the plane of the ends)."""
+    """`closed_form_start`'s alternative on a sloped plane seabed: the flat grounded line lifted
+    onto it (the plane line's `skcable.mooring.line_bvp.start.lifted_start` in the plane of the
+    ends)."""
     return _in_space(problem, plane_start.lifted_start)
 
 
