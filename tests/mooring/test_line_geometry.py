@@ -160,6 +160,34 @@ def test_a_line_touching_down_on_a_slope_between_its_ends_is_its_closed_form():
     np.testing.assert_allclose(r.jacobian(), J, rtol=0, atol=1e-5 * np.abs(J).max())
 
 
+def test_the_closed_form_reaches_a_touchdown_where_the_slope_rises_above_the_lower_end():
+    """A line whose free shape dips deepest below the slope where the slope lies above its lower
+    end (a flat seabed there would be above that end): the continuation about the foot under the
+    lower end reaches it, within 1e-9 of the 30-digit closure (before, `touchdown_on_slope`
+    refused it as not touching the slope). Its arguments are refused by name."""
+    span, dh, b, m, L, w, ea = (
+        100.0,
+        32.76473582111275,
+        -10.721255518454745,
+        0.2350370961240092,
+        120.1349501436221,
+        20.0,
+        2e6,
+    )
+    r = cable.seabed.touchdown_on_slope(span, dh, w, ea, length=L, seabed=b, seabed_slope=m)
+    start = (r.H_B, r.length_on_seabed, r.touchdown.s_low)
+    H1, s1, ell, H2 = slope_touchdown_line(span, dh, w, ea, L, b, m, start)
+    want = [H1, w * s1 - H1 * m, H2, H2 * m + w * (L - s1 - ell)]
+    np.testing.assert_allclose([r.H_A, r.V_A, r.H_B, r.V_B], want, rtol=1e-9)
+    assert r.length_on_seabed == pytest.approx(ell, rel=1e-9)
+    for name, bad in (("length", dict(length=-1.0)), ("length", dict(length="x")), ("EA", dict(EA=math.inf))):
+        scene = dict(span=span, dh=dh, w=w, EA=ea, length=L, seabed=b, seabed_slope=m) | bad
+        with pytest.raises(InputError, match=f"^{name}: "):
+            cable.seabed.touchdown_on_slope(
+                scene.pop("span"), scene.pop("dh"), scene.pop("w"), scene.pop("EA"), **scene
+            )
+
+
 def test_a_line_longer_than_a_frictionless_slope_holds_taut_is_refused():
     """The longest line the slope holds taut between its ends (`taut_length_on_slope`) is the
     30-digit closure's, where its tension at the lower touchdown is zero; just beyond it the slack

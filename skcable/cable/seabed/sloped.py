@@ -260,6 +260,7 @@ def refuse_slack_on_slope(span, dh, w, EA, length, *, seabed, seabed_slope) -> N
     """``InputError("length")`` where a frictionless uniform line between two ends above a straight
     slope is longer than `taut_length_on_slope`: it has no taut equilibrium, its slack lies in a
     heap at the foot of the slope."""
+    length = scalar("length", positive("length", length))
     longest = taut_length_on_slope(span, dh, w, EA, seabed=seabed, seabed_slope=seabed_slope)
     if length > longest:
         end = "A" if seabed_slope > 0 else "B"

@@ -126,14 +126,11 @@ def slope_touchdown(span, dh, w, EA, length, *, seabed, seabed_slope) -> SlopeTo
     if length >= longest:
         return None
     span, dh, b, m, from_b = _from_low_end(float(span), float(dh), float(seabed), float(seabed_slope))
-    deepest = _pivot(span, dh, w, EA, length, b, m)
-    if deepest is None:
-        return None
-    for pivot in (0.0, deepest):  # under the lower end, else where the free line dips deepest
-        u = _continued(span, dh, w, EA, length, b, m, pivot)
-        if u is not None:
-            return _touchdown(u, w, m, from_b)
-    return None
+    u = _continued(span, dh, w, EA, length, b, m, 0.0)  # about the foot under the lower end
+    if u is None:
+        deepest = _pivot(span, dh, w, EA, length, b, m)  # else where the free line dips deepest
+        u = None if deepest is None else _continued(span, dh, w, EA, length, b, m, deepest)
+    return None if u is None else _touchdown(u, w, m, from_b)
 
 
 def _continued(span, dh, w, EA, length, b, m, pivot) -> np.ndarray | None:
@@ -218,23 +215,25 @@ def _three_parts(touchdown: SlopeTouchdown, w, EA, slope, s):
 
 
 def touchdown_on_slope(span, dh, w, EA, *, length, seabed, seabed_slope) -> SlopeTouchdownLine:
-    """The `SlopeTouchdownLine` of `slope_touchdown`'s scene. ``InputError("length")`` where the
-    line is longer than the slope holds taut (`skcable.cable.seabed.refuse_slack_on_slope`),
-    ``InputError("seabed")`` where the free line does not dip below the slope (no touchdown: the
-    free elastic catenary is the line), a `ConvergenceError` where the continuation does not
-    reach it."""
+    """The `SlopeTouchdownLine` of `slope_touchdown`'s scene (``EA`` finite). ``InputError("length")``
+    where the line is longer than the slope holds taut (`skcable.cable.seabed.refuse_slack_on_slope`),
+    ``InputError("seabed")`` where the free line does not dip below the slope at any of 513 points
+    evenly spaced along it (no touchdown: the free elastic catenary is the line), else a
+    `ConvergenceError` where the continuation does not reach it."""
     from skcable.cable.seabed.sloped import refuse_slack_on_slope
 
+    length = scalar("length", positive("length", length))
+    EA = scalar("EA", positive("EA", EA))  # finite: the flat seabed's closed form it continues from
     refuse_slack_on_slope(span, dh, w, EA, length, seabed=seabed, seabed_slope=seabed_slope)
-    span_l, dh_l, b_l, m_l, _ = _from_low_end(float(span), float(dh), float(seabed), float(seabed_slope))
-    if _pivot(span_l, dh_l, w, EA, length, b_l, m_l) is None:
-        raise InputError(
-            "seabed",
-            "the free line does not dip below the slope (or below it only where the slope lies above "
-            "the lower end): no touchdown; the free elastic catenary is the line",
-        )
     touchdown = slope_touchdown(span, dh, w, EA, length, seabed=seabed, seabed_slope=seabed_slope)
     if touchdown is None:
+        span_l, dh_l, b_l, m_l, _ = _from_low_end(float(span), float(dh), float(seabed), float(seabed_slope))
+        if _pivot(span_l, dh_l, w, EA, length, b_l, m_l) is None:
+            raise InputError(
+                "seabed",
+                "the free line does not dip below the slope at any of 513 points along it (or only where "
+                "the slope lies above the lower end): no touchdown; the free elastic catenary is the line",
+            )
         raise ConvergenceError(
             "touchdown_on_slope: the continuation in the slope from the flat seabed's line did not reach "
             "the line on the slope",

@@ -144,11 +144,11 @@ def seabed_of(seabed, seabed_slope, span) -> Seabed | None:
         return Seabed(seabed, seabed_slope, None, step)
     if isinstance(seabed, (np.ndarray, list, tuple)) and np.size(seabed) != 1:
         raise InputError("seabed", "a height (m) or a callable b(x); one scene at a time")
-    level = float(np.asarray(real("seabed", seabed)))
+    level = float(np.asarray(real("seabed", seabed)).reshape(-1)[0])
     slope = 0.0 if seabed_slope is None else seabed_slope
     if callable(slope) or np.size(slope) != 1:
         raise InputError("seabed_slope", "with a seabed height (a number), a slope dy/dx (a number)")
-    slope = float(np.asarray(real("seabed_slope", slope)))
+    slope = float(np.asarray(real("seabed_slope", slope)).reshape(-1)[0])
     if slope == 0.0:
         return Seabed(_Level(level), None, level, step, (level, 0.0))
     return Seabed(_Straight(level, slope), _Straight(slope, 0.0), None, step, (level, slope))

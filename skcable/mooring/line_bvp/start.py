@@ -216,7 +216,7 @@ def _slope_touchdown(problem):
     (`skcable.cable.seabed.slope_touchdown`: it hangs, lies on the slope and rises, its tension
     growing uphill by the weight's component), on the problem's dofs; None elsewhere or where it
     has no such state. The flat line at the anchor's level lifted onto the slope can leave Newton
-    stagnating (a chain 440 m long between ends 40 m and 60 m above a 6° slope, 380 m apart,
+    stagnating (a chain 440 m long between ends 40 m and 60.06 m above a 6° slope, 380 m apart,
     ``tests/mooring/test_line_geometry.py``)."""
     line = _straight(problem)
     L = problem.L
