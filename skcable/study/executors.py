@@ -7,7 +7,9 @@ hands each result to a ``finish(key, result)`` callback as it ends. The figures 
 
 from __future__ import annotations
 
+import contextlib
 import importlib.util
+import logging
 import math
 import os
 import secrets
@@ -233,8 +235,6 @@ class Dask:
             )
         kind = "processes" if problem is None else "threads"
         self.description = f"dask, a local cluster of {self.n_workers} worker {kind}"
-        import logging
-
         return LocalCluster(
             n_workers=self.n_workers,
             threads_per_worker=1,
@@ -242,15 +242,40 @@ class Dask:
             dashboard_address=":0",
             # errors only: a worker whose heartbeat meets the scheduler already closing logs a
             # warning with a traceback (a race at shutdown on a loaded machine), not a failure
-            silence_logs=logging.ERROR,
+            silence_logs=SHUTDOWN_LOG_LEVEL,
         )
 
     def close(self) -> None:
-        """Close the client and the local cluster, if any."""
-        if self.client is not None:
-            self.client.close()
-        if self.cluster is not None:
-            self.cluster.close()
+        """Close the client and the local cluster, if any, printing only ``distributed``'s errors.
+
+        A local cluster's ``silence_logs`` ends inside its own ``close``, before its event loop
+        stops: a comm that the closing scheduler cut then logged its ``CommClosedError`` at INFO,
+        traceback and all, on the stderr of a study that had succeeded (worker threads, on a
+        loaded machine). The same level holds here until the loop has stopped.
+        """
+        with _errors_only(logging.getLogger("distributed")):
+            if self.client is not None:
+                self.client.close()
+            if self.cluster is not None:
+                self.cluster.close()
+
+
+#: The level of ``distributed``'s logs while skcable starts and stops a local cluster:
+#: a worker's heartbeat or a batched comm meeting the scheduler already closing logs a warning
+#: or an INFO record with a traceback (a race at shutdown on a loaded machine), not a failure.
+SHUTDOWN_LOG_LEVEL = logging.ERROR
+
+
+@contextlib.contextmanager
+def _errors_only(logger: logging.Logger):
+    """Hold ``logger`` at `SHUTDOWN_LOG_LEVEL` (its level, not its handlers': a cluster's close
+    restores its handlers' levels before its loop stops), restoring the level after."""
+    level = logger.level
+    logger.setLevel(max(logger.getEffectiveLevel(), SHUTDOWN_LOG_LEVEL))
+    try:
+        yield
+    finally:
+        logger.setLevel(level)
 
 
 class Auto:

@@ -189,3 +189,36 @@ def test_a_script_edited_while_it_runs_is_not_misjudged(tmp_path):
     out = subprocess.run([sys.executable, str(control)], capture_output=True, text=True, env=ENV, timeout=60)
     first, last = out.stdout.splitlines()
     assert first == "None" and last.startswith(f"{control} runs the study at line 9 outside"), out.stderr
+
+
+def test_a_dask_shutdown_prints_no_comm_closed_at_info(monkeypatch):
+    """The flake this guards against: a local cluster's ``silence_logs`` ends inside its own close,
+    before its loop stops, and a batched comm cut by the closing scheduler then logged its
+    ``CommClosedError`` at INFO with a traceback. Here the cluster's close restores its handlers'
+    levels and logs that record; nothing may reach a handler, and the level is restored after."""
+    import logging
+
+    pytest.importorskip("distributed")
+    distributed_log = logging.getLogger("distributed")
+    records: list[logging.LogRecord] = []
+    catcher = logging.Handler(logging.NOTSET)
+    catcher.emit = records.append  # type: ignore[method-assign]
+    distributed_log.addHandler(catcher)
+    monkeypatch.setattr(distributed_log, "level", logging.INFO)
+
+    class Closing:
+        def close(self):
+            for handler in distributed_log.handlers:
+                handler.setLevel(logging.NOTSET)  # what the cluster's exit stack restores
+            try:
+                raise ConnectionError("in: Stream is closed")
+            except ConnectionError:
+                logging.getLogger("distributed.batched").info("Batched Comm Closed", exc_info=True)
+
+    executor = study.executors.Dask()
+    executor.client, executor.cluster = Closing(), Closing()
+    try:
+        executor.close()
+    finally:
+        distributed_log.removeHandler(catcher)
+    assert records == [] and distributed_log.level == logging.INFO
