@@ -123,6 +123,12 @@ class LineBetween(Shown):
     """
 
     def __init__(self, line, a, b, plane, span, direction):
+        if plane.seabed_slope != 0.0:  # `block` moves an end along a seabed fixed in the plane
+            raise InputError(
+                "plane",
+                "a line between two points in space is solved over a flat seabed: its stiffness "
+                "would not move the seabed under an end that moves over a slope",
+            )
         self.line, self.a, self.b, self.plane = line, a, b, plane
         self.span, self.dh = span, float(b[2] - a[2])
         self._e = (float(direction[0]), float(direction[1]))

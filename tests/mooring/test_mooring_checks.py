@@ -121,3 +121,17 @@ def test_users_add_their_own_components():
     with pytest.raises(InputError) as err:
         mooring.component("studless chain R3").properties(0.6)
     assert err.value.argument == "diameter"
+
+
+def test_a_line_between_two_points_refuses_a_sloped_plane_solution():
+    """`LineBetween.block` moves an end along a seabed fixed in the line's plane; over a slope the
+    seabed under a moving end would move too (the column ``-J_r - m (J_za + J_zb)``), so a sloped
+    plane solution is refused rather than given a wrong stiffness."""
+    from skcable.mooring.between_points import LineBetween
+
+    line = mooring.Line([mooring.Segment(300.0, 1000.0, 1e9)])
+    plane = mooring.line_in_plane(line, 250.0, 80.0, seabed=-5.0, seabed_slope=0.05)
+    a, b = np.zeros(3), np.array([250.0, 0.0, 80.0])
+    with pytest.raises(InputError, match="flat seabed") as err:
+        LineBetween(line, a, b, plane, 250.0, (1.0, 0.0))
+    assert err.value.argument == "plane"

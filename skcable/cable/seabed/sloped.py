@@ -256,10 +256,10 @@ def _SCENE(span, dh, w):
     return (("span", positive, span), ("dh", real, dh), ("w", positive, w))
 
 
-def refuse_slack_on_slope(span, dh, w, EA, length, *, seabed, seabed_slope) -> None:
+def refuse_slack_on_slope(span, dh, w, EA, length, *, seabed, seabed_slope) -> float:
     """``InputError("length")`` where a frictionless uniform line between two ends above a straight
     slope is longer than `taut_length_on_slope`: it has no taut equilibrium, its slack lies in a
-    heap at the foot of the slope."""
+    heap at the foot of the slope. Returns that taut length (m), for a caller that needs it too."""
     length = scalar("length", positive("length", length))
     longest = taut_length_on_slope(span, dh, w, EA, seabed=seabed, seabed_slope=seabed_slope)
     if length > longest:
@@ -271,3 +271,4 @@ def refuse_slack_on_slope(span, dh, w, EA, length, *, seabed, seabed_slope) -> N
             f"there in a heap (H = 0 at {end}), a state without tension that no solver here takes; "
             f"at most {longest:.6g} m hangs taut",
         )
+    return longest

@@ -24,6 +24,7 @@ from skcable.bvp.terms import CableState
 from skcable.cable.seabed import refuse_slack_on_slope as refuse_uniform_slack
 from skcable.cable.seabed import taut_length_on_slope
 from skcable.errors import ConvergenceError, InputError
+from skcable.mooring.line_bvp.start import uniform_on_slope
 
 __all__ = [
     "equilibrium_field",
@@ -201,16 +202,15 @@ def refuse_slack_on_slope(scene) -> None:
 
 def _taut_length(problem) -> float | None:
     """The longest uniform line of ``problem``'s mean weight and compliance that its straight
-    seabed sloping below both ends holds taut without friction (m), or None where the seabed is
-    not such a slope (`Seabed.straight`) or the line is not heavy."""
-    bed, L = problem.seabed, problem.L
-    straight = getattr(bed, "straight", None)
-    if straight is None or straight[1] == 0.0 or not straight[0] < -1e-12 * L or not problem.start_weight > 0:
+    seabed sloping below A holds taut without friction (m; `skcable.mooring.line_bvp.start.uniform_on_slope`),
+    or None where the seabed is not such a slope or the line is not heavy, or the problem is not a
+    plane line's (a line in space's seabed is a `skcable.mooring.bathymetry.Bathymetry`, without
+    ``straight``)."""
+    scene = None if getattr(problem.seabed, "straight", None) is None else uniform_on_slope(problem)
+    if scene is None:
         return None
-    EA = L / problem.compliance if problem.compliance > 0 else np.inf
-    return taut_length_on_slope(
-        problem.span, problem.dh, problem.start_weight, EA, seabed=straight[0], seabed_slope=straight[1]
-    )
+    w, EA, level, slope = scene
+    return taut_length_on_slope(problem.span, problem.dh, w, EA, seabed=level, seabed_slope=slope)
 
 
 def slack_on_slope(failed, problem) -> ConvergenceError:

@@ -210,27 +210,37 @@ def _start_stiffness(problem) -> float:
     return L / problem.compliance if problem.compliance > 0 else 1e9 * w * L
 
 
+def uniform_on_slope(problem) -> tuple[float, float, float, float] | None:
+    """``(w, EA, b(0), b')`` of ``problem``'s uniform line (its start weight, N/m, and axial
+    stiffness, N: `_start_stiffness`) over a straight seabed sloping along the line below A
+    (`_straight`: ``b(0) < 0``, ``b' ≠ 0``), else None. The scene of the closed forms on the slope
+    (`skcable.cable.seabed.slope_touchdown`, `skcable.cable.seabed.taut_length_on_slope`)."""
+    line = _straight(problem)
+    if line is None or not line[0] < -1e-12 * problem.L or line[1] == 0.0:
+        return None
+    return problem.start_weight, _start_stiffness(problem), line[0], line[1]
+
+
 def _slope_touchdown(problem):
-    """The start on a straight seabed sloping along the line below both ends (`_straight`): the
-    uniform line touching down between them on the slope without friction
+    """The start on a straight seabed sloping along the line below both ends (`uniform_on_slope`):
+    the uniform line touching down between them on the slope without friction
     (`skcable.cable.seabed.slope_touchdown`: it hangs, lies on the slope and rises, its tension
     growing uphill by the weight's component), on the problem's dofs; None elsewhere or where it
     has no such state. The flat line at the anchor's level lifted onto the slope can leave Newton
     stagnating (a chain 440 m long between ends 40 m and 60.06 m above a 6° slope, 380 m apart,
     ``tests/mooring/test_line_geometry.py``)."""
-    line = _straight(problem)
-    L = problem.L
-    if line is None or not line[0] < -1e-12 * L or line[1] == 0.0:
+    scene = uniform_on_slope(problem)
+    if scene is None:
         return None
-    span, dh, w, EA = problem.span, problem.dh, problem.start_weight, _start_stiffness(problem)
+    (w, EA, level, slope), L, span, dh = scene, problem.L, problem.span, problem.dh
     try:
         with _plausible.quiet():  # a start, not an answer
-            touchdown = slope_touchdown(span, dh, w, EA, L, seabed=line[0], seabed_slope=line[1])
+            touchdown = slope_touchdown(span, dh, w, EA, L, seabed=level, seabed_slope=slope)
     except (InputError, ConvergenceError):
         return None
     if touchdown is None:
         return None
-    closed = SlopeTouchdownLine(span, dh, w, EA, L, line[0], line[1], touchdown)
+    closed = SlopeTouchdownLine(span, dh, w, EA, L, level, slope, touchdown)
     xy = closed.xy(problem.basis.doflocs[0])
     return problem.with_ends([xy[..., 0], xy[..., 1]], closed.T_of_s(problem.tension_points()))
 
