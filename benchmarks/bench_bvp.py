@@ -312,7 +312,7 @@ def warm(args):
     which every solve runs) against the time of a solve from scratch."""
     from skcable.mooring import LineBVP
     from skcable.mooring.line_bvp.check import equilibrium_field
-    from skcable.mooring.line_bvp_3d import LineBVP3D
+    from skcable.mooring.line_bvp.space import LineBVP3D
 
     segments = [(300.0, 1000.0, 5e8), (250.0, 400.0, 2e8), (300.0, 1000.0, 5e8)]
     chain = [(850.0, 1000.0, 5e8)]
@@ -371,7 +371,7 @@ def space_mesh(args):
     segments on a falling slope through the anchor with a clump (scene 3:140)."""
     from skcable.mooring import LineBVP
     from skcable.mooring.bathymetry import Plane
-    from skcable.mooring.line_bvp_3d import LineBVP3D
+    from skcable.mooring.line_bvp.space import LineBVP3D
 
     def varying(s):
         return 16.355186173293895 * (

@@ -1,4 +1,4 @@
-"""The 3-D line BVP (`skcable.mooring.line_bvp_3d`): time per solve, medians of repeated solves.
+"""The 3-D line BVP (`skcable.mooring.line_bvp.space`): time per solve, medians of repeated solves.
 
     python benchmarks/bench_line3d.py              # 21 repeats of each scene
     python benchmarks/bench_line3d.py --repeat 51
@@ -42,7 +42,7 @@ from skcable.bvp.current import TabulatedCurrent
 from skcable.mooring import solve_line_bvp
 from skcable.mooring.axial import StrainTable
 from skcable.mooring.bathymetry import Grid
-from skcable.mooring.line_bvp_3d import LineSegment, solve_line_bvp_3d
+from skcable.mooring.line_bvp.space import LineSegment, solve_line_bvp_3d
 
 TARGET_MS = 20.0
 ANCHOR, FAIRLEAD = np.array([0.0, 0.0, -200.0]), np.array([400.0, 0.0, -20.0])

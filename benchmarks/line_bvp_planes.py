@@ -3,10 +3,13 @@
 
 The two share one discrete line law (`skcable.mooring.line_bvp.discrete`) and, on a seabed, the
 grading of their meshes, but not their drivers (`skcable.mooring.line_bvp.driver`: its first
-solves, nested meshes, the slack stretch with friction; `skcable.mooring.line_bvp_3d.driver`: its
+solves, nested meshes, the slack stretch with friction; `skcable.mooring.line_bvp.space.driver`: its
 starts, the current by steps, the uniform mesh where the graded ones fail), so a scene one solves and the
 other does not is a driver's failure, and two answers farther apart than both discretisations
-allow is a bug in one of them. The scenes cover what ``benchmarks/line_bvp_survey.py`` (against
+allow is a bug in one of them. Each public solver falls back on the other's strategy where its own
+fails (`skcable.mooring.line_bvp.fallback`), as a user's call does: a scene one fails only is one
+where the fallback failed too, and a scene solved by a fallback agrees to round-off by
+construction. The scenes cover what ``benchmarks/line_bvp_survey.py`` (against
 the closed form) does not: a seabed sloping along the line (``b(x) = h + slope x``, slopes
 -0.1 to 0.1, through the anchor or below it), a flat seabed below the anchor, clump weights and
 buoys inside the segments (not at the joints), weights that vary along the line (a callable of
@@ -76,7 +79,7 @@ from skcable import mooring  # noqa: E402
 from skcable.cable import sloped_seabed_catenary  # noqa: E402
 from skcable.errors import ConvergenceError, InputError  # noqa: E402
 from skcable.mooring.bathymetry import Plane  # noqa: E402
-from skcable.mooring.line_bvp_3d import solve_line_bvp_3d  # noqa: E402
+from skcable.mooring.line_bvp.space import solve_line_bvp_3d  # noqa: E402
 
 #: end forces within this share of the largest: the two agree
 TOLERANCE = 1e-6
@@ -173,7 +176,7 @@ class Scene:
                 "import numpy as np",
                 "from skcable import mooring",
                 "from skcable.mooring.bathymetry import Plane",
-                "from skcable.mooring.line_bvp_3d import solve_line_bvp_3d",
+                "from skcable.mooring.line_bvp.space import solve_line_bvp_3d",
                 f"segments = [{segs}]",
                 f"common = dict({common})",
                 f"plane = mooring.solve_line_bvp({self.span!r}, {self.dh!r}, segments{bed_plane}, **common)",

@@ -29,7 +29,7 @@ __all__ = ["MODULES", "NAMES", "install", "names_moved_from", "serve"]
 
 #: old module path -> new module path (a longer old path wins over its prefix)
 MODULES = {
-    "skcable.cable.bvp.line3d": "skcable.mooring.line_bvp_3d",
+    "skcable.cable.bvp.line3d": "skcable.mooring.line_bvp.space",
     "skcable.cable.bvp.line": "skcable.mooring.line_bvp",
     "skcable.cable.bvp.solve": "skcable.bvp.formulation",
     "skcable.cable.bvp": "skcable.bvp",

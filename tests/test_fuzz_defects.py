@@ -193,23 +193,34 @@ def test_f10_a_state_outside_the_bvp_is_refused_naming_point_loads_and_line_solv
 
 
 def test_f10_a_line_in_compression_is_solved_with_the_elements_the_refusal_asks_for():
-    """The refusal says "give more" elements: 256 give the walk's H (and the fuzz's judge, which
-    retries with 1024, calls the refusal honest)."""
+    """The plane line's own strategy refuses the line on 64 elements, in compression, and says
+    "give more" elements: 256 give the walk's H. Since the plane line falls back on the line in
+    space's strategy (`skcable.mooring.line_bvp.fallback`), `solve_line_bvp` solves it on 64
+    graded elements too, within that mesh's discretisation error of the walk's H (measured
+    1.6e-6), and the fuzz's judge calls the solve right."""
+    from skcable.mooring.line_bvp.driver import LineBVPSolver
+    from skcable.mooring.line_bvp.inputs import scene
+
     segments = [
         (16.219963098358175, 0.8246341092730316, 41468.326653641845),
         (57.236413980399746, 516.1222436728953, 9601662.282988938),
         (13.541357352275917, 5.458639243704395, 28992.11862769992),
     ]
     span, dh = 32.95266515096135, 64.42683566852091
+    options = dict(seabed=0.0, seabed_slope=None, friction=0.0, point_loads=(), fit_touchdown=3)
     with pytest.raises(ConvergenceError, match="give more"):
-        mooring.solve_line_bvp(span, dh, segments, seabed=0.0, n_elements=64)
-    got = mooring.solve_line_bvp(span, dh, segments, seabed=0.0, n_elements=256)
+        LineBVPSolver(scene(span, dh, segments, n_elements=64, **options)).solve()
     data = LineData(
         [s[0] for s in segments], [s[1] for s in segments], [s[2] for s in segments], [0.0] * 4, 0.0
     )
-    want = segments_line(data, span, dh)
-    assert got.H == pytest.approx(float(want["H"]), rel=1e-6)
-    assert run_case(multi.bvp_case(segments, [], 0.0, 0.0, span, dh)).kind == "honest-refusal"
+    want = float(segments_line(data, span, dh)["H"])
+    assert mooring.solve_line_bvp(span, dh, segments, seabed=0.0, n_elements=64).H == pytest.approx(
+        want, rel=1e-5
+    )
+    assert mooring.solve_line_bvp(span, dh, segments, seabed=0.0, n_elements=256).H == pytest.approx(
+        want, rel=1e-6
+    )
+    assert run_case(multi.bvp_case(segments, [], 0.0, 0.0, span, dh)).kind == "ok"
 
 
 def test_f3_slack_lines_in_heaps_reach_the_stable_equilibrium():

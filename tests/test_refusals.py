@@ -93,7 +93,7 @@ def test_a_choice_given_as_an_unhashable_value_names_its_argument(tmp_path):
     _named("model", lambda: study.load_study(spec))
     _named(
         "mesh",
-        lambda: mooring.line_bvp_3d.solve_line_bvp_3d(
+        lambda: mooring.line_bvp.space.solve_line_bvp_3d(
             (0, 0, 0), (50, 0, 10), [(60, 10, 1e8)], mesh=["graded"]
         ),
     )

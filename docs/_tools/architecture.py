@@ -39,10 +39,9 @@ COMPONENTS = {
     "skcable.bvp": "cables as boundary-value problems on scikit-fem, their loads and terms, "
     "currents, and the choice of the cheapest model",
     "skcable.mooring.segments": "multi-segment lines with clump weights and buoys",
-    "skcable.mooring.line_bvp": "the mooring line as a boundary-value problem (seabed contact, "
-    "friction, slack)",
-    "skcable.mooring.line_bvp_3d": "a line in space as a boundary-value problem (current drag, "
-    "bathymetry, axial laws, 3 x 3 stiffness)",
+    "skcable.mooring.line_bvp": "the mooring line as a boundary-value problem, in its plane (seabed "
+    "contact, friction, slack) and in space (current drag, bathymetry, axial laws, 3 x 3 stiffness), "
+    "each solver falling back on the other",
     "skcable.mooring": "mooring lines and systems: lines in the sea, axial laws, bathymetry, "
     "moored bodies, MoorDyn files",
     "skcable.conductors": "overhead-line conductors: change of state, ruling span, frequencies, "

@@ -21,7 +21,7 @@ One concern per module:
   whose estimated error is below a tolerance, with its reason.
 
 A line on the seabed (contact, friction, segments, in the plane or in space) is a mooring line:
-`skcable.mooring.solve_line_bvp` and `skcable.mooring.line_bvp_3d`.
+`skcable.mooring.solve_line_bvp` and `skcable.mooring.line_bvp.space`.
 """
 
 from __future__ import annotations

@@ -1,7 +1,7 @@
 r"""Cable terms: loads that see the whole state of the cable, with their tangents.
 
 A cable term is a `skcable.fe.terms.Term` of a cable BVP (`solve_bvp`'s graph and arc forms,
-the 3-D line BVP `skcable.mooring.line_bvp_3d`). At the quadrature points it receives the cable's
+the 3-D line BVP `skcable.mooring.line_bvp.space`). At the quadrature points it receives the cable's
 state (`CableState`): the position ``r`` (``(x, y)``, y up, for a plane cable; ``(x, y, z)``, z
 up, for a cable in space: the last coordinate is the vertical one), the unstretched arc length
 ``s`` from A, the tangent vector ``a = dr/ds`` (its length is the stretch ``1 + ε``, its
@@ -69,7 +69,7 @@ class CableState:
     """The cable at the quadrature points, as a term sees it (arrays of one shape ``P``).
 
     A plane cable (the 2-D BVPs) has ``r = (x, y)``, y up; a cable in space (the 3-D line BVP,
-    `skcable.mooring.line_bvp_3d`) has ``r = (x, y, z)``, z up: the last coordinate is always the
+    `skcable.mooring.line_bvp.space`) has ``r = (x, y, z)``, z up: the last coordinate is always the
     vertical one (`height`), and ``a`` has one row per coordinate (`dim`).
 
     Attributes

@@ -11,9 +11,10 @@ One concern per module (the packages split further, see their docstrings):
   line's read-only arrays, closure, heap state, line, solution);
 - `axial`: axial laws of ropes (a constant EA, strain–tension tables, static–dynamic ropes);
 - `bathymetry`: seabeds of any shape (a plane, a depth function, a grid);
-- `line_bvp`: a line as an arc-length BVP in its plane (segments, w(s), point loads, seabed
-  contact of any shape with friction);
-- `line_bvp_3d`: a line in space as an arc-length BVP (current drag, bathymetry, axial laws);
+- `line_bvp`: the line BVP: a line as an arc-length BVP in its plane (segments, w(s), point
+  loads, seabed contact of any shape with friction) and, in `line_bvp.space`, in space (current
+  drag, bathymetry, axial laws), each solver falling back on the other where the line hangs in
+  the vertical plane of its ends;
 - `choice`: the model a `Line` takes in its scene, and why, for every scene: in the vertical
   plane of its ends (free, grounded, touchdown between the ends or on a slope, lying on the seabed, on a
   slope, or the line BVP), between two points in space, in the sea (closed form or the 3-D
@@ -59,7 +60,7 @@ if TYPE_CHECKING:  # what static tools see; at run time, `attach` below serves t
     from skcable.mooring.library import Component, component, components, register_component
     from skcable.mooring.line3d import Line3D, line_3d
     from skcable.mooring.line_bvp import BVPSegment, LineBVP, LineBVPSolution, solve_line_bvp
-    from skcable.mooring.line_bvp_3d import LineBVP3D, LineBVP3DSolution, LineSegment, solve_line_bvp_3d
+    from skcable.mooring.line_bvp.space import LineBVP3D, LineBVP3DSolution, LineSegment, solve_line_bvp_3d
     from skcable.mooring.moordyn import MoorDynModel, read_moordyn, write_moordyn
     from skcable.mooring.network import MooringLine, MooringPoint
     from skcable.mooring.plane_line import PlaneLine
@@ -77,7 +78,7 @@ _NAMES = {
     ".library": ("Component", "component", "components", "register_component"),
     ".line3d": ("Line3D", "line_3d"),
     ".line_bvp": ("BVPSegment", "LineBVP", "LineBVPSolution", "solve_line_bvp"),
-    ".line_bvp_3d": ("LineBVP3D", "LineBVP3DSolution", "LineSegment", "solve_line_bvp_3d"),
+    ".line_bvp.space": ("LineBVP3D", "LineBVP3DSolution", "LineSegment", "solve_line_bvp_3d"),
     ".moordyn": ("MoorDynModel", "read_moordyn", "write_moordyn"),
     ".network": ("MooringLine", "MooringPoint"),
     ".plane_line": ("PlaneLine",),
@@ -102,7 +103,6 @@ SUBMODULES = (
     "library",
     "line3d",
     "line_bvp",
-    "line_bvp_3d",
     "line_on_seabed",
     "moordyn",
     "net_loads",

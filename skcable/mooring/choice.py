@@ -4,7 +4,7 @@ Every solved line reports ``model`` and ``reason`` (and a line in the sea its `M
 its estimated error); both are decided here. The models' solves stay in their modules
 (`skcable.mooring.Line`, `skcable.cable.elastic_catenary`, `skcable.cable.sloped_seabed_catenary`,
 `skcable.mooring.line_on_seabed`, `skcable.mooring.straight`, `skcable.mooring.bvp_model`,
-`skcable.mooring.line_bvp_3d`); this module calls them in the order below and says why.
+`skcable.mooring.line_bvp.space`); this module calls them in the order below and says why.
 
 **A `skcable.mooring.Line` in the vertical plane of its ends** (`solve_in_plane`,
 `line_in_plane`): B at ``(span, dh)`` from A, the seabed the plane ``y = seabed + x tan α``
@@ -49,7 +49,7 @@ cheapest model that is exact for the line, reported as a `skcable.mooring.ModelC
   only. Error: the closure's relative residual;
 - ``"closed form (axial laws)"``: nonlinear axial laws ``ε(T)`` on a line hanging clear of the
   seabed (`skcable.mooring.segments.law`). Error: the closure's residual;
-- ``"3-D line BVP"`` (`skcable.mooring.line_bvp_3d`): a current, a shaped seabed, or a nonlinear
+- ``"3-D line BVP"`` (`skcable.mooring.line_bvp.space`): a current, a shaped seabed, or a nonlinear
   law on a line that rests on the seabed. Error: measured on the solution
   (`skcable.mooring.sea_line`).
 

@@ -5,7 +5,7 @@ The model a line in the sea takes, and why, is chosen by `skcable.mooring.choice
 (`skcable.mooring.line3d.Line3D` over `skcable.mooring.Line`'s closed form: H.M. Irvine, "Cable
 Structures", MIT Press, 1981; J.M. Jonkman, "Dynamics modeling and loads analysis of an offshore
 floating wind turbine", NREL, 2007), on a plane slope, with nonlinear axial laws, or the 3-D line
-BVP (`skcable.mooring.line_bvp_3d`, `bvp_model`). Its `ModelChoice` carries its estimated
+BVP (`skcable.mooring.line_bvp.space`, `bvp_model`). Its `ModelChoice` carries its estimated
 relative error: for a closed form the closure's relative residual (round-off); for the BVP the
 difference of the end forces on ``n`` and ``n/2`` elements over the largest end force (the P2
 line converges at ``h³``: the difference bounds the coarser solution's error, the finer one's
@@ -22,7 +22,7 @@ anchor as in `skcable.mooring.Line`.
 `LineInSea` gives the end forces, ``profile(n)`` ``(n, 3)`` over the unstretched arc length,
 ``T_of_s(s)``, the fairlead ``stiffness()`` (3 × 3), ``model`` and ``equilibrium_residual``:
 for the BVP the largest ``|d(T t)/ds + q|`` at its quadrature points
-(`skcable.mooring.line_bvp_3d.solution`); for a closed form, which meets the equilibrium equations
+(`skcable.mooring.line_bvp.space.solution`); for a closed form, which meets the equilibrium equations
 exactly along the line, the balance of the forces on the whole line,
 ``|F_a + F_b + W e_z − R| / L`` (N/m; ``R`` the seabed's force), to round-off; on a slope, where
 ``R`` is the closure's own, the closure's relative residual times the weight per length.
@@ -206,7 +206,7 @@ def relative_seabed(line, anchor):
 
 
 def bvp_model(line, n_elements: int = BVP_ELEMENTS, anchor_z: float = 0.0):
-    """The `skcable.mooring.line_bvp_3d.LineBVP3D` of ``line`` on ``n_elements`` (its seabed placed at
+    """The `skcable.mooring.line_bvp.space.LineBVP3D` of ``line`` on ``n_elements`` (its seabed placed at
     the anchor's height ``anchor_z`` where it is a float), and its end attachments ``(P_0, P_n)``
     (N); cached on the line (a warm start needs the same model).
 
@@ -215,7 +215,7 @@ def bvp_model(line, n_elements: int = BVP_ELEMENTS, anchor_z: float = 0.0):
     graded), its error estimate (the line on half the elements) says what it costs, and a
     system's warm starts stay on it (graded meshes took a 12-line system on grounded chains 3.0
     times as long to its equilibrium: ``python benchmarks/bench_line3d.py``, scene 9)."""
-    from skcable.mooring.line_bvp_3d import LineBVP3D, LineSegment
+    from skcable.mooring.line_bvp.space import LineBVP3D, LineSegment
 
     cache = line.__dict__.setdefault("_bvp_models", {})
     key = (int(n_elements), None if line.seabed is None else float(anchor_z))

@@ -1,4 +1,4 @@
-"""The 3-D line BVP (`skcable.mooring.line_bvp_3d`) against independent references written here:
+"""The 3-D line BVP (`skcable.mooring.line_bvp.space`) against independent references written here:
 scipy ``solve_ivp`` shooting of the same ODEs (in and across the line's plane, multi-segment
 with a clump and a nonlinear axial law, a tabulated current), the sloped closed form
 (`sloped_seabed_catenary`) on a plane bathymetry, central differences of its own solutions for
@@ -17,7 +17,7 @@ from skcable.cable.seabed import sloped_seabed_catenary
 from skcable.errors import ConvergenceError, InputError
 from skcable.mooring.axial import StaticDynamicRope, StrainFunction, StrainTable
 from skcable.mooring.bathymetry import DepthFunction, Grid, Plane
-from skcable.mooring.line_bvp_3d import LineBVP3D, LineSegment, solve_line_bvp_3d
+from skcable.mooring.line_bvp.space import LineBVP3D, LineSegment, solve_line_bvp_3d
 
 RHO = 1025.0
 A = np.array([20.0, -10.0, -200.0])
@@ -765,7 +765,7 @@ def test_a_rope_in_a_strong_current_on_a_seabed_is_graded_by_steps_of_the_curren
     whose coarsest one takes the current in steps (`LineBVP3DSolver.continued` on a graded
     mesh). Its end forces agree with the line on 512 uniform elements (``mesh="uniform"``, an
     independent mesh) within 1e-8 of the largest (measured 5.1e-10)."""
-    from skcable.mooring.line_bvp_3d.driver import LineBVP3DSolver
+    from skcable.mooring.line_bvp.space.driver import LineBVP3DSolver
 
     rope = LineSegment(700.0, 30.0, 5e7, 0.12, 2.4, 0.3)
     ends = ((0.0, 0.0, -200.0), (600.0, 0.0, -20.0))
@@ -789,7 +789,7 @@ def test_a_rope_in_a_strong_current_on_a_seabed_is_graded_by_steps_of_the_curren
 
 def _scene_3d(anchor, fairlead, segments, **options):
     """The checked `Scene3D` that `solve_line_bvp_3d` solves."""
-    from skcable.mooring.line_bvp_3d.inputs import scene
+    from skcable.mooring.line_bvp.space.inputs import scene
 
     return scene(anchor, fairlead, LineBVP3D(segments, **options).checked)
 
@@ -802,7 +802,7 @@ def test_a_line_hangs_in_its_vertical_plane_only_where_nothing_pushes_it_out():
     stiffness, a grid seabed, or a vertical line: None (the line in space is not the plane
     line's there)."""
     from skcable.bvp.current import UniformCurrent
-    from skcable.mooring.line_bvp_3d.vertical_plane import plane_scene
+    from skcable.mooring.line_bvp.space.vertical_plane import plane_scene
 
     along = Plane(A[2] - 30.0, -0.05 * E, origin=A[:2])
     seg = [LineSegment(500.0, 600.0, 4e8, diameter=0.1, cd_normal=1.2)]
@@ -834,7 +834,7 @@ def test_where_its_strategy_fails_the_line_in_space_takes_the_plane_lines_solve(
     line would grade otherwise (``mesh="uniform"`` on a seabed; no seabed, where the line in space
     keeps its uniform mesh)."""
     from skcable import mooring
-    from skcable.mooring.line_bvp_3d.driver import LineBVP3DSolver
+    from skcable.mooring.line_bvp.space.driver import LineBVP3DSolver
 
     def fails(self, start=None):
         raise ConvergenceError("solve_line_bvp_3d: made to fail", [1.0])

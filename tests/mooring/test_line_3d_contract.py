@@ -183,7 +183,7 @@ def test_a_current_or_a_shaped_seabed_takes_the_bvp_and_says_why():
 def test_a_line_on_a_plane_sloping_along_it_is_the_sloped_closed_form():
     """Jonkman's line on a slope (the closed form line_3d takes) against the 3-D BVP of the same
     line on the same plane, turned to an azimuth of 30°."""
-    from skcable.mooring.line_bvp_3d import LineSegment, solve_line_bvp_3d
+    from skcable.mooring.line_bvp.space import LineSegment, solve_line_bvp_3d
 
     c, s = np.cos(np.radians(30.0)), np.sin(np.radians(30.0))
     bed = Plane(-200.0, (0.04 * c, 0.04 * s))

@@ -1,7 +1,7 @@
 """The plane line BVP and the line in space in its vertical plane: scenes of the differential survey
 ``benchmarks/line_bvp_planes.py`` (``--show SEED:SCENE`` prints each as Python).
 
-`skcable.mooring.solve_line_bvp` and `skcable.mooring.line_bvp_3d.solve_line_bvp_3d` share one
+`skcable.mooring.solve_line_bvp` and `skcable.mooring.line_bvp.space.solve_line_bvp_3d` share one
 line law and their meshes' grading (on a seabed, graded by the closed-form start, then by the
 line's turning) but not their drivers (the plane's first solve, friction and slack stretch; space's
 starts, current and fitting): on a scene both solve, their end forces agree to the discretisation
@@ -29,7 +29,7 @@ one (1:79) the plane line failed until its first solves tried the line in space'
 one (2:243) the plane line's solution failed its equilibrium check until the polish held the
 active set (`skcable.mooring.line_bvp.iterate.held_polish`); one (3:34) the line in space ended in
 compression until, where its strategy fails, it solved the line in its vertical plane by the plane
-line's strategy (`skcable.mooring.line_bvp_3d.vertical_plane`): there the two agree to round-off,
+line's strategy (`skcable.mooring.line_bvp.space.vertical_plane`): there the two agree to round-off,
 one discrete line on one mesh.
 
 Agreement is not correctness: on a coarse mesh both lines held one such buoy down alike
@@ -47,7 +47,9 @@ import pytest
 from skcable.errors import ConvergenceError
 from skcable.mooring import LineBVPSolution, solve_line_bvp
 from skcable.mooring.bathymetry import Plane
-from skcable.mooring.line_bvp_3d import LineBVP3DSolution, solve_line_bvp_3d
+from skcable.mooring.line_bvp.driver import LineBVPSolver
+from skcable.mooring.line_bvp.inputs import scene
+from skcable.mooring.line_bvp.space import LineBVP3DSolution, solve_line_bvp_3d
 
 #: the survey's threshold of agreement, of the largest end force
 TOLERANCE = 1e-6
@@ -76,8 +78,10 @@ def varying(w0, amplitude, wavelength, phase):
     return w
 
 
-def solvers(sc: Scene):
-    """``(plane, space)``: the scene's solves, callables of no argument (module docstring)."""
+def solvers(sc: Scene, own_strategy=False):
+    """``(plane, space)``: the scene's solves, callables of no argument (module docstring); with
+    ``own_strategy``, the plane line's solver without its fallback on the line in space's strategy
+    (`skcable.mooring.line_bvp.fallback`)."""
     segments = [(length, varying(*w) if isinstance(w, tuple) else w, EA) for length, w, EA in sc.segments]
     common = dict(point_loads=sc.point_loads, friction=sc.friction, n_elements=sc.n_elements)
     plane_bed: dict = {}
@@ -92,8 +96,12 @@ def solvers(sc: Scene):
                 seabed_slope=lambda x: np.full(np.shape(x), slope),
             )
     ends = (0.0, 0.0, 0.0), (sc.span, 0.0, sc.dh)
+    plane = lambda: solve_line_bvp(sc.span, sc.dh, segments, **plane_bed, **common)  # noqa: E731
+    if own_strategy:
+        bed = {"seabed": None, "seabed_slope": None, **plane_bed}
+        plane = LineBVPSolver(scene(sc.span, sc.dh, segments, fit_touchdown=3, **bed, **common)).solve
     return (
-        lambda: solve_line_bvp(sc.span, sc.dh, segments, **plane_bed, **common),
+        plane,
         lambda: solve_line_bvp_3d(*ends, segments, seabed=space_bed, **common),
     )
 
@@ -190,7 +198,7 @@ AGREE = {
     # a chain, a rope and a wire of varying weights, a clump resting on a falling slope (-0.076):
     # the line in space ended in compression on every mesh until, where its strategy fails, it
     # took the plane line's solve in the vertical plane of its ends (Newton in space from it, on
-    # its mesh: one discrete line, `skcable.mooring.line_bvp_3d.vertical_plane`); 2.3e-14
+    # its mesh: one discrete line, `skcable.mooring.line_bvp.space.vertical_plane`); 2.3e-14
     "3:34": Scene(1877.7795139969624, -84.61294874641233, [(520.0167112478808, 16.166116867964334, 4421865115.867061), (836.3738428092635, (17.200888381359942, 0.44334913330059644, 3539.867878397045, 3.5343588328418454), 264487313.8282214), (585.1610455735785, (19.79383818376042, 0.4589848800843584, 575.5423282269782, 2.39758898623215), 55040395.60102722)], [(1082.7444877803132, 1115.5051458202772)], (0.0, -0.07626227801550656), 0.0, 64)  # noqa: E501
 }
 
@@ -279,8 +287,10 @@ def test_a_failed_solve_keeps_the_line_on_its_finest_mesh():
     mesh reached, free of compression, whose end forces agree with the line in space's on 256
     elements (which keeps its last converged graded mesh) within 1e-6 of the largest (measured
     7e-10). Before, ``last`` was the failed Newton's iterate, without its mesh (the line in
-    space's failures: the same, or its driver's private record of a solve)."""
-    plane, space = solvers(STANDING)
+    space's failures: the same, or its driver's private record of a solve). `solve_line_bvp` solves
+    it by its fallback on the line in space's strategy (`skcable.mooring.line_bvp.fallback`): the
+    line in space's to round-off, on its mesh."""
+    plane, space = solvers(STANDING, own_strategy=True)
     with pytest.raises(ConvergenceError) as failed:
         plane()
     kept = failed.value.last
@@ -290,6 +300,8 @@ def test_a_failed_solve_keeps_the_line_on_its_finest_mesh():
     assert not kept.problem.compressed(kept.dofs, 1e-10)
     want = space_forces(space())
     np.testing.assert_allclose(plane_forces(kept), want, rtol=0, atol=1e-6 * np.abs(want).max())
+    by_fallback = plane_forces(solvers(STANDING)[0]())
+    np.testing.assert_allclose(by_fallback, want, rtol=0, atol=1e-9 * np.abs(want).max())
     # the line in space keeps its solution too: scene 3:223 converged in compression only, and
     # the plane line fails it as well (the line in space's last resort, in its vertical plane)
     with pytest.raises(ConvergenceError) as failed:
@@ -329,3 +341,52 @@ def test_the_plane_lines_default_fitting_passes_are_the_line_in_spaces():
     assert node_off(reference) < 3e-4 and node_off(default) < 5e-3 and node_off(two) < 1e-4
     assert abs(two.H - reference.H) <= 1e-6 * reference.H
     assert abs(default.H - reference.H) <= 1e-6 * reference.H
+
+
+#: scene 2:35: chain, wire and chain (1023, 66 and 1057 N/m) on a straight slope of 0.058 rising
+#: from 9.4 m below the anchor, a 34 kN buoy 2.3 m before the fairlead, 64 elements
+BUOY_BY_FAIRLEAD = (
+    269.6243145679015,
+    30.02155706521642,
+    [
+        (106.64649617996385, 1023.4379607827417, 28599943.999211386),
+        (78.57297475067752, 65.51703575068102, 307170790.9805231),
+        (103.303426678956, 1057.0276378719975, 5021882864.82908),
+    ],
+    dict(
+        seabed=-9.400984967836123,
+        seabed_slope=0.05818703469860276,
+        point_loads=[(267.3682651047835, -33988.28565714568)],
+        friction=0.0,
+        n_elements=64,
+    ),
+)
+
+
+def test_the_plane_line_falls_back_on_the_line_in_spaces_strategy():
+    """Scene 2:35 (`BUOY_BY_FAIRLEAD`): the plane line's own strategy stagnates (one of the eight
+    scenes of the survey, seeds 1–3, that only the line in space solved). `solve_line_bvp` then
+    takes the line in space's strategy and solves the plane line on its mesh from it
+    (`skcable.mooring.line_bvp.fallback.space_for_plane`): the line passes the plane line's
+    checks (its equilibrium residual by scikit-fem's own assembly), balances the weight, the
+    buoy and the frictionless slope's reaction, normal to the slope, and its end forces are the
+    line in space's to round-off (one discrete line on one mesh; measured 1.1e-14)."""
+    span, dh, segments, options = BUOY_BY_FAIRLEAD
+    with pytest.raises(ConvergenceError):  # its own strategy, without the fallback
+        LineBVPSolver(scene(span, dh, segments, fit_touchdown=3, **options)).solve()
+    line = solve_line_bvp(span, dh, segments, **options)
+    weight = sum(length * w for length, w, _ in segments) + sum(P for _, P in options["point_loads"])
+    R = line.contact_force.sum(axis=0)  # the seabed's reaction on the line (N)
+    assert line.V_A + line.V_B + R[1] == pytest.approx(weight, rel=1e-9)
+    assert line.H_B - line.H_A + R[0] == pytest.approx(0.0, abs=1e-9 * weight)
+    assert R[0] == pytest.approx(-options["seabed_slope"] * R[1], rel=1e-9)  # normal to the slope
+    space = solve_line_bvp_3d(
+        (0.0, 0.0, 0.0),
+        (span, 0.0, dh),
+        segments,
+        seabed=Plane(options["seabed"], (options["seabed_slope"], 0.0)),
+        point_loads=options["point_loads"],
+        n_elements=options["n_elements"],
+    )
+    want = space_forces(space)
+    np.testing.assert_allclose(plane_forces(line), want, rtol=0, atol=1e-9 * np.abs(want).max())

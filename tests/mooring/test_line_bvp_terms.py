@@ -18,7 +18,7 @@ from scipy.optimize import fsolve
 
 from skcable import bvp, cable, fe, mooring
 from skcable.errors import ConvergenceError, InputError
-from skcable.mooring.line_bvp_3d import LineBVP3D, solve_line_bvp_3d
+from skcable.mooring.line_bvp.space import LineBVP3D, solve_line_bvp_3d
 
 RHO, G = 1025.0, 9.81
 

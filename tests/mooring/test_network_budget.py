@@ -65,7 +65,7 @@ def test_the_time_limit_is_checked():
 
 
 def test_the_line_bvps_stop_at_their_time_limit():
-    from skcable.mooring.line_bvp_3d import LineSegment, solve_line_bvp_3d
+    from skcable.mooring.line_bvp.space import LineSegment, solve_line_bvp_3d
 
     segments = [(300.0, 1000.0, 5e8), (250.0, 400.0, 2e8), (300.0, 1000.0, 5e8)]
     start = time.monotonic()

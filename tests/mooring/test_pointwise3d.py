@@ -13,7 +13,7 @@ import numpy as np
 import pytest
 
 from skcable.fe.probes import gradient_probes
-from skcable.mooring.line_bvp_3d import LineBVP3D, LineBVP3DSolver, LineSegment
+from skcable.mooring.line_bvp.space import LineBVP3D, LineBVP3DSolver, LineSegment
 
 CHAIN = LineSegment(500.0, 600.0, 4e8, 0.1, 1.2, 0.008)
 ANCHOR, FAIRLEAD = np.array([420.0, 0.0, -200.0]), np.array([20.0, 0.0, -20.0])

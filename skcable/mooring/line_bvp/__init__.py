@@ -9,7 +9,7 @@ on a seabed of any shape with Coulomb friction. One concern per module:
 - `contact`: the seabed and the semismooth (primal–dual active set) contact rows with Coulomb
   friction, one set for the plane line and the line in space;
 - `mesh`: uniform, graded (equidistributed turning), fitted and nested meshes;
-- `discrete`: what the plane line and the line in space (`skcable.mooring.line_bvp_3d`) write
+- `discrete`: what the plane line and the line in space (`space`) write
   once, parametrised by the dimension: the line law (section forces, loads, axial laws, residual
   and tangent: every call of its assembly), mesh, bases, dofs, merit and its round-off floor, the
   generalized Jacobian's banded solves and the ends' sensitivities (`DiscreteLine`);
@@ -33,10 +33,14 @@ on a seabed of any shape with Coulomb friction. One concern per module:
 - `driver`: the continuation `LineBVPSolver` — levels, gradings, friction, fitting, checks;
 - `solution`: `LineBVPSolution`, the end forces, contact and fields;
 - `stiffness`: the fairlead stiffness from the converged tangent (implicit function theorem);
-- `model`: `solve_line_bvp` and `LineBVP`, a line model for `line_3d` and `MooringSystem`.
+- `model`: `solve_line_bvp` and `LineBVP`, a line model for `line_3d` and `MooringSystem`;
+- `space`: the line in space (`solve_line_bvp_3d`), on the same discrete line law, meshes,
+  solves and checks, with its own strategy (its package's docstring);
+- `fallback`: each solver's fallback on the other, for a line that hangs in the vertical plane
+  of its ends (the plane line by the line in space's strategy, and the other way).
 
 Data flow one way: ``inputs → driver → (mesh, start, problem ⇄ contact) → iterate → solution
-(fields, pointwise)``.
+(fields, pointwise)``; ``model → fallback → (driver, space.driver)``.
 """
 
 from skcable.mooring.line_bvp.driver import LineBVPSolver

@@ -37,7 +37,7 @@ of it and what does not depend on the contact rows:
   at a gap ``~ h_i``.
 
 `skcable.mooring.line_bvp.problem.LineProblem` (the plane, ``dim = 2``) and
-`skcable.mooring.line_bvp_3d.problem.LineProblem3D` (space, ``dim = 3``) set the properties
+`skcable.mooring.line_bvp.space.problem.LineProblem3D` (space, ``dim = 3``) set the properties
 (``w_q``, the axial laws, the terms) and add their contact rows and reactions. Every call of the
 line law's assembly is in this module.
 """

@@ -47,10 +47,14 @@ each solve (`skcable.mooring.line_bvp.iterate.solve_on`) starts from the last st
    at most μN, every number finite, the discrete line not in compression (where the compression
    lies on the seabed from the anchor, ``InputError("friction")``: the line has no equilibrium
    in tension, `skcable.mooring.line_bvp.check.refuse_sliding`).
-7. **Refusal** (`LineBVPSolver.solve`): a failure where the segment-wise closed form's slack
-   stretch ends at a clump weight on the seabed becomes ``InputError("point_loads")``
-   (`LineBVPSolver.clump_at_slack_end`); one with friction and the anchor above the seabed says
-   where friction fully mobilised may take more than the pull (`LineBVPSolver.with_diagnosis`).
+7. **Refusal, or the line in space** (`LineBVPSolver.solve`): a failure where the segment-wise
+   closed form's slack stretch ends at a clump weight on the seabed becomes
+   ``InputError("point_loads")`` (`LineBVPSolver.clump_at_slack_end`); else the ``fallback``
+   where the model gives one: the line in space's strategy, its line then solved in the plane on
+   its mesh, graded, fitted and checked as a level from it
+   (`skcable.mooring.line_bvp.fallback.space_for_plane`); where that fails too, one with
+   friction and the anchor above the seabed says where friction fully mobilised may take more
+   than the pull (`LineBVPSolver.with_diagnosis`).
 
 **A warm start** (`LineBVPSolver.solve_from`, `LineBVP.solve(start=)`): the previous solution,
 moved to the new fairlead on its own mesh (`LineBVPSolver.moved`), is the start of one level
@@ -127,10 +131,12 @@ class LineBVPSolver(LineSolver):
     ----------
     scene : Scene
         The checked scene and options (`skcable.mooring.line_bvp.inputs.scene`).
+    fallback : callable, optional
+        ``fallback(solver)``, tried where the strategy fails (`LineSolver.fallback`).
     """
 
-    def __init__(self, scene: Scene):
-        self.scene = scene
+    def __init__(self, scene: Scene, fallback=None):
+        self.scene, self.fallback = scene, fallback
         lengths = np.array([seg.length for seg in scene.segments])
         self.length = float(joints_of(lengths)[-1])
         #: the nodes every mesh keeps (joints, point loads)
@@ -184,7 +190,10 @@ class LineBVPSolver(LineSolver):
         except ConvergenceError as failed:
             clump = self.clump_at_slack_end()
             if clump is None:
-                raise self.with_diagnosis(failed) from None
+                solution = self.from_fallback(failed)
+                if solution is None:
+                    raise self.with_diagnosis(failed) from None
+                return solution
             raise InputError(
                 "point_loads",
                 f"the slack stretch near the anchor ends at the point load at s = {clump:.6g} m, which "

@@ -1,7 +1,7 @@
 r"""The fields of a converged line BVP at any arc length, in the plane and in space.
 
 `LineFields` is what the plane line's solution (`skcable.mooring.line_bvp.solution`) and the line
-in space's (`skcable.mooring.line_bvp_3d.solution`) share: the arc lengths checked, the state
+in space's (`skcable.mooring.line_bvp.space.solution`) share: the arc lengths checked, the state
 (positions, tangent, tension) through `skcable.mooring.line_bvp.discrete.DiscreteLine.state_at`,
 the tension field, the weight, the tensions at the segments' ends and the samples the writers
 read. Each solution adds its view of the ends: ``H`` and ``V`` in the plane, force vectors in

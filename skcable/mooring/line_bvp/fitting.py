@@ -3,7 +3,7 @@ r"""Where a line leaves the seabed: the touchdown and the landing from the balan
 Nodal contact puts the touchdown at a node, up to half an element from where the line leaves
 the seabed, an error in the end forces of order (that distance)² that jumps with the mesh. The
 drivers put a node at the touchdown instead (`skcable.mooring.line_bvp.driver`,
-`skcable.mooring.line_bvp_3d.driver`), found from the equilibrium of the suspended part, in the
+`skcable.mooring.line_bvp.space.driver`), found from the equilibrium of the suspended part, in the
 plane or in space: the tension vector at ``s``,
 
 .. math:: \mathbf F(s) = \mathbf S_B + \int_s^L \mathbf f\,ds - \sum_{s_k > s} P_k\,\mathbf e_z,

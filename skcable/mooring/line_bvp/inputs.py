@@ -46,7 +46,7 @@ LINE_OPTIONS = NewtonOptions(tol=1e-10, max_iter=50, line_search="residual", sta
 @dataclass(frozen=True)
 class LineSegment:
     """One segment of a line BVP, in the plane (`solve_line_bvp`) or in space
-    (`skcable.mooring.line_bvp_3d.solve_line_bvp_3d`), listed from the anchor A.
+    (`skcable.mooring.line_bvp.space.solve_line_bvp_3d`), listed from the anchor A.
 
     Attributes
     ----------

@@ -7,6 +7,7 @@ from skcable._checks import nonnegative, positive, scalar, whole
 from skcable.cable._extreme import outsized
 from skcable.errors import InputError
 from skcable.mooring.line_bvp.driver import LineBVPSolver
+from skcable.mooring.line_bvp.fallback import space_for_plane
 from skcable.mooring.line_bvp.inputs import (
     magnitudes,
     newton_options_of,
@@ -266,7 +267,7 @@ class LineBVP:
             terms=self.terms,
             time_limit=self.time_limit,
         )
-        solver = LineBVPSolver(checked)
+        solver = LineBVPSolver(checked, fallback=space_for_plane)
         if start is not None and not (isinstance(start, LineBVPSolution) and start.model is self):
             raise InputError("start", f"must be a solution of this LineBVP, got {type(start).__name__}")
         with outsized(**magnitudes(checked)):  # as in solve_line_bvp

@@ -2,7 +2,7 @@
 and refusal, and the friction diagnosis of a failure.
 
 `LineSolver` is the base of `skcable.mooring.line_bvp.driver.LineBVPSolver` (the plane line) and
-`skcable.mooring.line_bvp_3d.driver.LineBVP3DSolver` (the line in space). Each driver gives its
+`skcable.mooring.line_bvp.space.driver.LineBVP3DSolver` (the line in space). Each driver gives its
 scene (``friction``, a dataclass), its Newton options (`skcable.fe.NewtonOptions`), its time
 budget (`skcable._budget.Budget`), its ``problem(n)`` on ``n`` elements, its closed forms
 ``start_forms`` (a module), the type of a solve's ``result`` and its strategy ``unbounded()``;
@@ -40,11 +40,15 @@ class LineSolver:
     result: Callable[..., Any]
     #: the closed-form starts of the driver's line: its ``closed_form_start``, ``lifted_start``,
     #: ``segmented_start`` and ``on_slope`` (`skcable.mooring.line_bvp.start`,
-    #: `skcable.mooring.line_bvp_3d.start`)
+    #: `skcable.mooring.line_bvp.space.start`)
     start_forms: ModuleType
     scene: Any
     budget: Budget
     options: NewtonOptions
+    #: the other solver's strategy, tried where this one's fails
+    #: (`skcable.mooring.line_bvp.fallback`): ``fallback(solver)`` gives the line checked, None
+    #: where it does not take the scene, or a `ConvergenceError` saying why it failed; None: none
+    fallback: Callable[[Any], Any] | None = None
 
     def __init__(self, scene):
         """Each driver sets up its own (its scene, budget and meshes)."""
@@ -210,6 +214,20 @@ class LineSolver:
             f"{self.name}: the discrete line is in compression (min T = {np.min(T):.3g} N{also}): {why}",
             solved.history,
         )
+
+    def from_fallback(self, failed: ConvergenceError):
+        """The line by ``fallback`` where this solver's strategy ``failed``; None where there is
+        none or it does not take the scene, ``failed``'s message then saying why the fallback
+        failed, where it did."""
+        if self.fallback is None:
+            return None
+        try:
+            return self.fallback(self)
+        except ConvergenceError as other:
+            failed.args = (f"{failed}; {other}",)
+        except Budget.Spent:  # the other solver took what was left: this failure, not the budget's
+            failed.args = (f"{failed}; no time was left to solve it in the vertical plane of its ends",)
+        return None
 
     def with_diagnosis(self, failed: ConvergenceError) -> ConvergenceError:
         """``failed``, saying where friction fully mobilised may take more than the line's pull

@@ -17,7 +17,7 @@ import numpy as np
 from skcable.bvp.terms import CableState
 from skcable.mooring.line_bvp.contact import ContactRows
 from skcable.mooring.line_bvp.discrete import DiscreteLine
-from skcable.mooring.line_bvp_3d.loads import SegmentDrag
+from skcable.mooring.line_bvp.space.loads import SegmentDrag
 
 __all__ = ["LineProblem3D"]
 

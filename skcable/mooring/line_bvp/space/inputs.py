@@ -4,7 +4,7 @@
 plane line's (`skcable.mooring.line_bvp.inputs`);
 `scene` checks every argument of `solve_line_bvp_3d` (each refusal an `skcable.InputError`
 naming the argument as the public API spells it) and returns a `Scene3D`, which the solver
-(`skcable.mooring.line_bvp_3d.driver`) takes as it is.
+(`skcable.mooring.line_bvp.space.driver`) takes as it is.
 """
 
 from __future__ import annotations
@@ -28,7 +28,7 @@ from skcable.mooring.line_bvp.inputs import (
     segments_of,
     terms_of,
 )
-from skcable.mooring.line_bvp_3d.vertical_plane import plane_scene
+from skcable.mooring.line_bvp.space.vertical_plane import plane_scene
 
 __all__ = [
     "MESHES",

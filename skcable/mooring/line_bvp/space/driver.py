@@ -21,7 +21,7 @@ r"""The strategy that takes a line in space from its closed-form start to the co
    fails or ends in compression, or without a seabed, or with ``mesh="uniform"``,
 2. **a level on the uniform mesh** (`LineBVP3DSolver.level`): the line from its closed-form
    starts (`LineSolver.starts`, the plane line's list, of the starts
-   `skcable.mooring.line_bvp_3d.start`): the start, the segment-wise closed form, on a seabed the
+   `skcable.mooring.line_bvp.space.start`): the start, the segment-wise closed form, on a seabed the
    start with the contact nodes switching by the tension, on a plane seabed through the anchor
    the flat grounded line lifted onto it too; where those fail,
 3. **the current by steps** (`LineBVP3DSolver.continued`): the line in still water, then the
@@ -46,11 +46,12 @@ r"""The strategy that takes a line in space from its closed-form start to the co
    (a slack stretch on the seabed near the anchor is not modelled in 3-D; a line in compression
    on the seabed from the anchor has no equilibrium in tension: ``InputError("friction")``,
    `skcable.mooring.line_bvp.check.refuse_sliding`), and its equilibrium
-   residual within its bound (`skcable.mooring.line_bvp_3d.solution.LineBVP3DSolution.check`).
-7. **In its vertical plane** (`LineBVP3DSolver.in_vertical_plane`): where 1–6 fail, a line that
+   residual within its bound (`skcable.mooring.line_bvp.space.solution.LineBVP3DSolution.check`).
+7. **In its vertical plane** (the ``fallback`` where the model gives one,
+   `skcable.mooring.line_bvp.fallback.plane_for_space`): where 1–6 fail, a line that
    hangs in the vertical plane of its ends (no current or cable terms; no seabed, or a `Plane`
-   sloping along the chord; constant stiffnesses: `skcable.mooring.line_bvp_3d.vertical_plane`)
-   on meshes the plane line grades alike (`LineBVP3DSolver.plane_meshes`) is solved by the
+   sloping along the chord; constant stiffnesses: `skcable.mooring.line_bvp.space.vertical_plane`)
+   on meshes the plane line grades alike is solved by the
    plane line's strategy (`skcable.mooring.line_bvp.driver`) within what is left of the budget,
    then in space on its mesh from it (one discrete line: Newton takes a step or two), fitted (5)
    and checked (6). In the differential survey this solves scenes 2:191 and 3:34, which end in
@@ -68,17 +69,15 @@ counts against the scene's ``time_limit`` (`skcable._budget.Budget`): past it, a
 
 from __future__ import annotations
 
-import time
 from dataclasses import dataclass, field
 from functools import cache, partial
 
 import numpy as np
 
 from skcable._budget import Budget
-from skcable.errors import ConvergenceError, InputError
+from skcable.errors import ConvergenceError
 from skcable.fe import first_converged
 from skcable.mooring.bathymetry import OffGrid
-from skcable.mooring.line_bvp.driver import LineBVPSolver
 from skcable.mooring.line_bvp.mesh import (
     COARSE,
     REFINEMENT,
@@ -88,12 +87,11 @@ from skcable.mooring.line_bvp.mesh import (
     solve_nested,
 )
 from skcable.mooring.line_bvp.solver import LineSolver
+from skcable.mooring.line_bvp.space import start as closed_forms
+from skcable.mooring.line_bvp.space.problem import LineProblem3D
+from skcable.mooring.line_bvp.space.solution import LineBVP3DSolution
+from skcable.mooring.line_bvp.space.start import closed_form_start
 from skcable.mooring.line_bvp.start import restart
-from skcable.mooring.line_bvp_3d import start as closed_forms
-from skcable.mooring.line_bvp_3d.problem import LineProblem3D
-from skcable.mooring.line_bvp_3d.solution import LineBVP3DSolution
-from skcable.mooring.line_bvp_3d.start import closed_form_start
-from skcable.mooring.line_bvp_3d.vertical_plane import in_space, plane_scene
 
 __all__ = ["LineBVP3DSolver"]
 
@@ -112,10 +110,11 @@ class Solved:
 
 
 class LineBVP3DSolver(LineSolver):
-    """The solver of one line in space: the strategy of the module docstring over a `Scene3D`."""
+    """The solver of one line in space: the strategy of the module docstring over a `Scene3D`;
+    ``fallback(solver)`` tried where it fails (`LineSolver.fallback`)."""
 
-    def __init__(self, scene):
-        self.scene = scene
+    def __init__(self, scene, fallback=None):
+        self.scene, self.fallback = scene, fallback
         self.budget = Budget(time_limit=getattr(scene, "time_limit", 60.0))
         #: the nodes every mesh keeps (joints, point loads)
         self.fixed = fixed_nodes(scene.joints, scene.point_loads)
@@ -152,64 +151,16 @@ class LineBVP3DSolver(LineSolver):
         return LineBVP3DSolution(solved.problem, solved.dofs, solved.history, solved.state)
 
     def unbounded(self, start: LineBVP3DSolution | None = None) -> LineBVP3DSolution:
-        """`solve` without the budget's conversion; where the strategy fails, the line in the
-        vertical plane of its ends by the plane line's (`in_vertical_plane`); a failure with
-        friction and the anchor above the seabed diagnosed (`with_diagnosis`)."""
+        """`solve` without the budget's conversion; where the strategy fails, the line by the
+        ``fallback`` (module docstring, 7); a failure with friction and the anchor above the
+        seabed diagnosed (`with_diagnosis`)."""
         try:
             return self.strategy(start)
         except ConvergenceError as failed:
-            try:
-                solution = self.in_vertical_plane()
-            except ConvergenceError as plane:
-                failed.args = (f"{failed}; {plane}",)
-                solution = None
-            except Budget.Spent:  # the plane line took what was left: this failure, not the budget's
-                failed.args = (f"{failed}; no time was left to solve it in the vertical plane of its ends",)
-                solution = None
+            solution = self.from_fallback(failed)
             if solution is None:
                 raise self.with_diagnosis(failed) from None
             return solution
-
-    def in_vertical_plane(self) -> LineBVP3DSolution | None:
-        """The line that hangs in the vertical plane of its ends (module docstring, 7;
-        `skcable.mooring.line_bvp_3d.vertical_plane.plane_scene`) solved by the plane line's
-        strategy (`skcable.mooring.line_bvp.driver.LineBVPSolver`) within what is left of the
-        budget, then in space on that mesh from it, fitted and checked; None where the line
-        does not hang in that plane (or asks for the uniform mesh, `plane_meshes`), a
-        `ConvergenceError` saying why where that fails (the plane line refusing or failing, a
-        slack stretch)."""
-        left = self.budget.deadline - time.monotonic()
-        plane = plane_scene(self.scene, left) if left > 0 and self.plane_meshes else None
-        if plane is None:
-            return None
-        try:
-            solution = LineBVPSolver(plane).solve()
-        except (ConvergenceError, InputError) as failed:
-            reason = str(failed.args[0]).split("; error.last")[0]
-            raise ConvergenceError(
-                f"in the vertical plane of its ends the plane line's strategy failed too ({reason})",
-                getattr(failed, "history", []),
-            ) from None
-        old = solution.problem
-        if old.slack_end > 0:
-            raise ConvergenceError(
-                "in the vertical plane of its ends friction holds a slack stretch on the seabed, "
-                "which the 3-D line does not model (solve_line_bvp does)",
-                solution.history,
-            )
-        nodes = np.sort(old.mesh.p[0])
-        problem = self.problem(nodes.size - 1, self.edges_of(solution), nodes_at=nodes)
-        solved = self.run(problem, in_space(problem, old, solution.dofs), near=True)
-        return self.checked(self.fitted(solved))  # no pass without fit_touchdown
-
-    @property
-    def plane_meshes(self) -> bool:
-        """Whether the plane line's meshes are the scene's (`in_vertical_plane`): uniform without
-        fitting, graded on a seabed with ``mesh="graded"``; not where the scene asks for uniform
-        meshes, on a seabed (``mesh="uniform"``) or without one, with a fitted touchdown (the plane
-        line grades its meshes by the start there)."""
-        sc = self.scene
-        return sc.fit_touchdown == 0 or (sc.seabed is not None and sc.mesh == "graded")
 
     def strategy(self, start: LineBVP3DSolution | None = None) -> LineBVP3DSolution:
         """The strategy of the module docstring, from ``start`` where given."""

@@ -6,9 +6,10 @@ from dataclasses import fields
 
 from skcable.errors import InputError
 from skcable.fe import NewtonOptions
-from skcable.mooring.line_bvp_3d.driver import LineBVP3DSolver
-from skcable.mooring.line_bvp_3d.inputs import checked_options, scene
-from skcable.mooring.line_bvp_3d.solution import LineBVP3DSolution
+from skcable.mooring.line_bvp.fallback import plane_for_space
+from skcable.mooring.line_bvp.space.driver import LineBVP3DSolver
+from skcable.mooring.line_bvp.space.inputs import checked_options, scene
+from skcable.mooring.line_bvp.space.solution import LineBVP3DSolution
 
 __all__ = ["LineBVP3D", "solve_line_bvp_3d"]
 
@@ -55,7 +56,7 @@ def solve_line_bvp_3d(
     **newton_options,
 ) -> LineBVP3DSolution:
     """A line in space from ``anchor`` to ``fairlead`` by finite elements, in a current, on a
-    seabed of any shape (see `skcable.mooring.line_bvp_3d`).
+    seabed of any shape (see `skcable.mooring.line_bvp.space`).
 
     Parameters
     ----------
@@ -133,7 +134,7 @@ def solve_line_bvp_3d(
 
     Examples
     --------
-    >>> from skcable.mooring.line_bvp_3d import LineSegment, solve_line_bvp_3d
+    >>> from skcable.mooring.line_bvp.space import LineSegment, solve_line_bvp_3d
     >>> line = solve_line_bvp_3d(
     ...     (0.0, 0.0, -200.0), (400.0, 0.0, -20.0), [LineSegment(500.0, 600.0, 4e8, 0.1, 1.2, 0.0)],
     ...     current=(0.0, 0.8),
@@ -147,7 +148,8 @@ def solve_line_bvp_3d(
         fit_touchdown=fit_touchdown, mesh=mesh, rtol=rtol, max_iter=max_iter, time_limit=time_limit,
         options=options, newton_options=newton_options,
     )  # fmt: skip
-    return LineBVP3DSolver(scene(anchor, fairlead, checked_options(segments, options))).solve()
+    checked = scene(anchor, fairlead, checked_options(segments, options))
+    return LineBVP3DSolver(checked, plane_for_space).solve()
 
 
 class LineBVP3D:
@@ -195,7 +197,7 @@ class LineBVP3D:
         """
         if start is not None and not (isinstance(start, LineBVP3DSolution) and start.model is self):
             raise InputError("start", f"must be a solution of this LineBVP3D, got {type(start).__name__}")
-        solution = LineBVP3DSolver(scene(anchor, fairlead, self.checked)).solve(start)
+        solution = LineBVP3DSolver(scene(anchor, fairlead, self.checked), plane_for_space).solve(start)
         solution.model = self
         return solution
 

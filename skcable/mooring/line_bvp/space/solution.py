@@ -12,8 +12,8 @@ from skcable._checks import whole
 from skcable._show import Shown
 from skcable.mooring.line_bvp.contact import anchor_split
 from skcable.mooring.line_bvp.fields import LineFields
-from skcable.mooring.line_bvp_3d.problem import LineProblem3D
-from skcable.mooring.line_bvp_3d.stiffness import FairleadStiffness, fairlead_stiffness_3d
+from skcable.mooring.line_bvp.space.problem import LineProblem3D
+from skcable.mooring.line_bvp.space.stiffness import FairleadStiffness, fairlead_stiffness_3d
 
 __all__ = ["LineBVP3DSolution"]
 
@@ -21,7 +21,7 @@ EPS = float(np.finfo(float).eps)
 
 
 class LineBVP3DSolution(LineFields, Shown):
-    """Solution of `skcable.mooring.line_bvp_3d.solve_line_bvp_3d`.
+    """Solution of `skcable.mooring.line_bvp.space.solve_line_bvp_3d`.
 
     Attributes
     ----------
@@ -51,7 +51,7 @@ class LineBVP3DSolution(LineFields, Shown):
     history, iterations
         Newton's merit per iteration of the last solve.
     problem, state
-        The discrete line (`skcable.mooring.line_bvp_3d.problem.LineProblem3D`) and its state.
+        The discrete line (`skcable.mooring.line_bvp.space.problem.LineProblem3D`) and its state.
     model : object
         The model that solved it (`LineBVP3D`; None from `solve_line_bvp_3d`).
     """
@@ -138,7 +138,7 @@ class LineBVP3DSolution(LineFields, Shown):
     # --- stiffness ----------------------------------------------------------------------------
     def stiffness(self, kind: str = "static") -> FairleadStiffness:
         """The fairlead stiffness ``∂S_B/∂r_B`` (N/m, 3 × 3, global axes; `kind` ``"static"`` or
-        ``"dynamic"``: `skcable.mooring.line_bvp_3d.stiffness`)."""
+        ``"dynamic"``: `skcable.mooring.line_bvp.space.stiffness`)."""
         return fairlead_stiffness_3d(self, kind)
 
     # --- output -----------------------------------------------------------------------------------

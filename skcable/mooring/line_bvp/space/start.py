@@ -40,7 +40,7 @@ import numpy as np
 from skcable.errors import InputError
 from skcable.mooring.bathymetry import Plane
 from skcable.mooring.line_bvp import start as plane_start
-from skcable.mooring.line_bvp_3d.vertical_plane import plane_of, plane_seabed
+from skcable.mooring.line_bvp.space.vertical_plane import plane_of, plane_seabed
 
 __all__ = [
     "InPlane",
