@@ -390,3 +390,51 @@ def test_the_plane_line_falls_back_on_the_line_in_spaces_strategy():
     )
     want = space_forces(space)
     np.testing.assert_allclose(plane_forces(line), want, rtol=0, atol=1e-9 * np.abs(want).max())
+
+
+#: scene 1:50: chain, wire and rope (806, 18.6 and 71.3 N/m), no seabed, 172.5 m between ends
+#: 83.2 m apart and 33.2 m down, a 2.13 kN buoy 12.2 m into the wire (it lifts more than the
+#: wire weighs); 256 elements
+BUOY_IN_A_DEEP_SAG = (
+    83.19382821085433,
+    -33.17499054448351,
+    [
+        (32.16750443945661, 806.3558919343956, 39688703.474536054),
+        (65.63886342564933, 18.575255040726148, 261021385.60133183),
+        (74.70785479632985, 71.29454763944148, 106354130.64925216),
+    ],
+    [(44.37510675776214, -2133.9817342290225)],
+)
+
+
+def test_a_buoy_inside_a_segment_starts_from_the_segments_closed_form():
+    """Scene 1:50 (`BUOY_IN_A_DEEP_SAG`): both line BVPs failed from the closed-form starts (the
+    uniform line's and the smeared weights', far from a line that hangs in a deep U, H = 854 N
+    against 26 kN of chain). The segment-wise closed form now splits a segment at a point load
+    inside it (`skcable.mooring.line_bvp.start`): `skcable.mooring.Line` with the buoy at that
+    joint, an independent closed form (Irvine's elastic catenary piece by piece), gives the
+    end forces both solve to within 1e-6 of the largest (measured 7.9e-12 plane, 2.1e-7 space)."""
+    from skcable import mooring
+
+    span, dh, segments, loads = BUOY_IN_A_DEEP_SAG
+    (s_buoy, P), first = loads[0], segments[0][0]
+    (L1, w1, EA1), (L2, w2, EA2), (L3, w3, EA3) = segments
+    closed = mooring.line_in_plane(
+        mooring.Line(
+            [
+                mooring.Segment(L1, w1, EA1),
+                mooring.Segment(s_buoy - first, w2, EA2),
+                mooring.Segment(L1 + L2 - s_buoy, w2, EA2),
+                mooring.Segment(L3, w3, EA3),
+            ],
+            attachments=[mooring.Buoy(2, -P)],
+        ),
+        span,
+        dh,
+    )
+    assert closed.model == "free"
+    want = np.array([closed.H_A, -closed.V_A, -closed.H_B, -closed.V_B])
+    plane = solve_line_bvp(span, dh, segments, point_loads=loads, n_elements=256)
+    space = solve_line_bvp_3d((0.0, 0.0, 0.0), (span, 0.0, dh), segments, point_loads=loads, n_elements=256)
+    for got in (plane_forces(plane), space_forces(space)):
+        np.testing.assert_allclose(got, want, rtol=0, atol=1e-6 * np.abs(want).max())

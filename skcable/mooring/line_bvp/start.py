@@ -10,8 +10,9 @@
 - `segmented_start`: the multi-segment closed form `skcable.mooring.Line` of the same segments,
   clump weights and buoys at the joints and flat seabed: the start of a line whose segments
   differ (a light rope under a heavy chain hangs far from the uniform line of their mean
-  weight). Only for lines it can describe: constant weights ``w > 0`` and point loads at the
-  joints; an inextensible segment gets ``EA = 1e9`` times the line's weight.
+  weight). Only for lines it can describe: constant weights ``w > 0`` (a point load inside a
+  segment splits it, and hangs at the new joint); an inextensible segment gets ``EA = 1e9``
+  times the line's weight.
 - `start_form`: the uniform start's shape, which grades the first mesh
   (`skcable.mooring.line_bvp.mesh.start_nodes`).
 
@@ -323,21 +324,25 @@ def lifted_start(problem):
 
 def _line(problem, friction=None):
     """The `Line` of the problem's segments, point loads and friction (``friction`` instead,
-    if given), or None where it has none."""
+    if given), or None where it has none. A point load inside a segment splits it there: the
+    load hangs at the joint of its two pieces."""
     if problem.seabed is not None and problem.seabed.flat is None:
         return None
     if any(callable(seg.w) or not seg.w > 0 for seg in problem.segments):
         return None
-    joints = problem.joints
     stiff = 1e9 * abs(problem.weight)
-    segments = [
-        Segment(seg.length, seg.w, stiff if seg.law is None else seg.law.EA) for seg in problem.segments
-    ]
+    joints, tol = problem.joints, 1e-9 * problem.L
+    loads = [(float(s), float(P)) for s, P in problem.point_loads if P != 0]
+    inner = [s for s, _ in loads if not np.any(np.abs(joints - s) <= tol)]
+    cuts = np.unique(np.concatenate([joints, inner]))  # the joints of the split line
+    segments = []
+    for seg, start, end in zip(problem.segments, joints[:-1], joints[1:], strict=True):
+        EA = stiff if seg.law is None else seg.law.EA
+        inside = cuts[(cuts >= start - tol) & (cuts <= end + tol)]
+        segments += [Segment(float(b - a), seg.w, EA) for a, b in zip(inside[:-1], inside[1:], strict=True)]
     attachments = []
-    for s, P in problem.point_loads:
-        k = int(np.argmin(np.abs(joints - s)))
-        if abs(joints[k] - s) > 1e-9 * problem.L or P == 0:
-            return None
+    for s, P in loads:
+        k = int(np.argmin(np.abs(cuts - s)))
         attachments.append(ClumpWeight(k, P) if P > 0 else Buoy(k, -P))
     bed = None if problem.seabed is None else problem.seabed.flat
     friction = problem.friction if friction is None else friction
