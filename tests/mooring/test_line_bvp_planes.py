@@ -361,25 +361,34 @@ BUOY_BY_FAIRLEAD = (
         n_elements=64,
     ),
 )
+#: scene 2:99: a rope (23.8 N/m) 1870 m long over a straight slope of -0.053 from 34 m below the
+#: anchor, a 4.06 kN buoy 771 m along it, the fairlead 84 m below the anchor, 64 elements
+BUOY_OVER_A_SLOPE = (
+    1795.6878663874159,
+    -84.38883090602786,
+    [(1869.7369800538029, 23.819711896346156, 626495519.9262357)],
+    dict(
+        seabed=-34.07559471873762,
+        seabed_slope=-0.05315649526333741,
+        point_loads=[(771.2496266917531, -4062.0090742128345)],
+        friction=0.0,
+        n_elements=64,
+    ),
+)
 
 
-def test_the_plane_line_falls_back_on_the_line_in_spaces_strategy():
-    """Scene 2:35 (`BUOY_BY_FAIRLEAD`): the plane line's own strategy stagnates (one of the eight
-    scenes of the survey, seeds 1–3, that only the line in space solved). `solve_line_bvp` then
-    takes the line in space's strategy and solves the plane line on its mesh from it
-    (`skcable.mooring.line_bvp.fallback.space_for_plane`): the line passes the plane line's
-    checks (its equilibrium residual by scikit-fem's own assembly), balances the weight, the
-    buoy and the frictionless slope's reaction, normal to the slope, and its end forces are the
-    line in space's to round-off (one discrete line on one mesh; measured 1.1e-14)."""
-    span, dh, segments, options = BUOY_BY_FAIRLEAD
-    with pytest.raises(ConvergenceError):  # its own strategy, without the fallback
-        LineBVPSolver(scene(span, dh, segments, fit_touchdown=3, **options)).solve()
-    line = solve_line_bvp(span, dh, segments, **options)
+def balanced(line, segments, options):
+    """The plane line's end forces balance its weight, its point loads and the frictionless
+    slope's reaction, normal to the slope (to round-off of the weight)."""
     weight = sum(length * w for length, w, _ in segments) + sum(P for _, P in options["point_loads"])
     R = line.contact_force.sum(axis=0)  # the seabed's reaction on the line (N)
     assert line.V_A + line.V_B + R[1] == pytest.approx(weight, rel=1e-9)
     assert line.H_B - line.H_A + R[0] == pytest.approx(0.0, abs=1e-9 * weight)
-    assert R[0] == pytest.approx(-options["seabed_slope"] * R[1], rel=1e-9)  # normal to the slope
+    assert R[0] == pytest.approx(-options["seabed_slope"] * R[1], rel=1e-9, abs=1e-9 * weight)
+
+
+def in_space(span, dh, segments, options):
+    """The scene's line in space (`solve_line_bvp_3d`), its end forces as the plane line's."""
     space = solve_line_bvp_3d(
         (0.0, 0.0, 0.0),
         (span, 0.0, dh),
@@ -388,8 +397,42 @@ def test_the_plane_line_falls_back_on_the_line_in_spaces_strategy():
         point_loads=options["point_loads"],
         n_elements=options["n_elements"],
     )
-    want = space_forces(space)
+    return space_forces(space)
+
+
+def test_the_plane_line_falls_back_on_the_line_in_spaces_strategy():
+    """Scene 2:99 (`BUOY_OVER_A_SLOPE`): the plane line's own strategy finds no descent (one of
+    the eight scenes of the survey, seeds 1–3, that only the line in space solved). `solve_line_bvp`
+    then takes the line in space's strategy and solves the plane line on its mesh from it
+    (`skcable.mooring.line_bvp.fallback.space_for_plane`): the line passes the plane line's
+    checks (its equilibrium residual by scikit-fem's own assembly), balances the weight, the
+    buoy and the frictionless slope's reaction, and its end forces are the line in space's to
+    round-off (one discrete line on one mesh; measured 1.2e-14)."""
+    span, dh, segments, options = BUOY_OVER_A_SLOPE
+    with pytest.raises(ConvergenceError):  # its own strategy, without the fallback
+        LineBVPSolver(scene(span, dh, segments, fit_touchdown=3, **options)).solve()
+    line = solve_line_bvp(span, dh, segments, **options)
+    balanced(line, segments, options)
+    want = in_space(span, dh, segments, options)
     np.testing.assert_allclose(plane_forces(line), want, rtol=0, atol=1e-9 * np.abs(want).max())
+
+
+def test_a_buoy_is_grown_in_steps_where_every_start_fails():
+    """Scene 2:35 (`BUOY_BY_FAIRLEAD`): from every closed-form start the plane line's solves
+    stagnated (the survey's plane line failed it; the line in space solved it). The line without
+    its buoy solves, and the buoy grown on its mesh in steps (`LineBVPSolver.loads_by_steps`,
+    `skcable.mooring.line_bvp.solver.LineSolver.continued`) takes the plane line's own strategy
+    to it: it balances, and agrees with the line in space within 1e-6 of the largest end force
+    (measured 1.9e-8)."""
+    span, dh, segments, options = BUOY_BY_FAIRLEAD
+    checked = scene(span, dh, segments, fit_touchdown=3, **options)
+    line = LineBVPSolver(checked).solve()  # its own strategy, without the fallback
+    balanced(line, segments, options)
+    want = in_space(span, dh, segments, options)
+    np.testing.assert_allclose(plane_forces(line), want, rtol=0, atol=1e-6 * np.abs(want).max())
+    solver = LineBVPSolver(checked)
+    with pytest.raises(ConvergenceError):  # the starts alone: the failure before
+        solver.checked(solver.level(options["n_elements"], every_start=True))
 
 
 #: scene 1:50: chain, wire and rope (806, 18.6 and 71.3 N/m), no seabed, 172.5 m between ends

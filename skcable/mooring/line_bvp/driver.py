@@ -9,7 +9,10 @@ each solve (`skcable.mooring.line_bvp.iterate.solve_on`) starts from the last st
    moves by a few nodes per Newton iteration, so a fine mesh does not find its contact set from
    the coarse start; `skcable.mooring.line_bvp.mesh.solve_nested`, the line in space's too). A
    level that fails from the coarser solution is solved from scratch; a coarse level that fails
-   even so is skipped (the next level starts from scratch); the finest level's failure is final.
+   even so is skipped (the next level starts from scratch). Where the finest level fails, the
+   **point loads by steps** (`LineBVPSolver.loads_by_steps`): the line without them by this
+   strategy, then on its mesh with them grown in steps (`LineSolver.continued`, the line in
+   space's too), then stages 3–5 from there; its failure leaves the first one standing.
 2. **First solve** (`LineBVPSolver.first_attempts`): frictionless, on a mesh graded by the
    closed-form start's angle (`skcable.mooring.line_bvp.mesh.start_nodes`), from that start
    (`skcable.mooring.line_bvp.start.closed_form_start`, the uniform line), else from the
@@ -76,6 +79,8 @@ alternative's error when every one fails (a solve's own fallbacks from its start
 
 from __future__ import annotations
 
+import time
+from dataclasses import replace
 from functools import cache, partial
 
 import numpy as np
@@ -146,12 +151,14 @@ class LineBVPSolver(LineSolver):
         self.options = scene.options
 
     # --- the pieces: a problem, a solve, a solve on a new mesh --------------------------------
-    def problem(self, n, fitted=(), slack_end=0.0, mu=None, nodes_at=None) -> LineProblem:
-        """The discrete line on ``n`` elements (μ the scene's unless given)."""
+    def problem(self, n, fitted=(), slack_end=0.0, mu=None, nodes_at=None, load_factor=1.0) -> LineProblem:
+        """The discrete line on ``n`` elements (μ the scene's unless given), its point loads times
+        ``load_factor`` (`LineSolver.continued`)."""
         sc = self.scene
         mu = sc.friction if mu is None else mu
+        loads = sc.point_loads if load_factor == 1.0 else [(s, load_factor * P) for s, P in sc.point_loads]
         return LineProblem(
-            sc.span, sc.dh, sc.segments, sc.point_loads, sc.seabed, mu, n,
+            sc.span, sc.dh, sc.segments, loads, sc.seabed, mu, n,
             fitted=fitted, slack_end=slack_end, nodes_at=nodes_at, terms=sc.terms,
         )  # fmt: skip
 
@@ -253,15 +260,49 @@ class LineBVPSolver(LineSolver):
     def levels(self) -> LineBVPSolution:
         """One level, or nested levels (module docstring, 1), checked: nested first where the
         start touches the seabed, else where one level fails (the uniform start above a sloping
-        seabed while the line's clump weight rests on it), as the line in space does."""
+        seabed while the line's clump weight rests on it), as the line in space does; where all
+        fail, the point loads by steps (`loads_by_steps`)."""
         n, bed = self.scene.n_elements, self.scene.seabed
         every_start = partial(self.level, n, every_start=True)  # the last resort (`level`)
         if n > 2 * COARSE and bed is not None:
             probe = self.problem(n, mu=0.0)
             if self.touches(probe, closed_form_start(probe)):
-                return self.checked(first_converged([lambda: self.nested(n), every_start]))
-            return self.checked(first_converged([lambda: self.level(n), lambda: self.nested(n), every_start]))
-        return self.checked(every_start())
+                attempts = [lambda: self.nested(n), every_start]
+            else:
+                attempts = [lambda: self.level(n), lambda: self.nested(n), every_start]
+        else:
+            attempts = [every_start]
+        try:
+            return self.checked(first_converged(attempts))
+        except ConvergenceError as failed:  # the first failure stands where the loads' steps fail too
+            try:
+                return self.checked(self.loads_by_steps())
+            except ConvergenceError:
+                raise failed from None
+
+    def loads_by_steps(self) -> LineBVPSolution:
+        """The line without its point loads by this strategy (`levels`), then its loads grown on
+        that line's mesh in steps (`LineSolver.continued`), then graded, fitted and checked as a
+        level from it (stages 3–5; module docstring, 1): a buoy lifting an arch off a slope or a
+        clump pulling the line onto it moves the contact set far from every closed-form start's.
+        A `ConvergenceError` where the line has no point loads."""
+        sc = self.scene
+        if not any(P != 0.0 for _, P in sc.point_loads):
+            raise ConvergenceError(f"{self.name}: no point loads to grow", [])
+        unloaded = type(self)(replace(sc, point_loads=[(s, 0.0) for s, _ in sc.point_loads]))
+        # within what is left of the budget, its own record of solves (a failure keeps this line's)
+        unloaded.budget = Budget(time_limit=max(0.0, self.budget.deadline - time.monotonic()))
+        try:
+            base = unloaded.levels()
+        except Budget.Spent:
+            raise ConvergenceError(
+                f"{self.name}: no time left for the line without its point loads", []
+            ) from None
+        old, fitted = base.problem, self.edges_of(base)
+        nodes = np.sort(old.mesh.p[0])
+        start = self.problem(nodes.size - 1, fitted, nodes_at=nodes, load_factor=0.0)
+        solved = self.continued(nodes.size - 1, fitted, restart(old, base.dofs, start), nodes_at=nodes)
+        return self.level(sc.n_elements, solved)
 
     def nested(self, n) -> LineBVPSolution:
         """Nested levels up to ``n`` elements, each from the last (module docstring, 1)."""

@@ -4,7 +4,7 @@ The plane line (`skcable.mooring.line_bvp.driver.LineBVPSolver`) and the line in
 (`skcable.mooring.line_bvp.space.driver.LineBVP3DSolver`) discretise the same equations
 (`skcable.mooring.line_bvp.discrete.DiscreteLine`) on meshes graded alike, but reach them by
 different strategies (the plane line: nested levels, friction's slack stretch; the line in
-space: its starts, the current by steps, the uniform mesh where the graded ones fail). Where
+space: its starts, the current and point loads by steps, the uniform mesh where the graded ones fail). Where
 one fails on a line that hangs in the vertical plane of its ends, the other's strategy is run
 within what is left of the budget; its line, mapped onto the first solver's dofs on the same
 mesh, is a discrete solution of the first solver's problem up to round-off, so one Newton

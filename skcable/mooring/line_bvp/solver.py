@@ -28,7 +28,10 @@ from skcable.mooring.line_bvp.check import partial_friction, refuse_sliding, sla
 from skcable.mooring.line_bvp.iterate import solve_on
 from skcable.mooring.line_bvp.mesh import COARSE
 
-__all__ = ["LineSolver"]
+__all__ = ["SMALLEST_STEP", "LineSolver"]
+
+#: the smallest step of the loads' continuation (`LineSolver.continued`)
+SMALLEST_STEP = 1.0 / 64.0
 
 
 class LineSolver:
@@ -228,6 +231,28 @@ class LineSolver:
         except Budget.Spent:  # the other solver took what was left: this failure, not the budget's
             failed.args = (f"{failed}; no time was left to solve it in the vertical plane of its ends",)
         return None
+
+    def continued(self, n, fitted, z0, nodes_at=None):
+        """The loads the driver grows (`problem`'s ``load_factor``: the point loads, and in space
+        the current's drag) from zero to their full values in steps, each solve from the last, on
+        ``n`` elements with nodes at ``fitted`` (on the mesh ``nodes_at`` where given), from
+        ``z0`` without them: a quarter first, halved where a step fails, down to
+        `SMALLEST_STEP`. A buoy that lifts an arch off the seabed, or a clump that pulls the line
+        down onto it, moves the active set far from any closed form's; grown, it moves it a few
+        nodes a step."""
+        solved = self.run(self.problem(n, fitted, load_factor=0.0, nodes_at=nodes_at), z0)
+        factor, step = 0.0, 0.25
+        while factor < 1.0:
+            trial = min(1.0, factor + step)
+            try:
+                problem = self.problem(n, fitted, load_factor=trial, nodes_at=nodes_at)
+                solved = self.run(problem, solved.dofs)
+                factor = trial
+            except ConvergenceError:
+                step *= 0.5
+                if step < SMALLEST_STEP:
+                    raise
+        return solved
 
     def with_diagnosis(self, failed: ConvergenceError) -> ConvergenceError:
         """``failed``, saying where friction fully mobilised may take more than the line's pull

@@ -19,7 +19,8 @@ Coulomb friction along the line. One concern per module:
 - `start`: the closed form in the vertical plane of the ends;
 - `vertical_plane`: a line that hangs in the vertical plane of its ends as the plane line's
   scene, and the plane line's solution in space;
-- `driver`: the strategy `LineBVP3DSolver` — the starts, the current by steps, nested and graded
+- `driver`: the strategy `LineBVP3DSolver` — the starts, the current and point loads by steps,
+  nested and graded
   meshes, fitting, checks; each solve the plane line's (`skcable.mooring.line_bvp.iterate`);
 - `stiffness`: the 3 × 3 fairlead stiffness from the converged tangent, static or dynamic;
 - `solution`: `LineBVP3DSolution` (its fields the plane line's,

@@ -24,14 +24,15 @@ r"""The strategy that takes a line in space from its closed-form start to the co
    `skcable.mooring.line_bvp.space.start`): the start, the segment-wise closed form, on a seabed the
    start with the contact nodes switching by the tension, on a plane seabed through the anchor
    the flat grounded line lifted onto it too; where those fail,
-3. **the current by steps** (`LineBVP3DSolver.continued`): the line in still water, then the
-   drag grown to its full value in steps (a quarter first, halved where a step fails, down to
-   1/64), each from the last; where that fails too (or a fine mesh's start touches the seabed),
+3. **the current and the point loads by steps** (`LineSolver.continued`, the plane line's too):
+   the line in still water without its point loads, then the drag and the loads grown to their
+   full values in steps (a quarter first, halved where a step fails, down to 1/64), each from
+   the last; where that fails too (or a fine mesh's start touches the seabed),
 4. **nested meshes** (`LineBVP3DSolver.nested`, by the plane line's
    `skcable.mooring.line_bvp.mesh.solve_nested`): from `skcable.mooring.line_bvp.mesh.COARSE`
    elements up, each solution interpolated onto the doubled mesh (the active set moves by a
    few nodes per Newton iteration, so a fine mesh does not find its contact set from the start),
-   a level that fails so solved from scratch (its closed-form starts and the current by steps,
+   a level that fails so solved from scratch (its closed-form starts and the loads by steps,
    2–3, `LineBVP3DSolver.from_starts`), a coarse one that fails even so skipped; the meshes
    graded by the start (1) nest the same way (`LineBVP3DSolver.on_mesh`); on a
    seabed without the graded meshes of 1 (``mesh="uniform"`` or no ``fit_touchdown``), where
@@ -95,9 +96,6 @@ from skcable.mooring.line_bvp.start import restart
 
 __all__ = ["LineBVP3DSolver"]
 
-#: the smallest step of the current's continuation
-SMALLEST_STEP = 1.0 / 64.0
-
 
 @dataclass
 class Solved:
@@ -131,10 +129,10 @@ class LineBVP3DSolver(LineSolver):
         sc = self.scene
         return sc.seabed is not None and sc.fit_touchdown > 0 and sc.mesh == "graded"
 
-    def problem(self, n, fitted=(), drag_scale=1.0, nodes_at=None) -> LineProblem3D:
+    def problem(self, n, fitted=(), load_factor=1.0, nodes_at=None) -> LineProblem3D:
         """The discrete line on ``n`` elements (on the mesh ``nodes_at`` where given), nodes at
-        ``fitted``, the drag times ``drag_scale``."""
-        return LineProblem3D(self.scene, n, fitted=fitted, nodes_at=nodes_at, drag_scale=drag_scale)
+        ``fitted``, the drag and the point loads times ``load_factor``."""
+        return LineProblem3D(self.scene, n, fitted=fitted, nodes_at=nodes_at, load_factor=load_factor)
 
     #: what a solve gives (`LineSolver.run`)
     result = Solved
@@ -249,28 +247,12 @@ class LineBVP3DSolver(LineSolver):
 
     def from_starts(self, problem, size, fitted, z0) -> list:
         """The solves of ``problem`` (on ``size`` elements, nodes at ``fitted``) from its
-        closed-form starts (`starts`), then, where the line has terms, by steps of the current
-        (`continued`), in turn."""
+        closed-form starts (`starts`), then, where the line has terms or point loads, by steps of
+        the current and the point loads (`LineSolver.continued`), in turn."""
         attempts = self.starts(problem, z0)
-        if problem.terms:
+        if problem.terms or self.scene.point_loads:
             attempts.append(lambda: self.continued(size, fitted, z0, nodes_at=problem.nodes_at))
         return attempts
-
-    def continued(self, n, fitted, z0, nodes_at=None) -> Solved:
-        """The drag grown from zero to its full value in steps, each solve from the last (on the
-        mesh ``nodes_at`` where given)."""
-        solved = self.run(self.problem(n, fitted, drag_scale=0.0, nodes_at=nodes_at), z0)
-        scale, step = 0.0, 0.25
-        while scale < 1.0:
-            trial = min(1.0, scale + step)
-            try:
-                solved = self.run(self.problem(n, fitted, drag_scale=trial, nodes_at=nodes_at), solved.dofs)
-                scale = trial
-            except ConvergenceError:
-                step *= 0.5
-                if step < SMALLEST_STEP:
-                    raise
-        return solved
 
     def nested(self, n, fitted, mesh) -> Solved:
         """Nested meshes ``mesh(size)`` (nodes at ``fitted``) up to ``n`` elements (module

@@ -34,18 +34,19 @@ class LineProblem3D(DiscreteLine):
         Arc lengths (m) where a node is put (the touchdown).
     nodes_at : ndarray, optional
         The nodes of a given mesh.
-    drag_scale : float
-        Factor on the current's drag (the driver's continuation; 1: the scene's).
+    load_factor : float
+        Factor on the current's drag and the point loads (the continuation,
+        `skcable.mooring.line_bvp.solver.LineSolver.continued`; 1: the scene's).
     """
 
     dim = 3
 
-    def __init__(self, scene, n_elements, fitted=(), nodes_at=None, drag_scale=1.0):
-        self.scene, self.drag_scale = scene, float(drag_scale)
+    def __init__(self, scene, n_elements, fitted=(), nodes_at=None, load_factor=1.0):
+        self.scene, self.load_factor = scene, float(load_factor)
         self.anchor, self.fairlead = scene.anchor, scene.fairlead
         self.segments, self.seabed, self.friction = scene.segments, scene.seabed, scene.friction
         lengths = np.array([seg.length for seg in self.segments])
-        self.point_loads = scene.point_loads
+        self.point_loads = [(s, self.load_factor * P) for s, P in scene.point_loads]
         self.fitted = tuple(float(p) for p in fitted)
         #: the graded mesh's nodes (without the fitted ones), or None: uniform
         self.nodes_at = None if nodes_at is None else np.asarray(nodes_at, dtype=float)
@@ -70,7 +71,7 @@ class LineProblem3D(DiscreteLine):
             diameter = [seg.diameter or 0.0 for seg in segs]
             cn, ct = [seg.cd_normal for seg in segs], [seg.cd_tangential for seg in segs]
             drag = SegmentDrag(
-                sc.current, self.joints, diameter, cn, ct, rho=sc.rho_water, scale=self.drag_scale
+                sc.current, self.joints, diameter, cn, ct, rho=sc.rho_water, scale=self.load_factor
             )
             terms.append(drag)
         return [*terms, *(term.bind(self) for term in sc.terms)]
