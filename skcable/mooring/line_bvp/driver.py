@@ -80,6 +80,7 @@ alternative's error when every one fails (a solve's own fallbacks from its start
 from __future__ import annotations
 
 import time
+from collections.abc import Callable
 from dataclasses import replace
 from functools import cache, partial
 
@@ -264,6 +265,7 @@ class LineBVPSolver(LineSolver):
         fail, the point loads by steps (`loads_by_steps`)."""
         n, bed = self.scene.n_elements, self.scene.seabed
         every_start = partial(self.level, n, every_start=True)  # the last resort (`level`)
+        attempts: list[Callable[[], LineBVPSolution]]
         if n > 2 * COARSE and bed is not None:
             probe = self.problem(n, mu=0.0)
             if self.touches(probe, closed_form_start(probe)):
