@@ -229,7 +229,7 @@ class LineSolver:
         except ConvergenceError as other:
             failed.args = (f"{failed}; {other}",)
         except Budget.Spent:  # the other solver took what was left: this failure, not the budget's
-            failed.args = (f"{failed}; no time was left to solve it in the vertical plane of its ends",)
+            failed.args = (f"{failed}; no time was left for the other line BVP's strategy",)
         return None
 
     def continued(self, n, fitted, z0, nodes_at=None):
