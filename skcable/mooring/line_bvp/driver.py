@@ -198,9 +198,9 @@ class LineBVPSolver(LineSolver):
         except ConvergenceError as failed:
             clump = self.clump_at_slack_end()
             if clump is None:
-                solution = self.from_fallback(failed)
+                solution, note = self.from_fallback()
                 if solution is None:
-                    raise self.with_diagnosis(failed) from None
+                    raise self.failed_with(failed, note) from None
                 return solution
             raise InputError(
                 "point_loads",

@@ -218,19 +218,26 @@ class LineSolver:
             solved.history,
         )
 
-    def from_fallback(self, failed: ConvergenceError):
-        """The line by ``fallback`` where this solver's strategy ``failed``; None where there is
-        none or it does not take the scene, ``failed``'s message then saying why the fallback
-        failed, where it did."""
+    def from_fallback(self) -> tuple[Any, str]:
+        """``(solution, note)``: the line by ``fallback`` where this solver's strategy failed, or
+        None and a note saying why the fallback failed too ("" where there is none or it does not
+        take the scene), which the failure's message ends with (`failed_with`)."""
         if self.fallback is None:
-            return None
+            return None, ""
         try:
-            return self.fallback(self)
+            return self.fallback(self), ""
         except ConvergenceError as other:
-            failed.args = (f"{failed}; {other}",)
+            return None, str(other)
         except Budget.Spent:  # the other solver took what was left: this failure, not the budget's
-            failed.args = (f"{failed}; no time was left for the other line BVP's strategy",)
-        return None
+            return None, "no time was left for the other line BVP's strategy"
+
+    def failed_with(self, failed: ConvergenceError, note: str) -> ConvergenceError:
+        """``failed`` diagnosed (`with_diagnosis`: its diagnosis first, the most a user can act
+        on), its message ending with the fallback's ``note`` (`from_fallback`)."""
+        diagnosed = self.with_diagnosis(failed)
+        if note:
+            diagnosed.args = (f"{diagnosed}; {note}",)
+        return diagnosed
 
     def continued(self, n, fitted, z0, nodes_at=None):
         """The loads the driver grows (`problem`'s ``load_factor``: the point loads, and in space

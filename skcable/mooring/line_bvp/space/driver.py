@@ -155,9 +155,9 @@ class LineBVP3DSolver(LineSolver):
         try:
             return self.strategy(start)
         except ConvergenceError as failed:
-            solution = self.from_fallback(failed)
+            solution, note = self.from_fallback()
             if solution is None:
-                raise self.with_diagnosis(failed) from None
+                raise self.failed_with(failed, note) from None
             return solution
 
     def strategy(self, start: LineBVP3DSolution | None = None) -> LineBVP3DSolution:
