@@ -481,3 +481,19 @@ def test_a_buoy_inside_a_segment_starts_from_the_segments_closed_form():
     space = solve_line_bvp_3d((0.0, 0.0, 0.0), (span, 0.0, dh), segments, point_loads=loads, n_elements=256)
     for got in (plane_forces(plane), space_forces(space)):
         np.testing.assert_allclose(got, want, rtol=0, atol=1e-6 * np.abs(want).max())
+
+
+def test_a_buoy_that_holds_a_long_line_taut_is_not_refused_for_the_line_without_it():
+    """A chain 131 m long on a flat seabed, from an anchor on it to a fairlead 100 m away and 30 m
+    up, is longer than its L-shape (130 m): without its 20 kN buoy 40 m along it, it heaps. With
+    the buoy, whose arch takes up the slack, it has a taut equilibrium (the energy minimum of
+    ``benchmarks/line_energy_minimum.py``: H = 3356 N). Growing the buoy from the line without it
+    (`LineBVPSolver.loads_by_steps`) cannot start there; that line's heap is not this line's
+    verdict, so the solve fails as a `ConvergenceError` (both strategies fail it), not an
+    ``InputError("length")``. The same line 133 m long solves: H = 2722.44 N, as the energy minimum
+    gives (2722.437 N on 4000 nodes)."""
+    common = dict(seabed=0.0, point_loads=[(40.0, -20000.0)])
+    with pytest.raises(ConvergenceError):
+        solve_line_bvp(100.0, 30.0, [(131.0, 1000.0, 1e9)], **common)
+    taut = solve_line_bvp(100.0, 30.0, [(133.0, 1000.0, 1e9)], **common)
+    assert taut.H == pytest.approx(2722.437, rel=1e-5)

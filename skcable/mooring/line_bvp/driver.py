@@ -300,6 +300,8 @@ class LineBVPSolver(LineSolver):
             raise ConvergenceError(
                 f"{self.name}: no time left for the line without its point loads", []
             ) from None
+        except InputError as refused:  # a verdict on another line (its heap, say): not this one's
+            raise ConvergenceError(f"{self.name}: without its point loads, {refused}", []) from None
         old, fitted = base.problem, self.edges_of(base)
         nodes = np.sort(old.mesh.p[0])
         start = self.problem(nodes.size - 1, fitted, nodes_at=nodes, load_factor=0.0)
