@@ -199,3 +199,22 @@ def test_the_check_sees_a_field_off_its_end_forces():  # the assertion above can
     off.end_forces = off.end_forces * (1.0 + 10.0 * solved.model.field_error)
     with pytest.raises(AssertionError):
         _assert_consistent(off, solved.line.length)
+
+
+@pytest.mark.parametrize("fit_touchdown", [0, 3])
+def test_the_grounded_lengths_by_segment_sum_to_the_length_on_the_seabed(fit_touchdown):
+    """Both line BVPs' ``tensions()`` share `length_on_seabed` (from `s_landing` to `s_touchdown`,
+    where the balance of forces puts them) out among the segments. The line in space's table took
+    the span of its contact nodes instead: without fitting (the touchdown between nodes) its sum
+    was half an element off its own `length_on_seabed`."""
+    from skcable.mooring.line_bvp.space import solve_line_bvp_3d
+
+    segments = [(300.0, 1000.0, 5e8), (250.0, 400.0, 2e8), (300.0, 1000.0, 5e8)]
+    plane = mooring.solve_line_bvp(780.0, 160.0, segments, seabed=-20.0, fit_touchdown=fit_touchdown)
+    space = solve_line_bvp_3d(
+        (0.0, 0.0, 0.0), (780.0, 0.0, 160.0), segments, seabed=-20.0, fit_touchdown=fit_touchdown
+    )
+    for line in (plane, space):
+        assert line.length_on_seabed > 10.0  # lands and lies on it between its ends
+        grounded = line.tensions()["grounded_length"].to_numpy()
+        assert grounded.sum() == pytest.approx(line.length_on_seabed, rel=1e-12)

@@ -54,9 +54,23 @@ __all__ = [
 _NO_CURRENT_RHO = 1025.0
 
 
-def _left(solver) -> float:
-    """Seconds left of ``solver``'s budget."""
-    return solver.budget.deadline - time.monotonic()
+def _by_the_other(solver, scene_of, other, failing: str):
+    """The other strategy's solution (its solver ``other`` over ``scene_of(solver.scene,
+    seconds left)``, with no fallback of its own), or None where it does not take the scene or no
+    time is left; a `ConvergenceError` saying ``failing`` and why where it fails."""
+    left = solver.budget.deadline - time.monotonic()
+    scene = scene_of(solver.scene, left) if left > 0 else None
+    if scene is None:
+        return None
+    try:
+        return other(scene).solve()
+    except (ConvergenceError, InputError) as failed:
+        raise _other_failed(failed, failing) from None
+
+
+def _plane_scene_of(scene: Scene3D, time_limit: float) -> Scene | None:
+    """`plane_scene` where the plane line's meshes are the scene's (`plane_meshes`), else None."""
+    return plane_scene(scene, time_limit) if plane_meshes(scene) else None
 
 
 def _other_failed(failed: Exception, what: str) -> ConvergenceError:
@@ -71,14 +85,9 @@ def plane_for_space(solver: LineBVP3DSolver) -> LineBVP3DSolution | None:
     space on that mesh from it, fitted and checked; None where the line does not hang in that
     plane or asks for meshes the plane line does not make (`plane_meshes`), a `ConvergenceError`
     saying why where that fails (the plane line refusing or failing, a slack stretch)."""
-    left = _left(solver)
-    plane = plane_scene(solver.scene, left) if left > 0 and plane_meshes(solver.scene) else None
-    if plane is None:
+    solution = _by_the_other(solver, _plane_scene_of, LineBVPSolver, "the plane line's strategy failed too")
+    if solution is None:
         return None
-    try:
-        solution = LineBVPSolver(plane).solve()
-    except (ConvergenceError, InputError) as failed:
-        raise _other_failed(failed, "the plane line's strategy failed too") from None
     old = solution.problem
     if old.slack_end > 0:
         raise ConvergenceError(
@@ -110,14 +119,9 @@ def space_for_plane(solver: LineBVPSolver):
     balance) and checked, else graded, fitted and checked as a level of the plane line from it
     (`LineBVPSolver.level`); None where the line in space does not take the scene, a
     `ConvergenceError` saying why where that fails."""
-    left = _left(solver)
-    space = space_scene(solver.scene, left) if left > 0 else None
-    if space is None:
+    solution = _by_the_other(solver, space_scene, LineBVP3DSolver, "the line in space's strategy failed too")
+    if solution is None:
         return None
-    try:
-        solution = LineBVP3DSolver(space).solve()
-    except (ConvergenceError, InputError) as failed:
-        raise _other_failed(failed, "the line in space's strategy failed too") from None
     old = solution.problem
     nodes = np.sort(old.mesh.p[0])
     problem = solver.problem(nodes.size - 1, list(old.fitted), nodes_at=nodes)

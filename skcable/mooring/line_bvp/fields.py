@@ -162,6 +162,15 @@ class LineFields:
         T_lower[0], T_upper[-1] = T_A, T_B
         return T_lower, T_upper
 
+    def grounded_lengths(self) -> np.ndarray:
+        """Each segment's length between `s_landing` and `s_touchdown` (m): its share of
+        `length_on_seabed`, which they sum to; zeros without contact."""
+        joints = self.problem.joints
+        if not self.in_contact.any():
+            return np.zeros(joints.size - 1)
+        low, high = self.s_landing, self.s_touchdown
+        return np.clip(np.minimum(joints[1:], high) - np.maximum(joints[:-1], low), 0.0, None)
+
     def sampled(self, n: int) -> tuple[np.ndarray, CableState, np.ndarray, dict]:
         """``(s, state, load, outputs)`` at ``n`` points evenly spaced in unstretched arc length:
         the state there, the distributed load (n, dim) (N/m: the weight and the cable terms'

@@ -224,8 +224,7 @@ class LineBVPSolution(LineFields, ProfileMixin):
         """One row per segment (pandas DataFrame): ``segment, length, T_lower, T_upper, H_lower,
         H_upper`` (SI), the tension and horizontal tension at its ends towards A and B (the
         support reactions at A and B, the tension field inside the segment at the joints), and
-        ``grounded_length``, its length on the seabed (m, between `s_landing` and
-        `s_touchdown`)."""
+        ``grounded_length``, its length on the seabed (m, `LineFields.grounded_lengths`)."""
         import pandas as pd
 
         joints = self.problem.joints
@@ -234,9 +233,6 @@ class LineBVPSolution(LineFields, ProfileMixin):
         H_l = T_l * np.cos(self.angle(joints[:-1] + inside))
         H_u = T_u * np.cos(self.angle(joints[1:] - inside))
         H_l[0], H_u[-1] = self.H_A, self.H_B
-        grounded = np.clip(
-            np.minimum(joints[1:], self.s_touchdown) - np.maximum(joints[:-1], self.s_landing), 0, None
-        )
         return pd.DataFrame(
             {
                 "segment": np.arange(joints.size - 1),
@@ -245,7 +241,7 @@ class LineBVPSolution(LineFields, ProfileMixin):
                 "T_upper": T_u,
                 "H_lower": H_l,
                 "H_upper": H_u,
-                "grounded_length": grounded if self.in_contact.any() else np.zeros(joints.size - 1),
+                "grounded_length": self.grounded_lengths(),
             }
         )
 

@@ -114,24 +114,20 @@ class LineBVP3DSolution(LineFields, Shown):
 
     def tensions(self):
         """One row per segment (pandas DataFrame): ``segment, length, T_lower, T_upper``
-        (N; `LineFields.end_tensions`) and ``grounded_length`` (m, of its contact nodes' span on
-        the seabed)."""
+        (N; `LineFields.end_tensions`) and ``grounded_length`` (m, its share of
+        `length_on_seabed`, between `s_landing` and `s_touchdown`: `LineFields.grounded_lengths`,
+        the plane line's)."""
         import pandas as pd
 
         joints = self.problem.joints
         T_l, T_u = self.end_tensions(self.T_A, self.T_B)
-        grounded = np.zeros(joints.size - 1)
-        if self.in_contact.any():
-            on = self.contact_s[self.in_contact]
-            low, high = on.min(), on.max()
-            grounded = np.clip(np.minimum(joints[1:], high) - np.maximum(joints[:-1], low), 0.0, None)
         return pd.DataFrame(
             {
                 "segment": np.arange(joints.size - 1),
                 "length": np.diff(joints),
                 "T_lower": T_l,
                 "T_upper": T_u,
-                "grounded_length": grounded,
+                "grounded_length": self.grounded_lengths(),
             }
         )
 
