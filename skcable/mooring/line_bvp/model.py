@@ -138,8 +138,11 @@ def solve_line_bvp(
 
     Notes
     -----
-    The continuation (levels, gradings, friction, touchdown fitting, the slack stretch and the
-    retries) is `skcable.mooring.line_bvp.driver.LineBVPSolver`'s.
+    The continuation (levels, gradings, friction, touchdown fitting, the slack stretch, the point
+    loads by steps and the retries) is `skcable.mooring.line_bvp.driver.LineBVPSolver`'s. Where it
+    fails, a line without cable terms is solved by the line in space's strategy within what is
+    left of ``time_limit``, then in the plane from it on its mesh
+    (`skcable.mooring.line_bvp.fallback.space_for_plane`); a failure of both says so.
     """
     model = LineBVP(
         segments, seabed=seabed, seabed_slope=seabed_slope, friction=friction, point_loads=point_loads,

@@ -130,7 +130,9 @@ def solve_line_bvp_3d(
         No solve converged (``history`` holds the merit per iteration); the line in compression;
         its equilibrium residual above its bound. Its ``last`` keeps what converged: the
         `LineBVP3DSolution` on the finest mesh reached (not checked), None where no solve
-        converged.
+        converged. Before it, a line that hangs in the vertical plane of its ends is solved by
+        the plane line's strategy within what is left of ``time_limit``, then in space from it
+        (`skcable.mooring.line_bvp.fallback.plane_for_space`); a failure of both says so.
 
     Examples
     --------
