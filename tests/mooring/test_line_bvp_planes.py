@@ -497,3 +497,22 @@ def test_a_buoy_that_holds_a_long_line_taut_is_not_refused_for_the_line_without_
         solve_line_bvp(100.0, 30.0, [(131.0, 1000.0, 1e9)], **common)
     taut = solve_line_bvp(100.0, 30.0, [(133.0, 1000.0, 1e9)], **common)
     assert taut.H == pytest.approx(2722.437, rel=1e-5)
+
+
+def test_the_slope_diagnosis_allows_for_the_buoys_arches():
+    """Scene 3:100: a rope, a wire and a chain (91 ± 30, 86 and 960 N/m) over a slope of -0.089
+    from 73 m below the anchor, a 10.8 kN buoy 791 m along the line. Both solvers fail it, and
+    its uniform line of the mean weight is longer than the slope holds taut; but the line's
+    energy minimum (``benchmarks/line_energy_minimum.py``) is taut, its least tension 67 N: the
+    buoy's arch takes up the slack. The diagnosis says that a buoy may hold the line taut."""
+    rope = varying(90.8556990300907, 0.3251537529423415, 881.3934582266562, 1.9909702715555997)
+    segments = [
+        (508.0263457925181, rope, 20954283.306145195),
+        (251.8277347814075, 85.52611364241302, 61128943.9851113),
+        (105.5344715703199, 959.5541437088216, 25528476.20420965),
+    ]  # fmt: skip
+    with pytest.raises(ConvergenceError, match="longer than the .* unless its buoys hold it taut"):
+        solve_line_bvp(
+            695.9627093144995, -7.055411220817746, segments, seabed=-73.3236024885062,
+            seabed_slope=-0.08878620640747992, point_loads=[(790.6131570248047, -10829.226522068919)],
+        )  # fmt: skip
