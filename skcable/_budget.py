@@ -49,6 +49,10 @@ class Budget:
         self.best: tuple[float, object] = (math.inf, None)
         self.best_rank: object = None
 
+    def left(self) -> float:
+        """Seconds left before the deadline (s), at least 0."""
+        return max(0.0, self.deadline - time.monotonic())
+
     def spend(self) -> None:
         """Count one evaluation; `Spent` past the count or the deadline."""
         if self.calls >= self.max_calls or time.monotonic() > self.deadline:

@@ -79,9 +79,7 @@ alternative's error when every one fails (a solve's own fallbacks from its start
 
 from __future__ import annotations
 
-import time
 from collections.abc import Callable
-from dataclasses import replace
 from functools import cache, partial
 
 import numpy as np
@@ -291,9 +289,7 @@ class LineBVPSolver(LineSolver):
         sc = self.scene
         if not any(P != 0.0 for _, P in sc.point_loads):
             raise ConvergenceError(f"{self.name}: no point loads to grow", [])
-        unloaded = type(self)(replace(sc, point_loads=[(s, 0.0) for s, _ in sc.point_loads]))
-        # within what is left of the budget, its own record of solves (a failure keeps this line's)
-        unloaded.budget = Budget(time_limit=max(0.0, self.budget.deadline - time.monotonic()))
+        unloaded = self.within_budget(point_loads=[(s, 0.0) for s, _ in sc.point_loads])
         try:
             base = unloaded.levels()
         except Budget.Spent:

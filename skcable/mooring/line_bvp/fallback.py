@@ -25,7 +25,6 @@ the plane line the scenes only the line in space solved before (its table says w
 
 from __future__ import annotations
 
-import time
 from functools import partial
 
 import numpy as np
@@ -58,7 +57,7 @@ def _by_the_other(solver, scene_of, other, failing: str):
     """The other strategy's solution (its solver ``other`` over ``scene_of(solver.scene,
     seconds left)``, with no fallback of its own), or None where it does not take the scene or no
     time is left; a `ConvergenceError` saying ``failing`` and why where it fails."""
-    left = solver.budget.deadline - time.monotonic()
+    left = solver.budget.left()
     scene = scene_of(solver.scene, left) if left > 0 else None
     if scene is None:
         return None

@@ -12,7 +12,6 @@ closed-form starts, ``starts(problem)``, among them.
 
 from __future__ import annotations
 
-import time
 from collections.abc import Callable
 from dataclasses import replace
 from functools import cache, partial
@@ -261,6 +260,15 @@ class LineSolver:
                     raise
         return solved
 
+    def within_budget(self, **changes):
+        """A solver of this line with ``changes`` to its scene (`dataclasses.replace`), without a
+        fallback, within what is left of this solver's budget, with its own record of solves (a
+        failure keeps this line's): the line without friction (`with_diagnosis`), without its point
+        loads (`skcable.mooring.line_bvp.driver.LineBVPSolver.loads_by_steps`)."""
+        other = type(self)(replace(self.scene, **changes))
+        other.budget = Budget(time_limit=self.budget.left())
+        return other
+
     def with_diagnosis(self, failed: ConvergenceError) -> ConvergenceError:
         """``failed``, saying where friction fully mobilised may take more than the line's pull
         with its anchor above the seabed (`skcable.mooring.line_bvp.check.partial_friction`),
@@ -272,8 +280,7 @@ class LineSolver:
             return slack_on_slope(failed, self.problem(COARSE))
         if not self.anchor_above_seabed():
             return failed
-        other = type(self)(replace(self.scene, friction=0.0))
-        other.budget = Budget(time_limit=max(0.0, self.budget.deadline - time.monotonic()))
+        other = self.within_budget(friction=0.0)
 
         def frictionless():
             try:
