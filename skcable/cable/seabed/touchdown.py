@@ -104,9 +104,7 @@ def _unknowns(touchdown: SlopeTouchdown, w, m) -> np.ndarray:
     return np.array([H2, touchdown.lying, touchdown.s_low])
 
 
-def slope_touchdown(
-    span, dh, w, EA, length, *, seabed, seabed_slope, taut_length=None
-) -> SlopeTouchdown | None:
+def slope_touchdown(span, dh, w, EA, length, *, seabed, seabed_slope) -> SlopeTouchdown | None:
     """The three-part line (module docstring) from A = (0, 0) to B = (span, dh) over the
     frictionless slope ``y = seabed + x tan α`` below both, or None where it has no such state (it
     clears the slope, or it is at least `skcable.cable.seabed.taut_length_on_slope` long) or where
@@ -122,16 +120,14 @@ def slope_touchdown(
         Unstretched length (m).
     seabed, seabed_slope : float
         The seabed under A relative to A (m, < 0) and ``tan α`` (nonzero), B above it.
-    taut_length : float, optional
-        `skcable.cable.seabed.taut_length_on_slope` of this scene (m), where the caller has it (it
-        checked the scene then); computed (and the scene checked) otherwise.
     """
-    longest = (
-        taut_length_on_slope(span, dh, w, EA, seabed=seabed, seabed_slope=seabed_slope)  # checks
-        if taut_length is None
-        else float(taut_length)
-    )
+    longest = taut_length_on_slope(span, dh, w, EA, seabed=seabed, seabed_slope=seabed_slope)  # checks
     length = scalar("length", positive("length", length))
+    return _below(span, dh, w, EA, length, seabed, seabed_slope, longest)
+
+
+def _below(span, dh, w, EA, length, seabed, seabed_slope, longest) -> SlopeTouchdown | None:
+    """`slope_touchdown` of a checked scene whose `taut_length_on_slope` is ``longest`` (m)."""
     if length >= longest:
         return None
     span, dh, b, m, from_b = _from_low_end(float(span), float(dh), float(seabed), float(seabed_slope))
@@ -234,9 +230,7 @@ def touchdown_on_slope(span, dh, w, EA, *, length, seabed, seabed_slope) -> Slop
     length = scalar("length", positive("length", length))
     EA = scalar("EA", positive("EA", EA))  # finite: the flat seabed's closed form it continues from
     longest = refuse_slack_on_slope(span, dh, w, EA, length, seabed=seabed, seabed_slope=seabed_slope)
-    touchdown = slope_touchdown(
-        span, dh, w, EA, length, seabed=seabed, seabed_slope=seabed_slope, taut_length=longest
-    )
+    touchdown = _below(span, dh, w, EA, length, seabed, seabed_slope, longest)  # the scene checked
     if touchdown is None:
         span_l, dh_l, b_l, m_l, _ = _from_low_end(float(span), float(dh), float(seabed), float(seabed_slope))
         if _pivot(span_l, dh_l, w, EA, length, b_l, m_l) is None:
