@@ -23,7 +23,6 @@ import os
 import platform
 import statistics
 import sys
-import tempfile
 import time
 from pathlib import Path
 
@@ -34,7 +33,7 @@ from skcable import cable
 
 sys.path.insert(0, str(Path(__file__).parent))
 from _peers import available, moorpy_H, opensees_catenary_cable_H, pycatenary_H  # noqa: E402
-from _tables import markdown_table  # noqa: E402
+from _tables import markdown_table, write_section  # noqa: E402
 
 SPAN, DH, W, EA, L0 = 800.0, -20.0, 20.0, 1e12, 801.409
 
@@ -232,16 +231,9 @@ PAGE = Path(__file__).resolve().parents[1] / "docs" / "benchmarks.md"
 
 
 def write_table(lines, page=PAGE):
-    """Replace the table between the closed-forms-peers markers of ``page`` (atomic)."""
-    begin, end = "<!-- closed-forms-peers:begin -->", "<!-- closed-forms-peers:end -->"
-    text = page.read_text()
-    head, rest = text.split(begin, 1)
-    text = head + "\n".join([begin, *lines, end]) + rest.split(end, 1)[1]
-    fd, tmp = tempfile.mkstemp(dir=page.parent, prefix=".benchmarks.", suffix=".md")
-    with os.fdopen(fd, "w") as fh:
-        fh.write(text)
-    os.replace(tmp, page)
-    return page
+    """Replace the table between the closed-forms-peers markers of ``page`` (atomic:
+    `_tables.write_section`)."""
+    return write_section(page, "closed-forms-peers", lines)
 
 
 if __name__ == "__main__":

@@ -30,6 +30,7 @@ import functools
 import os
 import platform
 import statistics
+import sys
 import time
 from pathlib import Path
 
@@ -46,7 +47,10 @@ from skcable import conductors, strand
 
 ROOT = Path(__file__).resolve().parents[1]
 DOCS = ROOT / "docs" / "speed_targets.md"
-BEGIN, END = "<!-- eigen:begin -->", "<!-- eigen:end -->"
+sys.path.insert(0, str(ROOT / "benchmarks"))
+
+from _tables import write_section  # noqa: E402
+
 STRAND_SCENE = dict(N=1e3, length=1.0, mass_per_length=0.45)
 
 
@@ -235,17 +239,10 @@ def render(rows, accurate, repeats):
 
 
 def write_docs(text):
-    """The section between the markers replaced (appended with them where absent), atomically."""
-    page = DOCS.read_text(encoding="utf-8")
-    block = f"{BEGIN}\n<!-- written by benchmarks/bench_eigen.py: do not edit by hand -->\n\n{text}{END}"
-    if BEGIN in page and END in page:
-        head, rest = page.split(BEGIN, 1)
-        page = head + block + rest.split(END, 1)[1]
-    else:
-        page = page.rstrip("\n") + "\n\n" + block + "\n"
-    temp = DOCS.with_name(f".{DOCS.name}.tmp")
-    temp.write_text(page, encoding="utf-8")
-    os.replace(temp, DOCS)
+    """The section between the markers replaced (appended with them where absent), atomically
+    (`_tables.write_section`)."""
+    notice = "<!-- written by benchmarks/bench_eigen.py: do not edit by hand -->"
+    write_section(DOCS, "eigen", [notice, "", *text.rstrip("\n").split("\n")])
 
 
 def main(argv=None):

@@ -29,7 +29,6 @@ import os
 import platform
 import statistics
 import sys
-import tempfile
 import time
 import tracemalloc
 from pathlib import Path
@@ -40,6 +39,7 @@ ROOT = Path(__file__).resolve().parents[1]
 PAGE = ROOT / "docs" / "speed_targets.md"
 sys.path.insert(0, str(ROOT / "benchmarks"))
 
+from _tables import write_section as write_markers  # noqa: E402
 from bench_closed_forms import timed as per_call  # noqa: E402  (median of 5 batches)
 
 from skcable import bvp, cable  # noqa: E402
@@ -336,19 +336,9 @@ def linear_solve_times(ref, r):
 
 
 def write_section(name, lines, page=PAGE):
-    """Replace the section ``name`` of ``page`` (between its markers), or append it; atomic."""
-    begin, end = f"<!-- {name}:begin -->", f"<!-- {name}:end -->"
-    text = page.read_text() if page.exists() else "# Speed targets\n"
-    block = "\n".join([begin, *lines, end])
-    if begin in text and end in text:
-        head, rest = text.split(begin, 1)
-        text = head + block + rest.split(end, 1)[1]
-    else:
-        text = text.rstrip("\n") + "\n\n" + block + "\n"
-    fd, tmp = tempfile.mkstemp(dir=page.parent, prefix=".speed_targets.", suffix=".md")
-    with os.fdopen(fd, "w") as fh:
-        fh.write(text)
-    os.replace(tmp, page)
+    """Replace the section ``name`` of ``page`` (between its markers), or append it; atomic
+    (`_tables.write_section`)."""
+    return write_markers(page, name, lines, new_page="# Speed targets\n")
 
 
 def main(argv=None):

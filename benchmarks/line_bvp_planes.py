@@ -374,7 +374,8 @@ def converged(sc, plane):
 
 def classify(sc):
     """(outcome, difference, plane seconds, space seconds, plane message, space message, and
-    where they disagree `refined`'s verdict, the refined difference and the two changes)."""
+    where they disagree `refined`'s verdict, the refined difference and the two changes, and
+    whether the plane line's resolution check flags it, `LineBVPSolution.unresolved`)."""
     plane, t_plane, m_plane = _timed(sc.solve_plane)
     space, t_space, m_space = _timed(sc.solve_space)
     difference: float | str = ""
@@ -394,13 +395,14 @@ def classify(sc):
         difference = float(np.abs(got - want).max() / np.abs(want).max())
         outcome = "agree" if difference <= TOLERANCE else "disagree"
         verdict = refined(sc, plane, space, difference) if outcome == "disagree" else converged(sc, plane)
-    return outcome, difference, t_plane, t_space, m_plane, m_space, *verdict
+    flagged = bool(plane.unresolved()) if plane is not None else ""
+    return outcome, difference, t_plane, t_space, m_plane, m_space, *verdict, flagged
 
 
 HEADER = (
     "seed", "scene", "kind", "regime", "ratio", "segments", "loads", "varying", "friction", "n_elements",
     "outcome", "difference", "plane_seconds", "space_seconds", "plane_message", "space_message",
-    "refined", "refined_factor", "refined_difference", "plane_change", "space_change",
+    "refined", "refined_factor", "refined_difference", "plane_change", "space_change", "unresolved",
 )  # fmt: skip
 
 
@@ -505,6 +507,15 @@ def report(rows, seeds, count):
                 if worst
                 else ""
             )
+        )
+    checked = {
+        verdict: [r["unresolved"] for r in agreeing if r["refined"] == verdict]
+        for verdict in ("both coarse", "converged")
+    }
+    if any(checked.values()):
+        lines.append(
+            "the plane line's resolution check (`ResolutionWarning`) flagged "
+            + ", ".join(f"{sum(v)} of the {len(v)} {verdict}" for verdict, v in checked.items())
         )
     lines += [
         "",

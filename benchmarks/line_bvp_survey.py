@@ -40,13 +40,12 @@ import numpy as np
 ROOT = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT))
 sys.path.insert(0, str(Path(__file__).parent))
-from _tables import counts_table, markdown_table  # noqa: E402
+from _tables import counts_table, markdown_table, write_section  # noqa: E402
 
 from skcable.errors import InputError  # noqa: E402
 from tests.mooring.line_scenes import exact_one_segment, scenes, tolerance  # noqa: E402
 
 OUTCOMES = ("right", "right at 256", "heap refused", "clump refused", "wrong", "failed")
-START, END = "<!-- line-bvp-survey:start -->", "<!-- line-bvp-survey:end -->"
 
 
 def _error(b, H, V_B, scale):
@@ -136,13 +135,7 @@ def main(argv=None):
     tmp.replace(path)
     body = report(rows, args.seeds, args.count)
     print(body)
-    doc = ROOT / "docs" / "bvp.md"
-    text = doc.read_text()
-    if START in text and END in text:
-        head, rest = text.split(START, 1)
-        tmp = doc.with_suffix(".md.tmp")
-        tmp.write_text(f"{head}{START}\n{body}\n{END}{rest.split(END, 1)[1]}")
-        tmp.replace(doc)
+    write_section(ROOT / "docs" / "bvp.md", "line-bvp-survey", body.split("\n"))
 
 
 if __name__ == "__main__":

@@ -10,8 +10,9 @@ that a unit slip would explain (an EA in MN, a strain beyond any wire's),
 `SlowConvergenceWarning` for a Newton that converges at a linear rate where its
 tangent promises a quadratic one (a term's tangent is likely wrong), its subclass
 `TangentWarning` for a term whose tangent disagrees with a directional difference of its own
-residual (checked on a model's first solve), and `CacheWarning` for a cached study result
-computed by other code.
+residual (checked on a model's first solve), `ResolutionWarning` for an answer whose mesh does not
+resolve it (a line BVP's element that turns through a bend within itself), and `CacheWarning`
+for a cached study result computed by other code.
 """
 
 from __future__ import annotations
@@ -25,6 +26,7 @@ __all__ = [
     "SlowConvergenceWarning",
     "TangentWarning",
     "NonFiniteError",
+    "ResolutionWarning",
     "CacheWarning",
 ]
 
@@ -95,6 +97,16 @@ class TangentWarning(SlowConvergenceWarning):
     converge slowly or not at all. The message names the term and the ratio of its tangent to the
     difference along the direction checked (1 when right; ⅓, −1 or 0 for a tangent a third of the
     true one, of the wrong sign, or missing)."""
+
+
+class ResolutionWarning(UserWarning):
+    """An answer that converged and passed its checks on a mesh too coarse for it: its numbers
+    carry a discretisation error beyond what its checks see (a line BVP whose element turns
+    through a bend within itself). ``argument`` names what resolves it (``n_elements``)."""
+
+    def __init__(self, argument: str, reason: str):
+        self.argument = argument
+        super().__init__(f"{argument}: {reason}")
 
 
 class CacheWarning(UserWarning):

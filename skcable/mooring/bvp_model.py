@@ -25,6 +25,7 @@ from functools import partial
 
 import numpy as np
 
+from skcable import _plausible
 from skcable.errors import InputError
 from skcable.mooring.jacobians import of_own
 from skcable.mooring.plane_line import PlaneLine, on_seabed_tolerance
@@ -150,7 +151,8 @@ class Resolver:
         bed, bed_slope = _plane_seabed(self.low, self.slope, d_low)
         end = self.height + d_high - d_low  # an end on the seabed moves with it (the seabed stays at 0)
         options = _options(bed, bed_slope, self.friction, self.loads)
-        return solve_line_bvp(self.span + d_span, end, self.segments, **options)
+        with _plausible.quiet():  # its mesh is the library's, not the caller's: no ResolutionWarning
+            return solve_line_bvp(self.span + d_span, end, self.segments, **options)
 
     def __call__(self, d_span, d_low, d_high):
         r = self.solve(d_span, d_low, d_high)

@@ -65,6 +65,7 @@ from functools import partial
 
 import numpy as np
 
+from skcable import _plausible
 from skcable._checks import point, positive, real, scalar
 from skcable.cable.seabed import elastic_catenary, sloped_seabed_catenary, touchdown_on_slope
 from skcable.errors import ConvergenceError, InputError
@@ -523,7 +524,8 @@ def _by_bvp(line, anchor, fairlead, reason, start=None) -> LineInSea:
     previous = start.result if isinstance(start, LineInSea) and start.bvp else None
     if previous is not None and previous.model is not model:
         previous = None
-    fine = model.solve(anchor, fairlead, start=previous)
+    with _plausible.quiet():  # its mesh is the library's, its error the half mesh's (`LineInSea.error`)
+        fine = model.solve(anchor, fairlead, start=previous)
     return LineInSea(line, anchor, fairlead, fine, "3-D line BVP", reason, None, ends)
 
 

@@ -39,17 +39,25 @@ Agreement is not correctness: on a coarse mesh both lines held one such buoy dow
 
 from __future__ import annotations
 
+import sys
+import warnings
+from pathlib import Path
 from typing import NamedTuple
 
 import numpy as np
 import pytest
 
-from skcable.errors import ConvergenceError
+from skcable import _plausible
+from skcable.errors import ConvergenceError, ResolutionWarning
 from skcable.mooring import LineBVPSolution, solve_line_bvp
 from skcable.mooring.bathymetry import Plane
 from skcable.mooring.line_bvp.driver import LineBVPSolver
 from skcable.mooring.line_bvp.inputs import scene
 from skcable.mooring.line_bvp.space import LineBVP3DSolution, solve_line_bvp_3d
+
+sys.path.insert(0, str(Path(__file__).resolve().parents[2] / "benchmarks"))
+import line_bvp_planes as oracle_planes  # noqa: E402  (the survey's scenes, the oracle's input)
+import line_energy_minimum as oracle  # noqa: E402
 
 #: the survey's threshold of agreement, of the largest end force
 TOLERANCE = 1e-6
@@ -205,6 +213,12 @@ AGREE = {
 #: scene 2:117: a heavy chain on a flat seabed, a clump and a 12.2 kN buoy resting on it, 64 elements
 BUOY_ON_CHAIN = Scene(1422.863283919122, 35.392739838920384, [(935.5786615511254, 1175.149026436685, 170801084.4541431), (249.9588273225088, 17.074050209984847, 25027619.70865195), (339.37121662522213, 23.528349807072747, 15124508.934572434)], [(556.3000780546796, 23934.921645606984), (744.1155880173021, -12175.358440688813)], (-51.6886584842559, 0.0), 0.0, 64)  # noqa: E501
 
+#: scene 3:19: a chain of weight varying ±35 % with a 439 N buoy resting on a nearly flat seabed, a
+#: wire and a rope with a 4.3 kN clump at the fairlead, 64 elements
+VARYING_BUOY = Scene(547.0656209506323, 40.79135265141903, [(119.09616191337666, (88.37852822079617, 0.3510624456859901, 558.7229516293593, 5.911863886973994), 128329797.95727485), (391.7939124775052, 19.004500942507942, 376344105.7181316), (73.80532552729484, 23.838925265329472, 30712212.744109597)], [(11.875576314419769, -438.653434422412), (561.4635931335204, 4299.899853231353)], (0.0, -0.00022106444514528867), 0.0, 64)  # noqa: E501
+#: scene 3:160: a chain hanging almost vertically from a 10.3 kN clump, then a light rope, over a flat
+#: seabed 7.1 m below the anchor, 64 elements
+HANGING_TO_CLUMP = Scene(399.88638259698047, 2.3202982852674046, [(73.23715508631014, 1151.2050522936047, 342377713.3053049), (341.53988038717597, 19.835188621190447, 10534704.169814138)], [(24.145342086592702, 10272.346177262758)], (-7.0821617336914935, 0.0), 0.0, 64)  # noqa: E501
 #: scene 2:136: chain, wire and rope on a flat seabed, a 549 N buoy and a 688 N clump 0.55 m apart on
 #: the chain, 64 elements
 CLUMP_PAST_ARCH = Scene(125.81753795867601, 2.8498245385887344, [(19.448596158559198, 1055.4548292387067, 231228562.49157917), (44.252384437742585, 16.948186939103618, 19227949.56835867), (65.38018979633495, 89.2398842920646, 10183143.715478364)], [(4.217218385186116, -549.0474605264737), (4.765073772586564, 687.8583198756432)], (-0.42775369174513617, 0.0), 0.0, 64)  # noqa: E501
@@ -230,25 +244,32 @@ def test_the_uniform_mesh_converges_to_the_graded_meshes_answer():
     flat seabed 27 m below its anchor): off the plane line's answer on its graded mesh by 1.4e-2
     of the largest end force at 64 elements, 6.0e-5 at 256 and 9.8e-7 at 1024, converging to it,
     while the line in space on its graded 64 elements is within 4.8e-8
-    (`test_the_two_line_bvps_agree_on_the_surveys_scenes`)."""
+    (`test_the_two_line_bvps_agree_on_the_surveys_scenes`). The uniform meshes of 64 and 256
+    elements warn that they do not resolve the bend where the line lands
+    (`skcable.errors.ResolutionWarning`); 1024 does not."""
     sc = AGREE["1:180"]
     want, _ = end_forces(sc)
     segments = [(length, varying(*w), EA) for length, w, EA in sc.segments]
-    off = []
+    off, warned = [], []
     for n in (64, 256, 1024):
-        line = solve_line_bvp_3d(
-            (0.0, 0.0, 0.0),
-            (sc.span, 0.0, sc.dh),
-            segments,
-            seabed=sc.seabed[0],
-            n_elements=n,
-            mesh="uniform",
-        )
+        with warnings.catch_warnings(record=True) as caught:
+            warnings.simplefilter("always", ResolutionWarning)
+            line = solve_line_bvp_3d(
+                (0.0, 0.0, 0.0),
+                (sc.span, 0.0, sc.dh),
+                segments,
+                seabed=sc.seabed[0],
+                n_elements=n,
+                mesh="uniform",
+            )
+        warned.append(bool(caught))
         assert line.problem.nodes_at is None  # uniform (but for the fitted nodes)
         got = np.array([*line.force_on_anchor[[0, 2]], *line.force_on_fairlead[[0, 2]]])
         off.append(np.abs(got - want).max() / np.abs(want).max())
     # converging to it (by 225 and 62 times at each fourfold refinement, measured)
     assert off[0] > 1e-3 and off[0] > 16 * off[1] > 256 * off[2] and off[2] < 1e-5
+    # the resolution check: an element at the landing turns 1.1 rad (64), 0.67 rad (256), resolved
+    assert warned == [True, True, False]
 
 
 def test_a_buoy_resting_on_the_seabed_lifts_its_arch_on_a_coarse_mesh():
@@ -258,12 +279,66 @@ def test_a_buoy_resting_on_the_seabed_lifts_its_arch_on_a_coarse_mesh():
     the seabed, and agreed with each other: H = 670.3 N against 960.94 N on 1024 elements, 4.7e-3
     of the largest end force. With nodes at the arch's ends, both are within 1e-5 of the plane
     line on 1024 elements (measured 3.4e-6 plane, 4.9e-7 space; the two 1024-element lines agree
-    within 3.1e-14)."""
+    within 3.1e-14). The resolution check flags the 64 elements (an element of 21 m at the arch
+    turns 0.48 rad: `skcable.errors.ResolutionWarning`), on an answer that is close: its measure
+    is empirical, and the table of docs/bvp.md counts such warnings."""
     sc = BUOY_ON_CHAIN
     reference, _ = end_forces(sc._replace(n_elements=1024))
-    plane, space = end_forces(sc)
+    with pytest.warns(ResolutionWarning, match="turns 0.48 rad"):  # a bend 0.17, past the check's 0.14
+        plane, space = end_forces(sc)
     for got in (plane, space):
         np.testing.assert_allclose(got, reference, rtol=0, atol=1e-5 * np.abs(reference).max())
+
+
+def test_a_buoy_resting_on_a_line_of_varying_weight_lifts_its_arch():
+    """Scene 3:19 (`VARYING_BUOY`): a 439 N buoy 11.9 m along a chain whose weight varies ±35 %
+    along it, resting on a nearly flat seabed; its arch weighs the lift, about 5 m of chain. The
+    arch's ends were taken under a uniform weight only: on 64 elements both lines held the buoy
+    down on the seabed (an element 11.9 m long, heavier than the lift) and agreed with each other
+    at H = 35.3 N, against the energy minimum's 75.04 N (7.5e-3 of the largest end force, silently).
+    With each side of the arch weighing half the lift (`skcable.mooring.line_bvp.mesh.arch_ends`),
+    both are within 1e-6 of the plane line on 1024 elements (measured 2.9e-8 each), and that one's
+    H within 1e-3 of the energy minimum on 2000 nodes (`benchmarks/line_energy_minimum.py`, an
+    oracle independent of both BVPs; measured 2.6e-4, the oracle's own discretisation: 75.69,
+    74.95, 75.04 N on 500, 1000, 2000 nodes)."""
+    reference, _ = end_forces(VARYING_BUOY._replace(n_elements=1024))
+    plane, space = end_forces(VARYING_BUOY)
+    for got in (plane, space):
+        np.testing.assert_allclose(got, reference, rtol=0, atol=1e-6 * np.abs(reference).max())
+    segments = tuple((length, oracle_planes.Varying(*w) if isinstance(w, tuple) else w, EA)
+                     for length, w, EA in VARYING_BUOY.segments)  # fmt: skip
+    sc = VARYING_BUOY
+    minimum = oracle.energy_minimum(
+        oracle_planes.Scene(sc.span, sc.dh, segments, tuple(sc.point_loads), sc.seabed), 2000
+    )
+    assert minimum.taut and abs(minimum.H_A - reference[0]) < 1e-3 * reference[0]
+
+
+def test_a_mesh_that_does_not_resolve_a_bend_warns():
+    """Scene 3:160 (`HANGING_TO_CLUMP`): a chain hanging almost vertically from a clump of 10.3 kN
+    to a light rope, H = 12 N, its bend at the bottom a few centimetres in radius. On 64 elements
+    both lines pass every check, and their V_A is 2.1e-2 off the line in space's on 1024 elements
+    (the energy minimum on 1000, 2000, 4000 nodes: 8387, 8267, 8176 N, falling to the BVP's 8164.9
+    N; the 64-element lines give 8333.6 N): an element of 1.4 m at the bend turns 0.89 rad within
+    itself, and both warn (`skcable.errors.ResolutionWarning`, naming ``n_elements``). On 256
+    elements both are within 1e-5 of the reference (measured 1.9e-6) and quiet (this project's
+    pytest turns the warning into an error). A trial solve (inside a mooring system's equilibrium,
+    `skcable._plausible.quiet`) does not warn."""
+    reference = space_forces(solvers(HANGING_TO_CLUMP._replace(n_elements=1024))[1]())
+    scale = np.abs(reference).max()
+    mapped = (plane_forces, space_forces)
+    for solve, forces in zip(solvers(HANGING_TO_CLUMP), mapped, strict=True):
+        with pytest.warns(ResolutionWarning, match=r"n_elements: 64 elements do not resolve a bend"):
+            coarse = forces(solve())
+        assert np.abs(coarse - reference).max() > 1e-2 * scale
+    for solve, forces in zip(
+        solvers(HANGING_TO_CLUMP._replace(n_elements=256)), (plane_forces, space_forces), strict=True
+    ):
+        np.testing.assert_allclose(forces(solve()), reference, rtol=0, atol=1e-5 * scale)
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        with _plausible.quiet():
+            solvers(HANGING_TO_CLUMP)[1]()
 
 
 def test_a_clump_just_past_a_buoys_arch_is_graded_without_the_arch():

@@ -12,27 +12,35 @@ longer than a frictionless straight slope holds taut between two ends above it (
 at the slope's foot: `skcable.cable.seabed.taut_length_on_slope`, exact for one uniform segment);
 `partial_friction` says in a failure's message where friction, fully mobilised, may take more
 than a line's pull (the model does not describe that line), `slack_on_slope` where a line over
-such a slope may be longer than it holds taut.
+such a slope may be longer than it holds taut. `unresolved` says where the mesh does not resolve a
+converged line (an element that turns through a bend within itself), and `warn_unresolved` warns
+it from a public solve.
 """
 
 from __future__ import annotations
 
+import warnings
+
 import numpy as np
 from skfem import BilinearForm, LinearForm, asm
 
+from skcable import _plausible
 from skcable.bvp.terms import CableState
 from skcable.cable.seabed import refuse_slack_on_slope as refuse_uniform_slack
 from skcable.cable.seabed import taut_length_on_slope
-from skcable.errors import ConvergenceError, InputError
+from skcable.errors import ConvergenceError, InputError, ResolutionWarning
 from skcable.mooring.line_bvp.start import uniform_on_slope
 
 __all__ = [
+    "RESOLVED_BEND",
     "equilibrium_field",
     "partial_friction",
     "refuse_slack_on_slope",
     "refuse_sliding",
     "slack_on_slope",
     "strong_residual",
+    "unresolved",
+    "warn_unresolved",
 ]
 
 EPS = float(np.finfo(float).eps)
@@ -42,6 +50,9 @@ NEARLY_SLACK = 0.02
 #: how much steeper than μ the seabed must rise at the anchor (the line's discrete tangent there,
 #: a slope) for `refuse_sliding` to refuse: a flat seabed's round-off slope never does
 SLOPE_TOL = 1e-6
+#: the largest bend ``θ_e (h_e/L)^(1/4)`` of an element in a line whose end forces its mesh resolves
+#: (`unresolved`; calibrated by `benchmarks/line_bvp_resolution.py`)
+RESOLVED_BEND = 0.14
 
 
 @LinearForm
@@ -246,3 +257,47 @@ def slack_on_slope(failed, problem) -> ConvergenceError:
             "slope's lower side, which Newton may not resolve"
         )
     return ConvergenceError(f"{message}; {why}", failed.history, last=failed.last, attempts=failed.attempts)
+
+
+def unresolved(solution) -> str:
+    """Why the mesh does not resolve the converged line ``solution`` (a
+    `skcable.mooring.line_bvp.fields.LineFields`), else ``""``: where an element's bend
+    ``θ_e (h_e/L)^(1/4)`` exceeds `RESOLVED_BEND` (``θ_e`` the angle its tangent turns within it,
+    ``element_turning``; ``h_e`` its length, ``L`` the line's).
+
+    P2 elements follow a bend of a few tenths of a radian each; a short element can turn through
+    more at a small cost to the end forces (a chain's bend of 1 cm radius at its lowest point, in
+    an element of 9 mm of a 415 m line, turns 0.75 rad, and its end forces are 2e-6 from those on
+    four times the elements: the survey's scene 3:160 on 256 elements), hence the element's share of
+    the line to a small power. The measure is empirical: on the survey's scenes solved on 12 to
+    256 elements against 1024 (`benchmarks/line_bvp_resolution.py`, its table in docs/bvp.md), no
+    line whose bends all stay below `RESOLVED_BEND` had its end forces off by more than 1e-4 of the
+    largest, and every line off by more than that had a bend beyond it. The equilibrium residual
+    and the contact checks do not see that error: the discrete equations hold to round-off on the
+    coarse mesh."""
+    nodes = np.sort(solution.problem.mesh.p[0])
+    h = np.diff(nodes)
+    turning = solution.element_turning
+    bend = turning * (h / solution.problem.L) ** 0.25
+    worst = int(np.argmax(bend))
+    if not bend[worst] > RESOLVED_BEND:
+        return ""
+    return (
+        f"{h.size} elements do not resolve a bend of the line: the element from s = {nodes[worst]:.4g} m "
+        f"to {nodes[worst + 1]:.4g} m turns {turning[worst]:.2g} rad within itself, a bend "
+        f"θ (h/L)^(1/4) = {bend[worst]:.2g} beyond the {RESOLVED_BEND:g} of a resolved line, and the end "
+        "forces may be off by 1e-6 to several per cent of the largest "
+        "(benchmarks/line_bvp_resolution.py): give more elements"
+    )
+
+
+def warn_unresolved(solution) -> None:
+    """Warn (`skcable.errors.ResolutionWarning`, naming ``n_elements``) where the mesh does not
+    resolve ``solution`` (`unresolved`), from the outermost public call only
+    (`skcable._plausible.outermost`: the solves inside a mooring system's equilibrium or a design
+    are trial states, not answers)."""
+    if not _plausible.outermost():
+        return
+    why = unresolved(solution)
+    if why:
+        warnings.warn(ResolutionWarning("n_elements", why), stacklevel=3)

@@ -27,6 +27,13 @@ that is larger: 64 times the change of the rows when every dof moves by its roun
 element, positions far from the origin). Beside it, `strong_residual` is the
 pointwise ``|d(T t)/ds + q|`` inside the elements: not round-off but the discretisation's error
 (it falls as the mesh is refined), an error indicator.
+
+**Resolution.** `element_turning` is the angle the tangent turns within each element (the kinks
+at nodes aside). An element that turns through more than a few tenths of a radian (or a short one
+through more) leaves the end forces off by a discretisation error that the residual above does
+not see (it holds to round-off on the coarse mesh): `LineFields.unresolved` says where
+(`skcable.mooring.line_bvp.check.unresolved`, with its calibration), and the public solves warn
+it (`skcable.errors.ResolutionWarning`).
 """
 
 from __future__ import annotations
@@ -38,7 +45,7 @@ import numpy as np
 from skcable._checks import real, require, whole
 from skcable.bvp.terms import CableState, term_outputs
 from skcable.errors import ConvergenceError
-from skcable.mooring.line_bvp.check import equilibrium_field, strong_residual
+from skcable.mooring.line_bvp.check import equilibrium_field, strong_residual, unresolved
 from skcable.mooring.line_bvp.discrete import DiscreteLine, LineState
 from skcable.mooring.line_bvp.fitting import landing, touchdown
 
@@ -221,6 +228,24 @@ class LineFields:
                 self.history,
             )
         self.s_touchdown, self.s_landing  # noqa: B018 (computed here: each raises where it has no root)
+
+    @cached_property
+    def element_turning(self) -> np.ndarray:
+        """The angle (rad) the unit tangent turns within each element, from just inside its first
+        node to just inside its last (1e-7 of the element in: the kinks at nodes left out), the
+        elements in order along the line: ``2 atan2(|t_1 - t_0|, |t_1 + t_0|)``, accurate at
+        small angles too (module docstring, resolution)."""
+        nodes = np.sort(self.problem.mesh.p[0])
+        inside = 1e-7 * np.diff(nodes)
+        a = self.problem.state_at(self.dofs, np.concatenate([nodes[:-1] + inside, nodes[1:] - inside])).a
+        t0, t1 = np.split(a / np.sqrt(np.sum(a * a, axis=0)), 2, axis=1)
+        apart = np.sqrt(np.sum((t1 - t0) ** 2, axis=0))
+        return 2.0 * np.arctan2(apart, np.sqrt(np.sum((t1 + t0) ** 2, axis=0)))
+
+    def unresolved(self) -> str:
+        """Why the mesh does not resolve the line, where an element turns through a bend within
+        it (`skcable.mooring.line_bvp.check.unresolved`), else ``""``."""
+        return unresolved(self)
 
     @cached_property
     def strong_residual(self) -> np.ndarray:

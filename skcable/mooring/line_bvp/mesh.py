@@ -45,6 +45,10 @@ __all__ = [
     "with_fitted",
 ]
 
+#: Gauss–Legendre points of the weight over a buoy's half arch, and Newton steps on its length
+#: (`_half_arches`: a weight varying along the line by a few per cent over the arch converges in
+#: two or three)
+ARCH_POINTS, ARCH_NEWTON = 8, 5
 #: elements of the first solve of a fine mesh whose start touches the seabed
 COARSE = 32
 #: how much finer an element may get at one grading
@@ -110,20 +114,22 @@ def arch_ends(line, z) -> np.ndarray:
     (m, unstretched arc length; empty without a seabed or such a buoy).
 
     A line lying on the seabed leaves it only where the buoy's lift carries its weight: the arch
-    is ``|P|/w`` long, ``s ± |P|/(2 w)`` about the buoy at ``s`` (vertical balance of the lifted
-    length; the line leaves the seabed tangent to it, so no reaction is concentrated there).
-    Nodal contact resolves it only with nodes at its ends: an element longer than the arch holds
-    the buoy down (H 8 % low on a light line with a small buoy on 64 elements). "Rests" means
-    the nearest node beyond each end (a node at the end excluded), away from the buoy, lies on
-    the seabed within ``1e-8 L``: where the buoy floats free, or the line lands within its arch,
-    the mesh is left alone. So it is where the arch lies inside the line under one weight, with
-    no joint or other point load in it (a clump inside it, or another weight, moves its ends)."""
+    is the length whose weight is ``|P|``, ``s ± |P|/(2 w)`` about the buoy at ``s`` under a
+    uniform weight (vertical balance of the lifted length; the line leaves the seabed tangent to
+    it, so no reaction is concentrated there), each side carrying half the lift under a weight
+    varying along it (`_half_arches`). Nodal contact resolves it only with nodes at its ends: an
+    element longer than the arch holds the buoy down (H 8 % low on a light line with a small buoy
+    on 64 elements; H half the energy minimum's under a weight varying ±35 %, the survey's scene
+    3:19). "Rests" means the nearest node beyond each end (a node at the end excluded), away from
+    the buoy, lies on the seabed within ``1e-8 L``: where the buoy floats free, or the line lands
+    within its arch, the mesh is left alone. So it is where the arch lies inside one segment of
+    positive weight, with no joint or other point load in it (a clump inside it, or another
+    weight, moves its ends)."""
     buoys = [(s, -P) for s, P in line.point_loads if P < 0]
     if line.seabed is None or not buoys:
         return np.empty(0)
     s_b, lift = np.array(buoys, dtype=float).T
-    half = 0.5 * lift / line.weight_at(s_b)
-    low, high = s_b - half, s_b + half
+    low, high, found = _half_arches(line, s_b, 0.5 * lift)
     nodes = np.sort(line.mesh.p[0])
     apart = 1e-9 * line.L  # a node at an end (a mesh graded by a line with its arch) is not beyond it
     before = nodes[np.maximum(np.searchsorted(nodes, low - apart, side="right") - 1, 0)]
@@ -132,14 +138,36 @@ def arch_ends(line, z) -> np.ndarray:
     rests = np.all(gap.reshape(2, -1) <= 1e-8 * line.L, axis=0)
     others = np.concatenate([line.joints, [s for s, _ in line.point_loads]])
     alone = [
-        0 < a
-        and b < line.L
-        and np.ptp(line.weight_at([a, s, b])) == 0
-        and not np.any((others > a) & (others < b) & (others != s))
+        0 < a and b < line.L and not np.any((others > a) & (others < b) & (others != s))
         for a, s, b in zip(low, s_b, high, strict=True)
     ]
-    keep = rests & np.array(alone, dtype=bool)
+    keep = found & rests & np.array(alone, dtype=bool)
     return np.concatenate([low[keep], high[keep]])
+
+
+def _half_arches(line, s_b, half_lift):
+    """``(low, high, found)``: the arc lengths (m) about each buoy at ``s_b`` whose stretch on
+    either side weighs ``half_lift`` (N), by Newton on ``∫ w ds = half_lift`` (the weight
+    integrated by `ARCH_POINTS`-point Gauss–Legendre, its derivative the weight at the end) from
+    the uniform weight's ``half_lift / w(s_b)``, each end kept on the line; ``found`` where both
+    balances hold to 1e-9 of ``half_lift`` under a positive weight (else no arch: `arch_ends`
+    leaves the mesh alone)."""
+    x, weights = np.polynomial.legendre.leggauss(ARCH_POINTS)
+    ends, found = [], np.ones(s_b.shape, dtype=bool)
+    for side in (-1.0, 1.0):
+        w_b = line.weight_at(s_b)
+        end = s_b + side * half_lift / np.where(w_b > 0, w_b, np.inf)  # none where it floats
+        for _ in range(ARCH_NEWTON + 1):
+            end = np.clip(end, 0.0, line.L)
+            points = 0.5 * (s_b + end)[:, None] + 0.5 * (end - s_b)[:, None] * x
+            w = line.weight_at(points.ravel()).reshape(points.shape)
+            w_end = line.weight_at(end)
+            miss = 0.5 * np.abs(end - s_b) * (w @ weights) - half_lift
+            positive = np.all(w > 0, axis=1) & (w_end > 0)
+            end = end - side * miss / np.where(positive, w_end, 1.0)
+        found &= positive & (np.abs(miss) <= 1e-9 * half_lift)
+        ends.append(end)
+    return ends[0], ends[1], found
 
 
 def graded_nodes(line, z, n_elements, fixed, refinement=REFINEMENT, arches=True):

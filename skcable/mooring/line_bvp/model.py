@@ -6,6 +6,7 @@ from skcable import _plausible
 from skcable._checks import nonnegative, positive, scalar, whole
 from skcable.cable._extreme import outsized
 from skcable.errors import InputError
+from skcable.mooring.line_bvp.check import warn_unresolved
 from skcable.mooring.line_bvp.driver import LineBVPSolver
 from skcable.mooring.line_bvp.fallback import space_for_plane
 from skcable.mooring.line_bvp.inputs import (
@@ -275,6 +276,7 @@ class LineBVP:
             raise InputError("start", f"must be a solution of this LineBVP, got {type(start).__name__}")
         with outsized(**magnitudes(checked)):  # as in solve_line_bvp
             solution = solver.solve() if start is None else solver.solve_from(start)
+        warn_unresolved(solution)
         solution.model = self
         return solution
 

@@ -6,6 +6,7 @@ from dataclasses import fields
 
 from skcable.errors import InputError
 from skcable.fe import NewtonOptions
+from skcable.mooring.line_bvp.check import warn_unresolved
 from skcable.mooring.line_bvp.fallback import plane_for_space
 from skcable.mooring.line_bvp.space.driver import LineBVP3DSolver
 from skcable.mooring.line_bvp.space.inputs import checked_options, scene
@@ -151,7 +152,9 @@ def solve_line_bvp_3d(
         options=options, newton_options=newton_options,
     )  # fmt: skip
     checked = scene(anchor, fairlead, checked_options(segments, options))
-    return LineBVP3DSolver(checked, plane_for_space).solve()
+    solution = LineBVP3DSolver(checked, plane_for_space).solve()
+    warn_unresolved(solution)
+    return solution
 
 
 class LineBVP3D:
@@ -200,6 +203,7 @@ class LineBVP3D:
         if start is not None and not (isinstance(start, LineBVP3DSolution) and start.model is self):
             raise InputError("start", f"must be a solution of this LineBVP3D, got {type(start).__name__}")
         solution = LineBVP3DSolver(scene(anchor, fairlead, self.checked), plane_for_space).solve(start)
+        warn_unresolved(solution)
         solution.model = self
         return solution
 
