@@ -2,9 +2,9 @@
 
 from __future__ import annotations
 
-import os
-import tempfile
 from pathlib import Path
+
+from skcable.io._atomic import write_text
 
 
 def markdown_table(header, rows) -> list[str]:
@@ -26,8 +26,7 @@ def write_section(page: Path, name: str, lines, new_page: str = "") -> Path:
     """Replace what lies between the markers ``<!-- name:begin -->`` and ``<!-- name:end -->`` of
     ``page`` with ``lines`` (the section appended, markers and all, where the page has none;
     ``new_page`` the text of a page that does not exist yet), the other sections left as they
-    are; atomically: the page written whole to a temporary file beside it, flushed to disk, then
-    moved onto it. Returns ``page``."""
+    are; atomically (`skcable.io._atomic.write_text`). Returns ``page``."""
     begin, end = f"<!-- {name}:begin -->", f"<!-- {name}:end -->"
     text = page.read_text(encoding="utf-8") if page.exists() else new_page
     block = "\n".join([begin, *lines, end])
@@ -36,10 +35,4 @@ def write_section(page: Path, name: str, lines, new_page: str = "") -> Path:
         text = head + block + rest.split(end, 1)[1]
     else:
         text = text.rstrip("\n") + "\n\n" + block + "\n"
-    fd, temp = tempfile.mkstemp(dir=page.parent, prefix=f".{page.stem}.", suffix=".tmp")
-    with os.fdopen(fd, "w", encoding="utf-8") as handle:
-        handle.write(text)
-        handle.flush()
-        os.fsync(handle.fileno())
-    os.replace(temp, page)
-    return page
+    return write_text(page, text)

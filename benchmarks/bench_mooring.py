@@ -31,19 +31,21 @@ from __future__ import annotations
 import argparse
 import importlib.metadata
 import runpy
+import sys
 import time
 from pathlib import Path
 
 import numpy as np
 
 from skcable import cable, mooring
-from skcable.io._atomic import write_text
 from skcable.mooring.line3d import solve_in_space
 
 ROOT = Path(__file__).resolve().parents[1]
 EXAMPLE = runpy.run_path(str(ROOT / "examples" / "spread_mooring.py"))
 DOCS = ROOT / "docs" / "mooring.md"
-START, END = "<!-- bench_mooring:start -->", "<!-- bench_mooring:end -->"
+sys.path.insert(0, str(ROOT / "benchmarks"))
+
+from _tables import write_section  # noqa: E402
 
 
 def best_time(call, repeat: int, number: int = 1) -> float:
@@ -277,11 +279,8 @@ def run(repeat: int) -> str:
 
 
 def write_docs(text: str) -> None:
-    page = DOCS.read_text(encoding="utf-8")
-    head, rest = page.split(START, 1)
-    _, tail = rest.split(END, 1)
-    block = f"{START}\n<!-- written by benchmarks/bench_mooring.py: do not edit by hand -->\n\n{text}\n{END}"
-    write_text(DOCS, head + block + tail)
+    notice = "<!-- written by benchmarks/bench_mooring.py: do not edit by hand -->"
+    write_section(DOCS, "bench_mooring", [notice, "", *text.split("\n")])
 
 
 def main() -> None:

@@ -35,6 +35,7 @@ import json
 import logging
 import os
 import statistics
+import sys
 import time
 from pathlib import Path
 
@@ -43,7 +44,10 @@ from skcable import study
 ROOT = Path(__file__).resolve().parents[1]
 SEED = ROOT / "studies" / "pino_vidal_2021_tables_4_1_4_2.toml"
 DOCS = ROOT / "docs" / "studies.md"
-START, END = "<!-- bench_study:start -->", "<!-- bench_study:end -->"
+sys.path.insert(0, str(ROOT / "benchmarks"))
+
+from _tables import write_section  # noqa: E402
+
 WAYS = ("serial", "auto", "dask processes", "dask threads")
 
 
@@ -149,13 +153,8 @@ def render(report: dict) -> str:
 
 
 def write_docs(markdown: str) -> None:
-    text = DOCS.read_text(encoding="utf-8")
-    head, rest = text.split(START, 1)
-    _, tail = rest.split(END, 1)
-    block = (
-        f"{START}\n<!-- written by benchmarks/bench_study.py: do not edit by hand -->\n\n{markdown}\n{END}"
-    )
-    DOCS.write_text(head + block + tail, encoding="utf-8")
+    notice = "<!-- written by benchmarks/bench_study.py: do not edit by hand -->"
+    write_section(DOCS, "bench_study", [notice, "", *markdown.split("\n")])
 
 
 def main(argv=None):

@@ -36,6 +36,7 @@ import argparse
 import contextlib
 import importlib.metadata
 import io
+import sys
 import time
 import warnings
 from pathlib import Path
@@ -43,11 +44,13 @@ from pathlib import Path
 import numpy as np
 
 from skcable import mooring
-from skcable.io._atomic import write_text
 
 ROOT = Path(__file__).resolve().parents[1]
 DOCS = ROOT / "docs" / "mooring.md"
-START, END = "<!-- bench_system:start -->", "<!-- bench_system:end -->"
+sys.path.insert(0, str(ROOT / "benchmarks"))
+
+from _tables import write_section  # noqa: E402
+
 W, EA, LENGTH, DEPTH = 2456.82, 1.2326e9, 850.0, 200.0
 OWN = dict(
     mass=8e6,
@@ -180,11 +183,8 @@ def run(repeat: int, clock=time.perf_counter, block: int = 10) -> str:
 
 
 def write_docs(text: str) -> None:
-    page = DOCS.read_text(encoding="utf-8")
-    head, rest = page.split(START, 1)
-    _, tail = rest.split(END, 1)
-    block = f"{START}\n<!-- written by benchmarks/bench_system.py: do not edit by hand -->\n\n{text}\n{END}"
-    write_text(DOCS, head + block + tail)
+    notice = "<!-- written by benchmarks/bench_system.py: do not edit by hand -->"
+    write_section(DOCS, "bench_system", [notice, "", *text.split("\n")])
 
 
 def main() -> None:

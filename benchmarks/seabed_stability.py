@@ -47,6 +47,7 @@ import numpy as np
 
 sys.path.insert(0, str(Path(__file__).parent))
 from _reference import jonkman_grounded  # noqa: E402
+from _tables import write_section  # noqa: E402
 
 from skcable import cable, mooring  # noqa: E402
 
@@ -58,7 +59,6 @@ FRICTION = (0.0, 0.5, 5.0)
 EA_OVER_WEIGHT = (1e3, 1e7)
 TOL = 1e-8
 STATUSES = ("right", "wrong", "failed", "refused", "heap")
-START, END = "<!-- seabed-stability:start -->", "<!-- seabed-stability:end -->"
 
 
 def scenes():
@@ -229,14 +229,7 @@ def main():
         )
     body = f"{table(rows)}\n\n{notes(rows)}"
     print(body)
-    doc = ROOT / "docs" / "stability.md"
-    text = doc.read_text()
-    if START in text and END in text:
-        head, rest = text.split(START, 1)
-        text = f"{head}{START}\n{body}\n{END}{rest.split(END, 1)[1]}"
-        tmp = doc.with_suffix(".md.tmp")
-        tmp.write_text(text)
-        tmp.replace(doc)
+    write_section(ROOT / "docs" / "stability.md", "seabed-stability", body.split("\n"))
 
 
 if __name__ == "__main__":

@@ -55,6 +55,8 @@ from skcable.fe import first_converged, newton
 from skcable.mooring import checks
 from skcable.mooring._answers import equilibrium_findings
 from skcable.mooring.axial import StrainTable
+from skcable.mooring.line_bvp.check import warn_unresolved
+from skcable.mooring.line_bvp.fields import LineFields
 from skcable.mooring.network import end_forces, largest_end_tension
 from skcable.mooring.segments import Line, Segment
 
@@ -635,8 +637,14 @@ def _solve_equilibrium(solve, position, lines):
 
 
 def warn_implausible(eq) -> None:
-    """Warn each finding of ``eq`` (`MooringEquilibrium.implausible`): the answer's check."""
+    """Warn each finding of ``eq`` (`MooringEquilibrium.implausible`), and each line a line BVP
+    model of the caller's (its mesh theirs: `skcable.mooring.LineBVP`) solved on a mesh that does
+    not resolve it (`skcable.mooring.line_bvp.check.warn_unresolved`): the answer's check."""
     _plausible.warn_all(eq.implausible)
+    for line in eq.lines:
+        solution = getattr(line, "solution", None)
+        if isinstance(solution, LineFields):
+            warn_unresolved(solution, stacklevel=4)  # the caller of the equilibrium named
 
 
 #: The Newton steps a system with ties takes from its start before its ties are softened.

@@ -219,6 +219,9 @@ VARYING_BUOY = Scene(547.0656209506323, 40.79135265141903, [(119.09616191337666,
 #: scene 3:160: a chain hanging almost vertically from a 10.3 kN clump, then a light rope, over a flat
 #: seabed 7.1 m below the anchor, 64 elements
 HANGING_TO_CLUMP = Scene(399.88638259698047, 2.3202982852674046, [(73.23715508631014, 1151.2050522936047, 342377713.3053049), (341.53988038717597, 19.835188621190447, 10534704.169814138)], [(24.145342086592702, 10272.346177262758)], (-7.0821617336914935, 0.0), 0.0, 64)  # noqa: E501
+#: scene 3:53: a rope of weight varying ±40 % over 8.5 m lying on a slope of -0.089 from the anchor,
+#: a wire and a rope of varying weights, 64 elements
+SHORT_WAVES = Scene(67.18533890365998, 13.756802484604162, [(17.557197803261285, (77.74497416503118, 0.3953096037524316, 8.522705754265901, 2.6884084518422235), 33949710.67650141), (45.13058389690186, (66.65423243670861, 0.2894648595381882, 27.140585379945783, 0.5825843494581896), 333361802.1941017), (20.609741874591077, (17.85947802478008, 0.4829813687801935, 45.06744285993954, 5.780066458247716), 2352038966.858905)], [], (0.0, -0.08891523544311544), 0.0, 64)  # noqa: E501
 #: scene 2:136: chain, wire and rope on a flat seabed, a 549 N buoy and a 688 N clump 0.55 m apart on
 #: the chain, 64 elements
 CLUMP_PAST_ARCH = Scene(125.81753795867601, 2.8498245385887344, [(19.448596158559198, 1055.4548292387067, 231228562.49157917), (44.252384437742585, 16.948186939103618, 19227949.56835867), (65.38018979633495, 89.2398842920646, 10183143.715478364)], [(4.217218385186116, -549.0474605264737), (4.765073772586564, 687.8583198756432)], (-0.42775369174513617, 0.0), 0.0, 64)  # noqa: E501
@@ -293,11 +296,12 @@ def test_a_buoy_resting_on_the_seabed_lifts_its_arch_on_a_coarse_mesh():
 def test_a_buoy_resting_on_a_line_of_varying_weight_lifts_its_arch():
     """Scene 3:19 (`VARYING_BUOY`): a 439 N buoy 11.9 m along a chain whose weight varies ±35 %
     along it, resting on a nearly flat seabed; its arch weighs the lift, about 5 m of chain. The
-    arch's ends were taken under a uniform weight only: on 64 elements both lines held the buoy
-    down on the seabed (an element 11.9 m long, heavier than the lift) and agreed with each other
-    at H = 35.3 N, against the energy minimum's 75.04 N (7.5e-3 of the largest end force, silently).
-    With each side of the arch weighing half the lift (`skcable.mooring.line_bvp.mesh.arch_ends`),
-    both are within 1e-6 of the plane line on 1024 elements (measured 2.9e-8 each), and that one's
+    arch's ends were taken under a uniform weight only: on 64 elements the plane line held the
+    buoy down on the seabed (an element 11.9 m long, heavier than the lift), H = 35.3 N against
+    the energy minimum's 75.04 N (7.5e-3 of the largest end force, silently; the line in space's
+    first mesh, graded by its start, found the arch). With the arch's sides of equal moments about
+    the buoy (`skcable.mooring.line_bvp.mesh.arch_ends`), both lines are within 1e-6 of the plane
+    line on 1024 elements (measured 2.9e-8 each), and that one's
     H within 1e-3 of the energy minimum on 2000 nodes (`benchmarks/line_energy_minimum.py`, an
     oracle independent of both BVPs; measured 2.6e-4, the oracle's own discretisation: 75.69,
     74.95, 75.04 N on 500, 1000, 2000 nodes)."""
@@ -328,7 +332,7 @@ def test_a_mesh_that_does_not_resolve_a_bend_warns():
     scale = np.abs(reference).max()
     mapped = (plane_forces, space_forces)
     for solve, forces in zip(solvers(HANGING_TO_CLUMP), mapped, strict=True):
-        with pytest.warns(ResolutionWarning, match=r"n_elements: 64 elements do not resolve a bend"):
+        with pytest.warns(ResolutionWarning, match=r"the mesh's 64 elements .* do not resolve a bend"):
             coarse = forces(solve())
         assert np.abs(coarse - reference).max() > 1e-2 * scale
     for solve, forces in zip(
@@ -339,6 +343,25 @@ def test_a_mesh_that_does_not_resolve_a_bend_warns():
         warnings.simplefilter("error")
         with _plausible.quiet():
             solvers(HANGING_TO_CLUMP)[1]()
+
+
+def test_a_mesh_that_does_not_resolve_a_varying_weight_warns():
+    """Scene 3:53 (`SHORT_WAVES`): a rope whose weight varies ±40 % over a wavelength of 8.5 m,
+    lying on a slope from the anchor, then a wire and a rope. On 32 elements the mesh has two
+    elements in that rope, and the solve's quadrature misplaces 4.4e-3 of the line's weight
+    (against 16-point Gauss–Legendre per element, `skcable.mooring.line_bvp.check`): the end forces
+    are 4.4e-3 off the line in space on 1024 elements, with no bend to see. Both lines warn
+    (`skcable.errors.ResolutionWarning`); on 64 elements both are within 1e-5 of the reference
+    (measured 1.3e-7) and quiet."""
+    reference = space_forces(solvers(SHORT_WAVES._replace(n_elements=1024))[1]())
+    scale = np.abs(reference).max()
+    mapped = (plane_forces, space_forces)
+    for solve, forces in zip(solvers(SHORT_WAVES._replace(n_elements=32)), mapped, strict=True):
+        with pytest.warns(ResolutionWarning, match="do not resolve the weight varying along the line"):
+            coarse = forces(solve())
+        assert np.abs(coarse - reference).max() > 1e-3 * scale
+    for solve, forces in zip(solvers(SHORT_WAVES), mapped, strict=True):
+        np.testing.assert_allclose(forces(solve()), reference, rtol=0, atol=1e-5 * scale)
 
 
 def test_a_clump_just_past_a_buoys_arch_is_graded_without_the_arch():

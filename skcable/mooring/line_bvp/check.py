@@ -13,8 +13,8 @@ at the slope's foot: `skcable.cable.seabed.taut_length_on_slope`, exact for one 
 `partial_friction` says in a failure's message where friction, fully mobilised, may take more
 than a line's pull (the model does not describe that line), `slack_on_slope` where a line over
 such a slope may be longer than it holds taut. `unresolved` says where the mesh does not resolve a
-converged line (an element that turns through a bend within itself), and `warn_unresolved` warns
-it from a public solve.
+converged line (an element that turns through a bend within itself, or a weight that varies
+within an element), and `warn_unresolved` warns it from a public solve.
 """
 
 from __future__ import annotations
@@ -33,6 +33,8 @@ from skcable.mooring.line_bvp.start import uniform_on_slope
 
 __all__ = [
     "RESOLVED_BEND",
+    "RESOLVED_WEIGHT",
+    "element_bends",
     "equilibrium_field",
     "partial_friction",
     "refuse_slack_on_slope",
@@ -40,7 +42,10 @@ __all__ = [
     "slack_on_slope",
     "strong_residual",
     "unresolved",
+    "unresolved_bend",
+    "unresolved_weight",
     "warn_unresolved",
+    "weight_quadrature_error",
 ]
 
 EPS = float(np.finfo(float).eps)
@@ -53,6 +58,10 @@ SLOPE_TOL = 1e-6
 #: the largest bend ``θ_e (h_e/L)^(1/4)`` of an element in a line whose end forces its mesh resolves
 #: (`unresolved`; calibrated by `benchmarks/line_bvp_resolution.py`)
 RESOLVED_BEND = 0.14
+#: the largest share of a line's weight its mesh's quadrature may misplace in a line whose end
+#: forces its mesh resolves (`unresolved_weight`), and the Gauss–Legendre points of the reference
+#: on each half of an element (`weight_quadrature_error`)
+RESOLVED_WEIGHT, WEIGHT_POINTS = 1e-5, 8
 
 
 @LinearForm
@@ -261,43 +270,97 @@ def slack_on_slope(failed, problem) -> ConvergenceError:
 
 def unresolved(solution) -> str:
     """Why the mesh does not resolve the converged line ``solution`` (a
-    `skcable.mooring.line_bvp.fields.LineFields`), else ``""``: where an element's bend
+    `skcable.mooring.line_bvp.fields.LineFields`), else ``""``: a bend (`unresolved_bend`), a
+    weight varying along the line (`unresolved_weight`), or both. The equilibrium residual and the
+    contact checks do not see either: the discrete equations hold to round-off on the coarse
+    mesh. On the survey's scenes solved on 12 to 256 elements against 1024
+    (`benchmarks/line_bvp_resolution.py`, its table in docs/bvp.md) the two flag every line off
+    by more than 1e-4 of its largest end force (125 of 125) and pass none off by more than 3.2e-5;
+    a quarter of the lines they flag are within 1e-5 (65 of 257): a warning says the mesh may be
+    too coarse, and more elements settle it."""
+    return "; ".join(filter(None, (unresolved_bend(solution), unresolved_weight(solution.problem))))
+
+
+def element_bends(solution) -> tuple[np.ndarray, np.ndarray]:
+    """``(bends, nodes)``: each element's bend ``θ_e (h_e/L)^(1/4)`` (`unresolved_bend`), the
+    elements in order along the line, and the mesh's nodes (m of arc length, sorted)."""
+    nodes = np.sort(solution.problem.mesh.p[0])
+    return solution.element_turning * (np.diff(nodes) / solution.problem.L) ** 0.25, nodes
+
+
+def unresolved_bend(solution) -> str:
+    """Why the mesh does not resolve a bend of ``solution``, where an element's bend
     ``θ_e (h_e/L)^(1/4)`` exceeds `RESOLVED_BEND` (``θ_e`` the angle its tangent turns within it,
-    ``element_turning``; ``h_e`` its length, ``L`` the line's).
+    ``element_turning``; ``h_e`` its length, ``L`` the line's: `element_bends`), else ``""``.
 
     P2 elements follow a bend of a few tenths of a radian each; a short element can turn through
     more at a small cost to the end forces (a chain's bend of 1 cm radius at its lowest point, in
     an element of 9 mm of a 415 m line, turns 0.75 rad, and its end forces are 2e-6 from those on
-    four times the elements: the survey's scene 3:160 on 256 elements), hence the element's share of
-    the line to a small power. The measure is empirical: on the survey's scenes solved on 12 to
-    256 elements against 1024 (`benchmarks/line_bvp_resolution.py`, its table in docs/bvp.md), no
-    line whose bends all stay below `RESOLVED_BEND` had its end forces off by more than 1e-4 of the
-    largest, and every line off by more than that had a bend beyond it. The equilibrium residual
-    and the contact checks do not see that error: the discrete equations hold to round-off on the
-    coarse mesh."""
-    nodes = np.sort(solution.problem.mesh.p[0])
-    h = np.diff(nodes)
-    turning = solution.element_turning
-    bend = turning * (h / solution.problem.L) ** 0.25
-    worst = int(np.argmax(bend))
-    if not bend[worst] > RESOLVED_BEND:
+    four times the elements: the survey's scene 3:160 on 256 elements), hence the element's share
+    of the line to a small power. The measure and its bound are empirical
+    (`benchmarks/line_bvp_resolution.py`): a line it flags may be close (2:117 on 64 elements,
+    3.4e-6 off; the table counts those)."""
+    bends, nodes = element_bends(solution)
+    worst = int(np.argmax(bends))
+    if not bends[worst] > RESOLVED_BEND:
         return ""
+    turning = solution.element_turning[worst]
     return (
-        f"{h.size} elements do not resolve a bend of the line: the element from s = {nodes[worst]:.4g} m "
-        f"to {nodes[worst + 1]:.4g} m turns {turning[worst]:.2g} rad within itself, a bend "
-        f"θ (h/L)^(1/4) = {bend[worst]:.2g} beyond the {RESOLVED_BEND:g} of a resolved line, and the end "
-        "forces may be off by 1e-6 to several per cent of the largest "
-        "(benchmarks/line_bvp_resolution.py): give more elements"
+        f"the mesh's {bends.size} elements (n_elements and the nodes fitted) do not resolve a bend of "
+        f"the line: the element from s = {nodes[worst]:.4g} m to {nodes[worst + 1]:.4g} m turns "
+        f"{turning:.2g} rad within itself, a bend θ (h/L)^(1/4) = {bends[worst]:.2g} beyond the "
+        f"{RESOLVED_BEND:g} of a resolved line, and the end forces may be off by up to several per "
+        "cent of the largest (benchmarks/line_bvp_resolution.py): give more elements"
     )
 
 
-def warn_unresolved(solution) -> None:
+def weight_quadrature_error(problem) -> np.ndarray:
+    """The error (N) of each element's weight as the solve integrates it (at its quadrature
+    points, ``problem.w_q``) against `WEIGHT_POINTS`-point Gauss–Legendre on each half of the
+    element, the elements in the mesh's order: zeros where every segment's weight is a number
+    (integrated exactly)."""
+    if not any(callable(seg.w) for seg in problem.segments):
+        return np.zeros(problem.mesh.t.shape[1])
+    left, right = np.sort(problem.mesh.p[0, problem.mesh.t], axis=0)
+    x, weights = np.polynomial.legendre.leggauss(WEIGHT_POINTS)
+    quarter = 0.25 * (right - left)
+    reference = np.zeros_like(left)
+    for centre in (left + quarter, right - quarter):
+        points = centre[:, None] + quarter[:, None] * x
+        reference += quarter * (problem.weight_at(points.ravel()).reshape(points.shape) @ weights)
+    return np.sum(problem.w_q * problem.assembly.dx, axis=0) - reference
+
+
+def unresolved_weight(problem) -> str:
+    """Why the mesh of the discrete line ``problem`` does not resolve its weight varying along
+    it, where the solve's quadrature misplaces more than `RESOLVED_WEIGHT` of the line's weight
+    (`weight_quadrature_error`, summed over the elements against the sum of their weights' sizes),
+    else ``""``: a weight that varies within an element (a wavelength of 8.5 m in an element of
+    17 m, the survey's scene 3:53 on 32 elements) is a load the solve does not apply, and the end
+    forces are off by about as much (4.4e-3 there)."""
+    error = np.abs(weight_quadrature_error(problem))
+    share = float(np.sum(error)) / float(np.sum(np.abs(problem.w_q * problem.assembly.dx)))
+    if not share > RESOLVED_WEIGHT:
+        return ""
+    left, right = np.sort(problem.mesh.p[0, problem.mesh.t], axis=0)
+    worst = int(np.argmax(error))
+    return (
+        f"the mesh's {error.size} elements (n_elements and the nodes fitted) do not resolve the weight "
+        "varying along the line: the solve's "
+        f"quadrature misplaces {share:.2g} of the line's weight (the most in the element from s = "
+        f"{left[worst]:.4g} m to {right[worst]:.4g} m), beyond the {RESOLVED_WEIGHT:g} of a resolved "
+        "line, and the end forces may be off by about as much: give more elements"
+    )
+
+
+def warn_unresolved(solution, stacklevel: int = 3) -> None:
     """Warn (`skcable.errors.ResolutionWarning`, naming ``n_elements``) where the mesh does not
     resolve ``solution`` (`unresolved`), from the outermost public call only
     (`skcable._plausible.outermost`: the solves inside a mooring system's equilibrium or a design
-    are trial states, not answers)."""
+    are trial states, not answers); ``stacklevel`` as `warnings.warn`'s, counted from here (3:
+    the line that called the public solve which calls this)."""
     if not _plausible.outermost():
         return
     why = unresolved(solution)
     if why:
-        warnings.warn(ResolutionWarning("n_elements", why), stacklevel=3)
+        warnings.warn(ResolutionWarning("n_elements", why), stacklevel=stacklevel)

@@ -231,16 +231,19 @@ class LineFields:
 
     @cached_property
     def element_turning(self) -> np.ndarray:
-        """The angle (rad) the unit tangent turns within each element, from just inside its first
-        node to just inside its last (1e-7 of the element in: the kinks at nodes left out), the
-        elements in order along the line: ``2 atan2(|t_1 - t_0|, |t_1 + t_0|)``, accurate at
-        small angles too (module docstring, resolution)."""
-        nodes = np.sort(self.problem.mesh.p[0])
-        inside = 1e-7 * np.diff(nodes)
-        a = self.problem.state_at(self.dofs, np.concatenate([nodes[:-1] + inside, nodes[1:] - inside])).a
-        t0, t1 = np.split(a / np.sqrt(np.sum(a * a, axis=0)), 2, axis=1)
-        apart = np.sqrt(np.sum((t1 - t0) ** 2, axis=0))
-        return 2.0 * np.arctan2(apart, np.sqrt(np.sum((t1 + t0) ** 2, axis=0)))
+        """The angle (rad) the unit tangent turns within each element, from its first node to its
+        last (the P2 position's derivative at each end, inside the element: the kinks at nodes
+        left out), the elements in order along the line: ``2 atan2(|t_1 - t_0|, |t_1 + t_0|)``,
+        accurate at small angles too (module docstring, resolution)."""
+        problem = self.problem
+        ends, middle = problem.basis.element_dofs[:2], problem.basis.element_dofs[2]
+        r = self.dofs[: problem.dim * problem.N].reshape(problem.dim, problem.N)
+        r0, r1, rm = r[:, ends[0]], r[:, ends[1]], r[:, middle]
+        t0, t1 = 4.0 * rm - 3.0 * r0 - r1, 3.0 * r1 + r0 - 4.0 * rm  # r'(ξ) at ξ = 0 and 1
+        t0, t1 = t0 / np.sqrt(np.sum(t0 * t0, axis=0)), t1 / np.sqrt(np.sum(t1 * t1, axis=0))
+        apart, along = np.sqrt(np.sum((t1 - t0) ** 2, axis=0)), np.sqrt(np.sum((t1 + t0) ** 2, axis=0))
+        turning = 2.0 * np.arctan2(apart, along)
+        return turning[np.argsort(problem.mesh.p[0, problem.mesh.t].min(axis=0))]
 
     def unresolved(self) -> str:
         """Why the mesh does not resolve the line, where an element turns through a bend within

@@ -45,10 +45,9 @@ __all__ = [
     "with_fitted",
 ]
 
-#: Gauss–Legendre points of the weight over a buoy's half arch, and Newton steps on its length
-#: (`_half_arches`: a weight varying along the line by a few per cent over the arch converges in
-#: two or three)
-ARCH_POINTS, ARCH_NEWTON = 8, 5
+#: a buoy's arch (`_half_arches`): Gauss–Legendre points of each piece of its weight and moment,
+#: pieces on each side, and Newton steps at most (a weight varying ±80 % over the arch takes about 8)
+ARCH_POINTS, ARCH_QUADRATURE, ARCH_NEWTON = 8, 4, 30
 #: elements of the first solve of a fine mesh whose start touches the seabed
 COARSE = 32
 #: how much finer an element may get at one grading
@@ -116,20 +115,20 @@ def arch_ends(line, z) -> np.ndarray:
     A line lying on the seabed leaves it only where the buoy's lift carries its weight: the arch
     is the length whose weight is ``|P|``, ``s ± |P|/(2 w)`` about the buoy at ``s`` under a
     uniform weight (vertical balance of the lifted length; the line leaves the seabed tangent to
-    it, so no reaction is concentrated there), each side carrying half the lift under a weight
-    varying along it (`_half_arches`). Nodal contact resolves it only with nodes at its ends: an
-    element longer than the arch holds the buoy down (H 8 % low on a light line with a small buoy
-    on 64 elements; H half the energy minimum's under a weight varying ±35 %, the survey's scene
-    3:19). "Rests" means the nearest node beyond each end (a node at the end excluded), away from
-    the buoy, lies on the seabed within ``1e-8 L``: where the buoy floats free, or the line lands
-    within its arch, the mesh is left alone. So it is where the arch lies inside one segment of
-    positive weight, with no joint or other point load in it (a clump inside it, or another
-    weight, moves its ends)."""
+    it, so no reaction is concentrated there), its sides' weights of equal moments about the buoy
+    under a weight varying along it (`_half_arches`). Nodal contact resolves it only with nodes
+    at its ends: an element longer than the arch holds the buoy down (H 8 % low on a light line
+    with a small buoy on 64 elements; H half the energy minimum's for the plane line under a
+    weight varying ±35 %, the survey's scene 3:19). "Rests" means the nearest node beyond each end
+    (a node at the end excluded), away from the buoy, lies on the seabed within ``1e-8 L``: where
+    the buoy floats free, or the line lands within its arch, the mesh is left alone. So it is
+    where the arch lies inside one segment of positive weight, with no joint or other point load
+    in it (a clump inside it, or another weight, moves its ends)."""
     buoys = [(s, -P) for s, P in line.point_loads if P < 0]
     if line.seabed is None or not buoys:
         return np.empty(0)
     s_b, lift = np.array(buoys, dtype=float).T
-    low, high, found = _half_arches(line, s_b, 0.5 * lift)
+    low, high, found = _half_arches(line, s_b, lift)
     nodes = np.sort(line.mesh.p[0])
     apart = 1e-9 * line.L  # a node at an end (a mesh graded by a line with its arch) is not beyond it
     before = nodes[np.maximum(np.searchsorted(nodes, low - apart, side="right") - 1, 0)]
@@ -145,29 +144,47 @@ def arch_ends(line, z) -> np.ndarray:
     return np.concatenate([low[keep], high[keep]])
 
 
-def _half_arches(line, s_b, half_lift):
-    """``(low, high, found)``: the arc lengths (m) about each buoy at ``s_b`` whose stretch on
-    either side weighs ``half_lift`` (N), by Newton on ``∫ w ds = half_lift`` (the weight
-    integrated by `ARCH_POINTS`-point Gauss–Legendre, its derivative the weight at the end) from
-    the uniform weight's ``half_lift / w(s_b)``, each end kept on the line; ``found`` where both
-    balances hold to 1e-9 of ``half_lift`` under a positive weight (else no arch: `arch_ends`
-    leaves the mesh alone)."""
+def _arch_integrals(line, s_b, end):
+    """``(W, M)``: the weight (N) between each buoy at ``s_b`` and ``end`` (m, either side) and its
+    moment about the buoy (N·m), both positive, by composite Gauss–Legendre (`ARCH_QUADRATURE`
+    pieces of `ARCH_POINTS` points each)."""
     x, weights = np.polynomial.legendre.leggauss(ARCH_POINTS)
-    ends, found = [], np.ones(s_b.shape, dtype=bool)
-    for side in (-1.0, 1.0):
-        w_b = line.weight_at(s_b)
-        end = s_b + side * half_lift / np.where(w_b > 0, w_b, np.inf)  # none where it floats
-        for _ in range(ARCH_NEWTON + 1):
-            end = np.clip(end, 0.0, line.L)
-            points = 0.5 * (s_b + end)[:, None] + 0.5 * (end - s_b)[:, None] * x
-            w = line.weight_at(points.ravel()).reshape(points.shape)
-            w_end = line.weight_at(end)
-            miss = 0.5 * np.abs(end - s_b) * (w @ weights) - half_lift
-            positive = np.all(w > 0, axis=1) & (w_end > 0)
-            end = end - side * miss / np.where(positive, w_end, 1.0)
-        found &= positive & (np.abs(miss) <= 1e-9 * half_lift)
-        ends.append(end)
-    return ends[0], ends[1], found
+    edges = s_b[:, None] + (end - s_b)[:, None] * np.linspace(0.0, 1.0, ARCH_QUADRATURE + 1)
+    half = 0.5 * np.diff(edges, axis=1)  # (n, pieces), signed
+    points = (edges[:, :-1] + half)[:, :, None] + half[:, :, None] * x  # (n, pieces, ARCH_POINTS)
+    w = line.weight_at(points.ravel()).reshape(points.shape)
+    dW = np.abs(half)[:, :, None] * weights * w
+    return dW.sum(axis=(1, 2)), (dW * np.abs(points - s_b[:, None, None])).sum(axis=(1, 2))
+
+
+def _half_arches(line, s_b, lift):
+    """``(low, high, found)``: the ends (m) of the arch each buoy at ``s_b`` lifts (N, ``lift``),
+    where the lifted line weighs the lift and its two sides reach the buoy's height alike: for a
+    shallow arch, ``H y'' = w`` from a tangent lift-off, equal moments of the two sides' weights
+    about the buoy (equal halves under a uniform weight). Newton on the two, from the uniform
+    weight's ends, at most `ARCH_NEWTON` steps, each end kept on the line; ``found`` where both
+    hold to 1e-9 of the lift (and of its moment) at the ends returned, under a positive weight
+    (else no arch: `arch_ends` leaves the mesh alone)."""
+    w_b = line.weight_at(s_b)
+    half = 0.5 * lift / np.where(w_b > 0, w_b, np.inf)  # none where the line floats there
+    low, high = s_b - half, s_b + half
+    for step in range(ARCH_NEWTON + 1):
+        low, high = np.clip(low, 0.0, line.L), np.clip(high, 0.0, line.L)
+        (W_a, M_a), (W_b, M_b) = _arch_integrals(line, s_b, low), _arch_integrals(line, s_b, high)
+        weight, moment = W_a + W_b - lift, M_a - M_b
+        w_a, w_z = line.weight_at(low), line.weight_at(high)
+        heavy = (w_a > 0) & (w_z > 0)
+        found = heavy & (low < s_b) & (s_b < high)
+        found &= (np.abs(weight) <= 1e-9 * lift) & (np.abs(moment) <= 1e-9 * lift * (high - low))
+        if step == ARCH_NEWTON or np.all(found | ~heavy):
+            break
+        move = heavy & ~found & (low < high)  # the 2 x 2 Newton step: its determinant w_a w_z (high - low)
+        span = np.where(move, high - low, 1.0)
+        low, high = (
+            low + np.where(move, ((high - s_b) * weight + moment) / (np.where(move, w_a, 1.0) * span), 0.0),
+            high + np.where(move, (moment - (s_b - low) * weight) / (np.where(move, w_z, 1.0) * span), 0.0),
+        )
+    return low, high, found
 
 
 def graded_nodes(line, z, n_elements, fixed, refinement=REFINEMENT, arches=True):

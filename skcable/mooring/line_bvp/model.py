@@ -150,7 +150,8 @@ def solve_line_bvp(
         n_elements=n_elements, fit_touchdown=fit_touchdown, rtol=rtol, max_iter=max_iter, terms=terms,
         options=options, time_limit=time_limit, **newton_options,
     )  # fmt: skip
-    solution = model.solve(span, dh)
+    solution = model._solution(span, dh)
+    warn_unresolved(solution)  # the caller's line named
     solution.model = None  # no model of the caller's: no warm start from it
     return solution
 
@@ -257,6 +258,12 @@ class LineBVP:
         ConvergenceError
             As `solve_line_bvp`.
         """
+        solution = self._solution(span, dh, start)
+        warn_unresolved(solution)  # the caller's line named
+        return solution
+
+    def _solution(self, span, dh, start=None) -> LineBVPSolution:
+        """`solve` but for its resolution warning (`solve_line_bvp` warns itself)."""
         checked = scene(
             span,
             dh,
@@ -276,7 +283,6 @@ class LineBVP:
             raise InputError("start", f"must be a solution of this LineBVP, got {type(start).__name__}")
         with outsized(**magnitudes(checked)):  # as in solve_line_bvp
             solution = solver.solve() if start is None else solver.solve_from(start)
-        warn_unresolved(solution)
         solution.model = self
         return solution
 
