@@ -14,6 +14,7 @@ import pytest
 from skcable import mooring
 from skcable.errors import InputError, ResolutionWarning
 from skcable.mooring import LineBVP, LineBVPSolution
+from skcable.mooring.line_bvp.space import solve_line_bvp_3d
 
 ROOT = Path(__file__).resolve().parents[2]
 SCENES = {
@@ -159,6 +160,35 @@ def test_a_mooring_of_bvp_lines_on_a_coarse_mesh_warns_from_its_equilibrium():
     assert all(Path(w.filename) == Path(__file__) for w in caught)
     tensions = [[line.tension_at_fairlead for line in eq.lines] for eq in (ours, closed.equilibrium(**push))]
     assert np.max(np.abs(np.subtract(*tensions)) / tensions[1]) > 1e-5
+
+
+def test_a_line_the_model_choice_solves_by_its_bvp_takes_the_elements_it_needs():
+    """The survey's scene 3:160 as a `mooring.Line`: a chain split at its 10.3 kN clump (joint 1),
+    a light rope, over a seabed 7.1 m below the anchor; it touches down between its ends, so
+    `line_in_plane` solves it by the line BVP. Its bend at the bottom has a radius of a few
+    centimetres: on the model's 64 elements H was 11.02 N (8 % low) and V_A 6e-4 off, on 256 still
+    1.6 % off, both flagged by the resolution check (`skcable.mooring.line_bvp.check.unresolved`).
+    The model now solves it again on four times the elements until the check passes (1024 here),
+    says so in its reason, and is within 1e-5 of the largest end force of the same line with the
+    chain whole and the clump a point load inside it (other joints, another mesh), by the line in
+    space on 1024 elements (measured 1.3e-6)."""
+    chain, rope = (1151.2050522936047, 342377713.3053049), (19.835188621190447, 10534704.169814138)
+    lengths = (24.145342086592702, 73.23715508631014 - 24.145342086592702, 341.53988038717597)
+    segments = [(lengths[0], *chain), (lengths[1], *chain), (lengths[2], *rope)]
+    line = mooring.Line(
+        [mooring.Segment(*seg) for seg in segments], [mooring.ClumpWeight(1, 10272.346177262758)]
+    )
+    span, dh, seabed = 399.88638259698047, 2.3202982852674046, -7.0821617336914935
+    solved = mooring.line_in_plane(line, span, dh, seabed=seabed)
+    assert solved.model == "bvp" and solved.reason.endswith("on 1024 elements, which resolve its bends")
+    whole = [(lengths[0] + lengths[1], *chain), (lengths[2], *rope)]
+    space = solve_line_bvp_3d(
+        (0.0, 0.0, 0.0), (span, 0.0, dh), whole, point_loads=[(lengths[0], 10272.346177262758)],
+        seabed=seabed, n_elements=1024,
+    )  # fmt: skip
+    want = np.array([space.force_on_anchor[0], -space.force_on_anchor[2], -space.force_on_fairlead[2]])
+    got = np.array([solved.H_A, solved.V_A, solved.V_B])
+    np.testing.assert_allclose(got, want, rtol=0, atol=1e-5 * np.abs(want).max())
 
 
 def test_the_nested_solves_retry_from_scratch_and_skip_a_failing_coarse_level():
