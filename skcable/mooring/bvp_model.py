@@ -200,7 +200,7 @@ def solve_bvp_line(line, span, dh, seabed, reason, slope=0.0):
         resolver = replace(resolver, n_elements=4 * resolver.n_elements)
         first = resolver.solve()
     if resolver.n_elements > ELEMENTS:
-        reason = f"{reason}; on {resolver.n_elements} elements, which resolve its bends"
+        reason = f"{reason}; on {resolver.n_elements} elements ({ELEMENTS} did not resolve it)"
     warn_unresolved(first, stacklevel=6)  # too coarse on `MOST_ELEMENTS` still: line_in_plane's caller named
     solution = BVPLineView(variant, first, resolver)
     key = ("bvp", reverse)
