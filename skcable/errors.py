@@ -11,8 +11,8 @@ that a unit slip would explain (an EA in MN, a strain beyond any wire's),
 tangent promises a quadratic one (a term's tangent is likely wrong), its subclass
 `TangentWarning` for a term whose tangent disagrees with a directional difference of its own
 residual (checked on a model's first solve), `ResolutionWarning` for an answer whose mesh does not
-resolve it (a line BVP's element that turns through a bend within itself), and `CacheWarning`
-for a cached study result computed by other code.
+resolve it (a line BVP's element that turns through a bend within itself, or whose weight varies
+within it), and `CacheWarning` for a cached study result computed by other code.
 """
 
 from __future__ import annotations
@@ -102,7 +102,9 @@ class TangentWarning(SlowConvergenceWarning):
 class ResolutionWarning(UserWarning):
     """An answer that converged and passed its checks on a mesh too coarse for it: its numbers
     carry a discretisation error beyond what its checks see (a line BVP whose element turns
-    through a bend within itself). ``argument`` names what resolves it (``n_elements``)."""
+    through a bend within itself, or whose weight varies within an element:
+    `skcable.mooring.line_bvp.check.unresolved`). ``argument`` names what resolves it
+    (``n_elements``)."""
 
     def __init__(self, argument: str, reason: str):
         self.argument = argument

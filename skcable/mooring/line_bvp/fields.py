@@ -30,8 +30,9 @@ pointwise ``|d(T t)/ds + q|`` inside the elements: not round-off but the discret
 
 **Resolution.** `element_turning` is the angle the tangent turns within each element (the kinks
 at nodes aside). An element that turns through more than a few tenths of a radian (or a short one
-through more) leaves the end forces off by a discretisation error that the residual above does
-not see (it holds to round-off on the coarse mesh): `LineFields.unresolved` says where
+through more), or a weight that varies within an element, leaves the end forces off by a
+discretisation error that the residual above does not see (it holds to round-off on the coarse
+mesh): `LineFields.unresolved` says where
 (`skcable.mooring.line_bvp.check.unresolved`, with its calibration), and the public solves warn
 it (`skcable.errors.ResolutionWarning`).
 """
@@ -247,7 +248,8 @@ class LineFields:
 
     def unresolved(self) -> str:
         """Why the mesh does not resolve the line, where an element turns through a bend within
-        it (`skcable.mooring.line_bvp.check.unresolved`), else ``""``."""
+        it or its weight varies within an element (`skcable.mooring.line_bvp.check.unresolved`),
+        else ``""``."""
         return unresolved(self)
 
     @cached_property
