@@ -7,7 +7,9 @@ quadrature misplaces more than `RESOLVED_WEIGHT` of a weight varying along it. T
 what it flags: the scenes of the differential survey (`line_bvp_planes.scenes`, the plane line
 without a slack stretch) solved by `skcable.mooring.solve_line_bvp` on ``--meshes`` elements, each
 against the same scene on ``--reference`` elements (its end forces' largest difference over the
-largest end force: the error), and whether the check flags it. The table is written between the
+largest end force: the error), and whether the check flags it; and each scene with
+``n_elements="auto"`` (`skcable.mooring.line_bvp.resolution`: more elements while the check flags
+the line), its error and the elements it took. The tables are written between the
 ``line-bvp-resolution`` markers of docs/bvp.md (atomically) with ``--write``; each solve is a row
 of ``benchmarks/out/line_bvp_resolution.csv``.
 
@@ -41,6 +43,7 @@ from skcable.mooring.line_bvp.check import (  # noqa: E402
     element_bends,
     unresolved,
 )
+from skcable.mooring.line_bvp.resolution import AUTO  # noqa: E402
 
 PAGE = ROOT / "docs" / "bvp.md"
 CSV = ROOT / "benchmarks" / "out" / "line_bvp_resolution.csv"
@@ -69,8 +72,9 @@ def solved(sc, n):
 
 
 def rows(seeds, count, meshes, reference, progress=False):
-    """One row per solve: seed, scene, elements, the error against ``reference`` elements, the
-    largest bend and whether the check flags it."""
+    """One row per solve: seed, scene, elements (``n``: a number of ``meshes``, or ``"auto"``), the
+    elements it took, the error against ``reference`` elements, the largest bend and whether the
+    check flags it."""
     out = []
     for seed in seeds:
         for k, sc in enumerate(scenes(seed, count)):
@@ -79,13 +83,14 @@ def rows(seeds, count, meshes, reference, progress=False):
                 continue
             want = end_forces(fine)
             scale = np.abs(want).max()
-            for n in meshes:
+            for n in [*meshes, AUTO]:
                 line = solved(sc, n)
                 if line is None:
                     continue
                 error = float(np.abs(end_forces(line) - want).max() / scale)
                 flagged, bend = bool(unresolved(line)), float(np.max(element_bends(line)[0]))
-                out.append(dict(seed=seed, scene=k, n=n, error=error, bend=bend, flagged=flagged))
+                row = dict(seed=seed, scene=k, n=n, taken=line.n_elements, error=error, bend=bend)
+                out.append({**row, "flagged": flagged})
             if progress:
                 print(f"{seed}:{k}", file=sys.stderr, flush=True)
     return out
@@ -97,7 +102,7 @@ def table(found, meshes) -> list[str]:
     more than each of `LEVELS`, how many are flagged."""
     body = []
     for n in [*meshes, "all"]:
-        mine = [r for r in found if n == "all" or r["n"] == n]
+        mine = [r for r in found if r["n"] == n or n == "all" and r["n"] != AUTO]
         quiet = [r["error"] for r in mine if not r["flagged"]]
         flagged = [r["error"] for r in mine if r["flagged"]]
         median = f"{np.median(flagged):.1e}" if flagged else "-"
@@ -112,12 +117,31 @@ def table(found, meshes) -> list[str]:
     return markdown_table(header, body)
 
 
+def auto_table(found) -> list[str]:
+    """The markdown table of the ``"auto"`` solves: how many took each number of elements, the
+    largest and median errors of those, and how many are off by more than each of `LEVELS`."""
+    auto = [r for r in found if r["n"] == AUTO]
+    body = []
+    for taken in sorted({r["taken"] for r in auto}):
+        errors = [r["error"] for r in auto if r["taken"] == taken]
+        cells = [taken, len(errors), sum(r["flagged"] for r in auto if r["taken"] == taken)]
+        cells += [f"{np.median(errors):.1e}", f"{max(errors):.1e}"]
+        cells += [sum(e > level for e in errors) for level in LEVELS]
+        body.append(cells)
+    header = ["elements taken (auto)", "solves", "flagged still", "median error", "largest error"]
+    return markdown_table(header + [f"off by more than {level:g}" for level in LEVELS], body)
+
+
 def read_rows(path=CSV) -> list[dict]:
     """The rows of a previous run's CSV (``--report``)."""
+
+    def n_of(text):
+        return text if text == AUTO else int(text)
+
     with path.open(newline="") as fh:
         return [
-            dict(seed=int(r["seed"]), scene=int(r["scene"]), n=int(r["n"]), error=float(r["error"]),
-                 bend=float(r["bend"]), flagged=r["flagged"] == "True")
+            dict(seed=int(r["seed"]), scene=int(r["scene"]), n=n_of(r["n"]), taken=int(r["taken"]),
+                 error=float(r["error"]), bend=float(r["bend"]), flagged=r["flagged"] == "True")
             for r in csv.DictReader(fh)
         ]  # fmt: skip
 
@@ -154,6 +178,11 @@ def main(argv=None):
         f"{RESOLVED_WEIGHT:g} of the line's weight (`ResolutionWarning`).",
         "",
         *table(found, args.meshes),
+        "",
+        f'The same scenes with `n_elements="auto"` (64 elements, four times as many while the check '
+        f"flags the line, up to 1024), against {args.reference}:",
+        "",
+        *auto_table(found),
     ]
     print("\n".join(lines))
     if args.write:

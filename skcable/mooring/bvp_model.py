@@ -7,9 +7,9 @@ signature only, on the line as seen from its lower end (`Line.variant`): the seg
 ``(length, w, EA)``, the attachments between the ends as point loads at their joints' arc
 lengths, the seabed's height relative to the lower end and the friction. An attachment at an
 end joint is carried by the support there and added to its vertical force, as in
-`skcable.mooring.Line`. The mesh is the model's: `ELEMENTS`, four times as many while a solve
-does not resolve the line (`skcable.mooring.line_bvp.check.unresolved`), up to `MOST_ELEMENTS`;
-the reason says where it took more, and a line still unresolved there warns.
+`skcable.mooring.Line`. The mesh is the one the line needs (``n_elements="auto"``,
+`skcable.mooring.line_bvp.resolution`); the reason says where that is more than the first, and a
+line still unresolved on the most warns.
 
 `BVPLineView` gives the solution the line-solution protocol (`skcable.results`, and the
 ``x_of_s``, ``y_of_s``, ``T_of_s``, ``tensions()`` a system reads). Its stiffness is taken by
@@ -31,6 +31,7 @@ from skcable import _plausible
 from skcable.errors import InputError
 from skcable.mooring.jacobians import of_own
 from skcable.mooring.line_bvp.check import warn_unresolved
+from skcable.mooring.line_bvp.resolution import AUTO, FIRST
 from skcable.mooring.plane_line import PlaneLine, on_seabed_tolerance
 from skcable.mooring.segments.solution import segment_table
 
@@ -38,10 +39,6 @@ __all__ = ["BVPLineView", "Resolver", "solve_bvp_line"]
 
 #: Central-difference step of the BVP line's stiffness, relative to the chord.
 STEP = 1e-4
-#: Elements of the line's BVP, and the most it takes: where a solve does not resolve the line
-#: (`skcable.mooring.line_bvp.check.unresolved`), it is solved again on four times as many, up to
-#: these (the model's ``reason`` says so; on these still, a `skcable.errors.ResolutionWarning`).
-ELEMENTS, MOST_ELEMENTS = 64, 1024
 
 
 class BVPLineView:
@@ -151,8 +148,8 @@ class Resolver:
     loads: list
     friction: float
     P_end: tuple
-    #: elements of every solve (more where `ELEMENTS` do not resolve the line)
-    n_elements: int = ELEMENTS
+    #: elements of every solve: the ones the first needs (``"auto"``), then that number
+    n_elements: int | str = AUTO
 
     def solve(self, d_span=0.0, d_low=0.0, d_high=0.0):
         from skcable.mooring import solve_line_bvp
@@ -196,12 +193,10 @@ def solve_bvp_line(line, span, dh, seabed, reason, slope=0.0):
     P_end = tuple(float(p) for p in variant.arrays.P_end)
     resolver = Resolver(float(span), float(height), low, float(slope_o), segments, loads, friction, P_end)
     first = resolver.solve()
-    while first.unresolved() and resolver.n_elements < MOST_ELEMENTS:  # the mesh it needs (`ELEMENTS`)
-        resolver = replace(resolver, n_elements=4 * resolver.n_elements)
-        first = resolver.solve()
-    if resolver.n_elements > ELEMENTS:
-        reason = f"{reason}; on {resolver.n_elements} elements ({ELEMENTS} did not resolve it)"
-    warn_unresolved(first, stacklevel=6)  # too coarse on `MOST_ELEMENTS` still: line_in_plane's caller named
+    resolver = replace(resolver, n_elements=first.n_elements)  # the stiffness's solves on its mesh
+    if first.n_elements > FIRST:
+        reason = f"{reason}; on {first.n_elements} elements ({FIRST} did not resolve it)"
+    warn_unresolved(first, stacklevel=6)  # too coarse on `MOST` still: line_in_plane's caller named
     solution = BVPLineView(variant, first, resolver)
     key = ("bvp", reverse)
     return PlaneLine(

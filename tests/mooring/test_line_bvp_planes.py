@@ -48,8 +48,8 @@ import numpy as np
 import pytest
 
 from skcable import _plausible
-from skcable.errors import ConvergenceError, ResolutionWarning
-from skcable.mooring import LineBVPSolution, solve_line_bvp
+from skcable.errors import ConvergenceError, InputError, ResolutionWarning
+from skcable.mooring import LineBVP, LineBVPSolution, solve_line_bvp
 from skcable.mooring.bathymetry import Plane
 from skcable.mooring.line_bvp.driver import LineBVPSolver
 from skcable.mooring.line_bvp.inputs import scene
@@ -326,7 +326,8 @@ def test_a_mesh_that_does_not_resolve_a_bend_warns():
     N; the 64-element lines give 8333.6 N): an element of 1.4 m at the bend turns 0.89 rad within
     itself, and both warn (`skcable.errors.ResolutionWarning`, naming ``n_elements``). On 256
     elements both are within 1e-5 of the reference (measured 1.9e-6) and quiet (this project's
-    pytest turns the warning into an error). A trial solve (inside a mooring system's equilibrium,
+    pytest turns the warning into an error); ``n_elements="auto"`` takes those 256
+    (`skcable.mooring.line_bvp.resolution`). A trial solve (inside a mooring system's equilibrium,
     `skcable._plausible.quiet`) does not warn."""
     reference = space_forces(solvers(HANGING_TO_CLUMP._replace(n_elements=1024))[1]())
     scale = np.abs(reference).max()
@@ -339,10 +340,44 @@ def test_a_mesh_that_does_not_resolve_a_bend_warns():
         solvers(HANGING_TO_CLUMP._replace(n_elements=256)), (plane_forces, space_forces), strict=True
     ):
         np.testing.assert_allclose(forces(solve()), reference, rtol=0, atol=1e-5 * scale)
+    for solve, forces in zip(solvers(HANGING_TO_CLUMP._replace(n_elements="auto")), mapped, strict=True):
+        auto = solve()  # quiet: 64 do not resolve the line, 256 do
+        assert auto.n_elements == 256
+        np.testing.assert_allclose(forces(auto), reference, rtol=0, atol=1e-5 * scale)
     with warnings.catch_warnings():
         warnings.simplefilter("error")
         with _plausible.quiet():
             solvers(HANGING_TO_CLUMP)[1]()
+
+
+def test_auto_elements_keep_the_coarser_line_where_a_refined_solve_fails(monkeypatch):
+    """``n_elements="auto"`` on scene 3:160 (`HANGING_TO_CLUMP`), whose 64 elements do not resolve
+    its bend: where the solve on 256 fails, its `ConvergenceError` keeps the line on 64 elements
+    (``last``: converged and checked, the same end forces as a solve asked for 64, and flagged by
+    the resolution check) and says so. Anything but a whole number or ``"auto"`` is refused,
+    naming ``n_elements``."""
+    sc = HANGING_TO_CLUMP
+    segments = list(sc.segments)
+    bed = dict(seabed=sc.seabed[0], point_loads=sc.point_loads)
+    model = LineBVP(segments, n_elements="auto", **bed)
+    solve_on = model._on
+
+    def fails_on_more(span, dh, start, n_elements, time_limit):
+        if n_elements > 64:
+            raise ConvergenceError(f"no line on {n_elements} elements", [1.0])
+        return solve_on(span, dh, start, n_elements, time_limit)
+
+    monkeypatch.setattr(model, "_on", fails_on_more)
+    with pytest.raises(ConvergenceError, match="on 256 elements: 64 did not resolve") as failed:
+        model.solve(sc.span, sc.dh)
+    kept = failed.value.last
+    assert kept.n_elements == 64 and kept.unresolved()
+    with pytest.warns(ResolutionWarning):
+        coarse = solve_line_bvp(sc.span, sc.dh, segments, n_elements=64, **bed)
+    np.testing.assert_array_equal(plane_forces(kept), plane_forces(coarse))
+    for bad in ("fine", 0, 2.5):
+        with pytest.raises(InputError, match="n_elements"):
+            LineBVP(segments, n_elements=bad)
 
 
 def test_a_mesh_that_does_not_resolve_a_varying_weight_warns():

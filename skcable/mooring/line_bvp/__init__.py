@@ -18,7 +18,10 @@ on a seabed of any shape with Coulomb friction. One concern per module:
 - `fitting`: the touchdown and the landing from the balance of forces, in the plane and in
   space;
 - `check`: the equilibrium residual of a solution by scikit-fem's own assembly, the refusal of a
-  line with no equilibrium in tension and the diagnosis of a failure with friction;
+  line with no equilibrium in tension, the diagnosis of a failure with friction and whether the
+  mesh resolves the line;
+- `resolution`: ``n_elements="auto"``, the elements a line needs (more while `check` says the
+  mesh does not resolve it), the plane line's and the line in space's;
 - `fields`: what the solutions in the plane and in space share: the state, tension, tangent,
   weight, segment end tensions and samples at any arc length (`LineFields`);
 - `problem`: one discrete line in the plane — its properties, the scales, the point loads at any
@@ -40,7 +43,7 @@ on a seabed of any shape with Coulomb friction. One concern per module:
   of its ends (the plane line by the line in space's strategy, and the other way).
 
 Data flow one way: ``inputs → driver → (mesh, start, problem ⇄ contact) → iterate → solution
-(fields, pointwise)``; ``model → fallback → (driver, space.driver)``.
+(fields, pointwise)``; ``model → fallback → (driver, space.driver)``, ``model → resolution → check``.
 """
 
 from skcable.mooring.line_bvp.driver import LineBVPSolver

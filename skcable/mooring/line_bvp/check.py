@@ -355,12 +355,12 @@ def unresolved_weight(problem) -> str:
 
 def warn_unresolved(solution, stacklevel: int = 3) -> None:
     """Warn (`skcable.errors.ResolutionWarning`, naming ``n_elements``) where the mesh does not
-    resolve ``solution`` (`unresolved`), from the outermost public call only
-    (`skcable._plausible.outermost`: the solves inside a mooring system's equilibrium or a design
-    are trial states, not answers); ``stacklevel`` as `warnings.warn`'s, counted from here (3:
-    the line that called the public solve which calls this)."""
+    resolve ``solution`` (its ``unresolved()``: `unresolved`, computed once), from the outermost
+    public call only (`skcable._plausible.outermost`: the solves inside a mooring system's
+    equilibrium or a design are trial states, not answers); ``stacklevel`` as `warnings.warn`'s,
+    counted from here (3: the line that called the public solve which calls this)."""
     if not _plausible.outermost():
         return
-    why = unresolved(solution)
+    why = solution.unresolved()
     if why:
         warnings.warn(ResolutionWarning("n_elements", why), stacklevel=stacklevel)

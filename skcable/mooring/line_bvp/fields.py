@@ -73,6 +73,10 @@ class LineFields:
     in_contact: np.ndarray
     #: the public function that solves it, for messages
     solver = "a line BVP"
+    #: the ``n_elements`` of the solve that gave it (with ``"auto"``, the number it took:
+    #: `skcable.mooring.line_bvp.resolution`; the mesh holds them and the nodes fitted at the
+    #: touchdowns), None on a failure's ``last``
+    n_elements: int | None = None
 
     # --- where the line meets the seabed -------------------------------------------------------
     @property
@@ -249,7 +253,11 @@ class LineFields:
     def unresolved(self) -> str:
         """Why the mesh does not resolve the line, where an element turns through a bend within
         it or its weight varies within an element (`skcable.mooring.line_bvp.check.unresolved`),
-        else ``""``."""
+        else ``""``; computed once."""
+        return self._unresolved
+
+    @cached_property
+    def _unresolved(self) -> str:
         return unresolved(self)
 
     @cached_property

@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+from functools import partial
+
 from skcable import _plausible
 from skcable._checks import nonnegative, positive, scalar, whole
 from skcable.cable._extreme import outsized
@@ -17,6 +19,7 @@ from skcable.mooring.line_bvp.inputs import (
     scene,
     terms_of,
 )
+from skcable.mooring.line_bvp.resolution import elements_option, solve_resolved
 from skcable.mooring.line_bvp.solution import LineBVPSolution
 
 __all__ = ["LineBVP", "solve_line_bvp"]
@@ -31,7 +34,7 @@ def solve_line_bvp(
     seabed_slope=None,
     friction: float = 0.0,
     point_loads=(),
-    n_elements: int = 64,
+    n_elements: int | str = 64,
     fit_touchdown: int = 3,
     rtol: float | None = None,
     max_iter: int | None = None,
@@ -65,9 +68,12 @@ def solve_line_bvp(
     point_loads : sequence of (s, P)
         Downward force ``P`` (N; negative for a buoy) at arc length ``s``
         from A (a mesh node is put there).
-    n_elements : int
+    n_elements : int or "auto"
         Elements over the whole line, shared among segments by length (at
-        least one each).
+        least one each); ``"auto"``: the elements the line needs, 64 then four times as many
+        while the mesh does not resolve the line, up to 1024
+        (`skcable.mooring.line_bvp.resolution`; the solution's ``n_elements`` says how many).
+        A mesh that does not resolve the line warns (`skcable.errors.ResolutionWarning`).
     fit_touchdown : int
         Passes of touchdown fitting (and, when > 0, meshes graded by the
         line's curvature: `skcable.mooring.line_bvp.mesh`): after a solve that touches the seabed,
@@ -194,7 +200,7 @@ class LineBVP:
         seabed_slope=None,
         friction: float = 0.0,
         point_loads=(),
-        n_elements: int = 64,
+        n_elements: int | str = 64,
         fit_touchdown: int = 3,
         rtol: float | None = None,
         max_iter: int | None = None,
@@ -214,7 +220,7 @@ class LineBVP:
         if self.friction > 0 and seabed is None:
             raise InputError("friction", "applies to a line on the seabed: give seabed= as well")
         self.point_loads = point_loads_of(point_loads, self.length)
-        self.n_elements = whole("n_elements", n_elements, 1)
+        self.n_elements = elements_option(n_elements)
         self.fit_touchdown = whole("fit_touchdown", fit_touchdown, 0, 10)
         #: the Newton options of every solve (`skcable.fe.NewtonOptions`)
         self.options = newton_options_of(options, rtol=rtol, max_iter=max_iter, **newton_options)
@@ -264,6 +270,16 @@ class LineBVP:
 
     def _solution(self, span, dh, start=None) -> LineBVPSolution:
         """`solve` but for its resolution warning (`solve_line_bvp` warns itself)."""
+        if start is not None and not (isinstance(start, LineBVPSolution) and start.model is self):
+            raise InputError("start", f"must be a solution of this LineBVP, got {type(start).__name__}")
+        first = None if start is None else start.n_elements
+        on = partial(self._on, span, dh, start)
+        solution = solve_resolved(on, self.n_elements, self.time_limit, first)
+        solution.model = self
+        return solution
+
+    def _on(self, span, dh, start, n_elements: int, time_limit: float) -> LineBVPSolution:
+        """The line on ``n_elements`` within ``time_limit`` (s), from ``start`` where given."""
         checked = scene(
             span,
             dh,
@@ -272,24 +288,20 @@ class LineBVP:
             seabed_slope=self.seabed_slope,
             friction=self.friction,
             point_loads=self.point_loads,
-            n_elements=self.n_elements,
+            n_elements=n_elements,
             fit_touchdown=self.fit_touchdown,
             options=self.options,
             terms=self.terms,
-            time_limit=self.time_limit,
+            time_limit=time_limit,
         )
         solver = LineBVPSolver(checked, fallback=space_for_plane)
-        if start is not None and not (isinstance(start, LineBVPSolution) and start.model is self):
-            raise InputError("start", f"must be a solution of this LineBVP, got {type(start).__name__}")
         with outsized(**magnitudes(checked)):  # as in solve_line_bvp
-            solution = solver.solve() if start is None else solver.solve_from(start)
-        solution.model = self
-        return solution
+            return solver.solve() if start is None else solver.solve_from(start)
 
     def __repr__(self):
         return (
             f"LineBVP({len(self.segments)} segments, length={self.length:g}, seabed={self.seabed!r}, "
-            f"friction={self.friction:g}, n_elements={self.n_elements}"
+            f"friction={self.friction:g}, n_elements={self.n_elements!r}"
             + (f", terms={list(self.terms)!r}" if self.terms else "")
             + ")"
         )

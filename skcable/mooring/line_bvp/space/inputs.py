@@ -28,6 +28,7 @@ from skcable.mooring.line_bvp.inputs import (
     segments_of,
     terms_of,
 )
+from skcable.mooring.line_bvp.resolution import elements_option
 from skcable.mooring.line_bvp.space.vertical_plane import plane_scene
 
 __all__ = [
@@ -133,7 +134,7 @@ def checked_options(segments, options: dict) -> dict:
         current=current,
         rho_water=scalar("rho_water", positive("rho_water", options["rho_water"])),
         terms=terms_of(options["terms"]),
-        n_elements=whole("n_elements", options["n_elements"], 1),
+        n_elements=elements_option(options["n_elements"]),
         fit_touchdown=whole("fit_touchdown", options["fit_touchdown"], 0, 10),
         mesh=mesh_of(options.get("mesh", "graded")),
         options=newton_options_of(

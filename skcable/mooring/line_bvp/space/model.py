@@ -8,11 +8,12 @@ from skcable.errors import InputError
 from skcable.fe import NewtonOptions
 from skcable.mooring.line_bvp.check import warn_unresolved
 from skcable.mooring.line_bvp.fallback import plane_for_space
+from skcable.mooring.line_bvp.resolution import solve_resolved
 from skcable.mooring.line_bvp.space.driver import LineBVP3DSolver
 from skcable.mooring.line_bvp.space.inputs import checked_options, scene
 from skcable.mooring.line_bvp.space.solution import LineBVP3DSolution
 
-__all__ = ["LineBVP3D", "solve_line_bvp_3d"]
+__all__ = ["LineBVP3D", "solve_line_bvp_3d", "solved"]
 
 #: the Newton options `LineBVP3D` takes as keywords (`skcable.fe.NewtonOptions`'s fields)
 NEWTON_FIELDS = frozenset(f.name for f in fields(NewtonOptions))
@@ -47,7 +48,7 @@ def solve_line_bvp_3d(
     current=None,
     rho_water: float = 1025.0,
     terms=(),
-    n_elements: int = 64,
+    n_elements: int | str = 64,
     fit_touchdown: int = 3,
     mesh: str = "graded",
     rtol: float | None = None,
@@ -86,8 +87,12 @@ def solve_line_bvp_3d(
     terms : sequence of CableTerm
         More distributed loads (`skcable.bvp.terms`: `Buoyancy` for a line given its dry
         weight, the analyst's own).
-    n_elements : int
-        Elements over the line, shared among segments by length (at least one each).
+    n_elements : int or "auto"
+        Elements over the line, shared among segments by length (at least one each);
+        ``"auto"``: the elements the line needs, 64 then four times as many while the mesh does
+        not resolve the line, up to 1024 (`skcable.mooring.line_bvp.resolution`; the solution's
+        ``n_elements`` says how many). A mesh that does not resolve the line warns
+        (`skcable.errors.ResolutionWarning`).
     fit_touchdown : int
         Passes putting a node at the touchdown and the landing (0: nodal contact only, on the
         uniform mesh).
@@ -151,10 +156,22 @@ def solve_line_bvp_3d(
         fit_touchdown=fit_touchdown, mesh=mesh, rtol=rtol, max_iter=max_iter, time_limit=time_limit,
         options=options, newton_options=newton_options,
     )  # fmt: skip
-    checked = scene(anchor, fairlead, checked_options(segments, options))
-    solution = LineBVP3DSolver(checked, plane_for_space).solve()
+    solution = solved(anchor, fairlead, checked_options(segments, options))
     warn_unresolved(solution)
     return solution
+
+
+def solved(anchor, fairlead, checked: dict, start: LineBVP3DSolution | None = None) -> LineBVP3DSolution:
+    """The line between ``anchor`` and ``fairlead`` (m) of the `checked_options` ``checked``, on
+    its ``n_elements`` or the ones it needs (`skcable.mooring.line_bvp.resolution`), from
+    ``start`` where given."""
+
+    def on(n_elements: int, time_limit: float) -> LineBVP3DSolution:
+        at = scene(anchor, fairlead, {**checked, "n_elements": n_elements, "time_limit": time_limit})
+        return LineBVP3DSolver(at, plane_for_space).solve(start)
+
+    first = None if start is None else start.n_elements
+    return solve_resolved(on, checked["n_elements"], checked["time_limit"], first)
 
 
 class LineBVP3D:
@@ -202,7 +219,7 @@ class LineBVP3D:
         """
         if start is not None and not (isinstance(start, LineBVP3DSolution) and start.model is self):
             raise InputError("start", f"must be a solution of this LineBVP3D, got {type(start).__name__}")
-        solution = LineBVP3DSolver(scene(anchor, fairlead, self.checked), plane_for_space).solve(start)
+        solution = solved(anchor, fairlead, self.checked, start)
         warn_unresolved(solution)
         solution.model = self
         return solution
@@ -211,6 +228,6 @@ class LineBVP3D:
         o = self.options
         return (
             f"LineBVP3D({len(self.segments)} segments, length={self.length:g} m, seabed={o['seabed']!r}, "
-            f"friction={o['friction']:g}, current={o['current']!r}, n_elements={o['n_elements']}, "
+            f"friction={o['friction']:g}, current={o['current']!r}, n_elements={o['n_elements']!r}, "
             f"mesh={o['mesh']!r})"
         )

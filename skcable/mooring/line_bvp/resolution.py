@@ -1,0 +1,88 @@
+"""The elements a line needs: the ``n_elements="auto"`` of both line BVPs.
+
+A solve on a mesh too coarse for its line converges all the same: its discrete equations hold to
+round-off, and its end forces are off by the discretisation's error, which no residual sees.
+`skcable.mooring.line_bvp.check.unresolved` says where a converged line's mesh misses a bend or a
+weight varying along it (calibrated on the differential survey's scenes against 1024 elements:
+`benchmarks/line_bvp_resolution.py`, its table in docs/bvp.md). With ``n_elements="auto"``
+(`skcable.mooring.solve_line_bvp`, `skcable.mooring.LineBVP`, `solve_line_bvp_3d`, `LineBVP3D`)
+the line is solved on `FIRST` elements, then, while the check flags it, on `GROWTH` times as
+many, up to `MOST` (each solve as the first: from scratch, or from a warm start's line); where
+`MOST` do not resolve it either, the public solve warns (`skcable.errors.ResolutionWarning`), as
+it does on a number of elements the caller gave. The solution's ``n_elements`` is the number the
+solve took.
+
+The whole search counts against the ``time_limit`` of one solve: each refined solve gets what is
+left. A refined solve that fails raises its `ConvergenceError`, whose ``last`` is then the coarser
+line that converged and passed its checks (not resolved): the message says on how many elements.
+"""
+
+from __future__ import annotations
+
+import time
+from collections.abc import Callable
+from typing import Literal, TypeVar
+
+from skcable._checks import whole
+from skcable.errors import ConvergenceError, InputError
+from skcable.mooring.line_bvp.fields import LineFields
+
+__all__ = ["AUTO", "FIRST", "GROWTH", "MOST", "elements_option", "solve_resolved"]
+
+#: the ``n_elements`` that asks for the elements the line needs
+AUTO: Literal["auto"] = "auto"
+#: the elements of the first solve, the growth of the next ones and the most ``"auto"`` takes
+FIRST, GROWTH, MOST = 64, 4, 1024
+
+Solution = TypeVar("Solution", bound=LineFields)
+
+
+def elements_option(n_elements) -> int | Literal["auto"]:
+    """``n_elements`` checked: a whole number of elements (at least 1), or ``"auto"``."""
+    if isinstance(n_elements, str):
+        if n_elements != AUTO:
+            raise InputError("n_elements", f"must be a whole number or 'auto', got {n_elements!r}")
+        return AUTO
+    return int(whole("n_elements", n_elements, 1))
+
+
+def solve_resolved(
+    solve: Callable[[int, float], Solution],
+    n_elements: int | Literal["auto"],
+    time_limit: float,
+    first: int | None = None,
+) -> Solution:
+    """The line ``solve(n, seconds)`` gives on ``n`` elements within ``seconds``: on ``n_elements``
+    (a number), or on the elements it needs (``"auto"``, module docstring), from ``first`` (by
+    default `FIRST`; a warm start's count). The solution's ``n_elements`` says how many it took.
+
+    Raises
+    ------
+    ConvergenceError
+        The solve's; with ``"auto"``, a refined solve's (its ``last`` the coarser line, converged
+        and checked), or the ``time_limit`` spent before the line was resolved (``last`` the same).
+    """
+    if n_elements != AUTO:
+        solution = solve(int(n_elements), time_limit)
+        solution.n_elements = int(n_elements)
+        return solution
+    clock, n = time.perf_counter(), FIRST if first is None else first
+    solution = solve(n, time_limit)
+    solution.n_elements = n
+    while n < MOST and solution.unresolved():
+        coarser, n = solution, min(GROWTH * n, MOST)
+        left = time_limit - (time.perf_counter() - clock)
+        try:
+            if not left > 0:
+                raise ConvergenceError(f"time_limit = {time_limit:g} s spent", [])
+            solution = solve(n, left)
+        except ConvergenceError as failed:
+            failed.last = coarser
+            failed.args = (
+                f"{failed.args[0]} (n_elements='auto', on {n} elements: {coarser.n_elements} did not "
+                f"resolve the line); error.last: the line on {coarser.n_elements} elements, converged "
+                "and checked, not resolved",
+            )
+            raise
+        solution.n_elements = n
+    return solution
