@@ -140,8 +140,9 @@ def read_rows(path=CSV) -> list[dict]:
 
     with path.open(newline="") as fh:
         return [
-            dict(seed=int(r["seed"]), scene=int(r["scene"]), n=n_of(r["n"]), taken=int(r["taken"]),
-                 error=float(r["error"]), bend=float(r["bend"]), flagged=r["flagged"] == "True")
+            dict(seed=int(r["seed"]), scene=int(r["scene"]), n=n_of(r["n"]),
+                 taken=int(r.get("taken") or r["n"]), error=float(r["error"]), bend=float(r["bend"]),
+                 flagged=r["flagged"] == "True")
             for r in csv.DictReader(fh)
         ]  # fmt: skip
 

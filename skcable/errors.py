@@ -51,7 +51,8 @@ class ConvergenceError(RuntimeError):
     last : object or None
         The solver's last iterate, where it has one (what the failed solve reached); for a
         search that keeps what converged, its best point (a line BVP: its solution on the
-        finest mesh reached, not checked).
+        finest mesh reached, not checked; with ``n_elements="auto"``, where a refined solve
+        fails, the coarser line, checked but not resolved).
     attempts : list of list of float
         The history of every attempt of a solve that tried more than one from its start (a
         damped Newton, then full steps: `skcable.fe.newton`'s ``full_steps``), in the order

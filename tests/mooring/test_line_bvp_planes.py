@@ -53,7 +53,8 @@ from skcable.mooring import LineBVP, LineBVPSolution, solve_line_bvp
 from skcable.mooring.bathymetry import Plane
 from skcable.mooring.line_bvp.driver import LineBVPSolver
 from skcable.mooring.line_bvp.inputs import scene
-from skcable.mooring.line_bvp.space import LineBVP3DSolution, solve_line_bvp_3d
+from skcable.mooring.line_bvp.resolution import solve_resolved
+from skcable.mooring.line_bvp.space import LineBVP3D, LineBVP3DSolution, solve_line_bvp_3d
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[2] / "benchmarks"))
 import line_bvp_planes as oracle_planes  # noqa: E402  (the survey's scenes, the oracle's input)
@@ -350,34 +351,53 @@ def test_a_mesh_that_does_not_resolve_a_bend_warns():
             solvers(HANGING_TO_CLUMP)[1]()
 
 
-def test_auto_elements_keep_the_coarser_line_where_a_refined_solve_fails(monkeypatch):
-    """``n_elements="auto"`` on scene 3:160 (`HANGING_TO_CLUMP`), whose 64 elements do not resolve
-    its bend: where the solve on 256 fails, its `ConvergenceError` keeps the line on 64 elements
-    (``last``: converged and checked, the same end forces as a solve asked for 64, and flagged by
-    the resolution check) and says so. Anything but a whole number or ``"auto"`` is refused,
-    naming ``n_elements``."""
+def test_auto_elements_keep_the_coarser_line_where_a_refined_solve_fails():
+    """``n_elements="auto"`` (`solve_resolved`) on scene 3:160 (`HANGING_TO_CLUMP`), whose 64
+    elements do not resolve its bend: where the solve on 256 fails, or no time is left for it, the
+    `ConvergenceError` keeps the line on 64 elements (``last``: converged and checked, the end
+    forces of a solve asked for 64, flagged by the resolution check) and says so. Anything but a
+    whole number or ``"auto"`` is refused, naming ``n_elements``."""
     sc = HANGING_TO_CLUMP
-    segments = list(sc.segments)
-    bed = dict(seabed=sc.seabed[0], point_loads=sc.point_loads)
-    model = LineBVP(segments, n_elements="auto", **bed)
-    solve_on = model._on
+    segments, bed = list(sc.segments), dict(seabed=sc.seabed[0], point_loads=sc.point_loads)
 
-    def fails_on_more(span, dh, start, n_elements, time_limit):
-        if n_elements > 64:
-            raise ConvergenceError(f"no line on {n_elements} elements", [1.0])
-        return solve_on(span, dh, start, n_elements, time_limit)
+    def on_64_only(n, seconds):
+        if n > 64:
+            raise ConvergenceError(f"no line on {n} elements", [1.0])
+        with _plausible.quiet():
+            return solve_line_bvp(sc.span, sc.dh, segments, n_elements=n, time_limit=seconds, **bed)
 
-    monkeypatch.setattr(model, "_on", fails_on_more)
-    with pytest.raises(ConvergenceError, match="on 256 elements: 64 did not resolve") as failed:
-        model.solve(sc.span, sc.dh)
+    with pytest.warns(ResolutionWarning):
+        coarse = plane_forces(solve_line_bvp(sc.span, sc.dh, segments, n_elements=64, **bed))
+    with pytest.raises(ConvergenceError, match="on 256 elements, .* after 64 did not resolve") as failed:
+        solve_resolved(on_64_only, "auto", 60.0)
     kept = failed.value.last
     assert kept.n_elements == 64 and kept.unresolved()
-    with pytest.warns(ResolutionWarning):
-        coarse = solve_line_bvp(sc.span, sc.dh, segments, n_elements=64, **bed)
-    np.testing.assert_array_equal(plane_forces(kept), plane_forces(coarse))
-    for bad in ("fine", 0, 2.5):
+    np.testing.assert_array_equal(plane_forces(kept), coarse)
+    with pytest.raises(ConvergenceError, match="no time left for more elements") as failed:
+        solve_resolved(lambda n, seconds: on_64_only(n, 60.0 if n == 64 else seconds), "auto", 1e-9)
+    assert failed.value.history == failed.value.last.history  # the coarser line's
+    np.testing.assert_array_equal(plane_forces(failed.value.last), coarse)
+    for bad in ("fine", "AUTO", 0, 2.5):
         with pytest.raises(InputError, match="n_elements"):
             LineBVP(segments, n_elements=bad)
+
+
+def test_auto_elements_of_a_warm_start_are_those_from_scratch():
+    """A warm start of ``n_elements="auto"`` chooses its elements afresh, from 64, as a solve from
+    scratch does: the line in space of scene 3:160 (`HANGING_TO_CLUMP`) takes 256 at its ends; 1 m
+    farther out, from scratch and from that line, it takes 64, and the two give the same end forces
+    to round-off (the meshes are the ends', `skcable.mooring.line_bvp.space.driver`; measured
+    equal)."""
+    sc = HANGING_TO_CLUMP
+    seabed = Plane(sc.seabed[0], (sc.seabed[1], 0.0))
+    model = LineBVP3D(list(sc.segments), point_loads=sc.point_loads, seabed=seabed, n_elements="auto")
+    anchor, fairlead = np.zeros(3), np.array([sc.span, 0.0, sc.dh])
+    first = model.solve(anchor, fairlead)
+    farther = fairlead + (1.0, 0.0, 0.0)
+    warm, cold = model.solve(anchor, farther, start=first), model.solve(anchor, farther)
+    assert (first.n_elements, warm.n_elements, cold.n_elements) == (256, 64, 64)
+    scale = np.abs(space_forces(cold)).max()
+    np.testing.assert_allclose(space_forces(warm), space_forces(cold), rtol=0, atol=1e-12 * scale)
 
 
 def test_a_mesh_that_does_not_resolve_a_varying_weight_warns():

@@ -75,7 +75,7 @@ class LineFields:
     solver = "a line BVP"
     #: the ``n_elements`` of the solve that gave it (with ``"auto"``, the number it took:
     #: `skcable.mooring.line_bvp.resolution`; the mesh holds them and the nodes fitted at the
-    #: touchdowns), None on a failure's ``last``
+    #: touchdowns); None on a failure's ``last`` but for the coarser line ``"auto"`` keeps
     n_elements: int | None = None
 
     # --- where the line meets the seabed -------------------------------------------------------

@@ -141,7 +141,9 @@ def solve_line_bvp(
         of a slack stretch not found; the discrete line in compression (its
         bends not resolved by the mesh: the message says so, and more ``n_elements`` solve it).
         Its ``last`` keeps what converged: the `LineBVPSolution` on the finest mesh reached (of
-        the nested levels and grading passes, not checked), None where no solve converged.
+        the nested levels and grading passes, not checked), None where no solve converged; with
+        ``n_elements="auto"``, where a refined solve fails, the coarser line (checked, not
+        resolved).
 
     Notes
     -----
@@ -272,9 +274,7 @@ class LineBVP:
         """`solve` but for its resolution warning (`solve_line_bvp` warns itself)."""
         if start is not None and not (isinstance(start, LineBVPSolution) and start.model is self):
             raise InputError("start", f"must be a solution of this LineBVP, got {type(start).__name__}")
-        first = None if start is None else start.n_elements
-        on = partial(self._on, span, dh, start)
-        solution = solve_resolved(on, self.n_elements, self.time_limit, first)
+        solution = solve_resolved(partial(self._on, span, dh, start), self.n_elements, self.time_limit)
         solution.model = self
         return solution
 

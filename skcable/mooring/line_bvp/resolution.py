@@ -7,8 +7,9 @@ weight varying along it (calibrated on the differential survey's scenes against 
 `benchmarks/line_bvp_resolution.py`, its table in docs/bvp.md). With ``n_elements="auto"``
 (`skcable.mooring.solve_line_bvp`, `skcable.mooring.LineBVP`, `solve_line_bvp_3d`, `LineBVP3D`)
 the line is solved on `FIRST` elements, then, while the check flags it, on `GROWTH` times as
-many, up to `MOST` (each solve as the first: from scratch, or from a warm start's line); where
-`MOST` do not resolve it either, the public solve warns (`skcable.errors.ResolutionWarning`), as
+many, up to `MOST` (each solve as the first: from scratch, or from a warm start's line, which
+starts from `FIRST` too: the elements are the ends' to choose, not the path's); where `MOST` do
+not resolve it either, the public solve warns (`skcable.errors.ResolutionWarning`), as
 it does on a number of elements the caller gave. The solution's ``n_elements`` is the number the
 solve took.
 
@@ -47,26 +48,25 @@ def elements_option(n_elements) -> int | Literal["auto"]:
 
 
 def solve_resolved(
-    solve: Callable[[int, float], Solution],
-    n_elements: int | Literal["auto"],
-    time_limit: float,
-    first: int | None = None,
+    solve: Callable[[int, float], Solution], n_elements: int | Literal["auto"], time_limit: float
 ) -> Solution:
     """The line ``solve(n, seconds)`` gives on ``n`` elements within ``seconds``: on ``n_elements``
-    (a number), or on the elements it needs (``"auto"``, module docstring), from ``first`` (by
-    default `FIRST`; a warm start's count). The solution's ``n_elements`` says how many it took.
+    (a number), or on the elements it needs (``"auto"``, module docstring: from `FIRST` whatever
+    the start, so that a warm start gives the solve from scratch). The solution's ``n_elements``
+    says how many it took.
 
     Raises
     ------
     ConvergenceError
-        The solve's; with ``"auto"``, a refined solve's (its ``last`` the coarser line, converged
-        and checked), or the ``time_limit`` spent before the line was resolved (``last`` the same).
+        The solve's; with ``"auto"``, a refined solve's, or the ``time_limit`` spent before the line
+        was resolved (the coarser line's history): its ``last`` is then the coarser line (converged
+        and checked, not resolved), and the message says so.
     """
     if n_elements != AUTO:
         solution = solve(int(n_elements), time_limit)
         solution.n_elements = int(n_elements)
         return solution
-    clock, n = time.perf_counter(), FIRST if first is None else first
+    clock, n = time.perf_counter(), FIRST
     solution = solve(n, time_limit)
     solution.n_elements = n
     while n < MOST and solution.unresolved():
@@ -74,14 +74,15 @@ def solve_resolved(
         left = time_limit - (time.perf_counter() - clock)
         try:
             if not left > 0:
-                raise ConvergenceError(f"time_limit = {time_limit:g} s spent", [])
+                raise ConvergenceError("no time left for more elements", coarser.history)
             solution = solve(n, left)
         except ConvergenceError as failed:
             failed.last = coarser
             failed.args = (
-                f"{failed.args[0]} (n_elements='auto', on {n} elements: {coarser.n_elements} did not "
-                f"resolve the line); error.last: the line on {coarser.n_elements} elements, converged "
-                "and checked, not resolved",
+                f"{str(failed).split('; error.last')[0]} (n_elements='auto': on {n} elements, with "
+                f"{max(left, 0.0):.3g} s left of time_limit = {time_limit:g} s, after {coarser.n_elements} "
+                f"did not resolve the line); error.last: the line on {coarser.n_elements} elements, "
+                "converged and checked, not resolved",
             )
             raise
         solution.n_elements = n

@@ -13,7 +13,7 @@ from skcable.mooring.line_bvp.space.driver import LineBVP3DSolver
 from skcable.mooring.line_bvp.space.inputs import checked_options, scene
 from skcable.mooring.line_bvp.space.solution import LineBVP3DSolution
 
-__all__ = ["LineBVP3D", "solve_line_bvp_3d", "solved"]
+__all__ = ["LineBVP3D", "solve_line_bvp_3d"]
 
 #: the Newton options `LineBVP3D` takes as keywords (`skcable.fe.NewtonOptions`'s fields)
 NEWTON_FIELDS = frozenset(f.name for f in fields(NewtonOptions))
@@ -136,7 +136,8 @@ def solve_line_bvp_3d(
         No solve converged (``history`` holds the merit per iteration); the line in compression;
         its equilibrium residual above its bound. Its ``last`` keeps what converged: the
         `LineBVP3DSolution` on the finest mesh reached (not checked), None where no solve
-        converged. Before it, a line that hangs in the vertical plane of its ends is solved by
+        converged; with ``n_elements="auto"``, where a refined solve fails, the coarser line
+        (checked, not resolved). Before it, a line that hangs in the vertical plane of its ends is solved by
         the plane line's strategy within what is left of ``time_limit``, then in space from it
         (`skcable.mooring.line_bvp.fallback.plane_for_space`); a failure of both says so.
 
@@ -156,12 +157,12 @@ def solve_line_bvp_3d(
         fit_touchdown=fit_touchdown, mesh=mesh, rtol=rtol, max_iter=max_iter, time_limit=time_limit,
         options=options, newton_options=newton_options,
     )  # fmt: skip
-    solution = solved(anchor, fairlead, checked_options(segments, options))
+    solution = _solved(anchor, fairlead, checked_options(segments, options))
     warn_unresolved(solution)
     return solution
 
 
-def solved(anchor, fairlead, checked: dict, start: LineBVP3DSolution | None = None) -> LineBVP3DSolution:
+def _solved(anchor, fairlead, checked: dict, start: LineBVP3DSolution | None = None) -> LineBVP3DSolution:
     """The line between ``anchor`` and ``fairlead`` (m) of the `checked_options` ``checked``, on
     its ``n_elements`` or the ones it needs (`skcable.mooring.line_bvp.resolution`), from
     ``start`` where given."""
@@ -170,8 +171,7 @@ def solved(anchor, fairlead, checked: dict, start: LineBVP3DSolution | None = No
         at = scene(anchor, fairlead, {**checked, "n_elements": n_elements, "time_limit": time_limit})
         return LineBVP3DSolver(at, plane_for_space).solve(start)
 
-    first = None if start is None else start.n_elements
-    return solve_resolved(on, checked["n_elements"], checked["time_limit"], first)
+    return solve_resolved(on, checked["n_elements"], checked["time_limit"])
 
 
 class LineBVP3D:
@@ -219,15 +219,15 @@ class LineBVP3D:
         """
         if start is not None and not (isinstance(start, LineBVP3DSolution) and start.model is self):
             raise InputError("start", f"must be a solution of this LineBVP3D, got {type(start).__name__}")
-        solution = solved(anchor, fairlead, self.checked, start)
+        solution = _solved(anchor, fairlead, self.checked, start)
         warn_unresolved(solution)
         solution.model = self
         return solution
 
     def __repr__(self):
-        o = self.options
+        o, n = self.options, self.checked["n_elements"]
         return (
             f"LineBVP3D({len(self.segments)} segments, length={self.length:g} m, seabed={o['seabed']!r}, "
-            f"friction={o['friction']:g}, current={o['current']!r}, n_elements={o['n_elements']!r}, "
+            f"friction={o['friction']:g}, current={o['current']!r}, n_elements={n!r}, "
             f"mesh={o['mesh']!r})"
         )
