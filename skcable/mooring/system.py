@@ -496,7 +496,10 @@ class MooringSystem:
         """Every line solved with the bodies and free points at ``position`` (the dofs: m, rad).
 
         ``start``: the lines solved at another position (one per line), each a warm start of its
-        own (the same solution as without it, to round-off). Without it, a line of a model
+        own (the same solution as without it: to round-off in closed form and for the line in
+        space, whose meshes are its ends'; for the plane line BVP, whose meshes are graded from its
+        start, to its touchdown fitting: within 1e-9 of the end forces where its mesh resolves the
+        line, `tests/mooring/test_line_bvp_model.py`). Without it, a line of a model
         solved for an earlier line of this call (lines of one model, e.g. a spread mooring)
         starts from that solution. Returns `skcable.mooring.Line3D` (line models solved as given)
         and `skcable.mooring.LineBetween` (`skcable.mooring.Line`) objects."""

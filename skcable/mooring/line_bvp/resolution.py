@@ -7,11 +7,11 @@ weight varying along it (calibrated on the differential survey's scenes against 
 `benchmarks/line_bvp_resolution.py`, its table in docs/bvp.md). With ``n_elements="auto"``
 (`skcable.mooring.solve_line_bvp`, `skcable.mooring.LineBVP`, `solve_line_bvp_3d`, `LineBVP3D`)
 the line is solved on `FIRST` elements, then, while the check flags it, on `GROWTH` times as
-many, up to `MOST` (each solve as the first: from scratch, or from a warm start's line, which
-starts from `FIRST` too: the elements are the ends' to choose, not the path's); where `MOST` do
-not resolve it either, the public solve warns (`skcable.errors.ResolutionWarning`), as
-it does on a number of elements the caller gave. The solution's ``n_elements`` is the number the
-solve took.
+many, up to `MOST`, each solve as the first (from scratch, or from a warm start's line: a warm
+start starts from `FIRST` too, so that the elements are the ends' to choose, not the path's).
+Where `MOST` do not resolve the line either, the public solve warns
+(`skcable.errors.ResolutionWarning`), as it does on a number of elements the caller gave. The
+solution's ``n_elements`` is the number the solve took.
 
 The whole search counts against the ``time_limit`` of one solve: each refined solve gets what is
 left. A refined solve that fails raises its `ConvergenceError`, whose ``last`` is then the coarser
