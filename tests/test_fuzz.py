@@ -29,6 +29,7 @@ COUNTS = {
     "mooring/at": 3,
     "network": 3,
     "solve_line_bvp": 6,
+    "solve_line_bvp/auto": 6,
     "sloped_seabed": 12,
     "line_3d": 12,
     "tension_section": 10,

@@ -323,15 +323,26 @@ def line_bvp(rng) -> Case:
     return bvp_case(segments, attachments, bed, friction, span, dh)
 
 
-def bvp_case(segments, attachments, bed, friction, span, dh) -> Case:
-    """The case of `solve_line_bvp` on a line (`random_line`'s data; attachments at inner joints)."""
+def line_bvp_auto(rng) -> Case:
+    """`line_bvp`'s scenes with ``n_elements="auto"`` (`skcable.mooring.line_bvp.resolution`: 64
+    elements, more while the mesh does not resolve the line): the same oracle, and the elements
+    taken one of 64, 256, 1024."""
+    segments, attachments, bed, friction, span, dh = random_line(rng, seabed=pick(rng, ["free", "contact"]))
+    attachments = [a for a in attachments if 0 < a[1] < len(segments)]
+    return bvp_case(segments, attachments, bed, friction, span, dh, n_elements="auto")
+
+
+def bvp_case(segments, attachments, bed, friction, span, dh, n_elements=None) -> Case:
+    """The case of `solve_line_bvp` on a line (`random_line`'s data; attachments at inner joints),
+    on its default elements or ``n_elements``."""
     data = line_data(segments, attachments, bed, friction)
     joints = [sum(s[0] for s in segments[:j]) for j in range(len(segments) + 1)]
     loads = [(joints[j], size if kind == "ClumpWeight" else -size) for kind, j, size in attachments]
     segs = ", ".join(f"({fmt(L)}, {fmt(w)}, {fmt(EA)})" for L, w, EA in segments)
     pl = ", ".join(f"({fmt(s)}, {fmt(P)})" for s, P in loads)
     bed_kw = "" if bed is None else f", seabed={fmt(bed)}, friction={fmt(friction)}"
-    expr = f"mooring.solve_line_bvp({fmt(span)}, {fmt(dh)}, [{segs}]{bed_kw}, point_loads=[{pl}])"
+    mesh_kw = "" if n_elements is None else f", n_elements={n_elements!r}"
+    expr = f"mooring.solve_line_bvp({fmt(span)}, {fmt(dh)}, [{segs}]{bed_kw}, point_loads=[{pl}]{mesh_kw})"
 
     def check(result, caught):
         try:
@@ -340,6 +351,8 @@ def bvp_case(segments, attachments, bed, friction, span, dh) -> Case:
             raise NoRoot(f"outside the walk's model ({why}): unchecked") from None
         force = float(want["H"] + data.weight + sum(abs(p) for p in data.P))
         out = [close(name, getattr(result, name), want[name], 1e-6 * force) for name in ("H", "V_B", "H_A")]
+        if n_elements is not None and result.n_elements not in (64, 256, 1024):
+            out.append(f"n_elements='auto' took {result.n_elements} elements")
         return [o for o in out if o]
 
     def judge(exc):
@@ -370,7 +383,7 @@ def _bvp_verdict(exc, expr, check, verdict):
     text = str(exc)
     if isinstance(exc, InputError) and exc.argument == "point_loads" and OUTSIDE_BVP in text:
         return None
-    if isinstance(exc, ConvergenceError) and MORE_ELEMENTS in text:
+    if isinstance(exc, ConvergenceError) and MORE_ELEMENTS in text and "n_elements=" not in expr:
         try:
             finer = eval(expr[:-1] + ", n_elements=1024)", {"mooring": mooring})  # noqa: S307 - our own call
         except (InputError, ConvergenceError) as again:
@@ -381,3 +394,4 @@ def _bvp_verdict(exc, expr, check, verdict):
 
 
 REGIMES["solve_line_bvp"] = line_bvp
+REGIMES["solve_line_bvp/auto"] = line_bvp_auto
