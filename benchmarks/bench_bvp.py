@@ -20,6 +20,8 @@ Run:  python benchmarks/bench_bvp.py                 (chart + CSV + 10k-element 
                                                       space; the cost of the equilibrium check)
       python benchmarks/bench_bvp.py --space-mesh    (the line in space on a seabed, its graded
                                                       and uniform meshes: error against time)
+      python benchmarks/bench_bvp.py --auto [--write] (n_elements="auto" against fixed meshes:
+                                                      error against time; --write: docs/bvp.md)
 Output: benchmarks/out/bvp_accuracy_time.csv, docs/img/bvp_accuracy_time.png
 """
 
@@ -407,6 +409,56 @@ def space_mesh(args):
                 print(f"| {label} | {mesh} | {n} | {off:.1e} | {t * 1e3:.0f} |")
 
 
+def auto(args):
+    """``n_elements="auto"`` (`skcable.mooring.line_bvp.resolution`) against fixed meshes of 64,
+    256 and 1024 elements: the end forces' error over the largest against the line in space on
+    2048 elements, and the time per solve (median of ``max(3, repeats // 10)``), the plane line
+    (`solve_line_bvp`) and the line in space (`solve_line_bvp_3d`) in the vertical plane x-z.
+    Two scenes of the differential survey (``benchmarks/line_bvp_planes.py``): 3:160, a chain
+    hanging almost vertically to a clump, whose bend 64 elements do not resolve (the resolution
+    check flags it), and 1:180, a rope landing on a flat seabed, which 64 resolve. With
+    ``--write`` the table goes between the ``bvp-auto`` markers of docs/bvp.md."""
+    import warnings
+    from dataclasses import replace
+
+    from _tables import markdown_table, write_section
+    from line_bvp_planes import scenes
+
+    def space_forces(r):  # as the plane line's (H_A, V_A, H_B, V_B)
+        return [r.force_on_anchor[0], -r.force_on_anchor[2], -r.force_on_fairlead[0], -r.force_on_fairlead[2]]
+
+    chosen = [("3:160, a chain hanging to a clump", 3, 160), ("1:180, a rope landing on the seabed", 1, 180)]
+    body = []
+    for label, seed, k in chosen:
+        sc = scenes(seed, k + 1)[k]
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore")  # the coarse meshes' ResolutionWarning: measured here
+            ref = replace(sc, n_elements=2048).solve_space()
+            want = np.array(space_forces(ref))
+            for n in (64, 256, 1024, "auto"):
+                for kind, solve, forces in (
+                    ("plane", replace(sc, n_elements=n).solve_plane, lambda r: [r.H_A, r.V_A, r.H_B, r.V_B]),
+                    ("space", replace(sc, n_elements=n).solve_space, space_forces),
+                ):
+                    line = solve()
+                    off = np.abs(np.array(forces(line)) - want).max() / np.abs(want).max()
+                    t = np.median([_timed(solve) for _ in range(max(3, args.repeats // 10))])
+                    taken = f"auto: {line.n_elements}" if n == "auto" else str(n)
+                    body.append([label, kind, taken, f"{off:.1e}", f"{t * 1e3:.0f}"])
+                    print(*body[-1], sep=" | ", flush=True)
+    lines = [
+        "`python benchmarks/bench_bvp.py --auto`: each line on fixed meshes and with "
+        '`n_elements="auto"` (the elements it took), its end forces\' error over the largest against '
+        "the line in space on 2048 elements, and the time per solve (median); measured on x86_64, 2 cores "
+        "(shared).",
+        "",
+        *markdown_table(["scene", "line", "elements", "end forces off", "ms per solve"], body),
+    ]
+    print("\n".join(lines))
+    if args.write:
+        write_section(ROOT / "docs" / "bvp.md", "bvp-auto", lines)
+
+
 def main(argv=None):
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--stability", action="store_true", help="map where each formulation converges")
@@ -414,8 +466,12 @@ def main(argv=None):
     parser.add_argument("--seabed", action="store_true", help="solve_line_bvp on a seabed: error, time")
     parser.add_argument("--warm", action="store_true", help="warm against cold starts; check cost")
     parser.add_argument("--space-mesh", action="store_true", help="the line in space: graded or uniform")
+    parser.add_argument("--auto", action="store_true", help='n_elements="auto" against fixed meshes')
+    parser.add_argument("--write", action="store_true", help="with --auto: its table into docs/bvp.md")
     parser.add_argument("--repeats", type=int, default=30, help="runs of each 10,000-element case")
     args = parser.parse_args(argv)
+    if args.auto:
+        return auto(args)
     if args.seabed:
         return seabed(args)
     if args.warm:
