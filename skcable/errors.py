@@ -2,8 +2,10 @@
 
 Bad input raises `InputError` (a `ValueError`) naming the
 argument and the reason; a solver that does not converge raises
-`ConvergenceError` carrying its iteration history, and `NonFiniteError` (a `ConvergenceError`)
-names the term or law that produced a value that is not finite.
+`ConvergenceError` carrying its iteration history, `NonFiniteError` (a `ConvergenceError`)
+names the term or law that produced a value that is not finite, and `ResolutionError` (a
+`ConvergenceError`) is a line BVP whose discrete line ends in compression on a mesh too coarse
+for its bends.
 
 Warnings say what is suspicious but not wrong: `PlausibilityWarning` for data
 that a unit slip would explain (an EA in MN, a strain beyond any wire's),
@@ -26,6 +28,7 @@ __all__ = [
     "SlowConvergenceWarning",
     "TangentWarning",
     "NonFiniteError",
+    "ResolutionError",
     "ResolutionWarning",
     "CacheWarning",
 ]
@@ -76,6 +79,13 @@ class NonFiniteError(ConvergenceError):
     def __init__(self, message: str, source: str = ""):
         self.source = source
         super().__init__(message)
+
+
+class ResolutionError(ConvergenceError):
+    """A line BVP whose solve converged to a discrete line in compression: its elements do not
+    resolve the line's bends (`skcable.mooring.line_bvp.solver.LineSolver.refuse_compressed`), and
+    more may solve it; ``n_elements="auto"`` gives them (`skcable.mooring.line_bvp.resolution`).
+    """
 
 
 class PlausibilityWarning(UserWarning):

@@ -48,7 +48,7 @@ import numpy as np
 import pytest
 
 from skcable import _plausible
-from skcable.errors import ConvergenceError, InputError, ResolutionWarning
+from skcable.errors import ConvergenceError, InputError, ResolutionError, ResolutionWarning
 from skcable.mooring import LineBVP, LineBVPSolution, solve_line_bvp
 from skcable.mooring.bathymetry import Plane
 from skcable.mooring.line_bvp.driver import LineBVPSolver
@@ -368,7 +368,8 @@ def test_auto_elements_keep_the_coarser_line_where_a_refined_solve_fails():
 
     with pytest.warns(ResolutionWarning):
         coarse = plane_forces(solve_line_bvp(sc.span, sc.dh, segments, n_elements=64, **bed))
-    with pytest.raises(ConvergenceError, match="on 256 elements, .* after 64 did not resolve") as failed:
+    kept = r"on 256 elements, .* after fewer did not resolve the line\); error.last: the line on 64 "
+    with pytest.raises(ConvergenceError, match=kept) as failed:
         solve_resolved(on_64_only, "auto", 60.0)
     kept = failed.value.last
     assert kept.n_elements == 64 and kept.unresolved()
@@ -380,6 +381,36 @@ def test_auto_elements_keep_the_coarser_line_where_a_refined_solve_fails():
     for bad in ("fine", "AUTO", 0, 2.5):
         with pytest.raises(InputError, match="n_elements"):
             LineBVP(segments, n_elements=bad)
+
+
+def test_auto_elements_go_on_where_a_mesh_ends_in_compression():
+    """The fuzz's case ``solve_line_bvp:61:52`` (`tests.fuzz.multi`): three light segments rising
+    almost vertically from the seabed, a buoy at the upper joint, H = 5.5e-4 N. On its default 64
+    elements the discrete line ends in compression (a `skcable.errors.ResolutionError`: the
+    elements do not resolve its bends); ``n_elements="auto"`` goes on to 256, and its H, V_B and
+    H_A agree with the fuzz's oracle, an independent walk along the segments, to 1e-6 of the force
+    scale."""
+    from tests.fuzz.regimes import case
+
+    args = (
+        15.693738724184808,
+        7.4056324685310875,
+        [
+            (1.698036108831134, 0.1003170124182903, 21157396.93831615),
+            (16.089492906938233, 0.01999044146132842, 15312.883684955064),
+            (5.307158181122778, 8.925886579466441, 2989071.26943129),
+        ],
+    )
+    options = dict(
+        seabed=0.0,
+        friction=0.020744307061020477,
+        point_loads=[(17.787529015769366, -0.531205939294393), (1.698036108831134, 0.06080096682661319)],
+    )
+    with pytest.raises(ResolutionError, match="elements do not resolve its bends"):
+        solve_line_bvp(*args, **options)
+    auto = solve_line_bvp(*args, **options, n_elements="auto")
+    assert auto.n_elements == 256
+    assert case("solve_line_bvp", 61, 52).check(auto, []) == []
 
 
 def test_auto_elements_of_a_warm_start_are_those_from_scratch():

@@ -21,7 +21,7 @@ from typing import Any
 import numpy as np
 
 from skcable._budget import Budget
-from skcable.errors import ConvergenceError
+from skcable.errors import ConvergenceError, ResolutionError
 from skcable.fe import NewtonOptions
 from skcable.mooring.line_bvp.check import partial_friction, refuse_sliding, slack_on_slope
 from skcable.mooring.line_bvp.iterate import solve_on
@@ -205,14 +205,15 @@ class LineSolver:
         anchor more steeply than friction holds (no equilibrium in tension,
         `skcable.mooring.line_bvp.check.refuse_sliding`), else a `ConvergenceError` with its
         least tension (and ``also``) and ``why``: by default, its elements do not resolve its
-        bends."""
+        bends (a `skcable.errors.ResolutionError` then: more elements may solve it)."""
         if not self.compressed(solved):
             return
         problem, z = solved.problem, solved.dofs
         refuse_sliding(problem, z, self.tolerance, self.scene.friction)
         T = z[problem.dim * problem.N :]
+        error = ConvergenceError if why else ResolutionError
         why = why or f"{problem.mesh.t.shape[1]} elements do not resolve its bends; give more"
-        raise ConvergenceError(
+        raise error(
             f"{self.name}: the discrete line is in compression (min T = {np.min(T):.3g} N{also}): {why}",
             solved.history,
         )
