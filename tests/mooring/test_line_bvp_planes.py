@@ -368,19 +368,43 @@ def test_auto_elements_keep_the_coarser_line_where_a_refined_solve_fails():
 
     with pytest.warns(ResolutionWarning):
         coarse = plane_forces(solve_line_bvp(sc.span, sc.dh, segments, n_elements=64, **bed))
-    kept = r"on 256 elements, .* after fewer did not resolve the line\); error.last: the line on 64 "
+    kept = r"\(n_elements='auto': on 256 elements; on 64 it converged, not resolved: error.last, checked\)"
     with pytest.raises(ConvergenceError, match=kept) as failed:
         solve_resolved(on_64_only, "auto", 60.0)
     kept = failed.value.last
     assert kept.n_elements == 64 and kept.unresolved()
     np.testing.assert_array_equal(plane_forces(kept), coarse)
-    with pytest.raises(ConvergenceError, match="no time left for more elements") as failed:
+    with pytest.raises(ConvergenceError, match="no time left of time_limit = 1e-09 s for 256") as failed:
         solve_resolved(lambda n, seconds: on_64_only(n, 60.0 if n == 64 else seconds), "auto", 1e-9)
     assert failed.value.history == failed.value.last.history  # the coarser line's
     np.testing.assert_array_equal(plane_forces(failed.value.last), coarse)
     for bad in ("fine", "AUTO", 0, 2.5):
         with pytest.raises(InputError, match="n_elements"):
             LineBVP(segments, n_elements=bad)
+
+
+def test_auto_elements_say_what_the_coarser_solves_did():
+    """What ``n_elements="auto"`` (`solve_resolved`) raises, with solves that fail by design: the
+    first solve's failure unchanged; a solve in compression (`ResolutionError`) followed by one on
+    four times the elements, up to 1024, then raised saying that the coarser one ended in
+    compression too; another failure after a compressed solve saying so."""
+    tried = []
+
+    def fails(n, seconds, error=ConvergenceError, from_n=64):
+        tried.append(n)
+        raise (ResolutionError if n < from_n else error)(f"failed on {n}; error.last: kept", [float(n)])
+
+    with pytest.raises(ConvergenceError) as first:
+        solve_resolved(lambda n, seconds: fails(n, seconds), "auto", 60.0)
+    assert str(first.value) == "failed on 64; error.last: kept (last 1 of 1: 6.400e+01)" and tried == [64]
+    tried.clear()
+    with pytest.raises(ResolutionError, match="on 256 the discrete line ended in compression") as last:
+        solve_resolved(lambda n, seconds: fails(n, seconds, ResolutionError), "auto", 60.0)
+    assert tried == [64, 256, 1024] and "n_elements='auto': on 1024 elements" in str(last.value)
+    tried.clear()
+    with pytest.raises(ConvergenceError, match="on 64 the discrete line ended in compression") as other:
+        solve_resolved(lambda n, seconds: fails(n, seconds, from_n=256), "auto", 60.0)
+    assert tried == [64, 256] and not isinstance(other.value, ResolutionError)
 
 
 def test_auto_elements_go_on_where_a_mesh_ends_in_compression():

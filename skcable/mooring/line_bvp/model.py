@@ -139,7 +139,8 @@ def solve_line_bvp(
     ConvergenceError
         Newton stalled (``history`` holds the merit per iteration); the end
         of a slack stretch not found; the discrete line in compression (its
-        bends not resolved by the mesh: the message says so, and more ``n_elements`` solve it).
+        bends not resolved by the mesh, a `skcable.errors.ResolutionError`: the message says so,
+        and more ``n_elements`` may solve it).
         Its ``last`` keeps what converged: the `LineBVPSolution` on the finest mesh reached (of
         the nested levels and grading passes, not checked), None where no solve converged; with
         ``n_elements="auto"``, where a refined solve fails, the coarser line (checked, not

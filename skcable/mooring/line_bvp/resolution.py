@@ -16,8 +16,10 @@ Where `MOST` do not resolve the line either, the public solve warns
 solution's ``n_elements`` is the number the solve took.
 
 The whole search counts against the ``time_limit`` of one solve: each refined solve gets what is
-left. A refined solve that fails raises its `ConvergenceError`, whose ``last`` is then the coarser
-line that converged and passed its checks (not resolved): the message says on how many elements.
+left. A failure raises the last solve's `ConvergenceError` (a `skcable.errors.ResolutionError`
+where 1024 elements end in compression too), the first solve's unchanged, a later one's saying
+on how many elements it failed and what the coarser solve did: ended in compression, or
+converged to a line not resolved, which is then its ``last`` (converged and checked).
 """
 
 from __future__ import annotations
@@ -61,42 +63,56 @@ def solve_resolved(
     Raises
     ------
     ConvergenceError
-        The solve's; with ``"auto"``, the last solve's, or the ``time_limit`` spent before the line
-        was resolved: where a coarser line converged, its ``last`` is that line (checked, not
-        resolved; its history where the time was spent), and the message says so.
+        The solve's; with ``"auto"``, the last solve's (a `skcable.errors.ResolutionError` where the
+        most elements end in compression too), or the ``time_limit`` spent before the line was
+        resolved; after the first solve, saying what the coarser one did, and where it converged,
+        its ``last`` is that line (checked, not resolved).
     """
     if n_elements != AUTO:
         solution = solve(int(n_elements), time_limit)
         solution.n_elements = int(n_elements)
         return solution
-    clock, n, coarser = time.perf_counter(), FIRST, None
+    clock, n = time.perf_counter(), FIRST
+    coarser: Solution | None = None  # the last line that converged, not resolved
+    compressed: ResolutionError | None = None  # the last solve's failure, in compression
     while True:
         left = time_limit - (time.perf_counter() - clock) if n > FIRST else time_limit
         try:
             if not left > 0:
-                raise ConvergenceError("no time left for more elements", getattr(coarser, "history", []))
+                before = compressed if compressed is not None else coarser
+                raise ConvergenceError(
+                    f"no time left of time_limit = {time_limit:g} s for {n} elements",
+                    getattr(before, "history", []),
+                    last=getattr(compressed, "last", None),
+                )
             solution = solve(n, left)
-        except ConvergenceError as failed:
-            if isinstance(failed, ResolutionError) and n < MOST:
-                n = min(GROWTH * n, MOST)
+        except ResolutionError as failed:
+            if n < MOST:
+                compressed, n = failed, min(GROWTH * n, MOST)
                 continue
-            raise _refined(failed, n, coarser, time_limit, left) from None
+            raise _noted(failed, n, coarser, compressed) from None
+        except ConvergenceError as failed:
+            raise _noted(failed, n, coarser, compressed) from None
         solution.n_elements = n
         if n >= MOST or not solution.unresolved():
             return solution
-        coarser, n = solution, min(GROWTH * n, MOST)
+        coarser, compressed, n = solution, None, min(GROWTH * n, MOST)
 
 
-def _refined(failed: ConvergenceError, failed_at: int, coarser, time_limit: float, left: float):
-    """``failed``, the solve on ``failed_at`` elements, its message saying where ``"auto"`` stood,
-    its ``last`` the ``coarser`` line where one converged."""
-    fewer = "" if failed_at == FIRST else ", after fewer did not resolve the line"
-    kept = ""
+def _noted(failed: ConvergenceError, n: int, coarser, compressed) -> ConvergenceError:
+    """``failed`` (the solve on ``n`` elements, or no time left for it) saying what ``"auto"`` did
+    before it: the first solve's unchanged; else whether the solve on fewer elements ended in
+    compression (``compressed``, a `skcable.errors.ResolutionError`) or converged to a line not
+    resolved (``coarser``, which becomes its ``last``)."""
+    if n == FIRST:
+        return failed
+    fewer = n // GROWTH  # FIRST, GROWTH and MOST make the counts 64, 256, 1024
+    message, notes = str(failed), [f"n_elements='auto': on {n} elements"]
+    if compressed is not None:
+        notes.append(f"on {fewer} the discrete line ended in compression, its bends not resolved")
     if coarser is not None:
         failed.last = coarser
-        kept = f"; error.last: the line on {coarser.n_elements} elements, converged and checked, not resolved"
-    failed.args = (
-        f"{str(failed).split('; error.last')[0]} (n_elements='auto': on {failed_at} elements, with "
-        f"{max(left, 0.0):.3g} s left of time_limit = {time_limit:g} s{fewer}){kept}",
-    )
+        message = message.split("; error.last")[0]
+        notes.append(f"on {coarser.n_elements} it converged, not resolved: error.last, checked")
+    failed.args = (f"{message} ({'; '.join(notes)})",)
     return failed

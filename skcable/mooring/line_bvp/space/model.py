@@ -133,7 +133,9 @@ def solve_line_bvp_3d(
     InputError
         Bad data, named.
     ConvergenceError
-        No solve converged (``history`` holds the merit per iteration); the line in compression;
+        No solve converged (``history`` holds the merit per iteration); the line in compression
+        (a `skcable.errors.ResolutionError` where no other reason is found: more elements may
+        solve it);
         its equilibrium residual above its bound. Its ``last`` keeps what converged: the
         `LineBVP3DSolution` on the finest mesh reached (not checked), None where no solve
         converged; with ``n_elements="auto"``, where a refined solve fails, the coarser line
