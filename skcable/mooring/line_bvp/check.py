@@ -29,6 +29,7 @@ from skcable.bvp.terms import CableState
 from skcable.cable.seabed import refuse_slack_on_slope as refuse_uniform_slack
 from skcable.cable.seabed import taut_length_on_slope
 from skcable.errors import ConvergenceError, InputError, ResolutionWarning
+from skcable.mooring.line_bvp.mesh import composite_gauss
 from skcable.mooring.line_bvp.start import uniform_on_slope
 
 __all__ = [
@@ -317,17 +318,13 @@ def unresolved_bend(solution) -> str:
 def weight_quadrature_error(problem) -> np.ndarray:
     """The error (N) of each element's weight as the solve integrates it (at its quadrature
     points, ``problem.w_q``) against `WEIGHT_POINTS`-point Gauss–Legendre on each half of the
-    element, the elements in the mesh's order: zeros where every segment's weight is a number
-    (integrated exactly)."""
+    element (`skcable.mooring.line_bvp.mesh.composite_gauss`), the elements in the mesh's order:
+    zeros where every segment's weight is a number (integrated exactly)."""
     if not any(callable(seg.w) for seg in problem.segments):
         return np.zeros(problem.mesh.t.shape[1])
     left, right = np.sort(problem.mesh.p[0, problem.mesh.t], axis=0)
-    x, weights = np.polynomial.legendre.leggauss(WEIGHT_POINTS)
-    quarter = 0.25 * (right - left)
-    reference = np.zeros_like(left)
-    for centre in (left + quarter, right - quarter):
-        points = centre[:, None] + quarter[:, None] * x
-        reference += quarter * (problem.weight_at(points.ravel()).reshape(points.shape) @ weights)
+    s, h = composite_gauss(left, right, 2, WEIGHT_POINTS)
+    reference = (problem.weight_at(s.ravel()).reshape(s.shape) * h).sum(axis=(1, 2))
     return np.sum(problem.w_q * problem.assembly.dx, axis=0) - reference
 
 

@@ -32,6 +32,7 @@ __all__ = [
     "REFINEMENT",
     "TAIL_RATIO",
     "arch_ends",
+    "composite_gauss",
     "equidistributed",
     "fixed_nodes",
     "grading_passes",
@@ -144,17 +145,25 @@ def arch_ends(line, z) -> np.ndarray:
     return np.concatenate([low[keep], high[keep]])
 
 
+def composite_gauss(a, b, pieces: int, points: int) -> tuple[np.ndarray, np.ndarray]:
+    """``(s, h)``: composite Gauss–Legendre on each interval from ``a`` to ``b`` (arrays (n,), m),
+    ``pieces`` equal pieces of ``points`` points each: the abscissae ``s`` (n, pieces, points) and
+    the weights ``h`` (m, the same shape, negative where ``b < a``), so that ``∫_a^b f ds`` is
+    ``(f(s) h).sum(axis=(1, 2))``."""
+    x, weights = np.polynomial.legendre.leggauss(points)
+    edges = a[:, None] + (b - a)[:, None] * np.linspace(0.0, 1.0, pieces + 1)
+    half = 0.5 * np.diff(edges, axis=1)  # (n, pieces), signed
+    s = (edges[:, :-1] + half)[:, :, None] + half[:, :, None] * x
+    return s, half[:, :, None] * weights
+
+
 def _arch_integrals(line, s_b, end):
     """``(W, M)``: the weight (N) between each buoy at ``s_b`` and ``end`` (m, either side) and its
     moment about the buoy (N·m), both positive, by composite Gauss–Legendre (`ARCH_QUADRATURE`
-    pieces of `ARCH_POINTS` points each)."""
-    x, weights = np.polynomial.legendre.leggauss(ARCH_POINTS)
-    edges = s_b[:, None] + (end - s_b)[:, None] * np.linspace(0.0, 1.0, ARCH_QUADRATURE + 1)
-    half = 0.5 * np.diff(edges, axis=1)  # (n, pieces), signed
-    points = (edges[:, :-1] + half)[:, :, None] + half[:, :, None] * x  # (n, pieces, ARCH_POINTS)
-    w = line.weight_at(points.ravel()).reshape(points.shape)
-    dW = np.abs(half)[:, :, None] * weights * w
-    return dW.sum(axis=(1, 2)), (dW * np.abs(points - s_b[:, None, None])).sum(axis=(1, 2))
+    pieces of `ARCH_POINTS` points each, `composite_gauss`)."""
+    s, h = composite_gauss(s_b, end, ARCH_QUADRATURE, ARCH_POINTS)
+    dW = np.abs(h) * line.weight_at(s.ravel()).reshape(s.shape)
+    return dW.sum(axis=(1, 2)), (dW * np.abs(s - s_b[:, None, None])).sum(axis=(1, 2))
 
 
 def _half_arches(line, s_b, lift):
