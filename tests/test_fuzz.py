@@ -30,6 +30,7 @@ COUNTS = {
     "network": 3,
     "solve_line_bvp": 6,
     "solve_line_bvp/auto": 6,
+    "solve_line_bvp_3d": 6,
     "sloped_seabed": 12,
     "line_3d": 12,
     "tension_section": 10,

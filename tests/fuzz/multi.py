@@ -12,6 +12,7 @@ import math
 import mpmath
 from mpmath import mp, mpf
 
+from skcable.errors import ResolutionWarning
 from tests.fuzz.compare import check_stiffness, close, compare_all, compare_matrix, fmt
 from tests.fuzz.harness import Case
 from tests.fuzz.mp import DPS, EPS, NoRoot, OutOfScope, condition
@@ -367,7 +368,8 @@ def bvp_case(segments, attachments, bed, friction, span, dh, n_elements=None) ->
 
 #: What `solve_line_bvp` documents it refuses, though the walk may solve it: a slack stretch that
 #: ends at a point load resting on the seabed, its friction partly mobilised (`InputError`
-#: naming ``point_loads``; `mooring.Line` solves it).
+#: naming ``point_loads``, or in space ``attachments`` for a clump at a joint; `mooring.Line`
+#: solves it).
 OUTSIDE_BVP = "this BVP does not model that state"
 #: The advice of its refusal of a discrete line in compression (its bends unresolved).
 MORE_ELEMENTS = "elements do not resolve its bends; give more"
@@ -381,7 +383,7 @@ def _bvp_verdict(exc, expr, check, verdict):
     from skcable.errors import ConvergenceError
 
     text = str(exc)
-    if isinstance(exc, InputError) and exc.argument == "point_loads" and OUTSIDE_BVP in text:
+    if isinstance(exc, InputError) and exc.argument in ("point_loads", "attachments") and OUTSIDE_BVP in text:
         return None
     if isinstance(exc, ConvergenceError) and MORE_ELEMENTS in text and "n_elements=" not in expr:
         try:
@@ -393,5 +395,56 @@ def _bvp_verdict(exc, expr, check, verdict):
     return verdict
 
 
+def line_bvp_3d(rng) -> Case:
+    """`solve_line_bvp_3d` of `line_bvp`'s lines on a flat seabed, friction mostly (its slack
+    stretch near the anchor where friction would take more than the pull), the chord at a random
+    heading: the fairlead's force against the walk in the chord's vertical plane (``-H e``,
+    ``-V_B``, to 1e-6 of the force scale, as `line_bvp`; to the several per cent its
+    `skcable.errors.ResolutionWarning` allows where it warns that its mesh does not resolve the
+    line), none across it, the anchor's force ``H_A e``."""
+    segments, attachments, bed, friction, span, dh = random_line(rng, seabed="contact")
+    attachments = [a for a in attachments if 0 < a[1] < len(segments)]
+    data = line_data(segments, attachments, bed, friction)
+    heading = rng.uniform(-math.pi, math.pi)
+    e = (math.cos(heading), math.sin(heading))
+    segs = ", ".join(f"({fmt(L)}, {fmt(w)}, {fmt(EA)})" for L, w, EA in segments)
+    loads = [(j, size if kind == "ClumpWeight" else -size) for kind, j, size in attachments]
+    atts = ", ".join(f"({j}, {fmt(P)})" for j, P in loads)
+    fairlead = f"({fmt(span * e[0])}, {fmt(span * e[1])}, {fmt(dh)})"
+    expr = (
+        f"mooring.solve_line_bvp_3d((0.0, 0.0, 0.0), {fairlead}, [{segs}], attachments=[{atts}], "
+        f"seabed={fmt(bed)}, friction={fmt(friction)})"
+    )
+
+    def check(result, caught):
+        H, V = math.hypot(*result.force_on_fairlead[:2]), -result.force_on_fairlead[2]
+        try:
+            want = segments_line(data, span, dh, {"H": H, "V": V} if H > 0 else None)
+        except OutOfScope as why:
+            raise NoRoot(f"outside the walk's model ({why}): unchecked") from None
+        force = float(want["H"] + data.weight + sum(abs(p) for p in data.P))
+        warned = any(issubclass(w.category, ResolutionWarning) for w in caught)
+        tol = (5e-2 if warned else 1e-6) * force
+        F_b, F_a = result.force_on_fairlead, result.force_on_anchor
+        out = [
+            close("force_on_fairlead along", -(F_b[0] * e[0] + F_b[1] * e[1]), want["H"], tol),
+            close("force_on_fairlead across", F_b[1] * e[0] - F_b[0] * e[1], 0.0, 1e-9 * force),
+            close("force_on_fairlead[2]", -F_b[2], want["V_B"], tol),
+            close("force_on_anchor along", F_a[0] * e[0] + F_a[1] * e[1], want["H_A"], tol),
+        ]
+        return [o for o in out if o]
+
+    def judge(exc):
+        want = segments_line(data, span, dh)
+        if want["regime"] == "heap":
+            return None  # documented: the BVP refuses a heap (Line and elastic_catenary return it)
+        verdict = f"{want['regime']}: H = {float(want['H']):.17g}, V_B = {float(want['V_B']):.17g}"
+        return _bvp_verdict(exc, expr, check, verdict)
+
+    names = BVP_NAMES | {"anchor", "fairlead", "attachments"}
+    return Case("solve_line_bvp_3d", expr, names, check, judge, timeout=60.0)
+
+
 REGIMES["solve_line_bvp"] = line_bvp
 REGIMES["solve_line_bvp/auto"] = line_bvp_auto
+REGIMES["solve_line_bvp_3d"] = line_bvp_3d

@@ -30,7 +30,8 @@ of it and what does not depend on the contact rows:
 - the generalized Jacobian (the element matrices with the contact rows mixed in, and the sparse
   rest: `tangent`), its banded factorisation and solves (`increment`, `solve_many`);
 - the ends' sensitivities by the implicit function theorem: at a converged state, the active set
-  held, ``J_ff ∂z_f/∂r_B = −J_fB`` (one factorisation, ``dim`` right-hand sides), and the
+  held, ``J_ff ∂z_f/∂r_B = −J_fB − J_fH ∂z_H/∂r_B`` (one factorisation, ``dim`` right-hand
+  sides; ``H`` the dofs held besides the ends, a laid slack stretch's, `hold`), and the
   supports' rows ``∂R_B/∂r_B = J_Bf ∂z_f/∂r_B + J_BB``, ``∂R_A/∂r_B`` likewise;
 - the contact stiffness ``c_i`` of the complementarity function per node: the force scale per
   length times the node's element length over the mean one, so that ``λ_i ~ w h_i`` switches
@@ -126,6 +127,10 @@ class DiscreteLine:
     fairlead: np.ndarray
     laws: list = []
     columns: list = []
+    #: the dofs held at given values besides the ends (`hold`), and those values
+    held_dofs: np.ndarray = np.zeros(0, dtype=int)
+    held_values: np.ndarray = np.zeros(0)
+    held_sensitivity: np.ndarray | None = None
 
     def discretise(self, lengths, point_loads, n_elements, fitted, nodes_at) -> np.ndarray:
         """Build the mesh on segments of ``lengths`` (m) with nodes at the ``point_loads``' arc
@@ -363,11 +368,34 @@ class DiscreteLine:
     def with_ends(self, positions, T) -> np.ndarray:
         """The dofs ``[x, y(, z), T]`` of the nodal ``positions`` (dim rows, m; changed in place)
         and the tensions ``T`` (N), the ends put exactly at the anchor and the fairlead
-        (``anchor``, ``fairlead``: (dim,), m, set by the subclass)."""
+        (``anchor``, ``fairlead``: (dim,), m, set by the subclass), the held dofs at their values
+        (`hold`)."""
         for k, end in ((self.end_a, self.anchor), (self.end_b, self.fairlead)):
             for row, value in zip(positions, end, strict=True):
                 row[k] = value
-        return np.concatenate([*positions, T])
+        return self.placed(np.concatenate([*positions, T]))
+
+    def hold(self, dofs, values, sensitivity=None) -> None:
+        """Hold the dofs ``dofs`` at ``values`` besides the ends (a slack stretch laid on the
+        seabed, `skcable.mooring.line_bvp.space.problem`): they leave the free dofs, so the
+        solve and its merit leave them too, and their rows are the reactions of what holds them;
+        `placed` puts them into an iterate. ``sensitivity`` (len(dofs), dim): how the values
+        move with the fairlead, ``∂values/∂r_B`` (`end_sensitivities`; None: they stay)."""
+        self.held_dofs, self.held_values = np.asarray(dofs, dtype=int), np.asarray(values, dtype=float)
+        self.held_sensitivity = None if sensitivity is None else np.asarray(sensitivity, dtype=float)
+        self.free = self.free[~np.isin(self.free, self.held_dofs)]
+        self.system = self.assembly.banded(self.free)
+        self._force_rows = self.free[self.free < self.dim * self.N]
+        self._stretch_rows = self.free[self.free >= self.dim * self.N]
+
+    def placed(self, z) -> np.ndarray:
+        """The iterate ``z`` with the held dofs at their values (`hold`; ``z`` itself where none
+        are held)."""
+        if not self.held_dofs.size:
+            return z
+        z = np.array(z, dtype=float)
+        z[self.held_dofs] = self.held_values
+        return z
 
     def end_dofs(self, end) -> np.ndarray:
         """The ``dim`` position dofs of the anchor (``"a"``) or the fairlead (``"b"``)."""
@@ -383,7 +411,11 @@ class DiscreteLine:
         ends = self.end_dofs("b")
         dz = np.zeros((self.assembly.N, self.dim))
         dz[ends, np.arange(self.dim)] = 1.0
-        dz[self.free] = self.solve_many(state, -(J[self.free][:, ends]).toarray())
+        rhs = -(J[self.free][:, ends]).toarray()
+        if self.held_sensitivity is not None:  # held dofs that move with the fairlead (`hold`)
+            dz[self.held_dofs] = self.held_sensitivity
+            rhs -= J[self.free][:, self.held_dofs] @ self.held_sensitivity
+        dz[self.free] = self.solve_many(state, rhs)
         return np.asarray(J[ends] @ dz), np.asarray(J[self.end_dofs("a")] @ dz), dz
 
     # --- the line law: section forces, loads, residual and tangent -------------------------------

@@ -103,6 +103,7 @@ from skcable.mooring.line_bvp.problem import LineProblem
 from skcable.mooring.line_bvp.slack import (
     SLACK_PASSES,
     next_slack_end,
+    secant_slack_end,
     slack_estimate,
     slack_tension,
     tension_zero,
@@ -503,11 +504,7 @@ class LineBVPSolver(LineSolver):
                 g, slope = slack_tension(solution)
                 if abs(g) > tol:
                     pairs.append((s0, g))
-                    if len(pairs) > 1:
-                        (s1, g1), (s2, g2) = pairs[-2:]
-                        secant = (g2 - g1) / (s2 - s1) if s2 != s1 else 0.0
-                        slope = secant if secant > 0 else slope
-                    s0, step = next_slack_end(pairs, slope, solution.s_touchdown), True
+                    s0, step = secant_slack_end(pairs, slope, solution.s_touchdown), True
             if not (step or moved):
                 break
             problem = self.problem(n, _with(s0, fitted), s0, self.scene.friction, graded)

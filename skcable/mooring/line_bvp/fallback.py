@@ -83,22 +83,17 @@ def plane_for_space(solver: LineBVP3DSolver) -> LineBVP3DSolution | None:
     docstring), solved by the plane line's strategy within what is left of the budget, then in
     space on that mesh from it, fitted and checked; None where the line does not hang in that
     plane or asks for meshes the plane line does not make (`plane_meshes`), a `ConvergenceError`
-    saying why where that fails (the plane line refusing or failing, a slack stretch)."""
+    saying why where that fails (the plane line refusing or failing)."""
     solution = _by_the_other(solver, _plane_scene_of, LineBVPSolver, "the plane line's strategy failed too")
     if solution is None:
         return None
     old = solution.problem
-    if old.slack_end > 0:
-        raise ConvergenceError(
-            "in the vertical plane of its ends friction holds a slack stretch on the seabed, "
-            "which the 3-D line does not model (solve_line_bvp does)",
-            solution.history,
-        )
     nodes = np.sort(old.mesh.p[0])
+    solver.slack_end = old.slack_end  # friction's slack stretch, laid as the plane line's ends
     problem = solver.problem(nodes.size - 1, solver.edges_of(solution), nodes_at=nodes)
     try:
         solved = solver.run(problem, in_space(problem, old, solution.dofs), near=True)
-        return solver.checked(solver.fitted(solved))  # no pass without fit_touchdown
+        return solver.checked(solver.slackened(solver.fitted(solved)))  # no pass without fit_touchdown
     except ConvergenceError as failed:
         raise _other_failed(failed, "the plane line solved it, but not the line in space from it") from None
 

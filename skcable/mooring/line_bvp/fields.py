@@ -39,6 +39,7 @@ it (`skcable.errors.ResolutionWarning`).
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from functools import cached_property
 
 import numpy as np
@@ -48,7 +49,7 @@ from skcable.bvp.terms import CableState, term_outputs
 from skcable.errors import ConvergenceError
 from skcable.mooring.line_bvp.check import equilibrium_field, strong_residual, unresolved
 from skcable.mooring.line_bvp.discrete import DiscreteLine, LineState
-from skcable.mooring.line_bvp.fitting import landing, touchdown
+from skcable.mooring.line_bvp.fitting import LineBalance, landing, touchdown
 
 __all__ = ["NO_EDGE", "LineFields"]
 
@@ -77,6 +78,9 @@ class LineFields:
     #: `skcable.mooring.line_bvp.resolution`; the mesh holds them and the nodes fitted at the
     #: touchdowns); None on a failure's ``last`` but for the coarser line ``"auto"`` keeps
     n_elements: int | None = None
+    #: ``slack_solver(s0)``: the line re-solved with its slack stretch near the anchor ending at
+    #: ``s0`` (set by the solver that made it; the stiffness needs it where the line has one)
+    slack_solver: Callable[[float], LineFields] | None = None
 
     # --- where the line meets the seabed -------------------------------------------------------
     @property
@@ -201,6 +205,31 @@ class LineFields:
         converged state (`skcable.mooring.line_bvp.discrete.DiscreteLine.end_sensitivities`),
         computed once: the static stiffness and a warm start's predictor read them."""
         return self.problem.end_sensitivities(self.state)
+
+    def tension_profile(self):
+        """The P1-DG tension per element, sorted along the line: ``(s_left, s_right, T_left,
+        T_right)`` (m, m, N, N)."""
+        tb = self.problem.tbasis
+        dofs = tb.element_dofs  # (2, ne)
+        at = tb.doflocs[0][dofs]
+        T = self.dofs[self.problem.dim * self.problem.N :][dofs]
+        first = np.argmin(at, axis=0)
+        cols = np.arange(dofs.shape[1])
+        s_l, s_r = at[first, cols], at[1 - first, cols]
+        T_l, T_r = T[first, cols], T[1 - first, cols]
+        order = np.argsort(s_l)
+        return s_l[order], s_r[order], T_l[order], T_r[order]
+
+    @cached_property
+    def _from_anchor(self) -> LineBalance:
+        return LineBalance(self.problem, self.dofs, None, "a")
+
+    def load_before(self, s) -> tuple[float, ...]:
+        """The load (N) on the line over [0, s] in the residual's sense, per coordinate (the last
+        one up): the weight and the point loads before s, less the cable terms' force ``∫_0^s f``
+        (`skcable.mooring.line_bvp.fitting.LineBalance` from the anchor)."""
+        F = self._from_anchor.forces(np.array([float(s)]))[:, 0]
+        return tuple(float(v) for v in F)
 
     # --- the equilibrium residual (module docstring) ------------------------------------------
     @cached_property

@@ -140,7 +140,7 @@ def solve_on(
     its errors."""
     result = newton(
         problem.assemble,
-        z0,
+        problem.placed(z0),
         norm=lambda state: state.merit,
         increment=problem.increment,
         tol=options.tol,

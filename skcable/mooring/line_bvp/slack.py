@@ -23,7 +23,7 @@ from scipy.optimize import brentq
 
 from skcable.errors import ConvergenceError
 
-__all__ = ["next_slack_end", "slack_estimate", "slack_tension", "tension_zero"]
+__all__ = ["next_slack_end", "secant_slack_end", "slack_estimate", "slack_tension", "tension_zero"]
 
 #: updates of the end of the slack stretch at most (secant on the tension there)
 SLACK_PASSES = 12
@@ -54,6 +54,18 @@ def next_slack_end(tried, slope, s_touchdown):
     return float(s_next)
 
 
+def secant_slack_end(tried, slope, s_touchdown):
+    """`next_slack_end` with the secant slope of the last two (end, tension past it) pairs of
+    ``tried`` where there are two and it is positive, else ``slope`` (N/m): where the end's move
+    moves the whole line the tension past it falls by a constant factor per Newton step on
+    ``slope``, and the secant restores the superlinear convergence (both line BVPs' passes)."""
+    if len(tried) > 1:
+        (s1, g1), (s2, g2) = tried[-2:]
+        secant = (g2 - g1) / (s2 - s1) if s2 != s1 else 0.0
+        slope = secant if secant > 0 else slope
+    return next_slack_end(tried, slope, s_touchdown)
+
+
 def tension_zero(solution, tol):
     """Where the tension of a line grounded at A last rises through zero (m of arc length): the
     end of Jonkman's slack stretch estimated from a solve with friction fully mobilised
@@ -75,7 +87,7 @@ def slack_estimate(solution, friction):
     """The end ``s0`` of the slack stretch (m) that friction ``μ`` fully mobilised from the
     touchdown towards A would give a frictionless solution's grounded line on a flat seabed:
     ``μ (W(s_td) - W(s0)) = T(s_td)``, W the vertical load from A (the weight, the point loads
-    and the cable terms' share, `LineBVPSolution.load_before`); 0 when friction cannot take the
+    and the cable terms' share, `LineFields.load_before`); 0 when friction cannot take the
     pull."""
     if not solution.touches_beyond_anchor():
         return 0.0
@@ -90,7 +102,7 @@ def slack_estimate(solution, friction):
         )
 
     def before(s):
-        return solution.load_before(s)[1]
+        return solution.load_before(s)[-1]
 
     if before(s_td) <= pull:
         return 0.0
@@ -100,8 +112,8 @@ def slack_estimate(solution, friction):
 def slack_tension(solution):
     """Tension (N) just past the end ``s0`` of the slack stretch, and its slope (N/m) there:
     the first element that starts at s0 (its friction: μ times its vertical load,
-    `LineBVPSolution.load_before`)."""
+    `LineFields.load_before`)."""
     s_l, s_r, T_l, T_r = solution.tension_profile()
     k = int(np.argmin(np.abs(s_l - solution.problem.slack_end)))
-    friction_force = solution.friction * (solution.load_before(s_r[k])[1] - solution.load_before(s_l[k])[1])
+    friction_force = solution.friction * (solution.load_before(s_r[k])[-1] - solution.load_before(s_l[k])[-1])
     return float(T_l[k]), float(friction_force / (s_r[k] - s_l[k]))

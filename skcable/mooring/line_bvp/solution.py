@@ -2,14 +2,10 @@
 
 from __future__ import annotations
 
-from collections.abc import Callable
-from functools import cached_property
-
 import numpy as np
 
 from skcable.mooring.line_bvp.contact import anchor_split
 from skcable.mooring.line_bvp.fields import LineFields
-from skcable.mooring.line_bvp.fitting import LineBalance
 from skcable.mooring.line_bvp.problem import LineProblem, LineState
 from skcable.mooring.line_bvp.stiffness import fairlead_stiffness
 from skcable.results import ProfileMixin
@@ -70,9 +66,6 @@ class LineBVPSolution(LineFields, ProfileMixin):
         Residual and tangents at the solution.
     """
 
-    #: ``slack_solver(s0)``: the line re-solved with its slack stretch ending at ``s0`` (set by
-    #: the solver that made it; `stiffness` needs it where the line has a slack stretch)
-    slack_solver: Callable[[float], LineBVPSolution] | None = None
     #: the `LineBVP` model that solved it (None from `solve_line_bvp`)
     model: object | None = None
     problem: LineProblem
@@ -155,17 +148,6 @@ class LineBVPSolution(LineFields, ProfileMixin):
         a = self.problem.state_at(self.dofs, np.atleast_1d(self.arc(s)).ravel()).a
         return np.arctan2(a[1], a[0])
 
-    @cached_property
-    def _from_anchor(self) -> LineBalance:
-        return LineBalance(self.problem, self.dofs, None, "a")
-
-    def load_before(self, s):
-        """``(P_x, P_y)`` (N): the load on the line over [0, s] in the residual's sense, y up: the
-        weight and the point loads before s, less the cable terms' force ``∫_0^s f``
-        (`skcable.mooring.line_bvp.fitting.LineBalance` from the anchor)."""
-        F = self._from_anchor.forces(np.array([float(s)]))[:, 0]
-        return float(F[0]), float(F[1])
-
     def seabed_slope_at(self, s):
         """The seabed's slope ``b'`` under the line at arc length ``s`` (m)."""
         x = self.xy(np.array(s))[0]
@@ -175,19 +157,6 @@ class LineBVPSolution(LineFields, ProfileMixin):
     def x_touchdown(self):
         s_td = self.s_touchdown
         return float(self.xy(np.array(s_td))[0]) if s_td > 0 else 0.0
-
-    def tension_profile(self):
-        """The P1-DG tension per element, sorted along the line: (s_left, s_right, T_left, T_right)."""
-        tb = self.problem.tbasis
-        dofs = tb.element_dofs  # (2, ne)
-        at = tb.doflocs[0][dofs]
-        T = self.fields()[2][dofs]
-        first = np.argmin(at, axis=0)
-        cols = np.arange(dofs.shape[1])
-        s_l, s_r = at[first, cols], at[1 - first, cols]
-        T_l, T_r = T[first, cols], T[1 - first, cols]
-        order = np.argsort(s_l)
-        return s_l[order], s_r[order], T_l[order], T_r[order]
 
     def residual(self):
         """Largest scaled residual (forces over the total load, stretch over the length)."""

@@ -41,13 +41,23 @@ r"""The strategy that takes a line in space from its closed-form start to the co
    uniform mesh is kept, and a warm start solves on its start's mesh.
 5. **Fitting** (`LineBVP3DSolver.fitted`): a node at the touchdown and the landing the balance of
    forces gives (`skcable.mooring.line_bvp.fitting`), ``fit_touchdown`` passes while they move
-   more than 1e-9 of the length; a line in compression after it (a node at the touchdown left a
-   bend in one element) graded again and fitted again.
-6. **Checks** (`LineBVP3DSolver.checked`): every number finite, the line not in compression
-   (a slack stretch on the seabed near the anchor is not modelled in 3-D; a line in compression
-   on the seabed from the anchor has no equilibrium in tension: ``InputError("friction")``,
-   `skcable.mooring.line_bvp.check.refuse_sliding`), and its equilibrium
-   residual within its bound (`skcable.mooring.line_bvp.space.solution.LineBVP3DSolution.check`).
+   more than 1e-9 of the length; where friction fully mobilised puts the line in compression on
+   the seabed from the anchor, which friction can hold (``tan α ≤ μ``), **the slack stretch**
+   (`LineBVP3DSolver.slackened`): laid on the seabed from the anchor and held there
+   (`skcable.mooring.line_bvp.space.problem.LineProblem3D.lay_slack`), its end moved by the
+   plane line's steps until the tension past it is zero, the touchdown refitted with it; a line
+   in compression after it (a node at the touchdown left a bend in one element) graded again and
+   fitted again.
+6. **Checks** (`LineBVP3DSolver.checked`): every number finite, the line not in compression (a
+   line in compression on the seabed from the anchor, the seabed rising more steeply than
+   friction holds, has no equilibrium in tension: ``InputError("friction")``,
+   `skcable.mooring.line_bvp.check.refuse_sliding`), its equilibrium residual within its bound
+   (`skcable.mooring.line_bvp.space.solution.LineBVP3DSolution.check`); with a slack stretch, no
+   load across the line at its end (`refuse_across`: ``InputError`` naming ``current``,
+   ``terms`` or ``seabed``), friction holding each of its nodes (``InputError("friction")``) and
+   none lifted by a buoy; where its end is at a clump resting on the seabed (friction partly
+   mobilised there, which no line BVP models), ``InputError`` naming ``point_loads`` or
+   ``attachments``.
 7. **In its vertical plane** (the ``fallback`` where the model gives one,
    `skcable.mooring.line_bvp.fallback.plane_for_space`): where 1–6 fail, a line that
    hangs in the vertical plane of its ends (no current or cable terms; no seabed, or a `Plane`
@@ -76,9 +86,10 @@ from functools import cache, partial
 import numpy as np
 
 from skcable._budget import Budget
-from skcable.errors import ConvergenceError
+from skcable.errors import ConvergenceError, InputError
 from skcable.fe import first_converged
 from skcable.mooring.bathymetry import OffGrid
+from skcable.mooring.line_bvp.check import SLOPE_TOL
 from skcable.mooring.line_bvp.mesh import (
     COARSE,
     REFINEMENT,
@@ -87,6 +98,7 @@ from skcable.mooring.line_bvp.mesh import (
     grading_passes,
     solve_nested,
 )
+from skcable.mooring.line_bvp.slack import SLACK_PASSES, secant_slack_end, slack_tension, tension_zero
 from skcable.mooring.line_bvp.solver import LineSolver
 from skcable.mooring.line_bvp.space import start as closed_forms
 from skcable.mooring.line_bvp.space.problem import LineProblem3D
@@ -94,7 +106,11 @@ from skcable.mooring.line_bvp.space.solution import LineBVP3DSolution
 from skcable.mooring.line_bvp.space.start import closed_form_start
 from skcable.mooring.line_bvp.start import restart
 
-__all__ = ["LineBVP3DSolver"]
+__all__ = ["ACROSS", "LineBVP3DSolver"]
+
+#: the load across a grounded line at the end of its slack stretch, over ``μ w`` there, above
+#: which the line in space refuses the stretch (`LineBVP3DSolver.refuse_across`)
+ACROSS = 1e-6
 
 
 @dataclass
@@ -118,6 +134,8 @@ class LineBVP3DSolver(LineSolver):
         self.fixed = fixed_nodes(scene.joints, scene.point_loads)
         #: the Newton options of every solve (the scene's: `solve_line_bvp_3d`'s ``options``)
         self.options = scene.options
+        #: the end of the slack stretch the problems are built with (m; 0: none; `slackened`)
+        self.slack_end = 0.0
 
     name = "solve_line_bvp_3d"
 
@@ -129,10 +147,14 @@ class LineBVP3DSolver(LineSolver):
         sc = self.scene
         return sc.seabed is not None and sc.fit_touchdown > 0 and sc.mesh == "graded"
 
-    def problem(self, n, fitted=(), load_factor=1.0, nodes_at=None) -> LineProblem3D:
+    def problem(self, n, fitted=(), load_factor=1.0, nodes_at=None, slack_end=None) -> LineProblem3D:
         """The discrete line on ``n`` elements (on the mesh ``nodes_at`` where given), nodes at
-        ``fitted``, the drag and the point loads times ``load_factor``."""
-        return LineProblem3D(self.scene, n, fitted=fitted, nodes_at=nodes_at, load_factor=load_factor)
+        ``fitted``, the drag and the point loads times ``load_factor``, its slack stretch laid
+        up to ``slack_end`` (by default the solver's `slack_end`)."""
+        s0 = self.slack_end if slack_end is None else slack_end
+        return LineProblem3D(
+            self.scene, n, fitted=fitted, nodes_at=nodes_at, load_factor=load_factor, slack_end=s0
+        )
 
     #: what a solve gives (`LineSolver.run`)
     result = Solved
@@ -186,10 +208,110 @@ class LineBVP3DSolver(LineSolver):
                 solved = kept
         if fit:
             solved = self.fitted(solved)
+        solved = self.slackened(solved)
         if self.compressed(solved):  # a node at the touchdown left a bend in one element: graded, refitted
             solved = self.graded(solved, or_from_start=not self.graded_first)
             solved = self.fitted(solved) if fit else solved
         return self.checked(solved)
+
+    def held_by_friction(self, solved) -> bool:
+        """Whether ``solved`` (friction fully mobilised along the seabed) is in compression on the
+        seabed from the anchor where friction can hold a slack stretch instead: the seabed rising
+        from the anchor no more steeply than friction holds (``tan α ≤ μ``; steeper,
+        `skcable.mooring.line_bvp.check.refuse_sliding` refuses the scene)."""
+        friction = self.scene.friction
+        if not (friction > 0 and solved.problem.anchor_on_seabed and solved.problem.slack_end == 0):
+            return False
+        slope = solved.problem.sliding_to_anchor(solved.dofs, self.tolerance)
+        return slope is not None and slope <= friction + SLOPE_TOL
+
+    def compressed(self, solved) -> bool:
+        """`LineSolver.compressed`, but for a line whose compression friction holds as a slack
+        stretch (`held_by_friction`: its mesh is not at fault; `slackened` lays the stretch)."""
+        return super().compressed(solved) and not self.held_by_friction(solved)
+
+    def slackened(self, solved) -> Solved:
+        """``solved`` with its slack stretch near the anchor (J.M. Jonkman, "Dynamics modeling and
+        loads analysis of an offshore floating wind turbine", NREL, 2007), where friction fully
+        mobilised would take more than the pull (`held_by_friction`), or where ``solved`` has one
+        (a warm start's): the stretch laid on the seabed up to ``s0``
+        (`skcable.mooring.line_bvp.space.problem.LineProblem3D.lay_slack`) and ``s0`` moved, as
+        the plane line's (`skcable.mooring.line_bvp.slack`): first where the fully mobilised
+        line's tension rises through zero (`tension_zero`), then by Newton steps on the tension
+        just past it (`slack_tension`, slope ``μ w``), secant steps once two are known, kept in
+        the bracket of those tried (`next_slack_end`), until that tension is zero to the solve's
+        tolerance of the force scale; the touchdown refitted at each pass. ``solved`` as it is
+        where friction holds no stretch."""
+        s0 = solved.problem.slack_end
+        if s0 == 0:
+            if not self.held_by_friction(solved):
+                return solved
+            s0 = tension_zero(self.kept(solved), 1e3 * self.tolerance * solved.problem.load_scale)
+            self.refuse_across(solved, s0)
+        fit = self.scene.seabed is not None and self.scene.fit_touchdown
+        placed, tried = list(solved.problem.fitted), []
+        for _ in range(SLACK_PASSES + self.scene.fit_touchdown):
+            self.slack_end = s0
+            try:
+                solved = self.refit(solved, placed)
+            except ConvergenceError as failed:
+                failed.args = (f"{failed} (with the slack stretch near the anchor laid up to {s0:.6g} m)",)
+                raise
+            line = self.kept(solved)
+            if s0 == 0:  # the tension stays positive down to the anchor: no stretch after all
+                return solved
+            moved = False
+            if fit:
+                placed, moved, _ = self.moved_edges(solved, placed)
+            g, slope = slack_tension(line)
+            tol = self.tolerance * solved.problem.load_scale
+            if abs(g) <= tol and not moved:
+                return solved
+            if abs(g) > tol:
+                tried.append((s0, g))
+                s0 = secant_slack_end(tried, slope, line.s_touchdown)
+        clump = self.clump_at_slack_end(solved, tried, placed)
+        if clump is not None:
+            raise InputError(
+                self.load_name(clump),
+                f"the slack stretch near the anchor ends at the point load at s = {clump:.6g} m, which "
+                "rests on the seabed with its friction only partly mobilised: this BVP does not model "
+                "that state (mooring.Line solves it in closed form)",
+            )
+        raise ConvergenceError(
+            f"{self.name}: the end of the slack stretch near the anchor was not found (tension "
+            f"{tried[-1][1]:.3g} N past it after {len(tried)} updates)",
+            solved.history,
+        )
+
+    def clump_at_slack_end(self, solved, tried, placed) -> float | None:
+        """The arc length (m) of a clump weight where the slack stretch ends, or None: the tension
+        past the stretch's end negative for every end tried before it, positive with the end just
+        past it (the clump laid with the stretch), or the clump at the touchdown. A clump on the
+        seabed can end the stretch itself, its friction only partly mobilised (the plane line's
+        `skcable.mooring.line_bvp.driver.LineBVPSolver.clump_at_slack_end`): the tension past the
+        end then has no zero, and the passes cannot settle."""
+        below = max((s0 for s0, g in tried if g < 0), default=0.0)
+        step, s_td = 1e-6 * solved.problem.L, self.kept(solved).s_touchdown
+        for s, P in self.scene.point_loads:
+            if not (P > 0 and below < s <= s_td + step):
+                continue
+            if s >= s_td - step:  # the clump at the touchdown: past it the line hangs, in tension
+                return float(s)
+            self.slack_end = s + step
+            try:
+                past = self.kept(self.refit(solved, placed))
+            except ConvergenceError:
+                continue
+            if slack_tension(past)[0] > 0:
+                return float(s)
+        return None
+
+    def load_name(self, s) -> str:
+        """The argument that gave the point load at arc length ``s``: ``"attachments"`` (at a
+        joint) or ``"point_loads"``."""
+        joints = self.scene.joints
+        return "attachments" if any(s == joints[j] for j, _ in self.scene.attachments) else "point_loads"
 
     def warm(self, start: LineBVP3DSolution) -> tuple[LineProblem3D, np.ndarray]:
         """The problem and the first iterate of a warm start on the uniform mesh (module
@@ -205,7 +327,7 @@ class LineBVP3DSolver(LineSolver):
                 guess = []
             points = guess if len(guess) == len(points) else points
         problem = self.problem(self.scene.n_elements, points, nodes_at=start.problem.nodes_at)
-        if problem.fitted != start.problem.fitted:
+        if not np.array_equal(problem.mesh.p, start.problem.mesh.p):  # other fitted nodes, a slack end
             z = restart(start.problem, z, problem)
         return problem, z
 
@@ -365,12 +487,96 @@ class LineBVP3DSolver(LineSolver):
         problem, z = solved.problem, solved.dofs
         if not (np.all(np.isfinite(z)) and np.all(np.isfinite(solved.state.R0))):
             raise ConvergenceError("solve_line_bvp_3d: non-finite result", solved.history)
-        grounded = problem.contact_rows is not None and self.scene.friction > 0
-        slack = (
-            "friction holds a slack stretch on the seabed, which the 3-D line does not model "
-            "(solve_line_bvp does, in the plane)"
+        # compression friction holds from an anchor on the seabed is laid (`slackened`); with the
+        # anchor above it, friction partly mobilised may hold the line (the plane line's reason)
+        above = self.scene.friction > 0 and problem.seabed is not None and not problem.anchor_on_seabed
+        self.refuse_compressed(
+            solved, "fully mobilised friction with the anchor above the seabed" if above else ""
         )
-        self.refuse_compressed(solved, slack if grounded else "")
         solution = LineBVP3DSolution(problem, z, solved.history, solved.state)
         solution.check()
+        if problem.slack_end > 0:  # where the stretch ended up: no load across, held by friction
+            self.refuse_across(solved, problem.slack_end)
+            self.refuse_sliding_stretch(solution)
+            solution.slack_solver = partial(self.at_slack_end, solution)
         return solution
+
+    def refuse_across(self, solved, s0) -> None:
+        """``InputError`` where the line's load across it, in the seabed's plane, at the end
+        ``s0`` of its slack stretch exceeds `ACROSS` times the friction ``μ w`` there: a current
+        across the line (``"current"``; ``"terms"`` for the analyst's), or the seabed sloping
+        across it (``"seabed"``, the weight's share).
+
+        The contact rows' friction acts along the line only, so the tension holds the load across
+        a grounded line, ``T κ = q``; past the stretch's end the tension grows from zero
+        (``T ≈ μ w (s - s0)``), and the line would turn through ``(q/μw) ln(s - s0)``: no solution,
+        and the discrete lines' answers drift with the mesh (a chain in a 0.2 m/s current across
+        it, ``q/μw`` = 1.5 %: its fairlead force across the chord moved 0.3 % between 64 and 512
+        elements; in a current along the line its end forces moved 5.7e-9 between 64 and 256,
+        as a line's without current do: `tests/mooring/test_line3d_slack.py`)."""
+        problem, z = solved.problem, solved.dofs
+        s = np.array([min(s0 + 1e-6 * problem.L, problem.L)])
+        state = problem.state_at(z, s)
+        t = state.a[:, 0] / np.linalg.norm(state.a[:, 0])
+        r = state.position[:, 0]
+        normal = np.array([*(-np.asarray(problem.seabed.gradient(r[0], r[1]), dtype=float).ravel()), 1.0])
+        across = np.cross(normal, t)
+        across /= np.linalg.norm(across)
+        load = problem.forces_at(z, s)[:, 0]  # the weight and the terms (N/m)
+        w = float(problem.weight_at(s)[0])
+        by_weight = -w * float(across[2])  # the weight's share across: a seabed sloping across it
+        by_terms = float(load @ across) - by_weight  # the current's drag and the analyst's terms
+        bound = ACROSS * self.scene.friction * w
+        if abs(by_terms) <= bound and abs(by_weight) <= bound:
+            return
+        name = (
+            "seabed" if abs(by_terms) <= bound else ("current" if self.scene.current is not None else "terms")
+        )
+        total = abs(float(load @ across))
+        raise InputError(
+            name,
+            f"loads the line across it by {total:.3g} N/m ({total / (self.scene.friction * w):.2g} of μw) "
+            f"where friction holds a slack stretch near the anchor (its end at {s0:.6g} m): the 3-D "
+            "line's friction acts along the line only, and its tension, zero at the stretch's end, "
+            "cannot hold a load across it (a current along the line, or a seabed that does not slope "
+            "across it, can be solved)",
+        )
+
+    def refuse_sliding_stretch(self, solution) -> None:
+        """``InputError("friction")`` where friction cannot hold the slack stretch: at a node of
+        it (the anchor's included) the seabed's force along the seabed exceeds ``μ`` times its
+        force across it (a seabed sloping down from the anchor more steeply than friction holds,
+        a current's drag), beyond the solve's tolerance of the force scale."""
+        problem, R0 = solution.problem, solution.state.R0
+        N, held = problem.N, problem.held_dofs
+        nodes = np.append(held[held < N], problem.end_a)
+        force = np.array([R0[k * N + nodes] for k in range(3)])  # the seabed's force on each node
+        r = solution.dofs[: 3 * N].reshape(3, N)[:, nodes]
+        normal = np.vstack([-problem.seabed.gradient(r[0], r[1]), np.ones(nodes.size)])
+        normal /= np.sqrt(np.sum(normal * normal, axis=0))
+        pressing = np.sum(force * normal, axis=0)
+        along = np.sqrt(np.sum((force - pressing * normal) ** 2, axis=0))
+        tol = self.tolerance * problem.load_scale
+        if np.any(pressing < -tol):  # a buoy on the stretch, which has no tension to hold it down
+            k = int(np.argmin(pressing))
+            s = float(problem.basis.doflocs[0][nodes[k]])
+            raise InputError(
+                self.load_name(s),
+                f"a buoy lifts the slack stretch near the anchor off the seabed at s = {s:.6g} m (the "
+                "stretch has no tension to hold it down; the line in space lays it on the seabed)",
+            )
+        if np.any(along > self.scene.friction * pressing + tol):
+            raise InputError(
+                "friction",
+                f"too weak to hold the slack stretch near the anchor (the seabed's force along it "
+                f"reaches {float(np.max(along - self.scene.friction * pressing)):.3g} N more than μN at a "
+                "node): the line would slide",
+            )
+
+    def at_slack_end(self, solution, s0) -> LineBVP3DSolution:
+        """``solution``'s line re-solved from it on its mesh with its slack stretch ending at
+        ``s0`` instead (its node moved there): for the stiffness along the slack end."""
+        nodes = np.sort(solution.problem.mesh.p[0])
+        problem = self.problem(nodes.size - 1, solution.problem.fitted, nodes_at=nodes, slack_end=s0)
+        solved = self.run(problem, restart(solution.problem, solution.dofs, problem), near=True)
+        return self.kept(solved)

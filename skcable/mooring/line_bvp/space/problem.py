@@ -15,6 +15,7 @@ from __future__ import annotations
 import numpy as np
 
 from skcable.bvp.terms import CableState
+from skcable.errors import InputError
 from skcable.mooring.line_bvp.contact import ContactRows
 from skcable.mooring.line_bvp.discrete import DiscreteLine
 from skcable.mooring.line_bvp.space.loads import SegmentDrag
@@ -37,30 +38,90 @@ class LineProblem3D(DiscreteLine):
     load_factor : float
         Factor on the current's drag and the point loads (the continuation,
         `skcable.mooring.line_bvp.solver.LineSolver.continued`; 1: the scene's).
+    slack_end : float
+        The end ``s0`` (m) of a slack stretch laid on the seabed from the anchor (`lay_slack`; 0:
+        none).
     """
 
     dim = 3
 
-    def __init__(self, scene, n_elements, fitted=(), nodes_at=None, load_factor=1.0):
+    def __init__(self, scene, n_elements, fitted=(), nodes_at=None, load_factor=1.0, slack_end=0.0):
         self.scene, self.load_factor = scene, float(load_factor)
         self.anchor, self.fairlead = scene.anchor, scene.fairlead
         self.segments, self.seabed, self.friction = scene.segments, scene.seabed, scene.friction
         lengths = np.array([seg.length for seg in self.segments])
         self.point_loads = [(s, self.load_factor * P) for s, P in scene.point_loads]
         self.fitted = tuple(float(p) for p in fitted)
+        self.slack_end = float(slack_end)
         #: the graded mesh's nodes (without the fitted ones), or None: uniform
         self.nodes_at = None if nodes_at is None else np.asarray(nodes_at, dtype=float)
-        inner = self.discretise(lengths, self.point_loads, n_elements, fitted, nodes_at)
+        nodes = [*fitted, self.slack_end] if self.slack_end > 0 else fitted
+        inner = self.discretise(lengths, self.point_loads, n_elements, nodes, nodes_at)
         self.properties()
         self.terms = self._terms()
         self.load_scale = self._load_scale()
         self.length_scale = self.L
-        self.contact_rows = self._contact_rows(inner) if self.seabed is not None else None
         a, bed = self.anchor, self.seabed
         #: A lies on the seabed (to 1e-12 of the length): the seabed, not the anchor, carries its push
         self.anchor_on_seabed = (
             bed is not None and abs(a[2] - float(bed.height(a[0], a[1]))) <= 1e-12 * self.L
         )
+        if self.slack_end > 0:
+            inner = self.lay_slack(inner)
+        self.contact_rows = self._contact_rows(inner) if self.seabed is not None else None
+
+    def lay_slack(self, inner) -> np.ndarray:
+        r"""Lay the slack stretch ``[0, s0]`` on the seabed and hold it there (`DiscreteLine.hold`):
+        the inner position nodes left free.
+
+        Friction holds the stretch, its tension zero (J.M. Jonkman, "Dynamics modeling and loads
+        analysis of an offshore floating wind turbine", NREL, 2007: ``max(H - μ w (L_B - s), 0)``);
+        its shape is that of its laying, which statics does not decide: as Jonkman's (and
+        MoorPy's) line, it lies straight from the anchor towards the fairlead, along the seabed,
+        unstretched. Its nodes and tensions are held (the node at ``s0`` too, where the tensioned
+        line starts), so the rest of the line is the same line anchored at ``s0``: its rows at the
+        stretch's nodes are the seabed's forces there (its weight and the current's drag on it,
+        which the driver checks friction holds)."""
+        if not self.anchor_on_seabed:
+            raise InputError("slack_end", "a slack stretch lies on the seabed from an anchor on it")
+        s_dof, N = self.basis.doflocs[0], self.N
+        laid = np.flatnonzero(s_dof <= self.slack_end * (1.0 + 1e-12))
+        laid = laid[laid != self.end_a]
+        if not laid.size:  # an end within 1e-9 of the length of the anchor: no stretch to lay
+            return inner
+        tension = self.tbasis.element_dofs[:, self.middle < self.slack_end].ravel()
+        positions = self.seabed_path(s_dof[laid], self.fairlead)
+        # as the fairlead moves across, the stretch turns with the chord: central differences
+        step = 1e-6 * float(np.linalg.norm(self.fairlead[:2] - self.anchor[:2]))
+        turns = np.zeros((3 * laid.size + tension.size, 3))
+        for k in range(2):
+            move = np.zeros(3)
+            move[k] = step
+            plus = self.seabed_path(s_dof[laid], self.fairlead + move)
+            minus = self.seabed_path(s_dof[laid], self.fairlead - move)
+            turns[: 3 * laid.size, k] = ((plus - minus) / (2.0 * step)).ravel()
+        self.hold(
+            np.concatenate([*(k * N + laid for k in range(3)), 3 * N + tension]),
+            np.concatenate([*positions, np.zeros(tension.size)]),
+            turns,
+        )
+        return inner[~np.isin(inner, laid)]
+
+    def seabed_path(self, s, fairlead) -> np.ndarray:
+        """The points (3, n) (m) at arc lengths ``s`` (m) along the seabed from the anchor, in the
+        vertical plane through the anchor and ``fairlead``: the seabed's heights on that line at
+        2049 points up to ``max(s)`` horizontally, the arc length of the polyline through them
+        (exact on a `skcable.mooring.bathymetry.Plane`, within the sampling's chord error on a
+        grid)."""
+        a, chord = self.anchor, fairlead[:2] - self.anchor[:2]
+        u = chord / np.linalg.norm(chord)
+        sigma = np.linspace(0.0, float(np.max(s)), 2049)
+        xy = a[:2, None] + u[:, None] * sigma
+        b = np.asarray(self.seabed.height(xy[0], xy[1]), dtype=float)
+        arc = np.concatenate([[0.0], np.cumsum(np.hypot(np.diff(sigma), np.diff(b)))])
+        along = np.interp(s, arc, sigma)
+        xy = a[:2, None] + u[:, None] * along
+        return np.vstack([xy, np.asarray(self.seabed.height(xy[0], xy[1]), dtype=float)])
 
     # --- properties, terms, scales -------------------------------------------------------------
     def _terms(self):

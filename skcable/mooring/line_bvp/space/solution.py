@@ -42,6 +42,11 @@ class LineBVP3DSolution(LineFields, Shown):
         The seabed's force on the line at each contact node, friction included (N).
     in_contact : ndarray of bool
         The nodes on the seabed (the final active set).
+    slack_end : float
+        The end ``s0`` (m) of the slack stretch near the anchor, where friction holds the line
+        with its tension zero (`skcable.mooring.line_bvp.space.problem.LineProblem3D.lay_slack`;
+        0: none). The anchor then carries nothing: the seabed holds the stretch, the anchor's
+        node included (`anchor_seabed_force`).
     s_touchdown, s_landing, length_on_seabed : float
         Where the line leaves the seabed for the last time towards the fairlead, where a line
         hanging from an anchor above the seabed first lands on it (unstretched arc lengths from
@@ -65,15 +70,23 @@ class LineBVP3DSolution(LineFields, Shown):
         self.anchor, self.fairlead, self.length = problem.anchor, problem.fairlead, problem.L
         self.history = [float(h) for h in history]
         self.iterations = len(self.history) - 1
+        self.friction = problem.friction
         S_A, S_B = (np.array(v, dtype=float) for v in problem.reactions(state.R0))
         self._contact()
-        if self.anchor_on_seabed:
+        if problem.slack_end > 0:  # the seabed holds the slack stretch, the anchor's node too
+            S_A, self.anchor_seabed_force = np.zeros(3), S_A
+        elif self.anchor_on_seabed:
             bed, a = problem.seabed, self.anchor
             grad = bed.gradient(a[0], a[1])
             chord = self.xyz(np.array(min(problem.L, self.mesh_size))) - a
             S_A, self.anchor_seabed_force, _ = anchor_split(S_A, grad, chord, problem.friction)
         self.force_on_anchor, self.force_on_fairlead = -S_A, -S_B
         self.T_A, self.T_B = float(np.linalg.norm(S_A)), float(np.linalg.norm(S_B))
+
+    @property
+    def slack_end(self) -> float:
+        """The end of the slack stretch (m; 0: none; class docstring)."""
+        return self.problem.slack_end
 
     @property
     def mesh_size(self) -> float:
@@ -177,5 +190,7 @@ class LineBVP3DSolution(LineFields, Shown):
             f"LineBVP3DSolution({self.problem.mesh.t.shape[1]} elements: force_on_fairlead=[{Fb[0]:.9g}, "
             f"{Fb[1]:.9g}, {Fb[2]:.9g}] N, force_on_anchor=[{Fa[0]:.9g}, {Fa[1]:.9g}, {Fa[2]:.9g}] N, "
             f"T_A={self.T_A:.9g} N, T_B={self.T_B:.9g} N, length={self.length:.9g} m, "
-            f"{int(self.in_contact.sum())} nodes on the seabed, iterations={self.iterations})"
+            f"{int(self.in_contact.sum())} nodes on the seabed"
+            + (f", slack stretch to s = {self.slack_end:.6g} m" if self.slack_end > 0 else "")
+            + f", iterations={self.iterations})"
         )

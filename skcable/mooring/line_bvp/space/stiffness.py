@@ -13,6 +13,11 @@ by ``∂S_A/∂r_B`` (the coupling a mooring system needs).
 ``dε/dT``; the dynamic one, about the converged (mean) state, takes the laws' dynamic compliance
 (`skcable.mooring.axial.StaticDynamicRope`: ``1/(α + β T_mean)`` at the local mean tension; the
 static one for every other law). The result says which it is.
+
+**The slack stretch.** Where friction holds a slack stretch near the anchor, its end ``s0`` moves
+with the fairlead: ``K`` takes the plane line's correction along it
+(`skcable.mooring.line_bvp.stiffness.slack_correction`, central differences of the line
+re-solved with its end moved), and the anchor's reaction, zero, does not move.
 """
 
 from __future__ import annotations
@@ -23,6 +28,7 @@ import numpy as np
 
 from skcable._checks import one_of
 from skcable.errors import ConvergenceError
+from skcable.mooring.line_bvp.stiffness import slack_correction
 
 __all__ = ["KINDS", "FairleadStiffness", "fairlead_stiffness_3d"]
 
@@ -64,6 +70,9 @@ def fairlead_stiffness_3d(solution, kind: str = "static") -> FairleadStiffness:
         K_B, K_A, _ = problem.end_sensitivities(problem.assemble(solution.dofs, dynamic=True))
     else:
         K_B, K_A = (K.copy() for K in solution.sensitivity[:2])  # the solution keeps its own
+    if problem.slack_end > 0:  # its end moves with the fairlead; the anchor carries nothing
+        K_B = K_B + slack_correction(solution, solution.slack_solver, lambda line: -line.force_on_fairlead)
+        K_A = np.zeros((3, 3))
     if not (np.all(np.isfinite(K_B)) and np.all(np.isfinite(K_A))):
         raise ConvergenceError("fairlead stiffness: non-finite sensitivities", solution.history)
     return FairleadStiffness(K_B, K_A, kind)

@@ -1,0 +1,193 @@
+"""Friction's slack stretch near the anchor in the line in space (`LineProblem3D.lay_slack`).
+
+References, each independent of the line in space's solve:
+
+- J.M. Jonkman's grounded line in closed form ("Dynamics modeling and loads analysis of an
+  offshore floating wind turbine", NREL, 2007; `skcable.mooring.Line`): ``H_A = 0``, tension
+  ``max(H - μ w (s_td - s), 0)`` on the seabed, and its fairlead stiffness;
+- the plane line BVP (`skcable.mooring.solve_line_bvp`), whose slack stretch is its own model
+  (friction holding each node's weight, `skcable.mooring.line_bvp.slack`) on its own meshes;
+- central differences of the solves themselves for the stiffness;
+- Coulomb's bound for the stretch: Morison's drag along it by hand against ``μ w``.
+"""
+
+import numpy as np
+import pytest
+
+from skcable import mooring
+from skcable.errors import InputError
+from skcable.mooring.bathymetry import Grid
+from skcable.mooring.line_bvp.space import LineBVP3D, LineSegment, solve_line_bvp_3d
+
+#: the pinned `line_bvp_friction` scene's line: 850 m, 1 kN/m, EA 5e8 N, friction 0.5
+CHAIN = [(850.0, 1000.0, 5e8)]
+ANGLE = 0.3  # the chord's heading (rad): the stretch is laid along it, not along x
+ALONG = np.array([np.cos(ANGLE), np.sin(ANGLE), 0.0])
+ACROSS = np.array([-np.sin(ANGLE), np.cos(ANGLE), 0.0])
+FAIRLEAD = 800.0 * ALONG + np.array([0.0, 0.0, 150.0])
+
+
+@pytest.fixture(scope="module")
+def turned():
+    """The chain on a flat seabed, its chord turned by `ANGLE`, on 96 elements."""
+    return solve_line_bvp_3d((0.0, 0.0, 0.0), FAIRLEAD, CHAIN, seabed=0.0, friction=0.5, n_elements=96)
+
+
+@pytest.fixture(scope="module")
+def jonkman():
+    """The same line in closed form (Jonkman's grounded line, `mooring.Line`)."""
+    return mooring.Line([mooring.Segment(850.0, 1000.0, 5e8)], seabed=0.0, friction=0.5).solve(800.0, 150.0)
+
+
+def test_a_slack_stretch_in_space_is_jonkmans_closed_form(turned, jonkman):
+    """End forces, the stretch's end and the tension field against the closed form: the fairlead's
+    force in the vertical plane of the chord (H, V_B) within the discretisation (measured 2.8e-10
+    of T_B), none across it, the anchor unloaded; the stretch ends where Jonkman's tension
+    ``H - μ w (s_td - s)`` reaches zero (measured 3.3e-7 m); the P1 tension field zero on the
+    stretch and the closed form's past it within its O(h²) (measured 1.2e-5 of T_B, near the
+    fairlead; 4e-10 on the seabed)."""
+    F = turned.force_on_fairlead
+    assert abs(-F @ ALONG - jonkman.H) <= 1e-8 * turned.T_B
+    assert abs(-F[2] - jonkman.V_B) <= 1e-8 * turned.T_B
+    assert abs(F @ ACROSS) <= 1e-12 * turned.T_B
+    np.testing.assert_array_equal(turned.force_on_anchor, 0.0)
+    s0 = jonkman.length_on_seabed - jonkman.H / (0.5 * 1000.0)
+    assert turned.slack_end > 0 and abs(turned.slack_end - s0) <= 1e-8 * turned.length
+    s = np.linspace(0.0, turned.length, 401)
+    T = np.asarray(turned.T_of_s(s))
+    np.testing.assert_array_equal(T[s < turned.slack_end], 0.0)
+    past = s > turned.slack_end + 1e-6
+    assert np.abs(T[past] - np.asarray(jonkman.T_of_s(s[past]))).max() <= 5e-5 * turned.T_B
+
+
+def test_the_stiffness_with_a_slack_stretch_is_the_derivative_of_the_solves(turned, jonkman):
+    """``∂S_B/∂r_B`` (the stretch's end and heading moving with the fairlead) against central
+    differences of solves 1 mm apart (measured 5e-9 of its largest entry); in the chord's
+    vertical plane, the closed form's stiffness (measured 3.2e-9); across it, ``H/800`` (measured
+    4.6e-10 off): the line and its stretch
+    turn about the anchor, as Jonkman's line in the vertical plane of its ends does; the anchor's
+    reaction, zero, does not move."""
+    K = turned.stiffness()
+    step, numeric = 1e-3, np.zeros((3, 3))
+    for k in range(3):
+        move = np.zeros(3)
+        move[k] = step
+        plus, minus = (
+            solve_line_bvp_3d((0.0, 0.0, 0.0), FAIRLEAD + d, CHAIN, seabed=0.0, friction=0.5, n_elements=96)
+            for d in (move, -move)
+        )
+        numeric[:, k] = -(plus.force_on_fairlead - minus.force_on_fairlead) / (2.0 * step)
+    scale = np.abs(K.matrix).max()
+    assert np.abs(K.matrix - numeric).max() <= 1e-7 * scale
+    frame = np.array([ALONG, [0.0, 0.0, 1.0]])
+    np.testing.assert_allclose(frame @ K.matrix @ frame.T, jonkman.stiffness(), rtol=0, atol=1e-7 * scale)
+    assert abs(ACROSS @ K.matrix @ ACROSS - jonkman.H / 800.0) <= 1e-8 * jonkman.H / 800.0
+    np.testing.assert_array_equal(K.anchor, 0.0)
+
+
+def test_on_a_grid_sloping_along_the_line_the_line_in_space_is_the_plane_lines():
+    """A chain on a bathymetry grid sloping 1 % along the line, friction 1 (the scene the line in
+    space refused before, friction holding 573 m of it): solved in space (graded meshes), it is
+    the plane line on that slope within their discretisations (measured 4.2e-11 of T_B); as a
+    line in the sea (`mooring.line_3d`, uniform mesh) its error against the plane line is within
+    the error its model claims (`ModelChoice.error`: measured 3.2e-7, claimed 4.5e-6)."""
+    x, y = np.linspace(-100.0, 1000.0, 12), np.linspace(-300.0, 300.0, 7)
+    grid = Grid(x, y, -150.0 - 0.01 * x[:, None] + 0.0 * y[None, :])
+    plane = mooring.solve_line_bvp(
+        780.0, 130.0, [(850.0, 1200.0, 1e9)], seabed=0.0, seabed_slope=-0.01, friction=1.0, n_elements=96
+    )
+    want = np.array([-plane.H_B, 0.0, -plane.V_B])
+    ends = (0.0, 0.0, -150.0), (780.0, 0.0, -20.0)
+    space = solve_line_bvp_3d(*ends, [(850.0, 1200.0, 1e9)], seabed=grid, friction=1.0, n_elements=96)
+    assert space.slack_end > 500.0
+    assert np.abs(space.force_on_fairlead - want).max() <= 1e-9 * space.T_B
+    line = mooring.Line([mooring.Segment(850.0, 1200.0, 1e9)], seabed=grid, friction=1.0)
+    sea = mooring.line_3d(line, [0.0, 0.0, -150.0], [780.0, 0.0, -20.0])
+    assert sea.model.name == "3-D line BVP"
+    force = sea.end_forces[1]
+    assert np.abs(force - want).max() <= sea.model.error * np.abs(want).max()
+
+
+def test_a_load_across_the_end_of_the_slack_stretch_is_refused():
+    """The line in space's friction acts along the line: past the stretch's end its tension, zero
+    there, cannot hold a load across it (`LineBVP3DSolver.refuse_across`): a current across the
+    line is refused naming ``current``, a grid sloping across it naming ``seabed``; a current
+    along the line is solved, and its end forces converge with the mesh as a line's without
+    current do (measured 5.7e-9 apart on 64 and 256 elements; a current of 0.2 m/s across the
+    line, solved on a build without this refusal, moved them 3e-5 and its force across the
+    chord 0.3 %, between 64 and 512)."""
+    seg = [LineSegment(850.0, 1000.0, 5e8, diameter=0.3, cd_normal=2.4, cd_tangential=0.4)]
+    with pytest.raises(InputError, match="^current:"):
+        solve_line_bvp_3d((0, 0, 0), (780, 0, 150), seg, seabed=0.0, friction=1.0, current=(0.0, 0.2))
+    x, y = np.linspace(-100.0, 1000.0, 12), np.linspace(-300.0, 300.0, 7)
+    across = Grid(x, y, 0.0 * x[:, None] + 0.01 * y[None, :])
+    with pytest.raises(InputError, match="^seabed:"):
+        solve_line_bvp_3d((0, 0, 0), (780, 0, 150), seg, seabed=across, friction=1.0)
+    forces = [
+        solve_line_bvp_3d(
+            (0, 0, 0), (780, 0, 150), seg, seabed=0.0, friction=1.0, current=(0.3, 0.0), n_elements=n
+        ).force_on_fairlead
+        for n in (64, 256)
+    ]
+    assert np.abs(forces[1] - forces[0]).max() <= 1e-7 * np.abs(forces[0]).max()
+
+
+@pytest.mark.parametrize(("mu", "held"), [(0.150, False), (0.157, True)])
+def test_friction_holds_the_stretch_against_a_current_along_it_up_to_coulombs_bound(mu, held):
+    """A current of 1 m/s along the line towards the anchor drags the stretch by Morison's
+    tangential drag, ``½ ρ d C_t v²`` = 153.75 N/m (ρ 1025 kg/m³, d 0.3 m, C_t 1); friction
+    holds it up to ``μ w``, w = 1000 N/m: μ = 0.157 holds it, μ = 0.150 does not, and the line
+    is refused naming ``friction``."""
+    seg = [LineSegment(850.0, 1000.0, 5e8, diameter=0.3, cd_normal=2.4, cd_tangential=1.0)]
+
+    def solve():
+        return solve_line_bvp_3d((0, 0, 0), (780, 0, 150), seg, seabed=0.0, friction=mu, current=(-1.0, 0.0))
+
+    if held:
+        assert solve().slack_end > 0
+    else:
+        with pytest.raises(InputError, match="^friction: too weak to hold the slack stretch"):
+            solve()
+
+
+def test_a_warm_start_of_a_line_with_a_slack_stretch_is_its_solve_from_scratch():
+    """`LineBVP3D` from a solution at a fairlead 1 m away (its stretch's end moved with it): the
+    solve from scratch within the stretch's tolerance (its end solved to the Newton tolerance of
+    the tension past it; measured 2.5e-14 of T_B, and 2.9e-14 m)."""
+    model = LineBVP3D(CHAIN, seabed=0.0, friction=0.5, n_elements=96)
+    start = model.solve((0.0, 0.0, 0.0), FAIRLEAD)
+    moved = FAIRLEAD + np.array([1.0, 0.5, 0.0])
+    warm, cold = model.solve((0.0, 0.0, 0.0), moved, start=start), model.solve((0.0, 0.0, 0.0), moved)
+    assert warm.slack_end != start.slack_end
+    assert np.abs(warm.force_on_fairlead - cold.force_on_fairlead).max() <= 1e-10 * cold.T_B
+    assert abs(warm.slack_end - cold.slack_end) <= 1e-10 * cold.length
+
+
+def test_a_system_of_lines_with_slack_stretches_on_a_grid_balances_its_body():
+    """A body held by two chains on a bathymetry grid sloping 1 % along them, friction 1, pushed
+    by 100 kN along them (a system's lines in the sea, warm starts and stiffness through the
+    line in space): at its equilibrium both lines rest on slack stretches, and the lines recounted
+    cold by `mooring.line_3d` at the solved positions balance the push (measured 5.9e-13 of the
+    largest line force), their anchors unloaded."""
+    x = np.linspace(-1200.0, 1200.0, 25)
+    grid = Grid(x, x, -150.0 - 0.01 * x[:, None] + 0.0 * x[None, :])
+    system = mooring.MooringSystem(depth=170.0)
+    hull = system.add_body(
+        mooring.PointBody(volume=60.0, mass=40e3, waterplane_area=80.0), position=(0.0, 0.0, -20.0)
+    )
+    top = system.add_point((0.0, 0.0, 0.0), body=hull)
+    chain = mooring.Segment(850.0, 1200.0, 1e9, diameter=0.1, cd_normal=1.2, cd_tangential=0.1)
+    line = mooring.Line([chain], seabed=grid, friction=1.0)
+    anchors = [np.array([X, 0.0, float(grid.height(X, 0.0))]) for X in (780.0, -780.0)]
+    for anchor in anchors:
+        system.add_line(line, system.add_point(anchor, fixed=True), top)
+    push = np.array([1e5, 0.0, 0.0])
+    equilibrium = system.equilibrium(force={hull: push})
+    assert all(solved.solution.slack_end > 0 for solved in equilibrium.lines)
+    fairlead = np.asarray(equilibrium.points[0].position, dtype=float)  # the body's point
+    recounted = [mooring.line_3d(line, anchor, fairlead) for anchor in anchors]
+    forces = np.array([sea.force_on_fairlead for sea in recounted])
+    scale = np.abs(forces).max()
+    assert np.abs(forces[:, :2].sum(axis=0) + push[:2]).max() <= 1e-9 * scale
+    for sea in recounted:
+        np.testing.assert_array_equal(sea.force_on_anchor, 0.0)
