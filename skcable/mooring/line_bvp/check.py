@@ -148,7 +148,7 @@ def refuse_sliding(problem, z, tol, friction) -> None:
     compression on the seabed from the anchor (`DiscreteLine.sliding_to_anchor`) and the seabed
     rises there more steeply than ``friction`` holds (``tan α > μ`` + `SLOPE_TOL`): the scene has no
     equilibrium with the line in tension, whatever the mesh; ``tol`` Newton's tolerance. (Where
-    ``tan α ≤ μ`` friction can hold a slack stretch near the anchor, which the plane line models.)"""
+    ``tan α ≤ μ`` friction can hold a slack stretch near the anchor, which both lines model.)"""
     slope = problem.sliding_to_anchor(z, tol)
     if slope is None or not slope > friction + SLOPE_TOL:
         return
@@ -166,7 +166,7 @@ def refuse_sliding(problem, z, tol, friction) -> None:
 def partial_friction(failed, friction, without_friction) -> ConvergenceError:
     """``failed`` (the solve with friction's `skcable.ConvergenceError`), its message saying
     where, on the same line solved without friction (``without_friction()``, None where the
-    anchor lies on the seabed: there the plane line models the slack stretch), ``μ`` times the
+    anchor lies on the seabed: there both lines model the slack stretch), ``μ`` times the
     seabed's normal force exceeds the tension at the touchdown: friction fully mobilised along
     the grounded stretch (J.M. Jonkman, NREL, 2007: the model of both lines) may then take the
     whole pull before the landing, and the line rest with its friction partly mobilised, a state

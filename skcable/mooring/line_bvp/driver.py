@@ -46,10 +46,12 @@ each solve (`skcable.mooring.line_bvp.iterate.solve_on`) starts from the last st
    of the total load, `SLACK_PASSES` more at most, then `SLACK_PASSES` secant steps at most
    (`LineBVPSolver.secant_slack`); with friction, graded and fitted once more where the mesh is
    too coarse for the line with friction (`LineBVPSolver.regraded`).
-6. **Checks** (`LineBVPSolver.checked`): the friction that holds a slack stretch on a slope is
-   at most μN, every number finite, the discrete line not in compression (where the compression
-   lies on the seabed from the anchor, ``InputError("friction")``: the line has no equilibrium
-   in tension, `skcable.mooring.line_bvp.check.refuse_sliding`).
+6. **Checks** (`LineBVPSolver.checked`): no buoy on a slack stretch (``InputError("point_loads")``:
+   no tension holds it down, `skcable.mooring.line_bvp.slack.buoy_on_stretch`), the friction that
+   holds a slack stretch on a slope at most μN, every number finite, the discrete line not in
+   compression (where the compression lies on the seabed from the anchor,
+   ``InputError("friction")``: the line has no equilibrium in tension,
+   `skcable.mooring.line_bvp.check.refuse_sliding`).
 7. **Refusal, or the line in space** (`LineBVPSolver.solve`): a failure where the segment-wise
    closed form's slack stretch ends at a clump weight on the seabed becomes
    ``InputError("point_loads")`` (`LineBVPSolver.clump_at_slack_end`); else the ``fallback``
@@ -101,7 +103,9 @@ from skcable.mooring.line_bvp.mesh import (
 )
 from skcable.mooring.line_bvp.problem import LineProblem
 from skcable.mooring.line_bvp.slack import (
+    BUOY_ON_STRETCH,
     SLACK_PASSES,
+    buoy_on_stretch,
     next_slack_end,
     secant_slack_end,
     slack_estimate,
@@ -533,6 +537,9 @@ class LineBVPSolver(LineSolver):
         problem, friction = solution.problem, self.scene.friction
         slack_tol = self.tolerance * problem.load_scale
         s0 = problem.slack_end
+        buoy = buoy_on_stretch(self.scene.point_loads, s0)
+        if buoy is not None:
+            raise InputError("point_loads", BUOY_ON_STRETCH.format(s=buoy))
         if s0 > 0:
             # the friction that holds the slack stretch (its tangential force) is at most μN
             on = solution.contact_s < s0
@@ -557,7 +564,10 @@ class LineBVPSolver(LineSolver):
 
     def at_slack_end(self, solution, s0) -> LineBVPSolution:
         """``solution``'s line re-solved from it on its mesh with the slack stretch ending at
-        ``s0`` instead (its node moved there): for the stiffness along the slack end."""
+        ``s0`` instead (its node moved there): for the stiffness along the slack end, asked for
+        after the solve, so on a budget of its own (the scene's ``time_limit``; the solve's may
+        be spent by then)."""
+        self.budget = Budget(time_limit=self.scene.time_limit)
         nodes = np.sort(solution.problem.mesh.p[0])
         problem = self.problem(nodes.size - 1, [s0], s0, self.scene.friction, nodes)
         return self.rerun(problem, solution)

@@ -118,7 +118,9 @@ def space_for_plane(solver: LineBVPSolver):
         return None
     old = solution.problem
     nodes = np.sort(old.mesh.p[0])
-    problem = solver.problem(nodes.size - 1, list(old.fitted), nodes_at=nodes)
+    s0 = old.slack_end  # friction's slack stretch, the plane line's node at its end too
+    fitted = [*old.fitted, s0] if s0 > 0 else list(old.fitted)
+    problem = solver.problem(nodes.size - 1, fitted, s0, nodes_at=nodes)
     try:
         first = solver.run(problem, in_plane(problem, old, solution.dofs), near=True)
         regraded = partial(solver.level, solver.scene.n_elements, first)

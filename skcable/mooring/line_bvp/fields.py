@@ -39,7 +39,6 @@ it (`skcable.errors.ResolutionWarning`).
 
 from __future__ import annotations
 
-from collections.abc import Callable
 from functools import cached_property
 
 import numpy as np
@@ -78,9 +77,6 @@ class LineFields:
     #: `skcable.mooring.line_bvp.resolution`; the mesh holds them and the nodes fitted at the
     #: touchdowns); None on a failure's ``last`` but for the coarser line ``"auto"`` keeps
     n_elements: int | None = None
-    #: ``slack_solver(s0)``: the line re-solved with its slack stretch near the anchor ending at
-    #: ``s0`` (set by the solver that made it; the stiffness needs it where the line has one)
-    slack_solver: Callable[[float], LineFields] | None = None
 
     # --- where the line meets the seabed -------------------------------------------------------
     @property

@@ -23,7 +23,15 @@ from scipy.optimize import brentq
 
 from skcable.errors import ConvergenceError
 
-__all__ = ["next_slack_end", "secant_slack_end", "slack_estimate", "slack_tension", "tension_zero"]
+__all__ = [
+    "BUOY_ON_STRETCH",
+    "buoy_on_stretch",
+    "next_slack_end",
+    "secant_slack_end",
+    "slack_estimate",
+    "slack_tension",
+    "tension_zero",
+]
 
 #: updates of the end of the slack stretch at most (secant on the tension there)
 SLACK_PASSES = 12
@@ -64,6 +72,22 @@ def secant_slack_end(tried, slope, s_touchdown):
         secant = (g2 - g1) / (s2 - s1) if s2 != s1 else 0.0
         slope = secant if secant > 0 else slope
     return next_slack_end(tried, slope, s_touchdown)
+
+
+def buoy_on_stretch(point_loads, s0) -> float | None:
+    """The arc length (m) of the first buoy (a point load ``P < 0``) on the slack stretch
+    ``[0, s0]``, or None. No tension holds it down there: it lifts a bight of the line off the
+    seabed (``|P|/w`` of it), which neither line BVP models (their stretch lies on the seabed, and
+    their answers moved with the mesh: a 2 kN buoy 10 m from the anchor held flat on 64 and 128
+    elements and lifted on 256, 3.6 % apart in H)."""
+    return next((float(s) for s, P in sorted(point_loads) if P < 0 and s <= s0), None)
+
+
+BUOY_ON_STRETCH = (
+    "lifts the slack stretch near the anchor at s = {s:.6g} m: no tension holds it down there, so "
+    "it raises a bight of the line off the seabed, which this BVP does not model (its stretch lies "
+    "on the seabed)"
+)
 
 
 def tension_zero(solution, tol):

@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+from collections.abc import Callable
+
 import numpy as np
 
 from skcable.mooring.line_bvp.contact import anchor_split
@@ -66,6 +68,9 @@ class LineBVPSolution(LineFields, ProfileMixin):
         Residual and tangents at the solution.
     """
 
+    #: ``slack_solver(s0)``: the line re-solved with its slack stretch ending at ``s0`` (set by
+    #: the solver that made it; `stiffness` needs it where the line has a slack stretch)
+    slack_solver: Callable[[float], LineBVPSolution] | None = None
     #: the `LineBVP` model that solved it (None from `solve_line_bvp`)
     model: object | None = None
     problem: LineProblem
@@ -100,10 +105,20 @@ class LineBVPSolution(LineFields, ProfileMixin):
         bp, gap, lam, active = terms.slope, terms.gap, terms.lam, terms.active
         force = (normal + friction).T
         if self.anchor_on_seabed:
-            # the seabed under the anchor takes the anchor's downward push, friction included
+            # the seabed under the anchor takes the anchor's downward push, friction included; on
+            # a slack stretch, friction holds the anchor node's own load along the seabed as it
+            # does the stretch's other nodes' (`LineProblem`'s held loads; Jonkman's H_A = 0 on a
+            # slope too: the anchor was left that share, O(h), 305 N of a 529 N pull on 64
+            # elements in the differential survey's scene 2:53), the anchor what the tension pulls
             slope = float(problem.seabed.slope(np.array([0.0]))[0])
-            mu_a = problem.friction if problem.slack_end == 0 else 0.0  # the anchor holds a slack stretch
-            S_A, seabed, lam_a = anchor_split(np.array([-H_A, V_A]), [slope], (1.0, slope), mu_a)
+            S = np.array([-H_A, V_A])
+            held = np.zeros(2)
+            if problem.slack_end > 0:
+                along = np.array([1.0, slope]) / np.sqrt(1.0 + slope * slope)
+                held = (problem.external[problem.N + problem.end_a] * along[1]) * along
+            mu_a = problem.friction if problem.slack_end == 0 else 0.0
+            S_A, seabed, lam_a = anchor_split(S - held, [slope], (1.0, slope), mu_a)
+            seabed = seabed + held
             H_A, V_A = -float(S_A[0]), float(S_A[1])
             self.contact_s = np.concatenate([[0.0], self.contact_s])
             self.contact_xy = np.vstack([[0.0, 0.0], self.contact_xy])

@@ -29,7 +29,7 @@ import numpy as np
 from skcable.errors import InputError
 from skcable.mooring.line_bvp.slack import slack_tension
 
-__all__ = ["SLACK_STEP", "fairlead_stiffness", "slack_correction"]
+__all__ = ["SLACK_STEP", "fairlead_stiffness"]
 
 #: the move of the slack stretch's end for its central differences, over the length
 SLACK_STEP = 1e-6
@@ -42,28 +42,21 @@ def _slack_dof(solution) -> int:
     at = tb.doflocs[0][tb.element_dofs]  # (2, ne)
     element = int(np.argmin(np.abs(at.min(axis=0) - problem.slack_end)))
     local = int(np.argmin(at[:, element]))
-    return problem.dim * problem.N + int(tb.element_dofs[local, element])
-
-
-def slack_correction(solution, slack_solver, end_force) -> np.ndarray:
-    """The stiffness's change as the end ``s0`` of ``solution``'s slack stretch moves with the
-    fairlead (module docstring): ``(∂F/∂s0) ⊗ ds0/dp``, ``F = end_force(line)`` the end force the
-    stiffness differentiates, ``slack_solver(s0)`` the line re-solved with its stretch ending at
-    ``s0``; for a line in space too (`skcable.mooring.line_bvp.space.stiffness`)."""
-    if slack_solver is None:
-        raise InputError("solution", "its slack stretch needs the solver that made it for the stiffness")
-    s0, step = solution.problem.slack_end, SLACK_STEP * solution.length
-    plus, minus = slack_solver(s0 + step), slack_solver(s0 - step)
-    forces = (end_force(plus) - end_force(minus)) / (2 * step)
-    g_s0 = (slack_tension(plus)[0] - slack_tension(minus)[0]) / (2 * step)
-    g_p = solution.sensitivity[2][_slack_dof(solution)]
-    return -np.outer(forces, g_p / g_s0)
+    return 2 * problem.N + int(tb.element_dofs[local, element])
 
 
 def fairlead_stiffness(solution, slack_solver=None) -> np.ndarray:
     """``∂(H_B, V_B)/∂(span, dh)`` (N/m) of ``solution`` (module docstring); ``slack_solver(s0)``
     re-solves its line with the slack stretch ending at ``s0`` (needed where it has one)."""
-    K = solution.sensitivity[0]  # computed once per solution (a warm start reads it too)
-    if solution.problem.slack_end == 0:
+    K, _, dz = solution.sensitivity  # computed once per solution (a warm start reads it too)
+    s0 = solution.problem.slack_end
+    if s0 == 0:
         return K.copy()  # the solution keeps its own
-    return K + slack_correction(solution, slack_solver, lambda line: np.array([line.H_B, line.V_B]))
+    if slack_solver is None:
+        raise InputError("solution", "its slack stretch needs the solver that made it for the stiffness")
+    step = SLACK_STEP * solution.length
+    plus, minus = slack_solver(s0 + step), slack_solver(s0 - step)
+    forces = (np.array([plus.H_B, plus.V_B]) - np.array([minus.H_B, minus.V_B])) / (2 * step)
+    g_s0 = (slack_tension(plus)[0] - slack_tension(minus)[0]) / (2 * step)
+    g_p = dz[_slack_dof(solution)]
+    return K - np.outer(forces, g_p / g_s0)

@@ -90,6 +90,7 @@ from skcable.errors import ConvergenceError, InputError
 from skcable.fe import first_converged
 from skcable.mooring.bathymetry import OffGrid
 from skcable.mooring.line_bvp.check import SLOPE_TOL
+from skcable.mooring.line_bvp.loads import term_load
 from skcable.mooring.line_bvp.mesh import (
     COARSE,
     REFINEMENT,
@@ -98,9 +99,17 @@ from skcable.mooring.line_bvp.mesh import (
     grading_passes,
     solve_nested,
 )
-from skcable.mooring.line_bvp.slack import SLACK_PASSES, secant_slack_end, slack_tension, tension_zero
+from skcable.mooring.line_bvp.slack import (
+    BUOY_ON_STRETCH,
+    SLACK_PASSES,
+    buoy_on_stretch,
+    secant_slack_end,
+    slack_tension,
+    tension_zero,
+)
 from skcable.mooring.line_bvp.solver import LineSolver
 from skcable.mooring.line_bvp.space import start as closed_forms
+from skcable.mooring.line_bvp.space.loads import SegmentDrag
 from skcable.mooring.line_bvp.space.problem import LineProblem3D
 from skcable.mooring.line_bvp.space.solution import LineBVP3DSolution
 from skcable.mooring.line_bvp.space.start import closed_form_start
@@ -212,6 +221,7 @@ class LineBVP3DSolver(LineSolver):
         if self.compressed(solved):  # a node at the touchdown left a bend in one element: graded, refitted
             solved = self.graded(solved, or_from_start=not self.graded_first)
             solved = self.fitted(solved) if fit else solved
+            solved = self.slackened(solved)  # its stretch's end, on the new mesh
         return self.checked(solved)
 
     def held_by_friction(self, solved) -> bool:
@@ -234,7 +244,8 @@ class LineBVP3DSolver(LineSolver):
         """``solved`` with its slack stretch near the anchor (J.M. Jonkman, "Dynamics modeling and
         loads analysis of an offshore floating wind turbine", NREL, 2007), where friction fully
         mobilised would take more than the pull (`held_by_friction`), or where ``solved`` has one
-        (a warm start's): the stretch laid on the seabed up to ``s0``
+        (the plane line's, in space by the fallback; a line graded again): the stretch laid on the
+        seabed up to ``s0``
         (`skcable.mooring.line_bvp.space.problem.LineProblem3D.lay_slack`) and ``s0`` moved, as
         the plane line's (`skcable.mooring.line_bvp.slack`): first where the fully mobilised
         line's tension rises through zero (`tension_zero`), then by Newton steps on the tension
@@ -278,9 +289,13 @@ class LineBVP3DSolver(LineSolver):
                 "rests on the seabed with its friction only partly mobilised: this BVP does not model "
                 "that state (mooring.Line solves it in closed form)",
             )
+        past = (
+            f"tension {tried[-1][1]:.3g} N past it after {len(tried)} updates"
+            if tried
+            else "its touchdown moving"
+        )
         raise ConvergenceError(
-            f"{self.name}: the end of the slack stretch near the anchor was not found (tension "
-            f"{tried[-1][1]:.3g} N past it after {len(tried)} updates)",
+            f"{self.name}: the end of the slack stretch near the anchor was not found ({past})",
             solved.history,
         )
 
@@ -487,19 +502,42 @@ class LineBVP3DSolver(LineSolver):
         problem, z = solved.problem, solved.dofs
         if not (np.all(np.isfinite(z)) and np.all(np.isfinite(solved.state.R0))):
             raise ConvergenceError("solve_line_bvp_3d: non-finite result", solved.history)
-        # compression friction holds from an anchor on the seabed is laid (`slackened`); with the
-        # anchor above it, friction partly mobilised may hold the line (the plane line's reason)
-        above = self.scene.friction > 0 and problem.seabed is not None and not problem.anchor_on_seabed
-        self.refuse_compressed(
-            solved, "fully mobilised friction with the anchor above the seabed" if above else ""
-        )
+        self.refuse_compressed(solved, self.friction_reason(solved))
         solution = LineBVP3DSolution(problem, z, solved.history, solved.state)
         solution.check()
         if problem.slack_end > 0:  # where the stretch ended up: no load across, held by friction
+            buoy = buoy_on_stretch(self.scene.point_loads, problem.slack_end)
+            if buoy is not None:
+                raise InputError(self.load_name(buoy), BUOY_ON_STRETCH.format(s=buoy))
+            g = slack_tension(self.kept(solved))[0]
+            if not abs(g) <= self.tolerance * problem.load_scale:
+                raise ConvergenceError(
+                    f"{self.name}: the tension past the slack stretch near the anchor is {g:.3g} N, not "
+                    "zero, on the line's final mesh",
+                    solved.history,
+                )
             self.refuse_across(solved, problem.slack_end)
             self.refuse_sliding_stretch(solution)
-            solution.slack_solver = partial(self.at_slack_end, solution)
         return solution
+
+    def friction_reason(self, solved) -> str:
+        """Why a line with friction on a seabed is in compression, where friction is the reason
+        (`LineSolver.refuse_compressed`; else "", its mesh): with the anchor above the seabed,
+        friction partly mobilised may hold it (the plane line's reason); from an anchor on the
+        seabed, where no slack stretch was laid (`slackened`: its compression leaves the seabed,
+        or the line rises vertically from the anchor)."""
+        problem, z = solved.problem, solved.dofs
+        if not (self.scene.friction > 0 and problem.seabed is not None):
+            return ""
+        if not problem.anchor_on_seabed:
+            return "fully mobilised friction with the anchor above the seabed"
+        if problem.slack_end == 0 and problem.in_compression(z, self.tolerance)[0]:
+            return (
+                "fully mobilised friction takes more than the pull near the anchor, where no slack "
+                "stretch lies on the seabed along the line (its compression leaves the seabed, or the "
+                "line rises vertically from the anchor)"
+            )
+        return ""
 
     def refuse_across(self, solved, s0) -> None:
         """``InputError`` where the line's load across it, in the seabed's plane, at the end
@@ -522,17 +560,17 @@ class LineBVP3DSolver(LineSolver):
         normal = np.array([*(-np.asarray(problem.seabed.gradient(r[0], r[1]), dtype=float).ravel()), 1.0])
         across = np.cross(normal, t)
         across /= np.linalg.norm(across)
-        load = problem.forces_at(z, s)[:, 0]  # the weight and the terms (N/m)
         w = float(problem.weight_at(s)[0])
-        by_weight = -w * float(across[2])  # the weight's share across: a seabed sloping across it
-        by_terms = float(load @ across) - by_weight  # the current's drag and the analyst's terms
+        across_of = {"seabed": -w * float(across[2])}  # the weight's share: a seabed sloping across
+        for term in problem.terms:  # the current's drag, the analyst's terms (N/m)
+            f = term_load([term], state.position, state.s, state.a, state.T).f[:, 0]
+            name = "current" if isinstance(term, SegmentDrag) else "terms"
+            across_of[name] = across_of.get(name, 0.0) + float(f @ across)
         bound = ACROSS * self.scene.friction * w
-        if abs(by_terms) <= bound and abs(by_weight) <= bound:
+        name = max(across_of, key=lambda key: abs(across_of[key]))
+        if abs(across_of[name]) <= bound:
             return
-        name = (
-            "seabed" if abs(by_terms) <= bound else ("current" if self.scene.current is not None else "terms")
-        )
-        total = abs(float(load @ across))
+        total = abs(sum(across_of.values()))
         raise InputError(
             name,
             f"loads the line across it by {total:.3g} N/m ({total / (self.scene.friction * w):.2g} of μw) "
@@ -557,13 +595,14 @@ class LineBVP3DSolver(LineSolver):
         pressing = np.sum(force * normal, axis=0)
         along = np.sqrt(np.sum((force - pressing * normal) ** 2, axis=0))
         tol = self.tolerance * problem.load_scale
-        if np.any(pressing < -tol):  # a buoy on the stretch, which has no tension to hold it down
+        if np.any(pressing < -tol):  # buoyant, or lifted by a term: no tension holds it down
             k = int(np.argmin(pressing))
             s = float(problem.basis.doflocs[0][nodes[k]])
+            name = "segments" if float(problem.weight_at(np.array([s]))[0]) < 0 else "terms"
             raise InputError(
-                self.load_name(s),
-                f"a buoy lifts the slack stretch near the anchor off the seabed at s = {s:.6g} m (the "
-                "stretch has no tension to hold it down; the line in space lays it on the seabed)",
+                name,
+                f"lift the slack stretch near the anchor off the seabed at s = {s:.6g} m (no tension "
+                "holds it down there; the line in space lays it on the seabed)",
             )
         if np.any(along > self.scene.friction * pressing + tol):
             raise InputError(
@@ -572,11 +611,3 @@ class LineBVP3DSolver(LineSolver):
                 f"reaches {float(np.max(along - self.scene.friction * pressing)):.3g} N more than μN at a "
                 "node): the line would slide",
             )
-
-    def at_slack_end(self, solution, s0) -> LineBVP3DSolution:
-        """``solution``'s line re-solved from it on its mesh with its slack stretch ending at
-        ``s0`` instead (its node moved there): for the stiffness along the slack end."""
-        nodes = np.sort(solution.problem.mesh.p[0])
-        problem = self.problem(nodes.size - 1, solution.problem.fitted, nodes_at=nodes, slack_end=s0)
-        solved = self.run(problem, restart(solution.problem, solution.dofs, problem), near=True)
-        return self.kept(solved)

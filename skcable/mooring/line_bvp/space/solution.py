@@ -46,7 +46,9 @@ class LineBVP3DSolution(LineFields, Shown):
         The end ``s0`` (m) of the slack stretch near the anchor, where friction holds the line
         with its tension zero (`skcable.mooring.line_bvp.space.problem.LineProblem3D.lay_slack`;
         0: none). The anchor then carries nothing: the seabed holds the stretch, the anchor's
-        node included (`anchor_seabed_force`).
+        node included (`anchor_seabed_force`, and `slack_seabed_force` on the others' nodes).
+    slack_seabed_force : ndarray (3,)
+        The seabed's force on the slack stretch's nodes but the anchor's (N; zero without one).
     s_touchdown, s_landing, length_on_seabed : float
         Where the line leaves the seabed for the last time towards the fairlead, where a line
         hanging from an anchor above the seabed first lands on it (unstretched arc lengths from
@@ -73,14 +75,20 @@ class LineBVP3DSolution(LineFields, Shown):
         self.friction = problem.friction
         S_A, S_B = (np.array(v, dtype=float) for v in problem.reactions(state.R0))
         self._contact()
+        #: the seabed's force on the slack stretch's nodes but the anchor's (N, 3-vector: its
+        #: weight and the drag on it, held there; zero without a stretch)
+        self.slack_seabed_force = np.zeros(3)
         if problem.slack_end > 0:  # the seabed holds the slack stretch, the anchor's node too
             S_A, self.anchor_seabed_force = np.zeros(3), S_A
+            held, N = problem.held_dofs, problem.N
+            nodes = held[held < N]
+            self.slack_seabed_force = np.array([state.R0[k * N + nodes].sum() for k in range(3)])
         elif self.anchor_on_seabed:
             bed, a = problem.seabed, self.anchor
             grad = bed.gradient(a[0], a[1])
             chord = self.xyz(np.array(min(problem.L, self.mesh_size))) - a
             S_A, self.anchor_seabed_force, _ = anchor_split(S_A, grad, chord, problem.friction)
-        self.force_on_anchor, self.force_on_fairlead = -S_A, -S_B
+        self.force_on_anchor, self.force_on_fairlead = -S_A + 0.0, -S_B  # (+ 0.0: no -0 of a slack anchor)
         self.T_A, self.T_B = float(np.linalg.norm(S_A)), float(np.linalg.norm(S_B))
 
     @property

@@ -14,10 +14,14 @@ by ``∂S_A/∂r_B`` (the coupling a mooring system needs).
 (`skcable.mooring.axial.StaticDynamicRope`: ``1/(α + β T_mean)`` at the local mean tension; the
 static one for every other law). The result says which it is.
 
-**The slack stretch.** Where friction holds a slack stretch near the anchor, its end ``s0`` moves
-with the fairlead: ``K`` takes the plane line's correction along it
-(`skcable.mooring.line_bvp.stiffness.slack_correction`, central differences of the line
-re-solved with its end moved), and the anchor's reaction, zero, does not move.
+**The slack stretch.** Where friction holds a slack stretch near the anchor, laid on the seabed
+towards the fairlead (`skcable.mooring.line_bvp.space.problem.LineProblem3D.lay_slack`), it turns
+with the chord as the fairlead moves across: its held positions' derivatives enter the right-hand
+sides (`DiscreteLine.end_sensitivities`). Its end ``s0`` moves too, but that moves the fairlead's
+force at second order only: the piece laid or lifted between ``s0`` and ``s0 + δ`` carries a
+tension of order ``μ w δ`` (zero at the converged end), so it changes the line's geometry by
+``O(δ²)`` (the line re-solved with its end moved by ``±1e-6`` of the length gave the same
+fairlead force to the last bit on a flat seabed). The anchor's reaction, zero, does not move.
 """
 
 from __future__ import annotations
@@ -28,7 +32,6 @@ import numpy as np
 
 from skcable._checks import one_of
 from skcable.errors import ConvergenceError
-from skcable.mooring.line_bvp.stiffness import slack_correction
 
 __all__ = ["KINDS", "FairleadStiffness", "fairlead_stiffness_3d"]
 
@@ -70,8 +73,9 @@ def fairlead_stiffness_3d(solution, kind: str = "static") -> FairleadStiffness:
         K_B, K_A, _ = problem.end_sensitivities(problem.assemble(solution.dofs, dynamic=True))
     else:
         K_B, K_A = (K.copy() for K in solution.sensitivity[:2])  # the solution keeps its own
-    if problem.slack_end > 0:  # its end moves with the fairlead; the anchor carries nothing
-        K_B = K_B + slack_correction(solution, solution.slack_solver, lambda line: -line.force_on_fairlead)
+    if (
+        problem.slack_end > 0
+    ):  # the seabed holds the stretch and the anchor's node: the anchor carries nothing
         K_A = np.zeros((3, 3))
     if not (np.all(np.isfinite(K_B)) and np.all(np.isfinite(K_A))):
         raise ConvergenceError("fairlead stiffness: non-finite sensitivities", solution.history)
