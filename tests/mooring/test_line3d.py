@@ -720,7 +720,10 @@ def test_a_line_the_seabed_rising_from_the_anchor_pushes_into_compression_is_ref
         want = np.array([-line.H_B, 0.0, -line.V_B])
         assert np.abs(laid.force_on_fairlead - want).max() <= 2e-9 * laid.T_B
         assert abs(laid.slack_end - line.problem.slack_end) <= 1e-9 * laid.length
-        assert abs(line.H_A) <= 1e-9 * laid.T_B and abs(line.V_A) <= 1e-9 * laid.T_B
+        # the plane line's H_A is the tension left past its stretch, solved to 1e-10 of the force
+        # scale: bounded at ten times that (measured 6e-7 N, 3e-11 of it, on 64 elements)
+        assert max(abs(line.H_A), abs(line.V_A)) <= 1e-9 * line.problem.load_scale
+        np.testing.assert_array_equal(laid.force_on_anchor, 0.0)
 
 
 def test_a_line_whose_friction_would_take_more_than_its_pull_fails_saying_so():

@@ -125,7 +125,11 @@ from skcable.mooring.line_bvp.start import (
     start_form,
 )
 
-__all__ = ["GRADE_PASSES", "LineBVPSolver"]
+__all__ = ["GRADE_PASSES", "STIFFNESS_TIME", "LineBVPSolver"]
+
+#: the time (s) the stiffness's two re-solves of a line with a slack stretch may take, each a few
+#: Newton steps from the converged line (`LineBVPSolver.at_slack_end`): a public solve's default
+STIFFNESS_TIME = 60.0
 
 
 def _with(s0, fitted=()):
@@ -537,7 +541,7 @@ class LineBVPSolver(LineSolver):
         problem, friction = solution.problem, self.scene.friction
         slack_tol = self.tolerance * problem.load_scale
         s0 = problem.slack_end
-        buoy = buoy_on_stretch(self.scene.point_loads, s0)
+        buoy = buoy_on_stretch(self.scene.point_loads, s0, problem.weight_at)
         if buoy is not None:
             raise InputError("point_loads", BUOY_ON_STRETCH.format(s=buoy))
         if s0 > 0:
@@ -565,9 +569,9 @@ class LineBVPSolver(LineSolver):
     def at_slack_end(self, solution, s0) -> LineBVPSolution:
         """``solution``'s line re-solved from it on its mesh with the slack stretch ending at
         ``s0`` instead (its node moved there): for the stiffness along the slack end, asked for
-        after the solve, so on a budget of its own (the scene's ``time_limit``; the solve's may
-        be spent by then)."""
-        self.budget = Budget(time_limit=self.scene.time_limit)
+        after the solve, so on a budget of its own (`STIFFNESS_TIME`; the solve's may be spent by
+        then, and with ``n_elements="auto"`` its ``time_limit`` is what was left of the user's)."""
+        self.budget = Budget(time_limit=STIFFNESS_TIME)
         nodes = np.sort(solution.problem.mesh.p[0])
         problem = self.problem(nodes.size - 1, [s0], s0, self.scene.friction, nodes)
         return self.rerun(problem, solution)

@@ -74,13 +74,25 @@ def secant_slack_end(tried, slope, s_touchdown):
     return next_slack_end(tried, slope, s_touchdown)
 
 
-def buoy_on_stretch(point_loads, s0) -> float | None:
-    """The arc length (m) of the first buoy (a point load ``P < 0``) on the slack stretch
-    ``[0, s0]``, or None. No tension holds it down there: it lifts a bight of the line off the
-    seabed (``|P|/w`` of it), which neither line BVP models (their stretch lies on the seabed, and
-    their answers moved with the mesh: a 2 kN buoy 10 m from the anchor held flat on 64 and 128
-    elements and lifted on 256, 3.6 % apart in H)."""
-    return next((float(s) for s, P in sorted(point_loads) if P < 0 and s <= s0), None)
+def buoy_on_stretch(point_loads, s0, weight_at) -> float | None:
+    """The arc length (m) of the first buoy (a net upward point load ``P < 0``, the loads at one
+    arc length summed) on the slack stretch ``[0, s0]`` or within the length of line it lifts past
+    its end, ``|P|/w`` (``weight_at(s)``, N/m), or None (and None without a stretch). No tension
+    holds it down there: it lifts a bight of the line off the seabed, which neither line BVP models
+    (their stretch lies on the seabed, and their answers moved with the mesh: a 2 kN buoy 10 m from
+    the anchor of a 1 kN/m chain was held flat on 64 and 128 elements, the stretch ending at
+    32.8 m, and lifted on 256, ending at 8.3 m, 3.6 % apart in H)."""
+    if not s0 > 0:
+        return None
+    net: dict[float, float] = {}
+    for s, P in point_loads:
+        net[float(s)] = net.get(float(s), 0.0) + float(P)
+    for s, P in sorted(net.items()):
+        if P < 0:
+            w = float(weight_at(np.array([s]))[0])
+            if s <= s0 + (-P / w if w > 0 else np.inf):
+                return s
+    return None
 
 
 BUOY_ON_STRETCH = (

@@ -262,6 +262,7 @@ class LineBVP3DSolver(LineSolver):
         fit = self.scene.seabed is not None and self.scene.fit_touchdown
         placed, tried = list(solved.problem.fitted), []
         for _ in range(SLACK_PASSES + self.scene.fit_touchdown):
+            self.refuse_buoy(s0, solved.problem)
             self.slack_end = s0
             try:
                 solved = self.refit(solved, placed)
@@ -506,9 +507,7 @@ class LineBVP3DSolver(LineSolver):
         solution = LineBVP3DSolution(problem, z, solved.history, solved.state)
         solution.check()
         if problem.slack_end > 0:  # where the stretch ended up: no load across, held by friction
-            buoy = buoy_on_stretch(self.scene.point_loads, problem.slack_end)
-            if buoy is not None:
-                raise InputError(self.load_name(buoy), BUOY_ON_STRETCH.format(s=buoy))
+            self.refuse_buoy(problem.slack_end, problem)
             g = slack_tension(self.kept(solved))[0]
             if not abs(g) <= self.tolerance * problem.load_scale:
                 raise ConvergenceError(
@@ -519,6 +518,16 @@ class LineBVP3DSolver(LineSolver):
             self.refuse_across(solved, problem.slack_end)
             self.refuse_sliding_stretch(solution)
         return solution
+
+    def refuse_buoy(self, s0, problem) -> None:
+        """``InputError`` naming ``attachments`` or ``point_loads`` where a buoy lies on a slack
+        stretch ending at ``s0`` or within the line it lifts past it
+        (`skcable.mooring.line_bvp.slack.buoy_on_stretch`): checked at every end the passes try,
+        so that no mesh gets to lift it (a Newton that stagnates on the lifted bight would hide
+        the reason)."""
+        buoy = buoy_on_stretch(self.scene.point_loads, s0, problem.weight_at)
+        if buoy is not None:
+            raise InputError(self.load_name(buoy), BUOY_ON_STRETCH.format(s=buoy))
 
     def friction_reason(self, solved) -> str:
         """Why a line with friction on a seabed is in compression, where friction is the reason
@@ -567,10 +576,10 @@ class LineBVP3DSolver(LineSolver):
             name = "current" if isinstance(term, SegmentDrag) else "terms"
             across_of[name] = across_of.get(name, 0.0) + float(f @ across)
         bound = ACROSS * self.scene.friction * w
-        name = max(across_of, key=lambda key: abs(across_of[key]))
-        if abs(across_of[name]) <= bound:
+        total = abs(sum(across_of.values()))  # what the tension would hold: the net load across
+        if total <= bound:
             return
-        total = abs(sum(across_of.values()))
+        name = max(across_of, key=lambda key: abs(across_of[key]))  # the largest part names it
         raise InputError(
             name,
             f"loads the line across it by {total:.3g} N/m ({total / (self.scene.friction * w):.2g} of μw) "

@@ -76,7 +76,9 @@ class LineBVP3DSolution(LineFields, Shown):
         S_A, S_B = (np.array(v, dtype=float) for v in problem.reactions(state.R0))
         self._contact()
         #: the seabed's force on the slack stretch's nodes but the anchor's (N, 3-vector: its
-        #: weight and the drag on it, held there; zero without a stretch)
+        #: weight and the drag on it, held there, and the friction at its end's node, which holds
+        #: that node's share of the first tensioned element, about μ w h / 6, vanishing with the
+        #: mesh; zero without a stretch)
         self.slack_seabed_force = np.zeros(3)
         if problem.slack_end > 0:  # the seabed holds the slack stretch, the anchor's node too
             S_A, self.anchor_seabed_force = np.zeros(3), S_A
