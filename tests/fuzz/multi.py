@@ -356,14 +356,9 @@ def bvp_case(segments, attachments, bed, friction, span, dh, n_elements=None) ->
             out.append(f"n_elements='auto' took {result.n_elements} elements")
         return [o for o in out if o]
 
-    def judge(exc):
-        want = segments_line(data, span, dh)
-        if want["regime"] == "heap":
-            return None  # documented: the BVP refuses a heap (Line and elastic_catenary return it)
-        verdict = f"{want['regime']}: H = {float(want['H']):.17g}, V_B = {float(want['V_B']):.17g}"
-        return _bvp_verdict(exc, expr, check, verdict)
-
-    return Case("solve_line_bvp", expr, BVP_NAMES, check, judge, timeout=60.0)
+    return Case(
+        "solve_line_bvp", expr, BVP_NAMES, check, _bvp_judge(data, span, dh, expr, check), timeout=60.0
+    )
 
 
 #: What `solve_line_bvp` documents it refuses, though the walk may solve it: a slack stretch that
@@ -373,6 +368,21 @@ def bvp_case(segments, attachments, bed, friction, span, dh, n_elements=None) ->
 OUTSIDE_BVP = "this BVP does not model that state"
 #: The advice of its refusal of a discrete line in compression (its bends unresolved).
 MORE_ELEMENTS = "elements do not resolve its bends; give more"
+
+
+def _bvp_judge(data, span, dh, expr, check):
+    """The judge of a line BVP's refusal of ``expr`` (the line ``data`` at ``(span, dh)`` in its
+    vertical plane): honest for a heap (documented: the BVP refuses it, `Line` and
+    `elastic_catenary` return it), else `_bvp_verdict` against the walk's line."""
+
+    def judge(exc):
+        want = segments_line(data, span, dh)
+        if want["regime"] == "heap":
+            return None
+        verdict = f"{want['regime']}: H = {float(want['H']):.17g}, V_B = {float(want['V_B']):.17g}"
+        return _bvp_verdict(exc, expr, check, verdict)
+
+    return judge
 
 
 def _bvp_verdict(exc, expr, check, verdict):
@@ -434,15 +444,10 @@ def line_bvp_3d(rng) -> Case:
         ]
         return [o for o in out if o]
 
-    def judge(exc):
-        want = segments_line(data, span, dh)
-        if want["regime"] == "heap":
-            return None  # documented: the BVP refuses a heap (Line and elastic_catenary return it)
-        verdict = f"{want['regime']}: H = {float(want['H']):.17g}, V_B = {float(want['V_B']):.17g}"
-        return _bvp_verdict(exc, expr, check, verdict)
-
     names = BVP_NAMES | {"anchor", "fairlead", "attachments"}
-    return Case("solve_line_bvp_3d", expr, names, check, judge, timeout=60.0)
+    return Case(
+        "solve_line_bvp_3d", expr, names, check, _bvp_judge(data, span, dh, expr, check), timeout=60.0
+    )
 
 
 REGIMES["solve_line_bvp"] = line_bvp
