@@ -156,6 +156,12 @@ class LineBVP3DSolver(LineSolver):
         sc = self.scene
         return sc.seabed is not None and sc.fit_touchdown > 0 and sc.mesh == "graded"
 
+    @property
+    def fits_touchdown(self) -> bool:
+        """Whether nodes are fitted at the touchdown and the landing: on a seabed, with
+        ``fit_touchdown`` passes (module docstring, 5)."""
+        return self.scene.seabed is not None and self.scene.fit_touchdown > 0
+
     def problem(self, n, fitted=(), load_factor=1.0, nodes_at=None, slack_end=None) -> LineProblem3D:
         """The discrete line on ``n`` elements (on the mesh ``nodes_at`` where given), nodes at
         ``fitted``, the drag and the point loads times ``load_factor``, its slack stretch laid
@@ -193,7 +199,7 @@ class LineBVP3DSolver(LineSolver):
 
     def strategy(self, start: LineBVP3DSolution | None = None) -> LineBVP3DSolution:
         """The strategy of the module docstring, from ``start`` where given."""
-        fit = self.scene.seabed is not None and self.scene.fit_touchdown
+        fit = self.fits_touchdown
         n, solved = self.scene.n_elements, None
         if self.graded_first:  # graded by the start, then by the line (module docstring, 1)
             try:
@@ -259,7 +265,6 @@ class LineBVP3DSolver(LineSolver):
                 return solved
             s0 = tension_zero(self.kept(solved), 1e3 * self.tolerance * solved.problem.load_scale)
             self.refuse_across(solved, s0)
-        fit = self.scene.seabed is not None and self.scene.fit_touchdown
         placed, tried = list(solved.problem.fitted), []
         for _ in range(SLACK_PASSES + self.scene.fit_touchdown):
             self.refuse_buoy(s0, solved.problem)
@@ -273,7 +278,7 @@ class LineBVP3DSolver(LineSolver):
             if s0 == 0:  # the tension stays positive down to the anchor: no stretch after all
                 return solved
             moved = False
-            if fit:
+            if self.fits_touchdown:
                 placed, moved, _ = self.moved_edges(solved, placed)
             g, slope = slack_tension(line)
             tol = self.tolerance * solved.problem.load_scale
@@ -508,7 +513,7 @@ class LineBVP3DSolver(LineSolver):
         solution.check()
         if problem.slack_end > 0:  # where the stretch ended up: no load across, held by friction
             self.refuse_buoy(problem.slack_end, problem)
-            g = slack_tension(self.kept(solved))[0]
+            g = slack_tension(solution)[0]
             if not abs(g) <= self.tolerance * problem.load_scale:
                 raise ConvergenceError(
                     f"{self.name}: the tension past the slack stretch near the anchor is {g:.3g} N, not "
@@ -595,8 +600,7 @@ class LineBVP3DSolver(LineSolver):
         force across it (a seabed sloping down from the anchor more steeply than friction holds,
         a current's drag), beyond the solve's tolerance of the force scale."""
         problem, R0 = solution.problem, solution.state.R0
-        N, held = problem.N, problem.held_dofs
-        nodes = np.append(held[held < N], problem.end_a)
+        N, nodes = problem.N, np.append(problem.laid_nodes, problem.end_a)
         force = np.array([R0[k * N + nodes] for k in range(3)])  # the seabed's force on each node
         r = solution.dofs[: 3 * N].reshape(3, N)[:, nodes]
         normal = np.vstack([-problem.seabed.gradient(r[0], r[1]), np.ones(nodes.size)])

@@ -44,6 +44,8 @@ class LineProblem3D(DiscreteLine):
     """
 
     dim = 3
+    #: the slack stretch's position nodes but the anchor's (dofs of one coordinate; `lay_slack`)
+    laid_nodes: np.ndarray = np.zeros(0, dtype=int)
 
     def __init__(self, scene, n_elements, fitted=(), nodes_at=None, load_factor=1.0, slack_end=0.0):
         self.scene, self.load_factor = scene, float(load_factor)
@@ -105,6 +107,7 @@ class LineProblem3D(DiscreteLine):
             np.concatenate([*positions, np.zeros(tension.size)]),
             turns,
         )
+        self.laid_nodes = laid
         return inner[~np.isin(inner, laid)]
 
     def seabed_path(self, s, fairlead) -> np.ndarray:

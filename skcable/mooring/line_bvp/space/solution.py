@@ -82,8 +82,7 @@ class LineBVP3DSolution(LineFields, Shown):
         self.slack_seabed_force = np.zeros(3)
         if problem.slack_end > 0:  # the seabed holds the slack stretch, the anchor's node too
             S_A, self.anchor_seabed_force = np.zeros(3), S_A
-            held, N = problem.held_dofs, problem.N
-            nodes = held[held < N]
+            N, nodes = problem.N, problem.laid_nodes
             self.slack_seabed_force = np.array([state.R0[k * N + nodes].sum() for k in range(3)])
         elif self.anchor_on_seabed:
             bed, a = problem.seabed, self.anchor
